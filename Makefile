@@ -1,0 +1,100 @@
+# bifilar: dynamics of the bifilar pendulum (Kane & Tseng 1966)
+#   make            build bin/bifilar
+#   make test       run all tests (optimised build), last line "N passed, N failed"
+#   make check      run all tests in the checking build (-fcheck=all, FP traps)
+#   make run        run every deck in input/, write output/, draw plots/*.png
+#   make report     output/report.md (paper's claims against ours)
+#   make bench      integrator and scene benchmarks (output/bench_*.dat)
+#   make deps       install what a fresh machine lacks (gnuplot)
+#   make clean      remove everything built or written
+
+FC = gfortran
+MAKEFLAGS += --no-builtin-rules
+.SUFFIXES:
+.DELETE_ON_ERROR:
+
+CHECK ?= 0
+ifeq ($(CHECK),1)
+BUILD = build-check
+BIN = build-check/bin
+FFLAGS = -O0 -g -fcheck=all -ffpe-trap=invalid,zero,overflow -fbacktrace
+else
+BUILD = build
+BIN = bin
+FFLAGS = -O2 -march=x86-64-v2
+endif
+FFLAGS += -std=f2008 -Wall -Wextra -Wno-compare-reals -fimplicit-none -fno-backtrace
+LIBS = -llapack -lblas
+
+# Library modules in dependency order (each only uses modules listed before it).
+LIB_MODULES = kinds status lapack_wrap ode_system lsoda geometry kinematics gen_forces bifilar_model \
+              deck output_io simulate floquet paper_claims
+LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
+TEST_MODULES = testing test_lsoda test_model test_deck
+TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
+
+.PHONY: all test check run report bench deps clean
+all: $(BIN)/bifilar
+
+$(BUILD) $(BIN):
+	mkdir -p $@
+
+# Every object depends on all objects listed before it (simple, correct ordering).
+define chain
+$(BUILD)/$(word $(1),$(2)).o: $(patsubst %,$(BUILD)/%.o,$(wordlist 1,$(shell expr $(1) - 1),$(2)))
+endef
+ALL_MODULES = $(LIB_MODULES) $(TEST_MODULES)
+$(foreach i,$(shell seq 2 $(words $(ALL_MODULES))),$(eval $(call chain,$(i),$(ALL_MODULES))))
+
+$(BUILD)/%.o: src/%.f90 | $(BUILD)
+	$(FC) $(FFLAGS) -J$(BUILD) -c $< -o $@
+$(BUILD)/%.o: tests/%.f90 | $(BUILD)
+	$(FC) $(FFLAGS) -J$(BUILD) -c $< -o $@
+
+$(BIN)/bifilar: src/bifilar.f90 $(LIB_OBJ) | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+
+$(BIN)/run_tests: tests/run_tests.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@
+
+$(BIN)/bench_integrator: tests/bench_integrator.f90 $(LIB_OBJ) $(BUILD)/test_lsoda.o | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/test_lsoda.o $(BUILD)/testing.o $(LIBS) -o $@
+
+test: $(BIN)/run_tests $(BIN)/bifilar
+	$(BIN)/run_tests $(BIN)/bifilar $(ONLY)
+
+check:
+	$(MAKE) CHECK=1 test
+
+bench: $(BIN)/bench_integrator $(BIN)/bifilar
+	mkdir -p output
+	$(BIN)/bench_integrator output/bench_integrator.dat
+
+DECKS = $(wildcard input/*.nml)
+run: deps $(BIN)/bifilar
+	mkdir -p output
+	@set -e; for d in $(DECKS); do echo "bifilar $$d"; $(BIN)/bifilar $$d; done
+	$(BIN)/bifilar --report output
+	@$(MAKE) --no-print-directory plots
+
+report: $(BIN)/bifilar
+	mkdir -p output
+	@set -e; for d in cylinder_l180 cylinder_l195 triangle_plate cylinder_torsion; do \
+	  $(BIN)/bifilar input/$$d.nml; done
+	$(BIN)/bifilar --report output
+
+.PHONY: plots
+plots:
+	@set -e; for s in plots/*.gp; do gnuplot -c $$s || exit 1; done
+
+deps:
+	@command -v gnuplot >/dev/null 2>&1 || { \
+	  if [ "$$(id -u)" = 0 ]; then \
+	    echo "gnuplot missing: installing gnuplot-nox"; \
+	    (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq gnuplot-nox) >/dev/null; \
+	  else \
+	    echo "gnuplot is missing; install it with: sudo apt-get install -y gnuplot-nox" >&2; exit 1; \
+	  fi; }
+
+clean:
+	rm -rf build build-check bin output/*.dat output/*.summary output/*.md output/*.tmp plots/*.png

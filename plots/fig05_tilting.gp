@@ -1,0 +1,9 @@
+# Fig. 5  Tilting; l = 2b, l' = 1.8b
+# usage (from the repository root): gnuplot -c plots/fig05_tilting.gp [DATA] [PNG]
+data = (ARGC >= 1) ? ARG1 : 'output/cylinder_l180.dat'
+png  = (ARGC >= 2) ? ARG2 : 'plots/fig05_tilting.png'
+load 'plots/style.gp'
+set output png
+set title "Fig. 5  Tilting; l = 2b, l' = 1.8b"
+set ylabel "tilting {/Symbol q}_1 (deg)"
+plot data using 1:($2*180/pi) with lines ls 1 notitle

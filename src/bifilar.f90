@@ -1,0 +1,103 @@
+!> bifilar: dynamics of the bifilar pendulum (Kane & Tseng 1966), driven by namelist decks.
+!!
+!! Usage:  bifilar DECK.nml [--out DIR]
+!!         bifilar --report [DIR]   (DIR/report.md from the paper scenes' output in DIR)
+!! Runs the analyses the deck's &scene asks for and writes DIR/NAME.* (DIR defaults to
+!! `output`).  Exit status: 0 success, 1 usage, 2 bad deck, 3 numerical failure,
+!! 4 the model no longer holds (e.g. a cable goes slack), 5 output cannot be written.
+program bifilar
+    use, intrinsic :: iso_fortran_env, only: error_unit
+    use status, only: status_t, ERR_DECK, ERR_MODEL, ERR_IO
+    use deck, only: deck_t, read_deck, analysis_requested
+    use simulate, only: run_simulation, run_summary_t
+    use paper_claims, only: write_report
+    implicit none
+    type(deck_t) :: d
+    type(status_t) :: stat
+    type(run_summary_t) :: sm
+    character(len=:), allocatable :: deck_path, outdir
+    character(len=1024) :: arg
+    integer :: i, nargs
+
+    nargs = command_argument_count()
+    outdir = 'output'
+    deck_path = ''
+    i = 1
+    do while (i <= nargs)
+        call get_command_argument(i, arg)
+        if (trim(arg) == '--report') then
+            if (i < nargs) call get_command_argument(i + 1, arg)
+            if (i == nargs) arg = 'output'
+            call write_report(trim(arg), stat)
+            if (stat%code /= 0) call fail(stat)
+            write (*, '(a)') 'wrote '//trim(arg)//'/report.md'
+            stop
+        else if (trim(arg) == '--out' .and. i < nargs) then
+            call get_command_argument(i + 1, arg)
+            outdir = trim(arg)
+            i = i + 2
+            cycle
+        else if (arg(1:1) == '-') then
+            call usage('unknown option '//trim(arg))
+        else if (len(deck_path) > 0) then
+            call usage('only one deck per run')
+        end if
+        deck_path = trim(arg)
+        i = i + 1
+    end do
+    if (len(deck_path) == 0) call usage('no deck given')
+
+    call read_deck(deck_path, d, stat)
+    if (stat%code /= 0) call fail(stat)
+
+    if (analysis_requested(d, 'floquet') .or. analysis_requested(d, 'chart') .or. &
+        analysis_requested(d, 'work_precision')) then
+        stat%code = ERR_DECK
+        stat%msg = d%name//': &scene analyses = '''//trim(d%analyses)// &
+            ''': this version runs only ''simulate'''
+        call fail(stat)
+    end if
+    if (analysis_requested(d, 'simulate')) then
+        call run_simulation(d, outdir, sm, stat)
+        if (stat%code /= 0) call fail(stat)
+        write (*, '(a,a,f0.4,a,i0,a,i0,a,es9.2,a,es9.2)') d%name, ': cpu ', sm%cpu_seconds, &
+            ' s, steps ', sm%steps, ', rhs ', sm%rhs_evaluations, ', max |dE| ', &
+            sm%max_abs_energy_error, ', max |residual| ', sm%max_abs_constraint_residual
+    end if
+
+contains
+
+    subroutine usage(msg)
+        character(len=*), intent(in) :: msg
+        write (error_unit, '(a)') 'bifilar: '//msg
+        write (error_unit, '(a)') 'usage: bifilar DECK.nml [--out DIR] | bifilar --report [DIR]'
+        error stop 1
+    end subroutine usage
+
+    subroutine fail(st)
+        type(status_t), intent(in) :: st
+        character(len=:), allocatable :: kind
+        select case (st%code)
+        case (ERR_DECK)
+            kind = 'bad input'
+        case (ERR_MODEL)
+            kind = 'model no longer valid'
+        case (ERR_IO)
+            kind = 'cannot write output'
+        case default
+            kind = 'numerical failure'
+        end select
+        write (error_unit, '(a)') 'bifilar: error ('//kind//'): '//st%msg
+        select case (st%code)
+        case (ERR_DECK)
+            error stop 2
+        case (ERR_MODEL)
+            error stop 4
+        case (ERR_IO)
+            error stop 5
+        case default
+            error stop 3
+        end select
+    end subroutine fail
+
+end program bifilar

@@ -1,0 +1,1125 @@
+!> The input deck: a namelist file with the groups &scene, &suspension, &body, &start and
+!! &integration (see input/*.nml).  read_deck reads and validates it; every problem is an
+!! ERR_DECK status whose message names the deck, the group, the variable and its value,
+!! what is wrong and what is allowed.  Cable reachability is checked by the geometry module.
+module deck
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_usual, ieee_support_halting, &
+        ieee_get_halting_mode, ieee_set_halting_mode, ieee_set_flag
+    use kinds, only: dp
+    use status, only: status_t, set_error, STATUS_OK, ERR_DECK
+    implicit none
+    private
+
+    type, public :: deck_t
+        character(len=:), allocatable :: path        !! deck file as given
+        character(len=:), allocatable :: name        !! file name without directory and .nml
+        ! &scene
+        character(len=256) :: title = ''
+        character(len=256) :: analyses = 'simulate'
+        character(len=16)  :: model = 'kane'          !! 'kane' only for now
+        ! &suspension (lengths in any one unit)
+        real(dp) :: b = 1.0_dp, b_prime = 1.0_dp, l = 2.0_dp, l_prime = 2.0_dp, g = 1.0_dp
+        ! &body
+        real(dp) :: mass = 1.0_dp
+        real(dp) :: inertia(3) = [0.125_dp, 0.1458333333333333_dp, 0.1458333333333333_dp]
+        real(dp) :: r = 0.7071067811865476_dp, lambda = 0.7853981633974483_dp
+        !> default identity; btilde(i,:) is row i as printed in the paper
+        real(dp) :: btilde(3,3) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, &
+                                           0.0_dp, 0.0_dp, 1.0_dp], [3, 3])
+        real(dp) :: sway_depth = 1.0_dp
+        ! &start
+        character(len=16) :: mode = 'raised'
+        real(dp) :: amplitude = 45.0_dp, tilt = 0.0_dp     !! degrees, radians
+        real(dp) :: theta(4) = 0.0_dp, theta_dot(4) = 0.0_dp
+        ! &integration
+        real(dp) :: tau_end = 60.0_dp, dtau_out = 0.05_dp, rtol = 1.0e-10_dp, atol = 1.0e-12_dp
+        logical  :: error_estimate = .false.
+        ! &floquet and &chart are read by later issues; do not add them now
+    end type deck_t
+
+    public :: read_deck, analysis_requested, deck_echo
+
+    !> Words allowed in &scene analyses.
+    character(len=*), parameter :: ANALYSES_ALLOWED = 'simulate floquet chart work_precision'
+    !> Namelist groups a deck may contain (later issues read &floquet and &chart).
+    character(len=*), parameter :: GROUPS_ALLOWED = &
+        'scene suspension body start integration floquet chart'
+    !> Variables of each group with their kind (r real, c character, l logical) and size;
+    !! used only to explain a namelist read error.
+    character(len=*), parameter :: SPEC_SCENE = 'title:c1 analyses:c1 model:c1'
+    character(len=*), parameter :: SPEC_SUSPENSION = 'b:r1 b_prime:r1 l:r1 l_prime:r1 g:r1'
+    character(len=*), parameter :: SPEC_BODY = &
+        'mass:r1 inertia:r3 r:r1 lambda:r1 btilde:r9 sway_depth:r1'
+    character(len=*), parameter :: SPEC_START = 'mode:c1 amplitude:r1 tilt:r1 theta:r4 theta_dot:r4'
+    character(len=*), parameter :: SPEC_INTEGRATION = &
+        'tau_end:r1 dtau_out:r1 rtol:r1 atol:r1 error_estimate:l1'
+    real(dp), parameter :: RTOL_MIN = 1.0e-14_dp        !! smallest relative tolerance
+    real(dp), parameter :: MAX_ROWS = 1.0e7_dp          !! largest tau_end/dtau_out
+    real(dp), parameter :: ORTHO_TOL = 1.0e-9_dp        !! orthonormality of btilde
+    real(dp), parameter :: TRIANGLE_SLACK = 1.0e-12_dp  !! relative slack of I1 <= I2 + I3
+
+contains
+
+    !> Read and validate the deck at `path` into d.  Absent optional groups keep defaults;
+    !! &suspension and &body are required.
+    subroutine read_deck(path, d, stat)
+        character(len=*), intent(in) :: path        !! deck file
+        type(deck_t), intent(out) :: d              !! the effective deck (defaults + file)
+        type(status_t), intent(out) :: stat         !! ERR_DECK with a message on any problem
+        ! namelist variables (names fixed by the deck format)
+        character(len=256) :: title
+        character(len=1024) :: analyses
+        character(len=256) :: model, mode
+        real(dp) :: b, b_prime, l, l_prime, g
+        real(dp) :: mass, inertia(3), r, lambda, btilde(3,3), sway_depth
+        real(dp) :: amplitude, tilt, theta(4), theta_dot(4)
+        real(dp) :: tau_end, dtau_out, rtol, atol
+        logical :: error_estimate
+        namelist /scene/ title, analyses, model
+        namelist /suspension/ b, b_prime, l, l_prime, g
+        namelist /body/ mass, inertia, r, lambda, btilde, sway_depth
+        namelist /start/ mode, amplitude, tilt, theta, theta_dot
+        namelist /integration/ tau_end, dtau_out, rtol, atol, error_estimate
+        integer :: u, ios, k
+        character(len=512) :: msg
+        logical :: halting(size(ieee_usual))
+
+        stat%code = STATUS_OK
+        d%path = path
+        d%name = deck_name(path)
+        title = d%title
+        analyses = d%analyses
+        model = d%model
+        b = d%b
+        b_prime = d%b_prime
+        l = d%l
+        l_prime = d%l_prime
+        g = d%g
+        mass = d%mass
+        inertia = d%inertia
+        r = d%r
+        lambda = d%lambda
+        btilde = d%btilde
+        sway_depth = d%sway_depth
+        mode = d%mode
+        amplitude = d%amplitude
+        tilt = d%tilt
+        theta = d%theta
+        theta_dot = d%theta_dot
+        tau_end = d%tau_end
+        dtau_out = d%dtau_out
+        rtol = d%rtol
+        atol = d%atol
+        error_estimate = d%error_estimate
+
+        msg = ''
+        open (newunit=u, file=path, status='old', action='read', form='formatted', &
+              access='sequential', iostat=ios, iomsg=msg)
+        if (ios /= 0) then
+            call set_error(stat, ERR_DECK, 'cannot open deck '''//path//''': '//trim(msg))
+            return
+        end if
+
+        call check_group_names(u, path, d%name, stat)
+        if (stat%code == STATUS_OK) then
+            ! Values such as 1e400 overflow inside the run-time library: read without traps,
+            ! the finiteness checks below catch the result.
+            call traps_off(halting)
+            call read_group('scene', .false., SPEC_SCENE)
+            call read_group('suspension', .true., SPEC_SUSPENSION)
+            call read_group('body', .true., SPEC_BODY)
+            call read_group('start', .false., SPEC_START)
+            call read_group('integration', .false., SPEC_INTEGRATION)
+            call traps_restore(halting)
+        end if
+        close (u, iostat=ios)
+        if (stat%code /= STATUS_OK) return
+
+        ! &scene: strings are checked here, before they are shortened into d
+        do k = 1, len(analyses)
+            if (analyses(k:k) == achar(9)) analyses(k:k) = ' '
+        end do
+        analyses = adjustl(analyses)
+        call check_word(stat, d%name, 'scene', 'model', model, 'kane')
+        if (stat%code /= STATUS_OK) return
+        call check_analyses(stat, d%name, analyses)
+        if (stat%code /= STATUS_OK) return
+        call check_word(stat, d%name, 'start', 'mode', mode, 'raised angles')
+        if (stat%code /= STATUS_OK) return
+        d%title = title
+        d%analyses = lower(adjustl(analyses))
+        d%model = lower(adjustl(model))
+        d%mode = lower(adjustl(mode))
+        d%b = b
+        d%b_prime = b_prime
+        d%l = l
+        d%l_prime = l_prime
+        d%g = g
+        d%mass = mass
+        d%inertia = inertia
+        d%r = r
+        d%lambda = lambda
+        d%btilde = btilde
+        d%sway_depth = sway_depth
+        d%amplitude = amplitude
+        d%tilt = tilt
+        d%theta = theta
+        d%theta_dot = theta_dot
+        d%tau_end = tau_end
+        d%dtau_out = dtau_out
+        d%rtol = rtol
+        d%atol = atol
+        d%error_estimate = error_estimate
+        call validate(d, stat)
+
+    contains
+
+        !> Read one group (if present) and explain any failure.
+        subroutine read_group(grp, required, spec)
+            character(len=*), intent(in) :: grp         !! group name
+            logical, intent(in) :: required            !! absence is an error
+            character(len=*), intent(in) :: spec        !! variables, see SPEC_*
+            logical :: found, complete
+            character(len=:), allocatable :: text, why
+            integer :: ios2
+            character(len=512) :: msg2
+
+            if (stat%code /= STATUS_OK) return
+            call scan_group(u, grp, found, complete, text, ios2, msg2)
+            if (ios2 > 0) then
+                call set_error(stat, ERR_DECK, d%name//': cannot read deck '''//path// &
+                               ''': '//trim(msg2))
+                return
+            end if
+            if (.not. found) then
+                if (required) call set_error(stat, ERR_DECK, d%name//': &'//grp// &
+                    ' group missing; it is required (a deck needs &suspension and &body)')
+                return
+            end if
+            rewind (u)
+            msg2 = ''
+            select case (grp)
+            case ('scene')
+                read (u, nml=scene, iostat=ios2, iomsg=msg2)
+            case ('suspension')
+                read (u, nml=suspension, iostat=ios2, iomsg=msg2)
+            case ('body')
+                read (u, nml=body, iostat=ios2, iomsg=msg2)
+            case ('start')
+                read (u, nml=start, iostat=ios2, iomsg=msg2)
+            case default
+                read (u, nml=integration, iostat=ios2, iomsg=msg2)
+            end select
+            ! The run-time library reports end of file after the closing '/' of a group on
+            ! the last line when that line has no newline; the group itself was read.
+            if (ios2 == 0 .or. (is_iostat_end(ios2) .and. complete)) return
+            if (.not. complete) then
+                call set_error(stat, ERR_DECK, d%name//': cannot read namelist group &'//grp// &
+                    ': no closing ''/'' before the end of the file (truncated deck?)')
+                return
+            end if
+            why = explain(text, grp, spec)
+            if (len(why) > 0) then
+                call set_error(stat, ERR_DECK, d%name//': cannot read namelist group &'//grp// &
+                               ': '//why//' (reader: '//trim(msg2)//')')
+            else
+                call set_error(stat, ERR_DECK, d%name//': cannot read namelist group &'//grp// &
+                               ': '//trim(msg2))
+            end if
+        end subroutine read_group
+
+    end subroutine read_deck
+
+    !> True when `word` is one of the blank-separated words of d%analyses.
+    logical function analysis_requested(d, word)
+        type(deck_t), intent(in) :: d               !! the deck
+        character(len=*), intent(in) :: word        !! analysis name, e.g. 'simulate'
+        integer :: i1, i2
+        character(len=len(d%analyses)) :: list
+        analysis_requested = .false.
+        list = lower(d%analyses)
+        i2 = 0
+        do
+            call next_word(list, i2, i1)
+            if (i1 == 0) exit
+            if (list(i1:i2) == lower(trim(adjustl(word)))) then
+                analysis_requested = .true.
+                return
+            end if
+        end do
+    end function analysis_requested
+
+    !> Write the effective deck as '# ' comment lines, one namelist-like line per group; the
+    !! reals are the shortest decimals that read back exactly.
+    subroutine deck_echo(d, unit)
+        type(deck_t), intent(in) :: d               !! the deck
+        integer, intent(in) :: unit                 !! open formatted unit
+        integer :: i
+        character(len=:), allocatable :: line
+        write (unit, '(a)') '# deck '//d%path
+        write (unit, '(a)') '# &scene title = '//quoted(d%title)//', analyses = '// &
+            quoted(d%analyses)//', model = '//quoted(d%model)//' /'
+        write (unit, '(a)') '# &suspension b = '//rshort(d%b)//', b_prime = '//rshort(d%b_prime)// &
+            ', l = '//rshort(d%l)//', l_prime = '//rshort(d%l_prime)//', g = '//rshort(d%g)//' /'
+        line = '# &body mass = '//rshort(d%mass)//', inertia = '//rlist_short(d%inertia)// &
+            ', r = '//rshort(d%r)//', lambda = '//rshort(d%lambda)
+        do i = 1, 3
+            line = line//', btilde('//achar(iachar('0') + i)//',:) = '//rlist_short(d%btilde(i, :))
+        end do
+        write (unit, '(a)') line//', sway_depth = '//rshort(d%sway_depth)//' /'
+        write (unit, '(a)') '# &start mode = '//quoted(d%mode)//', amplitude = '// &
+            rshort(d%amplitude)//', tilt = '//rshort(d%tilt)//', theta = '//rlist_short(d%theta)// &
+            ', theta_dot = '//rlist_short(d%theta_dot)//' /'
+        line = '.false.'
+        if (d%error_estimate) line = '.true.'
+        write (unit, '(a)') '# &integration tau_end = '//rshort(d%tau_end)//', dtau_out = '// &
+            rshort(d%dtau_out)//', rtol = '//rshort(d%rtol)//', atol = '//rshort(d%atol)// &
+            ', error_estimate = '//line//' /'
+    end subroutine deck_echo
+
+    ! ---------------------------------------------------------------- validation
+
+    !> Check every value of a deck read from file; the first problem sets stat.
+    subroutine validate(d, stat)
+        type(deck_t), intent(in) :: d               !! deck with the values read
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+        character(len=:), allocatable :: nm
+        real(dp) :: t(3), half(3), slack, mmt(3,3), det, err
+        integer :: i, j, iw, jw
+        character(len=*), parameter :: TRI_NAMES(3) = ['I1', 'I2', 'I3']
+
+        nm = d%name
+        ! &suspension
+        call positive('suspension', 'b', d%b, 'lengths > 0')
+        call positive('suspension', 'b_prime', d%b_prime, 'lengths > 0')
+        call positive('suspension', 'l', d%l, 'lengths > 0')
+        call positive('suspension', 'l_prime', d%l_prime, 'lengths > 0')
+        call positive('suspension', 'g', d%g, 'g > 0')
+        if (stat%code /= STATUS_OK) return
+
+        ! &body
+        call positive('body', 'mass', d%mass, 'mass > 0')
+        do i = 1, 3
+            call finite('body', 'inertia', d%inertia(i))
+        end do
+        if (stat%code /= STATUS_OK) return
+        if (any(d%inertia <= 0.0_dp)) then
+            call bad('body', 'inertia', rlist_short(d%inertia), &
+                     'a principal moment of inertia is <= 0', 'all three > 0')
+            return
+        end if
+        ! triangle inequalities, in halves so that nothing overflows
+        half = 0.5_dp*d%inertia
+        slack = TRIANGLE_SLACK*maxval(half)
+        do i = 1, 3
+            t = half
+            t(i) = 0.0_dp
+            if (half(i) - t(1) - t(2) - t(3) > slack) then
+                j = modulo(i, 3) + 1
+                call bad('body', 'inertia', rlist_short(d%inertia), TRI_NAMES(i)//' > '// &
+                         TRI_NAMES(j)//' + '//TRI_NAMES(modulo(j, 3) + 1)// &
+                         ' violates the triangle inequality', &
+                         'each principal moment <= the sum of the other two')
+                return
+            end if
+        end do
+        call finite('body', 'r', d%r)
+        call finite('body', 'lambda', d%lambda)
+        if (stat%code /= STATUS_OK) return
+        if (d%r < 0.0_dp) then
+            call bad('body', 'r', rshort(d%r), 'negative distance', 'r >= 0')
+            return
+        end if
+        do i = 1, 3
+            do j = 1, 3
+                call finite('body', 'btilde('//achar(iachar('0') + i)//','// &
+                            achar(iachar('0') + j)//')', d%btilde(i, j))
+            end do
+        end do
+        if (stat%code /= STATUS_OK) return
+        if (any(abs(d%btilde) > 1.0_dp + ORTHO_TOL)) then
+            call bad('body', 'btilde', btilde_short(d%btilde), 'an element exceeds 1 in ' // &
+                     'magnitude, rows are not orthonormal', ortho_allowed())
+            return
+        end if
+        mmt = matmul(d%btilde, transpose(d%btilde))
+        err = -1.0_dp
+        iw = 0
+        jw = 0
+        do j = 1, 3
+            do i = 1, j
+                if (i == j) then
+                    if (abs(mmt(i, j) - 1.0_dp) > err) then
+                        err = abs(mmt(i, j) - 1.0_dp)
+                        iw = i
+                        jw = j
+                    end if
+                else if (abs(mmt(i, j)) > err) then
+                    err = abs(mmt(i, j))
+                    iw = i
+                    jw = j
+                end if
+            end do
+        end do
+        if (err > ORTHO_TOL) then
+            if (iw == jw) then
+                call bad('body', 'btilde', btilde_short(d%btilde), 'row '// &
+                         achar(iachar('0') + iw)//' is not a unit vector (length^2 = '// &
+                         rshort(mmt(iw, iw))//')', ortho_allowed())
+            else
+                call bad('body', 'btilde', btilde_short(d%btilde), 'rows '// &
+                         achar(iachar('0') + iw)//' and '//achar(iachar('0') + jw)// &
+                         ' are not orthogonal (dot product = '//rshort(mmt(iw, jw))//')', &
+                         ortho_allowed())
+            end if
+            return
+        end if
+        det = d%btilde(1, 1)*(d%btilde(2, 2)*d%btilde(3, 3) - d%btilde(2, 3)*d%btilde(3, 2)) &
+            - d%btilde(1, 2)*(d%btilde(2, 1)*d%btilde(3, 3) - d%btilde(2, 3)*d%btilde(3, 1)) &
+            + d%btilde(1, 3)*(d%btilde(2, 1)*d%btilde(3, 2) - d%btilde(2, 2)*d%btilde(3, 1))
+        if (det < 0.0_dp) then
+            call bad('body', 'btilde', btilde_short(d%btilde), 'left-handed (determinant = '// &
+                     rshort(det)//')', 'a right-handed orthonormal matrix, determinant +1; '// &
+                     'change the sign of one row')
+            return
+        end if
+        call finite('body', 'sway_depth', d%sway_depth)
+        if (stat%code /= STATUS_OK) return
+
+        ! &start
+        call finite('start', 'amplitude', d%amplitude)
+        call finite('start', 'tilt', d%tilt)
+        do i = 1, 4
+            call finite('start', 'theta', d%theta(i))
+            call finite('start', 'theta_dot', d%theta_dot(i))
+        end do
+        if (stat%code /= STATUS_OK) return
+        if (trim(d%mode) == 'raised') then
+            if (d%amplitude <= 0.0_dp .or. d%amplitude >= 180.0_dp) then
+                call bad('start', 'amplitude', rshort(d%amplitude), 'out of range for mode ' // &
+                         '''raised''', '0 < amplitude < 180 (degrees)')
+                return
+            end if
+        end if
+
+        ! &integration
+        call positive('integration', 'tau_end', d%tau_end, 'tau_end > 0')
+        call positive('integration', 'dtau_out', d%dtau_out, '0 < dtau_out <= tau_end')
+        call finite('integration', 'rtol', d%rtol)
+        call finite('integration', 'atol', d%atol)
+        if (stat%code /= STATUS_OK) return
+        if (d%dtau_out > d%tau_end) then
+            call bad('integration', 'dtau_out', rshort(d%dtau_out), 'larger than tau_end = '// &
+                     rshort(d%tau_end), '0 < dtau_out <= tau_end')
+            return
+        end if
+        if (d%tau_end/MAX_ROWS > d%dtau_out) then
+            call bad('integration', 'dtau_out', rshort(d%dtau_out), 'too many output rows ' // &
+                     '(tau_end/dtau_out > 1e7, tau_end = '//rshort(d%tau_end)//')', &
+                     'tau_end/dtau_out <= 1e7')
+            return
+        end if
+        if (d%rtol < RTOL_MIN .or. d%rtol >= 1.0_dp) then
+            call bad('integration', 'rtol', rshort(d%rtol), 'relative tolerance out of range', &
+                     '1e-14 <= rtol < 1 (smallest allowed 1e-14)')
+            return
+        end if
+        if (d%atol <= 0.0_dp) then
+            call bad('integration', 'atol', rshort(d%atol), 'absolute tolerance must be > 0', &
+                     'atol > 0')
+            return
+        end if
+
+    contains
+
+        subroutine bad(grp, var, val, what, allowed)
+            character(len=*), intent(in) :: grp, var, val, what, allowed
+            if (stat%code /= STATUS_OK) return
+            call set_error(stat, ERR_DECK, nm//': &'//grp//' '//var//' = '//val//': '// &
+                           what//'; allowed: '//allowed)
+        end subroutine bad
+
+        subroutine finite(grp, var, x)
+            character(len=*), intent(in) :: grp, var
+            real(dp), intent(in) :: x
+            if (.not. ieee_is_finite(x)) call bad(grp, var, rshort(x), 'not a finite number ' &
+                                                  //'(NaN, Inf, or beyond 1.8e308)', &
+                                                  'finite real numbers')
+        end subroutine finite
+
+        subroutine positive(grp, var, x, allowed)
+            character(len=*), intent(in) :: grp, var, allowed
+            real(dp), intent(in) :: x
+            if (stat%code /= STATUS_OK) return
+            call finite(grp, var, x)
+            if (stat%code /= STATUS_OK) return
+            if (x <= 0.0_dp) call bad(grp, var, rshort(x), 'must be > 0', allowed)
+        end subroutine positive
+
+    end subroutine validate
+
+    pure function ortho_allowed() result(s)
+        character(len=:), allocatable :: s
+        s = 'orthonormal rows within 1e-9 (btilde btilde^T = I) and determinant +1'
+    end function ortho_allowed
+
+    !> Check that a string value is one of the blank-separated words of `allowed`.
+    subroutine check_word(stat, nm, grp, var, val, allowed)
+        type(status_t), intent(inout) :: stat       !! ERR_DECK when val is not allowed
+        character(len=*), intent(in) :: nm, grp, var, val, allowed
+        if (index(' '//allowed//' ', ' '//lower(trim(adjustl(val)))//' ') > 0 .and. &
+            len_trim(val) > 0 .and. index(trim(adjustl(val)), ' ') == 0) return
+        call set_error(stat, ERR_DECK, nm//': &'//grp//' '//var//' = '''//trim(val)// &
+                       ''': unknown '//var//'; allowed: '//commas(allowed))
+    end subroutine check_word
+
+    !> Every word of &scene analyses must be known; at least one word.
+    subroutine check_analyses(stat, nm, analyses)
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on a problem
+        character(len=*), intent(in) :: nm          !! deck name
+        character(len=*), intent(in) :: analyses    !! value read
+        character(len=len(analyses)) :: list
+        integer :: i1, i2
+        character(len=:), allocatable :: head
+        list = lower(analyses)
+        head = nm//': &scene analyses = '''//trim(analyses)//''': '
+        if (len_trim(list) > 256) then
+            call set_error(stat, ERR_DECK, head//'longer than 256 characters; allowed: '// &
+                           'blank-separated words from: '//commas(ANALYSES_ALLOWED))
+            return
+        end if
+        if (len_trim(list) == 0) then
+            call set_error(stat, ERR_DECK, head//'no analysis given; allowed: '// &
+                           'blank-separated words from: '//commas(ANALYSES_ALLOWED))
+            return
+        end if
+        i2 = 0
+        do
+            call next_word(list, i2, i1)
+            if (i1 == 0) exit
+            if (index(' '//ANALYSES_ALLOWED//' ', ' '//list(i1:i2)//' ') == 0) then
+                call set_error(stat, ERR_DECK, head//'unknown analysis '''// &
+                               analyses(i1:i2)//'''; allowed: blank-separated words from: '// &
+                               commas(ANALYSES_ALLOWED))
+                return
+            end if
+        end do
+    end subroutine check_analyses
+
+    ! ---------------------------------------------------------------- file scanning
+
+    !> Every '&name' that starts a group must be a known group.
+    subroutine check_group_names(u, path, nm, stat)
+        integer, intent(in) :: u                    !! open deck
+        character(len=*), intent(in) :: path        !! deck file
+        character(len=*), intent(in) :: nm          !! deck name
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on an unknown group
+        character(len=:), allocatable :: line
+        integer :: ios, i, j, nlines
+        character(len=512) :: msg
+        rewind (u)
+        nlines = 0
+        do
+            call read_line(u, line, ios, msg)
+            if (ios > 0) then
+                call set_error(stat, ERR_DECK, nm//': cannot read deck '''//path//''': '// &
+                               trim(msg))
+                return
+            end if
+            if (ios < 0) exit
+            nlines = nlines + 1
+            i = index(line, '!')
+            if (i > 0) line = line(1:i - 1)
+            do i = 1, len(line) - 1
+                if (line(i:i) /= '&') cycle
+                if (i > 1) then
+                    if (line(i - 1:i - 1) /= ' ' .and. line(i - 1:i - 1) /= '/' .and. &
+                        line(i - 1:i - 1) /= achar(9)) cycle
+                end if
+                j = i + 1
+                do while (j <= len(line))
+                    if (.not. is_ident(line(j:j))) exit
+                    j = j + 1
+                end do
+                if (j == i + 1) cycle
+                if (lower(line(i + 1:j - 1)) == 'end') cycle
+                if (index(' '//GROUPS_ALLOWED//' ', ' '//lower(line(i + 1:j - 1))//' ') == 0) then
+                    call set_error(stat, ERR_DECK, nm//': unknown namelist group &'// &
+                                   line(i + 1:j - 1)//'; allowed: &'// &
+                                   commas(GROUPS_ALLOWED, ', &'))
+                    return
+                end if
+            end do
+        end do
+        if (nlines == 0) then
+            call set_error(stat, ERR_DECK, nm//': deck '''//path//''' is empty or not a '// &
+                           'regular file; allowed: a namelist file with &suspension and &body')
+            return
+        end if
+        rewind (u)
+    end subroutine check_group_names
+
+    !> Find the first '&grp' outside comments and collect its text up to the closing '/'
+    !! (outside quotes), comments removed, lines joined by blanks.
+    subroutine scan_group(u, grp, found, complete, text, ios, msg)
+        integer, intent(in) :: u                    !! open deck
+        character(len=*), intent(in) :: grp         !! group name
+        logical, intent(out) :: found               !! the group starts somewhere
+        logical, intent(out) :: complete            !! its closing '/' was found
+        character(len=:), allocatable, intent(out) :: text    !! the group's items
+        integer, intent(out) :: ios                 !! > 0 when the file cannot be read
+        character(len=*), intent(inout) :: msg      !! message for ios > 0
+        character(len=:), allocatable :: line
+        character :: q
+        integer :: i, n
+        found = .false.
+        complete = .false.
+        text = ''
+        q = ' '
+        rewind (u)
+        do
+            call read_line(u, line, ios, msg)
+            if (ios > 0) return
+            if (ios < 0) then
+                ios = 0
+                return
+            end if
+            i = 1
+            if (.not. found) then
+                ! look for &grp, as the run-time library does (no quotes outside a group)
+                n = len(grp)
+                do i = 1, len(line)
+                    if (q == ' ' .and. line(i:i) == '!') exit
+                    if (line(i:i) /= '&' .or. i + n > len(line)) cycle
+                    if (lower(line(i + 1:i + n)) /= grp) cycle
+                    if (i + n < len(line)) then
+                        if (is_ident(line(i + n + 1:i + n + 1))) cycle
+                    end if
+                    found = .true.
+                    exit
+                end do
+                if (.not. found) cycle
+                i = i + n + 1
+            end if
+            do while (i <= len(line))
+                if (q /= ' ') then
+                    if (line(i:i) == q) q = ' '
+                else if (line(i:i) == '!') then
+                    exit
+                else if (line(i:i) == '''' .or. line(i:i) == '"') then
+                    q = line(i:i)
+                else if (line(i:i) == '/') then
+                    complete = .true.
+                    return
+                end if
+                text = text//line(i:i)
+                i = i + 1
+            end do
+            text = text//' '
+        end do
+    end subroutine scan_group
+
+    !> Read one whole line of any length.
+    subroutine read_line(u, line, ios, msg)
+        integer, intent(in) :: u                    !! open unit
+        character(len=:), allocatable, intent(out) :: line   !! the line, without newline
+        integer, intent(out) :: ios                 !! 0, < 0 at end of file, > 0 on error
+        character(len=*), intent(inout) :: msg      !! message for ios > 0
+        character(len=256) :: buf
+        integer :: n
+        line = ''
+        do
+            n = 0
+            read (u, '(a)', advance='no', size=n, iostat=ios, iomsg=msg) buf
+            line = line//buf(1:n)
+            if (is_iostat_eor(ios)) then
+                ios = 0
+                exit
+            end if
+            if (is_iostat_end(ios) .and. len(line) > 0) then
+                ios = 0
+                exit
+            end if
+            if (ios /= 0) exit
+        end do
+        do n = 1, len(line)
+            if (line(n:n) == achar(9) .or. line(n:n) == achar(13)) line(n:n) = ' '
+        end do
+    end subroutine read_line
+
+    !> Explain why the run-time library could not read a group: the first item whose name is
+    !! unknown, whose value has the wrong form, or which has too many values.  Empty when no
+    !! explanation is found.
+    function explain(text, grp, spec) result(why)
+        character(len=*), intent(in) :: text        !! group items (from scan_group)
+        character(len=*), intent(in) :: grp         !! group name
+        character(len=*), intent(in) :: spec        !! variables, see SPEC_*
+        character(len=:), allocatable :: why
+        integer :: neq, k, j, depth, p1, v1, v2, t1, t2, nval, cnt, star, ios
+        integer, allocatable :: eqs(:), nstart(:), nend(:)
+        logical :: subscripted
+        character :: q, kind
+        character(len=:), allocatable :: nm, tok, val, names, lhs
+        integer :: vsize
+
+        why = ''
+        allocate (eqs(0))
+        q = ' '
+        do k = 1, len(text)
+            if (q /= ' ') then
+                if (text(k:k) == q) q = ' '
+            else if (text(k:k) == '''' .or. text(k:k) == '"') then
+                q = text(k:k)
+            else if (text(k:k) == '=') then
+                eqs = [eqs, k]
+            end if
+        end do
+        neq = size(eqs)
+        names = spec_names(spec)
+        q = ' '
+        do k = 1, len(text) - 1
+            if (q /= ' ') then
+                if (text(k:k) == q) q = ' '
+            else if (text(k:k) == '''' .or. text(k:k) == '"') then
+                q = text(k:k)
+            else if (text(k:k) == '&' .and. is_ident(text(k + 1:k + 1))) then
+                j = k + 1
+                do while (j <= len(text))
+                    if (.not. is_ident(text(j:j))) exit
+                    j = j + 1
+                end do
+                why = 'no closing ''/'' before '''//text(k:j - 1)//''''
+                return
+            end if
+        end do
+        if (neq == 0) then
+            if (len_trim(text) > 0) why = 'expected name = value, found '''// &
+                trim(adjustl(text))//'''; allowed variables: '//names
+            return
+        end if
+        allocate (nstart(neq), nend(neq))
+        do k = 1, neq
+            j = eqs(k) - 1
+            do while (j >= 1)
+                if (text(j:j) /= ' ') exit
+                j = j - 1
+            end do
+            if (j >= 1) then
+                if (text(j:j) == ')') then
+                    depth = 0
+                    do while (j >= 1)
+                        if (text(j:j) == ')') depth = depth + 1
+                        if (text(j:j) == '(') depth = depth - 1
+                        if (depth == 0) exit
+                        j = j - 1
+                    end do
+                    j = j - 1
+                    do while (j >= 1)
+                        if (text(j:j) /= ' ') exit
+                        j = j - 1
+                    end do
+                end if
+            end if
+            nend(k) = j
+            do while (j >= 1)
+                if (.not. is_ident(text(j:j))) exit
+                j = j - 1
+            end do
+            nstart(k) = j + 1
+            if (nstart(k) > nend(k)) then
+                why = 'expected a variable name before ''='' in '''//trim(adjustl(text))// &
+                    '''; allowed variables: '//names
+                return
+            end if
+        end do
+        if (len_trim(text(1:nstart(1) - 1)) > 0) then
+            why = 'unexpected '''//trim(adjustl(text(1:nstart(1) - 1)))// &
+                ''' before the first variable'
+            return
+        end if
+        do k = 1, neq
+            nm = lower(text(nstart(k):nend(k)))
+            subscripted = eqs(k) > nend(k) + 1
+            if (subscripted) subscripted = len_trim(text(nend(k) + 1:eqs(k) - 1)) > 0
+            lhs = trim(text(nstart(k):eqs(k) - 1))
+            call spec_lookup(spec, nm, kind, vsize)
+            if (kind == ' ') then
+                why = 'unknown variable '''//text(nstart(k):nend(k))//''' in &'//grp// &
+                    '; allowed variables: '//names
+                return
+            end if
+            v1 = eqs(k) + 1
+            v2 = len(text)
+            if (k < neq) v2 = nstart(k + 1) - 1
+            val = trim(adjustl(text(v1:v2)))
+            if (len(val) > 0) then
+                if (val(len(val):len(val)) == ',') val = trim(val(1:len(val) - 1))
+            end if
+            ! tokens separated by blanks or commas outside quotes
+            nval = 0
+            p1 = v1
+            do
+                call next_token(text(1:v2), p1, t1, t2)
+                if (t1 == 0) exit
+                p1 = t2 + 1
+                tok = text(t1:t2)
+                cnt = 1
+                star = index(tok, '*')
+                if (star > 1 .and. tok(1:1) /= '''' .and. tok(1:1) /= '"') then
+                    read (tok(1:star - 1), '(i20)', iostat=ios) cnt
+                    if (ios /= 0 .or. verify(tok(1:star - 1), '0123456789') /= 0) then
+                        cnt = 1
+                    else
+                        tok = tok(star + 1:)
+                    end if
+                end if
+                nval = nval + cnt
+                if (len(tok) == 0) cycle
+                if (.not. token_ok(tok, kind)) then
+                    select case (kind)
+                    case ('r')
+                        why = lhs//' = '//val//': '''//tok// &
+                            ''' is not a real number'
+                    case ('c')
+                        why = lhs//' = '//val//': character values '// &
+                            'must be quoted, e.g. '//nm//' = ''...'''
+                    case default
+                        why = lhs//' = '//val//': '''//tok// &
+                            ''' is not a logical; allowed: .true., .false.'
+                    end select
+                    return
+                end if
+            end do
+            if (.not. subscripted .and. nval > vsize) then
+                why = lhs//' = '//val//': too many values for '//nm// &
+                    ' (it holds '//itoa(vsize)//')'
+                return
+            end if
+        end do
+    end function explain
+
+    !> Next token of s after position p (blanks and commas separate; quotes kept whole).
+    subroutine next_token(s, p, t1, t2)
+        character(len=*), intent(in) :: s           !! text
+        integer, intent(in) :: p                    !! start searching here
+        integer, intent(out) :: t1, t2              !! token s(t1:t2); t1 = 0 when none
+        integer :: i
+        character :: q
+        t1 = 0
+        t2 = 0
+        i = p
+        do while (i <= len(s))
+            if (s(i:i) /= ' ' .and. s(i:i) /= ',') exit
+            i = i + 1
+        end do
+        if (i > len(s)) return
+        t1 = i
+        q = ' '
+        do while (i <= len(s))
+            if (q /= ' ') then
+                if (s(i:i) == q) q = ' '
+            else if (s(i:i) == '''' .or. s(i:i) == '"') then
+                q = s(i:i)
+            else if (s(i:i) == ' ' .or. s(i:i) == ',') then
+                exit
+            end if
+            i = i + 1
+        end do
+        t2 = i - 1
+    end subroutine next_token
+
+    !> Whether a value token has the form its kind needs.
+    logical function token_ok(tok, kind)
+        character(len=*), intent(in) :: tok         !! the token (repeat count removed)
+        character, intent(in) :: kind               !! r, c or l
+        character(len=:), allocatable :: s
+        s = lower(tok)
+        select case (kind)
+        case ('r')
+            token_ok = is_real(s)
+        case ('c')
+            token_ok = .false.
+            if (len(s) >= 2) token_ok = (s(1:1) == '''' .or. s(1:1) == '"') .and. &
+                s(len(s):len(s)) == s(1:1)
+        case default
+            if (s(1:1) == '.') s = s(2:)
+            token_ok = .false.
+            if (len(s) > 0) token_ok = s(1:1) == 't' .or. s(1:1) == 'f'
+        end select
+    end function token_ok
+
+    !> Whether s (lower case) is a Fortran real literal, NaN or Inf.
+    logical function is_real(s)
+        character(len=*), intent(in) :: s           !! candidate, lower case
+        integer :: i, nd
+        is_real = .false.
+        i = 1
+        if (len(s) == 0) return
+        if (s(1:1) == '+' .or. s(1:1) == '-') i = 2
+        if (i > len(s)) return
+        if (s(i:) == 'nan' .or. s(i:) == 'inf' .or. s(i:) == 'infinity') then
+            is_real = .true.
+            return
+        end if
+        nd = 0
+        do while (i <= len(s))
+            if (index('0123456789', s(i:i)) == 0) exit
+            nd = nd + 1
+            i = i + 1
+        end do
+        if (i <= len(s)) then
+            if (s(i:i) == '.') then
+                i = i + 1
+                do while (i <= len(s))
+                    if (index('0123456789', s(i:i)) == 0) exit
+                    nd = nd + 1
+                    i = i + 1
+                end do
+            end if
+        end if
+        if (nd == 0) return
+        if (i > len(s)) then
+            is_real = .true.
+            return
+        end if
+        if (index('edq', s(i:i)) > 0) i = i + 1
+        if (i <= len(s)) then
+            if (s(i:i) == '+' .or. s(i:i) == '-') i = i + 1
+        end if
+        if (i > len(s)) return
+        is_real = verify(s(i:), '0123456789') == 0
+    end function is_real
+
+    !> Blank-separated names of a spec, as 'a, b, c'.
+    function spec_names(spec) result(s)
+        character(len=*), intent(in) :: spec        !! see SPEC_*
+        character(len=:), allocatable :: s
+        integer :: i1, i2, c
+        s = ''
+        i2 = 0
+        do
+            call next_word(spec, i2, i1)
+            if (i1 == 0) exit
+            c = index(spec(i1:i2), ':')
+            if (len(s) > 0) s = s//', '
+            s = s//spec(i1:i1 + c - 2)
+        end do
+    end function spec_names
+
+    !> Kind and size of variable nm in spec; kind = ' ' when unknown.
+    subroutine spec_lookup(spec, nm, kind, vsize)
+        character(len=*), intent(in) :: spec        !! see SPEC_*
+        character(len=*), intent(in) :: nm          !! variable name, lower case
+        character, intent(out) :: kind              !! r, c, l or blank
+        integer, intent(out) :: vsize               !! number of elements
+        integer :: i1, i2, c, ios
+        kind = ' '
+        vsize = 0
+        i2 = 0
+        do
+            call next_word(spec, i2, i1)
+            if (i1 == 0) exit
+            c = i1 + index(spec(i1:i2), ':') - 1
+            if (spec(i1:c - 1) == nm) then
+                kind = spec(c + 1:c + 1)
+                read (spec(c + 2:i2), *, iostat=ios) vsize
+                return
+            end if
+        end do
+    end subroutine spec_lookup
+
+    ! ---------------------------------------------------------------- small helpers
+
+    !> Next blank-separated word of s after position i2: s(i1:i2); i1 = 0 when none.
+    pure subroutine next_word(s, i2, i1)
+        character(len=*), intent(in) :: s           !! text
+        integer, intent(inout) :: i2                !! in: end of previous word; out: end
+        integer, intent(out) :: i1                  !! start of the word, 0 when none
+        integer :: i
+        i1 = 0
+        i = i2 + 1
+        do while (i <= len(s))
+            if (s(i:i) /= ' ') exit
+            i = i + 1
+        end do
+        if (i > len(s)) return
+        i1 = i
+        do while (i <= len(s))
+            if (s(i:i) == ' ') exit
+            i = i + 1
+        end do
+        i2 = i - 1
+    end subroutine next_word
+
+    !> File name without directory and without a trailing '.nml'.
+    pure function deck_name(path) result(nm)
+        character(len=*), intent(in) :: path        !! deck path
+        character(len=:), allocatable :: nm
+        integer :: i
+        i = index(path, '/', back=.true.)
+        nm = trim(path(i + 1:))
+        if (len(nm) > 4) then
+            if (nm(len(nm) - 3:) == '.nml') nm = nm(1:len(nm) - 4)
+        end if
+        if (len(nm) == 0) nm = 'deck'
+    end function deck_name
+
+    pure function lower(s) result(t)
+        character(len=*), intent(in) :: s           !! any text
+        character(len=len(s)) :: t
+        integer :: i
+        t = s
+        do i = 1, len(s)
+            if (s(i:i) >= 'A' .and. s(i:i) <= 'Z') t(i:i) = achar(iachar(s(i:i)) + 32)
+        end do
+    end function lower
+
+    pure logical function is_ident(c)
+        character, intent(in) :: c                  !! one character
+        is_ident = (c >= 'a' .and. c <= 'z') .or. (c >= 'A' .and. c <= 'Z') .or. &
+                   (c >= '0' .and. c <= '9') .or. c == '_'
+    end function is_ident
+
+    !> 'a b c' -> 'a, b, c' (or another separator).
+    pure function commas(words, sep) result(s)
+        character(len=*), intent(in) :: words       !! blank-separated words
+        character(len=*), intent(in), optional :: sep   !! separator, default ', '
+        character(len=:), allocatable :: s
+        integer :: i1, i2
+        s = ''
+        i2 = 0
+        do
+            call next_word(words, i2, i1)
+            if (i1 == 0) exit
+            if (len(s) > 0) then
+                if (present(sep)) then
+                    s = s//sep
+                else
+                    s = s//', '
+                end if
+            end if
+            s = s//words(i1:i2)
+        end do
+    end function commas
+
+    !> Shortest real that reads back exactly (for messages): 180, 0.3, 1e-15, 1.7e308.
+    function rshort(x) result(s)
+        real(dp), intent(in) :: x                   !! value
+        character(len=:), allocatable :: s
+        character(len=48) :: buf
+        integer :: k, ios, ie
+        real(dp) :: y
+        logical :: halting(size(ieee_usual)), fixed
+        if (.not. ieee_is_finite(x)) then
+            write (buf, '(g0)') x
+            s = trim(adjustl(buf))
+            return
+        end if
+        call traps_off(halting)     ! a rounded 1.7e308 reads back as an overflow
+        fixed = .false.
+        if (x == 0.0_dp .or. (abs(x) >= 1.0e-4_dp .and. abs(x) < 1.0e15_dp)) then
+            do k = 0, 24
+                write (buf, '(f48.'//itoa(k)//')') x
+                read (buf, *, iostat=ios) y
+                fixed = ios == 0 .and. y == x
+                if (fixed) exit
+            end do
+        end if
+        if (fixed) then
+            s = trim(adjustl(buf))
+            if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
+            if (s(1:1) == '.') s = '0'//s
+            if (s(1:2) == '-.') s = '-0'//s(2:)
+        else
+            do k = 0, 16
+                write (buf, '(es48.'//itoa(k)//'e3)') x
+                read (buf, *, iostat=ios) y
+                if (ios == 0 .and. y == x) exit
+            end do
+            s = trim(adjustl(buf))
+            ie = index(s, 'E')
+            ! 1.E-015 -> 1e-15, 1.7E+308 -> 1.7e308
+            k = ie + 2
+            do while (k < len(s))
+                if (s(k:k) /= '0') exit
+                k = k + 1
+            end do
+            if (s(ie + 1:ie + 1) == '-') then
+                s = s(1:ie - 1)//'e-'//s(k:)
+            else
+                s = s(1:ie - 1)//'e'//s(k:)
+            end if
+            ie = index(s, '.e')
+            if (ie > 0) s = s(1:ie - 1)//s(ie + 1:)
+        end if
+        call traps_restore(halting)
+    end function rshort
+
+    !> Stop trapping overflow, division by zero and invalid (when traps are supported),
+    !! remembering the halting modes in saved.
+    subroutine traps_off(saved)
+        logical, intent(out) :: saved(:)            !! halting modes of ieee_usual
+        integer :: k
+        do k = 1, size(ieee_usual)
+            saved(k) = .false.
+            if (ieee_support_halting(ieee_usual(k))) then
+                call ieee_get_halting_mode(ieee_usual(k), saved(k))
+                call ieee_set_halting_mode(ieee_usual(k), .false.)
+            end if
+        end do
+    end subroutine traps_off
+
+    !> Clear the flags raised since traps_off and restore the halting modes.
+    subroutine traps_restore(saved)
+        logical, intent(in) :: saved(:)             !! from traps_off
+        integer :: k
+        call ieee_set_flag(ieee_usual, .false.)
+        do k = 1, size(ieee_usual)
+            if (ieee_support_halting(ieee_usual(k))) &
+                call ieee_set_halting_mode(ieee_usual(k), saved(k))
+        end do
+    end subroutine traps_restore
+
+    function rlist_short(x) result(s)
+        real(dp), intent(in) :: x(:)                !! values
+        character(len=:), allocatable :: s
+        integer :: i
+        s = ''
+        do i = 1, size(x)
+            if (i > 1) s = s//', '
+            s = s//rshort(x(i))
+        end do
+    end function rlist_short
+
+    function btilde_short(bt) result(s)
+        real(dp), intent(in) :: bt(3,3)             !! btilde
+        character(len=:), allocatable :: s
+        s = '['//rlist_short(bt(1, :))//'; '//rlist_short(bt(2, :))//'; '// &
+            rlist_short(bt(3, :))//']'
+    end function btilde_short
+
+    function itoa(i) result(s)
+        integer, intent(in) :: i                    !! value
+        character(len=:), allocatable :: s
+        character(len=16) :: buf
+        write (buf, '(i0)') i
+        s = trim(buf)
+    end function itoa
+
+    !> Quoted for namelist output, inner quotes doubled.
+    pure function quoted(s) result(t)
+        character(len=*), intent(in) :: s           !! text
+        character(len=:), allocatable :: t
+        integer :: i
+        t = ''''
+        do i = 1, len_trim(s)
+            if (s(i:i) == '''') then
+                t = t//''''''
+            else
+                t = t//s(i:i)
+            end if
+        end do
+        t = t//''''
+    end function quoted
+
+end module deck

@@ -1,0 +1,202 @@
+!> Geometry of the bifilar pendulum (Kane & Tseng 1966, eqs. (1)-(11), (44)).
+!!
+!! Frames and points, in the paper's conventions (see ../shared/paper/NOTES.md):
+!! n3 points up, A is the origin, B = -b n2, C = B + l (s2 c3, s2 s3, -c2),
+!! D = C + b' (c5 s4, c5 c4, s5); the cable AD has length l'.  All routines here work
+!! in lengths divided by b' (L = l/b', B = b/b', L' = l'/b'), so b' = 1.
+!!
+!! The paper's eq. (2) is used with its misprint corrected (b' c4 c5 in the second bracket).
+module geometry
+    use kinds, only: dp, pi
+    use status, only: status_t, set_error, ERR_DECK
+    implicit none
+    private
+
+    !> Scaled parameters of one pendulum (lengths over b', mass over m, time over sqrt(b'/g)).
+    type, public :: pendulum_t
+        real(dp) :: big_l = 2.0_dp      !! L  = l/b'
+        real(dp) :: big_lp = 2.0_dp     !! L' = l'/b'
+        real(dp) :: big_b = 1.0_dp      !! B  = b/b'
+        real(dp) :: inertia(3) = [0.125_dp, 0.1458333333333333_dp, 0.1458333333333333_dp]
+                                        !! I_i/(m b'^2), principal moments for R*
+        real(dp) :: r = 0.7071067811865476_dp  !! |C R*| / b'
+        real(dp) :: lambda = pi/4       !! angle between r and ntilde_3 (rad)
+        real(dp) :: btilde(3, 3) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, &
+                                            0.0_dp, 0.0_dp, 1.0_dp], [3, 3])  !! eq. (9)
+        real(dp) :: h_e = 1.0_dp        !! depth of E below the midpoint of CD, over b'
+        real(dp) :: stab_rate = 0.0_dp  !! Baumgarte rate a: the twice-differentiated constraint
+                                        !! is imposed as G'' + 2 a G' + a^2 G = 0 (0: G'' = 0)
+    end type pendulum_t
+
+    public :: constraint_g, beta_coeffs, direction_cosines, body_axes
+    public :: raised_angles, solve_theta5, cable_direction, point_d, mass_centre, point_e
+
+contains
+
+    !> Residual of the constraint eq. (2) divided by b'^2:
+    !! G = (L s2 c3 + s4 c5)^2 + (-B + L s2 s3 + c4 c5)^2 + (-L c2 + s5)^2 - L'^2.
+    pure real(dp) function constraint_g(p, th) result(g)
+        type(pendulum_t), intent(in) :: p   !! scaled parameters
+        real(dp), intent(in) :: th(5)       !! theta_1..theta_5 (rad)
+        real(dp) :: d(3)
+        d = point_d(p, th)
+        g = dot_product(d, d) - p%big_lp**2
+    end function constraint_g
+
+    !> beta_1..beta_5 of eq. (4): eq. (3) reads sum_{i<=4} beta_i thdot_i - beta_5 thdot_5 = 0,
+    !! and beta_i = (1/2) dG/dtheta_i (i = 2..4), beta_5 = -(1/2) dG/dtheta_5, beta_1 = 0.
+    pure function beta_coeffs(p, th) result(beta)
+        type(pendulum_t), intent(in) :: p   !! scaled parameters
+        real(dp), intent(in) :: th(5)       !! theta_1..theta_5 (rad)
+        real(dp) :: beta(5)
+        real(dp) :: s2, c2, s3, c3, s4, c4, s5, c5, x, y, z
+        s2 = sin(th(2)); c2 = cos(th(2)); s3 = sin(th(3)); c3 = cos(th(3))
+        s4 = sin(th(4)); c4 = cos(th(4)); s5 = sin(th(5)); c5 = cos(th(5))
+        x = p%big_l*s2*c3 + s4*c5
+        y = -p%big_b + p%big_l*s2*s3 + c4*c5
+        z = -p%big_l*c2 + s5
+        beta(1) = 0.0_dp
+        beta(2) = p%big_l*(c2*c3*x + c2*s3*y + s2*z)
+        beta(3) = p%big_l*(-s2*s3*x + s2*c3*y)
+        beta(4) = c4*c5*x - s4*c5*y
+        beta(5) = s4*s5*x + c4*s5*y - c5*z
+    end function beta_coeffs
+
+    !> Direction cosines n_ij of eq. (8): ntilde_i = sum_j n(i,j) n_j.  Uses theta_1, 4, 5.
+    pure function direction_cosines(th) result(n)
+        real(dp), intent(in) :: th(5)       !! theta_1..theta_5 (rad)
+        real(dp) :: n(3, 3)
+        real(dp) :: s1, c1, s4, c4, s5, c5
+        s1 = sin(th(1)); c1 = cos(th(1)); s4 = sin(th(4)); c4 = cos(th(4))
+        s5 = sin(th(5)); c5 = cos(th(5))
+        n(1, :) = [s1*c4 + c1*s4*s5, -s1*s4 + c1*c4*s5, -c1*c5]
+        n(2, :) = [c1*c4 - s1*s4*s5, -c1*s4 - s1*c4*s5, s1*c5]
+        n(3, :) = [-s4*c5, -c4*c5, -s5]
+    end function direction_cosines
+
+    !> b_ij of eq. (11): b_i = sum_j b(i,j) n_j, b = btilde n.
+    pure function body_axes(p, n) result(b)
+        type(pendulum_t), intent(in) :: p   !! scaled parameters (btilde)
+        real(dp), intent(in) :: n(3, 3)     !! direction cosines of eq. (8)
+        real(dp) :: b(3, 3)
+        b = matmul(p%btilde, n)
+    end function body_axes
+
+    !> Unit vector along BC from its horizontal components sigma = s2 (c3, s3):
+    !! e = (sigma_1, sigma_2, -sqrt(1 - |sigma|^2)).  Regular at theta_2 = 0.
+    pure function cable_direction(sigma) result(e)
+        real(dp), intent(in) :: sigma(2)    !! horizontal components of the unit vector B->C
+        real(dp) :: e(3)
+        e = [sigma(1), sigma(2), -sqrt(max(0.0_dp, 1.0_dp - sigma(1)**2 - sigma(2)**2))]
+    end function cable_direction
+
+    !> Position of D (over b'), A at the origin: D = B + L e + (c5 s4, c5 c4, s5), eq. (1).
+    pure function point_d(p, th) result(d)
+        type(pendulum_t), intent(in) :: p   !! scaled parameters
+        real(dp), intent(in) :: th(5)       !! theta_1..theta_5 (rad)
+        real(dp) :: d(3)
+        d = [p%big_l*sin(th(2))*cos(th(3)) + cos(th(5))*sin(th(4)), &
+             -p%big_b + p%big_l*sin(th(2))*sin(th(3)) + cos(th(5))*cos(th(4)), &
+             -p%big_l*cos(th(2)) + sin(th(5))]
+    end function point_d
+
+    !> Mass centre R* (over b'): C + r (s_lam ntilde_1 - c_lam ntilde_3), eqs. (21)-(22).
+    pure function mass_centre(p, c, n) result(rs)
+        type(pendulum_t), intent(in) :: p   !! scaled parameters
+        real(dp), intent(in) :: c(3)        !! position of C
+        real(dp), intent(in) :: n(3, 3)     !! direction cosines of eq. (8)
+        real(dp) :: rs(3)
+        rs = c + p%r*(sin(p%lambda)*n(1, :) - cos(p%lambda)*n(3, :))
+    end function mass_centre
+
+    !> Body point E: h_E below the midpoint of CD at rest, E = C - (1/2) ntilde_3 + h_E ntilde_1.
+    pure function point_e(p, c, n) result(e)
+        type(pendulum_t), intent(in) :: p   !! scaled parameters
+        real(dp), intent(in) :: c(3)        !! position of C
+        real(dp), intent(in) :: n(3, 3)     !! direction cosines of eq. (8)
+        real(dp) :: e(3)
+        e = c - 0.5_dp*n(3, :) + p%h_e*n(1, :)
+    end function point_e
+
+    !> The paper's start recipe: theta_1..theta_4 the body would have with l' = l after being
+    !! raised by turning it `amplitude` about the vertical through O (the midpoint of AB),
+    !! with CD horizontal and its midpoint on that vertical.  theta_5 is set to 0 here.
+    !! For b = b' this gives eq. (49): theta_2 = asin((b'/l) sin(q4/2)), theta_3 = pi - q4/2.
+    pure subroutine raised_angles(p, amplitude, th, stat)
+        type(pendulum_t), intent(in) :: p   !! scaled parameters
+        real(dp), intent(in) :: amplitude   !! rotation about the vertical (rad)
+        real(dp), intent(out) :: th(5)      !! theta_1..theta_5 (rad)
+        type(status_t), intent(out) :: stat !! ERR_DECK when cable BC cannot reach
+        real(dp) :: hx, hy, h2
+        character(len=160) :: buf
+        th = 0.0_dp
+        th(4) = amplitude
+        ! C - B, horizontal part: C = O - d/2 with O = (0, -B/2), d = (s4, c4, 0)
+        hx = -0.5_dp*sin(amplitude)
+        hy = 0.5_dp*p%big_b - 0.5_dp*cos(amplitude)
+        h2 = hx**2 + hy**2
+        if (h2 >= p%big_l**2) then
+            write (buf, '(a,es10.3,a,es10.3)') 'l/b'' = ', p%big_l, &
+                ': cable BC cannot reach the raised start; needs l/b'' > ', sqrt(h2)
+            call set_error(stat, ERR_DECK, '&start amplitude / &suspension l: '//trim(buf))
+            return
+        end if
+        th(2) = asin(sqrt(h2)/p%big_l)
+        th(3) = atan2(hy, hx)
+        if (h2 == 0.0_dp) th(3) = pi - 0.5_dp*amplitude
+    end subroutine raised_angles
+
+    !> Solve eq. (2) for theta_5 given theta_1..theta_4: the homotopy of eq. (44),
+    !! G(q5(xi)) = (1 - xi) G(0), dq5/dxi = C/(2 beta_5), integrated from xi = 0 (q5 = 0)
+    !! to xi = 1 by classical Runge-Kutta, then polished by Newton on G(q5) = 0.
+    pure subroutine solve_theta5(p, th, stat)
+        type(pendulum_t), intent(in) :: p   !! scaled parameters
+        real(dp), intent(inout) :: th(5)    !! in: theta_1..4; out: theta_5 set
+        type(status_t), intent(out) :: stat !! ERR_DECK when no solution is found
+        integer, parameter :: nsteps = 32
+        real(dp) :: cc, h, k1, k2, k3, k4, g, dg
+        integer :: i
+        character(len=200) :: buf
+        th(5) = 0.0_dp
+        cc = constraint_g(p, th)
+        h = 1.0_dp/nsteps
+        do i = 1, nsteps
+            k1 = slope(th(5))
+            k2 = slope(th(5) + 0.5_dp*h*k1)
+            k3 = slope(th(5) + 0.5_dp*h*k2)
+            k4 = slope(th(5) + h*k3)
+            th(5) = th(5) + h*(k1 + 2.0_dp*k2 + 2.0_dp*k3 + k4)/6.0_dp
+            if (.not. (abs(th(5)) < pi)) exit
+        end do
+        do i = 1, 20
+            g = constraint_g(p, th)
+            dg = -2.0_dp*beta5(th(5))
+            if (abs(dg) < 1.0e-12_dp .or. .not. (abs(th(5)) < pi)) exit
+            th(5) = th(5) - g/dg
+            if (abs(g) < 1.0e-15_dp) exit
+        end do
+        g = constraint_g(p, th)
+        if (.not. (abs(g) < 1.0e-12_dp) .or. .not. (abs(th(5)) < 0.5_dp*pi)) then
+            write (buf, '(a,es10.3,a)') 'no theta5 satisfies the constraint eq. (2) (residual ', &
+                g, '): the cables cannot both be taut at this start; change l, l_prime or the start'
+            call set_error(stat, ERR_DECK, trim(buf))
+        end if
+    contains
+        pure real(dp) function beta5(q5)
+            real(dp), intent(in) :: q5
+            real(dp) :: t(5), bb(5)
+            t = th
+            t(5) = q5
+            bb = beta_coeffs(p, t)
+            beta5 = bb(5)
+        end function beta5
+        pure real(dp) function slope(q5)
+            real(dp), intent(in) :: q5
+            real(dp) :: b5
+            b5 = beta5(q5)
+            slope = 0.0_dp
+            if (abs(b5) > 1.0e-14_dp) slope = cc/(2.0_dp*b5)
+        end function slope
+    end subroutine solve_theta5
+
+end module geometry

@@ -1,0 +1,156 @@
+!> Checked wrappers around the few LAPACK routines bifilar uses.
+!!
+!! Each wrapper checks the shapes of its arguments, calls LAPACK through an explicit
+!! interface, and maps INFO to a status_t with a message naming the routine and the cause.
+!! No wrapper stops the program.
+module lapack_wrap
+    use kinds, only: dp
+    use status, only: status_t, set_error, ERR_NUMERIC
+    implicit none
+    private
+
+    public :: la_solve, la_lu_factor, la_lu_solve, la_eig
+
+    interface
+        subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
+            import :: dp
+            integer, intent(in) :: n, nrhs, lda, ldb
+            real(dp), intent(inout) :: a(lda, *), b(ldb, *)
+            integer, intent(out) :: ipiv(*), info
+        end subroutine dgesv
+        subroutine dgetrf(m, n, a, lda, ipiv, info)
+            import :: dp
+            integer, intent(in) :: m, n, lda
+            real(dp), intent(inout) :: a(lda, *)
+            integer, intent(out) :: ipiv(*), info
+        end subroutine dgetrf
+        subroutine dgetrs(trans, n, nrhs, a, lda, ipiv, b, ldb, info)
+            import :: dp
+            character(len=1), intent(in) :: trans
+            integer, intent(in) :: n, nrhs, lda, ldb
+            real(dp), intent(in) :: a(lda, *)
+            integer, intent(in) :: ipiv(*)
+            real(dp), intent(inout) :: b(ldb, *)
+            integer, intent(out) :: info
+        end subroutine dgetrs
+        subroutine dgeev(jobvl, jobvr, n, a, lda, wr, wi, vl, ldvl, vr, ldvr, work, lwork, info)
+            import :: dp
+            character(len=1), intent(in) :: jobvl, jobvr
+            integer, intent(in) :: n, lda, ldvl, ldvr, lwork
+            real(dp), intent(inout) :: a(lda, *)
+            real(dp), intent(out) :: wr(*), wi(*), vl(ldvl, *), vr(ldvr, *), work(*)
+            integer, intent(out) :: info
+        end subroutine dgeev
+    end interface
+
+contains
+
+    !> Solve the square system A x = b in place (LAPACK DGESV, LU with partial pivoting).
+    !!
+    !! a   [in,out] real(dp)(n,n): the matrix; overwritten by its LU factors.
+    !! b   [in,out] real(dp)(n):   right-hand side on entry, solution x on return.
+    !! stat [out]: ERR_NUMERIC when the shapes disagree (INFO would be < 0) or
+    !!             when U(i,i) is exactly zero (INFO = i > 0: A is singular).
+    subroutine la_solve(a, b, stat)
+        real(dp), intent(inout) :: a(:, :)
+        real(dp), intent(inout) :: b(:)
+        type(status_t), intent(out) :: stat
+        integer :: n, info
+        integer :: ipiv(size(a, 1))
+        character(len=80) :: buf
+        n = size(a, 1)
+        if (size(a, 2) /= n .or. size(b) /= n) then
+            call set_error(stat, ERR_NUMERIC, 'la_solve: matrix and right-hand side shapes disagree')
+            return
+        end if
+        call dgesv(n, 1, a, n, ipiv, b, n, info)
+        if (info /= 0) then
+            write (buf, '(a,i0)') 'la_solve (dgesv): singular matrix, U(i,i) = 0 at i = ', info
+            if (info < 0) write (buf, '(a,i0)') 'la_solve (dgesv): illegal argument ', -info
+            call set_error(stat, ERR_NUMERIC, trim(buf))
+        end if
+    end subroutine la_solve
+
+    !> LU factorisation with partial pivoting of a square matrix (LAPACK DGETRF).
+    !!
+    !! a    [in,out] real(dp)(n,n): the matrix; overwritten by L and U.
+    !! ipiv [out]    integer(n):    pivot indices.
+    !! stat [out]: ERR_NUMERIC when the shapes disagree or U is exactly singular (INFO > 0).
+    subroutine la_lu_factor(a, ipiv, stat)
+        real(dp), intent(inout) :: a(:, :)
+        integer, intent(out) :: ipiv(:)
+        type(status_t), intent(out) :: stat
+        integer :: n, info
+        character(len=80) :: buf
+        n = size(a, 1)
+        if (size(a, 2) /= n .or. size(ipiv) < n) then
+            ipiv = 0
+            call set_error(stat, ERR_NUMERIC, 'la_lu_factor: matrix is not square or ipiv too short')
+            return
+        end if
+        call dgetrf(n, n, a, n, ipiv, info)
+        if (info /= 0) then
+            write (buf, '(a,i0)') 'la_lu_factor (dgetrf): singular matrix, U(i,i) = 0 at i = ', info
+            if (info < 0) write (buf, '(a,i0)') 'la_lu_factor (dgetrf): illegal argument ', -info
+            call set_error(stat, ERR_NUMERIC, trim(buf))
+        end if
+    end subroutine la_lu_factor
+
+    !> Solve A x = b with the factors from la_lu_factor (LAPACK DGETRS, no transpose).
+    !!
+    !! lu   [in]     real(dp)(n,n): factors from la_lu_factor.
+    !! ipiv [in]     integer(n):    pivots from la_lu_factor.
+    !! b    [in,out] real(dp)(n):   right-hand side on entry, solution on return.
+    !! stat [out]: ERR_NUMERIC when the shapes disagree.
+    subroutine la_lu_solve(lu, ipiv, b, stat)
+        real(dp), intent(in) :: lu(:, :)
+        integer, intent(in) :: ipiv(:)
+        real(dp), intent(inout) :: b(:)
+        type(status_t), intent(out) :: stat
+        integer :: n, info
+        n = size(lu, 1)
+        if (size(lu, 2) /= n .or. size(b) /= n .or. size(ipiv) < n) then
+            call set_error(stat, ERR_NUMERIC, 'la_lu_solve: factor, pivot and vector shapes disagree')
+            return
+        end if
+        call dgetrs('N', n, 1, lu, n, ipiv, b, n, info)
+        if (info /= 0) call set_error(stat, ERR_NUMERIC, 'la_lu_solve (dgetrs): illegal argument')
+    end subroutine la_lu_solve
+
+    !> Eigenvalues of a general real square matrix (LAPACK DGEEV, no eigenvectors).
+    !!
+    !! a    [in]  real(dp)(n,n): the matrix (not changed: a copy is factored).
+    !! lam  [out] complex(dp)(n): eigenvalues; conjugate pairs are adjacent, positive
+    !!            imaginary part first (built from DGEEV's WR and WI).
+    !! stat [out]: ERR_NUMERIC on a shape mismatch or when the QR algorithm fails to
+    !!             converge (INFO > 0: eigenvalues INFO+1:N would be the converged ones).
+    subroutine la_eig(a, lam, stat)
+        real(dp), intent(in) :: a(:, :)
+        complex(dp), intent(out) :: lam(:)
+        type(status_t), intent(out) :: stat
+        real(dp), allocatable :: acopy(:, :), work(:)
+        real(dp) :: wr(size(a, 1)), wi(size(a, 1)), vl(1, 1), vr(1, 1), wquery(1)
+        integer :: n, info, lwork
+        character(len=80) :: buf
+        n = size(a, 1)
+        lam = (0.0_dp, 0.0_dp)
+        if (size(a, 2) /= n .or. size(lam) /= n) then
+            call set_error(stat, ERR_NUMERIC, 'la_eig: matrix is not square or lam has the wrong size')
+            return
+        end if
+        allocate (acopy(n, n))
+        acopy(:, :) = a
+        call dgeev('N', 'N', n, acopy, n, wr, wi, vl, 1, vr, 1, wquery, -1, info)
+        lwork = max(1, int(wquery(1)))
+        allocate (work(lwork))
+        call dgeev('N', 'N', n, acopy, n, wr, wi, vl, 1, vr, 1, work, lwork, info)
+        if (info /= 0) then
+            write (buf, '(a,i0)') 'la_eig (dgeev): QR algorithm failed to converge, info = ', info
+            if (info < 0) write (buf, '(a,i0)') 'la_eig (dgeev): illegal argument ', -info
+            call set_error(stat, ERR_NUMERIC, trim(buf))
+            return
+        end if
+        lam = cmplx(wr, wi, kind=dp)
+    end subroutine la_eig
+
+end module lapack_wrap

@@ -1,0 +1,1413 @@
+!> LSODA-style integrator for y' = f(t, y): variable step, variable order Nordsieck-array
+!! methods with automatic switching between non-stiff and stiff integration.
+!!
+!! Algorithm (written from the published descriptions: Hindmarsh, "ODEPACK, a systematized
+!! collection of ODE solvers" and the LSODE/LSODA documentation; Petzold 1983, "Automatic
+!! selection of methods for solving stiff and nonstiff systems of ODEs"; Byrne & Hindmarsh 1975
+!! on Nordsieck-array methods):
+!!
+!! * Non-stiff: Adams-Moulton, orders 1-12, corrector solved by functional (fixed-point)
+!!   iteration.  While it runs, the iteration gives an estimate of the local Lipschitz
+!!   constant of f; the step is also limited to the (approximate) stability region.
+!! * Stiff: BDF, orders 1-5, corrector solved by a chord Newton iteration with the
+!!   iteration matrix P = I - h*l0*J, factored by LAPACK (module lapack_wrap).  J is the
+!!   analytic Jacobian when the system has one, else a finite-difference Jacobian.  P is
+!!   kept while it serves and rebuilt after a convergence failure, every 20 steps, or when
+!!   h*l0 changed by more than 30 %.
+!! * Switching: at least 20 steps after the last switch, on every step the step size the
+!!   other method could take (at the same accuracy, and for Adams inside its stability
+!!   region) is compared with the current one; Adams -> BDF when BDF would be at least
+!!   5 times larger, BDF -> Adams when Adams would not be smaller.
+!! * Error control: local error estimate per step in the weighted max-norm (as LSODA:
+!!   ||v|| = max_i |v_i|/w_i, w_i = rtol*|y_i| + atol_i), order and step chosen to keep it
+!!   below 1.
+!! * Output: the solution at any t inside the last step by interpolation from the Nordsieck
+!!   array (integrate, dense), optional hard stop time tcrit never stepped over.
+!!
+!! All state lives in a `lsoda_t` object, so independent integrations can be interleaved.
+!! No routine stops the program: every failure is returned in a status_t with one of the
+!! LSODA_ERR_* codes (or the code the right-hand side returned) and a message naming the
+!! cause and the time reached; the solution up to the failure is kept.
+module lsoda
+    use kinds, only: dp
+    use status, only: status_t, set_error, STATUS_OK
+    use ode_system, only: ode_system_t
+    use lapack_wrap, only: la_lu_factor, la_lu_solve
+    implicit none
+    private
+
+    integer, parameter, public :: METHOD_ADAMS = 1   !! non-stiff method (Adams-Moulton)
+    integer, parameter, public :: METHOD_BDF = 2     !! stiff method (backward differentiation)
+
+    !> Failure codes in status_t%code (all > 10, distinct from the project's ERR_* codes).
+    integer, parameter, public :: LSODA_ERR_MAX_STEPS = 11          !! max_steps taken in one call
+    integer, parameter, public :: LSODA_ERR_TOO_MUCH_ACCURACY = 12  !! tolerance below roundoff
+    integer, parameter, public :: LSODA_ERR_ERROR_TEST = 13         !! repeated error-test failures
+    integer, parameter, public :: LSODA_ERR_CONVERGENCE = 14        !! repeated corrector failures
+    integer, parameter, public :: LSODA_ERR_ILLEGAL_INPUT = 15      !! bad argument
+    integer, parameter, public :: LSODA_ERR_SINGULAR = 16           !! singular iteration matrix
+
+    integer, parameter :: MAXORD_ADAMS = 12
+    integer, parameter :: MAXORD_BDF = 5
+    integer, parameter :: LMAX_ALL = MAXORD_ADAMS + 1
+    real(dp), parameter :: UROUND = epsilon(1.0_dp)
+    !> Approximate stability-region sizes |h*L| of the Adams methods of order 1..12
+    !! (the values Petzold's LSODA uses).
+    real(dp), parameter :: SM1(MAXORD_ADAMS) = [0.5_dp, 0.575_dp, 0.55_dp, 0.45_dp, 0.35_dp, &
+        0.25_dp, 0.2_dp, 0.15_dp, 0.1_dp, 0.075_dp, 0.05_dp, 0.025_dp]
+    real(dp), parameter :: CCMAX = 0.3_dp          !! rebuild P when h*l0 changed by more
+    integer, parameter :: MSBP = 20                !! rebuild P at least every MSBP steps
+    integer, parameter :: MAXCOR = 3               !! corrector iterations per attempt
+    integer, parameter :: MXNCF = 10               !! convergence failures per step
+    integer, parameter :: MXNEF = 10               !! error-test failures per step
+    integer, parameter :: SWITCH_WAIT = 20         !! steps after a switch before the next test
+    real(dp), parameter :: SWITCH_RATIO = 5.0_dp   !! cost ratio of a BDF to an Adams step
+    integer, parameter :: DEFAULT_MAX_STEPS = 500000
+
+    ! internal outcome of one call of take_step
+    integer, parameter :: KF_OK = 0, KF_ERRTEST = -1, KF_CONV = -2, KF_SINGULAR = -3, &
+        KF_FATAL = -4
+
+    !> Counters and the state of the method, as returned by lsoda_t%stats().
+    type, public :: lsoda_stats_t
+        integer :: steps = 0            !! successful steps since init
+        integer :: rhs_evals = 0        !! calls of sys%rhs (including finite-difference Jacobians)
+        integer :: jac_evals = 0        !! Jacobian evaluations (analytic or finite differences)
+        integer :: lu_decomps = 0       !! LU factorisations of the iteration matrix
+        integer :: method_switches = 0  !! switches Adams <-> BDF
+        integer :: method_last = 0      !! METHOD_ADAMS or METHOD_BDF, used on the last step
+        integer :: order_last = 0       !! order used on the last step
+        integer :: method_next = 0      !! method to be tried on the next step
+        integer :: order_next = 0       !! order to be tried on the next step
+        real(dp) :: h_last = 0.0_dp     !! last step size taken (signed)
+        real(dp) :: h_next = 0.0_dp     !! step size to be tried next (signed)
+        real(dp) :: t_current = 0.0_dp  !! time reached by the integration (end of last step)
+    end type lsoda_stats_t
+
+    !> One integration: the Nordsieck array, method state, work arrays and counters.
+    type, public :: lsoda_t
+        private
+        logical :: ready = .false.      ! init succeeded
+        logical :: started = .false.    ! initial step size chosen
+        integer :: n = 0
+        real(dp) :: rtol = 0.0_dp
+        real(dp), allocatable :: atol(:)
+        real(dp), allocatable :: yh(:, :)      ! Nordsieck array: yh(:,j+1) = h**j y^(j)/j!
+        real(dp), allocatable :: rewt(:)       ! reciprocal error weights 1/(rtol|y|+atol)
+        real(dp), allocatable :: y(:), savf(:), acor(:), ftem(:)
+        real(dp), allocatable :: wm(:, :)      ! iteration matrix / its LU factors
+        integer, allocatable :: ipiv(:)
+        real(dp) :: elco(LMAX_ALL, MAXORD_ADAMS, 2) = 0.0_dp
+        real(dp) :: tesco(3, MAXORD_ADAMS, 2) = 0.0_dp
+        real(dp) :: cm1(MAXORD_ADAMS) = 0.0_dp, cm2(MAXORD_BDF) = 0.0_dp
+        real(dp) :: el(LMAX_ALL) = 0.0_dp
+        real(dp) :: tn = 0.0_dp, told = 0.0_dp, tlast = 0.0_dp, dir = 1.0_dp
+        real(dp) :: h = 0.0_dp, hold = 0.0_dp, hu = 0.0_dp, h0_user = 0.0_dp
+        real(dp) :: hmin = 0.0_dp, hmxi = 0.0_dp
+        real(dp) :: tcrit = 0.0_dp
+        logical :: have_tcrit = .false.
+        real(dp) :: rc = 0.0_dp, el0 = 1.0_dp, crate = 0.7_dp, conit = 0.0_dp, rmax = 1.0e4_dp
+        real(dp) :: pdest = 0.0_dp, pdlast = 0.0_dp, pdnorm = 0.0_dp, tsw = 0.0_dp
+        integer :: nq = 1, l = 2, lmax = 13, meth = METHOD_ADAMS, mused = 0, nqu = 0
+        integer :: ialth = 2, icount = SWITCH_WAIT, irflag = 0, nslp = 0, jstart = 0
+        integer :: kflag = 0
+        logical :: ipup = .false., jcur = .false.
+        integer :: mxordn = MAXORD_ADAMS, mxords = MAXORD_BDF
+        integer :: max_steps = DEFAULT_MAX_STEPS
+        integer :: nst = 0, nfe = 0, nje = 0, nlu = 0, nswitch = 0, steps_call = 0
+    contains
+        procedure :: init => lsoda_init
+        procedure :: integrate => lsoda_integrate
+        procedure :: step => lsoda_step
+        procedure :: dense => lsoda_dense
+        procedure :: stats => lsoda_get_stats
+        procedure :: set_tcrit => lsoda_set_tcrit
+    end type lsoda_t
+
+contains
+
+    ! ------------------------------------------------------------------------------------
+    ! Public routines
+    ! ------------------------------------------------------------------------------------
+
+    !> Start an integration at (t0, y0).
+    !!
+    !! sys       [in,out] the right-hand side; called once here for f(t0, y0).
+    !! t0        [in]  initial time (units of the problem's independent variable).
+    !! y0        [in]  initial state, size n >= 1.
+    !! rtol      [in]  relative tolerance, >= 0.
+    !! atol      [in]  absolute tolerance, size 1 (same for all components) or n, each >= 0.
+    !!                 Error weights w_i = rtol*|y_i| + atol_i must stay > 0.
+    !! stat      [out] STATUS_OK; LSODA_ERR_ILLEGAL_INPUT for bad arguments; or the code
+    !!                 the right-hand side returned.
+    !! tcrit     [in, optional] time the integration must never step past.
+    !! h0        [in, optional] first step size to try (sign ignored); default: chosen
+    !!                 from f(t0,y0), the tolerances and the first output time.
+    !! hmax      [in, optional] largest |h| (> 0); default unlimited.
+    !! max_steps [in, optional] most steps in one call of integrate (default 500000).
+    !! max_order_adams [in, optional] highest Adams order, 1..12 (default 12).
+    !! max_order_bdf   [in, optional] highest BDF order, 1..5 (default 5).
+    subroutine lsoda_init(s, sys, t0, y0, rtol, atol, stat, tcrit, h0, hmax, max_steps, &
+                          max_order_adams, max_order_bdf)
+        class(lsoda_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        real(dp), intent(in) :: t0
+        real(dp), intent(in) :: y0(:)
+        real(dp), intent(in) :: rtol
+        real(dp), intent(in) :: atol(:)
+        type(status_t), intent(out) :: stat
+        real(dp), intent(in), optional :: tcrit
+        real(dp), intent(in), optional :: h0
+        real(dp), intent(in), optional :: hmax
+        integer, intent(in), optional :: max_steps
+        integer, intent(in), optional :: max_order_adams
+        integer, intent(in), optional :: max_order_bdf
+        integer :: n
+        character(len=120) :: buf
+
+        s%ready = .false.
+        s%started = .false.
+        n = size(y0)
+        if (n < 1) then
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda init: empty state vector')
+            return
+        end if
+        if (.not. (rtol >= 0.0_dp)) then
+            write (buf, '(a,es10.3,a)') 'lsoda init: rtol = ', rtol, ' is negative'
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
+            return
+        end if
+        if (size(atol) /= 1 .and. size(atol) /= n) then
+            write (buf, '(a,i0,a,i0)') 'lsoda init: size(atol) = ', size(atol), &
+                ' must be 1 or n = ', n
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
+            return
+        end if
+        if (.not. all(atol >= 0.0_dp)) then
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda init: atol has a negative entry')
+            return
+        end if
+        s%mxordn = MAXORD_ADAMS
+        s%mxords = MAXORD_BDF
+        if (present(max_order_adams)) s%mxordn = max_order_adams
+        if (present(max_order_bdf)) s%mxords = max_order_bdf
+        if (s%mxordn < 1 .or. s%mxordn > MAXORD_ADAMS .or. s%mxords < 1 &
+            .or. s%mxords > MAXORD_BDF) then
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda init: max_order_adams must '// &
+                'be in 1..12 and max_order_bdf in 1..5')
+            return
+        end if
+        s%hmxi = 0.0_dp
+        if (present(hmax)) then
+            if (.not. (hmax > 0.0_dp)) then
+                call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda init: hmax must be > 0')
+                return
+            end if
+            s%hmxi = 1.0_dp/hmax
+        end if
+        s%max_steps = DEFAULT_MAX_STEPS
+        if (present(max_steps)) then
+            if (max_steps < 1) then
+                call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda init: max_steps must be >= 1')
+                return
+            end if
+            s%max_steps = max_steps
+        end if
+        s%h0_user = 0.0_dp
+        if (present(h0)) s%h0_user = abs(h0)
+        s%have_tcrit = present(tcrit)
+        if (present(tcrit)) s%tcrit = tcrit
+
+        s%n = n
+        s%rtol = rtol
+        call realloc_vec(s%atol, n)
+        if (size(atol) == 1) then
+            s%atol = atol(1)
+        else
+            s%atol = atol
+        end if
+        if (allocated(s%yh)) then
+            if (size(s%yh, 1) /= n) deallocate (s%yh)
+        end if
+        if (.not. allocated(s%yh)) allocate (s%yh(n, LMAX_ALL))
+        if (allocated(s%wm)) then
+            if (size(s%wm, 1) /= n) deallocate (s%wm)
+        end if
+        if (.not. allocated(s%wm)) allocate (s%wm(n, n))
+        call realloc_vec(s%rewt, n)
+        call realloc_vec(s%y, n)
+        call realloc_vec(s%savf, n)
+        call realloc_vec(s%acor, n)
+        call realloc_vec(s%ftem, n)
+        if (allocated(s%ipiv)) then
+            if (size(s%ipiv) /= n) deallocate (s%ipiv)
+        end if
+        if (.not. allocated(s%ipiv)) allocate (s%ipiv(n))
+        s%yh = 0.0_dp
+        s%wm = 0.0_dp
+        s%acor = 0.0_dp
+        s%ipiv = 0
+
+        call set_coefficients(s%elco, s%tesco, s%cm1, s%cm2)
+
+        s%tn = t0
+        s%told = t0
+        s%tlast = t0
+        s%dir = 1.0_dp
+        s%h = 0.0_dp
+        s%hold = 0.0_dp
+        s%hu = 0.0_dp
+        s%hmin = 0.0_dp
+        s%nq = 1
+        s%l = 2
+        s%meth = METHOD_ADAMS
+        s%mused = 0
+        s%nqu = 0
+        s%jstart = 0
+        s%kflag = 0
+        s%nst = 0
+        s%nfe = 0
+        s%nje = 0
+        s%nlu = 0
+        s%nswitch = 0
+        s%steps_call = 0
+        s%tsw = t0
+        s%pdnorm = 0.0_dp
+
+        s%yh(:, 1) = y0
+        s%y = y0
+        call sys%rhs(t0, s%y, s%savf, stat)
+        s%nfe = 1
+        if (stat%code /= STATUS_OK) then
+            call prefix_time(stat, t0)
+            return
+        end if
+        s%yh(:, 2) = s%savf     ! f(t0,y0); scaled by h0 when the first step size is known
+        s%ready = .true.
+    end subroutine lsoda_init
+
+    !> Advance the solution to tout and return y(tout).
+    !!
+    !! Steps past tout (never past tcrit) and interpolates back.  tout may lie anywhere
+    !! ahead of the last output time in the direction of integration (the direction is
+    !! fixed by the first call).
+    !!
+    !! sys  [in,out] the right-hand side.
+    !! tout [in]  output time.
+    !! y    [out] size n: the solution at tout; on failure the solution at the time reached
+    !!            (stats()%t_current).
+    !! stat [out] STATUS_OK; LSODA_ERR_MAX_STEPS (max_steps steps in this call),
+    !!            LSODA_ERR_TOO_MUCH_ACCURACY, LSODA_ERR_ERROR_TEST, LSODA_ERR_CONVERGENCE,
+    !!            LSODA_ERR_SINGULAR, LSODA_ERR_ILLEGAL_INPUT (no init, size(y) /= n, tout
+    !!            behind the last output, tcrit behind tout), or the right-hand side's own
+    !!            code with its message prefixed by the time reached.
+    subroutine lsoda_integrate(s, sys, tout, y, stat)
+        class(lsoda_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        real(dp), intent(in) :: tout
+        real(dp), intent(out) :: y(:)
+        type(status_t), intent(out) :: stat
+        type(status_t) :: dst
+        character(len=160) :: buf
+
+        if (.not. s%ready) then
+            y = 0.0_dp
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda integrate: solver not initialised')
+            return
+        end if
+        if (size(y) /= s%n) then
+            y = 0.0_dp
+            write (buf, '(a,i0,a,i0)') 'lsoda integrate: size(y) = ', size(y), ' but n = ', s%n
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
+            return
+        end if
+        y = s%yh(:, 1)
+        if (.not. s%started) then
+            if (tout == s%tn) then
+                s%tlast = tout
+                return
+            end if
+            s%dir = sign(1.0_dp, tout - s%tn)
+        else if ((tout - s%tlast)*s%dir < 0.0_dp) then
+            write (buf, '(a,es12.5,a,es12.5,a)') 'lsoda integrate: tout = ', tout, &
+                ' is behind the last output time ', s%tlast, ' in the direction of integration'
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
+            return
+        end if
+        if (s%have_tcrit) then
+            if ((s%tcrit - tout)*s%dir < 0.0_dp) then
+                write (buf, '(a,es12.5,a,es12.5)') 'lsoda integrate: tcrit = ', s%tcrit, &
+                    ' is behind tout = ', tout
+                call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
+                return
+            end if
+        end if
+        if (.not. s%started) then
+            call start_integration(s, tout, .true., stat)
+            if (stat%code /= STATUS_OK) return
+        end if
+
+        s%steps_call = 0
+        do
+            if ((s%tn - tout)*s%dir >= 0.0_dp) then
+                call interpolate(s, tout, 0, y, dst)
+                if (dst%code /= STATUS_OK) then
+                    stat = dst
+                    y = s%yh(:, 1)
+                    return
+                end if
+                s%tlast = tout
+                return
+            end if
+            if (s%have_tcrit) then
+                if (at_tcrit(s)) then
+                    y = s%yh(:, 1)
+                    s%tlast = tout
+                    return
+                end if
+            end if
+            call one_step(s, sys, stat)
+            if (stat%code /= STATUS_OK) then
+                y = s%yh(:, 1)
+                return
+            end if
+        end do
+    end subroutine lsoda_integrate
+
+    !> Take exactly one internal step (never past tcrit).  After it, dense() gives the
+    !! solution anywhere in [t_current - h_last, t_current].
+    !!
+    !! sys  [in,out] the right-hand side.
+    !! stat [out] as for integrate; LSODA_ERR_ILLEGAL_INPUT also when the integration
+    !!            already stands at tcrit.
+    !! tout [in, optional] only used before the first step: a time the caller wants to
+    !!            reach (fixes the direction and scales the first step size); without it
+    !!            the direction is towards tcrit if set, else forward.
+    subroutine lsoda_step(s, sys, stat, tout)
+        class(lsoda_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        type(status_t), intent(out) :: stat
+        real(dp), intent(in), optional :: tout
+        real(dp) :: th
+        logical :: have
+
+        if (.not. s%ready) then
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda step: solver not initialised')
+            return
+        end if
+        if (.not. s%started) then
+            have = .false.
+            th = s%tn
+            if (present(tout)) then
+                if (tout /= s%tn) then
+                    have = .true.
+                    th = tout
+                end if
+            end if
+            if (.not. have .and. s%have_tcrit) then
+                if (s%tcrit /= s%tn) then
+                    have = .true.
+                    th = s%tcrit
+                end if
+            end if
+            if (have) s%dir = sign(1.0_dp, th - s%tn)
+            if (s%have_tcrit) then
+                if ((s%tcrit - s%tn)*s%dir <= 0.0_dp) then
+                    call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, &
+                        'lsoda step: the integration already stands at tcrit')
+                    return
+                end if
+            end if
+            call start_integration(s, th, have, stat)
+            if (stat%code /= STATUS_OK) return
+        else if (s%have_tcrit) then
+            if (at_tcrit(s)) then
+                call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, &
+                    'lsoda step: the integration already stands at tcrit')
+                return
+            end if
+        end if
+        s%steps_call = 0
+        call one_step(s, sys, stat)
+    end subroutine lsoda_step
+
+    !> k-th derivative of the interpolating polynomial at t, within the last step.
+    !!
+    !! t    [in]  time in [t_current - h_last, t_current] (roundoff tolerated).
+    !! k    [in]  derivative order, 0 <= k <= current order (order_next).
+    !! dky  [out] size n: d^k y / dt^k at t (units of y per time**k).
+    !! stat [out] STATUS_OK or LSODA_ERR_ILLEGAL_INPUT (t outside the step, bad k or size).
+    subroutine lsoda_dense(s, t, k, dky, stat)
+        class(lsoda_t), intent(in) :: s
+        real(dp), intent(in) :: t
+        integer, intent(in) :: k
+        real(dp), intent(out) :: dky(:)
+        type(status_t), intent(out) :: stat
+        if (.not. s%ready .or. size(dky) /= s%n) then
+            dky = 0.0_dp
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, &
+                'lsoda dense: solver not initialised or size(dky) /= n')
+            return
+        end if
+        call interpolate(s, t, k, dky, stat)
+    end subroutine lsoda_dense
+
+    !> Counters and method state (see lsoda_stats_t).
+    function lsoda_get_stats(s) result(st)
+        class(lsoda_t), intent(in) :: s
+        type(lsoda_stats_t) :: st
+        st%steps = s%nst
+        st%rhs_evals = s%nfe
+        st%jac_evals = s%nje
+        st%lu_decomps = s%nlu
+        st%method_switches = s%nswitch
+        st%method_last = s%mused
+        st%order_last = s%nqu
+        st%method_next = s%meth
+        st%order_next = s%nq
+        st%h_last = s%hu
+        st%h_next = s%h
+        st%t_current = s%tn
+    end function lsoda_get_stats
+
+    !> Set (tcrit present) or remove (absent) the hard stop time.
+    !!
+    !! tcrit [in, optional] new stop time; it must not lie behind the time already reached
+    !!       (then stat = LSODA_ERR_ILLEGAL_INPUT and the old setting stays).
+    !! stat  [out, optional] STATUS_OK or LSODA_ERR_ILLEGAL_INPUT.
+    subroutine lsoda_set_tcrit(s, tcrit, stat)
+        class(lsoda_t), intent(inout) :: s
+        real(dp), intent(in), optional :: tcrit
+        type(status_t), intent(out), optional :: stat
+        character(len=120) :: buf
+        if (present(stat)) stat%code = STATUS_OK
+        if (.not. present(tcrit)) then
+            s%have_tcrit = .false.
+            return
+        end if
+        if (s%started .and. (tcrit - s%tn)*s%dir < 0.0_dp) then
+            if (present(stat)) then
+                write (buf, '(a,es12.5,a,es12.5)') 'lsoda set_tcrit: tcrit = ', tcrit, &
+                    ' is behind the time reached ', s%tn
+                call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
+            end if
+            return
+        end if
+        s%tcrit = tcrit
+        s%have_tcrit = .true.
+    end subroutine lsoda_set_tcrit
+
+    ! ------------------------------------------------------------------------------------
+    ! Driver level
+    ! ------------------------------------------------------------------------------------
+
+    !> Choose the first step size (LSODE/LSODA rule) and scale yh(:,2) = h0*f0.
+    subroutine start_integration(s, tout, have_tout, stat)
+        type(lsoda_t), intent(inout) :: s
+        real(dp), intent(in) :: tout
+        logical, intent(in) :: have_tout
+        type(status_t), intent(out) :: stat
+        real(dp) :: tdist, w0, tol, sm, h0, rh
+        integer :: i
+        character(len=160) :: buf
+
+        call update_weights(s, stat)
+        if (stat%code /= STATUS_OK) return
+        if (UROUND*vmnorm(s%n, s%yh(:, 1), s%rewt) > 0.01_dp) then
+            call too_much_accuracy(s, stat)
+            return
+        end if
+        if (s%h0_user > 0.0_dp) then
+            h0 = s%h0_user
+        else
+            if (have_tout) then
+                tdist = abs(tout - s%tn)
+                w0 = max(abs(s%tn), abs(tout))
+                if (tdist < 2.0_dp*UROUND*w0) then
+                    write (buf, '(a,es12.5,a)') 'lsoda: tout is too close to t0 = ', s%tn, &
+                        ' to start the integration'
+                    call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
+                    return
+                end if
+            else
+                tdist = huge(1.0_dp)
+                w0 = max(abs(s%tn), 1.0_dp)
+            end if
+            tol = s%rtol
+            if (tol <= 0.0_dp) then
+                do i = 1, s%n
+                    if (s%yh(i, 1) /= 0.0_dp) tol = max(tol, s%atol(i)/abs(s%yh(i, 1)))
+                end do
+            end if
+            tol = min(max(tol, 100.0_dp*UROUND), 0.001_dp)
+            sm = vmnorm(s%n, s%yh(:, 2), s%rewt)
+            sm = 1.0_dp/(tol*w0*w0) + tol*sm**2
+            h0 = min(1.0_dp/sqrt(sm), tdist)
+        end if
+        rh = h0*s%hmxi
+        if (rh > 1.0_dp) h0 = h0/rh
+        h0 = sign(h0, s%dir)
+        if (s%have_tcrit) then
+            if ((s%tn + h0 - s%tcrit)*h0 > 0.0_dp) h0 = (s%tcrit - s%tn)*(1.0_dp - 4.0_dp*UROUND)
+        end if
+        s%h = h0
+        s%yh(:, 2) = h0*s%yh(:, 2)
+        s%jstart = 0
+        s%started = .true.
+    end subroutine start_integration
+
+    !> True when tn is at tcrit up to roundoff.
+    logical function at_tcrit(s)
+        type(lsoda_t), intent(in) :: s
+        at_tcrit = abs(s%tn - s%tcrit) <= 100.0_dp*UROUND*(abs(s%tn) + abs(s%h))
+    end function at_tcrit
+
+    !> Checks before a step, the step itself, and the bookkeeping after it.
+    subroutine one_step(s, sys, stat)
+        type(lsoda_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        type(status_t), intent(inout) :: stat
+        real(dp) :: tnext
+        character(len=200) :: buf
+
+        if (s%steps_call >= s%max_steps) then
+            write (buf, '(a,i0,a,es14.7)') 'lsoda: ', s%max_steps, &
+                ' steps taken in this call without reaching tout; t reached = ', s%tn
+            call set_error(stat, LSODA_ERR_MAX_STEPS, trim(buf))
+            return
+        end if
+        if (s%nst > 0) then
+            call update_weights(s, stat)
+            if (stat%code /= STATUS_OK) return
+            if (UROUND*vmnorm(s%n, s%yh(:, 1), s%rewt) > 0.01_dp) then
+                call too_much_accuracy(s, stat)
+                return
+            end if
+        end if
+        if (s%have_tcrit .and. s%jstart /= 0) then
+            tnext = s%tn + s%h*(1.0_dp + 4.0_dp*UROUND)
+            if ((tnext - s%tcrit)*s%h > 0.0_dp) then
+                s%h = (s%tcrit - s%tn)*(1.0_dp - 4.0_dp*UROUND)
+                if (s%jstart > 0) s%jstart = -2
+            end if
+        end if
+
+        call take_step(s, sys, stat)
+
+        select case (s%kflag)
+        case (KF_OK)
+            s%steps_call = s%steps_call + 1
+            if (s%meth /= s%mused) then
+                s%tsw = s%tn
+                s%nswitch = s%nswitch + 1
+                s%jstart = -1
+            end if
+        case (KF_ERRTEST)
+            write (buf, '(a,es14.7,a,es10.3)') 'lsoda: error test failed repeatedly at t = ', &
+                s%tn, ' with |h| = ', abs(s%h)
+            call set_error(stat, LSODA_ERR_ERROR_TEST, trim(buf)//' (discontinuity or '// &
+                'singularity of f?)')
+        case (KF_CONV)
+            write (buf, '(a,es14.7,a,es10.3)') 'lsoda: corrector failed to converge '// &
+                'repeatedly at t = ', s%tn, ' with |h| = ', abs(s%h)
+            call set_error(stat, LSODA_ERR_CONVERGENCE, trim(buf))
+        case (KF_SINGULAR)
+            write (buf, '(a,es14.7,a,es10.3)') 'lsoda: iteration matrix I - h*l0*J '// &
+                'singular repeatedly at t = ', s%tn, ' with |h| = ', abs(s%h)
+            call set_error(stat, LSODA_ERR_SINGULAR, trim(buf))
+        case default
+            ! KF_FATAL: stat already set (rhs/jacobian failure, prefixed with the time)
+            continue
+        end select
+    end subroutine one_step
+
+    !> Error weights from the current solution: rewt = 1/(rtol*|y| + atol).
+    subroutine update_weights(s, stat)
+        type(lsoda_t), intent(inout) :: s
+        type(status_t), intent(inout) :: stat
+        real(dp) :: w
+        integer :: i
+        character(len=160) :: buf
+        do i = 1, s%n
+            w = s%rtol*abs(s%yh(i, 1)) + s%atol(i)
+            if (.not. (w > 0.0_dp)) then
+                write (buf, '(a,i0,a,es14.7,a)') 'lsoda: error weight of component ', i, &
+                    ' became zero at t = ', s%tn, ' (atol(i) = 0 and y(i) = 0)'
+                call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
+                return
+            end if
+            s%rewt(i) = 1.0_dp/w
+        end do
+    end subroutine update_weights
+
+    subroutine too_much_accuracy(s, stat)
+        type(lsoda_t), intent(in) :: s
+        type(status_t), intent(inout) :: stat
+        character(len=200) :: buf
+        write (buf, '(a,es14.7,a,es10.3)') 'lsoda: too much accuracy requested for the '// &
+            'machine precision at t = ', s%tn, '; scale the tolerances up by at least ', &
+            200.0_dp*UROUND*vmnorm(s%n, s%yh(:, 1), s%rewt)
+        call set_error(stat, LSODA_ERR_TOO_MUCH_ACCURACY, trim(buf))
+    end subroutine too_much_accuracy
+
+    ! ------------------------------------------------------------------------------------
+    ! The step (one successful step, with retries)
+    ! ------------------------------------------------------------------------------------
+
+    !> One step of the current method, retrying with smaller h / other order after
+    !! error-test or convergence failures, choosing order, step and method for the next
+    !! step on success.  Sets s%kflag (KF_*).  On failure tn and yh are as before the call.
+    subroutine take_step(s, sys, stat)
+        type(lsoda_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        type(status_t), intent(inout) :: stat
+        integer :: ncf, m, newq, i, j, nqm, lm
+        logical :: newton, converged, singular, fatal, switched
+        real(dp) :: del, delp, dsm, rate, rm, dcon, pnorm, rh, rh1, rh2, rh1it, pdh, exsm
+        real(dp) :: dm, exm, alpha
+
+        s%kflag = KF_OK
+        s%told = s%tn
+        ncf = 0
+        s%jcur = .false.
+        del = 0.0_dp
+        delp = 0.0_dp
+        dsm = 0.0_dp
+        rh = 1.0_dp
+        rh2 = 1.0_dp
+        nqm = 1
+
+        select case (s%jstart)
+        case (0)
+            s%lmax = s%mxordn + 1
+            s%nq = 1
+            s%l = 2
+            s%ialth = 2
+            s%rmax = 1.0e4_dp
+            s%rc = 0.0_dp
+            s%el0 = 1.0_dp
+            s%crate = 0.7_dp
+            s%hold = s%h
+            s%nslp = 0
+            s%meth = METHOD_ADAMS
+            s%ipup = .false.
+            s%icount = SWITCH_WAIT
+            s%irflag = 0
+            s%pdest = 0.0_dp
+            s%pdlast = 0.0_dp
+            call load_el(s)
+        case (-1)
+            ! method switched on the previous step
+            s%ipup = s%meth == METHOD_BDF
+            if (s%meth == METHOD_BDF) then
+                s%lmax = s%mxords + 1
+            else
+                s%lmax = s%mxordn + 1
+            end if
+            if (s%ialth == 1) s%ialth = 2
+            if (s%meth /= s%mused) then
+                call load_el(s)
+                s%ialth = s%l
+            end if
+            if (s%h /= s%hold) then
+                rh = s%h/s%hold
+                s%h = s%hold
+                call rescale(s, rh, .false.)
+            end if
+        case (-2)
+            ! h changed by the driver (tcrit)
+            if (s%h /= s%hold) then
+                rh = s%h/s%hold
+                s%h = s%hold
+                call rescale(s, rh, .false.)
+            end if
+        case default
+            continue
+        end select
+
+        attempt: do
+            newton = s%meth == METHOD_BDF
+            if (abs(s%rc - 1.0_dp) > CCMAX) s%ipup = newton
+            if (s%nst >= s%nslp + MSBP) s%ipup = newton
+            s%tn = s%tn + s%h
+            call predict(s)
+            pnorm = vmnorm(s%n, s%yh(:, 1), s%rewt)
+
+            singular = .false.
+            fatal = .false.
+            converged = .false.
+            corrector: do
+                m = 0
+                rate = 0.0_dp
+                del = 0.0_dp
+                s%y = s%yh(:, 1)
+                call sys%rhs(s%tn, s%y, s%savf, stat)
+                s%nfe = s%nfe + 1
+                if (stat%code /= STATUS_OK) then
+                    call fail_fatal(s, stat)
+                    return
+                end if
+                if (s%ipup) then
+                    call build_iteration_matrix(s, sys, stat, singular)
+                    if (stat%code /= STATUS_OK) then
+                        call fail_fatal(s, stat)
+                        return
+                    end if
+                    s%ipup = .false.
+                    s%rc = 1.0_dp
+                    s%nslp = s%nst
+                    s%crate = 0.7_dp
+                    if (singular) exit corrector
+                end if
+                s%acor = 0.0_dp
+                iterate: do
+                    if (.not. newton) then
+                        ! functional iteration
+                        do i = 1, s%n
+                            s%savf(i) = s%h*s%savf(i) - s%yh(i, 2)
+                            s%y(i) = s%savf(i) - s%acor(i)
+                        end do
+                        del = vmnorm(s%n, s%y, s%rewt)
+                        do i = 1, s%n
+                            s%y(i) = s%yh(i, 1) + s%el(1)*s%savf(i)
+                            s%acor(i) = s%savf(i)
+                        end do
+                    else
+                        ! chord Newton iteration
+                        do i = 1, s%n
+                            s%y(i) = s%h*s%savf(i) - (s%yh(i, 2) + s%acor(i))
+                        end do
+                        call la_lu_solve(s%wm, s%ipiv, s%y, stat)
+                        if (stat%code /= STATUS_OK) then
+                            fatal = .true.     ! cannot happen with consistent shapes
+                            exit corrector
+                        end if
+                        del = vmnorm(s%n, s%y, s%rewt)
+                        do i = 1, s%n
+                            s%acor(i) = s%acor(i) + s%y(i)
+                            s%y(i) = s%yh(i, 1) + s%el(1)*s%acor(i)
+                        end do
+                    end if
+                    ! convergence test; at least two iterations for Adams (Lipschitz estimate)
+                    if (del <= 100.0_dp*pnorm*UROUND) then
+                        converged = .true.
+                        exit corrector
+                    end if
+                    if (m > 0 .or. newton) then
+                        if (m > 0) then
+                            rm = 1024.0_dp
+                            if (del <= 1024.0_dp*delp) rm = del/delp
+                            rate = max(rate, rm)
+                            s%crate = max(0.2_dp*s%crate, rm)
+                        end if
+                        dcon = del*min(1.0_dp, 1.5_dp*s%crate)/ &
+                            (s%tesco(2, s%nq, s%meth)*s%conit)
+                        if (dcon <= 1.0_dp) then
+                            s%pdest = max(s%pdest, rate/abs(s%h*s%el(1)))
+                            if (s%pdest /= 0.0_dp) s%pdlast = s%pdest
+                            converged = .true.
+                            exit corrector
+                        end if
+                    end if
+                    m = m + 1
+                    if (m == MAXCOR) exit iterate
+                    if (m >= 2 .and. del > 2.0_dp*delp) exit iterate
+                    delp = del
+                    call sys%rhs(s%tn, s%y, s%savf, stat)
+                    s%nfe = s%nfe + 1
+                    if (stat%code /= STATUS_OK) then
+                        call fail_fatal(s, stat)
+                        return
+                    end if
+                end do iterate
+                ! the iteration failed: retry once with a fresh matrix if it was old
+                if (.not. newton .or. s%jcur) exit corrector
+                s%ipup = .true.
+            end do corrector
+
+            if (.not. converged) then
+                ! convergence failure (or singular matrix)
+                ncf = ncf + 1
+                s%rmax = 2.0_dp
+                s%tn = s%told
+                call unpredict(s)
+                if (fatal) then
+                    s%kflag = KF_SINGULAR
+                    exit attempt
+                end if
+                if (abs(s%h) <= max(s%hmin*1.00001_dp, hfloor(s)) .or. ncf == MXNCF) then
+                    s%kflag = KF_CONV
+                    if (singular) s%kflag = KF_SINGULAR
+                    exit attempt
+                end if
+                s%ipup = newton
+                call rescale(s, 0.25_dp, .true.)
+                cycle attempt
+            end if
+
+            ! converged: local error test
+            s%jcur = .false.
+            if (m == 0) then
+                dsm = del/s%tesco(2, s%nq, s%meth)
+            else
+                dsm = vmnorm(s%n, s%acor, s%rewt)/s%tesco(2, s%nq, s%meth)
+            end if
+
+            if (dsm <= 1.0_dp) then
+                ! ---- successful step
+                s%kflag = KF_OK
+                s%nst = s%nst + 1
+                s%hu = s%h
+                s%nqu = s%nq
+                s%mused = s%meth
+                do j = 1, s%l
+                    do i = 1, s%n
+                        s%yh(i, j) = s%yh(i, j) + s%el(j)*s%acor(i)
+                    end do
+                end do
+                switched = .false.
+                s%icount = s%icount - 1
+                if (s%icount < 0) then
+                    if (s%meth == METHOD_ADAMS) then
+                        ! would BDF allow a much larger step?
+                        if (s%nq <= 5) then
+                            if (dsm > 100.0_dp*pnorm*UROUND .and. s%pdest /= 0.0_dp) then
+                                exsm = 1.0_dp/s%l
+                                rh1 = 1.0_dp/(1.2_dp*dsm**exsm + 1.2e-6_dp)
+                                rh1it = 2.0_dp*rh1
+                                pdh = s%pdlast*abs(s%h)
+                                if (pdh*rh1 > 1.0e-5_dp) rh1it = SM1(s%nq)/pdh
+                                rh1 = min(rh1, rh1it)
+                                if (s%nq > s%mxords) then
+                                    nqm = s%mxords
+                                    lm = nqm + 1
+                                    exm = 1.0_dp/lm
+                                    dm = vmnorm(s%n, s%yh(:, lm + 1), s%rewt)/s%cm2(nqm)
+                                    rh2 = 1.0_dp/(1.2_dp*dm**exm + 1.2e-6_dp)
+                                else
+                                    dm = dsm*(s%cm1(s%nq)/s%cm2(s%nq))
+                                    rh2 = 1.0_dp/(1.2_dp*dm**exsm + 1.2e-6_dp)
+                                    nqm = s%nq
+                                end if
+                                if (rh2 >= SWITCH_RATIO*rh1) switched = .true.
+                            else if (s%irflag /= 0) then
+                                ! step limited by stability yet error tiny: go stiff
+                                rh2 = 2.0_dp
+                                nqm = min(s%nq, s%mxords)
+                                switched = .true.
+                            end if
+                            if (switched) then
+                                rh = rh2
+                                s%meth = METHOD_BDF
+                                s%nq = nqm
+                            end if
+                        end if
+                    else
+                        ! would Adams allow a step not smaller than BDF's?
+                        exsm = 1.0_dp/s%l
+                        if (s%mxordn < s%nq) then
+                            nqm = s%mxordn
+                            lm = nqm + 1
+                            exm = 1.0_dp/lm
+                            dm = vmnorm(s%n, s%yh(:, lm + 1), s%rewt)/s%cm1(nqm)
+                            rh1 = 1.0_dp/(1.2_dp*dm**exm + 1.2e-6_dp)
+                        else
+                            dm = dsm*(s%cm2(s%nq)/s%cm1(s%nq))
+                            rh1 = 1.0_dp/(1.2_dp*dm**exsm + 1.2e-6_dp)
+                            nqm = s%nq
+                            exm = exsm
+                        end if
+                        rh1it = 2.0_dp*rh1
+                        pdh = s%pdnorm*abs(s%h)
+                        if (pdh*rh1 > 1.0e-5_dp) rh1it = SM1(nqm)/pdh
+                        rh1 = min(rh1, rh1it)
+                        rh2 = 1.0_dp/(1.2_dp*dsm**exsm + 1.2e-6_dp)
+                        if (rh1*SWITCH_RATIO >= 5.0_dp*rh2) then
+                            alpha = max(0.001_dp, rh1)
+                            dm = alpha**exm*dm
+                            if (dm > 1000.0_dp*UROUND*pnorm) then
+                                switched = .true.
+                                rh = rh1
+                                s%meth = METHOD_ADAMS
+                                s%nq = nqm
+                            end if
+                        end if
+                    end if
+                end if
+                if (switched) then
+                    s%icount = SWITCH_WAIT
+                    s%pdlast = 0.0_dp
+                    s%l = s%nq + 1
+                    call rescale(s, rh, .true.)
+                    s%rmax = 10.0_dp
+                    exit attempt
+                end if
+
+                s%ialth = s%ialth - 1
+                if (s%ialth == 0) then
+                    call choose_order(s, dsm, .true., newq, rh)
+                    if (newq < 0) exit attempt        ! keep order and step
+                    if (newq /= s%nq) then
+                        s%nq = newq
+                        s%l = newq + 1
+                        call load_el(s)
+                    end if
+                    call rescale(s, rh, .true.)
+                    s%rmax = 10.0_dp
+                    exit attempt
+                end if
+                if (s%ialth == 1 .and. s%l /= s%lmax) then
+                    s%yh(:, s%lmax) = s%acor          ! kept for the order-increase test
+                end if
+                exit attempt
+            end if
+
+            ! ---- error test failed
+            s%kflag = s%kflag - 1
+            s%tn = s%told
+            call unpredict(s)
+            s%rmax = 2.0_dp
+            if (abs(s%h) <= max(s%hmin*1.00001_dp, hfloor(s))) then
+                s%kflag = KF_ERRTEST
+                exit attempt
+            end if
+            if (s%kflag <= -3) then
+                if (s%kflag <= -MXNEF) then
+                    s%kflag = KF_ERRTEST
+                    exit attempt
+                end if
+                ! repeated failures: restart at order 1 from a fresh derivative, h/10
+                rh = max(s%hmin/abs(s%h), 0.1_dp)
+                s%h = s%h*rh
+                s%y = s%yh(:, 1)
+                call sys%rhs(s%tn, s%y, s%savf, stat)
+                s%nfe = s%nfe + 1
+                if (stat%code /= STATUS_OK) then
+                    call prefix_time(stat, s%tn)
+                    s%kflag = KF_FATAL
+                    exit attempt
+                end if
+                s%yh(:, 2) = s%h*s%savf
+                s%ipup = s%meth == METHOD_BDF
+                s%ialth = 5
+                if (s%nq /= 1) then
+                    s%nq = 1
+                    s%l = 2
+                    call load_el(s)
+                end if
+                cycle attempt
+            end if
+            call choose_order(s, dsm, .false., newq, rh)
+            if (newq /= s%nq) then
+                s%nq = newq
+                s%l = newq + 1
+                call load_el(s)
+            end if
+            call rescale(s, rh, .true.)
+        end do attempt
+
+        if (s%kflag == KF_OK) then
+            rm = 1.0_dp/s%tesco(2, s%nqu, s%mused)
+            s%acor = s%acor*rm
+        end if
+        s%hold = s%h
+        s%jstart = 1
+    end subroutine take_step
+
+    !> Undo the prediction after a right-hand-side failure and mark the step fatal.
+    subroutine fail_fatal(s, stat)
+        type(lsoda_t), intent(inout) :: s
+        type(status_t), intent(inout) :: stat
+        s%tn = s%told
+        call unpredict(s)
+        call prefix_time(stat, s%tn)
+        s%kflag = KF_FATAL
+        s%hold = s%h
+    end subroutine fail_fatal
+
+    !> Smallest |h| worth trying at tn (a few units of roundoff of t).
+    pure real(dp) function hfloor(s)
+        type(lsoda_t), intent(in) :: s
+        hfloor = 4.0_dp*UROUND*abs(s%tn)
+    end function hfloor
+
+    !> Order and step-size ratio for the next step (after a success: orders nq-1, nq,
+    !! nq+1; after an error-test failure: nq-1, nq).  newq = -1: keep order and step
+    !! (increase below 10 %), with ialth set to retry the test in 3 steps.
+    subroutine choose_order(s, dsm, success, newq, rh)
+        type(lsoda_t), intent(inout) :: s
+        real(dp), intent(in) :: dsm
+        logical, intent(in) :: success
+        integer, intent(out) :: newq
+        real(dp), intent(out) :: rh
+        real(dp) :: rhup, rhsm, rhdn, dup, ddn, pdh
+        integer :: i, lmx
+
+        rhup = 0.0_dp
+        lmx = s%lmax
+        if (success .and. s%l /= lmx) then
+            do i = 1, s%n
+                s%savf(i) = s%acor(i) - s%yh(i, lmx)
+            end do
+            dup = vmnorm(s%n, s%savf, s%rewt)/s%tesco(3, s%nq, s%meth)
+            rhup = 1.0_dp/(1.4_dp*dup**(1.0_dp/(s%l + 1)) + 1.4e-6_dp)
+        end if
+        rhsm = 1.0_dp/(1.2_dp*dsm**(1.0_dp/s%l) + 1.2e-6_dp)
+        rhdn = 0.0_dp
+        if (s%nq /= 1) then
+            ddn = vmnorm(s%n, s%yh(:, s%l), s%rewt)/s%tesco(1, s%nq, s%meth)
+            rhdn = 1.0_dp/(1.3_dp*ddn**(1.0_dp/s%nq) + 1.3e-6_dp)
+        end if
+        pdh = 0.0_dp
+        if (s%meth == METHOD_ADAMS) then
+            ! Adams: stay inside the stability region
+            pdh = max(abs(s%h)*s%pdlast, 1.0e-6_dp)
+            if (s%l < lmx) rhup = min(rhup, SM1(s%l)/pdh)
+            rhsm = min(rhsm, SM1(s%nq)/pdh)
+            if (s%nq > 1) rhdn = min(rhdn, SM1(s%nq - 1)/pdh)
+            s%pdest = 0.0_dp
+        end if
+        if (rhsm >= rhup) then
+            if (rhsm >= rhdn) then
+                newq = s%nq
+                rh = rhsm
+            else
+                newq = s%nq - 1
+                rh = rhdn
+                if (s%kflag < 0 .and. rh > 1.0_dp) rh = 1.0_dp
+            end if
+        else if (rhup > rhdn) then
+            ! order increase
+            newq = s%l
+            rh = rhup
+            if (rh < 1.1_dp) then
+                s%ialth = 3
+                newq = -1
+                return
+            end if
+            do i = 1, s%n
+                s%yh(i, newq + 1) = s%acor(i)*(s%el(s%l)/s%l)
+            end do
+            return
+        else
+            newq = s%nq - 1
+            rh = rhdn
+            if (s%kflag < 0 .and. rh > 1.0_dp) rh = 1.0_dp
+        end if
+        ! small changes are not worth it, unless Adams is held by its stability limit
+        if (.not. (s%meth == METHOD_ADAMS .and. rh*pdh*1.00001_dp >= SM1(max(newq, 1)))) then
+            if (s%kflag == 0 .and. rh < 1.1_dp) then
+                s%ialth = 3
+                newq = -1
+                return
+            end if
+        end if
+        if (s%kflag <= -2) rh = min(rh, 0.2_dp)
+    end subroutine choose_order
+
+    !> Coefficients of the current method and order; rc follows the change of l0.
+    subroutine load_el(s)
+        type(lsoda_t), intent(inout) :: s
+        s%el(1:s%nq + 1) = s%elco(1:s%nq + 1, s%nq, s%meth)
+        s%rc = s%rc*s%el(1)/s%el0
+        s%el0 = s%el(1)
+        s%conit = 0.5_dp/(s%nq + 2)
+    end subroutine load_el
+
+    !> Change h by the factor rh (bounded by rmax, hmax, hmin and, for Adams, the stability
+    !! region) and rescale the Nordsieck array.
+    subroutine rescale(s, rh_in, use_hmin)
+        type(lsoda_t), intent(inout) :: s
+        real(dp), intent(in) :: rh_in
+        logical, intent(in) :: use_hmin
+        real(dp) :: rh, r, pdh
+        integer :: i, j
+        rh = rh_in
+        if (use_hmin) rh = max(rh, s%hmin/abs(s%h))
+        rh = min(rh, s%rmax)
+        rh = rh/max(1.0_dp, abs(s%h)*s%hmxi*rh)
+        if (s%meth == METHOD_ADAMS) then
+            s%irflag = 0
+            pdh = max(abs(s%h)*s%pdlast, 1.0e-6_dp)
+            if (rh*pdh*1.00001_dp >= SM1(s%nq)) then
+                rh = SM1(s%nq)/pdh
+                s%irflag = 1
+            end if
+        end if
+        r = 1.0_dp
+        do j = 2, s%l
+            r = r*rh
+            do i = 1, s%n
+                s%yh(i, j) = s%yh(i, j)*r
+            end do
+        end do
+        s%h = s%h*rh
+        s%rc = s%rc*rh
+        s%ialth = s%l
+    end subroutine rescale
+
+    !> yh <- yh * Pascal triangle (Taylor predictor to tn + h).
+    subroutine predict(s)
+        type(lsoda_t), intent(inout) :: s
+        integer :: i, j, k, nq
+        nq = s%nq
+        do k = 1, nq
+            do j = nq, k, -1
+                do i = 1, s%n
+                    s%yh(i, j) = s%yh(i, j) + s%yh(i, j + 1)
+                end do
+            end do
+        end do
+    end subroutine predict
+
+    !> Inverse of predict.
+    subroutine unpredict(s)
+        type(lsoda_t), intent(inout) :: s
+        integer :: i, j, k, nq
+        nq = s%nq
+        do k = nq, 1, -1
+            do j = k, nq
+                do i = 1, s%n
+                    s%yh(i, j) = s%yh(i, j) - s%yh(i, j + 1)
+                end do
+            end do
+        end do
+    end subroutine unpredict
+
+    !> P = I - h*l0*J (J analytic or by finite differences), its LU factors, and the
+    !! weighted norm of J used by the stiff -> non-stiff test.  On entry y = predicted
+    !! solution and savf = f(tn, y).
+    subroutine build_iteration_matrix(s, sys, stat, singular)
+        type(lsoda_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        type(status_t), intent(inout) :: stat
+        logical, intent(out) :: singular
+        real(dp) :: hl0, fac, r0, r, yj, srur, rowsum, pn
+        integer :: i, j, n
+        type(status_t) :: lst
+
+        n = s%n
+        singular = .false.
+        s%nje = s%nje + 1
+        s%jcur = .true.
+        hl0 = s%h*s%el0
+        if (sys%has_jacobian()) then
+            call sys%jacobian(s%tn, s%y, s%wm, stat)
+            if (stat%code /= STATUS_OK) return
+            do j = 1, n
+                do i = 1, n
+                    s%wm(i, j) = -hl0*s%wm(i, j)
+                end do
+            end do
+        else
+            fac = vmnorm(n, s%savf, s%rewt)
+            r0 = 1000.0_dp*abs(s%h)*UROUND*n*fac
+            if (r0 == 0.0_dp) r0 = 1.0_dp
+            srur = sqrt(UROUND)
+            do j = 1, n
+                yj = s%y(j)
+                r = max(srur*abs(yj), r0/s%rewt(j))
+                s%y(j) = yj + r
+                fac = -hl0/r
+                call sys%rhs(s%tn, s%y, s%ftem, stat)
+                s%nfe = s%nfe + 1
+                s%y(j) = yj
+                if (stat%code /= STATUS_OK) return
+                do i = 1, n
+                    s%wm(i, j) = (s%ftem(i) - s%savf(i))*fac
+                end do
+            end do
+        end if
+        ! weighted max-row-sum norm of J: max_i w_i^-1 sum_j |J_ij| w_j
+        pn = 0.0_dp
+        do i = 1, n
+            rowsum = 0.0_dp
+            do j = 1, n
+                rowsum = rowsum + abs(s%wm(i, j))/s%rewt(j)
+            end do
+            pn = max(pn, rowsum*s%rewt(i))
+        end do
+        s%pdnorm = pn/abs(hl0)
+        do i = 1, n
+            s%wm(i, i) = s%wm(i, i) + 1.0_dp
+        end do
+        s%nlu = s%nlu + 1
+        call la_lu_factor(s%wm, s%ipiv, lst)
+        singular = lst%code /= STATUS_OK
+    end subroutine build_iteration_matrix
+
+    !> k-th derivative at t of the polynomial held in the Nordsieck array.
+    subroutine interpolate(s, t, k, dky, stat)
+        type(lsoda_t), intent(in) :: s
+        real(dp), intent(in) :: t
+        integer, intent(in) :: k
+        real(dp), intent(out) :: dky(:)
+        type(status_t), intent(out) :: stat
+        real(dp) :: tp, tol, sc, c
+        integer :: j, jj, ic
+        character(len=200) :: buf
+
+        if (k < 0 .or. k > s%nq) then
+            dky = 0.0_dp
+            write (buf, '(a,i0,a,i0)') 'lsoda dense: derivative order k = ', k, &
+                ' must be in 0..', s%nq
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
+            return
+        end if
+        tol = 100.0_dp*UROUND*(abs(s%tn) + abs(s%hu))
+        tp = s%tn - s%hu
+        if (min(tp, s%tn) - tol > t .or. t > max(tp, s%tn) + tol) then
+            dky = s%yh(:, 1)
+            write (buf, '(a,es14.7,a,es14.7,a,es14.7,a)') 'lsoda dense: t = ', t, &
+                ' is outside the last step [', min(tp, s%tn), ', ', max(tp, s%tn), ']'
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
+            return
+        end if
+        if (s%h == 0.0_dp) then
+            dky = s%yh(:, 1)
+            if (k > 0) dky = 0.0_dp
+            return
+        end if
+        sc = (t - s%tn)/s%h
+        ! Horner scheme on the Nordsieck columns, differentiated k times
+        ic = 1
+        do jj = s%nq + 1 - k, s%nq
+            ic = ic*jj
+        end do
+        c = real(ic, dp)
+        dky = c*s%yh(:, s%nq + 1)
+        do j = s%nq - 1, k, -1
+            ic = 1
+            do jj = j + 1 - k, j
+                ic = ic*jj
+            end do
+            c = real(ic, dp)
+            dky = c*s%yh(:, j + 1) + sc*dky
+        end do
+        if (k > 0) dky = dky*s%h**(-k)
+    end subroutine interpolate
+
+    ! ------------------------------------------------------------------------------------
+    ! Helpers
+    ! ------------------------------------------------------------------------------------
+
+    !> Weighted max-norm max_i |v_i|*rw_i (rw = reciprocal weights).
+    pure real(dp) function vmnorm(n, v, rw)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: v(:)
+        real(dp), intent(in) :: rw(:)
+        integer :: i
+        vmnorm = 0.0_dp
+        do i = 1, n
+            vmnorm = max(vmnorm, abs(v(i))*rw(i))
+        end do
+    end function vmnorm
+
+    !> Prefix a message with the time reached.
+    subroutine prefix_time(stat, t)
+        type(status_t), intent(inout) :: stat
+        real(dp), intent(in) :: t
+        character(len=40) :: buf
+        write (buf, '(a,es14.7,a)') 'at t = ', t, ': '
+        if (allocated(stat%msg)) then
+            stat%msg = trim(buf)//' '//stat%msg
+        else
+            stat%msg = trim(buf)//' (no message)'
+        end if
+    end subroutine prefix_time
+
+    subroutine realloc_vec(v, n)
+        real(dp), allocatable, intent(inout) :: v(:)
+        integer, intent(in) :: n
+        if (allocated(v)) then
+            if (size(v) == n) return
+            deallocate (v)
+        end if
+        allocate (v(n))
+    end subroutine realloc_vec
+
+    !> Nordsieck coefficients l_j and error-test constants of the Adams (method 1, orders
+    !! 1..12) and BDF (method 2, orders 1..5) formulas.
+    !!
+    !! Adams order q: with P(x) = prod_{i=1}^{q-1} (x+i), l_1 = int_{-1}^0 P/(q-1)!,
+    !! l_{i+1} = [x^{i-1}]P / (i (q-1)!), i = 1..q; error constant from int_{-1}^0 x P.
+    !! BDF order q: with P(x) = prod_{i=1}^{q} (x+i), l_i = [x^{i-1}]P / [x^1]P.
+    !! tesco(1,q), tesco(2,q), tesco(3,q): divisors turning the Nordsieck differences into
+    !! error estimates at orders q-1, q, q+1.  cm1/cm2: l_{q+1}*tesco(2,q) for the
+    !! method-switching estimates.
+    pure subroutine set_coefficients(elco, tesco, cm1, cm2)
+        real(dp), intent(out) :: elco(:, :, :)
+        real(dp), intent(out) :: tesco(:, :, :)
+        real(dp), intent(out) :: cm1(:), cm2(:)
+        real(dp) :: pc(LMAX_ALL + 1), pint, xpin, rqfac, rq1fac, sgn, ragq
+        integer :: q, i
+
+        elco = 0.0_dp
+        tesco = 0.0_dp
+        ! Adams-Moulton (rqfac = 1/q!, rq1fac = 1/(q-1)!, built by successive division)
+        rqfac = 1.0_dp
+        pc = 0.0_dp
+        pc(1) = 1.0_dp                       ! P for q = 1
+        do q = 1, MAXORD_ADAMS
+            rq1fac = rqfac
+            rqfac = rqfac/q
+            if (q > 1) call poly_times_linear(pc, q - 2, real(q - 1, dp))   ! P *= (x + q - 1)
+            pint = 0.0_dp
+            xpin = 0.0_dp
+            sgn = 1.0_dp
+            do i = 1, q
+                pint = pint + sgn*pc(i)/i
+                xpin = xpin + sgn*pc(i)/(i + 1)
+                sgn = -sgn
+            end do
+            elco(1, q, 1) = pint*rq1fac
+            elco(2, q, 1) = 1.0_dp
+            do i = 2, q
+                elco(i + 1, q, 1) = rq1fac*pc(i)/i
+            end do
+            ragq = 1.0_dp/(rqfac*xpin)
+            tesco(2, q, 1) = ragq
+            if (q < MAXORD_ADAMS) tesco(1, q + 1, 1) = ragq*rqfac/(q + 1)
+        end do
+        do q = 2, MAXORD_ADAMS
+            tesco(3, q - 1, 1) = tesco(2, q, 1)
+        end do
+        tesco(1, 1, 1) = 0.0_dp
+        tesco(3, MAXORD_ADAMS, 1) = 0.0_dp
+        ! BDF
+        pc = 0.0_dp
+        pc(1) = 1.0_dp
+        rq1fac = 1.0_dp                       ! 1/(q-1)!
+        do q = 1, MAXORD_BDF
+            call poly_times_linear(pc, q - 1, real(q, dp))   ! P *= (x + q)
+            do i = 1, q + 1
+                elco(i, q, 2) = pc(i)/pc(2)
+            end do
+            elco(2, q, 2) = 1.0_dp
+            tesco(1, q, 2) = rq1fac
+            tesco(2, q, 2) = (q + 1)/elco(1, q, 2)
+            tesco(3, q, 2) = (q + 2)/elco(1, q, 2)
+            rq1fac = rq1fac/q
+        end do
+        do q = 1, MAXORD_ADAMS
+            cm1(q) = tesco(2, q, 1)*elco(q + 1, q, 1)
+        end do
+        do q = 1, MAXORD_BDF
+            cm2(q) = tesco(2, q, 2)*elco(q + 1, q, 2)
+        end do
+    end subroutine set_coefficients
+
+    !> pc (degree deg, coefficients pc(1..deg+1), pc(1) constant) times (x + a).
+    pure subroutine poly_times_linear(pc, deg, a)
+        real(dp), intent(inout) :: pc(:)
+        integer, intent(in) :: deg
+        real(dp), intent(in) :: a
+        integer :: i
+        pc(deg + 2) = pc(deg + 1)
+        do i = deg + 1, 2, -1
+            pc(i) = pc(i - 1) + a*pc(i)
+        end do
+        pc(1) = a*pc(1)
+    end subroutine poly_times_linear
+
+end module lsoda

@@ -1,0 +1,325 @@
+!> The paper's claims for Figs. 4-8 and 10-12, measured on our output files.
+!!
+!! Reads the .dat files of the paper's scenes (cylinder_l180, cylinder_l195, triangle_plate,
+!! cylinder_torsion) and sets each claim of Kane & Tseng beside our value.  Used by
+!! `bifilar --report` (output/report.md) and by the tests, so both judge the same numbers.
+module paper_claims
+    use kinds, only: dp, pi
+    use status, only: status_t, set_error, ERR_IO
+    use output_io, only: atomic_open, atomic_commit
+    use geometry, only: pendulum_t, raised_angles
+    use bifilar_model, only: chart_state
+    use floquet, only: jacobian_z
+    use lapack_wrap, only: la_eig
+    implicit none
+    private
+
+    integer, parameter :: NCOL = 17
+    integer, parameter, public :: COL_THETA1 = 2, COL_THETA4 = 5, COL_Q = 12
+
+    !> Columns of one output file.
+    type, public :: series_t
+        real(dp), allocatable :: v(:, :)        !! (rows, 17) in the order of the header
+    end type series_t
+
+    !> One claim of the paper beside our value.
+    type, public :: claim_t
+        character(len=:), allocatable :: what   !! the claim, in the paper's words
+        character(len=:), allocatable :: paper  !! the paper's value or statement
+        real(dp) :: ours = 0.0_dp               !! our measured value
+        character(len=:), allocatable :: measure  !! what `ours` is
+        logical :: holds = .false.              !! our value supports the claim
+    end type claim_t
+
+    public :: read_series, tilt_frequency, peak_regularity, evaluate_claims, write_report
+    public :: dominant_frequency, half_period_spread, mean_half_period, rest_frequencies
+
+contains
+
+    !> Read the numeric rows of a bifilar .dat file (lines starting with # are skipped).
+    subroutine read_series(path, s, stat)
+        character(len=*), intent(in) :: path    !! file to read
+        type(series_t), intent(out) :: s
+        type(status_t), intent(out) :: stat     !! ERR_IO when missing or malformed
+        integer :: u, ios, n, k
+        character(len=1024) :: line
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) then
+            call set_error(stat, ERR_IO, 'cannot open '//path//' (run its deck first)')
+            return
+        end if
+        n = 0
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (line(1:1) /= '#' .and. len_trim(line) > 0) n = n + 1
+        end do
+        allocate (s%v(n, NCOL))
+        rewind (u)
+        k = 0
+        do while (k < n)
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (line(1:1) == '#' .or. len_trim(line) == 0) cycle
+            k = k + 1
+            read (line, *, iostat=ios) s%v(k, :)
+            if (ios /= 0) then
+                call set_error(stat, ERR_IO, 'malformed row in '//path)
+                exit
+            end if
+        end do
+        close (u)
+    end subroutine read_series
+
+    !> Mean frequency (cycles per unit tau) of a column about its mean, from up-crossings.
+    pure real(dp) function tilt_frequency(s, col) result(f)
+        type(series_t), intent(in) :: s
+        integer, intent(in) :: col              !! column (COL_THETA1 for tilting)
+        real(dp) :: m, t1, t2
+        integer :: k, ncross
+        m = sum(s%v(:, col))/size(s%v, 1)
+        ncross = 0
+        t1 = 0.0_dp
+        t2 = 0.0_dp
+        do k = 2, size(s%v, 1)
+            if (s%v(k - 1, col) < m .and. s%v(k, col) >= m) then
+                ncross = ncross + 1
+                if (ncross == 1) t1 = s%v(k, 1)
+                t2 = s%v(k, 1)
+            end if
+        end do
+        f = 0.0_dp
+        if (ncross >= 2) f = (ncross - 1)/(t2 - t1)
+    end function tilt_frequency
+
+    !> Smallest over largest local maximum of |column|: 1 for a perfectly regular oscillation.
+    pure real(dp) function peak_regularity(s, col) result(ratio)
+        type(series_t), intent(in) :: s
+        integer, intent(in) :: col
+        real(dp) :: pmin, pmax, a0, a1, a2
+        integer :: k
+        pmin = huge(1.0_dp)
+        pmax = 0.0_dp
+        do k = 2, size(s%v, 1) - 1
+            a0 = abs(s%v(k - 1, col)); a1 = abs(s%v(k, col)); a2 = abs(s%v(k + 1, col))
+            if (a1 > a0 .and. a1 >= a2) then
+                pmin = min(pmin, a1)
+                pmax = max(pmax, a1)
+            end if
+        end do
+        ratio = 0.0_dp
+        if (pmax > 0.0_dp) ratio = pmin/pmax
+    end function peak_regularity
+
+
+    !> Frequency (cycles per unit tau) of the highest peak of the Hann-windowed discrete
+    !! Fourier transform of a column, searched on [fmin, fmax] with step 1e-3 and refined
+    !! by a parabola through the peak and its neighbours.
+    pure real(dp) function dominant_frequency(s, col, fmin, fmax) result(fpk)
+        type(series_t), intent(in) :: s
+        integer, intent(in) :: col
+        real(dp), intent(in) :: fmin, fmax     !! search band (cycles per unit tau)
+        real(dp), parameter :: df = 1.0e-3_dp
+        real(dp) :: x(size(s%v, 1))
+        real(dp), allocatable :: p(:)
+        real(dp) :: c, sn, arg, a, b, g
+        integer :: n, k, j, nf, kmax
+        n = size(s%v, 1)
+        x = s%v(:, col) - sum(s%v(:, col))/n
+        do j = 1, n
+            x(j) = x(j)*0.5_dp*(1.0_dp - cos(2.0_dp*pi*(j - 1)/(n - 1)))
+        end do
+        nf = int((fmax - fmin)/df) + 1
+        allocate (p(nf))
+        do k = 1, nf
+            c = 0.0_dp
+            sn = 0.0_dp
+            do j = 1, n
+                arg = 2.0_dp*pi*(fmin + (k - 1)*df)*s%v(j, 1)
+                c = c + x(j)*cos(arg)
+                sn = sn + x(j)*sin(arg)
+            end do
+            p(k) = c*c + sn*sn
+        end do
+        kmax = maxloc(p, 1)
+        fpk = fmin + (kmax - 1)*df
+        if (kmax > 1 .and. kmax < nf) then
+            a = p(kmax - 1); b = p(kmax); g = p(kmax + 1)
+            if (a - 2*b + g < 0.0_dp) fpk = fpk + 0.5_dp*df*(a - g)/(a - 2*b + g)
+        end if
+    end function dominant_frequency
+
+    !> Times between successive zero crossings of a column (linear interpolation):
+    !! gaps(1:ng).
+    pure subroutine zero_gaps(s, col, gaps, ng)
+        type(series_t), intent(in) :: s
+        integer, intent(in) :: col
+        real(dp), intent(out) :: gaps(:)        !! size >= rows of s
+        integer, intent(out) :: ng
+        real(dp) :: tz, tprev, y0, y1
+        integer :: k, nz
+        nz = 0
+        ng = 0
+        gaps = 0.0_dp
+        tprev = 0.0_dp
+        do k = 2, size(s%v, 1)
+            y0 = s%v(k - 1, col); y1 = s%v(k, col)
+            if ((y0 < 0.0_dp .and. y1 >= 0.0_dp) .or. (y0 > 0.0_dp .and. y1 <= 0.0_dp)) then
+                nz = nz + 1
+                tz = s%v(k - 1, 1) + (s%v(k, 1) - s%v(k - 1, 1))*y0/(y0 - y1)
+                if (nz >= 2) then
+                    ng = ng + 1
+                    gaps(ng) = tz - tprev
+                end if
+                tprev = tz
+            end if
+        end do
+    end subroutine zero_gaps
+
+    !> (largest - smallest)/mean of the half-periods of a column: 0 for a regular oscillation.
+    pure real(dp) function half_period_spread(s, col) result(spread)
+        type(series_t), intent(in) :: s
+        integer, intent(in) :: col
+        real(dp) :: gaps(size(s%v, 1))
+        integer :: ng
+        call zero_gaps(s, col, gaps, ng)
+        spread = huge(1.0_dp)
+        if (ng >= 2) spread = (maxval(gaps(1:ng)) - minval(gaps(1:ng)))/(sum(gaps(1:ng))/ng)
+    end function half_period_spread
+
+    !> Mean half-period of a column (units of tau).
+    pure real(dp) function mean_half_period(s, col) result(hp)
+        type(series_t), intent(in) :: s
+        integer, intent(in) :: col
+        real(dp) :: gaps(size(s%v, 1))
+        integer :: ng
+        call zero_gaps(s, col, gaps, ng)
+        hp = 0.0_dp
+        if (ng >= 1) hp = sum(gaps(1:ng))/ng
+    end function mean_half_period
+
+    !> Natural frequencies (cycles per unit tau) of the pendulum linearised about rest with
+    !! equal cables (the symmetric hang of p), from the eigenvalues of Z (LAPACK DGEEV).
+    subroutine rest_frequencies(p, freq, nfreq, stat)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters (cables made equal here)
+        real(dp), intent(out) :: freq(5)        !! the distinct frequencies, ascending
+        integer, intent(out) :: nfreq
+        type(status_t), intent(out) :: stat
+        type(pendulum_t) :: ps
+        real(dp) :: th(5), z(10, 10), w
+        complex(dp) :: lam(10)
+        integer :: k
+        ps = p
+        ps%big_lp = ps%big_l
+        call raised_angles(ps, 0.0_dp, th, stat)
+        if (stat%code /= 0) return
+        call jacobian_z(ps, chart_state(th, [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp]), z, stat)
+        if (stat%code /= 0) return
+        call la_eig(z, lam, stat)
+        if (stat%code /= 0) return
+        nfreq = 0
+        freq = 0.0_dp
+        do k = 1, 10
+            w = aimag(lam(k))
+            if (w > 1.0e-6_dp) then
+                nfreq = nfreq + 1
+                freq(nfreq) = w/(2.0_dp*pi)
+            end if
+        end do
+    end subroutine rest_frequencies
+
+    pure real(dp) function maxabs(s, col)
+        type(series_t), intent(in) :: s
+        integer, intent(in) :: col
+        maxabs = maxval(abs(s%v(:, col)))
+    end function maxabs
+
+    !> The claims of the paper for the scenes whose output is in outdir.
+    subroutine evaluate_claims(outdir, cyl, claims, stat)
+        character(len=*), intent(in) :: outdir  !! where the .dat files are
+        type(pendulum_t), intent(in) :: cyl     !! the cylinder of the paper's scenes
+        type(claim_t), allocatable, intent(out) :: claims(:)
+        type(status_t), intent(out) :: stat     !! ERR_IO when a scene's output is missing
+        type(series_t) :: c18, c195, tri, tor
+        real(dp) :: r, freq(5), fd
+        integer :: nfreq
+        call read_series(outdir//'/cylinder_l180.dat', c18, stat)
+        if (stat%code == 0) call read_series(outdir//'/cylinder_l195.dat', c195, stat)
+        if (stat%code == 0) call read_series(outdir//'/triangle_plate.dat', tri, stat)
+        if (stat%code == 0) call read_series(outdir//'/cylinder_torsion.dat', tor, stat)
+        if (stat%code /= 0) return
+        allocate (claims(9))
+        r = half_period_spread(c18, COL_THETA4)
+        claims(1) = claim_t('Fig. 4: torsion proceeds regularly although l'' = 0.9 l', &
+            'regular', r, '(max - min)/mean of the half-periods of theta4 (holds if < 0.05)', &
+            r < 0.05_dp)
+        r = maxabs(c195, COL_THETA1)/maxabs(c18, COL_THETA1)
+        claims(2) = claim_t('Figs. 5, 7: a quarter of the length difference reduces max theta1'// &
+            ' by about that factor', 'about 0.25', r, &
+            'max|theta1| (l''=1.95b) / (l''=1.8b) (holds if 0.15 to 0.4)', &
+            r > 0.15_dp .and. r < 0.4_dp)
+        r = maxabs(c195, COL_Q)/maxabs(c18, COL_Q)
+        claims(3) = claim_t('Figs. 6, 8: a quarter of the length difference reduces max Q'// &
+            ' by about that factor', 'about 0.25', r, &
+            'max Q (l''=1.95b) / (l''=1.8b) (holds if 0.15 to 0.4)', r > 0.15_dp .and. r < 0.4_dp)
+        r = dominant_frequency(c195, COL_THETA1, 0.02_dp, 1.0_dp) &
+            /dominant_frequency(c18, COL_THETA1, 0.02_dp, 1.0_dp)
+        claims(4) = claim_t('Figs. 5, 7: the smaller tilting comes with a considerably lower'// &
+            ' frequency', 'considerable decrease', r, &
+            'dominant theta1 frequency (l''=1.95b) / (l''=1.8b) (holds if < 0.8)', r < 0.8_dp)
+        ! our explanation: the tilting runs at a natural frequency of the pendulum at rest
+        call rest_frequencies(cyl, freq, nfreq, stat)
+        if (stat%code /= 0) return
+        fd = dominant_frequency(c18, COL_THETA1, 0.02_dp, 1.0_dp)
+        r = minval(abs(freq(1:nfreq)/fd - 1.0_dp))
+        fd = dominant_frequency(c195, COL_THETA1, 0.02_dp, 1.0_dp)
+        r = max(r, minval(abs(freq(1:nfreq)/fd - 1.0_dp)))
+        claims(5) = claim_t('(ours, not the paper''s) for l'' = 1.8b and 1.95b alike, tilting'// &
+            ' runs at a natural frequency of the pendulum linearised about rest', '-', r, &
+            'largest relative distance of the dominant theta1 frequency from the nearest'// &
+            ' natural frequency (holds if < 0.03)', r < 0.03_dp)
+        r = half_period_spread(tri, COL_THETA4)
+        claims(6) = claim_t('Fig. 10: misalignment of principal axes hardly disturbs torsion', &
+            'not very much', r, &
+            '(max - min)/mean of the half-periods of theta4 (holds if < 0.05)', r < 0.05_dp)
+        r = maxabs(tri, COL_THETA1)/maxabs(c18, COL_THETA1)
+        claims(7) = claim_t('Figs. 11, 5: the plate''s tilting is no more violent than with'// &
+            ' a 10% length difference', 'no more violent', r, &
+            'max|theta1| plate / cylinder l''=1.8b (holds if <= 1.1: comparable or less)', &
+            r <= 1.1_dp)
+        r = maxabs(tri, COL_Q)/maxabs(c18, COL_Q)
+        claims(8) = claim_t('Figs. 12, 6: the plate''s side-sway is no more violent than with'// &
+            ' a 10% length difference', 'no more violent', r, &
+            'max Q plate / cylinder l''=1.8b (holds if <= 1.1: comparable or less)', r <= 1.1_dp)
+        r = max(maxabs(tor, COL_THETA1), maxabs(tor, COL_Q))
+        claims(9) = claim_t('Eqs. (45)-(49): with equal cables and a symmetric body, torsion'// &
+            ' is pure (no tilting, no side-sway)', 'exactly 0', r, &
+            'max of |theta1| and Q, equal cables (holds if < 1e-8)', r < 1.0e-8_dp)
+    end subroutine evaluate_claims
+
+    !> Write OUTDIR/report.md: claim, paper's value, our value, whether it holds.
+    subroutine write_report(outdir, stat)
+        character(len=*), intent(in) :: outdir  !! where the .dat files are and report.md goes
+        type(status_t), intent(out) :: stat     !! ERR_IO when an input or the report fails
+        type(claim_t), allocatable :: claims(:)
+        integer :: u, k
+        character(len=40) :: val
+        call evaluate_claims(outdir, pendulum_t(), claims, stat)
+        if (stat%code /= 0) return
+        call atomic_open(outdir//'/report.md', u, stat)
+        if (stat%code /= 0) return
+        write (u, '(a)') '# bifilar: the paper''s claims against our results', '', &
+            'Kane & Tseng (1966), Figs. 4-8 and 10-12, measured on the output of the decks in '// &
+            '`input/` (`make report`; regenerated by `make run`).  Time tau = (g/b'')^(1/2) t.', &
+            '', '| claim | paper | measure | ours | holds |', '|---|---|---|---|---|'
+        do k = 1, size(claims)
+            write (val, '(es10.3)') claims(k)%ours
+            if (abs(claims(k)%ours) >= 1.0e-3_dp) write (val, '(f0.3)') claims(k)%ours
+            write (u, '(a)') '| '//claims(k)%what//' | '//claims(k)%paper//' | '// &
+                claims(k)%measure//' | '//trim(val)//' | '// &
+                merge('yes', 'no ', claims(k)%holds)//' |'
+        end do
+        call atomic_commit(u, outdir//'/report.md', stat)
+    end subroutine write_report
+
+end module paper_claims

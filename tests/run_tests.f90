@@ -1,0 +1,21 @@
+!> The test runner: `run_tests BIFILAR_EXE [FILTER]` runs every suite (or those whose name
+!! contains FILTER) and ends with the line "N passed, N failed"; exit status 1 on failure.
+program run_tests
+    use testing, only: tester_t
+    use test_lsoda, only: run_lsoda_tests
+    use test_deck, only: run_deck_tests
+    use test_model, only: run_model_tests
+    implicit none
+    type(tester_t) :: t
+    character(len=1024) :: exe, filter
+    exe = 'bin/bifilar'
+    if (command_argument_count() >= 1) call get_command_argument(1, exe)
+    if (command_argument_count() >= 2) then
+        call get_command_argument(2, filter)
+        t%only = trim(filter)
+    end if
+    call run_lsoda_tests(t)
+    call run_deck_tests(t)
+    call run_model_tests(t, trim(exe))
+    if (.not. t%summary()) error stop 1
+end program run_tests

@@ -1,0 +1,386 @@
+!> Tests of the deck reader (every value read back, every bad input an ERR_DECK naming the
+!! variable) and of the atomic output files.
+module test_deck
+    use kinds, only: dp
+    use status, only: status_t, STATUS_OK, ERR_DECK, ERR_IO
+    use testing, only: tester_t
+    use deck, only: deck_t, read_deck, analysis_requested, deck_echo
+    use output_io, only: atomic_open, atomic_commit, atomic_abort, write_kv, all_finite
+    implicit none
+    private
+
+    public :: run_deck_tests
+
+    character(len=*), parameter :: DEFAULT_SCRATCH = 'build/test_decks'
+    character, parameter :: NL = new_line('a')
+
+    ! the groups of a complete, valid deck (the triangular plate of input/)
+    character(len=*), parameter :: G_SCENE = &
+        "&scene title = 'Plate, l = l'' = 2b', analyses = 'simulate  Floquet chart' /"
+    character(len=*), parameter :: G_SUSP = &
+        '&suspension b = 1.5, b_prime = 1.25, l = 2.5, l_prime = 1.75, g = 9.81 /'
+    character(len=*), parameter :: G_BODY = &
+        '&body mass = 2.0, inertia = 0.0625, 0.1875, 0.25,'//NL// &
+        '      r = 0.5, lambda = 0.25,   ! a comment inside a group'//NL// &
+        '      btilde(1,:) = -0.7071067811865476, 0.0, -0.7071067811865476,'//NL// &
+        '      btilde(2,:) = -0.7071067811865476, 0.0,  0.7071067811865476,'//NL// &
+        '      btilde(3,:) = 0.0, 1.0, 0.0,'//NL// &
+        '      sway_depth = 0.75 /'
+    character(len=*), parameter :: G_START = &
+        "&start mode = 'Angles', amplitude = 30.0, tilt = 0.1, theta = 0.1, 0.2, 0.3, 0.4," &
+        //NL//"       theta_dot = -1, -2, -3, -4 /"
+    character(len=*), parameter :: G_INTEG = &
+        '&integration tau_end = 10.0, dtau_out = 0.5, rtol = 1e-9, atol = 1d-11, ' // &
+        'error_estimate = .true. /'
+    ! minimal required groups
+    character(len=*), parameter :: MIN_SUSP = '&suspension b = 1.0, l = 2.0 /'
+    character(len=*), parameter :: MIN_BODY = '&body mass = 1.0 /'
+
+contains
+
+    subroutine run_deck_tests(t, scratch)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in), optional :: scratch   !! directory for deck files
+        character(len=:), allocatable :: dir
+        dir = DEFAULT_SCRATCH
+        if (present(scratch)) dir = scratch
+        call execute_command_line('mkdir -p '//dir)
+        if (t%want('deck: a complete deck reads back')) call test_complete(t, dir)
+        if (t%want('deck: defaults for absent groups')) call test_defaults(t, dir)
+        if (t%want('deck: bad input is ERR_DECK naming the variable')) call test_bad(t, dir)
+        if (t%want('deck: echo and key = value lines')) call test_echo(t, dir)
+        if (t%want('deck: atomic output files')) call test_atomic(t, dir)
+    end subroutine run_deck_tests
+
+    ! ---------------------------------------------------------------------------------------
+    subroutine write_text(path, text)
+        character(len=*), intent(in) :: path, text
+        integer :: u
+        open (newunit=u, file=path, status='replace', action='write', access='stream', &
+              form='unformatted')
+        write (u) text
+        close (u)
+    end subroutine write_text
+
+    logical function exists(path)
+        character(len=*), intent(in) :: path
+        inquire (file=path, exist=exists)
+    end function exists
+
+    function msg_of(stat) result(m)
+        type(status_t), intent(in) :: stat
+        character(len=:), allocatable :: m
+        m = '(no message)'
+        if (allocated(stat%msg)) m = stat%msg
+    end function msg_of
+
+    ! ---------------------------------------------------------------------------------------
+    subroutine test_complete(t, dir)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: dir
+        type(deck_t) :: d
+        type(status_t) :: stat
+        character(len=:), allocatable :: path
+        real(dp), parameter :: s = 0.7071067811865476_dp
+        path = dir//'/complete.nml'
+        call write_text(path, '! a complete deck'//NL//G_SCENE//NL//G_SUSP//NL//G_BODY//NL// &
+                        G_START//NL//G_INTEG//NL)
+        call read_deck(path, d, stat)
+        call t%check('complete: status ok ('//msg_of(stat)//')', stat%code == STATUS_OK)
+        if (stat%code /= STATUS_OK) return
+        call t%check('complete: path', d%path == path)
+        call t%check('complete: name', d%name == 'complete')
+        call t%check('complete: title', trim(d%title) == 'Plate, l = l'' = 2b')
+        call t%check('complete: model default', trim(d%model) == 'kane')
+        call t%check('complete: simulate requested', analysis_requested(d, 'simulate'))
+        call t%check('complete: floquet requested (case)', analysis_requested(d, 'floquet'))
+        call t%check('complete: chart requested', analysis_requested(d, 'chart'))
+        call t%check('complete: work_precision not requested', &
+                     .not. analysis_requested(d, 'work_precision'))
+        call t%check('complete: partial word not requested', .not. analysis_requested(d, 'sim'))
+        call t%check_close('complete: b', d%b, 1.5_dp)
+        call t%check_close('complete: b_prime', d%b_prime, 1.25_dp)
+        call t%check_close('complete: l', d%l, 2.5_dp)
+        call t%check_close('complete: l_prime', d%l_prime, 1.75_dp)
+        call t%check_close('complete: g', d%g, 9.81_dp)
+        call t%check_close('complete: mass', d%mass, 2.0_dp)
+        call t%check('complete: inertia', all(d%inertia == [0.0625_dp, 0.1875_dp, 0.25_dp]))
+        call t%check_close('complete: r', d%r, 0.5_dp)
+        call t%check_close('complete: lambda', d%lambda, 0.25_dp)
+        call t%check('complete: btilde row 1', all(d%btilde(1, :) == [-s, 0.0_dp, -s]))
+        call t%check('complete: btilde row 2', all(d%btilde(2, :) == [-s, 0.0_dp, s]))
+        call t%check('complete: btilde row 3', all(d%btilde(3, :) == [0.0_dp, 1.0_dp, 0.0_dp]))
+        call t%check_close('complete: sway_depth', d%sway_depth, 0.75_dp)
+        call t%check('complete: mode lower case', trim(d%mode) == 'angles')
+        call t%check_close('complete: amplitude', d%amplitude, 30.0_dp)
+        call t%check_close('complete: tilt', d%tilt, 0.1_dp)
+        call t%check('complete: theta', all(d%theta == [0.1_dp, 0.2_dp, 0.3_dp, 0.4_dp]))
+        call t%check('complete: theta_dot', all(d%theta_dot == [-1.0_dp, -2.0_dp, -3.0_dp, &
+                                                                -4.0_dp]))
+        call t%check_close('complete: tau_end', d%tau_end, 10.0_dp)
+        call t%check_close('complete: dtau_out', d%dtau_out, 0.5_dp)
+        call t%check_close('complete: rtol', d%rtol, 1.0e-9_dp)
+        call t%check_close('complete: atol', d%atol, 1.0e-11_dp)
+        call t%check('complete: error_estimate', d%error_estimate)
+
+        ! the decks shipped in input/ are valid
+        call read_deck('input/cylinder_l180.nml', d, stat)
+        call t%check('input/cylinder_l180.nml reads ('//msg_of(stat)//')', &
+                     stat%code == STATUS_OK)
+        call t%check('input/cylinder_l180.nml: name', d%name == 'cylinder_l180')
+        call t%check_close('input/cylinder_l180.nml: l_prime', d%l_prime, 1.8_dp)
+        call read_deck('input/triangle_plate.nml', d, stat)
+        call t%check('input/triangle_plate.nml reads ('//msg_of(stat)//')', &
+                     stat%code == STATUS_OK)
+        call t%check('input/triangle_plate.nml: btilde(3,:)', &
+                     all(d%btilde(3, :) == [0.0_dp, 1.0_dp, 0.0_dp]))
+    end subroutine test_complete
+
+    subroutine test_defaults(t, dir)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: dir
+        type(deck_t) :: d, ref
+        type(status_t) :: stat
+        call write_text(dir//'/minimal', MIN_SUSP//NL//MIN_BODY//NL)
+        call read_deck(dir//'/minimal', d, stat)
+        call t%check('defaults: status ok ('//msg_of(stat)//')', stat%code == STATUS_OK)
+        if (stat%code /= STATUS_OK) return
+        call t%check('defaults: name without .nml', d%name == 'minimal')
+        call t%check('defaults: analyses', analysis_requested(d, 'simulate') .and. &
+                     .not. analysis_requested(d, 'floquet'))
+        call t%check('defaults: title', len_trim(d%title) == 0)
+        call t%check('defaults: mode', trim(d%mode) == 'raised')
+        call t%check('defaults: l_prime', d%l_prime == ref%l_prime)
+        call t%check('defaults: inertia', all(d%inertia == ref%inertia))
+        call t%check('defaults: btilde identity', all(d%btilde == reshape([1.0_dp, 0.0_dp, &
+                     0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [3, 3])))
+        call t%check('defaults: amplitude', d%amplitude == 45.0_dp)
+        call t%check('defaults: integration', d%tau_end == 60.0_dp .and. &
+                     d%dtau_out == 0.05_dp .and. d%rtol == 1.0e-10_dp .and. &
+                     d%atol == 1.0e-12_dp .and. .not. d%error_estimate)
+        ! a second read into the same variable starts from the defaults again
+        call write_text(dir//'/minimal2.nml', '&suspension l = 3.0 /'//NL// &
+                        '&body mass = 1.0 /'//NL)
+        call read_deck(dir//'/minimal2.nml', d, stat)
+        call t%check('defaults: reread ok', stat%code == STATUS_OK)
+        call t%check('defaults: reread b', d%b == 1.0_dp .and. d%l == 3.0_dp)
+        call t%check('defaults: name strips directory', d%name == 'minimal2')
+        ! extreme but valid values do not overflow inside the checks
+        call write_text(dir//'/huge.nml', MIN_SUSP//NL// &
+                        '&body inertia = 1.7e308, 1.7e308, 1.0 /'//NL// &
+                        '&integration tau_end = 1e300, dtau_out = 1e294 /'//NL)
+        call read_deck(dir//'/huge.nml', d, stat)
+        call t%check('defaults: huge valid values ok ('//msg_of(stat)//')', &
+                     stat%code == STATUS_OK)
+        ! no newline after the last group
+        call write_text(dir//'/no_newline.nml', MIN_SUSP//NL//'&body mass = 3.0 /')
+        call read_deck(dir//'/no_newline.nml', d, stat)
+        call t%check('defaults: last line without newline ('//msg_of(stat)//')', &
+                     stat%code == STATUS_OK .and. d%mass == 3.0_dp)
+    end subroutine test_defaults
+
+    ! ---------------------------------------------------------------------------------------
+    subroutine test_bad(t, dir)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: dir
+        type(deck_t) :: d
+        type(status_t) :: stat
+        character(len=*), parameter :: SB = MIN_SUSP//NL//MIN_BODY//NL
+
+        call read_deck(dir//'/no_such_deck.nml', d, stat)
+        call t%check('bad: missing file is ERR_DECK', stat%code == ERR_DECK)
+        call t%check('bad: missing file named ('//msg_of(stat)//')', &
+                     index(msg_of(stat), dir//'/no_such_deck.nml') > 0)
+
+        call bad('misspelled', '&suspension b = 1.0, lenght = 2 /'//NL//MIN_BODY, &
+                 ['lenght     ', '&suspension', 'b_prime    '])
+        call bad('non_numeric', '&suspension b = 1.0, l = abc /'//NL//MIN_BODY, &
+                 ['l = abc    ', 'not a real '])
+        call bad('non_numeric_2', MIN_SUSP//NL//'&body mass = 1.0.0 /', &
+                 ['mass = 1.0.0'])
+        call bad('repeated_point', MIN_SUSP//NL//'&body inertia = 1, 1, 1, 2 /', &
+                 ['inertia   ', 'too many  '])
+        call bad('nan', '&suspension b = NaN, l = 2.0 /'//NL//MIN_BODY, &
+                 ['b = NaN   ', 'finite    '])
+        call bad('inf', '&suspension l = Inf /'//NL//MIN_BODY, ['l = Inf'])
+        call bad('overflow', SB//'&integration tau_end = 1e400 /', ['tau_end'])
+        call bad('zero_length', '&suspension b_prime = 0.0 /'//NL//MIN_BODY, &
+                 ['b_prime = 0', '> 0        '])
+        call bad('negative_length', '&suspension l = -0.3 /'//NL//MIN_BODY, ['l = -0.3'])
+        call bad('l_prime_zero', '&suspension l_prime = 0 /'//NL//MIN_BODY, ['l_prime = 0'])
+        call bad('l_prime_negative', '&suspension l_prime = -1 /'//NL//MIN_BODY, &
+                 ['l_prime = -1'])
+        call bad('g_zero', '&suspension g = 0 /'//NL//MIN_BODY, ['g = 0'])
+        call bad('mass_negative', MIN_SUSP//NL//'&body mass = -1 /', ['mass = -1'])
+        call bad('inertia_zero', MIN_SUSP//NL//'&body inertia = 0.0, 1.0, 1.0 /', ['inertia'])
+        call bad('btilde_not_unit', MIN_SUSP//NL//'&body btilde(1,:) = 1, 1, 0 /', &
+                 ['btilde    ', 'row 1     ', 'orthonorm '])
+        call bad('btilde_not_orthogonal', MIN_SUSP//NL//'&body btilde(2,:) = 0.6, 0.8, 0.0 /', &
+                 ['btilde      ', 'orthogonal  ', 'rows 1 and 2'])
+        call bad('btilde_left_handed', MIN_SUSP//NL//'&body btilde(3,:) = 0, 0, -1 /', &
+                 ['btilde     ', 'left-handed', 'det        '])
+        call bad('btilde_huge', MIN_SUSP//NL//'&body btilde(1,:) = 1e300, 0, 0 /', &
+                 ['btilde = [1e300, 0, 0;'])
+        call bad('triangle_I1', MIN_SUSP//NL//'&body inertia = 1.0, 0.2, 0.3 /', &
+                 ['inertia             ', 'I1 > I2 + I3        ', 'triangle inequality '])
+        call bad('triangle_I3', MIN_SUSP//NL//'&body inertia = 1e307, 1e307, 1.7e308 /', &
+                 ['inertia = 1e307, 1e307, 1.7e308', 'I3 > I1 + I2                   '])
+        call bad('r_negative', MIN_SUSP//NL//'&body r = -0.1 /', ['r = -0.1'])
+        call bad('missing_body', MIN_SUSP//NL, ['&body   ', 'required'])
+        call bad('missing_suspension', MIN_BODY//NL, ['&suspension', 'required   '])
+        call bad('truncated', MIN_SUSP//NL//'&body mass = 1.0, inertia = 0.1, 0.1, 0.1', &
+                 ['&body    ', 'truncated'])
+        call bad('unterminated', MIN_SUSP//NL//'&body mass = 1.0'//NL//'&start tilt = 0.1 /', &
+                 ['&body          ', 'closing        ', 'before ''&start'''])
+        call bad('empty', '', ['empty'])
+        call bad('unknown_group', SB//'&intergation tau_end = 1 /', &
+                 ['&intergation', 'allowed     '])
+        call bad('unknown_analysis', "&scene analyses = 'simulate flocket' /"//NL//SB, &
+                 ['analyses', 'flocket ', 'floquet '])
+        call bad('empty_analyses', "&scene analyses = '' /"//NL//SB, ['analyses', 'simulate'])
+        call bad('bad_model', "&scene model = 'euler' /"//NL//SB, ['model', 'kane '])
+        call bad('bad_mode', "&start mode = 'dropped' /"//NL//SB, ['mode  ', 'raised', 'angles'])
+        call bad('unquoted_mode', "&start mode = raised /"//NL//SB, ['mode  ', 'quoted'])
+        call bad('amplitude_180', '&start amplitude = 180 /'//NL//SB, ['amplitude', '180      '])
+        call bad('amplitude_zero', '&start amplitude = 0 /'//NL//SB, ['amplitude = 0'])
+        call bad('theta_nan', "&start mode = 'angles', theta = 0, nan /"//NL//SB, ['theta'])
+        call bad('dtau_out_gt_tau_end', SB//'&integration tau_end = 1, dtau_out = 2 /', &
+                 ['dtau_out', 'tau_end '])
+        call bad('too_many_rows', SB//'&integration tau_end = 1e6, dtau_out = 1e-3 /', &
+                 ['dtau_out', '1e7     '])
+        call bad('rtol_zero', SB//'&integration rtol = 0 /', ['rtol ', '1e-14'])
+        call bad('rtol_small', SB//'&integration rtol = 1e-15 /', ['rtol = 1e-15', '1e-14       '])
+        call bad('rtol_one', SB//'&integration rtol = 1 /', ['rtol'])
+        call bad('atol_negative', SB//'&integration atol = -1e-12 /', ['atol'])
+        call bad('bad_logical', SB//'&integration error_estimate = maybe /', ['error_estimate'])
+        call bad('long_title', "&scene title = '"//repeat('x', 2000)//"' /"//NL//SB// &
+                 '&start mode = 1 /', ['mode'])
+
+    contains
+
+        subroutine bad(label, text, words)
+            character(len=*), intent(in) :: label, text
+            character(len=*), intent(in) :: words(:)
+            integer :: i
+            character(len=:), allocatable :: path
+            path = dir//'/bad_'//label//'.nml'
+            call write_text(path, text)
+            call read_deck(path, d, stat)
+            call t%check('bad: '//label//' is ERR_DECK ('//msg_of(stat)//')', &
+                         stat%code == ERR_DECK)
+            call t%check('bad: '//label//' message names the deck ('//msg_of(stat)//')', &
+                         index(msg_of(stat), 'bad_'//label) > 0)
+            do i = 1, size(words)
+                call t%check('bad: '//label//' message contains "'//trim(words(i))//'" ('// &
+                             msg_of(stat)//')', index(msg_of(stat), trim(words(i))) > 0)
+            end do
+        end subroutine bad
+
+    end subroutine test_bad
+
+    ! ---------------------------------------------------------------------------------------
+    subroutine test_echo(t, dir)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: dir
+        type(deck_t) :: d, e
+        type(status_t) :: stat
+        integer :: u, ios, n
+        character(len=4096) :: line
+        character(len=:), allocatable :: text
+        call write_text(dir//'/echo_src.nml', G_SCENE//NL//G_SUSP//NL//G_BODY//NL// &
+                        G_START//NL//G_INTEG//NL)
+        call read_deck(dir//'/echo_src.nml', d, stat)
+        call t%check('echo: source ok', stat%code == STATUS_OK)
+        ! the echo, stripped of '# ', is itself a deck that reads back the same values
+        open (newunit=u, file=dir//'/echo.txt', status='replace', action='write')
+        call deck_echo(d, u)
+        call write_kv(u, 'x', 0.1_dp)
+        call write_kv(u, 'n', 42)
+        call write_kv(u, 's', 'text  ')
+        call write_kv(u, 'yes', .true.)
+        call write_kv(u, 'no', .false.)
+        close (u)
+        open (newunit=u, file=dir//'/echo.txt', status='old', action='read')
+        text = ''
+        n = 0
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            n = n + 1
+            if (n <= 6) call t%check('echo: comment line', line(1:2) == '# ')
+            if (line(1:3) == '# &') then
+                text = text//trim(line(3:))//NL
+            else if (n > 1) then
+                text = text//trim(line)//NL
+            end if
+        end do
+        close (u)
+        call t%check('echo: one line per group + path', n >= 6)
+        call t%check('echo: real kv', index(text, 'x = 1.0000000000000001E-001') > 0)
+        call t%check('echo: int kv', index(text, 'n = 42'//NL) > 0)
+        call t%check('echo: char kv', index(text, 's = text'//NL) > 0)
+        call t%check('echo: logical kv', index(text, 'yes = yes'//NL) > 0 .and. &
+                     index(text, 'no = no'//NL) > 0)
+        call write_text(dir//'/echo_back.nml', text(1:index(text, 'x = ') - 1))
+        call read_deck(dir//'/echo_back.nml', e, stat)
+        call t%check('echo: reads back ('//msg_of(stat)//')', stat%code == STATUS_OK)
+        call t%check('echo: same title', d%title == e%title)
+        call t%check('echo: same analyses', d%analyses == e%analyses)
+        call t%check('echo: same reals', d%b == e%b .and. d%b_prime == e%b_prime .and. &
+                     d%l == e%l .and. d%l_prime == e%l_prime .and. d%g == e%g .and. &
+                     d%mass == e%mass .and. all(d%inertia == e%inertia) .and. d%r == e%r &
+                     .and. d%lambda == e%lambda .and. all(d%btilde == e%btilde) .and. &
+                     d%sway_depth == e%sway_depth .and. d%amplitude == e%amplitude .and. &
+                     d%tilt == e%tilt .and. all(d%theta == e%theta) .and. &
+                     all(d%theta_dot == e%theta_dot) .and. d%tau_end == e%tau_end .and. &
+                     d%dtau_out == e%dtau_out .and. d%rtol == e%rtol .and. d%atol == e%atol)
+        call t%check('echo: same mode and flags', d%mode == e%mode .and. &
+                     (d%error_estimate .eqv. e%error_estimate))
+        call t%check('all_finite: finite', all_finite([1.0_dp, -2.0_dp, huge(1.0_dp)]))
+        call t%check('all_finite: empty', all_finite([real(dp) ::]))
+    end subroutine test_echo
+
+    subroutine test_atomic(t, dir)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: dir
+        character(len=:), allocatable :: path
+        type(status_t) :: stat
+        integer :: u, ios
+        character(len=64) :: line
+        logical :: there(2)
+        path = dir//'/atomic.dat'
+        call execute_command_line('rm -f '//path//' '//path//'.tmp')
+        call atomic_open(path, u, stat)
+        call t%check('atomic: open ok', stat%code == STATUS_OK)
+        write (u, '(a)') 'first line'
+        there = [exists(path), exists(path//'.tmp')]
+        call t%check('atomic: only .tmp before commit', there(2) .and. .not. there(1))
+        call atomic_commit(u, path, stat)
+        call t%check('atomic: commit ok', stat%code == STATUS_OK)
+        there = [exists(path), exists(path//'.tmp')]
+        call t%check('atomic: file after commit, no .tmp', there(1) .and. .not. there(2))
+        open (newunit=u, file=path, status='old', action='read')
+        read (u, '(a)', iostat=ios) line
+        close (u)
+        call t%check('atomic: content', ios == 0 .and. trim(line) == 'first line')
+
+        ! an aborted rewrite leaves the old file alone and no .tmp
+        call atomic_open(path, u, stat)
+        write (u, '(a)') 'partial'
+        call atomic_abort(u, path)
+        there = [exists(path), exists(path//'.tmp')]
+        call t%check('atomic: abort keeps old file, no .tmp', there(1) .and. .not. there(2))
+        path = dir//'/aborted.dat'
+        call execute_command_line('rm -f '//path//' '//path//'.tmp')
+        call atomic_open(path, u, stat)
+        write (u, '(a)') 'partial'
+        call atomic_abort(u, path)
+        there = [exists(path), exists(path//'.tmp')]
+        call t%check('atomic: abort leaves neither file', .not. any(there))
+
+        call atomic_open(dir//'/no_such_dir/x.dat', u, stat)
+        call t%check('atomic: open in a missing directory is ERR_IO', stat%code == ERR_IO)
+        call t%check('atomic: message names the file', index(msg_of(stat), 'x.dat') > 0)
+    end subroutine test_atomic
+
+end module test_deck
