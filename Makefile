@@ -17,13 +17,13 @@ CHECK ?= 0
 ifeq ($(CHECK),1)
 BUILD = build-check
 BIN = build-check/bin
-FFLAGS = -O0 -g -fcheck=all -ffpe-trap=invalid,zero,overflow -fbacktrace
+FFLAGS = -O0 -g -fcheck=all,no-array-temps -ffpe-trap=invalid,zero,overflow -fbacktrace
 else
 BUILD = build
 BIN = bin
-FFLAGS = -O2 -march=x86-64-v2
+FFLAGS = -O2 -march=x86-64-v2 -fno-backtrace
 endif
-FFLAGS += -std=f2008 -Wall -Wextra -Wno-compare-reals -fimplicit-none -fno-backtrace
+FFLAGS += -std=f2008 -Wall -Wextra -Wno-compare-reals -fimplicit-none
 LIBS = -llapack -lblas
 
 # Library modules in dependency order (each only uses modules listed before it).

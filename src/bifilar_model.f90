@@ -52,7 +52,7 @@ module bifilar_model
     end type motion_t
 
     public :: chart_state, paper_angles, chart_accelerations, paper_accelerations, evaluate
-    public :: chart_positions
+    public :: chart_positions, chart_energy, chart_constraint
 
 contains
 
@@ -270,6 +270,31 @@ contains
         e = point_e(p, c, n)
     end subroutine chart_positions
 
+    !> Total energy (kinetic + potential, over m g b') of a chart state.
+    pure real(dp) function chart_energy(p, y) result(en)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters
+        real(dp), intent(in) :: y(10)           !! chart state
+        real(dp) :: n(3, 3), c(3), d(3), jv(3, 5), cv(3), jw(3, 5), cw(3), omega(3)
+        real(dp) :: jd(3, 5), cd(3), v(3), rs(3), in(3, 3)
+        call chart_kinematics(p, y, n, c, d, jv, cv, jw, cw, omega, jd, cd)
+        in = inertia_dyadic(body_axes(p, n), p%inertia)
+        v = matmul(jv, y(6:10))
+        rs = mass_centre(p, c, n)
+        en = 0.5_dp*dot_product(v, v) + 0.5_dp*dot_product(omega, matmul(in, omega)) + rs(3)
+    end function chart_energy
+
+    !> The constraint eq. (2) and its rate at a chart state: g = |AD|^2 - L'^2, gdot = dg/dtau.
+    pure subroutine chart_constraint(p, y, g, gdot)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters
+        real(dp), intent(in) :: y(10)           !! chart state
+        real(dp), intent(out) :: g, gdot
+        real(dp) :: n(3, 3), c(3), d(3), jv(3, 5), cv(3), jw(3, 5), cw(3), omega(3)
+        real(dp) :: jd(3, 5), cd(3)
+        call chart_kinematics(p, y, n, c, d, jv, cv, jw, cw, omega, jd, cd)
+        g = dot_product(d, d) - p%big_lp**2
+        gdot = 2.0_dp*dot_product(d, matmul(jd, y(6:10)))
+    end subroutine chart_constraint
+
     !> Everything reported about the motion at one instant: angles in the paper's terms,
     !! accelerations, energy, constraint residual, side-sway Q, and the cable tensions from
     !! Newton's law for the body: m a = -m g n3 - T_BC e_BC - T_AD e_AD.
@@ -293,8 +318,7 @@ contains
         mo%astar = matmul(jv, mo%qdd) + cv
         mo%omega = omega
         mo%alpha = matmul(jw, mo%qdd) + cw
-        mo%energy = 0.5_dp*dot_product(mo%vstar, mo%vstar) &
-                    + 0.5_dp*dot_product(omega, matmul(in, omega)) + mo%rstar(3)
+        mo%energy = chart_energy(p, y)
         mo%residual = norm2(d) - p%big_lp
         ! side-sway: O = (0, -B/2, 0); E below the midpoint of CD
         pe = point_e(p, c, n)

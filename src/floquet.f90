@@ -10,13 +10,14 @@
 !! in the regular chart of bifilar_model (the orbit lies on theta2 = 0, where the paper's
 !! coordinates are singular) over `nseg` shooting segments; the multipliers are the
 !! eigenvalues of the product of the segment matrices (LAPACK DGEEV).  Z is the Jacobian of
-!! the chart right-hand side by Richardson-extrapolated central differences.
+!! the chart right-hand side by central differences (see jacobian_z).
 module floquet
     use kinds, only: dp, pi
-    use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC
+    use status, only: status_t, set_error, ERR_DECK
     use ode_system, only: ode_system_t
     use geometry, only: pendulum_t, raised_angles, solve_theta5
-    use bifilar_model, only: chart_accelerations, chart_state, NSTATE
+    use bifilar_model, only: chart_accelerations, chart_state, chart_energy, chart_constraint, &
+                             NSTATE
     use lsoda, only: lsoda_t, lsoda_stats_t
     use lapack_wrap, only: la_eig
     implicit none
@@ -36,9 +37,11 @@ module floquet
         real(dp) :: period = 0.0_dp             !! t* in units of tau
         real(dp) :: max_modulus = 0.0_dp        !! largest |multiplier| among the non-trivial
         logical :: stable = .false.             !! max_modulus <= 1 + stability_margin
-        complex(dp) :: multipliers(NSTATE) = (0.0_dp, 0.0_dp)  !! sorted by decreasing modulus
+        complex(dp) :: multipliers(NSTATE) = (0.0_dp, 0.0_dp)  !! non-trivial first, by modulus
         logical :: trivial(NSTATE) = .false.    !! the four multipliers that are 1 by structure
         real(dp) :: orbit_closure = 0.0_dp      !! |y(t*) - y(0)|, max norm
+        real(dp) :: trivial_residual = 0.0_dp   !! largest residual of the trivial identities
+        real(dp) :: monodromy(NSTATE, NSTATE) = 0.0_dp  !! H(t*) of the chart form
         integer :: steps = 0, rhs_evaluations = 0
     end type floquet_result_t
 
@@ -146,37 +149,49 @@ contains
         end do
     end subroutine gauss_legendre
 
-    !> Z = d f / d y of the chart right-hand side (eq. (51)), by central differences
-    !! extrapolated (Richardson, h and h/2: error O(h^4)).
+    !> Z = d f / d y of the chart right-hand side (eq. (51)).  The accelerations are exactly
+    !! quadratic in the rates, so a central difference with h = max(1, |y_j|) is exact for the
+    !! rate columns (no truncation, rounding ~ eps).  The position columns use the fourth-order
+    !! central stencil with h = 1e-3 max(1, |y_j|): truncation ~ h^4/30 |f^(5)| ~ 1e-13,
+    !! rounding ~ eps/h ~ 2e-13, and smooth along the orbit (no noise for the step control).
     subroutine jacobian_z(p, y, z, stat)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         real(dp), intent(in) :: y(NSTATE)       !! chart state
         real(dp), intent(out) :: z(NSTATE, NSTATE)
         type(status_t), intent(out) :: stat
-        real(dp) :: h, yp(NSTATE), d1(5), d2(5), ap(5), am(5)
+        real(dp) :: h, yp(NSTATE), a1(5), a2(5), a3(5), a4(5)
         integer :: j
         z = 0.0_dp
         do j = 1, 5
             z(j, j + 5) = 1.0_dp
         end do
         do j = 1, NSTATE
-            h = 2.0e-3_dp*max(1.0_dp, abs(y(j)))
             yp = y
-            yp(j) = y(j) + h
-            call chart_accelerations(p, yp, ap, stat)
-            if (stat%code /= 0) return
-            yp(j) = y(j) - h
-            call chart_accelerations(p, yp, am, stat)
-            if (stat%code /= 0) return
-            d1 = (ap - am)/(2*h)
-            yp(j) = y(j) + 0.5_dp*h
-            call chart_accelerations(p, yp, ap, stat)
-            if (stat%code /= 0) return
-            yp(j) = y(j) - 0.5_dp*h
-            call chart_accelerations(p, yp, am, stat)
-            if (stat%code /= 0) return
-            d2 = (ap - am)/h
-            z(6:10, j) = (4*d2 - d1)/3
+            if (j <= 5) then
+                h = 1.0e-3_dp*max(1.0_dp, abs(y(j)))
+                yp(j) = y(j) + h
+                call chart_accelerations(p, yp, a1, stat)
+                if (stat%code /= 0) return
+                yp(j) = y(j) - h
+                call chart_accelerations(p, yp, a2, stat)
+                if (stat%code /= 0) return
+                yp(j) = y(j) + 2*h
+                call chart_accelerations(p, yp, a3, stat)
+                if (stat%code /= 0) return
+                yp(j) = y(j) - 2*h
+                call chart_accelerations(p, yp, a4, stat)
+                if (stat%code /= 0) return
+                z(6:10, j) = (8*(a1 - a2) - (a3 - a4))/(12*h)
+            else
+                h = max(1.0_dp, abs(y(j)))
+                yp(j) = y(j) + h
+                call chart_accelerations(p, yp, a1, stat)
+                if (stat%code /= 0) return
+                yp(j) = y(j) - h
+                call chart_accelerations(p, yp, a2, stat)
+                if (stat%code /= 0) return
+                z(6:10, j) = (a1 - a2)/(2*h)
+            end if
         end do
     end subroutine jacobian_z
 
@@ -240,16 +255,31 @@ contains
     end subroutine monodromy
 
     !> The whole analysis at torsion amplitude `amp` (rad).
-    subroutine floquet_analysis(p, amp, rtol, nseg, res, stat)
-        type(pendulum_t), intent(in) :: p       !! scaled parameters (a torsion scene)
+    !!
+    !! The 10 x 10 monodromy H of the chart form has four multipliers that are 1 by structure,
+    !! in two Jordan blocks: the time shift (eigenvector f(y0)) with the energy, and the
+    !! constraint with its rate.  A Jordan block spreads its computed eigenvalues by the square
+    !! root of the integration error, so the six others are taken from H reduced to the
+    !! subspace S = {dG = dG' = dE = 0, orthogonal to f(y0)}: M6 = U^T P H U (U an
+    !! orthonormal basis of S, P the projection along f).  The four trivial multipliers are
+    !! reported as 1 and checked through their exact identities
+    !! H f = f,  grad(E)^T H = grad(E)^T,  grad(G')^T H = grad(G')^T,
+    !! grad(G)^T H = grad(G)^T + t* grad(G')^T  (residual in res%trivial_residual).
+    subroutine floquet_analysis(p_in, amp, rtol, nseg, res, stat)
+        type(pendulum_t), intent(in) :: p_in    !! scaled parameters (a torsion scene)
         real(dp), intent(in) :: amp             !! amplitude of theta4 (rad)
         real(dp), intent(in) :: rtol            !! integrator tolerance
         integer, intent(in) :: nseg             !! shooting segments
         type(floquet_result_t), intent(out) :: res
         type(status_t), intent(out) :: stat     !! ERR_DECK (scene), ERR_NUMERIC
-        real(dp) :: th(5), y0(NSTATE), yend(NSTATE), h(NSTATE, NSTATE), dist(NSTATE)
-        complex(dp) :: lam(NSTATE)
-        integer :: ivert, k, idx(NSTATE), i
+        type(pendulum_t) :: p
+        real(dp) :: th(5), y0(NSTATE), yend(NSTATE), h(NSTATE, NSTATE)
+        real(dp) :: rows(NSTATE, 4), u(NSTATE, 6), pf(NSTATE, NSTATE), m6(6, 6), f(NSTATE)
+        real(dp) :: r
+        complex(dp) :: lam(6)
+        integer :: ivert, k, idx(6), i
+        p = p_in
+        p%stab_rate = 0.0_dp      ! the variational equations of the model itself
         call check_torsion_scene(p, ivert, stat)
         if (stat%code /= 0) return
         call torsion_period(p, amp, ivert, res%period, stat)
@@ -263,11 +293,27 @@ contains
                        res%rhs_evaluations, stat)
         if (stat%code /= 0) return
         res%orbit_closure = maxval(abs(yend - y0))
-        call la_eig(h, lam, stat)
+        call structure_rows(p, y0, rows, f, stat)
         if (stat%code /= 0) return
-        ! sort by decreasing modulus
-        idx = [(k, k=1, NSTATE)]
-        do k = 2, NSTATE
+        ! residuals of the four exact identities, each relative to its vector
+        r = norm2(matmul(h, f) - f)/norm2(f)
+        r = max(r, norm2(matmul(rows(:, 3), h) - rows(:, 3))/norm2(rows(:, 3)))
+        r = max(r, norm2(matmul(rows(:, 2), h) - rows(:, 2))/norm2(rows(:, 2)))
+        r = max(r, norm2(matmul(rows(:, 1), h) - rows(:, 1) - res%period*rows(:, 2)) &
+                /norm2(rows(:, 1)))
+        res%trivial_residual = r
+        ! reduced map on S
+        call complement_basis(reshape([rows(:, 1), rows(:, 2), rows(:, 3), f], [NSTATE, 4]), u)
+        pf = 0.0_dp
+        do k = 1, NSTATE
+            pf(k, k) = 1.0_dp
+        end do
+        pf = pf - spread(f, 2, NSTATE)*spread(f, 1, NSTATE)/dot_product(f, f)
+        m6 = matmul(transpose(u), matmul(pf, matmul(h, u)))
+        call la_eig(m6, lam, stat)
+        if (stat%code /= 0) return
+        idx = [(k, k=1, 6)]
+        do k = 2, 6
             i = k
             do while (i > 1)
                 if (abs(lam(idx(i))) <= abs(lam(idx(i - 1)))) exit
@@ -275,17 +321,68 @@ contains
                 i = i - 1
             end do
         end do
-        res%multipliers = lam(idx)
-        ! the four trivial multipliers (time shift and energy; the constraint and its rate)
-        dist = abs(res%multipliers - (1.0_dp, 0.0_dp))
-        res%trivial = .false.
-        do k = 1, 4
-            i = minloc(dist, 1, mask=.not. res%trivial)
-            res%trivial(i) = .true.
-        end do
-        res%max_modulus = maxval(abs(res%multipliers), mask=.not. res%trivial)
+        res%multipliers(1:6) = lam(idx)
+        res%trivial(1:6) = .false.
+        res%multipliers(7:10) = (1.0_dp, 0.0_dp)
+        res%trivial(7:10) = .true.
+        res%max_modulus = maxval(abs(res%multipliers(1:6)))
         res%stable = res%max_modulus <= 1.0_dp + STABILITY_MARGIN
-        if (.false.) call set_error(stat, ERR_NUMERIC, '')
+        res%monodromy = h
     end subroutine floquet_analysis
+
+    !> Gradients at y of the constraint G, its rate G' and the energy E (columns 1-3, by
+    !! central differences), and the flow f(y).
+    subroutine structure_rows(p, y, rows, f, stat)
+        type(pendulum_t), intent(in) :: p
+        real(dp), intent(in) :: y(NSTATE)
+        real(dp), intent(out) :: rows(NSTATE, 3), f(NSTATE)
+        type(status_t), intent(out) :: stat
+        real(dp) :: yp(NSTATE), gp, gdp, gm, gdm, h, a(5)
+        integer :: j
+        do j = 1, NSTATE
+            h = 1.0e-5_dp*max(1.0_dp, abs(y(j)))
+            yp = y
+            yp(j) = y(j) + h
+            call chart_constraint(p, yp, gp, gdp)
+            rows(j, 3) = chart_energy(p, yp)
+            yp(j) = y(j) - h
+            call chart_constraint(p, yp, gm, gdm)
+            rows(j, 3) = (rows(j, 3) - chart_energy(p, yp))/(2*h)
+            rows(j, 1) = (gp - gm)/(2*h)
+            rows(j, 2) = (gdp - gdm)/(2*h)
+        end do
+        call chart_accelerations(p, y, a, stat)
+        f = [y(6:10), a]
+    end subroutine structure_rows
+
+    !> Orthonormal basis u (n x (n-m)) of the orthogonal complement of the columns of a
+    !! (n x m, independent), by modified Gram-Schmidt applied twice.
+    pure subroutine complement_basis(a, u)
+        real(dp), intent(in) :: a(:, :)
+        real(dp), intent(out) :: u(:, :)
+        real(dp) :: q(size(a, 1), size(a, 1)), v(size(a, 1))
+        integer :: n, m, k, j, nq, pass
+        n = size(a, 1)
+        m = size(a, 2)
+        nq = 0
+        do k = 1, n + m
+            if (k <= m) then
+                v = a(:, k)
+            else
+                v = 0.0_dp
+                v(k - m) = 1.0_dp
+            end if
+            do pass = 1, 2
+                do j = 1, nq
+                    v = v - dot_product(q(:, j), v)*q(:, j)
+                end do
+            end do
+            if (norm2(v) > 1.0e-3_dp .and. nq < n) then
+                nq = nq + 1
+                q(:, nq) = v/norm2(v)
+            end if
+        end do
+        u = q(:, m + 1:n)
+    end subroutine complement_basis
 
 end module floquet

@@ -12,12 +12,12 @@ module lapack_wrap
     public :: la_solve, la_lu_factor, la_lu_solve, la_eig
 
     interface
-        subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
+        subroutine dgetf2(m, n, a, lda, ipiv, info)
             import :: dp
-            integer, intent(in) :: n, nrhs, lda, ldb
-            real(dp), intent(inout) :: a(lda, *), b(ldb, *)
+            integer, intent(in) :: m, n, lda
+            real(dp), intent(inout) :: a(lda, *)
             integer, intent(out) :: ipiv(*), info
-        end subroutine dgesv
+        end subroutine dgetf2
         subroutine dgetrf(m, n, a, lda, ipiv, info)
             import :: dp
             integer, intent(in) :: m, n, lda
@@ -45,7 +45,9 @@ module lapack_wrap
 
 contains
 
-    !> Solve the square system A x = b in place (LAPACK DGESV, LU with partial pivoting).
+    !> Solve the small square system A x = b in place: LU with partial pivoting by LAPACK's
+    !! unblocked DGETF2 (for n of a few, the blocked recursive DGETRF/DGESV costs several
+    !! times more), then DGETRS.
     !!
     !! a   [in,out] real(dp)(n,n): the matrix; overwritten by its LU factors.
     !! b   [in,out] real(dp)(n):   right-hand side on entry, solution x on return.
@@ -63,10 +65,12 @@ contains
             call set_error(stat, ERR_NUMERIC, 'la_solve: matrix and right-hand side shapes disagree')
             return
         end if
-        call dgesv(n, 1, a, n, ipiv, b, n, info)
+        call dgetf2(n, n, a, n, ipiv, info)
+        if (info == 0) call dgetrs('N', n, 1, a, n, ipiv, b, n, info)
         if (info /= 0) then
-            write (buf, '(a,i0)') 'la_solve (dgesv): singular matrix, U(i,i) = 0 at i = ', info
-            if (info < 0) write (buf, '(a,i0)') 'la_solve (dgesv): illegal argument ', -info
+            write (buf, '(a,i0)') 'la_solve (dgetf2): singular matrix, U(i,i) = 0 at i = ', info
+            if (info < 0) write (buf, '(a,i0)') 'la_solve (dgetf2/dgetrs): illegal argument ', &
+                -info
             call set_error(stat, ERR_NUMERIC, trim(buf))
         end if
     end subroutine la_solve

@@ -16,6 +16,7 @@ module paper_claims
 
     integer, parameter :: NCOL = 17
     integer, parameter, public :: COL_THETA1 = 2, COL_THETA4 = 5, COL_Q = 12
+    integer, parameter, public :: NCLAIMS = 9     !! claims measured by evaluate_claims
 
     !> Columns of one output file.
     type, public :: series_t
@@ -238,7 +239,7 @@ contains
     subroutine evaluate_claims(outdir, cyl, claims, stat)
         character(len=*), intent(in) :: outdir  !! where the .dat files are
         type(pendulum_t), intent(in) :: cyl     !! the cylinder of the paper's scenes
-        type(claim_t), allocatable, intent(out) :: claims(:)
+        type(claim_t), intent(out) :: claims(NCLAIMS)
         type(status_t), intent(out) :: stat     !! ERR_IO when a scene's output is missing
         type(series_t) :: c18, c195, tri, tor
         real(dp) :: r, freq(5), fd
@@ -248,7 +249,6 @@ contains
         if (stat%code == 0) call read_series(outdir//'/triangle_plate.dat', tri, stat)
         if (stat%code == 0) call read_series(outdir//'/cylinder_torsion.dat', tor, stat)
         if (stat%code /= 0) return
-        allocate (claims(9))
         r = half_period_spread(c18, COL_THETA4)
         claims(1) = claim_t('Fig. 4: torsion proceeds regularly although l'' = 0.9 l', &
             'regular', r, '(max - min)/mean of the half-periods of theta4 (holds if < 0.05)', &
@@ -301,7 +301,7 @@ contains
     subroutine write_report(outdir, stat)
         character(len=*), intent(in) :: outdir  !! where the .dat files are and report.md goes
         type(status_t), intent(out) :: stat     !! ERR_IO when an input or the report fails
-        type(claim_t), allocatable :: claims(:)
+        type(claim_t) :: claims(NCLAIMS)
         integer :: u, k
         character(len=40) :: val
         call evaluate_claims(outdir, pendulum_t(), claims, stat)

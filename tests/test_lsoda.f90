@@ -525,6 +525,477 @@ contains
     !> All lsoda test suites (each selectable by name through t%want).
     subroutine run_lsoda_tests(t)
         type(tester_t), intent(inout) :: t
+        if (t%want('lsoda_exact')) call test_exact(t)
+        if (t%want('lsoda_problems')) call test_problems(t)
+        if (t%want('lsoda_tolerance')) call test_tolerance(t)
+        if (t%want('lsoda_failures')) call test_failures(t)
+        if (t%want('lsoda_interleave')) call test_interleave(t)
+        if (t%want('lsoda_dense_tcrit')) call test_dense_tcrit(t)
     end subroutine run_lsoda_tests
+
+    !> Problems with exact solutions.
+    subroutine test_exact(t)
+        type(tester_t), intent(inout) :: t
+        type(harmonic_t) :: osc
+        type(linear_t) :: lin
+        type(decay_t) :: dec
+        type(lsoda_t) :: s
+        type(status_t) :: stat
+        type(lsoda_stats_t) :: st
+        real(dp) :: y(3), y2(2), y1(1), tt, ex(3), err
+        real(dp), parameter :: touts(5) = [1.0e-4_dp, 1.0e-2_dp, 0.5_dp, 3.0_dp, 10.0_dp]
+        integer :: k, ij
+        character(len=40) :: nm
+
+        ! harmonic oscillator, 50 periods, rtol = atol = 1e-9: global error grows ~ linearly;
+        ! achieved 8.1e-7 at t = 100 pi
+        call s%init(osc, 0.0_dp, [1.0_dp, 0.0_dp], 1.0e-9_dp, [1.0e-9_dp], stat)
+        call t%check('harmonic: init', stat%code == STATUS_OK)
+        err = 0.0_dp
+        do k = 1, 100
+            tt = k*pi
+            call s%integrate(osc, tt, y2, stat)
+            if (stat%code /= STATUS_OK) exit
+            err = max(err, abs(y2(1) - cos(tt)), abs(y2(2) + sin(tt)))
+        end do
+        call t%check('harmonic: 50 periods without failure', stat%code == STATUS_OK)
+        call t%check_close('harmonic: y1(100 pi) = 1', y2(1), 1.0_dp, atol=3.0e-6_dp)
+        call t%check_close('harmonic: y2(100 pi) = 0', y2(2), 0.0_dp, atol=3.0e-6_dp)
+        call t%check('harmonic: max error over the half periods < 3e-6', err < 3.0e-6_dp)
+        st = s%stats()
+        call t%check('harmonic: non-stiff, Adams only', st%method_switches == 0 .and. &
+            st%method_last == METHOD_ADAMS .and. st%jac_evals == 0)
+
+        ! linear stiff system y = V exp(lambda t) (V^-1 y0 = (1,1,1)), finite-difference and
+        ! analytic Jacobian; rtol 1e-6, atol 1e-12 (anchor: scaled error ~ 20 at t = 10)
+        do ij = 1, 2
+            lin%use_jac = ij == 2
+            nm = merge('linear (analytic J): ', 'linear (FD J):       ', lin%use_jac)
+            call s%init(lin, 0.0_dp, [3.0_dp, 1.0_dp, 1.0_dp], 1.0e-6_dp, [1.0e-12_dp], stat)
+            err = 0.0_dp
+            do k = 1, 5
+                tt = touts(k)
+                call s%integrate(lin, tt, y, stat)
+                if (stat%code /= STATUS_OK) exit
+                ex = matmul(LIN_V, exp(LIN_LAM*tt))
+                err = max(err, maxval(abs(y - ex)/(1.0e-12_dp + 1.0e-6_dp*abs(ex))))
+            end do
+            call t%check(trim(nm)//' no failure', stat%code == STATUS_OK)
+            call t%check(trim(nm)//' scaled error < 60 at t = 1e-4 .. 10', err < 60.0_dp)
+            call t%check_close(trim(nm)//' y1(10)', y(1), REF_LINEAR(1), rtol=6.0e-5_dp)
+            st = s%stats()
+            call t%check(trim(nm)//' switched to BDF and used Jacobians', &
+                st%method_last == METHOD_BDF .and. st%jac_evals > 0 .and. &
+                st%lu_decomps >= st%jac_evals .and. st%method_switches >= 1)
+        end do
+
+        ! y' = -y at t = 1
+        call s%init(dec, 0.0_dp, [1.0_dp], 1.0e-8_dp, [1.0e-12_dp], stat)
+        call s%integrate(dec, 1.0_dp, y1, stat)
+        call t%check('decay: no failure', stat%code == STATUS_OK)
+        call t%check_close('decay: y(1) = exp(-1)', y1(1), exp(-1.0_dp), rtol=1.0e-7_dp)
+        st = s%stats()
+        call t%check('decay: stats consistent', st%steps > 0 .and. st%rhs_evals > st%steps &
+            .and. st%t_current >= 1.0_dp .and. st%h_last > 0.0_dp)
+        ! backwards in time: y(-2) = exp(2)
+        call s%init(dec, 0.0_dp, [1.0_dp], 1.0e-8_dp, [1.0e-12_dp], stat)
+        call s%integrate(dec, -1.0_dp, y1, stat)
+        call s%integrate(dec, -2.0_dp, y1, stat)
+        st = s%stats()
+        call t%check('decay backwards: no failure, h < 0', stat%code == STATUS_OK .and. &
+            st%h_last < 0.0_dp .and. st%t_current <= -2.0_dp)
+        call t%check_close('decay backwards: y(-2) = exp(2)', y1(1), exp(2.0_dp), rtol=1.0e-7_dp)
+        ! hmax and h0 respected
+        call s%init(dec, 0.0_dp, [1.0_dp], 1.0e-4_dp, [1.0e-8_dp], stat, h0=1.0e-6_dp, &
+            hmax=0.01_dp)
+        call s%step(dec, stat)
+        st = s%stats()
+        call t%check('h0: first step = h0', abs(st%h_last - 1.0e-6_dp) < 1.0e-20_dp)
+        call s%integrate(dec, 1.0_dp, y1, stat)
+        st = s%stats()
+        call t%check('hmax: >= 100 steps over [0, 1] with hmax = 0.01', stat%code == STATUS_OK &
+            .and. st%steps >= 100 .and. abs(st%h_last) <= 0.01_dp*(1.0_dp + 1.0e-12_dp))
+        call t%check_close('hmax: y(1)', y1(1), exp(-1.0_dp), rtol=1.0e-3_dp)
+    end subroutine test_exact
+
+    !> The anchor problems against their reference values.
+    subroutine test_problems(t)
+        type(tester_t), intent(inout) :: t
+        type(rober_t) :: rob
+        type(lsoda_stats_t) :: st
+        type(status_t) :: stat
+        real(dp) :: y3(3), err
+
+        ! achieved scaled errors (ours = original LSODA's): rober 1e-6: 0.14, vdp1000 1e-6: 22,
+        ! vdp1 1e-8: 41, arenstorf 1e-10: 4e4 (abs 4e-6), hires 1e-8: 5.2, pendulum 1e-10: 340
+        call check_problem(t, 'rober', 1.0e-6_dp, 0.5_dp, st)
+        call t%check('rober: ends in BDF, one switch', st%method_last == METHOD_BDF .and. &
+            st%method_switches == 1)
+        call check_problem(t, 'vdp1000', 1.0e-6_dp, 60.0_dp, st)
+        call t%check('vdp1000: switches to BDF and back (>= 2 switches)', &
+            st%method_switches >= 2)
+        call check_problem(t, 'vdp1', 1.0e-8_dp, 100.0_dp, st)
+        call t%check('vdp1: stays non-stiff', st%method_switches == 0 .and. st%jac_evals == 0)
+        call check_problem(t, 'arenstorf', 1.0e-10_dp, 1.2e5_dp, st)
+        call check_problem(t, 'hires', 1.0e-8_dp, 15.0_dp, st)
+        call check_problem(t, 'pendulum', 1.0e-10_dp, 1000.0_dp, st)
+        call check_problem(t, 'linear', 1.0e-7_dp, 120.0_dp, st)
+
+        ! Robertson with the analytic Jacobian, and mass conservation
+        rob%use_jac = .true.
+        call solve_on_grid(rob, [1.0_dp, 0.0_dp, 0.0_dp], [0.0_dp, 0.4_dp, 4.0e3_dp, &
+            4.0e7_dp, 4.0e10_dp], 1.0e-6_dp, 1.0e-6_dp*[1.0e-2_dp, 1.0e-6_dp, 1.0e-2_dp], &
+            y3, st, stat)
+        call t%check('rober (analytic J): no failure', stat%code == STATUS_OK)
+        err = scaled_error(y3, REF_ROBER, 1.0e-6_dp, 1.0e-6_dp*[1.0e-2_dp, 1.0e-6_dp, 1.0e-2_dp])
+        call t%check('rober (analytic J): scaled error < 1', err < 1.0_dp)
+        call t%check_close('rober: y1+y2+y3 = 1', sum(y3), 1.0_dp, atol=1.0e-12_dp)
+        call t%check('rober (analytic J): no f calls for Jacobians', &
+            st%rhs_evals < 3*st%steps)
+    end subroutine test_problems
+
+    !> Solve bench problem `name` at rtol and check its scaled error at t_end <= bound.
+    subroutine check_problem(t, name, rtol, bound, st)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: name
+        real(dp), intent(in) :: rtol, bound
+        type(lsoda_stats_t), intent(out) :: st
+        class(ode_system_t), allocatable :: sys
+        real(dp), allocatable :: y0(:), grid(:), atol(:), yref(:), y(:)
+        type(status_t) :: stat
+        real(dp) :: err
+        character(len=80) :: buf
+        call bench_problem(name, rtol, sys, y0, grid, atol, yref, stat)
+        allocate (y(size(y0)))
+        call solve_on_grid(sys, y0, grid, rtol, atol, y, st, stat)
+        call t%check(name//': no failure', stat%code == STATUS_OK)
+        err = scaled_error(y, yref, rtol, atol)
+        write (buf, '(a,es9.2,a,es9.2,a,es9.2)') ': scaled error ', err, ' <= ', bound, &
+            ' at rtol ', rtol
+        call t%check(name//trim(buf), err <= bound)
+    end subroutine check_problem
+
+    !> The error shrinks with the tolerance.
+    subroutine test_tolerance(t)
+        type(tester_t), intent(inout) :: t
+        type(harmonic_t) :: osc
+        type(lsoda_stats_t) :: st
+        type(status_t) :: stat
+        real(dp) :: rtol, y(2), err(8), nfe(8)
+        integer :: k
+        logical :: ok
+        character(len=100) :: buf
+        ! harmonic oscillator over 4 periods, rtol = atol = 1e-3 .. 1e-10; error measured
+        ! against the exact solution in units of the tolerance
+        do k = 1, 8
+            rtol = 10.0_dp**(-(k + 2))
+            call solve_on_grid(osc, [1.0_dp, 0.0_dp], [0.0_dp, 2.0_dp*pi, 4.0_dp*pi, &
+                6.0_dp*pi, 8.0_dp*pi], rtol, [rtol], y, st, stat)
+            err(k) = max(abs(y(1) - 1.0_dp), abs(y(2)))
+            nfe(k) = st%rhs_evals
+            call t%check('tolerance sweep: no failure', stat%code == STATUS_OK)
+        end do
+        ! error/tolerance stays within a factor 1 .. 150 (achieved 20 .. 62; global error of a
+        ! local-error-per-step control over ~25 radians)
+        do k = 1, 8
+            rtol = 10.0_dp**(-(k + 2))
+            write (buf, '(a,es8.1,a,es9.2)') 'tolerance sweep: error/rtol in [1, 150] at rtol ', &
+                rtol, ': ', err(k)/rtol
+            call t%check(trim(buf), err(k)/rtol <= 150.0_dp .and. err(k)/rtol >= 1.0_dp)
+        end do
+        ! decreases: every two decades of tolerance at least one decade of error, and
+        ! never grows by more than a factor 3 from one decade to the next
+        ok = .true.
+        do k = 1, 6
+            ok = ok .and. err(k + 2) < 0.1_dp*err(k)
+        end do
+        call t%check('tolerance sweep: error drops >= 10x per two decades of rtol', ok)
+        ok = .true.
+        do k = 1, 7
+            ok = ok .and. err(k + 1) < 3.0_dp*err(k) .and. nfe(k + 1) > nfe(k)
+        end do
+        call t%check('tolerance sweep: monotone-ish error, work grows', ok)
+        call t%check('tolerance sweep: 7 decades of rtol give >= 5 decades of error', &
+            err(8) < 1.0e-5_dp*err(1))
+    end subroutine test_tolerance
+
+    !> Every failure code, from a deliberate case.
+    subroutine test_failures(t)
+        type(tester_t), intent(inout) :: t
+        type(vdp_t) :: vdp
+        type(decay_t) :: dec
+        type(jump_t) :: jmp
+        type(wild_t) :: wild
+        type(singular_t) :: sng
+        type(failing_t) :: fl
+        type(lsoda_t) :: s, fresh
+        type(status_t) :: stat
+        type(lsoda_stats_t) :: st
+        real(dp) :: y2(2), y3(3), y1(1)
+
+        ! too many steps
+        call s%init(vdp, 0.0_dp, [2.0_dp, 0.0_dp], 1.0e-6_dp, [1.0e-9_dp], stat, max_steps=10)
+        call s%integrate(vdp, 3000.0_dp, y2, stat)
+        st = s%stats()
+        call t%check('max steps: code', stat%code == LSODA_ERR_MAX_STEPS)
+        call t%check('max steps: message', has_msg(stat, 'steps'))
+        call t%check('max steps: 10 steps, stopped inside', st%steps == 10 .and. &
+            st%t_current > 0.0_dp .and. st%t_current < 3000.0_dp)
+        call t%check('max steps: y = state at t_current, finite', all(ieee_is_finite(y2)) &
+            .and. abs(y2(1) - 2.0_dp) < 0.1_dp)
+        ! the integration goes on with the next call (another 10 steps)
+        call s%integrate(vdp, 3000.0_dp, y2, stat)
+        call t%check('max steps: continues on the next call', &
+            stat%code == LSODA_ERR_MAX_STEPS .and. count_steps(s) == 20)
+
+        ! too much accuracy
+        call s%init(dec, 0.0_dp, [1.0_dp], 1.0e-300_dp, [1.0e-300_dp], stat)
+        call s%integrate(dec, 1.0_dp, y1, stat)
+        st = s%stats()
+        call t%check('too much accuracy: code', stat%code == LSODA_ERR_TOO_MUCH_ACCURACY)
+        call t%check('too much accuracy: message', has_msg(stat, 'accuracy'))
+        call t%check('too much accuracy: y kept', y1(1) == 1.0_dp .and. st%t_current == 0.0_dp)
+        ! ... also when it happens on the way (pure relative control, y -> 1e-320 region)
+        call s%init(dec, 0.0_dp, [1.0_dp], 1.0e-15_dp, [0.0_dp], stat)
+        call s%integrate(dec, 1.0_dp, y1, stat)
+        call t%check('too much accuracy (rtol 1e-15): code', &
+            stat%code == LSODA_ERR_TOO_MUCH_ACCURACY)
+
+        ! repeated error-test failures: f jumps to 1e100 at t = 1
+        call s%init(jmp, 0.0_dp, [1.0_dp], 1.0e-6_dp, [1.0e-8_dp], stat)
+        call s%integrate(jmp, 2.0_dp, y1, stat)
+        st = s%stats()
+        call t%check('error test: code', stat%code == LSODA_ERR_ERROR_TEST)
+        call t%check('error test: message names t', has_msg(stat, 'error test') .and. &
+            has_msg(stat, 't ='))
+        call t%check('error test: stopped at the jump', st%t_current <= 1.0_dp .and. &
+            st%t_current > 0.99_dp)
+        call t%check_close('error test: y = exp(-t_current)', y1(1), exp(-st%t_current), &
+            rtol=1.0e-4_dp)
+
+        ! repeated convergence failures: f = 1e8 sin(1e9 y) after t = 1
+        call s%init(wild, 0.0_dp, [1.0_dp, 0.5_dp], 1.0e-6_dp, [1.0e-8_dp], stat)
+        call s%integrate(wild, 2.0_dp, y2, stat)
+        st = s%stats()
+        call t%check('convergence: code', stat%code == LSODA_ERR_CONVERGENCE)
+        call t%check('convergence: message', has_msg(stat, 'converge'))
+        call t%check('convergence: stopped at t = 1', abs(st%t_current - 1.0_dp) < 1.0e-9_dp &
+            .and. all(ieee_is_finite(y2)))
+        call t%check_close('convergence: y = exp(-t_current)', y2(1), exp(-st%t_current), &
+            rtol=1.0e-4_dp)
+
+        ! singular iteration matrix: the Jacobian becomes 1e200*ones after t = 1
+        call s%init(sng, 0.0_dp, [1.0_dp, 1.0_dp], 1.0e-6_dp, [1.0e-8_dp], stat)
+        call s%integrate(sng, 2.0_dp, y2, stat)
+        st = s%stats()
+        call t%check('singular: code', stat%code == LSODA_ERR_SINGULAR)
+        call t%check('singular: message', has_msg(stat, 'singular'))
+        ! (the old matrix serves a few steps past t = 1 before the new one is formed)
+        call t%check('singular: in BDF, stopped soon after t = 1', &
+            st%method_next == METHOD_BDF .and. st%t_current > 1.0_dp .and. st%t_current < 2.0_dp)
+        call t%check('singular: y ~ cos(t_current)', all(abs(y2 - cos(st%t_current)) < 1.0e-3_dp))
+
+        ! the right-hand side's own status is passed through
+        call s%init(fl, 0.0_dp, [1.0_dp], 1.0e-6_dp, [1.0e-8_dp], stat)
+        call s%integrate(fl, 3.0_dp, y1, stat)
+        st = s%stats()
+        call t%check('rhs status: code passed through', stat%code == 42)
+        call t%check('rhs status: message kept, time prefixed', &
+            has_msg(stat, 'model left its domain') .and. has_msg(stat, 'at t ='))
+        call t%check('rhs status: stopped before t = 1', st%t_current <= 1.0_dp)
+        call t%check_close('rhs status: y = exp(-t_current)', y1(1), exp(-st%t_current), &
+            rtol=1.0e-4_dp)
+        ! ... also from init
+        fl%t_bad = -1.0_dp
+        call s%init(fl, 0.0_dp, [1.0_dp], 1.0e-6_dp, [1.0e-8_dp], stat)
+        call t%check('rhs status: from init', stat%code == 42)
+
+        ! illegal input
+        call s%init(dec, 0.0_dp, [1.0_dp, 2.0_dp, 3.0_dp], -1.0e-6_dp, [1.0e-8_dp], stat)
+        call t%check('illegal: rtol < 0', stat%code == LSODA_ERR_ILLEGAL_INPUT .and. &
+            has_msg(stat, 'rtol'))
+        call s%init(dec, 0.0_dp, [1.0_dp, 2.0_dp, 3.0_dp], 1.0e-6_dp, &
+            [1.0e-8_dp, -1.0_dp, 1.0_dp], stat)
+        call t%check('illegal: atol < 0', stat%code == LSODA_ERR_ILLEGAL_INPUT .and. &
+            has_msg(stat, 'atol'))
+        call s%init(dec, 0.0_dp, [1.0_dp, 2.0_dp, 3.0_dp], 1.0e-6_dp, [1.0_dp, 1.0_dp], stat)
+        call t%check('illegal: size(atol) not 1 or n', stat%code == LSODA_ERR_ILLEGAL_INPUT &
+            .and. has_msg(stat, 'size(atol)'))
+        call fresh%integrate(dec, 1.0_dp, y3, stat)
+        call t%check('illegal: integrate before init', stat%code == LSODA_ERR_ILLEGAL_INPUT)
+        call s%init(dec, 0.0_dp, [1.0_dp, 2.0_dp, 3.0_dp], 1.0e-6_dp, [1.0e-8_dp], stat)
+        call s%integrate(dec, 1.0_dp, y2, stat)
+        call t%check('illegal: size(y) /= n', stat%code == LSODA_ERR_ILLEGAL_INPUT)
+        call s%integrate(dec, 1.0_dp, y3, stat)
+        call s%integrate(dec, 0.5_dp, y3, stat)
+        call t%check('illegal: tout behind t', stat%code == LSODA_ERR_ILLEGAL_INPUT .and. &
+            has_msg(stat, 'behind'))
+        call s%init(dec, 0.0_dp, [1.0_dp, 2.0_dp, 3.0_dp], 1.0e-6_dp, [1.0e-8_dp], stat, &
+            tcrit=0.5_dp)
+        call s%integrate(dec, 1.0_dp, y3, stat)
+        call t%check('illegal: tcrit behind tout', stat%code == LSODA_ERR_ILLEGAL_INPUT .and. &
+            has_msg(stat, 'tcrit'))
+        call s%init(dec, 0.0_dp, [1.0_dp], 1.0e-6_dp, [1.0e-8_dp], stat, max_order_bdf=6)
+        call t%check('illegal: max_order_bdf = 6', stat%code == LSODA_ERR_ILLEGAL_INPUT)
+        call s%init(dec, 0.0_dp, [0.0_dp], 1.0e-6_dp, [0.0_dp], stat)
+        call s%integrate(dec, 1.0_dp, y1, stat)
+        call t%check('illegal: zero error weight', stat%code == LSODA_ERR_ILLEGAL_INPUT)
+    end subroutine test_failures
+
+    integer function count_steps(s)
+        type(lsoda_t), intent(in) :: s
+        type(lsoda_stats_t) :: st
+        st = s%stats()
+        count_steps = st%steps
+    end function count_steps
+
+    logical function has_msg(stat, part)
+        type(status_t), intent(in) :: stat
+        character(len=*), intent(in) :: part
+        has_msg = .false.
+        if (allocated(stat%msg)) has_msg = index(stat%msg, part) > 0
+    end function has_msg
+
+    !> Two solvers interleaved give bit-identical results to separate runs.
+    subroutine test_interleave(t)
+        type(tester_t), intent(inout) :: t
+        type(vdp_t) :: va, vb
+        type(rober_t) :: rb
+        type(lsoda_t) :: s1, s2
+        type(status_t) :: st1, st2
+        type(lsoda_stats_t) :: a1, a2, b1, b2
+        real(dp) :: ya(2), yb(3), ya_sep(2), yb_sep(3), grid(13)
+        integer :: k
+        logical :: same
+        va%mu = 1000.0_dp
+        vb%mu = 1000.0_dp
+        grid(1) = 0.0_dp
+        do k = 0, 11
+            grid(k + 2) = 0.4_dp*10.0_dp**k
+        end do
+        ! separately
+        call s1%init(va, 0.0_dp, [2.0_dp, 0.0_dp], 1.0e-5_dp, [1.0e-8_dp], st1)
+        do k = 1, 12
+            call s1%integrate(va, 250.0_dp*k, ya_sep, st1)
+        end do
+        a1 = s1%stats()
+        call s2%init(rb, 0.0_dp, [1.0_dp, 0.0_dp, 0.0_dp], 1.0e-5_dp, &
+            1.0e-5_dp*[1.0e-2_dp, 1.0e-6_dp, 1.0e-2_dp], st2)
+        do k = 2, 13
+            call s2%integrate(rb, grid(k), yb_sep, st2)
+        end do
+        b1 = s2%stats()
+        ! interleaved (fresh objects of the same types)
+        call s1%init(vb, 0.0_dp, [2.0_dp, 0.0_dp], 1.0e-5_dp, [1.0e-8_dp], st1)
+        call s2%init(rb, 0.0_dp, [1.0_dp, 0.0_dp, 0.0_dp], 1.0e-5_dp, &
+            1.0e-5_dp*[1.0e-2_dp, 1.0e-6_dp, 1.0e-2_dp], st2)
+        same = .true.
+        do k = 1, 12
+            call s1%integrate(vb, 250.0_dp*k, ya, st1)
+            call s2%integrate(rb, grid(k + 1), yb, st2)
+            same = same .and. st1%code == STATUS_OK .and. st2%code == STATUS_OK
+        end do
+        a2 = s1%stats()
+        b2 = s2%stats()
+        call t%check('interleave: both succeed', same)
+        call t%check('interleave: vdp identical', all(ya == ya_sep) .and. &
+            a1%steps == a2%steps .and. a1%rhs_evals == a2%rhs_evals .and. &
+            a1%jac_evals == a2%jac_evals .and. a1%method_switches == a2%method_switches)
+        call t%check('interleave: rober identical', all(yb == yb_sep) .and. &
+            b1%steps == b2%steps .and. b1%rhs_evals == b2%rhs_evals .and. &
+            b1%jac_evals == b2%jac_evals)
+    end subroutine test_interleave
+
+    !> Dense output inside steps against the exact solution; tcrit never overstepped.
+    subroutine test_dense_tcrit(t)
+        type(tester_t), intent(inout) :: t
+        type(harmonic_t) :: osc
+        type(guard_t) :: g
+        type(lsoda_t) :: s
+        type(status_t) :: stat
+        type(lsoda_stats_t) :: st
+        real(dp) :: d(2), tt, ta, tb, err0, err1, y1(1)
+        integer :: k, j
+        logical :: ok
+
+        ! dense output of the oscillator: value and first derivative at 5 points per step
+        call s%init(osc, 0.0_dp, [1.0_dp, 0.0_dp], 1.0e-8_dp, [1.0e-8_dp], stat)
+        err0 = 0.0_dp
+        err1 = 0.0_dp
+        ok = .true.
+        do k = 1, 200
+            call s%step(osc, stat, tout=10.0_dp)
+            if (stat%code /= STATUS_OK) exit
+            st = s%stats()
+            tb = st%t_current
+            ta = tb - st%h_last
+            do j = 0, 4
+                tt = ta + (tb - ta)*j/4.0_dp
+                call s%dense(tt, 0, d, stat)
+                ok = ok .and. stat%code == STATUS_OK
+                err0 = max(err0, abs(d(1) - cos(tt)), abs(d(2) + sin(tt)))
+                call s%dense(tt, 1, d, stat)
+                ok = ok .and. stat%code == STATUS_OK
+                err1 = max(err1, abs(d(1) + sin(tt)), abs(d(2) + cos(tt)))
+            end do
+            if (tb > 10.0_dp) exit
+        end do
+        call t%check('dense: steps and dense calls succeed', ok .and. stat%code == STATUS_OK)
+        call t%check('dense: reached t = 10 by single steps', tb > 10.0_dp)
+        ! global error at rtol 1e-8 over 10 radians is ~1e-7; the interpolant adds less
+        call t%check('dense: y between steps within 1e-6 of exact', err0 < 1.0e-6_dp)
+        call t%check('dense: y'' between steps within 1e-4 of exact', err1 < 1.0e-4_dp)
+        call s%dense(tb + 1.0_dp, 0, d, stat)
+        call t%check('dense: t outside the last step rejected', &
+            stat%code == LSODA_ERR_ILLEGAL_INPUT)
+        call s%dense(tb, 20, d, stat)
+        call t%check('dense: k > order rejected', stat%code == LSODA_ERR_ILLEGAL_INPUT)
+
+        ! tcrit: integrate to outputs below and at tcrit, rhs records any t > tcrit
+        g%tcrit = 1.0_dp
+        g%violations = 0
+        call s%init(g, 0.0_dp, [0.0_dp], 1.0e-6_dp, [1.0e-8_dp], stat, tcrit=1.0_dp)
+        call s%integrate(g, 0.3_dp, y1, stat)
+        call s%integrate(g, 0.999_dp, y1, stat)
+        call s%integrate(g, 1.0_dp, y1, stat)
+        st = s%stats()
+        call t%check('tcrit: reached', stat%code == STATUS_OK .and. &
+            abs(st%t_current - 1.0_dp) < 1.0e-12_dp)
+        call t%check('tcrit: f never evaluated past tcrit', g%violations == 0)
+        ! exact: y = (sin t + cos t - exp(-t))/2
+        call t%check_close('tcrit: y(1)', y1(1), 0.5_dp*(sin(1.0_dp) + cos(1.0_dp) - &
+            exp(-1.0_dp)), rtol=1.0e-5_dp)
+        call s%step(g, stat)
+        call t%check('tcrit: step at tcrit refused', stat%code == LSODA_ERR_ILLEGAL_INPUT)
+        ! move tcrit on with single steps
+        g%tcrit = 2.5_dp
+        call s%set_tcrit(2.5_dp, stat)
+        ok = stat%code == STATUS_OK
+        do k = 1, 10000
+            call s%step(g, stat)
+            if (stat%code /= STATUS_OK) exit
+            st = s%stats()
+            if (abs(st%t_current - 2.5_dp) < 1.0e-12_dp) exit
+        end do
+        call t%check('tcrit: single steps stop exactly at the new tcrit', ok .and. &
+            stat%code == STATUS_OK .and. abs(st%t_current - 2.5_dp) < 1.0e-12_dp)
+        call t%check('tcrit: still never past tcrit', g%violations == 0)
+        ! remove tcrit: free to step on
+        call s%set_tcrit()
+        g%tcrit = huge(1.0_dp)
+        call s%integrate(g, 4.0_dp, y1, stat)
+        st = s%stats()
+        call t%check('tcrit removed: integrates past the old tcrit', stat%code == STATUS_OK &
+            .and. st%t_current >= 4.0_dp)
+        call t%check_close('tcrit removed: y(4)', y1(1), 0.5_dp*(sin(4.0_dp) + cos(4.0_dp) - &
+            exp(-4.0_dp)), rtol=1.0e-4_dp)
+        ! tcrit given before the first step bounds the first step too
+        g%tcrit = 1.0e-3_dp
+        g%violations = 0
+        call s%init(g, 0.0_dp, [0.0_dp], 1.0e-3_dp, [1.0e-3_dp], stat, tcrit=1.0e-3_dp)
+        call s%integrate(g, 1.0e-3_dp, y1, stat)
+        call t%check('tcrit: tiny tcrit respected from the first step', &
+            stat%code == STATUS_OK .and. g%violations == 0)
+    end subroutine test_dense_tcrit
 
 end module test_lsoda
