@@ -40,7 +40,7 @@ module floquet
         complex(dp) :: multipliers(NSTATE) = (0.0_dp, 0.0_dp)  !! non-trivial first, by modulus
         logical :: trivial(NSTATE) = .false.    !! the four multipliers that are 1 by structure
         real(dp) :: orbit_closure = 0.0_dp      !! |y(t*) - y(0)|, max norm
-        real(dp) :: trivial_residual = 0.0_dp   !! largest residual of the trivial identities
+        real(dp) :: trivial_residual = 0.0_dp   !! largest relative residual of the trivial identities
         real(dp) :: monodromy(NSTATE, NSTATE) = 0.0_dp  !! H(t*) of the chart form
         integer :: steps = 0, rhs_evaluations = 0
     end type floquet_result_t
@@ -263,8 +263,9 @@ contains
     !! subspace S = {dG = dG' = dE = 0, orthogonal to f(y0)}: M6 = U^T P H U (U an
     !! orthonormal basis of S, P the projection along f).  The four trivial multipliers are
     !! reported as 1 and checked through their exact identities
-    !! H f = f,  grad(E)^T H = grad(E)^T,  grad(G')^T H = grad(G')^T,
-    !! grad(G)^T H = grad(G)^T + t* grad(G')^T  (residual in res%trivial_residual).
+    !! H f = f,  grad(E)^T H = grad(E)^T (on the constraint's tangent space, where energy is
+    !! conserved),  grad(G')^T H = grad(G')^T,  grad(G)^T H = grad(G)^T + t* grad(G')^T
+    !! (largest residual, relative to the vector and to max(1, |H|_F), in res%trivial_residual).
     subroutine floquet_analysis(p_in, amp, rtol, nseg, res, stat)
         type(pendulum_t), intent(in) :: p_in    !! scaled parameters (a torsion scene)
         real(dp), intent(in) :: amp             !! amplitude of theta4 (rad)
@@ -274,8 +275,9 @@ contains
         type(status_t), intent(out) :: stat     !! ERR_DECK (scene), ERR_NUMERIC
         type(pendulum_t) :: p
         real(dp) :: th(5), y0(NSTATE), yend(NSTATE), h(NSTATE, NSTATE)
-        real(dp) :: rows(NSTATE, 4), u(NSTATE, 6), pf(NSTATE, NSTATE), m6(6, 6), f(NSTATE)
-        real(dp) :: r
+        real(dp) :: rows(NSTATE, 4), u(NSTATE, 6), v(NSTATE, 8), pf(NSTATE, NSTATE), m6(6, 6)
+        real(dp) :: f(NSTATE)
+        real(dp) :: r, hn
         complex(dp) :: lam(6)
         integer :: ivert, k, idx(6), i
         p = p_in
@@ -296,12 +298,16 @@ contains
         call structure_rows(p, y0, rows, f, stat)
         if (stat%code /= 0) return
         ! residuals of the four exact identities, each relative to its vector
+        ! (energy is conserved on the constraint manifold: its identity holds on its tangent
+        !  space T = {dG = dG' = 0}, basis v)
+        call complement_basis(rows(:, 1:2), v)
+        hn = max(1.0_dp, norm2(h))
         r = norm2(matmul(h, f) - f)/norm2(f)
-        r = max(r, norm2(matmul(rows(:, 3), h) - rows(:, 3))/norm2(rows(:, 3)))
+        r = max(r, norm2(matmul(matmul(rows(:, 3), h) - rows(:, 3), v))/norm2(rows(:, 3)))
         r = max(r, norm2(matmul(rows(:, 2), h) - rows(:, 2))/norm2(rows(:, 2)))
         r = max(r, norm2(matmul(rows(:, 1), h) - rows(:, 1) - res%period*rows(:, 2)) &
                 /norm2(rows(:, 1)))
-        res%trivial_residual = r
+        res%trivial_residual = r/hn
         ! reduced map on S
         call complement_basis(reshape([rows(:, 1), rows(:, 2), rows(:, 3), f], [NSTATE, 4]), u)
         pf = 0.0_dp

@@ -99,6 +99,7 @@ program bench_integrator
         end do
         call summarise(ip)
     end do
+    call print_summary()
     close (u)
     call execute_command_line('mv -f '//trim(tmppath)//' '//trim(outpath), exitstat=ir)
     if (ir /= 0) then
@@ -142,7 +143,6 @@ contains
             maxval(r_err, mask=have_r), ' us @', &
             10.0_dp**(-(maxloc(r_us, 1, mask=have_r) + 2)), ' ', maxval(r_us, mask=have_r)
         summary_lines(ip) = trim(line)
-        if (ip == NBENCH) call print_summary()
     end subroutine summarise
 
     real(dp) function geomean(r)
