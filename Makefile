@@ -23,12 +23,12 @@ BUILD = build
 BIN = bin
 FFLAGS = -O2 -march=x86-64-v2 -fno-backtrace
 endif
-FFLAGS += -std=f2008 -Wall -Wextra -Wno-compare-reals -fimplicit-none
+FFLAGS += -fopenmp -std=f2008 -Wall -Wextra -Wno-compare-reals -fimplicit-none
 LIBS = -llapack -lblas
 
 # Library modules in dependency order (each only uses modules listed before it).
 LIB_MODULES = kinds status lapack_wrap ode_system lsoda geometry kinematics gen_forces bifilar_model \
-              deck output_io simulate floquet paper_claims
+              deck output_io simulate floquet paper_claims stability
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
 TEST_MODULES = testing test_lsoda test_model test_deck
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))

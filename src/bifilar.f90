@@ -7,14 +7,20 @@
 !! 4 the model no longer holds (e.g. a cable goes slack), 5 output cannot be written.
 program bifilar
     use, intrinsic :: iso_fortran_env, only: error_unit
+    use kinds, only: dp
     use status, only: status_t, ERR_DECK, ERR_MODEL, ERR_IO
     use deck, only: deck_t, read_deck, analysis_requested
     use simulate, only: run_simulation, run_summary_t
     use paper_claims, only: write_report
+    use stability, only: run_floquet, run_chart
+    use floquet, only: floquet_result_t
     implicit none
     type(deck_t) :: d
     type(status_t) :: stat
     type(run_summary_t) :: sm
+    type(floquet_result_t) :: fr
+    integer :: nstable
+    real(dp) :: secs
     character(len=:), allocatable :: deck_path, outdir
     character(len=1024) :: arg
     integer :: i, nargs
@@ -50,12 +56,23 @@ program bifilar
     call read_deck(deck_path, d, stat)
     if (stat%code /= 0) call fail(stat)
 
-    if (analysis_requested(d, 'floquet') .or. analysis_requested(d, 'chart') .or. &
-        analysis_requested(d, 'work_precision')) then
+    if (analysis_requested(d, 'work_precision')) then
         stat%code = ERR_DECK
         stat%msg = d%name//': &scene analyses = '''//trim(d%analyses)// &
-            ''': this version runs only ''simulate'''
+            ''': work_precision is not available in this version'
         call fail(stat)
+    end if
+    if (analysis_requested(d, 'floquet')) then
+        call run_floquet(d, outdir, fr, stat)
+        if (stat%code /= 0) call fail(stat)
+        write (*, '(a,a,f0.6,a,es12.5,a,a)') d%name, ': floquet period ', fr%period, &
+            ', max modulus ', fr%max_modulus, ', stable ', merge('yes', 'no ', fr%stable)
+    end if
+    if (analysis_requested(d, 'chart')) then
+        call run_chart(d, outdir, nstable, secs, stat)
+        if (stat%code /= 0) call fail(stat)
+        write (*, '(a,a,i0,a,i0,a,f0.2,a)') d%name, ': chart ', d%chart_nx*d%chart_ny, &
+            ' points, ', nstable, ' stable, ', secs, ' s'
     end if
     if (analysis_requested(d, 'simulate')) then
         call run_simulation(d, outdir, sm, stat)

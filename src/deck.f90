@@ -1,7 +1,8 @@
-!> The input deck: a namelist file with the groups &scene, &suspension, &body, &start and
-!! &integration (see input/*.nml).  read_deck reads and validates it; every problem is an
-!! ERR_DECK status whose message names the deck, the group, the variable and its value,
-!! what is wrong and what is allowed.  Cable reachability is checked by the geometry module.
+!> The input deck: a namelist file with the groups &scene, &suspension, &body, &start,
+!! &integration, &floquet and &chart (see input/*.nml).  read_deck reads and validates it;
+!! every problem is an ERR_DECK status whose message names the deck, the group, the variable
+!! and its value, what is wrong and what is allowed.  Cable reachability is checked by the
+!! geometry module.
 module deck
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_usual, ieee_support_halting, &
         ieee_get_halting_mode, ieee_set_halting_mode, ieee_set_flag
@@ -34,18 +35,28 @@ module deck
         ! &integration
         real(dp) :: tau_end = 60.0_dp, dtau_out = 0.05_dp, rtol = 1.0e-10_dp, atol = 1.0e-12_dp
         logical  :: error_estimate = .false.
-        ! &floquet and &chart are read by later issues; do not add them now
+        ! &floquet
+        real(dp) :: floquet_amplitude = 45.0_dp   !! degrees of theta4, 0 < a < 180
+        integer  :: floquet_segments = 1          !! shooting segments, 1..64
+        real(dp) :: floquet_rtol = 1.0e-10_dp     !! 1e-14 <= rtol < 1e-2
+        ! &chart (axis variables: see CHART_VARIABLES)
+        character(len=16) :: chart_x = 'l', chart_y = 'amplitude'
+        real(dp) :: chart_x_min = 0.5_dp, chart_x_max = 4.0_dp
+        real(dp) :: chart_y_min = 5.0_dp, chart_y_max = 90.0_dp
+        integer  :: chart_nx = 40, chart_ny = 40
     end type deck_t
 
     public :: read_deck, analysis_requested, deck_echo
 
     !> Words allowed in &scene analyses.
     character(len=*), parameter :: ANALYSES_ALLOWED = 'simulate floquet chart work_precision'
-    !> Namelist groups a deck may contain (later issues read &floquet and &chart).
+    !> Namelist groups a deck may contain.
     character(len=*), parameter :: GROUPS_ALLOWED = &
         'scene suspension body start integration floquet chart'
-    !> Variables of each group with their kind (r real, c character, l logical) and size;
-    !! used only to explain a namelist read error.
+    !> Words allowed in &chart x and y.
+    character(len=*), parameter :: CHART_VARIABLES = 'l b amplitude r lambda inertia_ratio'
+    !> Variables of each group with their kind (r real, i integer, c character, l logical)
+    !! and size; used only to explain a namelist read error.
     character(len=*), parameter :: SPEC_SCENE = 'title:c1 analyses:c1 model:c1'
     character(len=*), parameter :: SPEC_SUSPENSION = 'b:r1 b_prime:r1 l:r1 l_prime:r1 g:r1'
     character(len=*), parameter :: SPEC_BODY = &
@@ -53,10 +64,18 @@ module deck
     character(len=*), parameter :: SPEC_START = 'mode:c1 amplitude:r1 tilt:r1 theta:r4 theta_dot:r4'
     character(len=*), parameter :: SPEC_INTEGRATION = &
         'tau_end:r1 dtau_out:r1 rtol:r1 atol:r1 error_estimate:l1'
+    character(len=*), parameter :: SPEC_FLOQUET = 'amplitude:r1 segments:i1 rtol:r1'
+    character(len=*), parameter :: SPEC_CHART = &
+        'x:c1 x_min:r1 x_max:r1 nx:i1 y:c1 y_min:r1 y_max:r1 ny:i1'
     real(dp), parameter :: RTOL_MIN = 1.0e-14_dp        !! smallest relative tolerance
     real(dp), parameter :: MAX_ROWS = 1.0e7_dp          !! largest tau_end/dtau_out
     real(dp), parameter :: ORTHO_TOL = 1.0e-9_dp        !! orthonormality of btilde
     real(dp), parameter :: TRIANGLE_SLACK = 1.0e-12_dp  !! relative slack of I1 <= I2 + I3
+    real(dp), parameter :: FLOQUET_RTOL_MAX = 1.0e-2_dp !! largest &floquet rtol (excluded)
+    integer, parameter :: MAX_SEGMENTS = 64             !! most &floquet shooting segments
+    integer, parameter :: MAX_CHART_N = 1000            !! most chart points along one axis
+    integer, parameter :: MAX_CHART_POINTS = 250000     !! most chart points, nx*ny
+    real(dp), parameter :: PI_HALF = 1.5707963267948966_dp
 
 contains
 
@@ -75,11 +94,19 @@ contains
         real(dp) :: amplitude, tilt, theta(4), theta_dot(4)
         real(dp) :: tau_end, dtau_out, rtol, atol
         logical :: error_estimate
+        character(len=256) :: x, y
+        real(dp) :: x_min, x_max, y_min, y_max
+        integer :: nx, ny
+        ! &floquet's amplitude and rtol share names with &start and &integration, so its
+        ! namelist lives in read_floquet; these hold its values here
+        real(dp) :: fq_amplitude, fq_rtol
+        integer :: fq_segments
         namelist /scene/ title, analyses, model
         namelist /suspension/ b, b_prime, l, l_prime, g
         namelist /body/ mass, inertia, r, lambda, btilde, sway_depth
         namelist /start/ mode, amplitude, tilt, theta, theta_dot
         namelist /integration/ tau_end, dtau_out, rtol, atol, error_estimate
+        namelist /chart/ x, x_min, x_max, nx, y, y_min, y_max, ny
         integer :: u, ios, k
         character(len=512) :: msg
         logical :: halting(size(ieee_usual))
@@ -111,6 +138,17 @@ contains
         rtol = d%rtol
         atol = d%atol
         error_estimate = d%error_estimate
+        fq_amplitude = d%floquet_amplitude
+        fq_segments = d%floquet_segments
+        fq_rtol = d%floquet_rtol
+        x = d%chart_x
+        x_min = d%chart_x_min
+        x_max = d%chart_x_max
+        nx = d%chart_nx
+        y = d%chart_y
+        y_min = d%chart_y_min
+        y_max = d%chart_y_max
+        ny = d%chart_ny
 
         msg = ''
         open (newunit=u, file=path, status='old', action='read', form='formatted', &
@@ -130,6 +168,8 @@ contains
             call read_group('body', .true., SPEC_BODY)
             call read_group('start', .false., SPEC_START)
             call read_group('integration', .false., SPEC_INTEGRATION)
+            call read_group('floquet', .false., SPEC_FLOQUET)
+            call read_group('chart', .false., SPEC_CHART)
             call traps_restore(halting)
         end if
         close (u, iostat=ios)
@@ -145,6 +185,10 @@ contains
         call check_analyses(stat, d%name, analyses)
         if (stat%code /= STATUS_OK) return
         call check_word(stat, d%name, 'start', 'mode', mode, 'raised angles')
+        if (stat%code /= STATUS_OK) return
+        call check_word(stat, d%name, 'chart', 'x', x, CHART_VARIABLES)
+        if (stat%code /= STATUS_OK) return
+        call check_word(stat, d%name, 'chart', 'y', y, CHART_VARIABLES)
         if (stat%code /= STATUS_OK) return
         d%title = title
         d%analyses = lower(adjustl(analyses))
@@ -170,6 +214,17 @@ contains
         d%rtol = rtol
         d%atol = atol
         d%error_estimate = error_estimate
+        d%floquet_amplitude = fq_amplitude
+        d%floquet_segments = fq_segments
+        d%floquet_rtol = fq_rtol
+        d%chart_x = lower(adjustl(x))
+        d%chart_x_min = x_min
+        d%chart_x_max = x_max
+        d%chart_nx = nx
+        d%chart_y = lower(adjustl(y))
+        d%chart_y_min = y_min
+        d%chart_y_max = y_max
+        d%chart_ny = ny
         call validate(d, stat)
 
     contains
@@ -207,8 +262,12 @@ contains
                 read (u, nml=body, iostat=ios2, iomsg=msg2)
             case ('start')
                 read (u, nml=start, iostat=ios2, iomsg=msg2)
-            case default
+            case ('integration')
                 read (u, nml=integration, iostat=ios2, iomsg=msg2)
+            case ('floquet')
+                call read_floquet(u, fq_amplitude, fq_segments, fq_rtol, ios2, msg2)
+            case default
+                read (u, nml=chart, iostat=ios2, iomsg=msg2)
             end select
             ! The run-time library reports end of file after the closing '/' of a group on
             ! the last line when that line has no newline; the group itself was read.
@@ -230,6 +289,27 @@ contains
 
     end subroutine read_deck
 
+    !> Read &floquet from the rewound unit u; its variables amplitude and rtol have the
+    !! names of &start and &integration variables, hence a namelist of its own here.
+    subroutine read_floquet(u, amp, segs, rt, ios, msg)
+        integer, intent(in) :: u                    !! open deck, rewound
+        real(dp), intent(inout) :: amp              !! amplitude: in default, out as read
+        integer, intent(inout) :: segs              !! segments: in default, out as read
+        real(dp), intent(inout) :: rt               !! rtol: in default, out as read
+        integer, intent(out) :: ios                 !! iostat of the namelist read
+        character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
+        real(dp) :: amplitude, rtol
+        integer :: segments
+        namelist /floquet/ amplitude, segments, rtol
+        amplitude = amp
+        segments = segs
+        rtol = rt
+        read (u, nml=floquet, iostat=ios, iomsg=msg)
+        amp = amplitude
+        segs = segments
+        rt = rtol
+    end subroutine read_floquet
+
     !> True when `word` is one of the blank-separated words of d%analyses.
     logical function analysis_requested(d, word)
         type(deck_t), intent(in) :: d               !! the deck
@@ -249,8 +329,9 @@ contains
         end do
     end function analysis_requested
 
-    !> Write the effective deck as '# ' comment lines, one namelist-like line per group; the
-    !! reals are the shortest decimals that read back exactly.
+    !> Write the effective deck as '# ' comment lines, one namelist-like line per group
+    !! (&floquet and &chart only when that analysis is requested); the reals are the
+    !! shortest decimals that read back exactly.
     subroutine deck_echo(d, unit)
         type(deck_t), intent(in) :: d               !! the deck
         integer, intent(in) :: unit                 !! open formatted unit
@@ -275,6 +356,14 @@ contains
         write (unit, '(a)') '# &integration tau_end = '//rshort(d%tau_end)//', dtau_out = '// &
             rshort(d%dtau_out)//', rtol = '//rshort(d%rtol)//', atol = '//rshort(d%atol)// &
             ', error_estimate = '//line//' /'
+        if (analysis_requested(d, 'floquet')) write (unit, '(a)') '# &floquet amplitude = '// &
+            rshort(d%floquet_amplitude)//', segments = '//itoa(d%floquet_segments)// &
+            ', rtol = '//rshort(d%floquet_rtol)//' /'
+        if (analysis_requested(d, 'chart')) write (unit, '(a)') '# &chart x = '// &
+            quoted(d%chart_x)//', x_min = '//rshort(d%chart_x_min)//', x_max = '// &
+            rshort(d%chart_x_max)//', nx = '//itoa(d%chart_nx)//', y = '//quoted(d%chart_y)// &
+            ', y_min = '//rshort(d%chart_y_min)//', y_max = '//rshort(d%chart_y_max)// &
+            ', ny = '//itoa(d%chart_ny)//' /'
     end subroutine deck_echo
 
     ! ---------------------------------------------------------------- validation
@@ -430,7 +519,109 @@ contains
             return
         end if
 
+        ! &floquet
+        call finite('floquet', 'amplitude', d%floquet_amplitude)
+        call finite('floquet', 'rtol', d%floquet_rtol)
+        if (stat%code /= STATUS_OK) return
+        if (d%floquet_amplitude <= 0.0_dp .or. d%floquet_amplitude >= 180.0_dp) then
+            call bad('floquet', 'amplitude', rshort(d%floquet_amplitude), 'out of range', &
+                     '0 < amplitude < 180 (degrees of theta4)')
+            return
+        end if
+        if (d%floquet_segments < 1 .or. d%floquet_segments > MAX_SEGMENTS) then
+            call bad('floquet', 'segments', itoa(d%floquet_segments), 'number of shooting ' // &
+                     'segments out of range', '1 <= segments <= '//itoa(MAX_SEGMENTS))
+            return
+        end if
+        if (d%floquet_rtol < RTOL_MIN .or. d%floquet_rtol >= FLOQUET_RTOL_MAX) then
+            call bad('floquet', 'rtol', rshort(d%floquet_rtol), 'relative tolerance out of ' // &
+                     'range', '1e-14 <= rtol < 1e-2')
+            return
+        end if
+
+        ! &chart (x and y are known words, checked by read_deck)
+        if (trim(d%chart_x) == trim(d%chart_y)) then
+            call bad('chart', 'y', quoted(d%chart_y), 'the same variable as x', &
+                     'y different from x, both from: '//commas(CHART_VARIABLES))
+            return
+        end if
+        call chart_axis('x', d%chart_x, d%chart_x_min, d%chart_x_max, d%chart_nx)
+        call chart_axis('y', d%chart_y, d%chart_y_min, d%chart_y_max, d%chart_ny)
+        if (stat%code /= STATUS_OK) return
+        if (d%chart_nx*d%chart_ny > MAX_CHART_POINTS) then
+            call bad('chart', 'ny', itoa(d%chart_ny), 'too many chart points (nx*ny = '// &
+                     itoa(d%chart_nx*d%chart_ny)//', nx = '//itoa(d%chart_nx)//')', &
+                     'nx*ny <= '//itoa(MAX_CHART_POINTS))
+            return
+        end if
+
     contains
+
+        !> One chart axis: finite min < max inside the range of its variable, 2..1000 points.
+        subroutine chart_axis(ax, var, vmin, vmax, n)
+            character(len=*), intent(in) :: ax      !! 'x' or 'y'
+            character(len=*), intent(in) :: var     !! chart variable, lower case
+            real(dp), intent(in) :: vmin, vmax      !! range
+            integer, intent(in) :: n                !! number of points
+            real(dp) :: lo, hi
+            logical :: lo_in, hi_in
+            character(len=:), allocatable :: desc, allowed
+            if (stat%code /= STATUS_OK) return
+            call finite('chart', ax//'_min', vmin)
+            call finite('chart', ax//'_max', vmax)
+            if (stat%code /= STATUS_OK) return
+            if (vmin >= vmax) then
+                call bad('chart', ax//'_max', rshort(vmax), 'not larger than '//ax// &
+                         '_min = '//rshort(vmin), ax//'_min < '//ax//'_max')
+                return
+            end if
+            ! allowed range lo .. hi of the variable, ends included when lo_in, hi_in
+            lo = 0.0_dp
+            hi = huge(1.0_dp)
+            lo_in = .false.
+            hi_in = .true.
+            select case (trim(var))
+            case ('l')
+                desc = 'cable length l''/b'''
+            case ('b')
+                desc = 'b/b'''
+            case ('amplitude')
+                desc = 'degrees'
+                hi = 180.0_dp
+                hi_in = .false.
+            case ('r')
+                desc = 'r/b'''
+                lo_in = .true.
+            case ('lambda')
+                desc = 'radians, -pi/2 .. pi/2'
+                lo = -PI_HALF
+                hi = PI_HALF
+                lo_in = .true.
+            case default
+                desc = 'I3/I1'
+            end select
+            allowed = rshort(lo)//trim(merge(' <=', ' < ', lo_in))//' '//ax//'_min < '// &
+                ax//'_max'
+            if (hi < huge(1.0_dp)) allowed = allowed//trim(merge(' <=', ' < ', hi_in))//' '// &
+                rshort(hi)
+            allowed = allowed//' for '//trim(var)//' ('//desc//')'
+            if (vmin < lo .or. (vmin == lo .and. .not. lo_in)) then
+                call bad('chart', ax//'_min', rshort(vmin), 'outside the range of '//trim(var), &
+                         allowed)
+                return
+            end if
+            if (vmax > hi .or. (vmax == hi .and. .not. hi_in)) then
+                call bad('chart', ax//'_max', rshort(vmax), 'outside the range of '//trim(var), &
+                         allowed)
+                return
+            end if
+            if (n < 2 .or. n > MAX_CHART_N) then
+                call bad('chart', 'n'//ax, itoa(n), 'number of chart points out of range', &
+                         '2 <= n'//ax//' <= '//itoa(MAX_CHART_N)//' and nx*ny <= '// &
+                         itoa(MAX_CHART_POINTS))
+                return
+            end if
+        end subroutine chart_axis
 
         subroutine bad(grp, var, val, what, allowed)
             character(len=*), intent(in) :: grp, var, val, what, allowed
@@ -780,6 +971,9 @@ contains
                     case ('r')
                         why = lhs//' = '//val//': '''//tok// &
                             ''' is not a real number'
+                    case ('i')
+                        why = lhs//' = '//val//': '''//tok// &
+                            ''' is not an integer'
                     case ('c')
                         why = lhs//' = '//val//': character values '// &
                             'must be quoted, e.g. '//nm//' = ''...'''
@@ -831,12 +1025,16 @@ contains
     !> Whether a value token has the form its kind needs.
     logical function token_ok(tok, kind)
         character(len=*), intent(in) :: tok         !! the token (repeat count removed)
-        character, intent(in) :: kind               !! r, c or l
+        character, intent(in) :: kind               !! r, i, c or l
         character(len=:), allocatable :: s
         s = lower(tok)
         select case (kind)
         case ('r')
             token_ok = is_real(s)
+        case ('i')
+            if (s(1:1) == '+' .or. s(1:1) == '-') s = s(2:)
+            token_ok = len(s) > 0
+            if (token_ok) token_ok = verify(s, '0123456789') == 0
         case ('c')
             token_ok = .false.
             if (len(s) >= 2) token_ok = (s(1:1) == '''' .or. s(1:1) == '"') .and. &
@@ -910,7 +1108,7 @@ contains
     subroutine spec_lookup(spec, nm, kind, vsize)
         character(len=*), intent(in) :: spec        !! see SPEC_*
         character(len=*), intent(in) :: nm          !! variable name, lower case
-        character, intent(out) :: kind              !! r, c, l or blank
+        character, intent(out) :: kind              !! r, i, c, l or blank
         integer, intent(out) :: vsize               !! number of elements
         integer :: i1, i2, c, ios
         kind = ' '

@@ -35,6 +35,12 @@ module test_deck
     ! minimal required groups
     character(len=*), parameter :: MIN_SUSP = '&suspension b = 1.0, l = 2.0 /'
     character(len=*), parameter :: MIN_BODY = '&body mass = 1.0 /'
+    ! the optional analysis groups
+    character(len=*), parameter :: G_FLOQUET = &
+        '&floquet amplitude = 30.0, segments = 8, rtol = 1e-9 /'
+    character(len=*), parameter :: G_CHART = &
+        "&chart x = 'Lambda', x_min = -1.0, x_max = 1.25, nx = 50,"//NL// &
+        "       y = 'INERTIA_RATIO', y_min = 0.5, y_max = 2.0, ny = 60 /  ! a comment"
 
 contains
 
@@ -50,6 +56,7 @@ contains
         if (t%want('deck: bad input is ERR_DECK naming the variable')) call test_bad(t, dir)
         if (t%want('deck: echo and key = value lines')) call test_echo(t, dir)
         if (t%want('deck: atomic output files')) call test_atomic(t, dir)
+        if (t%want('deck: &floquet and &chart')) call test_floquet_chart(t, dir)
     end subroutine run_deck_tests
 
     ! ---------------------------------------------------------------------------------------
@@ -321,7 +328,7 @@ contains
         call t%check('echo: char kv', index(text, 's = text'//NL) > 0)
         call t%check('echo: logical kv', index(text, 'yes = yes'//NL) > 0 .and. &
                      index(text, 'no = no'//NL) > 0)
-        call write_text(dir//'/echo_back.nml', text(1:index(text, 'x = ') - 1))
+        call write_text(dir//'/echo_back.nml', text(1:index(text, NL//'x = ')))
         call read_deck(dir//'/echo_back.nml', e, stat)
         call t%check('echo: reads back ('//msg_of(stat)//')', stat%code == STATUS_OK)
         call t%check('echo: same title', d%title == e%title)
@@ -382,5 +389,186 @@ contains
         call t%check('atomic: open in a missing directory is ERR_IO', stat%code == ERR_IO)
         call t%check('atomic: message names the file', index(msg_of(stat), 'x.dat') > 0)
     end subroutine test_atomic
+
+    ! ---------------------------------------------------------------------------------------
+    subroutine test_floquet_chart(t, dir)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: dir
+        type(deck_t) :: d, e, ref
+        type(status_t) :: stat
+        integer :: u, ios
+        character(len=4096) :: line
+        character(len=:), allocatable :: text
+        character(len=*), parameter :: SB = MIN_SUSP//NL//MIN_BODY//NL
+        character(len=*), parameter :: SA = "&scene analyses = 'simulate floquet chart' /"//NL
+
+        ! valid groups read back; &floquet amplitude and rtol leave &start and &integration
+        call write_text(dir//'/fc.nml', SA//SB//"&start amplitude = 20 /"//NL// &
+                        '&integration rtol = 1e-8 /'//NL//G_FLOQUET//NL//G_CHART//NL)
+        call read_deck(dir//'/fc.nml', d, stat)
+        call t%check('floquet/chart: status ok ('//msg_of(stat)//')', stat%code == STATUS_OK)
+        if (stat%code /= STATUS_OK) return
+        call t%check_close('floquet: amplitude', d%floquet_amplitude, 30.0_dp)
+        call t%check('floquet: segments', d%floquet_segments == 8)
+        call t%check_close('floquet: rtol', d%floquet_rtol, 1.0e-9_dp)
+        call t%check_close('floquet: &start amplitude separate', d%amplitude, 20.0_dp)
+        call t%check_close('floquet: &integration rtol separate', d%rtol, 1.0e-8_dp)
+        call t%check('chart: x lower case', trim(d%chart_x) == 'lambda')
+        call t%check('chart: y lower case', trim(d%chart_y) == 'inertia_ratio')
+        call t%check_close('chart: x_min', d%chart_x_min, -1.0_dp)
+        call t%check_close('chart: x_max', d%chart_x_max, 1.25_dp)
+        call t%check_close('chart: y_min', d%chart_y_min, 0.5_dp)
+        call t%check_close('chart: y_max', d%chart_y_max, 2.0_dp)
+        call t%check('chart: nx, ny', d%chart_nx == 50 .and. d%chart_ny == 60)
+
+        ! the echo carries both groups and reads back the same values
+        open (newunit=u, file=dir//'/fc_echo.txt', status='replace', action='write')
+        call deck_echo(d, u)
+        close (u)
+        open (newunit=u, file=dir//'/fc_echo.txt', status='old', action='read')
+        text = ''
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (line(1:3) == '# &') text = text//trim(line(3:))//NL
+        end do
+        close (u)
+        call t%check('floquet/chart: echo has &floquet', index(text, '&floquet ') > 0)
+        call t%check('floquet/chart: echo has &chart', index(text, '&chart ') > 0)
+        call write_text(dir//'/fc_back.nml', text)
+        call read_deck(dir//'/fc_back.nml', e, stat)
+        call t%check('floquet/chart: echo reads back ('//msg_of(stat)//')', &
+                     stat%code == STATUS_OK)
+        call t%check('floquet/chart: echo same &floquet', &
+                     d%floquet_amplitude == e%floquet_amplitude .and. &
+                     d%floquet_segments == e%floquet_segments .and. &
+                     d%floquet_rtol == e%floquet_rtol)
+        call t%check('floquet/chart: echo same &chart', d%chart_x == e%chart_x .and. &
+                     d%chart_y == e%chart_y .and. d%chart_x_min == e%chart_x_min .and. &
+                     d%chart_x_max == e%chart_x_max .and. d%chart_y_min == e%chart_y_min .and. &
+                     d%chart_y_max == e%chart_y_max .and. d%chart_nx == e%chart_nx .and. &
+                     d%chart_ny == e%chart_ny)
+
+        ! defaults when absent; no echo lines when the analyses are not requested
+        call write_text(dir//'/fc_absent.nml', SB)
+        call read_deck(dir//'/fc_absent.nml', d, stat)
+        call t%check('floquet/chart defaults: status ok ('//msg_of(stat)//')', &
+                     stat%code == STATUS_OK)
+        call t%check('floquet defaults', d%floquet_amplitude == 45.0_dp .and. &
+                     d%floquet_segments == 1 .and. d%floquet_rtol == 1.0e-10_dp .and. &
+                     d%floquet_amplitude == ref%floquet_amplitude)
+        call t%check('chart defaults', trim(d%chart_x) == 'l' .and. &
+                     trim(d%chart_y) == 'amplitude' .and. d%chart_x_min == 0.5_dp .and. &
+                     d%chart_x_max == 4.0_dp .and. d%chart_y_min == 5.0_dp .and. &
+                     d%chart_y_max == 90.0_dp .and. d%chart_nx == ref%chart_nx .and. &
+                     d%chart_ny == ref%chart_ny)
+        open (newunit=u, file=dir//'/fc_echo2.txt', status='replace', action='write')
+        call deck_echo(d, u)
+        close (u)
+        open (newunit=u, file=dir//'/fc_echo2.txt', status='old', action='read')
+        text = ''
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            text = text//trim(line)//NL
+        end do
+        close (u)
+        call t%check('floquet/chart: no echo when not requested', &
+                     index(text, '&floquet') == 0 .and. index(text, '&chart') == 0)
+        ! a partial group keeps the other defaults
+        call write_text(dir//'/fc_partial.nml', SB//'&chart ny = 7 /'//NL// &
+                        '&floquet segments = 3 /'//NL)
+        call read_deck(dir//'/fc_partial.nml', d, stat)
+        call t%check('floquet/chart partial: ok ('//msg_of(stat)//')', &
+                     stat%code == STATUS_OK .and. d%chart_ny == 7 .and. &
+                     d%chart_nx == ref%chart_nx .and. d%floquet_segments == 3 .and. &
+                     d%floquet_rtol == ref%floquet_rtol)
+
+        ! valid edges of the ranges
+        call good('lambda_full', SB//"&chart x = 'lambda', x_min = -1.5707963267948966, " // &
+                  'x_max = 1.5707963267948966 /')
+        call good('r_zero', SB//"&chart x = 'r', x_min = 0, x_max = 1, y = 'b' /")
+        call good('grid_max', SB//'&chart nx = 500, ny = 500 /')
+        call good('floquet_edges', SB//'&floquet amplitude = 179.9, segments = 64, ' // &
+                  'rtol = 1e-14 /')
+
+        ! bad values: ERR_DECK naming the group and the variable
+        call bad('chart_unknown_x', SB//"&chart x = 'length' /", &
+                 ['&chart       ', 'x = ''length'' ', 'inertia_ratio'])
+        call bad('chart_unquoted_x', SB//'&chart x = l /', ['x = l ', 'quoted'])
+        call bad('chart_x_eq_y', SB//"&chart x = 'B', y = 'b' /", &
+                 ['&chart y', 'same    ', 'x       '])
+        call bad('chart_min_eq_max', SB//'&chart x_min = 2, x_max = 2 /', &
+                 ['x_max = 2', 'x_min    '])
+        call bad('chart_min_gt_max', SB//'&chart y_min = 50, y_max = 10 /', &
+                 ['y_max = 10', 'y_min     '])
+        call bad('chart_amplitude_180', SB//'&chart y_max = 200 /', &
+                 ['&chart y_max = 200', '180               ', 'amplitude         '])
+        call bad('chart_amplitude_zero', SB//"&chart x = 'amplitude', x_min = 0, x_max = 10, " // &
+                 "y = 'l', y_min = 1, y_max = 2 /", ['x_min = 0'])
+        call bad('chart_l_zero', SB//'&chart x_min = 0 /', ['x_min = 0', '0 < x_min'])
+        call bad('chart_b_negative', SB//"&chart y = 'b', y_min = -1, y_max = 1 /", &
+                 ['y_min = -1'])
+        call bad('chart_r_negative', SB//"&chart x = 'r', x_min = -0.1 /", ['x_min = -0.1'])
+        call bad('chart_lambda_wide', SB//"&chart x = 'lambda', x_min = -2, x_max = 1 /", &
+                 ['x_min = -2', 'lambda    '])
+        call bad('chart_lambda_high', SB//"&chart y = 'lambda', y_min = 0, y_max = 1.6 /", &
+                 ['y_max = 1.6', 'pi/2       '])
+        call bad('chart_inertia_ratio_zero', SB//"&chart y = 'inertia_ratio', y_min = 0, " // &
+                 'y_max = 2 /', ['y_min = 0'])
+        call bad('chart_nx_one', SB//'&chart nx = 1 /', ['nx = 1 ', '2 <= nx'])
+        call bad('chart_ny_big', SB//'&chart ny = 1001 /', ['ny = 1001', '1000     '])
+        call bad('chart_grid_big', SB//'&chart nx = 1000, ny = 251 /', &
+                 ['&chart ny', 'nx*ny    ', '250000   '])
+        call bad('chart_nx_real', SB//'&chart nx = 2.5 /', ['nx = 2.5      ', 'not an integer'])
+        call bad('chart_nx_nan', SB//'&chart nx = NaN /', ['nx = NaN      ', 'not an integer'])
+        call bad('chart_x_min_nan', SB//'&chart x_min = NaN /', ['x_min = NaN', 'finite     '])
+        call bad('chart_y_max_inf', SB//'&chart y_max = Inf /', ['y_max = Inf'])
+        call bad('chart_unknown_variable', SB//'&chart n = 3 /', ['''n''', 'nx '])
+        call bad('floquet_segments_zero', SB//'&floquet segments = 0 /', &
+                 ['&floquet segments = 0', '64                   '])
+        call bad('floquet_segments_big', SB//'&floquet segments = 65 /', ['segments = 65'])
+        call bad('floquet_segments_real', SB//'&floquet segments = 2.5 /', &
+                 ['segments = 2.5', 'not an integer'])
+        call bad('floquet_rtol_one', SB//'&floquet rtol = 1 /', &
+                 ['&floquet rtol = 1', '1e-2             '])
+        call bad('floquet_rtol_small', SB//'&floquet rtol = 1e-15 /', ['rtol = 1e-15'])
+        call bad('floquet_rtol_nan', SB//'&floquet rtol = nan /', ['rtol = NaN', 'finite    '])
+        call bad('floquet_amplitude_180', SB//'&floquet amplitude = 180 /', &
+                 ['&floquet amplitude = 180', '0 < amplitude < 180     '])
+        call bad('floquet_amplitude_text', SB//'&floquet amplitude = big /', &
+                 ['amplitude = big', 'not a real     '])
+        call bad('floquet_unknown_variable', SB//'&floquet segment = 2 /', &
+                 ['segment ', 'segments', '&floquet'])
+
+    contains
+
+        subroutine good(label, text)
+            character(len=*), intent(in) :: label, text
+            call write_text(dir//'/fc_'//label//'.nml', text)
+            call read_deck(dir//'/fc_'//label//'.nml', d, stat)
+            call t%check('floquet/chart: valid '//label//' ('//msg_of(stat)//')', &
+                         stat%code == STATUS_OK)
+        end subroutine good
+
+        subroutine bad(label, text, words)
+            character(len=*), intent(in) :: label, text
+            character(len=*), intent(in) :: words(:)
+            integer :: i
+            character(len=:), allocatable :: path
+            path = dir//'/bad_'//label//'.nml'
+            call write_text(path, text)
+            call read_deck(path, d, stat)
+            call t%check('bad: '//label//' is ERR_DECK ('//msg_of(stat)//')', &
+                         stat%code == ERR_DECK)
+            call t%check('bad: '//label//' message names the deck ('//msg_of(stat)//')', &
+                         index(msg_of(stat), 'bad_'//label) > 0)
+            do i = 1, size(words)
+                call t%check('bad: '//label//' message contains "'//trim(words(i))//'" ('// &
+                             msg_of(stat)//')', index(msg_of(stat), trim(words(i))) > 0)
+            end do
+        end subroutine bad
+
+    end subroutine test_floquet_chart
 
 end module test_deck
