@@ -50,6 +50,7 @@ module floquet
     real(dp), parameter, public :: STABILITY_MARGIN = 1.0e-6_dp
 
     public :: check_torsion_scene, torsion_period, jacobian_z, monodromy, floquet_analysis
+    public :: multipliers_from_monodromy, torsion_start
 
 contains
 
@@ -154,8 +155,9 @@ contains
     !> Z = d f / d y of the chart right-hand side (eq. (51)).  The accelerations are exactly
     !! quadratic in the rates, so a central difference with h = max(1, |y_j|) is exact for the
     !! rate columns (no truncation, rounding ~ eps).  The position columns use the fourth-order
-    !! central stencil with h = 1e-3 max(1, |y_j|): truncation ~ h^4/30 |f^(5)| ~ 1e-13,
-    !! rounding ~ eps/h ~ 2e-13, and smooth along the orbit (no noise for the step control).
+    !! central stencil with h = 5e-4 max(1, |y_j|): truncation ~ h^4/30 |f^(5)|, rounding
+    !! ~ eps/h ~ 4e-13, smooth along the orbit (no noise for the step control).  The step was
+    !! set by the reciprocal-pair test at modulus 2.65e3 (h = 1e-3 left a pair error of 2e-6).
     subroutine jacobian_z(p, y, z, stat)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         real(dp), intent(in) :: y(NSTATE)       !! chart state
@@ -170,7 +172,7 @@ contains
         do j = 1, NSTATE
             yp = y
             if (j <= 5) then
-                h = 1.0e-3_dp*max(1.0_dp, abs(y(j)))
+                h = 5.0e-4_dp*max(1.0_dp, abs(y(j)))
                 yp(j) = y(j) + h
                 call chart_accelerations(p, yp, a1, stat)
                 if (stat%code /= 0) return
@@ -302,27 +304,52 @@ contains
         type(floquet_result_t), intent(out) :: res
         type(status_t), intent(out) :: stat     !! ERR_DECK (scene), ERR_NUMERIC
         type(pendulum_t) :: p
-        real(dp) :: th(5), y0(NSTATE), yend(NSTATE), h(NSTATE, NSTATE)
-        real(dp) :: rows(NSTATE, 4), u(NSTATE, 6), v(NSTATE, 8), pf(NSTATE, NSTATE), m6(6, 6)
-        real(dp) :: f(NSTATE)
-        real(dp) :: r, hn
-        complex(dp) :: lam(6)
-        integer :: ivert, k, idx(6), i
+        real(dp) :: y0(NSTATE), yend(NSTATE), h(NSTATE, NSTATE)
+        integer :: ivert
         p = p_in
         p%stab_rate = 0.0_dp      ! the variational equations of the model itself
         call check_torsion_scene(p, ivert, stat)
         if (stat%code /= 0) return
         call torsion_period(p, amp, ivert, res%period, stat)
         if (stat%code /= 0) return
+        call torsion_start(p, amp, y0, stat)
+        if (stat%code /= 0) return
+        call monodromy(p, y0, res%period, nseg, rtol, h, yend, res%steps, &
+                       res%rhs_evaluations, stat)
+        if (stat%code /= 0) return
+        res%orbit_closure = maxval(abs(yend - y0))
+        call multipliers_from_monodromy(p, y0, res%period, h, res, stat)
+    end subroutine floquet_analysis
+
+    !> The chart state of pure torsion at its turning point theta4 = amp (at rest).
+    subroutine torsion_start(p, amp, y0, stat)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters (a torsion scene)
+        real(dp), intent(in) :: amp             !! amplitude (rad)
+        real(dp), intent(out) :: y0(NSTATE)
+        type(status_t), intent(out) :: stat
+        real(dp) :: th(5)
+        y0 = 0.0_dp
         call raised_angles(p, amp, th, stat)
         if (stat%code /= 0) return
         call solve_theta5(p, th, stat)
         if (stat%code /= 0) return
         y0 = chart_state(th, [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp])
-        call monodromy(p, y0, res%period, nseg, rtol, h, yend, res%steps, &
-                       res%rhs_evaluations, stat)
-        if (stat%code /= 0) return
-        res%orbit_closure = maxval(abs(yend - y0))
+    end subroutine torsion_start
+
+    !> The multipliers of a monodromy matrix h of the chart form over the orbit through y0
+    !! with period t* (see floquet_analysis): fills res%multipliers, trivial, max_modulus,
+    !! stable, trivial_residual and monodromy.
+    subroutine multipliers_from_monodromy(p, y0, period, h, res, stat)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters (stab_rate 0)
+        real(dp), intent(in) :: y0(NSTATE)      !! point of the orbit where h starts
+        real(dp), intent(in) :: period          !! t*
+        real(dp), intent(in) :: h(NSTATE, NSTATE)  !! monodromy matrix
+        type(floquet_result_t), intent(inout) :: res
+        type(status_t), intent(out) :: stat
+        real(dp) :: rows(NSTATE, 4), u(NSTATE, 6), v(NSTATE, 8), pf(NSTATE, NSTATE), m6(6, 6)
+        real(dp) :: f(NSTATE), r, hn
+        complex(dp) :: lam(6)
+        integer :: k, idx(6), i
         call structure_rows(p, y0, rows, f, stat)
         if (stat%code /= 0) return
         ! residuals of the four exact identities, each relative to its vector
@@ -333,7 +360,7 @@ contains
         r = norm2(matmul(h, f) - f)/norm2(f)
         r = max(r, norm2(matmul(matmul(rows(:, 3), h) - rows(:, 3), v))/norm2(rows(:, 3)))
         r = max(r, norm2(matmul(rows(:, 2), h) - rows(:, 2))/norm2(rows(:, 2)))
-        r = max(r, norm2(matmul(rows(:, 1), h) - rows(:, 1) - res%period*rows(:, 2)) &
+        r = max(r, norm2(matmul(rows(:, 1), h) - rows(:, 1) - period*rows(:, 2)) &
                 /norm2(rows(:, 1)))
         res%trivial_residual = r/hn
         ! reduced map on S
@@ -362,35 +389,34 @@ contains
         res%max_modulus = maxval(abs(res%multipliers(1:6)))
         res%stable = res%max_modulus <= 1.0_dp + STABILITY_MARGIN
         res%monodromy = h
-    end subroutine floquet_analysis
+    end subroutine multipliers_from_monodromy
 
-    !> Gradients at y of the constraint G, its rate G' and the energy E (columns 1-3, by
-    !! central differences), and the flow f(y).
+    !> Gradients at y of the constraint G, its rate G' and the energy E (columns 1-3, by the
+    !! fourth-order central stencil, h = 1e-3 max(1, |y_j|): error ~ 1e-13), and the flow f(y).
     subroutine structure_rows(p, y, rows, f, stat)
         type(pendulum_t), intent(in) :: p
         real(dp), intent(in) :: y(NSTATE)
         real(dp), intent(out) :: rows(NSTATE, 3), f(NSTATE)
         type(status_t), intent(out) :: stat
-        real(dp) :: yp(NSTATE), gp, gdp, gm, gdm, h, a(5)
-        integer :: j
+        real(dp) :: yp(NSTATE), h, v(3, 4), a(5)
+        real(dp), parameter :: off(4) = [1.0_dp, -1.0_dp, 2.0_dp, -2.0_dp]
+        integer :: j, k
         do j = 1, NSTATE
-            h = 1.0e-5_dp*max(1.0_dp, abs(y(j)))
-            yp = y
-            yp(j) = y(j) + h
-            call chart_constraint(p, yp, gp, gdp)
-            rows(j, 3) = chart_energy(p, yp)
-            yp(j) = y(j) - h
-            call chart_constraint(p, yp, gm, gdm)
-            rows(j, 3) = (rows(j, 3) - chart_energy(p, yp))/(2*h)
-            rows(j, 1) = (gp - gm)/(2*h)
-            rows(j, 2) = (gdp - gdm)/(2*h)
+            h = 1.0e-3_dp*max(1.0_dp, abs(y(j)))
+            do k = 1, 4
+                yp = y
+                yp(j) = y(j) + off(k)*h
+                call chart_constraint(p, yp, v(1, k), v(2, k))
+                v(3, k) = chart_energy(p, yp)
+            end do
+            rows(j, :) = (8*(v(:, 1) - v(:, 2)) - (v(:, 3) - v(:, 4)))/(12*h)
         end do
         call chart_accelerations(p, y, a, stat)
         f = [y(6:10), a]
     end subroutine structure_rows
 
     !> Orthonormal basis u (n x (n-m)) of the orthogonal complement of the columns of a
-    !! (n x m, independent), by modified Gram-Schmidt applied twice.
+    !! (n x m, independent, non-zero), by modified Gram-Schmidt applied twice.
     pure subroutine complement_basis(a, u)
         real(dp), intent(in) :: a(:, :)
         real(dp), intent(out) :: u(:, :)
@@ -401,7 +427,7 @@ contains
         nq = 0
         do k = 1, n + m
             if (k <= m) then
-                v = a(:, k)
+                v = a(:, k)/norm2(a(:, k))     ! scale-free: the columns may be tiny
             else
                 v = 0.0_dp
                 v(k - m) = 1.0_dp
@@ -411,7 +437,10 @@ contains
                     v = v - dot_product(q(:, j), v)*q(:, j)
                 end do
             end do
-            if (norm2(v) > 1.0e-3_dp .and. nq < n) then
+            ! the given columns are always kept (near equilibrium grad E is almost parallel to
+            ! grad G, leaving a remainder of the order of the amplitude); the unit vectors
+            ! that complete the basis only when well independent
+            if ((k <= m .and. norm2(v) > 1.0e-12_dp) .or. (norm2(v) > 1.0e-3_dp .and. nq < n)) then
                 nq = nq + 1
                 q(:, nq) = v/norm2(v)
             end if

@@ -1,0 +1,332 @@
+!> Tests of the Floquet analysis of pure torsion (issue: stability, Figs. 13-16).
+module test_floquet
+    use kinds, only: dp, pi, deg
+    use status, only: status_t, ERR_DECK
+    use testing, only: tester_t
+    use ode_system, only: ode_system_t
+    use geometry, only: pendulum_t
+    use bifilar_model, only: bifilar_t, chart_accelerations, NSTATE
+    use lsoda, only: lsoda_t
+    use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, torsion_period, &
+                       jacobian_z, multipliers_from_monodromy, torsion_start
+    use paper_claims, only: rest_frequencies
+    use deck, only: deck_t, read_deck
+    use simulate, only: make_pendulum
+    implicit none
+    private
+
+    public :: run_floquet_tests
+
+    !> Pure torsion in one degree of freedom, eqs. (45)-(48) with b = b' (scaled units).
+    type, extends(ode_system_t) :: torsion_1dof_t
+        real(dp) :: i1 = 0.125_dp, l = 2.0_dp
+    contains
+        procedure :: rhs => torsion_rhs
+    end type torsion_1dof_t
+
+contains
+
+    subroutine run_floquet_tests(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        if (t%want('floquet: period of pure torsion')) call test_period(t)
+        if (t%want('floquet: Jacobian Z against directional differences')) call test_jacobian(t)
+        if (t%want('floquet: small amplitude against the natural frequencies at rest')) &
+            call test_small_amplitude(t)
+        if (t%want('floquet: structure of the multipliers')) call test_structure(t)
+        if (t%want('floquet: finite differences of the nonlinear flow')) call test_flow_fd(t)
+        if (t%want('floquet: a predicted instability is real')) call test_growth(t)
+        if (t%want('floquet: scenes that are not pure torsion are refused')) &
+            call test_refusal(t, exe)
+    end subroutine run_floquet_tests
+
+    subroutine torsion_rhs(sys, t, y, ydot, stat)
+        class(torsion_1dof_t), intent(inout) :: sys
+        real(dp), intent(in) :: t, y(:)
+        real(dp), intent(out) :: ydot(:)
+        type(status_t), intent(out) :: stat
+        real(dp) :: f, n1, n2, n3, k
+        if (.false.) ydot(1) = t
+        k = 1.0_dp/(4*sys%l)
+        f = 1.0_dp/(1.0_dp - (sin(y(1)/2)/sys%l)**2)
+        n1 = -1.0_dp/(sys%i1 + f*k**2*sin(y(1))**2)
+        n2 = f*k**2*(cos(y(1)) + f*(1.0_dp/(2*sys%l))**2*sin(y(1))**2)*sin(y(1))
+        n3 = sqrt(f)*k*sin(y(1))
+        ydot(1) = y(2)
+        ydot(2) = n1*(n2*y(2)**2 + n3)
+        stat%code = 0
+    end subroutine torsion_rhs
+
+    function deck_pendulum(path) result(p)
+        character(len=*), intent(in) :: path
+        type(pendulum_t) :: p
+        type(deck_t) :: d
+        type(status_t) :: st
+        call read_deck(path, d, st)
+        call make_pendulum(d, p, st)
+        p%stab_rate = 0.0_dp
+    end function deck_pendulum
+
+    !> t* from the quadrature: the 1-DOF equations (45)-(48) integrated to t*/2 arrive at
+    !! theta4 = -A at rest; at small amplitude t* = 4 pi sqrt(I1 l / (m g b^2)).
+    subroutine test_period(t)
+        type(tester_t), intent(inout) :: t
+        type(pendulum_t) :: p
+        type(torsion_1dof_t) :: one
+        type(lsoda_t) :: s
+        type(status_t) :: st
+        real(dp) :: period, z(2)
+        integer :: ivert
+        call check_torsion_scene(p, ivert, st)
+        call t%check('symmetric cylinder: vertical axis is b1', st%code == 0 .and. ivert == 1)
+        call torsion_period(p, 45*deg, ivert, period, st)
+        z = [45*deg, 0.0_dp]
+        call s%init(one, 0.0_dp, z, 1.0e-13_dp, [1.0e-15_dp], st)
+        call s%integrate(one, 0.5_dp*period, z, st)
+        call t%check_close('t*/2 from quadrature: theta4 = -A', z(1), -45*deg, atol=1.0e-9_dp)
+        call t%check_close('t*/2 from quadrature: at rest', z(2), 0.0_dp, atol=1.0e-9_dp)
+        call torsion_period(p, 0.01_dp*deg, ivert, period, st)
+        call t%check_close('small-amplitude t* = 4 pi sqrt(I1 l/(m g b^2))', period, &
+                           4*pi*sqrt(p%inertia(1)*p%big_l), rtol=1.0e-8_dp)
+    end subroutine test_period
+
+    !> Z v against Richardson-extrapolated directional differences of the right-hand side.
+    subroutine test_jacobian(t)
+        type(tester_t), intent(inout) :: t
+        type(pendulum_t) :: p
+        type(status_t) :: st
+        real(dp) :: y(NSTATE), v(NSTATE), z(NSTATE, NSTATE), d1(5), d2(5), ap(5), am(5), e
+        real(dp) :: eps
+        integer :: k, j
+        p = deck_pendulum('input/box_unstable.nml')
+        y = [0.02_dp, 0.1_dp, -0.05_dp, 0.4_dp, 0.03_dp, 0.1_dp, -0.2_dp, 0.15_dp, 0.5_dp, -0.1_dp]
+        call jacobian_z(p, y, z, st)
+        e = 0.0_dp
+        do k = 1, 3
+            v = [(sin(1.7_dp*k*(k + j)), j = 1, NSTATE)]
+            eps = 1.0e-3_dp
+            call chart_accelerations(p, y + eps*v, ap, st)
+            call chart_accelerations(p, y - eps*v, am, st)
+            d1 = (ap - am)/(2*eps)
+            call chart_accelerations(p, y + 0.5_dp*eps*v, ap, st)
+            call chart_accelerations(p, y - 0.5_dp*eps*v, am, st)
+            d2 = (ap - am)/eps
+            e = max(e, maxval(abs((4*d2 - d1)/3 - matmul(z(6:10, :), v))) &
+                    /maxval(abs(matmul(z(6:10, :), v))))
+        end do
+        call t%check_close('Z v = directional derivative (relative)', e, 0.0_dp, atol=1.0e-8_dp)
+    end subroutine test_jacobian
+
+    !> At small amplitude the multipliers tend to exp(+-2 pi i w_k / w_torsion), w_k the
+    !! natural frequencies of the pendulum linearised at rest (eigenvalues by LAPACK).
+    subroutine test_small_amplitude(t)
+        type(tester_t), intent(inout) :: t
+        type(pendulum_t) :: p
+        type(floquet_result_t) :: r
+        type(status_t) :: st
+        real(dp) :: freq(5), ft, err, best
+        complex(dp) :: pred
+        integer :: nf, k, j, it
+        call rest_frequencies(p, freq, nf, st)
+        call t%check('four natural frequencies at rest', st%code == 0 .and. nf == 4)
+        ! the torsion frequency: nearest to the bifilar formula 1/(4 pi sqrt(I1 l))
+        ft = 1.0_dp/(4*pi*sqrt(p%inertia(1)*p%big_l))
+        it = minloc(abs(freq(1:nf) - ft), 1)
+        call t%check_close('torsion among the natural frequencies', freq(it), ft, rtol=1.0e-6_dp)
+        call floquet_analysis(p, 0.2_dp*deg, 1.0e-11_dp, 1, r, st)
+        call t%check('small-amplitude Floquet runs', st%code == 0)
+        err = 0.0_dp
+        do k = 1, nf
+            if (k == it) cycle
+            pred = exp(cmplx(0.0_dp, 2*pi*freq(k)/freq(it), dp))
+            best = huge(1.0_dp)
+            do j = 1, 6
+                best = min(best, abs(r%multipliers(j) - pred), abs(r%multipliers(j) - conjg(pred)))
+            end do
+            err = max(err, best)
+        end do
+        call t%check_close('multipliers -> exp(+-2 pi i w_k/w_t) at 0.2 deg', err, 0.0_dp, &
+                           atol=1.0e-4_dp)
+    end subroutine test_small_amplitude
+
+    !> Reciprocal pairs, trivial multipliers, product 1 for the cylinder and both boxes.
+    subroutine test_structure(t)
+        type(tester_t), intent(inout) :: t
+        character(len=40), parameter :: decks(3) = [character(len=40) :: &
+            'input/cylinder_torsion.nml', 'input/box_stable.nml', 'input/box_tall_floquet.nml']
+        type(pendulum_t) :: p
+        type(floquet_result_t) :: r
+        type(status_t) :: st
+        real(dp) :: worst, pr
+        integer :: k, i, j
+        do k = 1, size(decks)
+            p = deck_pendulum(trim(decks(k)))
+            ! integration error is amplified by the largest modulus (2.65e3 for box_tall)
+            call floquet_analysis(p, 45*deg, merge(1.0e-12_dp, 1.0e-10_dp, k == 3), 1, r, st)
+            call t%check(trim(decks(k))//': analysis runs', st%code == 0)
+            ! each multiplier has a partner with lambda * partner = 1 (partner = 1/lambda or
+            ! the conjugate of 1/lambda for a pair on the unit circle)
+            worst = 0.0_dp
+            do i = 1, 6
+                pr = huge(1.0_dp)
+                do j = 1, 6
+                    if (j /= i) pr = min(pr, abs(r%multipliers(i)*r%multipliers(j) - 1.0_dp), &
+                                         abs(r%multipliers(i)*conjg(r%multipliers(j)) - 1.0_dp))
+                end do
+                worst = max(worst, pr)
+            end do
+            call t%check_close(trim(decks(k))//': reciprocal pairs', worst, 0.0_dp, &
+                               atol=1.0e-6_dp)
+            call t%check_close(trim(decks(k))//': trivial multipliers are 1 (identities)', &
+                               r%trivial_residual, 0.0_dp, atol=1.0e-6_dp)
+            call t%check_close(trim(decks(k))//': product of all multipliers', &
+                               abs(product(r%multipliers)), 1.0_dp, atol=1.0e-6_dp)
+            call t%check_close(trim(decks(k))//': det H(t*) = 1 (Liouville)', &
+                               det10(r%monodromy), 1.0_dp, atol=1.0e-6_dp)
+            call t%check_close(trim(decks(k))//': orbit closes', r%orbit_closure, 0.0_dp, &
+                               atol=1.0e-8_dp)
+        end do
+        call t%check('cylinder stable', .true. .eqv. stable_of('input/cylinder_torsion.nml'))
+        call t%check('box_stable stable', stable_of('input/box_stable.nml'))
+        call t%check('box_tall unstable, of the paper''s order (1e3)', &
+                     .not. stable_of('input/box_tall_floquet.nml') .and. r%max_modulus > 1.0e3_dp)
+    end subroutine test_structure
+
+    logical function stable_of(path)
+        character(len=*), intent(in) :: path
+        type(floquet_result_t) :: r
+        type(status_t) :: st
+        call floquet_analysis(deck_pendulum(path), 45*deg, 1.0e-10_dp, 1, r, st)
+        stable_of = r%stable .and. st%code == 0
+    end function stable_of
+
+    !> Determinant of a 10 x 10 matrix by Gaussian elimination with partial pivoting.
+    real(dp) function det10(a) result(det)
+        real(dp), intent(in) :: a(NSTATE, NSTATE)
+        real(dp) :: m(NSTATE, NSTATE), row(NSTATE)
+        integer :: i, k, piv
+        m = a
+        det = 1.0_dp
+        do k = 1, NSTATE
+            piv = maxloc(abs(m(k:, k)), 1) + k - 1
+            if (piv /= k) then
+                row = m(k, :); m(k, :) = m(piv, :); m(piv, :) = row
+                det = -det
+            end if
+            det = det*m(k, k)
+            do i = k + 1, NSTATE
+                m(i, k:) = m(i, k:) - m(i, k)/m(k, k)*m(k, k:)
+            end do
+        end do
+    end function det10
+
+    !> The monodromy by finite differences of the full nonlinear flow over one period gives
+    !! the same multipliers as the variational equations.
+    subroutine test_flow_fd(t)
+        type(tester_t), intent(inout) :: t
+        type(bifilar_t) :: sys
+        type(floquet_result_t) :: r, rfd
+        type(lsoda_t) :: s
+        type(status_t) :: st
+        real(dp) :: y0(NSTATE), yp(NSTATE), ym(NSTATE), h(NSTATE, NSTATE), eps, err
+        integer :: j, k
+        sys%p = deck_pendulum('input/box_unstable.nml')
+        call floquet_analysis(sys%p, 45*deg, 1.0e-11_dp, 1, r, st)
+        call torsion_start(sys%p, 45*deg, y0, st)
+        do j = 1, NSTATE
+            eps = 1.0e-5_dp
+            yp = y0
+            yp(j) = yp(j) + eps
+            call s%init(sys, 0.0_dp, yp, 1.0e-12_dp, [1.0e-14_dp], st)
+            call s%integrate(sys, r%period, yp, st)
+            ym = y0
+            ym(j) = ym(j) - eps
+            call s%init(sys, 0.0_dp, ym, 1.0e-12_dp, [1.0e-14_dp], st)
+            call s%integrate(sys, r%period, ym, st)
+            h(:, j) = (yp - ym)/(2*eps)
+        end do
+        call t%check('nonlinear flow integrates', st%code == 0)
+        rfd = r
+        call multipliers_from_monodromy(sys%p, y0, r%period, h, rfd, st)
+        err = 0.0_dp
+        do k = 1, 6
+            err = max(err, minval(abs(rfd%multipliers(1:6) - r%multipliers(k))) &
+                      /max(1.0_dp, abs(r%multipliers(k))))
+        end do
+        call t%check_close('multipliers from flow differences = variational', err, 0.0_dp, &
+                           atol=1.0e-5_dp)
+        call t%check_close('largest multiplier from flow differences', rfd%max_modulus, &
+                           r%max_modulus, rtol=1.0e-5_dp)
+    end subroutine test_flow_fd
+
+    !> The unstable deck: a tiny tilt on pure torsion grows by the largest multiplier each
+    !! period (early, linear phase); the stable deck's tilt stays small.
+    subroutine test_growth(t)
+        type(tester_t), intent(inout) :: t
+        type(bifilar_t) :: sys, ref
+        type(floquet_result_t) :: r
+        type(lsoda_t) :: s, s0
+        type(status_t) :: st
+        real(dp) :: y(NSTATE), y0(NSTATE), dev(0:3), tmax
+        integer :: k
+        sys%p = deck_pendulum('input/box_unstable.nml')
+        ref%p = sys%p
+        call floquet_analysis(sys%p, 45*deg, 1.0e-10_dp, 1, r, st)
+        call torsion_start(sys%p, 45*deg, y0, st)
+        y = y0
+        y(1) = 1.0e-9_dp
+        call s%init(sys, 0.0_dp, y, 1.0e-12_dp, [1.0e-16_dp], st)
+        call s0%init(ref, 0.0_dp, y0, 1.0e-12_dp, [1.0e-16_dp], st)
+        dev(0) = 1.0e-9_dp
+        do k = 1, 3
+            call s%integrate(sys, k*r%period, y, st)
+            call s0%integrate(ref, k*r%period, y0, st)
+            dev(k) = maxval(abs(y - y0))
+        end do
+        call t%check_close('unstable: growth per period = largest multiplier (3rd period)', &
+                           dev(3)/dev(2), r%max_modulus, rtol=0.05_dp)
+        ! stable deck: theta1 from 0.01 rad stays below 0.02 over 5 periods
+        sys%p = deck_pendulum('input/box_stable.nml')
+        call floquet_analysis(sys%p, 45*deg, 1.0e-10_dp, 1, r, st)
+        call torsion_start(sys%p, 45*deg, y, st)
+        y(1) = 0.01_dp
+        call s%init(sys, 0.0_dp, y, 1.0e-10_dp, [1.0e-12_dp], st)
+        tmax = 0.0_dp
+        do k = 1, 500
+            call s%integrate(sys, k*5*r%period/500, y, st)
+            tmax = max(tmax, abs(y(1)))
+        end do
+        call t%check('stable: tilt from 0.01 rad stays below 0.02 rad for 5 periods', &
+                     st%code == 0 .and. tmax < 0.02_dp)
+    end subroutine test_growth
+
+    !> Decks where pure torsion is not an exact motion are refused, naming the condition.
+    subroutine test_refusal(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        type(pendulum_t) :: p
+        type(status_t) :: st
+        integer :: ivert, ex
+        p%big_lp = 1.8_dp
+        call check_torsion_scene(p, ivert, st)
+        call t%check('unequal cables refused', st%code == ERR_DECK .and. &
+                     index(st%msg, 'equal cables') > 0)
+        p = pendulum_t()
+        p%lambda = 0.5_dp
+        call check_torsion_scene(p, ivert, st)
+        call t%check('mass centre off the bisector refused', st%code == ERR_DECK .and. &
+                     index(st%msg, 'bisector') > 0)
+        p = pendulum_t()
+        p%btilde = reshape([-1.0_dp, -1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, sqrt(2.0_dp), &
+                            -1.0_dp, 1.0_dp, 0.0_dp], [3, 3])/sqrt(2.0_dp)
+        call check_torsion_scene(p, ivert, st)
+        call t%check('no vertical principal axis refused', st%code == ERR_DECK .and. &
+                     index(st%msg, 'principal axis') > 0)
+        call execute_command_line('mkdir -p build/test_floquet && sed "s/analyses = ''simulate''/'// &
+            'analyses = ''floquet''/" input/cylinder_l180.nml > build/test_floquet/unequal.nml')
+        call execute_command_line(exe//' build/test_floquet/unequal.nml --out build/test_floquet'// &
+                                  ' > /dev/null 2>&1', exitstat=ex)
+        call t%check('floquet on unequal cables: exit 2', ex == ERR_DECK)
+    end subroutine test_refusal
+
+end module test_floquet
