@@ -66,9 +66,15 @@ test: $(BIN)/run_tests $(BIN)/bifilar
 check:
 	$(MAKE) CHECK=1 test
 
-bench: $(BIN)/bench_integrator $(BIN)/bifilar
-	mkdir -p output
+$(BIN)/bench_bifilar: tests/bench_bifilar.f90 $(LIB_OBJ) | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+
+bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bifilar
+	mkdir -p output build/bench
 	$(BIN)/bench_integrator output/bench_integrator.dat
+	$(BIN)/bench_bifilar output/bench_bifilar.dat
+	@echo "100 x 100 stability chart (tests/bench/chart_cylinder.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}):"
+	$(BIN)/bifilar tests/bench/chart_cylinder.nml --out build/bench 2>/dev/null
 
 DECKS = $(wildcard input/*.nml)
 run: deps $(BIN)/bifilar

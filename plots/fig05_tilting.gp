@@ -2,7 +2,7 @@
 # usage (from the repository root): gnuplot -c plots/fig05_tilting.gp [DATA] [PNG]
 data = (ARGC >= 1) ? ARG1 : 'output/cylinder_l180.dat'
 png  = (ARGC >= 2) ? ARG2 : 'plots/fig05_tilting.png'
-load 'plots/style.gp'
+load 'plots/style.gpi'
 set output png
 set title "Fig. 5  Tilting; l = 2b, l' = 1.8b"
 set ylabel "tilting {/Symbol q}_1 (deg)"

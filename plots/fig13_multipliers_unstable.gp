@@ -4,7 +4,7 @@
 # usage (from the repository root): gnuplot -c plots/fig13_multipliers_unstable.gp [FLOQUET] [PNG]
 data = (ARGC >= 1) ? ARG1 : 'output/box_unstable.floquet'
 png  = (ARGC >= 2) ? ARG2 : 'plots/fig13_multipliers_unstable.png'
-load 'plots/style.gp'
+load 'plots/style.gpi'
 set output png
 mods = system("awk '/^max_modulus/{print $3}' ".data)
 set title sprintf("Fig. 13  Floquet multipliers, unstable suspension: largest |{/Symbol l}| = %.4g", real(mods))

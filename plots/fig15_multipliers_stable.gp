@@ -4,7 +4,7 @@
 # usage (from the repository root): gnuplot -c plots/fig15_multipliers_stable.gp [FLOQUET] [PNG]
 data = (ARGC >= 1) ? ARG1 : 'output/box_stable.floquet'
 png  = (ARGC >= 2) ? ARG2 : 'plots/fig15_multipliers_stable.png'
-load 'plots/style.gp'
+load 'plots/style.gpi'
 set output png
 mods = system("awk '/^max_modulus/{print $3}' ".data)
 set title sprintf("Fig. 15  Floquet multipliers, stable suspension: largest |{/Symbol l}| = %.4g", real(mods))

@@ -2,7 +2,7 @@
 # usage (from the repository root): gnuplot -c plots/fig16_stable_tilting.gp [DATA] [PNG]
 data = (ARGC >= 1) ? ARG1 : 'output/box_stable.dat'
 png  = (ARGC >= 2) ? ARG2 : 'plots/fig16_stable_tilting.png'
-load 'plots/style.gp'
+load 'plots/style.gpi'
 set output png
 set title "Fig. 16  Stable tilting: parallelepiped, 45{/Symbol \260} torsion, {/Symbol q}_1(0) = 0.01 rad"
 set ylabel 'tilting {/Symbol q}_1 (deg)'

@@ -3,7 +3,7 @@
 # usage (from the repository root): gnuplot -c plots/torsion_symmetric.gp [DATA] [PNG]
 data = (ARGC >= 1) ? ARG1 : 'output/cylinder_torsion.dat'
 png  = (ARGC >= 2) ? ARG2 : 'plots/torsion_symmetric.png'
-load 'plots/style.gp'
+load 'plots/style.gpi'
 set output png
 set title "Pure torsion; l = l' = 2b (equal cables, symmetric cylinder)"
 set ylabel 'angle (deg)'

@@ -19,7 +19,7 @@ module floquet
     use bifilar_model, only: chart_accelerations, chart_state, chart_energy, chart_constraint, &
                              NSTATE
     use lsoda, only: lsoda_t, lsoda_stats_t
-    use lapack_wrap, only: la_eig
+    use lapack_wrap, only: la_eig, la_lu_factor, la_lu_solve
     implicit none
     private
 
@@ -243,22 +243,32 @@ contains
     end function variational_has_jacobian
 
     !> Monodromy H(t*) over one period from the chart state y0, as the product of `nseg`
-    !! segment matrices (each integrated from H = I).
-    subroutine monodromy(p, y0, period, nseg, rtol, h, yend, nsteps, nrhs, stat)
+    !! segment matrices (each integrated from H = I).  By default only half a period is
+    !! integrated and the reversibility of the equations gives the other half (see below);
+    !! `full = .true.` integrates the whole period.
+    subroutine monodromy(p, y0, period, nseg, rtol, h, yend, nsteps, nrhs, stat, full)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
-        real(dp), intent(in) :: y0(NSTATE)      !! start of the orbit (chart state)
+        real(dp), intent(in) :: y0(NSTATE)      !! start of the orbit: a turning point, at rest
         real(dp), intent(in) :: period          !! t*
         integer, intent(in) :: nseg             !! shooting segments (>= 1)
         real(dp), intent(in) :: rtol            !! integrator tolerance
         real(dp), intent(out) :: h(NSTATE, NSTATE)  !! monodromy matrix
-        real(dp), intent(out) :: yend(NSTATE)   !! state after one period
+        real(dp), intent(out) :: yend(NSTATE)   !! state after one period (R y(t*/2) R-mirrored
+                                                !! when the half period is used)
         integer, intent(out) :: nsteps, nrhs    !! integrator work
         type(status_t), intent(out) :: stat
+        logical, intent(in), optional :: full   !! integrate the whole period (default: half)
         type(variational_t) :: sys
         type(lsoda_t) :: s
         type(lsoda_stats_t) :: st
-        real(dp) :: y(NV), eye(NSTATE, NSTATE), t0, t1
-        integer :: k, j
+        real(dp) :: y(NV), eye(NSTATE, NSTATE), t0, t1, tend, lu(NSTATE, NSTATE), x(NSTATE)
+        real(dp) :: rr(NSTATE), hinv(NSTATE, NSTATE)
+        integer :: k, j, ipiv(NSTATE)
+        logical :: whole
+        whole = .false.
+        if (present(full)) whole = full
+        tend = period
+        if (.not. whole) tend = 0.5_dp*period
         sys%p = p
         eye = 0.0_dp
         do j = 1, NSTATE
@@ -269,8 +279,8 @@ contains
         nsteps = 0
         nrhs = 0
         do k = 1, nseg
-            t0 = period*(k - 1)/nseg
-            t1 = period*k/nseg
+            t0 = tend*(k - 1)/nseg
+            t1 = tend*k/nseg
             y(NSTATE + 1:NV) = reshape(eye, [NSTATE*NSTATE])
             call s%init(sys, t0, y, rtol, [rtol*1.0e-2_dp], stat, tcrit=t1)
             if (stat%code /= 0) return
@@ -282,6 +292,28 @@ contains
             h = matmul(reshape(y(NSTATE + 1:NV), [NSTATE, NSTATE]), h)
         end do
         yend = y(1:NSTATE)
+        if (whole) return
+        ! reversibility: the accelerations are even in the rates, so R Phi_t R = Phi_-t with
+        ! R = diag(I, -I); y0 and y(t*/2) are turning points at rest (R y = y), hence
+        ! H(t*) = R H(t*/2)^-1 R H(t*/2)
+        rr = [(1.0_dp, j=1, 5), (-1.0_dp, j=1, 5)]
+        lu = h
+        call la_lu_factor(lu, ipiv, stat)
+        if (stat%code /= 0) return
+        do j = 1, NSTATE
+            x = 0.0_dp
+            x(j) = 1.0_dp
+            call la_lu_solve(lu, ipiv, x, stat)
+            if (stat%code /= 0) return
+            hinv(:, j) = x
+        end do
+        do j = 1, NSTATE
+            hinv(j, :) = rr(j)*hinv(j, :)*rr
+        end do
+        h = matmul(hinv, h)
+        ! by the same symmetry the orbit closes exactly when y(t*/2) is at rest: its rates are
+        ! the closure error (reported through yend - y0)
+        yend = y0 + [(0.0_dp, j=1, 5), y(NSTATE/2 + 1:NSTATE)]
     end subroutine monodromy
 
     !> The whole analysis at torsion amplitude `amp` (rad).

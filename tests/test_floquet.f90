@@ -8,7 +8,7 @@ module test_floquet
     use bifilar_model, only: bifilar_t, chart_accelerations, NSTATE
     use lsoda, only: lsoda_t
     use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, torsion_period, &
-                       jacobian_z, multipliers_from_monodromy, torsion_start
+                       jacobian_z, multipliers_from_monodromy, torsion_start, monodromy
     use paper_claims, only: rest_frequencies
     use deck, only: deck_t, read_deck
     use simulate, only: make_pendulum
@@ -35,6 +35,7 @@ contains
             call test_small_amplitude(t)
         if (t%want('floquet: structure of the multipliers')) call test_structure(t)
         if (t%want('floquet: finite differences of the nonlinear flow')) call test_flow_fd(t)
+        if (t%want('floquet: half period by reversibility = whole period')) call test_half(t)
         if (t%want('floquet: a predicted instability is real')) call test_growth(t)
         if (t%want('floquet: scenes that are not pure torsion are refused')) &
             call test_refusal(t, exe)
@@ -258,6 +259,27 @@ contains
         call t%check_close('largest multiplier from flow differences', rfd%max_modulus, &
                            r%max_modulus, rtol=1.0e-5_dp)
     end subroutine test_flow_fd
+
+    !> The monodromy from half a period and the reversibility of the equations equals the one
+    !! integrated over the whole period, in several shooting segments.
+    subroutine test_half(t)
+        type(tester_t), intent(inout) :: t
+        type(pendulum_t) :: p
+        type(floquet_result_t) :: r
+        type(status_t) :: st
+        real(dp) :: y0(NSTATE), yend(NSTATE), hfull(NSTATE, NSTATE), hhalf(NSTATE, NSTATE)
+        integer :: ns, nr
+        p = deck_pendulum('input/box_unstable.nml')
+        call floquet_analysis(p, 45*deg, 1.0e-11_dp, 1, r, st)
+        call torsion_start(p, 45*deg, y0, st)
+        call monodromy(p, y0, r%period, 4, 1.0e-11_dp, hfull, yend, ns, nr, st, full=.true.)
+        call t%check('whole period in 4 segments integrates', st%code == 0)
+        call t%check_close('whole period closes the orbit', maxval(abs(yend - y0)), 0.0_dp, &
+                           atol=1.0e-8_dp)
+        call monodromy(p, y0, r%period, 1, 1.0e-11_dp, hhalf, yend, ns, nr, st)
+        call t%check_close('H(t*) by reversibility = H(t*) integrated (relative)', &
+                           maxval(abs(hfull - hhalf))/maxval(abs(hfull)), 0.0_dp, atol=1.0e-7_dp)
+    end subroutine test_half
 
     !> The unstable deck: a tiny tilt on pure torsion grows by the largest multiplier each
     !! period (early, linear phase); the stable deck's tilt stays small.
