@@ -51,6 +51,14 @@ module bifilar_model
         real(dp) :: q_axis = 0.0_dp             !! horizontal distance of E from the midpoint of CD
     end type motion_t
 
+    !> Positions, partial velocities and convective accelerations at one chart state.
+    type :: chart_kin_t
+        real(dp) :: n(3, 3), c(3), d(3)         !! direction cosines (8), points C and D
+        real(dp) :: jv(3, 5), cv(3)             !! R*: partial velocities, acceleration at qdd = 0
+        real(dp) :: jw(3, 5), cw(3), omega(3)   !! the same for the rotation; angular velocity
+        real(dp) :: jd(3, 5), cd(3)             !! the same for D
+    end type chart_kin_t
+
     public :: chart_state, paper_angles, chart_accelerations, paper_accelerations, evaluate
     public :: chart_positions, chart_energy, chart_constraint
 
@@ -72,11 +80,10 @@ contains
 
     !> Positions in the chart: C, D, the direction cosines, the cable direction e and the
     !! partial velocities / convective accelerations of R* and D.
-    pure subroutine chart_kinematics(p, y, n, c, d, jv, cv, jw, cw, omega, jd, cd)
+    pure subroutine chart_kinematics(p, y, k)
         type(pendulum_t), intent(in) :: p
-        real(dp), intent(in) :: y(10)
-        real(dp), intent(out) :: n(3, 3), c(3), d(3)
-        real(dp), intent(out) :: jv(3, 5), cv(3), jw(3, 5), cw(3), omega(3), jd(3, 5), cd(3)
+        real(dp), intent(in) :: y(:)
+        type(chart_kin_t), intent(out) :: k
         real(dp) :: th(5), thd(5), e(3), zeta, sd(2), econv(3), vb(3, 5), vdb(3, 5)
         real(dp) :: s4, c4, s5, c5, d4, d5
         integer :: j
@@ -85,35 +92,35 @@ contains
         e = cable_direction(y(2:3))
         zeta = -e(3)
         sd = y(7:8)
-        n = direction_cosines(th)
-        c = [0.0_dp, -p%big_b, 0.0_dp] + p%big_l*e
+        k%n = direction_cosines(th)
+        k%c = [0.0_dp, -p%big_b, 0.0_dp] + p%big_l*e
         ! the cable: e(sigma) and its second derivative at sigma'' = 0
         econv = [0.0_dp, 0.0_dp, dot_product(sd, sd)/zeta + dot_product(y(2:3), sd)**2/zeta**3]
         ! body part of eqs. (24), (27): columns 1, 4, 5 (theta_2, theta_3 do not enter them)
         vb = v_coeffs(p, th)
         vdb = vdot_coeffs(p, th, thd)
-        jv(:, 1) = vb(:, 1)
-        jv(:, 2) = p%big_l*[1.0_dp, 0.0_dp, y(2)/zeta]
-        jv(:, 3) = p%big_l*[0.0_dp, 1.0_dp, y(3)/zeta]
-        jv(:, 4) = vb(:, 4)
-        jv(:, 5) = vb(:, 5)
-        cv = p%big_l*econv
+        k%jv(:, 1) = vb(:, 1)
+        k%jv(:, 2) = p%big_l*[1.0_dp, 0.0_dp, y(2)/zeta]
+        k%jv(:, 3) = p%big_l*[0.0_dp, 1.0_dp, y(3)/zeta]
+        k%jv(:, 4) = vb(:, 4)
+        k%jv(:, 5) = vb(:, 5)
+        k%cv = p%big_l*econv
         do j = 1, 5
             if (j == 2 .or. j == 3) cycle
-            cv = cv + vdb(:, j)*thd(j)
+            k%cv = k%cv + vdb(:, j)*thd(j)
         end do
-        jw = omega_coeffs(th)
-        omega = matmul(jw, y(6:10))
-        cw = omega_dot_quadratic(th, thd)
+        k%jw = omega_coeffs(th)
+        k%omega = matmul(k%jw, y(6:10))
+        k%cw = omega_dot_quadratic(th, thd)
         ! D = C + (c5 s4, c5 c4, s5), eq. (1)
         s4 = sin(th(4)); c4 = cos(th(4)); s5 = sin(th(5)); c5 = cos(th(5))
         d4 = thd(4); d5 = thd(5)
-        d = c + [c5*s4, c5*c4, s5]
-        jd(:, 1) = 0.0_dp
-        jd(:, 2:3) = jv(:, 2:3)
-        jd(:, 4) = [c5*c4, -c5*s4, 0.0_dp]
-        jd(:, 5) = [-s5*s4, -s5*c4, c5]
-        cd = p%big_l*econv + [-c5*s4*(d4**2 + d5**2) - 2.0_dp*s5*c4*d4*d5, &
+        k%d = k%c + [c5*s4, c5*c4, s5]
+        k%jd(:, 1) = 0.0_dp
+        k%jd(:, 2:3) = k%jv(:, 2:3)
+        k%jd(:, 4) = [c5*c4, -c5*s4, 0.0_dp]
+        k%jd(:, 5) = [-s5*s4, -s5*c4, c5]
+        k%cd = p%big_l*econv + [-c5*s4*(d4**2 + d5**2) - 2.0_dp*s5*c4*d4*d5, &
                               -c5*c4*(d4**2 + d5**2) + 2.0_dp*s5*s4*d4*d5, -s5*d5**2]
     end subroutine chart_kinematics
 
@@ -163,25 +170,41 @@ contains
         real(dp), intent(in) :: y(:)            !! chart state (10)
         real(dp), intent(out) :: qdd(5)         !! chart accelerations
         type(status_t), intent(out) :: stat     !! ERR_MODEL: cable BC horizontal or worse
-        real(dp) :: n(3, 3), c(3), d(3), jv(3, 5), cv(3), jw(3, 5), cw(3), omega(3)
-        real(dp) :: jd(3, 5), cd(3), in(3, 3), gradg(5), vd(3), gconv
-        if (.not. (y(2)**2 + y(3)**2 < 0.999999_dp)) then
+        type(chart_kin_t) :: k
+        if (.not. chart_regular(y)) then
             qdd = 0.0_dp
             call set_error(stat, ERR_MODEL, 'cable BC has swung up to the horizontal (theta2 = 90 deg)')
             return
         end if
-        call chart_kinematics(p, y, n, c, d, jv, cv, jw, cw, omega, jd, cd)
-        in = inertia_dyadic(body_axes(p, n), p%inertia)
-        gradg = 2.0_dp*matmul(d, jd)
-        vd = matmul(jd, y(6:10))
-        gconv = 2.0_dp*(dot_product(vd, vd) + dot_product(d, cd))
+        call chart_kinematics(p, y, k)
+        call accelerations_from(p, y, k, qdd, stat)
+    end subroutine chart_accelerations
+
+    !> The chart is regular while the cable BC hangs below the horizontal.
+    pure logical function chart_regular(y)
+        real(dp), intent(in) :: y(:)            !! chart state
+        chart_regular = y(2)**2 + y(3)**2 < 0.999999_dp
+    end function chart_regular
+
+    !> Eq. (38) in the chart from the kinematics k of state y.
+    subroutine accelerations_from(p, y, k, qdd, stat)
+        type(pendulum_t), intent(in) :: p
+        real(dp), intent(in) :: y(:)
+        type(chart_kin_t), intent(in) :: k
+        real(dp), intent(out) :: qdd(5)
+        type(status_t), intent(out) :: stat
+        real(dp) :: in(3, 3), gradg(5), vd(3), gconv
+        in = inertia_dyadic(body_axes(p, k%n), p%inertia)
+        gradg = 2.0_dp*matmul(k%d, k%jd)
+        vd = matmul(k%jd, y(6:10))
+        gconv = 2.0_dp*(dot_product(vd, vd) + dot_product(k%d, k%cd))
         if (p%stab_rate > 0.0_dp) then
             ! Baumgarte: drift off G = 0 decays at rate a; nothing changes on G = G' = 0
-            gconv = gconv + 4.0_dp*p%stab_rate*dot_product(d, vd) &
-                    + p%stab_rate**2*(dot_product(d, d) - p%big_lp**2)
+            gconv = gconv + 4.0_dp*p%stab_rate*dot_product(k%d, vd) &
+                    + p%stab_rate**2*(dot_product(k%d, k%d) - p%big_lp**2)
         end if
-        call assemble_and_solve(jv, cv, jw, cw, omega, in, gradg, gconv, qdd, stat)
-    end subroutine chart_accelerations
+        call assemble_and_solve(k%jv, k%cv, k%jw, k%cw, k%omega, in, gradg, gconv, qdd, stat)
+    end subroutine accelerations_from
 
     !> Accelerations thddot_1..5 from eq. (38) in the paper's own coordinates, theta_5
     !! eliminated as in eqs. (5), (31).  Singular at theta_2 = 0 and beta_5 = 0.
@@ -274,25 +297,32 @@ contains
     pure real(dp) function chart_energy(p, y) result(en)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         real(dp), intent(in) :: y(10)           !! chart state
-        real(dp) :: n(3, 3), c(3), d(3), jv(3, 5), cv(3), jw(3, 5), cw(3), omega(3)
-        real(dp) :: jd(3, 5), cd(3), v(3), rs(3), in(3, 3)
-        call chart_kinematics(p, y, n, c, d, jv, cv, jw, cw, omega, jd, cd)
-        in = inertia_dyadic(body_axes(p, n), p%inertia)
-        v = matmul(jv, y(6:10))
-        rs = mass_centre(p, c, n)
-        en = 0.5_dp*dot_product(v, v) + 0.5_dp*dot_product(omega, matmul(in, omega)) + rs(3)
+        type(chart_kin_t) :: k
+        call chart_kinematics(p, y, k)
+        en = energy_from(p, y, k)
     end function chart_energy
+
+    !> Kinetic + potential energy from the kinematics k of state y.
+    pure real(dp) function energy_from(p, y, k) result(en)
+        type(pendulum_t), intent(in) :: p
+        real(dp), intent(in) :: y(10)
+        type(chart_kin_t), intent(in) :: k
+        real(dp) :: v(3), rs(3), in(3, 3)
+        in = inertia_dyadic(body_axes(p, k%n), p%inertia)
+        v = matmul(k%jv, y(6:10))
+        rs = mass_centre(p, k%c, k%n)
+        en = 0.5_dp*dot_product(v, v) + 0.5_dp*dot_product(k%omega, matmul(in, k%omega)) + rs(3)
+    end function energy_from
 
     !> The constraint eq. (2) and its rate at a chart state: g = |AD|^2 - L'^2, gdot = dg/dtau.
     pure subroutine chart_constraint(p, y, g, gdot)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         real(dp), intent(in) :: y(10)           !! chart state
         real(dp), intent(out) :: g, gdot
-        real(dp) :: n(3, 3), c(3), d(3), jv(3, 5), cv(3), jw(3, 5), cw(3), omega(3)
-        real(dp) :: jd(3, 5), cd(3)
-        call chart_kinematics(p, y, n, c, d, jv, cv, jw, cw, omega, jd, cd)
-        g = dot_product(d, d) - p%big_lp**2
-        gdot = 2.0_dp*dot_product(d, matmul(jd, y(6:10)))
+        type(chart_kin_t) :: k
+        call chart_kinematics(p, y, k)
+        g = dot_product(k%d, k%d) - p%big_lp**2
+        gdot = 2.0_dp*dot_product(k%d, matmul(k%jd, y(6:10)))
     end subroutine chart_constraint
 
     !> Everything reported about the motion at one instant: angles in the paper's terms,
@@ -304,31 +334,32 @@ contains
         real(dp), intent(in) :: th3_ref         !! previous theta_3 (branch choice)
         type(motion_t), intent(out) :: mo
         type(status_t), intent(out) :: stat
-        real(dp) :: n(3, 3), c(3), d(3), jv(3, 5), cv(3), jw(3, 5), cw(3), omega(3)
-        real(dp) :: jd(3, 5), cd(3), in(3, 3), e(3), ebc(3), ead(3), f(3), a11, a12, a22, r1, r2
-        real(dp) :: det, pe(3), mid(3)
+        type(chart_kin_t) :: k
+        real(dp) :: ebc(3), ead(3), f(3), a11, a12, a22, r1, r2, det, pe(3), mid(3)
         call paper_angles(y, th3_ref, mo%th, mo%thd)
-        call chart_accelerations(p, y, mo%qdd, stat)
+        if (.not. chart_regular(y)) then
+            call set_error(stat, ERR_MODEL, 'cable BC has swung up to the horizontal (theta2 = 90 deg)')
+            return
+        end if
+        call chart_kinematics(p, y, k)
+        call accelerations_from(p, y, k, mo%qdd, stat)
         if (stat%code /= 0) return
-        call chart_kinematics(p, y, n, c, d, jv, cv, jw, cw, omega, jd, cd)
-        mo%frame = body_axes(p, n)
-        in = inertia_dyadic(mo%frame, p%inertia)
-        mo%rstar = mass_centre(p, c, n)
-        mo%vstar = matmul(jv, y(6:10))
-        mo%astar = matmul(jv, mo%qdd) + cv
-        mo%omega = omega
-        mo%alpha = matmul(jw, mo%qdd) + cw
-        mo%energy = chart_energy(p, y)
-        mo%residual = norm2(d) - p%big_lp
+        mo%frame = body_axes(p, k%n)
+        mo%rstar = mass_centre(p, k%c, k%n)
+        mo%vstar = matmul(k%jv, y(6:10))
+        mo%astar = matmul(k%jv, mo%qdd) + k%cv
+        mo%omega = k%omega
+        mo%alpha = matmul(k%jw, mo%qdd) + k%cw
+        mo%energy = energy_from(p, y, k)
+        mo%residual = norm2(k%d) - p%big_lp
         ! side-sway: O = (0, -B/2, 0); E below the midpoint of CD
-        pe = point_e(p, c, n)
-        mid = c - 0.5_dp*n(3, :)
+        pe = point_e(p, k%c, k%n)
+        mid = k%c - 0.5_dp*k%n(3, :)
         mo%q_sway = sqrt(pe(1)**2 + (pe(2) + 0.5_dp*p%big_b)**2)
         mo%q_axis = sqrt((pe(1) - mid(1))**2 + (pe(2) - mid(2))**2)
         ! tensions: least squares of [ebc ead] T = -(a + n3)
-        e = cable_direction(y(2:3))
-        ebc = e
-        ead = d/norm2(d)
+        ebc = cable_direction(y(2:3))
+        ead = k%d/norm2(k%d)
         f = -(mo%astar + [0.0_dp, 0.0_dp, 1.0_dp])
         a11 = dot_product(ebc, ebc); a12 = dot_product(ebc, ead); a22 = dot_product(ead, ead)
         r1 = dot_product(ebc, f); r2 = dot_product(ead, f)

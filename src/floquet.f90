@@ -163,40 +163,43 @@ contains
         real(dp), intent(in) :: y(NSTATE)       !! chart state
         real(dp), intent(out) :: z(NSTATE, NSTATE)
         type(status_t), intent(out) :: stat
-        real(dp) :: h, yp(NSTATE), a1(5), a2(5), a3(5), a4(5)
+        real(dp) :: h, a1(5), a2(5), a3(5), a4(5)
         integer :: j
         z = 0.0_dp
         do j = 1, 5
             z(j, j + 5) = 1.0_dp
         end do
         do j = 1, NSTATE
-            yp = y
             if (j <= 5) then
                 h = 5.0e-4_dp*max(1.0_dp, abs(y(j)))
-                yp(j) = y(j) + h
-                call chart_accelerations(p, yp, a1, stat)
-                if (stat%code /= 0) return
-                yp(j) = y(j) - h
-                call chart_accelerations(p, yp, a2, stat)
-                if (stat%code /= 0) return
-                yp(j) = y(j) + 2*h
-                call chart_accelerations(p, yp, a3, stat)
-                if (stat%code /= 0) return
-                yp(j) = y(j) - 2*h
-                call chart_accelerations(p, yp, a4, stat)
-                if (stat%code /= 0) return
+                call at(j, h, a1)
+                call at(j, -h, a2)
+                call at(j, 2*h, a3)
+                call at(j, -2*h, a4)
                 z(6:10, j) = (8*(a1 - a2) - (a3 - a4))/(12*h)
             else
                 h = max(1.0_dp, abs(y(j)))
-                yp(j) = y(j) + h
-                call chart_accelerations(p, yp, a1, stat)
-                if (stat%code /= 0) return
-                yp(j) = y(j) - h
-                call chart_accelerations(p, yp, a2, stat)
-                if (stat%code /= 0) return
+                call at(j, h, a1)
+                call at(j, -h, a2)
                 z(6:10, j) = (a1 - a2)/(2*h)
             end if
+            if (stat%code /= 0) return
         end do
+    contains
+        !> Accelerations with y_j moved by dy (a status already set is kept).
+        subroutine at(jj, dy, acc)
+            integer, intent(in) :: jj
+            real(dp), intent(in) :: dy
+            real(dp), intent(out) :: acc(5)
+            real(dp) :: yp(NSTATE)
+            type(status_t) :: st
+            acc = 0.0_dp
+            if (stat%code /= 0) return
+            yp = y
+            yp(jj) = y(jj) + dy
+            call chart_accelerations(p, yp, acc, st)
+            if (st%code /= 0) stat = st
+        end subroutine at
     end subroutine jacobian_z
 
     !> Orbit and dH/dt = Z H together: y(1:10) the state, y(11:110) H by columns.

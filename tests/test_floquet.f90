@@ -3,7 +3,6 @@ module test_floquet
     use kinds, only: dp, pi, deg
     use status, only: status_t, ERR_DECK
     use testing, only: tester_t
-    use ode_system, only: ode_system_t
     use geometry, only: pendulum_t
     use bifilar_model, only: bifilar_t, chart_accelerations, NSTATE
     use lsoda, only: lsoda_t
@@ -11,18 +10,12 @@ module test_floquet
                        jacobian_z, multipliers_from_monodromy, torsion_start, monodromy
     use paper_claims, only: rest_frequencies
     use deck, only: deck_t, read_deck
+    use test_model, only: torsion_1dof_t
     use simulate, only: make_pendulum
     implicit none
     private
 
     public :: run_floquet_tests
-
-    !> Pure torsion in one degree of freedom, eqs. (45)-(48) with b = b' (scaled units).
-    type, extends(ode_system_t) :: torsion_1dof_t
-        real(dp) :: i1 = 0.125_dp, l = 2.0_dp
-    contains
-        procedure :: rhs => torsion_rhs
-    end type torsion_1dof_t
 
 contains
 
@@ -40,23 +33,6 @@ contains
         if (t%want('floquet: scenes that are not pure torsion are refused')) &
             call test_refusal(t, exe)
     end subroutine run_floquet_tests
-
-    subroutine torsion_rhs(sys, t, y, ydot, stat)
-        class(torsion_1dof_t), intent(inout) :: sys
-        real(dp), intent(in) :: t, y(:)
-        real(dp), intent(out) :: ydot(:)
-        type(status_t), intent(out) :: stat
-        real(dp) :: f, n1, n2, n3, k
-        if (.false.) ydot(1) = t
-        k = 1.0_dp/(4*sys%l)
-        f = 1.0_dp/(1.0_dp - (sin(y(1)/2)/sys%l)**2)
-        n1 = -1.0_dp/(sys%i1 + f*k**2*sin(y(1))**2)
-        n2 = f*k**2*(cos(y(1)) + f*(1.0_dp/(2*sys%l))**2*sin(y(1))**2)*sin(y(1))
-        n3 = sqrt(f)*k*sin(y(1))
-        ydot(1) = y(2)
-        ydot(2) = n1*(n2*y(2)**2 + n3)
-        stat%code = 0
-    end subroutine torsion_rhs
 
     function deck_pendulum(path) result(p)
         character(len=*), intent(in) :: path

@@ -18,10 +18,10 @@ module test_model
     implicit none
     private
 
-    public :: run_model_tests
+    public :: run_model_tests, torsion_1dof_t
 
     !> One-degree-of-freedom pure torsion, eqs. (45)-(48), scaled (m = g = b' = 1, b = b').
-    type, extends(ode_system_t) :: torsion_1dof_t
+    type, extends(ode_system_t), public :: torsion_1dof_t
         real(dp) :: i1 = 0.125_dp, l = 2.0_dp, b = 1.0_dp
     contains
         procedure :: rhs => torsion_rhs
