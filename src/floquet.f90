@@ -13,13 +13,13 @@
 !! the chart right-hand side by central differences (see jacobian_z).
 module floquet
     use kinds, only: dp, pi
-    use status, only: status_t, set_error, ERR_DECK
+    use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC
     use ode_system, only: ode_system_t
     use geometry, only: pendulum_t, raised_angles, solve_theta5
     use bifilar_model, only: chart_accelerations, chart_state, chart_energy, chart_constraint, &
                              NSTATE
     use lsoda, only: lsoda_t, lsoda_stats_t
-    use lapack_wrap, only: la_eig, la_lu_factor, la_lu_solve
+    use lapack_wrap, only: la_eig, la_geig, la_lu_factor, la_lu_solve
     implicit none
     private
 
@@ -50,7 +50,7 @@ module floquet
     real(dp), parameter, public :: STABILITY_MARGIN = 1.0e-6_dp
 
     public :: check_torsion_scene, torsion_period, jacobian_z, monodromy, floquet_analysis
-    public :: multipliers_from_monodromy, torsion_start
+    public :: multipliers_from_monodromy, torsion_start, pencil_multipliers
 
 contains
 
@@ -249,7 +249,7 @@ contains
     !! segment matrices (each integrated from H = I).  By default only half a period is
     !! integrated and the reversibility of the equations gives the other half (see below);
     !! `full = .true.` integrates the whole period.
-    subroutine monodromy(p, y0, period, nseg, rtol, h, yend, nsteps, nrhs, stat, full)
+    subroutine monodromy(p, y0, period, nseg, rtol, h, yend, nsteps, nrhs, stat, full, half, yhalf)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         real(dp), intent(in) :: y0(NSTATE)      !! start of the orbit: a turning point, at rest
         real(dp), intent(in) :: period          !! t*
@@ -261,6 +261,8 @@ contains
         integer, intent(out) :: nsteps, nrhs    !! integrator work
         type(status_t), intent(out) :: stat
         logical, intent(in), optional :: full   !! integrate the whole period (default: half)
+        real(dp), intent(out), optional :: half(NSTATE, NSTATE)  !! H(t*/2) (half-period path)
+        real(dp), intent(out), optional :: yhalf(NSTATE)         !! y(t*/2) (half-period path)
         type(variational_t) :: sys
         type(lsoda_t) :: s
         type(lsoda_stats_t) :: st
@@ -296,6 +298,8 @@ contains
         end do
         yend = y(1:NSTATE)
         if (whole) return
+        if (present(half)) half = h
+        if (present(yhalf)) yhalf = y(1:NSTATE)
         ! reversibility: the accelerations are even in the rates, so R Phi_t R = Phi_-t with
         ! R = diag(I, -I); y0 and y(t*/2) are turning points at rest (R y = y), hence
         ! H(t*) = R H(t*/2)^-1 R H(t*/2)
@@ -339,7 +343,8 @@ contains
         type(floquet_result_t), intent(out) :: res
         type(status_t), intent(out) :: stat     !! ERR_DECK (scene), ERR_NUMERIC
         type(pendulum_t) :: p
-        real(dp) :: y0(NSTATE), yend(NSTATE), h(NSTATE, NSTATE)
+        real(dp) :: y0(NSTATE), yend(NSTATE), h(NSTATE, NSTATE), hh(NSTATE, NSTATE)
+        real(dp) :: yh(NSTATE)
         integer :: ivert
         p = p_in
         p%stab_rate = 0.0_dp      ! the variational equations of the model itself
@@ -350,10 +355,12 @@ contains
         call torsion_start(p, amp, y0, stat)
         if (stat%code /= 0) return
         call monodromy(p, y0, res%period, nseg, rtol, h, yend, res%steps, &
-                       res%rhs_evaluations, stat)
+                       res%rhs_evaluations, stat, half=hh, yhalf=yh)
         if (stat%code /= 0) return
         res%orbit_closure = maxval(abs(yend - y0))
         call multipliers_from_monodromy(p, y0, res%period, h, res, stat)
+        if (stat%code /= 0) return
+        call reversible_multipliers(p, y0, yh, hh, res, stat)
     end subroutine floquet_analysis
 
     !> The chart state of pure torsion at its turning point theta4 = amp (at rest).
@@ -370,6 +377,79 @@ contains
         if (stat%code /= 0) return
         y0 = chart_state(th, [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp])
     end subroutine torsion_start
+
+    !> Eigenvalues of R0 N^-1 Rh N (R0, Rh involutions) as the generalized eigenvalues of the
+    !! pencil (Rh N, N R0) by QZ, sorted by decreasing modulus; never forms N^-1 or the product.
+    subroutine pencil_multipliers(n, r0, rh, lam, stat)
+        real(dp), intent(in) :: n(:, :)         !! half-period map (m x m)
+        real(dp), intent(in) :: r0(:, :), rh(:, :)  !! the reversing involutions at both ends
+        complex(dp), intent(out) :: lam(:)      !! the m multipliers
+        type(status_t), intent(out) :: stat     !! ERR_NUMERIC: QZ failed or infinite multiplier
+        complex(dp) :: alpha(size(n, 1))
+        real(dp) :: beta(size(n, 1))
+        integer :: k, i, idx(size(n, 1)), m
+        m = size(n, 1)
+        lam = (0.0_dp, 0.0_dp)
+        call la_geig(matmul(rh, n), matmul(n, r0), alpha, beta, stat)
+        if (stat%code /= 0) return
+        if (any(beta == 0.0_dp)) then
+            call set_error(stat, ERR_NUMERIC, 'floquet: singular half-period map (infinite '// &
+                           'multiplier); the orbit is not a clean torsion of this scene')
+            return
+        end if
+        idx = [(k, k=1, m)]
+        do k = 2, m
+            i = k
+            do while (i > 1)
+                if (abs(alpha(idx(i))/beta(idx(i))) <= abs(alpha(idx(i - 1))/beta(idx(i - 1)))) exit
+                idx([i - 1, i]) = idx([i, i - 1])
+                i = i - 1
+            end do
+        end do
+        lam = alpha(idx)/beta(idx)
+    end subroutine pencil_multipliers
+
+    !> The six non-trivial multipliers from the half-period matrix N = H(t*/2) without forming
+    !! the product: with R = diag(I, -I), H(t*) = R N^-1 R N; reduced to S (as in
+    !! multipliers_from_monodromy) at both turning points y0 and y(t*/2), both at rest and so
+    !! R-invariant, M6 = R0 N6^-1 Rh N6, whose eigenvalues are those of the pencil
+    !! (Rh N6, N6 R0), computed by QZ (LAPACK DGGEV).  The pencil is exchanged with its
+    !! R-conjugate by lambda -> 1/lambda, so small and large multipliers are computed alike:
+    !! the reciprocal partner of a multiplier of modulus 1e6 keeps its accuracy, where the
+    !! eigenvalues of the explicit product lose it.
+    subroutine reversible_multipliers(p, y0, yh, n, res, stat)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters (stab_rate 0)
+        real(dp), intent(in) :: y0(NSTATE)      !! turning point at t = 0
+        real(dp), intent(in) :: yh(NSTATE)      !! turning point at t*/2
+        real(dp), intent(in) :: n(NSTATE, NSTATE)  !! H(t*/2)
+        type(floquet_result_t), intent(inout) :: res
+        type(status_t), intent(out) :: stat
+        real(dp) :: r0w(NSTATE, 3), rhw(NSTATE, 3), f0(NSTATE), fh(NSTATE)
+        real(dp) :: u0(NSTATE, 6), uh(NSTATE, 6), ph(NSTATE, NSTATE), rr(NSTATE)
+        real(dp) :: n6(6, 6), r0(6, 6), rh(6, 6)
+        complex(dp) :: lam(6)
+        integer :: k
+        call structure_rows(p, y0, r0w, f0, stat)
+        if (stat%code /= 0) return
+        call structure_rows(p, yh, rhw, fh, stat)
+        if (stat%code /= 0) return
+        call complement_basis(reshape([r0w(:, 1), r0w(:, 2), r0w(:, 3), f0], [NSTATE, 4]), u0)
+        call complement_basis(reshape([rhw(:, 1), rhw(:, 2), rhw(:, 3), fh], [NSTATE, 4]), uh)
+        ph = 0.0_dp
+        do k = 1, NSTATE
+            ph(k, k) = 1.0_dp
+        end do
+        ph = ph - spread(fh, 2, NSTATE)*spread(fh, 1, NSTATE)/dot_product(fh, fh)
+        n6 = matmul(transpose(uh), matmul(ph, matmul(n, u0)))
+        rr = [(1.0_dp, k=1, 5), (-1.0_dp, k=1, 5)]
+        r0 = matmul(transpose(u0), spread(rr, 2, 6)*u0)
+        rh = matmul(transpose(uh), spread(rr, 2, 6)*uh)
+        call pencil_multipliers(n6, r0, rh, lam, stat)
+        if (stat%code /= 0) return
+        res%multipliers(1:6) = lam
+        res%max_modulus = maxval(abs(res%multipliers(1:6)))
+        res%stable = res%max_modulus <= 1.0_dp + STABILITY_MARGIN
+    end subroutine reversible_multipliers
 
     !> The multipliers of a monodromy matrix h of the chart form over the orbit through y0
     !! with period t* (see floquet_analysis): fills res%multipliers, trivial, max_modulus,

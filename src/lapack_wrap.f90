@@ -9,7 +9,7 @@ module lapack_wrap
     implicit none
     private
 
-    public :: la_solve, la_lu_factor, la_lu_solve, la_eig
+    public :: la_solve, la_lu_factor, la_lu_solve, la_eig, la_geig
 
     interface
         subroutine dgetf2(m, n, a, lda, ipiv, info)
@@ -41,6 +41,16 @@ module lapack_wrap
             real(dp), intent(out) :: wr(*), wi(*), vl(ldvl, *), vr(ldvr, *), work(*)
             integer, intent(out) :: info
         end subroutine dgeev
+        subroutine dggev(jobvl, jobvr, n, a, lda, b, ldb, alphar, alphai, beta, vl, ldvl, vr, &
+                         ldvr, work, lwork, info)
+            import :: dp
+            character(len=1), intent(in) :: jobvl, jobvr
+            integer, intent(in) :: n, lda, ldb, ldvl, ldvr, lwork
+            real(dp), intent(inout) :: a(lda, *), b(ldb, *)
+            real(dp), intent(out) :: alphar(*), alphai(*), beta(*), vl(ldvl, *), vr(ldvr, *)
+            real(dp), intent(out) :: work(*)
+            integer, intent(out) :: info
+        end subroutine dggev
     end interface
 
 contains
@@ -156,5 +166,46 @@ contains
         end if
         lam = cmplx(wr, wi, kind=dp)
     end subroutine la_eig
+
+    !> Generalized eigenvalues of the pencil (A, B): A v = lambda B v (LAPACK DGGEV, QZ,
+    !! no eigenvectors).  The pencil is never reduced to B^-1 A, so eigenvalues of very
+    !! different size are computed with a backward error relative to |A| and |B|.
+    !!
+    !! a, b [in]  real(dp)(n,n): the pencil (not changed: copies are reduced).
+    !! alpha [out] complex(dp)(n), beta [out] real(dp)(n): lambda = alpha/beta; beta = 0 for
+    !!             an infinite eigenvalue.  Conjugate pairs are adjacent.
+    !! stat [out]: ERR_NUMERIC on a shape mismatch or when QZ fails (INFO > 0).
+    subroutine la_geig(a, b, alpha, beta, stat)
+        real(dp), intent(in) :: a(:, :), b(:, :)
+        complex(dp), intent(out) :: alpha(:)
+        real(dp), intent(out) :: beta(:)
+        type(status_t), intent(out) :: stat
+        real(dp), allocatable :: ac(:, :), bc(:, :), work(:)
+        real(dp) :: ar(size(a, 1)), ai(size(a, 1)), vl(1, 1), vr(1, 1), wquery(1)
+        integer :: n, info, lwork
+        character(len=80) :: buf
+        n = size(a, 1)
+        alpha = (0.0_dp, 0.0_dp)
+        beta = 0.0_dp
+        if (size(a, 2) /= n .or. any(shape(b) /= [n, n]) .or. size(alpha) /= n .or. &
+            size(beta) /= n) then
+            call set_error(stat, ERR_NUMERIC, 'la_geig: pencil or result shapes disagree')
+            return
+        end if
+        allocate (ac(n, n), bc(n, n))
+        ac(:, :) = a
+        bc(:, :) = b
+        call dggev('N', 'N', n, ac, n, bc, n, ar, ai, beta, vl, 1, vr, 1, wquery, -1, info)
+        lwork = max(8*n, int(wquery(1)))
+        allocate (work(lwork))
+        call dggev('N', 'N', n, ac, n, bc, n, ar, ai, beta, vl, 1, vr, 1, work, lwork, info)
+        if (info /= 0) then
+            write (buf, '(a,i0)') 'la_geig (dggev): QZ iteration failed, info = ', info
+            if (info < 0) write (buf, '(a,i0)') 'la_geig (dggev): illegal argument ', -info
+            call set_error(stat, ERR_NUMERIC, trim(buf))
+            return
+        end if
+        alpha = cmplx(ar, ai, kind=dp)
+    end subroutine la_geig
 
 end module lapack_wrap

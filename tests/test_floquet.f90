@@ -7,8 +7,10 @@ module test_floquet
     use bifilar_model, only: bifilar_t, chart_accelerations, NSTATE
     use lsoda, only: lsoda_t
     use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, torsion_period, &
-                       jacobian_z, multipliers_from_monodromy, torsion_start, monodromy
+                       jacobian_z, multipliers_from_monodromy, torsion_start, monodromy, &
+                       pencil_multipliers
     use paper_claims, only: rest_frequencies
+    use lapack_wrap, only: la_eig, la_lu_factor, la_lu_solve
     use deck, only: deck_t, read_deck
     use test_model, only: torsion_1dof_t
     use simulate, only: make_pendulum
@@ -27,6 +29,7 @@ contains
         if (t%want('floquet: small amplitude against the natural frequencies at rest')) &
             call test_small_amplitude(t)
         if (t%want('floquet: structure of the multipliers')) call test_structure(t)
+        if (t%want('floquet: reciprocal partners up to modulus 1e6')) call test_pencil(t)
         if (t%want('floquet: finite differences of the nonlinear flow')) call test_flow_fd(t)
         if (t%want('floquet: half period by reversibility = whole period')) call test_half(t)
         if (t%want('floquet: a predicted instability is real')) call test_growth(t)
@@ -125,6 +128,94 @@ contains
         call t%check_close('multipliers -> exp(+-2 pi i w_k/w_t) at 0.2 deg', err, 0.0_dp, &
                            atol=1.0e-4_dp)
     end subroutine test_small_amplitude
+
+    !> The eigen-solve alone at moduli up to 1e6: a reversible half-period map with known
+    !! multipliers exp(+-2s) = 1e6, 1e-6 (hyperbolic), exp(+-2i phi) (elliptic) and 1e3, 1e-3,
+    !! hidden by random orthogonal changes of basis at both ends.  The pencil gives every
+    !! multiplier to 1e-9 relative and the reciprocal pairs to 1e-6; the explicit product
+    !! would lose the small partner (its error is reported for comparison).
+    subroutine test_pencil(t)
+        type(tester_t), intent(inout) :: t
+        real(dp) :: n(6, 6), r(6, 6), v0(6, 6), vh(6, 6), nn(6, 6), r0(6, 6), rh(6, 6), s1, s2, ph
+        real(dp) :: lu(6, 6), x(6), ninv(6, 6), m(6, 6), e, eprod
+        complex(dp) :: lam(6), exact(6), lp(6)
+        type(status_t) :: st
+        integer :: k, j, ipiv(6)
+        s1 = 0.5_dp*log(1.0e6_dp)      ! exp(2 s1) = 1e6
+        s2 = 0.5_dp*log(1.0e3_dp)
+        ph = 0.7_dp
+        ! coordinates (q1, q2, q3, p1, p2, p3); R = diag(1, 1, 1, -1, -1, -1)
+        n = 0.0_dp
+        r = 0.0_dp
+        do k = 1, 3
+            r(k, k) = 1.0_dp
+            r(k + 3, k + 3) = -1.0_dp
+        end do
+        call block(1, cosh(s1), sinh(s1), sinh(s1), cosh(s1))
+        call block(2, cosh(s2), sinh(s2), sinh(s2), cosh(s2))
+        call block(3, cos(ph), sin(ph), -sin(ph), cos(ph))
+        exact = [cmplx(1.0e6_dp, 0.0_dp, dp), cmplx(1.0e3_dp, 0.0_dp, dp), &
+                 exp(cmplx(0.0_dp, 2*ph, dp)), exp(cmplx(0.0_dp, -2*ph, dp)), &
+                 cmplx(1.0e-3_dp, 0.0_dp, dp), cmplx(1.0e-6_dp, 0.0_dp, dp)]
+        call random_orthogonal(v0, 3)
+        call random_orthogonal(vh, 7)
+        nn = matmul(vh, matmul(n, transpose(v0)))
+        r0 = matmul(v0, matmul(r, transpose(v0)))
+        rh = matmul(vh, matmul(r, transpose(vh)))
+        call pencil_multipliers(nn, r0, rh, lam, st)
+        call t%check('pencil QZ runs', st%code == 0)
+        e = 0.0_dp
+        do k = 1, 6
+            e = max(e, minval(abs(lam - exact(k)))/abs(exact(k)))
+        end do
+        call t%check_close('every multiplier to 1e-9 relative (1e6 ... 1e-6)', e, 0.0_dp, &
+                           atol=1.0e-9_dp)
+        call t%check_close('reciprocal pair 1e6 * 1e-6', abs(lam(1)*lam(6)), 1.0_dp, &
+                           atol=1.0e-6_dp)
+        ! the explicit product for comparison
+        lu = nn
+        call la_lu_factor(lu, ipiv, st)
+        do j = 1, 6
+            x = 0.0_dp
+            x(j) = 1.0_dp
+            call la_lu_solve(lu, ipiv, x, st)
+            ninv(:, j) = x
+        end do
+        m = matmul(r0, matmul(ninv, matmul(rh, nn)))
+        call la_eig(m, lp, st)
+        eprod = abs(minval(abs(lp))*1.0e6_dp - 1.0_dp)
+        write (*, '(a,es9.2,a,es9.2)') '   reciprocal-pair error at 1e6: pencil ', &
+            abs(abs(lam(1)*lam(6)) - 1.0_dp), ', explicit product + dgeev ', eprod
+    contains
+        subroutine block(i, a11, a12, a21, a22)
+            integer, intent(in) :: i
+            real(dp), intent(in) :: a11, a12, a21, a22
+            n(i, i) = a11
+            n(i, i + 3) = a12
+            n(i + 3, i) = a21
+            n(i + 3, i + 3) = a22
+        end subroutine block
+    end subroutine test_pencil
+
+    !> A reproducible random orthogonal matrix: Gram-Schmidt (twice) of a matrix filled by a
+    !! hash of the indices (fractional part of a scaled sine, full rank).
+    subroutine random_orthogonal(q, seed)
+        real(dp), intent(out) :: q(:, :)
+        integer, intent(in) :: seed
+        integer :: i, j, k, pass
+        do j = 1, size(q, 2)
+            do i = 1, size(q, 1)
+                q(i, j) = modulo(43758.5453_dp*sin(real(37*i + 101*j + 7*seed, dp)), 1.0_dp) &
+                          - 0.5_dp
+            end do
+            do pass = 1, 2
+                do k = 1, j - 1
+                    q(:, j) = q(:, j) - dot_product(q(:, k), q(:, j))*q(:, k)
+                end do
+            end do
+            q(:, j) = q(:, j)/norm2(q(:, j))
+        end do
+    end subroutine random_orthogonal
 
     !> Reciprocal pairs, trivial multipliers, product 1 for the cylinder and both boxes.
     subroutine test_structure(t)
