@@ -35,6 +35,7 @@ contains
         if (t%want('floquet: a predicted instability is real')) call test_growth(t)
         if (t%want('floquet: scenes that are not pure torsion are refused')) &
             call test_refusal(t, exe)
+        if (t%want('floquet: chart, serial and parallel')) call test_chart(t, exe)
     end subroutine run_floquet_tests
 
     function deck_pendulum(path) result(p)
@@ -216,6 +217,46 @@ contains
             q(:, j) = q(:, j)/norm2(q(:, j))
         end do
     end subroutine random_orthogonal
+
+    !> A small chart through the executable: the same file with 1 and 2 OpenMP threads, one
+    !! row per grid point, stable and unstable points both present, no NaN.
+    subroutine test_chart(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=*), parameter :: dir = 'build/test_floquet'
+        integer :: ex1, ex2, exc, u, ios, rows, nst, nun
+        real(dp) :: v(4)
+        character(len=512) :: line
+        call execute_command_line('mkdir -p '//dir//'/c1 '//dir//'/c2 && sed -e '// &
+            '"s/nx = 60/nx = 5/" -e "s/ny = 45/ny = 4/" -e "s/x_max = 8.0/x_max = 4.0/" '// &
+            'input/box_chart.nml > '//dir//'/chart_small.nml')
+        call execute_command_line('OMP_NUM_THREADS=1 '//exe//' '//dir//'/chart_small.nml --out '// &
+                                  dir//'/c1 > /dev/null 2>&1', exitstat=ex1)
+        call execute_command_line('OMP_NUM_THREADS=2 '//exe//' '//dir//'/chart_small.nml --out '// &
+                                  dir//'/c2 > /dev/null 2>&1', exitstat=ex2)
+        call t%check('chart runs with 1 and 2 threads', ex1 == 0 .and. ex2 == 0)
+        call execute_command_line('cmp -s '//dir//'/c1/chart_small.chart.dat '//dir// &
+                                  '/c2/chart_small.chart.dat', exitstat=exc)
+        call t%check('chart: 1 and 2 threads give the same file', exc == 0)
+        rows = 0
+        nst = 0
+        nun = 0
+        open (newunit=u, file=dir//'/c2/chart_small.chart.dat', status='old', action='read', &
+              iostat=ios)
+        do while (ios == 0)
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (line(1:1) == '#' .or. len_trim(line) == 0) cycle
+            read (line, *, iostat=ios) v
+            if (ios /= 0) exit
+            if (.not. all(abs(v) < huge(1.0_dp))) exit
+            rows = rows + 1
+            if (v(3) >= 0.0_dp .and. v(3) <= 1.0_dp + 1.0e-6_dp) nst = nst + 1
+            if (v(3) > 1.0_dp + 1.0e-6_dp) nun = nun + 1
+        end do
+        call t%check('chart: 20 finite rows', rows == 20)
+        call t%check('chart: stable and unstable points both found', nst > 0 .and. nun > 0)
+    end subroutine test_chart
 
     !> Reciprocal pairs, trivial multipliers, product 1 for the cylinder and both boxes.
     subroutine test_structure(t)
