@@ -30,7 +30,7 @@ LIBS = -llapack -lblas
 LIB_MODULES = kinds status lapack_wrap ode_system lsoda geometry kinematics gen_forces bifilar_model \
               deck output_io simulate floquet paper_claims stability
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
-TEST_MODULES = testing test_lsoda test_model test_deck test_floquet
+TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
 
 .PHONY: all test check run report bench deps clean

@@ -68,6 +68,8 @@ module deck
     character(len=*), parameter :: SPEC_CHART = &
         'x:c1 x_min:r1 x_max:r1 nx:i1 y:c1 y_min:r1 y_max:r1 ny:i1'
     real(dp), parameter :: RTOL_MIN = 1.0e-14_dp        !! smallest relative tolerance
+    real(dp), parameter :: ATOL_MIN = 1.0e-30_dp        !! smallest absolute tolerance
+    real(dp), parameter :: ATOL_MAX = 1.0_dp            !! largest absolute tolerance
     real(dp), parameter :: MAX_ROWS = 1.0e7_dp          !! largest tau_end/dtau_out
     real(dp), parameter :: ORTHO_TOL = 1.0e-9_dp        !! orthonormality of btilde
     real(dp), parameter :: TRIANGLE_SLACK = 1.0e-12_dp  !! relative slack of I1 <= I2 + I3
@@ -516,6 +518,12 @@ contains
         if (d%atol <= 0.0_dp) then
             call bad('integration', 'atol', rshort(d%atol), 'absolute tolerance must be > 0', &
                      'atol > 0')
+            return
+        end if
+        ! below ATOL_MIN the integrator's error weights overflow on a state component at 0
+        if (d%atol < ATOL_MIN .or. d%atol > ATOL_MAX) then
+            call bad('integration', 'atol', rshort(d%atol), 'absolute tolerance out of range', &
+                     '1e-30 <= atol <= 1 (radians and rad per unit tau)')
             return
         end if
 

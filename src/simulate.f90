@@ -7,8 +7,8 @@ module simulate
     use kinds, only: dp, deg
     use status, only: status_t, set_error, ERR_DECK, ERR_MODEL, ERR_NUMERIC
     use geometry, only: pendulum_t, raised_angles, solve_theta5, beta_coeffs
-    use bifilar_model, only: bifilar_t, motion_t, chart_state, evaluate, NSTATE
-    use lsoda, only: lsoda_t, lsoda_stats_t
+    use bifilar_model, only: bifilar_t, motion_t, chart_state, evaluate, paper_angles, NSTATE
+    use lsoda, only: lsoda_t, lsoda_stats_t, LSODA_ERR_TOO_MUCH_ACCURACY
     use deck, only: deck_t, deck_echo
     use output_io, only: atomic_open, atomic_commit, atomic_abort, write_kv, all_finite
     implicit none
@@ -26,7 +26,15 @@ module simulate
         real(dp) :: tau_reached = 0.0_dp
     end type run_summary_t
 
-    public :: make_pendulum, start_state, run_simulation
+    public :: make_pendulum, start_state, run_simulation, model_checks
+
+    !> Most internal steps between two output rows before the run is given up.
+    integer, parameter :: MAX_STEPS_PER_ROW = 500000
+    !> |cos theta5| below which line CD counts as vertical: the paper's body angles
+    !! theta1, theta4 turn about the same axis there and eq. (38) becomes singular.
+    real(dp), parameter :: COS5_MIN = 1.0e-3_dp
+    !> sin theta2 above which the cable BC counts as horizontal (chart limit).
+    real(dp), parameter :: SIN2_MAX = 0.9999_dp
 
     character(len=*), parameter :: COLUMNS = '# tau theta1 theta2 theta3 theta4 theta5 '// &
         'theta1_dot theta2_dot theta3_dot theta4_dot theta5_dot Q Q_axis T_BC T_AD '// &
@@ -111,9 +119,10 @@ contains
         type(lsoda_stats_t) :: st
         type(motion_t) :: mo
         type(status_t) :: wst
-        real(dp) :: y(NSTATE), th0(5), tau, e0, th3, row(17), t_cpu0, t_cpu1
+        real(dp) :: y(NSTATE), ystep(NSTATE), th0(5), tau, e0, th3, row(17), t_cpu0, t_cpu1
+        real(dp) :: t_prev
         character(len=:), allocatable :: datpath, sumpath
-        integer :: u, k, nout
+        integer :: u, k, nout, nstep_row
         character(len=300) :: buf
 
         call make_pendulum(d, sys%p, stat)
@@ -132,7 +141,8 @@ contains
         write (u, '(a)') COLUMNS
 
         call cpu_time(t_cpu0)
-        call solver%init(sys, 0.0_dp, y, d%rtol, [d%atol], stat)
+        ! tcrit = tau_end: no step goes past the end, so every step end checked lies in the run
+        call solver%init(sys, 0.0_dp, y, d%rtol, [d%atol], stat, tcrit=d%tau_end)
         if (stat%code /= 0) then
             call atomic_abort(u, datpath)
             return
@@ -141,12 +151,51 @@ contains
         if (nout*d%dtau_out < d%tau_end*(1.0_dp - 1.0e-12_dp)) nout = nout + 1
         th3 = th0(3)
         e0 = 0.0_dp
-        do k = 0, nout
+        k = 0
+        t_prev = 0.0_dp
+        nstep_row = 0
+        ! Step by step: the model's validity (taut cables, regular coordinates) is checked at
+        ! the end of every internal step; the rows come from the dense output.
+        do while (k <= nout)
             tau = min(k*d%dtau_out, d%tau_end)
-            if (k > 0) then
-                call solver%integrate(sys, tau, y, stat)
+            st = solver%stats()
+            if (k > 0 .and. st%t_current < tau) then
+                if (nstep_row >= MAX_STEPS_PER_ROW) then
+                    write (buf, '(a,i0,a,f0.4,a,es10.3,a)') 'the integrator took ', &
+                        MAX_STEPS_PER_ROW, ' steps without reaching tau = ', tau, &
+                        ' (last step ', abs(st%h_last), '): raise rtol/atol or shorten tau_end'
+                    call set_error(stat, ERR_NUMERIC, trim(buf))
+                    exit
+                end if
+                call solver%step(sys, stat, tout=d%tau_end)
+                st = solver%stats()
+                if (stat%code /= 0) then
+                    call explain_failure(solver, st%t_current, th3, stat)
+                    if (stat%code == LSODA_ERR_TOO_MUCH_ACCURACY) then
+                        write (buf, '(2(a,es9.2))') '; &integration rtol = ', d%rtol, &
+                            ', atol = ', d%atol
+                        stat%msg = stat%msg//trim(buf)//': raise them (rtol >= 3e-14 works '// &
+                            'for the paper scenes)'
+                    end if
+                    exit
+                end if
+                nstep_row = nstep_row + 1
+                call solver%dense(st%t_current, 0, ystep, stat)
                 if (stat%code /= 0) exit
+                call check_validity(sys%p, solver, t_prev, st%t_current, ystep, th3, stat)
+                if (stat%code /= 0) exit
+                t_prev = st%t_current
+                cycle
             end if
+            if (k > 0) then
+                if (tau >= st%t_current) then
+                    y = ystep
+                else
+                    call solver%dense(tau, 0, y, stat)
+                    if (stat%code /= 0) exit
+                end if
+            end if
+            nstep_row = 0
             call evaluate(sys%p, y, th3, mo, stat)
             if (stat%code /= 0) then
                 write (buf, '(a,f0.4)') ' at tau = ', tau
@@ -163,13 +212,8 @@ contains
                 call set_error(stat, ERR_NUMERIC, trim(buf))
                 exit
             end if
-            if (min(mo%t_bc, mo%t_ad) <= 0.0_dp) then
-                write (buf, '(a,f0.4,a,es10.3,a,es10.3,a)') 'cable goes slack at tau = ', tau, &
-                    ' (T_BC = ', mo%t_bc, ', T_AD = ', mo%t_ad, ' m g): the taut-cable model '// &
-                    'no longer holds; lower the amplitude or start speed, or lengthen the cables'
-                call set_error(stat, ERR_MODEL, trim(buf))
-                exit
-            end if
+            call model_checks(mo, tau, stat)
+            if (stat%code /= 0) exit
             write (u, '(f14.6,16es24.15e3)') row
             sm%rows = sm%rows + 1
             sm%tau_reached = tau
@@ -180,6 +224,7 @@ contains
             sm%max_abs_energy_error = max(sm%max_abs_energy_error, abs(mo%energy - e0))
             sm%max_abs_constraint_residual = max(sm%max_abs_constraint_residual, abs(mo%residual))
             sm%min_tension = min(sm%min_tension, mo%t_bc, mo%t_ad)
+            k = k + 1
         end do
         call cpu_time(t_cpu1)
         st = solver%stats()
@@ -217,5 +262,129 @@ contains
         call atomic_commit(u, sumpath, wst)
         stat = wst
     end subroutine run_simulation
+
+    !> The checks that end a run because the model no longer holds (ERR_MODEL): a slack
+    !! cable, line CD vertical (singular coordinates), cable BC near the horizontal.
+    subroutine model_checks(mo, tau, stat)
+        type(motion_t), intent(in) :: mo       !! the motion at tau
+        real(dp), intent(in) :: tau            !! time of mo
+        type(status_t), intent(out) :: stat    !! ERR_MODEL with a diagnostic, else OK
+        character(len=400) :: buf
+        stat%code = 0
+        if (min(mo%t_bc, mo%t_ad) <= 0.0_dp) then
+            write (buf, '(a,es10.3,a,es10.3,a)') 'cable goes slack at tau = '// &
+                tau_text(tau)//' (T_BC = ', mo%t_bc, ', T_AD = ', mo%t_ad, ' m g): the taut-cable model '// &
+                'no longer holds; lower the amplitude or start speed, or lengthen the cables'
+            call set_error(stat, ERR_MODEL, trim(buf))
+        else if (abs(cos(mo%th(5))) < COS5_MIN) then
+            write (buf, '(a,f0.4,a)') 'line CD turns vertical at tau = '//tau_text(tau)// &
+                ' (theta5 = ', mo%th(5)/deg, ' deg): the paper''s coordinates theta1, theta4 '// &
+                'are singular there; lower the amplitude, tilt or start speed'
+            call set_error(stat, ERR_MODEL, trim(buf))
+        else if (abs(sin(mo%th(2))) > SIN2_MAX) then
+            write (buf, '(a,f0.4,a)') 'cable BC swings up to the horizontal at tau = '// &
+                tau_text(tau)//' (theta2 = ', mo%th(2)/deg, ' deg): the model of a hanging cable no '// &
+                'longer holds; lower the amplitude or start speed'
+            call set_error(stat, ERR_MODEL, trim(buf))
+        end if
+    end subroutine model_checks
+
+    !> Model checks at the end of one internal step; when one fails, the tau where it first
+    !! fails is located in the step (bisection on the dense output) for the diagnostic.
+    subroutine check_validity(p, solver, t0, t1, y1, th3, stat)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters
+        type(lsoda_t), intent(in) :: solver     !! after the step
+        real(dp), intent(in) :: t0, t1          !! previous checked time (valid), step end
+        real(dp), intent(in) :: y1(NSTATE)      !! state at t1
+        real(dp), intent(in) :: th3             !! theta3 of the last row (branch choice)
+        type(status_t), intent(out) :: stat     !! ERR_MODEL (or the evaluation's failure)
+        type(motion_t) :: mo
+        type(status_t) :: s2
+        real(dp) :: a, b, m, ym(NSTATE), lo
+        integer :: it
+        call evaluate(p, y1, th3, mo, stat)
+        if (stat%code /= 0) then
+            call explain_failure_at(y1, th3, t1, stat)
+            return
+        end if
+        call model_checks(mo, t1, stat)
+        if (stat%code == 0) return
+        ! locate the first failure within [max(t0, t1 - h), t1]
+        st_h: block
+            type(lsoda_stats_t) :: st
+            st = solver%stats()
+            lo = max(t0, t1 - abs(st%h_last))
+        end block st_h
+        a = lo
+        b = t1
+        do it = 1, 40
+            m = 0.5_dp*(a + b)
+            call solver%dense(m, 0, ym, s2)
+            if (s2%code /= 0) exit
+            call evaluate(p, ym, th3, mo, s2)
+            if (s2%code == 0) call model_checks(mo, m, s2)
+            if (s2%code == 0) then
+                a = m
+            else
+                b = m
+            end if
+        end do
+        call solver%dense(b, 0, ym, s2)
+        if (s2%code == 0) call evaluate(p, ym, th3, mo, s2)
+        if (s2%code == 0) call model_checks(mo, b, s2)
+        if (s2%code == ERR_MODEL) stat = s2
+    end subroutine check_validity
+
+    !> An integrator failure: when the state reached is where the model's coordinates are
+    !! singular (line CD vertical, cable BC horizontal), say so (ERR_MODEL).
+    subroutine explain_failure(solver, t, th3, stat)
+        type(lsoda_t), intent(in) :: solver     !! after the failed step
+        real(dp), intent(in) :: t               !! time reached
+        real(dp), intent(in) :: th3             !! branch choice
+        type(status_t), intent(inout) :: stat   !! the failure; replaced when explained
+        real(dp) :: yr(NSTATE)
+        type(status_t) :: s2
+        call solver%dense(t, 0, yr, s2)
+        if (s2%code /= 0) return
+        call explain_failure_at(yr, th3, t, stat)
+    end subroutine explain_failure
+
+    !> As explain_failure, for a given state.
+    subroutine explain_failure_at(y, th3, t, stat)
+        real(dp), intent(in) :: y(NSTATE)       !! state reached
+        real(dp), intent(in) :: th3             !! branch choice
+        real(dp), intent(in) :: t               !! its time
+        type(status_t), intent(inout) :: stat   !! the failure; replaced when explained
+        type(motion_t) :: mo
+        real(dp) :: th(5), thd(5)
+        character(len=400) :: buf
+        if (.not. all_finite(y)) return
+        mo = motion_t()
+        call paper_angles(y, th3, th, thd)
+        mo%th = th
+        mo%t_bc = 1.0_dp
+        mo%t_ad = 1.0_dp
+        if (abs(cos(th(5))) < 10.0_dp*COS5_MIN .or. y(2)**2 + y(3)**2 > SIN2_MAX**2) then
+            call model_checks(mo, t, stat)
+            if (stat%code == 0) then
+                write (buf, '(a,f0.4,a,f0.4,a)') 'the equations of motion become '// &
+                    'singular at tau = '//tau_text(t)//' (theta5 = ', th(5)/deg, ' deg, theta2 = ', &
+                    th(2)/deg, ' deg): line CD or cable BC near their limits; lower the '// &
+                    'amplitude or start speed'
+                call set_error(stat, ERR_MODEL, trim(buf))
+            end if
+        end if
+    end subroutine explain_failure_at
+
+    !> tau for messages: 0.732039, 42.758454.
+    function tau_text(tau) result(s)
+        real(dp), intent(in) :: tau             !! time
+        character(len=:), allocatable :: s
+        character(len=40) :: buf
+        write (buf, '(f0.6)') tau
+        s = trim(adjustl(buf))
+        if (s(1:1) == '.') s = '0'//s
+        if (s(1:2) == '-.') s = '-0'//s(2:)
+    end function tau_text
 
 end module simulate

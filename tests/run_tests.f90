@@ -6,6 +6,7 @@ program run_tests
     use test_deck, only: run_deck_tests
     use test_model, only: run_model_tests
     use test_floquet, only: run_floquet_tests
+    use test_extreme, only: run_extreme_tests
     implicit none
     type(tester_t) :: t
     character(len=1024) :: exe, filter
@@ -19,5 +20,6 @@ program run_tests
     call run_deck_tests(t)
     call run_model_tests(t, trim(exe))
     call run_floquet_tests(t, trim(exe))
+    call run_extreme_tests(t, trim(exe))
     if (.not. t%summary()) error stop 1
 end program run_tests
