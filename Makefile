@@ -5,6 +5,7 @@
 #   make run        run every deck in input/, write output/, draw plots/*.png
 #   make report     output/report.md (paper's claims against ours)
 #   make bench      integrator and scene benchmarks (output/bench_*.dat)
+#   make memcheck   valgrind (leaks, invalid accesses) on bin/bifilar with a paper deck
 #   make deps       install what a fresh machine lacks (gnuplot)
 #   make clean      remove everything built or written
 
@@ -28,12 +29,12 @@ LIBS = -llapack -lblas
 
 # Library modules in dependency order (each only uses modules listed before it).
 LIB_MODULES = kinds status lapack_wrap ode_system lsoda geometry kinematics gen_forces bifilar_model \
-              deck output_io simulate floquet paper_claims stability
+              deck output_io simulate floquet paper_claims stability work_precision
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
-TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme
+TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme test_work_precision
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
 
-.PHONY: all test check run report bench deps clean
+.PHONY: all test check run report bench deps clean memcheck
 all: $(BIN)/bifilar
 
 $(BUILD) $(BIN):
@@ -69,12 +70,21 @@ check:
 $(BIN)/bench_bifilar: tests/bench_bifilar.f90 $(LIB_OBJ) | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
 
-bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bifilar
+$(BIN)/bench_wp: tests/bench_wp.f90 $(LIB_OBJ) | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+
+bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bifilar
 	mkdir -p output build/bench
 	$(BIN)/bench_integrator output/bench_integrator.dat
 	$(BIN)/bench_bifilar output/bench_bifilar.dat
+	$(BIN)/bench_wp
 	@echo "100 x 100 stability chart (tests/bench/chart_cylinder.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}):"
 	$(BIN)/bifilar tests/bench/chart_cylinder.nml --out build/bench 2>/dev/null
+
+memcheck: $(BIN)/bifilar
+	mkdir -p build/memcheck
+	valgrind --leak-check=full --error-exitcode=1 $(BIN)/bifilar input/cylinder_l195.nml \
+	  --out build/memcheck
 
 DECKS = $(wildcard input/*.nml)
 run: deps $(BIN)/bifilar

@@ -14,11 +14,13 @@ program bifilar
     use paper_claims, only: write_report
     use stability, only: run_floquet, run_chart
     use floquet, only: floquet_result_t
+    use work_precision, only: run_work_precision, wp_result_t
     implicit none
     type(deck_t) :: d
     type(status_t) :: stat
     type(run_summary_t) :: sm
     type(floquet_result_t) :: fr
+    type(wp_result_t) :: wp
     integer :: nstable
     real(dp) :: secs
     character(len=:), allocatable :: deck_path, outdir
@@ -57,10 +59,16 @@ program bifilar
     if (stat%code /= 0) call fail(stat)
 
     if (analysis_requested(d, 'work_precision')) then
-        stat%code = ERR_DECK
-        stat%msg = d%name//': &scene analyses = '''//trim(d%analyses)// &
-            ''': work_precision is not available in this version'
-        call fail(stat)
+        call run_work_precision(d, outdir, wp, stat)
+        if (stat%code /= 0) call fail(stat)
+        write (*, '(a)') d%name//': work_precision: wrote '//outdir//'/'//d%name// &
+            '.wp.dat and .wp_rk4.dat'
+        write (*, '(a10,a12,a10,a12,a12)') 'rtol', 'cpu s', 'rhs', 'err theta', 'err Q'
+        do i = 1, size(wp%lsoda)
+            if (wp%lsoda(i)%ok) write (*, '(es10.1,es12.3,i10,2es12.3)') wp%lsoda(i)%rtol, &
+                wp%lsoda(i)%cpu_seconds, wp%lsoda(i)%rhs_evaluations, wp%lsoda(i)%error_theta, &
+                wp%lsoda(i)%error_q
+        end do
     end if
     if (analysis_requested(d, 'floquet')) then
         call run_floquet(d, outdir, fr, stat)
@@ -81,6 +89,8 @@ program bifilar
             ' s, steps ', sm%steps, ', rhs ', sm%rhs_evaluations, ', max |dE| ', &
             sm%max_abs_energy_error, ', max |residual| ', sm%max_abs_constraint_residual
     end if
+    ! main-program variables are never freed by the run-time library: free them (valgrind)
+    deallocate (deck_path, outdir)
 
 contains
 

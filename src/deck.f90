@@ -1234,8 +1234,11 @@ contains
         if (fixed) then
             s = trim(adjustl(buf))
             if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
+            if (len(s) == 0) s = '0'
             if (s(1:1) == '.') s = '0'//s
-            if (s(1:2) == '-.') s = '-0'//s(2:)
+            if (len(s) >= 2) then
+                if (s(1:2) == '-.') s = '-0'//s(2:)
+            end if
         else
             do k = 0, 16
                 write (buf, '(es48.'//itoa(k)//'e3)') x

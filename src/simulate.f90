@@ -7,7 +7,8 @@ module simulate
     use kinds, only: dp, deg
     use status, only: status_t, set_error, ERR_DECK, ERR_MODEL, ERR_NUMERIC
     use geometry, only: pendulum_t, raised_angles, solve_theta5, beta_coeffs
-    use bifilar_model, only: bifilar_t, motion_t, chart_state, evaluate, paper_angles, NSTATE
+    use bifilar_model, only: bifilar_t, motion_t, chart_state, evaluate, paper_angles, &
+                             chart_positions, NSTATE
     use lsoda, only: lsoda_t, lsoda_stats_t, LSODA_ERR_TOO_MUCH_ACCURACY
     use deck, only: deck_t, deck_echo
     use output_io, only: atomic_open, atomic_commit, atomic_abort, write_kv, all_finite
@@ -24,9 +25,15 @@ module simulate
         real(dp) :: max_abs_energy_error = 0.0_dp, max_abs_constraint_residual = 0.0_dp
         real(dp) :: min_tension = huge(1.0_dp)
         real(dp) :: tau_reached = 0.0_dp
+        !> &integration error_estimate = .true.: largest differences from a rerun at a
+        !! tolerance 100 times tighter (angles in rad, Q over b'); -1 when not asked
+        real(dp) :: error_estimate_theta = -1.0_dp, error_estimate_q = -1.0_dp
+        real(dp) :: error_estimate_rtol = 0.0_dp
+        real(dp) :: error_estimate_cpu = 0.0_dp    !! CPU of the rerun (not in cpu_seconds)
     end type run_summary_t
 
     public :: make_pendulum, start_state, run_simulation, model_checks
+    public :: angle_difference, sway_of, tighter_rtol
 
     !> Most internal steps between two output rows before the run is given up.
     integer, parameter :: MAX_STEPS_PER_ROW = 500000
@@ -115,12 +122,12 @@ contains
         type(run_summary_t), intent(out) :: sm  !! figures of the run
         type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_MODEL or ERR_IO
         type(bifilar_t) :: sys
-        type(lsoda_t) :: solver
+        type(lsoda_t) :: solver, solver2
         type(lsoda_stats_t) :: st
         type(motion_t) :: mo
         type(status_t) :: wst
         real(dp) :: y(NSTATE), ystep(NSTATE), th0(5), tau, e0, th3, row(17), t_cpu0, t_cpu1
-        real(dp) :: t_prev
+        real(dp) :: t_prev, y2(NSTATE), t_e0, t_e1, rt2
         character(len=:), allocatable :: datpath, sumpath
         integer :: u, k, nout, nstep_row
         character(len=300) :: buf
@@ -146,6 +153,18 @@ contains
         if (stat%code /= 0) then
             call atomic_abort(u, datpath)
             return
+        end if
+        if (d%error_estimate) then
+            ! the same run at a tolerance 100 times tighter, in step with the rows
+            rt2 = tighter_rtol(d%rtol)
+            call solver2%init(sys, 0.0_dp, y, rt2, [d%atol*rt2/d%rtol], stat, tcrit=d%tau_end)
+            if (stat%code /= 0) then
+                call atomic_abort(u, datpath)
+                return
+            end if
+            sm%error_estimate_rtol = rt2
+            sm%error_estimate_theta = 0.0_dp
+            sm%error_estimate_q = 0.0_dp
         end if
         nout = nint(d%tau_end/d%dtau_out)
         if (nout*d%dtau_out < d%tau_end*(1.0_dp - 1.0e-12_dp)) nout = nout + 1
@@ -224,11 +243,24 @@ contains
             sm%max_abs_energy_error = max(sm%max_abs_energy_error, abs(mo%energy - e0))
             sm%max_abs_constraint_residual = max(sm%max_abs_constraint_residual, abs(mo%residual))
             sm%min_tension = min(sm%min_tension, mo%t_bc, mo%t_ad)
+            if (d%error_estimate .and. k > 0) then
+                call cpu_time(t_e0)
+                call solver2%integrate(sys, tau, y2, stat)
+                if (stat%code /= 0) then
+                    stat%msg = 'error estimate (rerun at rtol/100): '//stat%msg
+                    exit
+                end if
+                sm%error_estimate_theta = max(sm%error_estimate_theta, angle_difference(y, y2))
+                sm%error_estimate_q = max(sm%error_estimate_q, &
+                                          abs(sway_of(sys%p, y) - sway_of(sys%p, y2)))
+                call cpu_time(t_e1)
+                sm%error_estimate_cpu = sm%error_estimate_cpu + (t_e1 - t_e0)
+            end if
             k = k + 1
         end do
         call cpu_time(t_cpu1)
         st = solver%stats()
-        sm%cpu_seconds = t_cpu1 - t_cpu0
+        sm%cpu_seconds = t_cpu1 - t_cpu0 - sm%error_estimate_cpu
         sm%steps = st%steps
         sm%rhs_evaluations = st%rhs_evals
         sm%jacobian_evaluations = st%jac_evals
@@ -259,6 +291,11 @@ contains
         call write_kv(u, 'max_abs_energy_error', sm%max_abs_energy_error)
         call write_kv(u, 'max_abs_constraint_residual', sm%max_abs_constraint_residual)
         call write_kv(u, 'min_tension', sm%min_tension)
+        if (d%error_estimate) then
+            call write_kv(u, 'error_estimate_rtol', sm%error_estimate_rtol)
+            call write_kv(u, 'error_estimate_theta', sm%error_estimate_theta)
+            call write_kv(u, 'error_estimate_Q', sm%error_estimate_q)
+        end if
         call atomic_commit(u, sumpath, wst)
         stat = wst
     end subroutine run_simulation
@@ -386,5 +423,32 @@ contains
         if (s(1:1) == '.') s = '0'//s
         if (s(1:2) == '-.') s = '-0'//s(2:)
     end function tau_text
+
+    !> The tolerance of the error-estimate rerun: rtol/100, but not below 3e-14 (the
+    !! smallest the integrator honours).
+    pure real(dp) function tighter_rtol(rtol) result(r)
+        real(dp), intent(in) :: rtol            !! the run's rtol
+        r = max(rtol/100.0_dp, 3.0e-14_dp)
+    end function tighter_rtol
+
+    !> Largest angle difference (rad) between two chart states: theta1, theta4, theta5, and
+    !! the direction of the cable BC (|delta sigma| / cos theta2, the angle between the two
+    !! directions to first order; regular at theta2 = 0 where theta3 is not defined).
+    pure real(dp) function angle_difference(y1, y2) result(da)
+        real(dp), intent(in) :: y1(NSTATE), y2(NSTATE)   !! chart states
+        real(dp) :: c2
+        c2 = sqrt(max(1.0e-12_dp, 1.0_dp - y1(2)**2 - y1(3)**2))
+        da = max(abs(y1(1) - y2(1)), abs(y1(4) - y2(4)), abs(y1(5) - y2(5)), &
+                 norm2(y1(2:3) - y2(2:3))/c2)
+    end function angle_difference
+
+    !> Side-sway Q of a chart state (as in evaluate, without the accelerations).
+    pure real(dp) function sway_of(p, y) result(q)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters
+        real(dp), intent(in) :: y(NSTATE)       !! chart state
+        real(dp) :: c(3), dd(3), rs(3), e(3), n(3, 3)
+        call chart_positions(p, y, c, dd, rs, e, n)
+        q = sqrt(e(1)**2 + (e(2) + 0.5_dp*p%big_b)**2)
+    end function sway_of
 
 end module simulate

@@ -1,0 +1,311 @@
+!> Error against run time (analysis `work_precision`): the scene of a deck solved by LSODA
+!! at rtol = 1e-3 ... 1e-12 (atol scaled with it) and by fixed-step classical Runge-Kutta 4
+!! (the method a hand-written program of 1966 would use), each against a reference solution
+!! at the deck's output times.
+!!
+!! The reference is LSODA at rtol = 1e-13, confirmed by an independent method: fixed-step
+!! RK4 at steps h and h/2 combined by Richardson extrapolation, (16 y(h/2) - y(h))/15.
+!! Their largest difference is reported (`reference_agreement_*`); a test holds it small.
+!!
+!! Errors at the output times: error_theta = the largest angle error (theta1, theta4,
+!! theta5 and the direction of the cable BC, see simulate's angle_difference), error_Q =
+!! the largest |Q error| (over b'), max_abs_energy_error = the largest |E - E(0)| (over
+!! m g b').  CPU seconds are per solve, from repeated solves until at least 0.05 s.
+!! Writes OUTDIR/NAME.wp.dat and OUTDIR/NAME.wp_rk4.dat.
+module work_precision
+    use kinds, only: dp
+    use status, only: status_t, set_error, ERR_NUMERIC
+    use geometry, only: pendulum_t
+    use bifilar_model, only: bifilar_t, chart_energy, NSTATE
+    use lsoda, only: lsoda_t, lsoda_stats_t
+    use deck, only: deck_t, deck_echo
+    use simulate, only: make_pendulum, start_state, angle_difference, sway_of
+    use output_io, only: atomic_open, atomic_commit, atomic_abort, all_finite
+    implicit none
+    private
+
+    integer, parameter, public :: WP_NRTOL = 10          !! rtol = 1e-3 ... 1e-12
+    integer, parameter, public :: WP_NRK4 = 7            !! h = dtau_out / 2**(0..6)
+    real(dp), parameter, public :: WP_REF_RTOL = 1.0e-13_dp
+    !> RK4 substeps per output interval of the reference check (h and h/2)
+    integer, parameter, public :: WP_REF_SUBSTEPS = 64
+    real(dp), parameter :: MIN_CPU = 0.05_dp             !! repeat solves until this much CPU
+    integer, parameter :: MAX_REPEATS = 100000
+
+    !> One point of a work-precision curve.
+    type, public :: wp_point_t
+        real(dp) :: rtol = 0.0_dp               !! LSODA: rtol; RK4: 0
+        real(dp) :: h = 0.0_dp                  !! RK4: step; LSODA: 0
+        real(dp) :: cpu_seconds = 0.0_dp        !! per solve
+        integer :: steps = 0, rhs_evaluations = 0
+        real(dp) :: error_theta = 0.0_dp, error_q = 0.0_dp, max_abs_energy_error = 0.0_dp
+        logical :: ok = .false.                 !! the solve finished
+    end type wp_point_t
+
+    type, public :: wp_result_t
+        type(wp_point_t) :: lsoda(WP_NRTOL)
+        type(wp_point_t) :: rk4(WP_NRK4)
+        real(dp) :: ref_agreement_theta = 0.0_dp   !! LSODA 1e-13 against RK4 + Richardson
+        real(dp) :: ref_agreement_q = 0.0_dp
+        real(dp) :: ref_h = 0.0_dp                 !! RK4 step of the confirmation (coarser)
+        integer :: nout = 0
+    end type wp_result_t
+
+    public :: run_work_precision, solve_lsoda, solve_rk4, output_times, trajectory_errors
+
+contains
+
+    !> Output times 0, dtau_out, ..., tau_end of a deck (as the simulation's rows).
+    subroutine output_times(d, times)
+        type(deck_t), intent(in) :: d               !! the deck
+        real(dp), allocatable, intent(out) :: times(:)
+        integer :: nout, k
+        nout = nint(d%tau_end/d%dtau_out)
+        if (nout*d%dtau_out < d%tau_end*(1.0_dp - 1.0e-12_dp)) nout = nout + 1
+        allocate (times(0:nout))
+        do k = 0, nout
+            times(k) = min(k*d%dtau_out, d%tau_end)
+        end do
+    end subroutine output_times
+
+    !> LSODA from y0 at times(0) to every later time.
+    subroutine solve_lsoda(p, y0, times, rtol, atol, ys, steps, nfe, stat)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters
+        real(dp), intent(in) :: y0(NSTATE)      !! state at times(0)
+        real(dp), intent(in) :: times(0:)       !! output times, increasing
+        real(dp), intent(in) :: rtol, atol      !! tolerances
+        real(dp), intent(out) :: ys(:, 0:)      !! (NSTATE, 0:n) states at the times
+        integer, intent(out) :: steps, nfe      !! integrator counters
+        type(status_t), intent(out) :: stat     !! the integrator's failure
+        type(bifilar_t) :: sys
+        type(lsoda_t) :: solver
+        type(lsoda_stats_t) :: st
+        integer :: k
+        sys%p = p
+        ys = 0.0_dp
+        ys(:, 0) = y0
+        steps = 0
+        nfe = 0
+        call solver%init(sys, times(0), y0, rtol, [atol], stat, tcrit=times(ubound(times, 1)))
+        if (stat%code /= 0) return
+        do k = 1, ubound(times, 1)
+            call solver%integrate(sys, times(k), ys(:, k), stat)
+            if (stat%code /= 0) exit
+        end do
+        st = solver%stats()
+        steps = st%steps
+        nfe = st%rhs_evals
+    end subroutine solve_lsoda
+
+    !> Fixed-step classical Runge-Kutta 4 with `m` equal steps per output interval.
+    subroutine solve_rk4(p, y0, times, m, ys, steps, nfe, stat)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters
+        real(dp), intent(in) :: y0(NSTATE)      !! state at times(0)
+        real(dp), intent(in) :: times(0:)       !! output times, increasing
+        integer, intent(in) :: m                !! steps per output interval
+        real(dp), intent(out) :: ys(:, 0:)      !! (NSTATE, 0:n) states at the times
+        integer, intent(out) :: steps, nfe      !! steps and right-hand-side evaluations
+        type(status_t), intent(out) :: stat     !! a right-hand-side failure or non-finite state
+        type(bifilar_t) :: sys
+        real(dp) :: y(NSTATE), k1(NSTATE), k2(NSTATE), k3(NSTATE), k4(NSTATE), h, t
+        integer :: k, j
+        character(len=120) :: buf
+        sys%p = p
+        ys = 0.0_dp
+        ys(:, 0) = y0
+        y = y0
+        steps = 0
+        nfe = 0
+        stat%code = 0
+        do k = 1, ubound(times, 1)
+            h = (times(k) - times(k - 1))/m
+            do j = 1, m
+                t = times(k - 1) + (j - 1)*h
+                call sys%rhs(t, y, k1, stat)
+                if (stat%code == 0) call sys%rhs(t + 0.5_dp*h, y + 0.5_dp*h*k1, k2, stat)
+                if (stat%code == 0) call sys%rhs(t + 0.5_dp*h, y + 0.5_dp*h*k2, k3, stat)
+                if (stat%code == 0) call sys%rhs(t + h, y + h*k3, k4, stat)
+                nfe = nfe + 4
+                if (stat%code /= 0) return
+                y = y + (h/6.0_dp)*(k1 + 2.0_dp*k2 + 2.0_dp*k3 + k4)
+                steps = steps + 1
+                if (.not. all_finite(y)) then
+                    write (buf, '(a,es10.3,a,es10.3)') 'RK4 with h = ', h, &
+                        ' became unstable at tau = ', t + h
+                    call set_error(stat, ERR_NUMERIC, trim(buf))
+                    return
+                end if
+            end do
+            ys(:, k) = y
+        end do
+    end subroutine solve_rk4
+
+    !> Errors of a trajectory against the reference at the output times, and its energy
+    !! error against its own start.
+    subroutine trajectory_errors(p, ys, yref, err_theta, err_q, err_energy)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters
+        real(dp), intent(in) :: ys(:, 0:)       !! trajectory at the output times
+        real(dp), intent(in) :: yref(:, 0:)     !! reference at the same times
+        real(dp), intent(out) :: err_theta, err_q, err_energy
+        real(dp) :: e0
+        integer :: k
+        err_theta = 0.0_dp
+        err_q = 0.0_dp
+        err_energy = 0.0_dp
+        e0 = chart_energy(p, ys(:, 0))
+        do k = 0, ubound(ys, 2)
+            err_theta = max(err_theta, angle_difference(ys(:, k), yref(:, k)))
+            err_q = max(err_q, abs(sway_of(p, ys(:, k)) - sway_of(p, yref(:, k))))
+            err_energy = max(err_energy, abs(chart_energy(p, ys(:, k)) - e0))
+        end do
+    end subroutine trajectory_errors
+
+    !> The analysis: reference, its confirmation, both curves, the two files.
+    subroutine run_work_precision(d, outdir, res, stat, quiet)
+        type(deck_t), intent(in) :: d           !! the deck
+        character(len=*), intent(in) :: outdir  !! output directory
+        type(wp_result_t), intent(out) :: res   !! the curves
+        type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_MODEL, ERR_IO
+        logical, intent(in), optional :: quiet  !! do not print the agreement line
+        type(pendulum_t) :: p
+        real(dp), allocatable :: times(:), yref(:, :), ys(:, :), yh1(:, :), yh2(:, :)
+        real(dp) :: y0(NSTATE), th0(5), ratio, rt, c0, c1, total, e1, e2, e3
+        integer :: n, i, steps, nfe, nrep, m
+        character(len=:), allocatable :: path, path2
+        type(status_t) :: s1
+        integer :: u
+        logical :: loud
+
+        loud = .true.
+        if (present(quiet)) loud = .not. quiet
+        call make_pendulum(d, p, stat)
+        if (stat%code /= 0) return
+        call start_state(d, p, y0, th0, stat)
+        if (stat%code /= 0) return
+        call output_times(d, times)
+        n = ubound(times, 1)
+        res%nout = n
+        allocate (yref(NSTATE, 0:n), ys(NSTATE, 0:n), yh1(NSTATE, 0:n), yh2(NSTATE, 0:n))
+        ratio = d%atol/d%rtol
+
+        ! reference and its independent confirmation
+        call solve_lsoda(p, y0, times, WP_REF_RTOL, WP_REF_RTOL*ratio, yref, steps, nfe, stat)
+        if (stat%code /= 0) then
+            stat%msg = d%name//': work_precision reference (LSODA rtol 1e-13): '//stat%msg
+            return
+        end if
+        m = WP_REF_SUBSTEPS
+        res%ref_h = d%dtau_out/m
+        call solve_rk4(p, y0, times, m, yh1, steps, nfe, stat)
+        if (stat%code == 0) call solve_rk4(p, y0, times, 2*m, yh2, steps, nfe, stat)
+        if (stat%code /= 0) then
+            stat%msg = d%name//': work_precision reference check (RK4): '//stat%msg
+            return
+        end if
+        yh2 = (16.0_dp*yh2 - yh1)/15.0_dp
+        call trajectory_errors(p, yh2, yref, res%ref_agreement_theta, res%ref_agreement_q, e1)
+        if (loud) write (*, '(a,es9.2,a,es9.2,a,es9.2,a)') d%name// &
+            ': work_precision reference LSODA rtol 1e-13 against RK4 + Richardson (h = ', &
+            res%ref_h, '): angles agree to ', res%ref_agreement_theta, ', Q to ', &
+            res%ref_agreement_q, ''
+
+        ! LSODA curve
+        do i = 1, WP_NRTOL
+            rt = 10.0_dp**(-2 - i)
+            res%lsoda(i)%rtol = rt
+            total = 0.0_dp
+            nrep = 0
+            do while (total < MIN_CPU .and. nrep < MAX_REPEATS)
+                call cpu_time(c0)
+                call solve_lsoda(p, y0, times, rt, rt*ratio, ys, steps, nfe, s1)
+                call cpu_time(c1)
+                total = total + (c1 - c0)
+                nrep = nrep + 1
+                if (s1%code /= 0) exit
+            end do
+            res%lsoda(i)%ok = s1%code == 0
+            if (.not. res%lsoda(i)%ok) cycle
+            res%lsoda(i)%cpu_seconds = total/nrep
+            res%lsoda(i)%steps = steps
+            res%lsoda(i)%rhs_evaluations = nfe
+            call trajectory_errors(p, ys, yref, e1, e2, e3)
+            res%lsoda(i)%error_theta = e1
+            res%lsoda(i)%error_q = e2
+            res%lsoda(i)%max_abs_energy_error = e3
+            res%lsoda(i)%ok = all_finite([e1, e2, e3, res%lsoda(i)%cpu_seconds])
+        end do
+
+        ! fixed-step RK4 curve
+        do i = 1, WP_NRK4
+            m = 2**(i - 1)
+            res%rk4(i)%h = d%dtau_out/m
+            total = 0.0_dp
+            nrep = 0
+            do while (total < MIN_CPU .and. nrep < MAX_REPEATS)
+                call cpu_time(c0)
+                call solve_rk4(p, y0, times, m, ys, steps, nfe, s1)
+                call cpu_time(c1)
+                total = total + (c1 - c0)
+                nrep = nrep + 1
+                if (s1%code /= 0) exit
+            end do
+            res%rk4(i)%ok = s1%code == 0
+            if (.not. res%rk4(i)%ok) cycle
+            res%rk4(i)%cpu_seconds = total/nrep
+            res%rk4(i)%steps = steps
+            res%rk4(i)%rhs_evaluations = nfe
+            call trajectory_errors(p, ys, yref, e1, e2, e3)
+            res%rk4(i)%error_theta = e1
+            res%rk4(i)%error_q = e2
+            res%rk4(i)%max_abs_energy_error = e3
+            res%rk4(i)%ok = all_finite([e1, e2, e3, res%rk4(i)%cpu_seconds])
+        end do
+
+        ! files
+        path = outdir//'/'//d%name//'.wp.dat'
+        call atomic_open(path, u, stat)
+        if (stat%code /= 0) return
+        call header(u, 'LSODA, rtol = 1e-3 ... 1e-12, atol = rtol * (deck atol / deck rtol)')
+        write (u, '(a)') '# rtol cpu_seconds steps rhs_evaluations error_theta error_Q '// &
+            'max_abs_energy_error'
+        do i = 1, WP_NRTOL
+            if (.not. res%lsoda(i)%ok) cycle
+            write (u, '(es10.3,es14.6,2i10,3es14.6)') res%lsoda(i)%rtol, &
+                res%lsoda(i)%cpu_seconds, res%lsoda(i)%steps, res%lsoda(i)%rhs_evaluations, &
+                res%lsoda(i)%error_theta, res%lsoda(i)%error_q, res%lsoda(i)%max_abs_energy_error
+        end do
+        path2 = outdir//'/'//d%name//'.wp_rk4.dat'
+        call atomic_commit(u, path, stat)
+        if (stat%code /= 0) return
+        call atomic_open(path2, u, stat)
+        if (stat%code /= 0) return
+        call header(u, 'fixed-step classical Runge-Kutta 4, h = dtau_out / 2**k')
+        write (u, '(a)') '# h cpu_seconds steps rhs_evaluations error_theta error_Q '// &
+            'max_abs_energy_error'
+        do i = 1, WP_NRK4
+            if (.not. res%rk4(i)%ok) cycle
+            write (u, '(es10.3,es14.6,2i10,3es14.6)') res%rk4(i)%h, &
+                res%rk4(i)%cpu_seconds, res%rk4(i)%steps, res%rk4(i)%rhs_evaluations, &
+                res%rk4(i)%error_theta, res%rk4(i)%error_q, res%rk4(i)%max_abs_energy_error
+        end do
+        call atomic_commit(u, path2, stat)
+        if (stat%code /= 0) return
+
+    contains
+
+        subroutine header(unit, what)
+            integer, intent(in) :: unit
+            character(len=*), intent(in) :: what
+            write (unit, '(a)') '# bifilar work-precision: '//trim(d%title)
+            write (unit, '(a)') '# '//what//'; errors at the output times against the '// &
+                'reference (angles in rad, Q over b'', energy over m g b'')'
+            write (unit, '(a,es9.2,a,es9.2,a,es9.2)') &
+                '# reference: LSODA rtol 1e-13; confirmed by RK4 + Richardson (h = ', &
+                res%ref_h, ' and h/2): angles agree to ', res%ref_agreement_theta, &
+                ', Q to ', res%ref_agreement_q
+            call deck_echo(d, unit)
+        end subroutine header
+
+    end subroutine run_work_precision
+
+end module work_precision
