@@ -103,7 +103,7 @@ contains
 
     subroutine fail(st)
         type(status_t), intent(in) :: st
-        character(len=:), allocatable :: kind
+        character(len=24) :: kind      ! fixed length: error stop frees nothing (valgrind)
         select case (st%code)
         case (ERR_DECK)
             kind = 'bad input'
@@ -114,7 +114,7 @@ contains
         case default
             kind = 'numerical failure'
         end select
-        write (error_unit, '(a)') 'bifilar: error ('//kind//'): '//st%msg
+        write (error_unit, '(a)') 'bifilar: error ('//trim(kind)//'): '//st%msg
         select case (st%code)
         case (ERR_DECK)
             error stop 2

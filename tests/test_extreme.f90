@@ -35,6 +35,8 @@ contains
         if (t%want('extreme: model checks (slack cable, CD vertical, BC horizontal)')) &
             call test_model_checks(t)
         if (t%want('extreme: decks of input/extreme')) call test_decks(t, exe)
+        if (t%want('extreme: every deck of input/ (except charts) in this build')) &
+            call test_input_decks(t, exe)
         if (t%want('extreme: fuzzed hostile decks')) call test_fuzz(t, exe)
     end subroutine run_extreme_tests
 
@@ -131,6 +133,35 @@ contains
             end if
         end do
     end subroutine test_decks
+
+    ! ---------------------------------------------------------------------------------------
+    !> Every deck of input/ that asks for no chart (a chart takes a minute in the checking
+    !! build) runs through the executable of this build: exit 0, no NaN or Inf written.
+    subroutine test_input_decks(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: list, outdir
+        character(len=512) :: line
+        integer :: u, ios, ex, n
+        list = SCRATCH//'/input_decks.txt'
+        outdir = SCRATCH//'/input_out'
+        call execute_command_line('grep -L "analyses *= *''[^'']*chart" input/*.nml > '// &
+                                  list//'; rm -rf '//outdir//'; mkdir -p '//outdir)
+        n = 0
+        open (newunit=u, file=list, status='old', action='read', iostat=ios)
+        do while (ios == 0)
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (len_trim(line) == 0) cycle
+            n = n + 1
+            call execute_command_line(exe//' '//trim(line)//' --out '//outdir// &
+                                      ' > /dev/null 2>&1', exitstat=ex)
+            call t%check('input deck '//trim(line)//': exit 0', ex == 0)
+        end do
+        close (u)
+        call t%check('input decks: at least the eight paper and work-precision decks', n >= 8)
+        call t%check('input decks: no NaN or Inf in any file', no_nan(outdir))
+    end subroutine test_input_decks
 
     ! ---------------------------------------------------------------------------------------
     !> Hostile decks from a fixed seed: random and extreme values, NaN and Inf as text,
