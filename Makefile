@@ -1,10 +1,11 @@
 # bifilar: dynamics of the bifilar pendulum (Kane & Tseng 1966)
 #   make            build bin/bifilar
-#   make test       run all tests (optimised build), last line "N passed, N failed"
+#   make test       run all tests (optimised build), last line "N passed, N failed";
+#                   ONLY=WORD runs the suites whose name contains WORD (e.g. ONLY=extreme)
 #   make check      run all tests in the checking build (-fcheck=all, FP traps)
 #   make run        run every deck in input/, write output/, draw plots/*.png
 #   make report     output/report.md (paper's claims against ours)
-#   make bench      integrator and scene benchmarks (output/bench_*.dat)
+#   make bench      integrator, scene and work-precision benchmarks (output/bench_*.dat)
 #   make memcheck   valgrind (leaks, invalid accesses) on bin/bifilar with a paper deck
 #   make deps       install what a fresh machine lacks (gnuplot)
 #   make clean      remove everything built or written
