@@ -30,9 +30,9 @@ LIBS = -llapack -lblas
 
 # Library modules in dependency order (each only uses modules listed before it).
 LIB_MODULES = kinds status lapack_wrap ode_system lsoda geometry kinematics gen_forces bifilar_model \
-              deck output_io simulate floquet paper_claims stability work_precision
+              elastic_model deck output_io simulate floquet paper_claims stability work_precision
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
-TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme test_work_precision
+TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme test_work_precision test_elastic
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
 
 .PHONY: all test check run report bench deps clean memcheck
@@ -71,14 +71,19 @@ check:
 $(BIN)/bench_bifilar: tests/bench_bifilar.f90 $(LIB_OBJ) | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
 
+$(BIN)/bench_elastic: tests/bench_elastic.f90 $(LIB_OBJ) | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+
 $(BIN)/bench_wp: tests/bench_wp.f90 $(LIB_OBJ) | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
 
-bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bifilar
+bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench_elastic \
+       $(BIN)/bifilar
 	mkdir -p output build/bench
 	$(BIN)/bench_integrator output/bench_integrator.dat
 	$(BIN)/bench_bifilar output/bench_bifilar.dat
 	$(BIN)/bench_wp
+	$(BIN)/bench_elastic output/bench_elastic.dat
 	@echo "100 x 100 stability chart (tests/bench/chart_cylinder.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}):"
 	$(BIN)/bifilar tests/bench/chart_cylinder.nml --out build/bench 2>/dev/null
 

@@ -1,5 +1,5 @@
 !> The input deck: a namelist file with the groups &scene, &suspension, &body, &start,
-!! &integration, &floquet and &chart (see input/*.nml).  read_deck reads and validates it;
+!! &integration, &cables, &floquet and &chart (see input/*.nml).  read_deck reads and validates it;
 !! every problem is an ERR_DECK status whose message names the deck, the group, the variable
 !! and its value, what is wrong and what is allowed.  Cable reachability is checked by the
 !! geometry module.
@@ -17,7 +17,7 @@ module deck
         ! &scene
         character(len=256) :: title = ''
         character(len=256) :: analyses = 'simulate'
-        character(len=16)  :: model = 'kane'          !! 'kane' only for now
+        character(len=16)  :: model = 'kane'          !! MODELS_ALLOWED: 'kane' or 'elastic'
         ! &suspension (lengths in any one unit)
         real(dp) :: b = 1.0_dp, b_prime = 1.0_dp, l = 2.0_dp, l_prime = 2.0_dp, g = 1.0_dp
         ! &body
@@ -35,6 +35,9 @@ module deck
         ! &integration
         real(dp) :: tau_end = 60.0_dp, dtau_out = 0.05_dp, rtol = 1.0e-10_dp, atol = 1.0e-12_dp
         logical  :: error_estimate = .false.
+        ! &cables (model = 'elastic' only)
+        real(dp) :: cable_stiffness = 1.0e6_dp    !! EA/(m g) of each cable, 1 <= k <= 1e12
+        real(dp) :: cable_damping = 0.05_dp       !! damping ratio zeta of each cable, 0..10
         ! &floquet
         real(dp) :: floquet_amplitude = 45.0_dp   !! degrees of theta4, 0 < a < 180
         integer  :: floquet_segments = 1          !! shooting segments, 1..64
@@ -52,7 +55,9 @@ module deck
     character(len=*), parameter :: ANALYSES_ALLOWED = 'simulate floquet chart work_precision'
     !> Namelist groups a deck may contain.
     character(len=*), parameter :: GROUPS_ALLOWED = &
-        'scene suspension body start integration floquet chart'
+        'scene suspension body start integration cables floquet chart'
+    !> Words allowed in &scene model.
+    character(len=*), parameter :: MODELS_ALLOWED = 'kane elastic'
     !> Words allowed in &chart x and y.
     character(len=*), parameter :: CHART_VARIABLES = 'l b amplitude r lambda inertia_ratio'
     !> Variables of each group with their kind (r real, i integer, c character, l logical)
@@ -64,6 +69,7 @@ module deck
     character(len=*), parameter :: SPEC_START = 'mode:c1 amplitude:r1 tilt:r1 theta:r4 theta_dot:r4'
     character(len=*), parameter :: SPEC_INTEGRATION = &
         'tau_end:r1 dtau_out:r1 rtol:r1 atol:r1 error_estimate:l1'
+    character(len=*), parameter :: SPEC_CABLES = 'stiffness:r1 damping:r1'
     character(len=*), parameter :: SPEC_FLOQUET = 'amplitude:r1 segments:i1 rtol:r1'
     character(len=*), parameter :: SPEC_CHART = &
         'x:c1 x_min:r1 x_max:r1 nx:i1 y:c1 y_min:r1 y_max:r1 ny:i1'
@@ -71,6 +77,9 @@ module deck
     real(dp), parameter :: ATOL_MIN = 1.0e-30_dp        !! smallest absolute tolerance
     real(dp), parameter :: ATOL_MAX = 1.0_dp            !! largest absolute tolerance
     real(dp), parameter :: MAX_ROWS = 1.0e7_dp          !! largest tau_end/dtau_out
+    real(dp), parameter :: STIFFNESS_MIN = 1.0_dp       !! &cables stiffness range
+    real(dp), parameter :: STIFFNESS_MAX = 1.0e12_dp
+    real(dp), parameter :: DAMPING_MAX = 10.0_dp        !! largest &cables damping ratio
     real(dp), parameter :: ORTHO_TOL = 1.0e-9_dp        !! orthonormality of btilde
     real(dp), parameter :: TRIANGLE_SLACK = 1.0e-12_dp  !! relative slack of I1 <= I2 + I3
     real(dp), parameter :: FLOQUET_RTOL_MAX = 1.0e-2_dp !! largest &floquet rtol (excluded)
@@ -96,6 +105,7 @@ contains
         real(dp) :: amplitude, tilt, theta(4), theta_dot(4)
         real(dp) :: tau_end, dtau_out, rtol, atol
         logical :: error_estimate
+        real(dp) :: stiffness, damping
         character(len=256) :: x, y
         real(dp) :: x_min, x_max, y_min, y_max
         integer :: nx, ny
@@ -108,6 +118,7 @@ contains
         namelist /body/ mass, inertia, r, lambda, btilde, sway_depth
         namelist /start/ mode, amplitude, tilt, theta, theta_dot
         namelist /integration/ tau_end, dtau_out, rtol, atol, error_estimate
+        namelist /cables/ stiffness, damping
         namelist /chart/ x, x_min, x_max, nx, y, y_min, y_max, ny
         integer :: u, ios, k
         character(len=512) :: msg
@@ -140,6 +151,8 @@ contains
         rtol = d%rtol
         atol = d%atol
         error_estimate = d%error_estimate
+        stiffness = d%cable_stiffness
+        damping = d%cable_damping
         fq_amplitude = d%floquet_amplitude
         fq_segments = d%floquet_segments
         fq_rtol = d%floquet_rtol
@@ -170,6 +183,7 @@ contains
             call read_group('body', .true., SPEC_BODY)
             call read_group('start', .false., SPEC_START)
             call read_group('integration', .false., SPEC_INTEGRATION)
+            call read_group('cables', .false., SPEC_CABLES)
             call read_group('floquet', .false., SPEC_FLOQUET)
             call read_group('chart', .false., SPEC_CHART)
             call traps_restore(halting)
@@ -182,7 +196,7 @@ contains
             if (analyses(k:k) == achar(9)) analyses(k:k) = ' '
         end do
         analyses = adjustl(analyses)
-        call check_word(stat, d%name, 'scene', 'model', model, 'kane')
+        call check_word(stat, d%name, 'scene', 'model', model, MODELS_ALLOWED)
         if (stat%code /= STATUS_OK) return
         call check_analyses(stat, d%name, analyses)
         if (stat%code /= STATUS_OK) return
@@ -216,6 +230,8 @@ contains
         d%rtol = rtol
         d%atol = atol
         d%error_estimate = error_estimate
+        d%cable_stiffness = stiffness
+        d%cable_damping = damping
         d%floquet_amplitude = fq_amplitude
         d%floquet_segments = fq_segments
         d%floquet_rtol = fq_rtol
@@ -266,6 +282,8 @@ contains
                 read (u, nml=start, iostat=ios2, iomsg=msg2)
             case ('integration')
                 read (u, nml=integration, iostat=ios2, iomsg=msg2)
+            case ('cables')
+                read (u, nml=cables, iostat=ios2, iomsg=msg2)
             case ('floquet')
                 call read_floquet(u, fq_amplitude, fq_segments, fq_rtol, ios2, msg2)
             case default
@@ -358,6 +376,8 @@ contains
         write (unit, '(a)') '# &integration tau_end = '//rshort(d%tau_end)//', dtau_out = '// &
             rshort(d%dtau_out)//', rtol = '//rshort(d%rtol)//', atol = '//rshort(d%atol)// &
             ', error_estimate = '//line//' /'
+        if (trim(d%model) == 'elastic') write (unit, '(a)') '# &cables stiffness = '// &
+            rshort(d%cable_stiffness)//', damping = '//rshort(d%cable_damping)//' /'
         if (analysis_requested(d, 'floquet')) write (unit, '(a)') '# &floquet amplitude = '// &
             rshort(d%floquet_amplitude)//', segments = '//itoa(d%floquet_segments)// &
             ', rtol = '//rshort(d%floquet_rtol)//' /'
@@ -524,6 +544,21 @@ contains
         if (d%atol < ATOL_MIN .or. d%atol > ATOL_MAX) then
             call bad('integration', 'atol', rshort(d%atol), 'absolute tolerance out of range', &
                      '1e-30 <= atol <= 1 (radians and rad per unit tau)')
+            return
+        end if
+
+        ! &cables (read and checked whatever the model, used by model = 'elastic')
+        call finite('cables', 'stiffness', d%cable_stiffness)
+        call finite('cables', 'damping', d%cable_damping)
+        if (stat%code /= STATUS_OK) return
+        if (d%cable_stiffness < STIFFNESS_MIN .or. d%cable_stiffness > STIFFNESS_MAX) then
+            call bad('cables', 'stiffness', rshort(d%cable_stiffness), 'axial stiffness ' // &
+                     'EA/(m g) out of range', '1 <= stiffness <= 1e12')
+            return
+        end if
+        if (d%cable_damping < 0.0_dp .or. d%cable_damping > DAMPING_MAX) then
+            call bad('cables', 'damping', rshort(d%cable_damping), 'damping ratio out of range', &
+                     '0 <= damping <= 10 (fraction of critical)')
             return
         end if
 

@@ -10,6 +10,8 @@ module simulate
     use bifilar_model, only: bifilar_t, motion_t, chart_state, evaluate, paper_angles, &
                              chart_positions, NSTATE
     use lsoda, only: lsoda_t, lsoda_stats_t, LSODA_ERR_TOO_MUCH_ACCURACY
+    use elastic_model, only: elastic_t, elastic_cables_t, elastic_start, elastic_evaluate, &
+                             elastic_atol, ELASTIC_NSTATE
     use deck, only: deck_t, deck_echo
     use output_io, only: atomic_open, atomic_commit, atomic_abort, write_kv, all_finite
     implicit none
@@ -30,6 +32,11 @@ module simulate
         real(dp) :: error_estimate_theta = -1.0_dp, error_estimate_q = -1.0_dp
         real(dp) :: error_estimate_rtol = 0.0_dp
         real(dp) :: error_estimate_cpu = 0.0_dp    !! CPU of the rerun (not in cpu_seconds)
+        !> model = 'elastic': slack time (tau) and number of slack intervals of BC (1) and
+        !! AD (2), measured at the ends of the integrator's steps
+        logical :: elastic = .false.
+        real(dp) :: slack_time(2) = 0.0_dp
+        integer :: slack_intervals(2) = 0
     end type run_summary_t
 
     public :: make_pendulum, start_state, run_simulation, model_checks
@@ -42,6 +49,9 @@ module simulate
     real(dp), parameter :: COS5_MIN = 1.0e-3_dp
     !> sin theta2 above which the cable BC counts as horizontal (chart limit).
     real(dp), parameter :: SIN2_MAX = 0.9999_dp
+    !> model = 'elastic': the largest cable strain accepted (a cable stretched to twice its
+    !! natural length is no longer a cable; raise &cables stiffness).
+    real(dp), parameter :: STRAIN_MAX = 1.0_dp
 
     character(len=*), parameter :: COLUMNS = '# tau theta1 theta2 theta3 theta4 theta5 '// &
         'theta1_dot theta2_dot theta3_dot theta4_dot theta5_dot Q Q_axis T_BC T_AD '// &
@@ -125,13 +135,16 @@ contains
         type(lsoda_t) :: solver, solver2
         type(lsoda_stats_t) :: st
         type(motion_t) :: mo
-        type(status_t) :: wst
         real(dp) :: y(NSTATE), ystep(NSTATE), th0(5), tau, e0, th3, row(17), t_cpu0, t_cpu1
         real(dp) :: t_prev, y2(NSTATE), t_e0, t_e1, rt2
         character(len=:), allocatable :: datpath, sumpath
         integer :: u, k, nout, nstep_row
         character(len=300) :: buf
 
+        if (trim(d%model) == 'elastic') then
+            call run_elastic(d, outdir, sm, stat)
+            return
+        end if
         call make_pendulum(d, sys%p, stat)
         if (stat%code /= 0) return
         call start_state(d, sys%p, y, th0, stat)
@@ -273,6 +286,16 @@ contains
         call atomic_commit(u, datpath, stat)
         if (stat%code /= 0) return
 
+        call write_summary(d, sm, sumpath, stat)
+    end subroutine run_simulation
+
+    !> Write OUTDIR/NAME.summary (key = value lines) of a finished run.
+    subroutine write_summary(d, sm, sumpath, stat)
+        type(deck_t), intent(in) :: d           !! the deck
+        type(run_summary_t), intent(in) :: sm   !! figures of the run
+        character(len=*), intent(in) :: sumpath !! summary file
+        type(status_t), intent(out) :: stat     !! ERR_IO
+        integer :: u
         call atomic_open(sumpath, u, stat)
         if (stat%code /= 0) return
         write (u, '(a)') '# bifilar summary: '//trim(d%title)
@@ -296,9 +319,218 @@ contains
             call write_kv(u, 'error_estimate_theta', sm%error_estimate_theta)
             call write_kv(u, 'error_estimate_Q', sm%error_estimate_q)
         end if
-        call atomic_commit(u, sumpath, wst)
-        stat = wst
-    end subroutine run_simulation
+        if (sm%elastic) then
+            call write_kv(u, 'slack_time_BC', sm%slack_time(1))
+            call write_kv(u, 'slack_time_AD', sm%slack_time(2))
+            call write_kv(u, 'slack_intervals_BC', sm%slack_intervals(1))
+            call write_kv(u, 'slack_intervals_AD', sm%slack_intervals(2))
+        end if
+        call atomic_commit(u, sumpath, stat)
+    end subroutine write_summary
+
+    !> run_simulation for &scene model = 'elastic': the elastic-cable model (elastic_model)
+    !! from the same start (start_state, then elastic_start: the paper's pose, velocities
+    !! and tensions), per-state absolute tolerances from elastic_atol, the same rows and
+    !! columns (theta from the body's pose, T_BC and T_AD from the springs, energy including
+    !! the springs', constraint_residual = |AD| - l' over b').  A slack cable is a state of
+    !! this model, not an error: the slack time and the number of slack intervals of each
+    !! cable are measured at the ends of the integrator's steps (a step counts as slack for
+    !! the fraction 1, 1/2 or 0 as both, one or none of its ends are slack).  The run stops
+    !! (ERR_MODEL) only when a cable stretches beyond STRAIN_MAX.
+    subroutine run_elastic(d, outdir, sm, stat)
+        type(deck_t), intent(in) :: d           !! the deck (model = 'elastic')
+        character(len=*), intent(in) :: outdir  !! output directory
+        type(run_summary_t), intent(out) :: sm  !! figures of the run
+        type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_MODEL or ERR_IO
+        type(elastic_t) :: sys
+        type(lsoda_t) :: solver, solver2
+        type(lsoda_stats_t) :: st
+        type(motion_t) :: mo, mo2
+        type(elastic_cables_t) :: cab
+        type(status_t) :: s2
+        real(dp) :: yc(NSTATE), th0(5), y(ELASTIC_NSTATE), ystep(ELASTIC_NSTATE)
+        real(dp) :: y2(ELASTIC_NSTATE), atol(ELASTIC_NSTATE), th_row(5), th_step(5)
+        real(dp) :: tau, e0, row(17), t_cpu0, t_cpu1, t_prev, t_e0, t_e1, rt2
+        logical :: slack_prev(2)
+        character(len=:), allocatable :: datpath, sumpath
+        integer :: u, k, j, nout, nstep_row
+        character(len=300) :: buf
+
+        sm%elastic = .true.
+        call make_pendulum(d, sys%p, stat)
+        if (stat%code /= 0) return
+        call start_state(d, sys%p, yc, th0, stat)
+        if (stat%code /= 0) return
+        sys%stiffness = d%cable_stiffness
+        sys%damping = d%cable_damping
+        call elastic_start(sys, yc, y, stat)
+        if (stat%code /= 0) then
+            stat%msg = d%name//': elastic start: '//stat%msg
+            return
+        end if
+        atol = elastic_atol(sys, d%atol)
+
+        datpath = outdir//'/'//d%name//'.dat'
+        sumpath = outdir//'/'//d%name//'.summary'
+        call atomic_open(datpath, u, stat)
+        if (stat%code /= 0) return
+        write (u, '(a)') '# bifilar: '//trim(d%title)
+        write (u, '(a)') '# time tau = sqrt(g/b'') t; lengths over b''; tensions over m g; '// &
+            'energy over m g b''; angles in rad'
+        write (u, '(a)') '# model elastic: T_BC, T_AD from the springs (0 when slack); '// &
+            'energy_error includes the springs'' energy; constraint_residual = |AD| - l'''
+        call deck_echo(d, u)
+        write (u, '(a)') COLUMNS
+
+        call cpu_time(t_cpu0)
+        call solver%init(sys, 0.0_dp, y, d%rtol, atol, stat, tcrit=d%tau_end)
+        if (stat%code /= 0) then
+            call atomic_abort(u, datpath)
+            return
+        end if
+        if (d%error_estimate) then
+            rt2 = tighter_rtol(d%rtol)
+            call solver2%init(sys, 0.0_dp, y, rt2, atol*rt2/d%rtol, stat, tcrit=d%tau_end)
+            if (stat%code /= 0) then
+                call atomic_abort(u, datpath)
+                return
+            end if
+            sm%error_estimate_rtol = rt2
+            sm%error_estimate_theta = 0.0_dp
+            sm%error_estimate_q = 0.0_dp
+        end if
+        nout = nint(d%tau_end/d%dtau_out)
+        if (nout*d%dtau_out < d%tau_end*(1.0_dp - 1.0e-12_dp)) nout = nout + 1
+        th_row = th0
+        th_step = th0
+        e0 = 0.0_dp
+        k = 0
+        t_prev = 0.0_dp
+        nstep_row = 0
+        call elastic_evaluate(sys, y, th0(3), mo, stat, th0, cab)
+        if (stat%code /= 0) then
+            call atomic_abort(u, datpath)
+            stat%msg = d%name//': '//stat%msg
+            return
+        end if
+        slack_prev = cab%slack
+        sm%slack_intervals = merge(1, 0, slack_prev)
+        do while (k <= nout)
+            tau = min(k*d%dtau_out, d%tau_end)
+            st = solver%stats()
+            if (k > 0 .and. st%t_current < tau) then
+                if (nstep_row >= MAX_STEPS_PER_ROW) then
+                    write (buf, '(a,i0,a,f0.4,a,es10.3,a)') 'the integrator took ', &
+                        MAX_STEPS_PER_ROW, ' steps without reaching tau = ', tau, &
+                        ' (last step ', abs(st%h_last), '): raise rtol/atol, shorten '// &
+                        'tau_end, or add &cables damping'
+                    call set_error(stat, ERR_NUMERIC, trim(buf))
+                    exit
+                end if
+                call solver%step(sys, stat, tout=d%tau_end)
+                st = solver%stats()
+                if (stat%code /= 0) then
+                    write (buf, '(a,f0.4)') ' at tau = ', st%t_current
+                    stat%msg = stat%msg//trim(buf)
+                    exit
+                end if
+                nstep_row = nstep_row + 1
+                call solver%dense(st%t_current, 0, ystep, stat)
+                if (stat%code /= 0) exit
+                ! the cables at the step end: slack bookkeeping and the sanity limit
+                call elastic_evaluate(sys, ystep, th_step(3), mo2, stat, th_step, cab)
+                if (stat%code /= 0) exit
+                th_step = mo2%th
+                do j = 1, 2
+                    if (cab%slack(j) .and. slack_prev(j)) then
+                        sm%slack_time(j) = sm%slack_time(j) + (st%t_current - t_prev)
+                    else if (cab%slack(j) .neqv. slack_prev(j)) then
+                        sm%slack_time(j) = sm%slack_time(j) + 0.5_dp*(st%t_current - t_prev)
+                    end if
+                    if (cab%slack(j) .and. .not. slack_prev(j)) &
+                        sm%slack_intervals(j) = sm%slack_intervals(j) + 1
+                end do
+                slack_prev = cab%slack
+                if (maxval(cab%strain) > STRAIN_MAX) then
+                    write (buf, '(a,es10.3,a)') 'a cable stretches to more than twice its '// &
+                        'natural length at tau = '//tau_text(st%t_current)//' (strain ', &
+                        maxval(cab%strain), '): raise &cables stiffness'
+                    call set_error(stat, ERR_MODEL, trim(buf))
+                    exit
+                end if
+                t_prev = st%t_current
+                cycle
+            end if
+            if (k > 0) then
+                if (tau >= st%t_current) then
+                    y = ystep
+                else
+                    call solver%dense(tau, 0, y, stat)
+                    if (stat%code /= 0) exit
+                end if
+            end if
+            nstep_row = 0
+            call elastic_evaluate(sys, y, th_row(3), mo, stat, th_row)
+            if (stat%code /= 0) then
+                write (buf, '(a,f0.4)') ' at tau = ', tau
+                stat%msg = stat%msg//trim(buf)
+                exit
+            end if
+            th_row = mo%th
+            if (k == 0) e0 = mo%energy
+            row = [tau, mo%th, mo%thd, mo%q_sway, mo%q_axis, mo%t_bc, mo%t_ad, &
+                   mo%energy - e0, mo%residual]
+            if (.not. all_finite(row)) then
+                write (buf, '(a,f0.4,a)') 'non-finite result at tau = ', tau, &
+                    ': the body''s pose left the range the paper''s angles cover '// &
+                    '(line CD vertical?)'
+                call set_error(stat, ERR_NUMERIC, trim(buf))
+                exit
+            end if
+            write (u, '(f14.6,16es24.15e3)') row
+            sm%rows = sm%rows + 1
+            sm%tau_reached = tau
+            sm%max_abs_theta1 = max(sm%max_abs_theta1, abs(mo%th(1)))
+            sm%max_abs_theta4 = max(sm%max_abs_theta4, abs(mo%th(4)))
+            sm%max_q = max(sm%max_q, mo%q_sway)
+            sm%max_q_axis = max(sm%max_q_axis, mo%q_axis)
+            sm%max_abs_energy_error = max(sm%max_abs_energy_error, abs(mo%energy - e0))
+            sm%max_abs_constraint_residual = max(sm%max_abs_constraint_residual, abs(mo%residual))
+            sm%min_tension = min(sm%min_tension, mo%t_bc, mo%t_ad)
+            if (d%error_estimate .and. k > 0) then
+                call cpu_time(t_e0)
+                call solver2%integrate(sys, tau, y2, stat)
+                if (stat%code /= 0) then
+                    stat%msg = 'error estimate (rerun at rtol/100): '//stat%msg
+                    exit
+                end if
+                call elastic_evaluate(sys, y2, mo%th(3), mo2, s2, mo%th)
+                if (s2%code == 0) then
+                    sm%error_estimate_theta = max(sm%error_estimate_theta, &
+                        maxval(abs(mo%th([1, 4, 5]) - mo2%th([1, 4, 5]))))
+                    sm%error_estimate_q = max(sm%error_estimate_q, abs(mo%q_sway - mo2%q_sway))
+                end if
+                call cpu_time(t_e1)
+                sm%error_estimate_cpu = sm%error_estimate_cpu + (t_e1 - t_e0)
+            end if
+            k = k + 1
+        end do
+        call cpu_time(t_cpu1)
+        st = solver%stats()
+        sm%cpu_seconds = t_cpu1 - t_cpu0 - sm%error_estimate_cpu
+        sm%steps = st%steps
+        sm%rhs_evaluations = st%rhs_evals
+        sm%jacobian_evaluations = st%jac_evals
+        sm%method_switches = st%method_switches
+        if (stat%code /= 0) then
+            call atomic_abort(u, datpath)
+            if (index(stat%msg, d%name) == 0) stat%msg = d%name//': '//stat%msg
+            return
+        end if
+        call atomic_commit(u, datpath, stat)
+        if (stat%code /= 0) return
+        call write_summary(d, sm, sumpath, stat)
+    end subroutine run_elastic
 
     !> The checks that end a run because the model no longer holds (ERR_MODEL): a slack
     !! cable, line CD vertical (singular coordinates), cable BC near the horizontal.

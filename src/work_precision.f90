@@ -16,7 +16,10 @@ module work_precision
     use kinds, only: dp
     use status, only: status_t, set_error, ERR_NUMERIC
     use geometry, only: pendulum_t
-    use bifilar_model, only: bifilar_t, chart_energy, NSTATE
+    use bifilar_model, only: bifilar_t, chart_energy, motion_t, NSTATE
+    use ode_system, only: ode_system_t
+    use elastic_model, only: elastic_t, elastic_start, elastic_atol, elastic_evaluate, &
+                             elastic_chart, elastic_energy, ELASTIC_NSTATE
     use lsoda, only: lsoda_t, lsoda_stats_t
     use deck, only: deck_t, deck_echo
     use simulate, only: make_pendulum, start_state, angle_difference, sway_of
@@ -31,6 +34,10 @@ module work_precision
     integer, parameter, public :: WP_REF_SUBSTEPS = 64
     real(dp), parameter :: MIN_CPU = 0.05_dp             !! repeat solves until this much CPU
     integer, parameter :: MAX_REPEATS = 100000
+    !> model = 'elastic': most RK4 steps of one solve (finer RK4 points are left out), and
+    !! the most substeps per output interval of the RK4 + Richardson reference check
+    integer, parameter :: RK4_MAX_STEPS = 2000000
+    integer, parameter :: REF_MAX_SUBSTEPS = 4096
 
     !> One point of a work-precision curve.
     type, public :: wp_point_t
@@ -78,15 +85,27 @@ contains
         integer, intent(out) :: steps, nfe      !! integrator counters
         type(status_t), intent(out) :: stat     !! the integrator's failure
         type(bifilar_t) :: sys
+        sys%p = p
+        call solve_lsoda_sys(sys, y0, times, rtol, [atol], ys, steps, nfe, stat)
+    end subroutine solve_lsoda
+
+    !> LSODA on any system (the paper's or the elastic model), atol of size 1 or n.
+    subroutine solve_lsoda_sys(sys, y0, times, rtol, atol, ys, steps, nfe, stat)
+        class(ode_system_t), intent(inout) :: sys   !! the equations of motion
+        real(dp), intent(in) :: y0(:)           !! state at times(0)
+        real(dp), intent(in) :: times(0:)       !! output times, increasing
+        real(dp), intent(in) :: rtol, atol(:)   !! tolerances
+        real(dp), intent(out) :: ys(:, 0:)      !! (n, 0:nout) states at the times
+        integer, intent(out) :: steps, nfe      !! integrator counters
+        type(status_t), intent(out) :: stat     !! the integrator's failure
         type(lsoda_t) :: solver
         type(lsoda_stats_t) :: st
         integer :: k
-        sys%p = p
         ys = 0.0_dp
         ys(:, 0) = y0
         steps = 0
         nfe = 0
-        call solver%init(sys, times(0), y0, rtol, [atol], stat, tcrit=times(ubound(times, 1)))
+        call solver%init(sys, times(0), y0, rtol, atol, stat, tcrit=times(ubound(times, 1)))
         if (stat%code /= 0) return
         do k = 1, ubound(times, 1)
             call solver%integrate(sys, times(k), ys(:, k), stat)
@@ -95,7 +114,7 @@ contains
         st = solver%stats()
         steps = st%steps
         nfe = st%rhs_evals
-    end subroutine solve_lsoda
+    end subroutine solve_lsoda_sys
 
     !> Fixed-step classical Runge-Kutta 4 with `m` equal steps per output interval.
     subroutine solve_rk4(p, y0, times, m, ys, steps, nfe, stat)
@@ -107,10 +126,23 @@ contains
         integer, intent(out) :: steps, nfe      !! steps and right-hand-side evaluations
         type(status_t), intent(out) :: stat     !! a right-hand-side failure or non-finite state
         type(bifilar_t) :: sys
-        real(dp) :: y(NSTATE), k1(NSTATE), k2(NSTATE), k3(NSTATE), k4(NSTATE), h, t
+        sys%p = p
+        call solve_rk4_sys(sys, y0, times, m, ys, steps, nfe, stat)
+    end subroutine solve_rk4
+
+    !> Fixed-step RK4 on any system (the paper's or the elastic model).
+    subroutine solve_rk4_sys(sys, y0, times, m, ys, steps, nfe, stat)
+        class(ode_system_t), intent(inout) :: sys   !! the equations of motion
+        real(dp), intent(in) :: y0(:)           !! state at times(0)
+        real(dp), intent(in) :: times(0:)       !! output times, increasing
+        integer, intent(in) :: m                !! steps per output interval
+        real(dp), intent(out) :: ys(:, 0:)      !! (n, 0:nout) states at the times
+        integer, intent(out) :: steps, nfe      !! steps and right-hand-side evaluations
+        type(status_t), intent(out) :: stat     !! a right-hand-side failure or non-finite state
+        real(dp), dimension(size(y0)) :: y, k1, k2, k3, k4
+        real(dp) :: h, t
         integer :: k, j
         character(len=120) :: buf
-        sys%p = p
         ys = 0.0_dp
         ys(:, 0) = y0
         y = y0
@@ -138,7 +170,7 @@ contains
             end do
             ys(:, k) = y
         end do
-    end subroutine solve_rk4
+    end subroutine solve_rk4_sys
 
     !> Errors of a trajectory against the reference at the output times, and its energy
     !! error against its own start.
@@ -170,11 +202,14 @@ contains
         type(pendulum_t) :: p
         real(dp), allocatable :: times(:), yref(:, :), ys(:, :), yh1(:, :), yh2(:, :)
         real(dp) :: y0(NSTATE), th0(5), ratio, rt, c0, c1, total, e1, e2, e3
-        integer :: n, i, steps, nfe, nrep, m
+        integer :: n, i, steps, nfe, nrep, m, ns, m_rk0
         character(len=:), allocatable :: path, path2
         type(status_t) :: s1
         integer :: u
-        logical :: loud
+        logical :: loud, elastic, ref_check
+        type(bifilar_t) :: kane
+        type(elastic_t) :: el
+        real(dp), allocatable :: y0s(:), aunit(:)
 
         loud = .true.
         if (present(quiet)) loud = .not. quiet
@@ -185,25 +220,57 @@ contains
         call output_times(d, times)
         n = ubound(times, 1)
         res%nout = n
-        allocate (yref(NSTATE, 0:n), ys(NSTATE, 0:n), yh1(NSTATE, 0:n), yh2(NSTATE, 0:n))
+        ! the system: the paper's, or the elastic model (same start, per-state atol, and RK4
+        ! from its explicit stability bound h <= 1/omega_s up)
+        elastic = trim(d%model) == 'elastic'
+        m_rk0 = 1
+        if (elastic) then
+            el%p = p
+            el%stiffness = d%cable_stiffness
+            el%damping = d%cable_damping
+            ns = ELASTIC_NSTATE
+            allocate (y0s(ns))
+            call elastic_start(el, y0, y0s, stat)
+            if (stat%code /= 0) then
+                stat%msg = d%name//': elastic start: '//stat%msg
+                return
+            end if
+            aunit = elastic_atol(el, 1.0_dp)
+            do while (d%dtau_out/m_rk0*maxval(aunit) > 1.0_dp .and. m_rk0 < 2**20)
+                m_rk0 = 2*m_rk0
+            end do
+        else
+            kane%p = p
+            ns = NSTATE
+            y0s = y0
+            aunit = [1.0_dp]
+        end if
+        allocate (yref(ns, 0:n), ys(ns, 0:n), yh1(ns, 0:n), yh2(ns, 0:n))
         ratio = d%atol/d%rtol
 
         ! reference and its independent confirmation
-        call solve_lsoda(p, y0, times, WP_REF_RTOL, WP_REF_RTOL*ratio, yref, steps, nfe, stat)
+        call run_lsoda(WP_REF_RTOL, yref, stat)
         if (stat%code /= 0) then
             stat%msg = d%name//': work_precision reference (LSODA rtol 1e-13): '//stat%msg
             return
         end if
-        m = WP_REF_SUBSTEPS
+        m = max(WP_REF_SUBSTEPS, 4*m_rk0)
         res%ref_h = d%dtau_out/m
-        call solve_rk4(p, y0, times, m, yh1, steps, nfe, stat)
-        if (stat%code == 0) call solve_rk4(p, y0, times, 2*m, yh2, steps, nfe, stat)
-        if (stat%code /= 0) then
-            stat%msg = d%name//': work_precision reference check (RK4): '//stat%msg
-            return
+        ! elastic model: the RK4 check is left out when it would take too many steps
+        ref_check = 2*m <= REF_MAX_SUBSTEPS .and. real(2*m, dp)*n <= RK4_MAX_STEPS
+        if (ref_check) then
+            call run_rk4(m, yh1, stat)
+            if (stat%code == 0) call run_rk4(2*m, yh2, stat)
+            if (stat%code /= 0) then
+                stat%msg = d%name//': work_precision reference check (RK4): '//stat%msg
+                return
+            end if
+            yh2 = (16.0_dp*yh2 - yh1)/15.0_dp
+            call errors(yh2, yref, res%ref_agreement_theta, res%ref_agreement_q, e1)
+        else
+            res%ref_agreement_theta = -1.0_dp
+            res%ref_agreement_q = -1.0_dp
         end if
-        yh2 = (16.0_dp*yh2 - yh1)/15.0_dp
-        call trajectory_errors(p, yh2, yref, res%ref_agreement_theta, res%ref_agreement_q, e1)
         if (loud) write (*, '(a,es9.2,a,es9.2,a,es9.2,a)') d%name// &
             ': work_precision reference LSODA rtol 1e-13 against RK4 + Richardson (h = ', &
             res%ref_h, '): angles agree to ', res%ref_agreement_theta, ', Q to ', &
@@ -217,7 +284,7 @@ contains
             nrep = 0
             do while (total < MIN_CPU .and. nrep < MAX_REPEATS)
                 call cpu_time(c0)
-                call solve_lsoda(p, y0, times, rt, rt*ratio, ys, steps, nfe, s1)
+                call run_lsoda(rt, ys, s1)
                 call cpu_time(c1)
                 total = total + (c1 - c0)
                 nrep = nrep + 1
@@ -228,7 +295,7 @@ contains
             res%lsoda(i)%cpu_seconds = total/nrep
             res%lsoda(i)%steps = steps
             res%lsoda(i)%rhs_evaluations = nfe
-            call trajectory_errors(p, ys, yref, e1, e2, e3)
+            call errors(ys, yref, e1, e2, e3)
             res%lsoda(i)%error_theta = e1
             res%lsoda(i)%error_q = e2
             res%lsoda(i)%max_abs_energy_error = e3
@@ -237,13 +304,14 @@ contains
 
         ! fixed-step RK4 curve
         do i = 1, WP_NRK4
-            m = 2**(i - 1)
+            m = m_rk0*2**(i - 1)
             res%rk4(i)%h = d%dtau_out/m
+            if (real(m, dp)*n > RK4_MAX_STEPS) cycle
             total = 0.0_dp
             nrep = 0
             do while (total < MIN_CPU .and. nrep < MAX_REPEATS)
                 call cpu_time(c0)
-                call solve_rk4(p, y0, times, m, ys, steps, nfe, s1)
+                call run_rk4(m, ys, s1)
                 call cpu_time(c1)
                 total = total + (c1 - c0)
                 nrep = nrep + 1
@@ -254,7 +322,7 @@ contains
             res%rk4(i)%cpu_seconds = total/nrep
             res%rk4(i)%steps = steps
             res%rk4(i)%rhs_evaluations = nfe
-            call trajectory_errors(p, ys, yref, e1, e2, e3)
+            call errors(ys, yref, e1, e2, e3)
             res%rk4(i)%error_theta = e1
             res%rk4(i)%error_q = e2
             res%rk4(i)%max_abs_energy_error = e3
@@ -279,7 +347,8 @@ contains
         if (stat%code /= 0) return
         call atomic_open(path2, u, stat)
         if (stat%code /= 0) return
-        call header(u, 'fixed-step classical Runge-Kutta 4, h = dtau_out / 2**k')
+        call header(u, 'fixed-step classical Runge-Kutta 4, h = dtau_out / 2**k (elastic '// &
+            'model: from h <= 1/omega_s down, at most 2e6 steps per solve)')
         write (u, '(a)') '# h cpu_seconds steps rhs_evaluations error_theta error_Q '// &
             'max_abs_energy_error'
         do i = 1, WP_NRK4
@@ -292,6 +361,42 @@ contains
         if (stat%code /= 0) return
 
     contains
+
+        !> LSODA on the deck's system at rtol, atol = rtol * ratio (per state for the
+        !! elastic model); steps and nfe of the host are set.
+        subroutine run_lsoda(rtl, yout, st)
+            real(dp), intent(in) :: rtl
+            real(dp), intent(out) :: yout(:, 0:)
+            type(status_t), intent(out) :: st
+            if (elastic) then
+                call solve_lsoda_sys(el, y0s, times, rtl, rtl*ratio*aunit, yout, steps, nfe, st)
+            else
+                call solve_lsoda_sys(kane, y0s, times, rtl, rtl*ratio*aunit, yout, steps, nfe, st)
+            end if
+        end subroutine run_lsoda
+
+        !> RK4 on the deck's system, mm steps per output interval.
+        subroutine run_rk4(mm, yout, st)
+            integer, intent(in) :: mm
+            real(dp), intent(out) :: yout(:, 0:)
+            type(status_t), intent(out) :: st
+            if (elastic) then
+                call solve_rk4_sys(el, y0s, times, mm, yout, steps, nfe, st)
+            else
+                call solve_rk4_sys(kane, y0s, times, mm, yout, steps, nfe, st)
+            end if
+        end subroutine run_rk4
+
+        !> Errors of a trajectory of the deck's system against the reference.
+        subroutine errors(yt, yr, err_theta, err_q, err_energy)
+            real(dp), intent(in) :: yt(:, 0:), yr(:, 0:)
+            real(dp), intent(out) :: err_theta, err_q, err_energy
+            if (elastic) then
+                call elastic_errors(el, yt, yr, err_theta, err_q, err_energy)
+            else
+                call trajectory_errors(p, yt, yr, err_theta, err_q, err_energy)
+            end if
+        end subroutine errors
 
         subroutine header(unit, what)
             integer, intent(in) :: unit
@@ -307,5 +412,38 @@ contains
         end subroutine header
 
     end subroutine run_work_precision
+
+    !> trajectory_errors for the elastic model: angles from the body's pose (elastic_chart,
+    !! theta1 and theta4 continued to the reference's branch), Q and the energy (springs'
+    !! included) from elastic_evaluate.
+    subroutine elastic_errors(el, ys, yref, err_theta, err_q, err_energy)
+        type(elastic_t), intent(in) :: el       !! the elastic system
+        real(dp), intent(in) :: ys(:, 0:)       !! trajectory at the output times
+        real(dp), intent(in) :: yref(:, 0:)     !! reference at the same times
+        real(dp), intent(out) :: err_theta, err_q, err_energy
+        real(dp) :: c1(NSTATE), c2(NSTATE), thr(5), e0
+        type(motion_t) :: m1, m2
+        type(status_t) :: st
+        integer :: k
+        err_theta = 0.0_dp
+        err_q = 0.0_dp
+        err_energy = 0.0_dp
+        e0 = elastic_energy(el, ys(:, 0))
+        thr = 0.0_dp
+        do k = 0, ubound(ys, 2)
+            c2 = elastic_chart(el%p, yref(:, k), thr)
+            thr = [c2(1), 0.0_dp, 0.0_dp, c2(4), c2(5)]
+            c1 = elastic_chart(el%p, ys(:, k), thr)
+            err_theta = max(err_theta, angle_difference(c1, c2))
+            call elastic_evaluate(el, ys(:, k), 0.0_dp, m1, st)
+            if (st%code == 0) call elastic_evaluate(el, yref(:, k), 0.0_dp, m2, st)
+            if (st%code /= 0) then
+                err_q = huge(1.0_dp)
+                cycle
+            end if
+            err_q = max(err_q, abs(m1%q_sway - m2%q_sway))
+            err_energy = max(err_energy, abs(m1%energy - e0))
+        end do
+    end subroutine elastic_errors
 
 end module work_precision

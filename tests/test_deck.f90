@@ -57,6 +57,7 @@ contains
         if (t%want('deck: echo and key = value lines')) call test_echo(t, dir)
         if (t%want('deck: atomic output files')) call test_atomic(t, dir)
         if (t%want('deck: &floquet and &chart')) call test_floquet_chart(t, dir)
+        if (t%want('deck: model and &cables')) call test_cables(t, dir)
     end subroutine run_deck_tests
 
     ! ---------------------------------------------------------------------------------------
@@ -570,5 +571,86 @@ contains
         end subroutine bad
 
     end subroutine test_floquet_chart
+
+    !> &scene model = 'kane' | 'elastic' and the &cables group: read back, defaults, echo,
+    !! bad values an ERR_DECK naming the variable and what is allowed.
+    subroutine test_cables(t, dir)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: dir
+        type(deck_t) :: d
+        type(status_t) :: stat
+        integer :: u, ios
+        character(len=4096) :: line
+        logical :: echoed
+        character(len=*), parameter :: SB = MIN_SUSP//NL//MIN_BODY//NL
+        character(len=*), parameter :: SE = "&scene model = 'Elastic' /"//NL
+
+        call write_text(dir//'/cab.nml', SE//SB//'&cables stiffness = 2.5e7, damping = 0.3 /'//NL)
+        call read_deck(dir//'/cab.nml', d, stat)
+        call t%check('cables: status ok ('//msg_of(stat)//')', stat%code == STATUS_OK)
+        if (stat%code /= STATUS_OK) return
+        call t%check('cables: model lower case', trim(d%model) == 'elastic')
+        call t%check_close('cables: stiffness', d%cable_stiffness, 2.5e7_dp)
+        call t%check_close('cables: damping', d%cable_damping, 0.3_dp)
+        ! the echo carries &cables for the elastic model
+        open (newunit=u, file=dir//'/cab_echo.txt', status='replace', action='write')
+        call deck_echo(d, u)
+        close (u)
+        echoed = .false.
+        open (newunit=u, file=dir//'/cab_echo.txt', status='old', action='read')
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, '# &cables stiffness = 25000000, damping = 0.3 /') == 1) echoed = .true.
+        end do
+        close (u)
+        call t%check('cables: echoed for model = ''elastic''', echoed)
+
+        call write_text(dir//'/cab_def.nml', SB)
+        call read_deck(dir//'/cab_def.nml', d, stat)
+        call t%check('cables: defaults ok ('//msg_of(stat)//')', stat%code == STATUS_OK)
+        call t%check('cables: default model kane', trim(d%model) == 'kane')
+        call t%check_close('cables: default stiffness 1e6', d%cable_stiffness, 1.0e6_dp)
+        call t%check_close('cables: default damping 0.05', d%cable_damping, 0.05_dp)
+        call write_text(dir//'/cab_kane.nml', "&scene model = 'kane' /"//NL//SB)
+        call read_deck(dir//'/cab_kane.nml', d, stat)
+        call t%check('cables: model = ''kane'' ok ('//msg_of(stat)//')', stat%code == STATUS_OK)
+
+        call bad('model_elastik', "&scene model = 'elastik' /"//NL//SB, &
+                 [character(len=20) :: '&scene model', 'elastik', 'kane', 'elastic'])
+        call bad('cables_stiffness_zero', SE//SB//'&cables stiffness = 0 /', &
+                 [character(len=20) :: '&cables stiffness', '1 <= stiffness'])
+        call bad('cables_stiffness_huge', SE//SB//'&cables stiffness = 1e13 /', &
+                 [character(len=20) :: '&cables stiffness', '<= 1e12'])
+        call bad('cables_stiffness_nan', SE//SB//'&cables stiffness = NaN /', &
+                 [character(len=20) :: '&cables stiffness', 'not a finite'])
+        call bad('cables_damping_negative', SE//SB//'&cables damping = -0.1 /', &
+                 [character(len=20) :: '&cables damping', '0 <= damping'])
+        call bad('cables_damping_big', SE//SB//'&cables damping = 11 /', &
+                 [character(len=20) :: '&cables damping', '<= 10'])
+        call bad('cables_damping_inf', SE//SB//'&cables damping = Inf /', &
+                 [character(len=20) :: '&cables damping', 'not a finite'])
+        call bad('cables_unknown_variable', SE//SB//'&cables stifness = 1e6 /', &
+                 [character(len=20) :: 'stifness', '&cables'])
+
+    contains
+
+        subroutine bad(label, text, words)
+            character(len=*), intent(in) :: label, text
+            character(len=*), intent(in) :: words(:)
+            integer :: i
+            character(len=:), allocatable :: path
+            path = dir//'/bad_'//label//'.nml'
+            call write_text(path, text)
+            call read_deck(path, d, stat)
+            call t%check('bad: '//label//' is ERR_DECK ('//msg_of(stat)//')', &
+                         stat%code == ERR_DECK)
+            do i = 1, size(words)
+                call t%check('bad: '//label//' message contains "'//trim(words(i))//'" ('// &
+                             msg_of(stat)//')', index(msg_of(stat), trim(words(i))) > 0)
+            end do
+        end subroutine bad
+
+    end subroutine test_cables
 
 end module test_deck

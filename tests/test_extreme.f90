@@ -38,6 +38,8 @@ contains
         if (t%want('extreme: every deck of input/ (except charts) in this build')) &
             call test_input_decks(t, exe)
         if (t%want('extreme: fuzzed hostile decks')) call test_fuzz(t, exe)
+        if (t%want('extreme: elastic model through slack and snap')) &
+            call test_elastic_slack(t, exe)
     end subroutine run_extreme_tests
 
     ! ---------------------------------------------------------------------------------------
@@ -133,6 +135,34 @@ contains
             end if
         end do
     end subroutine test_decks
+
+    ! ---------------------------------------------------------------------------------------
+    !> input/extreme/elastic_slack.nml: the elastic model through slack and snap: exit 0, no
+    !! NaN, the summary's slack keys present and > 0 for both cables.
+    subroutine test_elastic_slack(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: outdir, sumpath
+        character(len=*), parameter :: keys(4) = [character(len=20) :: 'slack_time_BC', &
+            'slack_time_AD', 'slack_intervals_BC', 'slack_intervals_AD']
+        real(dp) :: v
+        logical :: found
+        integer :: ex, k
+        outdir = SCRATCH//'/elastic_slack'
+        sumpath = outdir//'/elastic_slack.summary'
+        call execute_command_line('rm -rf '//outdir//' && mkdir -p '//outdir)
+        call execute_command_line(exe//' input/extreme/elastic_slack.nml --out '//outdir// &
+                                  ' > '//outdir//'.log 2>&1', exitstat=ex)
+        call t%check('elastic_slack: exit 0 (got '//itoa(ex)//')', ex == 0)
+        call t%check('elastic_slack: no NaN or Inf in any file', no_nan(outdir))
+        do k = 1, size(keys)
+            call summary_value(sumpath, trim(keys(k)), v, found)
+            call t%check('elastic_slack: summary '//trim(keys(k))//' > 0', found .and. v > 0.0_dp)
+        end do
+        call summary_value(sumpath, 'min_tension', v, found)
+        call t%check('elastic_slack: min_tension 0 (slack reported, not an error)', &
+                     found .and. v == 0.0_dp)
+    end subroutine test_elastic_slack
 
     ! ---------------------------------------------------------------------------------------
     !> Every deck of input/ that asks for no chart (a chart takes a minute in the checking

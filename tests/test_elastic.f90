@@ -1,0 +1,350 @@
+!> Tests of the elastic-cable model (module elastic_model): conversions from and to the
+!! paper's coordinates, Newton-Euler against the paper's equations, energy, convergence to
+!! the inextensible model as the stiffness grows, stiffness (BDF), slack cables.
+module test_elastic
+    use kinds, only: dp, pi, deg
+    use status, only: status_t
+    use testing, only: tester_t
+    use geometry, only: pendulum_t, raised_angles, solve_theta5, beta_coeffs
+    use bifilar_model, only: bifilar_t, motion_t, chart_state, evaluate, chart_energy
+    use elastic_model, only: elastic_t, elastic_cables_t, elastic_from_angles, elastic_start, &
+                             elastic_evaluate, elastic_chart, elastic_energy, ELASTIC_NSTATE, &
+                             natural_lengths, elastic_atol, CABLE_BC, CABLE_AD
+    use lsoda, only: lsoda_t, lsoda_stats_t, METHOD_BDF
+    use lapack_wrap, only: la_eig
+    implicit none
+    private
+
+    public :: run_elastic_tests
+
+    !> Torsional period of the cylinder on l = 2 b', b = b' (small amplitude, tau units):
+    !! 4 pi sqrt(I1 l/(m g b^2)) = 2 pi.
+    real(dp), parameter :: TORSION_PERIOD = 2*pi
+
+contains
+
+    subroutine run_elastic_tests(t)
+        type(tester_t), intent(inout) :: t
+        if (t%want('elastic: conversions and Newton-Euler against the paper''s equations')) &
+            call test_conversions(t)
+        if (t%want('elastic: energy conserved without damping')) call test_energy(t)
+        if (t%want('elastic: converges to the paper''s model as 1/stiffness')) &
+            call test_convergence(t)
+        if (t%want('elastic: stiff cables switch LSODA to BDF')) call test_stiff(t)
+        if (t%want('elastic: slack cables')) call test_slack(t)
+    end subroutine run_elastic_tests
+
+    ! ---------------------------------------------------------------------------------------
+    function cylinder(lp) result(p)
+        real(dp), intent(in) :: lp
+        type(pendulum_t) :: p
+        p = pendulum_t()
+        p%big_lp = lp
+    end function cylinder
+
+    !> The paper's raised start (45 degrees, from rest) as a chart state.
+    function raised_start(p) result(yc)
+        type(pendulum_t), intent(in) :: p
+        real(dp) :: yc(10), th(5)
+        type(status_t) :: st
+        call raised_angles(p, 45.0_dp*deg, th, st)
+        call solve_theta5(p, th, st)
+        yc = chart_state(th, [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp])
+    end function raised_start
+
+    !> Angles and rates: the elastic state built from them gives them back; its energy
+    !! (unstretched cables) is the paper model's; with the paper's tensions in the springs
+    !! (elastic_start) Newton-Euler gives the paper's accelerations of R* and the body's
+    !! angular acceleration, eq. (38) checked from outside.
+    subroutine test_conversions(t)
+        type(tester_t), intent(inout) :: t
+        type(elastic_t) :: el
+        type(motion_t) :: mp, me
+        type(status_t) :: st
+        real(dp) :: th(5), thd(5), beta(5), y(ELASTIC_NSTATE), yc(10), eth, ethd, een, ea, eal
+        real(dp) :: et
+        integer :: trial
+        el%p = cylinder(1.8_dp)
+        el%p%lambda = 0.6_dp
+        el%p%r = 0.8_dp
+        el%p%btilde = reshape([0.8_dp, 0.6_dp, 0.0_dp, -0.6_dp, 0.8_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+                               1.0_dp], [3, 3])
+        el%p%inertia = [0.1_dp, 0.15_dp, 0.2_dp]
+        el%stiffness = 1.0e5_dp
+        eth = 0; ethd = 0; een = 0; ea = 0; eal = 0; et = 0
+        do trial = 1, 4
+            th = [0.1_dp*trial - 0.2_dp, 0.05_dp + 0.1_dp*trial, 0.3_dp + 1.4_dp*trial, &
+                  0.4_dp - 0.25_dp*trial, 0.0_dp]
+            call solve_theta5(el%p, th, st)
+            call t%check('conversions: theta5 solves', st%code == 0)
+            thd(1:4) = [0.2_dp, -0.1_dp, 0.3_dp, -0.25_dp]*(0.5_dp + 0.2_dp*trial)
+            beta = beta_coeffs(el%p, th)
+            thd(5) = sum(beta(1:4)*thd(1:4))/beta(5)
+            ! round trip angles -> elastic -> angles, plain lengths
+            el%l0 = -1.0_dp
+            y = elastic_from_angles(el%p, th, thd)
+            call elastic_evaluate(el, y, th(3), me, st)
+            eth = max(eth, maxval(abs(me%th - th)))
+            ethd = max(ethd, maxval(abs(me%thd - thd)))
+            yc = chart_state(th, thd)
+            een = max(een, abs(elastic_energy(el, y) - chart_energy(el%p, yc)))
+            ! Newton-Euler with the paper's tensions
+            call elastic_start(el, yc, y, st)
+            call t%check('conversions: elastic_start', st%code == 0)
+            call evaluate(el%p, yc, th(3), mp, st)
+            call elastic_evaluate(el, y, th(3), me, st)
+            call t%check('conversions: paper''s tensions positive', min(mp%t_bc, mp%t_ad) > 0)
+            ea = max(ea, maxval(abs(me%astar - mp%astar)))
+            eal = max(eal, maxval(abs(me%alpha - mp%alpha)))
+            et = max(et, abs(me%t_bc - mp%t_bc), abs(me%t_ad - mp%t_ad))
+        end do
+        write (*, '(a,5es10.2)') '  round trip th, thd, energy; Newton-Euler a*, alpha: ', &
+            eth, ethd, een, ea, eal
+        call t%check_close('angles -> elastic -> angles', eth, 0.0_dp, atol=1.0e-12_dp)
+        call t%check_close('rates -> elastic -> rates', ethd, 0.0_dp, atol=1.0e-12_dp)
+        call t%check_close('energy of the elastic state = paper model''s', een, 0.0_dp, &
+                           atol=1.0e-13_dp)
+        call t%check_close('springs carry the paper''s tensions at the start', et, 0.0_dp, &
+                           atol=1.0e-10_dp)
+        call t%check_close('Newton: a of R* = paper''s eq. (38)', ea, 0.0_dp, atol=1.0e-10_dp)
+        call t%check_close('Euler: alpha = paper''s eq. (38)', eal, 0.0_dp, atol=1.0e-10_dp)
+    end subroutine test_conversions
+
+    !> Without damping the total energy (kinetic + gravity + springs) is conserved.
+    subroutine test_energy(t)
+        type(tester_t), intent(inout) :: t
+        type(elastic_t) :: el
+        type(lsoda_t) :: s
+        type(status_t) :: st
+        real(dp) :: y(ELASTIC_NSTATE), e0, err, qn
+        real(dp), parameter :: rtol = 1.0e-10_dp
+        integer :: k
+        el%p = cylinder(1.8_dp)
+        el%stiffness = 1.0e4_dp
+        el%damping = 0.0_dp
+        call elastic_start(el, raised_start(el%p), y, st)
+        e0 = elastic_energy(el, y)
+        call s%init(el, 0.0_dp, y, rtol, [1.0e-12_dp], st)
+        err = 0; qn = 0
+        do k = 1, nint(3*TORSION_PERIOD/0.1_dp)
+            call s%integrate(el, 0.1_dp*k, y, st)
+            if (st%code /= 0) exit
+            err = max(err, abs(elastic_energy(el, y) - e0))
+            qn = max(qn, abs(norm2(y(7:10)) - 1.0_dp))
+        end do
+        write (*, '(a,es10.2,a,i0,a,es10.2)') '  k = 1e4: max |energy error| ', err, &
+            ', steps ', nsteps(s), ', max ||q| - 1| ', qn
+        call t%check('energy run integrates 3 torsional periods', st%code == 0)
+        call t%check_close('energy conserved without damping (10 rtol)', err, 0.0_dp, &
+                           atol=10*rtol)
+        call t%check_close('quaternion stays unit', qn, 0.0_dp, atol=10*rtol)
+    end subroutine test_energy
+
+    !> theta1, theta4 and Q approach the inextensible solution over three torsional periods
+    !! as the stiffness grows, the difference shrinking like 1/stiffness.
+    subroutine test_convergence(t)
+        type(tester_t), intent(inout) :: t
+        integer, parameter :: nk = 6
+        real(dp), parameter :: dtau = 0.1_dp
+        real(dp), parameter :: kk(nk) = [1.0e3_dp, 1.0e4_dp, 1.0e5_dp, 1.0e6_dp, 1.0e7_dp, 1.0e8_dp]
+        type(bifilar_t) :: sys
+        type(elastic_t) :: el
+        type(lsoda_t) :: s
+        type(status_t) :: st
+        type(motion_t) :: mo
+        real(dp), allocatable :: ref(:, :)
+        real(dp) :: yc(10), y(ELASTIC_NSTATE), th3, diff(3, nk), slope(3), thr(5)
+        integer :: nout, k, j
+        logical :: ok
+        character(len=*), parameter :: names(3) = ['theta1', 'theta4', 'Q     ']
+        nout = nint(3*TORSION_PERIOD/dtau)
+        allocate (ref(3, 0:nout))
+        sys%p = cylinder(1.8_dp)
+        sys%p%stab_rate = 1.0_dp
+        yc = raised_start(sys%p)
+        call s%init(sys, 0.0_dp, yc, 1.0e-12_dp, [1.0e-14_dp], st)
+        th3 = 0
+        ok = .true.
+        do k = 0, nout
+            if (k > 0) call s%integrate(sys, dtau*k, yc, st)
+            ok = ok .and. st%code == 0
+            call evaluate(sys%p, yc, th3, mo, st)
+            th3 = mo%th(3)
+            ref(:, k) = [mo%th(1), mo%th(4), mo%q_sway]
+        end do
+        call t%check('inextensible reference integrates', ok)
+        do j = 1, nk
+            el%p = sys%p
+            el%stiffness = kk(j)
+            el%damping = 0.05_dp
+            call elastic_start(el, raised_start(el%p), y, st)
+            call s%init(el, 0.0_dp, y, 1.0e-11_dp, elastic_atol(el, 1.0e-13_dp), st)
+            thr = 0
+            diff(:, j) = 0
+            do k = 0, nout
+                if (k > 0) call s%integrate(el, dtau*k, y, st)
+                ok = ok .and. st%code == 0
+                call elastic_evaluate(el, y, thr(3), mo, st, thr)
+                thr = mo%th
+                diff(:, j) = max(diff(:, j), abs([mo%th(1), mo%th(4), mo%q_sway] - ref(:, k)))
+            end do
+            write (*, '(a,es8.1,a,3es10.2,a,i0,a,i0)') '  k = ', kk(j), &
+                ': max |diff| theta1, theta4, Q ', diff(:, j), '  steps ', nsteps(s), &
+                '  switches ', nswitch(s)
+        end do
+        call t%check('elastic runs integrate', ok)
+        ! least-squares slope of log(diff) against log(k) over 1e3..1e6 (where the
+        ! difference is well above the integration error)
+        do j = 1, 3
+            slope(j) = fit_slope(log10(kk(1:4)), log10(diff(j, 1:4)))
+            write (*, '(a,f7.3)') '  slope '//trim(names(j))//': ', slope(j)
+            call t%check('difference in '//trim(names(j))//' shrinks like 1/stiffness '// &
+                         '(slope in [-1.3, -0.7])', slope(j) > -1.3_dp .and. slope(j) < -0.7_dp)
+            ! beyond 1e6 the integration error (rtol 1e-11) floors the difference near 1e-7
+            call t%check(trim(names(j))//': k = 1e7, 1e8 closer than k = 1e6 / 5', &
+                         max(diff(j, 5), diff(j, 6)) < 0.2_dp*diff(j, 4))
+        end do
+    end subroutine test_convergence
+
+    integer function nsteps(s)
+        type(lsoda_t), intent(in) :: s
+        type(lsoda_stats_t) :: ss
+        ss = s%stats()
+        nsteps = ss%steps
+    end function nsteps
+
+    integer function nswitch(s)
+        type(lsoda_t), intent(in) :: s
+        type(lsoda_stats_t) :: ss
+        ss = s%stats()
+        nswitch = ss%method_switches
+    end function nswitch
+
+    pure real(dp) function fit_slope(x, y) result(b)
+        real(dp), intent(in) :: x(:), y(:)
+        real(dp) :: xm, ym
+        xm = sum(x)/size(x)
+        ym = sum(y)/size(y)
+        b = sum((x - xm)*(y - ym))/sum((x - xm)**2)
+    end function fit_slope
+
+    !> At stiffness 1e6 with critical damping (zeta = 1) LSODA switches to BDF and takes far fewer steps than an
+    !! explicit method would need for stability alone (classical RK4: |h lambda| <= 2.8 on
+    !! the imaginary axis, lambda the largest eigenvalue of the Jacobian at the start).
+    subroutine test_stiff(t)
+        type(tester_t), intent(inout) :: t
+        type(elastic_t) :: el
+        type(lsoda_t) :: s
+        type(status_t) :: st
+        type(lsoda_stats_t) :: ss
+        real(dp) :: y(ELASTIC_NSTATE), jac(ELASTIC_NSTATE, ELASTIC_NSTATE), f0(ELASTIC_NSTATE)
+        real(dp) :: fp(ELASTIC_NSTATE), fm(ELASTIC_NSTATE), yp(ELASTIC_NSTATE), h, rho, tend
+        real(dp) :: rk4_steps
+        complex(dp) :: lam(ELASTIC_NSTATE)
+        integer :: j
+        el%p = cylinder(1.8_dp)
+        el%stiffness = 1.0e6_dp
+        el%damping = 1.0_dp
+        call elastic_start(el, raised_start(el%p), y, st)
+        call el%rhs(0.0_dp, y, f0, st)
+        do j = 1, ELASTIC_NSTATE
+            h = 1.0e-7_dp*max(1.0_dp, abs(y(j)))
+            yp = y
+            yp(j) = y(j) + h
+            call el%rhs(0.0_dp, yp, fp, st)
+            yp(j) = y(j) - h
+            call el%rhs(0.0_dp, yp, fm, st)
+            jac(:, j) = (fp - fm)/(2*h)
+        end do
+        call la_eig(jac, lam, st)
+        rho = maxval(abs(lam))
+        tend = 3*TORSION_PERIOD
+        rk4_steps = tend*rho/2.8_dp
+        call s%init(el, 0.0_dp, y, 1.0e-8_dp, elastic_atol(el, 1.0e-10_dp), st)
+        call s%integrate(el, tend, y, st)
+        ss = s%stats()
+        write (*, '(a,es10.3,a,f10.0,a,i0,a,i0,a,i0,a,i0,a,i0)') &
+            '  k = 1e6, zeta 1, rtol 1e-8: spectral radius ', rho, ', RK4 stable steps >= ', rk4_steps, &
+            '; LSODA steps ', ss%steps, ', rhs ', ss%rhs_evals, ', jac ', ss%jac_evals, &
+            ', switches ', ss%method_switches, ', last method ', ss%method_last
+        call t%check('stiff run integrates 3 torsional periods', st%code == 0)
+        call t%check('spectral radius ~ sqrt(k)', rho > sqrt(el%stiffness/el%p%big_l))
+        call t%check('LSODA switched to BDF', ss%method_switches >= 1 .and. &
+                     ss%method_last == METHOD_BDF)
+        call t%check('LSODA steps < RK4 stable steps / 10', 10.0_dp*ss%steps < rk4_steps)
+    end subroutine test_stiff
+
+    !> Thrown upwards from the rest-length pose, the body flies free: both cables slack
+    !! (tension 0) for exactly 2 v0 (pure translation under gravity), the run continues
+    !! through the slack interval and the re-tensioning, and without damping the energy is
+    !! conserved throughout.
+    subroutine test_slack(t)
+        type(tester_t), intent(inout) :: t
+        type(elastic_t) :: el
+        type(lsoda_t) :: s
+        type(status_t) :: st
+        type(motion_t) :: mo
+        type(elastic_cables_t) :: cab
+        real(dp), parameter :: v0 = 1.0_dp, dtau = 0.005_dp, rtol = 1.0e-10_dp
+        real(dp) :: y(ELASTIC_NSTATE), e0, err, thr(5), tslack(2), tfirst(2), tmax_slack
+        logical :: was(2), zero_when_slack, ok
+        integer :: k, j, nslack(2)
+        el%p = cylinder(1.8_dp)
+        el%stiffness = 1.0e4_dp
+        el%damping = 0.0_dp
+        el%l0 = -1.0_dp                  ! the deck's lengths unstretched: T = 0 at the start
+        ! rest pose of the paper's model with l' = 1.8 (theta5 from eq. (2)) and an upward throw
+        block
+            real(dp) :: th(5)
+            th = 0
+            call solve_theta5(el%p, th, st)
+            y = elastic_from_angles(el%p, th, [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp])
+        end block
+        y(6) = v0
+        e0 = elastic_energy(el, y)
+        call s%init(el, 0.0_dp, y, rtol, [1.0e-12_dp], st)
+        err = 0
+        thr = 0
+        was = .true.
+        tslack = 0
+        tfirst = -1
+        nslack = 0
+        tmax_slack = 0
+        zero_when_slack = .true.
+        ok = .true.
+        do k = 1, nint(8.0_dp/dtau)
+            call s%integrate(el, dtau*k, y, st)
+            ok = ok .and. st%code == 0
+            if (st%code /= 0) exit
+            call elastic_evaluate(el, y, thr(3), mo, st, thr, cab)
+            thr = mo%th
+            err = max(err, abs(mo%energy - e0))
+            do j = 1, 2
+                if (cab%slack(j)) then
+                    tslack(j) = tslack(j) + dtau
+                    zero_when_slack = zero_when_slack .and. cab%tension(j) == 0.0_dp
+                else if (was(j)) then
+                    nslack(j) = nslack(j) + 1
+                    if (tfirst(j) < 0) tfirst(j) = dtau*k
+                end if
+                was(j) = cab%slack(j)
+            end do
+            zero_when_slack = zero_when_slack .and. (mo%t_bc == cab%tension(CABLE_BC)) &
+                              .and. (mo%t_ad == cab%tension(CABLE_AD))
+        end do
+        write (*, '(a,2f8.3,a,2i3,a,2f8.3,a,es10.2,a,i0)') '  first taut again at ', tfirst, &
+            '; slack intervals ', nslack, '; total slack time ', tslack, &
+            '; max |energy error| ', err, '; steps ', nsteps(s)
+        call t%check('slack run integrates', ok)
+        call t%check_close('BC slack for 2 v0 (free flight)', tfirst(CABLE_BC), 2*v0, &
+                           atol=2*dtau)
+        call t%check_close('AD slack for 2 v0 (free flight)', tfirst(CABLE_AD), 2*v0, &
+                           atol=2*dtau)
+        call t%check('tension reported 0 while slack', zero_when_slack)
+        call t%check_close('energy conserved through slack and snap (100 rtol)', err, 0.0_dp, &
+                           atol=100*rtol)
+        call t%check('natural lengths are the deck''s', all(natural_lengths(el) == &
+                     [el%p%big_l, el%p%big_lp]))
+    end subroutine test_slack
+
+end module test_elastic
