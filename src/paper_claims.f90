@@ -314,7 +314,8 @@ contains
             '', '| claim | paper | measure | ours | holds |', '|---|---|---|---|---|'
         do k = 1, size(claims)
             write (val, '(es10.3)') claims(k)%ours
-            if (abs(claims(k)%ours) >= 1.0e-3_dp) write (val, '(f0.3)') claims(k)%ours
+            if (abs(claims(k)%ours) >= 1.0e-3_dp) write (val, '(f12.3)') claims(k)%ours
+            val = adjustl(val)
             write (u, '(a)') '| '//claims(k)%what//' | '//claims(k)%paper//' | '// &
                 claims(k)%measure//' | '//trim(val)//' | '// &
                 merge('yes', 'no ', claims(k)%holds)//' |'
@@ -352,10 +353,10 @@ contains
             call read_key(outdir//'/'//trim(decks(k))//'.floquet', 'period', per, have_f)
             call read_key(outdir//'/'//trim(decks(k))//'.summary', 'max_abs_theta1', th1, have_s)
             if (.not. have_f) cycle
-            write (buf, '(a,f0.4,a,es10.4,a)') ' | ', per, ' | ', mmod, ' | '// &
+            write (buf, '(a,f8.4,a,es10.4,a)') ' | ', per, ' | ', mmod, ' | '// &
                 merge('yes', 'no ', mmod <= 1.0_dp + 1.0e-6_dp)//' | '
             if (have_s) then
-                write (buf(len_trim(buf) + 2:), '(f0.4,a)') th1, ' |'
+                write (buf(len_trim(buf) + 2:), '(f8.4,a)') th1, ' |'
             else
                 buf = trim(buf)//' (no simulation) |'
             end if
