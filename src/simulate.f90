@@ -135,7 +135,7 @@ contains
         type(lsoda_t) :: solver, solver2
         type(lsoda_stats_t) :: st
         type(motion_t) :: mo
-        real(dp) :: y(NSTATE), ystep(NSTATE), th0(5), tau, e0, th3, row(17), t_cpu0, t_cpu1
+        real(dp) :: y(NSTATE), ystep(NSTATE), th0(5), tau, e0, th3, row(17), t_cpu0
         real(dp) :: t_prev, y2(NSTATE), t_e0, t_e1, rt2
         character(len=:), allocatable :: datpath, sumpath
         integer :: u, k, nout, nstep_row
@@ -150,15 +150,8 @@ contains
         call start_state(d, sys%p, y, th0, stat)
         if (stat%code /= 0) return
 
-        datpath = outdir//'/'//d%name//'.dat'
-        sumpath = outdir//'/'//d%name//'.summary'
-        call atomic_open(datpath, u, stat)
+        call open_dat(d, outdir, '', u, datpath, sumpath, stat)
         if (stat%code /= 0) return
-        write (u, '(a)') '# bifilar: '//trim(d%title)
-        write (u, '(a)') '# time tau = sqrt(g/b'') t; lengths over b''; tensions over m g; '// &
-            'energy over m g b''; angles in rad'
-        call deck_echo(d, u)
-        write (u, '(a)') COLUMNS
 
         call cpu_time(t_cpu0)
         ! tcrit = tau_end: no step goes past the end, so every step end checked lies in the run
@@ -246,16 +239,7 @@ contains
             end if
             call model_checks(mo, tau, stat)
             if (stat%code /= 0) exit
-            write (u, '(f14.6,16es24.15e3)') row
-            sm%rows = sm%rows + 1
-            sm%tau_reached = tau
-            sm%max_abs_theta1 = max(sm%max_abs_theta1, abs(mo%th(1)))
-            sm%max_abs_theta4 = max(sm%max_abs_theta4, abs(mo%th(4)))
-            sm%max_q = max(sm%max_q, mo%q_sway)
-            sm%max_q_axis = max(sm%max_q_axis, mo%q_axis)
-            sm%max_abs_energy_error = max(sm%max_abs_energy_error, abs(mo%energy - e0))
-            sm%max_abs_constraint_residual = max(sm%max_abs_constraint_residual, abs(mo%residual))
-            sm%min_tension = min(sm%min_tension, mo%t_bc, mo%t_ad)
+            call record_row(u, row, mo, sm)
             if (d%error_estimate .and. k > 0) then
                 call cpu_time(t_e0)
                 call solver2%integrate(sys, tau, y2, stat)
@@ -271,8 +255,63 @@ contains
             end if
             k = k + 1
         end do
+        call finish_run(d, solver%stats(), t_cpu0, u, datpath, sm, stat)
+        if (stat%code /= 0) return
+
+        call write_summary(d, sm, sumpath, stat)
+    end subroutine run_simulation
+
+    !> Open OUTDIR/NAME.dat (as NAME.dat.tmp) and write its header: title, units, an optional
+    !! model note, the effective deck, the column line.
+    subroutine open_dat(d, outdir, note, u, datpath, sumpath, stat)
+        type(deck_t), intent(in) :: d           !! the deck
+        character(len=*), intent(in) :: outdir  !! output directory
+        character(len=*), intent(in) :: note    !! extra '# ' line ('' for none)
+        integer, intent(out) :: u               !! the open unit
+        character(len=:), allocatable, intent(out) :: datpath, sumpath
+        type(status_t), intent(out) :: stat     !! ERR_IO
+        datpath = outdir//'/'//d%name//'.dat'
+        sumpath = outdir//'/'//d%name//'.summary'
+        call atomic_open(datpath, u, stat)
+        if (stat%code /= 0) return
+        write (u, '(a)') '# bifilar: '//trim(d%title)
+        write (u, '(a)') '# time tau = sqrt(g/b'') t; lengths over b''; tensions over m g; '// &
+            'energy over m g b''; angles in rad'
+        if (len(note) > 0) write (u, '(a)') note
+        call deck_echo(d, u)
+        write (u, '(a)') COLUMNS
+    end subroutine open_dat
+
+    !> Write one checked output row and fold it into the run's figures.
+    subroutine record_row(u, row, mo, sm)
+        integer, intent(in) :: u                !! the open .dat unit
+        real(dp), intent(in) :: row(17)         !! tau, ..., energy_error, constraint_residual
+        type(motion_t), intent(in) :: mo        !! the motion of the row
+        type(run_summary_t), intent(inout) :: sm
+        write (u, '(f14.6,16es24.15e3)') row
+        sm%rows = sm%rows + 1
+        sm%tau_reached = row(1)
+        sm%max_abs_theta1 = max(sm%max_abs_theta1, abs(mo%th(1)))
+        sm%max_abs_theta4 = max(sm%max_abs_theta4, abs(mo%th(4)))
+        sm%max_q = max(sm%max_q, mo%q_sway)
+        sm%max_q_axis = max(sm%max_q_axis, mo%q_axis)
+        sm%max_abs_energy_error = max(sm%max_abs_energy_error, abs(row(16)))
+        sm%max_abs_constraint_residual = max(sm%max_abs_constraint_residual, abs(mo%residual))
+        sm%min_tension = min(sm%min_tension, mo%t_bc, mo%t_ad)
+    end subroutine record_row
+
+    !> End a run: the solver's figures and the CPU time into sm; the .dat committed, or
+    !! removed (with the deck named in the message) when stat carries an error.
+    subroutine finish_run(d, st, t_cpu0, u, datpath, sm, stat)
+        type(deck_t), intent(in) :: d           !! the deck
+        type(lsoda_stats_t), intent(in) :: st   !! the main solver's statistics
+        real(dp), intent(in) :: t_cpu0          !! cpu_time at the start of the integration
+        integer, intent(in) :: u                !! the open .dat unit
+        character(len=*), intent(in) :: datpath
+        type(run_summary_t), intent(inout) :: sm
+        type(status_t), intent(inout) :: stat   !! the run's status; ERR_IO from the commit
+        real(dp) :: t_cpu1
         call cpu_time(t_cpu1)
-        st = solver%stats()
         sm%cpu_seconds = t_cpu1 - t_cpu0 - sm%error_estimate_cpu
         sm%steps = st%steps
         sm%rhs_evaluations = st%rhs_evals
@@ -284,10 +323,7 @@ contains
             return
         end if
         call atomic_commit(u, datpath, stat)
-        if (stat%code /= 0) return
-
-        call write_summary(d, sm, sumpath, stat)
-    end subroutine run_simulation
+    end subroutine finish_run
 
     !> Write OUTDIR/NAME.summary (key = value lines) of a finished run.
     subroutine write_summary(d, sm, sumpath, stat)
@@ -350,7 +386,7 @@ contains
         type(status_t) :: s2
         real(dp) :: yc(NSTATE), th0(5), y(ELASTIC_NSTATE), ystep(ELASTIC_NSTATE)
         real(dp) :: y2(ELASTIC_NSTATE), atol(ELASTIC_NSTATE), th_row(5), th_step(5)
-        real(dp) :: tau, e0, row(17), t_cpu0, t_cpu1, t_prev, t_e0, t_e1, rt2
+        real(dp) :: tau, e0, row(17), t_cpu0, t_prev, t_e0, t_e1, rt2
         logical :: slack_prev(2)
         character(len=:), allocatable :: datpath, sumpath
         integer :: u, k, j, nout, nstep_row
@@ -370,17 +406,10 @@ contains
         end if
         atol = elastic_atol(sys, d%atol)
 
-        datpath = outdir//'/'//d%name//'.dat'
-        sumpath = outdir//'/'//d%name//'.summary'
-        call atomic_open(datpath, u, stat)
+        call open_dat(d, outdir, '# model elastic: T_BC, T_AD from the springs (0 when '// &
+            'slack); energy_error includes the springs'' energy; constraint_residual = '// &
+            '|AD| - l''', u, datpath, sumpath, stat)
         if (stat%code /= 0) return
-        write (u, '(a)') '# bifilar: '//trim(d%title)
-        write (u, '(a)') '# time tau = sqrt(g/b'') t; lengths over b''; tensions over m g; '// &
-            'energy over m g b''; angles in rad'
-        write (u, '(a)') '# model elastic: T_BC, T_AD from the springs (0 when slack); '// &
-            'energy_error includes the springs'' energy; constraint_residual = |AD| - l'''
-        call deck_echo(d, u)
-        write (u, '(a)') COLUMNS
 
         call cpu_time(t_cpu0)
         call solver%init(sys, 0.0_dp, y, d%rtol, atol, stat, tcrit=d%tau_end)
@@ -487,16 +516,7 @@ contains
                 call set_error(stat, ERR_NUMERIC, trim(buf))
                 exit
             end if
-            write (u, '(f14.6,16es24.15e3)') row
-            sm%rows = sm%rows + 1
-            sm%tau_reached = tau
-            sm%max_abs_theta1 = max(sm%max_abs_theta1, abs(mo%th(1)))
-            sm%max_abs_theta4 = max(sm%max_abs_theta4, abs(mo%th(4)))
-            sm%max_q = max(sm%max_q, mo%q_sway)
-            sm%max_q_axis = max(sm%max_q_axis, mo%q_axis)
-            sm%max_abs_energy_error = max(sm%max_abs_energy_error, abs(mo%energy - e0))
-            sm%max_abs_constraint_residual = max(sm%max_abs_constraint_residual, abs(mo%residual))
-            sm%min_tension = min(sm%min_tension, mo%t_bc, mo%t_ad)
+            call record_row(u, row, mo, sm)
             if (d%error_estimate .and. k > 0) then
                 call cpu_time(t_e0)
                 call solver2%integrate(sys, tau, y2, stat)
@@ -515,19 +535,7 @@ contains
             end if
             k = k + 1
         end do
-        call cpu_time(t_cpu1)
-        st = solver%stats()
-        sm%cpu_seconds = t_cpu1 - t_cpu0 - sm%error_estimate_cpu
-        sm%steps = st%steps
-        sm%rhs_evaluations = st%rhs_evals
-        sm%jacobian_evaluations = st%jac_evals
-        sm%method_switches = st%method_switches
-        if (stat%code /= 0) then
-            call atomic_abort(u, datpath)
-            if (index(stat%msg, d%name) == 0) stat%msg = d%name//': '//stat%msg
-            return
-        end if
-        call atomic_commit(u, datpath, stat)
+        call finish_run(d, solver%stats(), t_cpu0, u, datpath, sm, stat)
         if (stat%code /= 0) return
         call write_summary(d, sm, sumpath, stat)
     end subroutine run_elastic
