@@ -387,8 +387,6 @@ contains
         type(status_t), intent(out) :: stat     !! ERR_NUMERIC: QZ failed or infinite multiplier
         complex(dp) :: alpha(size(n, 1))
         real(dp) :: beta(size(n, 1))
-        integer :: k, i, idx(size(n, 1)), m
-        m = size(n, 1)
         lam = (0.0_dp, 0.0_dp)
         call la_geig(matmul(rh, n), matmul(n, r0), alpha, beta, stat)
         if (stat%code /= 0) return
@@ -397,16 +395,8 @@ contains
                            'multiplier); the orbit is not a clean torsion of this scene')
             return
         end if
-        idx = [(k, k=1, m)]
-        do k = 2, m
-            i = k
-            do while (i > 1)
-                if (abs(alpha(idx(i))/beta(idx(i))) <= abs(alpha(idx(i - 1))/beta(idx(i - 1)))) exit
-                idx([i - 1, i]) = idx([i, i - 1])
-                i = i - 1
-            end do
-        end do
-        lam = alpha(idx)/beta(idx)
+        lam = alpha/beta
+        lam = lam(by_modulus(lam))
     end subroutine pencil_multipliers
 
     !> The six non-trivial multipliers from the half-period matrix N = H(t*/2) without forming
@@ -425,7 +415,7 @@ contains
         type(floquet_result_t), intent(inout) :: res
         type(status_t), intent(out) :: stat
         real(dp) :: r0w(NSTATE, 3), rhw(NSTATE, 3), f0(NSTATE), fh(NSTATE)
-        real(dp) :: u0(NSTATE, 6), uh(NSTATE, 6), ph(NSTATE, NSTATE), rr(NSTATE)
+        real(dp) :: u0(NSTATE, 6), uh(NSTATE, 6), rr(NSTATE)
         real(dp) :: n6(6, 6), r0(6, 6), rh(6, 6)
         complex(dp) :: lam(6)
         integer :: k
@@ -435,12 +425,7 @@ contains
         if (stat%code /= 0) return
         call complement_basis(reshape([r0w(:, 1), r0w(:, 2), r0w(:, 3), f0], [NSTATE, 4]), u0)
         call complement_basis(reshape([rhw(:, 1), rhw(:, 2), rhw(:, 3), fh], [NSTATE, 4]), uh)
-        ph = 0.0_dp
-        do k = 1, NSTATE
-            ph(k, k) = 1.0_dp
-        end do
-        ph = ph - spread(fh, 2, NSTATE)*spread(fh, 1, NSTATE)/dot_product(fh, fh)
-        n6 = matmul(transpose(uh), matmul(ph, matmul(n, u0)))
+        n6 = matmul(transpose(uh), matmul(projector_along(fh), matmul(n, u0)))
         rr = [(1.0_dp, k=1, 5), (-1.0_dp, k=1, 5)]
         r0 = matmul(transpose(u0), spread(rr, 2, 6)*u0)
         rh = matmul(transpose(uh), spread(rr, 2, 6)*uh)
@@ -461,10 +446,9 @@ contains
         real(dp), intent(in) :: h(NSTATE, NSTATE)  !! monodromy matrix
         type(floquet_result_t), intent(inout) :: res
         type(status_t), intent(out) :: stat
-        real(dp) :: rows(NSTATE, 4), u(NSTATE, 6), v(NSTATE, 8), pf(NSTATE, NSTATE), m6(6, 6)
+        real(dp) :: rows(NSTATE, 4), u(NSTATE, 6), v(NSTATE, 8), m6(6, 6)
         real(dp) :: f(NSTATE), r, hn
         complex(dp) :: lam(6)
-        integer :: k, idx(6), i
         call structure_rows(p, y0, rows, f, stat)
         if (stat%code /= 0) return
         ! residuals of the four exact identities, each relative to its vector
@@ -480,24 +464,10 @@ contains
         res%trivial_residual = r/hn
         ! reduced map on S
         call complement_basis(reshape([rows(:, 1), rows(:, 2), rows(:, 3), f], [NSTATE, 4]), u)
-        pf = 0.0_dp
-        do k = 1, NSTATE
-            pf(k, k) = 1.0_dp
-        end do
-        pf = pf - spread(f, 2, NSTATE)*spread(f, 1, NSTATE)/dot_product(f, f)
-        m6 = matmul(transpose(u), matmul(pf, matmul(h, u)))
+        m6 = matmul(transpose(u), matmul(projector_along(f), matmul(h, u)))
         call la_eig(m6, lam, stat)
         if (stat%code /= 0) return
-        idx = [(k, k=1, 6)]
-        do k = 2, 6
-            i = k
-            do while (i > 1)
-                if (abs(lam(idx(i))) <= abs(lam(idx(i - 1)))) exit
-                idx([i - 1, i]) = idx([i, i - 1])
-                i = i - 1
-            end do
-        end do
-        res%multipliers(1:6) = lam(idx)
+        res%multipliers(1:6) = lam(by_modulus(lam))
         res%trivial(1:6) = .false.
         res%multipliers(7:10) = (1.0_dp, 0.0_dp)
         res%trivial(7:10) = .true.
@@ -505,6 +475,33 @@ contains
         res%stable = res%max_modulus <= 1.0_dp + STABILITY_MARGIN
         res%monodromy = h
     end subroutine multipliers_from_monodromy
+
+    !> Indices that order lam by decreasing modulus (insertion sort; ties keep their order).
+    pure function by_modulus(lam) result(idx)
+        complex(dp), intent(in) :: lam(:)
+        integer :: idx(size(lam))
+        integer :: k, i
+        idx = [(k, k=1, size(lam))]
+        do k = 2, size(lam)
+            i = k
+            do while (i > 1)
+                if (abs(lam(idx(i))) <= abs(lam(idx(i - 1)))) exit
+                idx([i - 1, i]) = idx([i, i - 1])
+                i = i - 1
+            end do
+        end do
+    end function by_modulus
+
+    !> The projection I - f f^T/|f|^2 along the flow direction f.
+    pure function projector_along(f) result(pf)
+        real(dp), intent(in) :: f(NSTATE)
+        real(dp) :: pf(NSTATE, NSTATE)
+        integer :: k
+        pf = -spread(f, 2, NSTATE)*spread(f, 1, NSTATE)/dot_product(f, f)
+        do k = 1, NSTATE
+            pf(k, k) = pf(k, k) + 1.0_dp
+        end do
+    end function projector_along
 
     !> Gradients at y of the constraint G, its rate G' and the energy E (columns 1-3, by the
     !! fourth-order central stencil, h = 1e-3 max(1, |y_j|): error ~ 1e-13), and the flow f(y).

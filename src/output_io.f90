@@ -8,7 +8,7 @@ module output_io
     implicit none
     private
 
-    public :: atomic_open, atomic_commit, atomic_abort, write_kv, all_finite
+    public :: atomic_open, atomic_commit, atomic_abort, write_kv, read_kv, all_finite
 
     !> Write `key = value` on one line; reals in full precision, logicals as yes/no.
     interface write_kv
@@ -127,5 +127,31 @@ contains
         real(dp), intent(in) :: x(:)                !! values to test
         all_finite = all(ieee_is_finite(x))
     end function all_finite
+
+    !> The real value of `key = value` in a file (lines starting with # are skipped);
+    !! found = .false. when the file or the key is absent or the value is not a number.
+    subroutine read_kv(path, key, val, found)
+        character(len=*), intent(in) :: path    !! file of key = value lines
+        character(len=*), intent(in) :: key     !! the key
+        real(dp), intent(out) :: val            !! its value (0 when not found)
+        logical, intent(out) :: found
+        integer :: u, ios, eq
+        character(len=512) :: line
+        val = 0.0_dp
+        found = .false.
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            eq = index(line, '=')
+            if (eq == 0 .or. line(1:1) == '#') cycle
+            if (trim(adjustl(line(1:eq - 1))) /= key) cycle
+            read (line(eq + 1:), *, iostat=ios) val
+            found = ios == 0
+            exit
+        end do
+        close (u)
+    end subroutine read_kv
 
 end module output_io

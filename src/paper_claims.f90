@@ -6,7 +6,7 @@
 module paper_claims
     use kinds, only: dp, pi
     use status, only: status_t, set_error, ERR_IO
-    use output_io, only: atomic_open, atomic_commit
+    use output_io, only: atomic_open, atomic_commit, read_kv
     use geometry, only: pendulum_t, raised_angles
     use bifilar_model, only: chart_state
     use floquet, only: jacobian_z
@@ -349,9 +349,9 @@ contains
             '| deck | figures | period t* | largest modulus | stable | max abs theta1 (rad) '// &
             'from theta1(0) = 0.01 |', '|---|---|---|---|---|---|'
         do k = 1, size(decks)
-            call read_key(outdir//'/'//trim(decks(k))//'.floquet', 'max_modulus', mmod, have_f)
-            call read_key(outdir//'/'//trim(decks(k))//'.floquet', 'period', per, have_f)
-            call read_key(outdir//'/'//trim(decks(k))//'.summary', 'max_abs_theta1', th1, have_s)
+            call read_kv(outdir//'/'//trim(decks(k))//'.floquet', 'max_modulus', mmod, have_f)
+            call read_kv(outdir//'/'//trim(decks(k))//'.floquet', 'period', per, have_f)
+            call read_kv(outdir//'/'//trim(decks(k))//'.summary', 'max_abs_theta1', th1, have_s)
             if (.not. have_f) cycle
             write (buf, '(a,f8.4,a,es10.4,a)') ' | ', per, ' | ', mmod, ' | '// &
                 merge('yes', 'no ', mmod <= 1.0_dp + 1.0e-6_dp)//' | '
@@ -364,28 +364,5 @@ contains
         end do
     end subroutine stability_lines
 
-    !> Value of `key = value` in a file; found = .false. when the file or key is absent.
-    subroutine read_key(path, key, val, found)
-        character(len=*), intent(in) :: path, key
-        real(dp), intent(out) :: val
-        logical, intent(out) :: found
-        integer :: u, ios, eq
-        character(len=512) :: line
-        val = 0.0_dp
-        found = .false.
-        open (newunit=u, file=path, status='old', action='read', iostat=ios)
-        if (ios /= 0) return
-        do
-            read (u, '(a)', iostat=ios) line
-            if (ios /= 0) exit
-            eq = index(line, '=')
-            if (eq == 0 .or. line(1:1) == '#') cycle
-            if (trim(adjustl(line(1:eq - 1))) /= key) cycle
-            read (line(eq + 1:), *, iostat=ios) val
-            found = ios == 0
-            exit
-        end do
-        close (u)
-    end subroutine read_key
 
 end module paper_claims

@@ -5,6 +5,7 @@ module test_elastic
     use kinds, only: dp, pi, deg
     use status, only: status_t
     use testing, only: tester_t
+    use test_model, only: cylinder
     use geometry, only: pendulum_t, raised_angles, solve_theta5, beta_coeffs
     use bifilar_model, only: bifilar_t, motion_t, chart_state, evaluate, chart_energy
     use elastic_model, only: elastic_t, elastic_cables_t, elastic_from_angles, elastic_start, &
@@ -35,13 +36,6 @@ contains
     end subroutine run_elastic_tests
 
     ! ---------------------------------------------------------------------------------------
-    function cylinder(lp) result(p)
-        real(dp), intent(in) :: lp
-        type(pendulum_t) :: p
-        p = pendulum_t()
-        p%big_lp = lp
-    end function cylinder
-
     !> The paper's raised start (45 degrees, from rest) as a chart state.
     function raised_start(p) result(yc)
         type(pendulum_t), intent(in) :: p

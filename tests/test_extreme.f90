@@ -4,6 +4,7 @@ module test_extreme
     use kinds, only: dp, pi
     use status, only: status_t, ERR_MODEL
     use testing, only: tester_t
+    use output_io, only: read_kv
     use bifilar_model, only: motion_t
     use simulate, only: model_checks
     implicit none
@@ -114,8 +115,8 @@ contains
                          ' (got '//itoa(ex)//')', ex == cases(k)%exit_status)
             call t%check('extreme '//nm//': no NaN or Inf in any file', no_nan(outdir))
             if (cases(k)%exit_status == 0) then
-                call summary_value(outdir//'/'//nm//'.summary', 'max_abs_energy_error', de, f1)
-                call summary_value(outdir//'/'//nm//'.summary', 'max_abs_constraint_residual', &
+                call read_kv(outdir//'/'//nm//'.summary', 'max_abs_energy_error', de, f1)
+                call read_kv(outdir//'/'//nm//'.summary', 'max_abs_constraint_residual', &
                                    dc, f2)
                 call t%check('extreme '//nm//': summary written', f1 .and. f2)
                 if (f1 .and. f2) then
@@ -156,10 +157,10 @@ contains
         call t%check('elastic_slack: exit 0 (got '//itoa(ex)//')', ex == 0)
         call t%check('elastic_slack: no NaN or Inf in any file', no_nan(outdir))
         do k = 1, size(keys)
-            call summary_value(sumpath, trim(keys(k)), v, found)
+            call read_kv(sumpath, trim(keys(k)), v, found)
             call t%check('elastic_slack: summary '//trim(keys(k))//' > 0', found .and. v > 0.0_dp)
         end do
-        call summary_value(sumpath, 'min_tension', v, found)
+        call read_kv(sumpath, 'min_tension', v, found)
         call t%check('elastic_slack: min_tension 0 (slack reported, not an error)', &
                      found .and. v == 0.0_dp)
     end subroutine test_elastic_slack
@@ -479,30 +480,6 @@ contains
         close (u)
     end function file_has
 
-    !> The real value of `key = value` in a summary file.
-    subroutine summary_value(path, key, value, found)
-        character(len=*), intent(in) :: path, key
-        real(dp), intent(out) :: value
-        logical, intent(out) :: found
-        integer :: u, ios, p
-        character(len=512) :: line
-        found = .false.
-        value = 0.0_dp
-        open (newunit=u, file=path, status='old', action='read', iostat=ios)
-        if (ios /= 0) return
-        do
-            read (u, '(a)', iostat=ios) line
-            if (ios /= 0) exit
-            p = index(line, '=')
-            if (p == 0) cycle
-            if (trim(line(1:p - 1)) == key) then
-                read (line(p + 1:), *, iostat=ios) value
-                found = ios == 0
-                exit
-            end if
-        end do
-        close (u)
-    end subroutine summary_value
 
     function itoa(i) result(s)
         integer, intent(in) :: i

@@ -18,7 +18,7 @@ module test_model
     implicit none
     private
 
-    public :: run_model_tests, torsion_1dof_t
+    public :: run_model_tests, torsion_1dof_t, cylinder
 
     !> One-degree-of-freedom pure torsion, eqs. (45)-(48), scaled (m = g = b' = 1, b = b').
     type, extends(ode_system_t), public :: torsion_1dof_t

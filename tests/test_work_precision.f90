@@ -3,6 +3,7 @@ module test_work_precision
     use kinds, only: dp
     use status, only: status_t
     use testing, only: tester_t
+    use output_io, only: read_kv
     use deck, only: deck_t, read_deck
     use work_precision, only: run_work_precision, wp_result_t, WP_NRTOL, WP_NRK4
     implicit none
@@ -118,8 +119,8 @@ contains
         call execute_command_line(exe//' '//SCRATCH//'/ee.nml --out '//SCRATCH// &
                                   ' > /dev/null 2>&1', exitstat=ex)
         call t%check('error estimate: exit 0', ex == 0)
-        call kv(SCRATCH//'/ee.summary', 'error_estimate_theta', eth, f1)
-        call kv(SCRATCH//'/ee.summary', 'error_estimate_Q', eq, f2)
+        call read_kv(SCRATCH//'/ee.summary', 'error_estimate_theta', eth, f1)
+        call read_kv(SCRATCH//'/ee.summary', 'error_estimate_Q', eq, f2)
         call t%check('error estimate: keys error_estimate_theta, error_estimate_Q', f1 .and. f2)
         call t%check('error estimate: 0 < values <= 100 rtol', eth > 0.0_dp .and. &
                      eq > 0.0_dp .and. eth <= 1.0e-6_dp .and. eq <= 1.0e-6_dp)
@@ -137,7 +138,7 @@ contains
                         'tau_end = 1.0, dtau_out = 0.05, rtol = 1e-8, atol = 1e-10')
         call execute_command_line(exe//' '//SCRATCH//'/noee.nml --out '//SCRATCH// &
                                   ' > /dev/null 2>&1', exitstat=ex)
-        call kv(SCRATCH//'/noee.summary', 'error_estimate_theta', eth, there)
+        call read_kv(SCRATCH//'/noee.summary', 'error_estimate_theta', eth, there)
         call t%check('error estimate: no keys unless asked', ex == 0 .and. .not. there)
     end subroutine test_end_to_end
 
@@ -166,28 +167,5 @@ contains
         close (u)
     end subroutine table_file
 
-    subroutine kv(path, key, value, found)
-        character(len=*), intent(in) :: path, key
-        real(dp), intent(out) :: value
-        logical, intent(out) :: found
-        integer :: u, ios, p
-        character(len=512) :: line
-        found = .false.
-        value = 0.0_dp
-        open (newunit=u, file=path, status='old', action='read', iostat=ios)
-        if (ios /= 0) return
-        do
-            read (u, '(a)', iostat=ios) line
-            if (ios /= 0) exit
-            p = index(line, '=')
-            if (p == 0) cycle
-            if (trim(line(1:p - 1)) == key) then
-                read (line(p + 1:), *, iostat=ios) value
-                found = ios == 0
-                exit
-            end if
-        end do
-        close (u)
-    end subroutine kv
 
 end module test_work_precision
