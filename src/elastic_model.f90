@@ -36,8 +36,19 @@
 !!   tension T = max(0, k eps + c d|s|/dtau) when eps > 0, T = 0 when eps <= 0 (slack: the
 !!   cable neither pushes nor damps);  the cable pulls the body point towards the support
 !!   with force -T s/|s|;  spring energy (1/2) k L0 eps^2 for eps > 0, 0 otherwise.
-!! Slack is a state of this model, not an error: tensions, strains and slack flags are
-!! reported (elastic_cables_t) so the caller can time the slack intervals.
+!! Slack is a state of this model, not an error.  The law above has a kink where a cable
+!! goes slack, and a Newton iteration of an implicit method that crosses the kink fails to
+!! converge (at k = 1e8 the static stretch, 1e-8, lies within the position tolerance, so
+!! the iterates cross it all the time).  Each cable therefore carries a mode (elastic_t%mode):
+!!   CABLE_AUTO   the law above, decided at every evaluation (the default; for explicit
+!!                methods and for reporting)
+!!   CABLE_TAUT   T = k eps + c d|s|/dtau, the smooth linear spring-dashpot on both sides
+!!   CABLE_SLACK  T = 0
+!! and the switching function g = min(k eps, k eps + c d|s|/dtau) (cable_switch) says which
+!! mode the law above is in: taut when g > 0.  module elastic_solver keeps the modes, locates
+!! the zeros of g in the integrator's dense output and restarts there, so every step of the
+!! implicit method sees a smooth right-hand side and the modes agree with the law above at
+!! every step end.  Tensions, strains and slack flags are reported (elastic_cables_t).
 !!
 !! The body: m R*'' = -m g n3 + F_BC + F_AD;  Euler's equations in ntilde components,
 !! I omega' + omega x I omega = sum (r_P x F_P), I = btilde^T diag(I_i) btilde.
@@ -54,6 +65,8 @@ module elastic_model
 
     integer, parameter, public :: ELASTIC_NSTATE = 13  !! y = (R*, v*, q, omega_body)
     integer, parameter, public :: CABLE_BC = 1, CABLE_AD = 2
+    !> Cable modes (elastic_t%mode): the law decided at each evaluation, taut, slack.
+    integer, parameter, public :: CABLE_AUTO = 0, CABLE_TAUT = 1, CABLE_SLACK = 2
 
     !> The elastic pendulum as an ODE system for the integrator.
     type, extends(ode_system_t), public :: elastic_t
@@ -63,8 +76,11 @@ module elastic_model
         real(dp) :: quat_rate = 1.0_dp          !! a: rate of the quaternion-norm stabilisation
         real(dp) :: l0(2) = -1.0_dp             !! natural lengths of BC, AD over b'; <= 0: the
                                                 !! deck's l/b', l'/b' (see elastic_start)
+        integer :: mode(2) = CABLE_AUTO         !! CABLE_AUTO, CABLE_TAUT or CABLE_SLACK per cable
     contains
         procedure :: rhs => elastic_rhs
+        procedure :: jacobian => elastic_jacobian
+        procedure :: has_jacobian => elastic_has_jacobian
     end type elastic_t
 
     !> The cables at one instant (index CABLE_BC = 1, CABLE_AD = 2).
@@ -79,7 +95,7 @@ module elastic_model
 
     public :: elastic_from_chart, elastic_from_angles, elastic_evaluate, elastic_chart
     public :: elastic_energy, elastic_pose, quat_to_matrix, matrix_to_quat, elastic_start
-    public :: natural_lengths, elastic_atol
+    public :: natural_lengths, elastic_atol, cable_switch, stretch_frequency
 
 contains
 
@@ -169,14 +185,23 @@ contains
         vd = y(4:6) + cross(omega, rd)
     end subroutine elastic_pose
 
-    !> One cable: support point s0, body point x with velocity v, natural length l0.
-    !! Force on the body point and the cable's state.
-    pure subroutine cable(sys, s0, x, v, l0, f, tension, strain, length, rate, slack, energy)
+    !> Dashpot coefficient c = 2 zeta sqrt(k/L0) of a cable of natural length l0.
+    pure real(dp) function dashpot(sys, l0)
         type(elastic_t), intent(in) :: sys
+        real(dp), intent(in) :: l0
+        dashpot = 2.0_dp*sys%damping*sqrt(sys%stiffness/l0)
+    end function dashpot
+
+    !> One cable in mode `mode`: support point s0, body point x with velocity v, natural
+    !! length l0.  Force on the body point and the cable's state.
+    pure subroutine cable(sys, mode, s0, x, v, l0, f, tension, strain, length, rate, slack, &
+                          energy)
+        type(elastic_t), intent(in) :: sys
+        integer, intent(in) :: mode             !! CABLE_AUTO, CABLE_TAUT or CABLE_SLACK
         real(dp), intent(in) :: s0(3), x(3), v(3), l0
         real(dp), intent(out) :: f(3), tension, strain, length, rate, energy
         logical, intent(out) :: slack
-        real(dp) :: s(3), u(3), cdash
+        real(dp) :: s(3), u(3)
         s = x - s0
         length = norm2(s)
         u = s/length
@@ -184,37 +209,105 @@ contains
         strain = (length - l0)/l0
         tension = 0.0_dp
         energy = 0.0_dp
-        if (strain > 0.0_dp) then
-            cdash = 2.0_dp*sys%damping*sqrt(sys%stiffness/l0)
-            tension = max(0.0_dp, sys%stiffness*strain + cdash*rate)
+        if (strain > 0.0_dp) energy = 0.5_dp*sys%stiffness*l0*strain**2
+        select case (mode)
+        case (CABLE_TAUT)
+            tension = sys%stiffness*strain + dashpot(sys, l0)*rate
             energy = 0.5_dp*sys%stiffness*l0*strain**2
-        end if
-        slack = .not. (tension > 0.0_dp)
+            slack = .false.
+        case (CABLE_SLACK)
+            slack = .true.
+        case default
+            if (strain > 0.0_dp) tension = max(0.0_dp, sys%stiffness*strain + &
+                                                dashpot(sys, l0)*rate)
+            slack = .not. (tension > 0.0_dp)
+        end select
         f = -tension*u
     end subroutine cable
 
-    !> Absolute tolerances for the 13 states consistent with the energy norm of the stiff
-    !! cable modes: atol for the positions and the quaternion, atol * omega_s for the
-    !! velocities and angular velocities, omega_s = sqrt((k/L0) (1 + rho^2/I_min)) the highest
-    !! stretching frequency (rho the larger distance of C, D from R*, I_min the smallest
-    !! principal moment).  A stretch error dx and a velocity error omega_s dx carry the same
-    !! energy.  With one atol for every state the BDF error test would chase the harmless,
-    !! decaying stiff transients that the positions' own tolerance excites in the
-    !! velocities (velocity errors ~ omega_s times the position errors), and the steps
-    !! would grow like sqrt(k).
-    pure function elastic_atol(sys, atol) result(a)
+    !> Switching functions g = min(k eps, k eps + c d|s|/dtau) of BC and AD at state y (over
+    !! m g): the law of CABLE_AUTO has the cable taut where g > 0 and slack where g <= 0.
+    pure function cable_switch(sys, y) result(g)
         type(elastic_t), intent(in) :: sys
-        real(dp), intent(in) :: atol            !! absolute tolerance of the positions
-        real(dp) :: a(ELASTIC_NSTATE)
-        real(dp) :: rc(3), rho2, ws
+        real(dp), intent(in) :: y(:)            !! elastic state (13)
+        real(dp) :: g(2)
+        real(dp) :: x(3, 2), v(3, 2), s0(3, 2), l0(2), u(3), length, strain, rate
+        integer :: j
+        call cable_points(sys, y, x, v, s0)
+        l0 = natural_lengths(sys)
+        do j = 1, 2
+            length = norm2(x(:, j) - s0(:, j))
+            u = (x(:, j) - s0(:, j))/length
+            rate = dot_product(u, v(:, j))
+            strain = (length - l0(j))/l0(j)
+            g(j) = min(sys%stiffness*strain, sys%stiffness*strain + dashpot(sys, l0(j))*rate)
+        end do
+    end function cable_switch
+
+    !> Body points C (j = 1) and D (j = 2) and their velocities in n components, and the
+    !! supports B and A, at state y.
+    pure subroutine cable_points(sys, y, x, v, s0)
+        type(elastic_t), intent(in) :: sys
+        real(dp), intent(in) :: y(:)
+        real(dp), intent(out) :: x(3, 2), v(3, 2), s0(3, 2)
+        real(dp) :: r(3, 3), rb(3), rw(3), omega(3)
+        integer :: j
+        r = quat_to_matrix(y(7:10))
+        omega = matmul(r, y(11:13))
+        do j = 1, 2
+            rb = body_c(sys%p)
+            if (j == 2) rb(3) = rb(3) - 1.0_dp
+            rw = matmul(r, rb)
+            x(:, j) = y(1:3) + rw
+            v(:, j) = y(4:6) + cross(omega, rw)
+        end do
+        s0(:, 1) = [0.0_dp, -sys%p%big_b, 0.0_dp]
+        s0(:, 2) = 0.0_dp
+    end subroutine cable_points
+
+    !> Highest stretching frequency of the cables, omega_s = sqrt((k/L0) (1 + rho^2/I_min))
+    !! (rho the larger distance of C, D from R*, I_min the smallest principal moment, L0 the
+    !! shorter natural length), per unit tau; at least 1.
+    pure real(dp) function stretch_frequency(sys) result(ws)
+        type(elastic_t), intent(in) :: sys
+        real(dp) :: rc(3), rho2
         rc = body_c(sys%p)
         rho2 = max(dot_product(rc, rc), dot_product(rc - [0.0_dp, 0.0_dp, 1.0_dp], &
                                                     rc - [0.0_dp, 0.0_dp, 1.0_dp]))
         ws = sqrt(sys%stiffness/minval(natural_lengths(sys))*(1.0_dp + rho2/minval(sys%p%inertia)))
         ws = max(1.0_dp, ws)
+    end function stretch_frequency
+
+    !> Absolute tolerances for the 13 states consistent with the energy norm of the stiff
+    !! cable modes.  The error test allows a position error of about rtol |R*| + atol (the
+    !! positions' scale |R*| ~ L, the longer natural length) and a quaternion error of about
+    !! rtol + atol; a stretch error dx carries the energy of a velocity error omega_s dx
+    !! (omega_s = stretch_frequency).  So the velocities get omega_s (atol + dx) and the
+    !! angular velocities omega_s (atol + dx/L) as absolute tolerances, with
+    !! dx = min(rtol L, L/(2k)): the position tolerance, but never more than the static
+    !! stretch of a cable under half the weight, L/(2k), so that a stretch-rate error allowed
+    !! by the test cannot by itself undo the stretch of a cable the motion keeps taut (at
+    !! k = 1e8 and rtol 1e-6 the cables would otherwise chatter between taut and slack).
+    !! With one atol for every state the BDF error test chases the harmless, decaying stiff
+    !! oscillations that the positions' own tolerance excites in the velocities: on the
+    !! Figs. 4-6 cylinder at k = 1e6, zeta = 0.5, rtol 1e-8, 2 periods, the velocities'
+    !! atol omega_s atol alone costs 2 058 steps, this one 965 (tests/bench_elastic.f90).
+    !! The soft (pendulum) velocities stay controlled through the positions: their errors
+    !! are the positions' times the pendulum frequencies, far below omega_s.
+    !! rtol absent: 0 (velocities atol omega_s atol).
+    pure function elastic_atol(sys, atol, rtol) result(a)
+        type(elastic_t), intent(in) :: sys
+        real(dp), intent(in) :: atol            !! absolute tolerance of the positions
+        real(dp), intent(in), optional :: rtol  !! the run's relative tolerance
+        real(dp) :: a(ELASTIC_NSTATE)
+        real(dp) :: ws, dx, ll
+        ll = maxval(natural_lengths(sys))
+        dx = 0.0_dp
+        if (present(rtol)) dx = min(rtol*ll, 0.5_dp*ll/sys%stiffness)
+        ws = stretch_frequency(sys)
         a = atol
-        a(4:6) = atol*ws
-        a(11:13) = atol*ws
+        a(4:6) = ws*(atol + dx)
+        a(11:13) = ws*(atol + dx/ll)
     end function elastic_atol
 
     !> Natural (unstretched) lengths of BC and AD over b'.
@@ -232,28 +325,22 @@ contains
         real(dp), intent(in) :: y(:)
         real(dp), intent(out) :: ydot(:)
         type(elastic_cables_t), intent(out) :: cab
-        real(dp) :: r(3, 3), rb(3, 2), rw(3), x(3), v(3), omega(3), f(3), force(3), torque(3)
+        real(dp) :: r(3, 3), x(3, 2), v(3, 2), f(3), force(3), torque(3)
         real(dp) :: ib(3, 3), ibinv(3, 3), wb(3), q(4), s0(3, 2), l0(2), en(2)
         integer :: j
         q = y(7:10)
         r = quat_to_matrix(q)
         wb = y(11:13)
-        omega = matmul(r, wb)
-        rb(:, 1) = body_c(sys%p)
-        rb(:, 2) = rb(:, 1) - [0.0_dp, 0.0_dp, 1.0_dp]
-        s0(:, 1) = [0.0_dp, -sys%p%big_b, 0.0_dp]
-        s0(:, 2) = 0.0_dp
+        call cable_points(sys, y, x, v, s0)
         l0 = natural_lengths(sys)
         force = [0.0_dp, 0.0_dp, -1.0_dp]
         torque = 0.0_dp
         do j = 1, 2
-            rw = matmul(r, rb(:, j))
-            x = y(1:3) + rw
-            v = y(4:6) + cross(omega, rw)
-            call cable(sys, s0(:, j), x, v, l0(j), f, cab%tension(j), cab%strain(j), &
-                       cab%length(j), cab%length_rate(j), cab%slack(j), en(j))
+            call cable(sys, sys%mode(j), s0(:, j), x(:, j), v(:, j), l0(j), f, &
+                       cab%tension(j), cab%strain(j), cab%length(j), cab%length_rate(j), &
+                       cab%slack(j), en(j))
             force = force + f
-            torque = torque + cross(rw, f)
+            torque = torque + cross(x(:, j) - y(1:3), f)
         end do
         cab%spring_energy = sum(en)
         call body_inertia(sys%p, ib, ibinv)
@@ -283,6 +370,200 @@ contains
         end if
         call dynamics(sys, y, ydot, cab)
     end subroutine elastic_rhs
+
+    ! ------------------------------------------------------------------------------------
+    ! Analytic Jacobian of the right-hand side
+    ! ------------------------------------------------------------------------------------
+
+    !> The matrix [a]x of the cross product: skew(a) b = a x b.
+    pure function skew(a) result(m)
+        real(dp), intent(in) :: a(3)
+        real(dp) :: m(3, 3)
+        m(:, 1) = [0.0_dp, a(3), -a(2)]
+        m(:, 2) = [-a(3), 0.0_dp, a(1)]
+        m(:, 3) = [a(2), -a(1), 0.0_dp]
+    end function skew
+
+    !> The turning of the body frame per change of q: a change dq of the quaternion turns
+    !! R = quat_to_matrix(q) (built from q/|q|) through the small angle xis dq in n components,
+    !! R xib dq in body components, with
+    !!   xis = (2/|q|^2) [-q_v | w I + [q_v]x],   xib = (2/|q|^2) [-q_v | w I - [q_v]x]
+    !! (columns w, x, y, z; dq along q turns nothing: R is homogeneous of degree 0 in q).
+    !! Hence d(R v)/dq = -[R v]x xis = -R [v]x xib for a fixed v, d(R^T f)/dq = [R^T f]x xib.
+    pure subroutine quat_turning(q, xis, xib)
+        real(dp), intent(in) :: q(4)
+        real(dp), intent(out) :: xis(3, 4), xib(3, 4)
+        real(dp) :: s, qx(3, 3)
+        integer :: i
+        s = 2.0_dp/dot_product(q, q)
+        qx = skew(q(2:4))
+        xis(:, 1) = -s*q(2:4)
+        xib(:, 1) = xis(:, 1)
+        xis(:, 2:4) = s*qx
+        xib(:, 2:4) = -s*qx
+        do i = 1, 3
+            xis(i, 1 + i) = xis(i, 1 + i) + s*q(1)
+            xib(i, 1 + i) = xib(i, 1 + i) + s*q(1)
+        end do
+    end subroutine quat_turning
+
+    !> Body point of cable j in ntilde components: C (j = 1) or D = C - ntilde3 (j = 2), as in
+    !! cable_points.
+    pure function body_point(p, j) result(rb)
+        type(pendulum_t), intent(in) :: p
+        integer, intent(in) :: j
+        real(dp) :: rb(3)
+        rb = body_c(p)
+        if (j == 2) rb(3) = rb(3) - 1.0_dp
+    end function body_point
+
+    !> Derivatives of the force f = -T u of a taut cable (T = k eps + c rate, s = x - s0,
+    !! u = s/|s|, rate = u . v) on its body point, in rank-one form:
+    !!   df/dx = u h^T - t I,   df/dv = -c u u^T,   t = T/|s|,  h = t u - (k/L0) u - (c/|s|) P v
+    !! (P = I - u u^T: du/dx = P/|s|, d|s|/dx = u^T, d rate/dx = (P v)^T/|s|, d rate/dv = u^T).
+    pure subroutine cable_derivs(sys, s, v, l0, tension, u, h, t, c)
+        type(elastic_t), intent(in) :: sys
+        real(dp), intent(in) :: s(3), v(3), l0, tension
+        real(dp), intent(out) :: u(3), h(3), t, c
+        real(dp) :: length
+        length = norm2(s)
+        u = s/length
+        c = dashpot(sys, l0)
+        t = tension/length
+        h = (t - sys%stiffness/l0)*u - (c/length)*(v - dot_product(u, v)*u)
+    end subroutine cable_derivs
+
+    !> Jacobian of dynamics: jac(i, j) = d ydot_i / d y_j, the exact derivative of the law of
+    !! each cable's mode (CABLE_AUTO: of the branch active at y, i.e. 0 for a slack cable).
+    !! Cable j acts at x_j = R* + R rb_j moving with v_j = v* + R (omega x rb_j), R = R(q/|q|)
+    !! (omega in body components); quat_turning gives d(R a)/dq = -R [a]x xib for body-fixed
+    !! a, so dx_j/dq = -R [rb_j]x xib, dv_j/dq = -R [omega x rb_j]x xib, dv_j/domega =
+    !! -R [rb_j]x.  With cable_derivs' df/dx = u h^T - t I, df/dv = -c u u^T:
+    !!   df_j/dy = u rho^T - t dx_j/dy,  rho = (h, -c u, (c (R^T u) x (omega x rb_j) -
+    !!             (R^T h) x rb_j)^T xib, c (R^T u) x rb_j)   (R*, v*, q, omega columns)
+    !! in v*' (R*' = v* gives the identity block).  The torque in body components,
+    !! tau_b = sum rb_j x R^T f_j, with R^T f_j = -T R^T u and d(R^T f)/dq = [R^T f]x xib:
+    !!   dtau_b/dy = sum [rb_j]x (R^T u rho^T - t R^T dx_j/dy + [R^T f_j]x xib in the q columns)
+    !!   = sum (rb_j x R^T u) rho^T - t [rb_j]x R^T (R* columns)
+    !!     + [rb_j]x [t rb_j - T R^T u]x xib (q columns),
+    !! and omega' = I^-1 (tau_b - omega x I omega), d(omega x I omega)/domega =
+    !! [omega]x I - [I omega]x.  qdot = (1/2) q (x) (0, omega) + a (1 - |q|^2) q is linear in
+    !! q and in omega, plus d/dq of the stabilisation a (1 - |q|^2) I - 2 a q q^T.
+    !! The cable terms are rank one or 3 x 3 blocks: about three right-hand sides' work.
+    pure subroutine dynamics_jacobian(sys, y, jac)
+        type(elastic_t), intent(in) :: sys
+        real(dp), intent(in) :: y(:)
+        real(dp), intent(out) :: jac(ELASTIC_NSTATE, ELASTIC_NSTATE)
+        real(dp) :: q(4), wb(3), r(3, 3), x(3, 2), v(3, 2), s0(3, 2), l0(2), ib(3, 3)
+        real(dp) :: ibinv(3, 3), xis(3, 4), xib(3, 4), ixib(3, 4), rho(ELASTIC_NSTATE)
+        real(dp) :: rb(3), rw(3), f(3), u(3), h(3), ub(3), hb(3), z(3), mu(3), e(3)
+        real(dp) :: m(3, 3), rbx(4)
+        real(dp) :: tension, strain, length, rate, energy, t, c, rz, nq
+        logical :: slack
+        integer :: i, j, k
+        q = y(7:10)
+        wb = y(11:13)
+        r = quat_to_matrix(q)
+        call quat_turning(q, xis, xib)
+        call cable_points(sys, y, x, v, s0)
+        l0 = natural_lengths(sys)
+        call body_inertia(sys%p, ib, ibinv)
+        ixib = matmul(ibinv, xib)
+        jac = 0.0_dp
+        ! R*' = v*
+        do i = 1, 3
+            jac(i, 3 + i) = 1.0_dp
+        end do
+        ! the cables: forces in v*', torques about R* in omega'
+        do j = 1, 2
+            call cable(sys, sys%mode(j), s0(:, j), x(:, j), v(:, j), l0(j), f, tension, &
+                       strain, length, rate, slack, energy)
+            if (slack) cycle                    ! no force, and none nearby in this branch
+            call cable_derivs(sys, x(:, j) - s0(:, j), v(:, j), l0(j), tension, u, h, t, c)
+            rb = body_point(sys%p, j)
+            rw = matmul(r, rb)
+            ub = matmul(u, r)                   ! R^T u
+            hb = matmul(h, r)                   ! R^T h
+            rho(1:3) = h
+            rho(4:6) = -c*u
+            e = c*cross(ub, cross(wb, rb)) - cross(hb, rb)
+            rho(7:10) = matmul(e, xib)
+            rho(11:13) = c*cross(ub, rb)
+            ! force: u rho^T - t dx_j/dy, dx_j/dR* = I, dx_j/dq = -[R rb_j]x xis
+            do k = 1, ELASTIC_NSTATE
+                jac(4:6, k) = jac(4:6, k) + rho(k)*u
+            end do
+            do i = 1, 3
+                jac(3 + i, i) = jac(3 + i, i) - t
+            end do
+            do k = 1, 4
+                jac(4:6, 6 + k) = jac(4:6, 6 + k) + t*cross(rw, xis(:, k))
+            end do
+            ! torque rb x R^T f_j, times I^-1: rank one, R* columns, q columns
+            e = cross(rb, ub)
+            mu = matmul(ibinv, e)
+            do k = 1, ELASTIC_NSTATE
+                jac(11:13, k) = jac(11:13, k) + rho(k)*mu
+            end do
+            do i = 1, 3                         ! [rb]x R^T e_i = rb x (row i of R)
+                m(:, i) = cross(rb, r(i, :))
+            end do
+            jac(11:13, 1:3) = jac(11:13, 1:3) - t*matmul(ibinv, m)
+            ! q columns: [rb]x [z]x xib = z (rb^T xib) - (rb . z) xib
+            z = t*rb - tension*ub
+            mu = matmul(ibinv, z)
+            rbx = matmul(rb, xib)
+            rz = dot_product(rb, z)
+            do k = 1, 4
+                jac(11:13, 6 + k) = jac(11:13, 6 + k) + rbx(k)*mu - rz*ixib(:, k)
+            end do
+        end do
+        ! omega' = I^-1 (tau_b - omega x I omega)
+        m = skew(wb)
+        e = matmul(ib, wb)
+        m = matmul(m, ib) - skew(e)
+        jac(11:13, 11:13) = jac(11:13, 11:13) - matmul(ibinv, m)
+        ! qdot: w' = -(1/2) q_v . omega, q_v' = (1/2) (q_w omega + q_v x omega)
+        jac(7, 8:10) = -0.5_dp*wb
+        jac(8:10, 7) = 0.5_dp*wb
+        jac(8:10, 8:10) = -0.5_dp*skew(wb)
+        jac(7, 11:13) = -0.5_dp*q(2:4)
+        jac(8:10, 11:13) = 0.5_dp*skew(q(2:4))
+        do i = 1, 3
+            jac(7 + i, 10 + i) = jac(7 + i, 10 + i) + 0.5_dp*q(1)
+        end do
+        ! ... + a (1 - |q|^2) q
+        nq = dot_product(q, q)
+        do k = 1, 4
+            jac(7:10, 6 + k) = jac(7:10, 6 + k) - 2.0_dp*sys%quat_rate*q(k)*q
+            jac(6 + k, 6 + k) = jac(6 + k, 6 + k) + sys%quat_rate*(1.0_dp - nq)
+        end do
+    end subroutine dynamics_jacobian
+
+    !> Analytic Jacobian of elastic_rhs, dfdy(i, j) = d ydot_i / d y_j (13 x 13), in the
+    !! cables' current modes (dynamics_jacobian).  Costs about three right-hand sides.
+    subroutine elastic_jacobian(sys, t, y, dfdy, stat)
+        class(elastic_t), intent(inout) :: sys
+        real(dp), intent(in) :: t               !! tau (not used: the system is autonomous)
+        real(dp), intent(in) :: y(:)            !! elastic state (13)
+        real(dp), intent(out) :: dfdy(:, :)     !! d ydot_i / d y_j (13 x 13)
+        type(status_t), intent(out) :: stat
+        if (.false.) dfdy(1, 1) = t
+        stat%code = STATUS_OK
+        if (.not. (dot_product(y(7:10), y(7:10)) > 0.0_dp)) then
+            dfdy = 0.0_dp
+            call set_error(stat, ERR_NUMERIC, 'elastic model: zero orientation quaternion')
+            return
+        end if
+        call dynamics_jacobian(sys, y, dfdy(1:ELASTIC_NSTATE, 1:ELASTIC_NSTATE))
+    end subroutine elastic_jacobian
+
+    !> The elastic model has an analytic Jacobian (elastic_jacobian).
+    logical function elastic_has_jacobian(sys)
+        class(elastic_t), intent(in) :: sys
+        elastic_has_jacobian = .true.
+        if (.false.) elastic_has_jacobian = same_type_as(sys, sys)
+    end function elastic_has_jacobian
 
     ! ------------------------------------------------------------------------------------
     ! Conversions

@@ -74,6 +74,8 @@ module lsoda
         integer :: rhs_evals = 0        !! calls of sys%rhs (including finite-difference Jacobians)
         integer :: jac_evals = 0        !! Jacobian evaluations (analytic or finite differences)
         integer :: lu_decomps = 0       !! LU factorisations of the iteration matrix
+        integer :: conv_failures = 0    !! step attempts rejected: corrector did not converge
+        integer :: error_test_failures = 0  !! step attempts rejected by the local error test
         integer :: method_switches = 0  !! switches Adams <-> BDF
         integer :: method_last = 0      !! METHOD_ADAMS or METHOD_BDF, used on the last step
         integer :: order_last = 0       !! order used on the last step
@@ -109,12 +111,14 @@ module lsoda
         real(dp) :: rc = 0.0_dp, el0 = 1.0_dp, crate = 0.7_dp, conit = 0.0_dp, rmax = 1.0e4_dp
         real(dp) :: pdest = 0.0_dp, pdlast = 0.0_dp, pdnorm = 0.0_dp, tsw = 0.0_dp
         integer :: nq = 1, l = 2, lmax = 13, meth = METHOD_ADAMS, mused = 0, nqu = 0
+        integer :: meth0 = METHOD_ADAMS        ! method of the first step
         integer :: ialth = 2, icount = SWITCH_WAIT, irflag = 0, nslp = 0, jstart = 0
         integer :: kflag = 0
         logical :: ipup = .false., jcur = .false.
         integer :: mxordn = MAXORD_ADAMS, mxords = MAXORD_BDF
         integer :: max_steps = DEFAULT_MAX_STEPS
         integer :: nst = 0, nfe = 0, nje = 0, nlu = 0, nswitch = 0, steps_call = 0
+        integer :: ncfn = 0, netf = 0
     contains
         procedure :: init => lsoda_init
         procedure :: integrate => lsoda_integrate
@@ -147,8 +151,11 @@ contains
     !! max_steps [in, optional] most steps in one call of integrate (default 500000).
     !! max_order_adams [in, optional] highest Adams order, 1..12 (default 12).
     !! max_order_bdf   [in, optional] highest BDF order, 1..5 (default 5).
+    !! start_bdf [in, optional] .true.: take the first step with BDF (as after a restart of
+    !!                 a problem known to be stiff); default .false., Adams, as LSODA does.
+    !!                 The automatic switching between the methods works as usual after it.
     subroutine lsoda_init(s, sys, t0, y0, rtol, atol, stat, tcrit, h0, hmax, max_steps, &
-                          max_order_adams, max_order_bdf)
+                          max_order_adams, max_order_bdf, start_bdf)
         class(lsoda_t), intent(inout) :: s
         class(ode_system_t), intent(inout) :: sys
         real(dp), intent(in) :: t0
@@ -162,6 +169,7 @@ contains
         integer, intent(in), optional :: max_steps
         integer, intent(in), optional :: max_order_adams
         integer, intent(in), optional :: max_order_bdf
+        logical, intent(in), optional :: start_bdf
         integer :: n
         character(len=120) :: buf
 
@@ -260,7 +268,11 @@ contains
         s%hmin = 0.0_dp
         s%nq = 1
         s%l = 2
-        s%meth = METHOD_ADAMS
+        s%meth0 = METHOD_ADAMS
+        if (present(start_bdf)) then
+            if (start_bdf) s%meth0 = METHOD_BDF
+        end if
+        s%meth = s%meth0
         s%mused = 0
         s%nqu = 0
         s%jstart = 0
@@ -269,6 +281,8 @@ contains
         s%nfe = 0
         s%nje = 0
         s%nlu = 0
+        s%ncfn = 0
+        s%netf = 0
         s%nswitch = 0
         s%steps_call = 0
         s%tsw = t0
@@ -460,6 +474,8 @@ contains
         st%rhs_evals = s%nfe
         st%jac_evals = s%nje
         st%lu_decomps = s%nlu
+        st%conv_failures = s%ncfn
+        st%error_test_failures = s%netf
         st%method_switches = s%nswitch
         st%method_last = s%mused
         st%order_last = s%nqu
@@ -679,7 +695,9 @@ contains
 
         select case (s%jstart)
         case (0)
+            s%meth = s%meth0
             s%lmax = s%mxordn + 1
+            if (s%meth == METHOD_BDF) s%lmax = s%mxords + 1
             s%nq = 1
             s%l = 2
             s%ialth = 2
@@ -689,7 +707,6 @@ contains
             s%crate = 0.7_dp
             s%hold = s%h
             s%nslp = 0
-            s%meth = METHOD_ADAMS
             s%ipup = .false.
             s%icount = SWITCH_WAIT
             s%irflag = 0
@@ -828,6 +845,7 @@ contains
             if (.not. converged) then
                 ! convergence failure (or singular matrix)
                 ncf = ncf + 1
+                s%ncfn = s%ncfn + 1
                 s%rmax = 2.0_dp
                 s%tn = s%told
                 call unpredict(s)
@@ -963,6 +981,7 @@ contains
             end if
 
             ! ---- error test failed
+            s%netf = s%netf + 1
             s%kflag = s%kflag - 1
             s%tn = s%told
             call unpredict(s)

@@ -12,6 +12,7 @@ module simulate
     use lsoda, only: lsoda_t, lsoda_stats_t, LSODA_ERR_TOO_MUCH_ACCURACY
     use elastic_model, only: elastic_t, elastic_cables_t, elastic_start, elastic_evaluate, &
                              elastic_atol, ELASTIC_NSTATE
+    use elastic_solver, only: elastic_solver_t, slack_interval_t
     use deck, only: deck_t, deck_echo
     use output_io, only: atomic_open, atomic_commit, atomic_abort, write_kv, all_finite
     implicit none
@@ -33,10 +34,11 @@ module simulate
         real(dp) :: error_estimate_rtol = 0.0_dp
         real(dp) :: error_estimate_cpu = 0.0_dp    !! CPU of the rerun (not in cpu_seconds)
         !> model = 'elastic': slack time (tau) and number of slack intervals of BC (1) and
-        !! AD (2), measured at the ends of the integrator's steps
+        !! AD (2), and the number of switches between taut and slack (elastic_solver)
         logical :: elastic = .false.
         real(dp) :: slack_time(2) = 0.0_dp
         integer :: slack_intervals(2) = 0
+        integer :: cable_switches = 0
     end type run_summary_t
 
     public :: make_pendulum, start_state, run_simulation, model_checks
@@ -360,26 +362,54 @@ contains
             call write_kv(u, 'slack_time_AD', sm%slack_time(2))
             call write_kv(u, 'slack_intervals_BC', sm%slack_intervals(1))
             call write_kv(u, 'slack_intervals_AD', sm%slack_intervals(2))
+            call write_kv(u, 'cable_switches', sm%cable_switches)
         end if
         call atomic_commit(u, sumpath, stat)
     end subroutine write_summary
+
+    !> Write OUTDIR/NAME.slack: one line per slack interval of a cable (model = 'elastic'),
+    !! in the order they began; an interval still open at the end of the run ends at tau_end
+    !! and is marked open = 1.
+    subroutine write_slack_list(d, outdir, list, tau_end, stat)
+        type(deck_t), intent(in) :: d           !! the deck
+        character(len=*), intent(in) :: outdir  !! output directory
+        type(slack_interval_t), intent(in) :: list(:)  !! elastic_solver_t%slack_list()
+        real(dp), intent(in) :: tau_end         !! tau reached by the run
+        type(status_t), intent(out) :: stat     !! ERR_IO
+        character(len=:), allocatable :: path
+        real(dp) :: t1
+        integer :: u, i
+        path = outdir//'/'//d%name//'.slack'
+        call atomic_open(path, u, stat)
+        if (stat%code /= 0) return
+        write (u, '(a)') '# bifilar slack intervals: '//trim(d%title)
+        write (u, '(a)') '# cable (1 = BC, 2 = AD), tau_start, tau_end, duration, open (1: '// &
+            'still slack at the end of the run)'
+        do i = 1, size(list)
+            t1 = list(i)%tau_end
+            if (t1 < list(i)%tau_start) t1 = tau_end
+            write (u, '(i2,3es24.15,i3)') list(i)%cable, list(i)%tau_start, t1, &
+                t1 - list(i)%tau_start, merge(1, 0, list(i)%tau_end < list(i)%tau_start)
+        end do
+        call atomic_commit(u, path, stat)
+    end subroutine write_slack_list
 
     !> run_simulation for &scene model = 'elastic': the elastic-cable model (elastic_model)
     !! from the same start (start_state, then elastic_start: the paper's pose, velocities
     !! and tensions), per-state absolute tolerances from elastic_atol, the same rows and
     !! columns (theta from the body's pose, T_BC and T_AD from the springs, energy including
     !! the springs', constraint_residual = |AD| - l' over b').  A slack cable is a state of
-    !! this model, not an error: the slack time and the number of slack intervals of each
-    !! cable are measured at the ends of the integrator's steps (a step counts as slack for
-    !! the fraction 1, 1/2 or 0 as both, one or none of its ends are slack).  The run stops
-    !! (ERR_MODEL) only when a cable stretches beyond STRAIN_MAX.
+    !! this model, not an error: the integration (elastic_solver) locates each switch
+    !! between taut and slack to roundoff in tau, the summary gives each cable's slack time
+    !! and number of slack intervals, and OUTDIR/NAME.slack lists the intervals.  The run
+    !! stops (ERR_MODEL) only when a cable stretches beyond STRAIN_MAX.
     subroutine run_elastic(d, outdir, sm, stat)
         type(deck_t), intent(in) :: d           !! the deck (model = 'elastic')
         character(len=*), intent(in) :: outdir  !! output directory
         type(run_summary_t), intent(out) :: sm  !! figures of the run
         type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_MODEL or ERR_IO
-        type(elastic_t) :: sys
-        type(lsoda_t) :: solver, solver2
+        type(elastic_t) :: sys, sys2
+        type(elastic_solver_t) :: solver, solver2
         type(lsoda_stats_t) :: st
         type(motion_t) :: mo, mo2
         type(elastic_cables_t) :: cab
@@ -387,9 +417,8 @@ contains
         real(dp) :: yc(NSTATE), th0(5), y(ELASTIC_NSTATE), ystep(ELASTIC_NSTATE)
         real(dp) :: y2(ELASTIC_NSTATE), atol(ELASTIC_NSTATE), th_row(5), th_step(5)
         real(dp) :: tau, e0, row(17), t_cpu0, t_prev, t_e0, t_e1, rt2
-        logical :: slack_prev(2)
         character(len=:), allocatable :: datpath, sumpath
-        integer :: u, k, j, nout, nstep_row
+        integer :: u, k, nout, nstep_row
         character(len=300) :: buf
 
         sm%elastic = .true.
@@ -404,7 +433,7 @@ contains
             stat%msg = d%name//': elastic start: '//stat%msg
             return
         end if
-        atol = elastic_atol(sys, d%atol)
+        atol = elastic_atol(sys, d%atol, d%rtol)
 
         call open_dat(d, outdir, '# model elastic: T_BC, T_AD from the springs (0 when '// &
             'slack); energy_error includes the springs'' energy; constraint_residual = '// &
@@ -419,7 +448,9 @@ contains
         end if
         if (d%error_estimate) then
             rt2 = tighter_rtol(d%rtol)
-            call solver2%init(sys, 0.0_dp, y, rt2, atol*rt2/d%rtol, stat, tcrit=d%tau_end)
+            sys2 = sys                           ! its own cable modes
+            call solver2%init(sys2, 0.0_dp, y, rt2, elastic_atol(sys2, d%atol*rt2/d%rtol, rt2), &
+                              stat, tcrit=d%tau_end)
             if (stat%code /= 0) then
                 call atomic_abort(u, datpath)
                 return
@@ -442,8 +473,6 @@ contains
             stat%msg = d%name//': '//stat%msg
             return
         end if
-        slack_prev = cab%slack
-        sm%slack_intervals = merge(1, 0, slack_prev)
         do while (k <= nout)
             tau = min(k*d%dtau_out, d%tau_end)
             st = solver%stats()
@@ -459,27 +488,16 @@ contains
                 call solver%step(sys, stat, tout=d%tau_end)
                 st = solver%stats()
                 if (stat%code /= 0) then
-                    write (buf, '(a,f0.4)') ' at tau = ', st%t_current
-                    stat%msg = stat%msg//trim(buf)
+                    stat%msg = stat%msg//' at tau = '//tau_text(st%t_current)
                     exit
                 end if
                 nstep_row = nstep_row + 1
                 call solver%dense(st%t_current, 0, ystep, stat)
                 if (stat%code /= 0) exit
-                ! the cables at the step end: slack bookkeeping and the sanity limit
+                ! the cables at the step end: the sanity limit
                 call elastic_evaluate(sys, ystep, th_step(3), mo2, stat, th_step, cab)
                 if (stat%code /= 0) exit
                 th_step = mo2%th
-                do j = 1, 2
-                    if (cab%slack(j) .and. slack_prev(j)) then
-                        sm%slack_time(j) = sm%slack_time(j) + (st%t_current - t_prev)
-                    else if (cab%slack(j) .neqv. slack_prev(j)) then
-                        sm%slack_time(j) = sm%slack_time(j) + 0.5_dp*(st%t_current - t_prev)
-                    end if
-                    if (cab%slack(j) .and. .not. slack_prev(j)) &
-                        sm%slack_intervals(j) = sm%slack_intervals(j) + 1
-                end do
-                slack_prev = cab%slack
                 if (maxval(cab%strain) > STRAIN_MAX) then
                     write (buf, '(a,es10.3,a)') 'a cable stretches to more than twice its '// &
                         'natural length at tau = '//tau_text(st%t_current)//' (strain ', &
@@ -519,12 +537,12 @@ contains
             call record_row(u, row, mo, sm)
             if (d%error_estimate .and. k > 0) then
                 call cpu_time(t_e0)
-                call solver2%integrate(sys, tau, y2, stat)
+                call solver2%integrate(sys2, tau, y2, stat)
                 if (stat%code /= 0) then
                     stat%msg = 'error estimate (rerun at rtol/100): '//stat%msg
                     exit
                 end if
-                call elastic_evaluate(sys, y2, mo%th(3), mo2, s2, mo%th)
+                call elastic_evaluate(sys2, y2, mo%th(3), mo2, s2, mo%th)
                 if (s2%code == 0) then
                     sm%error_estimate_theta = max(sm%error_estimate_theta, &
                         maxval(abs(mo%th([1, 4, 5]) - mo2%th([1, 4, 5]))))
@@ -535,7 +553,12 @@ contains
             end if
             k = k + 1
         end do
+        sm%slack_time = solver%slack_time()
+        sm%slack_intervals = solver%slack_intervals()
+        sm%cable_switches = solver%switches()
         call finish_run(d, solver%stats(), t_cpu0, u, datpath, sm, stat)
+        if (stat%code /= 0) return
+        call write_slack_list(d, outdir, solver%slack_list(), sm%tau_reached, stat)
         if (stat%code /= 0) return
         call write_summary(d, sm, sumpath, stat)
     end subroutine run_elastic

@@ -19,7 +19,8 @@ module work_precision
     use bifilar_model, only: bifilar_t, chart_energy, motion_t, NSTATE
     use ode_system, only: ode_system_t
     use elastic_model, only: elastic_t, elastic_start, elastic_atol, elastic_evaluate, &
-                             elastic_chart, elastic_energy, ELASTIC_NSTATE
+                             elastic_chart, elastic_energy, ELASTIC_NSTATE, CABLE_AUTO, stretch_frequency
+    use elastic_solver, only: elastic_solver_t
     use lsoda, only: lsoda_t, lsoda_stats_t
     use deck, only: deck_t, deck_echo
     use simulate, only: make_pendulum, start_state, angle_difference, sway_of
@@ -58,7 +59,8 @@ module work_precision
         integer :: nout = 0
     end type wp_result_t
 
-    public :: run_work_precision, solve_lsoda, solve_rk4, output_times, trajectory_errors
+    public :: run_work_precision, solve_lsoda, solve_rk4, solve_rk4_sys, output_times
+    public :: trajectory_errors
 
 contains
 
@@ -115,6 +117,33 @@ contains
         steps = st%steps
         nfe = st%rhs_evals
     end subroutine solve_lsoda_sys
+
+    !> solve_lsoda_sys for the elastic model: LSODA with the cables' taut/slack switches
+    !! located and restarted (elastic_solver).
+    subroutine solve_lsoda_elastic(el, y0, times, rtol, atol, ys, steps, nfe, stat)
+        type(elastic_t), intent(inout) :: el    !! the elastic model (its modes are set)
+        real(dp), intent(in) :: y0(:)           !! state at times(0)
+        real(dp), intent(in) :: times(0:)       !! output times, increasing
+        real(dp), intent(in) :: rtol, atol(:)   !! tolerances
+        real(dp), intent(out) :: ys(:, 0:)      !! (13, 0:nout) states at the times
+        integer, intent(out) :: steps, nfe      !! integrator counters
+        type(status_t), intent(out) :: stat     !! the integrator's failure
+        type(elastic_solver_t) :: solver
+        type(lsoda_stats_t) :: st
+        integer :: k
+        ys = 0.0_dp
+        ys(:, 0) = y0
+        call solver%init(el, times(0), y0, rtol, atol, stat, tcrit=times(ubound(times, 1)))
+        if (stat%code == 0) then
+            do k = 1, ubound(times, 1)
+                call solver%integrate(el, times(k), ys(:, k), stat)
+                if (stat%code /= 0) exit
+            end do
+        end if
+        st = solver%stats()
+        steps = st%steps
+        nfe = st%rhs_evals
+    end subroutine solve_lsoda_elastic
 
     !> Fixed-step classical Runge-Kutta 4 with `m` equal steps per output interval.
     subroutine solve_rk4(p, y0, times, m, ys, steps, nfe, stat)
@@ -209,7 +238,7 @@ contains
         logical :: loud, elastic, ref_check
         type(bifilar_t) :: kane
         type(elastic_t) :: el
-        real(dp), allocatable :: y0s(:), aunit(:)
+        real(dp), allocatable :: y0s(:)
 
         loud = .true.
         if (present(quiet)) loud = .not. quiet
@@ -235,15 +264,13 @@ contains
                 stat%msg = d%name//': elastic start: '//stat%msg
                 return
             end if
-            aunit = elastic_atol(el, 1.0_dp)
-            do while (d%dtau_out/m_rk0*maxval(aunit) > 1.0_dp .and. m_rk0 < 2**20)
+            do while (d%dtau_out/m_rk0*stretch_frequency(el) > 1.0_dp .and. m_rk0 < 2**20)
                 m_rk0 = 2*m_rk0
             end do
         else
             kane%p = p
             ns = NSTATE
             y0s = y0
-            aunit = [1.0_dp]
         end if
         allocate (yref(ns, 0:n), ys(ns, 0:n), yh1(ns, 0:n), yh2(ns, 0:n))
         ratio = d%atol/d%rtol
@@ -362,16 +389,17 @@ contains
 
     contains
 
-        !> LSODA on the deck's system at rtol, atol = rtol * ratio (per state for the
-        !! elastic model); steps and nfe of the host are set.
+        !> LSODA on the deck's system at rtol, atol = rtol * ratio (per state from
+        !! elastic_atol for the elastic model); steps and nfe of the host are set.
         subroutine run_lsoda(rtl, yout, st)
             real(dp), intent(in) :: rtl
             real(dp), intent(out) :: yout(:, 0:)
             type(status_t), intent(out) :: st
             if (elastic) then
-                call solve_lsoda_sys(el, y0s, times, rtl, rtl*ratio*aunit, yout, steps, nfe, st)
+                call solve_lsoda_elastic(el, y0s, times, rtl, elastic_atol(el, rtl*ratio, rtl), &
+                                         yout, steps, nfe, st)
             else
-                call solve_lsoda_sys(kane, y0s, times, rtl, rtl*ratio*aunit, yout, steps, nfe, st)
+                call solve_lsoda_sys(kane, y0s, times, rtl, [rtl*ratio], yout, steps, nfe, st)
             end if
         end subroutine run_lsoda
 
@@ -381,6 +409,7 @@ contains
             real(dp), intent(out) :: yout(:, 0:)
             type(status_t), intent(out) :: st
             if (elastic) then
+                el%mode = CABLE_AUTO             ! the law decided at each evaluation
                 call solve_rk4_sys(el, y0s, times, mm, yout, steps, nfe, st)
             else
                 call solve_rk4_sys(kane, y0s, times, mm, yout, steps, nfe, st)

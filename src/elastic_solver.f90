@@ -1,0 +1,402 @@
+!> LSODA on the elastic-cable model with the cables' taut/slack modes as a discrete state.
+!!
+!! The tension law of elastic_model has a kink where a cable goes slack.  An implicit
+!! method's Newton iteration that crosses it does not converge, and at high stiffness the
+!! iterates cross it all the time: at k = 1e8 a cable's static stretch is 1e-8 b', inside
+!! the position tolerance.  On the cylinder of Figs. 4-6 at k = 1e8 the law decided at each
+!! evaluation costs 70 666 steps and 12 425 convergence failures over two torsional
+!! periods (rtol 1e-8), as many steps as an explicit method would take.
+!!
+!! This driver keeps each cable in a fixed mode (CABLE_TAUT: the smooth spring-dashpot;
+!! CABLE_SLACK: no force) during every integrator step, so the implicit method always sees
+!! a smooth right-hand side.  After each step it evaluates the switching functions
+!! g = min(k eps, k eps + c d|s|/dtau) (elastic_model cable_switch) at the step end.  A cable
+!! whose g has left its mode's sign (taut: g > 0; slack: g <= 0) switches: the switch time
+!! is located by bisection in the step's dense output, to a few units of roundoff in tau,
+!! and the step is cut there.  The new modes take effect, and LSODA restarts from the
+!! state at the switch, at the beginning of the next call of step.  At every step end the
+!! modes therefore agree with the law decided at each evaluation, and the taut/slack
+!! history is known to roundoff in tau: slack_time, slack_intervals and the list of slack
+!! intervals (slack_list) are exact rather than sampled.
+!!
+!! A switch in and out of one mode inside a single step (a slack interval shorter than a
+!! step, with g of the same sign at both ends) is not seen; the error test keeps steps
+!! short where the motion of the cables changes quickly.
+module elastic_solver
+    use kinds, only: dp
+    use status, only: status_t, set_error, ERR_NUMERIC, STATUS_OK
+    use lsoda, only: lsoda_t, lsoda_stats_t, METHOD_BDF
+    use elastic_model, only: elastic_t, cable_switch, natural_lengths, ELASTIC_NSTATE, &
+                             CABLE_TAUT, CABLE_SLACK
+    implicit none
+    private
+
+    !> Most bisection halvings of one switch location (2**-80 of a step is below roundoff).
+    integer, parameter :: MAX_BISECT = 80
+    !> Default most internal steps in one call of integrate.
+    integer, parameter :: DEFAULT_MAX_STEPS = 500000
+    !> Chatter: this many switches in a row, each after at most QUICK_STEPS steps of its
+    !! mode, stop the integration (the tolerance does not resolve the cables' stretch).
+    integer, parameter :: MAX_QUICK_SWITCHES = 100, QUICK_STEPS = 2
+
+    !> One slack interval of one cable.
+    type, public :: slack_interval_t
+        integer :: cable = 0                    !! CABLE_BC (1) or CABLE_AD (2)
+        real(dp) :: tau_start = 0.0_dp          !! tau at which the cable went slack
+        real(dp) :: tau_end = -1.0_dp           !! tau at which it was taut again; < tau_start
+                                                !! while it is still slack
+    end type slack_interval_t
+
+    !> The integration of one elastic run.
+    type, public :: elastic_solver_t
+        private
+        type(lsoda_t) :: ls                     ! the integrator of the current mode
+        logical :: ready = .false.
+        real(dp) :: rtol = 0.0_dp
+        real(dp), allocatable :: atol(:)
+        logical :: have_tcrit = .false.
+        real(dp) :: tcrit = 0.0_dp
+        real(dp) :: t_now = 0.0_dp              ! end of the last step (or the switch time)
+        real(dp) :: t_prev = 0.0_dp             ! start of the last step
+        logical :: pending = .false.            ! a switch located, restart at the next step
+        real(dp) :: y_switch(ELASTIC_NSTATE) = 0.0_dp
+        integer :: mode_next(2) = CABLE_TAUT
+        type(lsoda_stats_t) :: done             ! counters of the finished LSODA segments
+        integer :: n_switches = 0
+        integer :: quick = 0                    ! switches in a row after <= QUICK_STEPS steps
+        real(dp) :: slack_t(2) = 0.0_dp
+        integer :: slack_n(2) = 0
+        type(slack_interval_t), allocatable :: intervals(:)
+        integer :: n_intervals = 0
+    contains
+        procedure :: init => es_init
+        procedure :: step => es_step
+        procedure :: integrate => es_integrate
+        procedure :: dense => es_dense
+        procedure :: stats => es_stats
+        procedure :: switches => es_switches
+        procedure :: slack_time => es_slack_time
+        procedure :: slack_intervals => es_slack_intervals
+        procedure :: slack_list => es_slack_list
+    end type elastic_solver_t
+
+    public :: initial_modes
+
+contains
+
+    !> The modes the law decided at each evaluation gives at state y: taut where g > 0.
+    pure function initial_modes(sys, y) result(mode)
+        type(elastic_t), intent(in) :: sys
+        real(dp), intent(in) :: y(:)            !! elastic state (13)
+        integer :: mode(2)
+        mode = merge(CABLE_TAUT, CABLE_SLACK, cable_switch(sys, y) > 0.0_dp)
+    end function initial_modes
+
+    !> Start an elastic integration at (t0, y0): the modes from the state (initial_modes, set
+    !! in sys%mode), then LSODA as lsoda_t%init (rtol, atol of size 1 or 13, tcrit).
+    subroutine es_init(s, sys, t0, y0, rtol, atol, stat, tcrit)
+        class(elastic_solver_t), intent(inout) :: s
+        type(elastic_t), intent(inout) :: sys   !! the model; its modes are set here
+        real(dp), intent(in) :: t0, y0(:), rtol, atol(:)
+        type(status_t), intent(out) :: stat     !! lsoda_t%init's
+        real(dp), intent(in), optional :: tcrit !! no step goes past tcrit
+        integer :: j
+        s%ready = .false.
+        s%rtol = rtol
+        s%atol = atol
+        s%have_tcrit = present(tcrit)
+        if (present(tcrit)) s%tcrit = tcrit
+        s%t_now = t0
+        s%t_prev = t0
+        s%pending = .false.
+        s%done = lsoda_stats_t()
+        s%n_switches = 0
+        s%quick = 0
+        s%slack_t = 0.0_dp
+        s%slack_n = 0
+        s%n_intervals = 0
+        if (allocated(s%intervals)) deallocate (s%intervals)
+        allocate (s%intervals(8))
+        sys%mode = initial_modes(sys, y0)
+        do j = 1, 2
+            if (sys%mode(j) == CABLE_SLACK) call open_interval(s, j, t0)
+        end do
+        call start_lsoda(s, sys, t0, y0, stat, .false.)
+        s%ready = stat%code == STATUS_OK
+    end subroutine es_init
+
+    subroutine start_lsoda(s, sys, t0, y0, stat, bdf)
+        type(elastic_solver_t), intent(inout) :: s
+        type(elastic_t), intent(inout) :: sys
+        real(dp), intent(in) :: t0, y0(:)
+        type(status_t), intent(out) :: stat
+        logical, intent(in) :: bdf              !! first step with BDF
+        if (s%have_tcrit) then
+            call s%ls%init(sys, t0, y0, s%rtol, s%atol, stat, tcrit=s%tcrit, start_bdf=bdf)
+        else
+            call s%ls%init(sys, t0, y0, s%rtol, s%atol, stat, start_bdf=bdf)
+        end if
+    end subroutine start_lsoda
+
+    !> One step: the restart after a switch located by the previous call, one LSODA step,
+    !! and the location of a switch in it (the step then ends at the switch).  After it,
+    !! dense() gives the solution in [t_current - (step), t_current] (stats()%t_current).
+    subroutine es_step(s, sys, stat, tout)
+        class(elastic_solver_t), intent(inout) :: s
+        type(elastic_t), intent(inout) :: sys
+        type(status_t), intent(out) :: stat     !! LSODA's failure, prefixed with the time
+        real(dp), intent(in), optional :: tout  !! as lsoda_t%step
+        type(lsoda_stats_t) :: st
+        real(dp) :: y(ELASTIC_NSTATE), t0, t1
+        logical :: sw(2)
+        if (.not. s%ready) then
+            call set_error(stat, ERR_NUMERIC, 'elastic solver: not initialised')
+            return
+        end if
+        if (s%pending) then
+            ! restart in the new modes, with BDF if the last step before the switch was
+            ! (the cables are as stiff after the switch as before)
+            st = s%ls%stats()
+            call add_counts(s%done, st)
+            sys%mode = s%mode_next
+            s%pending = .false.
+            call start_lsoda(s, sys, s%t_now, s%y_switch, stat, st%method_last == METHOD_BDF)
+            if (stat%code /= STATUS_OK) return
+        end if
+        t0 = s%t_now
+        call s%ls%step(sys, stat, tout)
+        if (stat%code /= STATUS_OK) return
+        st = s%ls%stats()
+        t1 = st%t_current
+        call s%ls%dense(t1, 0, y, stat)
+        if (stat%code /= STATUS_OK) return
+        sw = switched(sys, y)
+        if (any(sw)) call locate_switch(s, sys, t0, t1, y, sw, stat)
+        if (stat%code /= STATUS_OK) return
+        s%t_prev = t0
+        s%t_now = t1
+        call account(s, sys%mode, t0, t1)
+        if (any(sw)) then
+            s%y_switch = y
+            s%mode_next = sys%mode
+            where (sw) s%mode_next = merge(CABLE_SLACK, CABLE_TAUT, sys%mode == CABLE_TAUT)
+            s%pending = .true.
+            call record_switches(s, sw, s%mode_next, t1)
+            if (st%steps <= QUICK_STEPS) then
+                s%quick = s%quick + 1
+            else
+                s%quick = 0
+            end if
+            if (s%quick >= MAX_QUICK_SWITCHES) call chatter_error(s, sys, stat)
+        end if
+    contains
+        !> Find the first switch in (t0, t1]: t1 and y become the switch time and state, sw
+        !! the cables switching there.
+        subroutine locate_switch(s, sys, t0, t1, y, sw, stat)
+            type(elastic_solver_t), intent(inout) :: s
+            type(elastic_t), intent(in) :: sys
+            real(dp), intent(in) :: t0
+            real(dp), intent(inout) :: t1, y(:)
+            logical, intent(inout) :: sw(2)
+            type(status_t), intent(out) :: stat
+            real(dp) :: a, b, m, ym(ELASTIC_NSTATE)
+            logical :: swm(2)
+            integer :: it
+            stat%code = STATUS_OK
+            a = t0
+            b = t1
+            do it = 1, MAX_BISECT
+                m = a + 0.5_dp*(b - a)
+                if (.not. (m > a .and. m < b)) exit
+                call s%ls%dense(m, 0, ym, stat)
+                if (stat%code /= STATUS_OK) return
+                swm = switched(sys, ym)
+                if (any(swm)) then
+                    b = m
+                    y = ym
+                    sw = swm
+                else
+                    a = m
+                end if
+            end do
+            t1 = b
+        end subroutine locate_switch
+    end subroutine es_step
+
+    !> The cables chatter between taut and slack: the error test lets the stretch err by
+    !! more than the stretch itself.
+    subroutine chatter_error(s, sys, stat)
+        type(elastic_solver_t), intent(in) :: s
+        type(elastic_t), intent(in) :: sys
+        type(status_t), intent(inout) :: stat
+        character(len=400) :: buf
+        write (buf, '(a,i0,a,i0,a,es9.2,a,es9.2,a)') 'the cables switched between '// &
+            'taut and slack ', MAX_QUICK_SWITCHES, ' times in a row, each after at most ', &
+            QUICK_STEPS, ' steps: the tolerance (rtol = ', s%rtol, ') lets the stretch err '// &
+            'by more than a cable''s static stretch (about l/(2 k) = ', &
+            0.5_dp*maxval(natural_lengths(sys))/sys%stiffness, ' b''); lower rtol to about '// &
+            '1/(2 k) or below, or lower the stiffness'
+        call set_error(stat, ERR_NUMERIC, trim(buf))
+    end subroutine chatter_error
+
+    !> Cables whose switching function has left the sign of their mode at state y.
+    pure function switched(sys, y) result(sw)
+        type(elastic_t), intent(in) :: sys
+        real(dp), intent(in) :: y(:)
+        logical :: sw(2)
+        real(dp) :: g(2)
+        g = cable_switch(sys, y)
+        sw = (sys%mode == CABLE_TAUT .and. .not. (g > 0.0_dp)) .or. &
+             (sys%mode == CABLE_SLACK .and. g > 0.0_dp)
+    end function switched
+
+    !> Slack time of the interval [t0, t1] run in the modes `mode`.
+    subroutine account(s, mode, t0, t1)
+        type(elastic_solver_t), intent(inout) :: s
+        integer, intent(in) :: mode(2)
+        real(dp), intent(in) :: t0, t1
+        where (mode == CABLE_SLACK) s%slack_t = s%slack_t + (t1 - t0)
+    end subroutine account
+
+    !> Open or close the slack intervals of the cables switching at t.
+    subroutine record_switches(s, sw, mode_new, t)
+        type(elastic_solver_t), intent(inout) :: s
+        logical, intent(in) :: sw(2)
+        integer, intent(in) :: mode_new(2)
+        real(dp), intent(in) :: t
+        integer :: j, i
+        do j = 1, 2
+            if (.not. sw(j)) cycle
+            s%n_switches = s%n_switches + 1
+            if (mode_new(j) == CABLE_SLACK) then
+                call open_interval(s, j, t)
+            else
+                do i = s%n_intervals, 1, -1
+                    if (s%intervals(i)%cable == j) then
+                        s%intervals(i)%tau_end = t
+                        exit
+                    end if
+                end do
+            end if
+        end do
+    end subroutine record_switches
+
+    subroutine open_interval(s, j, t)
+        type(elastic_solver_t), intent(inout) :: s
+        integer, intent(in) :: j
+        real(dp), intent(in) :: t
+        type(slack_interval_t), allocatable :: tmp(:)
+        if (s%n_intervals == size(s%intervals)) then
+            allocate (tmp(2*size(s%intervals)))
+            tmp(1:s%n_intervals) = s%intervals(1:s%n_intervals)
+            call move_alloc(tmp, s%intervals)
+        end if
+        s%n_intervals = s%n_intervals + 1
+        s%intervals(s%n_intervals) = slack_interval_t(j, t, -1.0_dp)
+        s%slack_n(j) = s%slack_n(j) + 1
+    end subroutine open_interval
+
+    !> Add the counters of a finished LSODA segment to the totals.
+    pure subroutine add_counts(total, seg)
+        type(lsoda_stats_t), intent(inout) :: total
+        type(lsoda_stats_t), intent(in) :: seg
+        total%steps = total%steps + seg%steps
+        total%rhs_evals = total%rhs_evals + seg%rhs_evals
+        total%jac_evals = total%jac_evals + seg%jac_evals
+        total%lu_decomps = total%lu_decomps + seg%lu_decomps
+        total%conv_failures = total%conv_failures + seg%conv_failures
+        total%error_test_failures = total%error_test_failures + seg%error_test_failures
+        total%method_switches = total%method_switches + seg%method_switches
+    end subroutine add_counts
+
+    !> Solution (k = 0) or its k-th derivative at t in the last step (see step).
+    subroutine es_dense(s, t, k, dky, stat)
+        class(elastic_solver_t), intent(in) :: s
+        real(dp), intent(in) :: t
+        integer, intent(in) :: k
+        real(dp), intent(out) :: dky(:)
+        type(status_t), intent(out) :: stat
+        character(len=160) :: buf
+        if (s%pending .and. t > s%t_now + 100.0_dp*epsilon(1.0_dp)*max(1.0_dp, abs(t))) then
+            dky = 0.0_dp
+            write (buf, '(a,es12.5,a,es12.5)') 'elastic solver dense: tau = ', t, &
+                ' lies beyond the cable switch at ', s%t_now
+            call set_error(stat, ERR_NUMERIC, trim(buf))
+            return
+        end if
+        call s%ls%dense(t, k, dky, stat)
+    end subroutine es_dense
+
+    !> Steps until tout is reached and the state there (dense output).  Forward only.
+    subroutine es_integrate(s, sys, tout, y, stat, max_steps)
+        class(elastic_solver_t), intent(inout) :: s
+        type(elastic_t), intent(inout) :: sys
+        real(dp), intent(in) :: tout
+        real(dp), intent(out) :: y(:)
+        type(status_t), intent(out) :: stat
+        integer, intent(in), optional :: max_steps  !! most steps in this call (500000)
+        integer :: n, nmax
+        character(len=160) :: buf
+        nmax = DEFAULT_MAX_STEPS
+        if (present(max_steps)) nmax = max_steps
+        stat%code = STATUS_OK
+        y = 0.0_dp
+        if (tout < s%t_prev) then
+            write (buf, '(a,es12.5,a,es12.5)') 'elastic solver: tout = ', tout, &
+                ' lies behind the last step, which starts at ', s%t_prev
+            call set_error(stat, ERR_NUMERIC, trim(buf))
+            return
+        end if
+        n = 0
+        do while (s%t_now < tout)
+            if (n >= nmax) then
+                write (buf, '(i0,a,es12.5,a,es12.5)') nmax, ' steps taken without reaching '// &
+                    'tau = ', tout, ': stopped at ', s%t_now
+                call set_error(stat, ERR_NUMERIC, 'elastic solver: '//trim(buf))
+                return
+            end if
+            call s%step(sys, stat, tout)
+            if (stat%code /= STATUS_OK) return
+            n = n + 1
+        end do
+        call s%dense(tout, 0, y, stat)
+    end subroutine es_integrate
+
+    !> LSODA's counters summed over the segments between switches; t_current is the end of
+    !! the last step (the switch time when a switch ended it).
+    function es_stats(s) result(st)
+        class(elastic_solver_t), intent(in) :: s
+        type(lsoda_stats_t) :: st
+        st = s%ls%stats()
+        call add_counts(st, s%done)
+        st%t_current = s%t_now
+    end function es_stats
+
+    !> Number of cable switches (taut -> slack and slack -> taut) so far.
+    integer function es_switches(s)
+        class(elastic_solver_t), intent(in) :: s
+        es_switches = s%n_switches
+    end function es_switches
+
+    !> Total slack time of BC (1) and AD (2) up to t_current.
+    function es_slack_time(s) result(t)
+        class(elastic_solver_t), intent(in) :: s
+        real(dp) :: t(2)
+        t = s%slack_t
+    end function es_slack_time
+
+    !> Number of slack intervals of BC (1) and AD (2) begun up to t_current.
+    function es_slack_intervals(s) result(n)
+        class(elastic_solver_t), intent(in) :: s
+        integer :: n(2)
+        n = s%slack_n
+    end function es_slack_intervals
+
+    !> The slack intervals so far, in the order they began.
+    function es_slack_list(s) result(list)
+        class(elastic_solver_t), intent(in) :: s
+        type(slack_interval_t), allocatable :: list(:)
+        list = s%intervals(1:s%n_intervals)
+    end function es_slack_list
+
+end module elastic_solver
