@@ -325,6 +325,7 @@ contains
             'is the same for both cable differences (it is a natural frequency of the pendulum '// &
             'at rest, claim 5), while its amplitude falls by the paper''s factor.'
         call stability_lines(outdir, u)
+        call elastic_lines(outdir, u)
         call atomic_commit(u, outdir//'/report.md', stat)
     end subroutine write_report
 
@@ -363,6 +364,52 @@ contains
             write (u, '(a)') '| '//trim(decks(k))//' | '//trim(figs(k))//trim(buf)
         end do
     end subroutine stability_lines
+
+    !> The elastic-cable model against the paper's (cylinder_l180_elastic against
+    !! cylinder_l180, same start and output grid), when both outputs are present: the largest
+    !! differences in theta1, theta4 and Q, and the largest stretch of AD.
+    subroutine elastic_lines(outdir, u)
+        character(len=*), intent(in) :: outdir
+        integer, intent(in) :: u                !! open report file
+        type(series_t) :: sk, se
+        type(status_t) :: st1, st2
+        real(dp) :: nst
+        logical :: found
+        integer :: n
+        character(len=300) :: buf
+        character(len=20) :: tend
+        call read_series(outdir//'/cylinder_l180.dat', sk, st1)
+        call read_series(outdir//'/cylinder_l180_elastic.dat', se, st2)
+        if (st1%code /= 0 .or. st2%code /= 0) return
+        n = min(size(sk%v, 1), size(se%v, 1))
+        if (n < 2) return
+        if (maxval(abs(sk%v(1:n, 1) - se%v(1:n, 1))) > 1.0e-9_dp) return
+        write (tend, '(f10.2)') sk%v(n, 1)
+        write (u, '(a)') '', '## Elastic cables against the paper''s model', '', &
+            '`cylinder_l180_elastic` (`model = ''elastic''`, `&cables` of that deck) against '// &
+            '`cylinder_l180` (the paper''s inextensible cables), same start, rows up to tau = '// &
+            trim(adjustl(tend))//'.  The difference is O(1/stiffness) (README, "Elastic '// &
+            'cables").', '', '| max abs diff theta1 (rad) | max abs diff theta4 (rad) | '// &
+            'max abs diff Q (b'') | max stretch of AD (b'') | steps |', '|---|---|---|---|---|'
+        call read_kv(outdir//'/cylinder_l180_elastic.summary', 'steps', nst, found)
+        buf = '| '//trim(num(maxval(abs(sk%v(1:n, 2) - se%v(1:n, 2)))))//' | '// &
+            trim(num(maxval(abs(sk%v(1:n, 5) - se%v(1:n, 5)))))//' | '// &
+            trim(num(maxval(abs(sk%v(1:n, 12) - se%v(1:n, 12)))))//' | '// &
+            trim(num(maxval(abs(se%v(1:n, 17)))))//' | '
+        if (found) then
+            write (buf(len_trim(buf) + 2:), '(i0,a)') nint(nst), ' |'
+        else
+            buf = trim(buf)//' - |'
+        end if
+        write (u, '(a)') trim(buf)
+    contains
+        function num(x) result(txt)
+            real(dp), intent(in) :: x
+            character(len=16) :: txt
+            write (txt, '(es10.3)') x
+            txt = adjustl(txt)
+        end function num
+    end subroutine elastic_lines
 
 
 end module paper_claims

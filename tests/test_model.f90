@@ -13,7 +13,7 @@ module test_model
     use lsoda, only: lsoda_t
     use deck, only: deck_t, read_deck
     use simulate, only: run_simulation, run_summary_t, make_pendulum, start_state
-    use paper_claims, only: claim_t, evaluate_claims, NCLAIMS
+    use paper_claims, only: claim_t, evaluate_claims, write_report, NCLAIMS
     use floquet, only: check_torsion_scene, torsion_period
     implicit none
     private
@@ -452,6 +452,58 @@ contains
             call t%check('claim holds: '//claims(k)%what//' ('//claims(k)%measure//')', &
                          claims(k)%holds)
         end do
+        call test_report_elastic(t)
     end subroutine test_claims
+
+    !> The report's section on the elastic-cable model: with cylinder_l180_elastic run beside
+    !! cylinder_l180, report.md gets the table of their differences, and they are O(1/k)
+    !! (k = 1e6: below 1e-5 rad, b').
+    subroutine test_report_elastic(t)
+        type(tester_t), intent(inout) :: t
+        type(deck_t) :: d
+        type(status_t) :: st
+        type(run_summary_t) :: sm
+        character(len=512) :: line
+        real(dp) :: v(4)
+        integer :: u, ios
+        logical :: head, row
+        call read_deck('input/cylinder_l180_elastic.nml', d, st)
+        if (st%code == 0) call run_simulation(d, SCRATCH, sm, st)
+        call t%check('report: cylinder_l180_elastic runs', st%code == 0)
+        call write_report(SCRATCH, st)
+        call t%check('report: written', st%code == 0)
+        head = .false.
+        row = .false.
+        v = huge(1.0_dp)
+        open (newunit=u, file=SCRATCH//'/report.md', status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, '## Elastic cables against the paper''s model') == 1) head = .true.
+            if (head .and. index(line, '| max abs diff theta1') == 1) then
+                read (u, '(a)', iostat=ios) line
+                read (u, '(a)', iostat=ios) line
+                line = translate_bars(line)
+                read (line, *, iostat=ios) v
+                row = ios == 0
+                exit
+            end if
+        end do
+        close (u)
+        call t%check('report: elastic section with its table', head .and. row)
+        call t%check('report: elastic differs from the paper''s model by < 1e-5 (k = 1e6)', &
+                     row .and. all(v < 1.0e-5_dp))
+    contains
+        function translate_bars(a) result(b)
+            character(len=*), intent(in) :: a
+            character(len=len(a)) :: b
+            integer :: i
+            b = a
+            do i = 1, len(b)
+                if (b(i:i) == '|') b(i:i) = ' '
+            end do
+        end function translate_bars
+    end subroutine test_report_elastic
 
 end module test_model
