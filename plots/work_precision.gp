@@ -1,11 +1,12 @@
 # Work-precision: error against CPU time, LSODA (rtol 1e-3 ... 1e-12) and fixed-step RK4
-# usage (from the repository root): gnuplot -c plots/work_precision.gp [WP] [RK4] [PNG]
+# usage (from the repository root): gnuplot -c plots/work_precision.gp [WP] [RK4] [PNG] [TITLE]
 wp   = (ARGC >= 1) ? ARG1 : 'output/work_precision_cylinder.wp.dat'
 rk4  = (ARGC >= 2) ? ARG2 : 'output/work_precision_cylinder.wp_rk4.dat'
 png  = (ARGC >= 3) ? ARG3 : 'plots/work_precision.png'
+ttl  = (ARGC >= 4) ? ARG4 : "Error against CPU time, cylinder l = 2b, l' = 1.8b"
 load 'plots/style.gpi'
 set output png
-set title "Error against CPU time, cylinder l = 2b, l' = 1.8b"
+set title ttl
 set logscale xy
 set format x '10^{%L}'
 set format y '10^{%L}'

@@ -353,6 +353,15 @@ contains
         ydot(11:13) = matmul(ibinv, matmul(transpose(r), torque) - cross(wb, matmul(ib, wb)))
     end subroutine dynamics
 
+    !> ERR_NUMERIC when the orientation quaternion of state y is zero (no rotation matrix).
+    pure subroutine check_quaternion(y, stat)
+        real(dp), intent(in) :: y(:)            !! elastic state (13)
+        type(status_t), intent(out) :: stat
+        stat%code = STATUS_OK
+        if (.not. (dot_product(y(7:10), y(7:10)) > 0.0_dp)) &
+            call set_error(stat, ERR_NUMERIC, 'elastic model: zero orientation quaternion')
+    end subroutine check_quaternion
+
     !> Right-hand side: Newton's and Euler's equations with the two spring-dashpot cables.
     subroutine elastic_rhs(sys, t, y, ydot, stat)
         class(elastic_t), intent(inout) :: sys
@@ -362,12 +371,9 @@ contains
         type(status_t), intent(out) :: stat
         type(elastic_cables_t) :: cab
         if (.false.) ydot(1) = t
-        stat%code = STATUS_OK
-        if (.not. (dot_product(y(7:10), y(7:10)) > 0.0_dp)) then
-            ydot = 0.0_dp
-            call set_error(stat, ERR_NUMERIC, 'elastic model: zero orientation quaternion')
-            return
-        end if
+        ydot = 0.0_dp
+        call check_quaternion(y, stat)
+        if (stat%code /= STATUS_OK) return
         call dynamics(sys, y, ydot, cab)
     end subroutine elastic_rhs
 
@@ -549,12 +555,9 @@ contains
         real(dp), intent(out) :: dfdy(:, :)     !! d ydot_i / d y_j (13 x 13)
         type(status_t), intent(out) :: stat
         if (.false.) dfdy(1, 1) = t
-        stat%code = STATUS_OK
-        if (.not. (dot_product(y(7:10), y(7:10)) > 0.0_dp)) then
-            dfdy = 0.0_dp
-            call set_error(stat, ERR_NUMERIC, 'elastic model: zero orientation quaternion')
-            return
-        end if
+        dfdy = 0.0_dp
+        call check_quaternion(y, stat)
+        if (stat%code /= STATUS_OK) return
         call dynamics_jacobian(sys, y, dfdy(1:ELASTIC_NSTATE, 1:ELASTIC_NSTATE))
     end subroutine elastic_jacobian
 
@@ -687,11 +690,8 @@ contains
         real(dp) :: ydot(ELASTIC_NSTATE), yc(10), c(3), d(3), pe(3), vc(3), vd(3), n(3, 3)
         real(dp) :: omega(3), mid(3), r(3, 3)
         type(elastic_cables_t) :: cb
-        stat%code = STATUS_OK
-        if (.not. (dot_product(y(7:10), y(7:10)) > 0.0_dp)) then
-            call set_error(stat, ERR_NUMERIC, 'elastic model: zero orientation quaternion')
-            return
-        end if
+        call check_quaternion(y, stat)
+        if (stat%code /= STATUS_OK) return
         call dynamics(sys, y, ydot, cb)
         if (present(th_ref)) then
             yc = elastic_chart(sys%p, y, th_ref)
