@@ -387,9 +387,9 @@ contains
             'still slack at the end of the run)'
         do i = 1, size(list)
             t1 = list(i)%tau_end
-            if (t1 < list(i)%tau_start) t1 = tau_end
+            if (list(i)%open) t1 = tau_end
             write (u, '(i2,3es24.15,i3)') list(i)%cable, list(i)%tau_start, t1, &
-                t1 - list(i)%tau_start, merge(1, 0, list(i)%tau_end < list(i)%tau_start)
+                t1 - list(i)%tau_start, merge(1, 0, list(i)%open)
         end do
         call atomic_commit(u, path, stat)
     end subroutine write_slack_list
@@ -402,7 +402,9 @@ contains
     !! this model, not an error: the integration (elastic_solver) locates each switch
     !! between taut and slack to roundoff in tau, the summary gives each cable's slack time
     !! and number of slack intervals, and OUTDIR/NAME.slack lists the intervals.  The run
-    !! stops (ERR_MODEL) only when a cable stretches beyond STRAIN_MAX.
+    !! stops with ERR_MODEL when a cable stretches beyond STRAIN_MAX, and with ERR_NUMERIC
+    !! when the cables chatter between taut and slack (elastic_solver: the tolerance does
+    !! not resolve the stretch) or the integrator fails.
     subroutine run_elastic(d, outdir, sm, stat)
         type(deck_t), intent(in) :: d           !! the deck (model = 'elastic')
         character(len=*), intent(in) :: outdir  !! output directory
@@ -416,7 +418,7 @@ contains
         type(status_t) :: s2
         real(dp) :: yc(NSTATE), th0(5), y(ELASTIC_NSTATE), ystep(ELASTIC_NSTATE)
         real(dp) :: y2(ELASTIC_NSTATE), atol(ELASTIC_NSTATE), th_row(5), th_step(5)
-        real(dp) :: tau, e0, row(17), t_cpu0, t_prev, t_e0, t_e1, rt2
+        real(dp) :: tau, e0, row(17), t_cpu0, t_e0, t_e1, rt2
         character(len=:), allocatable :: datpath, sumpath
         integer :: u, k, nout, nstep_row
         character(len=300) :: buf
@@ -465,7 +467,6 @@ contains
         th_step = th0
         e0 = 0.0_dp
         k = 0
-        t_prev = 0.0_dp
         nstep_row = 0
         call elastic_evaluate(sys, y, th0(3), mo, stat, th0, cab)
         if (stat%code /= 0) then
@@ -505,7 +506,6 @@ contains
                     call set_error(stat, ERR_MODEL, trim(buf))
                     exit
                 end if
-                t_prev = st%t_current
                 cycle
             end if
             if (k > 0) then

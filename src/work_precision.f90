@@ -409,6 +409,7 @@ contains
             real(dp), intent(in) :: yt(:, 0:), yr(:, 0:)
             real(dp), intent(out) :: err_theta, err_q, err_energy
             if (elastic) then
+                el%mode = CABLE_AUTO             ! energies by the law, whatever the last run left
                 call elastic_errors(el, yt, yr, err_theta, err_q, err_energy)
             else
                 call trajectory_errors(p, yt, yr, err_theta, err_q, err_energy)
