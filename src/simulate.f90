@@ -137,8 +137,8 @@ contains
         type(lsoda_t) :: solver, solver2
         type(lsoda_stats_t) :: st
         type(motion_t) :: mo
-        real(dp) :: y(NSTATE), ystep(NSTATE), th0(5), tau, e0, th3, row(17), t_cpu0
-        real(dp) :: t_prev, y2(NSTATE), t_e0, t_e1, rt2
+        real(dp) :: y(NSTATE), ystep(NSTATE), th0(5), tau, e0, th3, t_cpu0
+        real(dp) :: t_prev, y2(NSTATE), t_e0, rt2
         character(len=:), allocatable :: datpath, sumpath
         integer :: u, k, nout, nstep_row
         character(len=300) :: buf
@@ -187,13 +187,9 @@ contains
             tau = min(k*d%dtau_out, d%tau_end)
             st = solver%stats()
             if (k > 0 .and. st%t_current < tau) then
-                if (nstep_row >= MAX_STEPS_PER_ROW) then
-                    write (buf, '(a,i0,a,f0.4,a,es10.3,a)') 'the integrator took ', &
-                        MAX_STEPS_PER_ROW, ' steps without reaching tau = ', tau, &
-                        ' (last step ', abs(st%h_last), '): raise rtol/atol or shorten tau_end'
-                    call set_error(stat, ERR_NUMERIC, trim(buf))
-                    exit
-                end if
+                call check_row_budget(nstep_row, tau, st%h_last, 'raise rtol/atol or '// &
+                                      'shorten tau_end', stat)
+                if (stat%code /= 0) exit
                 call solver%step(sys, stat, tout=d%tau_end)
                 st = solver%stats()
                 if (stat%code /= 0) then
@@ -225,23 +221,13 @@ contains
             nstep_row = 0
             call evaluate(sys%p, y, th3, mo, stat)
             if (stat%code /= 0) then
-                write (buf, '(a,f0.4)') ' at tau = ', tau
-                stat%msg = stat%msg//trim(buf)
+                call append_tau(stat, tau)
                 exit
             end if
             th3 = mo%th(3)
-            if (k == 0) e0 = mo%energy
-            row = [tau, mo%th, mo%thd, mo%q_sway, mo%q_axis, mo%t_bc, mo%t_ad, &
-                   mo%energy - e0, mo%residual]
-            if (.not. all_finite(row)) then
-                write (buf, '(a,f0.4,a)') 'non-finite result at tau = ', tau, &
-                    ': the motion left the range the model covers'
-                call set_error(stat, ERR_NUMERIC, trim(buf))
-                exit
-            end if
-            call model_checks(mo, tau, stat)
+            call emit_row(u, tau, k, mo, e0, 'the motion left the range the model covers', &
+                          .true., sm, stat)
             if (stat%code /= 0) exit
-            call record_row(u, row, mo, sm)
             if (d%error_estimate .and. k > 0) then
                 call cpu_time(t_e0)
                 call solver2%integrate(sys, tau, y2, stat)
@@ -249,11 +235,8 @@ contains
                     stat%msg = 'error estimate (rerun at rtol/100): '//stat%msg
                     exit
                 end if
-                sm%error_estimate_theta = max(sm%error_estimate_theta, angle_difference(y, y2))
-                sm%error_estimate_q = max(sm%error_estimate_q, &
-                                          abs(sway_of(sys%p, y) - sway_of(sys%p, y2)))
-                call cpu_time(t_e1)
-                sm%error_estimate_cpu = sm%error_estimate_cpu + (t_e1 - t_e0)
+                call add_estimate(sm, angle_difference(y, y2), &
+                                  abs(sway_of(sys%p, y) - sway_of(sys%p, y2)), t_e0)
             end if
             k = k + 1
         end do
@@ -301,6 +284,74 @@ contains
         sm%max_abs_constraint_residual = max(sm%max_abs_constraint_residual, abs(mo%residual))
         sm%min_tension = min(sm%min_tension, mo%t_bc, mo%t_ad)
     end subroutine record_row
+
+    !> ERR_NUMERIC when the integrator has taken MAX_STEPS_PER_ROW steps without reaching
+    !! the next row at tau; `remedy` says what to change.
+    subroutine check_row_budget(nstep_row, tau, h_last, remedy, stat)
+        integer, intent(in) :: nstep_row        !! steps since the last row
+        real(dp), intent(in) :: tau             !! time of the next row
+        real(dp), intent(in) :: h_last          !! last step size
+        character(len=*), intent(in) :: remedy
+        type(status_t), intent(inout) :: stat
+        character(len=200) :: buf
+        if (nstep_row < MAX_STEPS_PER_ROW) return
+        write (buf, '(a,i0,a,f0.4,a,es10.3,a)') 'the integrator took ', MAX_STEPS_PER_ROW, &
+            ' steps without reaching tau = ', tau, ' (last step ', abs(h_last), '):'
+        call set_error(stat, ERR_NUMERIC, trim(buf)//' '//remedy)
+    end subroutine check_row_budget
+
+    !> Append " at tau = TAU" (f0.4) to a failure's message.
+    subroutine append_tau(stat, tau)
+        type(status_t), intent(inout) :: stat
+        real(dp), intent(in) :: tau
+        character(len=40) :: buf
+        write (buf, '(a,f0.4)') ' at tau = ', tau
+        stat%msg = stat%msg//trim(buf)
+    end subroutine append_tau
+
+    !> One output row from the motion at tau (row k; the energy error is against the energy
+    !! of row 0, kept in e0): refused (ERR_NUMERIC, `why` in the message) when not finite,
+    !! then the paper model's checks when asked (model_checks), then written (record_row).
+    subroutine emit_row(u, tau, k, mo, e0, why, paper_checks, sm, stat)
+        integer, intent(in) :: u                !! the open .dat unit
+        real(dp), intent(in) :: tau             !! time of the row
+        integer, intent(in) :: k                !! row number (0: the start)
+        type(motion_t), intent(in) :: mo        !! the motion at tau
+        real(dp), intent(inout) :: e0           !! energy at the start (set at k = 0)
+        character(len=*), intent(in) :: why     !! what a non-finite row means for the model
+        logical, intent(in) :: paper_checks     !! apply model_checks (the paper's model)
+        type(run_summary_t), intent(inout) :: sm
+        type(status_t), intent(out) :: stat
+        real(dp) :: row(17)
+        character(len=60) :: buf
+        stat%code = 0
+        if (k == 0) e0 = mo%energy
+        row = [tau, mo%th, mo%thd, mo%q_sway, mo%q_axis, mo%t_bc, mo%t_ad, &
+               mo%energy - e0, mo%residual]
+        if (.not. all_finite(row)) then
+            write (buf, '(a,f0.4,a)') 'non-finite result at tau = ', tau, ': '
+            call set_error(stat, ERR_NUMERIC, trim(buf)//' '//why)
+            return
+        end if
+        if (paper_checks) then
+            call model_checks(mo, tau, stat)
+            if (stat%code /= 0) return
+        end if
+        call record_row(u, row, mo, sm)
+    end subroutine emit_row
+
+    !> Add one row's differences from the error-estimate rerun (angles, Q) and the CPU time
+    !! since t_e0 (cpu_time) to the summary.
+    subroutine add_estimate(sm, dtheta, dq, t_e0)
+        type(run_summary_t), intent(inout) :: sm
+        real(dp), intent(in) :: dtheta, dq      !! differences at this row (rad, b')
+        real(dp), intent(in) :: t_e0            !! cpu_time before the rerun's step
+        real(dp) :: t_e1
+        sm%error_estimate_theta = max(sm%error_estimate_theta, dtheta)
+        sm%error_estimate_q = max(sm%error_estimate_q, dq)
+        call cpu_time(t_e1)
+        sm%error_estimate_cpu = sm%error_estimate_cpu + (t_e1 - t_e0)
+    end subroutine add_estimate
 
     !> End a run: the solver's figures and the CPU time into sm; the .dat committed, or
     !! removed (with the deck named in the message) when stat carries an error.
@@ -418,7 +469,7 @@ contains
         type(status_t) :: s2
         real(dp) :: yc(NSTATE), th0(5), y(ELASTIC_NSTATE), ystep(ELASTIC_NSTATE)
         real(dp) :: y2(ELASTIC_NSTATE), atol(ELASTIC_NSTATE), th_row(5), th_step(5)
-        real(dp) :: tau, e0, row(17), t_cpu0, t_e0, t_e1, rt2
+        real(dp) :: tau, e0, t_cpu0, t_e0, rt2
         character(len=:), allocatable :: datpath, sumpath
         integer :: u, k, nout, nstep_row
         character(len=300) :: buf
@@ -478,14 +529,9 @@ contains
             tau = min(k*d%dtau_out, d%tau_end)
             st = solver%stats()
             if (k > 0 .and. st%t_current < tau) then
-                if (nstep_row >= MAX_STEPS_PER_ROW) then
-                    write (buf, '(a,i0,a,f0.4,a,es10.3,a)') 'the integrator took ', &
-                        MAX_STEPS_PER_ROW, ' steps without reaching tau = ', tau, &
-                        ' (last step ', abs(st%h_last), '): raise rtol/atol, shorten '// &
-                        'tau_end, or add &cables damping'
-                    call set_error(stat, ERR_NUMERIC, trim(buf))
-                    exit
-                end if
+                call check_row_budget(nstep_row, tau, st%h_last, 'raise rtol/atol, shorten '// &
+                                      'tau_end, or add &cables damping', stat)
+                if (stat%code /= 0) exit
                 call solver%step(sys, stat, tout=d%tau_end)
                 st = solver%stats()
                 if (stat%code /= 0) then
@@ -519,22 +565,13 @@ contains
             nstep_row = 0
             call elastic_evaluate(sys, y, th_row(3), mo, stat, th_row)
             if (stat%code /= 0) then
-                write (buf, '(a,f0.4)') ' at tau = ', tau
-                stat%msg = stat%msg//trim(buf)
+                call append_tau(stat, tau)
                 exit
             end if
             th_row = mo%th
-            if (k == 0) e0 = mo%energy
-            row = [tau, mo%th, mo%thd, mo%q_sway, mo%q_axis, mo%t_bc, mo%t_ad, &
-                   mo%energy - e0, mo%residual]
-            if (.not. all_finite(row)) then
-                write (buf, '(a,f0.4,a)') 'non-finite result at tau = ', tau, &
-                    ': the body''s pose left the range the paper''s angles cover '// &
-                    '(line CD vertical?)'
-                call set_error(stat, ERR_NUMERIC, trim(buf))
-                exit
-            end if
-            call record_row(u, row, mo, sm)
+            call emit_row(u, tau, k, mo, e0, 'the body''s pose left the range the paper''s '// &
+                          'angles cover (line CD vertical?)', .false., sm, stat)
+            if (stat%code /= 0) exit
             if (d%error_estimate .and. k > 0) then
                 call cpu_time(t_e0)
                 call solver2%integrate(sys2, tau, y2, stat)
@@ -544,12 +581,11 @@ contains
                 end if
                 call elastic_evaluate(sys2, y2, mo%th(3), mo2, s2, mo%th)
                 if (s2%code == 0) then
-                    sm%error_estimate_theta = max(sm%error_estimate_theta, &
-                        maxval(abs(mo%th([1, 4, 5]) - mo2%th([1, 4, 5]))))
-                    sm%error_estimate_q = max(sm%error_estimate_q, abs(mo%q_sway - mo2%q_sway))
+                    call add_estimate(sm, maxval(abs(mo%th([1, 4, 5]) - mo2%th([1, 4, 5]))), &
+                                      abs(mo%q_sway - mo2%q_sway), t_e0)
+                else
+                    call add_estimate(sm, 0.0_dp, 0.0_dp, t_e0)
                 end if
-                call cpu_time(t_e1)
-                sm%error_estimate_cpu = sm%error_estimate_cpu + (t_e1 - t_e0)
             end if
             k = k + 1
         end do
