@@ -56,6 +56,7 @@ module elastic_solver
         real(dp), allocatable :: atol(:)
         logical :: have_tcrit = .false.
         real(dp) :: tcrit = 0.0_dp
+        logical :: adams_only = .false.         ! the non-stiff method alone (comparisons)
         real(dp) :: t_now = 0.0_dp              ! end of the last step (or the switch time)
         real(dp) :: t_prev = 0.0_dp             ! start of the last step
         logical :: pending = .false.            ! a switch located, restart at the next step
@@ -93,15 +94,19 @@ contains
     end function initial_modes
 
     !> Start an elastic integration at (t0, y0): the modes from the state (initial_modes, set
-    !! in sys%mode), then LSODA as lsoda_t%init (rtol, atol of size 1 or 13, tcrit).
-    subroutine es_init(s, sys, t0, y0, rtol, atol, stat, tcrit)
+    !! in sys%mode), then LSODA as lsoda_t%init (rtol, atol of size 1 or 13, tcrit;
+    !! nonstiff_only: Adams throughout, for comparisons).
+    subroutine es_init(s, sys, t0, y0, rtol, atol, stat, tcrit, nonstiff_only)
         class(elastic_solver_t), intent(inout) :: s
         type(elastic_t), intent(inout) :: sys   !! the model; its modes are set here
         real(dp), intent(in) :: t0, y0(:), rtol, atol(:)
         type(status_t), intent(out) :: stat     !! lsoda_t%init's
         real(dp), intent(in), optional :: tcrit !! no step goes past tcrit
+        logical, intent(in), optional :: nonstiff_only  !! never switch to BDF
         integer :: j
         s%ready = .false.
+        s%adams_only = .false.
+        if (present(nonstiff_only)) s%adams_only = nonstiff_only
         s%rtol = rtol
         s%atol = atol
         s%have_tcrit = present(tcrit)
@@ -132,9 +137,11 @@ contains
         type(status_t), intent(out) :: stat
         logical, intent(in) :: bdf              !! first step with BDF
         if (s%have_tcrit) then
-            call s%ls%init(sys, t0, y0, s%rtol, s%atol, stat, tcrit=s%tcrit, start_bdf=bdf)
+            call s%ls%init(sys, t0, y0, s%rtol, s%atol, stat, tcrit=s%tcrit, &
+                           start_bdf=bdf .and. .not. s%adams_only, nonstiff_only=s%adams_only)
         else
-            call s%ls%init(sys, t0, y0, s%rtol, s%atol, stat, start_bdf=bdf)
+            call s%ls%init(sys, t0, y0, s%rtol, s%atol, stat, &
+                           start_bdf=bdf .and. .not. s%adams_only, nonstiff_only=s%adams_only)
         end if
     end subroutine start_lsoda
 

@@ -112,6 +112,7 @@ module lsoda
         real(dp) :: pdest = 0.0_dp, pdlast = 0.0_dp, pdnorm = 0.0_dp, tsw = 0.0_dp
         integer :: nq = 1, l = 2, lmax = 13, meth = METHOD_ADAMS, mused = 0, nqu = 0
         integer :: meth0 = METHOD_ADAMS        ! method of the first step
+        logical :: adams_only = .false.        ! never switch to BDF
         integer :: ialth = 2, icount = SWITCH_WAIT, irflag = 0, nslp = 0, jstart = 0
         integer :: kflag = 0
         logical :: ipup = .false., jcur = .false.
@@ -154,8 +155,10 @@ contains
     !! start_bdf [in, optional] .true.: take the first step with BDF (as after a restart of
     !!                 a problem known to be stiff); default .false., Adams, as LSODA does.
     !!                 The automatic switching between the methods works as usual after it.
+    !! nonstiff_only [in, optional] .true.: Adams throughout, never switch to BDF (the
+    !!                 non-stiff method alone, for comparisons); not with start_bdf.
     subroutine lsoda_init(s, sys, t0, y0, rtol, atol, stat, tcrit, h0, hmax, max_steps, &
-                          max_order_adams, max_order_bdf, start_bdf)
+                          max_order_adams, max_order_bdf, start_bdf, nonstiff_only)
         class(lsoda_t), intent(inout) :: s
         class(ode_system_t), intent(inout) :: sys
         real(dp), intent(in) :: t0
@@ -170,6 +173,7 @@ contains
         integer, intent(in), optional :: max_order_adams
         integer, intent(in), optional :: max_order_bdf
         logical, intent(in), optional :: start_bdf
+        logical, intent(in), optional :: nonstiff_only
         integer :: n
         character(len=120) :: buf
 
@@ -271,6 +275,13 @@ contains
         s%meth0 = METHOD_ADAMS
         if (present(start_bdf)) then
             if (start_bdf) s%meth0 = METHOD_BDF
+        end if
+        s%adams_only = .false.
+        if (present(nonstiff_only)) s%adams_only = nonstiff_only
+        if (s%adams_only .and. s%meth0 == METHOD_BDF) then
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda init: start_bdf and '// &
+                'nonstiff_only exclude each other')
+            return
         end if
         s%meth = s%meth0
         s%mused = 0
@@ -888,7 +899,7 @@ contains
                 if (s%icount < 0) then
                     if (s%meth == METHOD_ADAMS) then
                         ! would BDF allow a much larger step?
-                        if (s%nq <= 5) then
+                        if (s%nq <= 5 .and. .not. s%adams_only) then
                             if (dsm > 100.0_dp*pnorm*UROUND .and. s%pdest /= 0.0_dp) then
                                 exsm = 1.0_dp/s%l
                                 rh1 = 1.0_dp/(1.2_dp*dsm**exsm + 1.2e-6_dp)

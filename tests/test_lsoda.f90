@@ -531,7 +531,51 @@ contains
         if (t%want('lsoda_failures')) call test_failures(t)
         if (t%want('lsoda_interleave')) call test_interleave(t)
         if (t%want('lsoda_dense_tcrit')) call test_dense_tcrit(t)
+        if (t%want('lsoda_method_options')) call test_method_options(t)
     end subroutine run_lsoda_tests
+
+    !> start_bdf and nonstiff_only on the stiff linear problem (eigenvalues -1, -1e3, -1e6)
+    !! over t = 0 ... 0.01: with start_bdf the first step is BDF; with nonstiff_only the
+    !! method stays Adams throughout and, limited by stability, takes far more steps than
+    !! the automatic switching; all three agree on the solution; the two options together
+    !! are refused.
+    subroutine test_method_options(t)
+        type(tester_t), intent(inout) :: t
+        type(linear_t) :: lin
+        type(lsoda_t) :: s
+        type(status_t) :: st
+        type(lsoda_stats_t) :: sa, sb, sn
+        real(dp) :: y0(3), ya(3), yb(3), yn(3)
+        real(dp), parameter :: rtol = 1.0e-6_dp, atol = 1.0e-10_dp, tend = 0.01_dp
+        y0 = [1.0_dp, 2.0_dp, 3.0_dp]
+        call s%init(lin, 0.0_dp, y0, rtol, [atol], st)
+        call s%integrate(lin, tend, ya, st)
+        sa = s%stats()
+        call t%check('options: automatic run succeeds and ends in BDF', st%code == STATUS_OK &
+            .and. sa%method_last == METHOD_BDF)
+        call s%init(lin, 0.0_dp, y0, rtol, [atol], st, start_bdf=.true.)
+        call s%step(lin, st, tend)
+        sb = s%stats()
+        call t%check('start_bdf: the first step is BDF', st%code == STATUS_OK .and. &
+            sb%method_last == METHOD_BDF .and. sb%steps == 1)
+        call s%integrate(lin, tend, yb, st)
+        sb = s%stats()
+        call s%init(lin, 0.0_dp, y0, rtol, [atol], st, nonstiff_only=.true.)
+        call s%integrate(lin, tend, yn, st)
+        sn = s%stats()
+        write (*, '(a,3i8)') '  steps: automatic, start_bdf, nonstiff_only', sa%steps, &
+            sb%steps, sn%steps
+        call t%check('nonstiff_only: stays Adams, never switches', st%code == STATUS_OK .and. &
+            sn%method_last == METHOD_ADAMS .and. sn%method_switches == 0)
+        call t%check('nonstiff_only: > 10 times the steps of the automatic run', &
+            sn%steps > 10*sa%steps)
+        call t%check('options: the three runs agree (1e-4 relative)', &
+            all(abs(yb - ya) <= 1.0e-4_dp*abs(ya) + 1.0e-8_dp) .and. &
+            all(abs(yn - ya) <= 1.0e-4_dp*abs(ya) + 1.0e-8_dp))
+        call s%init(lin, 0.0_dp, y0, rtol, [atol], st, start_bdf=.true., nonstiff_only=.true.)
+        call t%check('options: start_bdf with nonstiff_only is refused', &
+            st%code == LSODA_ERR_ILLEGAL_INPUT)
+    end subroutine test_method_options
 
     !> Problems with exact solutions.
     subroutine test_exact(t)
@@ -770,6 +814,8 @@ contains
             has_msg(stat, 't ='))
         call t%check('error test: stopped at the jump', st%t_current <= 1.0_dp .and. &
             st%t_current > 0.99_dp)
+        call t%check('error test: the failures are counted (>= 3)', &
+            st%error_test_failures >= 3)
         call t%check_close('error test: y = exp(-t_current)', y1(1), exp(-st%t_current), &
             rtol=1.0e-4_dp)
 
@@ -781,6 +827,7 @@ contains
         call t%check('convergence: message', has_msg(stat, 'converge'))
         call t%check('convergence: stopped at t = 1', abs(st%t_current - 1.0_dp) < 1.0e-9_dp &
             .and. all(ieee_is_finite(y2)))
+        call t%check('convergence: the failures are counted (>= 2)', st%conv_failures >= 2)
         call t%check_close('convergence: y = exp(-t_current)', y2(1), exp(-st%t_current), &
             rtol=1.0e-4_dp)
 
