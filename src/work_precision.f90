@@ -212,10 +212,9 @@ contains
         logical, intent(in), optional :: quiet  !! do not print the agreement line
         type(pendulum_t) :: p
         real(dp), allocatable :: times(:), yref(:, :), ys(:, :), yh1(:, :), yh2(:, :)
-        real(dp) :: y0(NSTATE), th0(5), ratio, rt, c0, c1, total, e1, e2, e3
-        integer :: n, i, steps, nfe, nrep, m, ns, m_rk0
+        real(dp) :: y0(NSTATE), th0(5), ratio, e1
+        integer :: n, i, steps, nfe, m, ns, m_rk0
         character(len=:), allocatable :: path, path2
-        type(status_t) :: s1
         integer :: u
         logical :: loud, elastic, ref_check
         type(bifilar_t) :: kane
@@ -287,28 +286,8 @@ contains
 
         ! LSODA curve
         do i = 1, WP_NRTOL
-            rt = 10.0_dp**(-2 - i)
-            res%lsoda(i)%rtol = rt
-            total = 0.0_dp
-            nrep = 0
-            do while (total < MIN_CPU .and. nrep < MAX_REPEATS)
-                call cpu_time(c0)
-                call run_lsoda(rt, ys, s1, .false.)
-                call cpu_time(c1)
-                total = total + (c1 - c0)
-                nrep = nrep + 1
-                if (s1%code /= 0) exit
-            end do
-            res%lsoda(i)%ok = s1%code == 0
-            if (.not. res%lsoda(i)%ok) cycle
-            res%lsoda(i)%cpu_seconds = total/nrep
-            res%lsoda(i)%steps = steps
-            res%lsoda(i)%rhs_evaluations = nfe
-            call errors(ys, yref, e1, e2, e3)
-            res%lsoda(i)%error_theta = e1
-            res%lsoda(i)%error_q = e2
-            res%lsoda(i)%max_abs_energy_error = e3
-            res%lsoda(i)%ok = all_finite([e1, e2, e3, res%lsoda(i)%cpu_seconds])
+            res%lsoda(i)%rtol = 10.0_dp**(-2 - i)
+            call measure(res%lsoda(i), 0)
         end do
 
         ! fixed-step RK4 curve
@@ -316,26 +295,7 @@ contains
             m = m_rk0*2**(i - 1)
             res%rk4(i)%h = d%dtau_out/m
             if (real(m, dp)*n > RK4_MAX_STEPS) cycle
-            total = 0.0_dp
-            nrep = 0
-            do while (total < MIN_CPU .and. nrep < MAX_REPEATS)
-                call cpu_time(c0)
-                call run_rk4(m, ys, s1)
-                call cpu_time(c1)
-                total = total + (c1 - c0)
-                nrep = nrep + 1
-                if (s1%code /= 0) exit
-            end do
-            res%rk4(i)%ok = s1%code == 0
-            if (.not. res%rk4(i)%ok) cycle
-            res%rk4(i)%cpu_seconds = total/nrep
-            res%rk4(i)%steps = steps
-            res%rk4(i)%rhs_evaluations = nfe
-            call errors(ys, yref, e1, e2, e3)
-            res%rk4(i)%error_theta = e1
-            res%rk4(i)%error_q = e2
-            res%rk4(i)%max_abs_energy_error = e3
-            res%rk4(i)%ok = all_finite([e1, e2, e3, res%rk4(i)%cpu_seconds])
+            call measure(res%rk4(i), m)
         end do
 
         ! files
@@ -370,6 +330,41 @@ contains
         if (stat%code /= 0) return
 
     contains
+
+        !> One point of a curve: LSODA at pt%rtol (mm = 0) or RK4 with mm steps per output
+        !! interval, solved repeatedly until MIN_CPU; its CPU per solve, counters and
+        !! errors against the reference into pt (pt%ok: finished, all finite).
+        subroutine measure(pt, mm)
+            type(wp_point_t), intent(inout) :: pt
+            integer, intent(in) :: mm
+            real(dp) :: total, c0, c1, e1, e2, e3
+            integer :: nrep
+            type(status_t) :: s1
+            total = 0.0_dp
+            nrep = 0
+            do while (total < MIN_CPU .and. nrep < MAX_REPEATS)
+                call cpu_time(c0)
+                if (mm > 0) then
+                    call run_rk4(mm, ys, s1)
+                else
+                    call run_lsoda(pt%rtol, ys, s1, .false.)
+                end if
+                call cpu_time(c1)
+                total = total + (c1 - c0)
+                nrep = nrep + 1
+                if (s1%code /= 0) exit
+            end do
+            pt%ok = s1%code == 0
+            if (.not. pt%ok) return
+            pt%cpu_seconds = total/nrep
+            pt%steps = steps
+            pt%rhs_evaluations = nfe
+            call errors(ys, yref, e1, e2, e3)
+            pt%error_theta = e1
+            pt%error_q = e2
+            pt%max_abs_energy_error = e3
+            pt%ok = all_finite([e1, e2, e3, pt%cpu_seconds])
+        end subroutine measure
 
         !> LSODA on the deck's system at rtol, atol = rtol * ratio (per state from
         !! elastic_atol for the elastic model: the velocities' tolerance with the rtol term
