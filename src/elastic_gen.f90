@@ -1,0 +1,386 @@
+!> The elastic-cable model in generalized coordinates with the cable stretches as states.
+!!
+!! Why.  In the maximal coordinates of elastic_model (R*, v*, quaternion, omega) a stiff
+!! cable pulls along its own direction u, and u turns with the swing.  An implicit method
+!! linearises the stiff force once per step (simplified Newton with one Jacobian); over a
+!! step the direction turns by phi = h w_b (w_b the swing rate), and the frozen Jacobian
+!! then mistakes the swing for a stretch of L phi^2/2, a force error k L phi^2/2: the
+!! Newton contraction is about k h (h w_b)^2, so the step is held to h ~ (k w_b^2)^(-1/3)
+!! whatever the tolerance (Radau IIA on the cylinder at zeta = 0.5, rtol 1e-8: 2 478,
+!! 8 404, 23 624 steps at k = 1e6, 1e7, 1e8, with more Newton failures than steps).  And
+!! the error test sees the stiff stretching velocity and the slow swing velocity in the
+!! same components v*, omega, so it can only treat both alike.  In coordinates where each
+!! stretch s_j = |cable j| - L0_j is a coordinate, the spring energy is (k/2L0) s_j^2
+!! exactly, its Hessian is constant, the frozen Jacobian is right for the stiff part, and
+!! the stretches and their rates are state components of their own.
+!!
+!! The coordinates q = (sigma1, sigma2, phi, psi, s1, s2), the state y = (q, q') (12):
+!!   C = B + (L01 + s1) e,  e = (sigma1, sigma2, -(1 - sigma1^2 - sigma2^2)^(1/2)), the
+!!       direction of the cable BC by its horizontal components (the regular chart of
+!!       bifilar_model);
+!!   D lies on the circle |D - A| = L02 + s2 = l2, |D - C| = 1 (b'): with a = C/|C| (A is
+!!       the origin), D = a_d a + r (cos phi p + sin phi (a x p)), a_d = (l2^2 - 1 + |C|^2)/
+!!       (2 |C|), r = (l2^2 - a_d^2)^(1/2), p the unit component of B - A normal to a;
+!!   the body frame: ntilde3 = C - D; ntilde1 = sin psi u + cos psi w with w the unit
+!!       component of -n3 normal to ntilde3 and u = w x (D - C): psi is the paper's theta1
+!!       (elastic_chart), the turn of the body about CD;
+!!   R* = C + r (sin lambda ntilde1 - cos lambda ntilde3) (eqs. (21)-(22)).
+!! The chart is regular while the cable BC is not horizontal, D is off the line AC, AC is
+!! not along AB and CD is not vertical (chart_quality); elastic_solver falls back to the
+!! maximal coordinates where it is not.
+!!
+!! The equations of motion are elastic_model's, unchanged: the pose and velocities (R*,
+!! v*, R, omega) are built from (q, q'), elastic_rhs gives the accelerations (a*, alpha),
+!! and with J = d(v*, omega)/dq' (the pose map's Jacobian, 6 x 6) and the accelerations
+!! (a0, alpha0) of the pose along q' at q'' = 0,
+!!   q'' = J^-1 ((a*, alpha) - (a0, alpha0)).
+!! Pose, J and (a0, alpha0) come from second-order forward derivatives ("jets": value,
+!! first and second derivative along a direction) of the construction above.
+module elastic_gen
+    use kinds, only: dp, pi
+    use status, only: status_t, set_error, ERR_NUMERIC, STATUS_OK
+    use ode_system, only: ode_system_t
+    use lapack_wrap, only: la_solve
+    use elastic_model, only: elastic_t, natural_lengths, matrix_to_quat, elastic_pose, &
+                             elastic_rhs_stretched, ELASTIC_NSTATE
+    implicit none
+    private
+
+    integer, parameter, public :: GEN_NSTATE = 12      !! y = (sigma1, sigma2, phi, psi, s1, s2, rates)
+    !> Indices of the stretches s1 (BC), s2 (AD) and their rates in the state.
+    integer, parameter, public :: GEN_S1 = 5, GEN_S2 = 6, GEN_S1_RATE = 11, GEN_S2_RATE = 12
+    !> status_t%code of gen_rhs where the chart is singular (elastic_solver then goes on in
+    !! the maximal coordinates)
+    integer, parameter, public :: GEN_ERR_CHART = 31
+
+    !> The elastic model in the coordinates above (el: the model, its parameters and modes).
+    type, extends(ode_system_t), public :: elastic_gen_t
+        type(elastic_t) :: el
+    contains
+        procedure :: rhs => gen_rhs
+    end type elastic_gen_t
+
+    public :: gen_to_maximal, maximal_to_gen, chart_quality
+
+contains
+
+    ! ------------------------------------------------------------------------------------
+    ! Jets: (value, first, second derivative) along a direction of q, with q'' = 0
+    ! ------------------------------------------------------------------------------------
+
+    pure function jmul(a, b) result(c)
+        real(dp), intent(in) :: a(0:2), b(0:2)
+        real(dp) :: c(0:2)
+        c(0) = a(0)*b(0)
+        c(1) = a(1)*b(0) + a(0)*b(1)
+        c(2) = a(2)*b(0) + 2.0_dp*a(1)*b(1) + a(0)*b(2)
+    end function jmul
+
+    pure function jinv(a) result(c)
+        real(dp), intent(in) :: a(0:2)
+        real(dp) :: c(0:2)
+        c(0) = 1.0_dp/a(0)
+        c(1) = -a(1)*c(0)**2
+        c(2) = -a(2)*c(0)**2 + 2.0_dp*a(1)**2*c(0)**3
+    end function jinv
+
+    pure function jsqrt(a) result(c)
+        real(dp), intent(in) :: a(0:2)
+        real(dp) :: c(0:2)
+        c(0) = sqrt(a(0))
+        c(1) = a(1)/(2.0_dp*c(0))
+        c(2) = (a(2) - 2.0_dp*c(1)**2)/(2.0_dp*c(0))
+    end function jsqrt
+
+    pure function jsin(a) result(c)
+        real(dp), intent(in) :: a(0:2)
+        real(dp) :: c(0:2)
+        c(0) = sin(a(0))
+        c(1) = cos(a(0))*a(1)
+        c(2) = -sin(a(0))*a(1)**2 + cos(a(0))*a(2)
+    end function jsin
+
+    pure function jcos(a) result(c)
+        real(dp), intent(in) :: a(0:2)
+        real(dp) :: c(0:2)
+        c(0) = cos(a(0))
+        c(1) = -sin(a(0))*a(1)
+        c(2) = -cos(a(0))*a(1)**2 - sin(a(0))*a(2)
+    end function jcos
+
+    pure function vdot(u, v) result(c)
+        real(dp), intent(in) :: u(3, 0:2), v(3, 0:2)
+        real(dp) :: c(0:2)
+        c = jmul(u(1, :), v(1, :)) + jmul(u(2, :), v(2, :)) + jmul(u(3, :), v(3, :))
+    end function vdot
+
+    pure function vcross(u, v) result(c)
+        real(dp), intent(in) :: u(3, 0:2), v(3, 0:2)
+        real(dp) :: c(3, 0:2)
+        c(1, :) = jmul(u(2, :), v(3, :)) - jmul(u(3, :), v(2, :))
+        c(2, :) = jmul(u(3, :), v(1, :)) - jmul(u(1, :), v(3, :))
+        c(3, :) = jmul(u(1, :), v(2, :)) - jmul(u(2, :), v(1, :))
+    end function vcross
+
+    pure function vscale(a, v) result(c)
+        real(dp), intent(in) :: a(0:2), v(3, 0:2)
+        real(dp) :: c(3, 0:2)
+        integer :: i
+        do i = 1, 3
+            c(i, :) = jmul(a, v(i, :))
+        end do
+    end function vscale
+
+    pure function vunit(v) result(c)
+        real(dp), intent(in) :: v(3, 0:2)
+        real(dp) :: c(3, 0:2)
+        c = vscale(jinv(jsqrt(vdot(v, v))), v)
+    end function vunit
+
+    !> A constant vector as a jet.
+    pure function vconst(x) result(c)
+        real(dp), intent(in) :: x(3)
+        real(dp) :: c(3, 0:2)
+        c = 0.0_dp
+        c(:, 0) = x
+    end function vconst
+
+    ! ------------------------------------------------------------------------------------
+    ! The pose map
+    ! ------------------------------------------------------------------------------------
+
+    !> Jets of the pose along the direction qd at q: R*, C, D and the body frame
+    !! (fr(:, i, :) = ntilde_i in n components), and the chart's measures of regularity
+    !! (the smallest of cos(BC from the vertical), r/l2, |p|/|B - A| and cos theta5).
+    pure subroutine pose_jets(el, q, qd, rs, c, d, fr, quality)
+        type(elastic_t), intent(in) :: el
+        real(dp), intent(in) :: q(6), qd(6)
+        real(dp), intent(out) :: rs(3, 0:2), c(3, 0:2), d(3, 0:2), fr(3, 3, 0:2)
+        real(dp), intent(out) :: quality
+        real(dp) :: x(6, 0:2), l0(2), l1(0:2), l2(0:2), ez(0:2), e(3, 0:2), cc(0:2), dc(0:2)
+        real(dp) :: a(3, 0:2), ad(0:2), rc(0:2), bv(3, 0:2), pr(3, 0:2), p(3, 0:2), qv(3, 0:2)
+        real(dp) :: dd(3, 0:2), wr(3, 0:2), w(3, 0:2), u(3, 0:2), sp(0:2), cp(0:2)
+        real(dp) :: sl, cl, one(0:2)
+        integer :: i
+        l0 = natural_lengths(el)
+        x(:, 0) = q
+        x(:, 1) = qd
+        x(:, 2) = 0.0_dp
+        one = [1.0_dp, 0.0_dp, 0.0_dp]
+        l1 = x(5, :)
+        l1(0) = l1(0) + l0(1)
+        l2 = x(6, :)
+        l2(0) = l2(0) + l0(2)
+        ! C = B + l1 e
+        ez = -jsqrt(one - jmul(x(1, :), x(1, :)) - jmul(x(2, :), x(2, :)))
+        e(1, :) = x(1, :)
+        e(2, :) = x(2, :)
+        e(3, :) = ez
+        c = vscale(l1, e)
+        c(2, 0) = c(2, 0) - el%p%big_b
+        ! D on the circle about the line AC
+        cc = vdot(c, c)
+        dc = jsqrt(cc)
+        a = vscale(jinv(dc), c)
+        ad = jmul(jmul(l2, l2) - one + cc, jinv(2.0_dp*dc))
+        rc = jsqrt(jmul(l2, l2) - jmul(ad, ad))
+        bv = vconst([0.0_dp, -el%p%big_b, 0.0_dp])
+        pr = bv - vscale(vdot(bv, a), a)
+        p = vunit(pr)
+        qv = vcross(a, p)
+        sp = jsin(x(3, :))
+        cp = jcos(x(3, :))
+        d = vscale(ad, a) + vscale(rc, vscale(cp, p) + vscale(sp, qv))
+        ! the body frame
+        dd = d - c
+        wr = vscale(dd(3, :), dd)
+        wr(3, 0) = wr(3, 0) - 1.0_dp
+        w = vunit(wr)
+        u = vcross(w, dd)
+        sp = jsin(x(4, :))
+        cp = jcos(x(4, :))
+        fr(:, 1, :) = vscale(sp, u) + vscale(cp, w)
+        fr(:, 3, :) = -dd
+        fr(:, 2, :) = vcross(fr(:, 3, :), fr(:, 1, :))
+        sl = el%p%r*sin(el%p%lambda)
+        cl = el%p%r*cos(el%p%lambda)
+        do i = 0, 2
+            rs(:, i) = c(:, i) + sl*fr(:, 1, i) - cl*fr(:, 3, i)
+        end do
+        quality = min(-ez(0), rc(0)/l2(0), sqrt(dot_product(pr(:, 0), pr(:, 0)))/el%p%big_b, &
+                      sqrt(dot_product(wr(:, 0), wr(:, 0))))
+    end subroutine pose_jets
+
+    !> Angular velocity (omega = 1/2 sum ntilde_i x ntilde_i') and the angular acceleration
+    !! at q'' = 0 (1/2 sum ntilde_i x ntilde_i'') of a frame jet.
+    pure subroutine frame_rates(fr, omega, alpha0)
+        real(dp), intent(in) :: fr(3, 3, 0:2)
+        real(dp), intent(out) :: omega(3), alpha0(3)
+        integer :: i
+        omega = 0.0_dp
+        alpha0 = 0.0_dp
+        do i = 1, 3
+            omega = omega + 0.5_dp*cross(fr(:, i, 0), fr(:, i, 1))
+            alpha0 = alpha0 + 0.5_dp*cross(fr(:, i, 0), fr(:, i, 2))
+        end do
+    end subroutine frame_rates
+
+    pure function cross(a, b) result(c)
+        real(dp), intent(in) :: a(3), b(3)
+        real(dp) :: c(3)
+        c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
+    end function cross
+
+    !> J = d(v*, omega)/dq' at q (6 x 6; columns: the pose velocities of unit rates).
+    pure subroutine pose_jacobian(el, q, jm)
+        type(elastic_t), intent(in) :: el
+        real(dp), intent(in) :: q(6)
+        real(dp), intent(out) :: jm(6, 6)
+        real(dp) :: rs(3, 0:2), c(3, 0:2), d(3, 0:2), fr(3, 3, 0:2), qd(6), om(3), al(3), qual
+        integer :: j
+        do j = 1, 6
+            qd = 0.0_dp
+            qd(j) = 1.0_dp
+            call pose_jets(el, q, qd, rs, c, d, fr, qual)
+            call frame_rates(fr, om, al)
+            jm(1:3, j) = rs(:, 1)
+            jm(4:6, j) = om
+        end do
+    end subroutine pose_jacobian
+
+    ! ------------------------------------------------------------------------------------
+    ! Conversions and the right-hand side
+    ! ------------------------------------------------------------------------------------
+
+    !> The maximal state (elastic_model: R*, v*, quaternion, omega in body components) of a
+    !! generalized state, and the chart's regularity measure there (optional).
+    function gen_to_maximal(el, yg, quality) result(y)
+        type(elastic_t), intent(in) :: el
+        real(dp), intent(in) :: yg(:)           !! generalized state (12)
+        real(dp), intent(out), optional :: quality
+        real(dp) :: y(ELASTIC_NSTATE)
+        real(dp) :: rs(3, 0:2), c(3, 0:2), d(3, 0:2), fr(3, 3, 0:2), om(3), al(3), qual
+        real(dp) :: r(3, 3)
+        call pose_jets(el, yg(1:6), yg(7:12), rs, c, d, fr, qual)
+        call frame_rates(fr, om, al)
+        r = fr(:, :, 0)                         ! R(:, i) = ntilde_i
+        y(1:3) = rs(:, 0)
+        y(4:6) = rs(:, 1)
+        y(7:10) = matrix_to_quat(r)
+        y(11:13) = matmul(om, r)                ! R^T omega
+        if (present(quality)) quality = qual
+    end function gen_to_maximal
+
+    !> The generalized state of a maximal one: s_j = |cable j| - L0_j, sigma the horizontal
+    !! components of the direction of BC, phi the position of D on its circle, psi the turn
+    !! about CD (phi, psi continued to the 2 pi branch nearest ref(3:4) when given); the
+    !! rates q' = J^-1 (v*, omega).  stat: ERR_NUMERIC when the chart is singular there.
+    subroutine maximal_to_gen(el, y, yg, stat, ref)
+        type(elastic_t), intent(in) :: el
+        real(dp), intent(in) :: y(:)            !! maximal state (13)
+        real(dp), intent(out) :: yg(GEN_NSTATE)
+        type(status_t), intent(out) :: stat
+        real(dp), intent(in), optional :: ref(:)    !! a nearby generalized state (branches)
+        real(dp) :: c(3), d(3), e(3), vc(3), vd(3), n(3, 3), omega(3), l0(2), l1, l2, a(3)
+        real(dp) :: dc, ad, b(3), p(3), qv(3), dd(3), w(3), u(3), jm(6, 6), rhs(6), r(3, 3)
+        real(dp) :: phi, psi
+        stat%code = STATUS_OK
+        yg = 0.0_dp
+        call elastic_pose(el%p, y, c, d, e, vc, vd, n, omega)
+        l0 = natural_lengths(el)
+        b = [0.0_dp, -el%p%big_b, 0.0_dp]
+        l1 = norm2(c - b)
+        l2 = norm2(d)
+        dc = norm2(c)
+        a = c/dc
+        ad = (l2**2 - 1.0_dp + dc**2)/(2.0_dp*dc)
+        p = b - dot_product(b, a)*a
+        p = p/norm2(p)
+        qv = cross(a, p)
+        phi = atan2(dot_product(d - ad*a, qv), dot_product(d - ad*a, p))
+        dd = d - c
+        w = [0.0_dp, 0.0_dp, -1.0_dp] + dd(3)*dd
+        w = w/norm2(w)
+        u = cross(w, dd)
+        psi = atan2(dot_product(n(1, :), u), dot_product(n(1, :), w))
+        if (present(ref)) then
+            phi = phi + 2.0_dp*pi*anint((ref(3) - phi)/(2.0_dp*pi))
+            psi = psi + 2.0_dp*pi*anint((ref(4) - psi)/(2.0_dp*pi))
+        end if
+        yg(1:6) = [(c(1) - b(1))/l1, (c(2) - b(2))/l1, phi, psi, l1 - l0(1), l2 - l0(2)]
+        call pose_jacobian(el, yg(1:6), jm)
+        r = transpose(n)
+        rhs(1:3) = y(4:6)
+        rhs(4:6) = matmul(r, y(11:13))          ! omega in n components
+        call la_solve(jm, rhs, stat)
+        if (stat%code /= STATUS_OK) then
+            call set_error(stat, ERR_NUMERIC, 'elastic model: the generalized coordinates '// &
+                'are singular at this pose')
+            return
+        end if
+        yg(7:12) = rhs
+    end subroutine maximal_to_gen
+
+    !> The regularity measure of the chart at a maximal state (see pose_jets; 1 at best,
+    !! 0 at a singularity).
+    function chart_quality(el, y) result(qual)
+        type(elastic_t), intent(in) :: el
+        real(dp), intent(in) :: y(:)            !! maximal state (13)
+        real(dp) :: qual
+        real(dp) :: c(3), d(3), e(3), vc(3), vd(3), n(3, 3), omega(3), b(3), a(3), l2, dc, ad
+        real(dp) :: p(3), dd(3), w(3), ez
+        call elastic_pose(el%p, y, c, d, e, vc, vd, n, omega)
+        b = [0.0_dp, -el%p%big_b, 0.0_dp]
+        ez = (b(3) - c(3))/norm2(c - b)
+        l2 = norm2(d)
+        dc = norm2(c)
+        a = c/dc
+        ad = (l2**2 - 1.0_dp + dc**2)/(2.0_dp*dc)
+        p = b - dot_product(b, a)*a
+        dd = d - c
+        w = [0.0_dp, 0.0_dp, -1.0_dp] + dd(3)*dd
+        qual = min(ez, sqrt(max(0.0_dp, l2**2 - ad**2))/l2, norm2(p)/el%p%big_b, norm2(w))
+    end function chart_quality
+
+    !> Right-hand side in the generalized coordinates: q'' = J^-1 ((a*, alpha) - (a0,
+    !! alpha0)) with (a*, alpha) from elastic_model's equations at the same pose and
+    !! velocities.  stat: the model's, or ERR_NUMERIC where the chart is singular.
+    subroutine gen_rhs(sys, t, y, ydot, stat)
+        class(elastic_gen_t), intent(inout) :: sys
+        real(dp), intent(in) :: t               !! tau (the system is autonomous)
+        real(dp), intent(in) :: y(:)            !! generalized state (12)
+        real(dp), intent(out) :: ydot(:)        !! its derivative
+        type(status_t), intent(out) :: stat
+        real(dp) :: rs(3, 0:2), c(3, 0:2), d(3, 0:2), fr(3, 3, 0:2), om(3), al0(3), qual
+        real(dp) :: r(3, 3), ym(ELASTIC_NSTATE), fm(ELASTIC_NSTATE), jm(6, 6), acc(6)
+        if (.false.) ydot(1) = t
+        ydot = 0.0_dp
+        call pose_jets(sys%el, y(1:6), y(7:12), rs, c, d, fr, qual)
+        if (.not. (qual > 0.0_dp)) then
+            call set_error(stat, GEN_ERR_CHART, 'elastic model: the generalized coordinates '// &
+                'are singular at this pose')
+            return
+        end if
+        call frame_rates(fr, om, al0)
+        r = fr(:, :, 0)
+        ym(1:3) = rs(:, 0)
+        ym(4:6) = rs(:, 1)
+        ym(7:10) = matrix_to_quat(r)
+        ym(11:13) = matmul(om, r)
+        call elastic_rhs_stretched(sys%el, ym, reshape([y(5), y(11), y(6), y(12)], [2, 2]), &
+                                   fm, stat)
+        if (stat%code /= STATUS_OK) return
+        acc(1:3) = fm(4:6) - rs(:, 2)
+        acc(4:6) = matmul(r, fm(11:13)) - al0
+        call pose_jacobian(sys%el, y(1:6), jm)
+        call la_solve(jm, acc, stat)
+        if (stat%code /= STATUS_OK) then
+            call set_error(stat, GEN_ERR_CHART, 'elastic model: the generalized coordinates '// &
+                'are singular at this pose')
+            return
+        end if
+        ydot(1:6) = y(7:12)
+        ydot(7:12) = acc
+    end subroutine gen_rhs
+
+end module elastic_gen
