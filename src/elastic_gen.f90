@@ -52,6 +52,9 @@ module elastic_gen
     !> status_t%code of gen_rhs where the chart is singular (elastic_solver then goes on in
     !! the maximal coordinates)
     integer, parameter, public :: GEN_ERR_CHART = 31
+    !> Jets: value (0), first derivatives along q_1..q_6 (1:6) and along q' (7), second
+    !! derivative along q' (8).
+    integer, parameter :: NJ = 8
 
     !> The elastic model in the coordinates above (el: the model, its parameters and modes).
     type, extends(ode_system_t), public :: elastic_gen_t
@@ -65,66 +68,66 @@ module elastic_gen
 contains
 
     ! ------------------------------------------------------------------------------------
-    ! Jets: (value, first, second derivative) along a direction of q, with q'' = 0
+    ! Jets: a quantity with its first derivatives along the six coordinates (1:6), along
+    ! the rates q' (7), and its second derivative along q' at q'' = 0 (8)
     ! ------------------------------------------------------------------------------------
 
     pure function jmul(a, b) result(c)
-        real(dp), intent(in) :: a(0:2), b(0:2)
-        real(dp) :: c(0:2)
+        real(dp), intent(in) :: a(0:NJ), b(0:NJ)
+        real(dp) :: c(0:NJ)
         c(0) = a(0)*b(0)
-        c(1) = a(1)*b(0) + a(0)*b(1)
-        c(2) = a(2)*b(0) + 2.0_dp*a(1)*b(1) + a(0)*b(2)
+        c(1:7) = a(1:7)*b(0) + a(0)*b(1:7)
+        c(8) = a(8)*b(0) + 2.0_dp*a(7)*b(7) + a(0)*b(8)
     end function jmul
 
     pure function jinv(a) result(c)
-        real(dp), intent(in) :: a(0:2)
-        real(dp) :: c(0:2)
+        real(dp), intent(in) :: a(0:NJ)
+        real(dp) :: c(0:NJ)
         c(0) = 1.0_dp/a(0)
-        c(1) = -a(1)*c(0)**2
-        c(2) = -a(2)*c(0)**2 + 2.0_dp*a(1)**2*c(0)**3
+        c(1:7) = -a(1:7)*c(0)**2
+        c(8) = -a(8)*c(0)**2 + 2.0_dp*a(7)**2*c(0)**3
     end function jinv
 
     pure function jsqrt(a) result(c)
-        real(dp), intent(in) :: a(0:2)
-        real(dp) :: c(0:2)
+        real(dp), intent(in) :: a(0:NJ)
+        real(dp) :: c(0:NJ)
         c(0) = sqrt(a(0))
-        c(1) = a(1)/(2.0_dp*c(0))
-        c(2) = (a(2) - 2.0_dp*c(1)**2)/(2.0_dp*c(0))
+        c(1:7) = a(1:7)/(2.0_dp*c(0))
+        c(8) = (a(8) - 2.0_dp*c(7)**2)/(2.0_dp*c(0))
     end function jsqrt
 
-    pure function jsin(a) result(c)
-        real(dp), intent(in) :: a(0:2)
-        real(dp) :: c(0:2)
-        c(0) = sin(a(0))
-        c(1) = cos(a(0))*a(1)
-        c(2) = -sin(a(0))*a(1)**2 + cos(a(0))*a(2)
-    end function jsin
-
-    pure function jcos(a) result(c)
-        real(dp), intent(in) :: a(0:2)
-        real(dp) :: c(0:2)
-        c(0) = cos(a(0))
-        c(1) = -sin(a(0))*a(1)
-        c(2) = -cos(a(0))*a(1)**2 - sin(a(0))*a(2)
-    end function jcos
+    !> sin and cos of a jet.
+    pure subroutine jsincos(a, sn, cs)
+        real(dp), intent(in) :: a(0:NJ)
+        real(dp), intent(out) :: sn(0:NJ), cs(0:NJ)
+        real(dp) :: s0, c0
+        s0 = sin(a(0))
+        c0 = cos(a(0))
+        sn(0) = s0
+        sn(1:7) = c0*a(1:7)
+        sn(8) = -s0*a(7)**2 + c0*a(8)
+        cs(0) = c0
+        cs(1:7) = -s0*a(1:7)
+        cs(8) = -c0*a(7)**2 - s0*a(8)
+    end subroutine jsincos
 
     pure function vdot(u, v) result(c)
-        real(dp), intent(in) :: u(3, 0:2), v(3, 0:2)
-        real(dp) :: c(0:2)
+        real(dp), intent(in) :: u(3, 0:NJ), v(3, 0:NJ)
+        real(dp) :: c(0:NJ)
         c = jmul(u(1, :), v(1, :)) + jmul(u(2, :), v(2, :)) + jmul(u(3, :), v(3, :))
     end function vdot
 
     pure function vcross(u, v) result(c)
-        real(dp), intent(in) :: u(3, 0:2), v(3, 0:2)
-        real(dp) :: c(3, 0:2)
+        real(dp), intent(in) :: u(3, 0:NJ), v(3, 0:NJ)
+        real(dp) :: c(3, 0:NJ)
         c(1, :) = jmul(u(2, :), v(3, :)) - jmul(u(3, :), v(2, :))
         c(2, :) = jmul(u(3, :), v(1, :)) - jmul(u(1, :), v(3, :))
         c(3, :) = jmul(u(1, :), v(2, :)) - jmul(u(2, :), v(1, :))
     end function vcross
 
     pure function vscale(a, v) result(c)
-        real(dp), intent(in) :: a(0:2), v(3, 0:2)
-        real(dp) :: c(3, 0:2)
+        real(dp), intent(in) :: a(0:NJ), v(3, 0:NJ)
+        real(dp) :: c(3, 0:NJ)
         integer :: i
         do i = 1, 3
             c(i, :) = jmul(a, v(i, :))
@@ -132,15 +135,15 @@ contains
     end function vscale
 
     pure function vunit(v) result(c)
-        real(dp), intent(in) :: v(3, 0:2)
-        real(dp) :: c(3, 0:2)
+        real(dp), intent(in) :: v(3, 0:NJ)
+        real(dp) :: c(3, 0:NJ)
         c = vscale(jinv(jsqrt(vdot(v, v))), v)
     end function vunit
 
     !> A constant vector as a jet.
     pure function vconst(x) result(c)
         real(dp), intent(in) :: x(3)
-        real(dp) :: c(3, 0:2)
+        real(dp) :: c(3, 0:NJ)
         c = 0.0_dp
         c(:, 0) = x
     end function vconst
@@ -149,24 +152,28 @@ contains
     ! The pose map
     ! ------------------------------------------------------------------------------------
 
-    !> Jets of the pose along the direction qd at q: R*, C, D and the body frame
-    !! (fr(:, i, :) = ntilde_i in n components), and the chart's measures of regularity
-    !! (the smallest of cos(BC from the vertical), r/l2, |p|/|B - A| and cos theta5).
+    !> Jets of the pose at q with rates qd: R*, C, D and the body frame (fr(:, i, :) =
+    !! ntilde_i in n components), and the chart's measure of regularity (the smallest of
+    !! cos(BC from the vertical), r/l2, |p|/|B - A| and cos theta5).
     pure subroutine pose_jets(el, q, qd, rs, c, d, fr, quality)
         type(elastic_t), intent(in) :: el
         real(dp), intent(in) :: q(6), qd(6)
-        real(dp), intent(out) :: rs(3, 0:2), c(3, 0:2), d(3, 0:2), fr(3, 3, 0:2)
+        real(dp), intent(out) :: rs(3, 0:NJ), c(3, 0:NJ), d(3, 0:NJ), fr(3, 3, 0:NJ)
         real(dp), intent(out) :: quality
-        real(dp) :: x(6, 0:2), l0(2), l1(0:2), l2(0:2), ez(0:2), e(3, 0:2), cc(0:2), dc(0:2)
-        real(dp) :: a(3, 0:2), ad(0:2), rc(0:2), bv(3, 0:2), pr(3, 0:2), p(3, 0:2), qv(3, 0:2)
-        real(dp) :: dd(3, 0:2), wr(3, 0:2), w(3, 0:2), u(3, 0:2), sp(0:2), cp(0:2)
-        real(dp) :: sl, cl, one(0:2)
+        real(dp) :: x(6, 0:NJ), l0(2), l1(0:NJ), l2(0:NJ), ez(0:NJ), e(3, 0:NJ), cc(0:NJ)
+        real(dp) :: dc(0:NJ), a(3, 0:NJ), ad(0:NJ), rc(0:NJ), bv(3, 0:NJ), pr(3, 0:NJ)
+        real(dp) :: p(3, 0:NJ), qv(3, 0:NJ), dd(3, 0:NJ), wr(3, 0:NJ), w(3, 0:NJ), u(3, 0:NJ)
+        real(dp) :: sp(0:NJ), cp(0:NJ), sl, cl, one(0:NJ)
         integer :: i
         l0 = natural_lengths(el)
-        x(:, 0) = q
-        x(:, 1) = qd
-        x(:, 2) = 0.0_dp
-        one = [1.0_dp, 0.0_dp, 0.0_dp]
+        x = 0.0_dp
+        do i = 1, 6
+            x(i, 0) = q(i)
+            x(i, i) = 1.0_dp
+            x(i, 7) = qd(i)
+        end do
+        one = 0.0_dp
+        one(0) = 1.0_dp
         l1 = x(5, :)
         l1(0) = l1(0) + l0(1)
         l2 = x(6, :)
@@ -188,8 +195,7 @@ contains
         pr = bv - vscale(vdot(bv, a), a)
         p = vunit(pr)
         qv = vcross(a, p)
-        sp = jsin(x(3, :))
-        cp = jcos(x(3, :))
+        call jsincos(x(3, :), sp, cp)
         d = vscale(ad, a) + vscale(rc, vscale(cp, p) + vscale(sp, qv))
         ! the body frame
         dd = d - c
@@ -197,56 +203,44 @@ contains
         wr(3, 0) = wr(3, 0) - 1.0_dp
         w = vunit(wr)
         u = vcross(w, dd)
-        sp = jsin(x(4, :))
-        cp = jcos(x(4, :))
+        call jsincos(x(4, :), sp, cp)
         fr(:, 1, :) = vscale(sp, u) + vscale(cp, w)
         fr(:, 3, :) = -dd
         fr(:, 2, :) = vcross(fr(:, 3, :), fr(:, 1, :))
         sl = el%p%r*sin(el%p%lambda)
         cl = el%p%r*cos(el%p%lambda)
-        do i = 0, 2
-            rs(:, i) = c(:, i) + sl*fr(:, 1, i) - cl*fr(:, 3, i)
-        end do
+        rs = c + sl*fr(:, 1, :) - cl*fr(:, 3, :)
         quality = min(-ez(0), rc(0)/l2(0), sqrt(dot_product(pr(:, 0), pr(:, 0)))/el%p%big_b, &
                       sqrt(dot_product(wr(:, 0), wr(:, 0))))
     end subroutine pose_jets
 
-    !> Angular velocity (omega = 1/2 sum ntilde_i x ntilde_i') and the angular acceleration
-    !! at q'' = 0 (1/2 sum ntilde_i x ntilde_i'') of a frame jet.
-    pure subroutine frame_rates(fr, omega, alpha0)
-        real(dp), intent(in) :: fr(3, 3, 0:2)
-        real(dp), intent(out) :: omega(3), alpha0(3)
-        integer :: i
-        omega = 0.0_dp
-        alpha0 = 0.0_dp
+    !> From the pose jets: J = d(v*, omega)/dq' (6 x 6, omega = 1/2 sum ntilde_i x
+    !! ntilde_i' in n components), the velocities (v*, omega) and the accelerations (a0,
+    !! alpha0) of the pose along q' at q'' = 0 (alpha0 = 1/2 sum ntilde_i x ntilde_i'').
+    pure subroutine pose_rates(rs, fr, jm, vel, acc0)
+        real(dp), intent(in) :: rs(3, 0:NJ), fr(3, 3, 0:NJ)
+        real(dp), intent(out) :: jm(6, 6), vel(6), acc0(6)
+        real(dp) :: om(3, 8)
+        integer :: i, k
+        om = 0.0_dp
         do i = 1, 3
-            omega = omega + 0.5_dp*cross(fr(:, i, 0), fr(:, i, 1))
-            alpha0 = alpha0 + 0.5_dp*cross(fr(:, i, 0), fr(:, i, 2))
+            do k = 1, 8
+                om(:, k) = om(:, k) + 0.5_dp*cross(fr(:, i, 0), fr(:, i, k))
+            end do
         end do
-    end subroutine frame_rates
+        jm(1:3, :) = rs(:, 1:6)
+        jm(4:6, :) = om(:, 1:6)
+        vel(1:3) = rs(:, 7)
+        vel(4:6) = om(:, 7)
+        acc0(1:3) = rs(:, 8)
+        acc0(4:6) = om(:, 8)
+    end subroutine pose_rates
 
     pure function cross(a, b) result(c)
         real(dp), intent(in) :: a(3), b(3)
         real(dp) :: c(3)
         c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
     end function cross
-
-    !> J = d(v*, omega)/dq' at q (6 x 6; columns: the pose velocities of unit rates).
-    pure subroutine pose_jacobian(el, q, jm)
-        type(elastic_t), intent(in) :: el
-        real(dp), intent(in) :: q(6)
-        real(dp), intent(out) :: jm(6, 6)
-        real(dp) :: rs(3, 0:2), c(3, 0:2), d(3, 0:2), fr(3, 3, 0:2), qd(6), om(3), al(3), qual
-        integer :: j
-        do j = 1, 6
-            qd = 0.0_dp
-            qd(j) = 1.0_dp
-            call pose_jets(el, q, qd, rs, c, d, fr, qual)
-            call frame_rates(fr, om, al)
-            jm(1:3, j) = rs(:, 1)
-            jm(4:6, j) = om
-        end do
-    end subroutine pose_jacobian
 
     ! ------------------------------------------------------------------------------------
     ! Conversions and the right-hand side
@@ -259,15 +253,15 @@ contains
         real(dp), intent(in) :: yg(:)           !! generalized state (12)
         real(dp), intent(out), optional :: quality
         real(dp) :: y(ELASTIC_NSTATE)
-        real(dp) :: rs(3, 0:2), c(3, 0:2), d(3, 0:2), fr(3, 3, 0:2), om(3), al(3), qual
-        real(dp) :: r(3, 3)
+        real(dp) :: rs(3, 0:NJ), c(3, 0:NJ), d(3, 0:NJ), fr(3, 3, 0:NJ), jm(6, 6), vel(6)
+        real(dp) :: acc0(6), qual, r(3, 3)
         call pose_jets(el, yg(1:6), yg(7:12), rs, c, d, fr, qual)
-        call frame_rates(fr, om, al)
+        call pose_rates(rs, fr, jm, vel, acc0)
         r = fr(:, :, 0)                         ! R(:, i) = ntilde_i
         y(1:3) = rs(:, 0)
-        y(4:6) = rs(:, 1)
+        y(4:6) = vel(1:3)
         y(7:10) = matrix_to_quat(r)
-        y(11:13) = matmul(om, r)                ! R^T omega
+        y(11:13) = matmul(vel(4:6), r)          ! R^T omega
         if (present(quality)) quality = qual
     end function gen_to_maximal
 
@@ -283,7 +277,8 @@ contains
         real(dp), intent(in), optional :: ref(:)    !! a nearby generalized state (branches)
         real(dp) :: c(3), d(3), e(3), vc(3), vd(3), n(3, 3), omega(3), l0(2), l1, l2, a(3)
         real(dp) :: dc, ad, b(3), p(3), qv(3), dd(3), w(3), u(3), jm(6, 6), rhs(6), r(3, 3)
-        real(dp) :: phi, psi
+        real(dp) :: phi, psi, rs(3, 0:NJ), cj(3, 0:NJ), dj(3, 0:NJ), fr(3, 3, 0:NJ), vel(6)
+        real(dp) :: acc0(6), qual
         stat%code = STATUS_OK
         yg = 0.0_dp
         call elastic_pose(el%p, y, c, d, e, vc, vd, n, omega)
@@ -308,7 +303,9 @@ contains
             psi = psi + 2.0_dp*pi*anint((ref(4) - psi)/(2.0_dp*pi))
         end if
         yg(1:6) = [(c(1) - b(1))/l1, (c(2) - b(2))/l1, phi, psi, l1 - l0(1), l2 - l0(2)]
-        call pose_jacobian(el, yg(1:6), jm)
+        call pose_jets(el, yg(1:6), [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp], rs, cj, &
+                       dj, fr, qual)
+        call pose_rates(rs, fr, jm, vel, acc0)
         r = transpose(n)
         rhs(1:3) = y(4:6)
         rhs(4:6) = matmul(r, y(11:13))          ! omega in n components
@@ -351,7 +348,7 @@ contains
         real(dp), intent(in) :: y(:)            !! generalized state (12)
         real(dp), intent(out) :: ydot(:)        !! its derivative
         type(status_t), intent(out) :: stat
-        real(dp) :: rs(3, 0:2), c(3, 0:2), d(3, 0:2), fr(3, 3, 0:2), om(3), al0(3), qual
+        real(dp) :: rs(3, 0:NJ), c(3, 0:NJ), d(3, 0:NJ), fr(3, 3, 0:NJ), vel(6), acc0(6), qual
         real(dp) :: r(3, 3), ym(ELASTIC_NSTATE), fm(ELASTIC_NSTATE), jm(6, 6), acc(6)
         if (.false.) ydot(1) = t
         ydot = 0.0_dp
@@ -361,18 +358,17 @@ contains
                 'are singular at this pose')
             return
         end if
-        call frame_rates(fr, om, al0)
+        call pose_rates(rs, fr, jm, vel, acc0)
         r = fr(:, :, 0)
         ym(1:3) = rs(:, 0)
-        ym(4:6) = rs(:, 1)
+        ym(4:6) = vel(1:3)
         ym(7:10) = matrix_to_quat(r)
-        ym(11:13) = matmul(om, r)
+        ym(11:13) = matmul(vel(4:6), r)
         call elastic_rhs_stretched(sys%el, ym, reshape([y(5), y(11), y(6), y(12)], [2, 2]), &
                                    fm, stat)
         if (stat%code /= STATUS_OK) return
-        acc(1:3) = fm(4:6) - rs(:, 2)
-        acc(4:6) = matmul(r, fm(11:13)) - al0
-        call pose_jacobian(sys%el, y(1:6), jm)
+        acc(1:3) = fm(4:6) - acc0(1:3)
+        acc(4:6) = matmul(r, fm(11:13)) - acc0(4:6)
         call la_solve(jm, acc, stat)
         if (stat%code /= STATUS_OK) then
             call set_error(stat, GEN_ERR_CHART, 'elastic model: the generalized coordinates '// &
