@@ -33,7 +33,7 @@ LIB_MODULES = kinds status lapack_wrap ode_system lsoda radau stepper geometry k
               elastic_model elastic_gen elastic_solver deck output_io simulate floquet paper_claims stability work_precision
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
 TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme test_work_precision test_elastic test_elastic_jac \
-               test_radau
+               test_radau test_elastic_radau
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
 
 .PHONY: all test check run report bench deps clean memcheck
