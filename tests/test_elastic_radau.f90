@@ -25,8 +25,9 @@ module test_elastic_radau
     implicit none
     private
 
-    public :: run_elastic_radau_tests, issue_scene, scene_errors
+    public :: run_elastic_radau_tests, issue_scene, scene_errors, solve_scene, NOUT, TEND
 
+    !> The issue's interval and output grid.
     real(dp), parameter :: TEND = 20.0_dp, DTOUT = 0.05_dp
     integer, parameter :: NOUT = 400
     !> SUNDIALS CVODE 6.4.1 on the same equations (issue 11): 37 791 steps for a theta1
@@ -65,24 +66,30 @@ contains
     end subroutine issue_scene
 
     !> The scene solved by `method` at rtol (atol = rtol/100; LSODA: elastic_atol's
-    !! per-state tolerances), states at the NOUT + 1 output times; the counters.
-    subroutine solve_scene(el, y0, method, rtol, ys, st, stat)
+    !! per-state tolerances), states at the NOUT + 1 output times; the counters; the CPU
+    !! seconds of the solve (optional).
+    subroutine solve_scene(el, y0, method, rtol, ys, st, stat, cpu)
         type(elastic_t), intent(inout) :: el
         real(dp), intent(in) :: y0(:), rtol
         integer, intent(in) :: method
         real(dp), intent(out) :: ys(ELASTIC_NSTATE, 0:NOUT)
         type(lsoda_stats_t), intent(out) :: st
         type(status_t), intent(out) :: stat
+        real(dp), intent(out), optional :: cpu
         type(elastic_solver_t) :: s
+        real(dp) :: c0, c1
         integer :: k
         ys = 0.0_dp
         ys(:, 0) = y0
+        call cpu_time(c0)
         call s%init(el, 0.0_dp, y0, rtol, elastic_atol(el, rtol/100, rtol), stat, tcrit=TEND, &
                     method=method)
         do k = 1, NOUT
-            if (stat%code == 0) call s%integrate(el, k*DTOUT, ys(:, k), stat, max_steps=2000000)
+            if (stat%code == 0) call s%integrate(el, k*DTOUT, ys(:, k), stat, max_steps=5000000)
         end do
+        call cpu_time(c1)
         st = s%stats()
+        if (present(cpu)) cpu = c1 - c0
     end subroutine solve_scene
 
     !> The largest differences of theta1, theta4, theta5 (rad) and Q (b') between two
