@@ -96,7 +96,7 @@ module elastic_model
     public :: elastic_from_chart, elastic_from_angles, elastic_evaluate, elastic_chart
     public :: elastic_energy, elastic_pose, quat_to_matrix, matrix_to_quat, elastic_start
     public :: natural_lengths, elastic_atol, cable_switch, stretch_frequency
-    public :: elastic_rhs_stretched
+    public :: elastic_rhs_stretched, cable_switch_stretched
 
 contains
 
@@ -253,6 +253,22 @@ contains
             g(j) = min(sys%stiffness*strain, sys%stiffness*strain + dashpot(sys, l0(j))*rate)
         end do
     end function cable_switch
+
+    !> cable_switch from the cables' stretches |s_j| - L0_j and their rates (stretch(:, j)
+    !! for cable j; elastic_gen, where they are states): g_j = min(k e, k e + c e') with
+    !! e = stretch/L0.
+    pure function cable_switch_stretched(sys, stretch) result(g)
+        type(elastic_t), intent(in) :: sys
+        real(dp), intent(in) :: stretch(2, 2)   !! (stretch, rate) of BC, AD (b', b'/tau)
+        real(dp) :: g(2)
+        real(dp) :: l0(2)
+        integer :: j
+        l0 = natural_lengths(sys)
+        do j = 1, 2
+            g(j) = min(sys%stiffness*stretch(1, j)/l0(j), sys%stiffness*stretch(1, j)/l0(j) + &
+                       dashpot(sys, l0(j))*stretch(2, j))
+        end do
+    end function cable_switch_stretched
 
     !> Body points C (j = 1) and D (j = 2) and their velocities in n components, and the
     !! supports B and A, at state y.

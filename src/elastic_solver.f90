@@ -25,16 +25,19 @@
 !! steps over the stiff, lightly damped stretching oscillations) or SOLVER_LSODA (lsoda_t).
 !! A Radau segment restarts with the step size the last one would have tried next.
 !!
-!! A switch in and out of one mode inside a single step (a slack interval shorter than a
-!! step, with g of the same sign at both ends) is not seen; the error test keeps steps
-!! short where the motion of the cables changes quickly.
+!! In the generalized coordinates (Radau) the switching functions are functions of four
+!! state components, the stretches and their rates, and are sampled at NSAMPLE = 8 points
+!! of every step, so a slack interval longer than an eighth of a step is seen.  In the
+!! maximal coordinates (LSODA) they are checked at the step end only: a switch in and out
+!! of one mode inside a single step is not seen there; the error test keeps steps short
+!! where the motion of the cables changes quickly.
 module elastic_solver
     use kinds, only: dp
     use status, only: status_t, set_error, ERR_NUMERIC, STATUS_OK
     use lsoda, only: lsoda_stats_t, METHOD_BDF
     use stepper, only: stepper_t, SOLVER_LSODA, SOLVER_RADAU
-    use elastic_model, only: elastic_t, cable_switch, natural_lengths, ELASTIC_NSTATE, &
-                             CABLE_TAUT, CABLE_SLACK
+    use elastic_model, only: elastic_t, cable_switch, cable_switch_stretched, natural_lengths, &
+                             ELASTIC_NSTATE, CABLE_TAUT, CABLE_SLACK
     use elastic_gen, only: elastic_gen_t, gen_to_maximal, maximal_to_gen, chart_quality, &
                            GEN_NSTATE, GEN_ERR_CHART
     implicit none
@@ -54,6 +57,9 @@ module elastic_solver
     !> The generalized chart is left below this regularity (elastic_gen chart_quality) and
     !! entered again above QUALITY_ENTER.
     real(dp), parameter :: QUALITY_LEAVE = 0.05_dp, QUALITY_ENTER = 0.1_dp
+    !> In the generalized coordinates the switching functions are sampled at this many
+    !! equally spaced points of every step (they are functions of four state components).
+    integer, parameter :: NSAMPLE = 8
 
     !> One slack interval of one cable.
     type, public :: slack_interval_t
@@ -302,7 +308,9 @@ contains
         st = segment_stats(s)
         t1 = st%t_current
         if (s%coords == COORDS_GEN) then
-            call s%it%dense(t1, 0, yg, stat)
+            ! the switching functions at NSAMPLE points of the step, the first switch located
+            ! between two of them; then the maximal state there
+            call sample_switch(s, sys, t0, t1, yg, sw, stat)
             if (stat%code /= STATUS_OK) return
             y = gen_to_maximal(s%gen%el, yg, quality)
             s%yg_ref = yg
@@ -312,10 +320,10 @@ contains
             if (stat%code /= STATUS_OK) return
             recoord = .false.
             if (s%use_gen) recoord = chart_quality(sys, y) > QUALITY_ENTER
+            sw = switched(sys, y)
+            if (any(sw)) call locate_switch(s, sys, t0, t1, y, sw, stat)
+            if (stat%code /= STATUS_OK) return
         end if
-        sw = switched(sys, y)
-        if (any(sw)) call locate_switch(s, sys, t0, t1, y, sw, stat)
-        if (stat%code /= STATUS_OK) return
         s%t_prev = t0
         s%t_now = t1
         call account(s, sys%mode, t0, t1)
@@ -339,6 +347,53 @@ contains
             if (s%quick >= MAX_QUICK_SWITCHES) call chatter_error(s, sys, stat)
         end if
     contains
+        !> Generalized coordinates: the switching functions (from the stretch states) at
+        !! NSAMPLE equally spaced points of (t0, t1]; at the first point where a cable has
+        !! switched, the switch is located by bisection from the point before it.  t1 and yg
+        !! become the switch time and state (the step end and its state when none), sw the
+        !! cables switching there.
+        subroutine sample_switch(s, sys, t0, t1, yg, sw, stat)
+            type(elastic_solver_t), intent(inout) :: s
+            type(elastic_t), intent(in) :: sys
+            real(dp), intent(in) :: t0
+            real(dp), intent(inout) :: t1
+            real(dp), intent(out) :: yg(:)
+            logical, intent(out) :: sw(2)
+            type(status_t), intent(out) :: stat
+            real(dp) :: a, b, m, ym(GEN_NSTATE)
+            logical :: swm(2)
+            integer :: i, it
+            sw = .false.
+            a = t0
+            b = t1
+            do i = 1, NSAMPLE
+                b = t0 + (t1 - t0)*real(i, dp)/NSAMPLE
+                if (i == NSAMPLE) b = t1
+                call s%it%dense(b, 0, yg, stat)
+                if (stat%code /= STATUS_OK) return
+                sw = switched_gen(sys, yg)
+                if (any(sw)) exit
+                a = b
+            end do
+            if (any(sw)) then
+                do it = 1, MAX_BISECT
+                    m = a + 0.5_dp*(b - a)
+                    if (.not. (m > a .and. m < b)) exit
+                    call s%it%dense(m, 0, ym, stat)
+                    if (stat%code /= STATUS_OK) return
+                    swm = switched_gen(sys, ym)
+                    if (any(swm)) then
+                        b = m
+                        yg = ym
+                        sw = swm
+                    else
+                        a = m
+                    end if
+                end do
+            end if
+            t1 = b
+        end subroutine sample_switch
+
         !> Find the first switch in (t0, t1]: t1 and y become the switch time and state, sw
         !! the cables switching there.
         subroutine locate_switch(s, sys, t0, t1, y, sw, stat)
@@ -398,6 +453,18 @@ contains
         sw = (sys%mode == CABLE_TAUT .and. .not. (g > 0.0_dp)) .or. &
              (sys%mode == CABLE_SLACK .and. g > 0.0_dp)
     end function switched
+
+    !> switched for a generalized state (elastic_gen): the switching functions from its
+    !! stretch states.
+    pure function switched_gen(sys, yg) result(sw)
+        type(elastic_t), intent(in) :: sys
+        real(dp), intent(in) :: yg(:)
+        logical :: sw(2)
+        real(dp) :: g(2)
+        g = cable_switch_stretched(sys, reshape([yg(5), yg(11), yg(6), yg(12)], [2, 2]))
+        sw = (sys%mode == CABLE_TAUT .and. .not. (g > 0.0_dp)) .or. &
+             (sys%mode == CABLE_SLACK .and. g > 0.0_dp)
+    end function switched_gen
 
     !> Slack time of the interval [t0, t1] run in the modes `mode`.
     subroutine account(s, mode, t0, t1)
