@@ -42,7 +42,7 @@ module elastic_gen
     use ode_system, only: ode_system_t
     use lapack_wrap, only: la_solve
     use elastic_model, only: elastic_t, natural_lengths, matrix_to_quat, elastic_pose, &
-                             elastic_rhs_stretched, ELASTIC_NSTATE
+                             elastic_rhs_stretched, cross, ELASTIC_NSTATE
     implicit none
     private
 
@@ -236,12 +236,6 @@ contains
         acc0(4:6) = om(:, 8)
     end subroutine pose_rates
 
-    pure function cross(a, b) result(c)
-        real(dp), intent(in) :: a(3), b(3)
-        real(dp) :: c(3)
-        c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
-    end function cross
-
     ! ------------------------------------------------------------------------------------
     ! Conversions and the right-hand side
     ! ------------------------------------------------------------------------------------
@@ -275,34 +269,25 @@ contains
         real(dp), intent(out) :: yg(GEN_NSTATE)
         type(status_t), intent(out) :: stat
         real(dp), intent(in), optional :: ref(:)    !! a nearby generalized state (branches)
-        real(dp) :: c(3), d(3), e(3), vc(3), vd(3), n(3, 3), omega(3), l0(2), l1, l2, a(3)
-        real(dp) :: dc, ad, b(3), p(3), qv(3), dd(3), w(3), u(3), jm(6, 6), rhs(6), r(3, 3)
-        real(dp) :: phi, psi, rs(3, 0:NJ), cj(3, 0:NJ), dj(3, 0:NJ), fr(3, 3, 0:NJ), vel(6)
-        real(dp) :: acc0(6), qual
+        real(dp) :: c(3), d(3), n(3, 3), l0(2), a(3), ad, b(3), p(3), w(3), u(3), qual
+        real(dp) :: jm(6, 6), rhs(6), r(3, 3), phi, psi, rs(3, 0:NJ), cj(3, 0:NJ), dj(3, 0:NJ)
+        real(dp) :: fr(3, 3, 0:NJ), vel(6), acc0(6)
         stat%code = STATUS_OK
         yg = 0.0_dp
-        call elastic_pose(el%p, y, c, d, e, vc, vd, n, omega)
+        call chart_geometry(el, y, c, d, n, a, ad, p, w, qual)
         l0 = natural_lengths(el)
         b = [0.0_dp, -el%p%big_b, 0.0_dp]
-        l1 = norm2(c - b)
-        l2 = norm2(d)
-        dc = norm2(c)
-        a = c/dc
-        ad = (l2**2 - 1.0_dp + dc**2)/(2.0_dp*dc)
-        p = b - dot_product(b, a)*a
         p = p/norm2(p)
-        qv = cross(a, p)
-        phi = atan2(dot_product(d - ad*a, qv), dot_product(d - ad*a, p))
-        dd = d - c
-        w = [0.0_dp, 0.0_dp, -1.0_dp] + dd(3)*dd
+        phi = atan2(dot_product(d - ad*a, cross(a, p)), dot_product(d - ad*a, p))
         w = w/norm2(w)
-        u = cross(w, dd)
+        u = cross(w, d - c)
         psi = atan2(dot_product(n(1, :), u), dot_product(n(1, :), w))
         if (present(ref)) then
             phi = phi + 2.0_dp*pi*anint((ref(3) - phi)/(2.0_dp*pi))
             psi = psi + 2.0_dp*pi*anint((ref(4) - psi)/(2.0_dp*pi))
         end if
-        yg(1:6) = [(c(1) - b(1))/l1, (c(2) - b(2))/l1, phi, psi, l1 - l0(1), l2 - l0(2)]
+        yg(1:6) = [(c(1:2) - b(1:2))/norm2(c - b), phi, psi, norm2(c - b) - l0(1), &
+                   norm2(d) - l0(2)]
         call pose_jets(el, yg(1:6), [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp], rs, cj, &
                        dj, fr, qual)
         call pose_rates(rs, fr, jm, vel, acc0)
@@ -324,11 +309,21 @@ contains
         type(elastic_t), intent(in) :: el
         real(dp), intent(in) :: y(:)            !! maximal state (13)
         real(dp) :: qual
-        real(dp) :: c(3), d(3), e(3), vc(3), vd(3), n(3, 3), omega(3), b(3), a(3), l2, dc, ad
-        real(dp) :: p(3), dd(3), w(3), ez
+        real(dp) :: c(3), d(3), n(3, 3), a(3), ad, p(3), w(3)
+        call chart_geometry(el, y, c, d, n, a, ad, p, w, qual)
+    end function chart_quality
+
+    !> The chart's construction at the pose of a maximal state: C, D and the frame
+    !! (n(i, :) = ntilde_i), the axis a = C/|C| of D's circle and the distance a_d of its
+    !! centre from A, p and w before normalisation (the component of B - A normal to a, of
+    !! -n3 normal to CD), and the regularity measure as in pose_jets.
+    pure subroutine chart_geometry(el, y, c, d, n, a, ad, p, w, qual)
+        type(elastic_t), intent(in) :: el
+        real(dp), intent(in) :: y(:)
+        real(dp), intent(out) :: c(3), d(3), n(3, 3), a(3), ad, p(3), w(3), qual
+        real(dp) :: e(3), vc(3), vd(3), omega(3), b(3), l2, dc, dd(3)
         call elastic_pose(el%p, y, c, d, e, vc, vd, n, omega)
         b = [0.0_dp, -el%p%big_b, 0.0_dp]
-        ez = (b(3) - c(3))/norm2(c - b)
         l2 = norm2(d)
         dc = norm2(c)
         a = c/dc
@@ -336,8 +331,9 @@ contains
         p = b - dot_product(b, a)*a
         dd = d - c
         w = [0.0_dp, 0.0_dp, -1.0_dp] + dd(3)*dd
-        qual = min(ez, sqrt(max(0.0_dp, l2**2 - ad**2))/l2, norm2(p)/el%p%big_b, norm2(w))
-    end function chart_quality
+        qual = min((b(3) - c(3))/norm2(c - b), sqrt(max(0.0_dp, l2**2 - ad**2))/l2, &
+                   norm2(p)/el%p%big_b, norm2(w))
+    end subroutine chart_geometry
 
     !> Right-hand side in the generalized coordinates: q'' = J^-1 ((a*, alpha) - (a0,
     !! alpha0)) with (a*, alpha) from elastic_model's equations at the same pose and

@@ -96,7 +96,7 @@ module elastic_model
     public :: elastic_from_chart, elastic_from_angles, elastic_evaluate, elastic_chart
     public :: elastic_energy, elastic_pose, quat_to_matrix, matrix_to_quat, elastic_start
     public :: natural_lengths, elastic_atol, cable_switch, stretch_frequency
-    public :: elastic_rhs_stretched, cable_switch_stretched
+    public :: elastic_rhs_stretched, cable_switch_stretched, cross
 
 contains
 
@@ -119,6 +119,7 @@ contains
         ibinv = inertia_dyadic(p%btilde, 1.0_dp/p%inertia)
     end subroutine body_inertia
 
+    !> The cross product a x b of two vectors.
     pure function cross(a, b) result(c)
         real(dp), intent(in) :: a(3), b(3)
         real(dp) :: c(3)

@@ -123,7 +123,8 @@ contains
 
     !> Start an elastic integration at (t0, y0): the modes from the state (initial_modes, set
     !! in sys%mode), then the integrator as its init (rtol, atol of size 1 or 13, tcrit).
-    subroutine es_init(s, sys, t0, y0, rtol, atol, stat, tcrit, nonstiff_only, method)
+    subroutine es_init(s, sys, t0, y0, rtol, atol, stat, tcrit, nonstiff_only, method, &
+                       maximal_only)
         class(elastic_solver_t), intent(inout) :: s
         type(elastic_t), intent(inout) :: sys   !! the model; its modes are set here
         real(dp), intent(in) :: t0, y0(:), rtol, atol(:)
@@ -133,6 +134,8 @@ contains
                                                 !! (the non-stiff method alone, comparisons)
         integer, intent(in), optional :: method !! SOLVER_RADAU (default) or SOLVER_LSODA;
                                                 !! nonstiff_only implies SOLVER_LSODA
+        logical, intent(in), optional :: maximal_only  !! Radau: never the generalized
+                                                !! coordinates (comparisons)
         integer :: j
         s%ready = .false.
         s%adams_only = .false.
@@ -141,6 +144,7 @@ contains
         if (present(method)) s%method = method
         if (s%adams_only) s%method = SOLVER_LSODA
         s%use_gen = s%method == SOLVER_RADAU
+        if (present(maximal_only)) s%use_gen = s%use_gen .and. .not. maximal_only
         s%have_ref = .false.
         s%rtol = rtol
         s%atol = atol
@@ -251,9 +255,9 @@ contains
         type(status_t), intent(out) :: stat     !! the integrator's failure, with the time
         real(dp), intent(in), optional :: tout  !! as lsoda_t%step, radau_t%step
         type(lsoda_stats_t) :: st
-        real(dp) :: y(ELASTIC_NSTATE), t0, t1, yg(GEN_NSTATE), quality
+        real(dp) :: y(ELASTIC_NSTATE), ys(ELASTIC_NSTATE), t0, t1, a, b, quality
         logical :: sw(2), bdf, near, recoord
-        integer :: attempt
+        integer :: attempt, i, nsam
         if (.not. s%ready) then
             call set_error(stat, ERR_NUMERIC, 'elastic solver: not initialised')
             return
@@ -307,22 +311,31 @@ contains
         if (stat%code /= STATUS_OK) return
         st = segment_stats(s)
         t1 = st%t_current
-        if (s%coords == COORDS_GEN) then
-            ! the switching functions at NSAMPLE points of the step, the first switch located
-            ! between two of them; then the maximal state there
-            call sample_switch(s, sys, t0, t1, yg, sw, stat)
+        ! the switching functions, at NSAMPLE points of the step in the generalized
+        ! coordinates (there they are functions of the stretch states), else at its end; the
+        ! first switch located by bisection from the sample before it
+        nsam = 1
+        if (s%coords == COORDS_GEN) nsam = NSAMPLE
+        a = t0
+        do i = 1, nsam
+            b = t1
+            if (i < nsam) b = t0 + (t1 - t0)*real(i, dp)/nsam
+            call switched_at(s, sys, b, ys, sw, stat)
             if (stat%code /= STATUS_OK) return
-            y = gen_to_maximal(s%gen%el, yg, quality)
-            s%yg_ref = yg
+            if (any(sw)) exit
+            a = b
+        end do
+        if (any(sw)) call locate_switch(s, sys, a, b, ys, sw, stat)
+        if (stat%code /= STATUS_OK) return
+        t1 = b
+        if (s%coords == COORDS_GEN) then
+            y = gen_to_maximal(s%gen%el, ys(1:GEN_NSTATE), quality)
+            s%yg_ref = ys(1:GEN_NSTATE)
             recoord = quality < QUALITY_LEAVE
         else
-            call segment_dense(s, t1, 0, y, stat)
-            if (stat%code /= STATUS_OK) return
+            y = ys
             recoord = .false.
             if (s%use_gen) recoord = chart_quality(sys, y) > QUALITY_ENTER
-            sw = switched(sys, y)
-            if (any(sw)) call locate_switch(s, sys, t0, t1, y, sw, stat)
-            if (stat%code /= STATUS_OK) return
         end if
         s%t_prev = t0
         s%t_now = t1
@@ -347,83 +360,31 @@ contains
             if (s%quick >= MAX_QUICK_SWITCHES) call chatter_error(s, sys, stat)
         end if
     contains
-        !> Generalized coordinates: the switching functions (from the stretch states) at
-        !! NSAMPLE equally spaced points of (t0, t1]; at the first point where a cable has
-        !! switched, the switch is located by bisection from the point before it.  t1 and yg
-        !! become the switch time and state (the step end and its state when none), sw the
-        !! cables switching there.
-        subroutine sample_switch(s, sys, t0, t1, yg, sw, stat)
+        !> Bisection for the first switch in (a, b], the cables sw switching at b with the
+        !! state ys there (switched_at): b, ys and sw become the switch's.
+        subroutine locate_switch(s, sys, a, b, ys, sw, stat)
             type(elastic_solver_t), intent(inout) :: s
             type(elastic_t), intent(in) :: sys
-            real(dp), intent(in) :: t0
-            real(dp), intent(inout) :: t1
-            real(dp), intent(out) :: yg(:)
-            logical, intent(out) :: sw(2)
-            type(status_t), intent(out) :: stat
-            real(dp) :: a, b, m, ym(GEN_NSTATE)
-            logical :: swm(2)
-            integer :: i, it
-            sw = .false.
-            a = t0
-            b = t1
-            do i = 1, NSAMPLE
-                b = t0 + (t1 - t0)*real(i, dp)/NSAMPLE
-                if (i == NSAMPLE) b = t1
-                call s%it%dense(b, 0, yg, stat)
-                if (stat%code /= STATUS_OK) return
-                sw = switched_gen(sys, yg)
-                if (any(sw)) exit
-                a = b
-            end do
-            if (any(sw)) then
-                do it = 1, MAX_BISECT
-                    m = a + 0.5_dp*(b - a)
-                    if (.not. (m > a .and. m < b)) exit
-                    call s%it%dense(m, 0, ym, stat)
-                    if (stat%code /= STATUS_OK) return
-                    swm = switched_gen(sys, ym)
-                    if (any(swm)) then
-                        b = m
-                        yg = ym
-                        sw = swm
-                    else
-                        a = m
-                    end if
-                end do
-            end if
-            t1 = b
-        end subroutine sample_switch
-
-        !> Find the first switch in (t0, t1]: t1 and y become the switch time and state, sw
-        !! the cables switching there.
-        subroutine locate_switch(s, sys, t0, t1, y, sw, stat)
-            type(elastic_solver_t), intent(inout) :: s
-            type(elastic_t), intent(in) :: sys
-            real(dp), intent(in) :: t0
-            real(dp), intent(inout) :: t1, y(:)
+            real(dp), intent(inout) :: a, b, ys(:)
             logical, intent(inout) :: sw(2)
             type(status_t), intent(out) :: stat
-            real(dp) :: a, b, m, ym(ELASTIC_NSTATE)
+            real(dp) :: m, ym(ELASTIC_NSTATE)
             logical :: swm(2)
             integer :: it
             stat%code = STATUS_OK
-            a = t0
-            b = t1
             do it = 1, MAX_BISECT
                 m = a + 0.5_dp*(b - a)
                 if (.not. (m > a .and. m < b)) exit
-                call segment_dense(s, m, 0, ym, stat)
+                call switched_at(s, sys, m, ym, swm, stat)
                 if (stat%code /= STATUS_OK) return
-                swm = switched(sys, ym)
                 if (any(swm)) then
                     b = m
-                    y = ym
+                    ys = ym
                     sw = swm
                 else
                     a = m
                 end if
             end do
-            t1 = b
         end subroutine locate_switch
     end subroutine es_step
 
@@ -453,6 +414,27 @@ contains
         sw = (sys%mode == CABLE_TAUT .and. .not. (g > 0.0_dp)) .or. &
              (sys%mode == CABLE_SLACK .and. g > 0.0_dp)
     end function switched
+
+    !> The cables switched at t in the current segment's last step, and the state there
+    !! (generalized coordinates: y(1:GEN_NSTATE), the switching functions from its stretch
+    !! states; else the maximal state).
+    subroutine switched_at(s, sys, t, y, sw, stat)
+        type(elastic_solver_t), intent(in) :: s
+        type(elastic_t), intent(in) :: sys
+        real(dp), intent(in) :: t
+        real(dp), intent(out) :: y(ELASTIC_NSTATE)
+        logical, intent(out) :: sw(2)
+        type(status_t), intent(out) :: stat
+        y = 0.0_dp
+        sw = .false.
+        if (s%coords == COORDS_GEN) then
+            call s%it%dense(t, 0, y(1:GEN_NSTATE), stat)
+            if (stat%code == STATUS_OK) sw = switched_gen(sys, y(1:GEN_NSTATE))
+        else
+            call segment_dense(s, t, 0, y, stat)
+            if (stat%code == STATUS_OK) sw = switched(sys, y)
+        end if
+    end subroutine switched_at
 
     !> switched for a generalized state (elastic_gen): the switching functions from its
     !! stretch states.

@@ -13,7 +13,8 @@
 !!    LSODA at rtol 1e-8, 1e-10, 1e-12: theta1 error, steps, right-hand sides, Jacobians,
 !!    CPU, beside SUNDIALS CVODE's figures from issue 11.  File: OUT_accuracy.dat.
 !! 3. Stiffness, damping 0.5, tau = 0 ... 4 pi, rtol 1e-8: LSODA with the cables' modes
-!!    (steps, evaluations, failures, last method; CPU best of 3), Radau beside it, fixed-step
+!!    (steps, evaluations, failures, last method; CPU best of 3), Radau beside it (and Radau
+!!    kept in the maximal coordinates: steps, Newton failures), fixed-step
 !!    RK4 at the fewest steps with which it stays stable (|energy error| < 1e-3 at the end,
 !!    by bisection) and its predicted bound 2.8/omega_s, and LSODA kept in Adams
 !!    (nonstiff_only).  File: OUT (default output/bench_elastic.dat).
@@ -176,7 +177,7 @@ contains
         type(status_t) :: st
         type(elastic_t) :: el
         type(elastic_solver_t) :: s
-        type(lsoda_stats_t) :: ls, la, lr
+        type(lsoda_stats_t) :: ls, la, lr, lm
         real(dp) :: yc(NSTATE), th0(5), y0(ELASTIC_NSTATE), y(ELASTIC_NSTATE), a(ELASTIC_NSTATE)
         real(dp) :: best, bestr, t0, t1, ws, rk_cpu, adams_cpu
         integer :: j, rep, u, nrk
@@ -193,12 +194,14 @@ contains
             'method_switches conv_failures error_test_failures last_method_bdf '// &
             'rk4_fewest_stable_steps rk4_bound_steps rk4_cpu_seconds adams_only_steps '// &
             'adams_only_rhs_evaluations adams_only_cpu_seconds radau_cpu_seconds radau_steps '// &
-            'radau_rhs_evaluations radau_jacobian_evaluations'
+            'radau_rhs_evaluations radau_jacobian_evaluations radau_maximal_steps '// &
+            'radau_maximal_newton_failures'
         write (*, '(/,a)') '3. Stiffness: cylinder l = 2b, l'' = 1.8b, 45 deg, damping 0.5, '// &
             'tau = 0 ... 4 pi (2 torsion periods), rtol 1e-8 (best of 3)'
-        write (*, '(a10,a9,a8,a9,a7,a6,a6,a6,a7,a12,a11,a11,a12,a12,a10,a7,a8)') 'stiffness', &
-            'cpu s', 'steps', 'rhs', 'jac', 'ncf', 'nef', 'sw', 'last', 'RK4 stable', &
-            'RK4 bound', 'RK4 cpu s', 'Adams steps', 'Adams cpu s', 'Radau s', 'steps', 'rhs'
+        write (*, '(a10,a9,a8,a9,a7,a6,a6,a6,a7,a12,a11,a11,a12,a12,a10,a7,a8,a10,a8)') &
+            'stiffness', 'cpu s', 'steps', 'rhs', 'jac', 'ncf', 'nef', 'sw', 'last', &
+            'RK4 stable', 'RK4 bound', 'RK4 cpu s', 'Adams steps', 'Adams cpu s', 'Radau s', &
+            'steps', 'rhs', 'max steps', 'ncf'
         do j = 1, size(kk)
             el%stiffness = kk(j)
             el%damping = zeta
@@ -225,6 +228,12 @@ contains
                 bestr = min(bestr, t1 - t0)
                 lr = s%stats()
             end do
+            ! Radau kept in the maximal coordinates
+            call s%init(el, 0.0_dp, y0, rtol, a, st, tcrit=tend, method=SOLVER_RADAU, &
+                        maximal_only=.true.)
+            if (st%code == 0) call s%integrate(el, tend, y, st, max_steps=5000000)
+            if (st%code /= 0) error stop 'bench_elastic: Radau (maximal) integration failed'
+            lm = s%stats()
             ! the non-stiff method alone: LSODA kept in Adams
             call cpu_time(t0)
             call s%init(el, 0.0_dp, y0, rtol, a, st, tcrit=tend, nonstiff_only=.true.)
@@ -243,16 +252,18 @@ contains
                     rk_cpu = min(rk_cpu, t1 - t0)
                 end do
             end if
-            write (*, '(es10.1,f9.4,i8,i9,i7,i6,i6,i6,a7,i12,i11,f11.4,i12,f12.4,f10.4,i7,i8)') &
+            write (*, '(es10.1,f9.4,i8,i9,i7,i6,i6,i6,a7,i12,i11,f11.4,i12,f12.4,f10.4,i7,i8,' // &
+                   'i10,i8)') &
                 kk(j), best, ls%steps, ls%rhs_evals, ls%jac_evals, ls%conv_failures, &
                 ls%error_test_failures, ls%method_switches, &
                 merge('BDF  ', 'Adams', ls%method_last == METHOD_BDF), nrk, &
-                ceiling(tend*ws/2.8_dp), rk_cpu, la%steps, adams_cpu, bestr, lr%steps, lr%rhs_evals
-            write (u, '(es10.3,es14.6,7i10,2i10,es14.6,2i10,es14.6,es14.6,3i10)') kk(j), best, &
+                ceiling(tend*ws/2.8_dp), rk_cpu, la%steps, adams_cpu, bestr, lr%steps, &
+                lr%rhs_evals, lm%steps, lm%conv_failures
+            write (u, '(es10.3,es14.6,7i10,2i10,es14.6,2i10,es14.6,es14.6,5i10)') kk(j), best, &
                 ls%steps, ls%rhs_evals, ls%jac_evals, ls%method_switches, ls%conv_failures, &
                 ls%error_test_failures, merge(1, 0, ls%method_last == METHOD_BDF), nrk, &
                 ceiling(tend*ws/2.8_dp), rk_cpu, la%steps, la%rhs_evals, adams_cpu, bestr, &
-                lr%steps, lr%rhs_evals, lr%jac_evals
+                lr%steps, lr%rhs_evals, lr%jac_evals, lm%steps, lm%conv_failures
         end do
         call atomic_commit(u, path, st)
     end subroutine stiffness_table
