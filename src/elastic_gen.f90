@@ -46,7 +46,8 @@ module elastic_gen
     implicit none
     private
 
-    integer, parameter, public :: GEN_NSTATE = 12      !! y = (sigma1, sigma2, phi, psi, s1, s2, rates)
+    !> y = (sigma1, sigma2, phi, psi, s1, s2) and their rates
+    integer, parameter, public :: GEN_NSTATE = 12
     !> Indices of the stretches s1 (BC), s2 (AD) and their rates in the state.
     integer, parameter, public :: GEN_S1 = 5, GEN_S2 = 6, GEN_S1_RATE = 11, GEN_S2_RATE = 12
     !> status_t%code of gen_rhs where the chart is singular (elastic_solver then goes on in

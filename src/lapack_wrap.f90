@@ -161,12 +161,14 @@ contains
         n = size(a, 1)
         if (size(a, 2) /= n .or. size(ipiv) < n) then
             ipiv = 0
-            call set_error(stat, ERR_NUMERIC, 'la_zlu_factor: matrix is not square or ipiv too short')
+            call set_error(stat, ERR_NUMERIC, 'la_zlu_factor: matrix is not square or ipiv '// &
+                'too short')
             return
         end if
         call zgetrf(n, n, a, n, ipiv, info)
         if (info /= 0) then
-            write (buf, '(a,i0)') 'la_zlu_factor (zgetrf): singular matrix, U(i,i) = 0 at i = ', info
+            write (buf, '(a,i0)') 'la_zlu_factor (zgetrf): singular matrix, U(i,i) = 0 at '// &
+                'i = ', info
             if (info < 0) write (buf, '(a,i0)') 'la_zlu_factor (zgetrf): illegal argument ', -info
             call set_error(stat, ERR_NUMERIC, trim(buf))
         end if
@@ -187,7 +189,8 @@ contains
         integer :: n, info
         n = size(lu, 1)
         if (size(lu, 2) /= n .or. size(b) /= n .or. size(ipiv) < n) then
-            call set_error(stat, ERR_NUMERIC, 'la_zlu_solve: factor, pivot and vector shapes disagree')
+            call set_error(stat, ERR_NUMERIC, 'la_zlu_solve: factor, pivot and vector shapes '// &
+                'disagree')
             return
         end if
         call zgetrs('N', n, 1, lu, n, ipiv, b, n, info)

@@ -88,7 +88,8 @@ module radau
         real(dp) :: ainv(3, 3) = 0.0_dp         !! A^-1
         real(dp) :: gam = 0.0_dp                !! real eigenvalue of A^-1
         real(dp) :: alpha = 0.0_dp, beta = 0.0_dp  !! complex pair alpha +- i beta of A^-1
-        real(dp) :: t(3, 3) = 0.0_dp            !! A^-1 = T diag(gam, [alpha -beta; beta alpha]) T^-1
+        !> A^-1 = T diag(gam, [alpha -beta; beta alpha]) T^-1
+        real(dp) :: t(3, 3) = 0.0_dp
         real(dp) :: tinv(3, 3) = 0.0_dp         !! T^-1
         real(dp) :: gam0 = 0.0_dp               !! 1/gam, the embedded formula's weight of f(t0, y0)
         real(dp) :: e(3) = 0.0_dp               !! y_hat - y1 = gam0 h f0 + sum e_i z_i
@@ -98,9 +99,9 @@ module radau
     !> Counters and step sizes, as returned by radau_t%stats().
     type, public :: radau_stats_t
         integer :: steps = 0                    !! accepted steps since init
-        integer :: rhs_evals = 0                !! calls of sys%rhs (finite-difference Jacobians included)
+        integer :: rhs_evals = 0                !! calls of sys%rhs (difference Jacobians too)
         integer :: jac_evals = 0                !! Jacobian evaluations (analytic or differences)
-        integer :: lu_decomps = 0               !! factorisations (the real and the complex one count 1)
+        integer :: lu_decomps = 0               !! factorisations (real + complex count 1)
         integer :: newton_iterations = 0        !! simplified Newton iterations
         integer :: newton_failures = 0          !! attempts abandoned: Newton did not converge
         integer :: rejected = 0                 !! attempts rejected by the error test

@@ -61,7 +61,8 @@ contains
         times = [(ir*TEND/NOUT, ir = 0, NOUT)]
         call atomic_open(path, u, stat)
         if (stat%code /= 0) error stop 'bench_elastic: cannot write the grid file'
-        write (u, '(a)') '# issue 11 grid: cylinder l'' = 1.8, 45 deg, tau 0..20, atol = rtol/100;'// &
+        write (u, '(a)') '# issue 11 grid: cylinder l'' = 1.8, 45 deg, tau 0..20, '// &
+            'atol = rtol/100;'// &
             ' Radau IIA (generalized coordinates); errors: max over theta1, theta4, theta5, Q'
         write (u, '(a)') '# stiffness damping ref_lsoda_agreement ref_rk4_richardson_agreement '// &
             'err_over_rtol(1e-6 ... 1e-10) steps(1e-6 ... 1e-10) steps_1e-12'
@@ -69,7 +70,8 @@ contains
             'atol = rtol/100; Radau IIA'
         write (*, '(a)') '   largest error in theta1, theta4, theta5, Q over rtol / steps, '// &
             'at rtol 1e-6 ... 1e-10; steps at 1e-12;'
-        write (*, '(a)') '   reference Radau 1e-13; its agreement with LSODA 1e-13 and with RK4 + '// &
+        write (*, '(a)') '   reference Radau 1e-13; its agreement with LSODA 1e-13 and '// &
+            'with RK4 + '// &
             'Richardson (maximal coordinates)'
         write (*, '(a8,a6,a10,a10,5a14,a9)') 'k', 'zeta', 'LSODA', 'RK4+R', '1e-6', '1e-7', &
             '1e-8', '1e-9', '1e-10', '1e-12'
@@ -247,7 +249,8 @@ contains
             if (nrk > 0) then
                 do rep = 1, 3
                     call cpu_time(t0)
-                    if (.not. rk4_stable(el, y0, nrk, tend)) error stop 'bench_elastic: RK4 unstable'
+                    if (.not. rk4_stable(el, y0, nrk, tend)) &
+                        error stop 'bench_elastic: RK4 unstable'
                     call cpu_time(t1)
                     rk_cpu = min(rk_cpu, t1 - t0)
                 end do

@@ -9,7 +9,7 @@
 !! coordinates where that is affordable (make bench confirms every reference).
 module test_elastic_radau
     use kinds, only: dp, deg
-    use status, only: status_t
+    use status, only: status_t, ERR_DECK
     use testing, only: tester_t
     use test_model, only: cylinder
     use geometry, only: raised_angles, solve_theta5, beta_coeffs
@@ -47,6 +47,8 @@ contains
         if (t%want('elastic radau: lightly damped stiff cables ahead of CVODE (issue 11)')) &
             call test_cvode(t)
         if (t%want('elastic radau: no blow-up (issue 11)')) call test_blowup(t)
+        if (t%want('elastic radau: &integration method chooses the integrator')) &
+            call test_method_word(t)
     end subroutine run_elastic_radau_tests
 
     ! ---------------------------------------------------------------------------------------
@@ -309,5 +311,54 @@ contains
         call t%check('cylinder_l180_elastic: <= 1/5 of the 58 469 steps before', &
                      5*sm%steps <= STEPS_BEFORE)
     end subroutine test_blowup
+
+    !> &integration method: 'auto' takes Radau for the elastic model and LSODA for the
+    !! paper's, 'lsoda' and 'radau' take that integrator for either model (the summary's
+    !! method key says which ran; the paper's model by Radau conserves energy to 10 rtol);
+    !! an unknown word is a deck error naming the group, the variable and the words allowed.
+    subroutine test_method_word(t)
+        type(tester_t), intent(inout) :: t
+        character(len=*), parameter :: dir = 'build/test_elastic_radau'
+        character(len=5), parameter :: words(3) = ['auto ', 'lsoda', 'radau']
+        character(len=7), parameter :: models(2) = ['kane   ', 'elastic']
+        character(len=5) :: expect
+        type(deck_t) :: d
+        type(status_t) :: stat
+        type(run_summary_t) :: sm
+        integer :: iw, im
+        call execute_command_line('mkdir -p '//dir)
+        do im = 1, 2
+            do iw = 1, 3
+                call write_deck(dir//'/method.nml', trim(models(im)), trim(words(iw)))
+                call read_deck(dir//'/method.nml', d, stat)
+                if (stat%code == 0) call run_simulation(d, dir, sm, stat)
+                expect = words(iw)
+                if (iw == 1) expect = merge('radau', 'lsoda', im == 2)
+                call t%check('method = '''//trim(words(iw))//''', model = '''// &
+                             trim(models(im))//''': runs '//trim(expect), stat%code == 0 .and. &
+                             trim(sm%method) == trim(expect))
+                if (im == 1 .and. iw == 3) call t%check('paper''s model by Radau: energy '// &
+                    'within 10 rtol', sm%max_abs_energy_error <= 10*1.0e-9_dp)
+            end do
+        end do
+        call write_deck(dir//'/method.nml', 'elastic', 'rk4')
+        call read_deck(dir//'/method.nml', d, stat)
+        call t%check('method = ''rk4'': deck error', stat%code == ERR_DECK)
+        if (stat%code /= 0) call t%check('method = ''rk4'': the message names the variable '// &
+            'and the words allowed', index(stat%msg, '&integration method = ''rk4''') > 0 .and. &
+            index(stat%msg, 'auto, lsoda, radau') > 0)
+    contains
+        subroutine write_deck(path, model, word)
+            character(len=*), intent(in) :: path, model, word
+            integer :: u
+            open (newunit=u, file=path, status='replace', action='write')
+            write (u, '(a)') '&scene title = ''method'', model = '''//model//''' /'
+            write (u, '(a)') '&suspension b = 1.0, b_prime = 1.0, l = 2.0, l_prime = 1.8 /'
+            write (u, '(a)') '&body mass = 1.0 /'
+            write (u, '(a)') '&integration tau_end = 2.0, dtau_out = 0.1, rtol = 1e-9, '// &
+                'atol = 1e-11, method = '''//word//''' /'
+            close (u)
+        end subroutine write_deck
+    end subroutine test_method_word
 
 end module test_elastic_radau
