@@ -5,7 +5,8 @@
 #   make check      run all tests in the checking build (-fcheck=all, FP traps)
 #   make run        run every deck in input/, write output/, draw plots/*.png
 #   make report     output/report.md (paper's claims against ours)
-#   make bench      integrator, scene and work-precision benchmarks (output/bench_*.dat)
+#   make bench      integrator, scene, work-precision and elastic-cable benchmarks
+#                   (output/bench_*.dat, plots/work_precision_elastic.png)
 #   make memcheck   valgrind (leaks, invalid accesses) on bin/bifilar with a paper deck
 #   make deps       install what a fresh machine lacks (gnuplot)
 #   make clean      remove everything built or written
@@ -29,10 +30,11 @@ FFLAGS += -fopenmp -std=f2008 -Wall -Wextra -Wno-compare-reals -fimplicit-none
 LIBS = -llapack -lblas
 
 # Library modules in dependency order (each only uses modules listed before it).
-LIB_MODULES = kinds status lapack_wrap ode_system lsoda geometry kinematics gen_forces bifilar_model \
-              elastic_model elastic_solver deck output_io simulate floquet paper_claims stability work_precision
+LIB_MODULES = kinds status lapack_wrap ode_system lsoda radau stepper geometry kinematics gen_forces bifilar_model \
+              elastic_model elastic_gen elastic_solver deck output_io simulate floquet paper_claims stability work_precision
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
-TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme test_work_precision test_elastic test_elastic_jac
+TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme test_work_precision test_elastic test_elastic_jac \
+               test_radau test_elastic_radau
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
 
 .PHONY: all test check run report bench deps clean memcheck
@@ -71,19 +73,28 @@ check:
 $(BIN)/bench_bifilar: tests/bench_bifilar.f90 $(LIB_OBJ) | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
 
-$(BIN)/bench_elastic: tests/bench_elastic.f90 $(LIB_OBJ) | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+$(BIN)/bench_elastic: tests/bench_elastic.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@
+
+$(BIN)/bench_radau: tests/bench_radau.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@
 
 $(BIN)/bench_wp: tests/bench_wp.f90 $(LIB_OBJ) | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
 
 bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench_elastic \
-       $(BIN)/bifilar
+       $(BIN)/bench_radau $(BIN)/bifilar
 	mkdir -p output build/bench
 	$(BIN)/bench_integrator output/bench_integrator.dat
+	$(BIN)/bench_radau output/bench_radau.dat
 	$(BIN)/bench_bifilar output/bench_bifilar.dat
 	$(BIN)/bench_wp
 	$(BIN)/bench_elastic output/bench_elastic.dat
+	$(BIN)/bifilar input/work_precision_elastic.nml --out build/bench
+	@if command -v gnuplot >/dev/null 2>&1; then gnuplot -c plots/work_precision_elastic.gp \
+	  build/bench/work_precision_elastic.wp.dat build/bench/work_precision_elastic.wp_rk4.dat \
+	  build/bench/work_precision_elastic.wp_radau.dat plots/work_precision_elastic.png && \
+	  echo "drew plots/work_precision_elastic.png"; fi
 	@echo "100 x 100 stability chart (tests/bench/chart_cylinder.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}):"
 	$(BIN)/bifilar tests/bench/chart_cylinder.nml --out build/bench 2>/dev/null
 

@@ -61,8 +61,13 @@ program bifilar
     if (analysis_requested(d, 'work_precision')) then
         call run_work_precision(d, outdir, wp, stat)
         if (stat%code /= 0) call fail(stat)
-        write (*, '(a)') d%name//': work_precision: wrote '//outdir//'/'//d%name// &
-            '.wp.dat and .wp_rk4.dat'
+        if (trim(d%model) == 'elastic') then
+            write (*, '(a)') d%name//': work_precision: wrote '//outdir//'/'//d%name// &
+                '.wp.dat, .wp_rk4.dat and .wp_radau.dat (LSODA''s curve below)'
+        else
+            write (*, '(a)') d%name//': work_precision: wrote '//outdir//'/'//d%name// &
+                '.wp.dat and .wp_rk4.dat'
+        end if
         write (*, '(a10,a12,a10,a12,a12)') 'rtol', 'cpu s', 'rhs', 'err theta', 'err Q'
         do i = 1, size(wp%lsoda)
             if (wp%lsoda(i)%ok) write (*, '(es10.1,es12.3,i10,2es12.3)') wp%lsoda(i)%rtol, &

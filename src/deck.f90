@@ -35,6 +35,7 @@ module deck
         ! &integration
         real(dp) :: tau_end = 60.0_dp, dtau_out = 0.05_dp, rtol = 1.0e-10_dp, atol = 1.0e-12_dp
         logical  :: error_estimate = .false.
+        character(len=16) :: method = 'auto'      !! METHODS_ALLOWED: the integrator
         ! &cables (model = 'elastic' only)
         real(dp) :: cable_stiffness = 1.0e6_dp    !! EA/(m g) of each cable, 1 <= k <= 1e12
         real(dp) :: cable_damping = 0.05_dp       !! damping ratio zeta of each cable, 0..10
@@ -58,6 +59,9 @@ module deck
         'scene suspension body start integration cables floquet chart'
     !> Words allowed in &scene model.
     character(len=*), parameter :: MODELS_ALLOWED = 'kane elastic'
+    !> Words allowed in &integration method: 'auto' (radau for model = 'elastic', lsoda for
+    !! the paper's model), 'lsoda', 'radau'.
+    character(len=*), parameter :: METHODS_ALLOWED = 'auto lsoda radau'
     !> Words allowed in &chart x and y.
     character(len=*), parameter :: CHART_VARIABLES = 'l b amplitude r lambda inertia_ratio'
     !> Variables of each group with their kind (r real, i integer, c character, l logical)
@@ -68,7 +72,7 @@ module deck
         'mass:r1 inertia:r3 r:r1 lambda:r1 btilde:r9 sway_depth:r1'
     character(len=*), parameter :: SPEC_START = 'mode:c1 amplitude:r1 tilt:r1 theta:r4 theta_dot:r4'
     character(len=*), parameter :: SPEC_INTEGRATION = &
-        'tau_end:r1 dtau_out:r1 rtol:r1 atol:r1 error_estimate:l1'
+        'tau_end:r1 dtau_out:r1 rtol:r1 atol:r1 error_estimate:l1 method:c1'
     character(len=*), parameter :: SPEC_CABLES = 'stiffness:r1 damping:r1'
     character(len=*), parameter :: SPEC_FLOQUET = 'amplitude:r1 segments:i1 rtol:r1'
     character(len=*), parameter :: SPEC_CHART = &
@@ -105,6 +109,7 @@ contains
         real(dp) :: amplitude, tilt, theta(4), theta_dot(4)
         real(dp) :: tau_end, dtau_out, rtol, atol
         logical :: error_estimate
+        character(len=256) :: method
         real(dp) :: stiffness, damping
         character(len=256) :: x, y
         real(dp) :: x_min, x_max, y_min, y_max
@@ -117,7 +122,7 @@ contains
         namelist /suspension/ b, b_prime, l, l_prime, g
         namelist /body/ mass, inertia, r, lambda, btilde, sway_depth
         namelist /start/ mode, amplitude, tilt, theta, theta_dot
-        namelist /integration/ tau_end, dtau_out, rtol, atol, error_estimate
+        namelist /integration/ tau_end, dtau_out, rtol, atol, error_estimate, method
         namelist /cables/ stiffness, damping
         namelist /chart/ x, x_min, x_max, nx, y, y_min, y_max, ny
         integer :: u, ios, k
@@ -151,6 +156,7 @@ contains
         rtol = d%rtol
         atol = d%atol
         error_estimate = d%error_estimate
+        method = d%method
         stiffness = d%cable_stiffness
         damping = d%cable_damping
         fq_amplitude = d%floquet_amplitude
@@ -202,6 +208,8 @@ contains
         if (stat%code /= STATUS_OK) return
         call check_word(stat, d%name, 'start', 'mode', mode, 'raised angles')
         if (stat%code /= STATUS_OK) return
+        call check_word(stat, d%name, 'integration', 'method', method, METHODS_ALLOWED)
+        if (stat%code /= STATUS_OK) return
         call check_word(stat, d%name, 'chart', 'x', x, CHART_VARIABLES)
         if (stat%code /= STATUS_OK) return
         call check_word(stat, d%name, 'chart', 'y', y, CHART_VARIABLES)
@@ -230,6 +238,7 @@ contains
         d%rtol = rtol
         d%atol = atol
         d%error_estimate = error_estimate
+        d%method = lower(adjustl(method))
         d%cable_stiffness = stiffness
         d%cable_damping = damping
         d%floquet_amplitude = fq_amplitude
@@ -375,7 +384,7 @@ contains
         if (d%error_estimate) line = '.true.'
         write (unit, '(a)') '# &integration tau_end = '//rshort(d%tau_end)//', dtau_out = '// &
             rshort(d%dtau_out)//', rtol = '//rshort(d%rtol)//', atol = '//rshort(d%atol)// &
-            ', error_estimate = '//line//' /'
+            ', error_estimate = '//line//', method = '//quoted(d%method)//' /'
         if (trim(d%model) == 'elastic') write (unit, '(a)') '# &cables stiffness = '// &
             rshort(d%cable_stiffness)//', damping = '//rshort(d%cable_damping)//' /'
         if (analysis_requested(d, 'floquet')) write (unit, '(a)') '# &floquet amplitude = '// &

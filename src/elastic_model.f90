@@ -96,6 +96,7 @@ module elastic_model
     public :: elastic_from_chart, elastic_from_angles, elastic_evaluate, elastic_chart
     public :: elastic_energy, elastic_pose, quat_to_matrix, matrix_to_quat, elastic_start
     public :: natural_lengths, elastic_atol, cable_switch, stretch_frequency
+    public :: elastic_rhs_stretched, cable_switch_stretched, cross
 
 contains
 
@@ -118,6 +119,7 @@ contains
         ibinv = inertia_dyadic(p%btilde, 1.0_dp/p%inertia)
     end subroutine body_inertia
 
+    !> The cross product a x b of two vectors.
     pure function cross(a, b) result(c)
         real(dp), intent(in) :: a(3), b(3)
         real(dp) :: c(3)
@@ -193,20 +195,29 @@ contains
     end function dashpot
 
     !> One cable in mode `mode`: support point s0, body point x with velocity v, natural
-    !! length l0.  Force on the body point and the cable's state.
+    !! length l0.  Force on the body point and the cable's state.  given(1:2) > -1: the
+    !! stretch |s| - l0 and its rate as known (elastic_gen, where they are states), used
+    !! for the tension instead of their values from x and v (the same up to roundoff; at
+    !! k = 1e8 the roundoff of |s| - l0 alone is 1e-8 of the weight).
     pure subroutine cable(sys, mode, s0, x, v, l0, f, tension, strain, length, rate, slack, &
-                          energy)
+                          energy, given)
         type(elastic_t), intent(in) :: sys
         integer, intent(in) :: mode             !! CABLE_AUTO, CABLE_TAUT or CABLE_SLACK
         real(dp), intent(in) :: s0(3), x(3), v(3), l0
         real(dp), intent(out) :: f(3), tension, strain, length, rate, energy
         logical, intent(out) :: slack
+        real(dp), intent(in), optional :: given(2)  !! stretch and stretch rate
         real(dp) :: s(3), u(3)
         s = x - s0
         length = norm2(s)
         u = s/length
         rate = dot_product(u, v)
         strain = (length - l0)/l0
+        if (present(given)) then
+            strain = given(1)/l0
+            length = l0 + given(1)
+            rate = given(2)
+        end if
         tension = 0.0_dp
         energy = 0.0_dp
         if (strain > 0.0_dp) energy = 0.5_dp*sys%stiffness*l0*strain**2
@@ -243,6 +254,22 @@ contains
             g(j) = min(sys%stiffness*strain, sys%stiffness*strain + dashpot(sys, l0(j))*rate)
         end do
     end function cable_switch
+
+    !> cable_switch from the cables' stretches |s_j| - L0_j and their rates (stretch(:, j)
+    !! for cable j; elastic_gen, where they are states): g_j = min(k e, k e + c e') with
+    !! e = stretch/L0.
+    pure function cable_switch_stretched(sys, stretch) result(g)
+        type(elastic_t), intent(in) :: sys
+        real(dp), intent(in) :: stretch(2, 2)   !! (stretch, rate) of BC, AD (b', b'/tau)
+        real(dp) :: g(2)
+        real(dp) :: l0(2)
+        integer :: j
+        l0 = natural_lengths(sys)
+        do j = 1, 2
+            g(j) = min(sys%stiffness*stretch(1, j)/l0(j), sys%stiffness*stretch(1, j)/l0(j) + &
+                       dashpot(sys, l0(j))*stretch(2, j))
+        end do
+    end function cable_switch_stretched
 
     !> Body points C (j = 1) and D (j = 2) and their velocities in n components, and the
     !! supports B and A, at state y.
@@ -319,12 +346,14 @@ contains
         if (sys%l0(2) > 0.0_dp) l0(2) = sys%l0(2)
     end function natural_lengths
 
-    !> Derivative of the state and the cables' state.
-    pure subroutine dynamics(sys, y, ydot, cab)
+    !> Derivative of the state and the cables' state; stretch: the cables' stretches and
+    !! their rates as known (stretch(:, j) for cable j, see cable).
+    pure subroutine dynamics(sys, y, ydot, cab, stretch)
         type(elastic_t), intent(in) :: sys
         real(dp), intent(in) :: y(:)
         real(dp), intent(out) :: ydot(:)
         type(elastic_cables_t), intent(out) :: cab
+        real(dp), intent(in), optional :: stretch(2, 2)
         real(dp) :: r(3, 3), x(3, 2), v(3, 2), f(3), force(3), torque(3)
         real(dp) :: ib(3, 3), ibinv(3, 3), wb(3), q(4), s0(3, 2), l0(2), en(2)
         integer :: j
@@ -336,9 +365,15 @@ contains
         force = [0.0_dp, 0.0_dp, -1.0_dp]
         torque = 0.0_dp
         do j = 1, 2
-            call cable(sys, sys%mode(j), s0(:, j), x(:, j), v(:, j), l0(j), f, &
-                       cab%tension(j), cab%strain(j), cab%length(j), cab%length_rate(j), &
-                       cab%slack(j), en(j))
+            if (present(stretch)) then
+                call cable(sys, sys%mode(j), s0(:, j), x(:, j), v(:, j), l0(j), f, &
+                           cab%tension(j), cab%strain(j), cab%length(j), cab%length_rate(j), &
+                           cab%slack(j), en(j), stretch(:, j))
+            else
+                call cable(sys, sys%mode(j), s0(:, j), x(:, j), v(:, j), l0(j), f, &
+                           cab%tension(j), cab%strain(j), cab%length(j), cab%length_rate(j), &
+                           cab%slack(j), en(j))
+            end if
             force = force + f
             torque = torque + cross(x(:, j) - y(1:3), f)
         end do
@@ -361,6 +396,22 @@ contains
         if (.not. (dot_product(y(7:10), y(7:10)) > 0.0_dp)) &
             call set_error(stat, ERR_NUMERIC, 'elastic model: zero orientation quaternion')
     end subroutine check_quaternion
+
+    !> elastic_rhs with the cables' stretches |s_j| - L0_j and their rates given
+    !! (stretch(:, j) for cable j): the tensions from these (elastic_gen, where they are
+    !! states), the directions of the forces from the pose.
+    subroutine elastic_rhs_stretched(sys, y, stretch, ydot, stat)
+        type(elastic_t), intent(in) :: sys
+        real(dp), intent(in) :: y(:)            !! elastic state (13)
+        real(dp), intent(in) :: stretch(2, 2)   !! (stretch, rate) of BC, AD (b', b'/tau)
+        real(dp), intent(out) :: ydot(:)        !! the derivative of y
+        type(status_t), intent(out) :: stat
+        type(elastic_cables_t) :: cab
+        ydot = 0.0_dp
+        call check_quaternion(y, stat)
+        if (stat%code /= STATUS_OK) return
+        call dynamics(sys, y, ydot, cab, stretch)
+    end subroutine elastic_rhs_stretched
 
     !> Right-hand side: Newton's and Euler's equations with the two spring-dashpot cables.
     subroutine elastic_rhs(sys, t, y, ydot, stat)

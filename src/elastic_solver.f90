@@ -1,10 +1,11 @@
-!> LSODA on the elastic-cable model with the cables' taut/slack modes as a discrete state.
+!> The elastic-cable model's integration, by Radau IIA (module radau, the default) or LSODA,
+!! with the cables' taut/slack modes as a discrete state.
 !!
 !! The tension law of elastic_model has a kink where a cable goes slack.  An implicit
 !! method's Newton iteration that crosses it does not converge, and at high stiffness the
 !! iterates cross it all the time: at k = 1e8 a cable's static stretch is 1e-8 b', inside
 !! the position tolerance.  On the cylinder of Figs. 4-6 at k = 1e8 the law decided at each
-!! evaluation costs 70 666 steps and 12 425 convergence failures over two torsional
+!! evaluation costs LSODA 70 666 steps and 12 425 convergence failures over two torsional
 !! periods (rtol 1e-8), as many steps as an explicit method would take.
 !!
 !! This driver keeps each cable in a fixed mode (CABLE_TAUT: the smooth spring-dashpot;
@@ -13,21 +14,32 @@
 !! g = min(k eps, k eps + c d|s|/dtau) (elastic_model cable_switch) at the step end.  A cable
 !! whose g has left its mode's sign (taut: g > 0; slack: g <= 0) switches: the switch time
 !! is located by bisection in the step's dense output, to a few units of roundoff in tau,
-!! and the step is cut there.  The new modes take effect, and LSODA restarts from the
-!! state at the switch, at the beginning of the next call of step.  At every step end the
+!! and the step is cut there.  The new modes take effect, and the integrator restarts from
+!! the state at the switch, at the beginning of the next call of step.  At every step end the
 !! modes therefore agree with the law decided at each evaluation, and the taut/slack
 !! history is known to roundoff in tau: slack_time, slack_intervals and the list of slack
 !! intervals (slack_list) are exact rather than sampled.
 !!
-!! A switch in and out of one mode inside a single step (a slack interval shorter than a
-!! step, with g of the same sign at both ends) is not seen; the error test keeps steps
-!! short where the motion of the cables changes quickly.
+!! Both integrators serve through the same few calls (init, step, dense, counters): the
+!! integrator of the current segment between switches is SOLVER_RADAU (radau_t, which
+!! steps over the stiff, lightly damped stretching oscillations) or SOLVER_LSODA (lsoda_t).
+!! A Radau segment restarts with the step size the last one would have tried next.
+!!
+!! In the generalized coordinates (Radau) the switching functions are functions of four
+!! state components, the stretches and their rates, and are sampled at NSAMPLE = 8 points
+!! of every step, so a slack interval longer than an eighth of a step is seen.  In the
+!! maximal coordinates (LSODA) they are checked at the step end only: a switch in and out
+!! of one mode inside a single step is not seen there; the error test keeps steps short
+!! where the motion of the cables changes quickly.
 module elastic_solver
     use kinds, only: dp
     use status, only: status_t, set_error, ERR_NUMERIC, STATUS_OK
-    use lsoda, only: lsoda_t, lsoda_stats_t, METHOD_BDF
-    use elastic_model, only: elastic_t, cable_switch, natural_lengths, ELASTIC_NSTATE, &
-                             CABLE_TAUT, CABLE_SLACK
+    use lsoda, only: lsoda_stats_t, METHOD_BDF
+    use stepper, only: stepper_t, SOLVER_LSODA, SOLVER_RADAU
+    use elastic_model, only: elastic_t, cable_switch, cable_switch_stretched, natural_lengths, &
+                             ELASTIC_NSTATE, CABLE_TAUT, CABLE_SLACK
+    use elastic_gen, only: elastic_gen_t, gen_to_maximal, maximal_to_gen, chart_quality, &
+                           GEN_NSTATE, GEN_ERR_CHART
     implicit none
     private
 
@@ -38,6 +50,16 @@ module elastic_solver
     !> Chatter: this many switches in a row, each after at most QUICK_STEPS steps of its
     !! mode, stop the integration (the tolerance does not resolve the cables' stretch).
     integer, parameter :: MAX_QUICK_SWITCHES = 100, QUICK_STEPS = 2
+    !> The integrators (elastic_solver_t%init method; module stepper).
+    public :: SOLVER_LSODA, SOLVER_RADAU
+    !> The coordinates of a segment: maximal (elastic_model) or generalized (elastic_gen).
+    integer, parameter :: COORDS_MAX = 1, COORDS_GEN = 2
+    !> The generalized chart is left below this regularity (elastic_gen chart_quality) and
+    !! entered again above QUALITY_ENTER.
+    real(dp), parameter :: QUALITY_LEAVE = 0.05_dp, QUALITY_ENTER = 0.1_dp
+    !> In the generalized coordinates the switching functions are sampled at this many
+    !! equally spaced points of every step (they are functions of four state components).
+    integer, parameter :: NSAMPLE = 8
 
     !> One slack interval of one cable.
     type, public :: slack_interval_t
@@ -50,7 +72,13 @@ module elastic_solver
     !> The integration of one elastic run.
     type, public :: elastic_solver_t
         private
-        type(lsoda_t) :: ls                     ! the integrator of the current mode
+        integer :: method = SOLVER_RADAU        ! SOLVER_RADAU or SOLVER_LSODA
+        type(stepper_t) :: it                   ! the integrator of the current segment
+        logical :: use_gen = .true.             ! Radau: generalized coordinates where regular
+        integer :: coords = COORDS_MAX          ! coordinates of the current segment
+        type(elastic_gen_t) :: gen              ! the model in generalized coordinates
+        real(dp) :: yg_ref(GEN_NSTATE) = 0.0_dp ! last generalized state (angle branches)
+        logical :: have_ref = .false.
         logical :: ready = .false.
         real(dp) :: rtol = 0.0_dp
         real(dp), allocatable :: atol(:)
@@ -94,19 +122,30 @@ contains
     end function initial_modes
 
     !> Start an elastic integration at (t0, y0): the modes from the state (initial_modes, set
-    !! in sys%mode), then LSODA as lsoda_t%init (rtol, atol of size 1 or 13, tcrit;
-    !! nonstiff_only: Adams throughout, for comparisons).
-    subroutine es_init(s, sys, t0, y0, rtol, atol, stat, tcrit, nonstiff_only)
+    !! in sys%mode), then the integrator as its init (rtol, atol of size 1 or 13, tcrit).
+    subroutine es_init(s, sys, t0, y0, rtol, atol, stat, tcrit, nonstiff_only, method, &
+                       maximal_only)
         class(elastic_solver_t), intent(inout) :: s
         type(elastic_t), intent(inout) :: sys   !! the model; its modes are set here
         real(dp), intent(in) :: t0, y0(:), rtol, atol(:)
-        type(status_t), intent(out) :: stat     !! lsoda_t%init's
+        type(status_t), intent(out) :: stat     !! the integrator's init's
         real(dp), intent(in), optional :: tcrit !! no step goes past tcrit
-        logical, intent(in), optional :: nonstiff_only  !! never switch to BDF
+        logical, intent(in), optional :: nonstiff_only  !! LSODA: never switch to BDF
+                                                !! (the non-stiff method alone, comparisons)
+        integer, intent(in), optional :: method !! SOLVER_RADAU (default) or SOLVER_LSODA;
+                                                !! nonstiff_only implies SOLVER_LSODA
+        logical, intent(in), optional :: maximal_only  !! Radau: never the generalized
+                                                !! coordinates (comparisons)
         integer :: j
         s%ready = .false.
         s%adams_only = .false.
         if (present(nonstiff_only)) s%adams_only = nonstiff_only
+        s%method = SOLVER_RADAU
+        if (present(method)) s%method = method
+        if (s%adams_only) s%method = SOLVER_LSODA
+        s%use_gen = s%method == SOLVER_RADAU
+        if (present(maximal_only)) s%use_gen = s%use_gen .and. .not. maximal_only
+        s%have_ref = .false.
         s%rtol = rtol
         s%atol = atol
         s%have_tcrit = present(tcrit)
@@ -126,36 +165,99 @@ contains
         do j = 1, 2
             if (sys%mode(j) == CABLE_SLACK) call open_interval(s, j, t0)
         end do
-        call start_lsoda(s, sys, t0, y0, stat, .false.)
+        call start_segment(s, sys, t0, y0, stat, .false., 0.0_dp)
         s%ready = stat%code == STATUS_OK
     end subroutine es_init
 
-    subroutine start_lsoda(s, sys, t0, y0, stat, bdf)
+    !> Start the integrator of a segment at (t0, y0) (maximal state).  LSODA: bdf = first
+    !! step with BDF; Radau: h0 > 0 the first step to try (0: its own estimate), in the
+    !! generalized coordinates where the chart is regular enough (QUALITY_ENTER), else in
+    !! the maximal ones; Radau gives every coordinate the absolute tolerance atol(1).
+    subroutine start_segment(s, sys, t0, y0, stat, bdf, h0)
         type(elastic_solver_t), intent(inout) :: s
         type(elastic_t), intent(inout) :: sys
         real(dp), intent(in) :: t0, y0(:)
         type(status_t), intent(out) :: stat
-        logical, intent(in) :: bdf              !! first step with BDF
-        if (s%have_tcrit) then
-            call s%ls%init(sys, t0, y0, s%rtol, s%atol, stat, tcrit=s%tcrit, &
+        logical, intent(in) :: bdf              !! LSODA: first step with BDF
+        real(dp), intent(in) :: h0              !! Radau: first step (0: estimated)
+        real(dp) :: yg(GEN_NSTATE)
+        s%coords = COORDS_MAX
+        if (s%use_gen) then
+            if (chart_quality(sys, y0) > QUALITY_ENTER) then
+                s%gen%el = sys
+                if (s%have_ref) then
+                    call maximal_to_gen(sys, y0, yg, stat, s%yg_ref)
+                else
+                    call maximal_to_gen(sys, y0, yg, stat)
+                end if
+                if (stat%code == STATUS_OK) s%coords = COORDS_GEN
+            end if
+        end if
+        if (s%coords == COORDS_GEN) then
+            s%yg_ref = yg
+            s%have_ref = .true.
+            if (s%have_tcrit) then
+                call s%it%init(s%gen, t0, yg, s%rtol, s%atol(1:1), stat, SOLVER_RADAU, &
+                               tcrit=s%tcrit, h0=h0)
+            else
+                call s%it%init(s%gen, t0, yg, s%rtol, s%atol(1:1), stat, SOLVER_RADAU, h0=h0)
+            end if
+        else if (s%method == SOLVER_RADAU .and. s%have_tcrit) then
+            call s%it%init(sys, t0, y0, s%rtol, s%atol(1:1), stat, SOLVER_RADAU, &
+                           tcrit=s%tcrit, h0=h0)
+        else if (s%method == SOLVER_RADAU) then
+            call s%it%init(sys, t0, y0, s%rtol, s%atol(1:1), stat, SOLVER_RADAU, h0=h0)
+        else if (s%have_tcrit) then
+            call s%it%init(sys, t0, y0, s%rtol, s%atol, stat, SOLVER_LSODA, tcrit=s%tcrit, &
                            start_bdf=bdf .and. .not. s%adams_only, nonstiff_only=s%adams_only)
         else
-            call s%ls%init(sys, t0, y0, s%rtol, s%atol, stat, &
+            call s%it%init(sys, t0, y0, s%rtol, s%atol, stat, SOLVER_LSODA, &
                            start_bdf=bdf .and. .not. s%adams_only, nonstiff_only=s%adams_only)
         end if
-    end subroutine start_lsoda
+    end subroutine start_segment
 
-    !> One step: the restart after a switch located by the previous call, one LSODA step,
-    !! and the location of a switch in it (the step then ends at the switch).  After it,
-    !! dense() gives the solution in [t_current - (step), t_current] (stats()%t_current).
+    !> The counters of the current segment's integrator (module stepper: in LSODA's terms).
+    function segment_stats(s) result(st)
+        type(elastic_solver_t), intent(in) :: s
+        type(lsoda_stats_t) :: st
+        st = s%it%stats()
+    end function segment_stats
+
+    !> Solution (k = 0) or its derivative (k = 1; maximal coordinates only) at t in the
+    !! current segment's last step, as a maximal state.
+    subroutine segment_dense(s, t, k, dky, stat)
+        type(elastic_solver_t), intent(in) :: s
+        real(dp), intent(in) :: t
+        integer, intent(in) :: k
+        real(dp), intent(out) :: dky(:)
+        type(status_t), intent(out) :: stat
+        real(dp) :: yg(GEN_NSTATE)
+        if (s%coords == COORDS_GEN) then
+            dky = 0.0_dp
+            if (k /= 0) then
+                call set_error(stat, ERR_NUMERIC, 'elastic solver dense: only k = 0 in the '// &
+                    'generalized coordinates')
+                return
+            end if
+            call s%it%dense(t, 0, yg, stat)
+            if (stat%code == STATUS_OK) dky = gen_to_maximal(s%gen%el, yg)
+        else
+            call s%it%dense(t, k, dky, stat)
+        end if
+    end subroutine segment_dense
+
+    !> One step: the restart after a switch located by the previous call, one integrator
+    !! step, and the location of a switch in it (the step then ends at the switch).  After
+    !! it, dense() gives the solution in [t_current - (step), t_current] (stats()%t_current).
     subroutine es_step(s, sys, stat, tout)
         class(elastic_solver_t), intent(inout) :: s
         type(elastic_t), intent(inout) :: sys
-        type(status_t), intent(out) :: stat     !! LSODA's failure, prefixed with the time
-        real(dp), intent(in), optional :: tout  !! as lsoda_t%step
+        type(status_t), intent(out) :: stat     !! the integrator's failure, with the time
+        real(dp), intent(in), optional :: tout  !! as lsoda_t%step, radau_t%step
         type(lsoda_stats_t) :: st
-        real(dp) :: y(ELASTIC_NSTATE), t0, t1
-        logical :: sw(2), bdf, near
+        real(dp) :: y(ELASTIC_NSTATE), ys(ELASTIC_NSTATE), t0, t1, a, b, quality
+        logical :: sw(2), bdf, near, recoord
+        integer :: attempt, i, nsam
         if (.not. s%ready) then
             call set_error(stat, ERR_NUMERIC, 'elastic solver: not initialised')
             return
@@ -165,12 +267,14 @@ contains
             ! (BDF on a stiff problem stays BDF; starting BDF at every snap of a cable that
             ! is not stiff costs steps and accuracy: at k = 1e4 without damping, test
             ! 'elastic: slack cables', 18 % more steps and twice the energy error)
-            st = s%ls%stats()
+            ! (Radau: with the step it would have tried next, at most the last one taken)
+            st = segment_stats(s)
             call add_counts(s%done, st)
             bdf = st%method_last == METHOD_BDF
             sys%mode = s%mode_next
             s%pending = .false.
-            call start_lsoda(s, sys, s%t_now, s%y_switch, stat, bdf)
+            call start_segment(s, sys, s%t_now, s%y_switch, stat, bdf, &
+                               min(abs(st%h_next), abs(st%h_last)))
             if (stat%code /= STATUS_OK) return
         end if
         t0 = s%t_now
@@ -179,22 +283,69 @@ contains
         near = .true.
         if (present(tout)) near = .not. (abs(tout - t0) > 100.0_dp*epsilon(1.0_dp)* &
                                          max(1.0_dp, abs(t0)))
-        if (near) then
-            call s%ls%step(sys, stat)
-        else
-            call s%ls%step(sys, stat, tout)
-        end if
+        do attempt = 1, 2
+            if (s%coords == COORDS_GEN) then
+                s%gen%el = sys
+                if (near) then
+                    call s%it%step(s%gen, stat)
+                else
+                    call s%it%step(s%gen, stat, tout)
+                end if
+            else if (near) then
+                call s%it%step(sys, stat)
+            else
+                call s%it%step(sys, stat, tout)
+            end if
+            ! a step that ran into a singularity of the generalized chart is taken again in
+            ! the maximal coordinates, from the state at t0
+            if (stat%code /= GEN_ERR_CHART .or. s%coords /= COORDS_GEN .or. attempt > 1) exit
+            st = segment_stats(s)
+            call add_counts(s%done, st)
+            call segment_dense(s, t0, 0, y, stat)
+            if (stat%code /= STATUS_OK) return
+            s%use_gen = .false.
+            call start_segment(s, sys, t0, y, stat, .false., abs(st%h_next))
+            s%use_gen = .true.
+            if (stat%code /= STATUS_OK) return
+        end do
         if (stat%code /= STATUS_OK) return
-        st = s%ls%stats()
+        st = segment_stats(s)
         t1 = st%t_current
-        call s%ls%dense(t1, 0, y, stat)
+        ! the switching functions, at NSAMPLE points of the step in the generalized
+        ! coordinates (there they are functions of the stretch states), else at its end; the
+        ! first switch located by bisection from the sample before it
+        nsam = 1
+        if (s%coords == COORDS_GEN) nsam = NSAMPLE
+        a = t0
+        do i = 1, nsam
+            b = t1
+            if (i < nsam) b = t0 + (t1 - t0)*real(i, dp)/nsam
+            call switched_at(s, sys, b, ys, sw, stat)
+            if (stat%code /= STATUS_OK) return
+            if (any(sw)) exit
+            a = b
+        end do
+        if (any(sw)) call locate_switch(s, sys, a, b, ys, sw, stat)
         if (stat%code /= STATUS_OK) return
-        sw = switched(sys, y)
-        if (any(sw)) call locate_switch(s, sys, t0, t1, y, sw, stat)
-        if (stat%code /= STATUS_OK) return
+        t1 = b
+        if (s%coords == COORDS_GEN) then
+            y = gen_to_maximal(s%gen%el, ys(1:GEN_NSTATE), quality)
+            s%yg_ref = ys(1:GEN_NSTATE)
+            recoord = quality < QUALITY_LEAVE
+        else
+            y = ys
+            recoord = .false.
+            if (s%use_gen) recoord = chart_quality(sys, y) > QUALITY_ENTER
+        end if
         s%t_prev = t0
         s%t_now = t1
         call account(s, sys%mode, t0, t1)
+        if (recoord .and. .not. any(sw)) then
+            ! into or out of the generalized chart: a restart at the step end, modes kept
+            s%y_switch = y
+            s%mode_next = sys%mode
+            s%pending = .true.
+        end if
         if (any(sw)) then
             s%y_switch = y
             s%mode_next = sys%mode
@@ -209,36 +360,31 @@ contains
             if (s%quick >= MAX_QUICK_SWITCHES) call chatter_error(s, sys, stat)
         end if
     contains
-        !> Find the first switch in (t0, t1]: t1 and y become the switch time and state, sw
-        !! the cables switching there.
-        subroutine locate_switch(s, sys, t0, t1, y, sw, stat)
+        !> Bisection for the first switch in (a, b], the cables sw switching at b with the
+        !! state ys there (switched_at): b, ys and sw become the switch's.
+        subroutine locate_switch(s, sys, a, b, ys, sw, stat)
             type(elastic_solver_t), intent(inout) :: s
             type(elastic_t), intent(in) :: sys
-            real(dp), intent(in) :: t0
-            real(dp), intent(inout) :: t1, y(:)
+            real(dp), intent(inout) :: a, b, ys(:)
             logical, intent(inout) :: sw(2)
             type(status_t), intent(out) :: stat
-            real(dp) :: a, b, m, ym(ELASTIC_NSTATE)
+            real(dp) :: m, ym(ELASTIC_NSTATE)
             logical :: swm(2)
             integer :: it
             stat%code = STATUS_OK
-            a = t0
-            b = t1
             do it = 1, MAX_BISECT
                 m = a + 0.5_dp*(b - a)
                 if (.not. (m > a .and. m < b)) exit
-                call s%ls%dense(m, 0, ym, stat)
+                call switched_at(s, sys, m, ym, swm, stat)
                 if (stat%code /= STATUS_OK) return
-                swm = switched(sys, ym)
                 if (any(swm)) then
                     b = m
-                    y = ym
+                    ys = ym
                     sw = swm
                 else
                     a = m
                 end if
             end do
-            t1 = b
         end subroutine locate_switch
     end subroutine es_step
 
@@ -268,6 +414,39 @@ contains
         sw = (sys%mode == CABLE_TAUT .and. .not. (g > 0.0_dp)) .or. &
              (sys%mode == CABLE_SLACK .and. g > 0.0_dp)
     end function switched
+
+    !> The cables switched at t in the current segment's last step, and the state there
+    !! (generalized coordinates: y(1:GEN_NSTATE), the switching functions from its stretch
+    !! states; else the maximal state).
+    subroutine switched_at(s, sys, t, y, sw, stat)
+        type(elastic_solver_t), intent(in) :: s
+        type(elastic_t), intent(in) :: sys
+        real(dp), intent(in) :: t
+        real(dp), intent(out) :: y(ELASTIC_NSTATE)
+        logical, intent(out) :: sw(2)
+        type(status_t), intent(out) :: stat
+        y = 0.0_dp
+        sw = .false.
+        if (s%coords == COORDS_GEN) then
+            call s%it%dense(t, 0, y(1:GEN_NSTATE), stat)
+            if (stat%code == STATUS_OK) sw = switched_gen(sys, y(1:GEN_NSTATE))
+        else
+            call segment_dense(s, t, 0, y, stat)
+            if (stat%code == STATUS_OK) sw = switched(sys, y)
+        end if
+    end subroutine switched_at
+
+    !> switched for a generalized state (elastic_gen): the switching functions from its
+    !! stretch states.
+    pure function switched_gen(sys, yg) result(sw)
+        type(elastic_t), intent(in) :: sys
+        real(dp), intent(in) :: yg(:)
+        logical :: sw(2)
+        real(dp) :: g(2)
+        g = cable_switch_stretched(sys, reshape([yg(5), yg(11), yg(6), yg(12)], [2, 2]))
+        sw = (sys%mode == CABLE_TAUT .and. .not. (g > 0.0_dp)) .or. &
+             (sys%mode == CABLE_SLACK .and. g > 0.0_dp)
+    end function switched_gen
 
     !> Slack time of the interval [t0, t1] run in the modes `mode`.
     subroutine account(s, mode, t0, t1)
@@ -316,7 +495,7 @@ contains
         s%slack_n(j) = s%slack_n(j) + 1
     end subroutine open_interval
 
-    !> Add the counters of a finished LSODA segment to the totals.
+    !> Add the counters of a finished segment to the totals.
     pure subroutine add_counts(total, seg)
         type(lsoda_stats_t), intent(inout) :: total
         type(lsoda_stats_t), intent(in) :: seg
@@ -344,7 +523,7 @@ contains
             call set_error(stat, ERR_NUMERIC, trim(buf))
             return
         end if
-        call s%ls%dense(t, k, dky, stat)
+        call segment_dense(s, t, k, dky, stat)
     end subroutine es_dense
 
     !> Steps until tout is reached and the state there (dense output).  Forward only.
@@ -382,12 +561,13 @@ contains
         call s%dense(tout, 0, y, stat)
     end subroutine es_integrate
 
-    !> LSODA's counters summed over the segments between switches; t_current is the end of
-    !! the last step (the switch time when a switch ended it).
+    !> The integrator's counters summed over the segments between switches, in LSODA's
+    !! terms (segment_stats); t_current is the end of the last step (the switch time when a
+    !! switch ended it).
     function es_stats(s) result(st)
         class(elastic_solver_t), intent(in) :: s
         type(lsoda_stats_t) :: st
-        st = s%ls%stats()
+        st = segment_stats(s)
         call add_counts(st, s%done)
         st%t_current = s%t_now
     end function es_stats

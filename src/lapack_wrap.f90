@@ -10,6 +10,7 @@ module lapack_wrap
     private
 
     public :: la_solve, la_lu_factor, la_lu_solve, la_eig, la_geig
+    public :: la_zlu_factor, la_zlu_solve
 
     interface
         subroutine dgetf2(m, n, a, lda, ipiv, info)
@@ -51,6 +52,21 @@ module lapack_wrap
             real(dp), intent(out) :: work(*)
             integer, intent(out) :: info
         end subroutine dggev
+        subroutine zgetrf(m, n, a, lda, ipiv, info)
+            import :: dp
+            integer, intent(in) :: m, n, lda
+            complex(dp), intent(inout) :: a(lda, *)
+            integer, intent(out) :: ipiv(*), info
+        end subroutine zgetrf
+        subroutine zgetrs(trans, n, nrhs, a, lda, ipiv, b, ldb, info)
+            import :: dp
+            character(len=1), intent(in) :: trans
+            integer, intent(in) :: n, nrhs, lda, ldb
+            complex(dp), intent(in) :: a(lda, *)
+            integer, intent(in) :: ipiv(*)
+            complex(dp), intent(inout) :: b(ldb, *)
+            integer, intent(out) :: info
+        end subroutine zgetrs
     end interface
 
 contains
@@ -130,6 +146,56 @@ contains
         call dgetrs('N', n, 1, lu, n, ipiv, b, n, info)
         if (info /= 0) call set_error(stat, ERR_NUMERIC, 'la_lu_solve (dgetrs): illegal argument')
     end subroutine la_lu_solve
+
+    !> LU factorisation with partial pivoting of a complex square matrix (LAPACK ZGETRF).
+    !!
+    !! a    [in,out] complex(dp)(n,n): the matrix; overwritten by L and U.
+    !! ipiv [out]    integer(n):       pivot indices.
+    !! stat [out]: ERR_NUMERIC when the shapes disagree or U is exactly singular (INFO > 0).
+    subroutine la_zlu_factor(a, ipiv, stat)
+        complex(dp), intent(inout) :: a(:, :)
+        integer, intent(out) :: ipiv(:)
+        type(status_t), intent(out) :: stat
+        integer :: n, info
+        character(len=80) :: buf
+        n = size(a, 1)
+        if (size(a, 2) /= n .or. size(ipiv) < n) then
+            ipiv = 0
+            call set_error(stat, ERR_NUMERIC, 'la_zlu_factor: matrix is not square or ipiv '// &
+                'too short')
+            return
+        end if
+        call zgetrf(n, n, a, n, ipiv, info)
+        if (info /= 0) then
+            write (buf, '(a,i0)') 'la_zlu_factor (zgetrf): singular matrix, U(i,i) = 0 at '// &
+                'i = ', info
+            if (info < 0) write (buf, '(a,i0)') 'la_zlu_factor (zgetrf): illegal argument ', -info
+            call set_error(stat, ERR_NUMERIC, trim(buf))
+        end if
+    end subroutine la_zlu_factor
+
+    !> Solve the complex system A x = b with the factors from la_zlu_factor (LAPACK ZGETRS,
+    !! no transpose).
+    !!
+    !! lu   [in]     complex(dp)(n,n): factors from la_zlu_factor.
+    !! ipiv [in]     integer(n):       pivots from la_zlu_factor.
+    !! b    [in,out] complex(dp)(n):   right-hand side on entry, solution on return.
+    !! stat [out]: ERR_NUMERIC when the shapes disagree.
+    subroutine la_zlu_solve(lu, ipiv, b, stat)
+        complex(dp), intent(in) :: lu(:, :)
+        integer, intent(in) :: ipiv(:)
+        complex(dp), intent(inout) :: b(:)
+        type(status_t), intent(out) :: stat
+        integer :: n, info
+        n = size(lu, 1)
+        if (size(lu, 2) /= n .or. size(b) /= n .or. size(ipiv) < n) then
+            call set_error(stat, ERR_NUMERIC, 'la_zlu_solve: factor, pivot and vector shapes '// &
+                'disagree')
+            return
+        end if
+        call zgetrs('N', n, 1, lu, n, ipiv, b, n, info)
+        if (info /= 0) call set_error(stat, ERR_NUMERIC, 'la_zlu_solve (zgetrs): illegal argument')
+    end subroutine la_zlu_solve
 
     !> Eigenvalues of a general real square matrix (LAPACK DGEEV, no eigenvectors).
     !!

@@ -9,7 +9,8 @@ module simulate
     use geometry, only: pendulum_t, raised_angles, solve_theta5, beta_coeffs
     use bifilar_model, only: bifilar_t, motion_t, chart_state, evaluate, paper_angles, &
                              chart_positions, NSTATE
-    use lsoda, only: lsoda_t, lsoda_stats_t, LSODA_ERR_TOO_MUCH_ACCURACY
+    use lsoda, only: lsoda_stats_t
+    use stepper, only: stepper_t, SOLVER_LSODA, SOLVER_RADAU, too_much_accuracy
     use elastic_model, only: elastic_t, elastic_cables_t, elastic_start, elastic_evaluate, &
                              elastic_atol, ELASTIC_NSTATE
     use elastic_solver, only: elastic_solver_t, slack_interval_t
@@ -39,10 +40,11 @@ module simulate
         real(dp) :: slack_time(2) = 0.0_dp
         integer :: slack_intervals(2) = 0
         integer :: cable_switches = 0
+        character(len=8) :: method = ''         !! the integrator used: 'lsoda' or 'radau'
     end type run_summary_t
 
     public :: make_pendulum, start_state, run_simulation, model_checks
-    public :: angle_difference, sway_of, tighter_rtol
+    public :: angle_difference, sway_of, tighter_rtol, integrator_of
 
     !> Most internal steps between two output rows before the run is given up.
     integer, parameter :: MAX_STEPS_PER_ROW = 500000
@@ -134,7 +136,7 @@ contains
         type(run_summary_t), intent(out) :: sm  !! figures of the run
         type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_MODEL or ERR_IO
         type(bifilar_t) :: sys
-        type(lsoda_t) :: solver, solver2
+        type(stepper_t) :: solver, solver2
         type(lsoda_stats_t) :: st
         type(motion_t) :: mo
         real(dp) :: y(NSTATE), ystep(NSTATE), th0(5), tau, e0, th3, t_cpu0
@@ -157,7 +159,9 @@ contains
 
         call cpu_time(t_cpu0)
         ! tcrit = tau_end: no step goes past the end, so every step end checked lies in the run
-        call solver%init(sys, 0.0_dp, y, d%rtol, [d%atol], stat, tcrit=d%tau_end)
+        sm%method = merge('radau', 'lsoda', integrator_of(d) == SOLVER_RADAU)
+        call solver%init(sys, 0.0_dp, y, d%rtol, [d%atol], stat, integrator_of(d), &
+                         tcrit=d%tau_end)
         if (stat%code /= 0) then
             call atomic_abort(u, datpath)
             return
@@ -165,7 +169,8 @@ contains
         if (d%error_estimate) then
             ! the same run at a tolerance 100 times tighter, in step with the rows
             rt2 = tighter_rtol(d%rtol)
-            call solver2%init(sys, 0.0_dp, y, rt2, [d%atol*rt2/d%rtol], stat, tcrit=d%tau_end)
+            call solver2%init(sys, 0.0_dp, y, rt2, [d%atol*rt2/d%rtol], stat, integrator_of(d), &
+                              tcrit=d%tau_end)
             if (stat%code /= 0) then
                 call atomic_abort(u, datpath)
                 return
@@ -194,7 +199,7 @@ contains
                 st = solver%stats()
                 if (stat%code /= 0) then
                     call explain_failure(solver, st%t_current, th3, stat)
-                    if (stat%code == LSODA_ERR_TOO_MUCH_ACCURACY) then
+                    if (too_much_accuracy(stat)) then
                         write (buf, '(2(a,es9.2))') '; &integration rtol = ', d%rtol, &
                             ', atol = ', d%atol
                         stat%msg = stat%msg//trim(buf)//': raise them (rtol >= 3e-14 works '// &
@@ -403,6 +408,7 @@ contains
         call write_kv(u, 'max_abs_energy_error', sm%max_abs_energy_error)
         call write_kv(u, 'max_abs_constraint_residual', sm%max_abs_constraint_residual)
         call write_kv(u, 'min_tension', sm%min_tension)
+        call write_kv(u, 'method', trim(sm%method))
         if (d%error_estimate) then
             call write_kv(u, 'error_estimate_rtol', sm%error_estimate_rtol)
             call write_kv(u, 'error_estimate_theta', sm%error_estimate_theta)
@@ -494,7 +500,9 @@ contains
         if (stat%code /= 0) return
 
         call cpu_time(t_cpu0)
-        call solver%init(sys, 0.0_dp, y, d%rtol, atol, stat, tcrit=d%tau_end)
+        sm%method = merge('radau', 'lsoda', integrator_of(d) == SOLVER_RADAU)
+        call solver%init(sys, 0.0_dp, y, d%rtol, atol, stat, tcrit=d%tau_end, &
+                         method=integrator_of(d))
         if (stat%code /= 0) then
             call atomic_abort(u, datpath)
             return
@@ -503,7 +511,7 @@ contains
             rt2 = tighter_rtol(d%rtol)
             sys2 = sys                           ! its own cable modes
             call solver2%init(sys2, 0.0_dp, y, rt2, elastic_atol(sys2, d%atol*rt2/d%rtol, rt2), &
-                              stat, tcrit=d%tau_end)
+                              stat, tcrit=d%tau_end, method=integrator_of(d))
             if (stat%code /= 0) then
                 call atomic_abort(u, datpath)
                 return
@@ -629,7 +637,7 @@ contains
     !! fails is located in the step (bisection on the dense output) for the diagnostic.
     subroutine check_validity(p, solver, t0, t1, y1, th3, stat)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
-        type(lsoda_t), intent(in) :: solver     !! after the step
+        type(stepper_t), intent(in) :: solver   !! after the step
         real(dp), intent(in) :: t0, t1          !! previous checked time (valid), step end
         real(dp), intent(in) :: y1(NSTATE)      !! state at t1
         real(dp), intent(in) :: th3             !! theta3 of the last row (branch choice)
@@ -674,7 +682,7 @@ contains
     !> An integrator failure: when the state reached is where the model's coordinates are
     !! singular (line CD vertical, cable BC horizontal), say so (ERR_MODEL).
     subroutine explain_failure(solver, t, th3, stat)
-        type(lsoda_t), intent(in) :: solver     !! after the failed step
+        type(stepper_t), intent(in) :: solver   !! after the failed step
         real(dp), intent(in) :: t               !! time reached
         real(dp), intent(in) :: th3             !! branch choice
         type(status_t), intent(inout) :: stat   !! the failure; replaced when explained
@@ -722,6 +730,16 @@ contains
         if (s(1:1) == '.') s = '0'//s
         if (s(1:2) == '-.') s = '-0'//s(2:)
     end function tau_text
+
+    !> The integrator of a deck's simulation: &integration method = 'radau' or 'lsoda', or
+    !! 'auto': Radau IIA for model = 'elastic' (stiff, lightly damped cables), LSODA for
+    !! the paper's model.
+    pure integer function integrator_of(d) result(m)
+        type(deck_t), intent(in) :: d           !! the deck
+        m = SOLVER_LSODA
+        if (trim(d%method) == 'radau' .or. (trim(d%method) == 'auto' .and. &
+                                            trim(d%model) == 'elastic')) m = SOLVER_RADAU
+    end function integrator_of
 
     !> The tolerance of the error-estimate rerun: rtol/100, but not below 3e-14 (the
     !! smallest the integrator honours).

@@ -6,6 +6,12 @@
 !! The reference is LSODA at rtol = 1e-13, confirmed by an independent method: fixed-step
 !! RK4 at steps h and h/2 combined by Richardson extrapolation, (16 y(h/2) - y(h))/15.
 !! Their largest difference is reported (`reference_agreement_*`); a test holds it small.
+!! The elastic model (model = 'elastic') adds a third curve, Radau IIA (its default
+!! integrator, in the generalized coordinates of elastic_gen), written to NAME.wp_radau.dat;
+!! its reference is Radau at rtol = 1e-13, confirmed by LSODA at rtol = 1e-13 in the
+!! maximal coordinates (an independent integrator in independent coordinates; agreement
+!! in `ref_second_*`) and by RK4 + Richardson where that stays below 4096 steps per
+!! output interval.
 !!
 !! Errors at the output times: error_theta = the largest angle error (theta1, theta4,
 !! theta5 and the direction of the cable BC, see simulate's angle_difference), error_Q =
@@ -20,7 +26,7 @@ module work_precision
     use ode_system, only: ode_system_t
     use elastic_model, only: elastic_t, elastic_start, elastic_atol, elastic_evaluate, &
                              elastic_chart, elastic_energy, ELASTIC_NSTATE, CABLE_AUTO, stretch_frequency
-    use elastic_solver, only: elastic_solver_t
+    use elastic_solver, only: elastic_solver_t, SOLVER_LSODA, SOLVER_RADAU
     use lsoda, only: lsoda_t, lsoda_stats_t
     use deck, only: deck_t, deck_echo
     use simulate, only: make_pendulum, start_state, angle_difference, sway_of
@@ -53,8 +59,11 @@ module work_precision
     type, public :: wp_result_t
         type(wp_point_t) :: lsoda(WP_NRTOL)
         type(wp_point_t) :: rk4(WP_NRK4)
-        real(dp) :: ref_agreement_theta = 0.0_dp   !! LSODA 1e-13 against RK4 + Richardson
+        type(wp_point_t) :: radau(WP_NRTOL)        !! model = 'elastic' only
+        real(dp) :: ref_agreement_theta = 0.0_dp   !! the reference against RK4 + Richardson
         real(dp) :: ref_agreement_q = 0.0_dp
+        !> model = 'elastic': the reference (Radau 1e-13) against LSODA 1e-13; -1 otherwise
+        real(dp) :: ref_second_theta = -1.0_dp, ref_second_q = -1.0_dp
         real(dp) :: ref_h = 0.0_dp                 !! RK4 step of the confirmation (coarser)
         integer :: nout = 0
     end type wp_result_t
@@ -92,8 +101,9 @@ contains
     end subroutine solve_lsoda
 
     !> LSODA on any system, atol of size 1 or n; the elastic model through elastic_solver
-    !! (the cables' taut/slack switches located and restarted).
-    subroutine solve_lsoda_sys(sys, y0, times, rtol, atol, ys, steps, nfe, stat)
+    !! (the cables' taut/slack switches located and restarted), by LSODA or, with method =
+    !! SOLVER_RADAU, by Radau IIA.
+    subroutine solve_lsoda_sys(sys, y0, times, rtol, atol, ys, steps, nfe, stat, method)
         class(ode_system_t), intent(inout) :: sys   !! the equations of motion
         real(dp), intent(in) :: y0(:)           !! state at times(0)
         real(dp), intent(in) :: times(0:)       !! output times, increasing
@@ -101,8 +111,11 @@ contains
         real(dp), intent(out) :: ys(:, 0:)      !! (n, 0:nout) states at the times
         integer, intent(out) :: steps, nfe      !! integrator counters
         type(status_t), intent(out) :: stat     !! the integrator's failure
+        integer, intent(in), optional :: method !! elastic model: SOLVER_LSODA (default) or
+                                                !! SOLVER_RADAU
         type(lsoda_t) :: solver
         type(elastic_solver_t) :: esolver
+        integer :: m
         type(lsoda_stats_t) :: st
         real(dp) :: tend
         integer :: k
@@ -111,7 +124,9 @@ contains
         tend = times(ubound(times, 1))
         select type (sys)
         type is (elastic_t)
-            call esolver%init(sys, times(0), y0, rtol, atol, stat, tcrit=tend)
+            m = SOLVER_LSODA
+            if (present(method)) m = method
+            call esolver%init(sys, times(0), y0, rtol, atol, stat, tcrit=tend, method=m)
             do k = 1, ubound(times, 1)
                 if (stat%code == 0) call esolver%integrate(sys, times(k), ys(:, k), stat)
             end do
@@ -256,11 +271,26 @@ contains
         allocate (yref(ns, 0:n), ys(ns, 0:n), yh1(ns, 0:n), yh2(ns, 0:n))
         ratio = d%atol/d%rtol
 
-        ! reference and its independent confirmation
-        call run_lsoda(WP_REF_RTOL, yref, stat, .true.)
-        if (stat%code /= 0) then
-            stat%msg = d%name//': work_precision reference (LSODA rtol 1e-13): '//stat%msg
-            return
+        ! reference and its independent confirmation (elastic model: Radau, confirmed by LSODA)
+        if (elastic) then
+            call run_adaptive(WP_REF_RTOL, yref, stat, .true., SOLVER_RADAU)
+            if (stat%code /= 0) then
+                stat%msg = d%name//': work_precision reference (Radau rtol 1e-13): '//stat%msg
+                return
+            end if
+            call run_adaptive(WP_REF_RTOL, ys, stat, .true., SOLVER_LSODA)
+            if (stat%code /= 0) then
+                stat%msg = d%name//': work_precision reference check (LSODA rtol 1e-13): '// &
+                           stat%msg
+                return
+            end if
+            call errors(ys, yref, res%ref_second_theta, res%ref_second_q, e1)
+        else
+            call run_adaptive(WP_REF_RTOL, yref, stat, .true., SOLVER_LSODA)
+            if (stat%code /= 0) then
+                stat%msg = d%name//': work_precision reference (LSODA rtol 1e-13): '//stat%msg
+                return
+            end if
         end if
         m = max(WP_REF_SUBSTEPS, 4*m_rk0)
         res%ref_h = d%dtau_out/m
@@ -279,15 +309,21 @@ contains
             res%ref_agreement_theta = -1.0_dp
             res%ref_agreement_q = -1.0_dp
         end if
-        if (loud) write (*, '(a,es9.2,a,es9.2,a,es9.2,a)') d%name// &
-            ': work_precision reference LSODA rtol 1e-13 against RK4 + Richardson (h = ', &
+        if (loud) write (*, '(a,es9.2,a,es9.2,a,es9.2,a)') d%name//': work_precision '// &
+            'reference '//ref_name()//' rtol 1e-13 against RK4 + Richardson (h = ', &
             res%ref_h, '): angles agree to ', res%ref_agreement_theta, ', Q to ', &
             res%ref_agreement_q, ''
+        if (loud .and. elastic) write (*, '(a,es9.2,a,es9.2)') d%name//': work_precision '// &
+            'reference Radau rtol 1e-13 against LSODA rtol 1e-13: angles agree to ', &
+            res%ref_second_theta, ', Q to ', res%ref_second_q
 
-        ! LSODA curve
+        ! LSODA curve, and Radau's for the elastic model
         do i = 1, WP_NRTOL
             res%lsoda(i)%rtol = 10.0_dp**(-2 - i)
-            call measure(res%lsoda(i), 0)
+            call measure(res%lsoda(i), 0, SOLVER_LSODA)
+            if (.not. elastic) cycle
+            res%radau(i)%rtol = res%lsoda(i)%rtol
+            call measure(res%radau(i), 0, SOLVER_RADAU)
         end do
 
         ! fixed-step RK4 curve
@@ -295,7 +331,7 @@ contains
             m = m_rk0*2**(i - 1)
             res%rk4(i)%h = d%dtau_out/m
             if (real(m, dp)*n > RK4_MAX_STEPS) cycle
-            call measure(res%rk4(i), m)
+            call measure(res%rk4(i), m, SOLVER_LSODA)
         end do
 
         ! files
@@ -314,6 +350,24 @@ contains
         path2 = outdir//'/'//d%name//'.wp_rk4.dat'
         call atomic_commit(u, path, stat)
         if (stat%code /= 0) return
+        if (elastic) then
+            path = outdir//'/'//d%name//'.wp_radau.dat'
+            call atomic_open(path, u, stat)
+            if (stat%code /= 0) return
+            call header(u, 'Radau IIA (generalized coordinates), rtol = 1e-3 ... 1e-12, atol = '// &
+                'rtol * (deck atol / deck rtol)')
+            write (u, '(a)') '# rtol cpu_seconds steps rhs_evaluations error_theta error_Q '// &
+                'max_abs_energy_error'
+            do i = 1, WP_NRTOL
+                if (.not. res%radau(i)%ok) cycle
+                write (u, '(es10.3,es14.6,2i10,3es14.6)') res%radau(i)%rtol, &
+                    res%radau(i)%cpu_seconds, res%radau(i)%steps, res%radau(i)%rhs_evaluations, &
+                    res%radau(i)%error_theta, res%radau(i)%error_q, &
+                    res%radau(i)%max_abs_energy_error
+            end do
+            call atomic_commit(u, path, stat)
+            if (stat%code /= 0) return
+        end if
         call atomic_open(path2, u, stat)
         if (stat%code /= 0) return
         call header(u, 'fixed-step classical Runge-Kutta 4, h = dtau_out / 2**k (elastic '// &
@@ -331,12 +385,12 @@ contains
 
     contains
 
-        !> One point of a curve: LSODA at pt%rtol (mm = 0) or RK4 with mm steps per output
-        !! interval, solved repeatedly until MIN_CPU; its CPU per solve, counters and
-        !! errors against the reference into pt (pt%ok: finished, all finite).
-        subroutine measure(pt, mm)
+        !> One point of a curve: LSODA or Radau (method) at pt%rtol (mm = 0) or RK4 with mm
+        !! steps per output interval, solved repeatedly until MIN_CPU; its CPU per solve,
+        !! counters and errors against the reference into pt (pt%ok: finished, all finite).
+        subroutine measure(pt, mm, method)
             type(wp_point_t), intent(inout) :: pt
-            integer, intent(in) :: mm
+            integer, intent(in) :: mm, method
             real(dp) :: total, c0, c1, e1, e2, e3
             integer :: nrep
             type(status_t) :: s1
@@ -347,7 +401,7 @@ contains
                 if (mm > 0) then
                     call run_rk4(mm, ys, s1)
                 else
-                    call run_lsoda(pt%rtol, ys, s1, .false.)
+                    call run_adaptive(pt%rtol, ys, s1, .false., method)
                 end if
                 call cpu_time(c1)
                 total = total + (c1 - c0)
@@ -366,25 +420,26 @@ contains
             pt%ok = all_finite([e1, e2, e3, pt%cpu_seconds])
         end subroutine measure
 
-        !> LSODA on the deck's system at rtol, atol = rtol * ratio (per state from
-        !! elastic_atol for the elastic model: the velocities' tolerance with the rtol term
-        !! as in a simulation, without it, tighter, for the reference); steps and nfe of the
-        !! host are set.
-        subroutine run_lsoda(rtl, yout, st, reference)
+        !> LSODA or Radau (method; the elastic model only) on the deck's system at rtol,
+        !! atol = rtol * ratio (LSODA on the elastic model: per state from elastic_atol, the
+        !! velocities' tolerance with the rtol term as in a simulation, without it, tighter,
+        !! for the reference; Radau uses atol(1)); steps and nfe of the host are set.
+        subroutine run_adaptive(rtl, yout, st, reference, method)
             real(dp), intent(in) :: rtl
             real(dp), intent(out) :: yout(:, 0:)
             type(status_t), intent(out) :: st
             logical, intent(in) :: reference
+            integer, intent(in) :: method
             if (elastic .and. reference) then
                 call solve_lsoda_sys(el, y0s, times, rtl, elastic_atol(el, rtl*ratio), &
-                                     yout, steps, nfe, st)
+                                     yout, steps, nfe, st, method)
             else if (elastic) then
                 call solve_lsoda_sys(el, y0s, times, rtl, elastic_atol(el, rtl*ratio, rtl), &
-                                     yout, steps, nfe, st)
+                                     yout, steps, nfe, st, method)
             else
                 call solve_lsoda_sys(kane, y0s, times, rtl, [rtl*ratio], yout, steps, nfe, st)
             end if
-        end subroutine run_lsoda
+        end subroutine run_adaptive
 
         !> RK4 on the deck's system, mm steps per output interval.
         subroutine run_rk4(mm, yout, st)
@@ -418,11 +473,21 @@ contains
             write (unit, '(a)') '# '//what//'; errors at the output times against the '// &
                 'reference (angles in rad, Q over b'', energy over m g b'')'
             write (unit, '(a,es9.2,a,es9.2,a,es9.2)') &
-                '# reference: LSODA rtol 1e-13; confirmed by RK4 + Richardson (h = ', &
+                '# reference: '//ref_name()//' rtol 1e-13; confirmed by RK4 + Richardson (h = ', &
                 res%ref_h, ' and h/2): angles agree to ', res%ref_agreement_theta, &
                 ', Q to ', res%ref_agreement_q
+            if (elastic) write (unit, '(a,es9.2,a,es9.2)') '# reference confirmed by LSODA '// &
+                'rtol 1e-13 (maximal coordinates): angles agree to ', res%ref_second_theta, &
+                ', Q to ', res%ref_second_q
             call deck_echo(d, unit)
         end subroutine header
+
+        !> The integrator of the reference.
+        function ref_name() result(nm)
+            character(len=:), allocatable :: nm
+            nm = 'LSODA'
+            if (elastic) nm = 'Radau'
+        end function ref_name
 
     end subroutine run_work_precision
 

@@ -12,7 +12,7 @@ module test_elastic
                              elastic_evaluate, elastic_chart, elastic_energy, ELASTIC_NSTATE, &
                              natural_lengths, elastic_atol, CABLE_BC, CABLE_AD, CABLE_AUTO, &
                              CABLE_TAUT, CABLE_SLACK, cable_switch
-    use elastic_solver, only: elastic_solver_t, slack_interval_t
+    use elastic_solver, only: elastic_solver_t, slack_interval_t, SOLVER_LSODA
     use lsoda, only: lsoda_t, lsoda_stats_t, METHOD_BDF
     use lapack_wrap, only: la_eig
     implicit none
@@ -262,7 +262,8 @@ contains
             rho = maxval(abs(lam))
             tend = 3*TORSION_PERIOD
             rk4_steps(i) = tend*rho/2.8_dp
-            call s%init(el, 0.0_dp, y, 1.0e-8_dp, elastic_atol(el, 1.0e-10_dp, 1.0e-8_dp), st)
+            call s%init(el, 0.0_dp, y, 1.0e-8_dp, elastic_atol(el, 1.0e-10_dp, 1.0e-8_dp), st, &
+                        method=SOLVER_LSODA)
             call s%integrate(el, tend, y, st)
             ss = s%stats()
             write (*, '(a,es10.3,a,f10.0,a,i0,a,i0,a,i0,a,i0,a,i0)') '  '//trim(tag)// &
