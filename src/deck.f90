@@ -243,7 +243,13 @@ contains
         d%chart_y_min = y_min
         d%chart_y_max = y_max
         d%chart_ny = ny
-        call validate(d, stat)
+        call check_suspension(d, stat)
+        call check_body(d, stat)
+        call check_start(d, stat)
+        call check_integration(d, stat)
+        call check_cables(d, stat)
+        call check_floquet(d, stat)
+        call check_chart(d, stat)
 
     contains
 
@@ -389,33 +395,39 @@ contains
     end subroutine deck_echo
 
     ! ---------------------------------------------------------------- validation
+    ! One routine per group, each checking the values of its group (the defaults are in
+    ! deck_t); the first problem sets stat and the later routines return at once.
 
-    !> Check every value of a deck read from file; the first problem sets stat.
-    subroutine validate(d, stat)
+    !> &suspension: all lengths and g finite and > 0.
+    subroutine check_suspension(d, stat)
+        type(deck_t), intent(in) :: d               !! deck with the values read
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+        if (stat%code /= STATUS_OK) return
+        call positive(stat, d%name, 'suspension', 'b', d%b, 'lengths > 0')
+        call positive(stat, d%name, 'suspension', 'b_prime', d%b_prime, 'lengths > 0')
+        call positive(stat, d%name, 'suspension', 'l', d%l, 'lengths > 0')
+        call positive(stat, d%name, 'suspension', 'l_prime', d%l_prime, 'lengths > 0')
+        call positive(stat, d%name, 'suspension', 'g', d%g, 'g > 0')
+    end subroutine check_suspension
+
+    !> &body: mass > 0; principal moments > 0 obeying the triangle inequalities; r >= 0;
+    !! btilde a right-handed orthonormal matrix; everything finite.
+    subroutine check_body(d, stat)
         type(deck_t), intent(in) :: d               !! deck with the values read
         type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
         character(len=:), allocatable :: nm
         real(dp) :: t(3), half(3), slack, mmt(3,3), det, err
         integer :: i, j, iw, jw
         character(len=*), parameter :: TRI_NAMES(3) = ['I1', 'I2', 'I3']
-
-        nm = d%name
-        ! &suspension
-        call positive('suspension', 'b', d%b, 'lengths > 0')
-        call positive('suspension', 'b_prime', d%b_prime, 'lengths > 0')
-        call positive('suspension', 'l', d%l, 'lengths > 0')
-        call positive('suspension', 'l_prime', d%l_prime, 'lengths > 0')
-        call positive('suspension', 'g', d%g, 'g > 0')
         if (stat%code /= STATUS_OK) return
-
-        ! &body
-        call positive('body', 'mass', d%mass, 'mass > 0')
+        nm = d%name
+        call positive(stat, nm, 'body', 'mass', d%mass, 'mass > 0')
         do i = 1, 3
-            call finite('body', 'inertia', d%inertia(i))
+            call finite(stat, nm, 'body', 'inertia', d%inertia(i))
         end do
         if (stat%code /= STATUS_OK) return
         if (any(d%inertia <= 0.0_dp)) then
-            call bad('body', 'inertia', rlist_short(d%inertia), &
+            call bad(stat, nm, 'body', 'inertia', rlist_short(d%inertia), &
                      'a principal moment of inertia is <= 0', 'all three > 0')
             return
         end if
@@ -427,30 +439,30 @@ contains
             t(i) = 0.0_dp
             if (half(i) - t(1) - t(2) - t(3) > slack) then
                 j = modulo(i, 3) + 1
-                call bad('body', 'inertia', rlist_short(d%inertia), TRI_NAMES(i)//' > '// &
-                         TRI_NAMES(j)//' + '//TRI_NAMES(modulo(j, 3) + 1)// &
+                call bad(stat, nm, 'body', 'inertia', rlist_short(d%inertia), TRI_NAMES(i)// &
+                         ' > '//TRI_NAMES(j)//' + '//TRI_NAMES(modulo(j, 3) + 1)// &
                          ' violates the triangle inequality', &
                          'each principal moment <= the sum of the other two')
                 return
             end if
         end do
-        call finite('body', 'r', d%r)
-        call finite('body', 'lambda', d%lambda)
+        call finite(stat, nm, 'body', 'r', d%r)
+        call finite(stat, nm, 'body', 'lambda', d%lambda)
         if (stat%code /= STATUS_OK) return
         if (d%r < 0.0_dp) then
-            call bad('body', 'r', rshort(d%r), 'negative distance', 'r >= 0')
+            call bad(stat, nm, 'body', 'r', rshort(d%r), 'negative distance', 'r >= 0')
             return
         end if
         do i = 1, 3
             do j = 1, 3
-                call finite('body', 'btilde('//achar(iachar('0') + i)//','// &
+                call finite(stat, nm, 'body', 'btilde('//achar(iachar('0') + i)//','// &
                             achar(iachar('0') + j)//')', d%btilde(i, j))
             end do
         end do
         if (stat%code /= STATUS_OK) return
         if (any(abs(d%btilde) > 1.0_dp + ORTHO_TOL)) then
-            call bad('body', 'btilde', btilde_short(d%btilde), 'an element exceeds 1 in ' // &
-                     'magnitude, rows are not orthonormal', ortho_allowed())
+            call bad(stat, nm, 'body', 'btilde', btilde_short(d%btilde), 'an element ' // &
+                     'exceeds 1 in magnitude, rows are not orthonormal', ortho_allowed())
             return
         end if
         mmt = matmul(d%btilde, transpose(d%btilde))
@@ -474,11 +486,11 @@ contains
         end do
         if (err > ORTHO_TOL) then
             if (iw == jw) then
-                call bad('body', 'btilde', btilde_short(d%btilde), 'row '// &
+                call bad(stat, nm, 'body', 'btilde', btilde_short(d%btilde), 'row '// &
                          achar(iachar('0') + iw)//' is not a unit vector (length^2 = '// &
                          rshort(mmt(iw, iw))//')', ortho_allowed())
             else
-                call bad('body', 'btilde', btilde_short(d%btilde), 'rows '// &
+                call bad(stat, nm, 'body', 'btilde', btilde_short(d%btilde), 'rows '// &
                          achar(iachar('0') + iw)//' and '//achar(iachar('0') + jw)// &
                          ' are not orthogonal (dot product = '//rshort(mmt(iw, jw))//')', &
                          ortho_allowed())
@@ -489,102 +501,127 @@ contains
             - d%btilde(1, 2)*(d%btilde(2, 1)*d%btilde(3, 3) - d%btilde(2, 3)*d%btilde(3, 1)) &
             + d%btilde(1, 3)*(d%btilde(2, 1)*d%btilde(3, 2) - d%btilde(2, 2)*d%btilde(3, 1))
         if (det < 0.0_dp) then
-            call bad('body', 'btilde', btilde_short(d%btilde), 'left-handed (determinant = '// &
-                     rshort(det)//')', 'a right-handed orthonormal matrix, determinant +1; '// &
-                     'change the sign of one row')
+            call bad(stat, nm, 'body', 'btilde', btilde_short(d%btilde), 'left-handed ' // &
+                     '(determinant = '//rshort(det)//')', 'a right-handed orthonormal ' // &
+                     'matrix, determinant +1; change the sign of one row')
             return
         end if
-        call finite('body', 'sway_depth', d%sway_depth)
-        if (stat%code /= STATUS_OK) return
+        call finite(stat, nm, 'body', 'sway_depth', d%sway_depth)
+    end subroutine check_body
 
-        ! &start
-        call finite('start', 'amplitude', d%amplitude)
-        call finite('start', 'tilt', d%tilt)
+    !> &start: finite values; for mode 'raised' 0 < amplitude < 180 degrees.
+    subroutine check_start(d, stat)
+        type(deck_t), intent(in) :: d               !! deck with the values read
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+        integer :: i
+        if (stat%code /= STATUS_OK) return
+        call finite(stat, d%name, 'start', 'amplitude', d%amplitude)
+        call finite(stat, d%name, 'start', 'tilt', d%tilt)
         do i = 1, 4
-            call finite('start', 'theta', d%theta(i))
-            call finite('start', 'theta_dot', d%theta_dot(i))
+            call finite(stat, d%name, 'start', 'theta', d%theta(i))
+            call finite(stat, d%name, 'start', 'theta_dot', d%theta_dot(i))
         end do
         if (stat%code /= STATUS_OK) return
         if (trim(d%mode) == 'raised') then
             if (d%amplitude <= 0.0_dp .or. d%amplitude >= 180.0_dp) then
-                call bad('start', 'amplitude', rshort(d%amplitude), 'out of range for mode ' // &
-                         '''raised''', '0 < amplitude < 180 (degrees)')
-                return
+                call bad(stat, d%name, 'start', 'amplitude', rshort(d%amplitude), &
+                         'out of range for mode ''raised''', '0 < amplitude < 180 (degrees)')
             end if
         end if
+    end subroutine check_start
 
-        ! &integration
-        call positive('integration', 'tau_end', d%tau_end, 'tau_end > 0')
-        call positive('integration', 'dtau_out', d%dtau_out, '0 < dtau_out <= tau_end')
-        call finite('integration', 'rtol', d%rtol)
-        call finite('integration', 'atol', d%atol)
+    !> &integration: 0 < dtau_out <= tau_end, at most MAX_ROWS rows, tolerances in range.
+    subroutine check_integration(d, stat)
+        type(deck_t), intent(in) :: d               !! deck with the values read
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+        character(len=:), allocatable :: nm
+        if (stat%code /= STATUS_OK) return
+        nm = d%name
+        call positive(stat, nm, 'integration', 'tau_end', d%tau_end, 'tau_end > 0')
+        call positive(stat, nm, 'integration', 'dtau_out', d%dtau_out, '0 < dtau_out <= tau_end')
+        call finite(stat, nm, 'integration', 'rtol', d%rtol)
+        call finite(stat, nm, 'integration', 'atol', d%atol)
         if (stat%code /= STATUS_OK) return
         if (d%dtau_out > d%tau_end) then
-            call bad('integration', 'dtau_out', rshort(d%dtau_out), 'larger than tau_end = '// &
-                     rshort(d%tau_end), '0 < dtau_out <= tau_end')
+            call bad(stat, nm, 'integration', 'dtau_out', rshort(d%dtau_out), &
+                     'larger than tau_end = '//rshort(d%tau_end), '0 < dtau_out <= tau_end')
             return
         end if
         if (d%tau_end/MAX_ROWS > d%dtau_out) then
-            call bad('integration', 'dtau_out', rshort(d%dtau_out), 'too many output rows ' // &
-                     '(tau_end/dtau_out > 1e7, tau_end = '//rshort(d%tau_end)//')', &
+            call bad(stat, nm, 'integration', 'dtau_out', rshort(d%dtau_out), 'too many ' // &
+                     'output rows (tau_end/dtau_out > 1e7, tau_end = '//rshort(d%tau_end)//')', &
                      'tau_end/dtau_out <= 1e7')
             return
         end if
         if (d%rtol < RTOL_MIN .or. d%rtol >= 1.0_dp) then
-            call bad('integration', 'rtol', rshort(d%rtol), 'relative tolerance out of range', &
-                     '1e-14 <= rtol < 1 (smallest allowed 1e-14)')
+            call bad(stat, nm, 'integration', 'rtol', rshort(d%rtol), 'relative tolerance ' // &
+                     'out of range', '1e-14 <= rtol < 1 (smallest allowed 1e-14)')
             return
         end if
         if (d%atol <= 0.0_dp) then
-            call bad('integration', 'atol', rshort(d%atol), 'absolute tolerance must be > 0', &
-                     'atol > 0')
+            call bad(stat, nm, 'integration', 'atol', rshort(d%atol), 'absolute tolerance ' // &
+                     'must be > 0', 'atol > 0')
             return
         end if
         ! below ATOL_MIN the integrator's error weights overflow on a state component at 0
         if (d%atol < ATOL_MIN .or. d%atol > ATOL_MAX) then
-            call bad('integration', 'atol', rshort(d%atol), 'absolute tolerance out of range', &
-                     '1e-30 <= atol <= 1 (radians and rad per unit tau)')
-            return
+            call bad(stat, nm, 'integration', 'atol', rshort(d%atol), 'absolute tolerance ' // &
+                     'out of range', '1e-30 <= atol <= 1 (radians and rad per unit tau)')
         end if
+    end subroutine check_integration
 
-        ! &cables (read and checked whatever the model, used by model = 'elastic')
-        call finite('cables', 'stiffness', d%cable_stiffness)
-        call finite('cables', 'damping', d%cable_damping)
+    !> &cables (read and checked whatever the model, used by model = 'elastic').
+    subroutine check_cables(d, stat)
+        type(deck_t), intent(in) :: d               !! deck with the values read
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+        if (stat%code /= STATUS_OK) return
+        call finite(stat, d%name, 'cables', 'stiffness', d%cable_stiffness)
+        call finite(stat, d%name, 'cables', 'damping', d%cable_damping)
         if (stat%code /= STATUS_OK) return
         if (d%cable_stiffness < STIFFNESS_MIN .or. d%cable_stiffness > STIFFNESS_MAX) then
-            call bad('cables', 'stiffness', rshort(d%cable_stiffness), 'axial stiffness ' // &
-                     'EA/(m g) out of range', '1 <= stiffness <= 1e12')
+            call bad(stat, d%name, 'cables', 'stiffness', rshort(d%cable_stiffness), &
+                     'axial stiffness EA/(m g) out of range', '1 <= stiffness <= 1e12')
             return
         end if
         if (d%cable_damping < 0.0_dp .or. d%cable_damping > DAMPING_MAX) then
-            call bad('cables', 'damping', rshort(d%cable_damping), 'damping ratio out of range', &
-                     '0 <= damping <= 10 (fraction of critical)')
-            return
+            call bad(stat, d%name, 'cables', 'damping', rshort(d%cable_damping), &
+                     'damping ratio out of range', '0 <= damping <= 10 (fraction of critical)')
         end if
+    end subroutine check_cables
 
-        ! &floquet
-        call finite('floquet', 'amplitude', d%floquet_amplitude)
-        call finite('floquet', 'rtol', d%floquet_rtol)
+    !> &floquet: 0 < amplitude < 180 degrees, 1..MAX_SEGMENTS segments, rtol in range.
+    subroutine check_floquet(d, stat)
+        type(deck_t), intent(in) :: d               !! deck with the values read
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+        if (stat%code /= STATUS_OK) return
+        call finite(stat, d%name, 'floquet', 'amplitude', d%floquet_amplitude)
+        call finite(stat, d%name, 'floquet', 'rtol', d%floquet_rtol)
         if (stat%code /= STATUS_OK) return
         if (d%floquet_amplitude <= 0.0_dp .or. d%floquet_amplitude >= 180.0_dp) then
-            call bad('floquet', 'amplitude', rshort(d%floquet_amplitude), 'out of range', &
-                     '0 < amplitude < 180 (degrees of theta4)')
+            call bad(stat, d%name, 'floquet', 'amplitude', rshort(d%floquet_amplitude), &
+                     'out of range', '0 < amplitude < 180 (degrees of theta4)')
             return
         end if
         if (d%floquet_segments < 1 .or. d%floquet_segments > MAX_SEGMENTS) then
-            call bad('floquet', 'segments', itoa(d%floquet_segments), 'number of shooting ' // &
-                     'segments out of range', '1 <= segments <= '//itoa(MAX_SEGMENTS))
+            call bad(stat, d%name, 'floquet', 'segments', itoa(d%floquet_segments), &
+                     'number of shooting segments out of range', '1 <= segments <= '// &
+                     itoa(MAX_SEGMENTS))
             return
         end if
         if (d%floquet_rtol < RTOL_MIN .or. d%floquet_rtol >= FLOQUET_RTOL_MAX) then
-            call bad('floquet', 'rtol', rshort(d%floquet_rtol), 'relative tolerance out of ' // &
-                     'range', '1e-14 <= rtol < 1e-2')
-            return
+            call bad(stat, d%name, 'floquet', 'rtol', rshort(d%floquet_rtol), &
+                     'relative tolerance out of range', '1e-14 <= rtol < 1e-2')
         end if
+    end subroutine check_floquet
 
-        ! &chart (x and y are known words, checked by read_deck)
+    !> &chart: two different variables (known words, checked by read_deck), each axis a
+    !! finite range inside its variable's range with 2..MAX_CHART_N points, nx*ny bounded.
+    subroutine check_chart(d, stat)
+        type(deck_t), intent(in) :: d               !! deck with the values read
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+        if (stat%code /= STATUS_OK) return
         if (trim(d%chart_x) == trim(d%chart_y)) then
-            call bad('chart', 'y', quoted(d%chart_y), 'the same variable as x', &
+            call bad(stat, d%name, 'chart', 'y', quoted(d%chart_y), 'the same variable as x', &
                      'y different from x, both from: '//commas(CHART_VARIABLES))
             return
         end if
@@ -592,10 +629,9 @@ contains
         call chart_axis('y', d%chart_y, d%chart_y_min, d%chart_y_max, d%chart_ny)
         if (stat%code /= STATUS_OK) return
         if (d%chart_nx*d%chart_ny > MAX_CHART_POINTS) then
-            call bad('chart', 'ny', itoa(d%chart_ny), 'too many chart points (nx*ny = '// &
-                     itoa(d%chart_nx*d%chart_ny)//', nx = '//itoa(d%chart_nx)//')', &
-                     'nx*ny <= '//itoa(MAX_CHART_POINTS))
-            return
+            call bad(stat, d%name, 'chart', 'ny', itoa(d%chart_ny), 'too many chart points ' // &
+                     '(nx*ny = '//itoa(d%chart_nx*d%chart_ny)//', nx = '//itoa(d%chart_nx)// &
+                     ')', 'nx*ny <= '//itoa(MAX_CHART_POINTS))
         end if
 
     contains
@@ -610,12 +646,12 @@ contains
             logical :: lo_in, hi_in
             character(len=:), allocatable :: desc, allowed
             if (stat%code /= STATUS_OK) return
-            call finite('chart', ax//'_min', vmin)
-            call finite('chart', ax//'_max', vmax)
+            call finite(stat, d%name, 'chart', ax//'_min', vmin)
+            call finite(stat, d%name, 'chart', ax//'_max', vmax)
             if (stat%code /= STATUS_OK) return
             if (vmin >= vmax) then
-                call bad('chart', ax//'_max', rshort(vmax), 'not larger than '//ax// &
-                         '_min = '//rshort(vmin), ax//'_min < '//ax//'_max')
+                call bad(stat, d%name, 'chart', ax//'_max', rshort(vmax), 'not larger than '// &
+                         ax//'_min = '//rshort(vmin), ax//'_min < '//ax//'_max')
                 return
             end if
             ! allowed range lo .. hi of the variable, ends included when lo_in, hi_in
@@ -649,48 +685,56 @@ contains
                 rshort(hi)
             allowed = allowed//' for '//trim(var)//' ('//desc//')'
             if (vmin < lo .or. (vmin == lo .and. .not. lo_in)) then
-                call bad('chart', ax//'_min', rshort(vmin), 'outside the range of '//trim(var), &
-                         allowed)
+                call bad(stat, d%name, 'chart', ax//'_min', rshort(vmin), 'outside the ' // &
+                         'range of '//trim(var), allowed)
                 return
             end if
             if (vmax > hi .or. (vmax == hi .and. .not. hi_in)) then
-                call bad('chart', ax//'_max', rshort(vmax), 'outside the range of '//trim(var), &
-                         allowed)
+                call bad(stat, d%name, 'chart', ax//'_max', rshort(vmax), 'outside the ' // &
+                         'range of '//trim(var), allowed)
                 return
             end if
             if (n < 2 .or. n > MAX_CHART_N) then
-                call bad('chart', 'n'//ax, itoa(n), 'number of chart points out of range', &
-                         '2 <= n'//ax//' <= '//itoa(MAX_CHART_N)//' and nx*ny <= '// &
-                         itoa(MAX_CHART_POINTS))
+                call bad(stat, d%name, 'chart', 'n'//ax, itoa(n), 'number of chart points ' // &
+                         'out of range', '2 <= n'//ax//' <= '//itoa(MAX_CHART_N)// &
+                         ' and nx*ny <= '//itoa(MAX_CHART_POINTS))
                 return
             end if
         end subroutine chart_axis
 
-        subroutine bad(grp, var, val, what, allowed)
-            character(len=*), intent(in) :: grp, var, val, what, allowed
-            if (stat%code /= STATUS_OK) return
-            call set_error(stat, ERR_DECK, nm//': &'//grp//' '//var//' = '//val//': '// &
-                           what//'; allowed: '//allowed)
-        end subroutine bad
+    end subroutine check_chart
 
-        subroutine finite(grp, var, x)
-            character(len=*), intent(in) :: grp, var
-            real(dp), intent(in) :: x
-            if (.not. ieee_is_finite(x)) call bad(grp, var, rshort(x), 'not a finite number ' &
-                                                  //'(NaN, Inf, or beyond 1.8e308)', &
-                                                  'finite real numbers')
-        end subroutine finite
+    !> ERR_DECK naming the deck, group, variable and value, what is wrong and what is
+    !! allowed (nothing when stat already carries an error).
+    subroutine bad(stat, nm, grp, var, val, what, allowed)
+        type(status_t), intent(inout) :: stat       !! the first problem
+        character(len=*), intent(in) :: nm          !! deck name
+        character(len=*), intent(in) :: grp, var, val, what, allowed
+        if (stat%code /= STATUS_OK) return
+        call set_error(stat, ERR_DECK, nm//': &'//grp//' '//var//' = '//val//': '// &
+                       what//'; allowed: '//allowed)
+    end subroutine bad
 
-        subroutine positive(grp, var, x, allowed)
-            character(len=*), intent(in) :: grp, var, allowed
-            real(dp), intent(in) :: x
-            if (stat%code /= STATUS_OK) return
-            call finite(grp, var, x)
-            if (stat%code /= STATUS_OK) return
-            if (x <= 0.0_dp) call bad(grp, var, rshort(x), 'must be > 0', allowed)
-        end subroutine positive
+    !> ERR_DECK when x is NaN or infinite.
+    subroutine finite(stat, nm, grp, var, x)
+        type(status_t), intent(inout) :: stat       !! the first problem
+        character(len=*), intent(in) :: nm, grp, var
+        real(dp), intent(in) :: x
+        if (.not. ieee_is_finite(x)) call bad(stat, nm, grp, var, rshort(x), 'not a finite ' &
+                                              //'number (NaN, Inf, or beyond 1.8e308)', &
+                                              'finite real numbers')
+    end subroutine finite
 
-    end subroutine validate
+    !> ERR_DECK when x is not finite or not > 0.
+    subroutine positive(stat, nm, grp, var, x, allowed)
+        type(status_t), intent(inout) :: stat       !! the first problem
+        character(len=*), intent(in) :: nm, grp, var, allowed
+        real(dp), intent(in) :: x
+        if (stat%code /= STATUS_OK) return
+        call finite(stat, nm, grp, var, x)
+        if (stat%code /= STATUS_OK) return
+        if (x <= 0.0_dp) call bad(stat, nm, grp, var, rshort(x), 'must be > 0', allowed)
+    end subroutine positive
 
     pure function ortho_allowed() result(s)
         character(len=:), allocatable :: s
