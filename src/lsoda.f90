@@ -629,6 +629,13 @@ contains
                 s%nswitch = s%nswitch + 1
                 s%jstart = -1
             end if
+            ! A step cut short to end at tcrit lands there only up to roundoff (it is cut
+            ! to (tcrit - tn)*(1 - 4 u) so as never to pass it): it has reached tcrit, and
+            ! says so, or a caller stepping until t_current >= tcrit would ask for a step
+            ! that no longer fits (a body at rest takes one step straight to tcrit).
+            if (s%have_tcrit) then
+                if (at_tcrit(s)) s%tn = s%tcrit
+            end if
         case (KF_ERRTEST)
             write (buf, '(a,es14.7,a,es10.3)') 'lsoda: error test failed repeatedly at t = ', &
                 s%tn, ' with |h| = ', abs(s%h)
@@ -1232,7 +1239,10 @@ contains
         else
             fac = vmnorm(n, s%savf, s%rewt)
             r0 = 1000.0_dp*abs(s%h)*UROUND*n*fac
-            if (r0 == 0.0_dp) r0 = 1.0_dp
+            ! f = 0 (at rest): increments of one error weight, as in LSODA; the same when f
+            ! is negligible (h*f below 1e-3 weights per step: r0 < UROUND), or increments of
+            ! 1e-311 near an equilibrium at 1e-300 make h*l0/r overflow
+            if (r0 < UROUND) r0 = 1.0_dp
             srur = sqrt(UROUND)
             do j = 1, n
                 yj = s%y(j)
