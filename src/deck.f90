@@ -850,9 +850,8 @@ contains
         allowed = nm//'/b_prime <= '//rshort(RATIO_MAX)
         if (lo > 0.0_dp) allowed = rshort(lo)//' <= '//allowed
         call bad(stat, grp, var, rshort(x), nm//'/b_prime = '// &
-                 sci(exp(max(-700.0_dp, min(700.0_dp, lq))))// &
-                 ' out of range ' // &
-                 '(b_prime = '//rshort(b_prime)//')', allowed//' (the geometry in units of b_prime)')
+                 sci(exp(max(-700.0_dp, min(700.0_dp, lq))))//' out of range (b_prime = '// &
+                 rshort(b_prime)//')', allowed//' (the geometry in units of b_prime)')
     end subroutine over_b_prime
 
     !> ERR_DECK when an angle (rad) is beyond ANGLE_MAX in magnitude.

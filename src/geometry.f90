@@ -136,7 +136,7 @@ contains
         hy = 0.5_dp*p%big_b - 0.5_dp*cos(amplitude)
         h2 = hx**2 + hy**2
         if (h2 >= p%big_l**2) then
-            write (buf, '(a,es10.3,a,es10.3)') 'l/b'' = ', p%big_l, &
+            write (buf, '(a,es11.3e3,a,es11.3e3)') 'l/b'' = ', p%big_l, &
                 ': cable BC cannot reach the raised start; needs l/b'' > ', sqrt(h2)
             call set_error(stat, ERR_DECK, '&start amplitude / &suspension l: '//trim(buf))
             return
@@ -177,7 +177,7 @@ contains
         end do
         g = constraint_g(p, th)
         if (.not. (abs(g) < 1.0e-12_dp) .or. .not. (abs(th(5)) < 0.5_dp*pi)) then
-            write (buf, '(a,es10.3,a)') 'no theta5 satisfies the constraint eq. (2) (residual ', &
+            write (buf, '(a,es11.3e3,a)') 'no theta5 satisfies the constraint eq. (2) (residual ', &
                 g, '): the cables cannot both be taut at this start; change l, l_prime or the start'
             call set_error(stat, ERR_DECK, trim(buf))
         end if
