@@ -32,7 +32,7 @@ LIBS = -llapack -lblas
 LIB_MODULES = kinds status text progress lapack_wrap ode_system lsoda geometry kinematics gen_forces bifilar_model \
               elastic_model elastic_solver deck output_io simulate floquet paper_claims stability work_precision driver
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
-TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme test_work_precision test_elastic test_elastic_jac
+TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme test_work_precision test_elastic test_elastic_jac test_robust
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
 
 .PHONY: all test check run report bench deps clean memcheck

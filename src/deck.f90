@@ -105,6 +105,7 @@ module deck
     integer, parameter :: MAX_LINE = 4096               !! longest deck line (characters)
     integer, parameter :: MAX_DECK_BYTES = 1000000      !! largest deck (bytes)
     integer, parameter :: CLIP_LEN = 60                 !! longest value quoted in a message
+    integer, parameter :: MAX_TEXT = 256                !! longest quoted value (title, words)
 
 contains
 
@@ -303,6 +304,7 @@ contains
             end if
             ! what the run-time library cannot be trusted with never reaches it
             why = subscript_problem(text, breaks)
+            if (len(why) == 0) why = long_text(text)
             if (len(why) > 0) then
                 call set_error(stat, ERR_DECK, 'cannot read namelist group &'//grp//': '//why)
                 return
@@ -826,6 +828,7 @@ contains
         type(status_t), intent(inout) :: stat       !! the first problem
         character(len=*), intent(in) :: grp, var
         real(dp), intent(in) :: x                   !! a length, g, a mass or a moment (> 0)
+        if (stat%code /= STATUS_OK) return          ! x may be NaN
         if (x < DIM_MIN .or. x > DIM_MAX) call bad(stat, grp, var, rshort(x), 'out of ' // &
             'range', rshort(DIM_MIN)//' <= '//var//' <= '//rshort(DIM_MAX)//' in any units')
     end subroutine dimensional
@@ -859,6 +862,7 @@ contains
         type(status_t), intent(inout) :: stat       !! the first problem
         character(len=*), intent(in) :: grp, var
         real(dp), intent(in) :: x                   !! angle, rad (finite)
+        if (stat%code /= STATUS_OK) return
         if (abs(x) > ANGLE_MAX) call bad(stat, grp, var, rshort(x), 'an angle beyond '// &
             rshort(ANGLE_MAX)//' rad', '|'//var//'| <= '//rshort(ANGLE_MAX)// &
             ' rad (angles are taken modulo 2 pi)')
@@ -1144,6 +1148,44 @@ contains
             if (line(n:n) == achar(9) .or. line(n:n) == achar(13)) line(n:n) = ' '
         end do
     end subroutine read_line
+
+    !> A value longer than MAX_TEXT characters, quoted or not ('' when none): the run-time
+    !! library would cut it to its variable's length (and the checking build prints a
+    !! warning); no number needs as many digits.
+    function long_text(text) result(why)
+        character(len=*), intent(in) :: text        !! group items (from scan_group)
+        character(len=:), allocatable :: why
+        character :: q
+        integer :: k, k0, n
+        why = ''
+        q = ' '
+        n = 0
+        k0 = 1
+        do k = 1, len(text)
+            if (q == ' ') then
+                if (text(k:k) == '''' .or. text(k:k) == '"') then
+                    q = text(k:k)
+                    n = 0
+                    k0 = k
+                    cycle
+                else if (index(' ,=', text(k:k)) > 0) then
+                    n = 0
+                    k0 = k + 1
+                    cycle
+                end if
+            else if (text(k:k) == q) then
+                q = ' '      ! a doubled quote closes and reopens: counted as two values
+                n = 0
+                cycle
+            end if
+            n = n + 1
+            if (n > MAX_TEXT) then
+                why = 'a value of more than '//itoa(MAX_TEXT)//' characters ('// &
+                    clip(text(k0:))//'); allowed: at most '//itoa(MAX_TEXT)
+                return
+            end if
+        end do
+    end function long_text
 
     !> The first parenthesis of a group's text that the run-time library cannot be trusted
     !! with (gfortran 12 takes SIGSEGV on a subscript left open at the end of a line): every

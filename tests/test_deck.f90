@@ -383,7 +383,9 @@ contains
         call bad('atol_negative', SB//'&integration atol = -1e-12 /', ['atol'])
         call bad('bad_logical', SB//'&integration error_estimate = maybe /', ['error_estimate'])
         call bad('long_title', "&scene title = '"//repeat('x', 2000)//"' /"//NL//SB// &
-                 '&start mode = 1 /', ['mode'])
+                 '&start mode = 1 /', ['&scene     ', 'at most 256'])
+        call bad('long_mode', SB//"&start mode = '"//repeat('x', 300)//"' /", &
+                 ['&start     ', 'at most 256'])
 
     contains
 
@@ -496,7 +498,7 @@ contains
         write (u2, '(a)') 'second writer'
         call atomic_abort(u2, path)
         call t%check('atomic: abort removes only its own temporary file', &
-                     exists(tmp1) .and. .not. exists(tmp2))
+                     all([exists(tmp1), .not. exists(tmp2)]))
         call atomic_commit(u, path, stat)
         call t%check('atomic: commit ok', stat%code == STATUS_OK)
         there = [exists(path), exists(tmp1)]
@@ -509,8 +511,8 @@ contains
         ! a stale temporary file of this pid (a crashed run long ago) is not reused
         call write_text(tmp1, 'stale')
         call atomic_open(path, u, stat)
-        call t%check('atomic: a stale PATH.tmp.PID.1 is skipped', stat%code == STATUS_OK .and. &
-                     exists(tmp2))
+        call t%check('atomic: a stale PATH.tmp.PID.1 is skipped', all([stat%code == STATUS_OK, &
+                     exists(tmp2)]))
         write (u, '(a)') 'partial'
         call atomic_abort(u, path)
         call t%check('atomic: the stale file is left alone', exists(tmp1))
@@ -568,18 +570,18 @@ contains
         call t%check('run files: close ok', stat%code == STATUS_OK)
         call fs%close(ub, 0, stat)
         call t%check('run files: nothing under the final names before the commit', &
-                     .not. exists(a) .and. .not. exists(b))
+                     all([.not. exists(a), .not. exists(b)]))
         call t%check('run files: no temporary file left open', count_matching(dir, &
                      'run_[ab].*.tmp.') == 2)
         call fs%commit(stat)
         call t%check('run files: commit ok', stat%code == STATUS_OK)
-        call t%check('run files: both files after the commit', exists(a) .and. exists(b))
+        call t%check('run files: both files after the commit', all([exists(a), exists(b)]))
         call t%check('run files: count = 2', fs%count() == 2)
         call t%check('run files: no temporary file after the commit', &
                      count_matching(dir, 'run_[ab].*.tmp.') == 0)
         call fs%discard()
         call t%check('run files: discard after the commit removes the committed files', &
-                     .not. exists(a) .and. .not. exists(b))
+                     all([.not. exists(a), .not. exists(b)]))
         ! a failed write in one file: discard removes the open, staged and failed ones
         call fs2%open(a, ua, stat)
         call fs2%open(b, ub, stat)
@@ -599,11 +601,11 @@ contains
         call fs2%commit(stat)
         call t%check('run files: a failed rename is ERR_IO', stat%code == ERR_IO)
         call t%check('run files: a failed rename leaves no file of the run', &
-                     .not. exists(a) .and. count_matching(dir, 'run_[ac].*.tmp.') == 0)
+                     all([.not. exists(a), count_matching(dir, 'run_[ac].*.tmp.') == 0]))
         call execute_command_line('rmdir '//c)
         call make_dir(dir//'/made/by/make_dir', stat)
-        call t%check('make_dir: creates the parents (mkdir -p)', stat%code == STATUS_OK .and. &
-                     exists(dir//'/made/by/make_dir/.'))
+        call t%check('make_dir: creates the parents (mkdir -p)', all([stat%code == STATUS_OK, &
+                     exists(dir//'/made/by/make_dir/.')]))
         call make_dir(dir//'/made/by/make_dir', stat)
         call t%check('make_dir: an existing folder is fine', stat%code == STATUS_OK)
         call write_text(dir//'/made/plain', 'x')
