@@ -94,15 +94,13 @@ memcheck: $(BIN)/bifilar
 
 DECKS = $(wildcard input/*.nml)
 run: deps $(BIN)/bifilar
-	mkdir -p output
-	@set -e; for d in $(DECKS); do echo "bifilar $$d"; $(BIN)/bifilar $$d; done
+	$(BIN)/bifilar $(DECKS)
 	$(BIN)/bifilar --report output
 	@$(MAKE) --no-print-directory plots
 
 report: $(BIN)/bifilar
 	mkdir -p output
-	@set -e; for d in cylinder_l180 cylinder_l195 triangle_plate cylinder_torsion; do \
-	  $(BIN)/bifilar input/$$d.nml; done
+	$(BIN)/bifilar $(patsubst %,input/%.nml,cylinder_l180 cylinder_l195 triangle_plate cylinder_torsion)
 	$(BIN)/bifilar --report output
 
 .PHONY: plots
@@ -119,4 +117,4 @@ deps:
 	  fi; }
 
 clean:
-	rm -rf build build-check bin output/*.dat output/*.summary output/*.md output/*.tmp plots/*.png
+	rm -rf build build-check bin output/*.dat output/*.summary output/*.md output/*.tmp.* plots/*.png

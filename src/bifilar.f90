@@ -35,79 +35,80 @@ program bifilar
         character(len=:), allocatable :: s
     end type arg_t
     type(arg_t), allocatable :: decks(:)
+    type(arg_t) :: outdir, arg, line, report_dir  ! strings in a type: gfortran 12 warns on
+                                                   ! deferred-length ones of a main program
     type(status_t) :: stat
-    character(len=:), allocatable :: outdir, arg, line, report_dir
     integer :: i, nargs, ndecks, worst
     logical :: report, options_done, out_given
 
     nargs = command_argument_count()
-    outdir = 'output'
+    outdir%s = 'output'
     out_given = .false.
     report = .false.
-    report_dir = 'output'
+    report_dir%s = 'output'
     options_done = .false.
     allocate (decks(nargs))
     ndecks = 0
     i = 1
     do while (i <= nargs)
-        arg = argument(i)
+        arg%s = argument(i)
         i = i + 1
-        if (options_done .or. len(arg) == 0) then
-            if (len(arg) == 0) call usage('an empty deck name')
+        if (options_done .or. len(arg%s) == 0) then
+            if (len(arg%s) == 0) call usage('an empty deck name')
             ndecks = ndecks + 1
-            decks(ndecks)%s = arg
+            decks(ndecks)%s = arg%s
             cycle
         end if
-        if (arg == '--') then
+        if (arg%s == '--') then
             options_done = .true.
-        else if (arg == '--help' .or. arg == '-h') then
+        else if (arg%s == '--help' .or. arg%s == '-h') then
             call help()
-        else if (arg == '--version' .or. arg == '-V') then
+        else if (arg%s == '--version' .or. arg%s == '-V') then
             write (output_unit, '(a)') 'bifilar '//BIFILAR_VERSION
             call finish(EXIT_OK)
-        else if (arg == '--report') then
+        else if (arg%s == '--report') then
             report = .true.
             if (i <= nargs) then
-                arg = argument(i)
-                if (len(arg) > 0) then
-                    if (arg(1:1) /= '-') then
-                        report_dir = arg
+                arg%s = argument(i)
+                if (len(arg%s) > 0) then
+                    if (arg%s(1:1) /= '-') then
+                        report_dir%s = arg%s
                         i = i + 1
                     end if
                 end if
             end if
-        else if (arg == '--out' .or. index(arg, '--out=') == 1) then
-            if (arg == '--out') then
+        else if (arg%s == '--out' .or. index(arg%s, '--out=') == 1) then
+            if (arg%s == '--out') then
                 if (i > nargs) call usage('--out needs a folder name')
-                outdir = argument(i)
+                outdir%s = argument(i)
                 i = i + 1
             else
-                outdir = arg(7:)
+                outdir%s = arg%s(7:)
             end if
-            if (len(outdir) == 0) call usage('--out needs a folder name (got an empty one)')
+            if (len(outdir%s) == 0) call usage('--out needs a folder name (got an empty one)')
             out_given = .true.
-        else if (arg(1:1) == '-' .and. len(arg) > 1) then
-            call usage('unknown option '//arg)
+        else if (arg%s(1:1) == '-' .and. len(arg%s) > 1) then
+            call usage('unknown option '//arg%s)
         else
             ndecks = ndecks + 1
-            decks(ndecks)%s = arg
+            decks(ndecks)%s = arg%s
         end if
     end do
 
     if (report) then
         if (ndecks > 0 .or. out_given) call usage('--report takes no decks and no --out')
-        call write_report(report_dir, stat)
+        call write_report(report_dir%s, stat)
         if (stat%code /= STATUS_OK) then
             call say(error_unit, error_line('', stat))
             call finish(exit_status(stat%code))
         end if
-        call say(output_unit, 'wrote '//report_dir//'/report.md')
+        call say(output_unit, 'wrote '//report_dir%s//'/report.md')
         call finish(EXIT_OK)
     end if
     if (ndecks == 0) call usage('no deck given')
 
     ! the output folder, before any computing
-    call make_dir(outdir, stat)
+    call make_dir(outdir%s, stat)
     if (stat%code /= STATUS_OK) then
         call say(error_unit, error_line('', stat))
         call finish(exit_status(stat%code))
@@ -115,9 +116,9 @@ program bifilar
 
     worst = EXIT_OK
     do i = 1, ndecks
-        call run_deck(decks(i)%s, outdir, line, stat)
+        call run_deck(decks(i)%s, outdir%s, line%s, stat)
         if (stat%code == STATUS_OK) then
-            call say(output_unit, line)
+            call say(output_unit, line%s)
         else
             call say(error_unit, error_line(decks(i)%s, stat))
         end if
@@ -171,9 +172,16 @@ contains
         call finish(EXIT_OK)
     end subroutine help
 
-    !> End the program with `status`, printing nothing more.
+    !> End the program with `status`, printing nothing more (the main program's strings are
+    !! freed first: nothing frees them at exit, and valgrind counts them as lost).
     subroutine finish(status)
         integer, intent(in) :: status
+        if (allocated(decks)) deallocate (decks)
+        if (allocated(outdir%s)) deallocate (outdir%s)
+        if (allocated(arg%s)) deallocate (arg%s)
+        if (allocated(line%s)) deallocate (line%s)
+        if (allocated(report_dir%s)) deallocate (report_dir%s)
+        if (allocated(stat%msg)) deallocate (stat%msg)
         flush (output_unit)
         flush (error_unit)
         call c_exit(int(status, c_int))

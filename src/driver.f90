@@ -9,7 +9,7 @@ module driver
     use text, only: itoa, sci
     use deck, only: deck_t, read_deck, analysis_requested
     use output_io, only: out_files_t
-    use simulate, only: run_simulation, run_summary_t, simulation_ready
+    use simulate, only: run_simulation, run_summary_t, simulation_ready, make_pendulum
     use stability, only: run_floquet, run_chart, floquet_ready
     use floquet, only: floquet_result_t
     use work_precision, only: run_work_precision, wp_result_t
@@ -60,59 +60,49 @@ contains
         if (stat%code /= STATUS_OK) return
 
         line = d%name//':'
-        if (analysis_requested(d, 'work_precision')) then
-            call run_work_precision(d, outdir, wp, stat, quiet=.true., files=files)
-            if (stat%code /= STATUS_OK) call give_up()
-            if (stat%code /= STATUS_OK) return
-            line = line//' work_precision '//itoa(count(wp%lsoda%ok))//' LSODA and '// &
-                itoa(count(wp%rk4%ok))//' RK4 points, reference confirmed to '// &
-                sci(wp%ref_agreement_theta, 1)//' rad;'
-        end if
-        if (analysis_requested(d, 'floquet')) then
-            call run_floquet(d, outdir, fr, stat, files=files)
-            if (stat%code /= STATUS_OK) call give_up()
-            if (stat%code /= STATUS_OK) return
-            write (buf, '(f0.6)') fr%period
-            line = line//' floquet period '//lead0(buf)//', max modulus '// &
-                sci(fr%max_modulus, 5)//', stable '//trim(merge('yes', 'no ', fr%stable))//';'
-        end if
-        if (analysis_requested(d, 'chart')) then
-            call run_chart(d, outdir, nstable, secs, stat, files=files, nfailed=nfailed)
-            if (stat%code /= STATUS_OK) call give_up()
-            if (stat%code /= STATUS_OK) return
-            write (buf, '(f0.2)') secs
-            line = line//' chart '//itoa(d%chart_nx*d%chart_ny)//' points, '//itoa(nstable)// &
-                ' stable, '//lead0(buf)//' s'
-            if (nfailed > 0) line = line//', '//itoa(nfailed)//' failed (-2 in the file)'
-            line = line//';'
-        end if
-        if (analysis_requested(d, 'simulate')) then
-            call run_simulation(d, outdir, sm, stat, files=files)
-            if (stat%code /= STATUS_OK) call give_up()
-            if (stat%code /= STATUS_OK) return
-            write (buf, '(f0.4)') sm%cpu_seconds
-            line = line//' simulate cpu '//lead0(buf)//' s, steps '//itoa(sm%steps)// &
-                ', rhs '//itoa(sm%rhs_evaluations)//', max |dE| '// &
-                sci(sm%max_abs_energy_error, 2)//', max |residual| '// &
-                sci(sm%max_abs_constraint_residual, 2)//';'
-        end if
-        call files%commit(stat)
-        if (stat%code /= STATUS_OK) return
-        line = line(1:len(line) - 1)
-
-    contains
-
-        !> A failure: remove every file of the run.
-        subroutine give_up()
-            call files%discard()
-        end subroutine give_up
-
+        run: block
+            if (analysis_requested(d, 'work_precision')) then
+                call run_work_precision(d, outdir, wp, stat, quiet=.true., files=files)
+                if (stat%code /= STATUS_OK) exit run
+                line = line//' work_precision '//itoa(count(wp%lsoda%ok))//' LSODA and '// &
+                    itoa(count(wp%rk4%ok))//' RK4 points, reference confirmed to '// &
+                    sci(wp%ref_agreement_theta, 1)//' rad;'
+            end if
+            if (analysis_requested(d, 'floquet')) then
+                call run_floquet(d, outdir, fr, stat, files=files)
+                if (stat%code /= STATUS_OK) exit run
+                write (buf, '(f0.6)') fr%period
+                line = line//' floquet period '//lead0(buf)//', max modulus '// &
+                    sci(fr%max_modulus, 5)//', stable '//trim(merge('yes', 'no ', fr%stable))//';'
+            end if
+            if (analysis_requested(d, 'chart')) then
+                call run_chart(d, outdir, nstable, secs, stat, files=files, nfailed=nfailed)
+                if (stat%code /= STATUS_OK) exit run
+                write (buf, '(f0.2)') secs
+                line = line//' chart '//itoa(d%chart_nx*d%chart_ny)//' points, '//itoa(nstable)// &
+                    ' stable, '//lead0(buf)//' s'
+                if (nfailed > 0) line = line//', '//itoa(nfailed)//' failed (-2 in the file)'
+                line = line//';'
+            end if
+            if (analysis_requested(d, 'simulate')) then
+                call run_simulation(d, outdir, sm, stat, files=files)
+                if (stat%code /= STATUS_OK) exit run
+                write (buf, '(f0.4)') sm%cpu_seconds
+                line = line//' simulate cpu '//lead0(buf)//' s, steps '//itoa(sm%steps)// &
+                    ', rhs '//itoa(sm%rhs_evaluations)//', max |dE| '// &
+                    sci(sm%max_abs_energy_error, 2)//', max |residual| '// &
+                    sci(sm%max_abs_constraint_residual, 2)//';'
+            end if
+            call files%commit(stat)                 ! on failure it removes them all
+            if (stat%code == STATUS_OK) line = line(1:len(line) - 1)
+            return
+        end block run
+        call files%discard()                    ! a failed analysis: remove every file
     end subroutine run_deck
 
     !> The preconditions of analyses = 'chart': the deck's own scene has a reachable
     !! geometry (each point of the grid is checked when it is computed).
     subroutine chart_ready(d, stat)
-        use simulate, only: make_pendulum
         type(deck_t), intent(in) :: d               !! the deck
         type(status_t), intent(out) :: stat         !! ERR_DECK
         type(pendulum_t) :: p

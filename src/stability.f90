@@ -7,7 +7,7 @@
 !! shows one line of progress on standard error when that is a terminal (module progress).
 module stability
     use kinds, only: dp, deg
-    use status, only: status_t, set_error, ERR_NUMERIC, ERR_DECK
+    use status, only: status_t, set_error, ERR_NUMERIC, ERR_DECK, ERR_MODEL
     use geometry, only: pendulum_t
     use deck, only: deck_t, deck_echo
     use simulate, only: make_pendulum
@@ -202,7 +202,8 @@ contains
                     if (st%code == 0) then
                         mods(i, j) = res%max_modulus
                         pers(i, j) = res%period
-                    else if (st%code /= ERR_DECK) then   ! ERR_DECK: no torsion at this amplitude
+                    else if (st%code /= ERR_DECK .and. st%code /= ERR_MODEL) then
+                        ! (ERR_DECK, ERR_MODEL: no torsion at this amplitude, CHART_INVALID)
                         mods(i, j) = CHART_FAILED
                         pers(i, j) = CHART_FAILED
                     end if

@@ -26,6 +26,7 @@ module work_precision
     use simulate, only: make_pendulum, start_state, angle_difference, sway_of
     use output_io, only: out_files_t, all_finite
     use text, only: sci
+    use progress, only: progress_t
     implicit none
     private
 
@@ -216,6 +217,7 @@ contains
         type(out_files_t), intent(inout), optional, target :: files  !! the run's files
         type(out_files_t), target :: own
         type(out_files_t), pointer :: fs
+        type(progress_t) :: pr
         type(pendulum_t) :: p
         real(dp), allocatable :: times(:), yref(:, :), ys(:, :), yh1(:, :), yh2(:, :)
         real(dp) :: y0(NSTATE), th0(5), ratio, e1
@@ -291,19 +293,21 @@ contains
             'against RK4 + Richardson (h = '//sci(res%ref_h, 2)//'): angles agree to '// &
             sci(res%ref_agreement_theta, 2)//', Q to '//sci(res%ref_agreement_q, 2)
 
-        ! LSODA curve
+        ! LSODA curve, then the fixed-step RK4 curve (one line of progress on a terminal)
+        call pr%start(d%name//': work_precision', WP_NRTOL + WP_NRK4)
         do i = 1, WP_NRTOL
             res%lsoda(i)%rtol = 10.0_dp**(-2 - i)
             call measure(res%lsoda(i), 0)
+            call pr%tick()
         end do
-
-        ! fixed-step RK4 curve
         do i = 1, WP_NRK4
             m = m_rk0*2**(i - 1)
             res%rk4(i)%h = d%dtau_out/m
+            call pr%tick()
             if (real(m, dp)*n > RK4_MAX_STEPS) cycle
             call measure(res%rk4(i), m)
         end do
+        call pr%finish()
 
         ! files
         path = outdir//'/'//d%name//'.wp.dat'

@@ -12,7 +12,7 @@ module test_deck
     implicit none
     private
 
-    public :: run_deck_tests
+    public :: run_deck_tests, write_text, exists, shell_count
 
     character(len=*), parameter :: DEFAULT_SCRATCH = 'build/test_decks'
     character, parameter :: NL = new_line('a')
@@ -619,14 +619,19 @@ contains
     !> Number of entries of dir whose name matches the grep pattern.
     integer function count_matching(dir, pattern) result(n)
         character(len=*), intent(in) :: dir, pattern
+        n = shell_count('ls -a '//dir//' | grep -c "'//pattern//'"', dir)
+    end function count_matching
+
+    !> The integer printed by a shell command (-1 when none); dir holds the scratch file.
+    integer function shell_count(cmd, dir) result(n)
+        character(len=*), intent(in) :: cmd, dir
         integer :: u, ios
-        call execute_command_line('ls -a '//dir//' | grep -c "'//pattern//'" > '//dir// &
-                                  '/count.txt')
         n = -1
+        call execute_command_line(cmd//' > '//dir//'/count.txt 2>/dev/null')
         open (newunit=u, file=dir//'/count.txt', status='old', action='read', iostat=ios)
         if (ios == 0) read (u, *, iostat=ios) n
-        close (u, status='delete')
-    end function count_matching
+        if (ios == 0) close (u, status='delete')
+    end function shell_count
 
     ! ---------------------------------------------------------------------------------------
     subroutine test_floquet_chart(t, dir)

@@ -8,6 +8,7 @@ module test_extreme
     use bifilar_model, only: motion_t
     use simulate, only: model_checks
     use deck, only: deck_t, read_deck, deck_echo
+    use test_deck, only: shell_count
     implicit none
     private
 
@@ -933,17 +934,6 @@ contains
         end do
         close (u)
     end function error_kind
-
-    !> The integer printed by a shell command (-1 when none); dir holds the scratch file.
-    integer function shell_count(cmd, dir) result(n)
-        character(len=*), intent(in) :: cmd, dir
-        integer :: u, ios
-        n = -1
-        call execute_command_line(cmd//' > '//dir//'/count.txt 2>/dev/null')
-        open (newunit=u, file=dir//'/count.txt', status='old', action='read', iostat=ios)
-        if (ios == 0) read (u, *, iostat=ios) n
-        if (ios == 0) close (u, status='delete')
-    end function shell_count
 
     ! ---------------------------------------------------------------------------------------
     !> True when no data line (not starting '#') of any file in dir holds nan or inf, and no

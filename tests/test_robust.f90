@@ -10,6 +10,7 @@ module test_robust
     use progress, only: progress_t
     use paper_claims, only: report_figures
     use test_extreme, only: file_has, no_nan
+    use test_deck, only: write_text, exists, shell_count
     use text, only: itoa
     implicit none
     private
@@ -258,7 +259,7 @@ contains
         integer :: ex, uid
         d = fresh('full_disk')
         m = d//'/disk'
-        uid = command_value('id -u', d)
+        uid = shell_count('id -u', d)
         if (uid /= 0) then
             write (*, '(a)') '   full disk: skipped (mounting a tmpfs needs root; CI runs as root)'
             return
@@ -563,17 +564,6 @@ contains
         call execute_command_line('('//cmd//') > '//d//'/stdout 2> '//d//'/stderr', exitstat=ex)
     end function run
 
-    !> The integer printed by a shell command (-1 when none).
-    integer function command_value(cmd, d) result(v)
-        character(len=*), intent(in) :: cmd, d
-        integer :: u, ios
-        v = -1
-        call execute_command_line(cmd//' > '//d//'/value.txt 2>/dev/null')
-        open (newunit=u, file=d//'/value.txt', status='old', action='read', iostat=ios)
-        if (ios == 0) read (u, *, iostat=ios) v
-        if (ios == 0) close (u, status='delete')
-    end function command_value
-
     !> The executable as an absolute path (for commands run in another folder).
     function abs_exe(exe) result(a)
         character(len=*), intent(in) :: exe
@@ -597,20 +587,6 @@ contains
         if (len(integ) > 0) s = s//integ//NL
         call write_text(path, s)
     end subroutine write_deck
-
-    subroutine write_text(path, text)
-        character(len=*), intent(in) :: path, text
-        integer :: u
-        open (newunit=u, file=path, status='replace', action='write', access='stream', &
-              form='unformatted')
-        write (u) text
-        close (u)
-    end subroutine write_text
-
-    logical function exists(path)
-        character(len=*), intent(in) :: path
-        inquire (file=path, exist=exists)
-    end function exists
 
     !> Number of lines of a text file (0 when absent).
     integer function lines(path) result(n)
@@ -648,7 +624,7 @@ contains
     !> Number of entries of a folder (hidden ones included); -1 when it cannot be listed.
     integer function count_entries(dir) result(n)
         character(len=*), intent(in) :: dir
-        n = command_value('ls -A '//dir//' | wc -l', SCR)
+        n = shell_count('ls -A '//dir//' | wc -l', SCR)
     end function count_entries
 
     logical function empty_dir(dir)
