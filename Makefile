@@ -30,11 +30,12 @@ FFLAGS += -fopenmp -std=f2008 -Wall -Wextra -Wno-compare-reals -fimplicit-none
 LIBS = -llapack -lblas
 
 # Library modules in dependency order (each only uses modules listed before it).
-LIB_MODULES = kinds status lapack_wrap ode_system lsoda radau stepper geometry kinematics gen_forces bifilar_model \
-              elastic_model elastic_gen elastic_solver deck output_io simulate floquet paper_claims stability work_precision
+LIB_MODULES = kinds status text progress lapack_wrap ode_system lsoda radau stepper geometry kinematics gen_forces \
+              bifilar_model elastic_model elastic_gen elastic_solver deck output_io simulate floquet paper_claims \
+              stability work_precision driver
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
 TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme test_work_precision test_elastic test_elastic_jac \
-               test_radau test_elastic_radau
+               test_radau test_elastic_radau test_robust
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
 
 .PHONY: all test check run report bench deps clean memcheck
@@ -105,15 +106,13 @@ memcheck: $(BIN)/bifilar
 
 DECKS = $(wildcard input/*.nml)
 run: deps $(BIN)/bifilar
-	mkdir -p output
-	@set -e; for d in $(DECKS); do echo "bifilar $$d"; $(BIN)/bifilar $$d; done
+	$(BIN)/bifilar $(DECKS)
 	$(BIN)/bifilar --report output
 	@$(MAKE) --no-print-directory plots
 
 report: $(BIN)/bifilar
 	mkdir -p output
-	@set -e; for d in cylinder_l180 cylinder_l195 triangle_plate cylinder_torsion; do \
-	  $(BIN)/bifilar input/$$d.nml; done
+	$(BIN)/bifilar $(patsubst %,input/%.nml,cylinder_l180 cylinder_l195 triangle_plate cylinder_torsion)
 	$(BIN)/bifilar --report output
 
 .PHONY: plots
@@ -130,4 +129,4 @@ deps:
 	  fi; }
 
 clean:
-	rm -rf build build-check bin output/*.dat output/*.summary output/*.md output/*.tmp plots/*.png
+	rm -rf build build-check bin output/*.dat output/*.summary output/*.md output/*.tmp.* plots/*.png

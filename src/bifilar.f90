@@ -1,135 +1,190 @@
 !> bifilar: dynamics of the bifilar pendulum (Kane & Tseng 1966), driven by namelist decks.
 !!
-!! Usage:  bifilar DECK.nml [--out DIR]
+!! Usage:  bifilar DECK.nml [DECK.nml ...] [--out DIR]
 !!         bifilar --report [DIR]   (DIR/report.md from the paper scenes' output in DIR)
-!! Runs the analyses the deck's &scene asks for and writes DIR/NAME.* (DIR defaults to
-!! `output`).  Exit status: 0 success, 1 usage, 2 bad deck, 3 numerical failure,
-!! 4 the model no longer holds (e.g. a cable goes slack), 5 output cannot be written.
+!!         bifilar --help | --version
+!! Runs each deck in turn (module driver) and writes DIR/NAME.* (DIR defaults to `output`
+!! and is created when missing); one summary line per deck on standard output, one error
+!! line per failed deck on standard error.  Exit status: the worst (largest) of the decks':
+!! 0 success, 1 usage, 2 bad deck, 3 numerical failure, 4 the model no longer holds (e.g. a
+!! cable goes slack), 5 output cannot be written.
+!!
+!! The program ends through C's exit() after flushing its output, so that nothing but its
+!! own lines reaches the terminal (gfortran's `error stop` adds "ERROR STOP n" and notes on
+!! floating-point flags).
 program bifilar
-    use, intrinsic :: iso_fortran_env, only: error_unit
-    use kinds, only: dp
-    use status, only: status_t, ERR_DECK, ERR_MODEL, ERR_IO
-    use deck, only: deck_t, read_deck, analysis_requested
-    use simulate, only: run_simulation, run_summary_t
+    use, intrinsic :: iso_c_binding, only: c_int
+    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+    use status, only: status_t, STATUS_OK
+    use output_io, only: make_dir
     use paper_claims, only: write_report
-    use stability, only: run_floquet, run_chart
-    use floquet, only: floquet_result_t
-    use work_precision, only: run_work_precision, wp_result_t
+    use driver, only: run_deck, exit_status, error_line, BIFILAR_VERSION, EXIT_OK, EXIT_USAGE
     implicit none
-    type(deck_t) :: d
+    interface
+        !> C library exit(3): ends the process with `status`, running the exit handlers
+        !! (the Fortran run-time library closes its units there).
+        subroutine c_exit(status) bind(C, name='exit')
+            import :: c_int
+            integer(c_int), value :: status
+        end subroutine c_exit
+    end interface
+    character(len=*), parameter :: USAGE_LINE = &
+        'usage: bifilar DECK.nml [DECK.nml ...] [--out DIR] | bifilar --report [DIR] | '// &
+        'bifilar --help | bifilar --version'
+    type :: arg_t
+        character(len=:), allocatable :: s
+    end type arg_t
+    type(arg_t), allocatable :: decks(:)
+    type(arg_t) :: outdir, arg, line, report_dir  ! strings in a type: gfortran 12 warns on
+                                                   ! deferred-length ones of a main program
     type(status_t) :: stat
-    type(run_summary_t) :: sm
-    type(floquet_result_t) :: fr
-    type(wp_result_t) :: wp
-    integer :: nstable
-    real(dp) :: secs
-    character(len=:), allocatable :: deck_path, outdir
-    character(len=1024) :: arg
-    integer :: i, nargs
+    integer :: i, nargs, ndecks, worst
+    logical :: report, options_done, out_given
 
     nargs = command_argument_count()
-    outdir = 'output'
-    deck_path = ''
+    outdir%s = 'output'
+    out_given = .false.
+    report = .false.
+    report_dir%s = 'output'
+    options_done = .false.
+    allocate (decks(nargs))
+    ndecks = 0
     i = 1
     do while (i <= nargs)
-        call get_command_argument(i, arg)
-        if (trim(arg) == '--report') then
-            if (i < nargs) call get_command_argument(i + 1, arg)
-            if (i == nargs) arg = 'output'
-            call write_report(trim(arg), stat)
-            if (stat%code /= 0) call fail(stat)
-            write (*, '(a)') 'wrote '//trim(arg)//'/report.md'
-            stop
-        else if (trim(arg) == '--out' .and. i < nargs) then
-            call get_command_argument(i + 1, arg)
-            outdir = trim(arg)
-            i = i + 2
-            cycle
-        else if (arg(1:1) == '-') then
-            call usage('unknown option '//trim(arg))
-        else if (len(deck_path) > 0) then
-            call usage('only one deck per run')
-        end if
-        deck_path = trim(arg)
+        arg%s = argument(i)
         i = i + 1
-    end do
-    if (len(deck_path) == 0) call usage('no deck given')
-
-    call read_deck(deck_path, d, stat)
-    if (stat%code /= 0) call fail(stat)
-
-    if (analysis_requested(d, 'work_precision')) then
-        call run_work_precision(d, outdir, wp, stat)
-        if (stat%code /= 0) call fail(stat)
-        if (trim(d%model) == 'elastic') then
-            write (*, '(a)') d%name//': work_precision: wrote '//outdir//'/'//d%name// &
-                '.wp.dat, .wp_rk4.dat and .wp_radau.dat (LSODA''s curve below)'
-        else
-            write (*, '(a)') d%name//': work_precision: wrote '//outdir//'/'//d%name// &
-                '.wp.dat and .wp_rk4.dat'
+        if (options_done .or. len(arg%s) == 0) then
+            if (len(arg%s) == 0) call usage('an empty deck name')
+            ndecks = ndecks + 1
+            decks(ndecks)%s = arg%s
+            cycle
         end if
-        write (*, '(a10,a12,a10,a12,a12)') 'rtol', 'cpu s', 'rhs', 'err theta', 'err Q'
-        do i = 1, size(wp%lsoda)
-            if (wp%lsoda(i)%ok) write (*, '(es10.1,es12.3,i10,2es12.3)') wp%lsoda(i)%rtol, &
-                wp%lsoda(i)%cpu_seconds, wp%lsoda(i)%rhs_evaluations, wp%lsoda(i)%error_theta, &
-                wp%lsoda(i)%error_q
-        end do
+        if (arg%s == '--') then
+            options_done = .true.
+        else if (arg%s == '--help' .or. arg%s == '-h') then
+            call help()
+        else if (arg%s == '--version' .or. arg%s == '-V') then
+            write (output_unit, '(a)') 'bifilar '//BIFILAR_VERSION
+            call finish(EXIT_OK)
+        else if (arg%s == '--report') then
+            report = .true.
+            if (i <= nargs) then
+                arg%s = argument(i)
+                if (len(arg%s) > 0) then
+                    if (arg%s(1:1) /= '-') then
+                        report_dir%s = arg%s
+                        i = i + 1
+                    end if
+                end if
+            end if
+        else if (arg%s == '--out' .or. index(arg%s, '--out=') == 1) then
+            if (arg%s == '--out') then
+                if (i > nargs) call usage('--out needs a folder name')
+                outdir%s = argument(i)
+                i = i + 1
+            else
+                outdir%s = arg%s(7:)
+            end if
+            if (len(outdir%s) == 0) call usage('--out needs a folder name (got an empty one)')
+            out_given = .true.
+        else if (arg%s(1:1) == '-' .and. len(arg%s) > 1) then
+            call usage('unknown option '//arg%s)
+        else
+            ndecks = ndecks + 1
+            decks(ndecks)%s = arg%s
+        end if
+    end do
+
+    if (report) then
+        if (ndecks > 0 .or. out_given) call usage('--report takes no decks and no --out')
+        call write_report(report_dir%s, stat)
+        if (stat%code /= STATUS_OK) then
+            call say(error_unit, error_line('', stat))
+            call finish(exit_status(stat%code))
+        end if
+        call say(output_unit, 'wrote '//report_dir%s//'/report.md')
+        call finish(EXIT_OK)
     end if
-    if (analysis_requested(d, 'floquet')) then
-        call run_floquet(d, outdir, fr, stat)
-        if (stat%code /= 0) call fail(stat)
-        write (*, '(a,a,f0.6,a,es12.5,a,a)') d%name, ': floquet period ', fr%period, &
-            ', max modulus ', fr%max_modulus, ', stable ', merge('yes', 'no ', fr%stable)
+    if (ndecks == 0) call usage('no deck given')
+
+    ! the output folder, before any computing
+    call make_dir(outdir%s, stat)
+    if (stat%code /= STATUS_OK) then
+        call say(error_unit, error_line('', stat))
+        call finish(exit_status(stat%code))
     end if
-    if (analysis_requested(d, 'chart')) then
-        call run_chart(d, outdir, nstable, secs, stat)
-        if (stat%code /= 0) call fail(stat)
-        write (*, '(a,a,i0,a,i0,a,f0.2,a)') d%name, ': chart ', d%chart_nx*d%chart_ny, &
-            ' points, ', nstable, ' stable, ', secs, ' s'
-    end if
-    if (analysis_requested(d, 'simulate')) then
-        call run_simulation(d, outdir, sm, stat)
-        if (stat%code /= 0) call fail(stat)
-        write (*, '(a,a,f0.4,a,i0,a,i0,a,es9.2,a,es9.2)') d%name, ': cpu ', sm%cpu_seconds, &
-            ' s, steps ', sm%steps, ', rhs ', sm%rhs_evaluations, ', max |dE| ', &
-            sm%max_abs_energy_error, ', max |residual| ', sm%max_abs_constraint_residual
-    end if
-    ! main-program variables are never freed by the run-time library: free them (valgrind)
-    deallocate (deck_path, outdir)
+
+    worst = EXIT_OK
+    do i = 1, ndecks
+        call run_deck(decks(i)%s, outdir%s, line%s, stat)
+        if (stat%code == STATUS_OK) then
+            call say(output_unit, line%s)
+        else
+            call say(error_unit, error_line(decks(i)%s, stat))
+        end if
+        worst = max(worst, exit_status(stat%code))
+    end do
+    call finish(worst)
 
 contains
 
+    !> Command argument i, of any length.
+    function argument(k) result(a)
+        integer, intent(in) :: k
+        character(len=:), allocatable :: a
+        integer :: n
+        call get_command_argument(k, length=n)
+        allocate (character(len=n) :: a)
+        if (n > 0) call get_command_argument(k, a)
+    end function argument
+
+    !> One line on a unit.
+    subroutine say(unit, text)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: text
+        write (unit, '(a)') text
+    end subroutine say
+
+    !> A usage error: one line naming it and the usage, exit status 1.
     subroutine usage(msg)
         character(len=*), intent(in) :: msg
-        write (error_unit, '(a)') 'bifilar: '//msg
-        write (error_unit, '(a)') 'usage: bifilar DECK.nml [--out DIR] | bifilar --report [DIR]'
-        error stop 1
+        call say(error_unit, 'bifilar: '//msg//'; '//USAGE_LINE)
+        call finish(EXIT_USAGE)
     end subroutine usage
 
-    subroutine fail(st)
-        type(status_t), intent(in) :: st
-        character(len=24) :: kind      ! fixed length: error stop frees nothing (valgrind)
-        select case (st%code)
-        case (ERR_DECK)
-            kind = 'bad input'
-        case (ERR_MODEL)
-            kind = 'model no longer valid'
-        case (ERR_IO)
-            kind = 'cannot write output'
-        case default
-            kind = 'numerical failure'
-        end select
-        write (error_unit, '(a)') 'bifilar: error ('//trim(kind)//'): '//st%msg
-        select case (st%code)
-        case (ERR_DECK)
-            error stop 2
-        case (ERR_MODEL)
-            error stop 4
-        case (ERR_IO)
-            error stop 5
-        case default
-            error stop 3
-        end select
-    end subroutine fail
+    !> --help: what the program does, its arguments and exit statuses; exit status 0.
+    subroutine help()
+        call say(output_unit, 'bifilar '//BIFILAR_VERSION//': dynamics of the bifilar '// &
+                 'pendulum (Kane & Tseng 1966)')
+        call say(output_unit, USAGE_LINE)
+        call say(output_unit, '  DECK.nml ...    namelist decks, run in turn; DIR/NAME.dat, '// &
+                 '.summary, ... per deck (NAME: the file name without .nml)')
+        call say(output_unit, '  --out DIR       output folder (default output), created '// &
+                 'when missing')
+        call say(output_unit, '  --report [DIR]  DIR/report.md from the paper scenes'' '// &
+                 'output in DIR (default output)')
+        call say(output_unit, '  --help, --version')
+        call say(output_unit, 'One summary line per deck on standard output, one error line '// &
+                 'per failed deck on standard error; a failed deck leaves no file.')
+        call say(output_unit, 'Exit status (the largest over the decks): 0 success, 1 usage, '// &
+                 '2 bad deck, 3 numerical failure, 4 the model no longer holds, 5 output '// &
+                 'cannot be written.')
+        call finish(EXIT_OK)
+    end subroutine help
+
+    !> End the program with `status`, printing nothing more (the main program's strings are
+    !! freed first: nothing frees them at exit, and valgrind counts them as lost).
+    subroutine finish(status)
+        integer, intent(in) :: status
+        if (allocated(decks)) deallocate (decks)
+        if (allocated(outdir%s)) deallocate (outdir%s)
+        if (allocated(arg%s)) deallocate (arg%s)
+        if (allocated(line%s)) deallocate (line%s)
+        if (allocated(report_dir%s)) deallocate (report_dir%s)
+        if (allocated(stat%msg)) deallocate (stat%msg)
+        flush (output_unit)
+        flush (error_unit)
+        call c_exit(int(status, c_int))
+    end subroutine finish
 
 end program bifilar

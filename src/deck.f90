@@ -4,10 +4,12 @@
 !! and its value, what is wrong and what is allowed.  Cable reachability is checked by the
 !! geometry module.
 module deck
+    use, intrinsic :: iso_fortran_env, only: int64
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_usual, ieee_support_halting, &
         ieee_get_halting_mode, ieee_set_halting_mode, ieee_set_flag
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
+    use text, only: itoa, sci
     implicit none
     private
 
@@ -80,7 +82,20 @@ module deck
     real(dp), parameter :: RTOL_MIN = 1.0e-14_dp        !! smallest relative tolerance
     real(dp), parameter :: ATOL_MIN = 1.0e-30_dp        !! smallest absolute tolerance
     real(dp), parameter :: ATOL_MAX = 1.0_dp            !! largest absolute tolerance
-    real(dp), parameter :: MAX_ROWS = 1.0e7_dp          !! largest tau_end/dtau_out
+    real(dp), parameter :: MAX_ROWS = 1.0e5_dp          !! largest tau_end/dtau_out
+    real(dp), parameter :: TAU_END_MAX = 1.0e6_dp       !! longest simulation (units of tau)
+    !> Every dimensional value (lengths, g, mass, moments of inertia) lies in
+    !! DIM_MIN .. DIM_MAX, in any units: no product of them over- or underflows.
+    real(dp), parameter :: DIM_MIN = 1.0e-100_dp, DIM_MAX = 1.0e100_dp
+    !> The scale-free ratios: b, l, l' over b' in RATIO_MIN .. RATIO_MAX; r and |sway_depth|
+    !! over b' at most RATIO_MAX; each principal moment over m b'^2 in INERTIA_MIN ..
+    !! INERTIA_MAX.
+    real(dp), parameter :: RATIO_MIN = 1.0e-3_dp, RATIO_MAX = 1.0e3_dp
+    real(dp), parameter :: INERTIA_MIN = 1.0e-6_dp, INERTIA_MAX = 1.0e6_dp
+    !> Largest |angle| (rad) of tilt, theta, lambda; angles are reduced modulo 2 pi.
+    real(dp), parameter :: ANGLE_MAX = 1.0e6_dp
+    !> Largest |theta_dot| (rad per unit tau); the natural frequencies are of order 1.
+    real(dp), parameter :: RATE_MAX = 1.0e3_dp
     real(dp), parameter :: STIFFNESS_MIN = 1.0_dp       !! &cables stiffness range
     real(dp), parameter :: STIFFNESS_MAX = 1.0e12_dp
     real(dp), parameter :: DAMPING_MAX = 10.0_dp        !! largest &cables damping ratio
@@ -91,6 +106,10 @@ module deck
     integer, parameter :: MAX_CHART_N = 1000            !! most chart points along one axis
     integer, parameter :: MAX_CHART_POINTS = 250000     !! most chart points, nx*ny
     real(dp), parameter :: PI_HALF = 1.5707963267948966_dp
+    integer, parameter :: MAX_LINE = 4096               !! longest deck line (characters)
+    integer, parameter :: MAX_DECK_BYTES = 1000000      !! largest deck (bytes)
+    integer, parameter :: CLIP_LEN = 60                 !! longest value quoted in a message
+    integer, parameter :: MAX_TEXT = 256                !! longest quoted value (title, words)
 
 contains
 
@@ -126,6 +145,7 @@ contains
         namelist /cables/ stiffness, damping
         namelist /chart/ x, x_min, x_max, nx, y, y_min, y_max, ny
         integer :: u, ios, k
+        integer(int64) :: fsize
         character(len=512) :: msg
         logical :: halting(size(ieee_usual))
 
@@ -172,14 +192,20 @@ contains
         ny = d%chart_ny
 
         msg = ''
+        inquire (file=path, size=fsize, iostat=ios)
+        if (ios == 0 .and. fsize > MAX_DECK_BYTES) then
+            call set_error(stat, ERR_DECK, 'the deck is larger than '//itoa(MAX_DECK_BYTES)// &
+                           ' bytes; allowed: decks of at most '//itoa(MAX_DECK_BYTES)//' bytes')
+            return
+        end if
         open (newunit=u, file=path, status='old', action='read', form='formatted', &
               access='sequential', iostat=ios, iomsg=msg)
         if (ios /= 0) then
-            call set_error(stat, ERR_DECK, 'cannot open deck '''//path//''': '//trim(msg))
+            call set_error(stat, ERR_DECK, 'cannot open the deck: '//trim(msg))
             return
         end if
 
-        call check_group_names(u, path, d%name, stat)
+        call check_group_names(u, stat)
         if (stat%code == STATUS_OK) then
             ! Values such as 1e400 overflow inside the run-time library: read without traps,
             ! the finiteness checks below catch the result.
@@ -202,17 +228,17 @@ contains
             if (analyses(k:k) == achar(9)) analyses(k:k) = ' '
         end do
         analyses = adjustl(analyses)
-        call check_word(stat, d%name, 'scene', 'model', model, MODELS_ALLOWED)
+        call check_word(stat, 'scene', 'model', model, MODELS_ALLOWED)
         if (stat%code /= STATUS_OK) return
-        call check_analyses(stat, d%name, analyses)
+        call check_analyses(stat, analyses)
         if (stat%code /= STATUS_OK) return
-        call check_word(stat, d%name, 'start', 'mode', mode, 'raised angles')
+        call check_word(stat, 'start', 'mode', mode, 'raised angles')
         if (stat%code /= STATUS_OK) return
-        call check_word(stat, d%name, 'integration', 'method', method, METHODS_ALLOWED)
+        call check_word(stat, 'integration', 'method', method, METHODS_ALLOWED)
         if (stat%code /= STATUS_OK) return
-        call check_word(stat, d%name, 'chart', 'x', x, CHART_VARIABLES)
+        call check_word(stat, 'chart', 'x', x, CHART_VARIABLES)
         if (stat%code /= STATUS_OK) return
-        call check_word(stat, d%name, 'chart', 'y', y, CHART_VARIABLES)
+        call check_word(stat, 'chart', 'y', y, CHART_VARIABLES)
         if (stat%code /= STATUS_OK) return
         d%title = title
         d%analyses = lower(adjustl(analyses))
@@ -252,7 +278,14 @@ contains
         d%chart_y_min = y_min
         d%chart_y_max = y_max
         d%chart_ny = ny
-        call validate(d, stat)
+        call check_suspension(d, stat)
+        call check_body(d, stat)
+        call check_start(d, stat)
+        call check_integration(d, stat)
+        call check_cables(d, stat)
+        call check_floquet(d, stat)
+        call check_chart(d, stat)
+        if (stat%code == STATUS_OK) call reduce_angles(d)
 
     contains
 
@@ -263,19 +296,26 @@ contains
             character(len=*), intent(in) :: spec        !! variables, see SPEC_*
             logical :: found, complete
             character(len=:), allocatable :: text, why
+            integer, allocatable :: breaks(:)
             integer :: ios2
             character(len=512) :: msg2
 
             if (stat%code /= STATUS_OK) return
-            call scan_group(u, grp, found, complete, text, ios2, msg2)
+            call scan_group(u, grp, found, complete, text, breaks, ios2, msg2)
             if (ios2 > 0) then
-                call set_error(stat, ERR_DECK, d%name//': cannot read deck '''//path// &
-                               ''': '//trim(msg2))
+                call set_error(stat, ERR_DECK, 'cannot read the deck: '//trim(msg2))
                 return
             end if
             if (.not. found) then
-                if (required) call set_error(stat, ERR_DECK, d%name//': &'//grp// &
+                if (required) call set_error(stat, ERR_DECK, '&'//grp// &
                     ' group missing; it is required (a deck needs &suspension and &body)')
+                return
+            end if
+            ! what the run-time library cannot be trusted with never reaches it
+            why = subscript_problem(text, breaks)
+            if (len(why) == 0) why = long_text(text)
+            if (len(why) > 0) then
+                call set_error(stat, ERR_DECK, 'cannot read namelist group &'//grp//': '//why)
                 return
             end if
             rewind (u)
@@ -302,16 +342,16 @@ contains
             ! the last line when that line has no newline; the group itself was read.
             if (ios2 == 0 .or. (is_iostat_end(ios2) .and. complete)) return
             if (.not. complete) then
-                call set_error(stat, ERR_DECK, d%name//': cannot read namelist group &'//grp// &
+                call set_error(stat, ERR_DECK, 'cannot read namelist group &'//grp// &
                     ': no closing ''/'' before the end of the file (truncated deck?)')
                 return
             end if
             why = explain(text, grp, spec)
             if (len(why) > 0) then
-                call set_error(stat, ERR_DECK, d%name//': cannot read namelist group &'//grp// &
+                call set_error(stat, ERR_DECK, 'cannot read namelist group &'//grp// &
                                ': '//why//' (reader: '//trim(msg2)//')')
             else
-                call set_error(stat, ERR_DECK, d%name//': cannot read namelist group &'//grp// &
+                call set_error(stat, ERR_DECK, 'cannot read namelist group &'//grp// &
                                ': '//trim(msg2))
             end if
         end subroutine read_group
@@ -361,73 +401,114 @@ contains
     !> Write the effective deck as '# ' comment lines, one namelist-like line per group
     !! (&floquet and &chart only when that analysis is requested); the reals are the
     !! shortest decimals that read back exactly.
-    subroutine deck_echo(d, unit)
+    subroutine deck_echo(d, unit, ios)
         type(deck_t), intent(in) :: d               !! the deck
         integer, intent(in) :: unit                 !! open formatted unit
+        integer, intent(inout) :: ios               !! writer's iostat: nothing written when
+                                                    !! /= 0 on entry; the first failure
         integer :: i
         character(len=:), allocatable :: line
-        write (unit, '(a)') '# deck '//d%path
-        write (unit, '(a)') '# &scene title = '//quoted(d%title)//', analyses = '// &
-            quoted(d%analyses)//', model = '//quoted(d%model)//' /'
-        write (unit, '(a)') '# &suspension b = '//rshort(d%b)//', b_prime = '//rshort(d%b_prime)// &
-            ', l = '//rshort(d%l)//', l_prime = '//rshort(d%l_prime)//', g = '//rshort(d%g)//' /'
+        call put('# deck '//d%path)
+        call put('# &scene title = '//quoted(d%title)//', analyses = '//quoted(d%analyses)// &
+                 ', model = '//quoted(d%model)//' /')
+        call put('# &suspension b = '//rshort(d%b)//', b_prime = '//rshort(d%b_prime)// &
+                 ', l = '//rshort(d%l)//', l_prime = '//rshort(d%l_prime)//', g = '// &
+                 rshort(d%g)//' /')
         line = '# &body mass = '//rshort(d%mass)//', inertia = '//rlist_short(d%inertia)// &
             ', r = '//rshort(d%r)//', lambda = '//rshort(d%lambda)
         do i = 1, 3
             line = line//', btilde('//achar(iachar('0') + i)//',:) = '//rlist_short(d%btilde(i, :))
         end do
-        write (unit, '(a)') line//', sway_depth = '//rshort(d%sway_depth)//' /'
-        write (unit, '(a)') '# &start mode = '//quoted(d%mode)//', amplitude = '// &
-            rshort(d%amplitude)//', tilt = '//rshort(d%tilt)//', theta = '//rlist_short(d%theta)// &
-            ', theta_dot = '//rlist_short(d%theta_dot)//' /'
+        call put(line//', sway_depth = '//rshort(d%sway_depth)//' /')
+        call put('# &start mode = '//quoted(d%mode)//', amplitude = '//rshort(d%amplitude)// &
+                 ', tilt = '//rshort(d%tilt)//', theta = '//rlist_short(d%theta)// &
+                 ', theta_dot = '//rlist_short(d%theta_dot)//' /')
         line = '.false.'
         if (d%error_estimate) line = '.true.'
-        write (unit, '(a)') '# &integration tau_end = '//rshort(d%tau_end)//', dtau_out = '// &
-            rshort(d%dtau_out)//', rtol = '//rshort(d%rtol)//', atol = '//rshort(d%atol)// &
-            ', error_estimate = '//line//', method = '//quoted(d%method)//' /'
-        if (trim(d%model) == 'elastic') write (unit, '(a)') '# &cables stiffness = '// &
-            rshort(d%cable_stiffness)//', damping = '//rshort(d%cable_damping)//' /'
-        if (analysis_requested(d, 'floquet')) write (unit, '(a)') '# &floquet amplitude = '// &
+        call put('# &integration tau_end = '//rshort(d%tau_end)//', dtau_out = '// &
+                 rshort(d%dtau_out)//', rtol = '//rshort(d%rtol)//', atol = '//rshort(d%atol)// &
+                 ', error_estimate = '//line//', method = '//quoted(d%method)//' /')
+        if (trim(d%model) == 'elastic') call put('# &cables stiffness = '// &
+            rshort(d%cable_stiffness)//', damping = '//rshort(d%cable_damping)//' /')
+        if (analysis_requested(d, 'floquet')) call put('# &floquet amplitude = '// &
             rshort(d%floquet_amplitude)//', segments = '//itoa(d%floquet_segments)// &
-            ', rtol = '//rshort(d%floquet_rtol)//' /'
-        if (analysis_requested(d, 'chart')) write (unit, '(a)') '# &chart x = '// &
+            ', rtol = '//rshort(d%floquet_rtol)//' /')
+        if (analysis_requested(d, 'chart')) call put('# &chart x = '// &
             quoted(d%chart_x)//', x_min = '//rshort(d%chart_x_min)//', x_max = '// &
             rshort(d%chart_x_max)//', nx = '//itoa(d%chart_nx)//', y = '//quoted(d%chart_y)// &
             ', y_min = '//rshort(d%chart_y_min)//', y_max = '//rshort(d%chart_y_max)// &
-            ', ny = '//itoa(d%chart_ny)//' /'
+            ', ny = '//itoa(d%chart_ny)//' /')
+
+    contains
+
+        subroutine put(text)
+            character(len=*), intent(in) :: text
+            if (ios == 0) write (unit, '(a)', iostat=ios) text
+        end subroutine put
+
     end subroutine deck_echo
 
     ! ---------------------------------------------------------------- validation
+    ! One routine per group, each checking the values of its group (the defaults are in
+    ! deck_t); the first problem sets stat and the later routines return at once.
 
-    !> Check every value of a deck read from file; the first problem sets stat.
-    subroutine validate(d, stat)
+    !> &suspension: all lengths and g finite, > 0 and within DIM_MIN .. DIM_MAX; b, l, l'
+    !! over b' within RATIO_MIN .. RATIO_MAX.
+    subroutine check_suspension(d, stat)
         type(deck_t), intent(in) :: d               !! deck with the values read
         type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
-        character(len=:), allocatable :: nm
-        real(dp) :: t(3), half(3), slack, mmt(3,3), det, err
+        if (stat%code /= STATUS_OK) return
+        call positive(stat, 'suspension', 'b', d%b, 'lengths > 0')
+        call positive(stat, 'suspension', 'b_prime', d%b_prime, 'lengths > 0')
+        call positive(stat, 'suspension', 'l', d%l, 'lengths > 0')
+        call positive(stat, 'suspension', 'l_prime', d%l_prime, 'lengths > 0')
+        call positive(stat, 'suspension', 'g', d%g, 'g > 0')
+        call dimensional(stat, 'suspension', 'b_prime', d%b_prime)
+        call dimensional(stat, 'suspension', 'b', d%b)
+        call dimensional(stat, 'suspension', 'l', d%l)
+        call dimensional(stat, 'suspension', 'l_prime', d%l_prime)
+        call dimensional(stat, 'suspension', 'g', d%g)
+        call over_b_prime(stat, 'suspension', 'b', d%b, d%b_prime, RATIO_MIN)
+        call over_b_prime(stat, 'suspension', 'l', d%l, d%b_prime, RATIO_MIN)
+        call over_b_prime(stat, 'suspension', 'l_prime', d%l_prime, d%b_prime, RATIO_MIN)
+    end subroutine check_suspension
+
+    !> &body: mass > 0; principal moments > 0 obeying the triangle inequalities; r >= 0;
+    !! btilde a right-handed orthonormal matrix; everything finite.
+    subroutine check_body(d, stat)
+        type(deck_t), intent(in) :: d               !! deck with the values read
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+        real(dp) :: t(3), half(3), slack, mmt(3,3), det, err, lr
         integer :: i, j, iw, jw
         character(len=*), parameter :: TRI_NAMES(3) = ['I1', 'I2', 'I3']
-
-        nm = d%name
-        ! &suspension
-        call positive('suspension', 'b', d%b, 'lengths > 0')
-        call positive('suspension', 'b_prime', d%b_prime, 'lengths > 0')
-        call positive('suspension', 'l', d%l, 'lengths > 0')
-        call positive('suspension', 'l_prime', d%l_prime, 'lengths > 0')
-        call positive('suspension', 'g', d%g, 'g > 0')
         if (stat%code /= STATUS_OK) return
-
-        ! &body
-        call positive('body', 'mass', d%mass, 'mass > 0')
+        call positive(stat, 'body', 'mass', d%mass, 'mass > 0')
         do i = 1, 3
-            call finite('body', 'inertia', d%inertia(i))
+            call finite(stat, 'body', 'inertia', d%inertia(i))
         end do
         if (stat%code /= STATUS_OK) return
         if (any(d%inertia <= 0.0_dp)) then
-            call bad('body', 'inertia', rlist_short(d%inertia), &
+            call bad(stat, 'body', 'inertia', rlist_short(d%inertia), &
                      'a principal moment of inertia is <= 0', 'all three > 0')
             return
         end if
+        call dimensional(stat, 'body', 'mass', d%mass)
+        do i = 1, 3
+            call dimensional(stat, 'body', 'inertia', d%inertia(i))
+        end do
+        if (stat%code /= STATUS_OK) return
+        ! I/(m b'^2) in logarithms: the quotient itself may overflow
+        do i = 1, 3
+            lr = log(d%inertia(i)) - log(d%mass) - 2.0_dp*log(d%b_prime)
+            if (lr < log(INERTIA_MIN) .or. lr > log(INERTIA_MAX)) then
+                call bad(stat, 'body', 'inertia', rlist_short(d%inertia), TRI_NAMES(i)// &
+                         '/(mass b_prime^2) = '//sci(exp(max(-700.0_dp, min(700.0_dp, lr))))// &
+                         ' out of range (mass = '//rshort(d%mass)//', b_prime = '// &
+                         rshort(d%b_prime)//')', rshort(INERTIA_MIN)//' <= I/(mass b_prime^2)'// &
+                         ' <= '//rshort(INERTIA_MAX)//' for each principal moment')
+                return
+            end if
+        end do
         ! triangle inequalities, in halves so that nothing overflows
         half = 0.5_dp*d%inertia
         slack = TRIANGLE_SLACK*maxval(half)
@@ -436,30 +517,33 @@ contains
             t(i) = 0.0_dp
             if (half(i) - t(1) - t(2) - t(3) > slack) then
                 j = modulo(i, 3) + 1
-                call bad('body', 'inertia', rlist_short(d%inertia), TRI_NAMES(i)//' > '// &
-                         TRI_NAMES(j)//' + '//TRI_NAMES(modulo(j, 3) + 1)// &
+                call bad(stat, 'body', 'inertia', rlist_short(d%inertia), TRI_NAMES(i)// &
+                         ' > '//TRI_NAMES(j)//' + '//TRI_NAMES(modulo(j, 3) + 1)// &
                          ' violates the triangle inequality', &
                          'each principal moment <= the sum of the other two')
                 return
             end if
         end do
-        call finite('body', 'r', d%r)
-        call finite('body', 'lambda', d%lambda)
+        call finite(stat, 'body', 'r', d%r)
+        call finite(stat, 'body', 'lambda', d%lambda)
         if (stat%code /= STATUS_OK) return
         if (d%r < 0.0_dp) then
-            call bad('body', 'r', rshort(d%r), 'negative distance', 'r >= 0')
+            call bad(stat, 'body', 'r', rshort(d%r), 'negative distance', 'r >= 0')
             return
         end if
+        if (d%r > 0.0_dp) call over_b_prime(stat, 'body', 'r', d%r, d%b_prime, 0.0_dp)
+        call angle(stat, 'body', 'lambda', d%lambda)
+        if (stat%code /= STATUS_OK) return
         do i = 1, 3
             do j = 1, 3
-                call finite('body', 'btilde('//achar(iachar('0') + i)//','// &
+                call finite(stat, 'body', 'btilde('//achar(iachar('0') + i)//','// &
                             achar(iachar('0') + j)//')', d%btilde(i, j))
             end do
         end do
         if (stat%code /= STATUS_OK) return
         if (any(abs(d%btilde) > 1.0_dp + ORTHO_TOL)) then
-            call bad('body', 'btilde', btilde_short(d%btilde), 'an element exceeds 1 in ' // &
-                     'magnitude, rows are not orthonormal', ortho_allowed())
+            call bad(stat, 'body', 'btilde', btilde_short(d%btilde), 'an element ' // &
+                     'exceeds 1 in magnitude, rows are not orthonormal', ortho_allowed())
             return
         end if
         mmt = matmul(d%btilde, transpose(d%btilde))
@@ -483,11 +567,11 @@ contains
         end do
         if (err > ORTHO_TOL) then
             if (iw == jw) then
-                call bad('body', 'btilde', btilde_short(d%btilde), 'row '// &
+                call bad(stat, 'body', 'btilde', btilde_short(d%btilde), 'row '// &
                          achar(iachar('0') + iw)//' is not a unit vector (length^2 = '// &
                          rshort(mmt(iw, iw))//')', ortho_allowed())
             else
-                call bad('body', 'btilde', btilde_short(d%btilde), 'rows '// &
+                call bad(stat, 'body', 'btilde', btilde_short(d%btilde), 'rows '// &
                          achar(iachar('0') + iw)//' and '//achar(iachar('0') + jw)// &
                          ' are not orthogonal (dot product = '//rshort(mmt(iw, jw))//')', &
                          ortho_allowed())
@@ -498,102 +582,146 @@ contains
             - d%btilde(1, 2)*(d%btilde(2, 1)*d%btilde(3, 3) - d%btilde(2, 3)*d%btilde(3, 1)) &
             + d%btilde(1, 3)*(d%btilde(2, 1)*d%btilde(3, 2) - d%btilde(2, 2)*d%btilde(3, 1))
         if (det < 0.0_dp) then
-            call bad('body', 'btilde', btilde_short(d%btilde), 'left-handed (determinant = '// &
-                     rshort(det)//')', 'a right-handed orthonormal matrix, determinant +1; '// &
-                     'change the sign of one row')
+            call bad(stat, 'body', 'btilde', btilde_short(d%btilde), 'left-handed ' // &
+                     '(determinant = '//rshort(det)//')', 'a right-handed orthonormal ' // &
+                     'matrix, determinant +1; change the sign of one row')
             return
         end if
-        call finite('body', 'sway_depth', d%sway_depth)
+        call finite(stat, 'body', 'sway_depth', d%sway_depth)
         if (stat%code /= STATUS_OK) return
+        if (d%sway_depth /= 0.0_dp) call over_b_prime(stat, 'body', 'sway_depth', &
+                                                       d%sway_depth, d%b_prime, 0.0_dp)
+    end subroutine check_body
 
-        ! &start
-        call finite('start', 'amplitude', d%amplitude)
-        call finite('start', 'tilt', d%tilt)
+    !> &start: finite values; for mode 'raised' 0 < amplitude < 180 degrees; |angles| at most
+    !! ANGLE_MAX (they are reduced modulo 2 pi by reduce_angles), |rates| at most RATE_MAX.
+    subroutine check_start(d, stat)
+        type(deck_t), intent(in) :: d               !! deck with the values read
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+        integer :: i
+        if (stat%code /= STATUS_OK) return
+        call finite(stat, 'start', 'amplitude', d%amplitude)
+        call finite(stat, 'start', 'tilt', d%tilt)
         do i = 1, 4
-            call finite('start', 'theta', d%theta(i))
-            call finite('start', 'theta_dot', d%theta_dot(i))
+            call finite(stat, 'start', 'theta', d%theta(i))
+            call finite(stat, 'start', 'theta_dot', d%theta_dot(i))
+        end do
+        if (stat%code /= STATUS_OK) return
+        call angle(stat, 'start', 'tilt', d%tilt)
+        do i = 1, 4
+            call angle(stat, 'start', 'theta', d%theta(i))
+        end do
+        do i = 1, 4
+            if (abs(d%theta_dot(i)) > RATE_MAX) call bad(stat, 'start', 'theta_dot', &
+                rlist_short(d%theta_dot), 'a rate beyond '//rshort(RATE_MAX)// &
+                ' rad per unit tau', '|theta_dot| <= '//rshort(RATE_MAX)// &
+                ' (rad per unit tau; the natural frequencies are of order 1)')
         end do
         if (stat%code /= STATUS_OK) return
         if (trim(d%mode) == 'raised') then
             if (d%amplitude <= 0.0_dp .or. d%amplitude >= 180.0_dp) then
-                call bad('start', 'amplitude', rshort(d%amplitude), 'out of range for mode ' // &
-                         '''raised''', '0 < amplitude < 180 (degrees)')
-                return
+                call bad(stat, 'start', 'amplitude', rshort(d%amplitude), &
+                         'out of range for mode ''raised''', '0 < amplitude < 180 (degrees)')
             end if
         end if
+    end subroutine check_start
 
-        ! &integration
-        call positive('integration', 'tau_end', d%tau_end, 'tau_end > 0')
-        call positive('integration', 'dtau_out', d%dtau_out, '0 < dtau_out <= tau_end')
-        call finite('integration', 'rtol', d%rtol)
-        call finite('integration', 'atol', d%atol)
+    !> &integration: 0 < dtau_out <= tau_end, at most MAX_ROWS rows, tolerances in range.
+    subroutine check_integration(d, stat)
+        type(deck_t), intent(in) :: d               !! deck with the values read
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
         if (stat%code /= STATUS_OK) return
+        call positive(stat, 'integration', 'tau_end', d%tau_end, 'tau_end > 0')
+        call positive(stat, 'integration', 'dtau_out', d%dtau_out, '0 < dtau_out <= tau_end')
+        call finite(stat, 'integration', 'rtol', d%rtol)
+        call finite(stat, 'integration', 'atol', d%atol)
+        if (stat%code /= STATUS_OK) return
+        if (d%tau_end > TAU_END_MAX) then
+            call bad(stat, 'integration', 'tau_end', rshort(d%tau_end), 'too long a run', &
+                     '0 < tau_end <= '//rshort(TAU_END_MAX)//' (units of tau)')
+            return
+        end if
         if (d%dtau_out > d%tau_end) then
-            call bad('integration', 'dtau_out', rshort(d%dtau_out), 'larger than tau_end = '// &
-                     rshort(d%tau_end), '0 < dtau_out <= tau_end')
+            call bad(stat, 'integration', 'dtau_out', rshort(d%dtau_out), &
+                     'larger than tau_end = '//rshort(d%tau_end), '0 < dtau_out <= tau_end')
             return
         end if
         if (d%tau_end/MAX_ROWS > d%dtau_out) then
-            call bad('integration', 'dtau_out', rshort(d%dtau_out), 'too many output rows ' // &
-                     '(tau_end/dtau_out > 1e7, tau_end = '//rshort(d%tau_end)//')', &
-                     'tau_end/dtau_out <= 1e7')
+            call bad(stat, 'integration', 'dtau_out', rshort(d%dtau_out), 'too many ' // &
+                     'output rows (tau_end/dtau_out > '//rshort(MAX_ROWS)//', tau_end = '// &
+                     rshort(d%tau_end)//')', 'tau_end/dtau_out <= '//rshort(MAX_ROWS)// &
+                     ' (the row limit, about 40 MB of .dat)')
             return
         end if
         if (d%rtol < RTOL_MIN .or. d%rtol >= 1.0_dp) then
-            call bad('integration', 'rtol', rshort(d%rtol), 'relative tolerance out of range', &
-                     '1e-14 <= rtol < 1 (smallest allowed 1e-14)')
+            call bad(stat, 'integration', 'rtol', rshort(d%rtol), 'relative tolerance ' // &
+                     'out of range', '1e-14 <= rtol < 1 (smallest allowed 1e-14)')
             return
         end if
         if (d%atol <= 0.0_dp) then
-            call bad('integration', 'atol', rshort(d%atol), 'absolute tolerance must be > 0', &
-                     'atol > 0')
+            call bad(stat, 'integration', 'atol', rshort(d%atol), 'absolute tolerance ' // &
+                     'must be > 0', 'atol > 0')
             return
         end if
         ! below ATOL_MIN the integrator's error weights overflow on a state component at 0
         if (d%atol < ATOL_MIN .or. d%atol > ATOL_MAX) then
-            call bad('integration', 'atol', rshort(d%atol), 'absolute tolerance out of range', &
-                     '1e-30 <= atol <= 1 (radians and rad per unit tau)')
-            return
+            call bad(stat, 'integration', 'atol', rshort(d%atol), 'absolute tolerance ' // &
+                     'out of range', '1e-30 <= atol <= 1 (radians and rad per unit tau)')
         end if
+    end subroutine check_integration
 
-        ! &cables (read and checked whatever the model, used by model = 'elastic')
-        call finite('cables', 'stiffness', d%cable_stiffness)
-        call finite('cables', 'damping', d%cable_damping)
+    !> &cables (read and checked whatever the model, used by model = 'elastic').
+    subroutine check_cables(d, stat)
+        type(deck_t), intent(in) :: d               !! deck with the values read
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+        if (stat%code /= STATUS_OK) return
+        call finite(stat, 'cables', 'stiffness', d%cable_stiffness)
+        call finite(stat, 'cables', 'damping', d%cable_damping)
         if (stat%code /= STATUS_OK) return
         if (d%cable_stiffness < STIFFNESS_MIN .or. d%cable_stiffness > STIFFNESS_MAX) then
-            call bad('cables', 'stiffness', rshort(d%cable_stiffness), 'axial stiffness ' // &
-                     'EA/(m g) out of range', '1 <= stiffness <= 1e12')
+            call bad(stat, 'cables', 'stiffness', rshort(d%cable_stiffness), &
+                     'axial stiffness EA/(m g) out of range', '1 <= stiffness <= 1e12')
             return
         end if
         if (d%cable_damping < 0.0_dp .or. d%cable_damping > DAMPING_MAX) then
-            call bad('cables', 'damping', rshort(d%cable_damping), 'damping ratio out of range', &
-                     '0 <= damping <= 10 (fraction of critical)')
-            return
+            call bad(stat, 'cables', 'damping', rshort(d%cable_damping), &
+                     'damping ratio out of range', '0 <= damping <= 10 (fraction of critical)')
         end if
+    end subroutine check_cables
 
-        ! &floquet
-        call finite('floquet', 'amplitude', d%floquet_amplitude)
-        call finite('floquet', 'rtol', d%floquet_rtol)
+    !> &floquet: 0 < amplitude < 180 degrees, 1..MAX_SEGMENTS segments, rtol in range.
+    subroutine check_floquet(d, stat)
+        type(deck_t), intent(in) :: d               !! deck with the values read
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+        if (stat%code /= STATUS_OK) return
+        call finite(stat, 'floquet', 'amplitude', d%floquet_amplitude)
+        call finite(stat, 'floquet', 'rtol', d%floquet_rtol)
         if (stat%code /= STATUS_OK) return
         if (d%floquet_amplitude <= 0.0_dp .or. d%floquet_amplitude >= 180.0_dp) then
-            call bad('floquet', 'amplitude', rshort(d%floquet_amplitude), 'out of range', &
-                     '0 < amplitude < 180 (degrees of theta4)')
+            call bad(stat, 'floquet', 'amplitude', rshort(d%floquet_amplitude), &
+                     'out of range', '0 < amplitude < 180 (degrees of theta4)')
             return
         end if
         if (d%floquet_segments < 1 .or. d%floquet_segments > MAX_SEGMENTS) then
-            call bad('floquet', 'segments', itoa(d%floquet_segments), 'number of shooting ' // &
-                     'segments out of range', '1 <= segments <= '//itoa(MAX_SEGMENTS))
+            call bad(stat, 'floquet', 'segments', itoa(d%floquet_segments), &
+                     'number of shooting segments out of range', '1 <= segments <= '// &
+                     itoa(MAX_SEGMENTS))
             return
         end if
         if (d%floquet_rtol < RTOL_MIN .or. d%floquet_rtol >= FLOQUET_RTOL_MAX) then
-            call bad('floquet', 'rtol', rshort(d%floquet_rtol), 'relative tolerance out of ' // &
-                     'range', '1e-14 <= rtol < 1e-2')
-            return
+            call bad(stat, 'floquet', 'rtol', rshort(d%floquet_rtol), &
+                     'relative tolerance out of range', '1e-14 <= rtol < 1e-2')
         end if
+    end subroutine check_floquet
 
-        ! &chart (x and y are known words, checked by read_deck)
+    !> &chart: two different variables (known words, checked by read_deck), each axis a
+    !! finite range inside its variable's range with 2..MAX_CHART_N points, nx*ny bounded.
+    subroutine check_chart(d, stat)
+        type(deck_t), intent(in) :: d               !! deck with the values read
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+        if (stat%code /= STATUS_OK) return
         if (trim(d%chart_x) == trim(d%chart_y)) then
-            call bad('chart', 'y', quoted(d%chart_y), 'the same variable as x', &
+            call bad(stat, 'chart', 'y', quoted(d%chart_y), 'the same variable as x', &
                      'y different from x, both from: '//commas(CHART_VARIABLES))
             return
         end if
@@ -601,10 +729,9 @@ contains
         call chart_axis('y', d%chart_y, d%chart_y_min, d%chart_y_max, d%chart_ny)
         if (stat%code /= STATUS_OK) return
         if (d%chart_nx*d%chart_ny > MAX_CHART_POINTS) then
-            call bad('chart', 'ny', itoa(d%chart_ny), 'too many chart points (nx*ny = '// &
-                     itoa(d%chart_nx*d%chart_ny)//', nx = '//itoa(d%chart_nx)//')', &
-                     'nx*ny <= '//itoa(MAX_CHART_POINTS))
-            return
+            call bad(stat, 'chart', 'ny', itoa(d%chart_ny), 'too many chart points ' // &
+                     '(nx*ny = '//itoa(d%chart_nx*d%chart_ny)//', nx = '//itoa(d%chart_nx)// &
+                     ')', 'nx*ny <= '//itoa(MAX_CHART_POINTS))
         end if
 
     contains
@@ -619,12 +746,12 @@ contains
             logical :: lo_in, hi_in
             character(len=:), allocatable :: desc, allowed
             if (stat%code /= STATUS_OK) return
-            call finite('chart', ax//'_min', vmin)
-            call finite('chart', ax//'_max', vmax)
+            call finite(stat, 'chart', ax//'_min', vmin)
+            call finite(stat, 'chart', ax//'_max', vmax)
             if (stat%code /= STATUS_OK) return
             if (vmin >= vmax) then
-                call bad('chart', ax//'_max', rshort(vmax), 'not larger than '//ax// &
-                         '_min = '//rshort(vmin), ax//'_min < '//ax//'_max')
+                call bad(stat, 'chart', ax//'_max', rshort(vmax), 'not larger than '// &
+                         ax//'_min = '//rshort(vmin), ax//'_min < '//ax//'_max')
                 return
             end if
             ! allowed range lo .. hi of the variable, ends included when lo_in, hi_in
@@ -635,14 +762,21 @@ contains
             select case (trim(var))
             case ('l')
                 desc = 'cable length l''/b'''
+                lo = RATIO_MIN
+                hi = RATIO_MAX
+                lo_in = .true.
             case ('b')
                 desc = 'b/b'''
+                lo = RATIO_MIN
+                hi = RATIO_MAX
+                lo_in = .true.
             case ('amplitude')
                 desc = 'degrees'
                 hi = 180.0_dp
                 hi_in = .false.
             case ('r')
                 desc = 'r/b'''
+                hi = RATIO_MAX
                 lo_in = .true.
             case ('lambda')
                 desc = 'radians, -pi/2 .. pi/2'
@@ -651,6 +785,7 @@ contains
                 lo_in = .true.
             case default
                 desc = 'I3/I1'
+                hi = RATIO_MAX
             end select
             allowed = rshort(lo)//trim(merge(' <=', ' < ', lo_in))//' '//ax//'_min < '// &
                 ax//'_max'
@@ -658,48 +793,129 @@ contains
                 rshort(hi)
             allowed = allowed//' for '//trim(var)//' ('//desc//')'
             if (vmin < lo .or. (vmin == lo .and. .not. lo_in)) then
-                call bad('chart', ax//'_min', rshort(vmin), 'outside the range of '//trim(var), &
-                         allowed)
+                call bad(stat, 'chart', ax//'_min', rshort(vmin), 'outside the ' // &
+                         'range of '//trim(var), allowed)
                 return
             end if
             if (vmax > hi .or. (vmax == hi .and. .not. hi_in)) then
-                call bad('chart', ax//'_max', rshort(vmax), 'outside the range of '//trim(var), &
-                         allowed)
+                call bad(stat, 'chart', ax//'_max', rshort(vmax), 'outside the ' // &
+                         'range of '//trim(var), allowed)
                 return
             end if
             if (n < 2 .or. n > MAX_CHART_N) then
-                call bad('chart', 'n'//ax, itoa(n), 'number of chart points out of range', &
-                         '2 <= n'//ax//' <= '//itoa(MAX_CHART_N)//' and nx*ny <= '// &
-                         itoa(MAX_CHART_POINTS))
+                call bad(stat, 'chart', 'n'//ax, itoa(n), 'number of chart points ' // &
+                         'out of range', '2 <= n'//ax//' <= '//itoa(MAX_CHART_N)// &
+                         ' and nx*ny <= '//itoa(MAX_CHART_POINTS))
                 return
             end if
         end subroutine chart_axis
 
-        subroutine bad(grp, var, val, what, allowed)
-            character(len=*), intent(in) :: grp, var, val, what, allowed
-            if (stat%code /= STATUS_OK) return
-            call set_error(stat, ERR_DECK, nm//': &'//grp//' '//var//' = '//val//': '// &
-                           what//'; allowed: '//allowed)
-        end subroutine bad
+    end subroutine check_chart
 
-        subroutine finite(grp, var, x)
-            character(len=*), intent(in) :: grp, var
-            real(dp), intent(in) :: x
-            if (.not. ieee_is_finite(x)) call bad(grp, var, rshort(x), 'not a finite number ' &
-                                                  //'(NaN, Inf, or beyond 1.8e308)', &
-                                                  'finite real numbers')
-        end subroutine finite
+    !> ERR_DECK naming the deck, group, variable and value, what is wrong and what is
+    !! allowed (nothing when stat already carries an error).
+    subroutine bad(stat, grp, var, val, what, allowed)
+        type(status_t), intent(inout) :: stat       !! the first problem
+        character(len=*), intent(in) :: grp, var, val, what, allowed
+        if (stat%code /= STATUS_OK) return
+        call set_error(stat, ERR_DECK, '&'//grp//' '//var//' = '//val//': '// &
+                       what//'; allowed: '//allowed)
+    end subroutine bad
 
-        subroutine positive(grp, var, x, allowed)
-            character(len=*), intent(in) :: grp, var, allowed
-            real(dp), intent(in) :: x
-            if (stat%code /= STATUS_OK) return
-            call finite(grp, var, x)
-            if (stat%code /= STATUS_OK) return
-            if (x <= 0.0_dp) call bad(grp, var, rshort(x), 'must be > 0', allowed)
-        end subroutine positive
+    !> ERR_DECK when x is NaN or infinite.
+    subroutine finite(stat, grp, var, x)
+        type(status_t), intent(inout) :: stat       !! the first problem
+        character(len=*), intent(in) :: grp, var
+        real(dp), intent(in) :: x
+        if (.not. ieee_is_finite(x)) call bad(stat, grp, var, rshort(x), 'not a finite ' &
+                                              //'number (NaN, Inf, or beyond 1.8e308)', &
+                                              'finite real numbers')
+    end subroutine finite
 
-    end subroutine validate
+    !> ERR_DECK when the dimensional value x (> 0) lies outside DIM_MIN .. DIM_MAX.
+    subroutine dimensional(stat, grp, var, x)
+        type(status_t), intent(inout) :: stat       !! the first problem
+        character(len=*), intent(in) :: grp, var
+        real(dp), intent(in) :: x                   !! a length, g, a mass or a moment (> 0)
+        if (stat%code /= STATUS_OK) return          ! x may be NaN
+        if (x < DIM_MIN .or. x > DIM_MAX) call bad(stat, grp, var, rshort(x), 'out of ' // &
+            'range', rshort(DIM_MIN)//' <= '//var//' <= '//rshort(DIM_MAX)//' in any units')
+    end subroutine dimensional
+
+    !> ERR_DECK when |x|/b' (x /= 0, b' > 0, both finite) lies outside lo .. RATIO_MAX
+    !! (lo = 0: no lower bound).
+    subroutine over_b_prime(stat, grp, var, x, b_prime, lo)
+        type(status_t), intent(inout) :: stat       !! the first problem
+        character(len=*), intent(in) :: grp, var
+        real(dp), intent(in) :: x, b_prime          !! the length (/= 0) and b' (> 0)
+        real(dp), intent(in) :: lo                  !! smallest ratio allowed (0: none)
+        real(dp) :: lq
+        character(len=:), allocatable :: allowed, nm
+        if (stat%code /= STATUS_OK) return
+        nm = var
+        if (x < 0.0_dp .or. var == 'sway_depth') nm = '|'//var//'|'     ! a signed length
+        lq = log(abs(x)) - log(b_prime)   ! in logarithms: x/b' itself may overflow
+        if (lq <= log(RATIO_MAX)) then
+            if (lo <= 0.0_dp) return
+            if (lq >= log(lo)) return
+        end if
+        allowed = nm//'/b_prime <= '//rshort(RATIO_MAX)
+        if (lo > 0.0_dp) allowed = rshort(lo)//' <= '//allowed
+        call bad(stat, grp, var, rshort(x), nm//'/b_prime = '// &
+                 sci(exp(max(-700.0_dp, min(700.0_dp, lq))))//' out of range (b_prime = '// &
+                 rshort(b_prime)//')', allowed//' (the geometry in units of b_prime)')
+    end subroutine over_b_prime
+
+    !> ERR_DECK when an angle (rad) is beyond ANGLE_MAX in magnitude.
+    subroutine angle(stat, grp, var, x)
+        type(status_t), intent(inout) :: stat       !! the first problem
+        character(len=*), intent(in) :: grp, var
+        real(dp), intent(in) :: x                   !! angle, rad (finite)
+        if (stat%code /= STATUS_OK) return
+        if (abs(x) > ANGLE_MAX) call bad(stat, grp, var, rshort(x), 'an angle beyond '// &
+            rshort(ANGLE_MAX)//' rad', '|'//var//'| <= '//rshort(ANGLE_MAX)// &
+            ' rad (angles are taken modulo 2 pi)')
+    end subroutine angle
+
+    !> The deck's angles (tilt, theta, lambda; |x| <= ANGLE_MAX) reduced modulo 2 pi into
+    !! [-pi, pi]: the integrator's error control is relative, so an angle of 1e6 rad would
+    !! leave it a tolerance of rtol*1e6 rad.
+    subroutine reduce_angles(d)
+        type(deck_t), intent(inout) :: d            !! deck after the checks
+        d%tilt = reduced(d%tilt)
+        d%theta = [reduced(d%theta(1)), reduced(d%theta(2)), reduced(d%theta(3)), &
+                   reduced(d%theta(4))]
+        d%lambda = reduced(d%lambda)
+    end subroutine reduce_angles
+
+    !> x - 2 pi n, n the nearest integer to x/(2 pi), with 2 pi split in three parts
+    !! (Cody and Waite) so that the result is accurate to roundoff for |x| <= 2**20 * 2 pi;
+    !! x itself when |x| <= pi.
+    pure real(dp) function reduced(x) result(r)
+        real(dp), intent(in) :: x                   !! angle, rad
+        real(dp), parameter :: TWO_PI = 6.283185307179586_dp
+        ! 2 pi = P1 + P2 + P3: P1 with 33 significant bits (n*P1 exact for n < 2**20), P2 the
+        ! rest of the double TWO_PI, P3 = 2 pi - TWO_PI
+        real(dp), parameter :: P1 = real(int(TWO_PI*2.0_dp**30, int64), dp)/2.0_dp**30
+        real(dp), parameter :: P2 = TWO_PI - P1
+        real(dp), parameter :: P3 = 2.4492935982947064e-16_dp
+        real(dp) :: n
+        r = x
+        if (abs(x) <= 0.5_dp*TWO_PI) return
+        n = anint(x/TWO_PI)
+        r = ((x - n*P1) - n*P2) - n*P3
+    end function reduced
+
+    !> ERR_DECK when x is not finite or not > 0.
+    subroutine positive(stat, grp, var, x, allowed)
+        type(status_t), intent(inout) :: stat       !! the first problem
+        character(len=*), intent(in) :: grp, var, allowed
+        real(dp), intent(in) :: x
+        if (stat%code /= STATUS_OK) return
+        call finite(stat, grp, var, x)
+        if (stat%code /= STATUS_OK) return
+        if (x <= 0.0_dp) call bad(stat, grp, var, rshort(x), 'must be > 0', allowed)
+    end subroutine positive
 
     pure function ortho_allowed() result(s)
         character(len=:), allocatable :: s
@@ -707,25 +923,24 @@ contains
     end function ortho_allowed
 
     !> Check that a string value is one of the blank-separated words of `allowed`.
-    subroutine check_word(stat, nm, grp, var, val, allowed)
+    subroutine check_word(stat, grp, var, val, allowed)
         type(status_t), intent(inout) :: stat       !! ERR_DECK when val is not allowed
-        character(len=*), intent(in) :: nm, grp, var, val, allowed
+        character(len=*), intent(in) :: grp, var, val, allowed
         if (index(' '//allowed//' ', ' '//lower(trim(adjustl(val)))//' ') > 0 .and. &
             len_trim(val) > 0 .and. index(trim(adjustl(val)), ' ') == 0) return
-        call set_error(stat, ERR_DECK, nm//': &'//grp//' '//var//' = '''//trim(val)// &
+        call set_error(stat, ERR_DECK, '&'//grp//' '//var//' = '''//clip(trim(val))// &
                        ''': unknown '//var//'; allowed: '//commas(allowed))
     end subroutine check_word
 
     !> Every word of &scene analyses must be known; at least one word.
-    subroutine check_analyses(stat, nm, analyses)
+    subroutine check_analyses(stat, analyses)
         type(status_t), intent(inout) :: stat       !! ERR_DECK on a problem
-        character(len=*), intent(in) :: nm          !! deck name
         character(len=*), intent(in) :: analyses    !! value read
         character(len=len(analyses)) :: list
         integer :: i1, i2
         character(len=:), allocatable :: head
         list = lower(analyses)
-        head = nm//': &scene analyses = '''//trim(analyses)//''': '
+        head = '&scene analyses = '''//clip(trim(analyses))//''': '
         if (len_trim(list) > 256) then
             call set_error(stat, ERR_DECK, head//'longer than 256 characters; allowed: '// &
                            'blank-separated words from: '//commas(ANALYSES_ALLOWED))
@@ -751,26 +966,39 @@ contains
 
     ! ---------------------------------------------------------------- file scanning
 
-    !> Every '&name' that starts a group must be a known group.
-    subroutine check_group_names(u, path, nm, stat)
+    !> Every '&name' that starts a group must be a known group; the deck must not be empty,
+    !! no line longer than MAX_LINE characters, the whole deck not larger than MAX_DECK_BYTES.
+    subroutine check_group_names(u, stat)
         integer, intent(in) :: u                    !! open deck
-        character(len=*), intent(in) :: path        !! deck file
-        character(len=*), intent(in) :: nm          !! deck name
         type(status_t), intent(inout) :: stat       !! ERR_DECK on an unknown group
         character(len=:), allocatable :: line
         integer :: ios, i, j, nlines
+        integer(int64) :: nbytes
         character(len=512) :: msg
         rewind (u)
         nlines = 0
+        nbytes = 0
         do
             call read_line(u, line, ios, msg)
             if (ios > 0) then
-                call set_error(stat, ERR_DECK, nm//': cannot read deck '''//path//''': '// &
-                               trim(msg))
+                call set_error(stat, ERR_DECK, 'cannot read the deck: '//trim(msg))
                 return
             end if
             if (ios < 0) exit
             nlines = nlines + 1
+            nbytes = nbytes + len(line) + 1
+            if (len(line) > MAX_LINE) then
+                call set_error(stat, ERR_DECK, 'line '//itoa(nlines)//' is longer than '// &
+                               itoa(MAX_LINE)//' characters; allowed: lines of at most '// &
+                               itoa(MAX_LINE)//' characters (a title holds 256)')
+                return
+            end if
+            if (nbytes > MAX_DECK_BYTES) then
+                call set_error(stat, ERR_DECK, 'the deck is larger than '// &
+                               itoa(MAX_DECK_BYTES)//' bytes; allowed: decks of at most '// &
+                               itoa(MAX_DECK_BYTES)//' bytes')
+                return
+            end if
             i = index(line, '!')
             if (i > 0) line = line(1:i - 1)
             do i = 1, len(line) - 1
@@ -787,45 +1015,51 @@ contains
                 if (j == i + 1) cycle
                 if (lower(line(i + 1:j - 1)) == 'end') cycle
                 if (index(' '//GROUPS_ALLOWED//' ', ' '//lower(line(i + 1:j - 1))//' ') == 0) then
-                    call set_error(stat, ERR_DECK, nm//': unknown namelist group &'// &
-                                   line(i + 1:j - 1)//'; allowed: &'// &
+                    call set_error(stat, ERR_DECK, 'unknown namelist group &'// &
+                                   clip(line(i + 1:j - 1))//'; allowed: &'// &
                                    commas(GROUPS_ALLOWED, ', &'))
                     return
                 end if
             end do
         end do
         if (nlines == 0) then
-            call set_error(stat, ERR_DECK, nm//': deck '''//path//''' is empty or not a '// &
-                           'regular file; allowed: a namelist file with &suspension and &body')
+            call set_error(stat, ERR_DECK, 'the deck is empty or not a regular file; '// &
+                           'allowed: a namelist file with &suspension and &body')
             return
         end if
         rewind (u)
     end subroutine check_group_names
 
     !> Find the first '&grp' outside comments and collect its text up to the closing '/'
-    !! (outside quotes), comments removed, lines joined by blanks.
-    subroutine scan_group(u, grp, found, complete, text, ios, msg)
+    !! (outside quotes), comments removed, lines joined by blanks.  Linear in the deck's
+    !! size.  `breaks` lists the positions in text where a line ended.
+    subroutine scan_group(u, grp, found, complete, text, breaks, ios, msg)
         integer, intent(in) :: u                    !! open deck
         character(len=*), intent(in) :: grp         !! group name
         logical, intent(out) :: found               !! the group starts somewhere
         logical, intent(out) :: complete            !! its closing '/' was found
         character(len=:), allocatable, intent(out) :: text    !! the group's items
+        integer, allocatable, intent(out) :: breaks(:)        !! text(breaks(k)) ends a line
         integer, intent(out) :: ios                 !! > 0 when the file cannot be read
         character(len=*), intent(inout) :: msg      !! message for ios > 0
-        character(len=:), allocatable :: line
+        character(len=:), allocatable :: line, buf
+        integer, allocatable :: brk(:)
         character :: q
-        integer :: i, n
+        integer :: i, n, i0, nt, nb
         found = .false.
         complete = .false.
-        text = ''
         q = ' '
+        nt = 0
+        nb = 0
+        allocate (character(len=256) :: buf)
+        allocate (brk(16))
         rewind (u)
         do
             call read_line(u, line, ios, msg)
-            if (ios > 0) return
+            if (ios > 0) exit
             if (ios < 0) then
                 ios = 0
-                return
+                exit
             end if
             i = 1
             if (.not. found) then
@@ -844,6 +1078,7 @@ contains
                 if (.not. found) cycle
                 i = i + n + 1
             end if
+            i0 = i
             do while (i <= len(line))
                 if (q /= ' ') then
                     if (line(i:i) == q) q = ' '
@@ -853,42 +1088,205 @@ contains
                     q = line(i:i)
                 else if (line(i:i) == '/') then
                     complete = .true.
-                    return
+                    exit
                 end if
-                text = text//line(i:i)
                 i = i + 1
             end do
-            text = text//' '
+            call append(line(i0:i - 1)//' ')
+            if (complete) exit
+            nb = nb + 1
+            if (nb > size(brk)) brk = [brk, brk]
+            brk(nb) = nt
         end do
+        text = buf(1:nt)
+        breaks = brk(1:nb)
+
+    contains
+
+        !> Append s to buf(1:nt), doubling its length when full.
+        subroutine append(s)
+            character(len=*), intent(in) :: s
+            character(len=:), allocatable :: grown
+            if (nt + len(s) > len(buf)) then
+                allocate (character(len=2*(nt + len(s))) :: grown)
+                grown(1:nt) = buf(1:nt)
+                call move_alloc(grown, buf)
+            end if
+            buf(nt + 1:nt + len(s)) = s
+            nt = nt + len(s)
+        end subroutine append
+
     end subroutine scan_group
 
-    !> Read one whole line of any length.
+    !> Read one whole line of any length (tabs and carriage returns as blanks), in time linear
+    !! in its length; reading stops after MAX_LINE + 1 characters (the caller refuses such a
+    !! line), so a file without newlines (/dev/zero) ends at once.
     subroutine read_line(u, line, ios, msg)
         integer, intent(in) :: u                    !! open unit
         character(len=:), allocatable, intent(out) :: line   !! the line, without newline
         integer, intent(out) :: ios                 !! 0, < 0 at end of file, > 0 on error
         character(len=*), intent(inout) :: msg      !! message for ios > 0
-        character(len=256) :: buf
-        integer :: n
-        line = ''
+        character(len=1024) :: chunk
+        character(len=:), allocatable :: buf, grown
+        integer :: n, nl
+        allocate (character(len=1024) :: buf)
+        nl = 0
         do
             n = 0
-            read (u, '(a)', advance='no', size=n, iostat=ios, iomsg=msg) buf
-            line = line//buf(1:n)
+            read (u, '(a)', advance='no', size=n, iostat=ios, iomsg=msg) chunk
+            if (nl + n > len(buf)) then
+                allocate (character(len=2*(nl + n)) :: grown)
+                grown(1:nl) = buf(1:nl)
+                call move_alloc(grown, buf)
+            end if
+            buf(nl + 1:nl + n) = chunk(1:n)
+            nl = nl + n
             if (is_iostat_eor(ios)) then
                 ios = 0
                 exit
             end if
-            if (is_iostat_end(ios) .and. len(line) > 0) then
+            if (is_iostat_end(ios) .and. nl > 0) then
                 ios = 0
                 exit
             end if
             if (ios /= 0) exit
+            if (nl > MAX_LINE) exit
         end do
-        do n = 1, len(line)
+        line = buf(1:nl)
+        do n = 1, nl
             if (line(n:n) == achar(9) .or. line(n:n) == achar(13)) line(n:n) = ' '
         end do
     end subroutine read_line
+
+    !> A value longer than MAX_TEXT characters, quoted or not ('' when none): the run-time
+    !! library would cut it to its variable's length (and the checking build prints a
+    !! warning); no number needs as many digits.
+    function long_text(text) result(why)
+        character(len=*), intent(in) :: text        !! group items (from scan_group)
+        character(len=:), allocatable :: why
+        character :: q
+        integer :: k, k0, n
+        why = ''
+        q = ' '
+        n = 0
+        k0 = 1
+        do k = 1, len(text)
+            if (q == ' ') then
+                if (text(k:k) == '''' .or. text(k:k) == '"') then
+                    q = text(k:k)
+                    n = 0
+                    k0 = k
+                    cycle
+                else if (index(' ,=', text(k:k)) > 0) then
+                    n = 0
+                    k0 = k + 1
+                    cycle
+                end if
+            else if (text(k:k) == q) then
+                q = ' '      ! a doubled quote closes and reopens: counted as two values
+                n = 0
+                cycle
+            end if
+            n = n + 1
+            if (n > MAX_TEXT) then
+                why = 'a value of more than '//itoa(MAX_TEXT)//' characters ('// &
+                    clip(text(k0:))//'); allowed: at most '//itoa(MAX_TEXT)
+                return
+            end if
+        end do
+    end function long_text
+
+    !> The first parenthesis of a group's text that the run-time library cannot be trusted
+    !! with (gfortran 12 takes SIGSEGV on a subscript left open at the end of a line): every
+    !! '(' outside quotes must follow a variable name, close on the same line, and hold only
+    !! digits, blanks, '+', '-', ':' and ','.  Empty when all are well formed.
+    function subscript_problem(text, breaks) result(why)
+        character(len=*), intent(in) :: text        !! group items (from scan_group)
+        integer, intent(in) :: breaks(:)            !! line ends in text (from scan_group)
+        character(len=:), allocatable :: why
+        character :: q
+        integer :: k, j, b, e, nextb
+        why = ''
+        q = ' '
+        b = 1
+        k = 0
+        do while (k < len(text))
+            k = k + 1
+            if (q /= ' ') then
+                if (text(k:k) == q) q = ' '
+                cycle
+            end if
+            if (text(k:k) == '''' .or. text(k:k) == '"') then
+                q = text(k:k)
+                cycle
+            end if
+            if (text(k:k) == ')') then
+                why = 'unexpected '')'' in '''//clip(item_at(k))//''''
+                return
+            end if
+            if (text(k:k) /= '(') cycle
+            ! the variable name before '('
+            j = k - 1
+            do while (j >= 1)
+                if (text(j:j) /= ' ') exit
+                j = j - 1
+            end do
+            if (j < 1) then
+                why = 'unexpected ''('' in '''//clip(item_at(k))//'''; subscripts follow a '// &
+                      'variable name, e.g. inertia(1) = 0.1'
+                return
+            end if
+            if (.not. is_ident(text(j:j))) then
+                why = 'unexpected ''('' in '''//clip(item_at(k))//'''; subscripts follow a '// &
+                      'variable name, e.g. inertia(1) = 0.1, and values have no parentheses'
+                return
+            end if
+            do while (b <= size(breaks))
+                if (breaks(b) >= k) exit
+                b = b + 1
+            end do
+            nextb = len(text)
+            if (b <= size(breaks)) nextb = breaks(b)
+            e = index(text(k + 1:nextb), ')')
+            if (e == 0) then
+                why = 'subscript '''//clip(item_at(k))//''' not closed on its line; '// &
+                      'allowed: a subscript on one line, e.g. btilde(1,:) = 1, 0, 0'
+                return
+            end if
+            e = k + e
+            do while (j > 1)
+                if (.not. is_ident(text(j - 1:j - 1))) exit
+                j = j - 1
+            end do
+            if (verify(text(k + 1:e - 1), '0123456789+-:, ') /= 0 .or. &
+                len_trim(text(k + 1:e - 1)) == 0) then
+                why = 'bad subscript '''//clip(text(j:e))//'''; allowed: integers, '':'' '// &
+                      'and '','', e.g. inertia(2) or btilde(1,:)'
+                return
+            end if
+            k = e
+        end do
+
+    contains
+
+        !> The line of text that holds position p.
+        function item_at(p) result(s)
+            integer, intent(in) :: p
+            character(len=:), allocatable :: s
+            integer :: i1, i2, bb
+            i1 = 1
+            i2 = len(text)
+            do bb = 1, size(breaks)
+                if (breaks(bb) >= p) then
+                    i2 = breaks(bb)
+                    exit
+                end if
+                i1 = breaks(bb) + 1
+            end do
+            s = trim(adjustl(text(i1:i2)))
+        end function item_at
+
+    end function subscript_problem
 
     !> Explain why the run-time library could not read a group: the first item whose name is
     !! unknown, whose value has the wrong form, or which has too many values.  Empty when no
@@ -906,7 +1304,8 @@ contains
         integer :: vsize
 
         why = ''
-        allocate (eqs(0))
+        allocate (eqs(count([(text(k:k) == '=', k = 1, len(text))])))
+        neq = 0
         q = ' '
         do k = 1, len(text)
             if (q /= ' ') then
@@ -914,10 +1313,10 @@ contains
             else if (text(k:k) == '''' .or. text(k:k) == '"') then
                 q = text(k:k)
             else if (text(k:k) == '=') then
-                eqs = [eqs, k]
+                neq = neq + 1
+                eqs(neq) = k
             end if
         end do
-        neq = size(eqs)
         names = spec_names(spec)
         q = ' '
         do k = 1, len(text) - 1
@@ -931,13 +1330,13 @@ contains
                     if (.not. is_ident(text(j:j))) exit
                     j = j + 1
                 end do
-                why = 'no closing ''/'' before '''//text(k:j - 1)//''''
+                why = 'no closing ''/'' before '''//clip(text(k:j - 1))//''''
                 return
             end if
         end do
         if (neq == 0) then
             if (len_trim(text) > 0) why = 'expected name = value, found '''// &
-                trim(adjustl(text))//'''; allowed variables: '//names
+                clip(trim(adjustl(text)))//'''; allowed variables: '//names
             return
         end if
         allocate (nstart(neq), nend(neq))
@@ -970,13 +1369,13 @@ contains
             end do
             nstart(k) = j + 1
             if (nstart(k) > nend(k)) then
-                why = 'expected a variable name before ''='' in '''//trim(adjustl(text))// &
+                why = 'expected a variable name before ''='' in '''//clip(trim(adjustl(text)))// &
                     '''; allowed variables: '//names
                 return
             end if
         end do
         if (len_trim(text(1:nstart(1) - 1)) > 0) then
-            why = 'unexpected '''//trim(adjustl(text(1:nstart(1) - 1)))// &
+            why = 'unexpected '''//clip(trim(adjustl(text(1:nstart(1) - 1))))// &
                 ''' before the first variable'
             return
         end if
@@ -984,10 +1383,10 @@ contains
             nm = lower(text(nstart(k):nend(k)))
             subscripted = eqs(k) > nend(k) + 1
             if (subscripted) subscripted = len_trim(text(nend(k) + 1:eqs(k) - 1)) > 0
-            lhs = trim(text(nstart(k):eqs(k) - 1))
+            lhs = clip(trim(text(nstart(k):eqs(k) - 1)))
             call spec_lookup(spec, nm, kind, vsize)
             if (kind == ' ') then
-                why = 'unknown variable '''//text(nstart(k):nend(k))//''' in &'//grp// &
+                why = 'unknown variable '''//clip(text(nstart(k):nend(k)))//''' in &'//grp// &
                     '; allowed variables: '//names
                 return
             end if
@@ -998,6 +1397,7 @@ contains
             if (len(val) > 0) then
                 if (val(len(val):len(val)) == ',') val = trim(val(1:len(val) - 1))
             end if
+            val = clip(val)
             ! tokens separated by blanks or commas outside quotes
             nval = 0
             p1 = v1
@@ -1021,16 +1421,16 @@ contains
                 if (.not. token_ok(tok, kind)) then
                     select case (kind)
                     case ('r')
-                        why = lhs//' = '//val//': '''//tok// &
+                        why = lhs//' = '//val//': '''//clip(tok)// &
                             ''' is not a real number'
                     case ('i')
-                        why = lhs//' = '//val//': '''//tok// &
+                        why = lhs//' = '//val//': '''//clip(tok)// &
                             ''' is not an integer'
                     case ('c')
                         why = lhs//' = '//val//': character values '// &
                             'must be quoted, e.g. '//nm//' = ''...'''
                     case default
-                        why = lhs//' = '//val//': '''//tok// &
+                        why = lhs//' = '//val//': '''//clip(tok)// &
                             ''' is not a logical; allowed: .true., .false.'
                     end select
                     return
@@ -1351,13 +1751,16 @@ contains
             rlist_short(bt(3, :))//']'
     end function btilde_short
 
-    function itoa(i) result(s)
-        integer, intent(in) :: i                    !! value
-        character(len=:), allocatable :: s
-        character(len=16) :: buf
-        write (buf, '(i0)') i
-        s = trim(buf)
-    end function itoa
+    !> s for a message: at most CLIP_LEN characters, longer text cut with '...'.
+    pure function clip(s) result(t)
+        character(len=*), intent(in) :: s          !! any text
+        character(len=:), allocatable :: t
+        if (len(s) <= CLIP_LEN) then
+            t = s
+        else
+            t = s(1:CLIP_LEN - 3)//'...'
+        end if
+    end function clip
 
     !> Quoted for namelist output, inner quotes doubled.
     pure function quoted(s) result(t)

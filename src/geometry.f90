@@ -9,6 +9,7 @@
 module geometry
     use kinds, only: dp, pi
     use status, only: status_t, set_error, ERR_DECK
+    use text, only: sci
     implicit none
     private
 
@@ -136,8 +137,8 @@ contains
         hy = 0.5_dp*p%big_b - 0.5_dp*cos(amplitude)
         h2 = hx**2 + hy**2
         if (h2 >= p%big_l**2) then
-            write (buf, '(a,es10.3,a,es10.3)') 'l/b'' = ', p%big_l, &
-                ': cable BC cannot reach the raised start; needs l/b'' > ', sqrt(h2)
+            buf = 'l/b'' = '//sci(p%big_l)//': cable BC cannot reach the raised start; '// &
+                'needs l/b'' > '//sci(sqrt(h2))
             call set_error(stat, ERR_DECK, '&start amplitude / &suspension l: '//trim(buf))
             return
         end if
@@ -177,8 +178,8 @@ contains
         end do
         g = constraint_g(p, th)
         if (.not. (abs(g) < 1.0e-12_dp) .or. .not. (abs(th(5)) < 0.5_dp*pi)) then
-            write (buf, '(a,es10.3,a)') 'no theta5 satisfies the constraint eq. (2) (residual ', &
-                g, '): the cables cannot both be taut at this start; change l, l_prime or the start'
+            buf = 'no theta5 satisfies the constraint eq. (2) (residual '//sci(g)//'): the '// &
+                'cables cannot both be taut at this start; change l, l_prime or the start'
             call set_error(stat, ERR_DECK, trim(buf))
         end if
     contains

@@ -185,7 +185,7 @@ contains
             return
         end if
         if (.not. (rtol >= 0.0_dp)) then
-            write (buf, '(a,es10.3,a)') 'lsoda init: rtol = ', rtol, ' is negative'
+            write (buf, '(a,es11.3e3,a)') 'lsoda init: rtol = ', rtol, ' is negative'
             call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
             return
         end if
@@ -354,14 +354,14 @@ contains
             end if
             s%dir = sign(1.0_dp, tout - s%tn)
         else if ((tout - s%tlast)*s%dir < 0.0_dp) then
-            write (buf, '(a,es12.5,a,es12.5,a)') 'lsoda integrate: tout = ', tout, &
+            write (buf, '(a,es13.5e3,a,es13.5e3,a)') 'lsoda integrate: tout = ', tout, &
                 ' is behind the last output time ', s%tlast, ' in the direction of integration'
             call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
             return
         end if
         if (s%have_tcrit) then
             if ((s%tcrit - tout)*s%dir < 0.0_dp) then
-                write (buf, '(a,es12.5,a,es12.5)') 'lsoda integrate: tcrit = ', s%tcrit, &
+                write (buf, '(a,es13.5e3,a,es13.5e3)') 'lsoda integrate: tcrit = ', s%tcrit, &
                     ' is behind tout = ', tout
                 call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
                 return
@@ -514,7 +514,7 @@ contains
         end if
         if (s%started .and. (tcrit - s%tn)*s%dir < 0.0_dp) then
             if (present(stat)) then
-                write (buf, '(a,es12.5,a,es12.5)') 'lsoda set_tcrit: tcrit = ', tcrit, &
+                write (buf, '(a,es13.5e3,a,es13.5e3)') 'lsoda set_tcrit: tcrit = ', tcrit, &
                     ' is behind the time reached ', s%tn
                 call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
             end if
@@ -551,7 +551,7 @@ contains
                 tdist = abs(tout - s%tn)
                 w0 = max(abs(s%tn), abs(tout))
                 if (tdist < 2.0_dp*UROUND*w0) then
-                    write (buf, '(a,es12.5,a)') 'lsoda: tout is too close to t0 = ', s%tn, &
+                    write (buf, '(a,es13.5e3,a)') 'lsoda: tout is too close to t0 = ', s%tn, &
                         ' to start the integration'
                     call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
                     return
@@ -598,7 +598,7 @@ contains
         character(len=200) :: buf
 
         if (s%steps_call >= s%max_steps) then
-            write (buf, '(a,i0,a,es14.7)') 'lsoda: ', s%max_steps, &
+            write (buf, '(a,i0,a,es15.7e3)') 'lsoda: ', s%max_steps, &
                 ' steps taken in this call without reaching tout; t reached = ', s%tn
             call set_error(stat, LSODA_ERR_MAX_STEPS, trim(buf))
             return
@@ -629,17 +629,24 @@ contains
                 s%nswitch = s%nswitch + 1
                 s%jstart = -1
             end if
+            ! A step cut short to end at tcrit lands there only up to roundoff (it is cut
+            ! to (tcrit - tn)*(1 - 4 u) so as never to pass it): it has reached tcrit, and
+            ! says so, or a caller stepping until t_current >= tcrit would ask for a step
+            ! that no longer fits (a body at rest takes one step straight to tcrit).
+            if (s%have_tcrit) then
+                if (at_tcrit(s)) s%tn = s%tcrit
+            end if
         case (KF_ERRTEST)
-            write (buf, '(a,es14.7,a,es10.3)') 'lsoda: error test failed repeatedly at t = ', &
+            write (buf, '(a,es15.7e3,a,es11.3e3)') 'lsoda: error test failed repeatedly at t = ', &
                 s%tn, ' with |h| = ', abs(s%h)
             call set_error(stat, LSODA_ERR_ERROR_TEST, trim(buf)//' (discontinuity or '// &
                 'singularity of f?)')
         case (KF_CONV)
-            write (buf, '(a,es14.7,a,es10.3)') 'lsoda: corrector failed to converge '// &
+            write (buf, '(a,es15.7e3,a,es11.3e3)') 'lsoda: corrector failed to converge '// &
                 'repeatedly at t = ', s%tn, ' with |h| = ', abs(s%h)
             call set_error(stat, LSODA_ERR_CONVERGENCE, trim(buf))
         case (KF_SINGULAR)
-            write (buf, '(a,es14.7,a,es10.3)') 'lsoda: iteration matrix I - h*l0*J '// &
+            write (buf, '(a,es15.7e3,a,es11.3e3)') 'lsoda: iteration matrix I - h*l0*J '// &
                 'singular repeatedly at t = ', s%tn, ' with |h| = ', abs(s%h)
             call set_error(stat, LSODA_ERR_SINGULAR, trim(buf))
         case default
@@ -658,7 +665,7 @@ contains
         do i = 1, s%n
             w = s%rtol*abs(s%yh(i, 1)) + s%atol(i)
             if (.not. (w > 0.0_dp)) then
-                write (buf, '(a,i0,a,es14.7,a)') 'lsoda: error weight of component ', i, &
+                write (buf, '(a,i0,a,es15.7e3,a)') 'lsoda: error weight of component ', i, &
                     ' became zero at t = ', s%tn, ' (atol(i) = 0 and y(i) = 0)'
                 call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
                 return
@@ -671,7 +678,7 @@ contains
         type(lsoda_t), intent(in) :: s
         type(status_t), intent(inout) :: stat
         character(len=200) :: buf
-        write (buf, '(a,es14.7,a,es10.3)') 'lsoda: too much accuracy requested for the '// &
+        write (buf, '(a,es15.7e3,a,es11.3e3)') 'lsoda: too much accuracy requested for the '// &
             'machine precision at t = ', s%tn, '; scale the tolerances up by at least ', &
             200.0_dp*UROUND*vmnorm(s%n, s%yh(:, 1), s%rewt)
         call set_error(stat, LSODA_ERR_TOO_MUCH_ACCURACY, trim(buf))
@@ -1232,7 +1239,10 @@ contains
         else
             fac = vmnorm(n, s%savf, s%rewt)
             r0 = 1000.0_dp*abs(s%h)*UROUND*n*fac
-            if (r0 == 0.0_dp) r0 = 1.0_dp
+            ! f = 0 (at rest): increments of one error weight, as in LSODA; the same when f
+            ! is negligible (h*f below 1e-3 weights per step: r0 < UROUND), or increments of
+            ! 1e-311 near an equilibrium at 1e-300 make h*l0/r overflow
+            if (r0 < UROUND) r0 = 1.0_dp
             srur = sqrt(UROUND)
             do j = 1, n
                 yj = s%y(j)
@@ -1288,7 +1298,7 @@ contains
         tp = s%tn - s%hu
         if (min(tp, s%tn) - tol > t .or. t > max(tp, s%tn) + tol) then
             dky = s%yh(:, 1)
-            write (buf, '(a,es14.7,a,es14.7,a,es14.7,a)') 'lsoda dense: t = ', t, &
+            write (buf, '(a,es15.7e3,a,es15.7e3,a,es15.7e3,a)') 'lsoda dense: t = ', t, &
                 ' is outside the last step [', min(tp, s%tn), ', ', max(tp, s%tn), ']'
             call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
             return
@@ -1338,7 +1348,7 @@ contains
         type(status_t), intent(inout) :: stat
         real(dp), intent(in) :: t
         character(len=40) :: buf
-        write (buf, '(a,es14.7,a)') 'at t = ', t, ': '
+        write (buf, '(a,es15.7e3,a)') 'at t = ', t, ': '
         if (allocated(stat%msg)) then
             stat%msg = trim(buf)//' '//stat%msg
         else

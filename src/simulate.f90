@@ -5,7 +5,7 @@
 !! run leaves no partial file behind.
 module simulate
     use kinds, only: dp, deg
-    use status, only: status_t, set_error, ERR_DECK, ERR_MODEL, ERR_NUMERIC
+    use status, only: status_t, set_error, ERR_DECK, ERR_MODEL, ERR_NUMERIC, ERR_IO
     use geometry, only: pendulum_t, raised_angles, solve_theta5, beta_coeffs
     use bifilar_model, only: bifilar_t, motion_t, chart_state, evaluate, paper_angles, &
                              chart_positions, NSTATE
@@ -15,7 +15,8 @@ module simulate
                              elastic_atol, ELASTIC_NSTATE
     use elastic_solver, only: elastic_solver_t, slack_interval_t
     use deck, only: deck_t, deck_echo
-    use output_io, only: atomic_open, atomic_commit, atomic_abort, write_kv, all_finite
+    use output_io, only: out_files_t, write_kv, all_finite
+    use text, only: sci
     implicit none
     private
 
@@ -43,7 +44,7 @@ module simulate
         character(len=8) :: method = ''         !! the integrator used: 'lsoda' or 'radau'
     end type run_summary_t
 
-    public :: make_pendulum, start_state, run_simulation, model_checks
+    public :: make_pendulum, start_state, run_simulation, model_checks, simulation_ready
     public :: angle_difference, sway_of, tighter_rtol, integrator_of
 
     !> Most internal steps between two output rows before the run is given up.
@@ -69,7 +70,6 @@ contains
         type(deck_t), intent(in) :: d           !! the deck
         type(pendulum_t), intent(out) :: p      !! scaled parameters
         type(status_t), intent(out) :: stat     !! ERR_DECK when the geometry is impossible
-        character(len=300) :: buf
         p%big_l = d%l/d%b_prime
         p%big_lp = d%l_prime/d%b_prime
         p%big_b = d%b/d%b_prime
@@ -80,11 +80,10 @@ contains
         p%h_e = d%sway_depth/d%b_prime
         p%stab_rate = 1.0_dp     ! Baumgarte rate: constraint drift decays in about one tau
         if (d%b >= d%l + d%l_prime + d%b_prime .or. d%b_prime >= d%l + d%l_prime + d%b) then
-            write (buf, '(a,4(es10.3,a))') d%name//': &suspension b = ', d%b, ', b_prime = ', &
-                d%b_prime, ', l = ', d%l, ', l_prime = ', d%l_prime, &
-                ': the cables cannot reach (need b < l + l_prime + b_prime and '// &
-                'b_prime < l + l_prime + b)'
-            call set_error(stat, ERR_DECK, trim(buf))
+            call set_error(stat, ERR_DECK, '&suspension b = '//sci(d%b)//', b_prime = '// &
+                sci(d%b_prime)//', l = '//sci(d%l)//', l_prime = '//sci(d%l_prime)// &
+                ': the cables cannot reach; allowed: b < l + l_prime + b_prime and '// &
+                'b_prime < l + l_prime + b')
         end if
     end subroutine make_pendulum
 
@@ -105,7 +104,6 @@ contains
             call raised_angles(p, d%amplitude*deg, th0, stat)
             what = '&start mode = ''raised'''
             if (stat%code /= 0) then
-                stat%msg = d%name//': '//stat%msg
                 return
             end if
             th0(1) = th0(1) + d%tilt
@@ -116,12 +114,12 @@ contains
         end if
         call solve_theta5(p, th0, stat)
         if (stat%code /= 0) then
-            stat%msg = d%name//': '//trim(what)//': '//stat%msg
+            stat%msg = trim(what)//': '//stat%msg
             return
         end if
         beta = beta_coeffs(p, th0)
         if (.not. (abs(beta(5)) > 1.0e-10_dp)) then
-            call set_error(stat, ERR_DECK, d%name//': '//trim(what)// &
+            call set_error(stat, ERR_DECK, trim(what)// &
                 ': beta5 = 0 at the start, eq. (5) cannot give theta5_dot; change the start')
             return
         end if
@@ -129,10 +127,53 @@ contains
         y0 = chart_state(th0, thd)
     end subroutine start_state
 
+    !> The preconditions of analyses = 'simulate' and 'work_precision', checked before any
+    !! computing: the cables reach (make_pendulum), the start exists (start_state) and, for
+    !! model = 'elastic', the elastic start too.
+    subroutine simulation_ready(d, stat)
+        type(deck_t), intent(in) :: d           !! the deck
+        type(status_t), intent(out) :: stat     !! ERR_DECK, or the start's failure
+        type(elastic_t) :: el
+        real(dp) :: yc(NSTATE), th0(5), y(ELASTIC_NSTATE)
+        call make_pendulum(d, el%p, stat)
+        if (stat%code /= 0) return
+        call start_state(d, el%p, yc, th0, stat)
+        if (stat%code /= 0 .or. trim(d%model) /= 'elastic') return
+        el%stiffness = d%cable_stiffness
+        el%damping = d%cable_damping
+        call elastic_start(el, yc, y, stat)
+        if (stat%code /= 0) stat%msg = 'elastic start: '//stat%msg
+    end subroutine simulation_ready
+
     !> Run the simulation of a deck and write OUTDIR/NAME.dat and OUTDIR/NAME.summary.
-    subroutine run_simulation(d, outdir, sm, stat)
+    !! With `files` the files join the run's others there (the caller commits them all
+    !! together, or removes them all on failure); without it they are committed at the end
+    !! of a successful run and removed on failure.
+    subroutine run_simulation(d, outdir, sm, stat, files)
         type(deck_t), intent(in) :: d           !! the deck
         character(len=*), intent(in) :: outdir  !! output directory
+        type(run_summary_t), intent(out) :: sm  !! figures of the run
+        type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_MODEL or ERR_IO
+        type(out_files_t), intent(inout), optional, target :: files  !! the run's files
+        type(out_files_t), target :: own
+        type(out_files_t), pointer :: fs
+        fs => own
+        if (present(files)) fs => files
+        if (trim(d%model) == 'elastic') then
+            call run_elastic(d, outdir, fs, sm, stat)
+        else
+            call simulate_kane(d, outdir, fs, sm, stat)
+        end if
+        if (present(files)) return
+        if (stat%code == 0) call own%commit(stat)
+        if (stat%code /= 0) call own%discard()
+    end subroutine run_simulation
+
+    !> run_simulation for the paper's model (model = 'kane').
+    subroutine simulate_kane(d, outdir, fs, sm, stat)
+        type(deck_t), intent(in) :: d           !! the deck
+        character(len=*), intent(in) :: outdir  !! output directory
+        type(out_files_t), intent(inout) :: fs  !! the run's files
         type(run_summary_t), intent(out) :: sm  !! figures of the run
         type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_MODEL or ERR_IO
         type(bifilar_t) :: sys
@@ -141,20 +182,15 @@ contains
         type(motion_t) :: mo
         real(dp) :: y(NSTATE), ystep(NSTATE), th0(5), tau, e0, th3, t_cpu0
         real(dp) :: t_prev, y2(NSTATE), t_e0, rt2
-        character(len=:), allocatable :: datpath, sumpath
+        character(len=:), allocatable :: sumpath
         integer :: u, k, nout, nstep_row
-        character(len=300) :: buf
 
-        if (trim(d%model) == 'elastic') then
-            call run_elastic(d, outdir, sm, stat)
-            return
-        end if
         call make_pendulum(d, sys%p, stat)
         if (stat%code /= 0) return
         call start_state(d, sys%p, y, th0, stat)
         if (stat%code /= 0) return
 
-        call open_dat(d, outdir, '', u, datpath, sumpath, stat)
+        call open_dat(d, outdir, '', fs, u, sumpath, stat)
         if (stat%code /= 0) return
 
         call cpu_time(t_cpu0)
@@ -162,19 +198,13 @@ contains
         sm%method = merge('radau', 'lsoda', integrator_of(d) == SOLVER_RADAU)
         call solver%init(sys, 0.0_dp, y, d%rtol, [d%atol], stat, integrator_of(d), &
                          tcrit=d%tau_end)
-        if (stat%code /= 0) then
-            call atomic_abort(u, datpath)
-            return
-        end if
+        if (stat%code /= 0) return
         if (d%error_estimate) then
             ! the same run at a tolerance 100 times tighter, in step with the rows
             rt2 = tighter_rtol(d%rtol)
             call solver2%init(sys, 0.0_dp, y, rt2, [d%atol*rt2/d%rtol], stat, integrator_of(d), &
                               tcrit=d%tau_end)
-            if (stat%code /= 0) then
-                call atomic_abort(u, datpath)
-                return
-            end if
+            if (stat%code /= 0) return
             sm%error_estimate_rtol = rt2
             sm%error_estimate_theta = 0.0_dp
             sm%error_estimate_q = 0.0_dp
@@ -200,9 +230,8 @@ contains
                 if (stat%code /= 0) then
                     call explain_failure(solver, st%t_current, th3, stat)
                     if (too_much_accuracy(stat)) then
-                        write (buf, '(2(a,es9.2))') '; &integration rtol = ', d%rtol, &
-                            ', atol = ', d%atol
-                        stat%msg = stat%msg//trim(buf)//': raise them (rtol >= 3e-14 works '// &
+                        stat%msg = stat%msg//'; &integration rtol = '//sci(d%rtol, 2)// &
+                            ', atol = '//sci(d%atol, 2)//': raise them (rtol >= 3e-14 works '// &
                             'for the paper scenes)'
                     end if
                     exit
@@ -245,40 +274,44 @@ contains
             end if
             k = k + 1
         end do
-        call finish_run(d, solver%stats(), t_cpu0, u, datpath, sm, stat)
+        call finish_run(solver%stats(), t_cpu0, fs, u, sm, stat)
         if (stat%code /= 0) return
 
-        call write_summary(d, sm, sumpath, stat)
-    end subroutine run_simulation
+        call write_summary(d, sm, fs, sumpath, stat)
+    end subroutine simulate_kane
 
-    !> Open OUTDIR/NAME.dat (as NAME.dat.tmp) and write its header: title, units, an optional
-    !! model note, the effective deck, the column line.
-    subroutine open_dat(d, outdir, note, u, datpath, sumpath, stat)
+    !> Open OUTDIR/NAME.dat (a file of the run, see output_io) and write its header: title,
+    !! units, an optional model note, the effective deck, the column line.
+    subroutine open_dat(d, outdir, note, fs, u, sumpath, stat)
         type(deck_t), intent(in) :: d           !! the deck
         character(len=*), intent(in) :: outdir  !! output directory
         character(len=*), intent(in) :: note    !! extra '# ' line ('' for none)
+        type(out_files_t), intent(inout) :: fs  !! the run's files
         integer, intent(out) :: u               !! the open unit
-        character(len=:), allocatable, intent(out) :: datpath, sumpath
+        character(len=:), allocatable, intent(out) :: sumpath   !! the summary's name
         type(status_t), intent(out) :: stat     !! ERR_IO
-        datpath = outdir//'/'//d%name//'.dat'
+        integer :: ios
         sumpath = outdir//'/'//d%name//'.summary'
-        call atomic_open(datpath, u, stat)
+        call fs%open(outdir//'/'//d%name//'.dat', u, stat)
         if (stat%code /= 0) return
-        write (u, '(a)') '# bifilar: '//trim(d%title)
-        write (u, '(a)') '# time tau = sqrt(g/b'') t; lengths over b''; tensions over m g; '// &
-            'energy over m g b''; angles in rad'
-        if (len(note) > 0) write (u, '(a)') note
-        call deck_echo(d, u)
-        write (u, '(a)') COLUMNS
+        write (u, '(a)', iostat=ios) '# bifilar: '//trim(d%title)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# time tau = sqrt(g/b'') t; lengths over '// &
+            'b''; tensions over m g; energy over m g b''; angles in rad'
+        if (ios == 0 .and. len(note) > 0) write (u, '(a)', iostat=ios) note
+        if (ios == 0) call deck_echo(d, u, ios)
+        if (ios == 0) write (u, '(a)', iostat=ios) COLUMNS
+        if (ios /= 0) call set_error(stat, ERR_IO, 'cannot write '//outdir//'/'//d%name// &
+                                     '.dat (iostat '//sci(real(ios, dp), 0)//')')
     end subroutine open_dat
 
     !> Write one checked output row and fold it into the run's figures.
-    subroutine record_row(u, row, mo, sm)
+    subroutine record_row(u, row, mo, sm, ios)
         integer, intent(in) :: u                !! the open .dat unit
         real(dp), intent(in) :: row(17)         !! tau, ..., energy_error, constraint_residual
         type(motion_t), intent(in) :: mo        !! the motion of the row
         type(run_summary_t), intent(inout) :: sm
-        write (u, '(f14.6,16es24.15e3)') row
+        integer, intent(out) :: ios             !! iostat of the write
+        write (u, '(f14.6,16es24.15e3)', iostat=ios) row
         sm%rows = sm%rows + 1
         sm%tau_reached = row(1)
         sm%max_abs_theta1 = max(sm%max_abs_theta1, abs(mo%th(1)))
@@ -300,8 +333,8 @@ contains
         type(status_t), intent(inout) :: stat
         character(len=200) :: buf
         if (nstep_row < MAX_STEPS_PER_ROW) return
-        write (buf, '(a,i0,a,f0.4,a,es10.3,a)') 'the integrator took ', MAX_STEPS_PER_ROW, &
-            ' steps without reaching tau = ', tau, ' (last step ', abs(h_last), '):'
+        write (buf, '(a,i0,a)') 'the integrator took ', MAX_STEPS_PER_ROW, &
+            ' steps without reaching tau = '//tau_text(tau)//' (last step '//sci(abs(h_last))//'):'
         call set_error(stat, ERR_NUMERIC, trim(buf)//' '//remedy)
     end subroutine check_row_budget
 
@@ -309,9 +342,7 @@ contains
     subroutine append_tau(stat, tau)
         type(status_t), intent(inout) :: stat
         real(dp), intent(in) :: tau
-        character(len=40) :: buf
-        write (buf, '(a,f0.4)') ' at tau = ', tau
-        stat%msg = stat%msg//trim(buf)
+        stat%msg = stat%msg//' at tau = '//tau_text(tau)
     end subroutine append_tau
 
     !> One output row from the motion at tau (row k; the energy error is against the energy
@@ -329,20 +360,25 @@ contains
         type(status_t), intent(out) :: stat
         real(dp) :: row(17)
         character(len=60) :: buf
+        integer :: ios
         stat%code = 0
         if (k == 0) e0 = mo%energy
         row = [tau, mo%th, mo%thd, mo%q_sway, mo%q_axis, mo%t_bc, mo%t_ad, &
                mo%energy - e0, mo%residual]
         if (.not. all_finite(row)) then
-            write (buf, '(a,f0.4,a)') 'non-finite result at tau = ', tau, ': '
-            call set_error(stat, ERR_NUMERIC, trim(buf)//' '//why)
+            call set_error(stat, ERR_NUMERIC, 'non-finite result at tau = '//tau_text(tau)// &
+                           ': '//why)
             return
         end if
         if (paper_checks) then
             call model_checks(mo, tau, stat)
             if (stat%code /= 0) return
         end if
-        call record_row(u, row, mo, sm)
+        call record_row(u, row, mo, sm, ios)
+        if (ios /= 0) then
+            write (buf, '(a,i0,a)') 'cannot write a row of the .dat file (iostat ', ios, ')'
+            call set_error(stat, ERR_IO, trim(buf))
+        end if
     end subroutine emit_row
 
     !> Add one row's differences from the error-estimate rerun (angles, Q) and the CPU time
@@ -358,16 +394,15 @@ contains
         sm%error_estimate_cpu = sm%error_estimate_cpu + (t_e1 - t_e0)
     end subroutine add_estimate
 
-    !> End a run: the solver's figures and the CPU time into sm; the .dat committed, or
-    !! removed (with the deck named in the message) when stat carries an error.
-    subroutine finish_run(d, st, t_cpu0, u, datpath, sm, stat)
-        type(deck_t), intent(in) :: d           !! the deck
+    !> End a run: the solver's figures and the CPU time into sm; the .dat closed and checked
+    !! (it waits in fs for the commit) unless stat carries an error.
+    subroutine finish_run(st, t_cpu0, fs, u, sm, stat)
         type(lsoda_stats_t), intent(in) :: st   !! the main solver's statistics
         real(dp), intent(in) :: t_cpu0          !! cpu_time at the start of the integration
+        type(out_files_t), intent(inout) :: fs  !! the run's files
         integer, intent(in) :: u                !! the open .dat unit
-        character(len=*), intent(in) :: datpath
         type(run_summary_t), intent(inout) :: sm
-        type(status_t), intent(inout) :: stat   !! the run's status; ERR_IO from the commit
+        type(status_t), intent(inout) :: stat   !! the run's status; ERR_IO from the close
         real(dp) :: t_cpu1
         call cpu_time(t_cpu1)
         sm%cpu_seconds = t_cpu1 - t_cpu0 - sm%error_estimate_cpu
@@ -375,80 +410,78 @@ contains
         sm%rhs_evaluations = st%rhs_evals
         sm%jacobian_evaluations = st%jac_evals
         sm%method_switches = st%method_switches
-        if (stat%code /= 0) then
-            call atomic_abort(u, datpath)
-            if (index(stat%msg, d%name) == 0) stat%msg = d%name//': '//stat%msg
-            return
-        end if
-        call atomic_commit(u, datpath, stat)
+        if (stat%code /= 0) return
+        call fs%close(u, 0, stat)
     end subroutine finish_run
 
     !> Write OUTDIR/NAME.summary (key = value lines) of a finished run.
-    subroutine write_summary(d, sm, sumpath, stat)
+    subroutine write_summary(d, sm, fs, sumpath, stat)
         type(deck_t), intent(in) :: d           !! the deck
         type(run_summary_t), intent(in) :: sm   !! figures of the run
+        type(out_files_t), intent(inout) :: fs  !! the run's files
         character(len=*), intent(in) :: sumpath !! summary file
         type(status_t), intent(out) :: stat     !! ERR_IO
-        integer :: u
-        call atomic_open(sumpath, u, stat)
+        integer :: u, ios
+        call fs%open(sumpath, u, stat)
         if (stat%code /= 0) return
-        write (u, '(a)') '# bifilar summary: '//trim(d%title)
-        call write_kv(u, 'deck', d%path)
-        call write_kv(u, 'cpu_seconds', sm%cpu_seconds)
-        call write_kv(u, 'steps', sm%steps)
-        call write_kv(u, 'rhs_evaluations', sm%rhs_evaluations)
-        call write_kv(u, 'jacobian_evaluations', sm%jacobian_evaluations)
-        call write_kv(u, 'method_switches', sm%method_switches)
-        call write_kv(u, 'rows', sm%rows)
-        call write_kv(u, 'tau_end', sm%tau_reached)
-        call write_kv(u, 'max_abs_theta1', sm%max_abs_theta1)
-        call write_kv(u, 'max_abs_theta4', sm%max_abs_theta4)
-        call write_kv(u, 'max_Q', sm%max_q)
-        call write_kv(u, 'max_Q_axis', sm%max_q_axis)
-        call write_kv(u, 'max_abs_energy_error', sm%max_abs_energy_error)
-        call write_kv(u, 'max_abs_constraint_residual', sm%max_abs_constraint_residual)
-        call write_kv(u, 'min_tension', sm%min_tension)
-        call write_kv(u, 'method', trim(sm%method))
+        write (u, '(a)', iostat=ios) '# bifilar summary: '//trim(d%title)
+        call write_kv(u, 'deck', d%path, ios)
+        call write_kv(u, 'cpu_seconds', sm%cpu_seconds, ios)
+        call write_kv(u, 'steps', sm%steps, ios)
+        call write_kv(u, 'rhs_evaluations', sm%rhs_evaluations, ios)
+        call write_kv(u, 'jacobian_evaluations', sm%jacobian_evaluations, ios)
+        call write_kv(u, 'method_switches', sm%method_switches, ios)
+        call write_kv(u, 'rows', sm%rows, ios)
+        call write_kv(u, 'tau_end', sm%tau_reached, ios)
+        call write_kv(u, 'max_abs_theta1', sm%max_abs_theta1, ios)
+        call write_kv(u, 'max_abs_theta4', sm%max_abs_theta4, ios)
+        call write_kv(u, 'max_Q', sm%max_q, ios)
+        call write_kv(u, 'max_Q_axis', sm%max_q_axis, ios)
+        call write_kv(u, 'max_abs_energy_error', sm%max_abs_energy_error, ios)
+        call write_kv(u, 'max_abs_constraint_residual', sm%max_abs_constraint_residual, ios)
+        call write_kv(u, 'min_tension', sm%min_tension, ios)
+        call write_kv(u, 'method', trim(sm%method), ios)
         if (d%error_estimate) then
-            call write_kv(u, 'error_estimate_rtol', sm%error_estimate_rtol)
-            call write_kv(u, 'error_estimate_theta', sm%error_estimate_theta)
-            call write_kv(u, 'error_estimate_Q', sm%error_estimate_q)
+            call write_kv(u, 'error_estimate_rtol', sm%error_estimate_rtol, ios)
+            call write_kv(u, 'error_estimate_theta', sm%error_estimate_theta, ios)
+            call write_kv(u, 'error_estimate_Q', sm%error_estimate_q, ios)
         end if
         if (sm%elastic) then
-            call write_kv(u, 'slack_time_BC', sm%slack_time(1))
-            call write_kv(u, 'slack_time_AD', sm%slack_time(2))
-            call write_kv(u, 'slack_intervals_BC', sm%slack_intervals(1))
-            call write_kv(u, 'slack_intervals_AD', sm%slack_intervals(2))
-            call write_kv(u, 'cable_switches', sm%cable_switches)
+            call write_kv(u, 'slack_time_BC', sm%slack_time(1), ios)
+            call write_kv(u, 'slack_time_AD', sm%slack_time(2), ios)
+            call write_kv(u, 'slack_intervals_BC', sm%slack_intervals(1), ios)
+            call write_kv(u, 'slack_intervals_AD', sm%slack_intervals(2), ios)
+            call write_kv(u, 'cable_switches', sm%cable_switches, ios)
         end if
-        call atomic_commit(u, sumpath, stat)
+        call fs%close(u, ios, stat)
     end subroutine write_summary
 
     !> Write OUTDIR/NAME.slack: one line per slack interval of a cable (model = 'elastic'),
     !! in the order they began; an interval still open at the end of the run ends at tau_end
     !! and is marked open = 1.
-    subroutine write_slack_list(d, outdir, list, tau_end, stat)
+    subroutine write_slack_list(d, outdir, fs, list, tau_end, stat)
         type(deck_t), intent(in) :: d           !! the deck
         character(len=*), intent(in) :: outdir  !! output directory
+        type(out_files_t), intent(inout) :: fs  !! the run's files
         type(slack_interval_t), intent(in) :: list(:)  !! elastic_solver_t%slack_list()
         real(dp), intent(in) :: tau_end         !! tau reached by the run
         type(status_t), intent(out) :: stat     !! ERR_IO
         character(len=:), allocatable :: path
         real(dp) :: t1
-        integer :: u, i
+        integer :: u, i, ios
         path = outdir//'/'//d%name//'.slack'
-        call atomic_open(path, u, stat)
+        call fs%open(path, u, stat)
         if (stat%code /= 0) return
-        write (u, '(a)') '# bifilar slack intervals: '//trim(d%title)
-        write (u, '(a)') '# cable (1 = BC, 2 = AD), tau_start, tau_end, duration, open (1: '// &
-            'still slack at the end of the run)'
+        write (u, '(a)', iostat=ios) '# bifilar slack intervals: '//trim(d%title)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# cable (1 = BC, 2 = AD), tau_start, '// &
+            'tau_end, duration, open (1: still slack at the end of the run)'
         do i = 1, size(list)
             t1 = list(i)%tau_end
             if (list(i)%open) t1 = tau_end
-            write (u, '(i2,3es24.15,i3)') list(i)%cable, list(i)%tau_start, t1, &
-                t1 - list(i)%tau_start, merge(1, 0, list(i)%open)
+            if (ios == 0) write (u, '(i2,3es24.15e3,i3)', iostat=ios) list(i)%cable, &
+                list(i)%tau_start, t1, t1 - list(i)%tau_start, merge(1, 0, list(i)%open)
         end do
-        call atomic_commit(u, path, stat)
+        call fs%close(u, ios, stat)
     end subroutine write_slack_list
 
     !> run_simulation for &scene model = 'elastic': the elastic-cable model (elastic_model)
@@ -462,9 +495,10 @@ contains
     !! stops with ERR_MODEL when a cable stretches beyond STRAIN_MAX, and with ERR_NUMERIC
     !! when the cables chatter between taut and slack (elastic_solver: the tolerance does
     !! not resolve the stretch) or the integrator fails.
-    subroutine run_elastic(d, outdir, sm, stat)
+    subroutine run_elastic(d, outdir, fs, sm, stat)
         type(deck_t), intent(in) :: d           !! the deck (model = 'elastic')
         character(len=*), intent(in) :: outdir  !! output directory
+        type(out_files_t), intent(inout) :: fs  !! the run's files
         type(run_summary_t), intent(out) :: sm  !! figures of the run
         type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_MODEL or ERR_IO
         type(elastic_t) :: sys, sys2
@@ -476,9 +510,8 @@ contains
         real(dp) :: yc(NSTATE), th0(5), y(ELASTIC_NSTATE), ystep(ELASTIC_NSTATE)
         real(dp) :: y2(ELASTIC_NSTATE), atol(ELASTIC_NSTATE), th_row(5), th_step(5)
         real(dp) :: tau, e0, t_cpu0, t_e0, rt2
-        character(len=:), allocatable :: datpath, sumpath
+        character(len=:), allocatable :: sumpath
         integer :: u, k, nout, nstep_row
-        character(len=300) :: buf
 
         sm%elastic = .true.
         call make_pendulum(d, sys%p, stat)
@@ -489,33 +522,27 @@ contains
         sys%damping = d%cable_damping
         call elastic_start(sys, yc, y, stat)
         if (stat%code /= 0) then
-            stat%msg = d%name//': elastic start: '//stat%msg
+            stat%msg = 'elastic start: '//stat%msg
             return
         end if
         atol = elastic_atol(sys, d%atol, d%rtol)
 
         call open_dat(d, outdir, '# model elastic: T_BC, T_AD from the springs (0 when '// &
             'slack); energy_error includes the springs'' energy; constraint_residual = '// &
-            '|AD| - l''', u, datpath, sumpath, stat)
+            '|AD| - l''', fs, u, sumpath, stat)
         if (stat%code /= 0) return
 
         call cpu_time(t_cpu0)
         sm%method = merge('radau', 'lsoda', integrator_of(d) == SOLVER_RADAU)
         call solver%init(sys, 0.0_dp, y, d%rtol, atol, stat, tcrit=d%tau_end, &
                          method=integrator_of(d))
-        if (stat%code /= 0) then
-            call atomic_abort(u, datpath)
-            return
-        end if
+        if (stat%code /= 0) return
         if (d%error_estimate) then
             rt2 = tighter_rtol(d%rtol)
             sys2 = sys                           ! its own cable modes
             call solver2%init(sys2, 0.0_dp, y, rt2, elastic_atol(sys2, d%atol*rt2/d%rtol, rt2), &
                               stat, tcrit=d%tau_end, method=integrator_of(d))
-            if (stat%code /= 0) then
-                call atomic_abort(u, datpath)
-                return
-            end if
+            if (stat%code /= 0) return
             sm%error_estimate_rtol = rt2
             sm%error_estimate_theta = 0.0_dp
             sm%error_estimate_q = 0.0_dp
@@ -528,11 +555,7 @@ contains
         k = 0
         nstep_row = 0
         call elastic_evaluate(sys, y, th0(3), mo, stat, th0, cab)
-        if (stat%code /= 0) then
-            call atomic_abort(u, datpath)
-            stat%msg = d%name//': '//stat%msg
-            return
-        end if
+        if (stat%code /= 0) return
         do while (k <= nout)
             tau = min(k*d%dtau_out, d%tau_end)
             st = solver%stats()
@@ -554,10 +577,9 @@ contains
                 if (stat%code /= 0) exit
                 th_step = mo2%th
                 if (maxval(cab%strain) > STRAIN_MAX) then
-                    write (buf, '(a,es10.3,a)') 'a cable stretches to more than twice its '// &
-                        'natural length at tau = '//tau_text(st%t_current)//' (strain ', &
-                        maxval(cab%strain), '): raise &cables stiffness'
-                    call set_error(stat, ERR_MODEL, trim(buf))
+                    call set_error(stat, ERR_MODEL, 'a cable stretches to more than twice '// &
+                        'its natural length at tau = '//tau_text(st%t_current)//' (strain '// &
+                        sci(maxval(cab%strain))//'): raise &cables stiffness')
                     exit
                 end if
                 cycle
@@ -600,11 +622,11 @@ contains
         sm%slack_time = solver%slack_time()
         sm%slack_intervals = solver%slack_intervals()
         sm%cable_switches = solver%switches()
-        call finish_run(d, solver%stats(), t_cpu0, u, datpath, sm, stat)
+        call finish_run(solver%stats(), t_cpu0, fs, u, sm, stat)
         if (stat%code /= 0) return
-        call write_slack_list(d, outdir, solver%slack_list(), sm%tau_reached, stat)
+        call write_slack_list(d, outdir, fs, solver%slack_list(), sm%tau_reached, stat)
         if (stat%code /= 0) return
-        call write_summary(d, sm, sumpath, stat)
+        call write_summary(d, sm, fs, sumpath, stat)
     end subroutine run_elastic
 
     !> The checks that end a run because the model no longer holds (ERR_MODEL): a slack
@@ -616,10 +638,9 @@ contains
         character(len=400) :: buf
         stat%code = 0
         if (min(mo%t_bc, mo%t_ad) <= 0.0_dp) then
-            write (buf, '(a,es10.3,a,es10.3,a)') 'cable goes slack at tau = '// &
-                tau_text(tau)//' (T_BC = ', mo%t_bc, ', T_AD = ', mo%t_ad, ' m g): the taut-cable model '// &
-                'no longer holds; lower the amplitude or start speed, or lengthen the cables'
-            call set_error(stat, ERR_MODEL, trim(buf))
+            call set_error(stat, ERR_MODEL, 'cable goes slack at tau = '//tau_text(tau)// &
+                ' (T_BC = '//sci(mo%t_bc)//', T_AD = '//sci(mo%t_ad)//' m g): the taut-cable '// &
+                'model no longer holds; lower the amplitude or start speed, or lengthen the cables')
         else if (abs(cos(mo%th(5))) < COS5_MIN) then
             write (buf, '(a,f0.4,a)') 'line CD turns vertical at tau = '//tau_text(tau)// &
                 ' (theta5 = ', mo%th(5)/deg, ' deg): the paper''s coordinates theta1, theta4 '// &

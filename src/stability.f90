@@ -4,79 +4,117 @@
 !! Writes OUTDIR/NAME.floquet (key = value lines and the multiplier table) and
 !! OUTDIR/NAME.chart.dat (x, y, max_modulus, period), each through a temporary file.
 !! The chart runs its points in parallel with OpenMP (OMP_NUM_THREADS is honoured) and
-!! reports progress on standard error.
+!! shows one line of progress on standard error when that is a terminal (module progress).
 module stability
-    use, intrinsic :: iso_fortran_env, only: error_unit
     use kinds, only: dp, deg
-    use status, only: status_t
+    use status, only: status_t, set_error, ERR_NUMERIC, ERR_DECK, ERR_MODEL
     use geometry, only: pendulum_t
     use deck, only: deck_t, deck_echo
     use simulate, only: make_pendulum
-    use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene
-    use output_io, only: atomic_open, atomic_commit, write_kv
+    use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, &
+                       FLOQUET_MAX_STEPS
+    use lsoda, only: LSODA_ERR_MAX_STEPS
+    use output_io, only: out_files_t, write_kv
+    use progress, only: progress_t
+    use text, only: itoa
     implicit none
     private
 
-    public :: run_floquet, run_chart, set_chart_variable
+    public :: run_floquet, run_chart, set_chart_variable, floquet_ready
 
     !> Sentinel written for chart points where no analysis is possible (not a torsion scene,
     !! cables cannot reach, impossible inertia): never NaN.
     real(dp), parameter, public :: CHART_INVALID = -1.0_dp
+    !> Sentinel written for chart points whose analysis failed (e.g. more than
+    !! FLOQUET_MAX_STEPS steps): never NaN.
+    real(dp), parameter, public :: CHART_FAILED = -2.0_dp
 
 contains
 
-    !> Floquet analysis of a deck at &floquet amplitude: OUTDIR/NAME.floquet.
-    subroutine run_floquet(d, outdir, res, stat)
+    !> The preconditions of analyses = 'floquet', checked before any computing: the cables
+    !! can reach and pure torsion is an exact motion of the scene (ERR_DECK otherwise).
+    subroutine floquet_ready(d, stat)
+        type(deck_t), intent(in) :: d           !! the deck
+        type(status_t), intent(out) :: stat     !! ERR_DECK
+        type(pendulum_t) :: p
+        integer :: ivert
+        call make_pendulum(d, p, stat)
+        if (stat%code /= 0) return
+        call check_torsion_scene(p, ivert, stat)
+        if (stat%code /= 0) stat%msg = 'analyses = ''floquet'' needs a scene in which pure '// &
+            'torsion is an exact motion: '//stat%msg
+    end subroutine floquet_ready
+
+    !> Floquet analysis of a deck at &floquet amplitude: OUTDIR/NAME.floquet.  With `files`
+    !! the file joins the run's others (see run_simulation); without it it is committed at
+    !! once.
+    subroutine run_floquet(d, outdir, res, stat, files)
         type(deck_t), intent(in) :: d           !! the deck (a torsion scene)
         character(len=*), intent(in) :: outdir  !! output directory
         type(floquet_result_t), intent(out) :: res
         type(status_t), intent(out) :: stat     !! ERR_DECK (not a torsion scene), ERR_NUMERIC
+        type(out_files_t), intent(inout), optional, target :: files  !! the run's files
+        type(out_files_t), target :: own
+        type(out_files_t), pointer :: fs
         type(pendulum_t) :: p
         real(dp) :: t0, t1
-        integer :: u, k, ivert
+        integer :: u, k, ios
         character(len=:), allocatable :: path
+        fs => own
+        if (present(files)) fs => files
+        call floquet_ready(d, stat)
+        if (stat%code /= 0) return
         call make_pendulum(d, p, stat)
         if (stat%code /= 0) return
-        call check_torsion_scene(p, ivert, stat)
-        if (stat%code /= 0) then
-            stat%msg = d%name//': analyses = ''floquet'' needs a scene in which pure torsion '// &
-                'is an exact motion: '//stat%msg
-            return
-        end if
         call cpu_time(t0)
         call floquet_analysis(p, d%floquet_amplitude*deg, d%floquet_rtol, d%floquet_segments, &
                               res, stat)
         call cpu_time(t1)
         if (stat%code /= 0) then
-            stat%msg = d%name//': floquet: '//stat%msg
+            call explain_budget(stat)
+            stat%msg = 'floquet: '//stat%msg
             return
         end if
         path = outdir//'/'//d%name//'.floquet'
-        call atomic_open(path, u, stat)
+        call fs%open(path, u, stat)
         if (stat%code /= 0) return
-        write (u, '(a)') '# bifilar Floquet analysis of pure torsion: '//trim(d%title)
-        write (u, '(a)') '# period in units of tau = sqrt(g/b'') t; multipliers of the '// &
-            'monodromy matrix H(t*) of eq. (51)'
-        call deck_echo(d, u)
-        call write_kv(u, 'period', res%period)
-        call write_kv(u, 'max_modulus', res%max_modulus)
-        call write_kv(u, 'stable', res%stable)
-        call write_kv(u, 'amplitude_deg', d%floquet_amplitude)
-        call write_kv(u, 'segments', d%floquet_segments)
-        call write_kv(u, 'rtol', d%floquet_rtol)
-        call write_kv(u, 'orbit_closure', res%orbit_closure)
-        call write_kv(u, 'trivial_residual', res%trivial_residual)
-        call write_kv(u, 'cpu_seconds', t1 - t0)
-        call write_kv(u, 'steps', res%steps)
-        call write_kv(u, 'rhs_evaluations', res%rhs_evaluations)
-        write (u, '(a)') '# multipliers: re im modulus trivial (trivial: 1 by structure -- '// &
-            'time shift, energy, constraint and its rate)'
+        write (u, '(a)', iostat=ios) '# bifilar Floquet analysis of pure torsion: '//trim(d%title)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# period in units of tau = sqrt(g/b'') t; '// &
+            'multipliers of the monodromy matrix H(t*) of eq. (51)'
+        call deck_echo(d, u, ios)
+        call write_kv(u, 'period', res%period, ios)
+        call write_kv(u, 'max_modulus', res%max_modulus, ios)
+        call write_kv(u, 'stable', res%stable, ios)
+        call write_kv(u, 'amplitude_deg', d%floquet_amplitude, ios)
+        call write_kv(u, 'segments', d%floquet_segments, ios)
+        call write_kv(u, 'rtol', d%floquet_rtol, ios)
+        call write_kv(u, 'orbit_closure', res%orbit_closure, ios)
+        call write_kv(u, 'trivial_residual', res%trivial_residual, ios)
+        call write_kv(u, 'cpu_seconds', t1 - t0, ios)
+        call write_kv(u, 'steps', res%steps, ios)
+        call write_kv(u, 'rhs_evaluations', res%rhs_evaluations, ios)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# multipliers: re im modulus trivial '// &
+            '(trivial: 1 by structure -- time shift, energy, constraint and its rate)'
         do k = 1, size(res%multipliers)
-            write (u, '(3es24.15e3,2x,a)') real(res%multipliers(k)), aimag(res%multipliers(k)), &
-                abs(res%multipliers(k)), merge('yes', 'no ', res%trivial(k))
+            if (ios == 0) write (u, '(3es24.15e3,2x,a)', iostat=ios) real(res%multipliers(k)), &
+                aimag(res%multipliers(k)), abs(res%multipliers(k)), &
+                merge('yes', 'no ', res%trivial(k))
         end do
-        call atomic_commit(u, path, stat)
+        call fs%close(u, ios, stat)
+        if (present(files)) return
+        if (stat%code == 0) call own%commit(stat)
+        if (stat%code /= 0) call own%discard()
     end subroutine run_floquet
+
+    !> A Floquet failure for want of steps gets its cause and remedy in the message.
+    subroutine explain_budget(stat)
+        type(status_t), intent(inout) :: stat   !! the failure
+        if (stat%code /= LSODA_ERR_MAX_STEPS) return
+        call set_error(stat, ERR_NUMERIC, 'the variational equations took more than '// &
+            itoa(FLOQUET_MAX_STEPS)//' integrator steps over one segment of the half period '// &
+            '(a body turning fast about a principal axis of small inertia?); raise &floquet '// &
+            'rtol (e.g. 1e-8) or add segments')
+    end subroutine explain_budget
 
     !> Set one chart variable (deck units: l and b over b', amplitude in degrees, r over b',
     !! lambda in radians, inertia_ratio = I3/I1) in p, or the amplitude.
@@ -103,24 +141,32 @@ contains
     end subroutine set_chart_variable
 
     !> Stability chart over the grid of &chart: OUTDIR/NAME.chart.dat with one row per point,
-    !! `x y max_modulus period` (CHART_INVALID where no analysis is possible), a blank line
-    !! after each x (gnuplot grid format).
-    subroutine run_chart(d, outdir, nstable, wall_seconds, stat)
+    !! `x y max_modulus period` (CHART_INVALID where no analysis is possible, CHART_FAILED
+    !! where it failed), a blank line after each x (gnuplot grid format).  With `files` the
+    !! file joins the run's others (see run_simulation); without it it is committed at once.
+    subroutine run_chart(d, outdir, nstable, wall_seconds, stat, files, nfailed)
         type(deck_t), intent(in) :: d           !! the deck
         character(len=*), intent(in) :: outdir  !! output directory
         integer, intent(out) :: nstable         !! number of stable points
         real(dp), intent(out) :: wall_seconds   !! elapsed time of the sweep
         type(status_t), intent(out) :: stat
+        type(out_files_t), intent(inout), optional, target :: files  !! the run's files
+        integer, intent(out), optional :: nfailed   !! number of points whose analysis failed
+        type(out_files_t), target :: own
+        type(out_files_t), pointer :: fs
         type(pendulum_t) :: p0, p
         type(floquet_result_t) :: res
         type(status_t) :: st
+        type(progress_t) :: pr
         real(dp), allocatable :: xs(:), ys(:), mods(:, :), pers(:, :)
         real(dp) :: amp
-        integer :: i, j, k, u, ndone, npts, next_report, c0, c1, crate
+        integer :: i, j, k, u, npts, c0, c1, crate, ios
         integer :: ivert
         logical :: valid
         character(len=:), allocatable :: path
 
+        fs => own
+        if (present(files)) fs => files
         call make_pendulum(d, p0, stat)
         if (stat%code /= 0) return
         allocate (xs(d%chart_nx), ys(d%chart_ny), mods(d%chart_nx, d%chart_ny), &
@@ -132,11 +178,10 @@ contains
             ys(j) = d%chart_y_min + (d%chart_y_max - d%chart_y_min)*(j - 1)/(d%chart_ny - 1)
         end do
         npts = d%chart_nx*d%chart_ny
-        ndone = 0
-        next_report = max(1, npts/20)
+        call pr%start(d%name//': chart', npts)
         call system_clock(c0, crate)
-        !$omp parallel do schedule(dynamic, 4) default(none) &
-        !$omp shared(d, p0, xs, ys, mods, pers, npts, ndone, next_report) &
+        !$omp parallel do schedule(dynamic, 1) default(none) &
+        !$omp shared(d, p0, xs, ys, mods, pers, npts, pr) &
         !$omp private(k, i, j, p, amp, res, st, valid, ivert)
         do k = 1, npts
             i = mod(k - 1, d%chart_nx) + 1
@@ -157,40 +202,47 @@ contains
                     if (st%code == 0) then
                         mods(i, j) = res%max_modulus
                         pers(i, j) = res%period
+                    else if (st%code /= ERR_DECK .and. st%code /= ERR_MODEL) then
+                        ! (ERR_DECK, ERR_MODEL: no torsion at this amplitude, CHART_INVALID)
+                        mods(i, j) = CHART_FAILED
+                        pers(i, j) = CHART_FAILED
                     end if
                 end if
             end if
             !$omp critical (chart_progress)
-            ndone = ndone + 1
-            if (ndone >= next_report .and. npts >= 100) then
-                write (error_unit, '(a,a,i0,a,i0,a)') d%name, ': chart ', ndone, ' of ', npts, &
-                    ' points'
-                next_report = next_report + max(1, npts/20)
-            end if
+            call pr%tick()
             !$omp end critical (chart_progress)
         end do
         !$omp end parallel do
+        call pr%finish()
         call system_clock(c1)
         wall_seconds = real(c1 - c0, dp)/real(crate, dp)
         nstable = count(mods >= 0.0_dp .and. mods <= 1.0_dp + 1.0e-6_dp)
+        if (present(nfailed)) nfailed = count(mods == CHART_FAILED)
 
         path = outdir//'/'//d%name//'.chart.dat'
-        call atomic_open(path, u, stat)
+        call fs%open(path, u, stat)
         if (stat%code /= 0) return
-        write (u, '(a)') '# bifilar stability chart of pure torsion: '//trim(d%title)
-        write (u, '(a)') '# x = '//trim(d%chart_x)//', y = '//trim(d%chart_y)// &
-            ' (l, b, r over b''; amplitude in degrees; lambda in rad; inertia_ratio = I3/I1)'
-        write (u, '(a,es10.3,a)') '# max_modulus and period = ', CHART_INVALID, &
-            ' where pure torsion is not possible (not a torsion scene, cables cannot reach)'
-        call deck_echo(d, u)
-        write (u, '(a)') '# x y max_modulus period'
+        write (u, '(a)', iostat=ios) '# bifilar stability chart of pure torsion: '//trim(d%title)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# x = '//trim(d%chart_x)//', y = '// &
+            trim(d%chart_y)//' (l, b, r over b''; amplitude in degrees; lambda in rad; '// &
+            'inertia_ratio = I3/I1)'
+        if (ios == 0) write (u, '(a)', iostat=ios) '# max_modulus and period = -1 where pure '// &
+            'torsion is not possible (not a torsion scene, cables cannot reach), -2 where '// &
+            'the analysis failed (e.g. more than '//itoa(FLOQUET_MAX_STEPS)//' steps)'
+        call deck_echo(d, u, ios)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# x y max_modulus period'
         do i = 1, d%chart_nx
             do j = 1, d%chart_ny
-                write (u, '(4es24.15e3)') xs(i), ys(j), mods(i, j), pers(i, j)
+                if (ios == 0) write (u, '(4es24.15e3)', iostat=ios) xs(i), ys(j), mods(i, j), &
+                    pers(i, j)
             end do
-            write (u, '(a)') ''
+            if (ios == 0) write (u, '(a)', iostat=ios) ''
         end do
-        call atomic_commit(u, path, stat)
+        call fs%close(u, ios, stat)
+        if (present(files)) return
+        if (stat%code == 0) call own%commit(stat)
+        if (stat%code /= 0) call own%discard()
     end subroutine run_chart
 
 end module stability

@@ -30,7 +30,9 @@ module work_precision
     use lsoda, only: lsoda_t, lsoda_stats_t
     use deck, only: deck_t, deck_echo
     use simulate, only: make_pendulum, start_state, angle_difference, sway_of
-    use output_io, only: atomic_open, atomic_commit, atomic_abort, all_finite
+    use output_io, only: out_files_t, all_finite
+    use text, only: sci
+    use progress, only: progress_t
     implicit none
     private
 
@@ -218,24 +220,32 @@ contains
         end do
     end subroutine trajectory_errors
 
-    !> The analysis: reference, its confirmation, both curves, the two files.
-    subroutine run_work_precision(d, outdir, res, stat, quiet)
+    !> The analysis: reference, its confirmation, both curves, the two files.  With `files`
+    !! the files join the run's others (see run_simulation); without it they are committed
+    !! at the end.
+    subroutine run_work_precision(d, outdir, res, stat, quiet, files)
         type(deck_t), intent(in) :: d           !! the deck
         character(len=*), intent(in) :: outdir  !! output directory
         type(wp_result_t), intent(out) :: res   !! the curves
         type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_MODEL, ERR_IO
         logical, intent(in), optional :: quiet  !! do not print the agreement line
+        type(out_files_t), intent(inout), optional, target :: files  !! the run's files
+        type(out_files_t), target :: own
+        type(out_files_t), pointer :: fs
+        type(progress_t) :: pr
         type(pendulum_t) :: p
         real(dp), allocatable :: times(:), yref(:, :), ys(:, :), yh1(:, :), yh2(:, :)
         real(dp) :: y0(NSTATE), th0(5), ratio, e1
         integer :: n, i, steps, nfe, m, ns, m_rk0
         character(len=:), allocatable :: path, path2
-        integer :: u
+        integer :: u, ios
         logical :: loud, elastic, ref_check
         type(bifilar_t) :: kane
         type(elastic_t) :: el
         real(dp), allocatable :: y0s(:)
 
+        fs => own
+        if (present(files)) fs => files
         loud = .true.
         if (present(quiet)) loud = .not. quiet
         call make_pendulum(d, p, stat)
@@ -257,7 +267,7 @@ contains
             allocate (y0s(ns))
             call elastic_start(el, y0, y0s, stat)
             if (stat%code /= 0) then
-                stat%msg = d%name//': elastic start: '//stat%msg
+                stat%msg = 'elastic start: '//stat%msg
                 return
             end if
             do while (d%dtau_out/m_rk0*stretch_frequency(el) > 1.0_dp .and. m_rk0 < 2**20)
@@ -275,12 +285,12 @@ contains
         if (elastic) then
             call run_adaptive(WP_REF_RTOL, yref, stat, .true., SOLVER_RADAU)
             if (stat%code /= 0) then
-                stat%msg = d%name//': work_precision reference (Radau rtol 1e-13): '//stat%msg
+                stat%msg = 'work_precision reference (Radau rtol 1e-13): '//stat%msg
                 return
             end if
             call run_adaptive(WP_REF_RTOL, ys, stat, .true., SOLVER_LSODA)
             if (stat%code /= 0) then
-                stat%msg = d%name//': work_precision reference check (LSODA rtol 1e-13): '// &
+                stat%msg = 'work_precision reference check (LSODA rtol 1e-13): '// &
                            stat%msg
                 return
             end if
@@ -288,7 +298,7 @@ contains
         else
             call run_adaptive(WP_REF_RTOL, yref, stat, .true., SOLVER_LSODA)
             if (stat%code /= 0) then
-                stat%msg = d%name//': work_precision reference (LSODA rtol 1e-13): '//stat%msg
+                stat%msg = 'work_precision reference (LSODA rtol 1e-13): '//stat%msg
                 return
             end if
         end if
@@ -300,7 +310,7 @@ contains
             call run_rk4(m, yh1, stat)
             if (stat%code == 0) call run_rk4(2*m, yh2, stat)
             if (stat%code /= 0) then
-                stat%msg = d%name//': work_precision reference check (RK4): '//stat%msg
+                stat%msg = 'work_precision reference check (RK4): '//stat%msg
                 return
             end if
             yh2 = (16.0_dp*yh2 - yh1)/15.0_dp
@@ -309,79 +319,88 @@ contains
             res%ref_agreement_theta = -1.0_dp
             res%ref_agreement_q = -1.0_dp
         end if
-        if (loud) write (*, '(a,es9.2,a,es9.2,a,es9.2,a)') d%name//': work_precision '// &
-            'reference '//ref_name()//' rtol 1e-13 against RK4 + Richardson (h = ', &
-            res%ref_h, '): angles agree to ', res%ref_agreement_theta, ', Q to ', &
-            res%ref_agreement_q, ''
-        if (loud .and. elastic) write (*, '(a,es9.2,a,es9.2)') d%name//': work_precision '// &
-            'reference Radau rtol 1e-13 against LSODA rtol 1e-13: angles agree to ', &
-            res%ref_second_theta, ', Q to ', res%ref_second_q
+        if (loud) write (*, '(a)') d%name//': work_precision reference '//ref_name()// &
+            ' rtol 1e-13 against RK4 + Richardson (h = '//sci(res%ref_h, 2)// &
+            '): angles agree to '//sci(res%ref_agreement_theta, 2)//', Q to '// &
+            sci(res%ref_agreement_q, 2)
+        if (loud .and. elastic) write (*, '(a)') d%name//': work_precision reference Radau '// &
+            'rtol 1e-13 against LSODA rtol 1e-13: angles agree to '// &
+            sci(res%ref_second_theta, 2)//', Q to '//sci(res%ref_second_q, 2)
 
-        ! LSODA curve, and Radau's for the elastic model
+        ! LSODA curve (and Radau's for the elastic model), then the fixed-step RK4 curve (one
+        ! line of progress on a terminal)
+        call pr%start(d%name//': work_precision', WP_NRTOL*merge(2, 1, elastic) + WP_NRK4)
         do i = 1, WP_NRTOL
             res%lsoda(i)%rtol = 10.0_dp**(-2 - i)
             call measure(res%lsoda(i), 0, SOLVER_LSODA)
+            call pr%tick()
             if (.not. elastic) cycle
             res%radau(i)%rtol = res%lsoda(i)%rtol
             call measure(res%radau(i), 0, SOLVER_RADAU)
+            call pr%tick()
         end do
-
-        ! fixed-step RK4 curve
         do i = 1, WP_NRK4
             m = m_rk0*2**(i - 1)
             res%rk4(i)%h = d%dtau_out/m
+            call pr%tick()
             if (real(m, dp)*n > RK4_MAX_STEPS) cycle
             call measure(res%rk4(i), m, SOLVER_LSODA)
         end do
+        call pr%finish()
 
         ! files
         path = outdir//'/'//d%name//'.wp.dat'
-        call atomic_open(path, u, stat)
+        call fs%open(path, u, stat)
         if (stat%code /= 0) return
+        ios = 0
         call header(u, 'LSODA, rtol = 1e-3 ... 1e-12, atol = rtol * (deck atol / deck rtol)')
-        write (u, '(a)') '# rtol cpu_seconds steps rhs_evaluations error_theta error_Q '// &
-            'max_abs_energy_error'
+        if (ios == 0) write (u, '(a)', iostat=ios) '# rtol cpu_seconds steps rhs_evaluations '// &
+            'error_theta error_Q max_abs_energy_error'
         do i = 1, WP_NRTOL
             if (.not. res%lsoda(i)%ok) cycle
-            write (u, '(es10.3,es14.6,2i10,3es14.6)') res%lsoda(i)%rtol, &
-                res%lsoda(i)%cpu_seconds, res%lsoda(i)%steps, res%lsoda(i)%rhs_evaluations, &
-                res%lsoda(i)%error_theta, res%lsoda(i)%error_q, res%lsoda(i)%max_abs_energy_error
+            if (ios == 0) write (u, '(es11.3e3,es15.6e3,2i10,3es15.6e3)', iostat=ios) &
+                res%lsoda(i)%rtol, res%lsoda(i)%cpu_seconds, res%lsoda(i)%steps, &
+                res%lsoda(i)%rhs_evaluations, res%lsoda(i)%error_theta, res%lsoda(i)%error_q, &
+                res%lsoda(i)%max_abs_energy_error
         end do
         path2 = outdir//'/'//d%name//'.wp_rk4.dat'
-        call atomic_commit(u, path, stat)
+        call fs%close(u, ios, stat)
         if (stat%code /= 0) return
         if (elastic) then
             path = outdir//'/'//d%name//'.wp_radau.dat'
-            call atomic_open(path, u, stat)
+            call fs%open(path, u, stat)
             if (stat%code /= 0) return
             call header(u, 'Radau IIA (generalized coordinates), rtol = 1e-3 ... 1e-12, atol = '// &
                 'rtol * (deck atol / deck rtol)')
-            write (u, '(a)') '# rtol cpu_seconds steps rhs_evaluations error_theta error_Q '// &
-                'max_abs_energy_error'
+            if (ios == 0) write (u, '(a)', iostat=ios) '# rtol cpu_seconds steps '// &
+                'rhs_evaluations error_theta error_Q max_abs_energy_error'
             do i = 1, WP_NRTOL
                 if (.not. res%radau(i)%ok) cycle
-                write (u, '(es10.3,es14.6,2i10,3es14.6)') res%radau(i)%rtol, &
-                    res%radau(i)%cpu_seconds, res%radau(i)%steps, res%radau(i)%rhs_evaluations, &
-                    res%radau(i)%error_theta, res%radau(i)%error_q, &
-                    res%radau(i)%max_abs_energy_error
+                if (ios == 0) write (u, '(es11.3e3,es15.6e3,2i10,3es15.6e3)', iostat=ios) &
+                    res%radau(i)%rtol, res%radau(i)%cpu_seconds, res%radau(i)%steps, &
+                    res%radau(i)%rhs_evaluations, res%radau(i)%error_theta, &
+                    res%radau(i)%error_q, res%radau(i)%max_abs_energy_error
             end do
-            call atomic_commit(u, path, stat)
+            call fs%close(u, ios, stat)
             if (stat%code /= 0) return
         end if
-        call atomic_open(path2, u, stat)
+        call fs%open(path2, u, stat)
         if (stat%code /= 0) return
         call header(u, 'fixed-step classical Runge-Kutta 4, h = dtau_out / 2**k (elastic '// &
             'model: from h <= 1/omega_s down, at most 2e6 steps per solve)')
-        write (u, '(a)') '# h cpu_seconds steps rhs_evaluations error_theta error_Q '// &
-            'max_abs_energy_error'
+        if (ios == 0) write (u, '(a)', iostat=ios) '# h cpu_seconds steps rhs_evaluations '// &
+            'error_theta error_Q max_abs_energy_error'
         do i = 1, WP_NRK4
             if (.not. res%rk4(i)%ok) cycle
-            write (u, '(es10.3,es14.6,2i10,3es14.6)') res%rk4(i)%h, &
-                res%rk4(i)%cpu_seconds, res%rk4(i)%steps, res%rk4(i)%rhs_evaluations, &
-                res%rk4(i)%error_theta, res%rk4(i)%error_q, res%rk4(i)%max_abs_energy_error
+            if (ios == 0) write (u, '(es11.3e3,es15.6e3,2i10,3es15.6e3)', iostat=ios) &
+                res%rk4(i)%h, res%rk4(i)%cpu_seconds, res%rk4(i)%steps, &
+                res%rk4(i)%rhs_evaluations, res%rk4(i)%error_theta, res%rk4(i)%error_q, &
+                res%rk4(i)%max_abs_energy_error
         end do
-        call atomic_commit(u, path2, stat)
-        if (stat%code /= 0) return
+        call fs%close(u, ios, stat)
+        if (present(files)) return
+        if (stat%code == 0) call own%commit(stat)
+        if (stat%code /= 0) call own%discard()
 
     contains
 
@@ -466,20 +485,23 @@ contains
             end if
         end subroutine errors
 
+        !> The '#' lines of a file; the writes' iostat in ios (host).
         subroutine header(unit, what)
             integer, intent(in) :: unit
             character(len=*), intent(in) :: what
-            write (unit, '(a)') '# bifilar work-precision: '//trim(d%title)
-            write (unit, '(a)') '# '//what//'; errors at the output times against the '// &
-                'reference (angles in rad, Q over b'', energy over m g b'')'
-            write (unit, '(a,es9.2,a,es9.2,a,es9.2)') &
-                '# reference: '//ref_name()//' rtol 1e-13; confirmed by RK4 + Richardson (h = ', &
-                res%ref_h, ' and h/2): angles agree to ', res%ref_agreement_theta, &
-                ', Q to ', res%ref_agreement_q
-            if (elastic) write (unit, '(a,es9.2,a,es9.2)') '# reference confirmed by LSODA '// &
-                'rtol 1e-13 (maximal coordinates): angles agree to ', res%ref_second_theta, &
-                ', Q to ', res%ref_second_q
-            call deck_echo(d, unit)
+            if (ios == 0) write (unit, '(a)', iostat=ios) '# bifilar work-precision: '// &
+                trim(d%title)
+            if (ios == 0) write (unit, '(a)', iostat=ios) '# '//what//'; errors at the '// &
+                'output times against the reference (angles in rad, Q over b'', energy over '// &
+                'm g b'')'
+            if (ios == 0) write (unit, '(a)', iostat=ios) '# reference: '//ref_name()// &
+                ' rtol 1e-13; confirmed by RK4 + Richardson (h = '//sci(res%ref_h, 2)// &
+                ' and h/2): angles agree to '//sci(res%ref_agreement_theta, 2)//', Q to '// &
+                sci(res%ref_agreement_q, 2)
+            if (elastic .and. ios == 0) write (unit, '(a)', iostat=ios) '# reference '// &
+                'confirmed by LSODA rtol 1e-13 (maximal coordinates): angles agree to '// &
+                sci(res%ref_second_theta, 2)//', Q to '//sci(res%ref_second_q, 2)
+            call deck_echo(d, unit, ios)
         end subroutine header
 
         !> The integrator of the reference.

@@ -12,6 +12,7 @@ program run_tests
     use test_elastic_jac, only: run_elastic_jac_tests
     use test_radau, only: run_radau_tests
     use test_elastic_radau, only: run_elastic_radau_tests
+    use test_robust, only: run_robust_tests
     implicit none
     type(tester_t) :: t
     character(len=1024) :: exe, filter
@@ -31,5 +32,6 @@ program run_tests
     call run_elastic_jac_tests(t)
     call run_radau_tests(t)
     call run_elastic_radau_tests(t)
+    call run_robust_tests(t, trim(exe))
     if (.not. t%summary()) error stop 1
 end program run_tests

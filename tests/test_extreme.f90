@@ -7,10 +7,12 @@ module test_extreme
     use output_io, only: read_kv
     use bifilar_model, only: motion_t
     use simulate, only: model_checks
+    use deck, only: deck_t, read_deck, deck_echo
+    use test_deck, only: shell_count
     implicit none
     private
 
-    public :: run_extreme_tests
+    public :: run_extreme_tests, file_has, no_nan
 
     character(len=*), parameter :: SCRATCH = 'build/test_extreme'
 
@@ -23,9 +25,20 @@ module test_extreme
         character(len=40) :: word = ''      !! failing decks: the diagnostic contains this
     end type case_t
 
-    !> Fuzz test: number of hostile decks, and the seed of the generator.
-    integer, parameter :: NFUZZ = 240
-    integer, parameter :: FUZZ_SEED = 20261121
+    !> Fuzz test: the seeds of the generator, decks per seed, decks per run of the program,
+    !! and the hang check: seconds for a batch, then for one deck alone.
+    integer, parameter :: FUZZ_SEEDS(4) = [20261121, 1966, 4242, 31337]
+    integer, parameter :: FUZZ_PER_SEED = 520
+    integer, parameter :: FUZZ_BATCH = 40
+    integer, parameter :: FUZZ_BATCH_SECONDS = 120, FUZZ_DECK_SECONDS = 20
+    !> The groups of a deck, in the order the fuzz test writes them.
+    integer, parameter :: NGROUPS = 8
+    character(len=12), parameter :: GROUPS(NGROUPS) = [character(len=12) :: 'scene', &
+        'suspension', 'body', 'start', 'integration', 'cables', 'floquet', 'chart']
+    !> A deck as its group lines (the fuzz test's bases).
+    type :: base_t
+        character(len=16384) :: grp(NGROUPS) = ''
+    end type base_t
 
 contains
 
@@ -256,198 +269,536 @@ contains
     end subroutine test_input_decks
 
     ! ---------------------------------------------------------------------------------------
-    !> Hostile decks from a fixed seed: random and extreme values, NaN and Inf as text,
-    !! missing groups, truncated files, long strings, random bytes.  Each run (under
-    !! `timeout 20`) ends with 0, 2, 3 or 4, a non-zero end says 'bifilar:', and no written
-    !! file holds a NaN or Inf.
+    !> Fuzz test (issue 13): FUZZ_PER_SEED mutated decks for each seed of FUZZ_SEEDS, made
+    !! from every shipped deck (input/*.nml, input/extreme/*.nml) kept small (tau_end <= 2,
+    !! charts of at most 2 x 2, Floquet rtol >= 1e-8) and then mutated: hostile, random,
+    !! nearby and long values for the variables of every group, groups left out, decks cut
+    !! short, random bytes, broken structure (unknown and unterminated groups, subscripts
+    !! left open at a line end, repeat counts), the analyses and the model changed.  The decks
+    !! run FUZZ_BATCH at a time through one `bifilar deck ... --out DIR` (under a generous
+    !! `timeout`; a batch that times out or takes a signal is run again deck by deck under
+    !! `timeout` FUZZ_DECK_SECONDS to name the deck).  For every deck: no signal and no
+    !! run-time error; exactly one line, on stdout 'NAME: ...' when it ran or on stderr
+    !! 'bifilar: error (KIND): PATH: ...' when it failed; no file of a failed deck left,
+    !! temporary files included; no NaN, Inf or '****' in any file written; the batch's exit
+    !! status the worst of its decks'.  And the decks cover every group and every analysis
+    !! (each analysis finished at least once).
     subroutine test_fuzz(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
+        type(base_t), allocatable :: bases(:)
         integer(8) :: state
-        integer :: k, ex, nbad_status, nbad_msg, nbad_nan, counts(0:5)
-        character(len=:), allocatable :: path, outdir, log
-        character(len=80) :: first_bad
-        logical :: said
-        state = FUZZ_SEED
-        nbad_status = 0
-        nbad_msg = 0
-        nbad_nan = 0
+        integer :: is, k, kb, ndeck, nbad(6), counts(0:5), worst, ex, nb, j, mutated(NGROUPS)
+        integer :: ran(4)
+        character(len=*), parameter :: dir = SCRATCH//'/fuzz', outdir = dir//'/out'
+        character(len=64) :: names(FUZZ_BATCH)
+        character(len=256) :: paths(FUZZ_BATCH)
+        character(len=200) :: first_bad(6)
+        character(len=*), parameter :: WHAT(6) = [character(len=60) :: &
+            'a signal, a run-time error or a hang', 'not exactly one line naming the deck', &
+            'a file of a failed deck left', 'NaN, Inf or **** written', &
+            'exit status not the worst of the decks''', 'a kind of error that is no exit status']
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir)
+        call load_bases(dir, bases)
+        call t%check('fuzz: shipped decks to mutate (at least 25)', size(bases) >= 25)
+        if (size(bases) == 0) return
+        nbad = 0
         counts = 0
         first_bad = ''
-        outdir = SCRATCH//'/fuzz_out'
-        do k = 1, NFUZZ
-            path = SCRATCH//'/fz_'//itoa(k)//'.nml'
-            log = SCRATCH//'/fz_'//itoa(k)//'.log'
-            call write_fuzz_deck(path, k, state)
-            call execute_command_line('rm -rf '//outdir//' && mkdir -p '//outdir)
-            call execute_command_line('timeout 20 '//exe//' '//path//' --out '//outdir// &
-                                      ' > '//log//' 2>&1', exitstat=ex)
-            said = .true.
-            if (ex >= 0 .and. ex <= 4) then
-                counts(ex) = counts(ex) + 1
-            else
-                counts(5) = counts(5) + 1
-            end if
-            if (.not. (ex == 0 .or. ex == 2 .or. ex == 3 .or. ex == 4)) then
-                nbad_status = nbad_status + 1
-                if (len_trim(first_bad) == 0) first_bad = path//' exit '//itoa(ex)
-            else if (ex /= 0) then
-                said = file_has(log, 'bifilar:')
-            end if
-            if (ex /= 0 .and. .not. said .and. (ex == 2 .or. ex == 3 .or. ex == 4)) then
-                nbad_msg = nbad_msg + 1
-                if (len_trim(first_bad) == 0) first_bad = path//' no bifilar: message'
-            end if
-            if (.not. no_nan(outdir)) then
-                nbad_nan = nbad_nan + 1
-                if (len_trim(first_bad) == 0) first_bad = path//' NaN in output'
-            end if
+        mutated = 0
+        ran = 0
+        ndeck = 0
+        do is = 1, size(FUZZ_SEEDS)
+            state = FUZZ_SEEDS(is)
+            do kb = 1, FUZZ_PER_SEED, FUZZ_BATCH
+                nb = min(FUZZ_BATCH, FUZZ_PER_SEED - kb + 1)
+                do j = 1, nb
+                    k = kb + j - 1
+                    names(j) = 'fz'//itoa(is)//'_'//itoa(k)
+                    paths(j) = dir//'/'//trim(names(j))//'.nml'
+                    call write_fuzz_deck(trim(paths(j)), bases(1 + int(size(bases)* &
+                                         rnd(state))), state, mutated)
+                end do
+                ndeck = ndeck + nb
+                call run_batch(nb)
+            end do
         end do
-        write (*, '(a,i0,a,6(i0,a))') '   fuzz: ', NFUZZ, ' decks; exit 0: ', counts(0), &
-            ', 1: ', counts(1), ', 2: ', counts(2), ', 3: ', counts(3), ', 4: ', counts(4), &
-            ', other: ', counts(5), ''
-        if (len_trim(first_bad) > 0) write (*, '(a)') '   first failing deck: '//trim(first_bad)
-        call t%check('fuzz: every exit status is 0, 2, 3 or 4', nbad_status == 0)
-        call t%check('fuzz: every failing run says bifilar: ...', nbad_msg == 0)
-        call t%check('fuzz: no NaN or Inf in any output', nbad_nan == 0)
+        write (*, '(a,i0,a,i0,a,6(i0,a))') '   fuzz: ', ndeck, ' decks from ', size(bases), &
+            ' shipped decks; exit 0: ', counts(0), ', 2: ', counts(2), ', 3: ', counts(3), &
+            ', 4: ', counts(4), ', 5: ', counts(5), ', other: ', counts(1), ''
+        write (*, '(a,4(i0,a))') '   fuzz: finished simulate ', ran(1), ', floquet ', ran(2), &
+            ', chart ', ran(3), ', work_precision ', ran(4), ''
+        do j = 1, size(nbad)
+            call t%check('fuzz: '//trim(WHAT(j))//': '//itoa(nbad(j))//' decks '// &
+                         trim(first_bad(j)), nbad(j) == 0)
+        end do
+        call t%check('fuzz: at least 2000 decks', ndeck >= 2000)
+        call t%check('fuzz: every group mutated', all(mutated > 0))
+        call t%check('fuzz: every analysis finished at least once', all(ran > 0))
         call t%check('fuzz: some decks run, some are refused', counts(0) > 0 .and. counts(2) > 0)
+        if (all(nbad == 0)) call execute_command_line('rm -rf '//dir)
+
+    contains
+
+        !> Run decks 1..n in one process, then check every deck's line and files.
+        subroutine run_batch(n)
+            integer, intent(in) :: n
+            character(len=:), allocatable :: cmd
+            integer :: i, st, w
+            logical :: one_line
+            character(len=:), allocatable :: kind
+            call execute_command_line('rm -rf '//outdir//' && mkdir -p '//outdir)
+            cmd = 'timeout '//itoa(FUZZ_BATCH_SECONDS)//' '//exe
+            do i = 1, n
+                cmd = cmd//' '//trim(paths(i))
+            end do
+            ex = -1
+            call execute_command_line(cmd//' --out '//outdir//' > '//dir//'/stdout 2> '// &
+                                      dir//'/stderr', exitstat=ex)
+            if (abnormal(ex, dir//'/stderr')) then
+                call rerun_alone(n)
+                return
+            end if
+            worst = 0
+            do i = 1, n
+                kind = ''
+                one_line = count_lines_with(dir//'/stdout', trim(names(i))//': ', .true.) + &
+                    count_lines_with(dir//'/stderr', ': '//trim(paths(i))//': ', .false.) == 1
+                if (count_lines_with(dir//'/stderr', ': '//trim(paths(i))//': ', .false.) == 1) &
+                    kind = error_kind(dir//'/stderr', ': '//trim(paths(i))//': ')
+                if (.not. one_line) call bad(2, trim(names(i)))
+                st = 0
+                select case (kind)
+                case ('')
+                    st = 0
+                    call note_ran(trim(names(i)))
+                case ('bad input')
+                    st = 2
+                case ('numerical failure')
+                    st = 3
+                case ('model no longer valid')
+                    st = 4
+                case ('cannot write output')
+                    st = 5
+                case default
+                    st = 1
+                    call bad(6, trim(names(i))//' '//kind)
+                end select
+                counts(st) = counts(st) + 1
+                worst = max(worst, st)
+                if (st /= 0) then
+                    w = shell_count('ls -a '//outdir//' | grep -c "^'//trim(names(i))//'\."', &
+                                    dir)
+                    if (w /= 0) call bad(3, trim(names(i)))
+                end if
+            end do
+            if (count_lines_with(dir//'/stderr', '', .false.) /= nfailed_lines(n)) &
+                call bad(2, 'batch '//trim(names(1))//': stray stderr line '''// &
+                         stray_line(n)//'''')
+            if (ex /= worst) call bad(5, 'batch '//trim(names(1))//' exit '//itoa(ex)// &
+                                      ' worst '//itoa(worst))
+            if (.not. no_nan(outdir)) call bad(4, 'batch '//trim(names(1)))
+        end subroutine run_batch
+
+        !> A batch that took a signal, printed a run-time error or timed out: each deck
+        !! alone under timeout FUZZ_DECK_SECONDS, to name the culprit.
+        subroutine run_batch_alone_one(i, culprit)
+            integer, intent(in) :: i
+            logical, intent(out) :: culprit
+            integer :: e
+            call execute_command_line('rm -rf '//outdir//' && mkdir -p '//outdir)
+            e = -1
+            call execute_command_line('timeout '//itoa(FUZZ_DECK_SECONDS)//' '//exe//' '// &
+                                      trim(paths(i))//' --out '//outdir//' > '//dir// &
+                                      '/stdout 2> '//dir//'/stderr', exitstat=e)
+            culprit = abnormal(e, dir//'/stderr')
+        end subroutine run_batch_alone_one
+
+        subroutine rerun_alone(n)
+            integer, intent(in) :: n
+            integer :: i
+            logical :: culprit, any_culprit
+            any_culprit = .false.
+            do i = 1, n
+                call run_batch_alone_one(i, culprit)
+                if (culprit) call bad(1, trim(names(i)))
+                any_culprit = any_culprit .or. culprit
+            end do
+            if (.not. any_culprit) call bad(1, 'batch '//trim(names(1))//' exit '//itoa(ex)// &
+                                            ' (no deck alone)')
+            counts(1) = counts(1) + n
+        end subroutine rerun_alone
+
+        !> Lines of the batch's stderr that belong to some deck of the batch.
+        integer function nfailed_lines(n)
+            integer, intent(in) :: n
+            integer :: i
+            nfailed_lines = 0
+            do i = 1, n
+                nfailed_lines = nfailed_lines + count_lines_with(dir//'/stderr', ': '// &
+                    trim(paths(i))//': ', .false.)
+            end do
+        end function nfailed_lines
+
+        !> The first line of the batch's stderr that names none of its decks.
+        function stray_line(n) result(s)
+            integer, intent(in) :: n
+            character(len=:), allocatable :: s
+            character(len=8192) :: line
+            integer :: u, ios, i
+            logical :: named
+            s = ''
+            open (newunit=u, file=dir//'/stderr', status='old', action='read', iostat=ios)
+            do while (ios == 0)
+                read (u, '(a)', iostat=ios) line
+                if (ios /= 0) exit
+                named = .false.
+                do i = 1, n
+                    if (index(line, ': '//trim(paths(i))//': ') > 0) named = .true.
+                end do
+                if (.not. named) then
+                    s = trim(line(1:min(len_trim(line), 120)))
+                    exit
+                end if
+            end do
+            close (u)
+        end function stray_line
+
+        !> A finished deck: which analyses it ran (from its line on stdout).
+        subroutine note_ran(nm)
+            character(len=*), intent(in) :: nm
+            if (line_with(dir//'/stdout', nm//': ', ' simulate cpu')) ran(1) = ran(1) + 1
+            if (line_with(dir//'/stdout', nm//': ', ' floquet period')) ran(2) = ran(2) + 1
+            if (line_with(dir//'/stdout', nm//': ', ' chart ')) ran(3) = ran(3) + 1
+            if (line_with(dir//'/stdout', nm//': ', ' work_precision ')) ran(4) = ran(4) + 1
+        end subroutine note_ran
+
+        subroutine bad(kind, what)
+            integer, intent(in) :: kind
+            character(len=*), intent(in) :: what
+            nbad(kind) = nbad(kind) + 1
+            if (len_trim(first_bad(kind)) == 0) first_bad(kind) = '(first: '//what//')'
+        end subroutine bad
+
     end subroutine test_fuzz
 
-    !> Deck number k of the fuzz test.
-    subroutine write_fuzz_deck(path, k, state)
+    !> The shipped decks, read and made small: tau_end <= 2 with at most 40 rows, charts of
+    !! at most 2 x 2 points, Floquet rtol >= 1e-8, work_precision left out (it times at
+    !! least 0.05 s per point; the mutations put it back now and then).  Each as its group
+    !! lines, all eight groups present.
+    subroutine load_bases(dir, bases)
+        character(len=*), intent(in) :: dir
+        type(base_t), allocatable, intent(out) :: bases(:)
+        type(deck_t) :: d
+        type(status_t) :: st
+        character(len=512) :: path
+        character(len=4096) :: line
+        character(len=:), allocatable :: model, analyses
+        integer :: u, v, ios, n, g, i1, i2
+        call execute_command_line('ls input/*.nml input/extreme/*.nml > '//dir//'/bases.txt')
+        allocate (bases(0))
+        open (newunit=u, file=dir//'/bases.txt', status='old', action='read', iostat=ios)
+        do while (ios == 0)
+            read (u, '(a)', iostat=ios) path
+            if (ios /= 0) exit
+            call read_deck(trim(path), d, st)
+            if (st%code /= 0) cycle
+            model = trim(d%model)
+            analyses = ''
+            i2 = 0
+            do
+                i1 = i2 + verify(d%analyses(i2 + 1:), ' ')
+                if (i1 == i2 .or. i1 > len_trim(d%analyses)) exit
+                i2 = i1 + index(d%analyses(i1:)//' ', ' ') - 2
+                if (d%analyses(i1:i2) /= 'work_precision') analyses = analyses//' '// &
+                    d%analyses(i1:i2)
+            end do
+            if (len(analyses) == 0) analyses = ' simulate'
+            d%tau_end = min(d%tau_end, 2.0_dp)
+            d%dtau_out = max(d%tau_end/40.0_dp, min(d%dtau_out, d%tau_end))
+            d%chart_nx = min(d%chart_nx, 2)
+            d%chart_ny = min(d%chart_ny, 2)
+            d%floquet_rtol = max(d%floquet_rtol, 1.0e-8_dp)
+            ! every group in the echo: elastic shows &cables, floquet and chart theirs
+            d%model = 'elastic'
+            d%analyses = 'floquet chart'
+            open (newunit=v, file=dir//'/echo.txt', status='replace', action='write')
+            ios = 0
+            call deck_echo(d, v, ios)
+            close (v)
+            n = size(bases) + 1
+            bases = [bases, base_t()]
+            open (newunit=v, file=dir//'/echo.txt', status='old', action='read')
+            do
+                read (v, '(a)', iostat=ios) line
+                if (ios /= 0) exit
+                if (index(line, '# &') /= 1) cycle
+                do g = 1, NGROUPS
+                    if (index(line, '# &'//trim(GROUPS(g))//' ') == 1) &
+                        bases(n)%grp(g) = trim(line(3:))
+                end do
+            end do
+            close (v)
+            ios = 0
+            bases(n)%grp(1) = "&scene title = 'fuzz', analyses = '"//analyses(2:)// &
+                "', model = '"//model//"' /"
+        end do
+        close (u)
+    end subroutine load_bases
+
+    !> A mutated deck from a base: 1 to 3 mutations of one of ten kinds.
+    subroutine write_fuzz_deck(path, base, state, mutated)
         character(len=*), intent(in) :: path
-        integer, intent(in) :: k
+        type(base_t), intent(in) :: base
         integer(8), intent(inout) :: state
-        character(len=200) :: grp(6)
-        character(len=:), allocatable :: text
-        character(len=28), parameter :: vars(26) = [character(len=28) :: &
-            'scene:title', 'scene:analyses', 'scene:model', 'suspension:b', &
-            'suspension:b_prime', 'suspension:l', 'suspension:l_prime', 'suspension:g', &
-            'body:mass', 'body:inertia', 'body:r', 'body:lambda', 'body:sway_depth', &
-            'body:btilde(1,:)', 'start:mode', 'start:amplitude', 'start:tilt', 'start:theta', &
-            'start:theta_dot', 'integration:tau_end', 'integration:dtau_out', &
-            'integration:rtol', 'integration:atol', 'integration:error_estimate', &
-            'floquet:amplitude', 'floquet:segments']
-        character(len=24), parameter :: hostile(24) = [character(len=24) :: 'NaN', 'Inf', &
-            '-Inf', '+Infinity', 'nan()', '1e400', '-1e400', '1e-400', '0', '-0.0', &
-            '1.7976931348623157e308', '4.9e-324', '-1', '1e300', '1e-300', '2147483648', &
-            '''abc''', 'abc', '.true.', '3*', '1,2,3,4,5,6,7,8,9,10', '1d0', '', '(1.0,2.0)']
-        character(len=24), parameter :: words(8) = [character(len=24) :: '''simulate''', &
-            '''floquet''', '''simulate floquet''', '''work_precision''', '''chart''', &
-            '''garbage''', '''angles''', '''raised''']
-        integer :: kind, i, n, pos, g, j
-        character(len=:), allocatable :: v, var, gname
-        grp(1) = '&scene title = ''fuzz'', analyses = ''simulate'' /'
-        grp(2) = '&suspension b = 1.0, b_prime = 1.0, l = 2.0, l_prime = 1.8, g = 1.0 /'
-        grp(3) = '&body mass = 1.0, inertia = 0.125, 0.1458333333333333, 0.1458333333333333,'// &
-                 ' r = 0.7071067811865476, lambda = 0.7853981633974483, sway_depth = 1.0 /'
-        grp(4) = '&start mode = ''raised'', amplitude = 45.0, tilt = 0.0 /'
-        grp(5) = '&integration tau_end = 2.0, dtau_out = 0.1, rtol = 1e-8, atol = 1e-10 /'
-        grp(6) = '&floquet amplitude = 45.0, segments = 1, rtol = 1e-8 /'
-        kind = mod(k, 8)
-        text = ''
+        integer, intent(inout) :: mutated(NGROUPS)       !! mutations per group so far
+        type(base_t) :: b
+        character(len=:), allocatable :: text, v, var
+        integer :: kind, j, n, g, pos
+        b = base
+        kind = int(10*rnd(state))
         select case (kind)
-        case (0, 1, 6)
-            ! one to three variables set to a hostile, random or long value
+        case (0, 1, 2, 3)
+            ! one to three variables: hostile (0), random (1), nearby (2, 3) values
             n = 1 + int(3*rnd(state))
             do j = 1, n
-                i = 1 + int(size(vars)*rnd(state))
-                var = trim(vars(i))
-                pos = index(var, ':')
-                gname = var(1:pos - 1)
-                var = var(pos + 1:)
-                select case (kind)
-                case (0)
-                    v = trim(hostile(1 + int(size(hostile)*rnd(state))))
-                    if (var == 'analyses' .or. var == 'mode' .or. var == 'model') &
-                        v = trim(words(1 + int(size(words)*rnd(state))))
-                case (1)
-                    v = random_real(state)
-                    if (var == 'analyses' .or. var == 'mode' .or. var == 'model') &
-                        v = trim(words(1 + int(size(words)*rnd(state))))
-                case default
-                    if (rnd(state) < 0.5_dp) then
-                        v = ''''//repeat('x', 100 + int(20000*rnd(state)))//''''
-                    else
-                        v = repeat('9', 50 + int(5000*rnd(state)))
-                    end if
-                end select
-                g = group_index(gname)
-                grp(g) = grp(g)(1:len_trim(grp(g)) - 1)//', '//var//' = '//v//' /'
-                ! a long value cannot fit grp: write it separately
-                if (len(v) > 60) grp(g) = '&'//gname//' '//var//' = '//'@LONG@ /'
-                if (len(v) > 60) text = v
+                g = 1 + int(NGROUPS*rnd(state))
+                var = pick_var(g, state)
+                v = pick_value(var, kind, state)
+                call set_var(b, g, var, v)
+                mutated(g) = mutated(g) + 1
             end do
-            call write_groups(path, grp, text)
-        case (2)
-            ! groups missing
-            n = 1 + int(3*rnd(state))
-            do j = 1, n
-                grp(1 + int(6*rnd(state))) = ''
-            end do
-            call write_groups(path, grp, '')
-        case (3)
-            ! truncated
-            text = assemble(grp)
-            n = int(len(text)*rnd(state))
-            call write_bytes(path, text(1:n))
+            call write_bytes(path, assemble(b%grp))
         case (4)
-            ! random bytes inserted
-            text = assemble(grp)
-            do j = 1, 1 + int(5*rnd(state))
-                pos = 1 + int(len(text)*rnd(state))
-                text = text(1:pos - 1)//random_bytes(state, 1 + int(20*rnd(state)))//text(pos:)
+            ! groups left out
+            do j = 1, 1 + int(3*rnd(state))
+                b%grp(1 + int(NGROUPS*rnd(state))) = ''
             end do
-            call write_bytes(path, text)
+            call write_bytes(path, assemble(b%grp))
         case (5)
-            ! nothing but random bytes, or an '&' group of them
-            if (rnd(state) < 0.5_dp) then
-                call write_bytes(path, random_bytes(state, int(3000*rnd(state))))
+            ! cut short
+            text = assemble(b%grp)
+            call write_bytes(path, text(1:int(len(text)*rnd(state))))
+        case (6)
+            ! random bytes inserted, or a deck of random bytes
+            text = assemble(b%grp)
+            if (rnd(state) < 0.8_dp) then
+                do j = 1, 1 + int(5*rnd(state))
+                    pos = 1 + int(len(text)*rnd(state))
+                    text = text(1:pos - 1)//random_bytes(state, 1 + int(20*rnd(state)))// &
+                        text(pos:)
+                end do
+            else if (rnd(state) < 0.5_dp) then
+                text = random_bytes(state, int(3000*rnd(state)))
             else
-                call write_bytes(path, '&suspension '//random_bytes(state, 200)//' /'// &
-                                 new_line('a')//'&body '//random_bytes(state, 200)//' /')
+                text = '&suspension '//random_bytes(state, 200)//' /'//new_line('a')// &
+                    '&body '//random_bytes(state, 200)//' /'
             end if
-        case default
-            ! structure: duplicated, unknown or unterminated groups, bad subscripts,
-            ! repeat counts, an empty file
-            select case (int(7*rnd(state)))
+            call write_bytes(path, text)
+        case (7)
+            ! structure: duplicated, unknown, unterminated groups, subscripts, repeat counts
+            select case (int(9*rnd(state)))
             case (0)
-                grp(6) = grp(2)
+                b%grp(7) = b%grp(2)
             case (1)
-                grp(6) = '&nonsense x = 1 /'
+                b%grp(8) = '&nonsense x = 1 /'
             case (2)
-                grp(2) = grp(2)(1:len_trim(grp(2)) - 1)
+                g = 1 + int(NGROUPS*rnd(state))
+                b%grp(g) = b%grp(g)(1:max(0, len_trim(b%grp(g)) - 1))
             case (3)
-                grp(4) = '&start mode = ''angles'', theta(7) = 1.0, theta_dot(0) = 2.0 /'
+                b%grp(4) = "&start mode = 'angles', theta(7) = 1.0, theta_dot(0) = 2.0 /"
             case (4)
-                grp(3) = '&body btilde(4,1) = 1.0, inertia(-3) = 1 /'
+                call set_var(b, 3, 'btilde(4,1)', '1.0')
+                call set_var(b, 3, 'inertia(-3)', '1')
             case (5)
-                grp(3) = '&body inertia = 1000000*0.1 /'
+                call set_var(b, 3, 'inertia', '1000000*0.1')
+            case (6)
+                ! a subscript left open at the end of a line (SIGSEGV before issue 13)
+                b%grp(3) = '&body inertia('//new_line('a')//'/'
+            case (7)
+                call set_var(b, 3, 'btilde(1,'//new_line('a')//'2)', '1')
             case default
-                grp = ''
+                b%grp = ''
             end select
-            call write_groups(path, grp, '')
+            call write_bytes(path, assemble(b%grp))
+        case (8)
+            ! the analyses and the model
+            call set_var(b, 1, 'analyses', pick_value('analyses', 1, state))
+            if (rnd(state) < 0.3_dp) call set_var(b, 1, 'model', pick_value('model', 1, state))
+            mutated(1) = mutated(1) + 1
+            call write_bytes(path, assemble(b%grp))
+        case default
+            ! a long value or a long line
+            g = 1 + int(NGROUPS*rnd(state))
+            var = pick_var(g, state)
+            if (rnd(state) < 0.5_dp) then
+                v = ''''//repeat('x', 100 + int(6000*rnd(state)))//''''
+            else
+                v = repeat('9', 50 + int(5000*rnd(state)))
+            end if
+            call set_var(b, g, var, v)
+            mutated(g) = mutated(g) + 1
+            call write_bytes(path, assemble(b%grp))
         end select
     end subroutine write_fuzz_deck
 
-    integer function group_index(gname)
-        character(len=*), intent(in) :: gname
-        select case (gname)
-        case ('scene')
-            group_index = 1
-        case ('suspension')
-            group_index = 2
-        case ('body')
-            group_index = 3
-        case ('start')
-            group_index = 4
-        case ('integration')
-            group_index = 5
-        case default
-            group_index = 6
-        end select
-    end function group_index
+    !> `var = v` appended to group g (a later value wins in a namelist read); the group is
+    !! made when absent.
+    subroutine set_var(b, g, var, v)
+        type(base_t), intent(inout) :: b
+        integer, intent(in) :: g
+        character(len=*), intent(in) :: var, v
+        integer :: e
+        if (len_trim(b%grp(g)) == 0) then
+            b%grp(g) = '&'//trim(GROUPS(g))//' '//var//' = '//v//' /'
+            return
+        end if
+        e = index(b%grp(g), '/', back=.true.)
+        if (e == 0) e = len_trim(b%grp(g)) + 1
+        b%grp(g) = b%grp(g)(1:e - 1)//', '//var//' = '//v//' /'
+    end subroutine set_var
 
+    !> A variable of group g (with subscripts now and then).
+    function pick_var(g, state) result(var)
+        integer, intent(in) :: g
+        integer(8), intent(inout) :: state
+        character(len=:), allocatable :: var
+        character(len=16), parameter :: V1(3) = [character(len=16) :: 'title', 'analyses', &
+            'model']
+        character(len=16), parameter :: V2(5) = [character(len=16) :: 'b', 'b_prime', 'l', &
+            'l_prime', 'g']
+        character(len=16), parameter :: V3(8) = [character(len=16) :: 'mass', 'inertia', &
+            'inertia(2)', 'r', 'lambda', 'btilde(1,:)', 'btilde(2,2)', 'sway_depth']
+        character(len=16), parameter :: V4(6) = [character(len=16) :: 'mode', 'amplitude', &
+            'tilt', 'theta', 'theta_dot', 'theta_dot(4)']
+        character(len=16), parameter :: V5(5) = [character(len=16) :: 'tau_end', 'dtau_out', &
+            'rtol', 'atol', 'error_estimate']
+        character(len=16), parameter :: V6(2) = [character(len=16) :: 'stiffness', 'damping']
+        character(len=16), parameter :: V7(3) = [character(len=16) :: 'amplitude', &
+            'segments', 'rtol']
+        character(len=16), parameter :: V8(8) = [character(len=16) :: 'x', 'x_min', 'x_max', &
+            'nx', 'y', 'y_min', 'y_max', 'ny']
+        select case (g)
+        case (1)
+            var = trim(V1(1 + int(size(V1)*rnd(state))))
+        case (2)
+            var = trim(V2(1 + int(size(V2)*rnd(state))))
+        case (3)
+            var = trim(V3(1 + int(size(V3)*rnd(state))))
+        case (4)
+            var = trim(V4(1 + int(size(V4)*rnd(state))))
+        case (5)
+            var = trim(V5(1 + int(size(V5)*rnd(state))))
+        case (6)
+            var = trim(V6(1 + int(size(V6)*rnd(state))))
+        case (7)
+            var = trim(V7(1 + int(size(V7)*rnd(state))))
+        case default
+            var = trim(V8(1 + int(size(V8)*rnd(state))))
+        end select
+    end function pick_var
+
+    !> A value for var: hostile (kind 0), random (1) or nearby (2, 3); never a valid value
+    !! that asks for much work (long runs, big charts).
+    function pick_value(var, kind, state) result(v)
+        character(len=*), intent(in) :: var
+        integer, intent(in) :: kind
+        integer(8), intent(inout) :: state
+        character(len=:), allocatable :: v
+        character(len=24), parameter :: hostile(30) = [character(len=24) :: 'NaN', 'Inf', &
+            '-Inf', '+Infinity', 'nan()', '1e400', '-1e400', '1e-400', '0', '-0.0', &
+            '1.7976931348623157e308', '4.9e-324', '-1', '1e300', '1e-300', '2147483648', &
+            '''abc''', 'abc', '.true.', '3*', '1,2,3,4,5,6,7,8,9,10', '1d0', '', '(1.0,2.0)', &
+            '1e99', '-1e-99', '.5', '1e6', '&', '/']
+        character(len=40), parameter :: analyses(12) = [character(len=40) :: '''simulate''', &
+            '''floquet''', '''chart''', '''simulate floquet''', '''floquet chart simulate''', &
+            '''chart simulate''', '''garbage''', '''''', '''simulate simulate''', &
+            '''Floquet  SIMULATE''', '''work_precision''', '''work_precision floquet''']
+        character(len=16), parameter :: models(4) = [character(len=16) :: '''kane''', &
+            '''elastic''', '''Elastic''', '''rigid''']
+        character(len=16), parameter :: modes(4) = [character(len=16) :: '''raised''', &
+            '''angles''', '''ANGLES''', '''dropped''']
+        character(len=16), parameter :: axes(8) = [character(len=16) :: '''l''', '''b''', &
+            '''amplitude''', '''r''', '''lambda''', '''inertia_ratio''', '''theta''', '''''']
+        character(len=8), parameter :: counts_n(8) = [character(len=8) :: '0', '1', '2', '3', &
+            '-1', '1001', '65', '2.5']
+        integer :: i
+        select case (var)
+        case ('analyses')
+            i = 1 + int(size(analyses)*rnd(state))
+            ! work_precision times each point for 0.05 s: rarely
+            if (i >= 11) then
+                if (rnd(state) > 0.2_dp) i = 1 + int(10*rnd(state))
+            end if
+            v = trim(analyses(i))
+            return
+        case ('model')
+            v = trim(models(1 + int(size(models)*rnd(state))))
+            return
+        case ('mode')
+            v = trim(modes(1 + int(size(modes)*rnd(state))))
+            return
+        case ('x', 'y')
+            v = trim(axes(1 + int(size(axes)*rnd(state))))
+            return
+        case ('nx', 'ny', 'segments')
+            v = trim(counts_n(1 + int(size(counts_n)*rnd(state))))
+            return
+        case ('title')
+            v = '''fuzz '//random_bytes_printable(state, int(40*rnd(state)))//''''
+            return
+        case ('error_estimate')
+            v = trim(merge('.true. ', '.false.', rnd(state) < 0.5_dp))
+            if (kind == 0) v = trim(hostile(1 + int(size(hostile)*rnd(state))))
+            return
+        end select
+        select case (kind)
+        case (0)
+            v = trim(hostile(1 + int(size(hostile)*rnd(state))))
+        case (1)
+            v = random_real(state)
+        case default
+            v = nearby(var, state)
+        end select
+        ! no valid value that asks for a long run
+        if (var == 'tau_end' .and. kind /= 0) v = nearby('tau_end', state)
+    end function pick_value
+
+    !> A value near the usual ones of var, valid or just outside its range.
+    function nearby(var, state) result(v)
+        character(len=*), intent(in) :: var
+        integer(8), intent(inout) :: state
+        character(len=:), allocatable :: v
+        real(dp) :: x, typical
+        character(len=40) :: buf
+        select case (var)
+        case ('tau_end')
+            typical = 1.0_dp
+        case ('dtau_out')
+            typical = 0.05_dp
+        case ('rtol', 'atol')
+            typical = 1.0e-8_dp
+        case ('amplitude')
+            typical = 60.0_dp
+        case ('stiffness')
+            typical = 1.0e5_dp
+        case ('damping')
+            typical = 0.5_dp
+        case ('tilt', 'lambda', 'theta', 'theta_dot', 'theta_dot(4)', 'x_min', 'x_max', &
+              'y_min', 'y_max')
+            typical = 0.5_dp
+        case ('inertia', 'inertia(2)')
+            typical = 0.15_dp
+        case default
+            typical = 1.5_dp
+        end select
+        x = typical*2.0_dp**(8.0_dp*rnd(state) - 4.0_dp)
+        if (rnd(state) < 0.1_dp) x = -x
+        write (buf, '(es12.5)') x
+        v = trim(adjustl(buf))
+    end function nearby
+
+    !> Group lines, one per line, the absent ones left out.
     function assemble(grp) result(text)
         character(len=*), intent(in) :: grp(:)
         character(len=:), allocatable :: text
@@ -458,17 +809,6 @@ contains
         end do
     end function assemble
 
-    !> Write the groups; '@LONG@' in a group stands for the long value `long`.
-    subroutine write_groups(path, grp, long)
-        character(len=*), intent(in) :: path, grp(:), long
-        character(len=:), allocatable :: text
-        integer :: p
-        text = assemble(grp)
-        p = index(text, '@LONG@')
-        if (p > 0) text = text(1:p - 1)//long//text(p + 6:)
-        call write_bytes(path, text)
-    end subroutine write_groups
-
     subroutine write_bytes(path, text)
         character(len=*), intent(in) :: path, text
         integer :: u
@@ -478,7 +818,7 @@ contains
         close (u)
     end subroutine write_bytes
 
-    !> Uniform in [0, 1) from a 64-bit linear congruential generator (fixed seed: the same
+    !> Uniform in [0, 1) from a 64-bit linear congruential generator (fixed seeds: the same
     !! decks on every machine).
     real(dp) function rnd(state)
         integer(8), intent(inout) :: state
@@ -497,6 +837,18 @@ contains
         end do
     end function random_bytes
 
+    !> Printable characters other than quotes.
+    function random_bytes_printable(state, n) result(s)
+        integer(8), intent(inout) :: state
+        integer, intent(in) :: n
+        character(len=n) :: s
+        integer :: i
+        do i = 1, n
+            s(i:i) = achar(32 + int(95*rnd(state)))
+            if (s(i:i) == '''') s(i:i) = '"'
+        end do
+    end function random_bytes_printable
+
     !> A real of random sign and magnitude 1e-320 ... 1e320 (as text).
     function random_real(state) result(s)
         integer(8), intent(inout) :: state
@@ -512,14 +864,88 @@ contains
         if (rnd(state) < 0.3_dp) s = '-'//s
     end function random_real
 
+    !> A run that ended by a signal or a timeout (exit status beyond 5) or printed a run-time
+    !! error, a backtrace or gfortran's STOP line.
+    logical function abnormal(ex, errfile)
+        integer, intent(in) :: ex
+        character(len=*), intent(in) :: errfile     !! its standard error
+        abnormal = ex > 5 .or. ex < 0
+        if (file_has(errfile, 'untime error')) abnormal = .true.
+        if (file_has(errfile, 'Backtrace')) abnormal = .true.
+        if (file_has(errfile, 'STOP')) abnormal = .true.
+    end function abnormal
+
+    !> Number of lines of a file that contain s (that start with it when at_start); every
+    !! line when s is empty.
+    integer function count_lines_with(path, s, at_start) result(n)
+        character(len=*), intent(in) :: path, s
+        logical, intent(in) :: at_start
+        integer :: u, ios, i
+        character(len=8192) :: line
+        n = 0
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            i = index(line, s)
+            if (len(s) == 0) i = 1
+            if (i == 1 .or. (i > 1 .and. .not. at_start)) n = n + 1
+        end do
+        close (u)
+    end function count_lines_with
+
+    !> Whether a line of a file starts with prefix and contains s.
+    logical function line_with(path, prefix, s)
+        character(len=*), intent(in) :: path, prefix, s
+        integer :: u, ios
+        character(len=8192) :: line
+        line_with = .false.
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, prefix) == 1 .and. index(line, s) > 0) then
+                line_with = .true.
+                exit
+            end if
+        end do
+        close (u)
+    end function line_with
+
+    !> KIND of the error line 'bifilar: error (KIND): ...' that contains s ('' when none).
+    function error_kind(path, s) result(kind)
+        character(len=*), intent(in) :: path, s
+        character(len=:), allocatable :: kind
+        integer :: u, ios, e
+        character(len=8192) :: line
+        kind = ''
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, s) == 0) cycle
+            kind = '?'
+            e = index(line, '): ')
+            if (index(line, 'bifilar: error (') == 1 .and. e > 17) kind = line(17:e - 1)
+            exit
+        end do
+        close (u)
+    end function error_kind
+
     ! ---------------------------------------------------------------------------------------
-    !> True when no data line (not starting '#') of any file in dir holds nan or inf.
+    !> True when no data line (not starting '#') of any file in dir holds nan or inf, and no
+    !! line of any file holds '****' (a number too wide for its format).
     logical function no_nan(dir)
         character(len=*), intent(in) :: dir
         integer :: ex
         call execute_command_line('cat '//dir//'/* 2>/dev/null | grep -v ''^#'' | '// &
             'grep -qiE ''(^|[^a-z])[+-]?(nan|inf)''', exitstat=ex)
         no_nan = ex /= 0
+        call execute_command_line('cat '//dir//'/* 2>/dev/null | grep -qF ''****''', exitstat=ex)
+        no_nan = no_nan .and. ex /= 0
     end function no_nan
 
     !> True when the text file path contains word.

@@ -1,0 +1,172 @@
+!> One deck from start to end, as the program runs it: read and validate the deck, check
+!! the preconditions of every analysis it asks for before any computing, run the analyses
+!! with all their files in one out_files_t, and commit those files together at the end, or
+!! remove every one of them when anything fails.  The main program only reads the command
+!! line, calls run_deck for each deck and prints what comes back.
+module driver
+    use kinds, only: dp
+    use status, only: status_t, STATUS_OK, ERR_DECK, ERR_MODEL, ERR_IO
+    use text, only: itoa, sci
+    use deck, only: deck_t, read_deck, analysis_requested
+    use output_io, only: out_files_t
+    use simulate, only: run_simulation, run_summary_t, simulation_ready, make_pendulum
+    use stability, only: run_floquet, run_chart, floquet_ready
+    use floquet, only: floquet_result_t
+    use work_precision, only: run_work_precision, wp_result_t
+    use geometry, only: pendulum_t
+    implicit none
+    private
+
+    public :: run_deck, exit_status, error_line
+
+    !> Exit statuses of the program (README "Exit status").
+    integer, parameter, public :: EXIT_OK = 0, EXIT_USAGE = 1, EXIT_DECK = 2, &
+        EXIT_NUMERIC = 3, EXIT_MODEL = 4, EXIT_IO = 5
+
+    !> The program's version (bifilar --version).
+    character(len=*), parameter, public :: BIFILAR_VERSION = '1.1'
+
+contains
+
+    !> Run the deck at `path` into the folder `outdir` (which exists).  On success `line`
+    !! is the deck's one summary line and stat is OK; on failure stat carries the error
+    !! (its message without the deck's name: error_line adds it) and no file of the run is
+    !! left in outdir.
+    subroutine run_deck(path, outdir, line, stat)
+        character(len=*), intent(in) :: path        !! deck file
+        character(len=*), intent(in) :: outdir      !! output folder
+        character(len=:), allocatable, intent(out) :: line   !! summary (on success)
+        type(status_t), intent(out) :: stat         !! the first failure
+        type(deck_t) :: d
+        type(out_files_t) :: files
+        type(run_summary_t) :: sm
+        type(floquet_result_t) :: fr
+        type(wp_result_t) :: wp
+        integer :: nstable, nfailed
+        real(dp) :: secs
+        character(len=64) :: buf
+
+        line = ''
+        call read_deck(path, d, stat)
+        if (stat%code /= STATUS_OK) return
+
+        ! every analysis's preconditions before any computing
+        if (analysis_requested(d, 'simulate') .or. analysis_requested(d, 'work_precision')) &
+            call simulation_ready(d, stat)
+        if (stat%code == STATUS_OK .and. analysis_requested(d, 'floquet')) &
+            call floquet_ready(d, stat)
+        if (stat%code == STATUS_OK .and. analysis_requested(d, 'chart')) &
+            call chart_ready(d, stat)
+        if (stat%code /= STATUS_OK) return
+
+        line = d%name//':'
+        run: block
+            if (analysis_requested(d, 'work_precision')) then
+                call run_work_precision(d, outdir, wp, stat, quiet=.true., files=files)
+                if (stat%code /= STATUS_OK) exit run
+                line = line//' work_precision '//itoa(count(wp%lsoda%ok))//' LSODA, '
+                if (trim(d%model) == 'elastic') line = line//itoa(count(wp%radau%ok))//' Radau, '
+                line = line//itoa(count(wp%rk4%ok))//' RK4 points, reference confirmed to '// &
+                    sci(wp%ref_agreement_theta, 1)//' rad;'
+            end if
+            if (analysis_requested(d, 'floquet')) then
+                call run_floquet(d, outdir, fr, stat, files=files)
+                if (stat%code /= STATUS_OK) exit run
+                write (buf, '(f0.6)') fr%period
+                line = line//' floquet period '//lead0(buf)//', max modulus '// &
+                    sci(fr%max_modulus, 5)//', stable '//trim(merge('yes', 'no ', fr%stable))//';'
+            end if
+            if (analysis_requested(d, 'chart')) then
+                call run_chart(d, outdir, nstable, secs, stat, files=files, nfailed=nfailed)
+                if (stat%code /= STATUS_OK) exit run
+                write (buf, '(f0.2)') secs
+                line = line//' chart '//itoa(d%chart_nx*d%chart_ny)//' points, '//itoa(nstable)// &
+                    ' stable, '//lead0(buf)//' s'
+                if (nfailed > 0) line = line//', '//itoa(nfailed)//' failed (-2 in the file)'
+                line = line//';'
+            end if
+            if (analysis_requested(d, 'simulate')) then
+                call run_simulation(d, outdir, sm, stat, files=files)
+                if (stat%code /= STATUS_OK) exit run
+                write (buf, '(f0.4)') sm%cpu_seconds
+                line = line//' simulate cpu '//lead0(buf)//' s, steps '//itoa(sm%steps)// &
+                    ', rhs '//itoa(sm%rhs_evaluations)//', max |dE| '// &
+                    sci(sm%max_abs_energy_error, 2)//', max |residual| '// &
+                    sci(sm%max_abs_constraint_residual, 2)//';'
+            end if
+            call files%commit(stat)                 ! on failure it removes them all
+            if (stat%code == STATUS_OK) line = line(1:len(line) - 1)
+            return
+        end block run
+        call files%discard()                    ! a failed analysis: remove every file
+    end subroutine run_deck
+
+    !> The preconditions of analyses = 'chart': the deck's own scene has a reachable
+    !! geometry (each point of the grid is checked when it is computed).
+    subroutine chart_ready(d, stat)
+        type(deck_t), intent(in) :: d               !! the deck
+        type(status_t), intent(out) :: stat         !! ERR_DECK
+        type(pendulum_t) :: p
+        call make_pendulum(d, p, stat)
+        if (stat%code /= STATUS_OK) stat%msg = 'analyses = ''chart'': '//stat%msg
+    end subroutine chart_ready
+
+    !> The exit status for a status code: 2 bad deck, 3 numerical failure, 4 the model no
+    !! longer holds, 5 output cannot be written.
+    pure integer function exit_status(code)
+        integer, intent(in) :: code                 !! status_t%code
+        select case (code)
+        case (STATUS_OK)
+            exit_status = EXIT_OK
+        case (ERR_DECK)
+            exit_status = EXIT_DECK
+        case (ERR_MODEL)
+            exit_status = EXIT_MODEL
+        case (ERR_IO)
+            exit_status = EXIT_IO
+        case default
+            exit_status = EXIT_NUMERIC
+        end select
+    end function exit_status
+
+    !> The one line printed for a failed deck: 'bifilar: error (KIND): DECK: MESSAGE', line
+    !! breaks in the message turned into blanks.
+    function error_line(deck_path, stat) result(s)
+        character(len=*), intent(in) :: deck_path   !! the deck as given ('' for none)
+        type(status_t), intent(in) :: stat          !! the failure
+        character(len=:), allocatable :: s
+        character(len=:), allocatable :: kind, msg
+        integer :: i
+        select case (exit_status(stat%code))
+        case (EXIT_DECK)
+            kind = 'bad input'
+        case (EXIT_MODEL)
+            kind = 'model no longer valid'
+        case (EXIT_IO)
+            kind = 'cannot write output'
+        case default
+            kind = 'numerical failure'
+        end select
+        msg = '(no message)'
+        if (allocated(stat%msg)) msg = stat%msg
+        do i = 1, len(msg)
+            if (iachar(msg(i:i)) < 32) msg(i:i) = ' '
+        end do
+        s = 'bifilar: error ('//kind//'): '
+        if (len(deck_path) > 0) s = s//deck_path//': '
+        s = s//msg
+    end function error_line
+
+    !> '.5' -> '0.5', '-.5' -> '-0.5' (f0.n drops the leading zero).
+    pure function lead0(buf) result(s)
+        character(len=*), intent(in) :: buf
+        character(len=:), allocatable :: s
+        s = trim(adjustl(buf))
+        if (len(s) == 0) return
+        if (s(1:1) == '.') s = '0'//s
+        if (len(s) > 1) then
+            if (s(1:2) == '-.') s = '-0'//s(2:)
+        end if
+    end function lead0
+
+end module driver

@@ -1,0 +1,51 @@
+!> Numbers as text for messages and headers: integers without blanks, reals in scientific
+!! notation that always keeps its E (a plain `es10.3` prints 1e300 as `1.000+300`, which
+!! no reader takes for a number).
+module text
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+    use kinds, only: dp
+    implicit none
+    private
+
+    public :: itoa, sci
+
+contains
+
+    !> An integer without blanks: 42, -7.
+    pure function itoa(i) result(s)
+        integer, intent(in) :: i                    !! value
+        character(len=:), allocatable :: s
+        character(len=16) :: buf
+        write (buf, '(i0)') i
+        s = trim(buf)
+    end function itoa
+
+    !> A real in scientific notation with `digits` digits after the point and an exponent of
+    !! two or three digits: 1.000E+300, -4.352E-14, 2.214E+00; NaN, Inf and -Inf as such.
+    pure function sci(x, digits) result(s)
+        real(dp), intent(in) :: x                   !! value
+        integer, intent(in), optional :: digits     !! digits after the point (default 3, 0..17)
+        character(len=:), allocatable :: s
+        character(len=40) :: buf
+        integer :: nd, ie
+        if (ieee_is_nan(x)) then
+            s = 'NaN'
+            return
+        end if
+        if (.not. ieee_is_finite(x)) then
+            s = merge('-Inf', ' Inf', x < 0.0_dp)
+            s = trim(adjustl(s))
+            return
+        end if
+        nd = 3
+        if (present(digits)) nd = max(0, min(17, digits))
+        write (buf, '(es40.'//itoa(nd)//'e3)') x
+        s = trim(adjustl(buf))
+        ie = index(s, 'E')
+        ! E+300 stays, E-014 -> E-14
+        if (ie > 0 .and. len(s) == ie + 4) then
+            if (s(ie + 2:ie + 2) == '0') s = s(1:ie + 1)//s(ie + 3:)
+        end if
+    end function sci
+
+end module text

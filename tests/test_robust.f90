@@ -1,0 +1,695 @@
+!> Robustness and daily use (issue 13), through the executable of the build under test:
+!! several decks per run and the worst exit status, --help and --version, --out, one
+!! stderr line naming the deck, no file left by a failed run, a full disk, concurrent runs
+!! of decks with the same name, bodies at rest, finite input that trapped the checking
+!! build, decks that took long, the progress line, and the figures in the report.
+module test_robust
+    use kinds, only: dp, deg
+    use testing, only: tester_t
+    use output_io, only: read_kv
+    use progress, only: progress_t
+    use paper_claims, only: report_figures
+    use test_extreme, only: file_has, no_nan
+    use test_deck, only: write_text, exists, shell_count
+    use text, only: itoa
+    implicit none
+    private
+
+    public :: run_robust_tests
+
+    character(len=*), parameter :: SCR = 'build/test_robust'
+    character, parameter :: NL = new_line('a')
+
+    ! the symmetric cylinder of input/cylinder_torsion.nml and input/cylinder_l180.nml
+    character(len=*), parameter :: SUSP_EQ = &
+        '&suspension b = 1.0, b_prime = 1.0, l = 2.0, l_prime = 2.0, g = 1.0 /'
+    character(len=*), parameter :: SUSP_UNEQ = &
+        '&suspension b = 1.0, b_prime = 1.0, l = 2.0, l_prime = 1.8, g = 1.0 /'
+    character(len=*), parameter :: BODY = &
+        '&body mass = 1.0, inertia = 0.125, 0.1458333333333333, 0.1458333333333333,'//NL// &
+        '      r = 0.7071067811865476, lambda = 0.7853981633974483, sway_depth = 1.0 /'
+    character(len=*), parameter :: SHORT = &
+        '&integration tau_end = 2.0, dtau_out = 0.1, rtol = 1e-8, atol = 1e-10 /'
+    !> A start at which cable BC swings up to the horizontal at tau = 0.55 (exit 4).
+    character(len=*), parameter :: FLING = "&start mode = 'angles', theta_dot = 0, 0, 0, 10 /"
+
+contains
+
+    subroutine run_robust_tests(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe     !! path of the bifilar executable
+        call execute_command_line('mkdir -p '//SCR)
+        if (t%want('robust: several decks, the worst exit status, --help, --version')) &
+            call test_several(t, exe)
+        if (t%want('robust: --out (empty, missing, long) and long deck paths')) &
+            call test_out(t, exe)
+        if (t%want('robust: one stderr line naming the deck')) call test_one_line(t, exe)
+        if (t%want('robust: a failed run leaves no file')) call test_no_file_left(t, exe)
+        if (t%want('robust: a full disk (tmpfs of 64 kB)')) call test_full_disk(t, exe)
+        if (t%want('robust: concurrent runs of decks with the same name')) &
+            call test_concurrent(t, exe)
+        if (t%want('robust: bodies at rest stay at rest')) call test_rest(t, exe)
+        if (t%want('robust: finite input that trapped the checking build')) &
+            call test_traps(t, exe)
+        if (t%want('robust: small decks that took long fail fast or are refused')) &
+            call test_slow(t, exe)
+        if (t%want('robust: progress on a terminal only')) call test_progress(t, exe)
+        if (t%want('robust: the report shows every figure')) call test_report(t, exe)
+    end subroutine run_robust_tests
+
+    ! ---------------------------------------------------------------------------------------
+    !> `bifilar a.nml b.nml ...`: each deck in turn, one stdout line per finished deck, one
+    !! stderr line per failed one, exit status the largest; --help, --version, usage errors.
+    subroutine test_several(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d, o
+        integer :: ex
+        d = fresh('several')
+        o = d//'/out'
+        call write_deck(d//'/ok1.nml', "&scene analyses = 'simulate' /", SUSP_EQ, '', SHORT)
+        call write_deck(d//'/ok2.nml', "&scene analyses = 'simulate' /", SUSP_UNEQ, '', SHORT)
+        call write_deck(d//'/bad.nml', '', '&suspension l = -1 /', '', SHORT)
+        call write_deck(d//'/fling.nml', '', SUSP_EQ, FLING, SHORT)
+        ex = run(exe//' '//d//'/ok1.nml '//d//'/ok2.nml --out '//o, d)
+        call t%check('several: two good decks exit 0', ex == 0)
+        call t%check('several: one stdout line per deck', all([lines(d//'/stdout') == 2, &
+                     line_starts(d//'/stdout', 1, 'ok1: simulate '), &
+                     line_starts(d//'/stdout', 2, 'ok2: simulate ')]))
+        call t%check('several: nothing on stderr', lines(d//'/stderr') == 0)
+        call t%check('several: both decks'' files', all([exists(o//'/ok1.dat'), &
+                     exists(o//'/ok2.summary')]))
+        ex = run(exe//' '//d//'/ok1.nml '//d//'/bad.nml '//d//'/fling.nml '//d// &
+                 '/ok2.nml --out '//o, d)
+        call t%check('several: exit status the worst of 0, 2, 4, 0 (got '//itoa(ex)//')', &
+                     ex == 4)
+        call t%check('several: stdout lines of the good decks only', &
+                     all([lines(d//'/stdout') == 2, line_starts(d//'/stdout', 2, 'ok2: ')]))
+        call t%check('several: one stderr line per failed deck, in order', &
+                     all([lines(d//'/stderr') == 2, line_starts(d//'/stderr', 1, &
+                     'bifilar: error (bad input): '//d//'/bad.nml: &suspension l = -1'), &
+                     line_starts(d//'/stderr', 2, 'bifilar: error (model no longer valid): '// &
+                     d//'/fling.nml: ')]))
+        call t%check('several: no file of the failed decks', all([.not. exists(o//'/bad.dat'), &
+                     .not. exists(o//'/fling.dat'), .not. exists(o//'/fling.summary')]))
+        ex = run(exe//' '//d//'/bad.nml '//d//'/ok1.nml --out '//o, d)
+        call t%check('several: a bad deck does not stop the next (exit 2)', all([ex == 2, &
+                     lines(d//'/stdout') == 1]))
+        ex = run(exe//' --help', d)
+        call t%check('--help: exit 0, usage on stdout, nothing on stderr', all([ex == 0, &
+                     file_has(d//'/stdout', 'usage: bifilar DECK.nml'), &
+                     file_has(d//'/stdout', 'Exit status'), lines(d//'/stderr') == 0]))
+        ex = run(exe//' --version', d)
+        call t%check('--version: exit 0, one line "bifilar VERSION"', all([ex == 0, &
+                     lines(d//'/stdout') == 1, line_starts(d//'/stdout', 1, 'bifilar 1')]))
+        ex = run(exe, d)
+        call t%check('usage: no deck is exit 1 with one stderr line', all([ex == 1, &
+                     lines(d//'/stderr') == 1, file_has(d//'/stderr', 'usage:')]))
+        ex = run(exe//' --frobnicate '//d//'/ok1.nml', d)
+        call t%check('usage: an unknown option is exit 1', all([ex == 1, &
+                     file_has(d//'/stderr', 'unknown option --frobnicate')]))
+    end subroutine test_several
+
+    ! ---------------------------------------------------------------------------------------
+    !> --out "" is refused (it wrote into /); a missing folder is created with its parents;
+    !! folder and deck names longer than 1024 characters are used whole; a file in the way
+    !! is exit 5 at once.
+    subroutine test_out(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d, long
+        integer :: ex, k
+        d = fresh('out')
+        call write_deck(d//'/robust_out_empty_test.nml', '', SUSP_EQ, '', SHORT)
+        call execute_command_line('rm -f /robust_out_empty_test.dat /robust_out_empty_test.summary')
+        ex = run('cd '//d//' && '//abs_exe(exe)//' robust_out_empty_test.nml --out ""', d)
+        call t%check('--out "": exit 1 with one stderr line', all([ex == 1, &
+                     lines(d//'/stderr') == 1, file_has(d//'/stderr', '--out')]))
+        call t%check('--out "": nothing written into / or here', &
+                     all([.not. exists('/robust_out_empty_test.dat'), &
+                     .not. exists(d//'/robust_out_empty_test.dat')]))
+        ex = run(exe//' '//d//'/robust_out_empty_test.nml --out '//d//'/new/a/b', d)
+        call t%check('--out: a missing folder is created with its parents (exit 0)', &
+                     all([ex == 0, exists(d//'/new/a/b/robust_out_empty_test.dat')]))
+        ! a folder name of more than 1024 characters, and a deck inside it
+        long = d//'/long'
+        do k = 1, 6
+            long = long//'/'//repeat(achar(iachar('a') + k), 200)
+        end do
+        call execute_command_line('mkdir -p '//long)
+        call write_deck(long//'/long_deck.nml', '', SUSP_EQ, '', SHORT)
+        ex = run(exe//' '//long//'/long_deck.nml --out '//long//'/out', d)
+        call t%check('long names: '//itoa(len(long//'/long_deck.nml'))//'-character deck '// &
+                     'and --out: exit 0', ex == 0)
+        call t%check('long names: the files where the long --out says', &
+                     all([exists(long//'/out/long_deck.dat'), &
+                     exists(long//'/out/long_deck.summary')]))
+        call execute_command_line('rm -rf '//d//'/long')
+        call write_text(d//'/a_file', 'x')
+        ex = run(exe//' '//d//'/robust_out_empty_test.nml --out '//d//'/a_file', d)
+        call t%check('--out: a file in the way is exit 5 with one stderr line', all([ex == 5, &
+                     lines(d//'/stderr') == 1, file_has(d//'/stderr', 'output folder')]))
+    end subroutine test_out
+
+    ! ---------------------------------------------------------------------------------------
+    !> Every failure is exactly one stderr line 'bifilar: error (KIND): DECK: ...': no
+    !! "ERROR STOP", no note on floating-point flags, the deck named even when its name
+    !! occurs in the message (c.nml) and for failures of the start geometry; large values
+    !! keep their E.
+    subroutine test_one_line(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d
+        d = fresh('one_line')
+        ! a deck named c whose slack message contains the letter c
+        call write_deck(d//'/c.nml', '', SUSP_EQ, FLING, SHORT)
+        call one(d//'/c.nml', 4, 'model no longer valid', 'cable BC swings up to the horizontal')
+        ! geometry failures at tau = 0
+        call write_deck(d//'/theta5.nml', '', '&suspension l = 2.0, l_prime = 0.5 /', &
+                        "&start mode = 'angles' /", SHORT)
+        call one(d//'/theta5.nml', 2, 'bad input', 'no theta5 satisfies')
+        call write_deck(d//'/reach.nml', '', '&suspension l = 0.3, l_prime = 0.3 /', &
+                        '&start amplitude = 170 /', SHORT)
+        call one(d//'/reach.nml', 2, 'bad input', 'cable BC cannot reach')
+        ! a large value in a message keeps its E (es10.3 printed 1.000+100)
+        call write_text(d//'/huge.nml', '&suspension b = 1e100, b_prime = 1e98, l = 1e98, '// &
+                        'l_prime = 1e98 /'//NL//'&body mass = 1e-96, inertia = 1e99, 1e99, '// &
+                        '1e99 /'//NL)
+        call one(d//'/huge.nml', 2, 'bad input', 'b = 1.000E+100')
+        ! a failure that leaves floating-point flags raised (a cut-short integration)
+        call write_deck(d//'/rtol.nml', '', SUSP_UNEQ, '', &
+                        '&integration tau_end = 2, dtau_out = 0.1, rtol = 1e-14, atol = 1e-16 /')
+        call one(d//'/rtol.nml', 3, 'numerical failure', 'rtol')
+        call one(d//'/no_such.nml', 2, 'bad input', 'No such file')
+
+    contains
+
+        subroutine one(deck, status, kind, word)
+            character(len=*), intent(in) :: deck, kind, word
+            integer, intent(in) :: status
+            integer :: ex
+            character(len=:), allocatable :: nm
+            nm = deck(index(deck, '/', back=.true.) + 1:)
+            ex = run(exe//' '//deck//' --out '//d//'/out', d)
+            call t%check('one line: '//nm//' exit '//itoa(status)//' (got '//itoa(ex)//')', &
+                         ex == status)
+            call t%check('one line: '//nm//' exactly one stderr line, nothing on stdout', &
+                         all([lines(d//'/stderr') == 1, lines(d//'/stdout') == 0]))
+            call t%check('one line: '//nm//' "bifilar: error ('//kind//'): '//nm//': ..."', &
+                         line_starts(d//'/stderr', 1, 'bifilar: error ('//kind//'): '//deck// &
+                         ': '))
+            call t%check('one line: '//nm//' says "'//word//'"', file_has(d//'/stderr', word))
+            call t%check('one line: '//nm//' no ERROR STOP, no note on flags', &
+                         all([.not. file_has(d//'/stderr', 'STOP'), &
+                         .not. file_has(d//'/stderr', 'Note:')]))
+        end subroutine one
+
+    end subroutine test_one_line
+
+    ! ---------------------------------------------------------------------------------------
+    !> A failure after other analyses of the same deck wrote their files, and a failure of
+    !! a precondition, leave no file of the run (and no temporary file).
+    subroutine test_no_file_left(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d, o
+        integer :: ex
+        d = fresh('no_file')
+        o = d//'/out'
+        ! work_precision, then floquet, which needs equal cables: refused before computing
+        call write_deck(d//'/wp_floquet.nml', "&scene analyses = 'work_precision floquet' /", &
+                        SUSP_UNEQ, '', SHORT)
+        ex = run(exe//' '//d//'/wp_floquet.nml --out '//o, d)
+        call t%check('no file: work_precision + floquet on unequal cables is exit 2', ex == 2)
+        call t%check('no file: ... says what floquet needs', all([file_has(d//'/stderr', &
+                     'floquet'), file_has(d//'/stderr', 'equal cables')]))
+        call t%check('no file: ... no .wp file, nothing at all', empty_dir(o))
+        ! floquet (written first), then a simulation that stops: the .floquet goes too
+        call write_deck(d//'/floquet_sim.nml', "&scene analyses = 'floquet simulate' /", &
+                        SUSP_EQ, FLING, SHORT//NL//'&floquet rtol = 1e-6 /')
+        ex = run(exe//' '//d//'/floquet_sim.nml --out '//o, d)
+        call t%check('no file: floquet + failing simulate is exit 4', ex == 4)
+        call t%check('no file: ... no .floquet left, nothing at all', empty_dir(o))
+        ! a chart, then a simulation that stops
+        call write_deck(d//'/chart_sim.nml', "&scene analyses = 'chart simulate' /", &
+                        SUSP_EQ, FLING, SHORT//NL//'&floquet rtol = 1e-6 /'//NL// &
+                        "&chart x = 'l', x_min = 1, x_max = 2, nx = 2, y = 'amplitude', "// &
+                        'y_min = 10, y_max = 20, ny = 2 /')
+        ex = run(exe//' '//d//'/chart_sim.nml --out '//o, d)
+        call t%check('no file: chart + failing simulate is exit 4', ex == 4)
+        call t%check('no file: ... no .chart.dat left, nothing at all', empty_dir(o))
+        ! the same chart deck without the failing simulation writes its file
+        call write_deck(d//'/chart_ok.nml', "&scene analyses = 'chart' /", SUSP_EQ, '', &
+                        SHORT//NL//'&floquet rtol = 1e-6 /'//NL//"&chart x = 'l', x_min = 1, "// &
+                        "x_max = 2, nx = 2, y = 'amplitude', y_min = 10, y_max = 20, ny = 2 /")
+        ex = run(exe//' '//d//'/chart_ok.nml --out '//o, d)
+        call t%check('no file: the chart alone is exit 0 and written', all([ex == 0, &
+                     exists(o//'/chart_ok.chart.dat')]))
+    end subroutine test_no_file_left
+
+    ! ---------------------------------------------------------------------------------------
+    !> A full disk: a tmpfs of 64 kB (needs root; skipped otherwise).  gfortran 12 reports
+    !! no error when the disk fills: before issue 13 the run exited 0 with a .dat cut short
+    !! and an empty .summary.  Now: exit 5, one stderr line, no file (not even the .floquet
+    !! that fitted); a deck that fits is written.
+    subroutine test_full_disk(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d, m
+        integer :: ex, uid
+        d = fresh('full_disk')
+        m = d//'/disk'
+        uid = shell_count('id -u', d)
+        if (uid /= 0) then
+            write (*, '(a)') '   full disk: skipped (mounting a tmpfs needs root; CI runs as root)'
+            return
+        end if
+        call execute_command_line('mountpoint -q '//m//' && umount '//m//'; mkdir -p '//m)
+        call execute_command_line('mount -t tmpfs -o size=64k tmpfs '//m, exitstat=ex)
+        call t%check('full disk: tmpfs mounted (as root)', ex == 0)
+        if (ex /= 0) return
+        ex = run(exe//' input/cylinder_l180.nml --out '//m, d)
+        call t%check('full disk: a 480 kB .dat on 64 kB is exit 5 (got '//itoa(ex)//')', ex == 5)
+        call t%check('full disk: one stderr line naming the deck and the disk', &
+                     all([lines(d//'/stderr') == 1, file_has(d//'/stderr', &
+                     'input/cylinder_l180.nml: cannot write'), &
+                     file_has(d//'/stderr', 'disk full')]))
+        call t%check('full disk: no file left', empty_dir(m))
+        ex = run(exe//' input/box_stable.nml --out '//m, d)
+        call t%check('full disk: floquet + simulate is exit 5', ex == 5)
+        call t%check('full disk: the .floquet that fitted is removed too', empty_dir(m))
+        call write_deck(d//'/fits.nml', '', SUSP_EQ, '', SHORT)
+        ex = run(exe//' '//d//'/fits.nml --out '//m, d)
+        call t%check('full disk: a deck that fits is written (exit 0)', all([ex == 0, &
+                     exists(m//'/fits.dat'), exists(m//'/fits.summary')]))
+        call execute_command_line('umount '//m, exitstat=ex)
+        call t%check('full disk: tmpfs unmounted', ex == 0)
+    end subroutine test_full_disk
+
+    ! ---------------------------------------------------------------------------------------
+    !> Eight runs at once, four each of two different decks named same.nml, into one
+    !! folder, three times: the .dat and the .summary always come from the same run (the
+    !! deck line of the .dat's header is the summary's deck, the row counts agree), and no
+    !! temporary file is left.  Before issue 13 all runs shared same.dat.tmp.
+    subroutine test_concurrent(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d, o, cmd, dat_deck
+        integer :: round, k, rows_dat
+        real(dp) :: rows_sum
+        logical :: found, together, clean
+        character(len=512) :: sum_deck
+        d = fresh('concurrent')
+        o = d//'/out'
+        call execute_command_line('mkdir -p '//d//'/A '//d//'/B '//o)
+        call write_deck(d//'/A/same.nml', '', SUSP_UNEQ, '', &
+                        '&integration tau_end = 4.0, dtau_out = 0.001, rtol = 1e-8 /')
+        call write_deck(d//'/B/same.nml', '', SUSP_EQ, '', &
+                        '&integration tau_end = 4.0, dtau_out = 0.002, rtol = 1e-8 /')
+        cmd = '('
+        do k = 1, 4
+            cmd = cmd//exe//' '//d//'/A/same.nml --out '//o//' >/dev/null 2>&1 & '// &
+                exe//' '//d//'/B/same.nml --out '//o//' >/dev/null 2>&1 & '
+        end do
+        cmd = cmd//'wait)'
+        together = .true.
+        clean = .true.
+        do round = 1, 3
+            call execute_command_line(cmd)
+            dat_deck = header_deck(o//'/same.dat')
+            call read_kv_text(o//'/same.summary', 'deck', sum_deck)
+            call read_kv(o//'/same.summary', 'rows', rows_sum, found)
+            rows_dat = data_rows(o//'/same.dat')
+            together = together .and. found .and. len(dat_deck) > 0 .and. &
+                dat_deck == trim(sum_deck) .and. rows_dat == nint(rows_sum)
+            k = count_entries(o)
+            clean = clean .and. k == 2
+        end do
+        call t%check('concurrent: .dat and .summary of the same run, three rounds', together)
+        call t%check('concurrent: no temporary file left', clean)
+        call t%check('concurrent: no NaN', no_nan(o))
+    end subroutine test_concurrent
+
+    ! ---------------------------------------------------------------------------------------
+    !> Bodies at rest stay at rest and exit 0 (before issue 13: exit 3 "already stands at
+    !! tcrit", or exit 4 at amplitude 1e-300); an angle of 1e10 rad is refused in both
+    !! builds; angles are taken modulo 2 pi.
+    subroutine test_rest(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d, o
+        integer :: ex
+        real(dp) :: v, w, rows
+        logical :: f1, f2, f3
+        d = fresh('rest')
+        o = d//'/out'
+        call write_deck(d//'/rest.nml', '', SUSP_EQ, "&start mode = 'angles' /", &
+                        '&integration tau_end = 60, dtau_out = 0.05 /')
+        ex = run(exe//' '//d//'/rest.nml --out '//o, d)
+        call t%check('rest: zero angles, zero rates: exit 0 (got '//itoa(ex)//')', ex == 0)
+        call read_kv(o//'/rest.summary', 'max_abs_theta1', v, f1)
+        call read_kv(o//'/rest.summary', 'max_abs_theta4', w, f2)
+        call read_kv(o//'/rest.summary', 'rows', rows, f3)
+        call t%check('rest: all 1201 rows, the body does not move', all([f1, f2, f3, &
+                     v == 0.0_dp, w == 0.0_dp, nint(rows) == 1201]))
+        call write_deck(d//'/small.nml', '', SUSP_EQ, '&start amplitude = 0.01 /', &
+                        '&integration tau_end = 1, dtau_out = 0.05 /')
+        ex = run(exe//' '//d//'/small.nml --out '//o, d)
+        call t%check('rest: amplitude 0.01 deg, tau_end = 1: exit 0 (got '//itoa(ex)//')', &
+                     ex == 0)
+        call read_kv(o//'/small.summary', 'max_abs_theta4', w, f2)
+        call t%check('rest: amplitude 0.01 deg: |theta4| <= its start', all([f2, &
+                     w <= 0.01_dp*deg*(1.0_dp + 1.0e-6_dp), w > 0.0_dp]))
+        call write_deck(d//'/tiny.nml', '', SUSP_EQ, '&start amplitude = 1e-300 /', &
+                        '&integration tau_end = 60, dtau_out = 0.05 /')
+        ex = run(exe//' '//d//'/tiny.nml --out '//o, d)
+        call t%check('rest: amplitude 1e-300 deg: exit 0 (got '//itoa(ex)//')', ex == 0)
+        call read_kv(o//'/tiny.summary', 'max_abs_theta4', w, f2)
+        call t%check('rest: amplitude 1e-300 deg: |theta4| stays below atol (1e-12)', &
+                     f2 .and. w <= 1.0e-12_dp)
+        call write_deck(d//'/tilt.nml', '', SUSP_UNEQ, '&start tilt = -1e10 /', SHORT)
+        ex = run(exe//' '//d//'/tilt.nml --out '//o, d)
+        call t%check('rest: tilt = -1e10 is exit 2 in every build', all([ex == 2, &
+                     file_has(d//'/stderr', 'tilt = -10000000000')]))
+        ! tilt = 7 is tilt = 7 - 2 pi
+        call write_deck(d//'/tilt7.nml', '', SUSP_UNEQ, '&start tilt = 7 /', SHORT)
+        call write_deck(d//'/tilt7r.nml', '', SUSP_UNEQ, '&start tilt = 0.7168146928204138 /', &
+                        SHORT)
+        ex = run(exe//' '//d//'/tilt7.nml '//d//'/tilt7r.nml --out '//o, d)
+        call read_kv(o//'/tilt7.summary', 'max_abs_theta1', v, f1)
+        call read_kv(o//'/tilt7r.summary', 'max_abs_theta1', w, f2)
+        call t%check('rest: tilt = 7 runs as tilt = 7 - 2 pi', all([ex == 0, f1, f2]))
+        if (f1 .and. f2) call t%check_close('rest: tilt 7 and 7 - 2 pi: same max |theta1|', &
+                                            v, w, rtol=1.0e-6_dp)
+    end subroutine test_rest
+
+    ! ---------------------------------------------------------------------------------------
+    !> Finite values on which the checking build took SIGFPE: refused with exit 2 and one
+    !! line, no signal, in every build.
+    subroutine test_traps(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d
+        character(len=80), parameter :: subs(7, 2) = reshape([character(len=80) :: &
+            '&suspension b_prime = 1e300, l = 2, l_prime = 1.8 /', &
+            '&suspension b_prime = 4.9e-324 /', &
+            '&suspension l = 1e300 /', &
+            '&suspension l = 2, l_prime = 1.8 /', &
+            '&suspension l = 2, l_prime = 1.8 /', &
+            '&suspension l = 2, l_prime = 1.8 /', &
+            '&suspension l = 2, l_prime = 1.8 /', &
+            '&body mass = 1 /', &
+            '&body mass = 1 /', &
+            '&body mass = 1 /', &
+            '&body r = 1e300 /', &
+            '&body sway_depth = 1e300 /', &
+            '&body inertia = 1e-320, 0.1, 0.1 /', &
+            "&body mass = 1 / &start mode = 'angles', theta_dot = 0, 0, 0, 1e308 /"], [7, 2])
+        integer :: k, ex
+        logical :: ok
+        d = fresh('traps')
+        ok = .true.
+        do k = 1, 7
+            call write_text(d//'/trap'//itoa(k)//'.nml', "&scene model = '"// &
+                trim(merge('elastic', 'kane   ', k == 6))//"' /"//NL//trim(subs(k, 1))//NL// &
+                trim(subs(k, 2))//NL//SHORT//NL)
+            ex = run(exe//' '//d//'/trap'//itoa(k)//'.nml --out '//d//'/out', d)
+            call t%check('traps: '//trim(subs(k, 1))//' '//trim(subs(k, 2))//': exit 2, one '// &
+                         'line (got '//itoa(ex)//')', all([ex == 2, lines(d//'/stderr') == 1]))
+        end do
+    end subroutine test_traps
+
+    ! ---------------------------------------------------------------------------------------
+    !> Decks that took seconds to minutes (or hung) are refused or fail within seconds
+    !! (`timeout` is a hang check, not a speed test): a 100 kB title line, /dev/zero,
+    !! 1e7 output rows, Floquet with b = 1e-300; a Floquet point of a slender body fails on
+    !! its step budget with a message, and a chart marks such points -2.
+    subroutine test_slow(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d, o
+        character(len=*), parameter :: SLENDER = &
+            '&body mass = 1.0, inertia = 1e-5, 0.1, 0.1, r = 0.7071067811865476, '// &
+            'lambda = 0.7853981633974483 /'
+        integer :: ex
+        d = fresh('slow')
+        o = d//'/out'
+        call write_deck(d//'/title.nml', "&scene title = '"//repeat('t', 100000)//"' /", &
+                        SUSP_EQ, '', SHORT)
+        ex = run('timeout 20 '//exe//' '//d//'/title.nml --out '//o, d)
+        call t%check('slow: a 100 kB title line is exit 2', all([ex == 2, &
+                     file_has(d//'/stderr', 'longer than 4096')]))
+        ex = run('timeout 20 '//exe//' /dev/zero --out '//o, d)
+        call t%check('slow: /dev/zero as a deck is exit 2 (not a hang)', ex == 2)
+        call write_deck(d//'/rows.nml', '', SUSP_EQ, '', &
+                        '&integration tau_end = 60, dtau_out = 6e-6 /')
+        ex = run('timeout 20 '//exe//' '//d//'/rows.nml --out '//o, d)
+        call t%check('slow: 1e7 rows is exit 2 (row limit)', all([ex == 2, &
+                     file_has(d//'/stderr', 'row limit')]))
+        call write_deck(d//'/tiny_b.nml', "&scene analyses = 'floquet' /", &
+                        '&suspension b = 1e-300, l = 2, l_prime = 2 /', '', SHORT)
+        ex = run('timeout 20 '//exe//' '//d//'/tiny_b.nml --out '//o, d)
+        call t%check('slow: Floquet with b = 1e-300 is exit 2', ex == 2)
+        call write_text(d//'/slender.nml', "&scene analyses = 'floquet' /"//NL// &
+                        '&suspension l = 4, l_prime = 4 /'//NL//SLENDER//NL// &
+                        '&floquet amplitude = 90 /'//NL)
+        ex = run('timeout 120 '//exe//' '//d//'/slender.nml --out '//o, d)
+        call t%check('slow: a hopeless Floquet point is exit 3 on its step budget (got '// &
+                     itoa(ex)//')', all([ex == 3, file_has(d//'/stderr', &
+                     '20000 integrator steps')]))
+        call write_text(d//'/slender_chart.nml', "&scene analyses = 'chart' /"//NL// &
+                        '&suspension l = 4, l_prime = 4 /'//NL//SLENDER//NL// &
+                        "&chart x = 'l', x_min = 3.9, x_max = 4, nx = 2, y = 'amplitude', "// &
+                        'y_min = 89, y_max = 90, ny = 2 /'//NL)
+        ex = run('timeout 300 '//exe//' '//d//'/slender_chart.nml --out '//o, d)
+        call t%check('slow: a chart of hopeless points is exit 0, says they failed', &
+                     all([ex == 0, file_has(d//'/stdout', '4 failed (-2 in the file)')]))
+        call t%check('slow: ... and marks them -2', data_rows_with(o// &
+                     '/slender_chart.chart.dat', '-2.000000000000000E+000') == 4)
+    end subroutine test_slow
+
+    ! ---------------------------------------------------------------------------------------
+    !> The progress line: its text, nothing when stderr is a file, a line with the count on
+    !! a terminal (a pseudo-terminal from script(1), when installed).
+    subroutine test_progress(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        type(progress_t) :: pr
+        character(len=:), allocatable :: d, o
+        integer :: ex
+        call pr%start('deck: chart', 100)
+        call pr%tick(25)
+        call t%check('progress: line "deck: chart: 25 of 100 (25%), ETA 30 s" after 10 s', &
+                     pr%line(10.0_dp) == 'deck: chart: 25 of 100 (25%), ETA 30 s')
+        call pr%tick(75)
+        call t%check('progress: no ETA when done', pr%line(40.0_dp) == &
+                     'deck: chart: 100 of 100 (100%)')
+        call pr%finish()
+        d = fresh('progress')
+        o = d//'/out'
+        call write_deck(d//'/chart.nml', "&scene analyses = 'chart' /", SUSP_EQ, '', &
+                        SHORT//NL//'&floquet rtol = 1e-6 /'//NL//"&chart x = 'l', x_min = 1, "// &
+                        "x_max = 2, nx = 3, y = 'amplitude', y_min = 10, y_max = 20, ny = 3 /")
+        ex = run(exe//' '//d//'/chart.nml --out '//o, d)
+        call t%check('progress: stderr a file: exit 0, nothing on stderr', all([ex == 0, &
+                     lines(d//'/stderr') == 0]))
+        call execute_command_line('command -v script > /dev/null', exitstat=ex)
+        if (ex /= 0) then
+            write (*, '(a)') '   progress on a terminal: skipped (script(1) not installed)'
+            return
+        end if
+        call execute_command_line('script -qec "'//exe//' '//d//'/chart.nml --out '//o// &
+                                  '" /dev/null > '//d//'/tty.txt 2>&1', exitstat=ex)
+        call t%check('progress: on a terminal: exit 0', ex == 0)
+        call t%check('progress: on a terminal: "chart: 9 of 9 (100%)"', &
+                     file_has(d//'/tty.txt', 'chart: 9 of 9 (100%)'))
+    end subroutine test_progress
+
+    ! ---------------------------------------------------------------------------------------
+    !> report.md links every figure `make run` draws (one per plots/*.gp, named in the
+    !! script as plots/NAME.png), relative to the report's folder.
+    subroutine test_report(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d, o, name, up
+        character(len=512) :: gp
+        integer :: ex, u, ios, k, nfig
+        logical :: listed
+        d = fresh('report')
+        o = d//'/out'
+        ex = run(exe//' input/cylinder_l180.nml input/cylinder_l195.nml '// &
+                 'input/triangle_plate.nml input/cylinder_torsion.nml --out '//o, d)
+        ex = run(exe//' --report '//o, d)
+        call t%check('report: written (exit 0)', all([ex == 0, exists(o//'/report.md')]))
+        up = repeat('../', 4)          ! build/test_robust/report/out
+        call execute_command_line('ls plots/*.gp > '//d//'/gp.txt')
+        open (newunit=u, file=d//'/gp.txt', status='old', action='read', iostat=ios)
+        nfig = 0
+        do while (ios == 0)
+            read (u, '(a)', iostat=ios) gp
+            if (ios /= 0) exit
+            name = gp(index(gp, '/') + 1:index(gp, '.gp') - 1)
+            nfig = nfig + 1
+            call t%check('report: '//trim(gp)//' draws plots/'//name//'.png', &
+                         file_has(trim(gp), 'plots/'//name//'.png'))
+            call t%check('report: shows ![...]('//up//'plots/'//name//'.png)', &
+                         file_has(o//'/report.md', ']('//up//'plots/'//name//'.png)'))
+            associate (figs => report_figures())
+                listed = .false.
+                do k = 1, size(figs)
+                    if (figs(k)%name == name) listed = .true.
+                end do
+            end associate
+            call t%check('report: '//name//' is one of report_figures', listed)
+        end do
+        close (u)
+        call t%check('report: at least the 17 figures of make run', nfig >= 17)
+    end subroutine test_report
+
+    ! ---------------------------------------------------------------------------------------
+    ! helpers
+
+    !> An empty scratch folder SCR/name.
+    function fresh(name) result(d)
+        character(len=*), intent(in) :: name
+        character(len=:), allocatable :: d
+        d = SCR//'/'//name
+        call execute_command_line('rm -rf '//d//' && mkdir -p '//d)
+    end function fresh
+
+    !> Run a shell command with stdout to d/stdout and stderr to d/stderr; its exit status.
+    integer function run(cmd, d) result(ex)
+        character(len=*), intent(in) :: cmd, d
+        ex = -1
+        call execute_command_line('('//cmd//') > '//d//'/stdout 2> '//d//'/stderr', exitstat=ex)
+    end function run
+
+    !> The executable as an absolute path (for commands run in another folder).
+    function abs_exe(exe) result(a)
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: a
+        character(len=4096) :: cwd
+        integer :: st
+        a = exe
+        if (exe(1:1) == '/') return
+        call get_environment_variable('PWD', cwd, status=st)
+        if (st == 0) a = trim(cwd)//'/'//exe
+    end function abs_exe
+
+    !> A deck of the groups given ('' leaves a group out), BODY always.
+    subroutine write_deck(path, scene, susp, start, integ)
+        character(len=*), intent(in) :: path, scene, susp, start, integ
+        character(len=:), allocatable :: s
+        s = ''
+        if (len(scene) > 0) s = s//scene//NL
+        s = s//susp//NL//BODY//NL
+        if (len(start) > 0) s = s//start//NL
+        if (len(integ) > 0) s = s//integ//NL
+        call write_text(path, s)
+    end subroutine write_deck
+
+    !> Number of lines of a text file (0 when absent).
+    integer function lines(path) result(n)
+        character(len=*), intent(in) :: path
+        integer :: u, ios
+        character(len=1) :: c
+        n = 0
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) c
+            if (ios /= 0) exit
+            n = n + 1
+        end do
+        close (u)
+    end function lines
+
+    !> Whether line k of a file starts with s.
+    logical function line_starts(path, k, s)
+        character(len=*), intent(in) :: path, s
+        integer, intent(in) :: k
+        integer :: u, ios, i
+        character(len=8192) :: line
+        line_starts = .false.
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do i = 1, k
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+        end do
+        close (u)
+        if (ios == 0) line_starts = index(line, s) == 1
+    end function line_starts
+
+    !> Number of entries of a folder (hidden ones included); -1 when it cannot be listed.
+    integer function count_entries(dir) result(n)
+        character(len=*), intent(in) :: dir
+        n = shell_count('ls -A '//dir//' | wc -l', SCR)
+    end function count_entries
+
+    logical function empty_dir(dir)
+        character(len=*), intent(in) :: dir
+        empty_dir = count_entries(dir) == 0
+    end function empty_dir
+
+    !> The deck path of a .dat header ('# deck PATH'); '' when absent.
+    function header_deck(path) result(s)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: s
+        integer :: u, ios
+        character(len=1024) :: line
+        s = ''
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        do while (ios == 0)
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, '# deck ') == 1) then
+                s = trim(line(8:))
+                exit
+            end if
+        end do
+        close (u)
+    end function header_deck
+
+    !> The text after 'key = ' in a key = value file ('' when absent).
+    subroutine read_kv_text(path, key, val)
+        character(len=*), intent(in) :: path, key
+        character(len=*), intent(out) :: val
+        integer :: u, ios
+        character(len=1024) :: line
+        val = ''
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        do while (ios == 0)
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, key//' = ') == 1) then
+                val = line(len(key) + 4:)
+                exit
+            end if
+        end do
+        close (u)
+    end subroutine read_kv_text
+
+    !> Number of data lines (not '#', not blank) of a file.
+    integer function data_rows(path) result(n)
+        character(len=*), intent(in) :: path
+        n = data_rows_with(path, '')
+    end function data_rows
+
+    !> Number of data lines (not '#', not blank) of a file that contain s.
+    integer function data_rows_with(path, s) result(n)
+        character(len=*), intent(in) :: path, s
+        integer :: u, ios
+        character(len=1024) :: line
+        n = 0
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        do while (ios == 0)
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (line(1:1) == '#' .or. len_trim(line) == 0) cycle
+            if (index(line, s) > 0) n = n + 1
+        end do
+        close (u)
+    end function data_rows_with
+
+end module test_robust
