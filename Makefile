@@ -20,19 +20,29 @@ ifeq ($(CHECK),1)
 BUILD = build-check
 BIN = build-check/bin
 FFLAGS = -O0 -g -fcheck=all,no-array-temps -ffpe-trap=invalid,zero,overflow -fbacktrace
+LIBS = -llapack -lblas
 else
 BUILD = build
 BIN = bin
-FFLAGS = -O2 -march=x86-64-v2 -fno-backtrace
+# -flto inlines across modules (the model's kinematics, forces and solve are one hot path)
+FFLAGS = -O3 -march=x86-64-v2 -flto=auto -fno-backtrace
+# Link statically what Debian ships as archives (LAPACK, BLAS, libgfortran, libquadmath,
+# libgomp): the process starts without loading and relocating them.  libc and libm stay
+# shared.  An archive the compiler cannot find falls back to the shared library.
+static_or_shared = $(if $(filter /%,$(shell $(FC) -print-file-name=lib$(1).a)),$(shell \
+                   $(FC) -print-file-name=lib$(1).a),-l$(1))
+LIBS := -static-libgcc -Wl,--as-needed $(foreach l,lapack blas gfortran gomp quadmath,$(call \
+        static_or_shared,$(l)))
 endif
 FFLAGS += -fopenmp -std=f2008 -Wall -Wextra -Wno-compare-reals -fimplicit-none
-LIBS = -llapack -lblas
 
-# Library modules in dependency order (each only uses modules listed before it).
-LIB_MODULES = kinds status lapack_wrap ode_system lsoda geometry kinematics gen_forces bifilar_model \
-              elastic_model elastic_solver deck output_io simulate floquet paper_claims stability work_precision
+# Library modules (one object each) and test modules.
+LIB_MODULES = kinds status lapack_wrap ode_system lsoda geometry kinematics gen_forces \
+              bifilar_model elastic_model elastic_solver deck output_io fast_format simulate \
+              floquet paper_claims stability work_precision
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
-TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme test_work_precision test_elastic test_elastic_jac
+TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme \
+               test_work_precision test_elastic test_elastic_jac test_fast_format
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
 
 .PHONY: all test check run report bench deps clean memcheck
@@ -41,12 +51,57 @@ all: $(BIN)/bifilar
 $(BUILD) $(BIN):
 	mkdir -p $@
 
-# Every object depends on all objects listed before it (simple, correct ordering).
-define chain
-$(BUILD)/$(word $(1),$(2)).o: $(patsubst %,$(BUILD)/%.o,$(wordlist 1,$(shell expr $(1) - 1),$(2)))
-endef
-ALL_MODULES = $(LIB_MODULES) $(TEST_MODULES)
-$(foreach i,$(shell seq 2 $(words $(ALL_MODULES))),$(eval $(call chain,$(i),$(ALL_MODULES))))
+# Module dependencies: each object on the objects of the modules it uses (gfortran writes
+# the .mod files beside them), so make -j builds in the right order and a change rebuilds
+# only its users.
+O = $(BUILD)
+$(O)/kinds.o $(O)/status.o:
+$(O)/lapack_wrap.o: $(O)/kinds.o $(O)/status.o
+$(O)/ode_system.o: $(O)/kinds.o $(O)/status.o
+$(O)/lsoda.o: $(O)/kinds.o $(O)/status.o $(O)/ode_system.o $(O)/lapack_wrap.o
+$(O)/geometry.o: $(O)/kinds.o $(O)/status.o
+$(O)/kinematics.o: $(O)/kinds.o $(O)/geometry.o
+$(O)/gen_forces.o: $(O)/kinds.o $(O)/kinematics.o
+$(O)/bifilar_model.o: $(O)/kinds.o $(O)/status.o $(O)/ode_system.o $(O)/geometry.o \
+                      $(O)/kinematics.o $(O)/gen_forces.o $(O)/lapack_wrap.o
+$(O)/elastic_model.o: $(O)/kinds.o $(O)/status.o $(O)/ode_system.o $(O)/geometry.o \
+                      $(O)/kinematics.o $(O)/gen_forces.o $(O)/bifilar_model.o
+$(O)/elastic_solver.o: $(O)/kinds.o $(O)/status.o $(O)/lsoda.o $(O)/elastic_model.o
+$(O)/deck.o: $(O)/kinds.o $(O)/status.o
+$(O)/output_io.o: $(O)/kinds.o $(O)/status.o
+$(O)/fast_format.o: $(O)/kinds.o
+$(O)/simulate.o: $(O)/kinds.o $(O)/status.o $(O)/geometry.o $(O)/bifilar_model.o \
+                 $(O)/lsoda.o $(O)/elastic_model.o $(O)/elastic_solver.o $(O)/deck.o \
+                 $(O)/output_io.o $(O)/fast_format.o
+$(O)/floquet.o: $(O)/kinds.o $(O)/status.o $(O)/ode_system.o $(O)/geometry.o \
+                $(O)/bifilar_model.o $(O)/lsoda.o $(O)/lapack_wrap.o
+$(O)/paper_claims.o: $(O)/kinds.o $(O)/status.o $(O)/geometry.o $(O)/bifilar_model.o \
+                     $(O)/floquet.o $(O)/lapack_wrap.o $(O)/output_io.o
+$(O)/stability.o: $(O)/kinds.o $(O)/status.o $(O)/geometry.o $(O)/deck.o $(O)/simulate.o \
+                  $(O)/floquet.o $(O)/output_io.o
+$(O)/work_precision.o: $(O)/kinds.o $(O)/status.o $(O)/geometry.o $(O)/bifilar_model.o \
+                       $(O)/ode_system.o $(O)/lsoda.o $(O)/elastic_model.o \
+                       $(O)/elastic_solver.o $(O)/deck.o $(O)/simulate.o $(O)/output_io.o
+$(O)/testing.o: $(O)/kinds.o
+$(O)/test_lsoda.o: $(O)/testing.o $(O)/kinds.o $(O)/status.o $(O)/ode_system.o $(O)/lsoda.o
+$(O)/test_model.o: $(O)/testing.o $(O)/kinds.o $(O)/status.o $(O)/ode_system.o \
+                   $(O)/geometry.o $(O)/kinematics.o $(O)/bifilar_model.o $(O)/lsoda.o \
+                   $(O)/deck.o $(O)/simulate.o $(O)/paper_claims.o $(O)/floquet.o
+$(O)/test_deck.o: $(O)/testing.o $(O)/kinds.o $(O)/status.o $(O)/deck.o $(O)/output_io.o
+$(O)/test_floquet.o: $(O)/testing.o $(O)/kinds.o $(O)/status.o $(O)/geometry.o \
+                     $(O)/bifilar_model.o $(O)/lsoda.o $(O)/floquet.o $(O)/lapack_wrap.o \
+                     $(O)/deck.o $(O)/simulate.o $(O)/paper_claims.o $(O)/test_model.o
+$(O)/test_extreme.o: $(O)/testing.o $(O)/kinds.o $(O)/status.o $(O)/bifilar_model.o \
+                     $(O)/simulate.o $(O)/output_io.o
+$(O)/test_work_precision.o: $(O)/testing.o $(O)/kinds.o $(O)/status.o $(O)/deck.o \
+                            $(O)/output_io.o $(O)/work_precision.o
+$(O)/test_elastic.o: $(O)/testing.o $(O)/kinds.o $(O)/status.o $(O)/geometry.o \
+                     $(O)/bifilar_model.o $(O)/elastic_model.o $(O)/elastic_solver.o \
+                     $(O)/lsoda.o $(O)/lapack_wrap.o $(O)/test_model.o
+$(O)/test_elastic_jac.o: $(O)/testing.o $(O)/kinds.o $(O)/status.o $(O)/geometry.o \
+                         $(O)/bifilar_model.o $(O)/elastic_model.o $(O)/ode_system.o \
+                         $(O)/lsoda.o $(O)/test_model.o
+$(O)/test_fast_format.o: $(O)/testing.o $(O)/kinds.o $(O)/fast_format.o
 
 $(BUILD)/%.o: src/%.f90 | $(BUILD)
 	$(FC) $(FFLAGS) -J$(BUILD) -c $< -o $@
@@ -77,13 +132,18 @@ $(BIN)/bench_elastic: tests/bench_elastic.f90 $(LIB_OBJ) | $(BIN)
 $(BIN)/bench_wp: tests/bench_wp.f90 $(LIB_OBJ) | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
 
+$(BIN)/bench_speed: tests/bench_speed.f90 $(LIB_OBJ) | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+
 bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench_elastic \
-       $(BIN)/bifilar
+       $(BIN)/bench_speed $(BIN)/bifilar
 	mkdir -p output build/bench
 	$(BIN)/bench_integrator output/bench_integrator.dat
 	$(BIN)/bench_bifilar output/bench_bifilar.dat
 	$(BIN)/bench_wp
 	$(BIN)/bench_elastic output/bench_elastic.dat
+	@echo "speed: instructions (valgrind --tool=callgrind) and CPU seconds of one unit of work:"
+	tests/bench/speed.sh $(BIN) output/bench_speed.dat
 	@echo "100 x 100 stability chart (tests/bench/chart_cylinder.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}):"
 	$(BIN)/bifilar tests/bench/chart_cylinder.nml --out build/bench 2>/dev/null
 

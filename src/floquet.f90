@@ -9,15 +9,15 @@
 !! singularity.  The variational equations (51), dH/dt = Z H, are integrated along the orbit
 !! in the regular chart of bifilar_model (the orbit lies on theta2 = 0, where the paper's
 !! coordinates are singular) over `nseg` shooting segments; the multipliers are the
-!! eigenvalues of the product of the segment matrices (LAPACK DGEEV).  Z is the Jacobian of
-!! the chart right-hand side by central differences (see jacobian_z).
+!! eigenvalues of the product of the segment matrices (LAPACK DGEEV).  Z is the exact
+!! Jacobian of the chart right-hand side (see jacobian_z).
 module floquet
     use kinds, only: dp, pi
     use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC
     use ode_system, only: ode_system_t
     use geometry, only: pendulum_t, raised_angles, solve_theta5
     use bifilar_model, only: chart_accelerations, chart_state, chart_energy, chart_constraint, &
-                             NSTATE
+                             chart_jacobian, NSTATE
     use lsoda, only: lsoda_t, lsoda_stats_t
     use lapack_wrap, only: la_eig, la_geig, la_lu_factor, la_lu_solve
     implicit none
@@ -152,54 +152,15 @@ contains
         end do
     end subroutine gauss_legendre
 
-    !> Z = d f / d y of the chart right-hand side (eq. (51)).  The accelerations are exactly
-    !! quadratic in the rates, so a central difference with h = max(1, |y_j|) is exact for the
-    !! rate columns (no truncation, rounding ~ eps).  The position columns use the fourth-order
-    !! central stencil with h = 5e-4 max(1, |y_j|): truncation ~ h^4/30 |f^(5)|, rounding
-    !! ~ eps/h ~ 4e-13, smooth along the orbit (no noise for the step control).  The step was
-    !! set by the reciprocal-pair test at modulus 2.65e3 (h = 1e-3 left a pair error of 2e-6).
+    !> Z = d f / d y of the chart right-hand side (eq. (51)), exact (bifilar_model's
+    !! chart_jacobian: the derivatives of the kinematics through Kane's equations).
     subroutine jacobian_z(p, y, z, stat)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         real(dp), intent(in) :: y(NSTATE)       !! chart state
         real(dp), intent(out) :: z(NSTATE, NSTATE)
         type(status_t), intent(out) :: stat
-        real(dp) :: h, a1(5), a2(5), a3(5), a4(5)
-        integer :: j
-        z = 0.0_dp
-        do j = 1, 5
-            z(j, j + 5) = 1.0_dp
-        end do
-        do j = 1, NSTATE
-            if (j <= 5) then
-                h = 5.0e-4_dp*max(1.0_dp, abs(y(j)))
-                call at(j, h, a1)
-                call at(j, -h, a2)
-                call at(j, 2*h, a3)
-                call at(j, -2*h, a4)
-                z(6:10, j) = (8*(a1 - a2) - (a3 - a4))/(12*h)
-            else
-                h = max(1.0_dp, abs(y(j)))
-                call at(j, h, a1)
-                call at(j, -h, a2)
-                z(6:10, j) = (a1 - a2)/(2*h)
-            end if
-            if (stat%code /= 0) return
-        end do
-    contains
-        !> Accelerations with y_j moved by dy (a status already set is kept).
-        subroutine at(jj, dy, acc)
-            integer, intent(in) :: jj
-            real(dp), intent(in) :: dy
-            real(dp), intent(out) :: acc(5)
-            real(dp) :: yp(NSTATE)
-            type(status_t) :: st
-            acc = 0.0_dp
-            if (stat%code /= 0) return
-            yp = y
-            yp(jj) = y(jj) + dy
-            call chart_accelerations(p, yp, acc, st)
-            if (st%code /= 0) stat = st
-        end subroutine at
+        real(dp) :: qdd(5)
+        call chart_jacobian(p, y, qdd, z, stat)
     end subroutine jacobian_z
 
     !> Orbit and dH/dt = Z H together: y(1:10) the state, y(11:110) H by columns.
@@ -210,11 +171,10 @@ contains
         type(status_t), intent(out) :: stat
         real(dp) :: z(NSTATE, NSTATE), a(5)
         if (.false.) ydot(1) = t
-        call chart_accelerations(sys%p, y(1:NSTATE), a, stat)
+        call chart_jacobian(sys%p, y(1:NSTATE), a, z, stat)
         if (stat%code /= 0) return
         ydot(1:5) = y(6:10)
         ydot(6:10) = a
-        call jacobian_z(sys%p, y(1:NSTATE), z, stat)
         ydot(NSTATE + 1:NV) = reshape(matmul(z, reshape(y(NSTATE + 1:NV), [NSTATE, NSTATE])), &
                                       [NSTATE*NSTATE])
     end subroutine variational_rhs

@@ -9,12 +9,20 @@
 !! so that F_r + F*_r = f_r - sum_j M_rj qddot_j with the generalized inertia M and the
 !! velocity and gravity terms f computed here.  Kane's equations (37) for the independent
 !! speeds are these rows combined with the constraint (see bifilar_model).  Units: m = g = 1.
+!!
+!! Forces enter as a resultant force on R* and a resultant torque on the body, projected on
+!! the partial velocities (project): F_r + F*_r = Jv(:,r) . force + Jw(:,r) . torque.  An
+!! active torque M on the body (e.g. damping about the vertical, M = -(c_v W + c_q |W| W) n3
+!! with W = omega . n3) is added to `torque` before the projection; a force on R* to
+!! `force`.  (A velocity-dependent one also enters the derivative of the right-hand side
+!! in bifilar_model's eom_tangent, through omega's change.)
 module gen_forces
     use kinds, only: dp
+    use kinematics, only: cross
     implicit none
     private
 
-    public :: generalized_inertia, generalized_forces, inertia_dyadic, cross
+    public :: generalized_inertia, inertia_torque, project, inertia_dyadic
 
 contains
 
@@ -26,18 +34,19 @@ contains
         integer :: j, k
         do k = 1, 3
             do j = 1, 3
-                in(j, k) = sum(inertia*bmat(:, j)*bmat(:, k))
+                in(j, k) = inertia(1)*bmat(1, j)*bmat(1, k) + inertia(2)*bmat(2, j)*bmat(2, k) &
+                           + inertia(3)*bmat(3, j)*bmat(3, k)
             end do
         end do
     end function inertia_dyadic
 
     !> Generalized inertia M = Jv^T Jv + Jw^T I_n Jw (mass 1): the coefficients of qddot in
     !! -(F*_r) of eqs. (33), (36).  Five generalized coordinates.
-    pure function generalized_inertia(jv, jw, in) result(m)
+    pure subroutine generalized_inertia(jv, jw, in, m)
         real(dp), intent(in) :: jv(3, 5)       !! partial velocities of R*
         real(dp), intent(in) :: jw(3, 5)       !! partial angular velocities
         real(dp), intent(in) :: in(3, 3)       !! inertia dyadic in n_i
-        real(dp) :: m(5, 5)
+        real(dp), intent(out) :: m(5, 5)
         real(dp) :: iw(3, 5)
         integer :: r, j
         do j = 1, 5
@@ -50,35 +59,33 @@ contains
                 m(j, r) = m(r, j)
             end do
         end do
-    end function generalized_inertia
+    end subroutine generalized_inertia
 
-    !> f_r = F_r + (F*_r at qddot = 0): gravity, eq. (32), and the velocity terms of
-    !! eqs. (33)-(36) with the inertia torque T of eq. (35) resolved in n_i.
-    pure function generalized_forces(jv, cv, jw, cw, omega, in) result(f)
-        real(dp), intent(in) :: jv(3, 5)       !! partial velocities of R*
-        real(dp), intent(in) :: cv(3)          !! acceleration of R* at qddot = 0
-        real(dp), intent(in) :: jw(3, 5)       !! partial angular velocities
-        real(dp), intent(in) :: cw(3)          !! angular acceleration at qddot = 0
-        real(dp), intent(in) :: omega(3)       !! angular velocity
+    !> The inertia torque of eq. (35), T = -I_n alpha - omega x (I_n omega).
+    pure function inertia_torque(in, alpha, omega) result(t)
         real(dp), intent(in) :: in(3, 3)       !! inertia dyadic in n_i
-        real(dp) :: f(5)
-        real(dp) :: t0(3), iw(3), a(3)
-        integer :: r
+        real(dp), intent(in) :: alpha(3)       !! angular acceleration
+        real(dp), intent(in) :: omega(3)       !! angular velocity
+        real(dp) :: t(3)
+        real(dp) :: iw(3)
         iw = in(:, 1)*omega(1) + in(:, 2)*omega(2) + in(:, 3)*omega(3)
-        t0 = -(in(:, 1)*cw(1) + in(:, 2)*cw(2) + in(:, 3)*cw(3)) - cross(omega, iw)
-        a = cv
-        a(3) = a(3) + 1.0_dp            ! a + g n3 (g = 1)
-        do r = 1, 5
-            f(r) = -(jv(1, r)*a(1) + jv(2, r)*a(2) + jv(3, r)*a(3)) &
-                   + jw(1, r)*t0(1) + jw(2, r)*t0(2) + jw(3, r)*t0(3)
-        end do
-    end function generalized_forces
+        t = -(in(:, 1)*alpha(1) + in(:, 2)*alpha(2) + in(:, 3)*alpha(3)) - cross(omega, iw)
+    end function inertia_torque
 
-    !> Vector product a x b.
-    pure function cross(a, b) result(c)
-        real(dp), intent(in) :: a(3), b(3)
-        real(dp) :: c(3)
-        c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
-    end function cross
+    !> Generalized forces of a resultant force on R* and a resultant torque on the body:
+    !! f_r = Jv(:,r) . force + Jw(:,r) . torque, eqs. (32)-(36).  With force = -(cv + g n3)
+    !! and torque = inertia_torque(I_n, cw, omega) this is f_r = F_r + (F*_r at qddot = 0).
+    pure subroutine project(jv, jw, force, torque, f)
+        real(dp), intent(in) :: jv(3, 5)       !! partial velocities of R*
+        real(dp), intent(in) :: jw(3, 5)       !! partial angular velocities
+        real(dp), intent(in) :: force(3)       !! resultant force on R* (over m g)
+        real(dp), intent(in) :: torque(3)      !! resultant torque on the body (over m g b')
+        real(dp), intent(out) :: f(5)
+        integer :: r
+        do r = 1, 5
+            f(r) = jv(1, r)*force(1) + jv(2, r)*force(2) + jv(3, r)*force(3) &
+                   + jw(1, r)*torque(1) + jw(2, r)*torque(2) + jw(3, r)*torque(3)
+        end do
+    end subroutine project
 
 end module gen_forces
