@@ -28,8 +28,8 @@ module bifilar_model
                         cable_direction, mass_centre, point_e
     use kinematics, only: omega_partials, omega_conv, v_partials, vdot_partials, &
                           omega_partials_tangent, omega_conv_tangent, cross
-    use gen_forces, only: generalized_inertia, inertia_torque, project, inertia_dyadic
-    use lapack_wrap, only: la_small_factor, la_small_solve
+    use gen_forces, only: generalized_inertia, inertia_torque, project
+    use lapack_wrap, only: la_small_chol, la_small_chol_solve
     implicit none
     private
 
@@ -38,6 +38,8 @@ module bifilar_model
     !> The pendulum as an ODE system for the integrator.
     type, extends(ode_system_t), public :: bifilar_t
         type(pendulum_t) :: p                   !! scaled parameters
+        !> sin and cos of p%lambda, computed when p%lambda is first seen (lambda_key)
+        real(dp), private :: lambda_key = huge(1.0_dp), sc_lambda(2) = 0.0_dp
     contains
         procedure :: rhs => bifilar_rhs
     end type bifilar_t
@@ -76,15 +78,21 @@ module bifilar_model
         real(dp) :: jv(3, 5), cv(3)             !! R*: partial velocities, acceleration at qdd = 0
         real(dp) :: jw(3, 5), cw(3), omega(3)   !! the same for the rotation; angular velocity
         real(dp) :: jd(3, 5), cd(3)             !! the same for D
-        real(dp) :: inert(3, 3)                 !! inertia dyadic of R* in n_i
+        real(dp) :: b(3, 3)                     !! principal axes b_i in n_j, eq. (11)
+        real(dp) :: wb(3, 5), omb(3), cwb(3)    !! jw, omega, cw resolved in b_i
     end type chart_kin_t
 
-    !> Eq. (38) assembled and factored at one state, and its solution.
+    !> Eq. (38) assembled and factored at one state, and its solution.  The constraint row
+    !! gives the dependent acceleration k from the four independent ones; Kane's rows for the
+    !! independent speeds (partial velocities Jv(:,r) + gamma_r Jv(:,k), eq. (31)) are then
+    !! a symmetric positive definite 4 x 4 system, held as its Cholesky factor.  (mk is set
+    !! only for the Jacobian, by chart_jacobian.)
     type :: eom_t
-        real(dp) :: lu(5, 5)                    !! LU factors of P (la_small_factor)
-        integer :: ipiv(5)                      !! their pivots
-        integer :: k = 0                        !! the dependent coordinate (row of the constraint)
-        real(dp) :: gam(5)                      !! gamma_r = -gradg(r)/gradg(k), r /= k
+        integer :: k                            !! the dependent coordinate (largest |gradg|)
+        integer :: ind(4)                       !! the independent coordinates, ascending
+        real(dp) :: gam(5)                      !! gamma_r = -gradg(r)/gradg(k), 0 at r = k
+        real(dp) :: mk(5)                       !! column k of the generalized inertia M
+        real(dp) :: chol(4, 4)                  !! Cholesky factor of T^T M T (T: eq. (31))
         real(dp) :: gradg(5), vd(3)             !! constraint gradient; velocity of D
         real(dp) :: qdd(5)                      !! the accelerations
     end type eom_t
@@ -101,26 +109,31 @@ contains
         real(dp), intent(in) :: y(:)            !! chart state (10)
         real(dp), intent(out) :: ydot(:)        !! its derivative
         type(status_t), intent(out) :: stat
-        real(dp) :: qdd(5)
+        type(chart_kin_t) :: k
+        type(eom_t) :: eo
         if (.false.) ydot(1) = t
-        call chart_accelerations(sys%p, y, qdd, stat)
+        if (sys%p%lambda /= sys%lambda_key) then
+            sys%sc_lambda = [sin(sys%p%lambda), cos(sys%p%lambda)]
+            sys%lambda_key = sys%p%lambda
+        end if
+        call chart_solve(sys%p, y, k, eo, stat, sys%sc_lambda)
         ydot(1:5) = y(6:10)
-        ydot(6:10) = qdd
+        ydot(6:10) = eo%qdd
     end subroutine bifilar_rhs
 
     !> The kinematics at a chart state: the pose, C, D, the direction cosines, the cable
     !! direction e and the partial velocities / convective accelerations of R*, D and the
     !! rotation (eqs. (8), (14), (19), (24), (27) with theta_2 = theta_3 = 0 in the body's
-    !! terms; the cable's columns from e(sigma)), and the inertia dyadic.
-    pure subroutine chart_kinematics(p, y, k)
+    !! terms; the cable's columns from e(sigma)), the rotation also along the principal axes.
+    pure subroutine chart_kinematics(p, y, k, sc_lambda)
         type(pendulum_t), intent(in) :: p
         real(dp), intent(in) :: y(:)
         type(chart_kin_t), intent(out) :: k
-        real(dp) :: thd(5), vb(3, 5), vdb(3, 5), sdsd, ssd
+        real(dp), intent(in), optional :: sc_lambda(2)  !! sin, cos of p%lambda (body_pose)
+        real(dp) :: sdsd, ssd, iz
         associate (s4 => k%ps%s4, c4 => k%ps%c4, s5 => k%ps%s5, c5 => k%ps%c5, &
                    d4 => y(9), d5 => y(10))
-            k%ps = body_pose(y(1), y(4), y(5), p%lambda)
-            thd = [y(6), 0.0_dp, 0.0_dp, y(9), y(10)]
+            k%ps = body_pose(y(1), y(4), y(5), p%lambda, sc_lambda)
             call frame(k%ps, k%n)
             k%e = cable_direction(y(2:3))
             k%zeta = -k%e(3)
@@ -128,23 +141,20 @@ contains
             ! the cable: e(sigma) and its second derivative at sigma'' = 0
             sdsd = y(7)*y(7) + y(8)*y(8)
             ssd = y(2)*y(7) + y(3)*y(8)
-            k%econv = [0.0_dp, 0.0_dp, sdsd/k%zeta + ssd**2/k%zeta**3]
-            ! body part of eqs. (24), (27): columns 1, 4, 5 (theta_2, theta_3 do not enter them)
-            call v_partials(p, k%ps, vb)
-            call vdot_partials(p, k%ps, thd, vdb)
-            k%jv(:, 1) = vb(:, 1)
-            k%jv(:, 2) = p%big_l*[1.0_dp, 0.0_dp, y(2)/k%zeta]
-            k%jv(:, 3) = p%big_l*[0.0_dp, 1.0_dp, y(3)/k%zeta]
-            k%jv(:, 4) = vb(:, 4)
-            k%jv(:, 5) = vb(:, 5)
-            k%cv = p%big_l*k%econv
-            k%cv = k%cv + vdb(:, 1)*thd(1)
-            k%cv = k%cv + vdb(:, 4)*thd(4)
-            k%cv = k%cv + vdb(:, 5)*thd(5)
-            k%rho = p%r*(k%ps%s_lambda*k%n(1, :) - k%ps%c_lambda*k%n(3, :))
+            iz = 1.0_dp/k%zeta
+            k%econv = [0.0_dp, 0.0_dp, (sdsd + (ssd*iz)**2)*iz]
             call omega_partials(k%ps, k%jw)
             k%omega = (k%jw(:, 1)*y(6) + k%jw(:, 4)*y(9)) + k%jw(:, 5)*y(10)
-            call omega_conv(k%ps, thd, k%cw)
+            call omega_conv(k%ps, y(6:10), k%cw)     ! reads the rates of theta_1, 4, 5
+            ! R* = C + rho, eqs. (21)-(22); eqs. (24), (27): the cable's columns from e(sigma),
+            ! the body's in their rigid-body form (Omega_j x rho; A x rho + omega x (omega x rho))
+            k%rho = (p%r*k%ps%s_lambda)*k%n(1, :) - (p%r*k%ps%c_lambda)*k%n(3, :)
+            k%jv(:, 1) = cross(k%jw(:, 1), k%rho)
+            k%jv(:, 2) = [p%big_l, 0.0_dp, p%big_l*y(2)*iz]
+            k%jv(:, 3) = [0.0_dp, p%big_l, p%big_l*y(3)*iz]
+            k%jv(:, 4) = [k%rho(2), -k%rho(1), 0.0_dp]         ! -n3 x rho
+            k%jv(:, 5) = cross(k%jw(:, 5), k%rho)
+            k%cv = p%big_l*k%econv + cross(k%cw, k%rho) + cross(k%omega, cross(k%omega, k%rho))
             ! D = C + (c5 s4, c5 c4, s5), eq. (1)
             k%d = k%c + [c5*s4, c5*c4, s5]
             k%jd(:, 1) = 0.0_dp
@@ -153,8 +163,16 @@ contains
             k%jd(:, 5) = [-s5*s4, -s5*c4, c5]
             k%cd = p%big_l*k%econv + [-c5*s4*(d4**2 + d5**2) - 2.0_dp*s5*c4*d4*d5, &
                                       -c5*c4*(d4**2 + d5**2) + 2.0_dp*s5*s4*d4*d5, -s5*d5**2]
+            ! the rotation along the principal axes: b = btilde n; Omega_1 = ntilde_3, so
+            ! b . Omega_1 = btilde(:,3); Omega_4 = -n_3; Omega_5 = c4 n_1 - s4 n_2
+            k%b = body_axes(p, k%n)
+            k%wb(:, 1) = p%btilde(:, 3)
+            k%wb(:, 2:3) = 0.0_dp
+            k%wb(:, 4) = -k%b(:, 3)
+            k%wb(:, 5) = c4*k%b(:, 1) - s4*k%b(:, 2)
+            k%omb = (k%wb(:, 1)*y(6) + k%wb(:, 4)*y(9)) + k%wb(:, 5)*y(10)
+            k%cwb = k%b(:, 1)*k%cw(1) + k%b(:, 2)*k%cw(2) + k%b(:, 3)*k%cw(3)
         end associate
-        k%inert = inertia_dyadic(body_axes(p, k%n), p%inertia)
     end subroutine chart_kinematics
 
     !> The derivative of chart_kinematics along a change dy of the chart state: dk holds the
@@ -217,17 +235,21 @@ contains
         dk%jd(:, 1) = 0.0_dp
         dk%jd(:, 2:3) = dk%jv(:, 2:3)
         dk%cd = dk%cd + p%big_l*dk%econv
-        ! the inertia dyadic turns with the body: dI = S I - I S, S u = dTheta x u
+        ! along the principal axes: the axes turn, db_i = dTheta x b_i
         if (moved) then
             do i = 1, 3
-                dk%inert(:, i) = cross(dtheta, k%inert(:, i))
-            end do
-            do i = 1, 3
-                dk%inert(i, :) = dk%inert(i, :) + cross(dtheta, k%inert(i, :))
+                dk%b(i, :) = cross(dtheta, k%b(i, :))
             end do
         else
-            dk%inert = 0.0_dp
+            dk%b = 0.0_dp
         end if
+        dk%wb(:, 1:3) = 0.0_dp
+        dk%wb(:, 4) = -dk%b(:, 3)
+        dk%wb(:, 5) = (k%ps%c4*dk%b(:, 1) - k%ps%s4*dk%b(:, 2)) &
+                      - dy(4)*(k%ps%s4*k%b(:, 1) + k%ps%c4*k%b(:, 2))
+        dk%omb = (dk%wb(:, 4)*y(9) + dk%wb(:, 5)*y(10)) &
+                 + ((k%wb(:, 1)*dy(6) + k%wb(:, 4)*dy(9)) + k%wb(:, 5)*dy(10))
+        dk%cwb = matmul(dk%b, k%cw) + matmul(k%b, dk%cw)
         dk%ps = pose_t()
     end subroutine chart_kinematics_tangent
 
@@ -256,13 +278,11 @@ contains
         type(chart_kin_t), intent(in) :: k
         real(dp), intent(out) :: gradg(5), vd(3), gconv
         integer :: j
-        do j = 1, 5
+        gradg(1) = 0.0_dp                       ! theta_1 turns the body about CD
+        do j = 2, 5
             gradg(j) = 2.0_dp*((k%d(1)*k%jd(1, j) + k%d(2)*k%jd(2, j)) + k%d(3)*k%jd(3, j))
         end do
-        vd = 0.0_dp
-        do j = 1, 5
-            vd = vd + k%jd(:, j)*y(5 + j)
-        end do
+        vd = ((k%jd(:, 2)*y(7) + k%jd(:, 3)*y(8)) + k%jd(:, 4)*y(9)) + k%jd(:, 5)*y(10)
         gconv = 2.0_dp*(dot_product(vd, vd) + dot_product(k%d, k%cd))
         if (p%stab_rate > 0.0_dp) then
             ! Baumgarte: drift off G = 0 decays at rate a; nothing changes on G = G' = 0
@@ -272,53 +292,96 @@ contains
     end subroutine constraint_terms
 
     !> Assemble and solve P qddot = Q, eq. (38): rows r /= k are Kane's equations (37) for the
-    !! partial rates of change of the independent speeds, Jv(:,r) + gamma_r Jv(:,k)
-    !! (eq. (31)), with gamma_r = -gradg(r)/gradg(k); row k is the twice-differentiated
-    !! constraint gradg . qddot + gconv = 0.  k = `dependent`, or the largest |gradg| when
-    !! absent.  The factors stay in eo (for the Jacobian).
-    subroutine solve_eq38(jv, cv, jw, cw, omega, in, gradg, gconv, eo, stat, dependent)
-        real(dp), intent(in) :: jv(3, 5), cv(3), jw(3, 5), cw(3), omega(3), in(3, 3)
+    !! partial rates of change of the independent speeds, Jv(:,r) + gamma_r Jv(:,k) (eq. (31)),
+    !! with gamma_r = -gradg(r)/gradg(k); row k is the twice-differentiated constraint
+    !! gradg . qddot + gconv = 0.  k = `dependent`, or the largest |gradg| when absent.  The
+    !! system is solved through its structure (constrained_solve); the factor stays in eo
+    !! (for the Jacobian).
+    subroutine solve_eq38(jv, cv, wb, cwb, omb, inertia, gradg, gconv, eo, stat, dependent)
+        real(dp), intent(in) :: jv(3, 5), cv(3)         !! R*: partial velocities, a at qddot = 0
+        real(dp), intent(in) :: wb(3, 5), cwb(3), omb(3)    !! the same for the rotation, and
+                                                            !! omega, in principal axes
+        real(dp), intent(in) :: inertia(3)              !! principal moments
         real(dp), intent(in) :: gradg(5), gconv
         type(eom_t), intent(inout) :: eo
         type(status_t), intent(out) :: stat
         integer, intent(in), optional :: dependent
-        real(dp) :: f(5), force(3), torque(3)
-        integer :: k, r
+        real(dp) :: jvi(3, 4), wbi(3, 4), u(4), force(3), torque(3), t0
+        integer :: k, r, a, ia
         eo%qdd = 0.0_dp
-        call generalized_inertia(jv, jw, in, eo%lu)
-        ! resultant force on R* (gravity and -m a at qddot = 0) and torque on the body (the
-        ! inertia torque at qddot = 0); active forces and torques are added here
-        force = -cv
-        force(3) = -(cv(3) + 1.0_dp)            ! g = 1
-        torque = inertia_torque(in, cw, omega)
-        call project(jv, jw, force, torque, f)
         if (present(dependent)) then
             k = dependent
         else
-            k = maxloc(abs(gradg), 1)
+            k = 1
+            do r = 2, 5
+                if (abs(gradg(r)) > abs(gradg(k))) k = r
+            end do
         end if
         eo%k = k
         if (.not. (abs(gradg(k)) > 0.0_dp)) then
             call set_error(stat, ERR_MODEL, 'constraint gradient vanishes (beta = 0)')
             return
         end if
-        eo%gam = 0.0_dp
+        ! the constraint row: qddot_k = t0 + sum_r gamma_r qddot_r
+        t0 = -gconv/gradg(k)
+        a = 0
         do r = 1, 5
-            if (r == k) cycle
-            eo%gam(r) = -gradg(r)/gradg(k)
-            eo%lu(r, :) = eo%lu(r, :) + eo%gam(r)*eo%lu(k, :)
-            f(r) = f(r) + eo%gam(r)*f(k)
+            if (r == k) then
+                eo%gam(r) = 0.0_dp
+            else
+                a = a + 1
+                eo%ind(a) = r
+                eo%gam(r) = -gradg(r)/gradg(k)
+                ! partial velocities of the independent speeds, eq. (31)
+                jvi(:, a) = jv(:, r) + eo%gam(r)*jv(:, k)
+                wbi(:, a) = wb(:, r) + eo%gam(r)*wb(:, k)
+            end if
         end do
-        eo%lu(k, :) = gradg
-        f(k) = -gconv
-        call la_small_factor(5, eo%lu, eo%ipiv, stat)
+        ! Kane's equations (37) for them: the resultant force on R* (gravity and -m a at the
+        ! independent qddot = 0, where qddot_k = t0) and torque on the body (the inertia
+        ! torque there); active forces and torques are added here
+        force = -(cv + t0*jv(:, k))
+        force(3) = force(3) - 1.0_dp            ! g = 1
+        torque = inertia_torque(inertia, cwb + t0*wb(:, k), omb)
+        call project(4, jvi, wbi, force, torque, u)
+        call generalized_inertia(4, jvi, wbi, inertia, eo%chol)
+        call la_small_chol(4, eo%chol, stat)
         if (stat%code /= 0) then
             call set_error(stat, ERR_NUMERIC, 'eq. (38): '//stat%msg)
             return
         end if
-        eo%qdd = f
-        call la_small_solve(5, eo%lu, eo%ipiv, eo%qdd)
+        call la_small_chol_solve(4, eo%chol, u)
+        eo%qdd(k) = t0
+        do a = 1, 4
+            ia = eo%ind(a)
+            eo%qdd(ia) = u(a)
+            eo%qdd(k) = eo%qdd(k) + eo%gam(ia)*u(a)
+        end do
     end subroutine solve_eq38
+
+    !> The solution x of eq. (38)'s structure for the right-hand side (e, c): M x = e +
+    !! gradg mu (mu free), gradg . x = c.  With x = T u + t0 e_k, t0 = c/gradg(k), T = [I; gamma]
+    !! (eq. (31)): (T^T M T) u = T^T (e - t0 M e_k), by the Cholesky factor in eo (eo%mk = M e_k
+    !! set by the caller).  (The rows T^T M are those of P in eq. (38).)
+    pure subroutine constrained_solve(eo, e, c, x)
+        type(eom_t), intent(in) :: eo           !! factored system (solve_eq38)
+        real(dp), intent(in) :: e(5), c         !! Kane's right-hand side; the constraint's
+        real(dp), intent(out) :: x(5)
+        real(dp) :: u(4), t0
+        integer :: a, ia
+        t0 = c/eo%gradg(eo%k)
+        do a = 1, 4
+            ia = eo%ind(a)
+            u(a) = (e(ia) + eo%gam(ia)*e(eo%k)) - t0*(eo%mk(ia) + eo%gam(ia)*eo%mk(eo%k))
+        end do
+        call la_small_chol_solve(4, eo%chol, u)
+        x(eo%k) = t0
+        do a = 1, 4
+            ia = eo%ind(a)
+            x(ia) = u(a)
+            x(eo%k) = x(eo%k) + eo%gam(ia)*u(a)
+        end do
+    end subroutine constrained_solve
 
     !> Accelerations in the regular chart: qddot = (thddot1, sigma1'', sigma2'', thddot4, thddot5).
     subroutine chart_accelerations(p, y, qdd, stat)
@@ -333,21 +396,22 @@ contains
     end subroutine chart_accelerations
 
     !> Kinematics and eq. (38) at a chart state (ERR_MODEL when the chart is not regular).
-    subroutine chart_solve(p, y, k, eo, stat)
+    subroutine chart_solve(p, y, k, eo, stat, sc_lambda)
         type(pendulum_t), intent(in) :: p
         real(dp), intent(in) :: y(:)
         type(chart_kin_t), intent(out) :: k
         type(eom_t), intent(out) :: eo
         type(status_t), intent(out) :: stat
+        real(dp), intent(in), optional :: sc_lambda(2)  !! sin, cos of p%lambda (body_pose)
         real(dp) :: gconv
         eo%qdd = 0.0_dp
         if (.not. chart_regular(y)) then
             call set_error(stat, ERR_MODEL, 'cable BC has swung up to the horizontal (theta2 = 90 deg)')
             return
         end if
-        call chart_kinematics(p, y, k)
+        call chart_kinematics(p, y, k, sc_lambda)
         call constraint_terms(p, y, k, eo%gradg, eo%vd, gconv)
-        call solve_eq38(k%jv, k%cv, k%jw, k%cw, k%omega, k%inert, eo%gradg, gconv, eo, stat)
+        call solve_eq38(k%jv, k%cv, k%wb, k%cwb, k%omb, p%inertia, eo%gradg, gconv, eo, stat)
     end subroutine chart_solve
 
     !> The chart is regular while the cable BC hangs below the horizontal.
@@ -369,7 +433,7 @@ contains
         type(status_t), intent(out) :: stat     !! as chart_accelerations
         type(chart_kin_t) :: k, dk
         type(eom_t) :: eo
-        real(dp) :: dy(NSTATE), a(3), alpha(3), res(5), tq(3), mu
+        real(dp) :: dy(NSTATE), a(3), alpha(3), res(5), tq(3), mu, iwk(3)
         integer :: j
         z = 0.0_dp
         call chart_solve(p, y, k, eo, stat)
@@ -381,45 +445,48 @@ contains
         ! the solution's accelerations, the residual of the unconstrained Kane's equations
         ! (R = f - M qddot, equal to gradg mu at the solution) and the multiplier mu
         a = matmul(k%jv, qdd) + k%cv
-        alpha = matmul(k%jw, qdd) + k%cw
-        tq = inertia_torque(k%inert, alpha, k%omega)
-        call project(k%jv, k%jw, -(a + [0.0_dp, 0.0_dp, 1.0_dp]), tq, res)
+        alpha = matmul(k%wb, qdd) + k%cwb
+        tq = inertia_torque(p%inertia, alpha, k%omb)
+        call project(5, k%jv, k%wb, -(a + [0.0_dp, 0.0_dp, 1.0_dp]), tq, res)
         mu = res(eo%k)/eo%gradg(eo%k)
+        ! column k of the generalized inertia M, for constrained_solve
+        iwk = p%inertia*k%wb(:, eo%k)
+        do j = 1, 5
+            eo%mk(j) = dot_product(k%jv(:, j), k%jv(:, eo%k)) + dot_product(k%wb(:, j), iwk)
+        end do
         do j = 1, NSTATE
             dy = 0.0_dp
             dy(j) = 1.0_dp
             call chart_kinematics_tangent(p, y, k, dy, dk)
-            call eom_tangent(p, y, k, eo, a, alpha, tq, mu, dy, dk, z(6:10, j))
+            call eom_tangent(p, y, k, eo, a, tq, mu, dy, dk, z(6:10, j))
         end do
     end subroutine chart_jacobian
 
     !> The change of the accelerations along a change dy of the state (kinematics changed by
     !! dk): eq. (38) with the Lagrange multiplier mu of the constraint, M qddot - gradg mu = f,
-    !! gradg . qddot = -gconv, differentiated and eliminated as in solve_eq38, so that
-    !! P dqddot = b with the same P:  b_r = e_r + gamma_r e_k (r /= k), b_k = -(dgconv +
-    !! dgradg . qddot), e = dR - mu dgradg, dR the change of R = f - M qddot at fixed qddot.
-    pure subroutine eom_tangent(p, y, k, eo, a, alpha, tq, mu, dy, dk, dqdd)
+    !! gradg . qddot = -gconv, differentiated: M dqddot - gradg dmu = e, gradg . dqddot =
+    !! -(dgconv + dgradg . qddot), e = dR - mu dgradg, dR the change of R = f - M qddot at fixed
+    !! qddot; solved with the same factor (constrained_solve).
+    pure subroutine eom_tangent(p, y, k, eo, a, tq, mu, dy, dk, dqdd)
         type(pendulum_t), intent(in) :: p
         real(dp), intent(in) :: y(:)
         type(chart_kin_t), intent(in) :: k, dk
         type(eom_t), intent(in) :: eo
-        real(dp), intent(in) :: a(3), alpha(3), tq(3)   !! R*'s and the body's accelerations,
-                                                        !! inertia torque, at the solution
+        real(dp), intent(in) :: a(3), tq(3)     !! R*'s acceleration and the inertia torque
+                                                !! (in principal axes) at the solution
         real(dp), intent(in) :: mu                      !! the constraint's multiplier
         real(dp), intent(in) :: dy(:)
         real(dp), intent(out) :: dqdd(5)
-        real(dp) :: da(3), dalpha(3), dtq(3), iw(3), diw(3), e1(5), e2(5), dgradg(5), dvd(3)
+        real(dp) :: da(3), dalpha(3), dtq(3), e1(5), e2(5), dgradg(5), dvd(3)
         real(dp) :: dgconv
-        integer :: j, r
-        associate (qdd => eo%qdd, in => k%inert, din => dk%inert, w => k%omega, dw => dk%omega)
-            ! Kane's equations: R = Jv^T (-(a + g n3)) + Jw^T T
+        integer :: j
+        associate (qdd => eo%qdd, in => p%inertia, w => k%omb, dw => dk%omb)
+            ! Kane's equations: R = Jv^T (-(a + g n3)) + Wb^T T, T = -I alpha - w x I w
             da = matmul(dk%jv, qdd) + dk%cv
-            dalpha = matmul(dk%jw, qdd) + dk%cw
-            iw = matmul(in, w)
-            diw = matmul(din, w) + matmul(in, dw)
-            dtq = -(matmul(din, alpha) + matmul(in, dalpha)) - cross(dw, iw) - cross(w, diw)
-            call project(dk%jv, dk%jw, -(a + [0.0_dp, 0.0_dp, 1.0_dp]), tq, e1)
-            call project(k%jv, k%jw, -da, dtq, e2)
+            dalpha = matmul(dk%wb, qdd) + dk%cwb
+            dtq = -in*dalpha - cross(dw, in*w) - cross(w, in*dw)
+            call project(5, dk%jv, dk%wb, -(a + [0.0_dp, 0.0_dp, 1.0_dp]), tq, e1)
+            call project(5, k%jv, k%wb, -da, dtq, e2)
             ! the constraint
             do j = 1, 5
                 dgradg(j) = 2.0_dp*(dot_product(dk%d, k%jd(:, j)) + dot_product(k%d, dk%jd(:, j)))
@@ -433,13 +500,8 @@ contains
                          + 2.0_dp*p%stab_rate**2*dot_product(k%d, dk%d)
             end if
             e1 = e1 + e2 - mu*dgradg
-            do r = 1, 5
-                if (r == eo%k) cycle
-                dqdd(r) = e1(r) + eo%gam(r)*e1(eo%k)
-            end do
-            dqdd(eo%k) = -(dgconv + dot_product(dgradg, qdd))
+            call constrained_solve(eo, e1, -(dgconv + dot_product(dgradg, qdd)), dqdd)
         end associate
-        call la_small_solve(5, eo%lu, eo%ipiv, dqdd)
     end subroutine eom_tangent
 
     !> Accelerations thddot_1..5 from eq. (38) in the paper's own coordinates, theta_5
@@ -452,7 +514,7 @@ contains
         type(pose_t) :: ps
         type(eom_t) :: eo
         real(dp) :: n(3, 3), jv(3, 5), cv(3), jw(3, 5), cw(3), omega(3), jd(3, 5), cd(3)
-        real(dp) :: in(3, 3), gradg(5), d(3), vd(3), vdc(3, 5), gconv
+        real(dp) :: b(3, 3), gradg(5), d(3), vd(3), vdc(3, 5), gconv
         ps = pose_of(th, p%lambda)
         call frame(ps, n)
         call v_partials(p, ps, jv)
@@ -472,11 +534,12 @@ contains
                  + [-c5*s4*(thd(4)**2 + thd(5)**2) - 2.0_dp*s5*c4*thd(4)*thd(5), &
                     -c5*c4*(thd(4)**2 + thd(5)**2) + 2.0_dp*s5*s4*thd(4)*thd(5), -s5*thd(5)**2]
         end associate
-        in = inertia_dyadic(body_axes(p, n), p%inertia)
+        b = body_axes(p, n)
         gradg = 2.0_dp*matmul(d, jd)
         vd = matmul(jd, thd)
         gconv = 2.0_dp*(dot_product(vd, vd) + dot_product(d, cd))
-        call solve_eq38(jv, cv, jw, cw, omega, in, gradg, gconv, eo, stat, dependent=5)
+        call solve_eq38(jv, cv, matmul(b, jw), matmul(b, cw), matmul(b, omega), p%inertia, &
+                        gradg, gconv, eo, stat, dependent=5)
         thdd = eo%qdd
     end subroutine paper_accelerations
 
@@ -539,18 +602,18 @@ contains
         real(dp), intent(in) :: y(10)           !! chart state
         type(chart_kin_t) :: k
         call chart_kinematics(p, y, k)
-        en = energy_from(y, k)
+        en = energy_from(p, y, k)
     end function chart_energy
 
     !> Kinetic + potential energy from the kinematics k of state y.
-    pure real(dp) function energy_from(y, k) result(en)
+    pure real(dp) function energy_from(p, y, k) result(en)
+        type(pendulum_t), intent(in) :: p
         real(dp), intent(in) :: y(10)
         type(chart_kin_t), intent(in) :: k
         real(dp) :: v(3), rs(3)
         v = matmul(k%jv, y(6:10))
         rs = k%c + k%rho
-        en = 0.5_dp*dot_product(v, v) + 0.5_dp*dot_product(k%omega, matmul(k%inert, k%omega)) &
-             + rs(3)
+        en = 0.5_dp*dot_product(v, v) + 0.5_dp*sum(k%omb*(p%inertia*k%omb)) + rs(3)
     end function energy_from
 
     !> The constraint eq. (2) and its rate at a chart state: g = |AD|^2 - L'^2, gdot = dg/dtau.
@@ -588,18 +651,18 @@ contains
         call chart_kinematics(p, y, k)
         if (want%accelerations) then
             call constraint_terms(p, y, k, eo%gradg, eo%vd, gconv)
-            call solve_eq38(k%jv, k%cv, k%jw, k%cw, k%omega, k%inert, eo%gradg, gconv, eo, stat)
+            call solve_eq38(k%jv, k%cv, k%wb, k%cwb, k%omb, p%inertia, eo%gradg, gconv, eo, stat)
             if (stat%code /= 0) return
             mo%qdd = eo%qdd
             mo%astar = matmul(k%jv, mo%qdd) + k%cv
             mo%alpha = matmul(k%jw, mo%qdd) + k%cw
             call cable_tensions(y, k, mo%astar, mo%t_bc, mo%t_ad)
         end if
-        mo%frame = body_axes(p, k%n)
+        mo%frame = k%b
         mo%rstar = k%c + k%rho
         mo%vstar = matmul(k%jv, y(6:10))
         mo%omega = k%omega
-        if (want%energy) mo%energy = energy_from(y, k)
+        if (want%energy) mo%energy = energy_from(p, y, k)
         if (want%residual) mo%residual = norm2(k%d) - p%big_lp
         if (want%sway) then
             ! side-sway: O = (0, -B/2, 0); E below the midpoint of CD

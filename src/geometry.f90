@@ -56,13 +56,20 @@ contains
 
     !> The pose of the body alone (theta_1, theta_4, theta_5 and lambda; theta_2 = theta_3 = 0):
     !! what the regular chart needs, where the cable's direction is not given by angles.
-    pure function body_pose(th1, th4, th5, lambda) result(ps)
+    !! sc_lambda, when present, holds sin and cos of lambda already computed (they depend only
+    !! on the pendulum: an integration computes them once, see bifilar_model).
+    pure function body_pose(th1, th4, th5, lambda, sc_lambda) result(ps)
         real(dp), intent(in) :: th1, th4, th5   !! theta_1, theta_4, theta_5 (rad)
         real(dp), intent(in) :: lambda          !! lambda of eq. (21) (rad)
+        real(dp), intent(in), optional :: sc_lambda(2)  !! sin(lambda), cos(lambda)
         type(pose_t) :: ps
         ps%s1 = sin(th1); ps%c1 = cos(th1); ps%s4 = sin(th4); ps%c4 = cos(th4)
         ps%s5 = sin(th5); ps%c5 = cos(th5)
-        ps%s_lambda = sin(lambda); ps%c_lambda = cos(lambda)
+        if (present(sc_lambda)) then
+            ps%s_lambda = sc_lambda(1); ps%c_lambda = sc_lambda(2)
+        else
+            ps%s_lambda = sin(lambda); ps%c_lambda = cos(lambda)
+        end if
     end function body_pose
 
     !> Direction cosines n_ij of eq. (8) from a pose: ntilde_i = sum_j n(i,j) n_j.
@@ -126,7 +133,10 @@ contains
         type(pendulum_t), intent(in) :: p   !! scaled parameters (btilde)
         real(dp), intent(in) :: n(3, 3)     !! direction cosines of eq. (8)
         real(dp) :: b(3, 3)
-        b = matmul(p%btilde, n)
+        integer :: j
+        do j = 1, 3
+            b(:, j) = (p%btilde(:, 1)*n(1, j) + p%btilde(:, 2)*n(2, j)) + p%btilde(:, 3)*n(3, j)
+        end do
     end function body_axes
 
     !> Unit vector along BC from its horizontal components sigma = s2 (c3, s3):

@@ -1,18 +1,17 @@
-!> Checked wrappers around the few LAPACK routines bifilar uses, and a written-out LU for
-!! the smallest systems.
+!> Checked wrappers around the few LAPACK routines bifilar uses, and a written-out Cholesky
+!! factorisation for the smallest symmetric positive definite systems.
 !!
 !! Each wrapper checks the shapes of its arguments, calls LAPACK through an explicit
 !! interface, and maps INFO to a status_t with a message naming the routine and the cause.
 !! No wrapper stops the program.
 !!
-!! Systems of order n <= SMALL_N (the 5 x 5 system of eq. (38), solved at every right-hand
-!! side) are factored by la_small_factor / la_small_solve: LAPACK's own unblocked algorithm
-!! (DGETF2: partial pivoting on the first largest |a_ij| of the column, the column below
-!! the pivot scaled by the pivot's reciprocal, rank-1 update; DGETRS: row interchanges,
-!! unit lower then upper triangular solve by columns) written out, with the same operations
-!! in the same order, so it gives LAPACK's results, without the call overhead (several
-!! calls into reference BLAS, a heap-allocated pivot array) that costs more than the
-!! arithmetic at n = 5.  Larger systems go to LAPACK.
+!! Symmetric positive definite systems of order n <= SMALL_N (the 4 x 4 system of the
+!! independent accelerations of eq. (38), solved at every right-hand side) are factored by
+!! la_small_chol / la_small_chol_solve: LAPACK's unblocked Cholesky algorithm (DPOTF2, lower:
+!! a_jj = sqrt(a_jj - sum_k<j l_jk^2), l_ij = (a_ij - sum_k<j l_ik l_jk)/l_jj; DPOTRS: forward
+!! then backward substitution) written out, without the call overhead (calls into reference
+!! BLAS for a few dozen operations) that costs more than the arithmetic at n = 4.  Larger
+!! systems go to LAPACK.
 module lapack_wrap
     use kinds, only: dp
     use status, only: status_t, set_error, ERR_NUMERIC
@@ -20,9 +19,9 @@ module lapack_wrap
     private
 
     public :: la_solve, la_lu_factor, la_lu_solve, la_lu_solve_many, la_eig, la_geig
-    public :: la_small_factor, la_small_solve
+    public :: la_small_chol, la_small_chol_solve
 
-    integer, parameter, public :: SMALL_N = 8   !! largest order la_solve factors itself
+    integer, parameter, public :: SMALL_N = 8   !! largest order of la_small_chol
 
     interface
         subroutine dgetf2(m, n, a, lda, ipiv, info)
@@ -68,10 +67,9 @@ module lapack_wrap
 
 contains
 
-    !> Solve the small square system A x = b in place: LU with partial pivoting, for
-    !! n <= SMALL_N written out (la_small_factor, la_small_solve), else by LAPACK's unblocked
-    !! DGETF2 (for n of a few, the blocked recursive DGETRF/DGESV costs several times more),
-    !! then DGETRS.
+    !> Solve the small square system A x = b in place: LU with partial pivoting by LAPACK's
+    !! unblocked DGETF2 (for n of a few, the blocked recursive DGETRF/DGESV costs several
+    !! times more), then DGETRS.
     !!
     !! a   [in,out] real(dp)(n,n): the matrix; overwritten by its LU factors.
     !! b   [in,out] real(dp)(n):   right-hand side on entry, solution x on return.
@@ -89,11 +87,6 @@ contains
             call set_error(stat, ERR_NUMERIC, 'la_solve: matrix and right-hand side shapes disagree')
             return
         end if
-        if (n <= SMALL_N) then
-            call la_small_factor(n, a, ipiv, stat)
-            if (stat%code == 0) call la_small_solve(n, a, ipiv, b)
-            return
-        end if
         call dgetf2(n, n, a, n, ipiv, info)
         if (info == 0) call dgetrs('N', n, 1, a, n, ipiv, b, n, info)
         if (info /= 0) then
@@ -104,111 +97,80 @@ contains
         end if
     end subroutine la_solve
 
-    !> LU factorisation with partial pivoting of a small square matrix (n <= SMALL_N; no
-    !! shape checks beyond that: the caller owns the shapes), DGETF2's algorithm written out
-    !! (see the module header): P A = L U, L unit lower triangular, stored like LAPACK's.
-    !! Explicit shapes, so that a constant n lets the compiler unroll it.
+    !> Cholesky factorisation A = L L^T of a small symmetric positive definite matrix,
+    !! DPOTF2's algorithm written out (see the module header); only the lower triangle of a
+    !! is read.  Explicit shapes, so that a constant n lets the compiler unroll it.
     !!
     !! n    [in]     integer:       order, 1 <= n <= SMALL_N.
-    !! a    [in,out] real(dp)(n,n): the matrix; overwritten by L (below the diagonal) and U.
-    !! ipiv [out]    integer(n):    row i was interchanged with row ipiv(i).
-    !! stat [out]: ERR_NUMERIC when U(j,j) is exactly zero (A singular; as DGETF2's INFO = j
-    !!             the factorisation is completed) or n is out of range.
-    pure subroutine la_small_factor(n, a, ipiv, stat)
+    !! a    [in,out] real(dp)(n,n): the matrix (lower triangle); overwritten by L (lower
+    !!                              triangle; the strict upper triangle is not referenced).
+    !! stat [out]: ERR_NUMERIC when n is out of range or A is not positive definite (as
+    !!             DPOTF2's INFO = j > 0: the leading minor of order j is not positive).
+    pure subroutine la_small_chol(n, a, stat)
         integer, intent(in) :: n
         real(dp), intent(inout) :: a(n, n)
-        integer, intent(out) :: ipiv(n)
         type(status_t), intent(out) :: stat
-        real(dp), parameter :: SFMIN = tiny(1.0_dp)
-        real(dp) :: amax, t, r
-        integer :: i, j, k, jp, info
-        character(len=80) :: buf
+        real(dp) :: ajj
+        integer :: i, j, k
+        character(len=100) :: buf
         if (n > SMALL_N .or. n < 1) then
-            ipiv = 0
-            call set_error(stat, ERR_NUMERIC, 'la_small_factor: order n out of 1 ... SMALL_N')
+            call set_error(stat, ERR_NUMERIC, 'la_small_chol: order n out of 1 ... SMALL_N')
             return
         end if
-        info = 0
+        !GCC$ unroll 8
         do j = 1, n
-            ! pivot: the first largest |a(i,j)|, i >= j (IDAMAX)
-            jp = j
-            amax = abs(a(j, j))
+            ajj = a(j, j)
+            !GCC$ unroll 8
+            do k = 1, j - 1
+                ajj = ajj - a(j, k)*a(j, k)
+            end do
+            if (.not. (ajj > 0.0_dp)) then
+                write (buf, '(a,i0,a)') 'la_small_chol: matrix not positive definite (leading '// &
+                    'minor of order ', j, ')'
+                call set_error(stat, ERR_NUMERIC, trim(buf))
+                return
+            end if
+            ajj = sqrt(ajj)
+            a(j, j) = ajj
+            !GCC$ unroll 8
             do i = j + 1, n
-                if (abs(a(i, j)) > amax) then
-                    jp = i
-                    amax = abs(a(i, j))
-                end if
-            end do
-            ipiv(j) = jp
-            if (a(jp, j) /= 0.0_dp) then
-                if (jp /= j) then
-                    do k = 1, n
-                        t = a(j, k)
-                        a(j, k) = a(jp, k)
-                        a(jp, k) = t
-                    end do
-                end if
-                if (abs(a(j, j)) >= SFMIN) then
-                    r = 1.0_dp/a(j, j)
-                    do i = j + 1, n
-                        a(i, j) = r*a(i, j)
-                    end do
-                else
-                    do i = j + 1, n
-                        a(i, j) = a(i, j)/a(j, j)
-                    end do
-                end if
-            else if (info == 0) then
-                info = j
-            end if
-            ! rank-1 update of the trailing matrix (DGER with alpha = -1)
-            do k = j + 1, n
-                t = -a(j, k)
-                do i = j + 1, n
-                    a(i, k) = a(i, k) + a(i, j)*t
+                !GCC$ unroll 8
+                do k = 1, j - 1
+                    a(i, j) = a(i, j) - a(i, k)*a(j, k)
                 end do
+                a(i, j) = a(i, j)/ajj
             end do
         end do
-        if (info /= 0) then
-            write (buf, '(a,i0)') 'la_small_factor: singular matrix, U(i,i) = 0 at i = ', info
-            call set_error(stat, ERR_NUMERIC, trim(buf))
-        end if
-    end subroutine la_small_factor
+    end subroutine la_small_chol
 
-    !> Solve A x = b with the factors from la_small_factor, in place (DGETRS's algorithm).
+    !> Solve A x = b in place with the factor L from la_small_chol (DPOTRS's algorithm:
+    !! L y = b, then L^T x = y).
     !!
-    !! n    [in]     integer:       order.
-    !! lu   [in]     real(dp)(n,n): factors from la_small_factor (non-singular).
-    !! ipiv [in]     integer(n):    its pivots.
-    !! b    [in,out] real(dp)(n):   right-hand side on entry, solution on return.
-    pure subroutine la_small_solve(n, lu, ipiv, b)
+    !! n [in]     integer:       order.
+    !! l [in]     real(dp)(n,n): the factor from la_small_chol (lower triangle).
+    !! b [in,out] real(dp)(n):   right-hand side on entry, solution on return.
+    pure subroutine la_small_chol_solve(n, l, b)
         integer, intent(in) :: n
-        real(dp), intent(in) :: lu(n, n)
-        integer, intent(in) :: ipiv(n)
+        real(dp), intent(in) :: l(n, n)
         real(dp), intent(inout) :: b(n)
-        real(dp) :: t
         integer :: i, k
+        !GCC$ unroll 8
         do i = 1, n
-            if (ipiv(i) /= i) then
-                t = b(i)
-                b(i) = b(ipiv(i))
-                b(ipiv(i)) = t
-            end if
-        end do
-        do k = 1, n
-            t = b(k)
-            do i = k + 1, n
-                b(i) = b(i) - t*lu(i, k)
+            !GCC$ unroll 8
+            do k = 1, i - 1
+                b(i) = b(i) - l(i, k)*b(k)
             end do
+            b(i) = b(i)/l(i, i)
         end do
-        do k = n, 1, -1
-            b(k) = b(k)/lu(k, k)
-            t = b(k)
-            do i = 1, k - 1
-                b(i) = b(i) - t*lu(i, k)
+        !GCC$ unroll 8
+        do i = n, 1, -1
+            !GCC$ unroll 8
+            do k = i + 1, n
+                b(i) = b(i) - l(k, i)*b(k)
             end do
+            b(i) = b(i)/l(i, i)
         end do
-    end subroutine la_small_solve
+    end subroutine la_small_chol_solve
 
     !> LU factorisation with partial pivoting of a square matrix (LAPACK DGETRF).
     !!
