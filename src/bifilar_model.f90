@@ -112,24 +112,33 @@ contains
         type(chart_kin_t) :: k
         type(eom_t) :: eo
         if (.false.) ydot(1) = t
-        if (sys%p%lambda /= sys%lambda_key) then
-            sys%sc_lambda = [sin(sys%p%lambda), cos(sys%p%lambda)]
-            sys%lambda_key = sys%p%lambda
-        end if
+        call refresh_lambda(sys)
         call chart_solve(sys%p, y, k, eo, stat, sys%sc_lambda)
         ydot(1:5) = y(6:10)
         ydot(6:10) = eo%qdd
     end subroutine bifilar_rhs
 
+    !> sin and cos of sys%p%lambda, computed again only when lambda changed.
+    pure subroutine refresh_lambda(sys)
+        class(bifilar_t), intent(inout) :: sys
+        if (sys%p%lambda /= sys%lambda_key) then
+            sys%sc_lambda = [sin(sys%p%lambda), cos(sys%p%lambda)]
+            sys%lambda_key = sys%p%lambda
+        end if
+    end subroutine refresh_lambda
+
     !> The kinematics at a chart state: the pose, C, D, the direction cosines, the cable
     !! direction e and the partial velocities / convective accelerations of R*, D and the
     !! rotation (eqs. (8), (14), (19), (24), (27) with theta_2 = theta_3 = 0 in the body's
     !! terms; the cable's columns from e(sigma)), the rotation also along the principal axes.
-    pure subroutine chart_kinematics(p, y, k, sc_lambda)
+    pure subroutine chart_kinematics(p, y, k, sc_lambda, dynamics)
         type(pendulum_t), intent(in) :: p
         real(dp), intent(in) :: y(:)
         type(chart_kin_t), intent(out) :: k
         real(dp), intent(in), optional :: sc_lambda(2)  !! sin, cos of p%lambda (body_pose)
+        logical, intent(in), optional :: dynamics       !! .false.: only the pose, C, D, e and
+                                                        !! R*'s motion (what the tensions need);
+                                                        !! default .true.: everything
         real(dp) :: sdsd, ssd, iz
         associate (s4 => k%ps%s4, c4 => k%ps%c4, s5 => k%ps%s5, c5 => k%ps%c5, &
                    d4 => y(9), d5 => y(10))
@@ -157,6 +166,9 @@ contains
             k%cv = p%big_l*k%econv + cross(k%cw, k%rho) + cross(k%omega, cross(k%omega, k%rho))
             ! D = C + (c5 s4, c5 c4, s5), eq. (1)
             k%d = k%c + [c5*s4, c5*c4, s5]
+            if (present(dynamics)) then
+                if (.not. dynamics) return
+            end if
             k%jd(:, 1) = 0.0_dp
             k%jd(:, 2:3) = k%jv(:, 2:3)
             k%jd(:, 4) = [c5*c4, -c5*s4, 0.0_dp]
@@ -677,8 +689,8 @@ contains
     !! integrator holds it at the end of a step: Newton's law for the body with R*'s
     !! acceleration a = Jv qddot + cv from qddot = ydot(6:10), without solving eq. (38)
     !! again.  For the validity check at every step (a slack cable).
-    subroutine step_tensions(p, y, ydot, t_bc, t_ad, stat)
-        type(pendulum_t), intent(in) :: p       !! scaled parameters
+    subroutine step_tensions(sys, y, ydot, t_bc, t_ad, stat)
+        class(bifilar_t), intent(inout) :: sys  !! the pendulum
         real(dp), intent(in) :: y(NSTATE)       !! chart state
         real(dp), intent(in) :: ydot(NSTATE)    !! its derivative
         real(dp), intent(out) :: t_bc, t_ad     !! tensions of BC and AD over m g
@@ -690,7 +702,8 @@ contains
             call set_error(stat, ERR_MODEL, 'cable BC has swung up to the horizontal (theta2 = 90 deg)')
             return
         end if
-        call chart_kinematics(p, y, k)
+        call refresh_lambda(sys)
+        call chart_kinematics(sys%p, y, k, sys%sc_lambda, dynamics=.false.)
         call cable_tensions(y, k, matmul(k%jv, ydot(6:10)) + k%cv, t_bc, t_ad)
     end subroutine step_tensions
 

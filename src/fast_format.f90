@@ -75,18 +75,16 @@ contains
             e = 0
         else
             ! decimal exponent e: 10^e <= |x| < 10^(e+1); the guess from the binary exponent
-            ! is e or e - 1
+            ! is e or e - 1.  With the guess, n > 10^(d+1) shows it was e - 1; n = 10^(d+1)
+            ! (|x| 10^q within 1/2 of it) gives the same text either way: 1.000...E(e+1).
             e = floor((k + 52)*LOG10_2)
             q = d - e
-            call scaled(m, k, q, .false., n, ok)
-            if (ok .and. n >= POW10(d + 1)) then
+            call scaled(m, k, q, n, ok)
+            if (ok .and. n > POW10(d + 1)) then
                 e = e + 1
                 q = q - 1
-            else if (ok .and. n < POW10(d)) then
-                e = e - 1
-                q = q + 1
+                call scaled(m, k, q, n, ok)
             end if
-            if (ok) call scaled(m, k, q, .true., n, ok)
             if (.not. ok) then
                 call library_es(x, d, field)
                 return
@@ -136,7 +134,7 @@ contains
         n = 0
         ! |x| < 0.3 10^-d rounds to zero; above it the product's shift s is at most 127
         if (abs(x) >= 0.3_dp*10.0_dp**(-d)) then
-            call scaled(m, k, d, .true., n, ok)
+            call scaled(m, k, d, n, ok)
             if (.not. ok) then
                 call library_f(x, d, field)
                 return
@@ -191,14 +189,12 @@ contains
         end if
     end subroutine split
 
-    !> n = m 2^k 10^q rounded to the nearest integer, ties to even (round = .true.), or its
-    !! floor up to the table's error (round = .false.: only to choose the decade); ok =
-    !! .false. when the rounding cannot be decided from the table (see the module header),
-    !! or q or the product's shift is out of range (the shift s >= 65 keeps n below 2^61).
-    pure subroutine scaled(m, k, q, round, n, ok)
+    !> n = m 2^k 10^q rounded to the nearest integer, ties to even; ok = .false. when the
+    !! rounding cannot be decided from the table (see the module header), or q or the
+    !! product's shift is out of range (the shift s >= 65 keeps n below 2^61).
+    pure subroutine scaled(m, k, q, n, ok)
         integer(i8), intent(in) :: m            !! significand, 2^52 <= m < 2^53
         integer, intent(in) :: k, q             !! binary exponent of x, power of ten
-        logical, intent(in) :: round
         integer(i8), intent(out) :: n
         logical, intent(out) :: ok
         integer :: i
@@ -217,7 +213,6 @@ contains
         if (.not. ok) return
         prod = int(m, i16)*P10(q)
         n = int(shiftr(prod, s), i8)
-        if (.not. round) return
         r = prod - shiftl(int(n, i16), s)
         half = shiftl(1_i16, s - 1)
         if (q < 0 .or. q > QEXACT) then
@@ -229,19 +224,27 @@ contains
         if (r > half .or. (r == half .and. btest(n, 0))) n = n + 1
     end subroutine scaled
 
-    !> The nd decimal digits of v >= 0 (leading zeros included) into s(1:nd).
+    !> The nd decimal digits of v >= 0 (leading zeros included) into s(1:nd), two at a time.
     pure subroutine put_digits(v, nd, s)
         integer(i8), intent(in) :: v
         integer, intent(in) :: nd
         character(len=*), intent(out) :: s
+        character(len=*), parameter :: PAIRS = &
+            '00010203040506070809101112131415161718192021222324252627282930313233343536373839'// &
+            '40414243444546474849505152535455565758596061626364656667686970717273747576777879'// &
+            '8081828384858687888990919293949596979899'
         integer(i8) :: t, qq
-        integer :: i
+        integer :: i, j
         t = v
-        do i = nd, 1, -1
-            qq = t/10
-            s(i:i) = achar(48 + int(t - 10*qq))
+        i = nd
+        do while (i > 1)
+            qq = t/100
+            j = 2*int(t - 100*qq)
+            s(i - 1:i) = PAIRS(j + 1:j + 2)
             t = qq
+            i = i - 2
         end do
+        if (i == 1) s(1:1) = achar(48 + int(t))
     end subroutine put_digits
 
     !> The library's ESw.dE3 (internal WRITE).

@@ -1299,6 +1299,13 @@ contains
             return
         end if
         sc = (t - s%tn)/s%h
+        if (sc == 0.0_dp .and. k <= 1) then
+            ! at the end of the step the Horner scheme below reduces to one column (the same
+            ! numbers, without the sums of zero terms): y = yh(:,1), y' = yh(:,2)/h
+            dky = s%yh(:, k + 1)
+            if (k > 0) dky = dky*s%h**(-k)
+            return
+        end if
         ! Horner scheme on the Nordsieck columns, differentiated k times
         ic = 1
         do jj = s%nq + 1 - k, s%nq

@@ -5,16 +5,17 @@
 !! run leaves no partial file behind.
 module simulate
     use kinds, only: dp, deg
-    use status, only: status_t, set_error, ERR_DECK, ERR_MODEL, ERR_NUMERIC
+    use status, only: status_t, set_error, ERR_DECK, ERR_MODEL, ERR_NUMERIC, ERR_IO
     use geometry, only: pendulum_t, raised_angles, solve_theta5, beta_coeffs
-    use bifilar_model, only: bifilar_t, motion_t, chart_state, evaluate, paper_angles, &
-                             chart_positions, NSTATE
+    use bifilar_model, only: bifilar_t, motion_t, motion_parts_t, chart_state, evaluate, &
+                             paper_angles, chart_positions, step_tensions, NSTATE
     use lsoda, only: lsoda_t, lsoda_stats_t, LSODA_ERR_TOO_MUCH_ACCURACY
     use elastic_model, only: elastic_t, elastic_cables_t, elastic_start, elastic_evaluate, &
                              elastic_atol, ELASTIC_NSTATE
     use elastic_solver, only: elastic_solver_t, slack_interval_t
-    use deck, only: deck_t, deck_echo
+    use deck, only: deck_t, deck_echo, OUTPUT_COLUMNS
     use output_io, only: atomic_open, atomic_commit, atomic_abort, write_kv, all_finite
+    use fast_format, only: es_field, f_field
     implicit none
     private
 
@@ -28,6 +29,9 @@ module simulate
         real(dp) :: max_abs_energy_error = 0.0_dp, max_abs_constraint_residual = 0.0_dp
         real(dp) :: min_tension = huge(1.0_dp)
         real(dp) :: tau_reached = 0.0_dp
+        !> which of Q and Q_axis, energy_error, constraint_residual the run computed (&output
+        !! columns): their maxima are in the summary only then
+        logical :: have_sway = .true., have_energy = .true., have_residual = .true.
         !> &integration error_estimate = .true.: largest differences from a rerun at a
         !! tolerance 100 times tighter (angles in rad, Q over b'); -1 when not asked
         real(dp) :: error_estimate_theta = -1.0_dp, error_estimate_q = -1.0_dp
@@ -55,9 +59,13 @@ module simulate
     !! natural length is no longer a cable; raise &cables stiffness).
     real(dp), parameter :: STRAIN_MAX = 1.0_dp
 
-    character(len=*), parameter :: COLUMNS = '# tau theta1 theta2 theta3 theta4 theta5 '// &
-        'theta1_dot theta2_dot theta3_dot theta4_dot theta5_dot Q Q_axis T_BC T_AD '// &
-        'energy_error constraint_residual'
+    !> The .dat columns (deck OUTPUT_COLUMNS, in that order) and the positions of those that
+    !! decide what a row computes.
+    integer, parameter :: NCOL = 17
+    integer, parameter :: COL_Q = 12, COL_Q_AXIS = 13, COL_T_BC = 14, COL_T_AD = 15, &
+        COL_ENERGY = 16, COL_RESIDUAL = 17
+    !> Width of a row: tau (F14.6) and 16 reals (ES24.15E3)
+    integer, parameter :: ROW_WIDTH = 14 + 24*(NCOL - 1)
 
 contains
 
@@ -137,10 +145,12 @@ contains
         type(lsoda_t) :: solver, solver2
         type(lsoda_stats_t) :: st
         type(motion_t) :: mo
+        type(motion_parts_t) :: parts
         real(dp) :: y(NSTATE), ystep(NSTATE), th0(5), tau, e0, th3, t_cpu0
-        real(dp) :: t_prev, y2(NSTATE), t_e0, rt2
+        real(dp) :: t_prev, y2(NSTATE), t_e0, rt2, ydot(NSTATE)
         character(len=:), allocatable :: datpath, sumpath
         integer :: u, k, nout, nstep_row
+        logical :: want(NCOL)
         character(len=300) :: buf
 
         if (trim(d%model) == 'elastic') then
@@ -151,6 +161,16 @@ contains
         if (stat%code /= 0) return
         call start_state(d, sys%p, y, th0, stat)
         if (stat%code /= 0) return
+        ! compute only what the asked columns need (the model checks need only the tensions'
+        ! signs: from the integrator's derivative when T_BC, T_AD are not asked)
+        call column_mask(d, want)
+        parts%accelerations = want(COL_T_BC) .or. want(COL_T_AD)
+        parts%energy = want(COL_ENERGY)
+        parts%residual = want(COL_RESIDUAL)
+        parts%sway = want(COL_Q) .or. want(COL_Q_AXIS)
+        sm%have_sway = parts%sway
+        sm%have_energy = parts%energy
+        sm%have_residual = parts%residual
 
         call open_dat(d, outdir, '', u, datpath, sumpath, stat)
         if (stat%code /= 0) return
@@ -205,7 +225,7 @@ contains
                 nstep_row = nstep_row + 1
                 call solver%dense(st%t_current, 0, ystep, stat)
                 if (stat%code /= 0) exit
-                call check_validity(sys%p, solver, t_prev, st%t_current, ystep, th3, stat)
+                call check_validity(sys, solver, t_prev, st%t_current, ystep, th3, stat)
                 if (stat%code /= 0) exit
                 t_prev = st%t_current
                 cycle
@@ -219,14 +239,23 @@ contains
                 end if
             end if
             nstep_row = 0
-            call evaluate(sys%p, y, th3, mo, stat)
+            call evaluate(sys%p, y, th3, mo, stat, parts)
+            if (stat%code == 0 .and. .not. parts%accelerations) then
+                ! tensions for the model checks only, from the integrator's derivative
+                if (k == 0) then
+                    call sys%rhs(0.0_dp, y, ydot, stat)
+                else
+                    call solver%dense(tau, 1, ydot, stat)
+                end if
+                if (stat%code == 0) call step_tensions(sys, y, ydot, mo%t_bc, mo%t_ad, stat)
+            end if
             if (stat%code /= 0) then
                 call append_tau(stat, tau)
                 exit
             end if
             th3 = mo%th(3)
             call emit_row(u, tau, k, mo, e0, 'the motion left the range the model covers', &
-                          .true., sm, stat)
+                          .true., want, sm, stat)
             if (stat%code /= 0) exit
             if (d%error_estimate .and. k > 0) then
                 call cpu_time(t_e0)
@@ -247,7 +276,7 @@ contains
     end subroutine run_simulation
 
     !> Open OUTDIR/NAME.dat (as NAME.dat.tmp) and write its header: title, units, an optional
-    !! model note, the effective deck, the column line.
+    !! model note, the effective deck, the line of the &output columns.
     subroutine open_dat(d, outdir, note, u, datpath, sumpath, stat)
         type(deck_t), intent(in) :: d           !! the deck
         character(len=*), intent(in) :: outdir  !! output directory
@@ -264,26 +293,60 @@ contains
             'energy over m g b''; angles in rad'
         if (len(note) > 0) write (u, '(a)') note
         call deck_echo(d, u)
-        write (u, '(a)') COLUMNS
+        write (u, '(a)') '# '//trim(d%columns)
     end subroutine open_dat
 
-    !> Write one checked output row and fold it into the run's figures.
-    subroutine record_row(u, row, mo, sm)
+    !> Write one checked output row (the asked columns: tau as F14.6, the others as
+    !! ES24.15E3, by fast_format: the run-time library's text) and fold it into the run's
+    !! figures.
+    subroutine record_row(u, row, want, mo, sm, stat)
         integer, intent(in) :: u                !! the open .dat unit
-        real(dp), intent(in) :: row(17)         !! tau, ..., energy_error, constraint_residual
+        real(dp), intent(in) :: row(NCOL)       !! tau, ..., energy_error, constraint_residual
+        logical, intent(in) :: want(NCOL)       !! the columns written
         type(motion_t), intent(in) :: mo        !! the motion of the row
         type(run_summary_t), intent(inout) :: sm
-        write (u, '(f14.6,16es24.15e3)') row
+        type(status_t), intent(out) :: stat     !! ERR_IO when the row cannot be written
+        character(len=ROW_WIDTH) :: line
+        integer :: j, n, ios
+        character(len=200) :: msg
+        n = 0
+        if (want(1)) then
+            call f_field(row(1), 6, line(1:14))
+            n = 14
+        end if
+        do j = 2, NCOL
+            if (.not. want(j)) cycle
+            call es_field(row(j), 15, line(n + 1:n + 24))
+            n = n + 24
+        end do
+        write (u, '(a)', iostat=ios, iomsg=msg) line(1:n)
+        if (ios /= 0) then
+            call set_error(stat, ERR_IO, 'cannot write a row of the .dat file: '//trim(msg))
+            return
+        end if
         sm%rows = sm%rows + 1
         sm%tau_reached = row(1)
         sm%max_abs_theta1 = max(sm%max_abs_theta1, abs(mo%th(1)))
         sm%max_abs_theta4 = max(sm%max_abs_theta4, abs(mo%th(4)))
         sm%max_q = max(sm%max_q, mo%q_sway)
         sm%max_q_axis = max(sm%max_q_axis, mo%q_axis)
-        sm%max_abs_energy_error = max(sm%max_abs_energy_error, abs(row(16)))
+        sm%max_abs_energy_error = max(sm%max_abs_energy_error, abs(row(COL_ENERGY)))
         sm%max_abs_constraint_residual = max(sm%max_abs_constraint_residual, abs(mo%residual))
         sm%min_tension = min(sm%min_tension, mo%t_bc, mo%t_ad)
     end subroutine record_row
+
+    !> The .dat columns a deck asks for (&output columns), as a mask over OUTPUT_COLUMNS.
+    subroutine column_mask(d, want)
+        type(deck_t), intent(in) :: d           !! the deck
+        logical, intent(out) :: want(NCOL)
+        integer :: j, i1, i2
+        i1 = 1
+        do j = 1, NCOL
+            i2 = index(OUTPUT_COLUMNS(i1:)//' ', ' ') + i1 - 2     ! the j-th name: i1:i2
+            want(j) = index(' '//trim(d%columns)//' ', ' '//OUTPUT_COLUMNS(i1:i2)//' ') > 0
+            i1 = i2 + 2
+        end do
+    end subroutine column_mask
 
     !> ERR_NUMERIC when the integrator has taken MAX_STEPS_PER_ROW steps without reaching
     !! the next row at tau; `remedy` says what to change.
@@ -312,7 +375,7 @@ contains
     !> One output row from the motion at tau (row k; the energy error is against the energy
     !! of row 0, kept in e0): refused (ERR_NUMERIC, `why` in the message) when not finite,
     !! then the paper model's checks when asked (model_checks), then written (record_row).
-    subroutine emit_row(u, tau, k, mo, e0, why, paper_checks, sm, stat)
+    subroutine emit_row(u, tau, k, mo, e0, why, paper_checks, want, sm, stat)
         integer, intent(in) :: u                !! the open .dat unit
         real(dp), intent(in) :: tau             !! time of the row
         integer, intent(in) :: k                !! row number (0: the start)
@@ -320,9 +383,10 @@ contains
         real(dp), intent(inout) :: e0           !! energy at the start (set at k = 0)
         character(len=*), intent(in) :: why     !! what a non-finite row means for the model
         logical, intent(in) :: paper_checks     !! apply model_checks (the paper's model)
+        logical, intent(in) :: want(NCOL)       !! the columns written
         type(run_summary_t), intent(inout) :: sm
         type(status_t), intent(out) :: stat
-        real(dp) :: row(17)
+        real(dp) :: row(NCOL)
         character(len=60) :: buf
         stat%code = 0
         if (k == 0) e0 = mo%energy
@@ -337,7 +401,7 @@ contains
             call model_checks(mo, tau, stat)
             if (stat%code /= 0) return
         end if
-        call record_row(u, row, mo, sm)
+        call record_row(u, row, want, mo, sm, stat)
     end subroutine emit_row
 
     !> Add one row's differences from the error-estimate rerun (angles, Q) and the CPU time
@@ -398,10 +462,13 @@ contains
         call write_kv(u, 'tau_end', sm%tau_reached)
         call write_kv(u, 'max_abs_theta1', sm%max_abs_theta1)
         call write_kv(u, 'max_abs_theta4', sm%max_abs_theta4)
-        call write_kv(u, 'max_Q', sm%max_q)
-        call write_kv(u, 'max_Q_axis', sm%max_q_axis)
-        call write_kv(u, 'max_abs_energy_error', sm%max_abs_energy_error)
-        call write_kv(u, 'max_abs_constraint_residual', sm%max_abs_constraint_residual)
+        if (sm%have_sway) then
+            call write_kv(u, 'max_Q', sm%max_q)
+            call write_kv(u, 'max_Q_axis', sm%max_q_axis)
+        end if
+        if (sm%have_energy) call write_kv(u, 'max_abs_energy_error', sm%max_abs_energy_error)
+        if (sm%have_residual) call write_kv(u, 'max_abs_constraint_residual', &
+                                            sm%max_abs_constraint_residual)
         call write_kv(u, 'min_tension', sm%min_tension)
         if (d%error_estimate) then
             call write_kv(u, 'error_estimate_rtol', sm%error_estimate_rtol)
@@ -472,9 +539,11 @@ contains
         real(dp) :: tau, e0, t_cpu0, t_e0, rt2
         character(len=:), allocatable :: datpath, sumpath
         integer :: u, k, nout, nstep_row
+        logical :: want(NCOL)
         character(len=300) :: buf
 
         sm%elastic = .true.
+        call column_mask(d, want)
         call make_pendulum(d, sys%p, stat)
         if (stat%code /= 0) return
         call start_state(d, sys%p, yc, th0, stat)
@@ -570,7 +639,7 @@ contains
             end if
             th_row = mo%th
             call emit_row(u, tau, k, mo, e0, 'the body''s pose left the range the paper''s '// &
-                          'angles cover (line CD vertical?)', .false., sm, stat)
+                          'angles cover (line CD vertical?)', .false., want, sm, stat)
             if (stat%code /= 0) exit
             if (d%error_estimate .and. k > 0) then
                 call cpu_time(t_e0)
@@ -626,19 +695,21 @@ contains
     end subroutine model_checks
 
     !> Model checks at the end of one internal step; when one fails, the tau where it first
-    !! fails is located in the step (bisection on the dense output) for the diagnostic.
-    subroutine check_validity(p, solver, t0, t1, y1, th3, stat)
-        type(pendulum_t), intent(in) :: p       !! scaled parameters
+    !! fails is located in the step (bisection on the dense output) for the diagnostic.  The
+    !! tensions come from what the step computed: the state and its derivative in the
+    !! integrator's dense output (step_tensions), not from a new solve of eq. (38).
+    subroutine check_validity(sys, solver, t0, t1, y1, th3, stat)
+        type(bifilar_t), intent(inout) :: sys   !! the pendulum
         type(lsoda_t), intent(in) :: solver     !! after the step
         real(dp), intent(in) :: t0, t1          !! previous checked time (valid), step end
         real(dp), intent(in) :: y1(NSTATE)      !! state at t1
         real(dp), intent(in) :: th3             !! theta3 of the last row (branch choice)
         type(status_t), intent(out) :: stat     !! ERR_MODEL (or the evaluation's failure)
-        type(motion_t) :: mo
         type(status_t) :: s2
-        real(dp) :: a, b, m, ym(NSTATE), lo
+        type(motion_t) :: mo
+        real(dp) :: a, b, m, lo
         integer :: it
-        call evaluate(p, y1, th3, mo, stat)
+        call motion_at(t1, mo, stat, .false., y1)
         if (stat%code /= 0) then
             call explain_failure_at(y1, th3, t1, stat)
             return
@@ -655,9 +726,7 @@ contains
         b = t1
         do it = 1, 40
             m = 0.5_dp*(a + b)
-            call solver%dense(m, 0, ym, s2)
-            if (s2%code /= 0) exit
-            call evaluate(p, ym, th3, mo, s2)
+            call motion_at(m, mo, s2, .false.)
             if (s2%code == 0) call model_checks(mo, m, s2)
             if (s2%code == 0) then
                 a = m
@@ -665,10 +734,36 @@ contains
                 b = m
             end if
         end do
-        call solver%dense(b, 0, ym, s2)
-        if (s2%code == 0) call evaluate(p, ym, th3, mo, s2)
+        call motion_at(b, mo, s2, .true.)
         if (s2%code == 0) call model_checks(mo, b, s2)
         if (s2%code == ERR_MODEL) stat = s2
+    contains
+        !> What the model checks read at time t of the step (state y when given, else the
+        !! dense output; the derivative from the dense output): the tensions, theta5 and
+        !! |theta2| (all the paper's angles, branch and sign as the rows', when `angles`).
+        subroutine motion_at(t, mt, st, angles, y)
+            real(dp), intent(in) :: t
+            type(motion_t), intent(out) :: mt
+            type(status_t), intent(out) :: st
+            logical, intent(in) :: angles
+            real(dp), intent(in), optional :: y(NSTATE)
+            real(dp) :: yt(NSTATE), ydt(NSTATE)
+            if (present(y)) then
+                yt = y
+            else
+                call solver%dense(t, 0, yt, st)
+                if (st%code /= 0) return
+            end if
+            call solver%dense(t, 1, ydt, st)
+            if (st%code /= 0) return
+            if (angles) then
+                call paper_angles(yt, th3, mt%th, mt%thd)
+            else
+                mt%th(2) = asin(min(1.0_dp, sqrt(yt(2)**2 + yt(3)**2)))
+                mt%th(5) = yt(5)
+            end if
+            call step_tensions(sys, yt, ydt, mt%t_bc, mt%t_ad, st)
+        end subroutine motion_at
     end subroutine check_validity
 
     !> An integrator failure: when the state reached is where the model's coordinates are
