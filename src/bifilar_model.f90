@@ -38,10 +38,16 @@ module bifilar_model
     !> The pendulum as an ODE system for the integrator.
     type, extends(ode_system_t), public :: bifilar_t
         type(pendulum_t) :: p                   !! scaled parameters
+        !> .true.: each right-hand side also keeps the state it evaluated and the cable
+        !! tensions there (last_evaluation), for the validity check at the end of each step
+        logical :: keep_tensions = .false.
         !> sin and cos of p%lambda, computed when p%lambda is first seen (lambda_key)
         real(dp), private :: lambda_key = huge(1.0_dp), sc_lambda(2) = 0.0_dp
+        logical, private :: have_last = .false.
+        real(dp), private :: last_y(NSTATE) = 0.0_dp, last_t(2) = 0.0_dp
     contains
         procedure :: rhs => bifilar_rhs
+        procedure :: last_evaluation
     end type bifilar_t
 
     !> Everything about the motion at one instant (scaled units: b' = m = g = 1).
@@ -116,7 +122,28 @@ contains
         call chart_solve(sys%p, y, k, eo, stat, sys%sc_lambda)
         ydot(1:5) = y(6:10)
         ydot(6:10) = eo%qdd
+        if (sys%keep_tensions) then
+            sys%have_last = stat%code == 0
+            if (sys%have_last) then
+                sys%last_y = y(1:NSTATE)
+                call cable_tensions(y, k, matmul(k%jv, eo%qdd) + k%cv, sys%last_t(1), &
+                                    sys%last_t(2))
+            end if
+        end if
     end subroutine bifilar_rhs
+
+    !> The state of the last right-hand side and the cable tensions there (over m g), when
+    !! sys%keep_tensions is set; found = .false. when none was kept (or it failed).
+    subroutine last_evaluation(sys, y, t_bc, t_ad, found)
+        class(bifilar_t), intent(in) :: sys
+        real(dp), intent(out) :: y(NSTATE)      !! chart state evaluated last
+        real(dp), intent(out) :: t_bc, t_ad     !! the tensions there
+        logical, intent(out) :: found
+        found = sys%have_last
+        y = sys%last_y
+        t_bc = sys%last_t(1)
+        t_ad = sys%last_t(2)
+    end subroutine last_evaluation
 
     !> sin and cos of sys%p%lambda, computed again only when lambda changed.
     pure subroutine refresh_lambda(sys)
@@ -237,13 +264,13 @@ contains
         call omega_conv_tangent(k%ps, thd, dth, dthd, dk%cw)
         ! R* = C + rho
         dk%rho = cross(dtheta, k%rho)
-        call body_point_tangent(k, dk, k%rho, dk%rho, dk%jv, dk%cv)
+        call body_point_tangent(k, dk, k%rho, dk%rho, moved, dk%jv, dk%cv)
         dk%cv = dk%cv + p%big_l*dk%econv
         ! D = C + u, u = -ntilde_3
         u = -k%n(3, :)
         du = -dk%n(3, :)
         dk%d = dk%c + du
-        call body_point_tangent(k, dk, u, du, dk%jd, dk%cd)
+        call body_point_tangent(k, dk, u, du, moved, dk%jd, dk%cd)
         dk%jd(:, 1) = 0.0_dp
         dk%jd(:, 2:3) = dk%jv(:, 2:3)
         dk%cd = dk%cd + p%big_l*dk%econv
@@ -266,19 +293,28 @@ contains
     end subroutine chart_kinematics_tangent
 
     !> The change of a body point's partial velocities (columns 1, 4, 5: Omega_j x u) and of
-    !! its convective acceleration (A x u + omega x (omega x u)), u = point - C.
-    pure subroutine body_point_tangent(k, dk, u, du, dj, dconv)
+    !! its convective acceleration (A x u + omega x (omega x u)), u = point - C.  When only
+    !! the rates change (moved = .false.: dk%jw = 0, du = 0) the partial velocities do not.
+    pure subroutine body_point_tangent(k, dk, u, du, moved, dj, dconv)
         type(chart_kin_t), intent(in) :: k, dk  !! kinematics and their change
         real(dp), intent(in) :: u(3), du(3)     !! the point's offset from C and its change
+        logical, intent(in) :: moved            !! the angles change
         real(dp), intent(inout) :: dj(3, 5)     !! columns 1, 4, 5 set
         real(dp), intent(out) :: dconv(3)
         integer :: j
-        do j = 1, 5
-            if (j == 2 .or. j == 3) cycle
-            dj(:, j) = cross(dk%jw(:, j), u) + cross(k%jw(:, j), du)
-        end do
-        dconv = cross(dk%cw, u) + cross(k%cw, du) + cross(dk%omega, cross(k%omega, u)) &
-                + cross(k%omega, cross(dk%omega, u) + cross(k%omega, du))
+        if (moved) then
+            do j = 1, 5
+                if (j == 2 .or. j == 3) cycle
+                dj(:, j) = cross(dk%jw(:, j), u) + cross(k%jw(:, j), du)
+            end do
+            dconv = cross(dk%cw, u) + cross(k%cw, du) + cross(dk%omega, cross(k%omega, u)) &
+                    + cross(k%omega, cross(dk%omega, u) + cross(k%omega, du))
+        else
+            dj(:, 1) = 0.0_dp
+            dj(:, 4:5) = 0.0_dp
+            dconv = cross(dk%cw, u) + cross(dk%omega, cross(k%omega, u)) &
+                    + cross(k%omega, cross(dk%omega, u))
+        end if
     end subroutine body_point_tangent
 
     !> The constraint's gradient, D's velocity and the velocity terms of the twice
@@ -497,12 +533,19 @@ contains
             da = matmul(dk%jv, qdd) + dk%cv
             dalpha = matmul(dk%wb, qdd) + dk%cwb
             dtq = -in*dalpha - cross(dw, in*w) - cross(w, in*dw)
-            call project(5, dk%jv, dk%wb, -(a + [0.0_dp, 0.0_dp, 1.0_dp]), tq, e1)
             call project(5, k%jv, k%wb, -da, dtq, e2)
-            ! the constraint
-            do j = 1, 5
-                dgradg(j) = 2.0_dp*(dot_product(dk%d, k%jd(:, j)) + dot_product(k%d, dk%jd(:, j)))
-            end do
+            if (any(dy(1:5) /= 0.0_dp)) then
+                call project(5, dk%jv, dk%wb, -(a + [0.0_dp, 0.0_dp, 1.0_dp]), tq, e1)
+                ! the constraint
+                do j = 1, 5
+                    dgradg(j) = 2.0_dp*(dot_product(dk%d, k%jd(:, j)) &
+                                        + dot_product(k%d, dk%jd(:, j)))
+                end do
+            else
+                ! only the rates change: the partial velocities and gradg do not
+                e1 = 0.0_dp
+                dgradg = 0.0_dp
+            end if
             dvd = matmul(dk%jd, y(6:10)) + matmul(k%jd, dy(6:10))
             dgconv = 2.0_dp*(2.0_dp*dot_product(eo%vd, dvd) + dot_product(dk%d, k%cd) &
                              + dot_product(k%d, dk%cd))
