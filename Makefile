@@ -42,7 +42,7 @@ LIB_MODULES = kinds status lapack_wrap ode_system lsoda geometry kinematics gen_
               floquet paper_claims stability work_precision
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
 TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme \
-               test_work_precision test_elastic test_elastic_jac test_fast_format
+               test_work_precision test_elastic test_elastic_jac test_fast_format test_columns
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
 
 .PHONY: all test check run report bench deps clean memcheck
@@ -102,6 +102,8 @@ $(O)/test_elastic_jac.o: $(O)/testing.o $(O)/kinds.o $(O)/status.o $(O)/geometry
                          $(O)/bifilar_model.o $(O)/elastic_model.o $(O)/ode_system.o \
                          $(O)/lsoda.o $(O)/test_model.o
 $(O)/test_fast_format.o: $(O)/testing.o $(O)/kinds.o $(O)/fast_format.o
+$(O)/test_columns.o: $(O)/testing.o $(O)/kinds.o $(O)/status.o $(O)/deck.o $(O)/simulate.o \
+                     $(O)/output_io.o
 
 $(BUILD)/%.o: src/%.f90 | $(BUILD)
 	$(FC) $(FFLAGS) -J$(BUILD) -c $< -o $@

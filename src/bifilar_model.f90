@@ -751,7 +751,8 @@ contains
     end subroutine step_tensions
 
     !> Tensions from R*'s acceleration a: least squares of [e_BC e_AD] T = -(a + g n3); when the
-    !! cables are parallel only their sum is determined and it is shared equally.
+    !! cables are parallel only their sum is determined and it is shared equally (before,
+    !! each cable was given the whole sum).
     pure subroutine cable_tensions(y, k, astar, t_bc, t_ad)
         real(dp), intent(in) :: y(:)            !! chart state
         type(chart_kin_t), intent(in) :: k      !! its kinematics
@@ -768,7 +769,8 @@ contains
             t_bc = (a22*r1 - a12*r2)/det
             t_ad = (a11*r2 - a12*r1)/det
         else
-            t_bc = 0.5_dp*(r1 + r2)/a11
+            ! parallel cables: T_BC + T_AD = (e . f)/|e|^2, each takes half
+            t_bc = 0.25_dp*(r1 + r2)/a11
             t_ad = t_bc
         end if
     end subroutine cable_tensions

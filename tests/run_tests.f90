@@ -11,6 +11,7 @@ program run_tests
     use test_elastic, only: run_elastic_tests
     use test_elastic_jac, only: run_elastic_jac_tests
     use test_fast_format, only: run_fast_format_tests
+    use test_columns, only: run_columns_tests
     implicit none
     type(tester_t) :: t
     character(len=1024) :: exe, filter
@@ -29,5 +30,6 @@ program run_tests
     call run_elastic_tests(t)
     call run_elastic_jac_tests(t)
     call run_fast_format_tests(t)
+    call run_columns_tests(t, trim(exe))
     if (.not. t%summary()) error stop 1
 end program run_tests
