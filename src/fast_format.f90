@@ -61,13 +61,13 @@ contains
         w = len(field)
         call split(x, m, k, neg, ok)
         if (.not. ok .or. d < 0 .or. d > 16) then
-            call library_es(x, d, field)
+            call library_field(x, .true., d, field)
             return
         end if
         nc = d + 7                        ! D.ddd...E+xxx (d = 0: D.E+xxx)
         if (neg) nc = nc + 1
         if (w < nc) then
-            call library_es(x, d, field)
+            call library_field(x, .true., d, field)
             return
         end if
         if (m == 0) then
@@ -86,7 +86,7 @@ contains
                 call scaled(m, k, q, n, ok)
             end if
             if (.not. ok) then
-                call library_es(x, d, field)
+                call library_field(x, .true., d, field)
                 return
             end if
             if (n == POW10(d + 1)) then   ! rounded up to the next decade
@@ -94,12 +94,7 @@ contains
                 e = e + 1
             end if
         end if
-        field(1:w - nc) = ''
-        pos = w - nc + 1
-        if (neg) then
-            field(pos:pos) = '-'
-            pos = pos + 1
-        end if
+        call start_field(field, nc, neg, pos)
         ! leading digit, point, d digits
         call put_digits(n/POW10(d), 1, field(pos:pos))
         field(pos + 1:pos + 1) = '.'
@@ -128,7 +123,7 @@ contains
         w = len(field)
         call split(x, m, k, neg, ok)
         if (.not. ok .or. d < 1 .or. d > 17) then
-            call library_f(x, d, field)
+            call library_field(x, .false., d, field)
             return
         end if
         n = 0
@@ -136,7 +131,7 @@ contains
         if (abs(x) >= 0.3_dp*10.0_dp**(-d)) then
             call scaled(m, k, d, n, ok)
             if (.not. ok) then
-                call library_f(x, d, field)
+                call library_field(x, .false., d, field)
                 return
             end if
         end if
@@ -149,20 +144,30 @@ contains
         nc = nint_digits + 1 + d
         if (neg) nc = nc + 1
         if (w < nc) then
-            call library_f(x, d, field)
+            call library_field(x, .false., d, field)
             return
         end if
-        field(1:w - nc) = ''
-        pos = w - nc + 1
-        if (neg) then
-            field(pos:pos) = '-'
-            pos = pos + 1
-        end if
+        call start_field(field, nc, neg, pos)
         call put_digits(ip, nint_digits, field(pos:pos + nint_digits - 1))
         pos = pos + nint_digits
         field(pos:pos) = '.'
         call put_digits(mod(n, POW10(d)), d, field(pos + 1:pos + d))
     end subroutine f_field
+
+    !> Blanks before the nc characters of the number (right-justified in field) and its
+    !! minus sign when neg; pos is where the digits start.
+    pure subroutine start_field(field, nc, neg, pos)
+        character(len=*), intent(inout) :: field
+        integer, intent(in) :: nc               !! characters of the number, sign included
+        logical, intent(in) :: neg
+        integer, intent(out) :: pos
+        pos = len(field) - nc + 1
+        field(1:pos - 1) = ''
+        if (neg) then
+            field(pos:pos) = '-'
+            pos = pos + 1
+        end if
+    end subroutine start_field
 
     !> |x| = m 2^k (2^52 <= m < 2^53) and the sign bit of x; m = 0 for a zero; ok = .false.
     !! for a NaN, an infinity or a subnormal (left to the library).
@@ -247,24 +252,16 @@ contains
         if (i == 1) s(1:1) = achar(48 + int(t))
     end subroutine put_digits
 
-    !> The library's ESw.dE3 (internal WRITE).
-    pure subroutine library_es(x, d, field)
+    !> The library's text (internal WRITE) for ESw.dE3 (es = .true.) or Fw.d.
+    pure subroutine library_field(x, es, d, field)
         real(dp), intent(in) :: x
+        logical, intent(in) :: es
         integer, intent(in) :: d
         character(len=*), intent(out) :: field
         character(len=32) :: fmt
-        write (fmt, '(a,i0,a,i0,a)') '(es', len(field), '.', d, 'e3)'
+        write (fmt, '(a,i0,a,i0,a)') '('//merge('es', 'f ', es), len(field), '.', d, &
+            merge('e3)', ')  ', es)
         write (field, fmt) x
-    end subroutine library_es
-
-    !> The library's Fw.d (internal WRITE).
-    pure subroutine library_f(x, d, field)
-        real(dp), intent(in) :: x
-        integer, intent(in) :: d
-        character(len=*), intent(out) :: field
-        character(len=32) :: fmt
-        write (fmt, '(a,i0,a,i0,a)') '(f', len(field), '.', d, ')'
-        write (field, fmt) x
-    end subroutine library_f
+    end subroutine library_field
 
 end module fast_format

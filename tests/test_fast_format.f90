@@ -14,6 +14,12 @@ module test_fast_format
 
     integer, parameter :: i8 = selected_int_kind(18)
 
+    !> Values compared, how many differ, the first that differs (format and library text).
+    type :: tally_t
+        integer :: cases = 0, bad = 0
+        character(len=80) :: first = ''
+    end type tally_t
+
 contains
 
     subroutine run_fast_format_tests(t)
@@ -26,158 +32,145 @@ contains
     !> es_field(x, 15) with a 24-character field against write (..., '(es24.15e3)').
     subroutine test_es(t)
         type(tester_t), intent(inout) :: t
+        type(tally_t) :: tl
         real(dp) :: x, u(2)
-        integer :: k, j, nbad, ncase
-        character(len=24) :: first_bad
-        nbad = 0
-        ncase = 0
-        first_bad = ''
+        integer :: k, j
         call seed()
         ! random bit patterns: every exponent, subnormals included
         do k = 1, 20000
             call random_number(u)
-            x = from_bits(u)
-            call one(x)
+            call compare(from_bits(u), .true., 24, 15, tl)
         end do
         ! random values of the magnitudes the data files hold (1e-20 ... 1e3)
         do k = 1, 20000
             call random_number(u)
-            x = (2*u(1) - 1)*10.0_dp**(23*u(2) - 20)
-            call one(x)
+            call compare((2*u(1) - 1)*10.0_dp**(23*u(2) - 20), .true., 24, 15, tl)
         end do
         ! exact binary fractions: i 2^-j has j decimals, so some of them are exact ties at
         ! the 16th significant digit (2^-24 = 5.9604644775390625e-8 -> ...062E-008)
         do j = 1, 80
             do k = 1, 41, 2
-                call one(k*2.0_dp**(-j))
-                call one(-k*2.0_dp**(-j))
+                call compare(k*2.0_dp**(-j), .true., 24, 15, tl)
+                call compare(-k*2.0_dp**(-j), .true., 24, 15, tl)
             end do
         end do
         ! powers of ten and their neighbours (the decade chosen by the rounding)
         do j = -307, 308
             x = 10.0_dp**j
-            call one(x)
-            call one(nearest(x, 1.0_dp))
-            call one(nearest(x, -1.0_dp))
-            call one(-nearest(x, -1.0_dp))
+            call compare(x, .true., 24, 15, tl)
+            call compare(nearest(x, 1.0_dp), .true., 24, 15, tl)
+            call compare(nearest(x, -1.0_dp), .true., 24, 15, tl)
+            call compare(-nearest(x, -1.0_dp), .true., 24, 15, tl)
         end do
-        ! numbers that round up into the next decade, zeros, extremes
-        call one(9.9999999999999999e-5_dp)
-        call one(0.99999999999999994_dp)
-        call one(0.0_dp)
-        call one(-0.0_dp)
-        call one(huge(1.0_dp))
-        call one(-huge(1.0_dp))
-        call one(tiny(1.0_dp))
-        call one(nearest(tiny(1.0_dp), -1.0_dp))
-        call one(ieee_value(x, ieee_positive_inf))
-        call one(ieee_value(x, ieee_negative_inf))
-        call t%check('ES24.15E3: '//itoa(ncase)//' values give the library''s text ('// &
-                     itoa(nbad)//' differ'//trim(first_bad)//')', nbad == 0 .and. ncase > 40000)
-    contains
-        subroutine one(v)
-            real(dp), intent(in) :: v
-            character(len=24) :: ours, lib
-            call es_field(v, 15, ours)
-            write (lib, '(es24.15e3)') v
-            ncase = ncase + 1
-            if (ours /= lib) then
-                if (nbad == 0) first_bad = ': '//lib(1:len(first_bad) - 2)
-                nbad = nbad + 1
-            end if
-        end subroutine one
+        ! numbers that round up into the next decade, zeros, extremes, infinities
+        call compare(9.9999999999999999e-5_dp, .true., 24, 15, tl)
+        call compare(0.99999999999999994_dp, .true., 24, 15, tl)
+        call compare(0.0_dp, .true., 24, 15, tl)
+        call compare(-0.0_dp, .true., 24, 15, tl)
+        call compare(huge(1.0_dp), .true., 24, 15, tl)
+        call compare(-huge(1.0_dp), .true., 24, 15, tl)
+        call compare(tiny(1.0_dp), .true., 24, 15, tl)
+        call compare(nearest(tiny(1.0_dp), -1.0_dp), .true., 24, 15, tl)
+        call compare(ieee_value(x, ieee_positive_inf), .true., 24, 15, tl)
+        call compare(ieee_value(x, ieee_negative_inf), .true., 24, 15, tl)
+        call report(t, 'ES24.15E3', tl, 40000)
     end subroutine test_es
 
     !> f_field(x, 6) with a 14-character field against write (..., '(f14.6)').
     subroutine test_f(t)
         type(tester_t), intent(inout) :: t
+        type(tally_t) :: tl
         real(dp) :: x, u(2)
-        integer :: k, j, nbad, ncase
-        character(len=14) :: first_bad
-        nbad = 0
-        ncase = 0
-        first_bad = ''
+        integer :: k, j
         call seed()
         ! the output grid tau = k dtau_out of the data files
         do k = 0, 20000
-            call one(k*0.05_dp)
-            call one(k*0.001_dp)
-            call one(min(k*0.05_dp, 60.0_dp))
+            call compare(k*0.05_dp, .false., 14, 6, tl)
+            call compare(k*0.001_dp, .false., 14, 6, tl)
+            call compare(min(k*0.05_dp, 60.0_dp), .false., 14, 6, tl)
         end do
         ! random values up to beyond the field's width (asterisks) and tiny ones
         do k = 1, 20000
             call random_number(u)
-            x = (2*u(1) - 1)*10.0_dp**(16*u(2) - 9)
-            call one(x)
+            call compare((2*u(1) - 1)*10.0_dp**(16*u(2) - 9), .false., 14, 6, tl)
         end do
         do k = 1, 5000
             call random_number(u)
-            call one(from_bits(u))
+            call compare(from_bits(u), .false., 14, 6, tl)
         end do
         ! exact ties at the 6th decimal (2^-7 = 0.0078125 -> 0.007812) and near them
         do j = 1, 30
             do k = 1, 63, 2
                 x = k*2.0_dp**(-j)
-                call one(x)
-                call one(-x)
-                call one(nearest(x, 1.0_dp))
-                call one(nearest(x, -1.0_dp))
+                call compare(x, .false., 14, 6, tl)
+                call compare(-x, .false., 14, 6, tl)
+                call compare(nearest(x, 1.0_dp), .false., 14, 6, tl)
+                call compare(nearest(x, -1.0_dp), .false., 14, 6, tl)
             end do
         end do
-        call one(0.0_dp)
-        call one(-0.0_dp)
-        call one(-1.0e-9_dp)
-        call one(0.0000005_dp)
-        call one(0.0000025_dp)
-        call one(999999.9999995_dp)
-        call one(9999999.5_dp)
-        call one(-999999.9999996_dp)
-        call t%check('F14.6: '//itoa(ncase)//' values give the library''s text ('// &
-                     itoa(nbad)//' differ'//trim(first_bad)//')', nbad == 0 .and. ncase > 80000)
-    contains
-        subroutine one(v)
-            real(dp), intent(in) :: v
-            character(len=14) :: ours, lib
-            call f_field(v, 6, ours)
-            write (lib, '(f14.6)') v
-            ncase = ncase + 1
-            if (ours /= lib) then
-                if (nbad == 0) first_bad = ': '//lib(1:len(first_bad) - 2)
-                nbad = nbad + 1
-            end if
-        end subroutine one
+        call compare(0.0_dp, .false., 14, 6, tl)
+        call compare(-0.0_dp, .false., 14, 6, tl)
+        call compare(-1.0e-9_dp, .false., 14, 6, tl)
+        call compare(0.0000005_dp, .false., 14, 6, tl)
+        call compare(0.0000025_dp, .false., 14, 6, tl)
+        call compare(999999.9999995_dp, .false., 14, 6, tl)
+        call compare(9999999.5_dp, .false., 14, 6, tl)
+        call compare(-999999.9999996_dp, .false., 14, 6, tl)
+        call report(t, 'F14.6', tl, 80000)
     end subroutine test_f
 
     !> Other widths and digit counts, including fields too narrow (the library's asterisks).
     subroutine test_other(t)
         type(tester_t), intent(inout) :: t
-        real(dp) :: x, u(2)
-        integer :: k, nbad, ncase, w, d
-        character(len=40) :: ours, lib, fmt
-        nbad = 0
-        ncase = 0
+        type(tally_t) :: tl
+        real(dp) :: u(2)
+        integer :: k
         call seed()
         do k = 1, 6000
             call random_number(u)
-            x = (2*u(1) - 1)*10.0_dp**(40*u(2) - 20)
-            w = 8 + mod(k, 23)
-            d = mod(k, 17)
-            write (fmt, '(a,i0,a,i0,a)') '(es', w, '.', d, 'e3)'
-            call es_field(x, d, ours(1:w))
-            write (lib(1:w), fmt) x
-            ncase = ncase + 1
-            if (ours(1:w) /= lib(1:w)) nbad = nbad + 1
-            d = 1 + mod(k, 9)
-            x = (2*u(1) - 1)*10.0_dp**(14*u(2) - 6)
-            write (fmt, '(a,i0,a,i0,a)') '(f', w, '.', d, ')'
-            call f_field(x, d, ours(1:w))
-            write (lib(1:w), fmt) x
-            ncase = ncase + 1
-            if (ours(1:w) /= lib(1:w)) nbad = nbad + 1
+            call compare((2*u(1) - 1)*10.0_dp**(40*u(2) - 20), .true., 8 + mod(k, 23), &
+                         mod(k, 17), tl)
+            call compare((2*u(1) - 1)*10.0_dp**(14*u(2) - 6), .false., 8 + mod(k, 23), &
+                         1 + mod(k, 9), tl)
         end do
-        call t%check('ESw.dE3 and Fw.d, w = 8 ... 30: '//itoa(ncase)//' values give the '// &
-                     'library''s text ('//itoa(nbad)//' differ)', nbad == 0)
+        call report(t, 'ESw.dE3 and Fw.d, w = 8 ... 30', tl, 12000)
     end subroutine test_other
+
+    !> One value: our text against the library's, counted in tl.
+    subroutine compare(x, es, w, d, tl)
+        real(dp), intent(in) :: x
+        logical, intent(in) :: es               !! ESw.dE3, else Fw.d
+        integer, intent(in) :: w, d
+        type(tally_t), intent(inout) :: tl
+        character(len=w) :: ours, lib
+        character(len=32) :: fmt
+        if (es) then
+            call es_field(x, d, ours)
+            write (fmt, '(a,i0,a,i0,a)') '(es', w, '.', d, 'e3)'
+        else
+            call f_field(x, d, ours)
+            write (fmt, '(a,i0,a,i0,a)') '(f', w, '.', d, ')'
+        end if
+        write (lib, fmt) x
+        tl%cases = tl%cases + 1
+        if (ours /= lib) then
+            if (tl%bad == 0) tl%first = trim(fmt)//' ['//lib//']'
+            tl%bad = tl%bad + 1
+        end if
+    end subroutine compare
+
+    !> The check of one tally: no text differs, and at least `least` values were compared.
+    subroutine report(t, what, tl, least)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: what
+        type(tally_t), intent(in) :: tl
+        integer, intent(in) :: least
+        character(len=200) :: msg
+        write (msg, '(a,i0,a,i0,a)') what//': ', tl%cases, ' values give the library''s '// &
+            'text (', tl%bad, ' differ'
+        if (tl%bad > 0) msg = trim(msg)//', first '//trim(tl%first)
+        call t%check(trim(msg)//')', tl%bad == 0 .and. tl%cases >= least)
+    end subroutine report
 
     !> A double from two uniform numbers taken as its two 32-bit halves; a NaN or infinity
     !! pattern (exponent bits all set) becomes the largest finite exponent instead (writing
@@ -202,13 +195,5 @@ contains
         s = 20260 + 7*[(n, n=1, size(s))]
         call random_seed(put=s)
     end subroutine seed
-
-    pure function itoa(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=16) :: buf
-        write (buf, '(i0)') i
-        s = trim(buf)
-    end function itoa
 
 end module test_fast_format
