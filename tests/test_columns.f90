@@ -132,7 +132,8 @@ contains
             do while (ios == 0)
                 read (u, '(a)', iostat=ios) line
                 if (ios /= 0) exit
-                if (index(line, 'ERROR STOP') > 0) cycle
+                ! the program's message (not the run-time library's error-stop lines)
+                if (index(line, 'bifilar:') /= 1) cycle
                 nlines = nlines + 1
                 named = index(line, 'bad_'//name) > 0 .and. index(line, '&output columns') > 0 &
                         .and. index(line, what) > 0 .and. index(line, 'allowed') > 0 .and. &
