@@ -5,7 +5,8 @@
 #   make check      run all tests in the checking build (-fcheck=all, FP traps)
 #   make run        run every deck in input/, write output/, draw plots/*.png
 #   make report     output/report.md (paper's claims against ours)
-#   make bench      integrator, scene and work-precision benchmarks (output/bench_*.dat)
+#   make bench      integrator, scene, work-precision and speed benchmarks (output/bench_*.dat;
+#                   the speed figures count instructions with valgrind --tool=callgrind)
 #   make memcheck   valgrind (leaks, invalid accesses) on bin/bifilar with a paper deck
 #   make deps       install what a fresh machine lacks (gnuplot)
 #   make clean      remove everything built or written
@@ -24,7 +25,8 @@ LIBS = -llapack -lblas
 else
 BUILD = build
 BIN = bin
-# -flto inlines across modules (the model's kinematics, forces and solve are one hot path)
+# -flto inlines across modules (the model's kinematics, forces and solve are one hot path).
+# Objects do not depend on the flags: after changing them, make clean.
 FFLAGS = -O3 -march=x86-64-v2 -flto=auto -fno-backtrace
 # Link statically what Debian ships as archives (LAPACK, BLAS, libgfortran, libquadmath,
 # libgomp): the process starts without loading and relocating them.  libc and libm stay
