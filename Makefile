@@ -5,8 +5,9 @@
 #   make check      run all tests in the checking build (-fcheck=all, FP traps)
 #   make run        run every deck in input/, write output/, draw plots/*.png
 #   make report     output/report.md (paper's claims against ours)
-#   make bench      integrator, scene, work-precision and elastic-cable benchmarks
-#                   (output/bench_*.dat, plots/work_precision_elastic.png)
+#   make bench      integrator, scene, work-precision, elastic-cable and speed benchmarks
+#                   (output/bench_*.dat, plots/work_precision_elastic.png; the speed figures
+#                   count instructions with valgrind --tool=callgrind)
 #   make memcheck   valgrind (leaks, invalid accesses) on bin/bifilar with a paper deck
 #   make deps       install what a fresh machine lacks (gnuplot)
 #   make clean      remove everything built or written
@@ -21,20 +22,31 @@ ifeq ($(CHECK),1)
 BUILD = build-check
 BIN = build-check/bin
 FFLAGS = -O0 -g -fcheck=all,no-array-temps -ffpe-trap=invalid,zero,overflow -fbacktrace
+LIBS = -llapack -lblas
 else
 BUILD = build
 BIN = bin
-FFLAGS = -O2 -march=x86-64-v2 -fno-backtrace
+# -flto inlines across modules (the model's kinematics, forces and solve are one hot path).
+# Objects do not depend on the flags: after changing them, make clean.
+FFLAGS = -O3 -march=x86-64-v2 -flto=auto -fno-backtrace
+# Link statically what Debian ships as archives (LAPACK, BLAS, libgfortran, libquadmath,
+# libgomp): the process starts without loading and relocating them.  libc and libm stay
+# shared.  An archive the compiler cannot find falls back to the shared library.
+static_or_shared = $(if $(filter /%,$(shell $(FC) -print-file-name=lib$(1).a)),$(shell \
+                   $(FC) -print-file-name=lib$(1).a),-l$(1))
+LIBS := -static-libgcc -Wl,--as-needed $(foreach l,lapack blas gfortran gomp quadmath,$(call \
+        static_or_shared,$(l)))
 endif
 FFLAGS += -fopenmp -std=f2008 -Wall -Wextra -Wno-compare-reals -fimplicit-none
-LIBS = -llapack -lblas
 
-# Library modules in dependency order (each only uses modules listed before it).
-LIB_MODULES = kinds status text progress lapack_wrap ode_system lsoda radau stepper geometry kinematics gen_forces \
-              bifilar_model elastic_model elastic_gen elastic_solver deck output_io simulate floquet paper_claims \
+# Library modules (one object each, named as the module) and test modules.
+LIB_MODULES = kinds status text progress lapack_wrap ode_system lsoda radau stepper \
+              geometry kinematics gen_forces bifilar_model elastic_model elastic_gen \
+              elastic_solver deck output_io fast_format simulate floquet paper_claims \
               stability work_precision driver
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
-TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme test_work_precision test_elastic test_elastic_jac \
+TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme \
+               test_work_precision test_elastic test_elastic_jac test_fast_format test_columns \
                test_radau test_elastic_radau test_robust
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
 
@@ -44,12 +56,18 @@ all: $(BIN)/bifilar
 $(BUILD) $(BIN):
 	mkdir -p $@
 
-# Every object depends on all objects listed before it (simple, correct ordering).
-define chain
-$(BUILD)/$(word $(1),$(2)).o: $(patsubst %,$(BUILD)/%.o,$(wordlist 1,$(shell expr $(1) - 1),$(2)))
-endef
-ALL_MODULES = $(LIB_MODULES) $(TEST_MODULES)
-$(foreach i,$(shell seq 2 $(words $(ALL_MODULES))),$(eval $(call chain,$(i),$(ALL_MODULES))))
+# Module dependencies, read from the sources' `use` lines (one module per file, named as
+# the file): each object depends on the objects of the modules it uses (gfortran writes the
+# .mod files beside them), so make -j builds in the right order and a change rebuilds only
+# its users.  build/deps.mk is remade whenever a source changes.
+SOURCES = $(wildcard src/*.f90 tests/*.f90)
+$(BUILD)/deps.mk: $(SOURCES) | $(BUILD)
+	@for f in $(SOURCES); do b=$$(basename $$f .f90); \
+	  for m in $$(sed -n 's/^ *use  *\([a-z0-9_]*\).*/\1/p' $$f | sort -u); do \
+	    if [ "$$m" != "$$b" ] && [ -f src/$$m.f90 -o -f tests/$$m.f90 ]; then \
+	      echo "$(BUILD)/$$b.o: $(BUILD)/$$m.o"; fi; \
+	  done; done > $@
+include $(BUILD)/deps.mk
 
 $(BUILD)/%.o: src/%.f90 | $(BUILD)
 	$(FC) $(FFLAGS) -J$(BUILD) -c $< -o $@
@@ -83,8 +101,11 @@ $(BIN)/bench_radau: tests/bench_radau.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
 $(BIN)/bench_wp: tests/bench_wp.f90 $(LIB_OBJ) | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
 
+$(BIN)/bench_speed: tests/bench_speed.f90 $(LIB_OBJ) | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+
 bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench_elastic \
-       $(BIN)/bench_radau $(BIN)/bifilar
+       $(BIN)/bench_radau $(BIN)/bench_speed $(BIN)/bifilar
 	mkdir -p output build/bench
 	$(BIN)/bench_integrator output/bench_integrator.dat
 	$(BIN)/bench_radau output/bench_radau.dat
@@ -96,6 +117,8 @@ bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench
 	  build/bench/work_precision_elastic.wp.dat build/bench/work_precision_elastic.wp_rk4.dat \
 	  build/bench/work_precision_elastic.wp_radau.dat plots/work_precision_elastic.png && \
 	  echo "drew plots/work_precision_elastic.png"; fi
+	@echo "speed: instructions (valgrind --tool=callgrind) and CPU seconds of one unit of work:"
+	tests/bench/speed.sh $(BIN) output/bench_speed.dat
 	@echo "100 x 100 stability chart (tests/bench/chart_cylinder.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}):"
 	$(BIN)/bifilar tests/bench/chart_cylinder.nml --out build/bench 2>/dev/null
 

@@ -1,7 +1,6 @@
 !> The equations of motion of the bifilar pendulum, Kane & Tseng (1966) eqs. (37)-(43).
 !!
-!! Two forms of the same equations are assembled here, both as P qddot = Q (eq. (38)) and
-!! solved with LAPACK:
+!! Two forms of the same equations are assembled here, both as P qddot = Q (eq. (38)):
 !!
 !! * paper_accelerations: the paper's coordinates theta_1..theta_5, theta_5 eliminated with
 !!   gamma_r = beta_r/beta_5 (eqs. (5)-(6), (31)), the fifth row the twice-differentiated
@@ -12,18 +11,25 @@
 !!   regular at theta_2 = 0 where the paper's is singular (pure torsion passes through it
 !!   twice a period), and the dependent speed is the one with the largest constraint
 !!   coefficient, so beta_5 = 0 is harmless.  Everything else (eqs. (8), (14), (19), (24),
-!!   (27), (32)-(36)) is the paper's.  The state is
+!!   (27), (32)-(36)) is the paper's; the body's part of eqs. (24), (27) in its rigid-body
+!!   form (module kinematics).  The state is
 !!   y = (theta1, sigma1, sigma2, theta4, theta5, and their rates), eqs. (40)-(43).
 !! Results are reported in the paper's theta_1..theta_5 (paper_angles).
+!!
+!! The 5 x 5 system is factored by lapack_wrap's written-out LU (la_small_factor).  The
+!! Jacobian Z of the chart right-hand side (eq. (51)) is exact: the derivatives of the
+!! kinematics (chart_kinematics_tangent) carried through Kane's equations and the constraint
+!! (eom_tangent), solved with the same factors (chart_jacobian).
 module bifilar_model
     use kinds, only: dp, pi
     use status, only: status_t, set_error, ERR_MODEL, ERR_NUMERIC
     use ode_system, only: ode_system_t
-    use geometry, only: pendulum_t, direction_cosines, body_axes, cable_direction, mass_centre, &
-                        point_e
-    use kinematics, only: omega_coeffs, omega_dot_quadratic, v_coeffs, vdot_coeffs
-    use gen_forces, only: generalized_inertia, generalized_forces, inertia_dyadic
-    use lapack_wrap, only: la_solve
+    use geometry, only: pendulum_t, pose_t, pose_of, body_pose, frame, body_axes, &
+                        cable_direction, mass_centre, point_e
+    use kinematics, only: omega_partials, omega_conv, v_partials, vdot_partials, &
+                          omega_partials_tangent, omega_conv_tangent, cross
+    use gen_forces, only: generalized_inertia, inertia_torque, project
+    use lapack_wrap, only: la_small_chol, la_small_chol_solve
     implicit none
     private
 
@@ -32,8 +38,16 @@ module bifilar_model
     !> The pendulum as an ODE system for the integrator.
     type, extends(ode_system_t), public :: bifilar_t
         type(pendulum_t) :: p                   !! scaled parameters
+        !> .true.: each right-hand side also keeps the state it evaluated and the cable
+        !! tensions there (last_evaluation), for the validity check at the end of each step
+        logical :: keep_tensions = .false.
+        !> sin and cos of p%lambda, computed when p%lambda is first seen (lambda_key)
+        real(dp), private :: lambda_key = huge(1.0_dp), sc_lambda(2) = 0.0_dp
+        logical, private :: have_last = .false.
+        real(dp), private :: last_y(NSTATE) = 0.0_dp, last_t(2) = 0.0_dp
     contains
         procedure :: rhs => bifilar_rhs
+        procedure :: last_evaluation
     end type bifilar_t
 
     !> Everything about the motion at one instant (scaled units: b' = m = g = 1).
@@ -51,16 +65,46 @@ module bifilar_model
         real(dp) :: q_axis = 0.0_dp             !! horizontal distance of E from the midpoint of CD
     end type motion_t
 
+    !> What evaluate computes besides the angles and rates (the columns a run writes):
+    !! the accelerations (and with them T_BC, T_AD, a of R*, alpha), the energy, the
+    !! constraint residual, the side-sway Q and Q_axis.
+    type, public :: motion_parts_t
+        logical :: accelerations = .true.
+        logical :: energy = .true.
+        logical :: residual = .true.
+        logical :: sway = .true.
+    end type motion_parts_t
+
     !> Positions, partial velocities and convective accelerations at one chart state.
     type :: chart_kin_t
+        type(pose_t) :: ps                      !! the pose's trigonometry
         real(dp) :: n(3, 3), c(3), d(3)         !! direction cosines (8), points C and D
+        real(dp) :: e(3), zeta, econv(3)        !! cable direction B->C, -e(3), e'' at sigma'' = 0
+        real(dp) :: rho(3)                      !! R* - C, eqs. (21)-(22)
         real(dp) :: jv(3, 5), cv(3)             !! R*: partial velocities, acceleration at qdd = 0
         real(dp) :: jw(3, 5), cw(3), omega(3)   !! the same for the rotation; angular velocity
         real(dp) :: jd(3, 5), cd(3)             !! the same for D
+        real(dp) :: b(3, 3)                     !! principal axes b_i in n_j, eq. (11)
+        real(dp) :: wb(3, 5), omb(3), cwb(3)    !! jw, omega, cw resolved in b_i
     end type chart_kin_t
 
+    !> Eq. (38) assembled and factored at one state, and its solution.  The constraint row
+    !! gives the dependent acceleration k from the four independent ones; Kane's rows for the
+    !! independent speeds (partial velocities Jv(:,r) + gamma_r Jv(:,k), eq. (31)) are then
+    !! a symmetric positive definite 4 x 4 system, held as its Cholesky factor.  (mk is set
+    !! only for the Jacobian, by chart_jacobian.)
+    type :: eom_t
+        integer :: k                            !! the dependent coordinate (largest |gradg|)
+        integer :: ind(4)                       !! the independent coordinates, ascending
+        real(dp) :: gam(5)                      !! gamma_r = -gradg(r)/gradg(k), 0 at r = k
+        real(dp) :: mk(5)                       !! column k of the generalized inertia M
+        real(dp) :: chol(4, 4)                  !! Cholesky factor of T^T M T (T: eq. (31))
+        real(dp) :: gradg(5), vd(3)             !! constraint gradient; velocity of D
+        real(dp) :: qdd(5)                      !! the accelerations
+    end type eom_t
+
     public :: chart_state, paper_angles, chart_accelerations, paper_accelerations, evaluate
-    public :: chart_positions, chart_energy, chart_constraint
+    public :: chart_positions, chart_energy, chart_constraint, chart_jacobian, step_tensions
 
 contains
 
@@ -71,98 +115,321 @@ contains
         real(dp), intent(in) :: y(:)            !! chart state (10)
         real(dp), intent(out) :: ydot(:)        !! its derivative
         type(status_t), intent(out) :: stat
-        real(dp) :: qdd(5)
+        type(chart_kin_t) :: k
+        type(eom_t) :: eo
         if (.false.) ydot(1) = t
-        call chart_accelerations(sys%p, y, qdd, stat)
+        call refresh_lambda(sys)
+        call chart_solve(sys%p, y, k, eo, stat, sys%sc_lambda)
         ydot(1:5) = y(6:10)
-        ydot(6:10) = qdd
+        ydot(6:10) = eo%qdd
+        if (sys%keep_tensions) then
+            sys%have_last = stat%code == 0
+            if (sys%have_last) then
+                sys%last_y = y(1:NSTATE)
+                call cable_tensions(y, k, matmul(k%jv, eo%qdd) + k%cv, sys%last_t(1), &
+                                    sys%last_t(2))
+            end if
+        end if
     end subroutine bifilar_rhs
 
-    !> Positions in the chart: C, D, the direction cosines, the cable direction e and the
-    !! partial velocities / convective accelerations of R* and D.
-    pure subroutine chart_kinematics(p, y, k)
+    !> The state of the last right-hand side and the cable tensions there (over m g), when
+    !! sys%keep_tensions is set; found = .false. when none was kept (or it failed).
+    subroutine last_evaluation(sys, y, t_bc, t_ad, found)
+        class(bifilar_t), intent(in) :: sys
+        real(dp), intent(out) :: y(NSTATE)      !! chart state evaluated last
+        real(dp), intent(out) :: t_bc, t_ad     !! the tensions there
+        logical, intent(out) :: found
+        found = sys%have_last
+        y = sys%last_y
+        t_bc = sys%last_t(1)
+        t_ad = sys%last_t(2)
+    end subroutine last_evaluation
+
+    !> sin and cos of sys%p%lambda, computed again only when lambda changed.
+    pure subroutine refresh_lambda(sys)
+        class(bifilar_t), intent(inout) :: sys
+        if (sys%p%lambda /= sys%lambda_key) then
+            sys%sc_lambda = [sin(sys%p%lambda), cos(sys%p%lambda)]
+            sys%lambda_key = sys%p%lambda
+        end if
+    end subroutine refresh_lambda
+
+    !> The kinematics at a chart state: the pose, C, D, the direction cosines, the cable
+    !! direction e and the partial velocities / convective accelerations of R*, D and the
+    !! rotation (eqs. (8), (14), (19), (24), (27) with theta_2 = theta_3 = 0 in the body's
+    !! terms; the cable's columns from e(sigma)), the rotation also along the principal axes.
+    pure subroutine chart_kinematics(p, y, k, sc_lambda, dynamics)
         type(pendulum_t), intent(in) :: p
         real(dp), intent(in) :: y(:)
         type(chart_kin_t), intent(out) :: k
-        real(dp) :: th(5), thd(5), e(3), zeta, sd(2), econv(3), vb(3, 5), vdb(3, 5)
-        real(dp) :: s4, c4, s5, c5, d4, d5
-        integer :: j
-        th = [y(1), 0.0_dp, 0.0_dp, y(4), y(5)]
-        thd = [y(6), 0.0_dp, 0.0_dp, y(9), y(10)]
-        e = cable_direction(y(2:3))
-        zeta = -e(3)
-        sd = y(7:8)
-        k%n = direction_cosines(th)
-        k%c = [0.0_dp, -p%big_b, 0.0_dp] + p%big_l*e
-        ! the cable: e(sigma) and its second derivative at sigma'' = 0
-        econv = [0.0_dp, 0.0_dp, dot_product(sd, sd)/zeta + dot_product(y(2:3), sd)**2/zeta**3]
-        ! body part of eqs. (24), (27): columns 1, 4, 5 (theta_2, theta_3 do not enter them)
-        vb = v_coeffs(p, th)
-        vdb = vdot_coeffs(p, th, thd)
-        k%jv(:, 1) = vb(:, 1)
-        k%jv(:, 2) = p%big_l*[1.0_dp, 0.0_dp, y(2)/zeta]
-        k%jv(:, 3) = p%big_l*[0.0_dp, 1.0_dp, y(3)/zeta]
-        k%jv(:, 4) = vb(:, 4)
-        k%jv(:, 5) = vb(:, 5)
-        k%cv = p%big_l*econv
-        do j = 1, 5
-            if (j == 2 .or. j == 3) cycle
-            k%cv = k%cv + vdb(:, j)*thd(j)
-        end do
-        k%jw = omega_coeffs(th)
-        k%omega = matmul(k%jw, y(6:10))
-        k%cw = omega_dot_quadratic(th, thd)
-        ! D = C + (c5 s4, c5 c4, s5), eq. (1)
-        s4 = sin(th(4)); c4 = cos(th(4)); s5 = sin(th(5)); c5 = cos(th(5))
-        d4 = thd(4); d5 = thd(5)
-        k%d = k%c + [c5*s4, c5*c4, s5]
-        k%jd(:, 1) = 0.0_dp
-        k%jd(:, 2:3) = k%jv(:, 2:3)
-        k%jd(:, 4) = [c5*c4, -c5*s4, 0.0_dp]
-        k%jd(:, 5) = [-s5*s4, -s5*c4, c5]
-        k%cd = p%big_l*econv + [-c5*s4*(d4**2 + d5**2) - 2.0_dp*s5*c4*d4*d5, &
-                              -c5*c4*(d4**2 + d5**2) + 2.0_dp*s5*s4*d4*d5, -s5*d5**2]
+        real(dp), intent(in), optional :: sc_lambda(2)  !! sin, cos of p%lambda (body_pose)
+        logical, intent(in), optional :: dynamics       !! .false.: only the pose, C, D, e and
+                                                        !! R*'s motion (what the tensions need);
+                                                        !! default .true.: everything
+        real(dp) :: sdsd, ssd, iz
+        associate (s4 => k%ps%s4, c4 => k%ps%c4, s5 => k%ps%s5, c5 => k%ps%c5, &
+                   d4 => y(9), d5 => y(10))
+            k%ps = body_pose(y(1), y(4), y(5), p%lambda, sc_lambda)
+            call frame(k%ps, k%n)
+            k%e = cable_direction(y(2:3))
+            k%zeta = -k%e(3)
+            k%c = [p%big_l*k%e(1), -p%big_b + p%big_l*k%e(2), p%big_l*k%e(3)]
+            ! the cable: e(sigma) and its second derivative at sigma'' = 0
+            sdsd = y(7)*y(7) + y(8)*y(8)
+            ssd = y(2)*y(7) + y(3)*y(8)
+            iz = 1.0_dp/k%zeta
+            k%econv = [0.0_dp, 0.0_dp, (sdsd + (ssd*iz)**2)*iz]
+            call omega_partials(k%ps, k%jw)
+            k%omega = (k%jw(:, 1)*y(6) + k%jw(:, 4)*y(9)) + k%jw(:, 5)*y(10)
+            call omega_conv(k%ps, y(6:10), k%cw)     ! reads the rates of theta_1, 4, 5
+            ! R* = C + rho, eqs. (21)-(22); eqs. (24), (27): the cable's columns from e(sigma),
+            ! the body's in their rigid-body form (Omega_j x rho; A x rho + omega x (omega x rho))
+            k%rho = (p%r*k%ps%s_lambda)*k%n(1, :) - (p%r*k%ps%c_lambda)*k%n(3, :)
+            k%jv(:, 1) = cross(k%jw(:, 1), k%rho)
+            k%jv(:, 2) = [p%big_l, 0.0_dp, p%big_l*y(2)*iz]
+            k%jv(:, 3) = [0.0_dp, p%big_l, p%big_l*y(3)*iz]
+            k%jv(:, 4) = [k%rho(2), -k%rho(1), 0.0_dp]         ! -n3 x rho
+            k%jv(:, 5) = cross(k%jw(:, 5), k%rho)
+            k%cv = p%big_l*k%econv + cross(k%cw, k%rho) + cross(k%omega, cross(k%omega, k%rho))
+            ! D = C + (c5 s4, c5 c4, s5), eq. (1)
+            k%d = k%c + [c5*s4, c5*c4, s5]
+            if (present(dynamics)) then
+                if (.not. dynamics) return
+            end if
+            k%jd(:, 1) = 0.0_dp
+            k%jd(:, 2:3) = k%jv(:, 2:3)
+            k%jd(:, 4) = [c5*c4, -c5*s4, 0.0_dp]
+            k%jd(:, 5) = [-s5*s4, -s5*c4, c5]
+            k%cd = p%big_l*k%econv + [-c5*s4*(d4**2 + d5**2) - 2.0_dp*s5*c4*d4*d5, &
+                                      -c5*c4*(d4**2 + d5**2) + 2.0_dp*s5*s4*d4*d5, -s5*d5**2]
+            ! the rotation along the principal axes: b = btilde n; Omega_1 = ntilde_3, so
+            ! b . Omega_1 = btilde(:,3); Omega_4 = -n_3; Omega_5 = c4 n_1 - s4 n_2
+            k%b = body_axes(p, k%n)
+            k%wb(:, 1) = p%btilde(:, 3)
+            k%wb(:, 2:3) = 0.0_dp
+            k%wb(:, 4) = -k%b(:, 3)
+            k%wb(:, 5) = c4*k%b(:, 1) - s4*k%b(:, 2)
+            k%omb = (k%wb(:, 1)*y(6) + k%wb(:, 4)*y(9)) + k%wb(:, 5)*y(10)
+            k%cwb = k%b(:, 1)*k%cw(1) + k%b(:, 2)*k%cw(2) + k%b(:, 3)*k%cw(3)
+        end associate
     end subroutine chart_kinematics
 
-    !> Solve P qddot = Q, eq. (38): rows r /= k are Kane's equations (37) for the partial
-    !! rates of change of the independent speeds, Jv(:,r) + gamma_r Jv(:,k) (eq. (31)),
+    !> The derivative of chart_kinematics along a change dy of the chart state: dk holds the
+    !! change of every field of k (not dk%ps).  The body's motion is differentiated in its
+    !! rigid-body form: a body vector u turns as du = dTheta x u with dTheta = Omega dtheta
+    !! (eq. (14)); a body point at u from C has the partial velocities Omega_j x u and the
+    !! convective acceleration A x u + omega x (omega x u) (eqs. (24), (27)).
+    pure subroutine chart_kinematics_tangent(p, y, k, dy, dk)
+        type(pendulum_t), intent(in) :: p
+        real(dp), intent(in) :: y(:)            !! chart state
+        type(chart_kin_t), intent(in) :: k      !! its kinematics
+        real(dp), intent(in) :: dy(:)           !! change of the state
+        type(chart_kin_t), intent(out) :: dk
+        real(dp) :: thd(5), dth(5), dthd(5), dtheta(3), u(3), du(3), sdsd, ssd, dsdsd, dssd
+        real(dp) :: z, dz, z3
+        integer :: i
+        logical :: moved
+        thd = [y(6), 0.0_dp, 0.0_dp, y(9), y(10)]
+        dth = [dy(1), 0.0_dp, 0.0_dp, dy(4), dy(5)]
+        dthd = [dy(6), 0.0_dp, 0.0_dp, dy(9), dy(10)]
+        moved = any(dy(1:5) /= 0.0_dp)
+        ! the cable
+        z = k%zeta
+        dz = -(y(2)*dy(2) + y(3)*dy(3))/z
+        dk%zeta = dz
+        dk%e = [dy(2), dy(3), -dz]
+        dk%c = p%big_l*dk%e
+        sdsd = y(7)*y(7) + y(8)*y(8)
+        ssd = y(2)*y(7) + y(3)*y(8)
+        dsdsd = 2.0_dp*(y(7)*dy(7) + y(8)*dy(8))
+        dssd = dy(2)*y(7) + dy(3)*y(8) + y(2)*dy(7) + y(3)*dy(8)
+        z3 = z**3
+        dk%econv = [0.0_dp, 0.0_dp, dsdsd/z - sdsd*dz/z**2 + 2.0_dp*ssd*dssd/z3 &
+                    - 3.0_dp*ssd**2*dz/(z3*z)]
+        dk%jv(:, 2) = p%big_l*[0.0_dp, 0.0_dp, dy(2)/z - y(2)*dz/z**2]
+        dk%jv(:, 3) = p%big_l*[0.0_dp, 0.0_dp, dy(3)/z - y(3)*dz/z**2]
+        ! the body's rotation: dTheta, the frame, the partial angular velocities
+        dtheta = (k%jw(:, 1)*dy(1) + k%jw(:, 4)*dy(4)) + k%jw(:, 5)*dy(5)
+        if (moved) then
+            do i = 1, 3
+                dk%n(i, :) = cross(dtheta, k%n(i, :))
+            end do
+            call omega_partials_tangent(k%ps, dth, dk%jw)
+        else
+            dk%n = 0.0_dp
+            dk%jw = 0.0_dp
+        end if
+        dk%omega = (dk%jw(:, 1)*y(6) + dk%jw(:, 5)*y(10)) &
+                   + ((k%jw(:, 1)*dy(6) + k%jw(:, 4)*dy(9)) + k%jw(:, 5)*dy(10))
+        call omega_conv_tangent(k%ps, thd, dth, dthd, dk%cw)
+        ! R* = C + rho
+        dk%rho = cross(dtheta, k%rho)
+        call body_point_tangent(k, dk, k%rho, dk%rho, moved, dk%jv, dk%cv)
+        dk%cv = dk%cv + p%big_l*dk%econv
+        ! D = C + u, u = -ntilde_3
+        u = -k%n(3, :)
+        du = -dk%n(3, :)
+        dk%d = dk%c + du
+        call body_point_tangent(k, dk, u, du, moved, dk%jd, dk%cd)
+        dk%jd(:, 1) = 0.0_dp
+        dk%jd(:, 2:3) = dk%jv(:, 2:3)
+        dk%cd = dk%cd + p%big_l*dk%econv
+        ! along the principal axes: the axes turn, db_i = dTheta x b_i
+        if (moved) then
+            do i = 1, 3
+                dk%b(i, :) = cross(dtheta, k%b(i, :))
+            end do
+        else
+            dk%b = 0.0_dp
+        end if
+        dk%wb(:, 1:3) = 0.0_dp
+        dk%wb(:, 4) = -dk%b(:, 3)
+        dk%wb(:, 5) = (k%ps%c4*dk%b(:, 1) - k%ps%s4*dk%b(:, 2)) &
+                      - dy(4)*(k%ps%s4*k%b(:, 1) + k%ps%c4*k%b(:, 2))
+        dk%omb = (dk%wb(:, 4)*y(9) + dk%wb(:, 5)*y(10)) &
+                 + ((k%wb(:, 1)*dy(6) + k%wb(:, 4)*dy(9)) + k%wb(:, 5)*dy(10))
+        dk%cwb = matmul(dk%b, k%cw) + matmul(k%b, dk%cw)
+        dk%ps = pose_t()
+    end subroutine chart_kinematics_tangent
+
+    !> The change of a body point's partial velocities (columns 1, 4, 5: Omega_j x u) and of
+    !! its convective acceleration (A x u + omega x (omega x u)), u = point - C.  When only
+    !! the rates change (moved = .false.: dk%jw = 0, du = 0) the partial velocities do not.
+    pure subroutine body_point_tangent(k, dk, u, du, moved, dj, dconv)
+        type(chart_kin_t), intent(in) :: k, dk  !! kinematics and their change
+        real(dp), intent(in) :: u(3), du(3)     !! the point's offset from C and its change
+        logical, intent(in) :: moved            !! the angles change
+        real(dp), intent(inout) :: dj(3, 5)     !! columns 1, 4, 5 set
+        real(dp), intent(out) :: dconv(3)
+        integer :: j
+        if (moved) then
+            do j = 1, 5
+                if (j == 2 .or. j == 3) cycle
+                dj(:, j) = cross(dk%jw(:, j), u) + cross(k%jw(:, j), du)
+            end do
+            dconv = cross(dk%cw, u) + cross(k%cw, du) + cross(dk%omega, cross(k%omega, u)) &
+                    + cross(k%omega, cross(dk%omega, u) + cross(k%omega, du))
+        else
+            dj(:, 1) = 0.0_dp
+            dj(:, 4:5) = 0.0_dp
+            dconv = cross(dk%cw, u) + cross(dk%omega, cross(k%omega, u)) &
+                    + cross(k%omega, cross(dk%omega, u))
+        end if
+    end subroutine body_point_tangent
+
+    !> The constraint's gradient, D's velocity and the velocity terms of the twice
+    !! differentiated constraint G = |AD|^2 - L'^2 (with Baumgarte's terms when
+    !! p%stab_rate > 0): G'' = gradg . qddot + gconv.
+    pure subroutine constraint_terms(p, y, k, gradg, vd, gconv)
+        type(pendulum_t), intent(in) :: p
+        real(dp), intent(in) :: y(:)
+        type(chart_kin_t), intent(in) :: k
+        real(dp), intent(out) :: gradg(5), vd(3), gconv
+        integer :: j
+        gradg(1) = 0.0_dp                       ! theta_1 turns the body about CD
+        do j = 2, 5
+            gradg(j) = 2.0_dp*((k%d(1)*k%jd(1, j) + k%d(2)*k%jd(2, j)) + k%d(3)*k%jd(3, j))
+        end do
+        vd = ((k%jd(:, 2)*y(7) + k%jd(:, 3)*y(8)) + k%jd(:, 4)*y(9)) + k%jd(:, 5)*y(10)
+        gconv = 2.0_dp*(dot_product(vd, vd) + dot_product(k%d, k%cd))
+        if (p%stab_rate > 0.0_dp) then
+            ! Baumgarte: drift off G = 0 decays at rate a; nothing changes on G = G' = 0
+            gconv = gconv + 4.0_dp*p%stab_rate*dot_product(k%d, vd) &
+                    + p%stab_rate**2*(dot_product(k%d, k%d) - p%big_lp**2)
+        end if
+    end subroutine constraint_terms
+
+    !> Assemble and solve P qddot = Q, eq. (38): rows r /= k are Kane's equations (37) for the
+    !! partial rates of change of the independent speeds, Jv(:,r) + gamma_r Jv(:,k) (eq. (31)),
     !! with gamma_r = -gradg(r)/gradg(k); row k is the twice-differentiated constraint
-    !! gradg . qddot + gconv = 0.  k = `dependent`, or the largest |gradg| when absent.
-    subroutine assemble_and_solve(jv, cv, jw, cw, omega, in, gradg, gconv, qdd, stat, dependent)
-        real(dp), intent(in) :: jv(3, 5), cv(3), jw(3, 5), cw(3), omega(3), in(3, 3)
+    !! gradg . qddot + gconv = 0.  k = `dependent`, or the largest |gradg| when absent.  The
+    !! system is solved through its structure (constrained_solve); the factor stays in eo
+    !! (for the Jacobian).
+    subroutine solve_eq38(jv, cv, wb, cwb, omb, inertia, gradg, gconv, eo, stat, dependent)
+        real(dp), intent(in) :: jv(3, 5), cv(3)         !! R*: partial velocities, a at qddot = 0
+        real(dp), intent(in) :: wb(3, 5), cwb(3), omb(3)    !! the same for the rotation, and
+                                                            !! omega, in principal axes
+        real(dp), intent(in) :: inertia(3)              !! principal moments
         real(dp), intent(in) :: gradg(5), gconv
-        real(dp), intent(out) :: qdd(5)
+        type(eom_t), intent(inout) :: eo
         type(status_t), intent(out) :: stat
         integer, intent(in), optional :: dependent
-        real(dp) :: pm(5, 5), f(5), gam
-        integer :: k, r
-        pm = generalized_inertia(jv, jw, in)
-        f = generalized_forces(jv, cv, jw, cw, omega, in)
+        real(dp) :: jvi(3, 4), wbi(3, 4), u(4), force(3), torque(3), t0
+        integer :: k, r, a, ia
+        eo%qdd = 0.0_dp
         if (present(dependent)) then
             k = dependent
         else
-            k = maxloc(abs(gradg), 1)
+            k = 1
+            do r = 2, 5
+                if (abs(gradg(r)) > abs(gradg(k))) k = r
+            end do
         end if
+        eo%k = k
         if (.not. (abs(gradg(k)) > 0.0_dp)) then
-            qdd = 0.0_dp
             call set_error(stat, ERR_MODEL, 'constraint gradient vanishes (beta = 0)')
             return
         end if
+        ! the constraint row: qddot_k = t0 + sum_r gamma_r qddot_r
+        t0 = -gconv/gradg(k)
+        a = 0
         do r = 1, 5
-            if (r == k) cycle
-            gam = -gradg(r)/gradg(k)
-            pm(r, :) = pm(r, :) + gam*pm(k, :)
-            f(r) = f(r) + gam*f(k)
+            if (r == k) then
+                eo%gam(r) = 0.0_dp
+            else
+                a = a + 1
+                eo%ind(a) = r
+                eo%gam(r) = -gradg(r)/gradg(k)
+                ! partial velocities of the independent speeds, eq. (31)
+                jvi(:, a) = jv(:, r) + eo%gam(r)*jv(:, k)
+                wbi(:, a) = wb(:, r) + eo%gam(r)*wb(:, k)
+            end if
         end do
-        pm(k, :) = gradg
-        f(k) = -gconv
-        qdd = f
-        call la_solve(pm, qdd, stat)
+        ! Kane's equations (37) for them: the resultant force on R* (gravity and -m a at the
+        ! independent qddot = 0, where qddot_k = t0) and torque on the body (the inertia
+        ! torque there); active forces and torques are added here
+        force = -(cv + t0*jv(:, k))
+        force(3) = force(3) - 1.0_dp            ! g = 1
+        torque = inertia_torque(inertia, cwb + t0*wb(:, k), omb)
+        call project(4, jvi, wbi, force, torque, u)
+        call generalized_inertia(4, jvi, wbi, inertia, eo%chol)
+        call la_small_chol(4, eo%chol, stat)
         if (stat%code /= 0) then
-            qdd = 0.0_dp
             call set_error(stat, ERR_NUMERIC, 'eq. (38): '//stat%msg)
+            return
         end if
-    end subroutine assemble_and_solve
+        call la_small_chol_solve(4, eo%chol, u)
+        eo%qdd(k) = t0
+        do a = 1, 4
+            ia = eo%ind(a)
+            eo%qdd(ia) = u(a)
+            eo%qdd(k) = eo%qdd(k) + eo%gam(ia)*u(a)
+        end do
+    end subroutine solve_eq38
+
+    !> The solution x of eq. (38)'s structure for the right-hand side (e, c): M x = e +
+    !! gradg mu (mu free), gradg . x = c.  With x = T u + t0 e_k, t0 = c/gradg(k), T = [I; gamma]
+    !! (eq. (31)): (T^T M T) u = T^T (e - t0 M e_k), by the Cholesky factor in eo (eo%mk = M e_k
+    !! set by the caller).  (The rows T^T M are those of P in eq. (38).)
+    pure subroutine constrained_solve(eo, e, c, x)
+        type(eom_t), intent(in) :: eo           !! factored system (solve_eq38)
+        real(dp), intent(in) :: e(5), c         !! Kane's right-hand side; the constraint's
+        real(dp), intent(out) :: x(5)
+        real(dp) :: u(4), t0
+        integer :: a, ia
+        t0 = c/eo%gradg(eo%k)
+        do a = 1, 4
+            ia = eo%ind(a)
+            u(a) = (e(ia) + eo%gam(ia)*e(eo%k)) - t0*(eo%mk(ia) + eo%gam(ia)*eo%mk(eo%k))
+        end do
+        call la_small_chol_solve(4, eo%chol, u)
+        x(eo%k) = t0
+        do a = 1, 4
+            ia = eo%ind(a)
+            x(ia) = u(a)
+            x(eo%k) = x(eo%k) + eo%gam(ia)*u(a)
+        end do
+    end subroutine constrained_solve
 
     !> Accelerations in the regular chart: qddot = (thddot1, sigma1'', sigma2'', thddot4, thddot5).
     subroutine chart_accelerations(p, y, qdd, stat)
@@ -171,14 +438,29 @@ contains
         real(dp), intent(out) :: qdd(5)         !! chart accelerations
         type(status_t), intent(out) :: stat     !! ERR_MODEL: cable BC horizontal or worse
         type(chart_kin_t) :: k
+        type(eom_t) :: eo
+        call chart_solve(p, y, k, eo, stat)
+        qdd = eo%qdd
+    end subroutine chart_accelerations
+
+    !> Kinematics and eq. (38) at a chart state (ERR_MODEL when the chart is not regular).
+    subroutine chart_solve(p, y, k, eo, stat, sc_lambda)
+        type(pendulum_t), intent(in) :: p
+        real(dp), intent(in) :: y(:)
+        type(chart_kin_t), intent(out) :: k
+        type(eom_t), intent(out) :: eo
+        type(status_t), intent(out) :: stat
+        real(dp), intent(in), optional :: sc_lambda(2)  !! sin, cos of p%lambda (body_pose)
+        real(dp) :: gconv
+        eo%qdd = 0.0_dp
         if (.not. chart_regular(y)) then
-            qdd = 0.0_dp
             call set_error(stat, ERR_MODEL, 'cable BC has swung up to the horizontal (theta2 = 90 deg)')
             return
         end if
-        call chart_kinematics(p, y, k)
-        call accelerations_from(p, y, k, qdd, stat)
-    end subroutine chart_accelerations
+        call chart_kinematics(p, y, k, sc_lambda)
+        call constraint_terms(p, y, k, eo%gradg, eo%vd, gconv)
+        call solve_eq38(k%jv, k%cv, k%wb, k%cwb, k%omb, p%inertia, eo%gradg, gconv, eo, stat)
+    end subroutine chart_solve
 
     !> The chart is regular while the cable BC hangs below the horizontal.
     pure logical function chart_regular(y)
@@ -186,25 +468,96 @@ contains
         chart_regular = y(2)**2 + y(3)**2 < 0.999999_dp
     end function chart_regular
 
-    !> Eq. (38) in the chart from the kinematics k of state y.
-    subroutine accelerations_from(p, y, k, qdd, stat)
+    !> The accelerations and their Jacobian Z = d f / d y of the chart right-hand side
+    !! f = (qdot, qddot) (eq. (51)), exact.  Each column of the lower half is the derivative of
+    !! the accelerations along a unit change of y: the derivatives of the kinematics
+    !! (chart_kinematics_tangent) carried through Kane's equations and the constraint
+    !! (eom_tangent) and solved with the factors of eq. (38).
+    subroutine chart_jacobian(p, y, qdd, z, stat)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters
+        real(dp), intent(in) :: y(NSTATE)       !! chart state
+        real(dp), intent(out) :: qdd(5)         !! accelerations at y
+        real(dp), intent(out) :: z(NSTATE, NSTATE)  !! df_i/dy_j
+        type(status_t), intent(out) :: stat     !! as chart_accelerations
+        type(chart_kin_t) :: k, dk
+        type(eom_t) :: eo
+        real(dp) :: dy(NSTATE), a(3), alpha(3), res(5), tq(3), mu, iwk(3)
+        integer :: j
+        z = 0.0_dp
+        call chart_solve(p, y, k, eo, stat)
+        qdd = eo%qdd
+        if (stat%code /= 0) return
+        do j = 1, 5
+            z(j, j + 5) = 1.0_dp
+        end do
+        ! the solution's accelerations, the residual of the unconstrained Kane's equations
+        ! (R = f - M qddot, equal to gradg mu at the solution) and the multiplier mu
+        a = matmul(k%jv, qdd) + k%cv
+        alpha = matmul(k%wb, qdd) + k%cwb
+        tq = inertia_torque(p%inertia, alpha, k%omb)
+        call project(5, k%jv, k%wb, -(a + [0.0_dp, 0.0_dp, 1.0_dp]), tq, res)
+        mu = res(eo%k)/eo%gradg(eo%k)
+        ! column k of the generalized inertia M, for constrained_solve
+        iwk = p%inertia*k%wb(:, eo%k)
+        do j = 1, 5
+            eo%mk(j) = dot_product(k%jv(:, j), k%jv(:, eo%k)) + dot_product(k%wb(:, j), iwk)
+        end do
+        do j = 1, NSTATE
+            dy = 0.0_dp
+            dy(j) = 1.0_dp
+            call chart_kinematics_tangent(p, y, k, dy, dk)
+            call eom_tangent(p, y, k, eo, a, tq, mu, dy, dk, z(6:10, j))
+        end do
+    end subroutine chart_jacobian
+
+    !> The change of the accelerations along a change dy of the state (kinematics changed by
+    !! dk): eq. (38) with the Lagrange multiplier mu of the constraint, M qddot - gradg mu = f,
+    !! gradg . qddot = -gconv, differentiated: M dqddot - gradg dmu = e, gradg . dqddot =
+    !! -(dgconv + dgradg . qddot), e = dR - mu dgradg, dR the change of R = f - M qddot at fixed
+    !! qddot; solved with the same factor (constrained_solve).
+    pure subroutine eom_tangent(p, y, k, eo, a, tq, mu, dy, dk, dqdd)
         type(pendulum_t), intent(in) :: p
         real(dp), intent(in) :: y(:)
-        type(chart_kin_t), intent(in) :: k
-        real(dp), intent(out) :: qdd(5)
-        type(status_t), intent(out) :: stat
-        real(dp) :: in(3, 3), gradg(5), vd(3), gconv
-        in = inertia_dyadic(body_axes(p, k%n), p%inertia)
-        gradg = 2.0_dp*matmul(k%d, k%jd)
-        vd = matmul(k%jd, y(6:10))
-        gconv = 2.0_dp*(dot_product(vd, vd) + dot_product(k%d, k%cd))
-        if (p%stab_rate > 0.0_dp) then
-            ! Baumgarte: drift off G = 0 decays at rate a; nothing changes on G = G' = 0
-            gconv = gconv + 4.0_dp*p%stab_rate*dot_product(k%d, vd) &
-                    + p%stab_rate**2*(dot_product(k%d, k%d) - p%big_lp**2)
-        end if
-        call assemble_and_solve(k%jv, k%cv, k%jw, k%cw, k%omega, in, gradg, gconv, qdd, stat)
-    end subroutine accelerations_from
+        type(chart_kin_t), intent(in) :: k, dk
+        type(eom_t), intent(in) :: eo
+        real(dp), intent(in) :: a(3), tq(3)     !! R*'s acceleration and the inertia torque
+                                                !! (in principal axes) at the solution
+        real(dp), intent(in) :: mu                      !! the constraint's multiplier
+        real(dp), intent(in) :: dy(:)
+        real(dp), intent(out) :: dqdd(5)
+        real(dp) :: da(3), dalpha(3), dtq(3), e1(5), e2(5), dgradg(5), dvd(3)
+        real(dp) :: dgconv
+        integer :: j
+        associate (qdd => eo%qdd, in => p%inertia, w => k%omb, dw => dk%omb)
+            ! Kane's equations: R = Jv^T (-(a + g n3)) + Wb^T T, T = -I alpha - w x I w
+            da = matmul(dk%jv, qdd) + dk%cv
+            dalpha = matmul(dk%wb, qdd) + dk%cwb
+            dtq = -in*dalpha - cross(dw, in*w) - cross(w, in*dw)
+            call project(5, k%jv, k%wb, -da, dtq, e2)
+            if (any(dy(1:5) /= 0.0_dp)) then
+                call project(5, dk%jv, dk%wb, -(a + [0.0_dp, 0.0_dp, 1.0_dp]), tq, e1)
+                ! the constraint
+                do j = 1, 5
+                    dgradg(j) = 2.0_dp*(dot_product(dk%d, k%jd(:, j)) &
+                                        + dot_product(k%d, dk%jd(:, j)))
+                end do
+            else
+                ! only the rates change: the partial velocities and gradg do not
+                e1 = 0.0_dp
+                dgradg = 0.0_dp
+            end if
+            dvd = matmul(dk%jd, y(6:10)) + matmul(k%jd, dy(6:10))
+            dgconv = 2.0_dp*(2.0_dp*dot_product(eo%vd, dvd) + dot_product(dk%d, k%cd) &
+                             + dot_product(k%d, dk%cd))
+            if (p%stab_rate > 0.0_dp) then
+                dgconv = dgconv + 4.0_dp*p%stab_rate*(dot_product(dk%d, eo%vd) &
+                                                      + dot_product(k%d, dvd)) &
+                         + 2.0_dp*p%stab_rate**2*dot_product(k%d, dk%d)
+            end if
+            e1 = e1 + e2 - mu*dgradg
+            call constrained_solve(eo, e1, -(dgconv + dot_product(dgradg, qdd)), dqdd)
+        end associate
+    end subroutine eom_tangent
 
     !> Accelerations thddot_1..5 from eq. (38) in the paper's own coordinates, theta_5
     !! eliminated as in eqs. (5), (31).  Singular at theta_2 = 0 and beta_5 = 0.
@@ -213,31 +566,36 @@ contains
         real(dp), intent(in) :: th(5), thd(5)   !! angles and rates
         real(dp), intent(out) :: thdd(5)        !! their second derivatives
         type(status_t), intent(out) :: stat
+        type(pose_t) :: ps
+        type(eom_t) :: eo
         real(dp) :: n(3, 3), jv(3, 5), cv(3), jw(3, 5), cw(3), omega(3), jd(3, 5), cd(3)
-        real(dp) :: in(3, 3), gradg(5), d(3), vd(3), vdc(3, 5), gconv
-        real(dp) :: s4, c4, s5, c5
-        n = direction_cosines(th)
-        jv = v_coeffs(p, th)
-        vdc = vdot_coeffs(p, th, thd)
+        real(dp) :: b(3, 3), gradg(5), d(3), vd(3), vdc(3, 5), gconv
+        ps = pose_of(th, p%lambda)
+        call frame(ps, n)
+        call v_partials(p, ps, jv)
+        call vdot_partials(p, ps, thd, vdc)
         cv = matmul(vdc, thd)
-        jw = omega_coeffs(th)
+        call omega_partials(ps, jw)
         omega = matmul(jw, thd)
-        cw = omega_dot_quadratic(th, thd)
-        s4 = sin(th(4)); c4 = cos(th(4)); s5 = sin(th(5)); c5 = cos(th(5))
-        d = [0.0_dp, -p%big_b, 0.0_dp] + p%big_l*[sin(th(2))*cos(th(3)), &
-            sin(th(2))*sin(th(3)), -cos(th(2))] + [c5*s4, c5*c4, s5]
-        jd = 0.0_dp
-        jd(:, 2:3) = jv(:, 2:3)
-        jd(:, 4) = [c5*c4, -c5*s4, 0.0_dp]
-        jd(:, 5) = [-s5*s4, -s5*c4, c5]
-        cd = vdc(:, 2)*thd(2) + vdc(:, 3)*thd(3) &
-             + [-c5*s4*(thd(4)**2 + thd(5)**2) - 2.0_dp*s5*c4*thd(4)*thd(5), &
-                -c5*c4*(thd(4)**2 + thd(5)**2) + 2.0_dp*s5*s4*thd(4)*thd(5), -s5*thd(5)**2]
-        in = inertia_dyadic(body_axes(p, n), p%inertia)
+        call omega_conv(ps, thd, cw)
+        associate (s4 => ps%s4, c4 => ps%c4, s5 => ps%s5, c5 => ps%c5)
+            d = [0.0_dp, -p%big_b, 0.0_dp] + p%big_l*[ps%s2*ps%c3, ps%s2*ps%s3, -ps%c2] &
+                + [c5*s4, c5*c4, s5]
+            jd = 0.0_dp
+            jd(:, 2:3) = jv(:, 2:3)
+            jd(:, 4) = [c5*c4, -c5*s4, 0.0_dp]
+            jd(:, 5) = [-s5*s4, -s5*c4, c5]
+            cd = vdc(:, 2)*thd(2) + vdc(:, 3)*thd(3) &
+                 + [-c5*s4*(thd(4)**2 + thd(5)**2) - 2.0_dp*s5*c4*thd(4)*thd(5), &
+                    -c5*c4*(thd(4)**2 + thd(5)**2) + 2.0_dp*s5*s4*thd(4)*thd(5), -s5*thd(5)**2]
+        end associate
+        b = body_axes(p, n)
         gradg = 2.0_dp*matmul(d, jd)
         vd = matmul(jd, thd)
         gconv = 2.0_dp*(dot_product(vd, vd) + dot_product(d, cd))
-        call assemble_and_solve(jv, cv, jw, cw, omega, in, gradg, gconv, thdd, stat, dependent=5)
+        call solve_eq38(jv, cv, matmul(b, jw), matmul(b, cw), matmul(b, omega), p%inertia, &
+                        gradg, gconv, eo, stat, dependent=5)
+        thdd = eo%qdd
     end subroutine paper_accelerations
 
     !> Chart state from the paper's angles and rates: sigma = s2 (c3, s3).
@@ -286,7 +644,7 @@ contains
         type(pendulum_t), intent(in) :: p
         real(dp), intent(in) :: y(10)
         real(dp), intent(out) :: c(3), d(3), rstar(3), e(3), n(3, 3)
-        n = direction_cosines([y(1), 0.0_dp, 0.0_dp, y(4), y(5)])
+        call frame(body_pose(y(1), y(4), y(5), 0.0_dp), n)
         c = [0.0_dp, -p%big_b, 0.0_dp] + p%big_l*cable_direction(y(2:3))
         d = c - n(3, :)
         rstar = mass_centre(p, c, n)
@@ -307,11 +665,10 @@ contains
         type(pendulum_t), intent(in) :: p
         real(dp), intent(in) :: y(10)
         type(chart_kin_t), intent(in) :: k
-        real(dp) :: v(3), rs(3), in(3, 3)
-        in = inertia_dyadic(body_axes(p, k%n), p%inertia)
+        real(dp) :: v(3), rs(3)
         v = matmul(k%jv, y(6:10))
-        rs = mass_centre(p, k%c, k%n)
-        en = 0.5_dp*dot_product(v, v) + 0.5_dp*dot_product(k%omega, matmul(in, k%omega)) + rs(3)
+        rs = k%c + k%rho
+        en = 0.5_dp*dot_product(v, v) + 0.5_dp*sum(k%omb*(p%inertia*k%omb)) + rs(3)
     end function energy_from
 
     !> The constraint eq. (2) and its rate at a chart state: g = |AD|^2 - L'^2, gdot = dg/dtau.
@@ -325,53 +682,97 @@ contains
         gdot = 2.0_dp*dot_product(k%d, matmul(k%jd, y(6:10)))
     end subroutine chart_constraint
 
-    !> Everything reported about the motion at one instant: angles in the paper's terms,
-    !! accelerations, energy, constraint residual, side-sway Q, and the cable tensions from
-    !! Newton's law for the body: m a = -m g n3 - T_BC e_BC - T_AD e_AD.
-    subroutine evaluate(p, y, th3_ref, mo, stat)
+    !> The motion reported at one instant: angles in the paper's terms, and as `parts` asks
+    !! (default: all) the accelerations with the cable tensions from Newton's law for the
+    !! body, m a = -m g n3 - T_BC e_BC - T_AD e_AD, the energy, the constraint residual and
+    !! the side-sway Q.  Fields not asked for are left 0.
+    subroutine evaluate(p, y, th3_ref, mo, stat, parts)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         real(dp), intent(in) :: y(10)           !! chart state
         real(dp), intent(in) :: th3_ref         !! previous theta_3 (branch choice)
         type(motion_t), intent(out) :: mo
         type(status_t), intent(out) :: stat
+        type(motion_parts_t), intent(in), optional :: parts
+        type(motion_parts_t) :: want
         type(chart_kin_t) :: k
-        real(dp) :: ebc(3), ead(3), f(3), a11, a12, a22, r1, r2, det, pe(3), mid(3)
+        type(eom_t) :: eo
+        real(dp) :: gconv, pe(3), mid(3)
+        if (present(parts)) want = parts
         call paper_angles(y, th3_ref, mo%th, mo%thd)
         if (.not. chart_regular(y)) then
             call set_error(stat, ERR_MODEL, 'cable BC has swung up to the horizontal (theta2 = 90 deg)')
             return
         end if
         call chart_kinematics(p, y, k)
-        call accelerations_from(p, y, k, mo%qdd, stat)
-        if (stat%code /= 0) return
-        mo%frame = body_axes(p, k%n)
-        mo%rstar = mass_centre(p, k%c, k%n)
+        if (want%accelerations) then
+            call constraint_terms(p, y, k, eo%gradg, eo%vd, gconv)
+            call solve_eq38(k%jv, k%cv, k%wb, k%cwb, k%omb, p%inertia, eo%gradg, gconv, eo, stat)
+            if (stat%code /= 0) return
+            mo%qdd = eo%qdd
+            mo%astar = matmul(k%jv, mo%qdd) + k%cv
+            mo%alpha = matmul(k%jw, mo%qdd) + k%cw
+            call cable_tensions(y, k, mo%astar, mo%t_bc, mo%t_ad)
+        end if
+        mo%frame = k%b
+        mo%rstar = k%c + k%rho
         mo%vstar = matmul(k%jv, y(6:10))
-        mo%astar = matmul(k%jv, mo%qdd) + k%cv
         mo%omega = k%omega
-        mo%alpha = matmul(k%jw, mo%qdd) + k%cw
-        mo%energy = energy_from(p, y, k)
-        mo%residual = norm2(k%d) - p%big_lp
-        ! side-sway: O = (0, -B/2, 0); E below the midpoint of CD
-        pe = point_e(p, k%c, k%n)
-        mid = k%c - 0.5_dp*k%n(3, :)
-        mo%q_sway = sqrt(pe(1)**2 + (pe(2) + 0.5_dp*p%big_b)**2)
-        mo%q_axis = sqrt((pe(1) - mid(1))**2 + (pe(2) - mid(2))**2)
-        ! tensions: least squares of [ebc ead] T = -(a + n3)
+        if (want%energy) mo%energy = energy_from(p, y, k)
+        if (want%residual) mo%residual = norm2(k%d) - p%big_lp
+        if (want%sway) then
+            ! side-sway: O = (0, -B/2, 0); E below the midpoint of CD
+            pe = point_e(p, k%c, k%n)
+            mid = k%c - 0.5_dp*k%n(3, :)
+            mo%q_sway = sqrt(pe(1)**2 + (pe(2) + 0.5_dp*p%big_b)**2)
+            mo%q_axis = sqrt((pe(1) - mid(1))**2 + (pe(2) - mid(2))**2)
+        end if
+    end subroutine evaluate
+
+    !> The cable tensions (over m g) at a chart state from its rates' derivative ydot, as the
+    !! integrator holds it at the end of a step: Newton's law for the body with R*'s
+    !! acceleration a = Jv qddot + cv from qddot = ydot(6:10), without solving eq. (38)
+    !! again.  For the validity check at every step (a slack cable).
+    subroutine step_tensions(sys, y, ydot, t_bc, t_ad, stat)
+        class(bifilar_t), intent(inout) :: sys  !! the pendulum
+        real(dp), intent(in) :: y(NSTATE)       !! chart state
+        real(dp), intent(in) :: ydot(NSTATE)    !! its derivative
+        real(dp), intent(out) :: t_bc, t_ad     !! tensions of BC and AD over m g
+        type(status_t), intent(out) :: stat     !! ERR_MODEL: the chart is not regular
+        type(chart_kin_t) :: k
+        t_bc = 0.0_dp
+        t_ad = 0.0_dp
+        if (.not. chart_regular(y)) then
+            call set_error(stat, ERR_MODEL, 'cable BC has swung up to the horizontal (theta2 = 90 deg)')
+            return
+        end if
+        call refresh_lambda(sys)
+        call chart_kinematics(sys%p, y, k, sys%sc_lambda, dynamics=.false.)
+        call cable_tensions(y, k, matmul(k%jv, ydot(6:10)) + k%cv, t_bc, t_ad)
+    end subroutine step_tensions
+
+    !> Tensions from R*'s acceleration a: least squares of [e_BC e_AD] T = -(a + g n3); when the
+    !! cables are parallel only their sum is determined and it is shared equally (before,
+    !! each cable was given the whole sum).
+    pure subroutine cable_tensions(y, k, astar, t_bc, t_ad)
+        real(dp), intent(in) :: y(:)            !! chart state
+        type(chart_kin_t), intent(in) :: k      !! its kinematics
+        real(dp), intent(in) :: astar(3)        !! acceleration of R*
+        real(dp), intent(out) :: t_bc, t_ad
+        real(dp) :: ebc(3), ead(3), f(3), a11, a12, a22, r1, r2, det
         ebc = cable_direction(y(2:3))
         ead = k%d/norm2(k%d)
-        f = -(mo%astar + [0.0_dp, 0.0_dp, 1.0_dp])
+        f = -(astar + [0.0_dp, 0.0_dp, 1.0_dp])
         a11 = dot_product(ebc, ebc); a12 = dot_product(ebc, ead); a22 = dot_product(ead, ead)
         r1 = dot_product(ebc, f); r2 = dot_product(ead, f)
         det = a11*a22 - a12**2
         if (abs(det) > 1.0e-14_dp) then
-            mo%t_bc = (a22*r1 - a12*r2)/det
-            mo%t_ad = (a11*r2 - a12*r1)/det
+            t_bc = (a22*r1 - a12*r2)/det
+            t_ad = (a11*r2 - a12*r1)/det
         else
-            ! cables parallel: only their sum is determined; share it equally
-            mo%t_bc = 0.5_dp*(r1 + r2)/a11
-            mo%t_ad = mo%t_bc
+            ! parallel cables: T_BC + T_AD = (e . f)/|e|^2, each takes half
+            t_bc = 0.25_dp*(r1 + r2)/a11
+            t_ad = t_bc
         end if
-    end subroutine evaluate
+    end subroutine cable_tensions
 
 end module bifilar_model

@@ -1,5 +1,5 @@
 !> The input deck: a namelist file with the groups &scene, &suspension, &body, &start,
-!! &integration, &cables, &floquet and &chart (see input/*.nml).  read_deck reads and validates it;
+!! &integration, &cables, &floquet, &chart and &output (see input/*.nml).  read_deck reads and validates it;
 !! every problem is an ERR_DECK status whose message names the deck, the group, the variable
 !! and its value, what is wrong and what is allowed.  Cable reachability is checked by the
 !! geometry module.
@@ -12,6 +12,11 @@ module deck
     use text, only: itoa, sci
     implicit none
     private
+
+    !> The columns of a simulation's .dat file, in their order (&output columns picks some).
+    character(len=*), parameter, public :: OUTPUT_COLUMNS = 'tau theta1 theta2 theta3 '// &
+        'theta4 theta5 theta1_dot theta2_dot theta3_dot theta4_dot theta5_dot Q Q_axis T_BC '// &
+        'T_AD energy_error constraint_residual'
 
     type, public :: deck_t
         character(len=:), allocatable :: path        !! deck file as given
@@ -50,6 +55,8 @@ module deck
         real(dp) :: chart_x_min = 0.5_dp, chart_x_max = 4.0_dp
         real(dp) :: chart_y_min = 5.0_dp, chart_y_max = 90.0_dp
         integer  :: chart_nx = 40, chart_ny = 40
+        ! &output: the .dat columns, blank-separated names of OUTPUT_COLUMNS in their order
+        character(len=512) :: columns = OUTPUT_COLUMNS
     end type deck_t
 
     public :: read_deck, analysis_requested, deck_echo
@@ -58,7 +65,7 @@ module deck
     character(len=*), parameter :: ANALYSES_ALLOWED = 'simulate floquet chart work_precision'
     !> Namelist groups a deck may contain.
     character(len=*), parameter :: GROUPS_ALLOWED = &
-        'scene suspension body start integration cables floquet chart'
+        'scene suspension body start integration cables floquet chart output'
     !> Words allowed in &scene model.
     character(len=*), parameter :: MODELS_ALLOWED = 'kane elastic'
     !> Words allowed in &integration method: 'auto' (radau for model = 'elastic', lsoda for
@@ -79,6 +86,7 @@ module deck
     character(len=*), parameter :: SPEC_FLOQUET = 'amplitude:r1 segments:i1 rtol:r1'
     character(len=*), parameter :: SPEC_CHART = &
         'x:c1 x_min:r1 x_max:r1 nx:i1 y:c1 y_min:r1 y_max:r1 ny:i1'
+    character(len=*), parameter :: SPEC_OUTPUT = 'columns:c1'
     real(dp), parameter :: RTOL_MIN = 1.0e-14_dp        !! smallest relative tolerance
     real(dp), parameter :: ATOL_MIN = 1.0e-30_dp        !! smallest absolute tolerance
     real(dp), parameter :: ATOL_MAX = 1.0_dp            !! largest absolute tolerance
@@ -133,6 +141,7 @@ contains
         character(len=256) :: x, y
         real(dp) :: x_min, x_max, y_min, y_max
         integer :: nx, ny
+        character(len=1024) :: columns
         ! &floquet's amplitude and rtol share names with &start and &integration, so its
         ! namelist lives in read_floquet; these hold its values here
         real(dp) :: fq_amplitude, fq_rtol
@@ -144,6 +153,7 @@ contains
         namelist /integration/ tau_end, dtau_out, rtol, atol, error_estimate, method
         namelist /cables/ stiffness, damping
         namelist /chart/ x, x_min, x_max, nx, y, y_min, y_max, ny
+        namelist /output/ columns
         integer :: u, ios, k
         integer(int64) :: fsize
         character(len=512) :: msg
@@ -190,6 +200,7 @@ contains
         y_min = d%chart_y_min
         y_max = d%chart_y_max
         ny = d%chart_ny
+        columns = d%columns
 
         msg = ''
         inquire (file=path, size=fsize, iostat=ios)
@@ -218,6 +229,7 @@ contains
             call read_group('cables', .false., SPEC_CABLES)
             call read_group('floquet', .false., SPEC_FLOQUET)
             call read_group('chart', .false., SPEC_CHART)
+            call read_group('output', .false., SPEC_OUTPUT)
             call traps_restore(halting)
         end if
         close (u, iostat=ios)
@@ -239,6 +251,8 @@ contains
         call check_word(stat, 'chart', 'x', x, CHART_VARIABLES)
         if (stat%code /= STATUS_OK) return
         call check_word(stat, 'chart', 'y', y, CHART_VARIABLES)
+        if (stat%code /= STATUS_OK) return
+        call check_columns(stat, columns, d%columns)
         if (stat%code /= STATUS_OK) return
         d%title = title
         d%analyses = lower(adjustl(analyses))
@@ -335,6 +349,8 @@ contains
                 read (u, nml=cables, iostat=ios2, iomsg=msg2)
             case ('floquet')
                 call read_floquet(u, fq_amplitude, fq_segments, fq_rtol, ios2, msg2)
+            case ('output')
+                read (u, nml=output, iostat=ios2, iomsg=msg2)
             case default
                 read (u, nml=chart, iostat=ios2, iomsg=msg2)
             end select
@@ -438,6 +454,8 @@ contains
             rshort(d%chart_x_max)//', nx = '//itoa(d%chart_nx)//', y = '//quoted(d%chart_y)// &
             ', y_min = '//rshort(d%chart_y_min)//', y_max = '//rshort(d%chart_y_max)// &
             ', ny = '//itoa(d%chart_ny)//' /')
+        if (trim(d%columns) /= OUTPUT_COLUMNS) call put('# &output columns = '// &
+            quoted(d%columns)//' /')
 
     contains
 
@@ -931,6 +949,79 @@ contains
         call set_error(stat, ERR_DECK, '&'//grp//' '//var//' = '''//clip(trim(val))// &
                        ''': unknown '//var//'; allowed: '//commas(allowed))
     end subroutine check_word
+
+    !> &output columns: blank-separated names from OUTPUT_COLUMNS (any case), at least one,
+    !! none twice; `cols` gets them in OUTPUT_COLUMNS' order, with its spelling.
+    subroutine check_columns(stat, columns, cols)
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on a problem
+        character(len=*), intent(in) :: columns     !! value read
+        character(len=*), intent(inout) :: cols     !! the columns, in OUTPUT_COLUMNS' order
+        character(len=len(columns)) :: list
+        character(len=len(OUTPUT_COLUMNS)) :: known
+        logical :: asked(count_words(OUTPUT_COLUMNS))
+        integer :: i1, i2, j1, j2, n
+        character(len=:), allocatable :: head, allowed
+        list = columns
+        do i1 = 1, len(list)
+            if (list(i1:i1) == achar(9)) list(i1:i1) = ' '
+        end do
+        known = lower(OUTPUT_COLUMNS)
+        head = '&output columns = '''//trim(adjustl(list))//''': '
+        allowed = 'allowed: blank-separated names, in any order and case, from: '// &
+            commas(OUTPUT_COLUMNS)
+        asked = .false.
+        i2 = 0
+        do
+            call next_word(list, i2, i1)
+            if (i1 == 0) exit
+            j2 = 0
+            n = 0
+            do
+                call next_word(known, j2, j1)
+                if (j1 == 0) exit
+                n = n + 1
+                if (known(j1:j2) == lower(list(i1:i2))) exit
+            end do
+            if (j1 == 0) then
+                call set_error(stat, ERR_DECK, head//'unknown column '''//list(i1:i2)// &
+                               '''; '//allowed)
+                return
+            end if
+            if (asked(n)) then
+                call set_error(stat, ERR_DECK, head//'column '''//list(i1:i2)// &
+                               ''' given twice; '//allowed)
+                return
+            end if
+            asked(n) = .true.
+        end do
+        if (.not. any(asked)) then
+            call set_error(stat, ERR_DECK, head//'no column given; '//allowed)
+            return
+        end if
+        cols = ''
+        j2 = 0
+        n = 0
+        do
+            call next_word(OUTPUT_COLUMNS, j2, j1)
+            if (j1 == 0) exit
+            n = n + 1
+            if (asked(n)) cols = trim(cols)//' '//OUTPUT_COLUMNS(j1:j2)
+        end do
+        cols = adjustl(cols)
+    end subroutine check_columns
+
+    !> Number of blank-separated words in s.
+    pure integer function count_words(s) result(n)
+        character(len=*), intent(in) :: s
+        integer :: i1, i2
+        n = 0
+        i2 = 0
+        do
+            call next_word(s, i2, i1)
+            if (i1 == 0) exit
+            n = n + 1
+        end do
+    end function count_words
 
     !> Every word of &scene analyses must be known; at least one word.
     subroutine check_analyses(stat, analyses)

@@ -9,29 +9,35 @@
 !! singularity.  The variational equations (51), dH/dt = Z H, are integrated along the orbit
 !! in the regular chart of bifilar_model (the orbit lies on theta2 = 0, where the paper's
 !! coordinates are singular) over `nseg` shooting segments; the multipliers are the
-!! eigenvalues of the product of the segment matrices (LAPACK DGEEV).  Z is the Jacobian of
-!! the chart right-hand side by central differences (see jacobian_z).
+!! eigenvalues of the product of the segment matrices (LAPACK DGEEV).  Z is the exact
+!! Jacobian of the chart right-hand side (see jacobian_z).
 module floquet
     use kinds, only: dp, pi
     use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC
     use ode_system, only: ode_system_t
     use geometry, only: pendulum_t, raised_angles, solve_theta5
     use bifilar_model, only: chart_accelerations, chart_state, chart_energy, chart_constraint, &
-                             NSTATE
+                             chart_jacobian, NSTATE
     use lsoda, only: lsoda_t, lsoda_stats_t
-    use lapack_wrap, only: la_eig, la_geig, la_lu_factor, la_lu_solve
+    use lapack_wrap, only: la_eig, la_geig, la_lu_factor, la_lu_solve, la_lu_solve_many
     implicit none
     private
 
     integer, parameter :: NV = NSTATE + NSTATE*NSTATE   !! orbit + monodromy columns
 
-    !> The orbit and its variational equations as one ODE system.
+    !> The orbit and its variational equations as one ODE system.  Its stiff-method iteration
+    !! matrix is I - h l0 diag(Z, ..., Z) (the coupling of H to the orbit left out, see
+    !! variational_factor): the system factors the one 10 x 10 block and solves the 11
+    !! blocks with it (ode_system's structured iteration), never a 110 x 110 matrix.
     type, extends(ode_system_t), public :: variational_t
         type(pendulum_t) :: p
+        real(dp) :: lu(NSTATE, NSTATE) = 0.0_dp     !! LU factors of I - h l0 Z
+        integer :: ipiv(NSTATE) = 0                 !! their pivots
     contains
         procedure :: rhs => variational_rhs
-        procedure :: jacobian => variational_jacobian
-        procedure :: has_jacobian => variational_has_jacobian
+        procedure :: has_iteration_solver => variational_structured
+        procedure :: factor_iteration => variational_factor
+        procedure :: solve_iteration => variational_solve
     end type variational_t
 
     !> Result of one Floquet analysis.
@@ -156,54 +162,15 @@ contains
         end do
     end subroutine gauss_legendre
 
-    !> Z = d f / d y of the chart right-hand side (eq. (51)).  The accelerations are exactly
-    !! quadratic in the rates, so a central difference with h = max(1, |y_j|) is exact for the
-    !! rate columns (no truncation, rounding ~ eps).  The position columns use the fourth-order
-    !! central stencil with h = 5e-4 max(1, |y_j|): truncation ~ h^4/30 |f^(5)|, rounding
-    !! ~ eps/h ~ 4e-13, smooth along the orbit (no noise for the step control).  The step was
-    !! set by the reciprocal-pair test at modulus 2.65e3 (h = 1e-3 left a pair error of 2e-6).
+    !> Z = d f / d y of the chart right-hand side (eq. (51)), exact (bifilar_model's
+    !! chart_jacobian: the derivatives of the kinematics through Kane's equations).
     subroutine jacobian_z(p, y, z, stat)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         real(dp), intent(in) :: y(NSTATE)       !! chart state
         real(dp), intent(out) :: z(NSTATE, NSTATE)
         type(status_t), intent(out) :: stat
-        real(dp) :: h, a1(5), a2(5), a3(5), a4(5)
-        integer :: j
-        z = 0.0_dp
-        do j = 1, 5
-            z(j, j + 5) = 1.0_dp
-        end do
-        do j = 1, NSTATE
-            if (j <= 5) then
-                h = 5.0e-4_dp*max(1.0_dp, abs(y(j)))
-                call at(j, h, a1)
-                call at(j, -h, a2)
-                call at(j, 2*h, a3)
-                call at(j, -2*h, a4)
-                z(6:10, j) = (8*(a1 - a2) - (a3 - a4))/(12*h)
-            else
-                h = max(1.0_dp, abs(y(j)))
-                call at(j, h, a1)
-                call at(j, -h, a2)
-                z(6:10, j) = (a1 - a2)/(2*h)
-            end if
-            if (stat%code /= 0) return
-        end do
-    contains
-        !> Accelerations with y_j moved by dy (a status already set is kept).
-        subroutine at(jj, dy, acc)
-            integer, intent(in) :: jj
-            real(dp), intent(in) :: dy
-            real(dp), intent(out) :: acc(5)
-            real(dp) :: yp(NSTATE)
-            type(status_t) :: st
-            acc = 0.0_dp
-            if (stat%code /= 0) return
-            yp = y
-            yp(jj) = y(jj) + dy
-            call chart_accelerations(p, yp, acc, st)
-            if (st%code /= 0) stat = st
-        end subroutine at
+        real(dp) :: qdd(5)
+        call chart_jacobian(p, y, qdd, z, stat)
     end subroutine jacobian_z
 
     !> Orbit and dH/dt = Z H together: y(1:10) the state, y(11:110) H by columns.
@@ -213,41 +180,76 @@ contains
         real(dp), intent(out) :: ydot(:)
         type(status_t), intent(out) :: stat
         real(dp) :: z(NSTATE, NSTATE), a(5)
+        integer :: c, i0, j
         if (.false.) ydot(1) = t
-        call chart_accelerations(sys%p, y(1:NSTATE), a, stat)
+        call chart_jacobian(sys%p, y(1:NSTATE), a, z, stat)
         if (stat%code /= 0) return
         ydot(1:5) = y(6:10)
         ydot(6:10) = a
-        call jacobian_z(sys%p, y(1:NSTATE), z, stat)
-        ydot(NSTATE + 1:NV) = reshape(matmul(z, reshape(y(NSTATE + 1:NV), [NSTATE, NSTATE])), &
-                                      [NSTATE*NSTATE])
+        ! column c of Z H: the upper half of Z is (0 I), so its first five rows are H's last
+        do c = 1, NSTATE
+            i0 = c*NSTATE
+            ydot(i0 + 1:i0 + 5) = y(i0 + 6:i0 + 10)
+            ydot(i0 + 6:i0 + 10) = 0.0_dp
+            do j = 1, NSTATE
+                ydot(i0 + 6:i0 + 10) = ydot(i0 + 6:i0 + 10) + z(6:10, j)*y(i0 + j)
+            end do
+        end do
     end subroutine variational_rhs
 
-    !> Jacobian of the orbit + variational system for the BDF iteration: diag(Z, Z, ..., Z).
-    !! The coupling d(Z H)/dy_orbit = (dZ/dy) H is left out: the chord iteration needs only an
-    !! approximate Jacobian, and this one costs a single Z instead of 110 right-hand sides.
-    subroutine variational_jacobian(sys, t, y, dfdy, stat)
+    !> The iteration matrix of the orbit + variational system for the BDF iteration:
+    !! P = I - hl0 diag(Z, Z, ..., Z).  The coupling d(Z H)/dy_orbit = (dZ/dy) H is left out:
+    !! the chord iteration needs only an approximate Jacobian, and this one costs a single Z.
+    !! The eleven blocks are equal, so one 10 x 10 LU (LAPACK DGETRF) serves them all.
+    subroutine variational_factor(sys, t, y, hl0, rewt, jnorm, singular, stat)
         class(variational_t), intent(inout) :: sys
-        real(dp), intent(in) :: t, y(:)
-        real(dp), intent(out) :: dfdy(:, :)
+        real(dp), intent(in) :: t, y(:), hl0, rewt(:)
+        real(dp), intent(out) :: jnorm
+        logical, intent(out) :: singular
         type(status_t), intent(out) :: stat
-        real(dp) :: z(NSTATE, NSTATE)
-        integer :: c, i0
-        if (.false.) dfdy(1, 1) = t
-        dfdy = 0.0_dp
+        real(dp) :: z(NSTATE, NSTATE), rowsum
+        type(status_t) :: lst
+        integer :: c, i, j, i0
+        if (.false.) jnorm = t
+        jnorm = 0.0_dp
+        singular = .false.
         call jacobian_z(sys%p, y(1:NSTATE), z, stat)
         if (stat%code /= 0) return
+        ! the weighted max-row-sum norm of diag(Z, ..., Z): max_i w_i^-1 sum_j |J_ij| w_j
         do c = 0, NSTATE
             i0 = c*NSTATE
-            dfdy(i0 + 1:i0 + NSTATE, i0 + 1:i0 + NSTATE) = z
+            do i = 1, NSTATE
+                rowsum = 0.0_dp
+                do j = 1, NSTATE
+                    rowsum = rowsum + abs(z(i, j))/rewt(i0 + j)
+                end do
+                jnorm = max(jnorm, rowsum*rewt(i0 + i))
+            end do
         end do
-    end subroutine variational_jacobian
+        sys%lu = -hl0*z
+        do i = 1, NSTATE
+            sys%lu(i, i) = sys%lu(i, i) + 1.0_dp
+        end do
+        call la_lu_factor(sys%lu, sys%ipiv, lst)
+        singular = lst%code /= 0
+    end subroutine variational_factor
 
-    !> The variational system supplies its (block-diagonal) Jacobian.
-    logical function variational_has_jacobian(sys)
+    !> x := P^-1 x, block by block with the factors of variational_factor.
+    subroutine variational_solve(sys, x, stat)
+        class(variational_t), intent(inout) :: sys
+        real(dp), intent(inout) :: x(:)
+        type(status_t), intent(out) :: stat
+        real(dp) :: xb(NSTATE, NSTATE + 1)
+        xb = reshape(x, [NSTATE, NSTATE + 1])
+        call la_lu_solve_many(sys%lu, sys%ipiv, xb, stat)
+        x = reshape(xb, [NV])
+    end subroutine variational_solve
+
+    !> The variational system solves with its iteration matrix itself.
+    logical function variational_structured(sys)
         class(variational_t), intent(in) :: sys
-        variational_has_jacobian = sys%p%big_l > 0.0_dp .or. .true.
-    end function variational_has_jacobian
+        variational_structured = sys%p%big_l > 0.0_dp .or. .true.
+    end function variational_structured
 
     !> Monodromy H(t*) over one period from the chart state y0, as the product of `nseg`
     !! segment matrices (each integrated from H = I).  By default only half a period is

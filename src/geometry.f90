@@ -29,10 +29,67 @@ module geometry
                                         !! is imposed as G'' + 2 a G' + a^2 G = 0 (0: G'' = 0)
     end type pendulum_t
 
-    public :: constraint_g, beta_coeffs, direction_cosines, body_axes
+    !> The trigonometry of one pose, under the paper's names: s_i = sin(theta_i),
+    !! c_i = cos(theta_i), and s_lambda, c_lambda of the angle lambda that places R* (eq. (21)).
+    !! Filled once per evaluation (pose_of) and read by eqs. (2)-(4), (8), (14), (19), (24),
+    !! (27): the one place the model calls sin and cos.
+    type, public :: pose_t
+        real(dp) :: s1 = 0.0_dp, c1 = 1.0_dp, s2 = 0.0_dp, c2 = 1.0_dp, s3 = 0.0_dp, c3 = 1.0_dp
+        real(dp) :: s4 = 0.0_dp, c4 = 1.0_dp, s5 = 0.0_dp, c5 = 1.0_dp
+        real(dp) :: s_lambda = 0.0_dp, c_lambda = 1.0_dp
+    end type pose_t
+
+    public :: constraint_g, beta_coeffs, direction_cosines, body_axes, pose_of, body_pose, frame
     public :: raised_angles, solve_theta5, cable_direction, point_d, mass_centre, point_e
 
 contains
+
+    !> The pose's sines and cosines: theta_1..theta_5 and lambda.
+    pure function pose_of(th, lambda) result(ps)
+        real(dp), intent(in) :: th(5)       !! theta_1..theta_5 (rad)
+        real(dp), intent(in) :: lambda      !! lambda of eq. (21) (rad)
+        type(pose_t) :: ps
+        ps%s1 = sin(th(1)); ps%c1 = cos(th(1)); ps%s2 = sin(th(2)); ps%c2 = cos(th(2))
+        ps%s3 = sin(th(3)); ps%c3 = cos(th(3)); ps%s4 = sin(th(4)); ps%c4 = cos(th(4))
+        ps%s5 = sin(th(5)); ps%c5 = cos(th(5))
+        ps%s_lambda = sin(lambda); ps%c_lambda = cos(lambda)
+    end function pose_of
+
+    !> The pose of the body alone (theta_1, theta_4, theta_5 and lambda; theta_2 = theta_3 = 0):
+    !! what the regular chart needs, where the cable's direction is not given by angles.
+    !! sc_lambda, when present, holds sin and cos of lambda already computed (they depend only
+    !! on the pendulum: an integration computes them once, see bifilar_model).
+    pure function body_pose(th1, th4, th5, lambda, sc_lambda) result(ps)
+        real(dp), intent(in) :: th1, th4, th5   !! theta_1, theta_4, theta_5 (rad)
+        real(dp), intent(in) :: lambda          !! lambda of eq. (21) (rad)
+        real(dp), intent(in), optional :: sc_lambda(2)  !! sin(lambda), cos(lambda)
+        type(pose_t) :: ps
+        ps%s1 = sin(th1); ps%c1 = cos(th1); ps%s4 = sin(th4); ps%c4 = cos(th4)
+        ps%s5 = sin(th5); ps%c5 = cos(th5)
+        if (present(sc_lambda)) then
+            ps%s_lambda = sc_lambda(1); ps%c_lambda = sc_lambda(2)
+        else
+            ps%s_lambda = sin(lambda); ps%c_lambda = cos(lambda)
+        end if
+    end function body_pose
+
+    !> Direction cosines n_ij of eq. (8) from a pose: ntilde_i = sum_j n(i,j) n_j.
+    pure subroutine frame(ps, n)
+        type(pose_t), intent(in) :: ps      !! the pose (theta_1, 4, 5)
+        real(dp), intent(out) :: n(3, 3)    !! rows: ntilde_1, ntilde_2, ntilde_3 in n_j
+        associate (s1 => ps%s1, c1 => ps%c1, s4 => ps%s4, c4 => ps%c4, s5 => ps%s5, &
+                   c5 => ps%c5)
+            n(1, 1) = s1*c4 + c1*s4*s5
+            n(1, 2) = -s1*s4 + c1*c4*s5
+            n(1, 3) = -c1*c5
+            n(2, 1) = c1*c4 - s1*s4*s5
+            n(2, 2) = -c1*s4 - s1*c4*s5
+            n(2, 3) = s1*c5
+            n(3, 1) = -s4*c5
+            n(3, 2) = -c4*c5
+            n(3, 3) = -s5
+        end associate
+    end subroutine frame
 
     !> Residual of the constraint eq. (2) divided by b'^2:
     !! G = (L s2 c3 + s4 c5)^2 + (-B + L s2 s3 + c4 c5)^2 + (-L c2 + s5)^2 - L'^2.
@@ -51,8 +108,10 @@ contains
         real(dp), intent(in) :: th(5)       !! theta_1..theta_5 (rad)
         real(dp) :: beta(5)
         real(dp) :: s2, c2, s3, c3, s4, c4, s5, c5, x, y, z
-        s2 = sin(th(2)); c2 = cos(th(2)); s3 = sin(th(3)); c3 = cos(th(3))
-        s4 = sin(th(4)); c4 = cos(th(4)); s5 = sin(th(5)); c5 = cos(th(5))
+        type(pose_t) :: ps
+        ps = pose_of(th, p%lambda)
+        s2 = ps%s2; c2 = ps%c2; s3 = ps%s3; c3 = ps%c3
+        s4 = ps%s4; c4 = ps%c4; s5 = ps%s5; c5 = ps%c5
         x = p%big_l*s2*c3 + s4*c5
         y = -p%big_b + p%big_l*s2*s3 + c4*c5
         z = -p%big_l*c2 + s5
@@ -67,12 +126,7 @@ contains
     pure function direction_cosines(th) result(n)
         real(dp), intent(in) :: th(5)       !! theta_1..theta_5 (rad)
         real(dp) :: n(3, 3)
-        real(dp) :: s1, c1, s4, c4, s5, c5
-        s1 = sin(th(1)); c1 = cos(th(1)); s4 = sin(th(4)); c4 = cos(th(4))
-        s5 = sin(th(5)); c5 = cos(th(5))
-        n(1, :) = [s1*c4 + c1*s4*s5, -s1*s4 + c1*c4*s5, -c1*c5]
-        n(2, :) = [c1*c4 - s1*s4*s5, -c1*s4 - s1*c4*s5, s1*c5]
-        n(3, :) = [-s4*c5, -c4*c5, -s5]
+        call frame(body_pose(th(1), th(4), th(5), 0.0_dp), n)
     end function direction_cosines
 
     !> b_ij of eq. (11): b_i = sum_j b(i,j) n_j, b = btilde n.
@@ -80,7 +134,10 @@ contains
         type(pendulum_t), intent(in) :: p   !! scaled parameters (btilde)
         real(dp), intent(in) :: n(3, 3)     !! direction cosines of eq. (8)
         real(dp) :: b(3, 3)
-        b = matmul(p%btilde, n)
+        integer :: j
+        do j = 1, 3
+            b(:, j) = (p%btilde(:, 1)*n(1, j) + p%btilde(:, 2)*n(2, j)) + p%btilde(:, 3)*n(3, j)
+        end do
     end function body_axes
 
     !> Unit vector along BC from its horizontal components sigma = s2 (c3, s3):
@@ -96,9 +153,10 @@ contains
         type(pendulum_t), intent(in) :: p   !! scaled parameters
         real(dp), intent(in) :: th(5)       !! theta_1..theta_5 (rad)
         real(dp) :: d(3)
-        d = [p%big_l*sin(th(2))*cos(th(3)) + cos(th(5))*sin(th(4)), &
-             -p%big_b + p%big_l*sin(th(2))*sin(th(3)) + cos(th(5))*cos(th(4)), &
-             -p%big_l*cos(th(2)) + sin(th(5))]
+        type(pose_t) :: ps
+        ps = pose_of(th, p%lambda)
+        d = [p%big_l*ps%s2*ps%c3 + ps%c5*ps%s4, -p%big_b + p%big_l*ps%s2*ps%s3 + ps%c5*ps%c4, &
+             -p%big_l*ps%c2 + ps%s5]
     end function point_d
 
     !> Mass centre R* (over b'): C + r (s_lam ntilde_1 - c_lam ntilde_3), eqs. (21)-(22).

@@ -1,16 +1,28 @@
-!> Checked wrappers around the few LAPACK routines bifilar uses.
+!> Checked wrappers around the few LAPACK routines bifilar uses, and a written-out Cholesky
+!! factorisation for the smallest symmetric positive definite systems.
 !!
 !! Each wrapper checks the shapes of its arguments, calls LAPACK through an explicit
 !! interface, and maps INFO to a status_t with a message naming the routine and the cause.
 !! No wrapper stops the program.
+!!
+!! Symmetric positive definite systems of order n <= SMALL_N (the 4 x 4 system of the
+!! independent accelerations of eq. (38), solved at every right-hand side) are factored by
+!! la_small_chol / la_small_chol_solve: LAPACK's unblocked Cholesky algorithm (DPOTF2, lower:
+!! a_jj = sqrt(a_jj - sum_k<j l_jk^2), l_ij = (a_ij - sum_k<j l_ik l_jk)/l_jj; DPOTRS: forward
+!! then backward substitution) written out, without the call overhead (calls into reference
+!! BLAS for a few dozen operations) that costs more than the arithmetic at n = 4.  Larger
+!! systems go to LAPACK.
 module lapack_wrap
     use kinds, only: dp
     use status, only: status_t, set_error, ERR_NUMERIC
     implicit none
     private
 
-    public :: la_solve, la_lu_factor, la_lu_solve, la_eig, la_geig
+    public :: la_solve, la_lu_factor, la_lu_solve, la_lu_solve_many, la_eig, la_geig
+    public :: la_small_chol, la_small_chol_solve
     public :: la_zlu_factor, la_zlu_solve
+
+    integer, parameter, public :: SMALL_N = 8   !! largest order of la_small_chol
 
     interface
         subroutine dgetf2(m, n, a, lda, ipiv, info)
@@ -101,6 +113,81 @@ contains
         end if
     end subroutine la_solve
 
+    !> Cholesky factorisation A = L L^T of a small symmetric positive definite matrix,
+    !! DPOTF2's algorithm written out (see the module header); only the lower triangle of a
+    !! is read.  Explicit shapes, so that a constant n lets the compiler unroll it.
+    !!
+    !! n    [in]     integer:       order, 1 <= n <= SMALL_N.
+    !! a    [in,out] real(dp)(n,n): the matrix (lower triangle); overwritten by L (lower
+    !!                              triangle; the strict upper triangle is not referenced).
+    !! stat [out]: ERR_NUMERIC when n is out of range or A is not positive definite (as
+    !!             DPOTF2's INFO = j > 0: the leading minor of order j is not positive).
+    pure subroutine la_small_chol(n, a, stat)
+        integer, intent(in) :: n
+        real(dp), intent(inout) :: a(n, n)
+        type(status_t), intent(out) :: stat
+        real(dp) :: ajj
+        integer :: i, j, k
+        character(len=100) :: buf
+        if (n > SMALL_N .or. n < 1) then
+            call set_error(stat, ERR_NUMERIC, 'la_small_chol: order n out of 1 ... SMALL_N')
+            return
+        end if
+        !GCC$ unroll 8
+        do j = 1, n
+            ajj = a(j, j)
+            !GCC$ unroll 8
+            do k = 1, j - 1
+                ajj = ajj - a(j, k)*a(j, k)
+            end do
+            if (.not. (ajj > 0.0_dp)) then
+                write (buf, '(a,i0,a)') 'la_small_chol: matrix not positive definite (leading '// &
+                    'minor of order ', j, ')'
+                call set_error(stat, ERR_NUMERIC, trim(buf))
+                return
+            end if
+            ajj = sqrt(ajj)
+            a(j, j) = ajj
+            !GCC$ unroll 8
+            do i = j + 1, n
+                !GCC$ unroll 8
+                do k = 1, j - 1
+                    a(i, j) = a(i, j) - a(i, k)*a(j, k)
+                end do
+                a(i, j) = a(i, j)/ajj
+            end do
+        end do
+    end subroutine la_small_chol
+
+    !> Solve A x = b in place with the factor L from la_small_chol (DPOTRS's algorithm:
+    !! L y = b, then L^T x = y).
+    !!
+    !! n [in]     integer:       order.
+    !! l [in]     real(dp)(n,n): the factor from la_small_chol (lower triangle).
+    !! b [in,out] real(dp)(n):   right-hand side on entry, solution on return.
+    pure subroutine la_small_chol_solve(n, l, b)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: l(n, n)
+        real(dp), intent(inout) :: b(n)
+        integer :: i, k
+        !GCC$ unroll 8
+        do i = 1, n
+            !GCC$ unroll 8
+            do k = 1, i - 1
+                b(i) = b(i) - l(i, k)*b(k)
+            end do
+            b(i) = b(i)/l(i, i)
+        end do
+        !GCC$ unroll 8
+        do i = n, 1, -1
+            !GCC$ unroll 8
+            do k = i + 1, n
+                b(i) = b(i) - l(k, i)*b(k)
+            end do
+            b(i) = b(i)/l(i, i)
+        end do
+    end subroutine la_small_chol_solve
+
     !> LU factorisation with partial pivoting of a square matrix (LAPACK DGETRF).
     !!
     !! a    [in,out] real(dp)(n,n): the matrix; overwritten by L and U.
@@ -146,6 +233,29 @@ contains
         call dgetrs('N', n, 1, lu, n, ipiv, b, n, info)
         if (info /= 0) call set_error(stat, ERR_NUMERIC, 'la_lu_solve (dgetrs): illegal argument')
     end subroutine la_lu_solve
+
+    !> Solve A X = B for several right-hand sides with the factors from la_lu_factor
+    !! (LAPACK DGETRS, no transpose, one call).
+    !!
+    !! lu   [in]     real(dp)(n,n):    factors from la_lu_factor.
+    !! ipiv [in]     integer(n):       pivots from la_lu_factor.
+    !! b    [in,out] real(dp)(n,nrhs): right-hand sides on entry, solutions on return.
+    !! stat [out]: ERR_NUMERIC when the shapes disagree.
+    subroutine la_lu_solve_many(lu, ipiv, b, stat)
+        real(dp), intent(in) :: lu(:, :)
+        integer, intent(in) :: ipiv(:)
+        real(dp), intent(inout) :: b(:, :)
+        type(status_t), intent(out) :: stat
+        integer :: n, info
+        n = size(lu, 1)
+        if (size(lu, 2) /= n .or. size(b, 1) /= n .or. size(ipiv) < n) then
+            call set_error(stat, ERR_NUMERIC, 'la_lu_solve_many: factor, pivot and '// &
+                           'right-hand side shapes disagree')
+            return
+        end if
+        call dgetrs('N', n, size(b, 2), lu, n, ipiv, b, n, info)
+        if (info /= 0) call set_error(stat, ERR_NUMERIC, 'la_lu_solve_many (dgetrs): illegal argument')
+    end subroutine la_lu_solve_many
 
     !> LU factorisation with partial pivoting of a complex square matrix (LAPACK ZGETRF).
     !!

@@ -11,9 +11,10 @@
 !!   constant of f; the step is also limited to the (approximate) stability region.
 !! * Stiff: BDF, orders 1-5, corrector solved by a chord Newton iteration with the
 !!   iteration matrix P = I - h*l0*J, factored by LAPACK (module lapack_wrap).  J is the
-!!   analytic Jacobian when the system has one, else a finite-difference Jacobian.  P is
-!!   kept while it serves and rebuilt after a convergence failure, every 20 steps, or when
-!!   h*l0 changed by more than 30 %.
+!!   analytic Jacobian when the system has one, else a finite-difference Jacobian; a system
+!!   with a structured Jacobian may factor and solve with P itself (ode_system's
+!!   has_iteration_solver).  P is kept while it serves and rebuilt after a convergence
+!!   failure, every 20 steps, or when h*l0 changed by more than 30 %.
 !! * Switching: at least 20 steps after the last switch, on every step the step size the
 !!   other method could take (at the same accuracy, and for Adams inside its stability
 !!   region) is compared with the current one; Adams -> BDF when BDF would be at least
@@ -113,6 +114,7 @@ module lsoda
         integer :: nq = 1, l = 2, lmax = 13, meth = METHOD_ADAMS, mused = 0, nqu = 0
         integer :: meth0 = METHOD_ADAMS        ! method of the first step
         logical :: adams_only = .false.        ! never switch to BDF
+        logical :: structured = .false.        ! the system solves with P (has_iteration_solver)
         integer :: ialth = 2, icount = SWITCH_WAIT, irflag = 0, nslp = 0, jstart = 0
         integer :: kflag = 0
         logical :: ipup = .false., jcur = .false.
@@ -174,7 +176,7 @@ contains
         integer, intent(in), optional :: max_order_bdf
         logical, intent(in), optional :: start_bdf
         logical, intent(in), optional :: nonstiff_only
-        integer :: n
+        integer :: n, nwm
         character(len=120) :: buf
 
         s%ready = .false.
@@ -242,10 +244,14 @@ contains
             if (size(s%yh, 1) /= n) deallocate (s%yh)
         end if
         if (.not. allocated(s%yh)) allocate (s%yh(n, LMAX_ALL))
+        ! a system that solves with P itself needs no n x n matrix here
+        s%structured = sys%has_iteration_solver()
+        nwm = n
+        if (s%structured) nwm = 1
         if (allocated(s%wm)) then
-            if (size(s%wm, 1) /= n) deallocate (s%wm)
+            if (size(s%wm, 1) /= nwm) deallocate (s%wm)
         end if
-        if (.not. allocated(s%wm)) allocate (s%wm(n, n))
+        if (.not. allocated(s%wm)) allocate (s%wm(nwm, nwm))
         call realloc_vec(s%rewt, n)
         call realloc_vec(s%y, n)
         call realloc_vec(s%savf, n)
@@ -812,7 +818,11 @@ contains
                         do i = 1, s%n
                             s%y(i) = s%h*s%savf(i) - (s%yh(i, 2) + s%acor(i))
                         end do
-                        call la_lu_solve(s%wm, s%ipiv, s%y, stat)
+                        if (s%structured) then
+                            call sys%solve_iteration(s%y, stat)
+                        else
+                            call la_lu_solve(s%wm, s%ipiv, s%y, stat)
+                        end if
                         if (stat%code /= STATUS_OK) then
                             fatal = .true.     ! cannot happen with consistent shapes
                             exit corrector
@@ -1228,6 +1238,14 @@ contains
         s%nje = s%nje + 1
         s%jcur = .true.
         hl0 = s%h*s%el0
+        if (s%structured) then
+            ! the system forms and factors P itself (ode_system's has_iteration_solver)
+            call sys%factor_iteration(s%tn, s%y, hl0, s%rewt, pn, singular, stat)
+            if (stat%code /= STATUS_OK) return
+            s%pdnorm = pn
+            s%nlu = s%nlu + 1
+            return
+        end if
         if (sys%has_jacobian()) then
             call sys%jacobian(s%tn, s%y, s%wm, stat)
             if (stat%code /= STATUS_OK) return
@@ -1309,6 +1327,13 @@ contains
             return
         end if
         sc = (t - s%tn)/s%h
+        if (sc == 0.0_dp .and. k <= 1) then
+            ! at the end of the step the Horner scheme below reduces to one column (the same
+            ! numbers, without the sums of zero terms): y = yh(:,1), y' = yh(:,2)/h
+            dky = s%yh(:, k + 1)
+            if (k > 0) dky = dky*s%h**(-k)
+            return
+        end if
         ! Horner scheme on the Nordsieck columns, differentiated k times
         ic = 1
         do jj = s%nq + 1 - k, s%nq

@@ -221,6 +221,8 @@ contains
         real(dp) :: th(5), z(10, 10), w
         complex(dp) :: lam(10)
         integer :: k
+        nfreq = 0
+        freq = 0.0_dp
         ps = p
         ps%big_lp = ps%big_l
         call raised_angles(ps, 0.0_dp, th, stat)
@@ -229,8 +231,6 @@ contains
         if (stat%code /= 0) return
         call la_eig(z, lam, stat)
         if (stat%code /= 0) return
-        nfreq = 0
-        freq = 0.0_dp
         do k = 1, 10
             w = aimag(lam(k))
             if (w > 1.0e-6_dp) then

@@ -7,16 +7,17 @@ module simulate
     use kinds, only: dp, deg
     use status, only: status_t, set_error, ERR_DECK, ERR_MODEL, ERR_NUMERIC, ERR_IO
     use geometry, only: pendulum_t, raised_angles, solve_theta5, beta_coeffs
-    use bifilar_model, only: bifilar_t, motion_t, chart_state, evaluate, paper_angles, &
-                             chart_positions, NSTATE
+    use bifilar_model, only: bifilar_t, motion_t, motion_parts_t, chart_state, evaluate, &
+                             paper_angles, chart_positions, step_tensions, NSTATE
     use lsoda, only: lsoda_stats_t
     use stepper, only: stepper_t, SOLVER_LSODA, SOLVER_RADAU, too_much_accuracy
     use elastic_model, only: elastic_t, elastic_cables_t, elastic_start, elastic_evaluate, &
                              elastic_atol, ELASTIC_NSTATE
     use elastic_solver, only: elastic_solver_t, slack_interval_t
-    use deck, only: deck_t, deck_echo
+    use deck, only: deck_t, deck_echo, OUTPUT_COLUMNS
     use output_io, only: out_files_t, write_kv, all_finite
     use text, only: sci
+    use fast_format, only: es_field, f_field
     implicit none
     private
 
@@ -30,6 +31,9 @@ module simulate
         real(dp) :: max_abs_energy_error = 0.0_dp, max_abs_constraint_residual = 0.0_dp
         real(dp) :: min_tension = huge(1.0_dp)
         real(dp) :: tau_reached = 0.0_dp
+        !> which of Q and Q_axis, energy_error, constraint_residual the run computed (&output
+        !! columns): their maxima are in the summary only then
+        logical :: have_sway = .true., have_energy = .true., have_residual = .true.
         !> &integration error_estimate = .true.: largest differences from a rerun at a
         !! tolerance 100 times tighter (angles in rad, Q over b'); -1 when not asked
         real(dp) :: error_estimate_theta = -1.0_dp, error_estimate_q = -1.0_dp
@@ -58,9 +62,24 @@ module simulate
     !! natural length is no longer a cable; raise &cables stiffness).
     real(dp), parameter :: STRAIN_MAX = 1.0_dp
 
-    character(len=*), parameter :: COLUMNS = '# tau theta1 theta2 theta3 theta4 theta5 '// &
-        'theta1_dot theta2_dot theta3_dot theta4_dot theta5_dot Q Q_axis T_BC T_AD '// &
-        'energy_error constraint_residual'
+    !> The .dat columns (deck OUTPUT_COLUMNS, in that order) and the positions of those that
+    !! decide what a row computes.
+    integer, parameter :: NCOL = 17
+    integer, parameter :: COL_Q = 12, COL_Q_AXIS = 13, COL_T_BC = 14, COL_T_AD = 15, &
+        COL_ENERGY = 16, COL_RESIDUAL = 17
+    !> Width of a row: tau (F14.6) and 16 reals (ES24.15E3)
+    integer, parameter :: ROW_WIDTH = 14 + 24*(NCOL - 1)
+    !> Characters of rows collected before one WRITE (row_block_t)
+    integer, parameter :: ROW_BLOCK = 32768
+
+    !> Rows of a .dat file collected into blocks of up to ROW_BLOCK characters, each written
+    !! by one WRITE (the rows joined by newlines): the run-time library's cost per statement
+    !! and the system calls are paid per block, not per row.
+    type :: row_block_t
+        integer :: unit = -1                    !! the open .dat unit
+        integer :: used = 0                     !! characters collected
+        character(len=ROW_BLOCK) :: text
+    end type row_block_t
 
 contains
 
@@ -180,18 +199,33 @@ contains
         type(stepper_t) :: solver, solver2
         type(lsoda_stats_t) :: st
         type(motion_t) :: mo
+        type(motion_parts_t) :: parts
+        type(row_block_t) :: rb
         real(dp) :: y(NSTATE), ystep(NSTATE), th0(5), tau, e0, th3, t_cpu0
-        real(dp) :: t_prev, y2(NSTATE), t_e0, rt2
+        real(dp) :: t_prev, y2(NSTATE), t_e0, rt2, ydot(NSTATE)
         character(len=:), allocatable :: sumpath
         integer :: u, k, nout, nstep_row
+        logical :: want(NCOL)
 
         call make_pendulum(d, sys%p, stat)
         if (stat%code /= 0) return
         call start_state(d, sys%p, y, th0, stat)
         if (stat%code /= 0) return
+        ! compute only what the asked columns need (the model checks need only the tensions'
+        ! signs: from the integrator's derivative when T_BC, T_AD are not asked)
+        call column_mask(d, want)
+        parts%accelerations = want(COL_T_BC) .or. want(COL_T_AD)
+        parts%energy = want(COL_ENERGY)
+        parts%residual = want(COL_RESIDUAL)
+        parts%sway = want(COL_Q) .or. want(COL_Q_AXIS)
+        sm%have_sway = parts%sway
+        sm%have_energy = parts%energy
+        sm%have_residual = parts%residual
+        sys%keep_tensions = .true.              ! for check_validity
 
         call open_dat(d, outdir, '', fs, u, sumpath, stat)
         if (stat%code /= 0) return
+        rb%unit = u
 
         call cpu_time(t_cpu0)
         ! tcrit = tau_end: no step goes past the end, so every step end checked lies in the run
@@ -239,7 +273,7 @@ contains
                 nstep_row = nstep_row + 1
                 call solver%dense(st%t_current, 0, ystep, stat)
                 if (stat%code /= 0) exit
-                call check_validity(sys%p, solver, t_prev, st%t_current, ystep, th3, stat)
+                call check_validity(sys, solver, t_prev, st%t_current, ystep, th3, stat)
                 if (stat%code /= 0) exit
                 t_prev = st%t_current
                 cycle
@@ -253,14 +287,23 @@ contains
                 end if
             end if
             nstep_row = 0
-            call evaluate(sys%p, y, th3, mo, stat)
+            call evaluate(sys%p, y, th3, mo, stat, parts)
+            if (stat%code == 0 .and. .not. parts%accelerations) then
+                ! tensions for the model checks only, from the integrator's derivative
+                if (k == 0) then
+                    call sys%rhs(0.0_dp, y, ydot, stat)
+                else
+                    call solver%dense(tau, 1, ydot, stat)
+                end if
+                if (stat%code == 0) call step_tensions(sys, y, ydot, mo%t_bc, mo%t_ad, stat)
+            end if
             if (stat%code /= 0) then
                 call append_tau(stat, tau)
                 exit
             end if
             th3 = mo%th(3)
-            call emit_row(u, tau, k, mo, e0, 'the motion left the range the model covers', &
-                          .true., sm, stat)
+            call emit_row(rb, tau, k, mo, e0, 'the motion left the range the model covers', &
+                          .true., want, sm, stat)
             if (stat%code /= 0) exit
             if (d%error_estimate .and. k > 0) then
                 call cpu_time(t_e0)
@@ -274,6 +317,7 @@ contains
             end if
             k = k + 1
         end do
+        if (stat%code == 0) call flush_rows(rb, stat)
         call finish_run(solver%stats(), t_cpu0, fs, u, sm, stat)
         if (stat%code /= 0) return
 
@@ -281,7 +325,7 @@ contains
     end subroutine simulate_kane
 
     !> Open OUTDIR/NAME.dat (a file of the run, see output_io) and write its header: title,
-    !! units, an optional model note, the effective deck, the column line.
+    !! units, an optional model note, the effective deck, the line of the &output columns.
     subroutine open_dat(d, outdir, note, fs, u, sumpath, stat)
         type(deck_t), intent(in) :: d           !! the deck
         character(len=*), intent(in) :: outdir  !! output directory
@@ -299,29 +343,79 @@ contains
             'b''; tensions over m g; energy over m g b''; angles in rad'
         if (ios == 0 .and. len(note) > 0) write (u, '(a)', iostat=ios) note
         if (ios == 0) call deck_echo(d, u, ios)
-        if (ios == 0) write (u, '(a)', iostat=ios) COLUMNS
+        if (ios == 0) write (u, '(a)', iostat=ios) '# '//trim(d%columns)
         if (ios /= 0) call set_error(stat, ERR_IO, 'cannot write '//outdir//'/'//d%name// &
                                      '.dat (iostat '//sci(real(ios, dp), 0)//')')
     end subroutine open_dat
 
-    !> Write one checked output row and fold it into the run's figures.
-    subroutine record_row(u, row, mo, sm, ios)
-        integer, intent(in) :: u                !! the open .dat unit
-        real(dp), intent(in) :: row(17)         !! tau, ..., energy_error, constraint_residual
+    !> Write one checked output row (the asked columns: tau as F14.6, the others as
+    !! ES24.15E3, by fast_format: the run-time library's text) and fold it into the run's
+    !! figures.
+    subroutine record_row(rb, row, want, mo, sm, stat)
+        type(row_block_t), intent(inout) :: rb  !! rows of the open .dat file
+        real(dp), intent(in) :: row(NCOL)       !! tau, ..., energy_error, constraint_residual
+        logical, intent(in) :: want(NCOL)       !! the columns written
         type(motion_t), intent(in) :: mo        !! the motion of the row
         type(run_summary_t), intent(inout) :: sm
-        integer, intent(out) :: ios             !! iostat of the write
-        write (u, '(f14.6,16es24.15e3)', iostat=ios) row
+        type(status_t), intent(out) :: stat     !! ERR_IO when the row cannot be written
+        character(len=ROW_WIDTH) :: line
+        integer :: j, n
+        n = 0
+        if (want(1)) then
+            call f_field(row(1), 6, line(1:14))
+            n = 14
+        end if
+        do j = 2, NCOL
+            if (.not. want(j)) cycle
+            call es_field(row(j), 15, line(n + 1:n + 24))
+            n = n + 24
+        end do
+        if (rb%used + n + 1 > ROW_BLOCK) then
+            call flush_rows(rb, stat)
+            if (stat%code /= 0) return
+        else
+            stat%code = 0
+        end if
+        rb%text(rb%used + 1:rb%used + n) = line(1:n)
+        rb%text(rb%used + n + 1:rb%used + n + 1) = achar(10)
+        rb%used = rb%used + n + 1
         sm%rows = sm%rows + 1
         sm%tau_reached = row(1)
         sm%max_abs_theta1 = max(sm%max_abs_theta1, abs(mo%th(1)))
         sm%max_abs_theta4 = max(sm%max_abs_theta4, abs(mo%th(4)))
         sm%max_q = max(sm%max_q, mo%q_sway)
         sm%max_q_axis = max(sm%max_q_axis, mo%q_axis)
-        sm%max_abs_energy_error = max(sm%max_abs_energy_error, abs(row(16)))
+        sm%max_abs_energy_error = max(sm%max_abs_energy_error, abs(row(COL_ENERGY)))
         sm%max_abs_constraint_residual = max(sm%max_abs_constraint_residual, abs(mo%residual))
         sm%min_tension = min(sm%min_tension, mo%t_bc, mo%t_ad)
     end subroutine record_row
+
+    !> Write the rows collected in rb (one WRITE; the last newline is the record's own).
+    subroutine flush_rows(rb, stat)
+        type(row_block_t), intent(inout) :: rb
+        type(status_t), intent(out) :: stat     !! ERR_IO when the rows cannot be written
+        integer :: ios
+        character(len=200) :: msg
+        stat%code = 0
+        if (rb%used == 0) return
+        write (rb%unit, '(a)', iostat=ios, iomsg=msg) rb%text(1:rb%used - 1)
+        rb%used = 0
+        if (ios /= 0) call set_error(stat, ERR_IO, 'cannot write rows of the .dat file: '// &
+                                     trim(msg))
+    end subroutine flush_rows
+
+    !> The .dat columns a deck asks for (&output columns), as a mask over OUTPUT_COLUMNS.
+    subroutine column_mask(d, want)
+        type(deck_t), intent(in) :: d           !! the deck
+        logical, intent(out) :: want(NCOL)
+        integer :: j, i1, i2
+        i1 = 1
+        do j = 1, NCOL
+            i2 = index(OUTPUT_COLUMNS(i1:)//' ', ' ') + i1 - 2     ! the j-th name: i1:i2
+            want(j) = index(' '//trim(d%columns)//' ', ' '//OUTPUT_COLUMNS(i1:i2)//' ') > 0
+            i1 = i2 + 2
+        end do
+    end subroutine column_mask
 
     !> ERR_NUMERIC when the integrator has taken MAX_STEPS_PER_ROW steps without reaching
     !! the next row at tau; `remedy` says what to change.
@@ -348,19 +442,18 @@ contains
     !> One output row from the motion at tau (row k; the energy error is against the energy
     !! of row 0, kept in e0): refused (ERR_NUMERIC, `why` in the message) when not finite,
     !! then the paper model's checks when asked (model_checks), then written (record_row).
-    subroutine emit_row(u, tau, k, mo, e0, why, paper_checks, sm, stat)
-        integer, intent(in) :: u                !! the open .dat unit
+    subroutine emit_row(rb, tau, k, mo, e0, why, paper_checks, want, sm, stat)
+        type(row_block_t), intent(inout) :: rb  !! rows of the open .dat file
         real(dp), intent(in) :: tau             !! time of the row
         integer, intent(in) :: k                !! row number (0: the start)
         type(motion_t), intent(in) :: mo        !! the motion at tau
         real(dp), intent(inout) :: e0           !! energy at the start (set at k = 0)
         character(len=*), intent(in) :: why     !! what a non-finite row means for the model
         logical, intent(in) :: paper_checks     !! apply model_checks (the paper's model)
+        logical, intent(in) :: want(NCOL)       !! the columns written
         type(run_summary_t), intent(inout) :: sm
         type(status_t), intent(out) :: stat
-        real(dp) :: row(17)
-        character(len=60) :: buf
-        integer :: ios
+        real(dp) :: row(NCOL)
         stat%code = 0
         if (k == 0) e0 = mo%energy
         row = [tau, mo%th, mo%thd, mo%q_sway, mo%q_axis, mo%t_bc, mo%t_ad, &
@@ -374,11 +467,7 @@ contains
             call model_checks(mo, tau, stat)
             if (stat%code /= 0) return
         end if
-        call record_row(u, row, mo, sm, ios)
-        if (ios /= 0) then
-            write (buf, '(a,i0,a)') 'cannot write a row of the .dat file (iostat ', ios, ')'
-            call set_error(stat, ERR_IO, trim(buf))
-        end if
+        call record_row(rb, row, want, mo, sm, stat)
     end subroutine emit_row
 
     !> Add one row's differences from the error-estimate rerun (angles, Q) and the CPU time
@@ -435,10 +524,14 @@ contains
         call write_kv(u, 'tau_end', sm%tau_reached, ios)
         call write_kv(u, 'max_abs_theta1', sm%max_abs_theta1, ios)
         call write_kv(u, 'max_abs_theta4', sm%max_abs_theta4, ios)
-        call write_kv(u, 'max_Q', sm%max_q, ios)
-        call write_kv(u, 'max_Q_axis', sm%max_q_axis, ios)
-        call write_kv(u, 'max_abs_energy_error', sm%max_abs_energy_error, ios)
-        call write_kv(u, 'max_abs_constraint_residual', sm%max_abs_constraint_residual, ios)
+        if (sm%have_sway) then
+            call write_kv(u, 'max_Q', sm%max_q, ios)
+            call write_kv(u, 'max_Q_axis', sm%max_q_axis, ios)
+        end if
+        if (sm%have_energy) call write_kv(u, 'max_abs_energy_error', sm%max_abs_energy_error, &
+                                          ios)
+        if (sm%have_residual) call write_kv(u, 'max_abs_constraint_residual', &
+                                            sm%max_abs_constraint_residual, ios)
         call write_kv(u, 'min_tension', sm%min_tension, ios)
         call write_kv(u, 'method', trim(sm%method), ios)
         if (d%error_estimate) then
@@ -512,8 +605,11 @@ contains
         real(dp) :: tau, e0, t_cpu0, t_e0, rt2
         character(len=:), allocatable :: sumpath
         integer :: u, k, nout, nstep_row
+        logical :: want(NCOL)
+        type(row_block_t) :: rb
 
         sm%elastic = .true.
+        call column_mask(d, want)
         call make_pendulum(d, sys%p, stat)
         if (stat%code /= 0) return
         call start_state(d, sys%p, yc, th0, stat)
@@ -531,6 +627,7 @@ contains
             'slack); energy_error includes the springs'' energy; constraint_residual = '// &
             '|AD| - l''', fs, u, sumpath, stat)
         if (stat%code /= 0) return
+        rb%unit = u
 
         call cpu_time(t_cpu0)
         sm%method = merge('radau', 'lsoda', integrator_of(d) == SOLVER_RADAU)
@@ -599,8 +696,8 @@ contains
                 exit
             end if
             th_row = mo%th
-            call emit_row(u, tau, k, mo, e0, 'the body''s pose left the range the paper''s '// &
-                          'angles cover (line CD vertical?)', .false., sm, stat)
+            call emit_row(rb, tau, k, mo, e0, 'the body''s pose left the range the paper''s '// &
+                          'angles cover (line CD vertical?)', .false., want, sm, stat)
             if (stat%code /= 0) exit
             if (d%error_estimate .and. k > 0) then
                 call cpu_time(t_e0)
@@ -622,6 +719,7 @@ contains
         sm%slack_time = solver%slack_time()
         sm%slack_intervals = solver%slack_intervals()
         sm%cable_switches = solver%switches()
+        if (stat%code == 0) call flush_rows(rb, stat)
         call finish_run(solver%stats(), t_cpu0, fs, u, sm, stat)
         if (stat%code /= 0) return
         call write_slack_list(d, outdir, fs, solver%slack_list(), sm%tau_reached, stat)
@@ -655,19 +753,32 @@ contains
     end subroutine model_checks
 
     !> Model checks at the end of one internal step; when one fails, the tau where it first
-    !! fails is located in the step (bisection on the dense output) for the diagnostic.
-    subroutine check_validity(p, solver, t0, t1, y1, th3, stat)
-        type(pendulum_t), intent(in) :: p       !! scaled parameters
+    !! fails is located in the step (bisection on the dense output) for the diagnostic.  The
+    !! tensions come from what the step computed: those of its last right-hand side (the
+    !! corrector's last iterate, which the step's end differs from by less than the
+    !! integration error; sys%keep_tensions), else from the state and its derivative in the
+    !! integrator's dense output (step_tensions); never from a new solve of eq. (38).
+    subroutine check_validity(sys, solver, t0, t1, y1, th3, stat)
+        type(bifilar_t), intent(inout) :: sys   !! the pendulum
         type(stepper_t), intent(in) :: solver   !! after the step
         real(dp), intent(in) :: t0, t1          !! previous checked time (valid), step end
         real(dp), intent(in) :: y1(NSTATE)      !! state at t1
         real(dp), intent(in) :: th3             !! theta3 of the last row (branch choice)
         type(status_t), intent(out) :: stat     !! ERR_MODEL (or the evaluation's failure)
-        type(motion_t) :: mo
         type(status_t) :: s2
-        real(dp) :: a, b, m, ym(NSTATE), lo
+        type(motion_t) :: mo
+        real(dp) :: a, b, m, lo, ylast(NSTATE)
         integer :: it
-        call evaluate(p, y1, th3, mo, stat)
+        logical :: found
+        call sys%last_evaluation(ylast, mo%t_bc, mo%t_ad, found)
+        if (found) found = maxval(abs(ylast - y1)) <= 1.0e-6_dp*(1.0_dp + maxval(abs(y1)))
+        if (found) then
+            mo%th(2) = asin(min(1.0_dp, sqrt(y1(2)**2 + y1(3)**2)))
+            mo%th(5) = y1(5)
+            stat%code = 0
+        else
+            call motion_at(t1, mo, stat, .false., y1)
+        end if
         if (stat%code /= 0) then
             call explain_failure_at(y1, th3, t1, stat)
             return
@@ -684,9 +795,7 @@ contains
         b = t1
         do it = 1, 40
             m = 0.5_dp*(a + b)
-            call solver%dense(m, 0, ym, s2)
-            if (s2%code /= 0) exit
-            call evaluate(p, ym, th3, mo, s2)
+            call motion_at(m, mo, s2, .false.)
             if (s2%code == 0) call model_checks(mo, m, s2)
             if (s2%code == 0) then
                 a = m
@@ -694,10 +803,36 @@ contains
                 b = m
             end if
         end do
-        call solver%dense(b, 0, ym, s2)
-        if (s2%code == 0) call evaluate(p, ym, th3, mo, s2)
+        call motion_at(b, mo, s2, .true.)
         if (s2%code == 0) call model_checks(mo, b, s2)
         if (s2%code == ERR_MODEL) stat = s2
+    contains
+        !> What the model checks read at time t of the step (state y when given, else the
+        !! dense output; the derivative from the dense output): the tensions, theta5 and
+        !! |theta2| (all the paper's angles, branch and sign as the rows', when `angles`).
+        subroutine motion_at(t, mt, st, angles, y)
+            real(dp), intent(in) :: t
+            type(motion_t), intent(out) :: mt
+            type(status_t), intent(out) :: st
+            logical, intent(in) :: angles
+            real(dp), intent(in), optional :: y(NSTATE)
+            real(dp) :: yt(NSTATE), ydt(NSTATE)
+            if (present(y)) then
+                yt = y
+            else
+                call solver%dense(t, 0, yt, st)
+                if (st%code /= 0) return
+            end if
+            call solver%dense(t, 1, ydt, st)
+            if (st%code /= 0) return
+            if (angles) then
+                call paper_angles(yt, th3, mt%th, mt%thd)
+            else
+                mt%th(2) = asin(min(1.0_dp, sqrt(yt(2)**2 + yt(3)**2)))
+                mt%th(5) = yt(5)
+            end if
+            call step_tensions(sys, yt, ydt, mt%t_bc, mt%t_ad, st)
+        end subroutine motion_at
     end subroutine check_validity
 
     !> An integrator failure: when the state reached is where the model's coordinates are

@@ -13,6 +13,8 @@ program run_tests
     use test_radau, only: run_radau_tests
     use test_elastic_radau, only: run_elastic_radau_tests
     use test_robust, only: run_robust_tests
+    use test_fast_format, only: run_fast_format_tests
+    use test_columns, only: run_columns_tests
     implicit none
     type(tester_t) :: t
     character(len=1024) :: exe, filter
@@ -33,5 +35,7 @@ program run_tests
     call run_radau_tests(t)
     call run_elastic_radau_tests(t)
     call run_robust_tests(t, trim(exe))
+    call run_fast_format_tests(t)
+    call run_columns_tests(t, trim(exe))
     if (.not. t%summary()) error stop 1
 end program run_tests

@@ -5,7 +5,8 @@ module test_floquet
     use testing, only: tester_t
     use geometry, only: pendulum_t
     use bifilar_model, only: bifilar_t, chart_accelerations, NSTATE
-    use lsoda, only: lsoda_t
+    use lsoda, only: lsoda_t, lsoda_stats_t, METHOD_BDF
+    use ode_system, only: ode_system_t
     use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, torsion_period, &
                        jacobian_z, multipliers_from_monodromy, torsion_start, monodromy, &
                        pencil_multipliers
@@ -19,6 +20,24 @@ module test_floquet
 
     public :: run_floquet_tests
 
+    real(dp), parameter :: A_BLOCK(2, 2) = reshape([-1000.0_dp, 0.0_dp, 999.0_dp, -1.0_dp], [2, 2])
+
+    !> Three equal stiff 2 x 2 blocks; with structured = .true. the system factors and solves
+    !! the stiff method's linear systems itself, block by block.
+    type, extends(ode_system_t) :: blocks_t
+        logical :: structured = .false.
+        real(dp) :: lu(2, 2) = 0.0_dp
+        integer :: ipiv(2) = 0
+        integer :: solves = 0
+    contains
+        procedure :: rhs => blocks_rhs
+        procedure :: jacobian => blocks_jacobian
+        procedure :: has_jacobian => blocks_has_jacobian
+        procedure :: has_iteration_solver => blocks_structured
+        procedure :: factor_iteration => blocks_factor
+        procedure :: solve_iteration => blocks_solve
+    end type blocks_t
+
 contains
 
     subroutine run_floquet_tests(t, exe)
@@ -26,6 +45,10 @@ contains
         character(len=*), intent(in) :: exe
         if (t%want('floquet: period of pure torsion')) call test_period(t)
         if (t%want('floquet: Jacobian Z against directional differences')) call test_jacobian(t)
+        if (t%want('floquet: exact Z against central differences, every column')) &
+            call test_jacobian_columns(t)
+        if (t%want('floquet: structured iteration matrix = the integrator''s own')) &
+            call test_structured_solve(t)
         if (t%want('floquet: small amplitude against the natural frequencies at rest')) &
             call test_small_amplitude(t)
         if (t%want('floquet: structure of the multipliers')) call test_structure(t)
@@ -458,5 +481,169 @@ contains
                                   ' > /dev/null 2>&1', exitstat=ex)
         call t%check('floquet on unequal cables: exit 2', ex == ERR_DECK)
     end subroutine test_refusal
+
+    !> Every column of the exact Z (eq. (51)) against fourth-order central differences of the
+    !! accelerations (h = 1e-4 max(1, |y_j|): truncation ~1e-16, rounding ~1e-12), at generic
+    !! states of three pendulums: the box, the cylinder with Baumgarte's terms (the form the
+    !! simulations integrate), the triangular plate with its principal axes off ntilde.
+    subroutine test_jacobian_columns(t)
+        type(tester_t), intent(inout) :: t
+        type(pendulum_t) :: p
+        type(status_t) :: st
+        real(dp) :: y(NSTATE), z(NSTATE, NSTATE), a(5, -2:2), fd(5), h, e, zmax
+        integer :: ip, is, j, m
+        logical :: ok
+        e = 0.0_dp
+        ok = .true.
+        do ip = 1, 3
+            select case (ip)
+            case (1)
+                p = deck_pendulum('input/box_unstable.nml')
+            case (2)
+                p = deck_pendulum('input/cylinder_l180.nml')
+                p%stab_rate = 1.0_dp
+            case default
+                p = deck_pendulum('input/triangle_plate.nml')
+            end select
+            do is = 1, 3
+                y = [0.02_dp, 0.1_dp, -0.05_dp, 0.4_dp, 0.03_dp, 0.1_dp, -0.2_dp, 0.15_dp, &
+                     0.5_dp, -0.1_dp]*is
+                call jacobian_z(p, y, z, st)
+                ok = ok .and. st%code == 0
+                zmax = max(1.0_dp, maxval(abs(z)))
+                do j = 1, NSTATE
+                    h = 1.0e-4_dp*max(1.0_dp, abs(y(j)))
+                    do m = -2, 2
+                        if (m == 0) cycle
+                        call chart_accelerations(p, y + m*h*unit10(j), a(:, m), st)
+                        ok = ok .and. st%code == 0
+                    end do
+                    fd = (8*(a(:, 1) - a(:, -1)) - (a(:, 2) - a(:, -2)))/(12*h)
+                    e = max(e, maxval(abs(fd - z(6:10, j)))/zmax)
+                    ok = ok .and. all(z(1:5, j) == merge(1.0_dp, 0.0_dp, [(m + 5 == j, m=1, 5)]))
+                end do
+            end do
+        end do
+        call t%check('Z: upper half (0 I), every evaluation succeeds', ok)
+        call t%check_close('Z: every column = central differences (relative to max |Z|)', e, &
+                           0.0_dp, atol=1.0e-8_dp)
+    end subroutine test_jacobian_columns
+
+    pure function unit10(j) result(v)
+        integer, intent(in) :: j
+        real(dp) :: v(NSTATE)
+        v = 0.0_dp
+        v(j) = 1.0_dp
+    end function unit10
+
+    !> The integrator's structured iteration matrix (ode_system's has_iteration_solver): a
+    !! stiff linear system of three equal 2 x 2 blocks integrated with the integrator's own
+    !! 6 x 6 LU of I - h l0 J and with the system's 2 x 2 factor and block solves: the same
+    !! steps, evaluations, Jacobians and factorisations, the same solution to roundoff, and
+    !! BDF in use (so the solves were the system's).
+    subroutine test_structured_solve(t)
+        type(tester_t), intent(inout) :: t
+        type(blocks_t) :: dense, structured
+        type(lsoda_t) :: s1, s2
+        type(lsoda_stats_t) :: st1, st2
+        type(status_t) :: e1, e2
+        real(dp) :: y1(6), y2(6)
+        structured%structured = .true.
+        y1 = [1.0_dp, 0.0_dp, 0.5_dp, 1.0_dp, -1.0_dp, 2.0_dp]
+        y2 = y1
+        call s1%init(dense, 0.0_dp, y1, 1.0e-7_dp, [1.0e-9_dp], e1)
+        call s1%integrate(dense, 20.0_dp, y1, e1)
+        call s2%init(structured, 0.0_dp, y2, 1.0e-7_dp, [1.0e-9_dp], e2)
+        call s2%integrate(structured, 20.0_dp, y2, e2)
+        st1 = s1%stats()
+        st2 = s2%stats()
+        call t%check('both integrate', e1%code == 0 .and. e2%code == 0)
+        call t%check('stiff: BDF, Jacobians and factorisations used', &
+                     st2%method_last == METHOD_BDF .and. st2%jac_evals > 0 .and. &
+                     st2%lu_decomps > 0 .and. structured%solves > 0)
+        call t%check('same steps, rhs, Jacobians, factorisations, switches', &
+                     st1%steps == st2%steps .and. st1%rhs_evals == st2%rhs_evals .and. &
+                     st1%jac_evals == st2%jac_evals .and. st1%lu_decomps == st2%lu_decomps .and. &
+                     st1%method_switches == st2%method_switches)
+        call t%check_close('same solution (relative)', maxval(abs(y1 - y2))/maxval(abs(y1)), &
+                           0.0_dp, atol=1.0e-12_dp)
+    end subroutine test_structured_solve
+
+    !> y' = diag(A, A, A) y, A = [[-1000, 999], [0, -1]]: stiff.
+    subroutine blocks_rhs(sys, t, y, ydot, stat)
+        class(blocks_t), intent(inout) :: sys
+        real(dp), intent(in) :: t, y(:)
+        real(dp), intent(out) :: ydot(:)
+        type(status_t), intent(out) :: stat
+        integer :: c
+        if (.false.) ydot(1) = t + merge(1, 0, sys%structured)
+        do c = 0, 2
+            ydot(2*c + 1:2*c + 2) = matmul(A_BLOCK, y(2*c + 1:2*c + 2))
+        end do
+        stat%code = 0
+    end subroutine blocks_rhs
+
+    subroutine blocks_jacobian(sys, t, y, dfdy, stat)
+        class(blocks_t), intent(inout) :: sys
+        real(dp), intent(in) :: t, y(:)
+        real(dp), intent(out) :: dfdy(:, :)
+        type(status_t), intent(out) :: stat
+        integer :: c
+        if (.false.) dfdy(1, 1) = t + y(1) + merge(1, 0, sys%structured)
+        dfdy = 0.0_dp
+        do c = 0, 2
+            dfdy(2*c + 1:2*c + 2, 2*c + 1:2*c + 2) = A_BLOCK
+        end do
+        stat%code = 0
+    end subroutine blocks_jacobian
+
+    logical function blocks_has_jacobian(sys)
+        class(blocks_t), intent(in) :: sys
+        blocks_has_jacobian = .true. .or. sys%structured
+    end function blocks_has_jacobian
+
+    logical function blocks_structured(sys)
+        class(blocks_t), intent(in) :: sys
+        blocks_structured = sys%structured
+    end function blocks_structured
+
+    subroutine blocks_factor(sys, t, y, hl0, rewt, jnorm, singular, stat)
+        class(blocks_t), intent(inout) :: sys
+        real(dp), intent(in) :: t, y(:), hl0, rewt(:)
+        real(dp), intent(out) :: jnorm
+        logical, intent(out) :: singular
+        type(status_t), intent(out) :: stat
+        type(status_t) :: lst
+        real(dp) :: rowsum
+        integer :: c, i
+        if (.false.) jnorm = t + y(1)
+        jnorm = 0.0_dp
+        do c = 0, 2
+            do i = 1, 2
+                rowsum = abs(A_BLOCK(i, 1))/rewt(2*c + 1) + abs(A_BLOCK(i, 2))/rewt(2*c + 2)
+                jnorm = max(jnorm, rowsum*rewt(2*c + i))
+            end do
+        end do
+        sys%lu = -hl0*A_BLOCK
+        sys%lu(1, 1) = sys%lu(1, 1) + 1.0_dp
+        sys%lu(2, 2) = sys%lu(2, 2) + 1.0_dp
+        call la_lu_factor(sys%lu, sys%ipiv, lst)
+        singular = lst%code /= 0
+        stat%code = 0
+    end subroutine blocks_factor
+
+    subroutine blocks_solve(sys, x, stat)
+        class(blocks_t), intent(inout) :: sys
+        real(dp), intent(inout) :: x(:)
+        type(status_t), intent(out) :: stat
+        real(dp) :: b(2)
+        integer :: c
+        sys%solves = sys%solves + 1
+        do c = 0, 2
+            b = x(2*c + 1:2*c + 2)
+            call la_lu_solve(sys%lu, sys%ipiv, b, stat)
+            x(2*c + 1:2*c + 2) = b
+        end do
+    end subroutine blocks_solve
 
 end module test_floquet

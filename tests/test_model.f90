@@ -9,7 +9,7 @@ module test_model
                         direction_cosines, point_d, mass_centre
     use kinematics, only: omega_coeffs, omega_dot_quadratic, v_coeffs, vdot_coeffs
     use bifilar_model, only: bifilar_t, motion_t, chart_state, chart_accelerations, &
-                             paper_accelerations, evaluate, chart_positions, NSTATE
+                             paper_accelerations, evaluate, chart_positions, step_tensions, NSTATE
     use lsoda, only: lsoda_t
     use deck, only: deck_t, read_deck
     use simulate, only: run_simulation, run_summary_t, make_pendulum, start_state
@@ -39,6 +39,7 @@ contains
         if (t%want('model: paper form eq. (38) against the regular chart')) call test_paper_form(t)
         if (t%want('model: trajectory kinematics against finite differences')) &
             call test_trajectory_fd(t)
+        if (t%want('model: tensions for the validity check')) call test_step_tensions(t)
         if (t%want('model: paper scenes conserve energy and constraint')) call test_scenes(t, exe)
         if (t%want('model: pure torsion against eqs. (45)-(49)')) call test_pure_torsion(t)
         if (t%want('model: small-amplitude period against the bifilar formula')) &
@@ -188,6 +189,48 @@ contains
         call t%check_close('paper eq. (38) = regular chart accelerations', err, 0.0_dp, &
                            atol=1.0e-12_dp)
     end subroutine test_paper_form
+
+    !> The validity check's tensions: from a state and its derivative (step_tensions) and
+    !! kept by the right-hand side (last_evaluation) they are evaluate's, which solves
+    !! eq. (38); and the tension's sign follows the cable's: pulling the body up against
+    !! gravity at rest gives T_BC + T_AD = m g on equal vertical cables.
+    subroutine test_step_tensions(t)
+        type(tester_t), intent(inout) :: t
+        type(bifilar_t) :: sys
+        type(status_t) :: st
+        type(motion_t) :: mo
+        real(dp) :: th(5), y(NSTATE), ydot(NSTATE), tb, ta, yl(NSTATE), tbl, tal, err
+        logical :: found
+        integer :: trial
+        err = 0.0_dp
+        found = .true.
+        do trial = 1, 3
+            sys%p = cylinder(1.8_dp + 0.05_dp*trial)
+            sys%p%stab_rate = 1.0_dp
+            sys%keep_tensions = .true.
+            call raised_angles(sys%p, (20.0_dp + 15*trial)*deg, th, st)
+            th(1) = 0.05_dp*trial
+            call solve_theta5(sys%p, th, st)
+            y = chart_state(th, [0.1_dp, 0.0_dp, 0.0_dp, -0.3_dp*trial, 0.0_dp])
+            call sys%rhs(0.0_dp, y, ydot, st)
+            call step_tensions(sys, y, ydot, tb, ta, st)
+            call sys%last_evaluation(yl, tbl, tal, found)
+            call evaluate(sys%p, y, th(3), mo, st)
+            err = max(err, abs(tb - mo%t_bc), abs(ta - mo%t_ad), abs(tbl - mo%t_bc), &
+                      abs(tal - mo%t_ad), maxval(abs(yl - y)))
+        end do
+        call t%check('right-hand side keeps its state and tensions', found)
+        call t%check_close('tensions from (y, f(y)) and kept by the rhs = evaluate''s', err, &
+                           0.0_dp, atol=1.0e-13_dp)
+        sys%p = cylinder(2.0_dp)
+        call raised_angles(sys%p, 0.0_dp, th, st)
+        call solve_theta5(sys%p, th, st)
+        y = chart_state(th, [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp])
+        call sys%rhs(0.0_dp, y, ydot, st)
+        call step_tensions(sys, y, ydot, tb, ta, st)
+        call t%check_close('at rest on equal vertical cables T_BC + T_AD = m g', tb + ta, &
+                           1.0_dp, atol=1.0e-13_dp)
+    end subroutine test_step_tensions
 
     !> Velocity and acceleration of R*, omega and alpha reported along an integrated
     !! trajectory agree with numerical derivatives of positions and frames.

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Speed figures of make bench: instructions (valgrind --tool=callgrind, exact and repeatable)
+# and CPU time of one right-hand side, one Floquet analysis, one chart point, the start of
+# the process and the whole cylinder_l180 deck.  Usage: tests/bench/speed.sh BINDIR OUTFILE
+# (BINDIR holds bifilar and bench_speed).  One unit's instructions are the difference of a
+# run with N units and one with 0, over N; its CPU time is from a run with more units.
+set -euo pipefail
+bin=${1:-bin}
+out=${2:-output/bench_speed.dat}
+scratch=build/bench
+mkdir -p "$scratch" "$(dirname "$out")"
+if ! command -v valgrind >/dev/null 2>&1; then
+    echo "speed.sh: valgrind is not installed; no instruction counts" >&2
+    exit 0
+fi
+# instructions of one command
+cg() {
+    valgrind --tool=callgrind --callgrind-out-file=/dev/null "$@" 2>&1 >/dev/null |
+        sed -n 's/.*Collected : *//p'
+}
+# instructions of one unit: (I(N) - I(0)) / N
+per_unit() {
+    n=$1; shift
+    i0=$(cg "$@" 0)
+    i1=$(cg "$@" "$n")
+    echo $(( (i1 - i0) / n ))
+}
+# CPU seconds of one unit (bench_speed prints it, third field)
+cpu_unit() {
+    "$@" | awk '{print $3}'
+}
+# CPU seconds of one process, from REPS runs (user + system of the children)
+cpu_process() {
+    local reps=$1 t
+    shift
+    TIMEFORMAT='%3U %3S'
+    t=$( { time (for ((i = 0; i < reps; i++)); do "$@" >/dev/null 2>&1 || true; done); } 2>&1 )
+    awk -v t="$t" -v r="$reps" 'BEGIN {split(t, a, " "); printf "%.3e", (a[1] + a[2]) / r}'
+}
+{
+    echo "# bifilar speed figures (make bench): what instructions cpu_seconds"
+    echo "rhs $(per_unit 2000 "$bin/bench_speed" rhs) $(cpu_unit "$bin/bench_speed" rhs 200000)"
+    for deck in cylinder_torsion box_stable box_unstable box_tall_floquet; do
+        echo "floquet_$deck $(per_unit 1 "$bin/bench_speed" floquet $deck) \
+$(cpu_unit "$bin/bench_speed" floquet $deck 20)"
+    done
+    echo "chart_point $(( $(per_unit 1 "$bin/bench_speed" chart) / 30 )) $(cpu_unit "$bin/bench_speed" chart 4)"
+    echo "process_start $(cg "$bin/bifilar") $(cpu_process 200 "$bin/bifilar")"
+    echo "cylinder_l180 $(cg "$bin/bifilar" input/cylinder_l180.nml --out "$scratch") \
+$(cpu_process 40 "$bin/bifilar" input/cylinder_l180.nml --out "$scratch")"
+} > "$out.tmp"
+mv "$out.tmp" "$out"
+awk 'NR == 1 {next} {printf "%-28s %14.0f instructions %12.3e s cpu\n", $1, $2, $3}' "$out"
