@@ -29,10 +29,10 @@ FFLAGS += -fopenmp -std=f2008 -Wall -Wextra -Wno-compare-reals -fimplicit-none
 LIBS = -llapack -lblas
 
 # Library modules in dependency order (each only uses modules listed before it).
-LIB_MODULES = kinds status lapack_wrap ode_system lsoda geometry kinematics gen_forces bifilar_model \
-              elastic_model elastic_solver deck output_io simulate floquet paper_claims stability work_precision
+LIB_MODULES = kinds status random lapack_wrap ode_system lsoda geometry kinematics gen_forces bifilar_model \
+              elastic_model elastic_solver deck output_io simulate floquet paper_claims stability work_precision period_inversion
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
-TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme test_work_precision test_elastic test_elastic_jac
+TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme test_work_precision test_elastic test_elastic_jac test_period
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
 
 .PHONY: all test check run report bench deps clean memcheck

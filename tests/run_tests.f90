@@ -10,6 +10,7 @@ program run_tests
     use test_work_precision, only: run_work_precision_tests
     use test_elastic, only: run_elastic_tests
     use test_elastic_jac, only: run_elastic_jac_tests
+    use test_period, only: run_period_tests
     implicit none
     type(tester_t) :: t
     character(len=1024) :: exe, filter
@@ -27,5 +28,6 @@ program run_tests
     call run_work_precision_tests(t, trim(exe))
     call run_elastic_tests(t)
     call run_elastic_jac_tests(t)
+    call run_period_tests(t)
     if (.not. t%summary()) error stop 1
 end program run_tests
