@@ -54,6 +54,61 @@ module floquet
     end type floquet_result_t
 
     real(dp), parameter, public :: STABILITY_MARGIN = 1.0e-6_dp
+
+    !> The 48-point Gauss-Legendre rule on [-1, 1] of torsion_period: the roots of P_48
+    !! (in the order cos(pi (i - 1/4)/(48 + 1/2)), largest first) and their weights
+    !! 2/((1 - x^2) P_48'(x)^2), computed to 40 digits by Newton's method on the recurrence
+    !! of the Legendre polynomials (test `floquet: Gauss-Legendre table` recomputes them).
+    real(dp), parameter, public :: GL_X(48) = [ &
+        9.9877100725242611860e-1_dp, 9.9353017226635075755e-1_dp, &
+        9.8412458372282685774e-1_dp, 9.7059159254624725046e-1_dp, &
+        9.5298770316043086072e-1_dp, 9.3138669070655433311e-1_dp, &
+        9.0587913671556967282e-1_dp, 8.7657202027424788591e-1_dp, &
+        8.4358826162439353071e-1_dp, 8.0706620402944262708e-1_dp, &
+        7.6715903251574033925e-1_dp, 7.2403413092381465467e-1_dp, &
+        6.7787237963266390521e-1_dp, 6.2886739677651362400e-1_dp, &
+        5.7722472608397270382e-1_dp, 5.2316097472223303368e-1_dp, &
+        4.6690290475095840454e-1_dp, 4.0868648199071672992e-1_dp, &
+        3.4875588629216073816e-1_dp, 2.8736248735545557674e-1_dp, &
+        2.2476379039468906122e-1_dp, 1.6122235606889171806e-1_dp, &
+        9.7004699209462698930e-2_dp, 3.2380170962869362033e-2_dp, &
+        -3.2380170962869362033e-2_dp, -9.7004699209462698930e-2_dp, &
+        -1.6122235606889171806e-1_dp, -2.2476379039468906122e-1_dp, &
+        -2.8736248735545557674e-1_dp, -3.4875588629216073816e-1_dp, &
+        -4.0868648199071672992e-1_dp, -4.6690290475095840454e-1_dp, &
+        -5.2316097472223303368e-1_dp, -5.7722472608397270382e-1_dp, &
+        -6.2886739677651362400e-1_dp, -6.7787237963266390521e-1_dp, &
+        -7.2403413092381465467e-1_dp, -7.6715903251574033925e-1_dp, &
+        -8.0706620402944262708e-1_dp, -8.4358826162439353071e-1_dp, &
+        -8.7657202027424788591e-1_dp, -9.0587913671556967282e-1_dp, &
+        -9.3138669070655433311e-1_dp, -9.5298770316043086072e-1_dp, &
+        -9.7059159254624725046e-1_dp, -9.8412458372282685774e-1_dp, &
+        -9.9353017226635075755e-1_dp, -9.9877100725242611860e-1_dp]
+    real(dp), parameter, public :: GL_W(48) = [ &
+        3.1533460523058386327e-3_dp, 7.3275539012762621024e-3_dp, &
+        1.1477234579234539490e-2_dp, 1.5579315722943848728e-2_dp, &
+        1.9616160457355527814e-2_dp, 2.3570760839324379141e-2_dp, &
+        2.7426509708356948200e-2_dp, 3.1167227832798088902e-2_dp, &
+        3.4777222564770438893e-2_dp, 3.8241351065830706317e-2_dp, &
+        4.1545082943464749214e-2_dp, 4.4674560856694280419e-2_dp, &
+        4.7616658492490474826e-2_dp, 5.0359035553854474958e-2_dp, &
+        5.2890189485193667096e-2_dp, 5.5199503699984162868e-2_dp, &
+        5.7277292100403215705e-2_dp, 5.9114839698395635746e-2_dp, &
+        6.0704439165893880053e-2_dp, 6.2039423159892663904e-2_dp, &
+        6.3114192286254025657e-2_dp, 6.3924238584648186624e-2_dp, &
+        6.4466164435950082207e-2_dp, 6.4737696812683922503e-2_dp, &
+        6.4737696812683922503e-2_dp, 6.4466164435950082207e-2_dp, &
+        6.3924238584648186624e-2_dp, 6.3114192286254025657e-2_dp, &
+        6.2039423159892663904e-2_dp, 6.0704439165893880053e-2_dp, &
+        5.9114839698395635746e-2_dp, 5.7277292100403215705e-2_dp, &
+        5.5199503699984162868e-2_dp, 5.2890189485193667096e-2_dp, &
+        5.0359035553854474958e-2_dp, 4.7616658492490474826e-2_dp, &
+        4.4674560856694280419e-2_dp, 4.1545082943464749214e-2_dp, &
+        3.8241351065830706317e-2_dp, 3.4777222564770438893e-2_dp, &
+        3.1167227832798088902e-2_dp, 2.7426509708356948200e-2_dp, &
+        2.3570760839324379141e-2_dp, 1.9616160457355527814e-2_dp, &
+        1.5579315722943848728e-2_dp, 1.1477234579234539490e-2_dp, &
+        7.3275539012762621024e-3_dp, 3.1533460523058386327e-3_dp]
     !> Most integrator steps over one segment of the monodromy (the paper's scenes take at
     !! most 640 at rtol 1e-10): a hopeless point (a body turning fast about a principal axis
     !! of tiny inertia) fails in about a second instead of running for minutes.
@@ -105,10 +160,9 @@ contains
         integer, intent(in) :: ivert            !! vertical principal axis
         real(dp), intent(out) :: period         !! t*
         type(status_t), intent(out) :: stat     !! ERR_DECK when the cables cannot reach
-        integer, parameter :: ng = 48
-        real(dp) :: x(ng), w(ng), phi, q, zs_q, zs_a, dz, dv, jq, s
+        integer, parameter :: ng = size(GL_X)
+        real(dp) :: phi, q, zs_q, zs_a, dz, dv, jq, s
         integer :: k
-        call gauss_legendre(x, w)
         period = 0.0_dp
         zs_a = p%big_l**2 - h2(amp)
         if (.not. (zs_a > 0.0_dp)) then
@@ -119,14 +173,14 @@ contains
         zs_a = sqrt(zs_a)
         s = 0.0_dp
         do k = 1, ng
-            phi = 0.25_dp*pi*(x(k) + 1.0_dp)
+            phi = 0.25_dp*pi*(GL_X(k) + 1.0_dp)
             q = amp*sin(phi)
             zs_q = sqrt(p%big_l**2 - h2(q))
             ! z(A) - z(q) = (h2(A) - h2(q)) / (zs(q) + zs(A)), h2(A) - h2(q) = B/2 (cos q - cos A)
             dv = p%big_b*sin(0.5_dp*(amp + q))*sin(0.5_dp*(amp - q))/(zs_q + zs_a)
             dz = 0.25_dp*p%big_b*sin(q)/zs_q
             jq = p%inertia(ivert) + dz**2
-            s = s + w(k)*sqrt(jq/(2.0_dp*dv))*amp*cos(phi)
+            s = s + GL_W(k)*sqrt(jq/(2.0_dp*dv))*amp*cos(phi)
         end do
         period = 4.0_dp*0.25_dp*pi*s
     contains
@@ -135,32 +189,6 @@ contains
             h2 = 0.25_dp + 0.25_dp*p%big_b**2 - 0.5_dp*p%big_b*cos(qq)
         end function h2
     end subroutine torsion_period
-
-    !> Gauss-Legendre nodes and weights on [-1, 1] (Newton on P_n from the Chebyshev guess).
-    pure subroutine gauss_legendre(x, w)
-        real(dp), intent(out) :: x(:), w(:)
-        integer :: n, i, j, it
-        real(dp) :: z, p0, p1, p2, dp_dz, dz
-        n = size(x)
-        do i = 1, n
-            z = cos(pi*(i - 0.25_dp)/(n + 0.5_dp))
-            do it = 1, 100
-                p0 = 1.0_dp
-                p1 = z
-                do j = 2, n
-                    p2 = ((2*j - 1)*z*p1 - (j - 1)*p0)/j
-                    p0 = p1
-                    p1 = p2
-                end do
-                dp_dz = n*(z*p1 - p0)/(z*z - 1.0_dp)
-                dz = p1/dp_dz
-                z = z - dz
-                if (abs(dz) < 1.0e-16_dp) exit
-            end do
-            x(i) = z
-            w(i) = 2.0_dp/((1.0_dp - z*z)*dp_dz**2)
-        end do
-    end subroutine gauss_legendre
 
     !> Z = d f / d y of the chart right-hand side (eq. (51)), exact (bifilar_model's
     !! chart_jacobian: the derivatives of the kinematics through Kane's equations).

@@ -9,7 +9,7 @@ module test_floquet
     use ode_system, only: ode_system_t
     use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, torsion_period, &
                        jacobian_z, multipliers_from_monodromy, torsion_start, monodromy, &
-                       pencil_multipliers
+                       pencil_multipliers, GL_X, GL_W
     use paper_claims, only: rest_frequencies
     use lapack_wrap, only: la_eig, la_lu_factor, la_lu_solve
     use deck, only: deck_t, read_deck
@@ -43,6 +43,7 @@ contains
     subroutine run_floquet_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
+        if (t%want('floquet: Gauss-Legendre table')) call test_gauss_table(t)
         if (t%want('floquet: period of pure torsion')) call test_period(t)
         if (t%want('floquet: Jacobian Z against directional differences')) call test_jacobian(t)
         if (t%want('floquet: exact Z against central differences, every column')) &
@@ -70,6 +71,54 @@ contains
         call make_pendulum(d, p, st)
         p%stab_rate = 0.0_dp
     end function deck_pendulum
+
+    !> The 48-point Gauss-Legendre table of torsion_period: recomputed here in double
+    !! precision (Newton on P_48 from the Chebyshev guess), and exact for x^k, k <= 95.
+    subroutine test_gauss_table(t)
+        type(tester_t), intent(inout) :: t
+        real(dp) :: x(48), w(48)
+        integer :: k
+        logical :: ok
+        call gauss_legendre(x, w)
+        call t%check('Gauss-Legendre: nodes agree with the table to 4 ulp', &
+            all(abs(x - GL_X) <= 4*epsilon(1.0_dp)))
+        ! 1 - x^2 loses digits at the end nodes (1 - x^2 = 2.5e-3): the double-precision
+        ! weights there are good to about eps/(1 - x^2)
+        call t%check('Gauss-Legendre: weights agree with the table to 1e-12 relative', &
+            all(abs(w - GL_W) <= 1.0e-12_dp*GL_W))
+        ok = .true.
+        do k = 0, 94, 2
+            ok = ok .and. abs(sum(GL_W*GL_X**k) - 2.0_dp/(k + 1)) <= 1.0e-14_dp
+            ok = ok .and. abs(sum(GL_W*GL_X**(k + 1))) <= 1.0e-15_dp
+        end do
+        call t%check('Gauss-Legendre: exact for x^k, k = 0 ... 95', ok)
+    end subroutine test_gauss_table
+
+    !> Gauss-Legendre nodes and weights on [-1, 1] (Newton on P_n from the Chebyshev guess).
+    pure subroutine gauss_legendre(x, w)
+        real(dp), intent(out) :: x(:), w(:)
+        integer :: n, i, j, it
+        real(dp) :: z, p0, p1, p2, dp_dz, dz
+        n = size(x)
+        do i = 1, n
+            z = cos(pi*(i - 0.25_dp)/(n + 0.5_dp))
+            do it = 1, 100
+                p0 = 1.0_dp
+                p1 = z
+                do j = 2, n
+                    p2 = ((2*j - 1)*z*p1 - (j - 1)*p0)/j
+                    p0 = p1
+                    p1 = p2
+                end do
+                dp_dz = n*(z*p1 - p0)/(z*z - 1.0_dp)
+                dz = p1/dp_dz
+                z = z - dz
+                if (abs(dz) < 1.0e-16_dp) exit
+            end do
+            x(i) = z
+            w(i) = 2.0_dp/((1.0_dp - z*z)*dp_dz**2)
+        end do
+    end subroutine gauss_legendre
 
     !> t* from the quadrature: the 1-DOF equations (45)-(48) integrated to t*/2 arrive at
     !! theta4 = -A at rest; at small amplitude t* = 4 pi sqrt(I1 l / (m g b^2)).
