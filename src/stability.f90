@@ -3,8 +3,10 @@
 !!
 !! Writes OUTDIR/NAME.floquet (key = value lines and the multiplier table) and
 !! OUTDIR/NAME.chart.dat (x, y, max_modulus, period), each through a temporary file.
-!! The chart runs its points in parallel with OpenMP (OMP_NUM_THREADS is honoured) and
-!! shows one line of progress on standard error when that is a terminal (module progress).
+!! The chart's points are a sweep (module sweep_engine): spread over the OpenMP threads
+!! (OMP_NUM_THREADS is honoured) and, in bin/bifilar_mpi, over the MPI ranks, checkpointed
+!! to OUTDIR/NAME.chart.partial as they complete, with one line of progress on standard
+!! error when that is a terminal (module progress).
 module stability
     use kinds, only: dp, deg
     use status, only: status_t, set_error, ERR_NUMERIC, ERR_DECK, ERR_MODEL
@@ -15,12 +17,13 @@ module stability
                        FLOQUET_MAX_STEPS
     use lsoda, only: LSODA_ERR_MAX_STEPS
     use output_io, only: out_files_t, write_kv
-    use progress, only: progress_t
+    use sweep_engine, only: sweep_task_t, sweep_run, sweep_options_t, sweep_report_t, &
+        checkpoint_path
     use text, only: itoa
     implicit none
     private
 
-    public :: run_floquet, run_chart, set_chart_variable, floquet_ready
+    public :: run_floquet, run_chart, set_chart_variable, floquet_ready, chart_task
 
     !> Sentinel written for chart points where no analysis is possible (not a torsion scene,
     !! cables cannot reach, impossible inertia): never NaN.
@@ -28,6 +31,19 @@ module stability
     !> Sentinel written for chart points whose analysis failed (e.g. more than
     !! FLOQUET_MAX_STEPS steps): never NaN.
     real(dp), parameter, public :: CHART_FAILED = -2.0_dp
+
+    !> The points of a chart as a sweep: point k = (i, j) of the grid, x index i fastest
+    !! (k = (j - 1) nx + i); its values are max_modulus and period.
+    type, extends(sweep_task_t), public :: chart_task_t
+        type(pendulum_t) :: p0                  !! the deck's scene
+        character(len=16) :: x = '', y = ''     !! the swept variables
+        real(dp), allocatable :: xs(:), ys(:)   !! their grids (chart units)
+        real(dp) :: amplitude = 0.0_dp          !! &floquet amplitude (degrees)
+        real(dp) :: rtol = 0.0_dp               !! &floquet rtol
+        integer :: segments = 1                 !! &floquet segments
+    contains
+        procedure :: compute => chart_point
+    end type chart_task_t
 
 contains
 
@@ -140,11 +156,74 @@ contains
         end select
     end subroutine set_chart_variable
 
+    !> The chart of a deck as a sweep (also built by the other ranks of an MPI run from the
+    !! same deck): the scene, the swept variables and their grids.
+    subroutine chart_task(d, task, stat)
+        type(deck_t), intent(in) :: d           !! the deck
+        type(chart_task_t), intent(out) :: task
+        type(status_t), intent(out) :: stat     !! ERR_DECK when the scene cannot be made
+        integer :: i, j
+        call make_pendulum(d, task%p0, stat)
+        if (stat%code /= 0) return
+        allocate (task%xs(d%chart_nx), task%ys(d%chart_ny))
+        do i = 1, d%chart_nx
+            task%xs(i) = d%chart_x_min + (d%chart_x_max - d%chart_x_min)*(i - 1)/(d%chart_nx - 1)
+        end do
+        do j = 1, d%chart_ny
+            task%ys(j) = d%chart_y_min + (d%chart_y_max - d%chart_y_min)*(j - 1)/(d%chart_ny - 1)
+        end do
+        task%x = d%chart_x
+        task%y = d%chart_y
+        task%amplitude = d%floquet_amplitude
+        task%rtol = d%floquet_rtol
+        task%segments = d%floquet_segments
+    end subroutine chart_task
+
+    !> Chart point k: values = [max_modulus, period], or CHART_INVALID in both where pure
+    !! torsion is not possible (impossible inertia, not a torsion scene, no torsion at this
+    !! amplitude), CHART_FAILED where the analysis failed.  Never fails itself.
+    subroutine chart_point(self, i, values, stat)
+        class(chart_task_t), intent(in) :: self
+        integer, intent(in) :: i                !! 1 .. nx*ny, x index fastest
+        real(dp), intent(out) :: values(:)      !! max_modulus, period
+        type(status_t), intent(out) :: stat     !! always OK
+        type(pendulum_t) :: p
+        type(floquet_result_t) :: res
+        type(status_t) :: st
+        real(dp) :: amp
+        integer :: ix, iy, ivert
+        logical :: valid
+        stat%code = 0
+        ix = mod(i - 1, size(self%xs)) + 1
+        iy = (i - 1)/size(self%xs) + 1
+        p = self%p0
+        amp = self%amplitude
+        call set_chart_variable(self%x, self%xs(ix), p, amp)
+        call set_chart_variable(self%y, self%ys(iy), p, amp)
+        valid = all(p%inertia > 0.0_dp) .and. p%inertia(1) <= p%inertia(2) + p%inertia(3) &
+                .and. p%inertia(2) <= p%inertia(1) + p%inertia(3) &
+                .and. p%inertia(3) <= p%inertia(1) + p%inertia(2)
+        values = CHART_INVALID
+        if (.not. valid) return
+        call check_torsion_scene(p, ivert, st)
+        if (st%code /= 0) return
+        call floquet_analysis(p, amp*deg, self%rtol, self%segments, res, st)
+        if (st%code == 0) then
+            values = [res%max_modulus, res%period]
+        else if (st%code /= ERR_DECK .and. st%code /= ERR_MODEL) then
+            ! (ERR_DECK, ERR_MODEL: no torsion at this amplitude, CHART_INVALID)
+            values = CHART_FAILED
+        end if
+    end subroutine chart_point
+
     !> Stability chart over the grid of &chart: OUTDIR/NAME.chart.dat with one row per point,
     !! `x y max_modulus period` (CHART_INVALID where no analysis is possible, CHART_FAILED
-    !! where it failed), a blank line after each x (gnuplot grid format).  With `files` the
-    !! file joins the run's others (see run_simulation); without it it is committed at once.
-    subroutine run_chart(d, outdir, nstable, wall_seconds, stat, files, nfailed)
+    !! where it failed), a blank line after each x (gnuplot grid format).  The points are a
+    !! sweep over threads and ranks, checkpointed to OUTDIR/NAME.chart.partial (see module
+    !! sweep_engine; `options`: --resume and the checkpoint interval).  With `files` the file
+    !! joins the run's others (see run_simulation); without it it is committed at once.
+    subroutine run_chart(d, outdir, nstable, wall_seconds, stat, files, nfailed, options, &
+                         report)
         type(deck_t), intent(in) :: d           !! the deck
         character(len=*), intent(in) :: outdir  !! output directory
         integer, intent(out) :: nstable         !! number of stable points
@@ -152,71 +231,30 @@ contains
         type(status_t), intent(out) :: stat
         type(out_files_t), intent(inout), optional, target :: files  !! the run's files
         integer, intent(out), optional :: nfailed   !! number of points whose analysis failed
+        type(sweep_options_t), intent(in), optional :: options  !! resume, checkpoint interval
+        type(sweep_report_t), intent(out), optional :: report   !! ranks, resumed points, ...
         type(out_files_t), target :: own
         type(out_files_t), pointer :: fs
-        type(pendulum_t) :: p0, p
-        type(floquet_result_t) :: res
-        type(status_t) :: st
-        type(progress_t) :: pr
-        real(dp), allocatable :: xs(:), ys(:), mods(:, :), pers(:, :)
-        real(dp) :: amp
-        integer :: i, j, k, u, npts, c0, c1, crate, ios
-        integer :: ivert
-        logical :: valid
+        type(chart_task_t) :: task
+        type(sweep_report_t) :: rep
+        real(dp), allocatable :: vals(:, :), mods(:, :), pers(:, :)
+        integer :: i, j, u, ios
         character(len=:), allocatable :: path
 
         fs => own
         if (present(files)) fs => files
-        call make_pendulum(d, p0, stat)
+        wall_seconds = 0.0_dp
+        nstable = 0
+        if (present(nfailed)) nfailed = 0
+        call chart_task(d, task, stat)
         if (stat%code /= 0) return
-        allocate (xs(d%chart_nx), ys(d%chart_ny), mods(d%chart_nx, d%chart_ny), &
-                  pers(d%chart_nx, d%chart_ny))
-        do i = 1, d%chart_nx
-            xs(i) = d%chart_x_min + (d%chart_x_max - d%chart_x_min)*(i - 1)/(d%chart_nx - 1)
-        end do
-        do j = 1, d%chart_ny
-            ys(j) = d%chart_y_min + (d%chart_y_max - d%chart_y_min)*(j - 1)/(d%chart_ny - 1)
-        end do
-        npts = d%chart_nx*d%chart_ny
-        call pr%start(d%name//': chart', npts)
-        call system_clock(c0, crate)
-        !$omp parallel do schedule(dynamic, 1) default(none) &
-        !$omp shared(d, p0, xs, ys, mods, pers, npts, pr) &
-        !$omp private(k, i, j, p, amp, res, st, valid, ivert)
-        do k = 1, npts
-            i = mod(k - 1, d%chart_nx) + 1
-            j = (k - 1)/d%chart_nx + 1
-            p = p0
-            amp = d%floquet_amplitude
-            call set_chart_variable(d%chart_x, xs(i), p, amp)
-            call set_chart_variable(d%chart_y, ys(j), p, amp)
-            valid = all(p%inertia > 0.0_dp) .and. p%inertia(1) <= p%inertia(2) + p%inertia(3) &
-                    .and. p%inertia(2) <= p%inertia(1) + p%inertia(3) &
-                    .and. p%inertia(3) <= p%inertia(1) + p%inertia(2)
-            mods(i, j) = CHART_INVALID
-            pers(i, j) = CHART_INVALID
-            if (valid) then
-                call check_torsion_scene(p, ivert, st)
-                if (st%code == 0) then
-                    call floquet_analysis(p, amp*deg, d%floquet_rtol, d%floquet_segments, res, st)
-                    if (st%code == 0) then
-                        mods(i, j) = res%max_modulus
-                        pers(i, j) = res%period
-                    else if (st%code /= ERR_DECK .and. st%code /= ERR_MODEL) then
-                        ! (ERR_DECK, ERR_MODEL: no torsion at this amplitude, CHART_INVALID)
-                        mods(i, j) = CHART_FAILED
-                        pers(i, j) = CHART_FAILED
-                    end if
-                end if
-            end if
-            !$omp critical (chart_progress)
-            call pr%tick()
-            !$omp end critical (chart_progress)
-        end do
-        !$omp end parallel do
-        call pr%finish()
-        call system_clock(c1)
-        wall_seconds = real(c1 - c0, dp)/real(crate, dp)
+        call sweep_run(task, 'chart', d%path, checkpoint_path(outdir, d%name, 'chart'), &
+                       d%name//': chart', d%chart_nx*d%chart_ny, 2, vals, stat, options, rep, fs)
+        if (present(report)) report = rep
+        if (stat%code /= 0) return
+        wall_seconds = rep%wall_seconds
+        mods = reshape(vals(1, :), [d%chart_nx, d%chart_ny])
+        pers = reshape(vals(2, :), [d%chart_nx, d%chart_ny])
         nstable = count(mods >= 0.0_dp .and. mods <= 1.0_dp + 1.0e-6_dp)
         if (present(nfailed)) nfailed = count(mods == CHART_FAILED)
 
@@ -234,8 +272,8 @@ contains
         if (ios == 0) write (u, '(a)', iostat=ios) '# x y max_modulus period'
         do i = 1, d%chart_nx
             do j = 1, d%chart_ny
-                if (ios == 0) write (u, '(4es24.15e3)', iostat=ios) xs(i), ys(j), mods(i, j), &
-                    pers(i, j)
+                if (ios == 0) write (u, '(4es24.15e3)', iostat=ios) task%xs(i), task%ys(j), &
+                    mods(i, j), pers(i, j)
             end do
             if (ios == 0) write (u, '(a)', iostat=ios) ''
         end do
