@@ -7,9 +7,10 @@
 #                   installs OpenMPI when run as root, else prints the command and stops
 #   make run        run every deck in input/, write output/, draw plots/*.png
 #   make report     output/report.md (paper's claims against ours)
-#   make bench      integrator, scene, work-precision, elastic-cable and speed benchmarks
+#   make bench      integrator, scene, work-precision, elastic-cable, speed and MPI benchmarks
 #                   (output/bench_*.dat, plots/work_precision_elastic.png; the speed figures
-#                   count instructions with valgrind --tool=callgrind)
+#                   count instructions with valgrind --tool=callgrind; the MPI figures need
+#                   OpenMPI: make mpi)
 #   make memcheck   valgrind (leaks, invalid accesses) on bin/bifilar with a paper deck
 #   make deps       install what a fresh machine lacks (gnuplot)
 #   make clean      remove everything built or written
@@ -151,8 +152,11 @@ $(BIN)/bench_wp: tests/bench_wp.f90 $(LIB_OBJ) | $(BIN)
 $(BIN)/bench_speed: tests/bench_speed.f90 $(LIB_OBJ) | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
 
+$(BIN)/bench_sweep: tests/bench_sweep.f90 $(LIB_OBJ) | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+
 bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench_elastic \
-       $(BIN)/bench_radau $(BIN)/bench_speed $(BIN)/bifilar
+       $(BIN)/bench_radau $(BIN)/bench_speed $(BIN)/bifilar $(BIN)/bench_sweep
 	mkdir -p output build/bench
 	$(BIN)/bench_integrator output/bench_integrator.dat
 	$(BIN)/bench_radau output/bench_radau.dat
@@ -168,6 +172,10 @@ bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench
 	tests/bench/speed.sh $(BIN) output/bench_speed.dat
 	@echo "100 x 100 stability chart (tests/bench/chart_cylinder.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}):"
 	$(BIN)/bifilar tests/bench/chart_cylinder.nml --out build/bench 2>/dev/null
+	@if command -v mpif90 >/dev/null 2>&1; then \
+	  $(MAKE) --no-print-directory MPI=1 $(BIN)/bifilar_mpi $(BIN)/sweep_probe_mpi; fi
+	@echo "MPI: strong scaling of the 60 x 45 chart, the cost of its points, the model of 1000 x 1000:"
+	tests/bench/mpi_scaling.sh $(BIN) output/bench_mpi.dat
 
 memcheck: $(BIN)/bifilar
 	mkdir -p build/memcheck

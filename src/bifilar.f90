@@ -92,13 +92,7 @@ program bifilar
         else if (arg%s == '--resume') then
             sweep_opts%resume = .true.
         else if (arg%s == '--checkpoint' .or. index(arg%s, '--checkpoint=') == 1) then
-            if (arg%s == '--checkpoint') then
-                if (i > nargs) call usage('--checkpoint needs a number of seconds')
-                arg%s = argument(i)
-                i = i + 1
-            else
-                arg%s = arg%s(14:)
-            end if
+            arg%s = option_value('--checkpoint', 'a number of seconds')
             read (arg%s, *, iostat=ios) sweep_opts%checkpoint_seconds
             if (ios /= 0 .or. verify(trim(arg%s), '0123456789.eE+-') /= 0 .or. &
                 len_trim(arg%s) == 0) call usage('--checkpoint needs a number of seconds '// &
@@ -118,13 +112,7 @@ program bifilar
                 end if
             end if
         else if (arg%s == '--out' .or. index(arg%s, '--out=') == 1) then
-            if (arg%s == '--out') then
-                if (i > nargs) call usage('--out needs a folder name')
-                outdir%s = argument(i)
-                i = i + 1
-            else
-                outdir%s = arg%s(7:)
-            end if
+            outdir%s = option_value('--out', 'a folder name')
             if (len(outdir%s) == 0) call usage('--out needs a folder name (got an empty one)')
             out_given = .true.
         else if (arg%s(1:1) == '-' .and. len(arg%s) > 1) then
@@ -177,6 +165,21 @@ contains
         allocate (character(len=n) :: a)
         if (n > 0) call get_command_argument(k, a)
     end function argument
+
+    !> The value of option `name` in arg%s: `name VALUE` (the next argument) or
+    !! `name=VALUE`; a usage error when the value is missing.
+    function option_value(name, what) result(v)
+        character(len=*), intent(in) :: name        !! e.g. '--out'
+        character(len=*), intent(in) :: what        !! what the value is, for the message
+        character(len=:), allocatable :: v
+        if (arg%s == name) then
+            if (i > nargs) call usage(name//' needs '//what)
+            v = argument(i)
+            i = i + 1
+        else
+            v = arg%s(len(name) + 2:)
+        end if
+    end function option_value
 
     !> One line on a unit.
     subroutine say(unit, text)

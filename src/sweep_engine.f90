@@ -87,6 +87,8 @@ module sweep_engine
         integer :: checkpoints = 0                  !! checkpoints written
         character(len=:), allocatable :: note       !! why a checkpoint was not resumed ('')
         real(dp) :: wall_seconds = 0.0_dp           !! elapsed time of the sweep
+        integer :: requests = 0                     !! requests for work rank 0 answered
+        real(dp) :: serve_seconds = 0.0_dp          !! rank 0's time taking messages
     end type sweep_report_t
 
     !> A sweep as the other ranks learn of it (JOB): they build the task from the analysis
@@ -150,6 +152,8 @@ module sweep_engine
         integer(int64) :: last_ckpt = 0             !! clock of the last checkpoint
         integer :: ndone_ckpt = 0                   !! points in the last checkpoint
         integer :: nckpt = 0                        !! checkpoints written
+        integer :: requests = 0                     !! requests answered
+        integer(int64) :: serve_clock = 0           !! clock ticks spent taking messages
         ! the other ranks
         logical :: awaiting = .false.               !! a request is on its way
         logical :: exhausted = .false.              !! rank 0 has nothing left
@@ -336,6 +340,8 @@ contains
 
         rep%threads = sum(e%threads)
         rep%checkpoints = e%nckpt
+        rep%requests = e%requests
+        rep%serve_seconds = real(e%serve_clock, dp)/real(rate, dp)
         call system_clock(c1)
         rep%wall_seconds = real(c1 - c0, dp)/real(rate, dp)
         if (present(report)) report = rep
@@ -380,12 +386,14 @@ contains
         type(engine_t), intent(inout) :: e
         logical, intent(out) :: got
         integer :: src, tag, n, code, i, lm
+        integer(int64) :: c0, c1
         logical :: found
         real(dp), allocatable :: m(:)
         got = .false.
         do
             call par_poll(PAR_ANY, src, tag, n, found)
             if (.not. found) exit
+            if (.not. got) call system_clock(c0)
             got = .true.
             allocate (m(max(n, 1)))
             call par_recv(src, tag, m(1:n))
@@ -424,6 +432,10 @@ contains
             end if
             deallocate (m)
         end do
+        if (got) then
+            call system_clock(c1)
+            e%serve_clock = e%serve_clock + (c1 - c0)
+        end if
     end subroutine master_serve
 
     !> Rank 0: store `count` results (i, values) ... of buf.
@@ -456,6 +468,7 @@ contains
             call par_post(src, TAG_STOP, [real(e%id, dp)])
             return
         end if
+        e%requests = e%requests + 1
         call take_chunk(e, max(1, e%threads(src)), c)
         call par_post(src, TAG_WORK, [real(e%id, dp), real(size(c), dp), real(c, dp)])
     end subroutine answer
@@ -512,27 +525,17 @@ contains
     subroutine sweep_next_job(job, quit)
         type(sweep_job_t), intent(out) :: job       !! the sweep, when quit is false
         logical, intent(out) :: quit                !! the program ends
-        integer :: src, tag, n, nap, la, lp
-        logical :: found
+        integer :: tag, la, lp
         real(dp), allocatable :: m(:)
         quit = .false.
-        nap = NAP_MIN
         do
-            call par_poll(0, src, tag, n, found)
-            if (.not. found) then
-                call nap_for(nap)
-                cycle
-            end if
-            nap = NAP_MIN
-            allocate (m(max(n, 1)))
-            call par_recv(src, tag, m(1:n))
+            call wait_message(tag, m)
             if (tag == TAG_QUIT) then
                 quit = .true.
                 return
             end if
-            if (tag == TAG_JOB .and. n >= 9) exit
-            deallocate (m)                          ! a stray message of an ended sweep
-        end do
+            if (tag == TAG_JOB .and. size(m) >= 9) exit
+        end do                                      ! (a stray message of an ended sweep)
         job%id = nint(m(1))
         job%npoints = nint(m(2))
         job%nvalues = nint(m(3))
@@ -611,25 +614,32 @@ contains
     !! dropping whatever else rank 0 sent meanwhile (a chunk, STOP).
     subroutine worker_leave(e)
         type(engine_t), intent(inout) :: e
-        integer :: src, tag, n, nap
-        logical :: found
+        integer :: tag
         real(dp), allocatable :: m(:)
         call par_post(0, TAG_LEAVE, [real(e%id, dp), real(e%nt, dp), real(e%nout, dp), &
                       e%out(1:e%nout*(1 + e%nv))])
         e%nout = 0
+        do
+            call wait_message(tag, m)
+            if (tag == TAG_BYE) exit
+        end do
+    end subroutine worker_leave
+
+    !> Another rank: wait (napping) for the next message from rank 0 and receive it.
+    subroutine wait_message(tag, m)
+        integer, intent(out) :: tag                 !! its kind
+        real(dp), allocatable, intent(out) :: m(:)  !! its payload
+        integer :: src, n, nap
+        logical :: found
         nap = NAP_MIN
         do
             call par_poll(0, src, tag, n, found)
-            if (.not. found) then
-                call nap_for(nap)
-                cycle
-            end if
-            allocate (m(max(n, 1)))
-            call par_recv(src, tag, m(1:n))
-            if (tag == TAG_BYE) exit
-            deallocate (m)
+            if (found) exit
+            call nap_for(nap)
         end do
-    end subroutine worker_leave
+        allocate (m(n))
+        call par_recv(src, tag, m)
+    end subroutine wait_message
 
     !> Another rank: take the messages from rank 0 (chunks, STOP).
     subroutine worker_listen(e)
@@ -883,6 +893,9 @@ contains
         character(len=:), allocatable, intent(out) :: note
         integer :: u, ios, ndone, i, k, last, p, q
         character(len=64 + 17*e%nv) :: line
+        character(len=64) :: head(6)
+        character(len=10), parameter :: KEYS(6) = [character(len=10) :: 'format', &
+            'analysis', 'points', 'values', 'deck_crc64', 'exe_crc64']
         logical :: exists, ok
         real(dp), allocatable :: vals(:, :)
         logical, allocatable :: done(:)
@@ -901,27 +914,22 @@ contains
         note = 'the checkpoint is damaged'
         parse: block
             if (.not. next_line('#')) exit parse
-            if (.not. keyed('format', itoa(CHECKPOINT_FORMAT))) exit parse
-            if (.not. keyed('analysis', e%analysis)) then
+            ! the header, then what differs, the deck's contents first
+            do k = 1, size(KEYS)
+                if (.not. next_line(trim(KEYS(k))//' ')) exit parse
+                head(k) = line(len_trim(KEYS(k)) + 2:)
+            end do
+            if (head(1) /= itoa(CHECKPOINT_FORMAT)) exit parse
+            if (head(2) /= e%analysis) then
                 note = 'the checkpoint is of another analysis'
-                exit parse
-            end if
-            if (.not. keyed('points', itoa(e%n))) then
-                note = 'the checkpoint is of another deck (its number of points differs)'
-                exit parse
-            end if
-            if (.not. keyed('values', itoa(e%nv))) then
-                note = 'the checkpoint is of another deck (its number of values differs)'
-                exit parse
-            end if
-            if (.not. keyed('deck_crc64', hex16(e%deck_crc))) then
+            else if (head(5) /= hex16(e%deck_crc)) then
                 note = 'the checkpoint is of another deck (its CRC-64 differs)'
-                exit parse
-            end if
-            if (.not. keyed('exe_crc64', hex16(e%exe_crc))) then
+            else if (head(6) /= hex16(e%exe_crc)) then
                 note = 'the checkpoint is of another executable (its CRC-64 differs)'
-                exit parse
+            else if (head(3) /= itoa(e%n) .or. head(4) /= itoa(e%nv)) then
+                note = 'the checkpoint is of another sweep (its number of points differs)'
             end if
+            if (index(note, 'damaged') == 0) exit parse
             if (.not. next_line('done ')) exit parse
             read (line(6:), *, iostat=ios) ndone
             if (ios /= 0 .or. ndone < 0 .or. ndone > e%n) exit parse
@@ -975,13 +983,6 @@ contains
             next_line = ios == 0
             if (next_line .and. len(prefix) > 0) next_line = index(line, prefix) == 1
         end function next_line
-
-        !> The next line is exactly 'key value'.
-        logical function keyed(key, value)
-            character(len=*), intent(in) :: key, value
-            keyed = next_line(key//' ')
-            if (keyed) keyed = trim(line) == key//' '//value
-        end function keyed
 
     end subroutine read_checkpoint
 

@@ -11,9 +11,9 @@ module test_sweep
     use text, only: itoa
     use sweep_engine, only: sweep_run, sweep_options_t, sweep_report_t, crc64
     use probe_task, only: probe_task_t, special_value
-    use test_deck, only: write_text, exists, shell_count
+    use test_deck, only: write_text, exists, shell_count, msg_of
     use test_extreme, only: file_has
-    use test_robust, only: run, lines, line_starts
+    use test_robust, only: run, lines, line_starts, fresh, abs_exe
     !$ use omp_lib, only: omp_get_max_threads, omp_set_num_threads
     implicit none
     private
@@ -26,6 +26,11 @@ module test_sweep
     character(len=*), parameter :: MPIENV = 'env OMPI_ALLOW_RUN_AS_ROOT=1 '// &
         'OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1'
     character(len=*), parameter :: MPIRUN = MPIENV//' OMP_NUM_THREADS=1 mpirun -q --oversubscribe'
+    !> The same for runs that end with an error: mpirun then waits odls_base_sigkill_timeout
+    !! (1 s) and more before it ends; 0 saves that (not for a killed rank: rank 0 needs the
+    !! time between SIGTERM and SIGKILL to say what happened).
+    character(len=*), parameter :: MPIFAIL = MPIENV//' OMPI_MCA_odls_base_sigkill_timeout=0 '// &
+        'OMP_NUM_THREADS=1 mpirun -q --oversubscribe'
     !> The parallelepiped of input/box_chart.nml (stable and unstable points, cheap ones and
     !! dear ones); the chart's grid is added per test.
     character(len=*), parameter :: BOX = &
@@ -34,7 +39,7 @@ module test_sweep
         '&body mass = 1.0, inertia = 0.08854166666666667, 1.416666666666667, '// &
         '1.338541666666667,'//NL// &
         '      r = 2.06155281280883, lambda = 1.325817663668033, sway_depth = 4 /'//NL// &
-        '&floquet amplitude = 45.0, segments = 1, rtol = 1e-8 /'//NL
+        '&floquet amplitude = 45.0, segments = 1, rtol = 1e-6 /'//NL
 
 contains
 
@@ -121,7 +126,7 @@ contains
         task%at = 137
         call sweep_run(task, 'probe', fp, ck, '', task%n, 4, v, st, opt)
         call t%check('failure: the point''s status', st%code == ERR_NUMERIC)
-        call t%check('failure: the point''s message', index(msg(st), 'probe point 137 failed') > 0)
+        call t%check('failure: the point''s message', index(msg_of(st), 'probe point 137 failed') > 0)
         call t%check('failure: no values', .not. allocated(v))
         call t%check('failure: the checkpoint is removed', .not. exists(ck))
     end subroutine test_failure
@@ -228,7 +233,7 @@ contains
         character(len=*), intent(in) :: exe
         character(len=:), allocatable :: d, deck, ck, ref, dat
         integer :: ex, nres
-        d = fresh('kill')
+        d = fresh('sweep_kill')
         deck = d//'/kchart.nml'
         call write_text(deck, BOX//"&chart x = 'l', x_min = 0.5, x_max = 8.0, nx = 24, "// &
                         "y = 'amplitude', y_min = 2.0, y_max = 90.0, ny = 16 /"//NL)
@@ -263,23 +268,19 @@ contains
         call t%check('term: only the checkpoint is left', all([exists(ck), &
                      shell_count('ls -A '//d//'/out | wc -l', d) == 1]))
 
-        ! the checkpoint of kchart.nml, for a kchart.nml with other contents (the title):
-        ! the kept checkpoint's first point made 100 in the file, so its use would show
-        call execute_command_line('mkdir -p '//d//'/other && cp '//d//'/kept.partial '//d// &
-            '/other/kchart.chart.partial && sed -i "/^done/{n;s/ [0-9A-F]\{16\}/ '// &
-            '4059000000000000/}" '//d//'/other/kchart.chart.partial')
-        call write_text(d//'/kchart.nml', BOX//"&chart x = 'l', x_min = 0.5, x_max = 8.0, "// &
-                        "nx = 24, y = 'amplitude', y_min = 2.0, y_max = 90.0, ny = 16 /"//NL// &
-                        '! another deck of the same name'//NL)
-        ex = run(exe//' '//deck//' --out '//d//'/other --resume', d)
+        ! another deck named kchart.nml (a smaller grid) with the kept checkpoint: not used
+        call execute_command_line('mkdir -p '//d//'/o '//d//'/other && cp '//d// &
+                                  '/kept.partial '//d//'/other/kchart.chart.partial')
+        call write_text(d//'/o/kchart.nml', BOX//"&chart x = 'l', x_min = 0.5, x_max = 8.0, "// &
+                        "nx = 6, y = 'amplitude', y_min = 2.0, y_max = 90.0, ny = 4 /"//NL)
+        ex = run(exe//' '//d//'/o/kchart.nml --out '//d//'/o', d)
+        ex = run(exe//' '//d//'/o/kchart.nml --out '//d//'/other --resume', d)
         call t%check('stale: another deck''s checkpoint is not used (exit 0, no point '// &
                      'resumed, says why)', all([ex == 0, resumed(d//'/stdout') == 0, &
                      file_has(d//'/stdout', 'another deck (its CRC-64 differs): computed afresh')]))
-        call t%check('stale: its rows are the uninterrupted ones', same_rows(d// &
-                     '/other/kchart.chart.dat', ref))
-        ! and the same tampered checkpoint with its own deck is used (the 100 shows)
-        call write_text(d//'/kchart.nml', BOX//"&chart x = 'l', x_min = 0.5, x_max = 8.0, "// &
-                        "nx = 24, y = 'amplitude', y_min = 2.0, y_max = 90.0, ny = 16 /"//NL)
+        call t%check('stale: the file is that of a fresh run', same_file(d// &
+                     '/other/kchart.chart.dat', d//'/o/kchart.chart.dat'))
+        ! the kept checkpoint of kchart.nml with its first value made 100: used (100 shows)
         call execute_command_line('cp '//d//'/kept.partial '//d//'/other/kchart.chart.partial'// &
             ' && sed -i "/^done/{n;s/ [0-9A-F]\{16\}/ 4059000000000000/}" '//d// &
             '/other/kchart.chart.partial')
@@ -308,8 +309,8 @@ contains
         call t%check('mpi: '//mexe//' and '//probe//' are built (make test builds them '// &
                      'where mpif90 is)', all([exists(mexe), exists(probe)]))
         if (.not. all([exists(mexe), exists(probe)])) return
-        d = fresh('mpi')
-        mexe = abs_path(mexe)
+        d = fresh('sweep_mpi')
+        mexe = abs_exe(mexe)
 
         ex = run(MPIRUN//' -np 2 '//mexe//' --version', d)
         call t%check('mpi: --version names the MPI library', all([ex == 0, &
@@ -376,7 +377,7 @@ contains
         ! the probe: dynamic sharing with threads in the ranks; failing points end the run
         call write_text(d//'/probe.fp', 'probe')
         ex = run(MPIENV//' OMP_NUM_THREADS=2 mpirun -q --oversubscribe --bind-to none -np 3 '// &
-                 abs_path(probe)// &
+                 abs_exe(probe)// &
                  ' ok 300 '//d//'/probe.fp', d)
         line = first_line(d//'/stdout')
         read (line(4:), *, iostat=k) n0, nbad, n0, n1
@@ -386,7 +387,7 @@ contains
                      k == 0 .and. n0 > 0 .and. n1 > 0)
         do k = 1, 2
             buf = merge('fail_worker', 'fail_rank0 ', k == 1)
-            ex = run('timeout 120 '//MPIRUN//' -np 3 '//abs_path(probe)//' '//trim(buf)// &
+            ex = run('timeout 120 '//MPIFAIL//' -np 3 '//abs_exe(probe)//' '//trim(buf)// &
                      ' 200 '//d//'/probe.fp '//d//'/probe.partial', d)
             line = first_line(d//'/stdout')
             call t%check('mpi probe '//trim(buf)//': the run ends with the point''s error '// &
@@ -402,34 +403,14 @@ contains
         !> rank 0 in w0, ranks 1 and 2 in w1, the deck small.nml as each sees it.
         function mpmd() result(c)
             character(len=:), allocatable :: c
-            c = MPIRUN//' -np 1 -wdir '//abs_path(d//'/w0')//' '//mexe//' small.nml --out out'// &
-                ' : -np 2 -wdir '//abs_path(d//'/w1')//' '//mexe//' small.nml'
+            c = MPIFAIL//' -np 1 -wdir '//abs_exe(d//'/w0')//' '//mexe//' small.nml --out out'// &
+                ' : -np 2 -wdir '//abs_exe(d//'/w1')//' '//mexe//' small.nml'
         end function mpmd
 
     end subroutine test_mpi
 
     ! ---------------------------------------------------------------------------------------
     ! helpers
-
-    !> An empty scratch folder SCR/name.
-    function fresh(name) result(d)
-        character(len=*), intent(in) :: name
-        character(len=:), allocatable :: d
-        d = SCR//'/'//name
-        call execute_command_line('rm -rf '//d//' && mkdir -p '//d)
-    end function fresh
-
-    !> A path made absolute (from $PWD).
-    function abs_path(p) result(a)
-        character(len=*), intent(in) :: p
-        character(len=:), allocatable :: a
-        character(len=4096) :: cwd
-        integer :: st
-        a = p
-        if (p(1:1) == '/') return
-        call get_environment_variable('PWD', cwd, status=st)
-        if (st == 0) a = trim(cwd)//'/'//p
-    end function abs_path
 
     !> Two files are the same, byte for byte.
     logical function same_file(a, b)
@@ -479,12 +460,5 @@ contains
         if (ios == 0) s = trim(buf)
         close (u)
     end function first_line
-
-    function msg(st) result(m)
-        type(status_t), intent(in) :: st
-        character(len=:), allocatable :: m
-        m = ''
-        if (allocated(st%msg)) m = st%msg
-    end function msg
 
 end module test_sweep
