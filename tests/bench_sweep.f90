@@ -17,12 +17,18 @@
 !! about 2 P log2(N / (128 P)) + 2 P smaller ones at the end), t_req rank 0's time per
 !! request (measured by the script with sweep_probe_mpi; argument T_REQ_US, default 20),
 !! start the start of the ranks (START_S, default 0.3 s: mpirun -np 2 here).
+!!
+!! Last, the cost of checkpoints at their most frequent: a sweep of a million points that
+!! cost nothing (module probe_task) without checkpoints and with `--checkpoint 0` (as often
+!! as the engine's 5 % rule lets it write), and the size of the last checkpoint.
 program bench_sweep
     use, intrinsic :: iso_fortran_env, only: int64
     use kinds, only: dp
     use status, only: status_t
     use deck, only: deck_t, read_deck
     use stability, only: chart_task, chart_task_t
+    use sweep_engine, only: sweep_run, sweep_options_t, sweep_report_t
+    use probe_task, only: probe_task_t
     implicit none
     type(deck_t) :: d
     type(chart_task_t) :: task
@@ -33,6 +39,11 @@ program bench_sweep
     integer(int64) :: c0, c1, rate
     integer :: k, n, u, ix, iy
     integer, parameter :: NP(3) = [2, 64, 1024]
+    type(probe_task_t) :: probe
+    type(sweep_options_t) :: opt
+    type(sweep_report_t) :: rep0, rep1
+    real(dp), allocatable :: pv(:, :)
+    integer(int64) :: bytes
 
     call get_command_argument(1, deck_path)
     call get_command_argument(2, out)
@@ -83,8 +94,8 @@ program bench_sweep
         'take ', 100*sum(sorted(n - n/100 + 1:n))/sum(cost), ' % of it'
     write (*, '(a,f7.1,a,f5.2,a)') 'model: T(P) = start + N c/P_c + c_max + N_req t_req/P_c '// &
         '(t_req ', 1e6_dp*t_req, ' us, start ', start, ' s)'
-    write (*, '(a)') '  this chart: P = 1: '//secs(model(n, 1, 0.0_dp))//', P = 2: '// &
-        secs(model(n, 2, start))
+    write (*, '(a)') '  this chart (the sweep alone, start not counted): P = 1: '// &
+        secs(model(n, 1, 0.0_dp))//', P = 2: '//secs(model(n, 2, 0.0_dp))
     write (*, '(a)') '  1000 x 1000 chart (the same region, 1e6 points), one thread per rank:'
     write (*, '(a)') '     cores  compute s     tail s   master s    start s    total'
     do k = 1, size(NP)
@@ -92,6 +103,18 @@ program bench_sweep
             requests(1000000, NP(k))*t_req/computing(NP(k)), start, &
             secs(model(1000000, NP(k), start))
     end do
+
+    ! checkpoints at their most frequent: a million points of no cost
+    probe%n = 1000000
+    probe%nap = 0
+    call sweep_run(probe, 'probe', trim(deck_path), '', '', probe%n, 4, pv, st, report=rep0)
+    opt%checkpoint_seconds = 0.0_dp
+    call sweep_run(probe, 'probe', trim(deck_path), 'build/bench/bench_sweep.probe.partial', &
+                   '', probe%n, 4, pv, st, opt, rep1)
+    inquire (file='build/bench/bench_sweep.probe.partial', size=bytes)
+    write (*, '(a,f6.3,a,f6.3,a,i0,a,f5.1,a)') 'checkpoints: a million points of no cost, ', &
+        rep0%wall_seconds, ' s without, ', rep1%wall_seconds, ' s with --checkpoint 0 (', &
+        rep1%checkpoints, ' written, the last ', real(bytes, dp)/1.0e6_dp, ' MB)'
 
 contains
 

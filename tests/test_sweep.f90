@@ -126,7 +126,8 @@ contains
         task%at = 137
         call sweep_run(task, 'probe', fp, ck, '', task%n, 4, v, st, opt)
         call t%check('failure: the point''s status', st%code == ERR_NUMERIC)
-        call t%check('failure: the point''s message', index(msg_of(st), 'probe point 137 failed') > 0)
+        call t%check('failure: the point''s message', &
+                     index(msg_of(st), 'probe point 137 failed') > 0)
         call t%check('failure: no values', .not. allocated(v))
         call t%check('failure: the checkpoint is removed', .not. exists(ck))
     end subroutine test_failure
