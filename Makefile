@@ -40,14 +40,14 @@ endif
 FFLAGS += -fopenmp -std=f2008 -Wall -Wextra -Wno-compare-reals -fimplicit-none
 
 # Library modules (one object each, named as the module) and test modules.
-LIB_MODULES = kinds status text progress random lapack_wrap ode_system lsoda radau stepper \
+LIB_MODULES = kinds status text progress sweep random lapack_wrap ode_system lsoda radau stepper \
               geometry kinematics gen_forces bifilar_model elastic_model elastic_gen \
               elastic_solver deck output_io fast_format simulate floquet paper_claims \
-              stability work_precision period_inversion driver
+              stability work_precision period_inversion design driver
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
 TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme \
                test_work_precision test_elastic test_elastic_jac test_fast_format test_columns \
-               test_radau test_elastic_radau test_robust test_period
+               test_radau test_elastic_radau test_robust test_period test_design
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
 
 .PHONY: all test check run report bench deps clean memcheck
@@ -152,4 +152,5 @@ deps:
 	  fi; }
 
 clean:
-	rm -rf build build-check bin output/*.dat output/*.summary output/*.md output/*.tmp.* plots/*.png
+	rm -rf build build-check bin output/*.dat output/*.summary output/*.md output/*.design \
+	  output/*.tmp.* plots/*.png
