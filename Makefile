@@ -5,7 +5,7 @@
 #   make check      run all tests in the checking build (-fcheck=all, FP traps)
 #   make run        run every deck in input/, write output/, draw plots/*.png
 #   make report     output/report.md (paper's claims against ours)
-#   make bench      integrator, scene, work-precision, elastic-cable and speed benchmarks
+#   make bench      integrator, scene, work-precision, elastic-cable, speed and design benchmarks
 #                   (output/bench_*.dat, plots/work_precision_elastic.png; the speed figures
 #                   count instructions with valgrind --tool=callgrind)
 #   make memcheck   valgrind (leaks, invalid accesses) on bin/bifilar with a paper deck
@@ -121,6 +121,8 @@ bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench
 	tests/bench/speed.sh $(BIN) output/bench_speed.dat
 	@echo "100 x 100 stability chart (tests/bench/chart_cylinder.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}):"
 	$(BIN)/bifilar tests/bench/chart_cylinder.nml --out build/bench 2>/dev/null
+	@echo "60 x 6 rig design (input/box_design.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}; issue 14: under 20 s on 2 cores):"
+	$(BIN)/bifilar input/box_design.nml --out build/bench 2>/dev/null
 
 memcheck: $(BIN)/bifilar
 	mkdir -p build/memcheck

@@ -18,6 +18,7 @@ module test_design
     use period_inversion, only: input_u_t
     use test_deck, only: write_text, exists, shell_count
     use test_extreme, only: file_has, no_nan
+    use test_robust, only: run, lines
     use text, only: itoa, sci
     implicit none
     private
@@ -376,30 +377,5 @@ contains
                      file_has(d//'/t2/lb.design', 'recommended_b = 2.2')]))
         call t%check('threads: no NaN, Inf or ****', no_nan(d//'/t2'))
     end subroutine test_threads
-
-    ! helpers
-
-    !> Run a shell command with stdout to d/stdout and stderr to d/stderr; its exit status.
-    integer function run(cmd, d) result(ex)
-        character(len=*), intent(in) :: cmd, d
-        ex = -1
-        call execute_command_line('('//cmd//') > '//d//'/stdout 2> '//d//'/stderr', exitstat=ex)
-    end function run
-
-    !> Number of lines of a text file (0 when absent).
-    integer function lines(path) result(n)
-        character(len=*), intent(in) :: path
-        integer :: u, ios
-        character(len=1) :: c
-        n = 0
-        open (newunit=u, file=path, status='old', action='read', iostat=ios)
-        if (ios /= 0) return
-        do
-            read (u, '(a)', iostat=ios) c
-            if (ios /= 0) exit
-            n = n + 1
-        end do
-        close (u)
-    end function lines
 
 end module test_design
