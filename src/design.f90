@@ -187,8 +187,9 @@ contains
         integer :: ivert, i, m
         type(status_t) :: st
         call design_grid(d, ls, bs, amps)
-        call make_pendulum(candidate_deck(d, ls(size(ls)), bs(size(bs))), p, stat)
-        if (stat%code == STATUS_OK) call check_torsion_scene(p, ivert, stat)
+        ! (whether the cables reach is each candidate's own matter: -1 in the table)
+        call make_pendulum(candidate_deck(d, ls(size(ls)), bs(size(bs))), p, st)
+        call check_torsion_scene(p, ivert, stat)
         if (stat%code == STATUS_OK .and. ivert /= 1) call set_error(stat, ERR_DECK, &
             '&body btilde: b1 is not vertical at rest (row 1 must be (+-1, 0, 0)): the '// &
             'period of torsion does not measure I1')
@@ -423,6 +424,7 @@ contains
 
     contains
 
+        !> The progress label of one stage.
         function plabel(what) result(s)
             character(len=*), intent(in) :: what
             character(len=:), allocatable :: s
@@ -728,7 +730,8 @@ contains
         end do
         call put('')
         call put('')
-        call put('# unstable bands of each amplitude: b amplitude l_from l_to')
+        call put('# unstable bands of each amplitude (or where pure torsion is not possible): '// &
+            'b amplitude l_from l_to')
         do k = 1, size(res%unstable)
             if (ios == 0) write (u, '(4es24.15e3)', iostat=ios) res%bs(res%unstable(k)%ib), &
                 res%amps(res%unstable(k)%ia), res%unstable(k)%l_from, res%unstable(k)%l_to
@@ -740,11 +743,13 @@ contains
 
     contains
 
+        !> One line of text, unless a write failed already.
         subroutine put(text)
             character(len=*), intent(in) :: text
             if (ios == 0) write (u, '(a)', iostat=ios) text
         end subroutine put
 
+        !> The names of the per-amplitude columns: ' modulus_at_8.333333 ...'.
         function amp_names() result(s)
             character(len=:), allocatable :: s
             integer :: j

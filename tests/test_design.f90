@@ -276,7 +276,8 @@ contains
     end subroutine test_classical
 
     !> Ranges with no qualifying candidate: unstable everywhere (short cables, up to 50
-    !! degrees), and stable everywhere but too narrow for the margin (the range's ends count).
+    !! degrees), and stable everywhere but too narrow for the margin (the range's ends count);
+    !! and a range whose shortest cables cannot reach the raised position (-1, still a run).
     subroutine test_none(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
@@ -305,6 +306,16 @@ contains
                      file_has(d//'/stderr', 'none lies 5%'), &
                      file_has(d//'/stderr', 'try l_min = ')]))
         call t%check('none: ... no file written', shell_count('ls -A '//d//'/out | wc -l', d) == 0)
+        ! cables too short to reach the raised position of 50 degrees (l < 0.0845 m): -1
+        call write_text(d//'/reach.nml', BOX//'&design l_min = 0.05, l_max = 1.2, nl = 5, '// &
+                        'amplitude_max = 50, n_amplitudes = 2 /'//NL)
+        ex = run(exe//' '//d//'/reach.nml --out '//d//'/out', d)
+        call t%check('none: candidates whose cables cannot reach: exit 0 all the same', ex == 0)
+        call t%check('none: ... their row is -1 (l = 0.05: stable 0, max_modulus -1, the '// &
+                     'modulus at 50 deg -1)', shell_count('awk ''/^# l b stable/{on=1; next} '// &
+                     'on && NF && $1 < 0.06 && $3 == 0 && $4 == -1 && $NF == -1'' '//d// &
+                     '/out/reach.design | wc -l', d) == 1)
+        call t%check('none: ... no NaN, Inf or ****', no_nan(d//'/out'))
     end subroutine test_none
 
     !> Bad &design values: exit 2, one stderr line naming the deck and the variable, no file.
@@ -318,6 +329,8 @@ contains
             'u_mass = -0.001|u_mass', 'u_l = -1e-3|u_l', 'u_b = -1e-4|u_b', &
             'u_period = -1e-4|u_period', 'l_min = NaN|l_min', &
             'nb = 2, b_min = 0, b_max = 0|b_min', 'u_period = 100|u_period']
+        character(len=*), parameter :: LAMBDA = 'lambda = 1.325817663668033'
+        integer :: il
         character(len=:), allocatable :: d, c, var, nm, decks
         integer :: k, ex, bar
         logical :: ok
@@ -331,10 +344,18 @@ contains
             call write_text(nm, BOX//'&design nl = 3, n_amplitudes = 1, '//c(1:bar - 1)//' /'//NL)
             decks = decks//' '//nm
         end do
+        ! a body whose mass centre is off the bisector of AB: no pure torsion
+        il = index(BOX, LAMBDA)
+        call write_text(d//'/off.nml', BOX(1:il - 1)//'lambda = 1.2'//BOX(il + len(LAMBDA):)// &
+                        '&design nl = 3 /'//NL)
+        decks = decks//' '//d//'/off.nml'
         ex = run(exe//decks//' --out '//d//'/out', d)
-        call t%check('bad: '//itoa(size(CASES))//' decks, exit 2', ex == 2)
+        call t%check('bad: '//itoa(size(CASES) + 1)//' decks, exit 2', ex == 2)
         call t%check('bad: one stderr line per deck, nothing on stdout', &
-                     all([lines(d//'/stderr') == size(CASES), lines(d//'/stdout') == 0]))
+                     all([lines(d//'/stderr') == size(CASES) + 1, lines(d//'/stdout') == 0]))
+        call t%check('bad: a body without pure torsion is refused before computing', &
+                     file_has(d//'/stderr', d//'/off.nml: analyses = ''design'' needs a body '// &
+                     'for which pure torsion on equal cables is an exact motion'))
         do k = 1, size(CASES)
             c = trim(CASES(k))
             bar = index(c, '|')
