@@ -3,8 +3,10 @@
 !!
 !! Writes OUTDIR/NAME.floquet (key = value lines and the multiplier table) and
 !! OUTDIR/NAME.chart.dat (x, y, max_modulus, period), each through a temporary file.
-!! The chart runs its points in parallel with OpenMP (OMP_NUM_THREADS is honoured) and
-!! shows one line of progress on standard error when that is a terminal (module progress).
+!! The chart's points are a sweep of module sweep (one point from its index: chart_point),
+!! run in parallel with OpenMP (OMP_NUM_THREADS is honoured) with one line of progress on
+!! standard error when that is a terminal; floquet_point is the point shared with the rig
+!! design (module design).
 module stability
     use kinds, only: dp, deg
     use status, only: status_t, set_error, ERR_NUMERIC, ERR_DECK, ERR_MODEL
