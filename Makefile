@@ -5,7 +5,7 @@
 #   make check      run all tests in the checking build (-fcheck=all, FP traps)
 #   make run        run every deck in input/, write output/, draw plots/*.png
 #   make report     output/report.md (paper's claims against ours)
-#   make bench      integrator, scene, work-precision, elastic-cable and speed benchmarks
+#   make bench      integrator, scene, work-precision, elastic-cable, speed and design benchmarks
 #                   (output/bench_*.dat, plots/work_precision_elastic.png; the speed figures
 #                   count instructions with valgrind --tool=callgrind)
 #   make memcheck   valgrind (leaks, invalid accesses) on bin/bifilar with a paper deck
@@ -40,14 +40,14 @@ endif
 FFLAGS += -fopenmp -std=f2008 -Wall -Wextra -Wno-compare-reals -fimplicit-none
 
 # Library modules (one object each, named as the module) and test modules.
-LIB_MODULES = kinds status text progress random lapack_wrap ode_system lsoda radau stepper \
+LIB_MODULES = kinds status text progress sweep random lapack_wrap ode_system lsoda radau stepper \
               geometry kinematics gen_forces bifilar_model elastic_model elastic_gen \
               elastic_solver deck output_io fast_format simulate floquet paper_claims \
-              stability work_precision period_inversion driver
+              stability work_precision period_inversion design driver
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
 TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme \
                test_work_precision test_elastic test_elastic_jac test_fast_format test_columns \
-               test_radau test_elastic_radau test_robust test_period
+               test_radau test_elastic_radau test_robust test_period test_design
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
 
 .PHONY: all test check run report bench deps clean memcheck
@@ -121,6 +121,8 @@ bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench
 	tests/bench/speed.sh $(BIN) output/bench_speed.dat
 	@echo "100 x 100 stability chart (tests/bench/chart_cylinder.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}):"
 	$(BIN)/bifilar tests/bench/chart_cylinder.nml --out build/bench 2>/dev/null
+	@echo "60 x 6 rig design (input/box_design.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}; issue 14: under 20 s on 2 cores):"
+	$(BIN)/bifilar input/box_design.nml --out build/bench 2>/dev/null
 
 memcheck: $(BIN)/bifilar
 	mkdir -p build/memcheck
@@ -152,4 +154,5 @@ deps:
 	  fi; }
 
 clean:
-	rm -rf build build-check bin output/*.dat output/*.summary output/*.md output/*.tmp.* plots/*.png
+	rm -rf build build-check bin output/*.dat output/*.summary output/*.md output/*.design \
+	  output/*.tmp.* plots/*.png

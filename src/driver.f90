@@ -13,6 +13,7 @@ module driver
     use stability, only: run_floquet, run_chart, floquet_ready
     use floquet, only: floquet_result_t
     use work_precision, only: run_work_precision, wp_result_t
+    use design, only: run_design, design_ready, design_result_t
     use geometry, only: pendulum_t
     implicit none
     private
@@ -42,6 +43,7 @@ contains
         type(run_summary_t) :: sm
         type(floquet_result_t) :: fr
         type(wp_result_t) :: wp
+        type(design_result_t) :: dr
         integer :: nstable, nfailed
         real(dp) :: secs
         character(len=64) :: buf
@@ -57,6 +59,8 @@ contains
             call floquet_ready(d, stat)
         if (stat%code == STATUS_OK .and. analysis_requested(d, 'chart')) &
             call chart_ready(d, stat)
+        if (stat%code == STATUS_OK .and. analysis_requested(d, 'design')) &
+            call design_ready(d, stat)
         if (stat%code /= STATUS_OK) return
 
         line = d%name//':'
@@ -83,6 +87,17 @@ contains
                 line = line//' chart '//itoa(d%chart_nx*d%chart_ny)//' points, '//itoa(nstable)// &
                     ' stable, '//lead0(buf)//' s'
                 if (nfailed > 0) line = line//', '//itoa(nfailed)//' failed (-2 in the file)'
+                line = line//';'
+            end if
+            if (analysis_requested(d, 'design')) then
+                call run_design(d, outdir, dr, stat, files=files)
+                if (stat%code /= STATUS_OK) exit run
+                write (buf, '(f0.2)') dr%wall_seconds
+                line = line//' design '//itoa(size(dr%ls)*size(dr%bs))//' candidates x '// &
+                    itoa(size(dr%amps))//' amplitudes, '//itoa(dr%n_stable)//' stable, '// &
+                    'recommended l = '//sci(dr%ls(dr%il), 4)//', b = '//sci(dr%bs(dr%ib), 4)// &
+                    ', u(I1)/I1 = '//sci(dr%u_rel(dr%il, dr%ib), 2)//', '//lead0(buf)//' s'
+                if (dr%n_failed > 0) line = line//', '//itoa(dr%n_failed)//' failed points'
                 line = line//';'
             end if
             if (analysis_requested(d, 'simulate')) then

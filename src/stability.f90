@@ -3,8 +3,10 @@
 !!
 !! Writes OUTDIR/NAME.floquet (key = value lines and the multiplier table) and
 !! OUTDIR/NAME.chart.dat (x, y, max_modulus, period), each through a temporary file.
-!! The chart runs its points in parallel with OpenMP (OMP_NUM_THREADS is honoured) and
-!! shows one line of progress on standard error when that is a terminal (module progress).
+!! The chart's points are a sweep of module sweep (one point from its index: chart_point),
+!! run in parallel with OpenMP (OMP_NUM_THREADS is honoured) with one line of progress on
+!! standard error when that is a terminal; floquet_point is the point shared with the rig
+!! design (module design).
 module stability
     use kinds, only: dp, deg
     use status, only: status_t, set_error, ERR_NUMERIC, ERR_DECK, ERR_MODEL
@@ -15,12 +17,12 @@ module stability
                        FLOQUET_MAX_STEPS
     use lsoda, only: LSODA_ERR_MAX_STEPS
     use output_io, only: out_files_t, write_kv
-    use progress, only: progress_t
+    use sweep, only: sweep_work_t, run_sweep
     use text, only: itoa
     implicit none
     private
 
-    public :: run_floquet, run_chart, set_chart_variable, floquet_ready
+    public :: run_floquet, run_chart, set_chart_variable, floquet_ready, floquet_point
 
     !> Sentinel written for chart points where no analysis is possible (not a torsion scene,
     !! cables cannot reach, impossible inertia): never NaN.
@@ -28,6 +30,19 @@ module stability
     !> Sentinel written for chart points whose analysis failed (e.g. more than
     !! FLOQUET_MAX_STEPS steps): never NaN.
     real(dp), parameter, public :: CHART_FAILED = -2.0_dp
+
+    !> The points of a chart (module sweep): point k = (i, j), x index i fastest; its values
+    !! are max_modulus and period.
+    type, extends(sweep_work_t) :: chart_work_t
+        type(pendulum_t) :: p0                  !! the deck's scene (scaled)
+        character(len=16) :: x = '', y = ''     !! the swept variables
+        real(dp), allocatable :: xs(:), ys(:)   !! their grids (chart units)
+        real(dp) :: amplitude = 0.0_dp          !! &floquet amplitude (degrees)
+        real(dp) :: rtol = 0.0_dp               !! &floquet rtol
+        integer :: segments = 1                 !! &floquet segments
+    contains
+        procedure :: point => chart_point
+    end type chart_work_t
 
 contains
 
@@ -140,6 +155,58 @@ contains
         end select
     end subroutine set_chart_variable
 
+    !> Chart point k: vals = [max_modulus, period] (sentinels, see floquet_point).
+    subroutine chart_point(work, k, vals)
+        class(chart_work_t), intent(in) :: work
+        integer, intent(in) :: k                !! 1 .. nx*ny, x index fastest
+        real(dp), intent(out) :: vals(:)        !! max_modulus, period
+        type(pendulum_t) :: p
+        real(dp) :: amp
+        integer :: i, j
+        i = mod(k - 1, size(work%xs)) + 1
+        j = (k - 1)/size(work%xs) + 1
+        p = work%p0
+        amp = work%amplitude
+        call set_chart_variable(work%x, work%xs(i), p, amp)
+        call set_chart_variable(work%y, work%ys(j), p, amp)
+        call floquet_point(p, amp, work%rtol, work%segments, vals(1), vals(2))
+    end subroutine chart_point
+
+    !> One point of a stability sweep (chart, design): the largest multiplier and the period
+    !! of pure torsion of p at amp_deg, or a sentinel in both: CHART_INVALID where no
+    !! analysis is possible (impossible inertia, not a torsion scene, the cables cannot reach
+    !! the raised position), CHART_FAILED where the analysis failed (e.g. more than
+    !! FLOQUET_MAX_STEPS steps).  Never stops, never NaN.
+    subroutine floquet_point(p, amp_deg, rtol, nseg, modulus, period)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters
+        real(dp), intent(in) :: amp_deg         !! torsion amplitude (degrees)
+        real(dp), intent(in) :: rtol            !! integrator tolerance
+        integer, intent(in) :: nseg             !! shooting segments
+        real(dp), intent(out) :: modulus        !! largest |multiplier| (or a sentinel)
+        real(dp), intent(out) :: period         !! t* in units of tau (or a sentinel)
+        type(floquet_result_t) :: res
+        type(status_t) :: st
+        integer :: ivert
+        logical :: valid
+        modulus = CHART_INVALID
+        period = CHART_INVALID
+        valid = all(p%inertia > 0.0_dp) .and. p%inertia(1) <= p%inertia(2) + p%inertia(3) &
+                .and. p%inertia(2) <= p%inertia(1) + p%inertia(3) &
+                .and. p%inertia(3) <= p%inertia(1) + p%inertia(2)
+        if (.not. valid) return
+        call check_torsion_scene(p, ivert, st)
+        if (st%code /= 0) return
+        call floquet_analysis(p, amp_deg*deg, rtol, nseg, res, st)
+        if (st%code == 0) then
+            modulus = res%max_modulus
+            period = res%period
+        else if (st%code /= ERR_DECK .and. st%code /= ERR_MODEL) then
+            ! (ERR_DECK, ERR_MODEL: no torsion at this amplitude, CHART_INVALID)
+            modulus = CHART_FAILED
+            period = CHART_FAILED
+        end if
+    end subroutine floquet_point
+
     !> Stability chart over the grid of &chart: OUTDIR/NAME.chart.dat with one row per point,
     !! `x y max_modulus period` (CHART_INVALID where no analysis is possible, CHART_FAILED
     !! where it failed), a blank line after each x (gnuplot grid format).  With `files` the
@@ -154,69 +221,30 @@ contains
         integer, intent(out), optional :: nfailed   !! number of points whose analysis failed
         type(out_files_t), target :: own
         type(out_files_t), pointer :: fs
-        type(pendulum_t) :: p0, p
-        type(floquet_result_t) :: res
-        type(status_t) :: st
-        type(progress_t) :: pr
-        real(dp), allocatable :: xs(:), ys(:), mods(:, :), pers(:, :)
-        real(dp) :: amp
-        integer :: i, j, k, u, npts, c0, c1, crate, ios
-        integer :: ivert
-        logical :: valid
+        type(chart_work_t) :: w
+        real(dp), allocatable :: vals(:, :), mods(:, :), pers(:, :)
+        integer :: i, j, u, ios
         character(len=:), allocatable :: path
 
         fs => own
         if (present(files)) fs => files
-        call make_pendulum(d, p0, stat)
+        call make_pendulum(d, w%p0, stat)
         if (stat%code /= 0) return
-        allocate (xs(d%chart_nx), ys(d%chart_ny), mods(d%chart_nx, d%chart_ny), &
-                  pers(d%chart_nx, d%chart_ny))
+        w%x = d%chart_x
+        w%y = d%chart_y
+        w%amplitude = d%floquet_amplitude
+        w%rtol = d%floquet_rtol
+        w%segments = d%floquet_segments
+        allocate (w%xs(d%chart_nx), w%ys(d%chart_ny), vals(2, d%chart_nx*d%chart_ny))
         do i = 1, d%chart_nx
-            xs(i) = d%chart_x_min + (d%chart_x_max - d%chart_x_min)*(i - 1)/(d%chart_nx - 1)
+            w%xs(i) = d%chart_x_min + (d%chart_x_max - d%chart_x_min)*(i - 1)/(d%chart_nx - 1)
         end do
         do j = 1, d%chart_ny
-            ys(j) = d%chart_y_min + (d%chart_y_max - d%chart_y_min)*(j - 1)/(d%chart_ny - 1)
+            w%ys(j) = d%chart_y_min + (d%chart_y_max - d%chart_y_min)*(j - 1)/(d%chart_ny - 1)
         end do
-        npts = d%chart_nx*d%chart_ny
-        call pr%start(d%name//': chart', npts)
-        call system_clock(c0, crate)
-        !$omp parallel do schedule(dynamic, 1) default(none) &
-        !$omp shared(d, p0, xs, ys, mods, pers, npts, pr) &
-        !$omp private(k, i, j, p, amp, res, st, valid, ivert)
-        do k = 1, npts
-            i = mod(k - 1, d%chart_nx) + 1
-            j = (k - 1)/d%chart_nx + 1
-            p = p0
-            amp = d%floquet_amplitude
-            call set_chart_variable(d%chart_x, xs(i), p, amp)
-            call set_chart_variable(d%chart_y, ys(j), p, amp)
-            valid = all(p%inertia > 0.0_dp) .and. p%inertia(1) <= p%inertia(2) + p%inertia(3) &
-                    .and. p%inertia(2) <= p%inertia(1) + p%inertia(3) &
-                    .and. p%inertia(3) <= p%inertia(1) + p%inertia(2)
-            mods(i, j) = CHART_INVALID
-            pers(i, j) = CHART_INVALID
-            if (valid) then
-                call check_torsion_scene(p, ivert, st)
-                if (st%code == 0) then
-                    call floquet_analysis(p, amp*deg, d%floquet_rtol, d%floquet_segments, res, st)
-                    if (st%code == 0) then
-                        mods(i, j) = res%max_modulus
-                        pers(i, j) = res%period
-                    else if (st%code /= ERR_DECK .and. st%code /= ERR_MODEL) then
-                        ! (ERR_DECK, ERR_MODEL: no torsion at this amplitude, CHART_INVALID)
-                        mods(i, j) = CHART_FAILED
-                        pers(i, j) = CHART_FAILED
-                    end if
-                end if
-            end if
-            !$omp critical (chart_progress)
-            call pr%tick()
-            !$omp end critical (chart_progress)
-        end do
-        !$omp end parallel do
-        call pr%finish()
-        call system_clock(c1)
-        wall_seconds = real(c1 - c0, dp)/real(crate, dp)
+        call run_sweep(w, vals, d%name//': chart', wall_seconds)
+        mods = reshape(vals(1, :), [d%chart_nx, d%chart_ny])
+        pers = reshape(vals(2, :), [d%chart_nx, d%chart_ny])
         nstable = count(mods >= 0.0_dp .and. mods <= 1.0_dp + 1.0e-6_dp)
         if (present(nfailed)) nfailed = count(mods == CHART_FAILED)
 
@@ -234,7 +262,7 @@ contains
         if (ios == 0) write (u, '(a)', iostat=ios) '# x y max_modulus period'
         do i = 1, d%chart_nx
             do j = 1, d%chart_ny
-                if (ios == 0) write (u, '(4es24.15e3)', iostat=ios) xs(i), ys(j), mods(i, j), &
+                if (ios == 0) write (u, '(4es24.15e3)', iostat=ios) w%xs(i), w%ys(j), mods(i, j), &
                     pers(i, j)
             end do
             if (ios == 0) write (u, '(a)', iostat=ios) ''
