@@ -7,7 +7,8 @@
 #                   installs OpenMPI when run as root, else prints the command and stops
 #   make run        run every deck in input/, write output/, draw plots/*.png
 #   make report     output/report.md (paper's claims against ours)
-#   make bench      integrator, scene, work-precision, elastic-cable, speed and MPI benchmarks
+#   make bench      integrator, scene, work-precision, elastic-cable, speed, design and MPI
+#                   benchmarks
 #                   (output/bench_*.dat, plots/work_precision_elastic.png; the speed figures
 #                   count instructions with valgrind --tool=callgrind; the MPI figures need
 #                   OpenMPI: make mpi)
@@ -63,11 +64,12 @@ endif
 LIB_MODULES = kinds status text progress random lapack_wrap ode_system lsoda radau stepper \
               geometry kinematics gen_forces bifilar_model elastic_model elastic_gen \
               elastic_solver deck output_io fast_format simulate floquet paper_claims \
-              parallel sweep_engine stability work_precision period_inversion driver
+              parallel sweep_engine stability work_precision period_inversion design driver
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
 TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme \
                test_work_precision test_elastic test_elastic_jac test_fast_format test_columns \
-               test_radau test_elastic_radau test_robust test_period probe_task test_sweep
+               test_radau test_elastic_radau test_robust test_period test_design probe_task \
+               test_sweep
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
 
 .PHONY: all test check run report bench deps clean memcheck mpi
@@ -172,6 +174,8 @@ bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench
 	tests/bench/speed.sh $(BIN) output/bench_speed.dat
 	@echo "100 x 100 stability chart (tests/bench/chart_cylinder.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}):"
 	$(BIN)/bifilar tests/bench/chart_cylinder.nml --out build/bench 2>/dev/null
+	@echo "60 x 6 rig design (input/box_design.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}; issue 14: under 20 s on 2 cores):"
+	$(BIN)/bifilar input/box_design.nml --out build/bench 2>/dev/null
 	@if command -v mpif90 >/dev/null 2>&1; then \
 	  $(MAKE) --no-print-directory MPI=1 $(BIN)/bifilar_mpi $(BIN)/sweep_probe_mpi; fi
 	@echo "MPI: strong scaling of the 60 x 45 chart, the cost of its points, the model of 1000 x 1000:"
@@ -207,4 +211,5 @@ deps:
 	  fi; }
 
 clean:
-	rm -rf build build-check build-mpi build-check-mpi bin output/*.dat output/*.summary output/*.md output/*.tmp.* plots/*.png
+	rm -rf build build-check build-mpi build-check-mpi bin output/*.dat output/*.summary \
+	  output/*.md output/*.design output/*.tmp.* output/*.partial plots/*.png

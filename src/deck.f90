@@ -1,5 +1,6 @@
 !> The input deck: a namelist file with the groups &scene, &suspension, &body, &start,
-!! &integration, &cables, &floquet, &chart and &output (see input/*.nml).  read_deck reads and validates it;
+!! &integration, &cables, &floquet, &chart, &design and &output (see input/*.nml).
+!! read_deck reads and validates it;
 !! every problem is an ERR_DECK status whose message names the deck, the group, the variable
 !! and its value, what is wrong and what is allowed.  Cable reachability is checked by the
 !! geometry module.
@@ -57,15 +58,27 @@ module deck
         integer  :: chart_nx = 40, chart_ny = 40
         ! &output: the .dat columns, blank-separated names of OUTPUT_COLUMNS in their order
         character(len=512) :: columns = OUTPUT_COLUMNS
+        ! &design (analysis design): candidate rigs l = l' (and b) and the instruments'
+        ! standard uncertainties, all in deck units (period in s); checked only when the
+        ! analysis is requested (see check_design)
+        real(dp) :: design_l_min = 0.4_dp, design_l_max = 3.0_dp
+        integer  :: design_nl = 60
+        real(dp) :: design_b_min = 0.0_dp, design_b_max = 0.0_dp  !! 0, 0 with nb = 1: deck's b
+        integer  :: design_nb = 1
+        real(dp) :: design_amplitude_max = 50.0_dp  !! degrees, 0 < a <= 90
+        integer  :: design_n_amplitudes = 6
+        real(dp) :: design_u_mass = 1.0e-3_dp, design_u_l = 1.0e-3_dp
+        real(dp) :: design_u_b = 5.0e-4_dp, design_u_period = 1.0e-4_dp
     end type deck_t
 
     public :: read_deck, analysis_requested, deck_echo
 
     !> Words allowed in &scene analyses.
-    character(len=*), parameter :: ANALYSES_ALLOWED = 'simulate floquet chart work_precision'
+    character(len=*), parameter :: ANALYSES_ALLOWED = 'simulate floquet chart work_precision '// &
+        'design'
     !> Namelist groups a deck may contain.
     character(len=*), parameter :: GROUPS_ALLOWED = &
-        'scene suspension body start integration cables floquet chart output'
+        'scene suspension body start integration cables floquet chart output design'
     !> Words allowed in &scene model.
     character(len=*), parameter :: MODELS_ALLOWED = 'kane elastic'
     !> Words allowed in &integration method: 'auto' (radau for model = 'elastic', lsoda for
@@ -87,6 +100,8 @@ module deck
     character(len=*), parameter :: SPEC_CHART = &
         'x:c1 x_min:r1 x_max:r1 nx:i1 y:c1 y_min:r1 y_max:r1 ny:i1'
     character(len=*), parameter :: SPEC_OUTPUT = 'columns:c1'
+    character(len=*), parameter :: SPEC_DESIGN = 'l_min:r1 l_max:r1 nl:i1 b_min:r1 b_max:r1 '// &
+        'nb:i1 amplitude_max:r1 n_amplitudes:i1 u_mass:r1 u_l:r1 u_b:r1 u_period:r1'
     real(dp), parameter :: RTOL_MIN = 1.0e-14_dp        !! smallest relative tolerance
     real(dp), parameter :: ATOL_MIN = 1.0e-30_dp        !! smallest absolute tolerance
     real(dp), parameter :: ATOL_MAX = 1.0_dp            !! largest absolute tolerance
@@ -113,6 +128,7 @@ module deck
     integer, parameter :: MAX_SEGMENTS = 64             !! most &floquet shooting segments
     integer, parameter :: MAX_CHART_N = 1000            !! most chart points along one axis
     integer, parameter :: MAX_CHART_POINTS = 250000     !! most chart points, nx*ny
+    integer, parameter :: MAX_DESIGN_AMPLITUDES = 100   !! most &design n_amplitudes
     real(dp), parameter :: PI_HALF = 1.5707963267948966_dp
     integer, parameter :: MAX_LINE = 4096               !! longest deck line (characters)
     integer, parameter :: MAX_DECK_BYTES = 1000000      !! largest deck (bytes)
@@ -230,6 +246,7 @@ contains
             call read_group('floquet', .false., SPEC_FLOQUET)
             call read_group('chart', .false., SPEC_CHART)
             call read_group('output', .false., SPEC_OUTPUT)
+            call read_group('design', .false., SPEC_DESIGN)
             call traps_restore(halting)
         end if
         close (u, iostat=ios)
@@ -299,6 +316,7 @@ contains
         call check_cables(d, stat)
         call check_floquet(d, stat)
         call check_chart(d, stat)
+        if (analysis_requested(d, 'design')) call check_design(d, stat)
         if (stat%code == STATUS_OK) call reduce_angles(d)
 
     contains
@@ -351,6 +369,8 @@ contains
                 call read_floquet(u, fq_amplitude, fq_segments, fq_rtol, ios2, msg2)
             case ('output')
                 read (u, nml=output, iostat=ios2, iomsg=msg2)
+            case ('design')
+                call read_design(u, d, ios2, msg2)
             case default
                 read (u, nml=chart, iostat=ios2, iomsg=msg2)
             end select
@@ -394,6 +414,44 @@ contains
         segs = segments
         rt = rtol
     end subroutine read_floquet
+
+    !> Read &design from the rewound unit u into d's design_* values (their defaults in,
+    !! the values read out); a namelist of its own keeps its names apart from read_deck's.
+    subroutine read_design(u, d, ios, msg)
+        integer, intent(in) :: u                    !! open deck, rewound
+        type(deck_t), intent(inout) :: d            !! design_* values: defaults in, read out
+        integer, intent(out) :: ios                 !! iostat of the namelist read
+        character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
+        real(dp) :: l_min, l_max, b_min, b_max, amplitude_max, u_mass, u_l, u_b, u_period
+        integer :: nl, nb, n_amplitudes
+        namelist /design/ l_min, l_max, nl, b_min, b_max, nb, amplitude_max, n_amplitudes, &
+            u_mass, u_l, u_b, u_period
+        l_min = d%design_l_min
+        l_max = d%design_l_max
+        nl = d%design_nl
+        b_min = d%design_b_min
+        b_max = d%design_b_max
+        nb = d%design_nb
+        amplitude_max = d%design_amplitude_max
+        n_amplitudes = d%design_n_amplitudes
+        u_mass = d%design_u_mass
+        u_l = d%design_u_l
+        u_b = d%design_u_b
+        u_period = d%design_u_period
+        read (u, nml=design, iostat=ios, iomsg=msg)
+        d%design_l_min = l_min
+        d%design_l_max = l_max
+        d%design_nl = nl
+        d%design_b_min = b_min
+        d%design_b_max = b_max
+        d%design_nb = nb
+        d%design_amplitude_max = amplitude_max
+        d%design_n_amplitudes = n_amplitudes
+        d%design_u_mass = u_mass
+        d%design_u_l = u_l
+        d%design_u_b = u_b
+        d%design_u_period = u_period
+    end subroutine read_design
 
     !> True when `word` is one of the blank-separated words of d%analyses.
     logical function analysis_requested(d, word)
@@ -454,6 +512,13 @@ contains
             rshort(d%chart_x_max)//', nx = '//itoa(d%chart_nx)//', y = '//quoted(d%chart_y)// &
             ', y_min = '//rshort(d%chart_y_min)//', y_max = '//rshort(d%chart_y_max)// &
             ', ny = '//itoa(d%chart_ny)//' /')
+        if (analysis_requested(d, 'design')) call put('# &design l_min = '// &
+            rshort(d%design_l_min)//', l_max = '//rshort(d%design_l_max)//', nl = '// &
+            itoa(d%design_nl)//', b_min = '//rshort(d%design_b_min)//', b_max = '// &
+            rshort(d%design_b_max)//', nb = '//itoa(d%design_nb)//', amplitude_max = '// &
+            rshort(d%design_amplitude_max)//', n_amplitudes = '//itoa(d%design_n_amplitudes)// &
+            ', u_mass = '//rshort(d%design_u_mass)//', u_l = '//rshort(d%design_u_l)// &
+            ', u_b = '//rshort(d%design_u_b)//', u_period = '//rshort(d%design_u_period)//' /')
         if (trim(d%columns) /= OUTPUT_COLUMNS) call put('# &output columns = '// &
             quoted(d%columns)//' /')
 
@@ -829,6 +894,117 @@ contains
         end subroutine chart_axis
 
     end subroutine check_chart
+
+    !> &design (checked when the analysis is requested; its lengths are in deck units):
+    !! finite values; 0 < l_min < l_max with l over b' in RATIO_MIN .. RATIO_MAX and
+    !! 2 <= nl <= MAX_CHART_N; b kept (b_min = b_max = 0, nb = 1), one b (b_min = b_max > 0,
+    !! nb = 1) or 0 < b_min < b_max with 2 <= nb <= MAX_CHART_N, b over b' in range;
+    !! 0 < amplitude_max <= 90 degrees, 1 <= n_amplitudes <= MAX_DESIGN_AMPLITUDES; at most
+    !! MAX_CHART_POINTS Floquet points; each uncertainty >= 0 and below the value it
+    !! qualifies (u_mass < mass, u_l < l_min, u_b below every b and b'; the period is only
+    !! known when computed: the analysis checks u_period against it).
+    subroutine check_design(d, stat)
+        type(deck_t), intent(in) :: d               !! deck with the values read
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+        real(dp) :: bmin
+        if (stat%code /= STATUS_OK) return
+        call positive(stat, 'design', 'l_min', d%design_l_min, '0 < l_min < l_max (deck units)')
+        call positive(stat, 'design', 'l_max', d%design_l_max, '0 < l_min < l_max (deck units)')
+        if (stat%code /= STATUS_OK) return
+        if (d%design_l_min >= d%design_l_max) then
+            call bad(stat, 'design', 'l_max', rshort(d%design_l_max), 'not larger than '// &
+                     'l_min = '//rshort(d%design_l_min), 'l_min < l_max')
+            return
+        end if
+        call over_b_prime(stat, 'design', 'l_min', d%design_l_min, d%b_prime, RATIO_MIN)
+        call over_b_prime(stat, 'design', 'l_max', d%design_l_max, d%b_prime, RATIO_MIN)
+        if (stat%code /= STATUS_OK) return
+        if (d%design_nl < 2 .or. d%design_nl > MAX_CHART_N) then
+            call bad(stat, 'design', 'nl', itoa(d%design_nl), 'number of cable lengths '// &
+                     'out of range', '2 <= nl <= '//itoa(MAX_CHART_N))
+            return
+        end if
+        call finite(stat, 'design', 'b_min', d%design_b_min)
+        call finite(stat, 'design', 'b_max', d%design_b_max)
+        if (stat%code /= STATUS_OK) return
+        if (d%design_nb == 1) then
+            if (d%design_b_min /= d%design_b_max) then
+                call bad(stat, 'design', 'b_max', rshort(d%design_b_max), 'differs from '// &
+                         'b_min = '//rshort(d%design_b_min)//' with nb = 1', 'b_min = '// &
+                         'b_max = 0 with nb = 1 (the deck''s b), b_min = b_max > 0 with '// &
+                         'nb = 1 (that b), or 0 < b_min < b_max with nb >= 2')
+                return
+            end if
+            if (d%design_b_min /= 0.0_dp) call positive(stat, 'design', 'b_min', &
+                d%design_b_min, 'b_min = b_max = 0 (the deck''s b) or > 0')
+        else if (d%design_nb < 1 .or. d%design_nb > MAX_CHART_N) then
+            call bad(stat, 'design', 'nb', itoa(d%design_nb), 'number of support spacings '// &
+                     'out of range', '1 <= nb <= '//itoa(MAX_CHART_N))
+            return
+        else
+            call positive(stat, 'design', 'b_min', d%design_b_min, '0 < b_min < b_max '// &
+                          'with nb >= 2')
+            if (stat%code /= STATUS_OK) return
+            if (d%design_b_min >= d%design_b_max) call bad(stat, 'design', 'b_max', &
+                rshort(d%design_b_max), 'not larger than b_min = '//rshort(d%design_b_min)// &
+                ' with nb = '//itoa(d%design_nb), 'b_min < b_max with nb >= 2')
+        end if
+        if (stat%code /= STATUS_OK) return
+        if (d%design_b_min > 0.0_dp) then
+            call over_b_prime(stat, 'design', 'b_min', d%design_b_min, d%b_prime, RATIO_MIN)
+            call over_b_prime(stat, 'design', 'b_max', d%design_b_max, d%b_prime, RATIO_MIN)
+        end if
+        call finite(stat, 'design', 'amplitude_max', d%design_amplitude_max)
+        if (stat%code /= STATUS_OK) return
+        if (d%design_amplitude_max <= 0.0_dp .or. d%design_amplitude_max > 90.0_dp) then
+            call bad(stat, 'design', 'amplitude_max', rshort(d%design_amplitude_max), &
+                     'out of range', '0 < amplitude_max <= 90 (degrees of theta4)')
+            return
+        end if
+        if (d%design_n_amplitudes < 1 .or. d%design_n_amplitudes > MAX_DESIGN_AMPLITUDES) then
+            call bad(stat, 'design', 'n_amplitudes', itoa(d%design_n_amplitudes), &
+                     'number of amplitudes out of range', '1 <= n_amplitudes <= '// &
+                     itoa(MAX_DESIGN_AMPLITUDES))
+            return
+        end if
+        if (real(d%design_nl, dp)*d%design_nb*d%design_n_amplitudes > MAX_CHART_POINTS) then
+            call bad(stat, 'design', 'n_amplitudes', itoa(d%design_n_amplitudes), &
+                     'too many Floquet points (nl*nb*n_amplitudes = '// &
+                     sci(real(d%design_nl, dp)*d%design_nb*d%design_n_amplitudes)//')', &
+                     'nl*nb*n_amplitudes <= '//itoa(MAX_CHART_POINTS))
+            return
+        end if
+        bmin = min(d%b_prime, d%b)
+        if (d%design_b_min > 0.0_dp) bmin = min(d%b_prime, d%design_b_min)
+        call uncertainty('u_mass', d%design_u_mass, d%mass, 'the mass')
+        call uncertainty('u_l', d%design_u_l, d%design_l_min, 'l_min')
+        call uncertainty('u_b', d%design_u_b, bmin, 'every b and b_prime')
+        call uncertainty('u_period', d%design_u_period, huge(1.0_dp), '')
+
+    contains
+
+        !> A standard uncertainty: finite, >= 0, below the value it qualifies.
+        subroutine uncertainty(var, u, x, what)
+            character(len=*), intent(in) :: var     !! its name
+            real(dp), intent(in) :: u, x            !! the uncertainty and its value
+            character(len=*), intent(in) :: what    !! the value's name ('' for none)
+            character(len=:), allocatable :: allowed
+            if (stat%code /= STATUS_OK) return
+            call finite(stat, 'design', var, u)
+            if (stat%code /= STATUS_OK) return
+            allowed = '0 <= '//var
+            if (len(what) > 0) allowed = allowed//' < '//what//' ('//rshort(x)//')'
+            allowed = allowed//', a standard uncertainty in deck units'
+            if (var == 'u_period') allowed = allowed//' (s)'
+            if (u < 0.0_dp) then
+                call bad(stat, 'design', var, rshort(u), 'a negative uncertainty', allowed)
+            else if (len(what) > 0 .and. u >= x) then
+                call bad(stat, 'design', var, rshort(u), 'not below the value it qualifies', &
+                         allowed)
+            end if
+        end subroutine uncertainty
+
+    end subroutine check_design
 
     !> ERR_DECK naming the deck, group, variable and value, what is wrong and what is
     !! allowed (nothing when stat already carries an error).

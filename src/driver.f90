@@ -19,6 +19,7 @@ module driver
         sweep_next_job, sweep_serve, checkpoint_path
     use floquet, only: floquet_result_t
     use work_precision, only: run_work_precision, wp_result_t
+    use design, only: run_design, design_ready, design_result_t, design_task, DESIGN_STAGES
     use geometry, only: pendulum_t
     implicit none
     private
@@ -37,9 +38,10 @@ contains
     !> Run the deck at `path` into the folder `outdir` (which exists).  On success `line`
     !! is the deck's one summary line and stat is OK; on failure stat carries the error
     !! (its message without the deck's name: error_line adds it) and no file of the run is
-    !! left in outdir.  The sweeps (chart) run first, before any file of the run is
-    !! staged; their checkpoints (OUTDIR/NAME.chart.partial) are removed once the run's
-    !! files are committed, and kept when the run fails after them (--resume reuses them).
+    !! left in outdir.  The sweeps (chart, design) run first, before any file of the run is
+    !! staged (the chart's before the design's); their checkpoints (OUTDIR/NAME.chart.partial,
+    !! NAME.design*.partial) are removed once the run's files are committed, and kept when
+    !! the run fails after them (--resume reuses them).
     subroutine run_deck(path, outdir, line, stat, options)
         character(len=*), intent(in) :: path        !! deck file
         character(len=*), intent(in) :: outdir      !! output folder
@@ -48,12 +50,13 @@ contains
         type(sweep_options_t), intent(in), optional :: options   !! --resume, --checkpoint
         type(deck_t) :: d
         type(sweep_report_t) :: rep
-        character(len=:), allocatable :: chart_part
+        character(len=:), allocatable :: chart_part, design_part
         type(out_files_t) :: files
         type(run_summary_t) :: sm
         type(floquet_result_t) :: fr
         type(wp_result_t) :: wp
-        integer :: nstable, nfailed
+        type(design_result_t) :: dr
+        integer :: nstable, nfailed, k
         real(dp) :: secs
         character(len=64) :: buf
 
@@ -68,10 +71,13 @@ contains
             call floquet_ready(d, stat)
         if (stat%code == STATUS_OK .and. analysis_requested(d, 'chart')) &
             call chart_ready(d, stat)
+        if (stat%code == STATUS_OK .and. analysis_requested(d, 'design')) &
+            call design_ready(d, stat)
         if (stat%code /= STATUS_OK) return
 
         line = d%name//':'
         chart_part = ''
+        design_part = ''
         run: block
             if (analysis_requested(d, 'chart')) then
                 call run_chart(d, outdir, nstable, secs, stat, files=files, nfailed=nfailed, &
@@ -79,16 +85,23 @@ contains
                 if (stat%code /= STATUS_OK) exit run
                 write (buf, '(f0.2)') secs
                 chart_part = ' chart '//itoa(d%chart_nx*d%chart_ny)//' points, '// &
-                    itoa(nstable)//' stable, '//lead0(buf)//' s'
-                if (rep%ranks > 1) chart_part = chart_part//' on '//itoa(rep%ranks)// &
-                    ' ranks'
+                    itoa(nstable)//' stable, '//lead0(buf)//' s'//ranks_note(rep)
                 if (nfailed > 0) chart_part = chart_part//', '//itoa(nfailed)// &
                     ' failed (-2 in the file)'
-                if (rep%resumed > 0) chart_part = chart_part//', '//itoa(rep%resumed)// &
-                    ' resumed from the checkpoint'
-                if (len(rep%note) > 0) chart_part = chart_part//', '//rep%note// &
-                    ': computed afresh'
-                chart_part = chart_part//';'
+                chart_part = chart_part//resume_note(rep)//';'
+            end if
+            if (analysis_requested(d, 'design')) then
+                call run_design(d, outdir, dr, stat, files=files, options=options, report=rep)
+                if (stat%code /= STATUS_OK) exit run
+                write (buf, '(f0.2)') dr%wall_seconds
+                design_part = ' design '//itoa(size(dr%ls)*size(dr%bs))//' candidates x '// &
+                    itoa(size(dr%amps))//' amplitudes, '//itoa(dr%n_stable)//' stable, '// &
+                    'recommended l = '//sci(dr%ls(dr%il), 4)//', b = '//sci(dr%bs(dr%ib), 4)// &
+                    ', u(I1)/I1 = '//sci(dr%u_rel(dr%il, dr%ib), 2)//', '//lead0(buf)//' s'// &
+                    ranks_note(rep)
+                if (dr%n_failed > 0) design_part = design_part//', '//itoa(dr%n_failed)// &
+                    ' failed points'
+                design_part = design_part//resume_note(rep)//';'
             end if
             if (analysis_requested(d, 'work_precision')) then
                 call run_work_precision(d, outdir, wp, stat, quiet=.true., files=files)
@@ -105,7 +118,7 @@ contains
                 line = line//' floquet period '//lead0(buf)//', max modulus '// &
                     sci(fr%max_modulus, 5)//', stable '//trim(merge('yes', 'no ', fr%stable))//';'
             end if
-            line = line//chart_part
+            line = line//chart_part//design_part
             if (analysis_requested(d, 'simulate')) then
                 call run_simulation(d, outdir, sm, stat, files=files)
                 if (stat%code /= STATUS_OK) exit run
@@ -120,6 +133,11 @@ contains
                 line = line(1:len(line) - 1)
                 if (analysis_requested(d, 'chart')) &
                     call remove_file(checkpoint_path(outdir, d%name, 'chart'))
+                if (analysis_requested(d, 'design')) then
+                    do k = 1, size(DESIGN_STAGES)
+                        call remove_file(checkpoint_path(outdir, d%name, trim(DESIGN_STAGES(k))))
+                    end do
+                end if
             end if
             return
         end block run
@@ -145,6 +163,8 @@ contains
                     allocate (chart)
                     call chart_task(d, chart, st)
                     call move_alloc(chart, task)
+                case ('design', 'design_edges', 'design_precision')
+                    call design_task(job%analysis, d, job%payload, task, st)
                 case default
                     st%code = ERR_DECK
                     st%msg = 'no sweep named '//job%analysis//' in this executable'
@@ -160,6 +180,25 @@ contains
             if (allocated(task)) deallocate (task)
         end do
     end subroutine serve_sweeps
+
+    !> ' on N ranks' for a sweep of an MPI run ('' on one rank).
+    function ranks_note(rep) result(s)
+        type(sweep_report_t), intent(in) :: rep     !! the sweep's report
+        character(len=:), allocatable :: s
+        s = ''
+        if (rep%ranks > 1) s = ' on '//itoa(rep%ranks)//' ranks'
+    end function ranks_note
+
+    !> What a sweep took from its checkpoint, or why it could not (--resume).
+    function resume_note(rep) result(s)
+        type(sweep_report_t), intent(in) :: rep     !! the sweep's report
+        character(len=:), allocatable :: s
+        s = ''
+        if (rep%resumed > 0) s = ', '//itoa(rep%resumed)//' resumed from the checkpoint'
+        if (allocated(rep%note)) then
+            if (len(rep%note) > 0) s = s//', '//rep%note//': computed afresh'
+        end if
+    end function resume_note
 
     !> The preconditions of analyses = 'chart': the deck's own scene has a reachable
     !! geometry (each point of the grid is checked when it is computed).

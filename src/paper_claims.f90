@@ -401,6 +401,7 @@ contains
              figure_t('fig15_multipliers_stable', 'Fig. 15: Floquet multipliers, stable', -1), &
              figure_t('fig16_stable_tilting', 'Fig. 16: stable tilting', -1), &
              figure_t('chart_box', 'Stability chart of the parallelepiped', -1), &
+             figure_t('box_design_design', 'Rig design of the parallelepiped', -1), &
              figure_t('elastic_vs_kane', 'theta1, elastic cables against the paper''s', -2), &
              figure_t('work_precision', 'Work-precision, the paper''s model', -3), &
              figure_t('work_precision_elastic', 'Work-precision, elastic cables', -3)]
@@ -481,8 +482,8 @@ contains
             'box_stable', 'box_tall_floquet']
         character(len=*), parameter :: figs(3) = [character(len=14) :: 'Figs. 13, 14', &
             'Figs. 15, 16', 'Fig. 13 order']
-        real(dp) :: mmod, per, th1
-        logical :: have_f, have_s
+        real(dp) :: mmod, per, th1, rl, ur, ml, am
+        logical :: have_f, have_s, have_d, have_u, have_a
         integer :: k
         character(len=200) :: buf
         write (u, '(a)', iostat=ios) '', '## Stability of torsion (Figs. 13-16)', '', &
@@ -507,6 +508,18 @@ contains
             if (ios == 0) write (u, '(a)', iostat=ios) '| '//trim(decks(k))//' | '// &
                 trim(figs(k))//trim(buf)
         end do
+        ! the paper's closing advice automated (analysis design)
+        call read_kv(outdir//'/box_design.design', 'recommended_l', rl, have_d)
+        call read_kv(outdir//'/box_design.design', 'predicted_u_I1_rel', ur, have_u)
+        call read_kv(outdir//'/box_design.design', 'stable_margin_l', ml, have_s)
+        call read_kv(outdir//'/box_design.design', 'amplitude_max', am, have_a)
+        if (all([have_d, have_u, have_s, have_a]) .and. ios == 0) write (u, '(a)', &
+            iostat=ios) '', 'The paper''s advice, "use the stability analysis for various '// &
+            'combinations of b and l until one is found that does not lead to a prediction '// &
+            'of instability", automated (`input/box_design.nml`, the block with b'' = 0.2 m; '// &
+            'README, "Rig design"): recommended l = l'' = '//sci(rl, 4)//' m, stable at '// &
+            'every amplitude up to '//sci(am, 3)//' degrees, '//sci(ml, 3)//' m from the '// &
+            'nearest unstable band, predicted u(I1)/I1 = '//sci(ur, 3)//'.'
     end subroutine stability_lines
 
     !> The elastic-cable model against the paper's (cylinder_l180_elastic against

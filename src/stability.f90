@@ -6,7 +6,8 @@
 !! The chart's points are a sweep (module sweep_engine): spread over the OpenMP threads
 !! (OMP_NUM_THREADS is honoured) and, in bin/bifilar_mpi, over the MPI ranks, checkpointed
 !! to OUTDIR/NAME.chart.partial as they complete, with one line of progress on standard
-!! error when that is a terminal (module progress).
+!! error when that is a terminal (module progress); floquet_point is the point shared with
+!! the rig design (module design).
 module stability
     use kinds, only: dp, deg
     use status, only: status_t, set_error, ERR_NUMERIC, ERR_DECK, ERR_MODEL
@@ -24,6 +25,7 @@ module stability
     private
 
     public :: run_floquet, run_chart, set_chart_variable, floquet_ready, chart_task
+    public :: floquet_point
 
     !> Sentinel written for chart points where no analysis is possible (not a torsion scene,
     !! cables cannot reach, impossible inertia): never NaN.
@@ -179,20 +181,16 @@ contains
         task%segments = d%floquet_segments
     end subroutine chart_task
 
-    !> Chart point k: values = [max_modulus, period], or CHART_INVALID in both where pure
-    !! torsion is not possible (impossible inertia, not a torsion scene, no torsion at this
-    !! amplitude), CHART_FAILED where the analysis failed.  Never fails itself.
+    !> Chart point k: values = [max_modulus, period] (sentinels, see floquet_point).  Never
+    !! fails itself.
     subroutine chart_point(self, i, values, stat)
         class(chart_task_t), intent(in) :: self
         integer, intent(in) :: i                !! 1 .. nx*ny, x index fastest
         real(dp), intent(out) :: values(:)      !! max_modulus, period
         type(status_t), intent(out) :: stat     !! always OK
         type(pendulum_t) :: p
-        type(floquet_result_t) :: res
-        type(status_t) :: st
         real(dp) :: amp
-        integer :: ix, iy, ivert
-        logical :: valid
+        integer :: ix, iy
         stat%code = 0
         ix = mod(i - 1, size(self%xs)) + 1
         iy = (i - 1)/size(self%xs) + 1
@@ -200,21 +198,43 @@ contains
         amp = self%amplitude
         call set_chart_variable(self%x, self%xs(ix), p, amp)
         call set_chart_variable(self%y, self%ys(iy), p, amp)
+        call floquet_point(p, amp, self%rtol, self%segments, values(1), values(2))
+    end subroutine chart_point
+
+    !> One point of a stability sweep (chart, design): the largest multiplier and the period
+    !! of pure torsion of p at amp_deg, or a sentinel in both: CHART_INVALID where no
+    !! analysis is possible (impossible inertia, not a torsion scene, the cables cannot reach
+    !! the raised position), CHART_FAILED where the analysis failed (e.g. more than
+    !! FLOQUET_MAX_STEPS steps).  Never stops, never NaN.
+    subroutine floquet_point(p, amp_deg, rtol, nseg, modulus, period)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters
+        real(dp), intent(in) :: amp_deg         !! torsion amplitude (degrees)
+        real(dp), intent(in) :: rtol            !! integrator tolerance
+        integer, intent(in) :: nseg             !! shooting segments
+        real(dp), intent(out) :: modulus        !! largest |multiplier| (or a sentinel)
+        real(dp), intent(out) :: period         !! t* in units of tau (or a sentinel)
+        type(floquet_result_t) :: res
+        type(status_t) :: st
+        integer :: ivert
+        logical :: valid
+        modulus = CHART_INVALID
+        period = CHART_INVALID
         valid = all(p%inertia > 0.0_dp) .and. p%inertia(1) <= p%inertia(2) + p%inertia(3) &
                 .and. p%inertia(2) <= p%inertia(1) + p%inertia(3) &
                 .and. p%inertia(3) <= p%inertia(1) + p%inertia(2)
-        values = CHART_INVALID
         if (.not. valid) return
         call check_torsion_scene(p, ivert, st)
         if (st%code /= 0) return
-        call floquet_analysis(p, amp*deg, self%rtol, self%segments, res, st)
+        call floquet_analysis(p, amp_deg*deg, rtol, nseg, res, st)
         if (st%code == 0) then
-            values = [res%max_modulus, res%period]
+            modulus = res%max_modulus
+            period = res%period
         else if (st%code /= ERR_DECK .and. st%code /= ERR_MODEL) then
             ! (ERR_DECK, ERR_MODEL: no torsion at this amplitude, CHART_INVALID)
-            values = CHART_FAILED
+            modulus = CHART_FAILED
+            period = CHART_FAILED
         end if
-    end subroutine chart_point
+    end subroutine floquet_point
 
     !> Stability chart over the grid of &chart: OUTDIR/NAME.chart.dat with one row per point,
     !! `x y max_modulus period` (CHART_INVALID where no analysis is possible, CHART_FAILED

@@ -21,8 +21,8 @@
 !! a temporary file and a rename, module output_io) at most every `checkpoint_seconds` (and
 !! at most 5 % of the time: the interval is at least 20 times the last write), each value as
 !! its 64-bit pattern in hexadecimal, with a fingerprint of the run: the analysis, the
-!! number of points and values, the CRC-64 of the deck file's bytes and of the executable
-!! (/proc/self/exe).  With `resume`, a checkpoint whose fingerprint matches supplies its
+!! number of points and values, the CRC-64 of the deck file's bytes (and of the sweep's
+!! payload, when the task needs more than the deck) and of the executable (/proc/self/exe).  With `resume`, a checkpoint whose fingerprint matches supplies its
 !! points and the rest are computed; any other checkpoint is ignored (and replaced by the
 !! next one).  A sweep ended by a signal (SIGINT, SIGTERM, SIGHUP; mpirun sends SIGTERM to
 !! every rank when one dies) prints one line naming the deck and the checkpoint, removes
@@ -35,7 +35,7 @@
 !! an earlier run is then left as it was.
 !!
 !! Messages (payloads of reals, first element the sweep's number): rank 0 -> others JOB
-!! (a sweep begins: its size, fingerprint, analysis and deck), WORK (a chunk of indices; none
+!! (a sweep begins: its size, fingerprint, analysis, deck and payload), WORK (a chunk of indices; none
 !! means nothing is left), STOP (drop your points: the sweep failed), BYE (your part of the
 !! sweep is over), QUIT (the program ends); others -> rank 0 RESULTS (completed points, and
 !! a request for more), ERROR (a point or the setup failed), LEAVE (last results: done).
@@ -91,14 +91,15 @@ module sweep_engine
         real(dp) :: serve_seconds = 0.0_dp          !! rank 0's time taking messages
     end type sweep_report_t
 
-    !> A sweep as the other ranks learn of it (JOB): they build the task from the analysis
-    !! and the deck (module driver, serve_sweeps).
+    !> A sweep as the other ranks learn of it (JOB): they build the task from the analysis,
+    !! the deck and the payload (module driver, serve_sweeps).
     type, public :: sweep_job_t
         integer :: id = 0                           !! the sweep's number
         integer :: npoints = 0, nvalues = 0
         integer(int64) :: deck_crc = 0, exe_crc = 0 !! fingerprint parts
         character(len=:), allocatable :: analysis   !! e.g. 'chart'
         character(len=:), allocatable :: deck_path  !! the deck as rank 0 was given it
+        real(dp), allocatable :: payload(:)         !! what else the task needs (may be empty)
     end type sweep_job_t
 
     public :: sweep_run, sweep_start, sweep_finish, sweep_is_master, sweep_next_job
@@ -146,6 +147,7 @@ module sweep_engine
         type(progress_t) :: pr
         character(len=:), allocatable :: ckpt       !! checkpoint path ('' none)
         character(len=:), allocatable :: analysis
+        real(dp), allocatable :: payload(:)         !! sent with JOB
         integer(int64) :: deck_crc = 0, exe_crc = 0
         real(dp) :: interval = 5.0_dp               !! least seconds between checkpoints
         real(dp) :: asked_interval = 5.0_dp
@@ -253,7 +255,7 @@ contains
     !! for none) the sweep is checkpointed and, with options%resume, continued from a
     !! checkpoint of the same deck, analysis and executable.
     subroutine sweep_run(task, analysis, deck_path, ckpt, label, npoints, nvalues, values, &
-                         stat, options, report, files)
+                         stat, options, report, files, payload)
         class(sweep_task_t), intent(in) :: task     !! the points
         character(len=*), intent(in) :: analysis    !! e.g. 'chart'
         character(len=*), intent(in) :: deck_path   !! the deck file (as given)
@@ -265,6 +267,9 @@ contains
         type(sweep_options_t), intent(in), optional :: options
         type(sweep_report_t), intent(out), optional :: report
         type(out_files_t), intent(in), optional :: files    !! staged files (removed on a signal)
+        !> What else the other ranks need to build the task beyond the deck (the task's own
+        !! encoding; part of the fingerprint)
+        real(dp), intent(in), optional :: payload(:)
         type(engine_t) :: e
         type(sweep_options_t) :: opt
         type(sweep_report_t) :: rep
@@ -303,13 +308,20 @@ contains
         rep%ranks = e%nranks
         rep%note = ''
 
-        call file_crc(deck_path, e%deck_crc, stat)
-        if (stat%code /= STATUS_OK) then
-            stat%msg = analysis//': cannot read the deck for the checkpoint''s fingerprint: '// &
-                stat%msg
-            return
+        if (present(payload)) then
+            e%payload = payload
+        else
+            allocate (e%payload(0))
         end if
-        e%exe_crc = executable_crc()
+        if (len(ckpt) > 0 .or. e%nranks > 1) then      ! (a fingerprint is needed)
+            call deck_crc(deck_path, e%payload, e%deck_crc, stat)
+            if (stat%code /= STATUS_OK) then
+                stat%msg = analysis//': cannot read the deck for the sweep''s fingerprint: '// &
+                    stat%msg
+                return
+            end if
+            e%exe_crc = executable_crc()
+        end if
 
         had_ckpt = .false.
         if (len(ckpt) > 0 .and. opt%resume) then
@@ -360,7 +372,8 @@ contains
         real(dp), allocatable :: m(:)
         m = [real(e%id, dp), real(e%n, dp), real(e%nv, dp), crc_parts(e%deck_crc), &
              crc_parts(e%exe_crc), real(len(e%analysis), dp), real(len(deck_path), dp), &
-             chars_to_reals(e%analysis), chars_to_reals(deck_path)]
+             real(size(e%payload), dp), chars_to_reals(e%analysis), chars_to_reals(deck_path), &
+             e%payload]
     end function job_message
 
     !> Rank 0 after its threads are done: answer the other ranks until every one has left,
@@ -525,7 +538,7 @@ contains
     subroutine sweep_next_job(job, quit)
         type(sweep_job_t), intent(out) :: job       !! the sweep, when quit is false
         logical, intent(out) :: quit                !! the program ends
-        integer :: tag, la, lp
+        integer :: tag, la, lp, lq
         real(dp), allocatable :: m(:)
         quit = .false.
         do
@@ -534,7 +547,7 @@ contains
                 quit = .true.
                 return
             end if
-            if (tag == TAG_JOB .and. size(m) >= 9) exit
+            if (tag == TAG_JOB .and. size(m) >= 10) exit
         end do                                      ! (a stray message of an ended sweep)
         job%id = nint(m(1))
         job%npoints = nint(m(2))
@@ -543,8 +556,10 @@ contains
         job%exe_crc = crc_join(m(6:7))
         la = nint(m(8))
         lp = nint(m(9))
-        job%analysis = reals_to_chars(m(10:9 + la))
-        job%deck_path = reals_to_chars(m(10 + la:9 + la + lp))
+        lq = nint(m(10))
+        job%analysis = reals_to_chars(m(11:10 + la))
+        job%deck_path = reals_to_chars(m(11 + la:10 + la + lp))
+        job%payload = m(11 + la + lp:10 + la + lp + lq)
         sweeps_run = job%id
     end subroutine sweep_next_job
 
@@ -586,7 +601,7 @@ contains
         type(sweep_job_t), intent(in) :: job
         type(status_t), intent(out) :: stat
         integer(int64) :: crc
-        call file_crc(job%deck_path, crc, stat)
+        call deck_crc(job%deck_path, job%payload, crc, stat)
         if (stat%code /= STATUS_OK) return
         if (crc /= job%deck_crc) then
             call set_error(stat, ERR_DECK, 'reads another deck at '//job%deck_path// &
@@ -1057,6 +1072,17 @@ contains
         close (u)
         if (ios /= 0) call set_error(stat, ERR_DECK, 'cannot read '//path//': '//trim(msg))
     end subroutine file_crc
+
+    !> The deck's part of a fingerprint: CRC-64 of the deck file's bytes continued over the
+    !! bytes of the payload.
+    subroutine deck_crc(path, payload, crc, stat)
+        character(len=*), intent(in) :: path        !! the deck
+        real(dp), intent(in) :: payload(:)          !! the sweep's payload (may be empty)
+        integer(int64), intent(out) :: crc
+        type(status_t), intent(out) :: stat         !! ERR_DECK: the deck cannot be read
+        call file_crc(path, crc, stat)
+        if (size(payload) > 0) crc = crc64(transfer(payload, repeat(' ', 8*size(payload))), crc)
+    end subroutine deck_crc
 
     !> CRC-64 of this process's executable (/proc/self/exe; 0 where there is none).
     integer(int64) function executable_crc()

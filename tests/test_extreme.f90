@@ -484,8 +484,9 @@ contains
 
     !> The shipped decks, read and made small: tau_end <= 2 with at most 40 rows, charts of
     !! at most 2 x 2 points, Floquet rtol >= 1e-8, work_precision left out (it times at
-    !! least 0.05 s per point; the mutations put it back now and then).  Each as its group
-    !! lines, all eight groups present.
+    !! least 0.05 s per point; the mutations put it back now and then), design left out
+    !! (its &design group is not among the fuzzed groups; test_design covers its input).
+    !! Each as its group lines, all eight groups present.
     subroutine load_bases(dir, bases)
         character(len=*), intent(in) :: dir
         type(base_t), allocatable, intent(out) :: bases(:)
@@ -510,8 +511,8 @@ contains
                 i1 = i2 + verify(d%analyses(i2 + 1:), ' ')
                 if (i1 == i2 .or. i1 > len_trim(d%analyses)) exit
                 i2 = i1 + index(d%analyses(i1:)//' ', ' ') - 2
-                if (d%analyses(i1:i2) /= 'work_precision') analyses = analyses//' '// &
-                    d%analyses(i1:i2)
+                if (d%analyses(i1:i2) /= 'work_precision' .and. d%analyses(i1:i2) /= &
+                    'design') analyses = analyses//' '//d%analyses(i1:i2)
             end do
             if (len(analyses) == 0) analyses = ' simulate'
             d%tau_end = min(d%tau_end, 2.0_dp)

@@ -40,6 +40,14 @@ module test_sweep
         '1.338541666666667,'//NL// &
         '      r = 2.06155281280883, lambda = 1.325817663668033, sway_depth = 4 /'//NL// &
         '&floquet amplitude = 45.0, segments = 1, rtol = 1e-6 /'//NL
+    !> The block of input/box_design.nml (SI units) for a rig design; its &design per test.
+    character(len=*), parameter :: RIG = &
+        "&scene title = 'sweep test design', analyses = 'design' /"//NL// &
+        '&suspension b = 0.2, b_prime = 0.2, l = 0.6, l_prime = 0.6, g = 9.80665 /'//NL// &
+        '&body mass = 2.0, inertia = 0.007083333333333333, 0.11333333333333333, '// &
+        '0.10708333333333333,'//NL// &
+        '      r = 0.412310562561766, lambda = 1.325817663668033, sway_depth = 0.8 /'//NL// &
+        '&floquet rtol = 1e-6 /'//NL
 
 contains
 
@@ -54,7 +62,10 @@ contains
             call test_checkpoints(t)
         if (t%want('sweep: chart killed after a checkpoint, resumed: the same file')) &
             call test_kill_resume(t, exe)
-        if (t%want('sweep mpi: charts on 1, 2, 3 ranks, killed ranks, other decks, failures')) &
+        if (t%want('sweep: design killed after a checkpoint, resumed: the same file')) &
+            call test_design_resume(t, exe)
+        if (t%want('sweep mpi: charts and designs on 1, 2, 3 ranks, killed ranks, other '// &
+                   'decks, failures')) &
             call test_mpi(t, exe)
     end subroutine run_sweep_tests
 
@@ -292,6 +303,36 @@ contains
     end subroutine test_kill_resume
 
     ! ---------------------------------------------------------------------------------------
+    !> A rig design (three sweeps) through bin/bifilar killed (SIGKILL) after the first
+    !! checkpoint of its grid's sweep and resumed: the uninterrupted file; the checkpoints
+    !! are removed with the commit.
+    subroutine test_design_resume(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d, deck
+        integer :: ex, nres
+        d = fresh('sweep_design')
+        deck = d//'/rig.nml'
+        call write_text(deck, RIG//'&design l_min = 0.1, l_max = 1.2, nl = 30, '// &
+                        'amplitude_max = 50, n_amplitudes = 6 /'//NL)
+        ex = run(exe//' '//deck//' --out '//d//'/ref', d)
+        call t%check('design kill: the uninterrupted design (exit 0)', all([ex == 0, &
+                     exists(d//'/ref/rig.design')]))
+        ex = run('tests/kill_run.sh '//d//'/out/rig.design.partial KILL '//exe//' '//deck// &
+                 ' --out '//d//'/out --checkpoint 0', d)
+        call t%check('design kill: killed after the first checkpoint (exit 137, got '// &
+                     itoa(ex)//')', all([ex == 137, .not. exists(d//'/out/rig.design')]))
+        ex = run(exe//' '//deck//' --out '//d//'/out --resume', d)
+        nres = resumed(d//'/stdout')
+        call t%check('design kill: resumed (exit 0, '//itoa(nres)//' points from the '// &
+                     'checkpoint)', all([ex == 0, nres > 0]))
+        call t%check('design kill: resumed file = uninterrupted file, byte for byte', &
+                     same_file(d//'/out/rig.design', d//'/ref/rig.design'))
+        call t%check('design kill: its checkpoints are removed with the commit', &
+                     shell_count('ls '//d//'/out | grep -c partial', d) == 0)
+    end subroutine test_design_resume
+
+    ! ---------------------------------------------------------------------------------------
     !> bin/bifilar_mpi and sweep_probe_mpi under mpirun (skipped, with a note, only when
     !! OpenMPI is not installed).
     subroutine test_mpi(t, exe)
@@ -334,6 +375,26 @@ contains
             call t%check('mpi: -np '//itoa(np)//': chart = serial chart, byte for byte', &
                          same_file(d//'/np'//itoa(np)//'/small.chart.dat', d// &
                          '/serial/small.chart.dat'))
+        end do
+
+        ! a rig design (three sweeps, the edges' with its payload) on 1, 2 and 3 ranks
+        call write_text(d//'/lb.nml', RIG//'&design l_min = 0.9, l_max = 1.2, nl = 7, '// &
+                        'b_min = 0.18, b_max = 0.22, nb = 2, amplitude_max = 50, '// &
+                        'n_amplitudes = 3 /'//NL)
+        ex = run(exe//' '//d//'/lb.nml --out '//d//'/serial', d)
+        call t%check('mpi design: serial design (exit 0, with band edges)', all([ex == 0, &
+                     file_has(d//'/serial/lb.design', 'band_edges = ')]))
+        call t%check('mpi design: it has edges to bisect', &
+                     .not. file_has(d//'/serial/lb.design', 'band_edges = 0'))
+        do np = 1, 3
+            ex = run(MPIRUN//' -np '//itoa(np)//' '//mexe//' '//d//'/lb.nml --out '//d// &
+                     '/dnp'//itoa(np), d)
+            call t%check('mpi design: -np '//itoa(np)//': exit 0, one stdout line, nothing '// &
+                         'on stderr', all([ex == 0, lines(d//'/stdout') == 1, &
+                         lines(d//'/stderr') == 0]))
+            call t%check('mpi design: -np '//itoa(np)//': design = serial design, byte for '// &
+                         'byte', same_file(d//'/dnp'//itoa(np)//'/lb.design', d// &
+                         '/serial/lb.design'))
         end do
 
         ! a rank killed mid-sweep: one line, no chart, the checkpoint; resumed on 2 ranks

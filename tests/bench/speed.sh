@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Speed figures of make bench: instructions (valgrind --tool=callgrind, exact and repeatable)
 # and CPU time of one right-hand side, one Floquet analysis, one chart point, the start of
-# the process and the whole cylinder_l180 deck.  Usage: tests/bench/speed.sh BINDIR OUTFILE
+# the process, the whole cylinder_l180 deck and the 60 x 6 rig design (input/box_design.nml,
+# one thread).  Usage: tests/bench/speed.sh BINDIR OUTFILE
 # (BINDIR holds bifilar and bench_speed).  One unit's instructions are the difference of a
 # run with N units and one with 0, over N; its CPU time is from a run with more units.
 set -euo pipefail
@@ -48,6 +49,9 @@ $(cpu_unit "$bin/bench_speed" floquet $deck 20)"
     echo "process_start $(cg "$bin/bifilar") $(cpu_process 200 "$bin/bifilar")"
     echo "cylinder_l180 $(cg "$bin/bifilar" input/cylinder_l180.nml --out "$scratch") \
 $(cpu_process 40 "$bin/bifilar" input/cylinder_l180.nml --out "$scratch")"
+    # the 60 x 6 rig design of the parallelepiped, whole process on one thread
+    echo "design_box_60x6 $(OMP_NUM_THREADS=1 cg "$bin/bifilar" input/box_design.nml --out \
+"$scratch") $(OMP_NUM_THREADS=1 cpu_process 3 "$bin/bifilar" input/box_design.nml --out "$scratch")"
 } > "$out.tmp"
 mv "$out.tmp" "$out"
 awk 'NR == 1 {next} {printf "%-28s %14.0f instructions %12.3e s cpu\n", $1, $2, $3}' "$out"
