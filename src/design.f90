@@ -741,10 +741,10 @@ contains
 
     end function no_candidate_message
 
-    !> The analysis `design` of a deck: the sweeps (design_sweep, checkpointed in outdir),
-    !! then OUTDIR/NAME.design, or, when no candidate qualifies, ERR_MODEL with the reason and
-    !! the range to try next (nothing written).  With `files` the file joins the run's others; without it it is
-    !! committed at once.
+    !> The analysis `design` of a deck: the sweeps (design_sweep, checkpointed in
+    !! outdir), then OUTDIR/NAME.design, or, when no candidate qualifies, ERR_MODEL with
+    !! the reason and the range to try next (nothing written).  With `files` the file
+    !! joins the run's others; without it it is committed at once.
     subroutine run_design(d, outdir, res, stat, files, options, report)
         type(deck_t), intent(in) :: d           !! the deck
         character(len=*), intent(in) :: outdir  !! output directory

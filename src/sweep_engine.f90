@@ -4,7 +4,8 @@
 !! `compute(i, values, stat)` gives a fixed number of reals), so points may be computed in
 !! any order, by any thread of any rank, and the values come back in index order: every
 !! file made from them is the same byte for byte whatever the ranks, threads or
-!! interruptions.  Used by the stability chart (module stability).
+!! interruptions.  Used by the stability chart (module stability) and the three sweeps of
+!! the rig design (module design).
 !!
 !! Work sharing (dynamic, because points differ a lot in cost): rank 0 keeps the list of
 !! points to do and hands them out in chunks, on request, to the other ranks (module
@@ -22,11 +23,12 @@
 !! at most 5 % of the time: the interval is at least 20 times the last write), each value as
 !! its 64-bit pattern in hexadecimal, with a fingerprint of the run: the analysis, the
 !! number of points and values, the CRC-64 of the deck file's bytes (and of the sweep's
-!! payload, when the task needs more than the deck) and of the executable (/proc/self/exe).  With `resume`, a checkpoint whose fingerprint matches supplies its
-!! points and the rest are computed; any other checkpoint is ignored (and replaced by the
-!! next one).  A sweep ended by a signal (SIGINT, SIGTERM, SIGHUP; mpirun sends SIGTERM to
-!! every rank when one dies) prints one line naming the deck and the checkpoint, removes
-!! the run's staged files and exits with status 128 + signal.
+!! payload, when the task needs more than the deck) and of the executable (/proc/self/exe).
+!! With `resume`, a checkpoint whose fingerprint matches supplies its points and the rest
+!! are computed; any other checkpoint is ignored (and replaced by the next one).  A sweep
+!! ended by a signal (SIGINT, SIGTERM, SIGHUP; mpirun sends SIGTERM to every rank when one
+!! dies) prints one line naming the deck and the checkpoint, removes the run's staged files
+!! and exits with status 128 + signal.
 !!
 !! Failures: a point whose compute returns an error ends the sweep with that error (the
 !! other ranks are told to stop; the sweep returns once every rank has finished its running
@@ -34,11 +36,12 @@
 !! the deck, reads another deck or runs another executable) ends it too; the checkpoint of
 !! an earlier run is then left as it was.
 !!
-!! Messages (payloads of reals, first element the sweep's number): rank 0 -> others JOB
-!! (a sweep begins: its size, fingerprint, analysis, deck and payload), WORK (a chunk of indices; none
-!! means nothing is left), STOP (drop your points: the sweep failed), BYE (your part of the
-!! sweep is over), QUIT (the program ends); others -> rank 0 RESULTS (completed points, and
-!! a request for more), ERROR (a point or the setup failed), LEAVE (last results: done).
+!! Messages (payloads of reals, first element the sweep's number): rank 0 -> others JOB (a
+!! sweep begins: its size, fingerprint, analysis, deck and payload), WORK (a chunk of
+!! indices; none means nothing is left), STOP (drop your points: the sweep failed), BYE
+!! (your part of the sweep is over), QUIT (the program ends); others -> rank 0 RESULTS
+!! (completed points, and a request for more), ERROR (a point or the setup failed), LEAVE
+!! (last results: done).
 module sweep_engine
     use, intrinsic :: iso_c_binding, only: c_int, c_char, c_funptr, c_funloc, c_null_char, &
         c_size_t
