@@ -181,6 +181,9 @@ module sweep_engine
     integer, save :: sig_tail_len(2) = 0
     character(kind=c_char), allocatable, save :: sig_tmp(:, :)
     integer, save :: sig_ntmp = 0
+    !> The checkpoint's temporary file while it is written (sig_writing = 1), removed too.
+    character(kind=c_char), allocatable, save :: sig_ckpt_tmp(:)
+    integer, save :: sig_writing = 0
     integer, save :: sig_kept = 1                  !! 1: no checkpoint yet, 2: one kept
     type(c_funptr), save :: sig_old(3)
     integer(c_int), parameter :: SIGNALS(3) = [2_c_int, 15_c_int, 1_c_int]  ! INT TERM HUP
@@ -845,6 +848,7 @@ contains
         type(status_t) :: st
         character(len=:), allocatable :: block
         character(len=17) :: hex
+        character(len=4096) :: tmp
         integer, parameter :: BLOCK_BYTES = 32768
         call system_clock(c0, rate)
         call atomic_open(e%ckpt, u, st)
@@ -852,6 +856,10 @@ contains
             call fail(e, ERR_IO, e%analysis//': checkpoint: '//st%msg, .false.)
             return
         end if
+        tmp = ''
+        inquire (unit=u, name=tmp)
+        call to_c(trim(tmp), sig_ckpt_tmp)
+        sig_writing = 1
         write (u, '(a)', iostat=ios) '# bifilar sweep checkpoint: the completed points; '// &
             'bifilar --resume continues from it (the fingerprint must match)'
         if (ios == 0) write (u, '(a,i0)', iostat=ios) 'format ', CHECKPOINT_FORMAT
@@ -877,6 +885,7 @@ contains
         call flush_block()
         if (ios == 0) write (u, '(a)', iostat=ios) 'end'
         call atomic_commit(u, e%ckpt, st, ios)
+        sig_writing = 0
         if (st%code /= STATUS_OK) then
             call fail(e, ERR_IO, e%analysis//': checkpoint: '//st%msg, .false.)
             return
@@ -1251,6 +1260,7 @@ contains
         do k = 1, sig_ntmp
             rcu = c_unlink_sig(sig_tmp(:, k))
         end do
+        if (sig_writing == 1) rcu = c_unlink_sig(sig_ckpt_tmp)
         rc = c_write(2_c_int, sig_head, int(size(sig_head) - 1, c_size_t))
         s = sig
         nd = 0
