@@ -300,6 +300,16 @@ contains
         call t%check('stale: its own deck''s checkpoint is used (the tampered 100 shows)', &
                      all([ex == 0, resumed(d//'/stdout') > 0, &
                      file_has(d//'/other/kchart.chart.dat', '1.000000000000000E+002')]))
+        ! without --resume the same checkpoint is ignored, and gone after the commit
+        call execute_command_line('cp '//d//'/kept.partial '//d//'/other/kchart.chart.partial'// &
+            ' && sed -i "/^done/{n;s/ [0-9A-F]\{16\}/ 4059000000000000/}" '//d// &
+            '/other/kchart.chart.partial')
+        ex = run(exe//' '//deck//' --out '//d//'/other', d)
+        call t%check('no --resume: the checkpoint is ignored (the uninterrupted file)', &
+                     all([ex == 0, resumed(d//'/stdout') == 0, .not. file_has(d//'/stdout', &
+                     'checkpoint'), same_file(d//'/other/kchart.chart.dat', ref)]))
+        call t%check('no --resume: the checkpoint is gone after the commit', &
+                     .not. exists(d//'/other/kchart.chart.partial'))
     end subroutine test_kill_resume
 
     ! ---------------------------------------------------------------------------------------
