@@ -3,11 +3,15 @@
 #   make test       run all tests (optimised build), last line "N passed, N failed";
 #                   ONLY=WORD runs the suites whose name contains WORD (e.g. ONLY=extreme)
 #   make check      run all tests in the checking build (-fcheck=all, FP traps)
+#   make mpi        bin/bifilar_mpi, the MPI build (mpirun -np N bin/bifilar_mpi DECK.nml);
+#                   installs OpenMPI when run as root, else prints the command and stops
 #   make run        run every deck in input/, write output/, draw plots/*.png
 #   make report     output/report.md (paper's claims against ours)
-#   make bench      integrator, scene, work-precision, elastic-cable, speed and design benchmarks
+#   make bench      integrator, scene, work-precision, elastic-cable, speed, design and MPI
+#                   benchmarks
 #                   (output/bench_*.dat, plots/work_precision_elastic.png; the speed figures
-#                   count instructions with valgrind --tool=callgrind)
+#                   count instructions with valgrind --tool=callgrind; the MPI figures need
+#                   OpenMPI: make mpi)
 #   make memcheck   valgrind (leaks, invalid accesses) on bin/bifilar with a paper deck
 #   make deps       install what a fresh machine lacks (gnuplot)
 #   make clean      remove everything built or written
@@ -39,18 +43,36 @@ LIBS := -static-libgcc -Wl,--as-needed $(foreach l,lapack blas gfortran gomp qua
 endif
 FFLAGS += -fopenmp -std=f2008 -Wall -Wextra -Wno-compare-reals -fimplicit-none
 
+# The MPI build (MPI=1, made by `make mpi` and by the tests): the same sources compiled by
+# mpif90 into build-mpi (build-check-mpi), with src/parallel_mpi.f90 as module `parallel`
+# in place of the serial src/parallel.f90; executable $(BIN)/bifilar_mpi.  libgfortran and
+# libgomp stay shared there (OpenMPI's Fortran bindings link libgfortran.so), LAPACK and
+# BLAS are the same archives as in the serial build (the same numbers, byte for byte).
+MPI ?= 0
+ifeq ($(MPI),1)
+BUILD := $(BUILD)-mpi
+FC = mpif90
+ifneq ($(CHECK),1)
+LIBS := $(foreach l,lapack blas,$(call static_or_shared,$(l)))
+endif
+PARALLEL_SRC = src/parallel_mpi.f90
+else
+PARALLEL_SRC = src/parallel.f90
+endif
+
 # Library modules (one object each, named as the module) and test modules.
-LIB_MODULES = kinds status text progress sweep random lapack_wrap ode_system lsoda radau stepper \
+LIB_MODULES = kinds status text progress random lapack_wrap ode_system lsoda radau stepper \
               geometry kinematics gen_forces bifilar_model elastic_model elastic_gen \
               elastic_solver deck output_io fast_format simulate floquet paper_claims \
-              stability work_precision period_inversion design driver
+              parallel sweep_engine stability work_precision period_inversion design driver
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
 TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme \
                test_work_precision test_elastic test_elastic_jac test_fast_format test_columns \
-               test_radau test_elastic_radau test_robust test_period test_design
+               test_radau test_elastic_radau test_robust test_period test_design probe_task \
+               test_sweep
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
 
-.PHONY: all test check run report bench deps clean memcheck
+.PHONY: all test check run report bench deps clean memcheck mpi
 all: $(BIN)/bifilar
 
 $(BUILD) $(BIN):
@@ -59,10 +81,12 @@ $(BUILD) $(BIN):
 # Module dependencies, read from the sources' `use` lines (one module per file, named as
 # the file): each object depends on the objects of the modules it uses (gfortran writes the
 # .mod files beside them), so make -j builds in the right order and a change rebuilds only
-# its users.  build/deps.mk is remade whenever a source changes.
-SOURCES = $(wildcard src/*.f90 tests/*.f90)
+# its users.  build/deps.mk is remade whenever a source changes.  Of src/parallel.f90 and
+# src/parallel_mpi.f90 (both module `parallel`) each build reads its own as parallel.o.
+SOURCES = $(filter-out src/parallel.f90 src/parallel_mpi.f90,$(wildcard src/*.f90 tests/*.f90)) \
+          $(PARALLEL_SRC)
 $(BUILD)/deps.mk: $(SOURCES) | $(BUILD)
-	@for f in $(SOURCES); do b=$$(basename $$f .f90); \
+	@for f in $(SOURCES); do b=$$(basename $$f .f90); b=$${b%_mpi}; \
 	  for m in $$(sed -n 's/^ *use  *\([a-z0-9_]*\).*/\1/p' $$f | sort -u); do \
 	    if [ "$$m" != "$$b" ] && [ -f src/$$m.f90 -o -f tests/$$m.f90 ]; then \
 	      echo "$(BUILD)/$$b.o: $(BUILD)/$$m.o"; fi; \
@@ -71,11 +95,32 @@ include $(BUILD)/deps.mk
 
 $(BUILD)/%.o: src/%.f90 | $(BUILD)
 	$(FC) $(FFLAGS) -J$(BUILD) -c $< -o $@
+$(BUILD)/parallel.o: $(PARALLEL_SRC) | $(BUILD)
+	$(FC) $(FFLAGS) -J$(BUILD) -c $< -o $@
 $(BUILD)/%.o: tests/%.f90 | $(BUILD)
 	$(FC) $(FFLAGS) -J$(BUILD) -c $< -o $@
 
 $(BIN)/bifilar: src/bifilar.f90 $(LIB_OBJ) | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+
+$(BIN)/bifilar_mpi: src/bifilar.f90 $(LIB_OBJ) | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+
+$(BIN)/sweep_probe_mpi: tests/sweep_probe.f90 $(LIB_OBJ) $(BUILD)/probe_task.o | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/probe_task.o $(LIBS) -o $@
+
+# make mpi: OpenMPI (installed when missing and run as root), then bin/bifilar_mpi.
+mpi:
+	@command -v mpif90 >/dev/null 2>&1 && command -v mpirun >/dev/null 2>&1 || { \
+	  if [ "$$(id -u)" = 0 ]; then \
+	    echo "OpenMPI missing: installing openmpi-bin libopenmpi-dev"; \
+	    (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
+	      openmpi-bin libopenmpi-dev) >/dev/null || exit 1; \
+	  else \
+	    echo "OpenMPI is missing; install it with: sudo apt-get install -y openmpi-bin libopenmpi-dev" >&2; \
+	    exit 1; \
+	  fi; }
+	@$(MAKE) --no-print-directory MPI=1 $(BIN)/bifilar_mpi
 
 $(BIN)/run_tests: tests/run_tests.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@
@@ -83,7 +128,12 @@ $(BIN)/run_tests: tests/run_tests.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
 $(BIN)/bench_integrator: tests/bench_integrator.f90 $(LIB_OBJ) $(BUILD)/test_lsoda.o | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/test_lsoda.o $(BUILD)/testing.o $(LIBS) -o $@
 
+# The MPI tests (suite sweep) run $(BIN)/bifilar_mpi under mpirun: it is built here when
+# OpenMPI is installed; without OpenMPI the suite says so and skips them.
 test: $(BIN)/run_tests $(BIN)/bifilar
+	@if command -v mpif90 >/dev/null 2>&1; then \
+	  $(MAKE) --no-print-directory MPI=1 $(BIN)/bifilar_mpi $(BIN)/sweep_probe_mpi; \
+	else echo "note: no OpenMPI (mpif90): the MPI tests are skipped (make mpi installs it)"; fi
 	$(BIN)/run_tests $(BIN)/bifilar $(ONLY)
 
 check:
@@ -104,8 +154,11 @@ $(BIN)/bench_wp: tests/bench_wp.f90 $(LIB_OBJ) | $(BIN)
 $(BIN)/bench_speed: tests/bench_speed.f90 $(LIB_OBJ) | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
 
+$(BIN)/bench_sweep: tests/bench_sweep.f90 $(LIB_OBJ) $(BUILD)/probe_task.o | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/probe_task.o $(LIBS) -o $@
+
 bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench_elastic \
-       $(BIN)/bench_radau $(BIN)/bench_speed $(BIN)/bifilar
+       $(BIN)/bench_radau $(BIN)/bench_speed $(BIN)/bifilar $(BIN)/bench_sweep
 	mkdir -p output build/bench
 	$(BIN)/bench_integrator output/bench_integrator.dat
 	$(BIN)/bench_radau output/bench_radau.dat
@@ -123,6 +176,10 @@ bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench
 	$(BIN)/bifilar tests/bench/chart_cylinder.nml --out build/bench 2>/dev/null
 	@echo "60 x 6 rig design (input/box_design.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}; issue 14: under 20 s on 2 cores):"
 	$(BIN)/bifilar input/box_design.nml --out build/bench 2>/dev/null
+	@if command -v mpif90 >/dev/null 2>&1; then \
+	  $(MAKE) --no-print-directory MPI=1 $(BIN)/bifilar_mpi $(BIN)/sweep_probe_mpi; fi
+	@echo "MPI: strong scaling of the 60 x 45 chart, the cost of its points, the model of 1000 x 1000:"
+	tests/bench/mpi_scaling.sh $(BIN) output/bench_mpi.dat
 
 memcheck: $(BIN)/bifilar
 	mkdir -p build/memcheck
@@ -154,5 +211,5 @@ deps:
 	  fi; }
 
 clean:
-	rm -rf build build-check bin output/*.dat output/*.summary output/*.md output/*.design \
-	  output/*.tmp.* plots/*.png
+	rm -rf build build-check build-mpi build-check-mpi bin output/*.dat output/*.summary \
+	  output/*.md output/*.design output/*.tmp.* output/*.partial plots/*.png

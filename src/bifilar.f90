@@ -1,6 +1,7 @@
 !> bifilar: dynamics of the bifilar pendulum (Kane & Tseng 1966), driven by namelist decks.
 !!
-!! Usage:  bifilar DECK.nml [DECK.nml ...] [--out DIR]
+!! Usage:  bifilar DECK.nml [DECK.nml ...] [--out DIR] [--resume] [--checkpoint SECONDS]
+!!         mpirun -np N bifilar_mpi DECK.nml ... (the MPI build: sweeps over N ranks)
 !!         bifilar --report [DIR]   (DIR/report.md from the paper scenes' output in DIR)
 !!         bifilar --help | --version
 !! Runs each deck in turn (module driver) and writes DIR/NAME.* (DIR defaults to `output`
@@ -9,16 +10,23 @@
 !! 0 success, 1 usage, 2 bad deck, 3 numerical failure, 4 the model no longer holds (e.g. a
 !! cable goes slack), 5 output cannot be written.
 !!
+!! In the MPI build every rank starts here; rank 0 goes on as the serial program does, the
+!! others serve the sweeps rank 0 hands out (driver's serve_sweeps) until it ends the run.
+!!
 !! The program ends through C's exit() after flushing its output, so that nothing but its
 !! own lines reaches the terminal (gfortran's `error stop` adds "ERROR STOP n" and notes on
 !! floating-point flags).
 program bifilar
     use, intrinsic :: iso_c_binding, only: c_int
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+    use kinds, only: dp
     use status, only: status_t, STATUS_OK
     use output_io, only: make_dir
     use paper_claims, only: write_report
-    use driver, only: run_deck, exit_status, error_line, BIFILAR_VERSION, EXIT_OK, EXIT_USAGE
+    use driver, only: run_deck, exit_status, error_line, BIFILAR_VERSION, EXIT_OK, EXIT_USAGE, &
+        serve_sweeps
+    use sweep_engine, only: sweep_start, sweep_finish, sweep_is_master, sweep_library, &
+        sweep_options_t
     implicit none
     interface
         !> C library exit(3): ends the process with `status`, running the exit handlers
@@ -29,8 +37,8 @@ program bifilar
         end subroutine c_exit
     end interface
     character(len=*), parameter :: USAGE_LINE = &
-        'usage: bifilar DECK.nml [DECK.nml ...] [--out DIR] | bifilar --report [DIR] | '// &
-        'bifilar --help | bifilar --version'
+        'usage: bifilar DECK.nml [DECK.nml ...] [--out DIR] [--resume] [--checkpoint '// &
+        'SECONDS] | bifilar --report [DIR] | bifilar --help | bifilar --version'
     type :: arg_t
         character(len=:), allocatable :: s
     end type arg_t
@@ -38,9 +46,19 @@ program bifilar
     type(arg_t) :: outdir, arg, line, report_dir  ! strings in a type: gfortran 12 warns on
                                                    ! deferred-length ones of a main program
     type(status_t) :: stat
-    integer :: i, nargs, ndecks, worst
+    type(sweep_options_t) :: sweep_opts
+    integer :: i, nargs, ndecks, worst, ios
     logical :: report, options_done, out_given
 
+    call sweep_start(stat)
+    if (.not. sweep_is_master()) then
+        if (stat%code == STATUS_OK) call serve_sweeps()
+        call finish(EXIT_OK)
+    end if
+    if (stat%code /= STATUS_OK) then
+        call say(error_unit, error_line('', stat))
+        call finish(exit_status(stat%code))
+    end if
     nargs = command_argument_count()
     outdir%s = 'output'
     out_given = .false.
@@ -64,8 +82,24 @@ program bifilar
         else if (arg%s == '--help' .or. arg%s == '-h') then
             call help()
         else if (arg%s == '--version' .or. arg%s == '-V') then
-            write (output_unit, '(a)') 'bifilar '//BIFILAR_VERSION
+            if (sweep_library() == 'none (serial build)') then
+                write (output_unit, '(a)') 'bifilar '//BIFILAR_VERSION
+            else
+                write (output_unit, '(a)') 'bifilar '//BIFILAR_VERSION//' (MPI: '// &
+                    sweep_library()//')'
+            end if
             call finish(EXIT_OK)
+        else if (arg%s == '--resume') then
+            sweep_opts%resume = .true.
+        else if (arg%s == '--checkpoint' .or. index(arg%s, '--checkpoint=') == 1) then
+            arg%s = option_value('--checkpoint', 'a number of seconds')
+            read (arg%s, *, iostat=ios) sweep_opts%checkpoint_seconds
+            if (ios /= 0 .or. verify(trim(arg%s), '0123456789.eE+-') /= 0 .or. &
+                len_trim(arg%s) == 0) call usage('--checkpoint needs a number of seconds '// &
+                '(got '''//arg%s//''')')
+            if (.not. (sweep_opts%checkpoint_seconds >= 0.0_dp .and. &
+                       sweep_opts%checkpoint_seconds <= 1.0e6_dp)) &
+                call usage('--checkpoint SECONDS must be 0 ... 1e6 (got '//arg%s//')')
         else if (arg%s == '--report') then
             report = .true.
             if (i <= nargs) then
@@ -78,13 +112,7 @@ program bifilar
                 end if
             end if
         else if (arg%s == '--out' .or. index(arg%s, '--out=') == 1) then
-            if (arg%s == '--out') then
-                if (i > nargs) call usage('--out needs a folder name')
-                outdir%s = argument(i)
-                i = i + 1
-            else
-                outdir%s = arg%s(7:)
-            end if
+            outdir%s = option_value('--out', 'a folder name')
             if (len(outdir%s) == 0) call usage('--out needs a folder name (got an empty one)')
             out_given = .true.
         else if (arg%s(1:1) == '-' .and. len(arg%s) > 1) then
@@ -116,7 +144,7 @@ program bifilar
 
     worst = EXIT_OK
     do i = 1, ndecks
-        call run_deck(decks(i)%s, outdir%s, line%s, stat)
+        call run_deck(decks(i)%s, outdir%s, line%s, stat, sweep_opts)
         if (stat%code == STATUS_OK) then
             call say(output_unit, line%s)
         else
@@ -137,6 +165,21 @@ contains
         allocate (character(len=n) :: a)
         if (n > 0) call get_command_argument(k, a)
     end function argument
+
+    !> The value of option `name` in arg%s: `name VALUE` (the next argument) or
+    !! `name=VALUE`; a usage error when the value is missing.
+    function option_value(name, what) result(v)
+        character(len=*), intent(in) :: name        !! e.g. '--out'
+        character(len=*), intent(in) :: what        !! what the value is, for the message
+        character(len=:), allocatable :: v
+        if (arg%s == name) then
+            if (i > nargs) call usage(name//' needs '//what)
+            v = argument(i)
+            i = i + 1
+        else
+            v = arg%s(len(name) + 2:)
+        end if
+    end function option_value
 
     !> One line on a unit.
     subroutine say(unit, text)
@@ -161,6 +204,10 @@ contains
                  '.summary, ... per deck (NAME: the file name without .nml)')
         call say(output_unit, '  --out DIR       output folder (default output), created '// &
                  'when missing')
+        call say(output_unit, '  --resume        continue the sweeps (chart, design) from '// &
+                 'their checkpoints DIR/NAME.*.partial when of the same deck and executable')
+        call say(output_unit, '  --checkpoint S  write a sweep''s checkpoint at most every S '// &
+                 'seconds (default 5; at most 5 % of the time)')
         call say(output_unit, '  --report [DIR]  DIR/report.md from the paper scenes'' '// &
                  'output in DIR (default output)')
         call say(output_unit, '  --help, --version')
@@ -184,6 +231,7 @@ contains
         if (allocated(stat%msg)) deallocate (stat%msg)
         flush (output_unit)
         flush (error_unit)
+        call sweep_finish()
         call c_exit(int(status, c_int))
     end subroutine finish
 

@@ -33,10 +33,14 @@
 !!   tie).  When none qualifies the analysis fails with ERR_MODEL (exit 4) and a message that
 !!   says why and suggests the range to try next; nothing is written.
 !!
-!! The work is three sweeps of independent points (module sweep): the Floquet points
+!! The work is three sweeps of independent points (module sweep_engine): the Floquet points
 !! (candidate x amplitude), the band edges (one bisection each) and the candidates'
 !! precision; each point is computed from its index alone and the results are assembled in
-!! index order, so any order of computing (threads, or ranks) gives the same file.
+!! index order, so any order of computing (threads, or the ranks of bin/bifilar_mpi) gives
+!! the same file.  Each sweep is checkpointed (OUTDIR/NAME.design.partial,
+!! NAME.design_edges.partial, NAME.design_precision.partial) and resumed with --resume;
+!! the other ranks of an MPI run build the same tasks from the deck (design_task; the
+!! edges' sweep also from its payload, the list of edges).
 !!
 !! Output: OUTDIR/NAME.design (keys, the candidate table, the stable and unstable bands).
 module design
@@ -48,7 +52,8 @@ module design
     use simulate, only: make_pendulum
     use floquet, only: check_torsion_scene, STABILITY_MARGIN
     use stability, only: floquet_point, CHART_INVALID, CHART_FAILED
-    use sweep, only: sweep_work_t, run_sweep
+    use sweep_engine, only: sweep_task_t, sweep_run, sweep_options_t, sweep_report_t, &
+        checkpoint_path
     use period_inversion, only: input_u_t, period_fit_t, torsion_period_s, invert_periods, &
                                 period_budget, linear_inertia
     use output_io, only: out_files_t, write_kv
@@ -56,7 +61,11 @@ module design
     private
 
     public :: run_design, design_ready, design_grid, design_sweep, candidate_modulus
-    public :: candidate_precision, candidate_deck
+    public :: candidate_precision, candidate_deck, design_task
+
+    !> The design's three sweeps (their analysis names: checkpoints NAME.STAGE.partial).
+    character(len=*), parameter, public :: DESIGN_STAGES(3) = [character(len=16) :: &
+        'design', 'design_edges', 'design_precision']
 
     !> A Floquet point is stable when its largest multiplier is <= 1 + DESIGN_TOLERANCE.
     real(dp), parameter, public :: DESIGN_TOLERANCE = STABILITY_MARGIN
@@ -104,34 +113,34 @@ module design
 
     !> Sweep 1: Floquet point k = (amplitude j, l i, b m), amplitude fastest; value: the
     !! largest multiplier (or a sentinel).
-    type, extends(sweep_work_t) :: floquet_work_t
+    type, extends(sweep_task_t) :: floquet_work_t
         type(deck_t) :: d
         real(dp), allocatable :: ls(:), bs(:), amps(:)
     contains
-        procedure :: point => floquet_work_point
+        procedure :: compute => floquet_work_point
     end type floquet_work_t
 
     !> Sweep 2: edge e between l(il(e)) and l(il(e) + 1) at b(ib(e)), amplitude ia(e), with
     !! stability left_stable(e) at the left end; values: the edge and the Floquet points
     !! the bisection took.
-    type, extends(sweep_work_t) :: edge_work_t
+    type, extends(sweep_task_t) :: edge_work_t
         type(deck_t) :: d
         real(dp), allocatable :: ls(:), bs(:), amps(:)
         integer, allocatable :: il(:), ib(:), ia(:)
         logical, allocatable :: left_stable(:)
     contains
-        procedure :: point => edge_work_point
+        procedure :: compute => edge_work_point
     end type edge_work_t
 
     !> Sweep 3: candidate c = (l i, b m), l fastest; values: period (s), u(I1)/I1, linear
     !! error (-1 each when the period cannot be computed).
-    type, extends(sweep_work_t) :: precision_work_t
+    type, extends(sweep_task_t) :: precision_work_t
         type(deck_t) :: d
         real(dp), allocatable :: ls(:), bs(:)
         real(dp) :: amp = 0.0_dp                !! amplitude_max/2 (deg)
         type(input_u_t) :: u
     contains
-        procedure :: point => precision_work_point
+        procedure :: compute => precision_work_point
     end type precision_work_t
 
 contains
@@ -242,58 +251,64 @@ contains
     end function is_stable
 
     !> Sweep 1's point k.
-    subroutine floquet_work_point(work, k, vals)
-        class(floquet_work_t), intent(in) :: work
-        integer, intent(in) :: k
-        real(dp), intent(out) :: vals(:)
-        integer :: na, nl, j, i, m
-        na = size(work%amps)
-        nl = size(work%ls)
-        j = mod(k - 1, na) + 1
-        i = mod((k - 1)/na, nl) + 1
-        m = (k - 1)/(na*nl) + 1
-        call candidate_modulus(work%d, work%ls(i), work%bs(m), work%amps(j), vals(1))
+    subroutine floquet_work_point(self, i, values, stat)
+        class(floquet_work_t), intent(in) :: self
+        integer, intent(in) :: i
+        real(dp), intent(out) :: values(:)
+        type(status_t), intent(out) :: stat     !! always OK (sentinels in values)
+        integer :: na, nl, j, ic, m
+        stat%code = STATUS_OK
+        na = size(self%amps)
+        nl = size(self%ls)
+        j = mod(i - 1, na) + 1
+        ic = mod((i - 1)/na, nl) + 1
+        m = (i - 1)/(na*nl) + 1
+        call candidate_modulus(self%d, self%ls(ic), self%bs(m), self%amps(j), values(1))
     end subroutine floquet_work_point
 
     !> Sweep 2's edge e: bisection in l until the bracket is at most EDGE_RTOL l; the edge is
     !! the bracket's midpoint.
-    subroutine edge_work_point(work, k, vals)
-        class(edge_work_t), intent(in) :: work
-        integer, intent(in) :: k
-        real(dp), intent(out) :: vals(:)
+    subroutine edge_work_point(self, i, values, stat)
+        class(edge_work_t), intent(in) :: self
+        integer, intent(in) :: i
+        real(dp), intent(out) :: values(:)
+        type(status_t), intent(out) :: stat     !! always OK
         real(dp) :: lo, hi, mid, modulus
         integer :: n
-        lo = work%ls(work%il(k))
-        hi = work%ls(work%il(k) + 1)
+        stat%code = STATUS_OK
+        lo = self%ls(self%il(i))
+        hi = self%ls(self%il(i) + 1)
         n = 0
         do while (hi - lo > EDGE_RTOL*hi)
             mid = 0.5_dp*(lo + hi)
             if (.not. (mid > lo .and. mid < hi)) exit
-            call candidate_modulus(work%d, mid, work%bs(work%ib(k)), work%amps(work%ia(k)), &
+            call candidate_modulus(self%d, mid, self%bs(self%ib(i)), self%amps(self%ia(i)), &
                                    modulus)
             n = n + 1
-            if (is_stable(modulus) .eqv. work%left_stable(k)) then
+            if (is_stable(modulus) .eqv. self%left_stable(i)) then
                 lo = mid
             else
                 hi = mid
             end if
         end do
-        vals(1) = 0.5_dp*(lo + hi)
-        vals(2) = n
+        values(1) = 0.5_dp*(lo + hi)
+        values(2) = n
     end subroutine edge_work_point
 
     !> Sweep 3's candidate c.
-    subroutine precision_work_point(work, k, vals)
-        class(precision_work_t), intent(in) :: work
-        integer, intent(in) :: k
-        real(dp), intent(out) :: vals(:)
+    subroutine precision_work_point(self, i, values, stat)
+        class(precision_work_t), intent(in) :: self
+        integer, intent(in) :: i
+        real(dp), intent(out) :: values(:)
+        type(status_t), intent(out) :: stat     !! always OK (sentinels in values)
         type(status_t) :: st
-        integer :: i, m
-        i = mod(k - 1, size(work%ls)) + 1
-        m = (k - 1)/size(work%ls) + 1
-        call candidate_precision(work%d, work%ls(i), work%bs(m), work%amp, work%u, vals(1), &
-                                 vals(2), vals(3), st)
-        if (st%code /= STATUS_OK) vals(1:3) = CHART_INVALID
+        integer :: ic, m
+        stat%code = STATUS_OK
+        ic = mod(i - 1, size(self%ls)) + 1
+        m = (i - 1)/size(self%ls) + 1
+        call candidate_precision(self%d, self%ls(ic), self%bs(m), self%amp, self%u, values(1), &
+                                 values(2), values(3), st)
+        if (st%code /= STATUS_OK) values(1:3) = CHART_INVALID
     end subroutine precision_work_point
 
     !> The precision of candidate (l, b) measured by one period at amp_deg: its exact period
@@ -328,19 +343,28 @@ contains
     end subroutine candidate_precision
 
     !> The whole design of deck d (without writing): the three sweeps, the bands, the
-    !! margins and the recommendation (res%found).  `label` names the progress lines.
-    subroutine design_sweep(d, res, label)
+    !! margins and the recommendation (res%found).  `label` names the progress lines.  With
+    !! `outdir` the sweeps are checkpointed there (options: --resume, the interval); stat
+    !! and report say how the sweeps went (a failure: a rank that cannot take part, a
+    !! checkpoint that cannot be written).
+    subroutine design_sweep(d, res, label, stat, outdir, options, report)
         type(deck_t), intent(in) :: d           !! the deck (checked by design_ready)
         type(design_result_t), intent(out) :: res
         character(len=*), intent(in) :: label   !! progress label ('' for none)
+        type(status_t), intent(out), optional :: stat
+        character(len=*), intent(in), optional :: outdir    !! checkpoints' folder
+        type(sweep_options_t), intent(in), optional :: options
+        type(sweep_report_t), intent(out), optional :: report   !! of the three sweeps
         type(floquet_work_t) :: fw
         type(edge_work_t) :: ew
         type(precision_work_t) :: pw
+        type(status_t) :: st
+        type(sweep_report_t) :: rep, all
         real(dp), allocatable :: vals(:, :)
-        real(dp) :: secs
         integer :: na, nl, nb, i, j, m, e, ne
-        logical, allocatable :: st(:, :, :)
+        logical, allocatable :: sta(:, :, :)
 
+        all%note = ''
         call design_grid(d, res%ls, res%bs, res%amps)
         na = size(res%amps)
         nl = size(res%ls)
@@ -348,79 +372,78 @@ contains
         res%n_grid_points = na*nl*nb
         res%wall_seconds = 0.0_dp
 
-        ! 1. the grid's Floquet points
-        fw%d = d
-        fw%ls = res%ls
-        fw%bs = res%bs
-        fw%amps = res%amps
-        allocate (vals(1, na*nl*nb))
-        call run_sweep(fw, vals, plabel('Floquet points'), secs)
-        res%wall_seconds = res%wall_seconds + secs
-        res%modulus = reshape(vals(1, :), [na, nl, nb])
-        res%n_failed = count(res%modulus == CHART_FAILED)
-        allocate (st(na, nl, nb))
-        do m = 1, nb
-            do i = 1, nl
+        run: block
+            ! 1. the grid's Floquet points
+            call fill_task(d, [real(dp) ::], fw)
+            call sweep_run(fw, trim(DESIGN_STAGES(1)), d%path, ckpt(1), plabel('Floquet points'), &
+                           na*nl*nb, 1, vals, st, options, rep)
+            call add(rep)
+            if (st%code /= STATUS_OK) exit run
+            res%modulus = reshape(vals(1, :), [na, nl, nb])
+            res%n_failed = count(res%modulus == CHART_FAILED)
+            allocate (sta(na, nl, nb))
+            do m = 1, nb
+                do i = 1, nl
+                    do j = 1, na
+                        sta(j, i, m) = is_stable(res%modulus(j, i, m))
+                    end do
+                end do
+            end do
+
+            ! 2. the edges, one bisection each, in index order (b, amplitude, l)
+            ne = 0
+            do m = 1, nb
                 do j = 1, na
-                    st(j, i, m) = is_stable(res%modulus(j, i, m))
+                    ne = ne + count(sta(j, 1:nl - 1, m) .neqv. sta(j, 2:nl, m))
                 end do
             end do
-        end do
-
-        ! 2. the edges, one bisection each, in index order (b, amplitude, l)
-        ne = 0
-        do m = 1, nb
-            do j = 1, na
-                ne = ne + count(st(j, 1:nl - 1, m) .neqv. st(j, 2:nl, m))
-            end do
-        end do
-        res%n_edges = ne
-        ew%d = d
-        ew%ls = res%ls
-        ew%bs = res%bs
-        ew%amps = res%amps
-        allocate (ew%il(ne), ew%ib(ne), ew%ia(ne), ew%left_stable(ne))
-        e = 0
-        do m = 1, nb
-            do j = 1, na
-                do i = 1, nl - 1
-                    if (st(j, i, m) .eqv. st(j, i + 1, m)) cycle
-                    e = e + 1
-                    ew%il(e) = i
-                    ew%ib(e) = m
-                    ew%ia(e) = j
-                    ew%left_stable(e) = st(j, i, m)
+            res%n_edges = ne
+            allocate (ew%il(ne), ew%ib(ne), ew%ia(ne), ew%left_stable(ne))
+            e = 0
+            do m = 1, nb
+                do j = 1, na
+                    do i = 1, nl - 1
+                        if (sta(j, i, m) .eqv. sta(j, i + 1, m)) cycle
+                        e = e + 1
+                        ew%il(e) = i
+                        ew%ib(e) = m
+                        ew%ia(e) = j
+                        ew%left_stable(e) = sta(j, i, m)
+                    end do
                 end do
             end do
-        end do
-        deallocate (vals)
-        allocate (vals(2, ne))
-        if (ne > 0) then
-            call run_sweep(ew, vals, plabel('band edges'), secs)
-            res%wall_seconds = res%wall_seconds + secs
-        end if
-        allocate (res%edge_l(na, max(nl - 1, 1), nb))
-        res%edge_l = 0.0_dp
-        do e = 1, ne
-            res%edge_l(ew%ia(e), ew%il(e), ew%ib(e)) = vals(1, e)
-        end do
-        res%n_bisection_points = nint(sum(vals(2, :)))
+            allocate (res%edge_l(na, max(nl - 1, 1), nb))
+            res%edge_l = 0.0_dp
+            res%n_bisection_points = 0
+            if (ne > 0) then
+                call fill_task(d, edges_payload(ew), ew)
+                call sweep_run(ew, trim(DESIGN_STAGES(2)), d%path, ckpt(2), &
+                               plabel('band edges'), ne, 2, vals, st, options, rep, &
+                               payload=edges_payload(ew))
+                call add(rep)
+                if (st%code /= STATUS_OK) exit run
+                do e = 1, ne
+                    res%edge_l(ew%ia(e), ew%il(e), ew%ib(e)) = vals(1, e)
+                end do
+                res%n_bisection_points = nint(sum(vals(2, :)))
+            end if
 
-        ! 3. the precision of every candidate
-        pw%d = d
-        pw%ls = res%ls
-        pw%bs = res%bs
-        pw%amp = 0.5_dp*d%design_amplitude_max
-        pw%u = design_uncertainties(d)
-        deallocate (vals)
-        allocate (vals(3, nl*nb))
-        call run_sweep(pw, vals, plabel('precision'), secs)
-        res%wall_seconds = res%wall_seconds + secs
-        res%period_s = reshape(vals(1, :), [nl, nb])
-        res%u_rel = reshape(vals(2, :), [nl, nb])
-        res%linear_error = reshape(vals(3, :), [nl, nb])
+            ! 3. the precision of every candidate
+            call fill_task(d, [real(dp) ::], pw)
+            call sweep_run(pw, trim(DESIGN_STAGES(3)), d%path, ckpt(3), plabel('precision'), &
+                           nl*nb, 3, vals, st, options, rep)
+            call add(rep)
+            if (st%code /= STATUS_OK) exit run
+            res%period_s = reshape(vals(1, :), [nl, nb])
+            res%u_rel = reshape(vals(2, :), [nl, nb])
+            res%linear_error = reshape(vals(3, :), [nl, nb])
 
-        call assemble(res, st)
+            call assemble(res, sta)
+        end block run
+        ! (a stage not yet begun when the run was stopped has no checkpoint: no news)
+        if (all%resumed > 0 .and. all%note == 'no checkpoint to resume') all%note = ''
+        if (present(stat)) stat = st
+        if (present(report)) report = all
 
     contains
 
@@ -432,7 +455,88 @@ contains
             if (len(label) > 0) s = label//' ('//what//')'
         end function plabel
 
+        !> The checkpoint of stage k ('' without outdir).
+        function ckpt(k) result(p)
+            integer, intent(in) :: k
+            character(len=:), allocatable :: p
+            p = ''
+            if (present(outdir)) p = checkpoint_path(outdir, d%name, trim(DESIGN_STAGES(k)))
+        end function ckpt
+
+        !> Sum up a stage's report.
+        subroutine add(r)
+            type(sweep_report_t), intent(in) :: r
+            all%ranks = r%ranks
+            all%threads = r%threads
+            all%resumed = all%resumed + r%resumed
+            all%checkpoints = all%checkpoints + r%checkpoints
+            all%requests = all%requests + r%requests
+            all%wall_seconds = all%wall_seconds + r%wall_seconds
+            all%serve_seconds = all%serve_seconds + r%serve_seconds
+            if (len(all%note) == 0 .and. allocated(r%note)) all%note = r%note
+            res%wall_seconds = all%wall_seconds
+        end subroutine add
+
     end subroutine design_sweep
+
+    !> The task of one of the design's sweeps, by its name (DESIGN_STAGES), as the other
+    !! ranks of an MPI run build it: from the deck, and for the edges from the sweep's
+    !! payload (edges_payload); ERR_DECK for another name.
+    subroutine design_task(stage, d, payload, task, stat)
+        character(len=*), intent(in) :: stage   !! 'design', 'design_edges', 'design_precision'
+        type(deck_t), intent(in) :: d           !! the deck
+        real(dp), intent(in) :: payload(:)      !! the edges' sweep: il, ib, ia, left_stable
+        class(sweep_task_t), allocatable, intent(out) :: task
+        type(status_t), intent(out) :: stat     !! ERR_DECK: no such stage
+        stat%code = STATUS_OK
+        select case (stage)
+        case ('design')
+            allocate (floquet_work_t :: task)
+        case ('design_edges')
+            allocate (edge_work_t :: task)
+        case ('design_precision')
+            allocate (precision_work_t :: task)
+        case default
+            call set_error(stat, ERR_DECK, 'design: no sweep named '//stage)
+            return
+        end select
+        call fill_task(d, payload, task)
+    end subroutine design_task
+
+    !> Fill a task of the design's sweeps from the deck (and the edges from payload).
+    subroutine fill_task(d, payload, task)
+        type(deck_t), intent(in) :: d           !! the deck
+        real(dp), intent(in) :: payload(:)      !! the edges' sweep: il, ib, ia, left_stable
+        class(sweep_task_t), intent(inout) :: task  !! one of the stages' types
+        real(dp), allocatable :: amps(:)
+        integer :: ne
+        select type (task)
+        type is (floquet_work_t)
+            task%d = d
+            call design_grid(d, task%ls, task%bs, task%amps)
+        type is (edge_work_t)
+            task%d = d
+            call design_grid(d, task%ls, task%bs, task%amps)
+            ne = size(payload)/4
+            task%il = nint(payload(1:ne))
+            task%ib = nint(payload(ne + 1:2*ne))
+            task%ia = nint(payload(2*ne + 1:3*ne))
+            task%left_stable = payload(3*ne + 1:4*ne) > 0.5_dp
+        type is (precision_work_t)
+            task%d = d
+            call design_grid(d, task%ls, task%bs, amps)
+            task%amp = 0.5_dp*d%design_amplitude_max
+            task%u = design_uncertainties(d)
+        end select
+    end subroutine fill_task
+
+    !> The edges of the edges' sweep as reals: il, ib, ia, left_stable (1 or 0).
+    pure function edges_payload(ew) result(p)
+        type(edge_work_t), intent(in) :: ew
+        real(dp), allocatable :: p(:)
+        p = [real(ew%il, dp), real(ew%ib, dp), real(ew%ia, dp), merge(1.0_dp, 0.0_dp, &
+             ew%left_stable)]
+    end function edges_payload
 
     !> The uncertainties of &design as period_inversion's inputs: u_l on each cable, u_b on
     !! b and on b', none on g or the amplitude.
@@ -637,16 +741,18 @@ contains
 
     end function no_candidate_message
 
-    !> The analysis `design` of a deck: the sweeps (design_sweep), then OUTDIR/NAME.design, or,
-    !! when no candidate qualifies, ERR_MODEL with the reason and the range to try next
-    !! (nothing written).  With `files` the file joins the run's others; without it it is
-    !! committed at once.
-    subroutine run_design(d, outdir, res, stat, files)
+    !> The analysis `design` of a deck: the sweeps (design_sweep, checkpointed in
+    !! outdir), then OUTDIR/NAME.design, or, when no candidate qualifies, ERR_MODEL with
+    !! the reason and the range to try next (nothing written).  With `files` the file
+    !! joins the run's others; without it it is committed at once.
+    subroutine run_design(d, outdir, res, stat, files, options, report)
         type(deck_t), intent(in) :: d           !! the deck
         character(len=*), intent(in) :: outdir  !! output directory
         type(design_result_t), intent(out) :: res
         type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_MODEL (no candidate), ERR_IO
         type(out_files_t), intent(inout), optional, target :: files  !! the run's files
+        type(sweep_options_t), intent(in), optional :: options  !! --resume, the interval
+        type(sweep_report_t), intent(out), optional :: report   !! of the sweeps
         type(out_files_t), target :: own
         type(out_files_t), pointer :: fs
         integer :: u, ios, i, m, k, na
@@ -656,7 +762,8 @@ contains
         if (present(files)) fs => files
         call design_ready(d, stat)
         if (stat%code /= STATUS_OK) return
-        call design_sweep(d, res, d%name//': design')
+        call design_sweep(d, res, d%name//': design', stat, outdir, options, report)
+        if (stat%code /= STATUS_OK) return
         if (.not. res%found) then
             call set_error(stat, ERR_MODEL, no_candidate_message(d, res))
             return

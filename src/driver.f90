@@ -3,22 +3,28 @@
 !! with all their files in one out_files_t, and commit those files together at the end, or
 !! remove every one of them when anything fails.  The main program only reads the command
 !! line, calls run_deck for each deck and prints what comes back.
+!!
+!! In an MPI run (bin/bifilar_mpi) rank 0 runs the decks; the other ranks only compute
+!! points of sweeps (serve_sweeps): for each sweep rank 0 announces, they read the deck,
+!! build the same task and take part (module sweep_engine).
 module driver
     use kinds, only: dp
     use status, only: status_t, STATUS_OK, ERR_DECK, ERR_MODEL, ERR_IO
     use text, only: itoa, sci
     use deck, only: deck_t, read_deck, analysis_requested
-    use output_io, only: out_files_t
+    use output_io, only: out_files_t, remove_file
     use simulate, only: run_simulation, run_summary_t, simulation_ready, make_pendulum
-    use stability, only: run_floquet, run_chart, floquet_ready
+    use stability, only: run_floquet, run_chart, floquet_ready, chart_task, chart_task_t
+    use sweep_engine, only: sweep_options_t, sweep_report_t, sweep_job_t, sweep_task_t, &
+        sweep_next_job, sweep_serve, checkpoint_path
     use floquet, only: floquet_result_t
     use work_precision, only: run_work_precision, wp_result_t
-    use design, only: run_design, design_ready, design_result_t
+    use design, only: run_design, design_ready, design_result_t, design_task, DESIGN_STAGES
     use geometry, only: pendulum_t
     implicit none
     private
 
-    public :: run_deck, exit_status, error_line
+    public :: run_deck, exit_status, error_line, serve_sweeps
 
     !> Exit statuses of the program (README "Exit status").
     integer, parameter, public :: EXIT_OK = 0, EXIT_USAGE = 1, EXIT_DECK = 2, &
@@ -32,19 +38,25 @@ contains
     !> Run the deck at `path` into the folder `outdir` (which exists).  On success `line`
     !! is the deck's one summary line and stat is OK; on failure stat carries the error
     !! (its message without the deck's name: error_line adds it) and no file of the run is
-    !! left in outdir.
-    subroutine run_deck(path, outdir, line, stat)
+    !! left in outdir.  The sweeps (chart, design) run first, before any file of the run is
+    !! staged (the chart's before the design's); their checkpoints (OUTDIR/NAME.chart.partial,
+    !! NAME.design*.partial) are removed once the run's files are committed, and kept when
+    !! the run fails after them (--resume reuses them).
+    subroutine run_deck(path, outdir, line, stat, options)
         character(len=*), intent(in) :: path        !! deck file
         character(len=*), intent(in) :: outdir      !! output folder
         character(len=:), allocatable, intent(out) :: line   !! summary (on success)
         type(status_t), intent(out) :: stat         !! the first failure
+        type(sweep_options_t), intent(in), optional :: options   !! --resume, --checkpoint
         type(deck_t) :: d
+        type(sweep_report_t) :: rep
+        character(len=:), allocatable :: chart_part, design_part
         type(out_files_t) :: files
         type(run_summary_t) :: sm
         type(floquet_result_t) :: fr
         type(wp_result_t) :: wp
         type(design_result_t) :: dr
-        integer :: nstable, nfailed
+        integer :: nstable, nfailed, k
         real(dp) :: secs
         character(len=64) :: buf
 
@@ -64,7 +76,33 @@ contains
         if (stat%code /= STATUS_OK) return
 
         line = d%name//':'
+        chart_part = ''
+        design_part = ''
         run: block
+            if (analysis_requested(d, 'chart')) then
+                call run_chart(d, outdir, nstable, secs, stat, files=files, nfailed=nfailed, &
+                               options=options, report=rep)
+                if (stat%code /= STATUS_OK) exit run
+                write (buf, '(f0.2)') secs
+                chart_part = ' chart '//itoa(d%chart_nx*d%chart_ny)//' points, '// &
+                    itoa(nstable)//' stable, '//lead0(buf)//' s'//ranks_note(rep)
+                if (nfailed > 0) chart_part = chart_part//', '//itoa(nfailed)// &
+                    ' failed (-2 in the file)'
+                chart_part = chart_part//resume_note(rep)//';'
+            end if
+            if (analysis_requested(d, 'design')) then
+                call run_design(d, outdir, dr, stat, files=files, options=options, report=rep)
+                if (stat%code /= STATUS_OK) exit run
+                write (buf, '(f0.2)') dr%wall_seconds
+                design_part = ' design '//itoa(size(dr%ls)*size(dr%bs))//' candidates x '// &
+                    itoa(size(dr%amps))//' amplitudes, '//itoa(dr%n_stable)//' stable, '// &
+                    'recommended l = '//sci(dr%ls(dr%il), 4)//', b = '//sci(dr%bs(dr%ib), 4)// &
+                    ', u(I1)/I1 = '//sci(dr%u_rel(dr%il, dr%ib), 2)//', '//lead0(buf)//' s'// &
+                    ranks_note(rep)
+                if (dr%n_failed > 0) design_part = design_part//', '//itoa(dr%n_failed)// &
+                    ' failed points'
+                design_part = design_part//resume_note(rep)//';'
+            end if
             if (analysis_requested(d, 'work_precision')) then
                 call run_work_precision(d, outdir, wp, stat, quiet=.true., files=files)
                 if (stat%code /= STATUS_OK) exit run
@@ -80,26 +118,7 @@ contains
                 line = line//' floquet period '//lead0(buf)//', max modulus '// &
                     sci(fr%max_modulus, 5)//', stable '//trim(merge('yes', 'no ', fr%stable))//';'
             end if
-            if (analysis_requested(d, 'chart')) then
-                call run_chart(d, outdir, nstable, secs, stat, files=files, nfailed=nfailed)
-                if (stat%code /= STATUS_OK) exit run
-                write (buf, '(f0.2)') secs
-                line = line//' chart '//itoa(d%chart_nx*d%chart_ny)//' points, '//itoa(nstable)// &
-                    ' stable, '//lead0(buf)//' s'
-                if (nfailed > 0) line = line//', '//itoa(nfailed)//' failed (-2 in the file)'
-                line = line//';'
-            end if
-            if (analysis_requested(d, 'design')) then
-                call run_design(d, outdir, dr, stat, files=files)
-                if (stat%code /= STATUS_OK) exit run
-                write (buf, '(f0.2)') dr%wall_seconds
-                line = line//' design '//itoa(size(dr%ls)*size(dr%bs))//' candidates x '// &
-                    itoa(size(dr%amps))//' amplitudes, '//itoa(dr%n_stable)//' stable, '// &
-                    'recommended l = '//sci(dr%ls(dr%il), 4)//', b = '//sci(dr%bs(dr%ib), 4)// &
-                    ', u(I1)/I1 = '//sci(dr%u_rel(dr%il, dr%ib), 2)//', '//lead0(buf)//' s'
-                if (dr%n_failed > 0) line = line//', '//itoa(dr%n_failed)//' failed points'
-                line = line//';'
-            end if
+            line = line//chart_part//design_part
             if (analysis_requested(d, 'simulate')) then
                 call run_simulation(d, outdir, sm, stat, files=files)
                 if (stat%code /= STATUS_OK) exit run
@@ -110,11 +129,76 @@ contains
                     sci(sm%max_abs_constraint_residual, 2)//';'
             end if
             call files%commit(stat)                 ! on failure it removes them all
-            if (stat%code == STATUS_OK) line = line(1:len(line) - 1)
+            if (stat%code == STATUS_OK) then
+                line = line(1:len(line) - 1)
+                if (analysis_requested(d, 'chart')) &
+                    call remove_file(checkpoint_path(outdir, d%name, 'chart'))
+                if (analysis_requested(d, 'design')) then
+                    do k = 1, size(DESIGN_STAGES)
+                        call remove_file(checkpoint_path(outdir, d%name, trim(DESIGN_STAGES(k))))
+                    end do
+                end if
+            end if
             return
         end block run
         call files%discard()                    ! a failed analysis: remove every file
     end subroutine run_deck
+
+    !> The other ranks of an MPI run: for each sweep rank 0 announces, read its deck, build
+    !! its task and compute points, until rank 0 ends the program.
+    subroutine serve_sweeps()
+        type(sweep_job_t) :: job
+        type(deck_t) :: d
+        type(status_t) :: st
+        class(sweep_task_t), allocatable :: task
+        type(chart_task_t), allocatable :: chart
+        logical :: quit
+        do
+            call sweep_next_job(job, quit)
+            if (quit) return
+            call read_deck(job%deck_path, d, st)
+            if (st%code == STATUS_OK) then
+                select case (job%analysis)
+                case ('chart')
+                    allocate (chart)
+                    call chart_task(d, chart, st)
+                    call move_alloc(chart, task)
+                case ('design', 'design_edges', 'design_precision')
+                    call design_task(job%analysis, d, job%payload, task, st)
+                case default
+                    st%code = ERR_DECK
+                    st%msg = 'no sweep named '//job%analysis//' in this executable'
+                end select
+            else
+                st%msg = job%deck_path//': '//st%msg
+            end if
+            if (allocated(task) .and. st%code == STATUS_OK) then
+                call sweep_serve(job, st, task)
+            else
+                call sweep_serve(job, st)
+            end if
+            if (allocated(task)) deallocate (task)
+        end do
+    end subroutine serve_sweeps
+
+    !> ' on N ranks' for a sweep of an MPI run ('' on one rank).
+    function ranks_note(rep) result(s)
+        type(sweep_report_t), intent(in) :: rep     !! the sweep's report
+        character(len=:), allocatable :: s
+        s = ''
+        if (rep%ranks > 1) s = ' on '//itoa(rep%ranks)//' ranks'
+    end function ranks_note
+
+    !> What a sweep took from its checkpoint, or why it could not (--resume).
+    function resume_note(rep) result(s)
+        type(sweep_report_t), intent(in) :: rep     !! the sweep's report
+        character(len=:), allocatable :: s
+        s = ''
+        if (rep%resumed > 0) s = ', '//itoa(rep%resumed)//' resumed from the checkpoint'
+        if (allocated(rep%note)) then
+            if (len(rep%note) > 0) s = s//', '//rep%note//': computed afresh'
+        end if
+    end function resume_note
 
     !> The preconditions of analyses = 'chart': the deck's own scene has a reachable
     !! geometry (each point of the grid is checked when it is computed).

@@ -62,6 +62,8 @@ module output_io
         procedure :: discard => files_discard
         procedure :: count => files_count
         procedure :: path => files_path
+        procedure :: waiting => files_waiting
+        procedure :: temporary => files_temporary
     end type out_files_t
 
     !> Tries of temporary names PATH.tmp.PID.N before giving up.
@@ -386,6 +388,35 @@ contains
             end if
         end do
     end function files_path
+
+    !> Number of files of the run still under their temporary names (open or staged).
+    integer function files_waiting(self)
+        class(out_files_t), intent(in) :: self
+        integer :: k
+        files_waiting = 0
+        do k = 1, self%n
+            if (self%f(k)%state == ENTRY_OPEN .or. self%f(k)%state == ENTRY_STAGED) &
+                files_waiting = files_waiting + 1
+        end do
+    end function files_waiting
+
+    !> Temporary name of the k-th file of the run still under it ('' when there is none).
+    function files_temporary(self, k) result(p)
+        class(out_files_t), intent(in) :: self
+        integer, intent(in) :: k                    !! 1 .. %waiting()
+        character(len=:), allocatable :: p
+        integer :: i, m
+        p = ''
+        m = 0
+        do i = 1, self%n
+            if (self%f(i)%state /= ENTRY_OPEN .and. self%f(i)%state /= ENTRY_STAGED) cycle
+            m = m + 1
+            if (m == k) then
+                p = self%f(i)%tmp
+                return
+            end if
+        end do
+    end function files_temporary
 
     !> The folder part of a path ('.' when none).
     pure function folder_of(path) result(dir)

@@ -3,10 +3,11 @@
 !!
 !! Writes OUTDIR/NAME.floquet (key = value lines and the multiplier table) and
 !! OUTDIR/NAME.chart.dat (x, y, max_modulus, period), each through a temporary file.
-!! The chart's points are a sweep of module sweep (one point from its index: chart_point),
-!! run in parallel with OpenMP (OMP_NUM_THREADS is honoured) with one line of progress on
-!! standard error when that is a terminal; floquet_point is the point shared with the rig
-!! design (module design).
+!! The chart's points are a sweep (module sweep_engine): spread over the OpenMP threads
+!! (OMP_NUM_THREADS is honoured) and, in bin/bifilar_mpi, over the MPI ranks, checkpointed
+!! to OUTDIR/NAME.chart.partial as they complete, with one line of progress on standard
+!! error when that is a terminal (module progress); floquet_point is the point shared with
+!! the rig design (module design).
 module stability
     use kinds, only: dp, deg
     use status, only: status_t, set_error, ERR_NUMERIC, ERR_DECK, ERR_MODEL
@@ -17,12 +18,14 @@ module stability
                        FLOQUET_MAX_STEPS
     use lsoda, only: LSODA_ERR_MAX_STEPS
     use output_io, only: out_files_t, write_kv
-    use sweep, only: sweep_work_t, run_sweep
+    use sweep_engine, only: sweep_task_t, sweep_run, sweep_options_t, sweep_report_t, &
+        checkpoint_path
     use text, only: itoa
     implicit none
     private
 
-    public :: run_floquet, run_chart, set_chart_variable, floquet_ready, floquet_point
+    public :: run_floquet, run_chart, set_chart_variable, floquet_ready, chart_task
+    public :: floquet_point
 
     !> Sentinel written for chart points where no analysis is possible (not a torsion scene,
     !! cables cannot reach, impossible inertia): never NaN.
@@ -31,18 +34,18 @@ module stability
     !! FLOQUET_MAX_STEPS steps): never NaN.
     real(dp), parameter, public :: CHART_FAILED = -2.0_dp
 
-    !> The points of a chart (module sweep): point k = (i, j), x index i fastest; its values
-    !! are max_modulus and period.
-    type, extends(sweep_work_t) :: chart_work_t
-        type(pendulum_t) :: p0                  !! the deck's scene (scaled)
+    !> The points of a chart as a sweep: point k = (i, j) of the grid, x index i fastest
+    !! (k = (j - 1) nx + i); its values are max_modulus and period.
+    type, extends(sweep_task_t), public :: chart_task_t
+        type(pendulum_t) :: p0                  !! the deck's scene
         character(len=16) :: x = '', y = ''     !! the swept variables
         real(dp), allocatable :: xs(:), ys(:)   !! their grids (chart units)
         real(dp) :: amplitude = 0.0_dp          !! &floquet amplitude (degrees)
         real(dp) :: rtol = 0.0_dp               !! &floquet rtol
         integer :: segments = 1                 !! &floquet segments
     contains
-        procedure :: point => chart_point
-    end type chart_work_t
+        procedure :: compute => chart_point
+    end type chart_task_t
 
 contains
 
@@ -155,21 +158,47 @@ contains
         end select
     end subroutine set_chart_variable
 
-    !> Chart point k: vals = [max_modulus, period] (sentinels, see floquet_point).
-    subroutine chart_point(work, k, vals)
-        class(chart_work_t), intent(in) :: work
-        integer, intent(in) :: k                !! 1 .. nx*ny, x index fastest
-        real(dp), intent(out) :: vals(:)        !! max_modulus, period
+    !> The chart of a deck as a sweep (also built by the other ranks of an MPI run from the
+    !! same deck): the scene, the swept variables and their grids.
+    subroutine chart_task(d, task, stat)
+        type(deck_t), intent(in) :: d           !! the deck
+        type(chart_task_t), intent(out) :: task
+        type(status_t), intent(out) :: stat     !! ERR_DECK when the scene cannot be made
+        integer :: i, j
+        call make_pendulum(d, task%p0, stat)
+        if (stat%code /= 0) return
+        allocate (task%xs(d%chart_nx), task%ys(d%chart_ny))
+        do i = 1, d%chart_nx
+            task%xs(i) = d%chart_x_min + (d%chart_x_max - d%chart_x_min)*(i - 1)/(d%chart_nx - 1)
+        end do
+        do j = 1, d%chart_ny
+            task%ys(j) = d%chart_y_min + (d%chart_y_max - d%chart_y_min)*(j - 1)/(d%chart_ny - 1)
+        end do
+        task%x = d%chart_x
+        task%y = d%chart_y
+        task%amplitude = d%floquet_amplitude
+        task%rtol = d%floquet_rtol
+        task%segments = d%floquet_segments
+    end subroutine chart_task
+
+    !> Chart point k: values = [max_modulus, period] (sentinels, see floquet_point).  Never
+    !! fails itself.
+    subroutine chart_point(self, i, values, stat)
+        class(chart_task_t), intent(in) :: self
+        integer, intent(in) :: i                !! 1 .. nx*ny, x index fastest
+        real(dp), intent(out) :: values(:)      !! max_modulus, period
+        type(status_t), intent(out) :: stat     !! always OK
         type(pendulum_t) :: p
         real(dp) :: amp
-        integer :: i, j
-        i = mod(k - 1, size(work%xs)) + 1
-        j = (k - 1)/size(work%xs) + 1
-        p = work%p0
-        amp = work%amplitude
-        call set_chart_variable(work%x, work%xs(i), p, amp)
-        call set_chart_variable(work%y, work%ys(j), p, amp)
-        call floquet_point(p, amp, work%rtol, work%segments, vals(1), vals(2))
+        integer :: ix, iy
+        stat%code = 0
+        ix = mod(i - 1, size(self%xs)) + 1
+        iy = (i - 1)/size(self%xs) + 1
+        p = self%p0
+        amp = self%amplitude
+        call set_chart_variable(self%x, self%xs(ix), p, amp)
+        call set_chart_variable(self%y, self%ys(iy), p, amp)
+        call floquet_point(p, amp, self%rtol, self%segments, values(1), values(2))
     end subroutine chart_point
 
     !> One point of a stability sweep (chart, design): the largest multiplier and the period
@@ -209,9 +238,12 @@ contains
 
     !> Stability chart over the grid of &chart: OUTDIR/NAME.chart.dat with one row per point,
     !! `x y max_modulus period` (CHART_INVALID where no analysis is possible, CHART_FAILED
-    !! where it failed), a blank line after each x (gnuplot grid format).  With `files` the
-    !! file joins the run's others (see run_simulation); without it it is committed at once.
-    subroutine run_chart(d, outdir, nstable, wall_seconds, stat, files, nfailed)
+    !! where it failed), a blank line after each x (gnuplot grid format).  The points are a
+    !! sweep over threads and ranks, checkpointed to OUTDIR/NAME.chart.partial (see module
+    !! sweep_engine; `options`: --resume and the checkpoint interval).  With `files` the file
+    !! joins the run's others (see run_simulation); without it it is committed at once.
+    subroutine run_chart(d, outdir, nstable, wall_seconds, stat, files, nfailed, options, &
+                         report)
         type(deck_t), intent(in) :: d           !! the deck
         character(len=*), intent(in) :: outdir  !! output directory
         integer, intent(out) :: nstable         !! number of stable points
@@ -219,30 +251,28 @@ contains
         type(status_t), intent(out) :: stat
         type(out_files_t), intent(inout), optional, target :: files  !! the run's files
         integer, intent(out), optional :: nfailed   !! number of points whose analysis failed
+        type(sweep_options_t), intent(in), optional :: options  !! resume, checkpoint interval
+        type(sweep_report_t), intent(out), optional :: report   !! ranks, resumed points, ...
         type(out_files_t), target :: own
         type(out_files_t), pointer :: fs
-        type(chart_work_t) :: w
+        type(chart_task_t) :: task
+        type(sweep_report_t) :: rep
         real(dp), allocatable :: vals(:, :), mods(:, :), pers(:, :)
         integer :: i, j, u, ios
         character(len=:), allocatable :: path
 
         fs => own
         if (present(files)) fs => files
-        call make_pendulum(d, w%p0, stat)
+        wall_seconds = 0.0_dp
+        nstable = 0
+        if (present(nfailed)) nfailed = 0
+        call chart_task(d, task, stat)
         if (stat%code /= 0) return
-        w%x = d%chart_x
-        w%y = d%chart_y
-        w%amplitude = d%floquet_amplitude
-        w%rtol = d%floquet_rtol
-        w%segments = d%floquet_segments
-        allocate (w%xs(d%chart_nx), w%ys(d%chart_ny), vals(2, d%chart_nx*d%chart_ny))
-        do i = 1, d%chart_nx
-            w%xs(i) = d%chart_x_min + (d%chart_x_max - d%chart_x_min)*(i - 1)/(d%chart_nx - 1)
-        end do
-        do j = 1, d%chart_ny
-            w%ys(j) = d%chart_y_min + (d%chart_y_max - d%chart_y_min)*(j - 1)/(d%chart_ny - 1)
-        end do
-        call run_sweep(w, vals, d%name//': chart', wall_seconds)
+        call sweep_run(task, 'chart', d%path, checkpoint_path(outdir, d%name, 'chart'), &
+                       d%name//': chart', d%chart_nx*d%chart_ny, 2, vals, stat, options, rep, fs)
+        if (present(report)) report = rep
+        if (stat%code /= 0) return
+        wall_seconds = rep%wall_seconds
         mods = reshape(vals(1, :), [d%chart_nx, d%chart_ny])
         pers = reshape(vals(2, :), [d%chart_nx, d%chart_ny])
         nstable = count(mods >= 0.0_dp .and. mods <= 1.0_dp + 1.0e-6_dp)
@@ -262,8 +292,8 @@ contains
         if (ios == 0) write (u, '(a)', iostat=ios) '# x y max_modulus period'
         do i = 1, d%chart_nx
             do j = 1, d%chart_ny
-                if (ios == 0) write (u, '(4es24.15e3)', iostat=ios) w%xs(i), w%ys(j), mods(i, j), &
-                    pers(i, j)
+                if (ios == 0) write (u, '(4es24.15e3)', iostat=ios) task%xs(i), task%ys(j), &
+                    mods(i, j), pers(i, j)
             end do
             if (ios == 0) write (u, '(a)', iostat=ios) ''
         end do

@@ -17,6 +17,7 @@ program run_tests
     use test_columns, only: run_columns_tests
     use test_period, only: run_period_tests
     use test_design, only: run_design_tests
+    use test_sweep, only: run_sweep_tests
     implicit none
     type(tester_t) :: t
     character(len=1024) :: exe, filter
@@ -41,5 +42,6 @@ program run_tests
     call run_columns_tests(t, trim(exe))
     call run_period_tests(t)
     call run_design_tests(t, trim(exe))
+    call run_sweep_tests(t, trim(exe))
     if (.not. t%summary()) error stop 1
 end program run_tests

@@ -12,7 +12,7 @@ module test_deck
     implicit none
     private
 
-    public :: run_deck_tests, write_text, exists, shell_count
+    public :: run_deck_tests, write_text, exists, shell_count, msg_of
 
     character(len=*), parameter :: DEFAULT_SCRATCH = 'build/test_decks'
     character, parameter :: NL = new_line('a')

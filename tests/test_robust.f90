@@ -15,7 +15,7 @@ module test_robust
     implicit none
     private
 
-    public :: run_robust_tests, run, lines
+    public :: run_robust_tests, run, lines, line_starts, fresh, abs_exe
 
     character(len=*), parameter :: SCR = 'build/test_robust'
     character, parameter :: NL = new_line('a')

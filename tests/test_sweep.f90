@@ -1,0 +1,536 @@
+!> Sweeps over threads and ranks, checkpoints and resuming (issue 15): the engine in
+!! process with a task of known values (module probe_task), the stability chart through
+!! bin/bifilar killed and resumed, and, when OpenMPI is installed, bin/bifilar_mpi and
+!! sweep_probe_mpi under mpirun with 1, 2 and 3 ranks, a rank killed mid-sweep, ranks that
+!! see another deck and points that fail.
+module test_sweep
+    use, intrinsic :: iso_fortran_env, only: int64
+    use kinds, only: dp
+    use testing, only: tester_t
+    use status, only: status_t, STATUS_OK, ERR_NUMERIC
+    use text, only: itoa
+    use sweep_engine, only: sweep_run, sweep_options_t, sweep_report_t, crc64
+    use probe_task, only: probe_task_t, special_value
+    use test_deck, only: write_text, exists, shell_count, msg_of
+    use test_extreme, only: file_has
+    use test_robust, only: run, lines, line_starts, fresh, abs_exe
+    !$ use omp_lib, only: omp_get_max_threads, omp_set_num_threads
+    implicit none
+    private
+
+    public :: run_sweep_tests
+
+    character(len=*), parameter :: SCR = 'build/test_sweep'
+    character, parameter :: NL = new_line('a')
+    !> mpirun as the tests run it: as root too, more ranks than cores, no notes of its own.
+    character(len=*), parameter :: MPIENV = 'env OMPI_ALLOW_RUN_AS_ROOT=1 '// &
+        'OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1'
+    character(len=*), parameter :: MPIRUN = MPIENV//' OMP_NUM_THREADS=1 mpirun -q --oversubscribe'
+    !> The same for runs that end with an error: mpirun then waits odls_base_sigkill_timeout
+    !! (1 s) and more before it ends; 0 saves that (not for a killed rank: rank 0 needs the
+    !! time between SIGTERM and SIGKILL to say what happened).
+    character(len=*), parameter :: MPIFAIL = MPIENV//' OMPI_MCA_odls_base_sigkill_timeout=0 '// &
+        'OMP_NUM_THREADS=1 mpirun -q --oversubscribe'
+    !> The parallelepiped of input/box_chart.nml (stable and unstable points, cheap ones and
+    !! dear ones); the chart's grid is added per test.
+    character(len=*), parameter :: BOX = &
+        "&scene title = 'sweep test chart', analyses = 'chart' /"//NL// &
+        '&suspension b = 1.0, b_prime = 1.0, l = 2.0, l_prime = 2.0, g = 1.0 /'//NL// &
+        '&body mass = 1.0, inertia = 0.08854166666666667, 1.416666666666667, '// &
+        '1.338541666666667,'//NL// &
+        '      r = 2.06155281280883, lambda = 1.325817663668033, sway_depth = 4 /'//NL// &
+        '&floquet amplitude = 45.0, segments = 1, rtol = 1e-6 /'//NL
+    !> The block of input/box_design.nml (SI units) for a rig design; its &design per test.
+    character(len=*), parameter :: RIG = &
+        "&scene title = 'sweep test design', analyses = 'design' /"//NL// &
+        '&suspension b = 0.2, b_prime = 0.2, l = 0.6, l_prime = 0.6, g = 9.80665 /'//NL// &
+        '&body mass = 2.0, inertia = 0.007083333333333333, 0.11333333333333333, '// &
+        '0.10708333333333333,'//NL// &
+        '      r = 0.412310562561766, lambda = 1.325817663668033, sway_depth = 0.8 /'//NL// &
+        '&floquet rtol = 1e-6 /'//NL
+
+contains
+
+    subroutine run_sweep_tests(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe     !! path of the bifilar executable
+        call execute_command_line('mkdir -p '//SCR)
+        if (t%want('sweep: CRC-64 of the fingerprints')) call test_crc(t)
+        if (t%want('sweep: engine: values in index order over threads')) call test_order(t)
+        if (t%want('sweep: engine: a failing point ends the sweep')) call test_failure(t)
+        if (t%want('sweep: engine: checkpoints keep every bit, resume only their own sweep')) &
+            call test_checkpoints(t)
+        if (t%want('sweep: chart killed after a checkpoint, resumed: the same file')) &
+            call test_kill_resume(t, exe)
+        if (t%want('sweep: design killed after a checkpoint, resumed: the same file')) &
+            call test_design_resume(t, exe)
+        if (t%want('sweep mpi: charts and designs on 1, 2, 3 ranks, killed ranks, other '// &
+                   'decks, failures')) &
+            call test_mpi(t, exe)
+    end subroutine run_sweep_tests
+
+    ! ---------------------------------------------------------------------------------------
+    !> CRC-64/XZ's published check value, and a CRC continued over two pieces.
+    subroutine test_crc(t)
+        type(tester_t), intent(inout) :: t
+        integer(int64) :: want
+        want = ior(ishft(int(z'995DC9BB', int64), 32), int(z'DF1939FA', int64))
+        call t%check('crc64("123456789") = 995DC9BBDF1939FA (CRC-64/XZ check value)', &
+                     crc64('123456789') == want)
+        call t%check('crc64 continued over two pieces = crc64 of the whole', &
+                     crc64('6789', crc64('12345')) == want)
+        call t%check('crc64 of one changed byte differs', crc64('123456788') /= want)
+    end subroutine test_crc
+
+    ! ---------------------------------------------------------------------------------------
+    !> Point i's values land in column i whatever thread computes it, with 1 and 3 threads.
+    subroutine test_order(t)
+        type(tester_t), intent(inout) :: t
+        type(probe_task_t) :: task
+        type(sweep_report_t) :: rep
+        type(status_t) :: st
+        real(dp), allocatable :: v(:, :)
+        integer :: nt, keep, i
+        character(len=:), allocatable :: fp
+        fp = SCR//'/order.fp'
+        call write_text(fp, 'order')
+        keep = 1
+        !$ keep = omp_get_max_threads()
+        do nt = 1, 3, 2
+            !$ call omp_set_num_threads(nt)
+            task%n = 500
+            task%nap = 20
+            call sweep_run(task, 'probe', fp, '', '', task%n, 4, v, st, report=rep)
+            call t%check('order: '//itoa(nt)//' threads: status ok', st%code == STATUS_OK)
+            if (st%code /= STATUS_OK) cycle
+            call t%check('order: '//itoa(nt)//' threads: point i in column i, exactly', &
+                         all([(v(1, i) == real(i, dp) .and. v(2, i) == sqrt(real(i, dp)), &
+                         i=1, task%n)]))
+            !$ call t%check('order: computed by '//itoa(nt)//' threads', all(v(4, :) == nt))
+            call t%check('order: one rank, no checkpoint', rep%ranks == 1 .and. &
+                         rep%checkpoints == 0 .and. rep%resumed == 0)
+        end do
+        !$ call omp_set_num_threads(keep)
+    end subroutine test_order
+
+    ! ---------------------------------------------------------------------------------------
+    !> A point whose compute fails ends the sweep with its status and message; its
+    !! checkpoint (from an earlier run) is removed.
+    subroutine test_failure(t)
+        type(tester_t), intent(inout) :: t
+        type(probe_task_t) :: task
+        type(sweep_options_t) :: opt
+        type(status_t) :: st
+        real(dp), allocatable :: v(:, :)
+        character(len=:), allocatable :: fp, ck
+        fp = SCR//'/failure.fp'
+        ck = SCR//'/failure.probe.partial'
+        call write_text(fp, 'failure')
+        call execute_command_line('rm -f '//ck)
+        opt%checkpoint_seconds = 0.0_dp
+        task%n = 200
+        task%nap = 0
+        call sweep_run(task, 'probe', fp, ck, '', task%n, 4, v, st, opt)
+        call t%check('failure: a good run leaves its checkpoint', all([st%code == STATUS_OK, &
+                     exists(ck)]))
+        task%mode = 'fail_at'
+        task%at = 137
+        call sweep_run(task, 'probe', fp, ck, '', task%n, 4, v, st, opt)
+        call t%check('failure: the point''s status', st%code == ERR_NUMERIC)
+        call t%check('failure: the point''s message', &
+                     index(msg_of(st), 'probe point 137 failed') > 0)
+        call t%check('failure: no values', .not. allocated(v))
+        call t%check('failure: the checkpoint is removed', .not. exists(ck))
+    end subroutine test_failure
+
+    ! ---------------------------------------------------------------------------------------
+    !> A checkpoint holds every bit of every value (-0, subnormals, huge, Inf, NaN), a resume
+    !! takes the points of a checkpoint of its own sweep and computes the rest, and a
+    !! checkpoint of another deck, analysis or size, or a damaged one, is not used.
+    subroutine test_checkpoints(t)
+        type(tester_t), intent(inout) :: t
+        type(probe_task_t) :: task
+        type(sweep_options_t) :: opt
+        type(sweep_report_t) :: rep
+        type(status_t) :: st
+        real(dp), allocatable :: v(:, :)
+        character(len=:), allocatable :: fp, ck
+        integer :: i, k
+        logical :: same
+        fp = SCR//'/ckpt.fp'
+        ck = SCR//'/ckpt.probe.partial'
+        call write_text(fp, 'checkpoint deck 1')
+        call execute_command_line('rm -f '//ck)
+        opt%checkpoint_seconds = 0.0_dp
+        task%n = 64
+        task%nap = 0
+        task%mode = 'special'
+        call sweep_run(task, 'probe', fp, ck, '', task%n, 4, v, st, opt, rep)
+        call t%check('checkpoint: written', all([st%code == STATUS_OK, exists(ck), &
+                     rep%checkpoints > 0]))
+        ! resume with a task that would give other values: every point from the checkpoint
+        task%mode = 'ok'
+        opt%resume = .true.
+        call sweep_run(task, 'probe', fp, ck, '', task%n, 4, v, st, opt, rep)
+        call t%check('checkpoint: resume takes all 64 points', st%code == STATUS_OK .and. &
+                     rep%resumed == 64 .and. len(rep%note) == 0)
+        if (st%code == STATUS_OK) then
+            same = .true.
+            do i = 1, task%n
+                do k = 1, 4
+                    if (transfer(v(k, i), 0_int64) /= transfer(special_value(i + k - 1), &
+                                                               0_int64)) same = .false.
+                end do
+            end do
+            call t%check('checkpoint: every bit of -0, subnormal, huge, 1+eps, pi, 1/3, '// &
+                         'Inf, NaN kept', same)
+        end if
+        ! keep the first 20 points of a checkpoint of values shifted by 0.5: a resume
+        ! takes those 20 and computes the other 44
+        task%shift = 0.5_dp
+        opt%resume = .false.
+        call sweep_run(task, 'probe', fp, ck, '', task%n, 4, v, st, opt, rep)
+        call execute_command_line('awk ''BEGIN{n=-1} /^done /{print "done 20"; n=0; next} '// &
+            'n>=0 && n<20 {print; n++; next} n>=20 && !/^end/ {next} {print}'' '//ck// &
+            ' > '//ck//'.cut && mv '//ck//'.cut '//ck)
+        task%shift = 0.0_dp
+        opt%resume = .true.
+        call sweep_run(task, 'probe', fp, ck, '', task%n, 4, v, st, opt, rep)
+        call t%check('checkpoint: 20 of 64 points resumed', st%code == STATUS_OK .and. &
+                     rep%resumed == 20)
+        if (st%code == STATUS_OK) call t%check('checkpoint: the 20 from it, 44 computed', &
+            all([(v(1, i) == real(i, dp) + merge(0.5_dp, 0.0_dp, i <= 20), i=1, task%n)]))
+        ! not its own: another deck, another analysis, another size, damaged
+        call sweep_run(task, 'probe', fp, ck, '', task%n, 4, v, st, opt, rep)   ! a full one
+        call write_text(fp, 'checkpoint deck 2')
+        call stale(fp, ck, 'another deck', 'probe', task%n, 'another deck')
+        call write_text(fp, 'checkpoint deck 1')
+        call stale(fp, ck, 'another analysis', 'probe2', task%n, 'another analysis')
+        call stale(fp, ck, 'another size', 'probe', task%n + 1, 'number of points')
+        call execute_command_line('sed -i "s/^5 4/5 G/" '//ck)
+        call stale(fp, ck, 'a damaged value', 'probe', task%n, 'damaged')
+        call execute_command_line('rm -f '//ck)
+        call stale(fp, ck, 'no checkpoint', 'probe', task%n, 'no checkpoint')
+
+    contains
+
+        !> A resume with this checkpoint computes every point and says why.
+        subroutine stale(fp, ck, what, analysis, n, why)
+            character(len=*), intent(in) :: fp, ck      !! fingerprint file, checkpoint
+            character(len=*), intent(in) :: what, analysis, why
+            integer, intent(in) :: n
+            type(probe_task_t) :: tk
+            type(sweep_options_t) :: o
+            o%resume = .true.
+            o%checkpoint_seconds = 1.0e6_dp         ! writes none: the checkpoint stays
+            tk%n = n
+            tk%nap = 0
+            tk%shift = 0.25_dp
+            call sweep_run(tk, analysis, fp, ck, '', tk%n, 4, v, st, o, rep)
+            call t%check('checkpoint: '//what//': nothing resumed ('//rep%note//')', &
+                         st%code == STATUS_OK .and. rep%resumed == 0 .and. &
+                         index(rep%note, why) > 0)
+            if (st%code == STATUS_OK) call t%check('checkpoint: '//what//': all computed', &
+                all([(v(1, i) == real(i, dp) + 0.25_dp, i=1, n)]))
+        end subroutine stale
+
+    end subroutine test_checkpoints
+
+    ! ---------------------------------------------------------------------------------------
+    !> The chart through bin/bifilar: killed (SIGKILL) after its first checkpoint and resumed,
+    !! the same file as an uninterrupted run; SIGTERM: one line naming the deck, no file but
+    !! the checkpoint; the checkpoint of another deck of the same name is not used.
+    subroutine test_kill_resume(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d, deck, ck, ref, dat
+        integer :: ex, nres
+        d = fresh('sweep_kill')
+        deck = d//'/kchart.nml'
+        call write_text(deck, BOX//"&chart x = 'l', x_min = 0.5, x_max = 8.0, nx = 24, "// &
+                        "y = 'amplitude', y_min = 2.0, y_max = 90.0, ny = 16 /"//NL)
+        ref = d//'/ref/kchart.chart.dat'
+        dat = d//'/out/kchart.chart.dat'
+        ck = d//'/out/kchart.chart.partial'
+        ex = run(exe//' '//deck//' --out '//d//'/ref', d)
+        call t%check('kill: the uninterrupted chart (exit 0)', all([ex == 0, exists(ref)]))
+        ex = run('tests/kill_run.sh '//ck//' KILL '//exe//' '//deck//' --out '//d// &
+                 '/out --checkpoint 0', d)
+        call t%check('kill: killed after its first checkpoint (exit 137, got '//itoa(ex)//')', &
+                     ex == 137)
+        call t%check('kill: the checkpoint is there, the chart is not', all([exists(ck), &
+                     .not. exists(dat)]))
+        call execute_command_line('cp '//ck//' '//d//'/kept.partial')
+        ex = run(exe//' '//deck//' --out '//d//'/out --resume', d)
+        nres = resumed(d//'/stdout')
+        call t%check('kill: resumed (exit 0, '//itoa(nres)//' of 384 points from the '// &
+                     'checkpoint)', ex == 0 .and. nres > 0 .and. nres < 384)
+        call t%check('kill: resumed file = uninterrupted file, byte for byte', same_file(dat, ref))
+        call t%check('kill: the checkpoint is removed with the commit', .not. exists(ck))
+
+        ! SIGTERM during the sweep: one line, nothing but the checkpoint
+        call execute_command_line('rm -rf '//d//'/out')
+        ex = run('tests/kill_run.sh '//ck//' TERM '//exe//' '//deck//' --out '//d// &
+                 '/out --checkpoint 0', d)
+        call t%check('term: exit 143 (128 + SIGTERM; got '//itoa(ex)//')', ex == 143)
+        call t%check('term: one stderr line naming the deck and the checkpoint', &
+                     all([lines(d//'/stderr') == 1, line_starts(d//'/stderr', 1, &
+                     'bifilar: error (interrupted): '//deck//': chart stopped by signal 15'), &
+                     file_has(d//'/stderr', ck//': run again with --resume')]))
+        call t%check('term: only the checkpoint is left', all([exists(ck), &
+                     shell_count('ls -A '//d//'/out | wc -l', d) == 1]))
+
+        ! another deck named kchart.nml (a smaller grid) with the kept checkpoint: not used
+        call execute_command_line('mkdir -p '//d//'/o '//d//'/other && cp '//d// &
+                                  '/kept.partial '//d//'/other/kchart.chart.partial')
+        call write_text(d//'/o/kchart.nml', BOX//"&chart x = 'l', x_min = 0.5, x_max = 8.0, "// &
+                        "nx = 6, y = 'amplitude', y_min = 2.0, y_max = 90.0, ny = 4 /"//NL)
+        ex = run(exe//' '//d//'/o/kchart.nml --out '//d//'/o', d)
+        ex = run(exe//' '//d//'/o/kchart.nml --out '//d//'/other --resume', d)
+        call t%check('stale: another deck''s checkpoint is not used (exit 0, no point '// &
+                     'resumed, says why)', all([ex == 0, resumed(d//'/stdout') == 0, &
+                     file_has(d//'/stdout', 'another deck (its CRC-64 differs): computed afresh')]))
+        call t%check('stale: the file is that of a fresh run', same_file(d// &
+                     '/other/kchart.chart.dat', d//'/o/kchart.chart.dat'))
+        ! the kept checkpoint of kchart.nml with its first value made 100: used (100 shows)
+        call execute_command_line('cp '//d//'/kept.partial '//d//'/other/kchart.chart.partial'// &
+            ' && sed -i "/^done/{n;s/ [0-9A-F]\{16\}/ 4059000000000000/}" '//d// &
+            '/other/kchart.chart.partial')
+        ex = run(exe//' '//deck//' --out '//d//'/other --resume', d)
+        call t%check('stale: its own deck''s checkpoint is used (the tampered 100 shows)', &
+                     all([ex == 0, resumed(d//'/stdout') > 0, &
+                     file_has(d//'/other/kchart.chart.dat', '1.000000000000000E+002')]))
+        ! without --resume the same checkpoint is ignored, and gone after the commit
+        call execute_command_line('cp '//d//'/kept.partial '//d//'/other/kchart.chart.partial'// &
+            ' && sed -i "/^done/{n;s/ [0-9A-F]\{16\}/ 4059000000000000/}" '//d// &
+            '/other/kchart.chart.partial')
+        ex = run(exe//' '//deck//' --out '//d//'/other', d)
+        call t%check('no --resume: the checkpoint is ignored (the uninterrupted file)', &
+                     all([ex == 0, resumed(d//'/stdout') == 0, .not. file_has(d//'/stdout', &
+                     'checkpoint'), same_file(d//'/other/kchart.chart.dat', ref)]))
+        call t%check('no --resume: the checkpoint is gone after the commit', &
+                     .not. exists(d//'/other/kchart.chart.partial'))
+    end subroutine test_kill_resume
+
+    ! ---------------------------------------------------------------------------------------
+    !> A rig design (three sweeps) through bin/bifilar killed (SIGKILL) after the first
+    !! checkpoint of its grid's sweep and resumed: the uninterrupted file; the checkpoints
+    !! are removed with the commit.
+    subroutine test_design_resume(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d, deck
+        integer :: ex, nres
+        d = fresh('sweep_design')
+        deck = d//'/rig.nml'
+        call write_text(deck, RIG//'&design l_min = 0.1, l_max = 1.2, nl = 30, '// &
+                        'amplitude_max = 50, n_amplitudes = 6 /'//NL)
+        ex = run(exe//' '//deck//' --out '//d//'/ref', d)
+        call t%check('design kill: the uninterrupted design (exit 0)', all([ex == 0, &
+                     exists(d//'/ref/rig.design')]))
+        ex = run('tests/kill_run.sh '//d//'/out/rig.design.partial KILL '//exe//' '//deck// &
+                 ' --out '//d//'/out --checkpoint 0', d)
+        call t%check('design kill: killed after the first checkpoint (exit 137, got '// &
+                     itoa(ex)//')', all([ex == 137, .not. exists(d//'/out/rig.design')]))
+        ex = run(exe//' '//deck//' --out '//d//'/out --resume', d)
+        nres = resumed(d//'/stdout')
+        call t%check('design kill: resumed (exit 0, '//itoa(nres)//' points from the '// &
+                     'checkpoint)', all([ex == 0, nres > 0]))
+        call t%check('design kill: resumed file = uninterrupted file, byte for byte', &
+                     same_file(d//'/out/rig.design', d//'/ref/rig.design'))
+        call t%check('design kill: its checkpoints are removed with the commit', &
+                     shell_count('ls '//d//'/out | grep -c partial', d) == 0)
+    end subroutine test_design_resume
+
+    ! ---------------------------------------------------------------------------------------
+    !> bin/bifilar_mpi and sweep_probe_mpi under mpirun (skipped, with a note, only when
+    !! OpenMPI is not installed).
+    subroutine test_mpi(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d, mexe, probe, small, big, ck, line
+        integer :: ex, np, k, n0, n1, nbad
+        character(len=256) :: buf
+        if (shell_count('(command -v mpirun > /dev/null && echo 1 || echo 0)', SCR) /= 1) then
+            write (*, '(a)') 'note: OpenMPI is not installed (no mpirun): the MPI tests are '// &
+                'skipped; make mpi installs it'
+            return
+        end if
+        mexe = exe//'_mpi'
+        probe = exe(1:index(exe, '/', back=.true.))//'sweep_probe_mpi'
+        call t%check('mpi: '//mexe//' and '//probe//' are built (make test builds them '// &
+                     'where mpif90 is)', all([exists(mexe), exists(probe)]))
+        if (.not. all([exists(mexe), exists(probe)])) return
+        d = fresh('sweep_mpi')
+        mexe = abs_exe(mexe)
+
+        ex = run(MPIRUN//' -np 2 '//mexe//' --version', d)
+        call t%check('mpi: --version names the MPI library', all([ex == 0, &
+                     file_has(d//'/stdout', '(MPI: Open MPI')]))
+
+        ! a small chart on 1, 2 and 3 ranks: the serial build's file, byte for byte
+        small = d//'/small.nml'
+        call write_text(small, BOX//"&chart x = 'l', x_min = 0.5, x_max = 8.0, nx = 12, "// &
+                        "y = 'amplitude', y_min = 2.0, y_max = 90.0, ny = 9 /"//NL)
+        ex = run(exe//' '//small//' --out '//d//'/serial', d)
+        call t%check('mpi: serial chart (exit 0)', ex == 0)
+        do np = 1, 3
+            ex = run(MPIRUN//' -np '//itoa(np)//' '//mexe//' '//small//' --out '//d//'/np'// &
+                     itoa(np), d)
+            call t%check('mpi: -np '//itoa(np)//': exit 0, one stdout line, nothing on '// &
+                         'stderr', all([ex == 0, lines(d//'/stdout') == 1, &
+                         lines(d//'/stderr') == 0]))
+            if (np > 1) call t%check('mpi: -np '//itoa(np)//': the summary says the ranks', &
+                                     file_has(d//'/stdout', 'on '//itoa(np)//' ranks'))
+            call t%check('mpi: -np '//itoa(np)//': chart = serial chart, byte for byte', &
+                         same_file(d//'/np'//itoa(np)//'/small.chart.dat', d// &
+                         '/serial/small.chart.dat'))
+        end do
+
+        ! a rig design (three sweeps, the edges' with its payload) on 1, 2 and 3 ranks
+        call write_text(d//'/lb.nml', RIG//'&design l_min = 0.9, l_max = 1.2, nl = 7, '// &
+                        'b_min = 0.18, b_max = 0.22, nb = 2, amplitude_max = 50, '// &
+                        'n_amplitudes = 3 /'//NL)
+        ex = run(exe//' '//d//'/lb.nml --out '//d//'/serial', d)
+        call t%check('mpi design: serial design (exit 0, with band edges)', all([ex == 0, &
+                     file_has(d//'/serial/lb.design', 'band_edges = ')]))
+        call t%check('mpi design: it has edges to bisect', &
+                     .not. file_has(d//'/serial/lb.design', 'band_edges = 0'))
+        do np = 1, 3
+            ex = run(MPIRUN//' -np '//itoa(np)//' '//mexe//' '//d//'/lb.nml --out '//d// &
+                     '/dnp'//itoa(np), d)
+            call t%check('mpi design: -np '//itoa(np)//': exit 0, one stdout line, nothing '// &
+                         'on stderr', all([ex == 0, lines(d//'/stdout') == 1, &
+                         lines(d//'/stderr') == 0]))
+            call t%check('mpi design: -np '//itoa(np)//': design = serial design, byte for '// &
+                         'byte', same_file(d//'/dnp'//itoa(np)//'/lb.design', d// &
+                         '/serial/lb.design'))
+        end do
+
+        ! a rank killed mid-sweep: one line, no chart, the checkpoint; resumed on 2 ranks
+        big = d//'/big.nml'
+        call write_text(big, BOX//"&chart x = 'l', x_min = 0.5, x_max = 8.0, nx = 24, "// &
+                        "y = 'amplitude', y_min = 2.0, y_max = 90.0, ny = 16 /"//NL)
+        ex = run(exe//' '//big//' --out '//d//'/bigref', d)
+        ck = d//'/big/big.chart.partial'
+        ex = run('timeout 120 tests/kill_run.sh '//ck//' rank1 '//MPIRUN//' -np 3 '//mexe// &
+                 ' '//big//' --out '//d//'/big --checkpoint 0', d)
+        call t%check('mpi kill: the run ends (mpirun exit 137 or 143, got '//itoa(ex)//')', &
+                     ex == 137 .or. ex == 143)
+        call t%check('mpi kill: one stderr line from rank 0 naming the deck', &
+                     all([lines(d//'/stderr') == 1, line_starts(d//'/stderr', 1, &
+                     'bifilar: error (interrupted): '//big//': chart stopped by signal 15')]))
+        call t%check('mpi kill: no chart, the checkpoint kept', all([.not. exists(d// &
+                     '/big/big.chart.dat'), exists(ck), &
+                     shell_count('ls -A '//d//'/big | wc -l', d) == 1]))
+        ex = run(MPIRUN//' -np 2 '//mexe//' '//big//' --out '//d//'/big --resume', d)
+        call t%check('mpi kill: resumed on 2 ranks (exit 0, points from the checkpoint)', &
+                     all([ex == 0, resumed(d//'/stdout') > 0]))
+        call t%check('mpi kill: resumed chart = uninterrupted serial chart, byte for byte', &
+                     same_file(d//'/big/big.chart.dat', d//'/bigref/big.chart.dat'))
+
+        ! ranks that see another deck (another folder: MPMD with -wdir), or none
+        call execute_command_line('mkdir -p '//d//'/w0 '//d//'/w1 && cp '//small//' '//d// &
+            '/w0/ && sed "s/nx = 12/nx = 13/" '//small//' > '//d//'/w1/small.nml')
+        ex = run(mpmd(), d)
+        call t%check('mpi other deck: exit 2 (got '//itoa(ex)//'), one stderr line naming '// &
+                     'the deck and the rank', all([ex == 2, lines(d//'/stderr') == 1, &
+                     line_starts(d//'/stderr', 1, 'bifilar: error (bad input): small.nml: '// &
+                     'chart: rank '), file_has(d//'/stderr', 'reads another deck')]))
+        call t%check('mpi other deck: no file', shell_count('ls -A '//d//'/w0/out | wc -l', d) &
+                     == 0)
+        call execute_command_line('rm '//d//'/w1/small.nml')
+        ex = run(mpmd(), d)
+        call t%check('mpi no deck: exit 2, one stderr line: cannot open', all([ex == 2, &
+                     lines(d//'/stderr') == 1, file_has(d//'/stderr', 'cannot open')]))
+        call t%check('mpi no deck: no file', shell_count('ls -A '//d//'/w0/out | wc -l', d) &
+                     == 0)
+
+        ! the probe: dynamic sharing with threads in the ranks; failing points end the run
+        call write_text(d//'/probe.fp', 'probe')
+        ex = run(MPIENV//' OMP_NUM_THREADS=2 mpirun -q --oversubscribe --bind-to none -np 3 '// &
+                 abs_exe(probe)// &
+                 ' ok 300 '//d//'/probe.fp', d)
+        line = first_line(d//'/stdout')
+        read (line(4:), *, iostat=k) n0, nbad, n0, n1
+        call t%check('mpi probe: 3 ranks of 2 threads: 300 points, all right ('//line//')', &
+                     ex == 0 .and. k == 0 .and. nbad == 0 .and. n0 + n1 == 300)
+        call t%check('mpi probe: rank 0 and the others all computed points', &
+                     k == 0 .and. n0 > 0 .and. n1 > 0)
+        do k = 1, 2
+            buf = merge('fail_worker', 'fail_rank0 ', k == 1)
+            ex = run('timeout 120 '//MPIFAIL//' -np 3 '//abs_exe(probe)//' '//trim(buf)// &
+                     ' 200 '//d//'/probe.fp '//d//'/probe.partial', d)
+            line = first_line(d//'/stdout')
+            call t%check('mpi probe '//trim(buf)//': the run ends with the point''s error '// &
+                         '(exit 3, '//line//')', all([ex == 3, index(line, 'error 3: probe '// &
+                         'point ') == 1, index(line, trim(merge('on a worker', 'on rank 0  ', &
+                         k == 1))) > 0]))
+            call t%check('mpi probe '//trim(buf)//': its checkpoint removed', &
+                         .not. exists(d//'/probe.partial'))
+        end do
+
+    contains
+
+        !> rank 0 in w0, ranks 1 and 2 in w1, the deck small.nml as each sees it.
+        function mpmd() result(c)
+            character(len=:), allocatable :: c
+            c = MPIFAIL//' -np 1 -wdir '//abs_exe(d//'/w0')//' '//mexe//' small.nml --out out'// &
+                ' : -np 2 -wdir '//abs_exe(d//'/w1')//' '//mexe//' small.nml'
+        end function mpmd
+
+    end subroutine test_mpi
+
+    ! ---------------------------------------------------------------------------------------
+    ! helpers
+
+    !> Two files are the same, byte for byte.
+    logical function same_file(a, b)
+        character(len=*), intent(in) :: a, b
+        integer :: ex
+        ex = -1
+        if (all([exists(a), exists(b)])) call execute_command_line('cmp -s '//a//' '//b, &
+                                                                   exitstat=ex)
+        same_file = ex == 0
+    end function same_file
+
+    !> Two files have the same lines apart from the '#' ones.
+    logical function same_rows(a, b)
+        character(len=*), intent(in) :: a, b
+        integer :: ex
+        ex = -1
+        if (all([exists(a), exists(b)])) call execute_command_line('grep -v "^#" '//a// &
+            ' > '//a//'.rows; grep -v "^#" '//b//' > '//a//'.ref; cmp -s '//a//'.rows '// &
+            a//'.ref', exitstat=ex)
+        same_rows = ex == 0
+    end function same_rows
+
+    !> The N of ', N resumed from the checkpoint' in a summary line (0 when absent).
+    integer function resumed(path) result(n)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: s
+        integer :: k, j, ios
+        n = 0
+        s = first_line(path)
+        k = index(s, ' resumed from the checkpoint')
+        if (k == 0) return
+        j = index(s(1:k - 1), ' ', back=.true.)
+        read (s(j + 1:k - 1), *, iostat=ios) n
+        if (ios /= 0) n = -1
+    end function resumed
+
+    !> The first line of a file ('' when none).
+    function first_line(path) result(s)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: s
+        character(len=4096) :: buf
+        integer :: u, ios
+        s = ''
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        read (u, '(a)', iostat=ios) buf
+        if (ios == 0) s = trim(buf)
+        close (u)
+    end function first_line
+
+end module test_sweep
