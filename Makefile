@@ -40,7 +40,7 @@ endif
 FFLAGS += -fopenmp -std=f2008 -Wall -Wextra -Wno-compare-reals -fimplicit-none
 
 # Library modules (one object each, named as the module) and test modules.
-LIB_MODULES = kinds status text progress random lapack_wrap ode_system lsoda radau stepper \
+LIB_MODULES = kinds status text progress random lapack_wrap ode_system lsoda radau stepper run_loop \
               geometry kinematics gen_forces bifilar_model elastic_model elastic_gen \
               elastic_solver deck output_io fast_format simulate floquet paper_claims \
               stability work_precision period_inversion driver

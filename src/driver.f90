@@ -57,6 +57,8 @@ contains
             call floquet_ready(d, stat)
         if (stat%code == STATUS_OK .and. analysis_requested(d, 'chart')) &
             call chart_ready(d, stat)
+        if (stat%code == STATUS_OK .and. (analysis_requested(d, 'floquet') .or. &
+            analysis_requested(d, 'chart'))) call undamped_ready(d, stat)
         if (stat%code /= STATUS_OK) return
 
         line = d%name//':'
@@ -110,6 +112,18 @@ contains
         call make_pendulum(d, p, stat)
         if (stat%code /= STATUS_OK) stat%msg = 'analyses = ''chart'': '//stat%msg
     end subroutine chart_ready
+
+    !> The preconditions of analyses = 'floquet' and 'chart': no &damping (they analyse the
+    !! periodic torsion of the undamped model; a damped torsion is not periodic).
+    subroutine undamped_ready(d, stat)
+        type(deck_t), intent(in) :: d               !! the deck
+        type(status_t), intent(inout) :: stat       !! ERR_DECK
+        if (d%c_v == 0.0_dp .and. d%c_q == 0.0_dp) return
+        stat%code = ERR_DECK
+        stat%msg = '&damping c_v = '//sci(d%c_v)//', c_q = '//sci(d%c_q)//': floquet '// &
+            'and chart analyse the periodic torsion of the undamped model (a damped torsion '// &
+            'is not periodic); allowed: c_v = c_q = 0 with floquet or chart'
+    end subroutine undamped_ready
 
     !> The exit status for a status code: 2 bad deck, 3 numerical failure, 4 the model no
     !! longer holds, 5 output cannot be written.
