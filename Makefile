@@ -9,6 +9,9 @@
 #                   (output/bench_*.dat, plots/work_precision_elastic.png; the speed figures
 #                   count instructions with valgrind --tool=callgrind)
 #   make memcheck   valgrind (leaks, invalid accesses) on bin/bifilar with a paper deck
+#   make records    remake the measurements of the identify example decks (bin/make_record:
+#                   input/identify_record_swing.dat; prints the periods of
+#                   input/identify_periods.nml)
 #   make deps       install what a fresh machine lacks (gnuplot)
 #   make clean      remove everything built or written
 
@@ -43,14 +46,14 @@ FFLAGS += -fopenmp -std=f2008 -Wall -Wextra -Wno-compare-reals -fimplicit-none
 LIB_MODULES = kinds status text progress random lapack_wrap ode_system lsoda radau stepper run_loop \
               geometry kinematics gen_forces bifilar_model elastic_model elastic_gen \
               elastic_solver deck output_io fast_format simulate floquet paper_claims \
-              stability work_precision period_inversion driver
+              stability work_precision period_inversion least_squares identify driver
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
 TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme \
                test_work_precision test_elastic test_elastic_jac test_fast_format test_columns \
                test_radau test_elastic_radau test_robust test_period
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
 
-.PHONY: all test check run report bench deps clean memcheck
+.PHONY: all test check run report bench deps clean memcheck records
 all: $(BIN)/bifilar
 
 $(BUILD) $(BIN):
@@ -75,6 +78,9 @@ $(BUILD)/%.o: tests/%.f90 | $(BUILD)
 	$(FC) $(FFLAGS) -J$(BUILD) -c $< -o $@
 
 $(BIN)/bifilar: src/bifilar.f90 $(LIB_OBJ) | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+
+$(BIN)/make_record: src/make_record.f90 $(LIB_OBJ) | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
 
 $(BIN)/run_tests: tests/run_tests.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
@@ -126,6 +132,14 @@ memcheck: $(BIN)/bifilar
 	mkdir -p build/memcheck
 	valgrind --leak-check=full --error-exitcode=1 $(BIN)/bifilar input/cylinder_l195.nml \
 	  --out build/memcheck
+
+# The measurements of the identify example decks, made by the program itself from the true
+# rigs in input/truth/ (committed: make run needs them; remaking them gives the same files).
+records: $(BIN)/make_record
+	$(BIN)/make_record record input/truth/identify_record_truth.nml 30 100 0.002 10 rate \
+	  input/identify_record_swing.dat
+	@echo "periods of input/identify_periods.nml (&measurement):"
+	$(BIN)/make_record periods input/truth/identify_periods_truth.nml 1e-4 7 10 30 60
 
 DECKS = $(wildcard input/*.nml)
 run: deps $(BIN)/bifilar

@@ -85,7 +85,7 @@ module deck
         integer :: seed = 1                       !! seed of the Monte Carlo streams
     end type deck_t
 
-    public :: read_deck, analysis_requested, deck_echo, estimated
+    public :: read_deck, analysis_requested, deck_echo, estimated, count_words
 
     !> Words allowed in &scene analyses.
     character(len=*), parameter :: ANALYSES_ALLOWED = &
@@ -1006,7 +1006,7 @@ contains
     logical function estimated(d, word)
         type(deck_t), intent(in) :: d               !! the deck
         character(len=*), intent(in) :: word        !! one of ESTIMATES_ALLOWED
-        estimated = index(' '//lower(d%estimate)//' ', ' '//lower(word)//' ') > 0
+        estimated = index(' '//lower(d%estimate)//' ', ' '//lower(trim(word))//' ') > 0
     end function estimated
 
     !> &floquet: 0 < amplitude < 180 degrees, 1..MAX_SEGMENTS segments, rtol in range.

@@ -13,6 +13,7 @@ module driver
     use stability, only: run_floquet, run_chart, floquet_ready
     use floquet, only: floquet_result_t
     use work_precision, only: run_work_precision, wp_result_t
+    use identify, only: identify_ready, run_identify, identify_result_t
     use geometry, only: pendulum_t
     implicit none
     private
@@ -42,6 +43,7 @@ contains
         type(run_summary_t) :: sm
         type(floquet_result_t) :: fr
         type(wp_result_t) :: wp
+        type(identify_result_t) :: idr
         integer :: nstable, nfailed
         real(dp) :: secs
         character(len=64) :: buf
@@ -59,6 +61,8 @@ contains
             call chart_ready(d, stat)
         if (stat%code == STATUS_OK .and. (analysis_requested(d, 'floquet') .or. &
             analysis_requested(d, 'chart'))) call undamped_ready(d, stat)
+        if (stat%code == STATUS_OK .and. analysis_requested(d, 'identify')) &
+            call identify_ready(d, stat)
         if (stat%code /= STATUS_OK) return
 
         line = d%name//':'
@@ -95,6 +99,16 @@ contains
                     ', rhs '//itoa(sm%rhs_evaluations)//', max |dE| '// &
                     sci(sm%max_abs_energy_error, 2)//', max |residual| '// &
                     sci(sm%max_abs_constraint_residual, 2)//';'
+            end if
+            if (analysis_requested(d, 'identify')) then
+                call run_identify(d, outdir, idr, stat, files)
+                if (stat%code /= STATUS_OK) exit run
+                line = line//' identify I1 = '//sci(idr%i1, 5)//' +- '//sci(idr%u_i1, 2)
+                if (idr%u_i1_mc >= 0.0_dp) line = line//' (Monte Carlo '//sci(idr%u_i1_mc, 2)//')'
+                write (buf, '(f0.2)') 100.0_dp*idr%linear_error
+                line = line//', linear formula '//sci(idr%i1_linear, 5)//' ('// &
+                    trim(merge('+', ' ', idr%linear_error >= 0.0_dp))//lead0(buf)//' %), '// &
+                    itoa(idr%iterations)//' iterations;'
             end if
             call files%commit(stat)                 ! on failure it removes them all
             if (stat%code == STATUS_OK) line = line(1:len(line) - 1)
