@@ -50,7 +50,7 @@ LIB_MODULES = kinds status text progress random lapack_wrap ode_system lsoda rad
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
 TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme \
                test_work_precision test_elastic test_elastic_jac test_fast_format test_columns \
-               test_radau test_elastic_radau test_robust test_period
+               test_radau test_elastic_radau test_robust test_period test_identify
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
 
 .PHONY: all test check run report bench deps clean memcheck records

@@ -124,7 +124,7 @@ module identify
     end type record_sink_t
 
     public :: identify_ready, run_identify, read_record, record_model, make_record
-    public :: fit_record, mean_period
+    public :: fit_record, mean_period, identify_record
 
     integer, parameter :: MIN_SAMPLES = 20          !! shortest record
     integer, parameter :: MAX_SAMPLES = 2000000     !! longest record
@@ -604,7 +604,7 @@ contains
                                             2*prob%np + 2)
             if (prob%nuse >= n) exit
             opts%xtol = 1.0e-6_dp
-            opts%chi2_tol = 1.0e-2_dp
+            opts%chi2_tol = 1.0_dp
             call lm_fit(prob, p, h, prob%nuse, opts, part, stat)
             iters = iters + part%iterations
             evals = evals + part%evaluations
@@ -725,13 +725,7 @@ contains
         res%iterations = fit%iterations
         res%evaluations = fit%evaluations
         if (stat%code == ERR_NUMERIC) then
-            stat%msg = 'identify: '//stat%msg//' (residual rms '// &
-                sci(sqrt(sum((fit%r/prob%w)**2)/max(1, size(fit%r))))// &
-                trim(merge(' rad  ', ' rad/s', .not. prob%rate))//'); check the record''s'// &
-                ' units (t in s, '//trim(merge('theta4 in rad', 'W in rad/s   ', &
-                .not. prob%rate))//') and &measurement quantity, the start (&start '// &
-                'amplitude, the release time t0), the rig''s lengths and the start '// &
-                'value of I1 (&body inertia(1)), or estimate fewer parameters'
+            call explain_fit_failure(stat, prob, fit)
             return
         else if (stat%code /= 0) then
             stat%msg = 'identify: the model at the start values: '//stat%msg
@@ -751,7 +745,10 @@ contains
             s2 = fit%cost/(m - np)
         end if
         call covariance(jac, s2, cov, stat)
-        if (stat%code /= 0) return
+        if (stat%code /= 0) then
+            call explain_fit_failure(stat, prob, fit)
+            return
+        end if
         ! the inputs: mass, l, l_prime, b, b_prime, g, and the start amplitude when held
         nx = 6
         if (.not. estimated(d, 'amplitude') .and. trim(d%mode) == 'raised') nx = 7
@@ -807,6 +804,25 @@ contains
             res%linear_error = res%i1_linear/res%i1 - 1.0_dp
         end if
     end subroutine identify_record
+
+    !> A fit that gave no estimate (ERR_NUMERIC, exit 3): the message gets the residual
+    !! and what to check.
+    subroutine explain_fit_failure(stat, prob, fit)
+        type(status_t), intent(inout) :: stat
+        type(record_fit_t), intent(in) :: prob
+        type(lsq_result_t), intent(in) :: fit
+        character(len=:), allocatable :: what
+        what = stat%msg
+        if (index(what, 'identify: ') == 1) what = what(11:)
+        stat%code = ERR_NUMERIC
+        stat%msg = 'identify: '//what//' (residual rms '// &
+            sci(sqrt(sum((fit%r/prob%w)**2)/max(1, size(fit%r))))// &
+            trim(merge(' rad  ', ' rad/s', .not. prob%rate))//'); check the record''s'// &
+            ' units (t in s, '//trim(merge('theta4 in rad', 'W in rad/s   ', &
+            .not. prob%rate))//') and &measurement quantity, the start (&start '// &
+            'amplitude, the release time t0), the rig''s lengths and the start '// &
+            'value of I1 (&body inertia(1)), or estimate fewer parameters'
+    end subroutine explain_fit_failure
 
     !> C = s^2 (J^T J)^-1 from the singular values of J with its columns scaled to unit norm
     !! (ERR_NUMERIC naming the parameters when J is rank deficient: the record does not

@@ -24,15 +24,18 @@
 !!   doubled.
 !! * J by forward differences r(p + h_j e_j) - r(p) over h_j (lsq_jacobian: central
 !!   differences on request, for the covariance at the solution).
-!! * Convergence: after an accepted step, ||D d|| <= xtol (||D p|| + xtol), or a relative
-!!   reduction of S below ftol with a predicted one below ftol too, or S = 0; or, with
-!!   every new Jacobian, when the undamped (Gauss-Newton) step could lower S by at most
-!!   chi2_tol S / (m - n): measured in the residuals' own variance s^2 = S / (m - n), the
-!!   remaining gain in chi^2 is below chi2_tol (1e-6: the step is below 1e-3 standard
-!!   errors).  This last test ends the iteration at the floor set by the residuals' noise
-!!   (here: the integration error of the model, about rtol), where no step is accepted any
-!!   more.  Failure (ERR_NUMERIC): max_iter iterations, or lambda beyond 1e16 (no step
-!!   reduces S).
+!! * Convergence is judged by the gain the undamped (Gauss-Newton) step of the current
+!!   Jacobian could still make, g = (S - min ||J d + r||^2) (m - n) / S: the fall of chi^2
+!!   measured in the residuals' own variance s^2 = S / (m - n), i.e. the square of the
+!!   remaining step in standard errors.  Converged when g <= chi2_tol (1e-4: a step below
+!!   1e-2 standard errors), or after an accepted step with ||D d|| <= xtol (||D p|| + xtol)
+!!   or a relative reduction of S below ftol (predicted too) while g <= 1, or when no step
+!!   is accepted any more (lambda beyond 1e16) while g <= 1e-2: the floor set by the noise
+!!   of the residuals and of the difference Jacobian (here: the model's integration error,
+!!   about rtol); or when S has fallen below 1e-20 of its start (an exact fit, to roundoff,
+!!   where g measures roundoff).  A small step with much to gain (g > 1) is no convergence:
+!!   it is what a fit pressed against parameters the model cannot take looks like.
+!!   Failure (ERR_NUMERIC): max_iter iterations, or lambda beyond 1e16 with g > 1e-2.
 !!
 !! No routine stops; failures come back in status_t.
 module least_squares
@@ -66,7 +69,7 @@ module least_squares
         real(dp) :: xtol = 1.0e-9_dp            !! relative size of the last step
         real(dp) :: ftol = 1.0e-13_dp           !! relative reduction of S
         real(dp) :: lambda0 = 1.0e-3_dp         !! first lambda (with D the column norms)
-        real(dp) :: chi2_tol = 1.0e-6_dp        !! gain in chi^2 left (see the header)
+        real(dp) :: chi2_tol = 1.0e-4_dp        !! gain in chi^2 left (see the header)
     end type lsq_options_t
 
     !> What lm_fit found.
@@ -81,6 +84,11 @@ module least_squares
     end type lsq_result_t
 
     public :: lm_fit, lsq_jacobian
+
+    !> Gain (chi^2) below which a fit that accepts no more steps has converged.
+    real(dp), parameter :: GAIN_FLOOR = 1.0e-2_dp
+    !> Fall of S (from its start) that makes an exact fit, to roundoff.
+    real(dp), parameter :: EXACT_FIT = 1.0e-20_dp
 
 contains
 
@@ -97,7 +105,8 @@ contains
         type(status_t), intent(out) :: stat
         real(dp), allocatable :: a(:, :), b(:), rt(:), jd(:)
         real(dp) :: dvec(size(p0)), dstep(size(p0)), pt(size(p0)), lambda, nu, st, pred, rho
-        real(dp) :: dnorm, pnorm
+        real(dp) :: dnorm, pnorm, gain, cost0
+        logical :: small_step
         type(status_t) :: s2
         integer :: n, j
         n = size(p0)
@@ -107,13 +116,15 @@ contains
         res%evaluations = 1
         if (stat%code /= 0) return
         res%cost = sum(res%r**2)
+        cost0 = res%cost
         call lsq_jacobian(prob, res%p, res%r, h, res%jac, stat)
         res%evaluations = res%evaluations + n
         if (stat%code /= 0) return
         dvec = 0.0_dp
         call scale_columns()
-        call gauss_newton_gain(stat)
-        if (stat%code /= 0 .or. res%converged) return
+        call gauss_newton_gain()
+        res%converged = gain <= opts%chi2_tol
+        if (res%converged) return
         lambda = opts%lambda0
         nu = 2.0_dp
         do while (res%iterations < opts%max_iter)
@@ -149,14 +160,13 @@ contains
                 ! accepted
                 dnorm = norm2(dvec*dstep)
                 pnorm = norm2(dvec*res%p)
-                res%converged = dnorm <= opts%xtol*(pnorm + opts%xtol) .or. &
+                small_step = dnorm <= opts%xtol*(pnorm + opts%xtol) .or. &
                     (res%cost - st <= opts%ftol*res%cost .and. pred <= opts%ftol*res%cost)
                 res%p = pt
                 res%r = rt
                 res%cost = st
                 lambda = lambda*max(1.0_dp/3.0_dp, 1.0_dp - (2.0_dp*rho - 1.0_dp)**3)
                 nu = 2.0_dp
-                if (res%converged) return
                 call lsq_jacobian(prob, res%p, res%r, h, res%jac, stat)
                 res%evaluations = res%evaluations + n
                 if (stat%code /= 0) then
@@ -164,31 +174,37 @@ contains
                     return
                 end if
                 call scale_columns()
-                call gauss_newton_gain(stat)
-                if (stat%code /= 0 .or. res%converged) return
+                call gauss_newton_gain()
+                res%converged = gain <= opts%chi2_tol .or. (small_step .and. gain <= 1.0_dp) &
+                                .or. res%cost <= EXACT_FIT*cost0
+                if (res%converged) return
             else
                 lambda = lambda*nu
                 nu = 2.0_dp*nu
-                if (lambda > 1.0e16_dp) exit
+                if (lambda > 1.0e16_dp) then
+                    res%converged = gain <= GAIN_FLOOR .or. res%cost <= EXACT_FIT*cost0
+                    if (res%converged) return
+                    exit
+                end if
             end if
         end do
         call set_error(stat, ERR_NUMERIC, 'Levenberg-Marquardt did not converge in '// &
-            itoa(res%iterations)//' steps (lambda = '//sci(lambda, 1)//', residual rms '// &
-            sci(sqrt(res%cost/m))//')')
+            itoa(res%iterations)//' steps (lambda = '//sci(lambda, 1)//'; the Gauss-Newton '// &
+            'step would still lower chi^2 by '//sci(gain, 1)//')')
     contains
-        !> Converged when the Gauss-Newton step of the current Jacobian could lower S by at
-        !! most chi2_tol S / (m - n).
-        subroutine gauss_newton_gain(st2)
-            type(status_t), intent(out) :: st2
+        !> gain: what the Gauss-Newton step of the current Jacobian could still lower S by,
+        !! over s^2 = S / (m - n) (huge when J is rank deficient: no verdict then).
+        subroutine gauss_newton_gain()
             real(dp) :: dgn(n)
+            type(status_t) :: st2
+            gain = huge(1.0_dp)
             call la_lstsq(res%jac, -res%r, dgn, st2)
-            if (st2%code /= 0) then
-                ! a rank-deficient J: no verdict here (the damped steps still work)
-                st2%code = 0
-                return
+            if (st2%code /= 0) return
+            if (res%cost > 0.0_dp) then
+                gain = (res%cost - sum((res%r + matmul(res%jac, dgn))**2))*max(1, m - n)/res%cost
+            else
+                gain = 0.0_dp
             end if
-            res%converged = res%cost - sum((res%r + matmul(res%jac, dgn))**2) <= &
-                opts%chi2_tol*res%cost/max(1, m - n)
         end subroutine gauss_newton_gain
         !> Moré's scaling: D_j = the largest column norm of J seen so far (never 0).
         subroutine scale_columns()

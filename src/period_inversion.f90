@@ -311,6 +311,7 @@ contains
         type(status_t), intent(out) :: stat
         real(dp) :: w(size(periods)), tm(size(periods)), g(size(periods)), r(size(periods))
         real(dp) :: scale, i1, di, s0, s1, ilo, tmin, ta, tb, h, di_full
+        real(dp) :: r_acc(size(periods))
         integer :: i, it, half
         character(len=300) :: buf
         logical :: sym
@@ -354,10 +355,15 @@ contains
         end if
         call residuals(i1, tm, r, s0, stat)
         if (stat%code /= 0) return
+        r_acc = r
         do it = 1, MAX_ITER
             fit%iterations = it
             call slopes(i1, tm, g, stat)
-            if (stat%code /= 0) return
+            if (stat%code /= 0) then
+                ! an asymmetric rig near the smallest I1 it can swing with: judged below
+                if (sym) return
+                exit
+            end if
             di = -sum(w*g*r)/sum(w*g*g)
             di_full = di
             ! keep I1 positive and make the weighted sum of squares fall (step halving); a
@@ -383,6 +389,7 @@ contains
             end if
             i1 = i1 + di
             s0 = s1
+            r_acc = r
             if (abs(di) <= merge(I_TOL, I_TOL_SIM, sym)*i1) then
                 fit%i1 = i1
                 fit%model_periods = tm
@@ -390,15 +397,14 @@ contains
                 return
             end if
         end do
-        call residuals(i1, tm, r, s1, stat)
-        if (stat%code /= 0) return
-        if (.not. sym .and. all(r > 0.0_dp) .and. all(g > 0.0_dp)) then
-            ! the model's periods are all longer, and shorten with I1: no I1 down to the
-            ! smallest the model can swing with gives them
+        if (.not. sym .and. all(r_acc > 0.0_dp)) then
+            ! the model's periods are all still longer at the smallest I1 the model could
+            ! swing with (a cable goes slack below it): no I1 gives them
             write (buf, '(a,es12.5,a,es12.5,a)') '&measurement periods: shorter than the '// &
-                'periods of this rig (simulated) down to I1 = ', i1, ' (', tm(1), &
-                ' s for periods(1)); no positive I1 gives them: check the units (s), the '// &
-                'amplitudes and the suspension lengths'
+                'periods of this rig (simulated) down to I1 = ', i1, ' (', &
+                r_acc(1) + periods(1), ' s for periods(1)), below which a cable goes slack;'// &
+                ' no positive I1 gives them: check the units (s), the amplitudes and the '// &
+                'suspension lengths'
             call set_error(stat, ERR_DECK, trim(buf))
             return
         end if

@@ -26,17 +26,24 @@ module run_loop
     implicit none
     private
 
-    !> A model with its integrator, as the driver steps it.  Extensions hold the equations,
-    !! the integrator and the start; `remedy` says what to change when a run takes too many
-    !! steps.
+    !> A model with its integrator, as the driver steps it.  Extensions hold the equations
+    !! and the integrator, take one step (`advance`: which sets t_cur, h_cur, ystep and
+    !! counts nsteps) and read the integrator's dense output (`dense`); `remedy` says what
+    !! to change when a run takes too many steps.
     type, abstract, public :: stepped_model_t
         character(len=:), allocatable :: remedy
+        real(dp), allocatable :: y0(:)          !! state at the start
+        real(dp), allocatable :: ystep(:)       !! state at the last step's end
+        real(dp) :: t_cur = 0.0_dp              !! time reached (the start before any step)
+        real(dp) :: h_cur = 0.0_dp              !! last step size
+        integer :: nsteps = 0                   !! steps taken
     contains
         procedure(advance_i), deferred :: advance
-        procedure(time_i), deferred :: t_now
-        procedure(time_i), deferred :: h_last
-        procedure(size_i), deferred :: nstate
-        procedure(state_i), deferred :: state_at
+        procedure(dense_i), deferred :: dense
+        procedure :: t_now
+        procedure :: h_last
+        procedure :: nstate
+        procedure :: state_at
     end type stepped_model_t
 
     !> Where the motion at the requested times goes.
@@ -56,25 +63,14 @@ module run_loop
             class(stepped_model_t), intent(inout) :: m
             type(status_t), intent(out) :: stat
         end subroutine advance_i
-        !> The time reached (the start before any step), or the last step's size.
-        real(dp) function time_i(m)
-            import :: stepped_model_t, dp
-            class(stepped_model_t), intent(in) :: m
-        end function time_i
-        !> Number of state components.
-        integer function size_i(m)
-            import :: stepped_model_t
-            class(stepped_model_t), intent(in) :: m
-        end function size_i
-        !> The state at t: the start before any step, the step's end at or after it, the
-        !! dense output inside the last step.
-        subroutine state_i(m, t, y, stat)
+        !> The state at t inside the last step, from the integrator's dense output.
+        subroutine dense_i(m, t, y, stat)
             import :: stepped_model_t, dp, status_t
             class(stepped_model_t), intent(in) :: m
             real(dp), intent(in) :: t
             real(dp), intent(out) :: y(:)
             type(status_t), intent(out) :: stat
-        end subroutine state_i
+        end subroutine dense_i
         !> The state y at the k-th requested time t (k from 0).
         subroutine take_i(sink, m, k, t, y, stat)
             import :: row_sink_t, stepped_model_t, dp, status_t
@@ -135,6 +131,41 @@ contains
             k = k + 1
         end do
     end subroutine drive
+
+    !> The time reached (the start before any step).
+    real(dp) function t_now(m)
+        class(stepped_model_t), intent(in) :: m
+        t_now = m%t_cur
+    end function t_now
+
+    !> The last step's size.
+    real(dp) function h_last(m)
+        class(stepped_model_t), intent(in) :: m
+        h_last = m%h_cur
+    end function h_last
+
+    !> Number of state components.
+    integer function nstate(m)
+        class(stepped_model_t), intent(in) :: m
+        nstate = size(m%y0)
+    end function nstate
+
+    !> The state at t: the start before any step, the step's end at or after it, the dense
+    !! output inside the last step.
+    subroutine state_at(m, t, y, stat)
+        class(stepped_model_t), intent(in) :: m
+        real(dp), intent(in) :: t
+        real(dp), intent(out) :: y(:)
+        type(status_t), intent(out) :: stat
+        stat%code = 0
+        if (m%nsteps == 0) then
+            y = m%y0
+        else if (t >= m%t_cur) then
+            y = m%ystep
+        else
+            call m%dense(t, y, stat)
+        end if
+    end subroutine state_at
 
     !> Default after_step: nothing.
     subroutine no_after_step(sink, m, t0, t1, stat)

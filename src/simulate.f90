@@ -54,38 +54,25 @@ module simulate
     type, extends(stepped_model_t), public :: kane_run_t
         type(bifilar_t) :: sys                  !! the equations (keep_tensions set)
         type(stepper_t) :: solver               !! LSODA or Radau
-        real(dp) :: y0(NSTATE) = 0.0_dp         !! chart state at tau = 0
-        real(dp) :: ystep(NSTATE) = 0.0_dp      !! chart state at the last step's end
         real(dp) :: th3 = 0.0_dp                !! theta_3 of the last row (branch choice of
                                                 !! the paper's angles in messages)
         real(dp) :: t_prev = 0.0_dp             !! last time checked valid
         real(dp) :: t_end = 0.0_dp              !! end of the run (tcrit)
         real(dp) :: rtol = 0.0_dp, atol = 0.0_dp    !! the tolerances (for messages)
-        real(dp) :: t_cur = 0.0_dp, h_cur = 0.0_dp  !! time reached, last step size
-        integer :: nsteps = 0                   !! steps taken
     contains
         procedure :: advance => kane_advance
-        procedure :: t_now => kane_t_now
-        procedure :: h_last => kane_h_last
-        procedure :: nstate => kane_size
-        procedure :: state_at => kane_state_at
+        procedure :: dense => kane_dense
     end type kane_run_t
 
     !> A run of the elastic-cable model for the run loop.
     type, extends(stepped_model_t) :: elastic_run_t
         type(elastic_t) :: sys
         type(elastic_solver_t) :: solver
-        real(dp) :: y0(ELASTIC_NSTATE) = 0.0_dp, ystep(ELASTIC_NSTATE) = 0.0_dp
         real(dp) :: th_step(5) = 0.0_dp         !! the paper's angles at the last step's end
         real(dp) :: t_end = 0.0_dp
-        real(dp) :: t_cur = 0.0_dp, h_cur = 0.0_dp  !! time reached, last step size
-        integer :: nsteps = 0
     contains
         procedure :: advance => elastic_advance
-        procedure :: t_now => elastic_t_now
-        procedure :: h_last => elastic_h_last
-        procedure :: nstate => elastic_size
-        procedure :: state_at => elastic_state_at
+        procedure :: dense => elastic_dense
     end type elastic_run_t
 
     public :: make_pendulum, start_state, run_simulation, model_checks, simulation_ready
@@ -404,6 +391,8 @@ contains
         m%sys%keep_tensions = .true.            ! for check_validity
         m%y0 = y0
         m%ystep = y0
+        m%nsteps = 0
+        m%t_cur = 0.0_dp
         m%th3 = th3
         m%t_end = t_end
         m%rtol = rtol
@@ -439,39 +428,14 @@ contains
         m%t_prev = st%t_current
     end subroutine kane_advance
 
-    !> The time the paper model's run has reached.
-    real(dp) function kane_t_now(m)
-        class(kane_run_t), intent(in) :: m
-        kane_t_now = m%t_cur
-    end function kane_t_now
-
-    !> The last step's size.
-    real(dp) function kane_h_last(m)
-        class(kane_run_t), intent(in) :: m
-        kane_h_last = m%h_cur
-    end function kane_h_last
-
-    !> NSTATE.
-    integer function kane_size(m)
-        class(kane_run_t), intent(in) :: m
-        kane_size = size(m%y0)
-    end function kane_size
-
-    !> The chart state at t (the start, the step's end, or the dense output).
-    subroutine kane_state_at(m, t, y, stat)
+    !> The state at t inside the last step (the integrator's dense output).
+    subroutine kane_dense(m, t, y, stat)
         class(kane_run_t), intent(in) :: m
         real(dp), intent(in) :: t
         real(dp), intent(out) :: y(:)
         type(status_t), intent(out) :: stat
-        stat%code = 0
-        if (m%nsteps == 0) then
-            y = m%y0
-        else if (t >= kane_t_now(m)) then
-            y = m%ystep
-        else
-            call m%solver%dense(t, 0, y, stat)
-        end if
-    end subroutine kane_state_at
+        call m%solver%dense(t, 0, y, stat)
+    end subroutine kane_dense
 
     !> Open OUTDIR/NAME.dat (a file of the run, see output_io) and write its header: title,
     !! units, an optional model note, the effective deck, the line of the &output columns.
@@ -871,39 +835,14 @@ contains
         end if
     end subroutine elastic_advance
 
-    !> The time the elastic model's run has reached.
-    real(dp) function elastic_t_now(m)
-        class(elastic_run_t), intent(in) :: m
-        elastic_t_now = m%t_cur
-    end function elastic_t_now
-
-    !> The last step's size.
-    real(dp) function elastic_h_last(m)
-        class(elastic_run_t), intent(in) :: m
-        elastic_h_last = m%h_cur
-    end function elastic_h_last
-
-    !> ELASTIC_NSTATE.
-    integer function elastic_size(m)
-        class(elastic_run_t), intent(in) :: m
-        elastic_size = size(m%y0)
-    end function elastic_size
-
-    !> The elastic state at t (the start, the step's end, or the dense output).
-    subroutine elastic_state_at(m, t, y, stat)
+    !> The state at t inside the last step (the integrator's dense output).
+    subroutine elastic_dense(m, t, y, stat)
         class(elastic_run_t), intent(in) :: m
         real(dp), intent(in) :: t
         real(dp), intent(out) :: y(:)
         type(status_t), intent(out) :: stat
-        stat%code = 0
-        if (m%nsteps == 0) then
-            y = m%y0
-        else if (t >= elastic_t_now(m)) then
-            y = m%ystep
-        else
-            call m%solver%dense(t, 0, y, stat)
-        end if
-    end subroutine elastic_state_at
+        call m%solver%dense(t, 0, y, stat)
+    end subroutine elastic_dense
 
     !> The checks that end a run because the model no longer holds (ERR_MODEL): a slack
     !! cable, line CD vertical (singular coordinates), cable BC near the horizontal.

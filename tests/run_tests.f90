@@ -16,6 +16,7 @@ program run_tests
     use test_fast_format, only: run_fast_format_tests
     use test_columns, only: run_columns_tests
     use test_period, only: run_period_tests
+    use test_identify, only: run_identify_tests
     implicit none
     type(tester_t) :: t
     character(len=1024) :: exe, filter
@@ -39,5 +40,6 @@ program run_tests
     call run_fast_format_tests(t)
     call run_columns_tests(t, trim(exe))
     call run_period_tests(t)
+    call run_identify_tests(t, trim(exe))
     if (.not. t%summary()) error stop 1
 end program run_tests

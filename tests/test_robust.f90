@@ -15,7 +15,7 @@ module test_robust
     implicit none
     private
 
-    public :: run_robust_tests
+    public :: run_robust_tests, lines
 
     character(len=*), parameter :: SCR = 'build/test_robust'
     character, parameter :: NL = new_line('a')
