@@ -124,7 +124,7 @@ module identify
     end type record_sink_t
 
     public :: identify_ready, run_identify, read_record, record_model, make_record
-    public :: fit_record, mean_period, identify_record
+    public :: fit_record, mean_period, identify_record, set_input
 
     integer, parameter :: MIN_SAMPLES = 20          !! shortest record
     integer, parameter :: MAX_SAMPLES = 2000000     !! longest record
@@ -886,7 +886,8 @@ contains
         dpdx = -dpdx
     end subroutine input_sensitivity
 
-    !> Set input j (1 mass, 2 l, 3 l_prime, 4 b, 5 b_prime, 6 g, 7 the start amplitude).
+    !> Set input j of an uncertainty budget (1 mass, 2 l, 3 l_prime, 4 b, 5 b_prime (both
+    !! body attachment points move, move_b_prime), 6 g, 7 the start amplitude) to v.
     subroutine set_input(d, j, v)
         type(deck_t), intent(inout) :: d
         integer, intent(in) :: j

@@ -18,13 +18,13 @@ module test_identify
     use lapack_wrap, only: la_lstsq, la_svd
     use least_squares, only: lsq_problem_t, lsq_options_t, lsq_result_t, lm_fit
     use period_inversion, only: input_u_t, period_fit_t, invert_periods, period_budget, &
-                                torsion_period_s, simulated_period_s, linear_inertia, &
-                                move_b_prime
+                                torsion_period_s, simulated_period_s, linear_inertia
     use identify, only: record_t, identify_result_t, record_model, identify_record, &
-                        read_record, make_record
+                        read_record, make_record, set_input
     use test_deck, only: write_text, exists
     use test_extreme, only: file_has
     use test_robust, only: lines
+    use test_period, only: test_rig
     use output_io, only: read_kv
     use text, only: itoa
     implicit none
@@ -80,19 +80,15 @@ contains
     end subroutine run_identify_tests
 
     ! ------------------------------------------------------------------------------------
-    !> A laboratory rig in SI units with unequal cables and an offset mass centre (as
+    !> test_period's laboratory rig with unequal cables and an offset mass centre (as
     !! input/truth/identify_record_truth.nml), damped, tolerances of a fit.
     function asym_rig() result(d)
         type(deck_t) :: d
+        d = test_rig()
         d%path = SCR//'/asym.nml'
         d%name = 'asym'
         d%title = 'asymmetric test rig'
-        d%b = 0.4_dp
-        d%b_prime = 0.4_dp
-        d%l = 1.2_dp
         d%l_prime = 1.18_dp
-        d%g = 9.80665_dp
-        d%mass = 3.1_dp
         d%inertia = [I1_TRUE, 0.063_dp, 0.0304_dp]
         d%r = 0.25_dp
         d%lambda = 0.64_dp
@@ -423,15 +419,16 @@ contains
     end subroutine test_asym_small
 
     !> u_I1 of an asymmetric rig's inversion against a first-order propagation done here:
-    !! each input moved by 3e-4 of its value (the budget uses 1e-4), the periods inverted
-    !! again, the root sum of squares of (dI1/dx u_x).
+    !! each input moved by 3e-4 of its value (the budget uses 1e-4; b' moves both body
+    !! attachment points, as the budget defines it), the periods inverted again, the root
+    !! sum of squares of (dI1/dx u_x).
     subroutine test_asym_budget(t)
         type(tester_t), intent(inout) :: t
         type(deck_t) :: d, dp_, dm
         type(status_t) :: st
         type(period_fit_t) :: f, fp, fm
         type(input_u_t) :: u
-        real(dp) :: per(2), pp(2), pm(2), ap(2), am(2), h, c, ss
+        real(dp) :: per(2), pp(2), pm(2), ap(2), am(2), h, ss, xs(6), us(6)
         integer :: j, k
         real(dp), parameter :: amps(2) = [15.0_dp, 40.0_dp]
         d = asym_rig()
@@ -446,7 +443,35 @@ contains
         call t%check('budget (asymmetric): computed', st%code == 0)
         if (st%code /= 0) return
         ss = 0.0_dp
-        do j = 1, 10
+        xs = [d%mass, d%l, d%l_prime, d%b, d%b_prime, d%g]
+        us = [u%mass, u%l, u%l_prime, u%b, u%b_prime, u%g]
+        do j = 1, 6
+            call setup(3.0e-4_dp*xs(j))
+            call set_input(dp_, j, xs(j) + h)
+            call set_input(dm, j, xs(j) - h)
+            call add(us(j))
+        end do
+        do k = 1, 2
+            call setup(3.0e-4_dp*per(k))
+            pp(k) = per(k) + h
+            pm(k) = per(k) - h
+            call add(u%period)
+            call setup(3.0e-4_dp*amps(k))
+            ap(k) = amps(k) + h
+            am(k) = amps(k) - h
+            call add(u%amplitude)
+        end do
+        call t%check('budget (asymmetric): the test''s inversions run', st%code == 0)
+        call t%check_close('budget (asymmetric): u_I1 = first order by differences here', &
+                           f%u_i1, sqrt(ss), rtol=2.0e-3_dp)
+        call t%check('budget (asymmetric): l and l_prime differ (no mirror symmetry)', &
+                     abs(f%budget(2)%sensitivity - f%budget(3)%sensitivity) > &
+                     0.1_dp*abs(f%budget(2)%sensitivity))
+    contains
+        !> Both rigs at the estimate, the measurements as given, the step hh.
+        subroutine setup(hh)
+            real(dp), intent(in) :: hh
+            h = hh
             dp_ = d
             dm = d
             dp_%inertia(1) = f%i1
@@ -455,60 +480,15 @@ contains
             pm = per
             ap = amps
             am = amps
-            k = 1 + mod(j, 2)                   ! period / amplitude 1 or 2 (j = 7 .. 10)
-            select case (j)
-            case (1)
-                h = 3.0e-4_dp*d%mass
-                dp_%mass = d%mass + h
-                dm%mass = d%mass - h
-                c = u%mass
-            case (2)
-                h = 3.0e-4_dp*d%l
-                dp_%l = d%l + h
-                dm%l = d%l - h
-                c = u%l
-            case (3)
-                h = 3.0e-4_dp*d%l_prime
-                dp_%l_prime = d%l_prime + h
-                dm%l_prime = d%l_prime - h
-                c = u%l_prime
-            case (4)
-                h = 3.0e-4_dp*d%b
-                dp_%b = d%b + h
-                dm%b = d%b - h
-                c = u%b
-            case (5)
-                h = 3.0e-4_dp*d%b_prime
-                call move_b_prime(dp_, d%b_prime + h)
-                call move_b_prime(dm, d%b_prime - h)
-                c = u%b_prime
-            case (6)
-                h = 3.0e-4_dp*d%g
-                dp_%g = d%g + h
-                dm%g = d%g - h
-                c = u%g
-            case (7, 8)
-                h = 3.0e-4_dp*per(k)
-                pp(k) = per(k) + h
-                pm(k) = per(k) - h
-                c = u%period
-            case default
-                h = 3.0e-4_dp*amps(k)
-                ap(k) = amps(k) + h
-                am(k) = amps(k) - h
-                c = u%amplitude
-            end select
+        end subroutine setup
+        !> Invert with the input moved up and down: (dI1/dx u_x)^2 into ss.
+        subroutine add(ux)
+            real(dp), intent(in) :: ux
+            if (st%code /= 0) return
             call invert_periods(dp_, pp, ap, u, fp, st)
             if (st%code == 0) call invert_periods(dm, pm, am, u, fm, st)
-            if (st%code /= 0) exit
-            ss = ss + ((fp%i1 - fm%i1)/(2.0_dp*h)*c)**2
-        end do
-        call t%check('budget (asymmetric): the test''s inversions run', st%code == 0)
-        call t%check_close('budget (asymmetric): u_I1 = first order by differences here', &
-                           f%u_i1, sqrt(ss), rtol=2.0e-3_dp)
-        call t%check('budget (asymmetric): l and l_prime differ (no mirror symmetry)', &
-                     abs(f%budget(2)%sensitivity - f%budget(3)%sensitivity) > &
-                     0.1_dp*abs(f%budget(2)%sensitivity))
+            if (st%code == 0) ss = ss + ((fp%i1 - fm%i1)/(2.0_dp*h)*ux)**2
+        end subroutine add
     end subroutine test_asym_budget
 
     ! ------------------------------------------------------------------------------------
