@@ -16,8 +16,8 @@ set xlabel ''
 set format x ''
 set ylabel 'W = {/Symbol w} . n_3 (rad/s)'
 set key top right box opaque
-plot data using 1:2 with points pt 7 ps 0.25 lc rgb '#888888' title 'record (gyro, 100 Hz)', \
-     data using 1:3 with lines ls 1 lw 1.2 title 'fitted model'
+plot data using 1:3 with lines lc rgb '#1f4e9c' lw 2.5 title 'fitted model', \
+     data using 1:2 with points pt 7 ps 0.2 lc rgb '#e67e22' title 'record (gyro, 100 Hz)'
 unset title
 set size 1, 0.36
 set origin 0, 0
