@@ -169,4 +169,5 @@ deps:
 	  fi; }
 
 clean:
-	rm -rf build build-check bin output/*.dat output/*.summary output/*.md output/*.tmp.* plots/*.png
+	rm -rf build build-check bin output/*.dat output/*.summary output/*.md output/*.identify \
+	  output/*.tmp.* plots/*.png

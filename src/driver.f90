@@ -106,9 +106,13 @@ contains
                 line = line//' identify I1 = '//sci(idr%i1, 5)//' +- '//sci(idr%u_i1, 2)
                 if (idr%u_i1_mc >= 0.0_dp) line = line//' (Monte Carlo '//sci(idr%u_i1_mc, 2)//')'
                 write (buf, '(f0.2)') 100.0_dp*idr%linear_error
-                line = line//', linear formula '//sci(idr%i1_linear, 5)//' ('// &
-                    trim(merge('+', ' ', idr%linear_error >= 0.0_dp))//lead0(buf)//' %), '// &
-                    itoa(idr%iterations)//' iterations;'
+                if (idr%i1_linear > 0.0_dp) then
+                    line = line//', linear formula '//sci(idr%i1_linear, 5)//' ('// &
+                        trim(merge('+', ' ', idr%linear_error >= 0.0_dp))//lead0(buf)//' %)'
+                else
+                    line = line//', no period in the record for the linear formula'
+                end if
+                line = line//', '//itoa(idr%iterations)//' iterations;'
             end if
             call files%commit(stat)                 ! on failure it removes them all
             if (stat%code == STATUS_OK) line = line(1:len(line) - 1)

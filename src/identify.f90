@@ -216,16 +216,18 @@ contains
         type(status_t), intent(out) :: stat     !! ERR_DECK
         character(len=MAX_RECORD_LINE + 1) :: line
         character(len=512) :: msg
-        character(len=:), allocatable :: head
+        character(len=:), allocatable :: head, path
         real(dp) :: x(3)
         real(dp), allocatable :: t(:), v(:), uu(:)
         integer :: u, ios, nline, ncol, n, k, ncol1
         stat%code = 0
         head = '&measurement record = '''//trim(d%record)//''': '
-        open (newunit=u, file=d%record_path, status='old', action='read', form='formatted', &
+        path = trim(d%record)
+        if (allocated(d%record_path)) path = d%record_path
+        open (newunit=u, file=path, status='old', action='read', form='formatted', &
               access='sequential', iostat=ios, iomsg=msg)
         if (ios /= 0) then
-            call set_error(stat, ERR_DECK, head//'cannot open '//d%record_path//': '// &
+            call set_error(stat, ERR_DECK, head//'cannot open '//path//': '// &
                 trim(msg)//'; allowed: a file relative to the deck''s folder, or an absolute path')
             return
         end if
@@ -358,35 +360,37 @@ contains
         end do
     end subroutine split
 
-    !> The record's mean period (s): the mean spacing of the upward crossings of its mean
-    !! value (linear interpolation between samples; a crossing counts only after the
-    !! signal has been below the mean by a tenth of its largest excursion, so noise does not
-    !! add crossings).  0 when fewer than two crossings.
+    !> The record's mean period (s): twice the mean spacing of the crossings of its mean
+    !! value, up and down (linear interpolation between samples; a crossing counts only
+    !! after the signal has been beyond the mean, on the side it leaves, by a tenth of its
+    !! largest excursion, so noise does not add crossings).  0 when fewer than two crossings.
     function mean_period(rec) result(tp)
         type(record_t), intent(in) :: rec
         real(dp) :: tp
-        real(dp) :: mean, band, tc, t_first, t_last
-        integer :: i, nc
-        logical :: armed
+        real(dp) :: mean, band, tc, t_first, t_last, a, b
+        integer :: i, nc, side
         tp = 0.0_dp
         mean = sum(rec%v)/size(rec%v)
         band = 0.1_dp*maxval(abs(rec%v - mean))
-        armed = .false.
+        side = 0                                ! -1 below the band, +1 above, 0 not yet
         nc = 0
         t_first = 0.0_dp
         t_last = 0.0_dp
         do i = 2, size(rec%v)
-            if (rec%v(i - 1) - mean < -band) armed = .true.
-            if (armed .and. rec%v(i - 1) < mean .and. rec%v(i) >= mean) then
-                tc = rec%t(i - 1) + (rec%t(i) - rec%t(i - 1))*(mean - rec%v(i - 1))/ &
-                     (rec%v(i) - rec%v(i - 1))
+            a = rec%v(i - 1) - mean
+            b = rec%v(i) - mean
+            if (a < -band) side = -1
+            if (a > band) side = 1
+            if ((side == -1 .and. a < 0.0_dp .and. b >= 0.0_dp) .or. &
+                (side == 1 .and. a > 0.0_dp .and. b <= 0.0_dp)) then
+                tc = rec%t(i - 1) + (rec%t(i) - rec%t(i - 1))*a/(a - b)
                 nc = nc + 1
                 if (nc == 1) t_first = tc
                 t_last = tc
-                armed = .false.
+                side = 0
             end if
         end do
-        if (nc >= 2) tp = (t_last - t_first)/(nc - 1)
+        if (nc >= 2) tp = 2.0_dp*(t_last - t_first)/(nc - 1)
     end function mean_period
 
     ! ------------------------------------------------------------------ the model
@@ -1008,6 +1012,12 @@ contains
         type(status_t), intent(out) :: stat
         integer :: u, ios, j
         character(len=24) :: f(4)
+        if (.not. all_finite([res%i1, res%u_i1, res%i1_linear, res%linear_error, &
+                              res%residual_rms, res%p, res%u_p, res%u_i1_mc, &
+                              res%budget%value, res%budget%u, res%budget%sensitivity])) then
+            call set_error(stat, ERR_NUMERIC, 'identify: a result is not finite')
+            return
+        end if
         call files%open(outdir//'/'//d%name//'.identify', u, stat)
         if (stat%code /= 0) return
         ios = 0
@@ -1016,11 +1026,6 @@ contains
             'deck''s units (mass x length^2); c_v, c_q in torque per rate (squared), '// &
             'amplitude in degrees, t0 in s'
         call deck_echo(d, u, ios)
-        if (.not. all_finite([res%i1, res%u_i1, res%i1_linear, res%linear_error, &
-                              res%residual_rms, res%p, res%u_p, res%u_i1_mc])) then
-            call set_error(stat, ERR_NUMERIC, 'identify: a result is not finite')
-            return
-        end if
         call write_kv(u, 'I1', res%i1, ios)
         call write_kv(u, 'u_I1', res%u_i1, ios)
         if (d%monte_carlo > 0) call write_kv(u, 'u_I1_monte_carlo', res%u_i1_mc, ios)
