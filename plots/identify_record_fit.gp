@@ -25,5 +25,6 @@ set format x '%g'
 set xlabel 't (s from release)'
 set ylabel 'residual (rad/s)'
 unset key
-plot data using 1:4 with points pt 7 ps 0.2 lc rgb '#c0392b' notitle, 0 with lines lc rgb '#333333' lw 1 notitle
+plot data using 1:4 with points pt 7 ps 0.2 lc rgb '#c0392b' notitle, \
+     0 with lines lc rgb '#333333' lw 1 notitle
 unset multiplot

@@ -5,7 +5,9 @@
 !!   least squares from the exact period of pure torsion (eqs. (45)-(49)) on a symmetric
 !!   rig, or from the full model's period on any other (simulated_period_s); first-order
 !!   budget by central differences of the whole inversion; Monte Carlo by re-inverting with
-!!   every input drawn from its normal distribution.
+!!   every input drawn from its normal distribution.  Without u_period, two periods or more
+!!   give it as their scatter about the model (s^2 = sum of squares over n - 1), and the
+!!   inversion, budget and Monte Carlo use that.
 !! * A record (&measurement record): time (s) and theta4 (rad, quantity = 'angle') or
 !!   W = omega . n3 (rad/s, quantity = 'rate'), optionally each sample's standard
 !!   uncertainty.  The full nonlinear model (unequal cables, offset mass centre, tilting and
@@ -80,6 +82,9 @@ module identify
         real(dp) :: u_i1_mc = -1.0_dp, mc_mean = 0.0_dp     !! Monte Carlo (when asked)
         real(dp) :: i1_linear = 0.0_dp, linear_error = 0.0_dp
         real(dp) :: period_linear = 0.0_dp      !! the period the linear formula used (s)
+        !> periods without u_period: their scatter about the model, s (used as u_period;
+        !! -1 when u_period is given or there is one period)
+        real(dp) :: u_period_scatter = -1.0_dp
         real(dp) :: residual_rms = 0.0_dp       !! of measured - model (s, rad or rad/s)
         integer :: iterations = 0, evaluations = 0, samples = 0
         integer :: np = 0                       !! parameters estimated
@@ -671,16 +676,26 @@ contains
         type(status_t), intent(out) :: stat
         type(period_fit_t) :: f
         type(deck_t) :: dl
+        type(input_u_t) :: u
         real(dp) :: mean, sdev
         integer :: n, imin
         n = d%n_periods
+        u = input_u(d)
         associate (per => d%periods(1:n), amps => d%amplitudes(1:n))
-            call invert_periods(d, per, amps, input_u(d), f, stat)
+            call invert_periods(d, per, amps, u, f, stat)
             if (stat%code /= 0) return
-            call period_budget(d, per, amps, input_u(d), f, stat)
+            if (u%period == 0.0_dp .and. n >= 2) then
+                ! no stated timing uncertainty: the periods' scatter about the model is it
+                ! (s^2 = sum of squares over n - 1), and the inversion is weighted with it
+                res%u_period_scatter = sqrt(sum((f%model_periods - per)**2)/(n - 1))
+                u%period = res%u_period_scatter
+                if (u%period > 0.0_dp) call invert_periods(d, per, amps, u, f, stat)
+                if (stat%code /= 0) return
+            end if
+            call period_budget(d, per, amps, u, f, stat)
             if (stat%code /= 0) return
             if (d%monte_carlo > 0) then
-                call period_monte_carlo(d, per, amps, input_u(d), f%i1, d%monte_carlo, &
+                call period_monte_carlo(d, per, amps, u, f%i1, d%monte_carlo, &
                                         d%seed, mean, sdev, stat)
                 if (stat%code /= 0) return
                 res%u_i1_mc = sdev
@@ -1056,6 +1071,8 @@ contains
                 call write_kv(u, 'model_period('//itoa(j)//')', res%model_periods(j), ios)
             end do
             call write_kv(u, 'linear_period', res%period_linear, ios)
+            if (res%u_period_scatter >= 0.0_dp) &
+                call write_kv(u, 'u_period_from_scatter', res%u_period_scatter, ios)
         end if
         if (d%monte_carlo > 0) then
             call write_kv(u, 'monte_carlo_samples', d%monte_carlo, ios)
@@ -1140,9 +1157,9 @@ contains
         if (stat%code /= 0) return
         ios = 0
         write (u, '(a)', iostat=ios) '# bifilar make_record: '//trim(d%title)
-        if (ios == 0) write (u, '(a)', iostat=ios) '# simulated from '//d%path//' (&damping c_v = '// &
-            sci(d%c_v, 6)//', c_q = '//sci(d%c_q, 6)//', I1 = '//sci(d%inertia(1), 6)// &
-            '), noise sigma = '//sci(sigma, 3)//', seed '//itoa(seed)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# simulated from '//d%path// &
+            ' (&damping c_v = '//sci(d%c_v, 6)//', c_q = '//sci(d%c_q, 6)//', I1 = '// &
+            sci(d%inertia(1), 6)//'), noise sigma = '//sci(sigma, 3)//', seed '//itoa(seed)
         if (ios == 0) write (u, '(a)', iostat=ios) '# t (s from release)  '// &
             trim(merge('theta4 (rad)', 'W (rad/s)   ', quantity == 'angle'))
         do i = 0, n

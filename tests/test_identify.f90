@@ -70,6 +70,7 @@ contains
         if (t%want('identify: a damped, noisy record of an asymmetric rig (issue 10)')) &
             call test_record_fit(t)
         if (t%want('identify: honest u_I1 over 20 noise seeds (issue 10)')) call test_coverage(t)
+        if (t%want('identify: periods without u_period: their scatter')) call test_scatter(t)
         if (t%want('identify: deck groups &damping and &measurement')) call test_groups(t)
         if (t%want('identify: the example decks and their measurements')) &
             call test_examples(t, exe)
@@ -571,6 +572,47 @@ contains
     end subroutine test_coverage
 
     ! ------------------------------------------------------------------------------------
+    !> Periods with no stated uncertainty: their scatter about the model, s^2 = sum r^2 /
+    !! (n - 1), is taken as u_period, and u_I1 (no other input uncertain) is the
+    !! least-squares standard error s / (sum g_i^2)^(1/2), g_i = dT_i/dI1 computed here by
+    !! differences of the exact torsion period.
+    subroutine test_scatter(t)
+        type(tester_t), intent(inout) :: t
+        type(deck_t) :: d
+        type(status_t) :: st
+        character(len=:), allocatable :: line
+        real(dp) :: per(3), tp, tm, g2, s, ui1, i1
+        logical :: found
+        integer :: k
+        real(dp), parameter :: amps(3) = [10.0_dp, 20.0_dp, 30.0_dp]
+        real(dp), parameter :: noise(3) = [2.0e-4_dp, -1.5e-4_dp, 0.5e-4_dp]
+        d = sym_rig()
+        do k = 1, 3
+            call torsion_period_s(d, I1_TRUE, amps(k), per(k), st)
+        end do
+        per = per + noise
+        call write_text(SCR//'/scatter.nml', "&scene analyses = 'identify' /"//NL// &
+            '&suspension b = 0.4, b_prime = 0.4, l = 1.2, l_prime = 1.2, g = 9.80665 /'//NL// &
+            '&body mass = 3.1, inertia = 0.05, 0.063, 0.0304, r = 0.25, '// &
+            'lambda = 0.6435011087932844 /'//NL//'&measurement periods = '//num(per(1))//', '// &
+            num(per(2))//', '//num(per(3))//', amplitudes = 10, 20, 30 /'//NL)
+        call run_deck(SCR//'/scatter.nml', SCR, line, st)
+        call t%check('scatter: runs', st%code == 0)
+        if (st%code /= 0) return
+        call read_kv(SCR//'/scatter.identify', 'I1', i1, found)
+        call read_kv(SCR//'/scatter.identify', 'u_I1', ui1, found)
+        call read_kv(SCR//'/scatter.identify', 'u_period_from_scatter', s, found)
+        call t%check('scatter: u_period_from_scatter written', found .and. s > 0.0_dp)
+        g2 = 0.0_dp
+        do k = 1, 3
+            call torsion_period_s(d, i1*(1.0_dp + 1.0e-6_dp), amps(k), tp, st)
+            call torsion_period_s(d, i1*(1.0_dp - 1.0e-6_dp), amps(k), tm, st)
+            g2 = g2 + ((tp - tm)/(2.0e-6_dp*i1))**2
+        end do
+        call t%check_close('scatter: u_I1 = s / (sum g^2)^(1/2)', ui1, s/sqrt(g2), rtol=1.0e-3_dp)
+    end subroutine test_scatter
+
+    ! ------------------------------------------------------------------------------------
     !> The deck groups: values read, the record relative to the deck's folder, what is
     !! refused (negative damping, gaps in periods, amplitudes that do not match, one Monte
     !! Carlo sample, unknown quantity, an estimate word twice), damping with floquet or the
@@ -594,7 +636,8 @@ contains
         call t%check_close('groups: c_q', d%c_q, 2.0e-4_dp)
         call t%check('groups: two periods', d%n_periods == 2)
         call t%check_close('groups: amplitudes(2)', d%amplitudes(2), 40.0_dp)
-        call t%check('groups: record relative to the deck''s folder', d%record_path == SCR//'/r.dat')
+        call t%check('groups: record relative to the deck''s folder', &
+                     d%record_path == SCR//'/r.dat')
         call t%check('groups: quantity in lower case', trim(d%quantity) == 'rate')
         call t%check('groups: monte_carlo, seed, u_mass', d%monte_carlo == 50 .and. &
                      d%seed == 9 .and. d%u_mass == 0.002_dp)
