@@ -1,8 +1,12 @@
-!> One simulation of a deck: start position, integration by LSODA, output rows and summary.
+!> One simulation of a deck: start position, integration by LSODA or Radau, output rows and
+!! summary.
 !!
 !! Writes `OUTDIR/NAME.dat` (header, then one row per output time) and `OUTDIR/NAME.summary`
 !! (`key = value` lines), each through a temporary file renamed when complete, so a failed
-!! run leaves no partial file behind.
+!! run leaves no partial file behind.  Both models run through the run loop (module
+!! run_loop): kane_run_t and elastic_run_t step them and check them at every step's end,
+!! kane_dat_sink_t and elastic_dat_sink_t write the rows; kane_run_start starts the paper's
+!! model for any other sink (identify's records, the simulated periods).
 module simulate
     use kinds, only: dp, deg
     use status, only: status_t, set_error, ERR_DECK, ERR_MODEL, ERR_NUMERIC, ERR_IO
