@@ -13,6 +13,9 @@
 #                   count instructions with valgrind --tool=callgrind; the MPI figures need
 #                   OpenMPI: make mpi)
 #   make memcheck   valgrind (leaks, invalid accesses) on bin/bifilar with a paper deck
+#   make records    remake the measurements of the identify example decks (bin/make_record:
+#                   input/identify_record_swing.dat; prints the periods of
+#                   input/identify_periods.nml)
 #   make deps       install what a fresh machine lacks (gnuplot)
 #   make clean      remove everything built or written
 
@@ -61,18 +64,19 @@ PARALLEL_SRC = src/parallel.f90
 endif
 
 # Library modules (one object each, named as the module) and test modules.
-LIB_MODULES = kinds status text progress random lapack_wrap ode_system lsoda radau stepper \
+LIB_MODULES = kinds status text progress random lapack_wrap ode_system lsoda radau stepper run_loop \
               geometry kinematics gen_forces bifilar_model elastic_model elastic_gen \
               elastic_solver deck output_io fast_format simulate floquet paper_claims \
-              parallel sweep_engine stability work_precision period_inversion design driver
+              parallel sweep_engine stability work_precision period_inversion least_squares \
+              identify design driver
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
 TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme \
                test_work_precision test_elastic test_elastic_jac test_fast_format test_columns \
                test_radau test_elastic_radau test_robust test_period test_design probe_task \
-               test_sweep
+               test_sweep test_identify
 TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
 
-.PHONY: all test check run report bench deps clean memcheck mpi
+.PHONY: all test check run report bench deps clean memcheck mpi records
 all: $(BIN)/bifilar
 
 $(BUILD) $(BIN):
@@ -122,6 +126,9 @@ mpi:
 	  fi; }
 	@$(MAKE) --no-print-directory MPI=1 $(BIN)/bifilar_mpi
 
+$(BIN)/make_record: src/make_record.f90 $(LIB_OBJ) | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+
 $(BIN)/run_tests: tests/run_tests.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@
 
@@ -157,8 +164,12 @@ $(BIN)/bench_speed: tests/bench_speed.f90 $(LIB_OBJ) | $(BIN)
 $(BIN)/bench_sweep: tests/bench_sweep.f90 $(LIB_OBJ) $(BUILD)/probe_task.o | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/probe_task.o $(LIBS) -o $@
 
+$(BIN)/bench_identify: tests/bench_identify.f90 $(LIB_OBJ) | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+
 bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench_elastic \
-       $(BIN)/bench_radau $(BIN)/bench_speed $(BIN)/bifilar $(BIN)/bench_sweep
+       $(BIN)/bench_radau $(BIN)/bench_speed $(BIN)/bench_identify $(BIN)/bifilar \
+       $(BIN)/bench_sweep
 	mkdir -p output build/bench
 	$(BIN)/bench_integrator output/bench_integrator.dat
 	$(BIN)/bench_radau output/bench_radau.dat
@@ -186,6 +197,14 @@ memcheck: $(BIN)/bifilar
 	valgrind --leak-check=full --error-exitcode=1 $(BIN)/bifilar input/cylinder_l195.nml \
 	  --out build/memcheck
 
+# The measurements of the identify example decks, made by the program itself from the true
+# rigs in input/truth/ (committed: make run needs them; remaking them gives the same files).
+records: $(BIN)/make_record
+	$(BIN)/make_record record input/truth/identify_record_truth.nml 30 100 0.002 10 rate \
+	  input/identify_record_swing.dat
+	@echo "periods of input/identify_periods.nml (&measurement):"
+	$(BIN)/make_record periods input/truth/identify_periods_truth.nml 1e-4 7 10 30 60
+
 DECKS = $(wildcard input/*.nml)
 run: deps $(BIN)/bifilar
 	$(BIN)/bifilar $(DECKS)
@@ -212,4 +231,4 @@ deps:
 
 clean:
 	rm -rf build build-check build-mpi build-check-mpi bin output/*.dat output/*.summary \
-	  output/*.md output/*.design output/*.tmp.* output/*.partial plots/*.png
+	  output/*.md output/*.design output/*.identify output/*.tmp.* output/*.partial plots/*.png

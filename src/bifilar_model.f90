@@ -19,7 +19,10 @@
 !! The 5 x 5 system is factored by lapack_wrap's written-out LU (la_small_factor).  The
 !! Jacobian Z of the chart right-hand side (eq. (51)) is exact: the derivatives of the
 !! kinematics (chart_kinematics_tangent) carried through Kane's equations and the constraint
-!! (eom_tangent), solved with the same factors (chart_jacobian).
+!! (eom_tangent), solved with the same factors (chart_jacobian).  Z is that of the undamped
+!! equations: the Floquet analysis, its only user, refuses &damping (a damped torsion is not
+!! periodic).  The damping torque about the vertical (&damping, pendulum_t c_v, c_q) enters
+!! eq. (38) as an active torque through the partial angular velocities (damping_torque).
 module bifilar_model
     use kinds, only: dp, pi
     use status, only: status_t, set_error, ERR_MODEL, ERR_NUMERIC
@@ -460,7 +463,49 @@ contains
         call chart_kinematics(p, y, k, sc_lambda)
         call constraint_terms(p, y, k, eo%gradg, eo%vd, gconv)
         call solve_eq38(k%jv, k%cv, k%wb, k%cwb, k%omb, p%inertia, eo%gradg, gconv, eo, stat)
+        if (p%c_v /= 0.0_dp .or. p%c_q /= 0.0_dp) then
+            if (stat%code == 0) call add_torque(eo, k%wb, damping_torque(p, k%omega, k%b))
+        end if
     end subroutine chart_solve
+
+    !> Add to the solution of eq. (38) in eo the accelerations an active torque on the body
+    !! causes (its generalized forces Wb(:,r) . torque through the partial angular
+    !! velocities of the independent speeds, eq. (31), solved with the same factor): eq. (38)
+    !! is linear in its right-hand side, and the torque does not depend on the accelerations.
+    pure subroutine add_torque(eo, wb, torque)
+        type(eom_t), intent(inout) :: eo       !! solved system (solve_eq38)
+        real(dp), intent(in) :: wb(3, 5)        !! partial angular velocities (principal axes)
+        real(dp), intent(in) :: torque(3)       !! the torque (principal axes, over m g b')
+        real(dp) :: e(5), u(4)
+        integer :: a, ia
+        do a = 1, 5
+            e(a) = dot_product(wb(:, a), torque)
+        end do
+        do a = 1, 4
+            ia = eo%ind(a)
+            u(a) = e(ia) + eo%gam(ia)*e(eo%k)
+        end do
+        call la_small_chol_solve(4, eo%chol, u)
+        do a = 1, 4
+            ia = eo%ind(a)
+            eo%qdd(ia) = eo%qdd(ia) + u(a)
+            eo%qdd(eo%k) = eo%qdd(eo%k) + eo%gam(ia)*u(a)
+        end do
+    end subroutine add_torque
+
+    !> The damping torque on the body about the vertical (&damping), along the principal
+    !! axes, over m g b': M = -(c_v W + c_q |W| W) n3 with W = omega . n3 per unit tau, so
+    !! M . b_i = M3 (b_i . n3).  It enters eq. (38) as a generalized active force through
+    !! the partial angular velocities, Wb(:,r) . M (gen_forces' project).
+    pure function damping_torque(p, omega, b) result(tb)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters (c_v, c_q)
+        real(dp), intent(in) :: omega(3)        !! angular velocity, in n_i
+        real(dp), intent(in) :: b(3, 3)         !! b_ij = b_i . n_j, eq. (11)
+        real(dp) :: tb(3)
+        real(dp) :: w
+        w = omega(3)
+        tb = (-(p%c_v*w + p%c_q*abs(w)*w))*b(:, 3)
+    end function damping_torque
 
     !> The chart is regular while the cable BC hangs below the horizontal.
     pure logical function chart_regular(y)
@@ -472,7 +517,8 @@ contains
     !! f = (qdot, qddot) (eq. (51)), exact.  Each column of the lower half is the derivative of
     !! the accelerations along a unit change of y: the derivatives of the kinematics
     !! (chart_kinematics_tangent) carried through Kane's equations and the constraint
-    !! (eom_tangent) and solved with the factors of eq. (38).
+    !! (eom_tangent) and solved with the factors of eq. (38).  For the undamped equations
+    !! (p%c_v = p%c_q = 0; the Floquet analysis refuses damping).
     subroutine chart_jacobian(p, y, qdd, z, stat)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         real(dp), intent(in) :: y(NSTATE)       !! chart state
@@ -595,6 +641,7 @@ contains
         gconv = 2.0_dp*(dot_product(vd, vd) + dot_product(d, cd))
         call solve_eq38(jv, cv, matmul(b, jw), matmul(b, cw), matmul(b, omega), p%inertia, &
                         gradg, gconv, eo, stat, dependent=5)
+        if (stat%code == 0) call add_torque(eo, matmul(b, jw), damping_torque(p, omega, b))
         thdd = eo%qdd
     end subroutine paper_accelerations
 
@@ -708,6 +755,8 @@ contains
             call constraint_terms(p, y, k, eo%gradg, eo%vd, gconv)
             call solve_eq38(k%jv, k%cv, k%wb, k%cwb, k%omb, p%inertia, eo%gradg, gconv, eo, stat)
             if (stat%code /= 0) return
+            if (p%c_v /= 0.0_dp .or. p%c_q /= 0.0_dp) &
+                call add_torque(eo, k%wb, damping_torque(p, k%omega, k%b))
             mo%qdd = eo%qdd
             mo%astar = matmul(k%jv, mo%qdd) + k%cv
             mo%alpha = matmul(k%jw, mo%qdd) + k%cw

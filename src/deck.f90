@@ -1,6 +1,6 @@
 !> The input deck: a namelist file with the groups &scene, &suspension, &body, &start,
-!! &integration, &cables, &floquet, &chart, &design and &output (see input/*.nml).
-!! read_deck reads and validates it;
+!! &integration, &cables, &floquet, &chart, &design, &output, &damping and &measurement
+!! (see input/*.nml).  read_deck reads and validates it;
 !! every problem is an ERR_DECK status whose message names the deck, the group, the variable
 !! and its value, what is wrong and what is allowed.  Cable reachability is checked by the
 !! geometry module.
@@ -18,6 +18,14 @@ module deck
     character(len=*), parameter, public :: OUTPUT_COLUMNS = 'tau theta1 theta2 theta3 '// &
         'theta4 theta5 theta1_dot theta2_dot theta3_dot theta4_dot theta5_dot Q Q_axis T_BC '// &
         'T_AD energy_error constraint_residual'
+    !> Most periods in &measurement periods (and amplitudes).
+    integer, parameter, public :: MAX_PERIODS = 100
+    !> The value of an element of periods, amplitudes the deck did not give.
+    real(dp), parameter, public :: PERIOD_UNSET = -huge(1.0_dp)
+    !> Words allowed in &measurement estimate: the parameters a record fit can estimate.
+    character(len=*), parameter, public :: ESTIMATES_ALLOWED = 'I1 c_v c_q amplitude t0'
+    !> Words allowed in &measurement quantity: column 2 of a record.
+    character(len=*), parameter, public :: QUANTITIES_ALLOWED = 'angle rate'
 
     type, public :: deck_t
         character(len=:), allocatable :: path        !! deck file as given
@@ -69,16 +77,33 @@ module deck
         integer  :: design_n_amplitudes = 6
         real(dp) :: design_u_mass = 1.0e-3_dp, design_u_l = 1.0e-3_dp
         real(dp) :: design_u_b = 5.0e-4_dp, design_u_period = 1.0e-4_dp
+        ! &damping: a torque on the body about the vertical, M = -(c_v W + c_q |W| W) n3,
+        ! W = omega . n3 (used by the paper's model: simulate, identify)
+        real(dp) :: c_v = 0.0_dp                  !! torque per angular rate (deck units, >= 0)
+        real(dp) :: c_q = 0.0_dp                  !! torque per rate squared (deck units, >= 0)
+        ! &measurement (analysis identify): measured periods or a recorded swing
+        integer :: n_periods = 0                  !! periods given (periods(1:n_periods))
+        real(dp) :: periods(MAX_PERIODS) = PERIOD_UNSET     !! full periods (s)
+        real(dp) :: amplitudes(MAX_PERIODS) = PERIOD_UNSET  !! their peak theta4 (degrees)
+        character(len=256) :: record = ''         !! record file as given ('' for none)
+        character(len=:), allocatable :: record_path  !! the record relative to the deck's folder
+        character(len=256) :: quantity = 'angle'  !! QUANTITIES_ALLOWED: column 2 of the record
+        character(len=256) :: estimate = 'I1'     !! ESTIMATES_ALLOWED: the parameters fitted
+        !> standard uncertainties (deck units; period in s, amplitude in degrees), >= 0
+        real(dp) :: u_mass = 0.0_dp, u_l = 0.0_dp, u_l_prime = 0.0_dp, u_b = 0.0_dp
+        real(dp) :: u_b_prime = 0.0_dp, u_g = 0.0_dp, u_period = 0.0_dp, u_amplitude = 0.0_dp
+        integer :: monte_carlo = 0                !! Monte Carlo samples (0: first order only)
+        integer :: seed = 1                       !! seed of the Monte Carlo streams
     end type deck_t
 
-    public :: read_deck, analysis_requested, deck_echo
+    public :: read_deck, analysis_requested, deck_echo, estimated, count_words
 
     !> Words allowed in &scene analyses.
-    character(len=*), parameter :: ANALYSES_ALLOWED = 'simulate floquet chart work_precision '// &
-        'design'
+    character(len=*), parameter :: ANALYSES_ALLOWED = &
+        'simulate floquet chart work_precision design identify'
     !> Namelist groups a deck may contain.
-    character(len=*), parameter :: GROUPS_ALLOWED = &
-        'scene suspension body start integration cables floquet chart output design'
+    character(len=*), parameter :: GROUPS_ALLOWED = 'scene suspension body start '// &
+        'integration cables floquet chart output design damping measurement'
     !> Words allowed in &scene model.
     character(len=*), parameter :: MODELS_ALLOWED = 'kane elastic'
     !> Words allowed in &integration method: 'auto' (radau for model = 'elastic', lsoda for
@@ -102,6 +127,15 @@ module deck
     character(len=*), parameter :: SPEC_OUTPUT = 'columns:c1'
     character(len=*), parameter :: SPEC_DESIGN = 'l_min:r1 l_max:r1 nl:i1 b_min:r1 b_max:r1 '// &
         'nb:i1 amplitude_max:r1 n_amplitudes:i1 u_mass:r1 u_l:r1 u_b:r1 u_period:r1'
+    character(len=*), parameter :: SPEC_DAMPING = 'c_v:r1 c_q:r1'
+    character(len=*), parameter :: SPEC_MEASUREMENT = 'periods:r100 amplitudes:r100 '// &
+        'record:c1 quantity:c1 estimate:c1 u_mass:r1 u_l:r1 u_l_prime:r1 u_b:r1 '// &
+        'u_b_prime:r1 u_g:r1 u_period:r1 u_amplitude:r1 monte_carlo:i1 seed:i1'
+    !> Most Monte Carlo samples of &measurement monte_carlo.
+    integer, parameter :: MAX_MONTE_CARLO = 1000000
+    !> Largest damping coefficient in the scaled units of the model (c_v over
+    !! m b' sqrt(g b'), c_q over m b'^2; critical damping of torsion is of order 1).
+    real(dp), parameter :: DAMPING_SCALED_MAX = 1.0e3_dp
     real(dp), parameter :: RTOL_MIN = 1.0e-14_dp        !! smallest relative tolerance
     real(dp), parameter :: ATOL_MIN = 1.0e-30_dp        !! smallest absolute tolerance
     real(dp), parameter :: ATOL_MAX = 1.0_dp            !! largest absolute tolerance
@@ -173,6 +207,7 @@ contains
         integer :: u, ios, k
         integer(int64) :: fsize
         character(len=512) :: msg
+        character(len=:), allocatable :: seen
         logical :: halting(size(ieee_usual))
 
         stat%code = STATUS_OK
@@ -232,7 +267,7 @@ contains
             return
         end if
 
-        call check_group_names(u, stat)
+        call check_group_names(u, stat, seen)
         if (stat%code == STATUS_OK) then
             ! Values such as 1e400 overflow inside the run-time library: read without traps,
             ! the finiteness checks below catch the result.
@@ -247,6 +282,11 @@ contains
             call read_group('chart', .false., SPEC_CHART)
             call read_group('output', .false., SPEC_OUTPUT)
             call read_group('design', .false., SPEC_DESIGN)
+            ! the newer groups are read only when check_group_names saw them start a group
+            ! (a deck without them pays no scan)
+            if (index(seen, ' damping ') > 0) call read_group('damping', .false., SPEC_DAMPING)
+            if (index(seen, ' measurement ') > 0) &
+                call read_group('measurement', .false., SPEC_MEASUREMENT)
             call traps_restore(halting)
         end if
         close (u, iostat=ios)
@@ -271,6 +311,13 @@ contains
         if (stat%code /= STATUS_OK) return
         call check_columns(stat, columns, d%columns)
         if (stat%code /= STATUS_OK) return
+        call check_word(stat, 'measurement', 'quantity', d%quantity, QUANTITIES_ALLOWED)
+        if (stat%code /= STATUS_OK) return
+        call check_estimate(stat, d%estimate)
+        if (stat%code /= STATUS_OK) return
+        d%quantity = lower(adjustl(d%quantity))
+        d%record_path = ''
+        if (len_trim(d%record) > 0) d%record_path = record_in_folder(path, d%record)
         d%title = title
         d%analyses = lower(adjustl(analyses))
         d%model = lower(adjustl(model))
@@ -317,6 +364,8 @@ contains
         call check_floquet(d, stat)
         call check_chart(d, stat)
         if (analysis_requested(d, 'design')) call check_design(d, stat)
+        call check_damping(d, stat)
+        call check_measurement(d, stat)
         if (stat%code == STATUS_OK) call reduce_angles(d)
 
     contains
@@ -371,6 +420,10 @@ contains
                 read (u, nml=output, iostat=ios2, iomsg=msg2)
             case ('design')
                 call read_design(u, d, ios2, msg2)
+            case ('damping')
+                call read_damping(u, d, ios2, msg2)
+            case ('measurement')
+                call read_measurement(u, d, ios2, msg2)
             case default
                 read (u, nml=chart, iostat=ios2, iomsg=msg2)
             end select
@@ -452,6 +505,85 @@ contains
         d%design_u_b = u_b
         d%design_u_period = u_period
     end subroutine read_design
+    !> Read &damping from the rewound unit u into d (its name is also a variable of
+    !! &cables, hence a namelist of its own here).
+    subroutine read_damping(u, d, ios, msg)
+        integer, intent(in) :: u                    !! open deck, rewound
+        type(deck_t), intent(inout) :: d            !! c_v, c_q: in defaults, out as read
+        integer, intent(out) :: ios                 !! iostat of the namelist read
+        character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
+        real(dp) :: c_v, c_q
+        namelist /damping/ c_v, c_q
+        c_v = d%c_v
+        c_q = d%c_q
+        read (u, nml=damping, iostat=ios, iomsg=msg)
+        d%c_v = c_v
+        d%c_q = c_q
+    end subroutine read_damping
+
+    !> Read &measurement from the rewound unit u into d; n_periods counts the leading
+    !! periods given (check_measurement refuses gaps).
+    subroutine read_measurement(u, d, ios, msg)
+        integer, intent(in) :: u                    !! open deck, rewound
+        type(deck_t), intent(inout) :: d            !! in defaults, out as read
+        integer, intent(out) :: ios                 !! iostat of the namelist read
+        character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
+        real(dp) :: periods(MAX_PERIODS), amplitudes(MAX_PERIODS)
+        character(len=256) :: record, quantity, estimate     ! values: at most 256 characters
+        real(dp) :: u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude
+        integer :: monte_carlo, seed
+        namelist /measurement/ periods, amplitudes, record, quantity, estimate, u_mass, u_l, &
+            u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude, monte_carlo, seed
+        periods = d%periods
+        amplitudes = d%amplitudes
+        record = d%record
+        quantity = d%quantity
+        estimate = d%estimate
+        u_mass = d%u_mass
+        u_l = d%u_l
+        u_l_prime = d%u_l_prime
+        u_b = d%u_b
+        u_b_prime = d%u_b_prime
+        u_g = d%u_g
+        u_period = d%u_period
+        u_amplitude = d%u_amplitude
+        monte_carlo = d%monte_carlo
+        seed = d%seed
+        read (u, nml=measurement, iostat=ios, iomsg=msg)
+        d%periods = periods
+        d%amplitudes = amplitudes
+        d%record = record
+        d%quantity = quantity
+        d%estimate = estimate
+        d%u_mass = u_mass
+        d%u_l = u_l
+        d%u_l_prime = u_l_prime
+        d%u_b = u_b
+        d%u_b_prime = u_b_prime
+        d%u_g = u_g
+        d%u_period = u_period
+        d%u_amplitude = u_amplitude
+        d%monte_carlo = monte_carlo
+        d%seed = seed
+        d%n_periods = 0
+        do while (d%n_periods < MAX_PERIODS)
+            if (d%periods(d%n_periods + 1) == PERIOD_UNSET) exit
+            d%n_periods = d%n_periods + 1
+        end do
+    end subroutine read_measurement
+
+    !> A record file named in a deck: as given when absolute, else relative to the deck's
+    !! folder.
+    pure function record_in_folder(deck_path, record) result(p)
+        character(len=*), intent(in) :: deck_path   !! the deck as given
+        character(len=*), intent(in) :: record      !! &measurement record
+        character(len=:), allocatable :: p
+        integer :: i
+        p = trim(adjustl(record))
+        if (p(1:1) == '/') return
+        i = index(deck_path, '/', back=.true.)
+        if (i > 0) p = deck_path(1:i)//p
+    end function record_in_folder
 
     !> True when `word` is one of the blank-separated words of d%analyses.
     logical function analysis_requested(d, word)
@@ -521,6 +653,22 @@ contains
             ', u_b = '//rshort(d%design_u_b)//', u_period = '//rshort(d%design_u_period)//' /')
         if (trim(d%columns) /= OUTPUT_COLUMNS) call put('# &output columns = '// &
             quoted(d%columns)//' /')
+        if (d%c_v /= 0.0_dp .or. d%c_q /= 0.0_dp .or. analysis_requested(d, 'identify')) &
+            call put('# &damping c_v = '//rshort(d%c_v)//', c_q = '//rshort(d%c_q)//' /')
+        if (analysis_requested(d, 'identify')) then
+            line = '# &measurement'
+            if (d%n_periods > 0) line = line//' periods = '// &
+                rlist_short(d%periods(1:d%n_periods))//', amplitudes = '// &
+                rlist_short(d%amplitudes(1:d%n_periods))//','
+            if (len_trim(d%record) > 0) line = line//' record = '//quoted(d%record)// &
+                ', quantity = '//quoted(d%quantity)//','
+            call put(line//' estimate = '//quoted(d%estimate)//', u_mass = '// &
+                     rshort(d%u_mass)//', u_l = '//rshort(d%u_l)//', u_l_prime = '// &
+                     rshort(d%u_l_prime)//', u_b = '//rshort(d%u_b)//', u_b_prime = '// &
+                     rshort(d%u_b_prime)//', u_g = '//rshort(d%u_g)//', u_period = '// &
+                     rshort(d%u_period)//', u_amplitude = '//rshort(d%u_amplitude)// &
+                     ', monte_carlo = '//itoa(d%monte_carlo)//', seed = '//itoa(d%seed)//' /')
+        end if
 
     contains
 
@@ -771,6 +919,157 @@ contains
                      'damping ratio out of range', '0 <= damping <= 10 (fraction of critical)')
         end if
     end subroutine check_cables
+
+    !> &damping: c_v, c_q finite and >= 0, each at most DAMPING_SCALED_MAX in the model's
+    !! scaled units (c_v / (m b' sqrt(g b')), c_q / (m b'^2)).
+    subroutine check_damping(d, stat)
+        type(deck_t), intent(in) :: d               !! deck with the values read
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+        if (stat%code /= STATUS_OK) return
+        call one('c_v', d%c_v, log(d%mass) + 1.5_dp*log(d%b_prime) + 0.5_dp*log(d%g), &
+                 'c_v/(mass b_prime sqrt(g b_prime))')
+        call one('c_q', d%c_q, log(d%mass) + 2.0_dp*log(d%b_prime), 'c_q/(mass b_prime^2)')
+    contains
+        subroutine one(var, x, lscale, scaled)
+            character(len=*), intent(in) :: var, scaled
+            real(dp), intent(in) :: x               !! the coefficient (deck units)
+            real(dp), intent(in) :: lscale          !! log of its scale
+            if (stat%code /= STATUS_OK) return
+            call finite(stat, 'damping', var, x)
+            if (stat%code /= STATUS_OK) return
+            if (x < 0.0_dp) then
+                call bad(stat, 'damping', var, rshort(x), 'negative damping feeds energy '// &
+                         'into the swing', var//' >= 0 (deck units: torque per rate'// &
+                         trim(merge(' squared', '        ', var == 'c_q'))//')')
+            else if (x > 0.0_dp) then
+                if (log(x) - lscale > log(DAMPING_SCALED_MAX)) call bad(stat, 'damping', var, &
+                    rshort(x), scaled//' = '//sci(exp(min(700.0_dp, log(x) - lscale)))// &
+                    ' out of range', scaled//' <= '//rshort(DAMPING_SCALED_MAX)// &
+                    ' (critical damping of torsion is of order 1 in these units)')
+            end if
+        end subroutine one
+    end subroutine check_damping
+
+    !> &measurement: periods given without gaps, each finite, > 0 and at most DIM_MAX, one
+    !! amplitude (0 < a < 180 degrees) per period and no more; uncertainties finite, >= 0
+    !! and at most DIM_MAX; 0 or 2 .. MAX_MONTE_CARLO Monte Carlo samples.  (quantity and
+    !! estimate are checked by read_deck; what identify needs of them, by identify_ready.)
+    subroutine check_measurement(d, stat)
+        type(deck_t), intent(in) :: d               !! deck with the values read
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+        integer :: i, na
+        character(len=16) :: nm
+        if (stat%code /= STATUS_OK) return
+        do i = d%n_periods + 1, MAX_PERIODS
+            if (d%periods(i) /= PERIOD_UNSET) then
+                call bad(stat, 'measurement', 'periods('//itoa(i)//')', rshort(d%periods(i)), &
+                         'given after a period left out (periods('//itoa(d%n_periods + 1)// &
+                         '))', 'periods(1), periods(2), ... without gaps, at most '// &
+                         itoa(MAX_PERIODS))
+                return
+            end if
+        end do
+        na = 0
+        do while (na < MAX_PERIODS)
+            if (d%amplitudes(na + 1) == PERIOD_UNSET) exit
+            na = na + 1
+        end do
+        do i = na + 1, MAX_PERIODS
+            if (d%amplitudes(i) /= PERIOD_UNSET) then
+                call bad(stat, 'measurement', 'amplitudes('//itoa(i)//')', &
+                         rshort(d%amplitudes(i)), 'given after an amplitude left out '// &
+                         '(amplitudes('//itoa(na + 1)//'))', 'one amplitude per period, '// &
+                         'without gaps')
+                return
+            end if
+        end do
+        if (na /= d%n_periods) then
+            call bad(stat, 'measurement', 'amplitudes', itoa(na)//' values', 'there are '// &
+                     itoa(d%n_periods)//' periods', 'one amplitude (degrees of theta4 at the '// &
+                     'peak) per period')
+            return
+        end if
+        do i = 1, d%n_periods
+            nm = 'periods('//itoa(i)//')'
+            call positive(stat, 'measurement', trim(nm), d%periods(i), 'periods > 0 (s)')
+            call dimensional(stat, 'measurement', trim(nm), d%periods(i))
+            nm = 'amplitudes('//itoa(i)//')'
+            call finite(stat, 'measurement', trim(nm), d%amplitudes(i))
+            if (stat%code /= STATUS_OK) return
+            if (d%amplitudes(i) <= 0.0_dp .or. d%amplitudes(i) >= 180.0_dp) then
+                call bad(stat, 'measurement', trim(nm), rshort(d%amplitudes(i)), &
+                         'out of range', '0 < amplitude < 180 (degrees of theta4 at the peak)')
+                return
+            end if
+        end do
+        call uncertainty('u_mass', d%u_mass)
+        call uncertainty('u_l', d%u_l)
+        call uncertainty('u_l_prime', d%u_l_prime)
+        call uncertainty('u_b', d%u_b)
+        call uncertainty('u_b_prime', d%u_b_prime)
+        call uncertainty('u_g', d%u_g)
+        call uncertainty('u_period', d%u_period)
+        call uncertainty('u_amplitude', d%u_amplitude)
+        if (stat%code /= STATUS_OK) return
+        if (d%monte_carlo == 1 .or. d%monte_carlo < 0 .or. d%monte_carlo > MAX_MONTE_CARLO) &
+            call bad(stat, 'measurement', 'monte_carlo', itoa(d%monte_carlo), &
+                     'number of Monte Carlo samples out of range', '0 (first order only) '// &
+                     'or 2 <= monte_carlo <= '//itoa(MAX_MONTE_CARLO))
+    contains
+        subroutine uncertainty(var, x)
+            character(len=*), intent(in) :: var
+            real(dp), intent(in) :: x
+            if (stat%code /= STATUS_OK) return
+            call finite(stat, 'measurement', var, x)
+            if (stat%code /= STATUS_OK) return
+            if (x < 0.0_dp .or. x > DIM_MAX) call bad(stat, 'measurement', var, rshort(x), &
+                'a standard uncertainty out of range', '0 <= '//var//' <= '// &
+                rshort(DIM_MAX)//' (deck units; 0: not known)')
+        end subroutine uncertainty
+    end subroutine check_measurement
+
+    !> &measurement estimate: blank-separated words from ESTIMATES_ALLOWED (I1 in any case,
+    !! the others in lower case too), at least one, none twice.
+    subroutine check_estimate(stat, estimate)
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on a problem
+        character(len=*), intent(in) :: estimate    !! value read
+        character(len=len(estimate)) :: list
+        integer :: i1, i2, n
+        character(len=:), allocatable :: head, allowed, seen
+        list = lower(estimate)
+        do i1 = 1, len(list)
+            if (list(i1:i1) == achar(9)) list(i1:i1) = ' '
+        end do
+        head = '&measurement estimate = '''//clip(trim(adjustl(estimate)))//''': '
+        allowed = 'allowed: blank-separated words from: '//commas(ESTIMATES_ALLOWED)
+        seen = ' '
+        n = 0
+        i2 = 0
+        do
+            call next_word(list, i2, i1)
+            if (i1 == 0) exit
+            n = n + 1
+            if (index(' '//lower(ESTIMATES_ALLOWED)//' ', ' '//list(i1:i2)//' ') == 0) then
+                call set_error(stat, ERR_DECK, head//'unknown word '''//clip(list(i1:i2))// &
+                               '''; '//allowed)
+                return
+            end if
+            if (index(seen, ' '//list(i1:i2)//' ') > 0) then
+                call set_error(stat, ERR_DECK, head//''''//list(i1:i2)//''' given twice; '// &
+                               allowed)
+                return
+            end if
+            seen = seen//list(i1:i2)//' '
+        end do
+        if (n == 0) call set_error(stat, ERR_DECK, head//'no parameter given; '//allowed)
+    end subroutine check_estimate
+
+    !> True when the blank-separated word `word` (e.g. 'c_q') is in &measurement estimate.
+    logical function estimated(d, word)
+        type(deck_t), intent(in) :: d               !! the deck
+        character(len=*), intent(in) :: word        !! one of ESTIMATES_ALLOWED
+        estimated = index(' '//lower(d%estimate)//' ', ' '//lower(trim(word))//' ') > 0
+    end function estimated
 
     !> &floquet: 0 < amplitude < 180 degrees, 1..MAX_SEGMENTS segments, rtol in range.
     subroutine check_floquet(d, stat)
@@ -1235,14 +1534,17 @@ contains
 
     !> Every '&name' that starts a group must be a known group; the deck must not be empty,
     !! no line longer than MAX_LINE characters, the whole deck not larger than MAX_DECK_BYTES.
-    subroutine check_group_names(u, stat)
+    !! `seen` lists the groups that start somewhere (' name name ... ', lower case).
+    subroutine check_group_names(u, stat, seen)
         integer, intent(in) :: u                    !! open deck
         type(status_t), intent(inout) :: stat       !! ERR_DECK on an unknown group
+        character(len=:), allocatable, intent(out) :: seen  !! the groups seen
         character(len=:), allocatable :: line
         integer :: ios, i, j, nlines
         integer(int64) :: nbytes
         character(len=512) :: msg
         rewind (u)
+        seen = ' '
         nlines = 0
         nbytes = 0
         do
@@ -1287,6 +1589,8 @@ contains
                                    commas(GROUPS_ALLOWED, ', &'))
                     return
                 end if
+                if (index(seen, ' '//lower(line(i + 1:j - 1))//' ') == 0) &
+                    seen = seen//lower(line(i + 1:j - 1))//' '
             end do
         end do
         if (nlines == 0) then

@@ -20,6 +20,7 @@ module driver
     use floquet, only: floquet_result_t
     use work_precision, only: run_work_precision, wp_result_t
     use design, only: run_design, design_ready, design_result_t, design_task, DESIGN_STAGES
+    use identify, only: identify_ready, run_identify, identify_result_t
     use geometry, only: pendulum_t
     implicit none
     private
@@ -56,6 +57,7 @@ contains
         type(floquet_result_t) :: fr
         type(wp_result_t) :: wp
         type(design_result_t) :: dr
+        type(identify_result_t) :: idr
         integer :: nstable, nfailed, k
         real(dp) :: secs
         character(len=64) :: buf
@@ -73,6 +75,11 @@ contains
             call chart_ready(d, stat)
         if (stat%code == STATUS_OK .and. analysis_requested(d, 'design')) &
             call design_ready(d, stat)
+        if (stat%code == STATUS_OK .and. (analysis_requested(d, 'floquet') .or. &
+            analysis_requested(d, 'chart') .or. analysis_requested(d, 'design'))) &
+            call undamped_ready(d, stat)
+        if (stat%code == STATUS_OK .and. analysis_requested(d, 'identify')) &
+            call identify_ready(d, stat)
         if (stat%code /= STATUS_OK) return
 
         line = d%name//':'
@@ -119,6 +126,20 @@ contains
                     sci(fr%max_modulus, 5)//', stable '//trim(merge('yes', 'no ', fr%stable))//';'
             end if
             line = line//chart_part//design_part
+            if (analysis_requested(d, 'identify')) then
+                call run_identify(d, outdir, idr, stat, files)
+                if (stat%code /= STATUS_OK) exit run
+                line = line//' identify I1 = '//sci(idr%i1, 5)//' +- '//sci(idr%u_i1, 2)
+                if (idr%u_i1_mc >= 0.0_dp) line = line//' (Monte Carlo '//sci(idr%u_i1_mc, 2)//')'
+                write (buf, '(f0.2)') 100.0_dp*idr%linear_error
+                if (idr%i1_linear > 0.0_dp) then
+                    line = line//', linear formula '//sci(idr%i1_linear, 5)//' ('// &
+                        trim(merge('+', ' ', idr%linear_error >= 0.0_dp))//lead0(buf)//' %)'
+                else
+                    line = line//', no period in the record for the linear formula'
+                end if
+                line = line//', '//itoa(idr%iterations)//' iterations;'
+            end if
             if (analysis_requested(d, 'simulate')) then
                 call run_simulation(d, outdir, sm, stat, files=files)
                 if (stat%code /= STATUS_OK) exit run
@@ -180,6 +201,18 @@ contains
             if (allocated(task)) deallocate (task)
         end do
     end subroutine serve_sweeps
+
+    !> The preconditions of analyses = 'floquet', 'chart' and 'design': no &damping (they
+    !! analyse the periodic torsion of the undamped model; a damped torsion is not periodic).
+    subroutine undamped_ready(d, stat)
+        type(deck_t), intent(in) :: d               !! the deck
+        type(status_t), intent(inout) :: stat       !! ERR_DECK
+        if (d%c_v == 0.0_dp .and. d%c_q == 0.0_dp) return
+        stat%code = ERR_DECK
+        stat%msg = '&damping c_v = '//sci(d%c_v)//', c_q = '//sci(d%c_q)//': floquet, '// &
+            'chart and design analyse the periodic torsion of the undamped model (a damped '// &
+            'torsion is not periodic); allowed: c_v = c_q = 0 with floquet, chart or design'
+    end subroutine undamped_ready
 
     !> ' on N ranks' for a sweep of an MPI run ('' on one rank).
     function ranks_note(rep) result(s)

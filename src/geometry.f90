@@ -27,6 +27,10 @@ module geometry
         real(dp) :: h_e = 1.0_dp        !! depth of E below the midpoint of CD, over b'
         real(dp) :: stab_rate = 0.0_dp  !! Baumgarte rate a: the twice-differentiated constraint
                                         !! is imposed as G'' + 2 a G' + a^2 G = 0 (0: G'' = 0)
+        !> Damping about the vertical (&damping), scaled: the torque on the body is
+        !! M = -(c_v W + c_q |W| W) n3 over m g b', W = omega . n3 per unit tau
+        !! (c_v = c_v,deck / (m b' sqrt(g b')), c_q = c_q,deck / (m b'^2)); 0: undamped
+        real(dp) :: c_v = 0.0_dp, c_q = 0.0_dp
     end type pendulum_t
 
     !> The trigonometry of one pose, under the paper's names: s_i = sin(theta_i),

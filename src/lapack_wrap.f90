@@ -1,6 +1,9 @@
 !> Checked wrappers around the few LAPACK routines bifilar uses, and a written-out Cholesky
 !! factorisation for the smallest symmetric positive definite systems.
 !!
+!! Least squares: la_lstsq (DGELS, QR) and la_svd (DGESVD, singular values and right
+!! singular vectors), for the identification's Levenberg-Marquardt steps and covariances.
+!!
 !! Each wrapper checks the shapes of its arguments, calls LAPACK through an explicit
 !! interface, and maps INFO to a status_t with a message naming the routine and the cause.
 !! No wrapper stops the program.
@@ -21,6 +24,7 @@ module lapack_wrap
     public :: la_solve, la_lu_factor, la_lu_solve, la_lu_solve_many, la_eig, la_geig
     public :: la_small_chol, la_small_chol_solve
     public :: la_zlu_factor, la_zlu_solve
+    public :: la_lstsq, la_svd
 
     integer, parameter, public :: SMALL_N = 8   !! largest order of la_small_chol
 
@@ -64,6 +68,22 @@ module lapack_wrap
             real(dp), intent(out) :: work(*)
             integer, intent(out) :: info
         end subroutine dggev
+        subroutine dgels(trans, m, n, nrhs, a, lda, b, ldb, work, lwork, info)
+            import :: dp
+            character(len=1), intent(in) :: trans
+            integer, intent(in) :: m, n, nrhs, lda, ldb, lwork
+            real(dp), intent(inout) :: a(lda, *), b(ldb, *)
+            real(dp), intent(out) :: work(*)
+            integer, intent(out) :: info
+        end subroutine dgels
+        subroutine dgesvd(jobu, jobvt, m, n, a, lda, s, u, ldu, vt, ldvt, work, lwork, info)
+            import :: dp
+            character(len=1), intent(in) :: jobu, jobvt
+            integer, intent(in) :: m, n, lda, ldu, ldvt, lwork
+            real(dp), intent(inout) :: a(lda, *)
+            real(dp), intent(out) :: s(*), u(ldu, *), vt(ldvt, *), work(*)
+            integer, intent(out) :: info
+        end subroutine dgesvd
         subroutine zgetrf(m, n, a, lda, ipiv, info)
             import :: dp
             integer, intent(in) :: m, n, lda
@@ -383,5 +403,87 @@ contains
         end if
         alpha = cmplx(ar, ai, kind=dp)
     end subroutine la_geig
+
+    !> Linear least squares: x minimising ||A x - b||_2 for an m x n matrix of full column
+    !! rank, m >= n (LAPACK DGELS: QR factorisation of A, then R x = Q^T b).
+    !!
+    !! a    [in]  real(dp)(m,n): the matrix, m >= n >= 1 (not changed: a copy is factored).
+    !! b    [in]  real(dp)(m):   right-hand side.
+    !! x    [out] real(dp)(n):   the solution.
+    !! stat [out]: ERR_NUMERIC on a shape mismatch (m < n, sizes of b or x) or when R has an
+    !!             exactly zero diagonal element (INFO = i > 0: A is not of full rank).
+    subroutine la_lstsq(a, b, x, stat)
+        real(dp), intent(in) :: a(:, :)
+        real(dp), intent(in) :: b(:)
+        real(dp), intent(out) :: x(:)
+        type(status_t), intent(out) :: stat
+        real(dp), allocatable :: ac(:, :), bc(:, :), work(:)
+        real(dp) :: wquery(1)
+        integer :: m, n, info, lwork
+        character(len=100) :: buf
+        m = size(a, 1)
+        n = size(a, 2)
+        x = 0.0_dp
+        if (n < 1 .or. m < n .or. size(b) /= m .or. size(x) /= n) then
+            call set_error(stat, ERR_NUMERIC, 'la_lstsq: shapes disagree (need m >= n >= 1, '// &
+                           'size(b) = m, size(x) = n)')
+            return
+        end if
+        allocate (ac(m, n), bc(m, 1))
+        ac(:, :) = a
+        bc(:, 1) = b
+        call dgels('N', m, n, 1, ac, m, bc, m, wquery, -1, info)
+        lwork = max(1, int(wquery(1)))
+        allocate (work(lwork))
+        call dgels('N', m, n, 1, ac, m, bc, m, work, lwork, info)
+        if (info /= 0) then
+            write (buf, '(a,i0,a,i0,a)') 'la_lstsq (dgels): the matrix is not of full rank (R(', &
+                info, ',', info, ') = 0)'
+            if (info < 0) write (buf, '(a,i0)') 'la_lstsq (dgels): illegal argument ', -info
+            call set_error(stat, ERR_NUMERIC, trim(buf))
+            return
+        end if
+        x = bc(1:n, 1)
+    end subroutine la_lstsq
+
+    !> Singular values and right singular vectors of an m x n matrix, A = U S V^T (LAPACK
+    !! DGESVD, U not formed).
+    !!
+    !! a    [in]  real(dp)(m,n): the matrix (not changed: a copy is reduced).
+    !! s    [out] real(dp)(min(m,n)): singular values, decreasing.
+    !! vt   [out] real(dp)(n,n): V^T, row i the right singular vector of s(i).
+    !! stat [out]: ERR_NUMERIC on a shape mismatch or when the QR iteration of the
+    !!             bidiagonal form does not converge (INFO > 0).
+    subroutine la_svd(a, s, vt, stat)
+        real(dp), intent(in) :: a(:, :)
+        real(dp), intent(out) :: s(:)
+        real(dp), intent(out) :: vt(:, :)
+        type(status_t), intent(out) :: stat
+        real(dp), allocatable :: ac(:, :), work(:)
+        real(dp) :: u(1, 1), wquery(1)
+        integer :: m, n, info, lwork
+        character(len=100) :: buf
+        m = size(a, 1)
+        n = size(a, 2)
+        s = 0.0_dp
+        vt = 0.0_dp
+        if (n < 1 .or. m < 1 .or. size(s) /= min(m, n) .or. any(shape(vt) /= [n, n])) then
+            call set_error(stat, ERR_NUMERIC, 'la_svd: shapes disagree (size(s) = min(m, n), '// &
+                           'vt n x n)')
+            return
+        end if
+        allocate (ac(m, n))
+        ac(:, :) = a
+        call dgesvd('N', 'A', m, n, ac, m, s, u, 1, vt, n, wquery, -1, info)
+        lwork = max(1, int(wquery(1)))
+        allocate (work(lwork))
+        call dgesvd('N', 'A', m, n, ac, m, s, u, 1, vt, n, work, lwork, info)
+        if (info /= 0) then
+            write (buf, '(a,i0,a)') 'la_svd (dgesvd): ', info, ' superdiagonals did not '// &
+                'converge to zero'
+            if (info < 0) write (buf, '(a,i0)') 'la_svd (dgesvd): illegal argument ', -info
+            call set_error(stat, ERR_NUMERIC, trim(buf))
+        end if
+    end subroutine la_svd
 
 end module lapack_wrap

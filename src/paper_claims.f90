@@ -358,6 +358,11 @@ contains
             'paper''s model (`input/work_precision_cylinder.nml`) and the elastic model '// &
             '(`input/work_precision_elastic.nml`); README, "Error against run time".'
         call figure_lines(-3)
+        if (ios == 0) write (u, '(a)', iostat=ios) '', '## The moment of inertia from a record', &
+            '', 'The fit of `input/identify_record.nml` (analysis identify: I1, the damping '// &
+            'and the release amplitude from a 30 s gyro record of a laboratory rig with '// &
+            'unequal cables; README, "Moment of inertia from what was measured").'
+        call figure_lines(-4)
         call atomic_commit(u, outdir//'/report.md', stat, ios)
 
     contains
@@ -404,7 +409,8 @@ contains
              figure_t('box_design_design', 'Rig design of the parallelepiped', -1), &
              figure_t('elastic_vs_kane', 'theta1, elastic cables against the paper''s', -2), &
              figure_t('work_precision', 'Work-precision, the paper''s model', -3), &
-             figure_t('work_precision_elastic', 'Work-precision, elastic cables', -3)]
+             figure_t('work_precision_elastic', 'Work-precision, elastic cables', -3), &
+             figure_t('identify_record_fit', 'A gyro record and the fitted model', -4)]
     end function report_figures
 
     !> The link from OUTDIR/report.md to plots/NAME.png (plots/ in the working folder, where

@@ -27,6 +27,22 @@
 !!   only at second order).  Each sample depends only on (seed, k): any order, thread or
 !!   rank gives the same numbers.
 !!
+!! * Asymmetric rigs (unequal cables, a mass centre off the vertical bisector of AB: the
+!!   rigs where pure torsion is not an exact motion) get their periods from the full model:
+!!   the period at amplitude A is the time from release at rest at theta4 = A (&start
+!!   mode 'raised' at A, no tilt, no damping) to the next maximum of theta4, the first zero
+!!   of theta4' from + to - after theta4 has swung below 0 (simulated_period_s: the run loop
+!!   of module run_loop with the deck's rtol and atol, the zero located in the integrator's
+!!   dense output).  For a symmetric rig this is the exact torsion period (a test checks it
+!!   to 1e-9).  Damping does not enter: a measured period is taken as that of the undamped
+!!   rig at its peak amplitude (viscous damping lengthens a period by a factor
+!!   1/sqrt(1 - zeta^2), 1 + 5e-7 at zeta = 1e-3).  The budget then varies l and l'
+!!   separately and Monte Carlo draws them separately; the difference steps are 1e-4
+!!   relative (the simulated period carries the integration error, about rtol), and
+!!   Gauss-Newton stops at a relative change of 1e-10.  A trial I1 the model cannot swing
+!!   with (a cable slack at release when I1 is very small) counts as a failed step; periods
+!!   shorter than the model's down to the smallest I1 it can swing with are refused.
+!!
 !! Units are the deck's (consistent units, time in seconds): I1 in mass x length^2,
 !! periods in s, amplitudes in degrees.  No routine stops; failures come back in status_t.
 module period_inversion
@@ -34,9 +50,12 @@ module period_inversion
     use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC
     use geometry, only: pendulum_t
     use deck, only: deck_t
-    use simulate, only: make_pendulum
+    use simulate, only: make_pendulum, start_state, kane_run_start, kane_run_t
     use floquet, only: check_torsion_scene, torsion_period
     use random, only: rng_t, rng_stream, rng_normal
+    use bifilar_model, only: NSTATE
+    use stepper, only: SOLVER_LSODA
+    use run_loop, only: stepped_model_t, row_sink_t, drive
     implicit none
     private
 
@@ -67,12 +86,30 @@ module period_inversion
     end type period_fit_t
 
     public :: torsion_period_s, invert_periods, period_budget, period_mc_sample
-    public :: period_monte_carlo, linear_inertia
+    public :: period_monte_carlo, linear_inertia, rig_period_s, simulated_period_s
+    public :: is_torsion_rig, move_b_prime
+
+    !> Finds the period of an asymmetric rig in the run loop: the first maximum of theta4
+    !! after theta4 has swung below 0 (a zero of theta4' from + to -, located in the step).
+    type, extends(row_sink_t) :: period_sink_t
+        logical :: below = .false.              !! theta4 has been below 0
+        real(dp) :: t_max = -1.0_dp             !! tau of the maximum, once found
+    contains
+        procedure :: take => period_take
+        procedure :: after_step => period_after_step
+    end type period_sink_t
 
     integer, parameter :: MAX_ITER = 60         !! Gauss-Newton iterations
     real(dp), parameter :: I_TOL = 1.0e-14_dp   !! relative change of I1 that ends them
     real(dp), parameter :: FD_REL = 1.0e-6_dp   !! relative step of the sensitivities
     real(dp), parameter :: I_TINY = 1.0e-9_dp   !! I1 -> 0 limit, over m b'^2
+    !> Asymmetric rigs (simulated periods): smallest I1 (the deck's smallest moment, over
+    !! m b'^2), relative step of the budget's differences, relative change that ends
+    !! Gauss-Newton, relative step of its slopes.
+    real(dp), parameter :: I_TINY_SIM = 1.0e-6_dp, FD_REL_SIM = 1.0e-4_dp
+    real(dp), parameter :: I_TOL_SIM = 1.0e-10_dp, SLOPE_REL_SIM = 1.0e-5_dp
+    !> Most periods (of the small-amplitude estimate) a simulated period may take.
+    real(dp), parameter :: PERIODS_MAX = 20.0_dp
 
 contains
 
@@ -91,6 +128,146 @@ contains
         if (stat%code /= 0) return
         call scaled_period(d, p, amp_deg, t, stat)
     end subroutine torsion_period_s
+
+    !> True when the deck's rig is a torsion scene (equal cables, mass centre on the
+    !! vertical bisector of AB, a principal axis vertical at rest): its periods are then
+    !! those of pure torsion; else they are simulated.
+    logical function is_torsion_rig(d)
+        type(deck_t), intent(in) :: d           !! the rig
+        type(pendulum_t) :: p
+        type(status_t) :: st
+        integer :: ivert
+        is_torsion_rig = .false.
+        call make_pendulum(d, p, st)
+        if (st%code /= 0) return
+        call check_torsion_scene(p, ivert, st)
+        is_torsion_rig = st%code == 0
+    end function is_torsion_rig
+
+    !> The period (s) of the deck's rig with I1 = i1 at peak amplitude amp_deg: the exact
+    !! period of pure torsion (torsion_period_s) on a torsion scene, else the period of the
+    !! full model (simulated_period_s).
+    subroutine rig_period_s(d, i1, amp_deg, t, stat)
+        type(deck_t), intent(in) :: d           !! the rig
+        real(dp), intent(in) :: i1              !! principal moment about b1 (deck units)
+        real(dp), intent(in) :: amp_deg         !! peak amplitude of theta4 (degrees)
+        real(dp), intent(out) :: t              !! period (s)
+        type(status_t), intent(out) :: stat
+        if (is_torsion_rig(d)) then
+            call torsion_period_s(d, i1, amp_deg, t, stat)
+        else
+            call simulated_period_s(d, i1, amp_deg, t, stat)
+        end if
+    end subroutine rig_period_s
+
+    !> The period (s) of the full model (any rig) with I1 = i1: the time from release at
+    !! rest at theta4 = amp_deg (&start mode 'raised' at that amplitude, no tilt, no
+    !! damping) to the next maximum of theta4 (see the module header).  Integrated with the
+    !! deck's rtol and atol (LSODA), in memory, through the run loop.
+    subroutine simulated_period_s(d, i1, amp_deg, t, stat)
+        type(deck_t), intent(in) :: d           !! the rig
+        real(dp), intent(in) :: i1              !! principal moment about b1 (deck units)
+        real(dp), intent(in) :: amp_deg         !! peak amplitude of theta4 (degrees)
+        real(dp), intent(out) :: t              !! period (s)
+        type(status_t), intent(out) :: stat
+        type(deck_t) :: dd
+        type(pendulum_t) :: p
+        type(kane_run_t) :: m
+        type(period_sink_t) :: sink
+        real(dp) :: y0(NSTATE), th0(5), t_end, jz
+        t = 0.0_dp
+        dd = d
+        dd%inertia(1) = i1
+        dd%mode = 'raised'
+        dd%amplitude = amp_deg
+        dd%tilt = 0.0_dp
+        dd%c_v = 0.0_dp
+        dd%c_q = 0.0_dp
+        call make_pendulum(dd, p, stat)
+        if (stat%code /= 0) return
+        call start_state(dd, p, y0, th0, stat)
+        if (stat%code /= 0) return
+        ! an end well beyond the period: PERIODS_MAX small-amplitude periods of the body
+        ! turning about the vertical through its mass centre's offset from O, or about O
+        jz = p%inertia(1) + p%r**2 + 0.25_dp
+        t_end = PERIODS_MAX*4.0_dp*pi*sqrt(jz*p%big_l/p%big_b)
+        call kane_run_start(m, p, y0, th0(3), d%rtol, d%atol, SOLVER_LSODA, t_end, &
+                            'raise &integration rtol/atol', stat)
+        if (stat%code /= 0) return
+        sink%watch_steps = .true.
+        call drive(m, [0.0_dp, t_end], sink, stat)
+        if (stat%code /= 0) then
+            stat%msg = 'the period at '//fixed(amp_deg)//' deg (simulated): '//stat%msg
+            return
+        end if
+        if (.not. (sink%t_max > 0.0_dp)) then
+            call set_error(stat, ERR_NUMERIC, 'the period at '//fixed(amp_deg)//' deg '// &
+                '(simulated): theta4 reached no maximum after its first swing within '// &
+                'tau = '//fixed(t_end)//'; the rig does not swing in torsion')
+            return
+        end if
+        t = sink%t_max*sqrt(d%b_prime/d%g)
+    end subroutine simulated_period_s
+
+    !> period_sink_t takes no rows.
+    subroutine period_take(sink, m, k, t, y, stat)
+        class(period_sink_t), intent(inout) :: sink
+        class(stepped_model_t), intent(inout) :: m
+        integer, intent(in) :: k
+        real(dp), intent(in) :: t
+        real(dp), intent(in) :: y(:)
+        type(status_t), intent(out) :: stat
+        stat%code = 0
+        if (.false.) sink%done = same_type_as(m, m) .and. k + t + y(1) > 0.0_dp
+    end subroutine period_take
+
+    !> After a step [t0, t1]: note theta4 below 0; after that, a theta4' going from + to -
+    !! within the step is the maximum, located by the Illinois variant of regula falsi on
+    !! the dense output to roundoff.
+    subroutine period_after_step(sink, m, t0, t1, stat)
+        class(period_sink_t), intent(inout) :: sink
+        class(stepped_model_t), intent(inout) :: m
+        real(dp), intent(in) :: t0, t1          !! the step
+        type(status_t), intent(out) :: stat
+        real(dp) :: y(NSTATE), a, b, fa, fb, c, fc
+        integer :: it, side
+        call m%state_at(t1, y, stat)
+        if (stat%code /= 0) return
+        fb = y(9)
+        if (.not. sink%below) then
+            sink%below = y(4) < 0.0_dp
+            return
+        end if
+        if (fb > 0.0_dp) return
+        call m%state_at(t0, y, stat)
+        if (stat%code /= 0) return
+        fa = y(9)
+        if (.not. (fa > 0.0_dp)) return
+        a = t0
+        b = t1
+        side = 0
+        do it = 1, 200
+            c = (a*fb - b*fa)/(fb - fa)
+            if (.not. (c > a .and. c < b)) c = 0.5_dp*(a + b)
+            call m%state_at(c, y, stat)
+            if (stat%code /= 0) return
+            fc = y(9)
+            if (fc > 0.0_dp) then
+                a = c
+                fa = fc
+                if (side == -1) fb = 0.5_dp*fb
+                side = -1
+            else
+                b = c
+                fb = fc
+                if (side == 1) fa = 0.5_dp*fa
+                side = 1
+            end if
+            if (b - a <= 4.0_dp*epsilon(1.0_dp)*b .or. fc == 0.0_dp) exit
+        end do
+        sink%t_max = c
+        sink%done = .true.
+    end subroutine period_after_step
 
     !> Scaled parameters of the rig with I1 = i1, checked to be a torsion scene with b1
     !! vertical at rest.
@@ -133,9 +310,11 @@ contains
         type(period_fit_t), intent(out) :: fit
         type(status_t), intent(out) :: stat
         real(dp) :: w(size(periods)), tm(size(periods)), g(size(periods)), r(size(periods))
-        real(dp) :: scale, i1, di, s0, s1, ilo, tmin, ta, tb, h
+        real(dp) :: scale, i1, di, s0, s1, ilo, tmin, ta, tb, h, di_full
+        real(dp) :: r_acc(size(periods))
         integer :: i, it, half
         character(len=300) :: buf
+        logical :: sym
         stat%code = 0
         allocate (fit%model_periods(size(periods)))
         fit%model_periods = 0.0_dp
@@ -145,10 +324,13 @@ contains
             return
         end if
         scale = d%mass*d%b_prime**2
-        ilo = I_TINY*scale
-        ! feasibility: T(I1) > T(0+) for every period; weights from the amplitudes' effect
+        sym = is_torsion_rig(d)
+        ilo = merge(I_TINY, I_TINY_SIM, sym)*scale
+        ! feasibility: T(I1) > T(0+) for every period (asymmetric rigs: see below); weights
+        ! from the amplitudes' effect
         do i = 1, size(periods)
-            call torsion_period_s(d, ilo, amps(i), tmin, stat)
+            if (.not. sym) exit
+            call period_of(ilo, amps(i), tmin, stat)
             if (stat%code /= 0) return
             if (.not. (periods(i) > tmin)) then
                 write (buf, '(a,i0,a,es12.5,a,es12.5,a,f0.3,a)') '&measurement periods(', i, &
@@ -165,38 +347,67 @@ contains
         if (u%period > 0.0_dp .or. u%amplitude > 0.0_dp) then
             do i = 1, size(periods)
                 h = 1.0e-4_dp*max(1.0_dp, amps(i))
-                call torsion_period_s(d, i1, amps(i) + h, ta, stat)
-                if (stat%code == 0) call torsion_period_s(d, i1, amps(i) - h, tb, stat)
+                call period_of(i1, amps(i) + h, ta, stat)
+                if (stat%code == 0) call period_of(i1, amps(i) - h, tb, stat)
                 if (stat%code /= 0) return
                 w(i) = 1.0_dp/(u%period**2 + ((ta - tb)/(2*h)*u%amplitude)**2)
             end do
         end if
         call residuals(i1, tm, r, s0, stat)
         if (stat%code /= 0) return
+        r_acc = r
         do it = 1, MAX_ITER
             fit%iterations = it
             call slopes(i1, tm, g, stat)
-            if (stat%code /= 0) return
+            if (stat%code /= 0) then
+                ! an asymmetric rig near the smallest I1 it can swing with: judged below
+                if (sym) return
+                exit
+            end if
             di = -sum(w*g*r)/sum(w*g*g)
-            ! keep I1 positive and make the weighted sum of squares fall (step halving)
+            di_full = di
+            ! keep I1 positive and make the weighted sum of squares fall (step halving); a
+            ! simulated period the model cannot give (e.g. a cable slack at release when
+            ! I1 is very small) is a failed step too
             do half = 0, 60
                 if (i1 + di > ilo) then
                     call residuals(i1 + di, tm, r, s1, stat)
-                    if (stat%code /= 0) return
-                    if (s1 <= s0) exit
+                    if (stat%code /= 0 .and. sym) return
+                    if (stat%code == 0) then
+                        if (s1 <= s0) exit
+                    end if
                 end if
                 di = 0.5_dp*di
             end do
-            if (half > 60) exit
+            stat%code = 0
+            if (half > 60) then
+                ! simulated periods: a step at the integration error's level is converged
+                if (sym .or. abs(di_full) > 100.0_dp*I_TOL_SIM*i1) exit
+                call residuals(i1, tm, r, s1, stat)
+                if (stat%code /= 0) return
+                di = 0.0_dp
+            end if
             i1 = i1 + di
             s0 = s1
-            if (abs(di) <= I_TOL*i1) then
+            r_acc = r
+            if (abs(di) <= merge(I_TOL, I_TOL_SIM, sym)*i1) then
                 fit%i1 = i1
                 fit%model_periods = tm
                 fit%residual_rms = sqrt(sum((tm - periods)**2)/size(periods))
                 return
             end if
         end do
+        if (.not. sym .and. all(r_acc > 0.0_dp)) then
+            ! the model's periods are all still longer at the smallest I1 the model could
+            ! swing with (a cable goes slack below it): no I1 gives them
+            write (buf, '(a,es12.5,a,es12.5,a)') '&measurement periods: shorter than the '// &
+                'periods of this rig (simulated) down to I1 = ', i1, ' (', &
+                r_acc(1) + periods(1), ' s for periods(1)), below which a cable goes slack;'// &
+                ' no positive I1 gives them: check the units (s), the amplitudes and the '// &
+                'suspension lengths'
+            call set_error(stat, ERR_DECK, trim(buf))
+            return
+        end if
         write (buf, '(a,i0,a,es12.5)') 'period inversion: Gauss-Newton did not converge in ', &
             fit%iterations, ' iterations (I1 = ', i1
         call set_error(stat, ERR_NUMERIC, trim(buf)//'); check that the periods agree with '// &
@@ -208,7 +419,7 @@ contains
             type(status_t), intent(out) :: st
             integer :: k
             do k = 1, size(periods)
-                call torsion_period_s(d, ii, amps(k), tmod(k), st)
+                call period_of(ii, amps(k), tmod(k), st)
                 if (st%code /= 0) return
             end do
             rr = tmod - periods
@@ -221,18 +432,30 @@ contains
             real(dp) :: tp, hh
             integer :: k
             ! forward difference: only the direction of the step depends on it
-            hh = 1.0e-7_dp*ii
+            hh = merge(1.0e-7_dp, SLOPE_REL_SIM, sym)*ii
             do k = 1, size(periods)
-                call torsion_period_s(d, ii + hh, amps(k), tp, st)
+                call period_of(ii + hh, amps(k), tp, st)
                 if (st%code /= 0) return
                 gg(k) = (tp - tmod(k))/hh
             end do
         end subroutine slopes
+        !> The period of the rig: exact torsion, or simulated for an asymmetric rig.
+        subroutine period_of(ii, a, tp, st)
+            real(dp), intent(in) :: ii, a
+            real(dp), intent(out) :: tp
+            type(status_t), intent(out) :: st
+            if (sym) then
+                call torsion_period_s(d, ii, a, tp, st)
+            else
+                call simulated_period_s(d, ii, a, tp, st)
+            end if
+        end subroutine period_of
     end subroutine invert_periods
 
     !> First-order (GUM) budget of an inversion: fills fit%budget (mass, l, l_prime, b,
     !! b_prime, g, then period(i) and amplitude(i) for each period) and fit%u_i1.  The
-    !! sensitivities are central differences of the whole inversion (relative step 1e-6).
+    !! sensitivities are central differences of the whole inversion (relative step 1e-6;
+    !! 1e-4 for an asymmetric rig, whose periods are simulated).
     subroutine period_budget(d, periods, amps, u, fit, stat)
         type(deck_t), intent(in) :: d           !! the rig
         real(dp), intent(in) :: periods(:)      !! measured periods (s)
@@ -241,9 +464,12 @@ contains
         type(period_fit_t), intent(inout) :: fit    !! from invert_periods
         type(status_t), intent(out) :: stat
         integer :: n, k, i
-        real(dp) :: c, hx
+        real(dp) :: c, hx, hrel
         character(len=24) :: nm
+        logical :: sym
         n = size(periods)
+        sym = is_torsion_rig(d)
+        hrel = merge(FD_REL, FD_REL_SIM, sym)
         if (allocated(fit%budget)) deallocate (fit%budget)
         allocate (fit%budget(6 + 2*n))
         stat%code = 0
@@ -279,7 +505,7 @@ contains
             character(len=*), intent(in) :: name
             real(dp), intent(in) :: x, ux
             real(dp) :: ip, im
-            hx = FD_REL*max(abs(x), tiny(1.0_dp))
+            hx = hrel*max(abs(x), tiny(1.0_dp))
             call inverted(name, x + hx, ip, stat)
             if (stat%code == 0) call inverted(name, x - hx, im, stat)
             if (stat%code /= 0) then
@@ -306,9 +532,15 @@ contains
             case ('mass')
                 dd%mass = v
             case ('l', 'l_prime')
-                ! mirror symmetry: each cable carries half the effect of the common length
-                dd%l = d%l + 0.5_dp*(v - x_of(name))
-                dd%l_prime = d%l_prime + 0.5_dp*(v - x_of(name))
+                if (sym) then
+                    ! mirror symmetry: each cable carries half the effect of the common length
+                    dd%l = d%l + 0.5_dp*(v - x_of(name))
+                    dd%l_prime = d%l_prime + 0.5_dp*(v - x_of(name))
+                else if (name == 'l') then
+                    dd%l = v
+                else
+                    dd%l_prime = v
+                end if
             case ('b')
                 dd%b = v
             case ('b_prime')
@@ -371,8 +603,13 @@ contains
         dd%mass = d%mass + u%mass*rng_normal(g)
         la = d%l + u%l*rng_normal(g)
         lb = d%l_prime + u%l_prime*rng_normal(g)
-        dd%l = 0.5_dp*(la + lb)
-        dd%l_prime = dd%l
+        if (is_torsion_rig(d)) then
+            dd%l = 0.5_dp*(la + lb)
+            dd%l_prime = dd%l
+        else
+            dd%l = la
+            dd%l_prime = lb
+        end if
         dd%b = d%b + u%b*rng_normal(g)
         call move_b_prime(dd, d%b_prime + u%b_prime*rng_normal(g))
         dd%g = d%g + u%g*rng_normal(g)
@@ -428,6 +665,16 @@ contains
         real(dp), intent(in) :: t               !! period (s)
         i1 = d%mass*d%g*d%b*d%b_prime*t**2/(16.0_dp*pi**2*d%l)
     end function linear_inertia
+
+    !> A number for messages: 12.5, 0.35.
+    pure function fixed(x) result(s)
+        real(dp), intent(in) :: x
+        character(len=:), allocatable :: s
+        character(len=32) :: buf
+        write (buf, '(f0.3)') x
+        s = trim(adjustl(buf))
+        if (s(1:1) == '.') s = '0'//s
+    end function fixed
 
     pure function itoa(i) result(s)
         integer, intent(in) :: i

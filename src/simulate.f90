@@ -1,8 +1,12 @@
-!> One simulation of a deck: start position, integration by LSODA, output rows and summary.
+!> One simulation of a deck: start position, integration by LSODA or Radau, output rows and
+!! summary.
 !!
 !! Writes `OUTDIR/NAME.dat` (header, then one row per output time) and `OUTDIR/NAME.summary`
 !! (`key = value` lines), each through a temporary file renamed when complete, so a failed
-!! run leaves no partial file behind.
+!! run leaves no partial file behind.  Both models run through the run loop (module
+!! run_loop): kane_run_t and elastic_run_t step them and check them at every step's end,
+!! kane_dat_sink_t and elastic_dat_sink_t write the rows; kane_run_start starts the paper's
+!! model for any other sink (identify's records, the simulated periods).
 module simulate
     use kinds, only: dp, deg
     use status, only: status_t, set_error, ERR_DECK, ERR_MODEL, ERR_NUMERIC, ERR_IO
@@ -18,6 +22,7 @@ module simulate
     use output_io, only: out_files_t, write_kv, all_finite
     use text, only: sci
     use fast_format, only: es_field, f_field
+    use run_loop, only: stepped_model_t, row_sink_t, drive, check_row_budget, tau_text
     implicit none
     private
 
@@ -48,11 +53,36 @@ module simulate
         character(len=8) :: method = ''         !! the integrator used: 'lsoda' or 'radau'
     end type run_summary_t
 
-    public :: make_pendulum, start_state, run_simulation, model_checks, simulation_ready
-    public :: angle_difference, sway_of, tighter_rtol, integrator_of
+    !> A run of the paper's model for the run loop (module run_loop): the pendulum, its
+    !! integrator, the model checked at every step's end (check_validity).
+    type, extends(stepped_model_t), public :: kane_run_t
+        type(bifilar_t) :: sys                  !! the equations (keep_tensions set)
+        type(stepper_t) :: solver               !! LSODA or Radau
+        real(dp) :: th3 = 0.0_dp                !! theta_3 of the last row (branch choice of
+                                                !! the paper's angles in messages)
+        real(dp) :: t_prev = 0.0_dp             !! last time checked valid
+        real(dp) :: t_end = 0.0_dp              !! end of the run (tcrit)
+        real(dp) :: rtol = 0.0_dp, atol = 0.0_dp    !! the tolerances (for messages)
+    contains
+        procedure :: advance => kane_advance
+        procedure :: dense => kane_dense
+    end type kane_run_t
 
-    !> Most internal steps between two output rows before the run is given up.
-    integer, parameter :: MAX_STEPS_PER_ROW = 500000
+    !> A run of the elastic-cable model for the run loop.
+    type, extends(stepped_model_t) :: elastic_run_t
+        type(elastic_t) :: sys
+        type(elastic_solver_t) :: solver
+        real(dp) :: th_step(5) = 0.0_dp         !! the paper's angles at the last step's end
+        real(dp) :: t_end = 0.0_dp
+    contains
+        procedure :: advance => elastic_advance
+        procedure :: dense => elastic_dense
+    end type elastic_run_t
+
+    public :: make_pendulum, start_state, run_simulation, model_checks, simulation_ready
+    public :: angle_difference, sway_of, tighter_rtol, integrator_of, kane_run_start
+    public :: grid_times
+
     !> |cos theta5| below which line CD counts as vertical: the paper's body angles
     !! theta1, theta4 turn about the same axis there and eq. (38) becomes singular.
     real(dp), parameter :: COS5_MIN = 1.0e-3_dp
@@ -81,6 +111,33 @@ module simulate
         character(len=ROW_BLOCK) :: text
     end type row_block_t
 
+    !> The .dat writer of a simulation of the paper's model (a sink of the run loop).
+    type, extends(row_sink_t) :: kane_dat_sink_t
+        type(row_block_t) :: rb                 !! rows of the open .dat file
+        logical :: want(NCOL) = .true.          !! the columns written
+        type(motion_parts_t) :: parts           !! what a row computes
+        type(run_summary_t) :: sm               !! figures of the run
+        real(dp) :: e0 = 0.0_dp                 !! energy of row 0
+        logical :: error_estimate = .false.     !! rerun at rtol/100 in step (solver2)
+        type(stepper_t) :: solver2
+    contains
+        procedure :: take => kane_dat_take
+    end type kane_dat_sink_t
+
+    !> The .dat writer of a simulation of the elastic model.
+    type, extends(row_sink_t) :: elastic_dat_sink_t
+        type(row_block_t) :: rb
+        logical :: want(NCOL) = .true.
+        type(run_summary_t) :: sm
+        real(dp) :: e0 = 0.0_dp
+        real(dp) :: th_row(5) = 0.0_dp          !! the paper's angles of the last row
+        logical :: error_estimate = .false.
+        type(elastic_t) :: sys2                 !! the rerun's own system (cable modes)
+        type(elastic_solver_t) :: solver2
+    contains
+        procedure :: take => elastic_dat_take
+    end type elastic_dat_sink_t
+
 contains
 
     !> Scaled pendulum parameters from a deck (lengths over b', inertia over m b'^2), with the
@@ -97,6 +154,9 @@ contains
         p%lambda = d%lambda
         p%btilde = d%btilde
         p%h_e = d%sway_depth/d%b_prime
+        ! &damping in the model's units: torque over m g b', rates per unit tau
+        p%c_v = d%c_v/(d%mass*d%b_prime*sqrt(d%g*d%b_prime))
+        p%c_q = d%c_q/(d%mass*d%b_prime**2)
         p%stab_rate = 1.0_dp     ! Baumgarte rate: constraint drift decays in about one tau
         if (d%b >= d%l + d%l_prime + d%b_prime .or. d%b_prime >= d%l + d%l_prime + d%b) then
             call set_error(stat, ERR_DECK, '&suspension b = '//sci(d%b)//', b_prime = '// &
@@ -148,7 +208,7 @@ contains
 
     !> The preconditions of analyses = 'simulate' and 'work_precision', checked before any
     !! computing: the cables reach (make_pendulum), the start exists (start_state) and, for
-    !! model = 'elastic', the elastic start too.
+    !! model = 'elastic', no &damping and the elastic start.
     subroutine simulation_ready(d, stat)
         type(deck_t), intent(in) :: d           !! the deck
         type(status_t), intent(out) :: stat     !! ERR_DECK, or the start's failure
@@ -158,6 +218,13 @@ contains
         if (stat%code /= 0) return
         call start_state(d, el%p, yc, th0, stat)
         if (stat%code /= 0 .or. trim(d%model) /= 'elastic') return
+        if (d%c_v /= 0.0_dp .or. d%c_q /= 0.0_dp) then
+            call set_error(stat, ERR_DECK, '&damping c_v = '//sci(d%c_v)//', c_q = '// &
+                sci(d%c_q)//': the damping about the vertical is a torque of the paper''s '// &
+                'model; allowed: c_v = c_q = 0 with model = ''elastic'' (its cables have '// &
+                '&cables damping), or model = ''kane''')
+            return
+        end if
         el%stiffness = d%cable_stiffness
         el%damping = d%cable_damping
         call elastic_start(el, yc, y, stat)
@@ -188,141 +255,191 @@ contains
         if (stat%code /= 0) call own%discard()
     end subroutine run_simulation
 
-    !> run_simulation for the paper's model (model = 'kane').
+    !> run_simulation for the paper's model (model = 'kane'): the run loop (module run_loop)
+    !! with the paper's model (kane_run_t) and the .dat writer (kane_dat_sink_t).
     subroutine simulate_kane(d, outdir, fs, sm, stat)
         type(deck_t), intent(in) :: d           !! the deck
         character(len=*), intent(in) :: outdir  !! output directory
         type(out_files_t), intent(inout) :: fs  !! the run's files
         type(run_summary_t), intent(out) :: sm  !! figures of the run
         type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_MODEL or ERR_IO
-        type(bifilar_t) :: sys
-        type(stepper_t) :: solver, solver2
-        type(lsoda_stats_t) :: st
-        type(motion_t) :: mo
-        type(motion_parts_t) :: parts
-        type(row_block_t) :: rb
-        real(dp) :: y(NSTATE), ystep(NSTATE), th0(5), tau, e0, th3, t_cpu0
-        real(dp) :: t_prev, y2(NSTATE), t_e0, rt2, ydot(NSTATE)
+        type(kane_run_t) :: m
+        type(kane_dat_sink_t) :: sink
+        type(pendulum_t) :: p
+        real(dp) :: y(NSTATE), th0(5), t_cpu0, rt2
+        real(dp), allocatable :: times(:)
         character(len=:), allocatable :: sumpath
-        integer :: u, k, nout, nstep_row
-        logical :: want(NCOL)
+        integer :: u
 
-        call make_pendulum(d, sys%p, stat)
+        call make_pendulum(d, p, stat)
         if (stat%code /= 0) return
-        call start_state(d, sys%p, y, th0, stat)
+        call start_state(d, p, y, th0, stat)
         if (stat%code /= 0) return
         ! compute only what the asked columns need (the model checks need only the tensions'
         ! signs: from the integrator's derivative when T_BC, T_AD are not asked)
-        call column_mask(d, want)
-        parts%accelerations = want(COL_T_BC) .or. want(COL_T_AD)
-        parts%energy = want(COL_ENERGY)
-        parts%residual = want(COL_RESIDUAL)
-        parts%sway = want(COL_Q) .or. want(COL_Q_AXIS)
-        sm%have_sway = parts%sway
-        sm%have_energy = parts%energy
-        sm%have_residual = parts%residual
-        sys%keep_tensions = .true.              ! for check_validity
+        call column_mask(d, sink%want)
+        sink%parts%accelerations = sink%want(COL_T_BC) .or. sink%want(COL_T_AD)
+        sink%parts%energy = sink%want(COL_ENERGY)
+        sink%parts%residual = sink%want(COL_RESIDUAL)
+        sink%parts%sway = sink%want(COL_Q) .or. sink%want(COL_Q_AXIS)
+        sink%sm%have_sway = sink%parts%sway
+        sink%sm%have_energy = sink%parts%energy
+        sink%sm%have_residual = sink%parts%residual
 
         call open_dat(d, outdir, '', fs, u, sumpath, stat)
         if (stat%code /= 0) return
-        rb%unit = u
+        sink%rb%unit = u
 
         call cpu_time(t_cpu0)
         ! tcrit = tau_end: no step goes past the end, so every step end checked lies in the run
-        sm%method = merge('radau', 'lsoda', integrator_of(d) == SOLVER_RADAU)
-        call solver%init(sys, 0.0_dp, y, d%rtol, [d%atol], stat, integrator_of(d), &
-                         tcrit=d%tau_end)
+        sink%sm%method = merge('radau', 'lsoda', integrator_of(d) == SOLVER_RADAU)
+        call kane_run_start(m, p, y, th0(3), d%rtol, d%atol, integrator_of(d), d%tau_end, &
+                            'raise rtol/atol or shorten tau_end', stat)
         if (stat%code /= 0) return
         if (d%error_estimate) then
             ! the same run at a tolerance 100 times tighter, in step with the rows
             rt2 = tighter_rtol(d%rtol)
-            call solver2%init(sys, 0.0_dp, y, rt2, [d%atol*rt2/d%rtol], stat, integrator_of(d), &
-                              tcrit=d%tau_end)
+            call sink%solver2%init(m%sys, 0.0_dp, y, rt2, [d%atol*rt2/d%rtol], stat, &
+                                   integrator_of(d), tcrit=d%tau_end)
             if (stat%code /= 0) return
-            sm%error_estimate_rtol = rt2
-            sm%error_estimate_theta = 0.0_dp
-            sm%error_estimate_q = 0.0_dp
+            sink%error_estimate = .true.
+            sink%sm%error_estimate_rtol = rt2
+            sink%sm%error_estimate_theta = 0.0_dp
+            sink%sm%error_estimate_q = 0.0_dp
         end if
-        nout = nint(d%tau_end/d%dtau_out)
-        if (nout*d%dtau_out < d%tau_end*(1.0_dp - 1.0e-12_dp)) nout = nout + 1
-        th3 = th0(3)
-        e0 = 0.0_dp
-        k = 0
-        t_prev = 0.0_dp
-        nstep_row = 0
-        ! Step by step: the model's validity (taut cables, regular coordinates) is checked at
-        ! the end of every internal step; the rows come from the dense output.
-        do while (k <= nout)
-            tau = min(k*d%dtau_out, d%tau_end)
-            st = solver%stats()
-            if (k > 0 .and. st%t_current < tau) then
-                call check_row_budget(nstep_row, tau, st%h_last, 'raise rtol/atol or '// &
-                                      'shorten tau_end', stat)
-                if (stat%code /= 0) exit
-                call solver%step(sys, stat, tout=d%tau_end)
-                st = solver%stats()
-                if (stat%code /= 0) then
-                    call explain_failure(solver, st%t_current, th3, stat)
-                    if (too_much_accuracy(stat)) then
-                        stat%msg = stat%msg//'; &integration rtol = '//sci(d%rtol, 2)// &
-                            ', atol = '//sci(d%atol, 2)//': raise them (rtol >= 3e-14 works '// &
-                            'for the paper scenes)'
-                    end if
-                    exit
-                end if
-                nstep_row = nstep_row + 1
-                call solver%dense(st%t_current, 0, ystep, stat)
-                if (stat%code /= 0) exit
-                call check_validity(sys, solver, t_prev, st%t_current, ystep, th3, stat)
-                if (stat%code /= 0) exit
-                t_prev = st%t_current
-                cycle
-            end if
-            if (k > 0) then
-                if (tau >= st%t_current) then
-                    y = ystep
-                else
-                    call solver%dense(tau, 0, y, stat)
-                    if (stat%code /= 0) exit
-                end if
-            end if
-            nstep_row = 0
-            call evaluate(sys%p, y, th3, mo, stat, parts)
-            if (stat%code == 0 .and. .not. parts%accelerations) then
-                ! tensions for the model checks only, from the integrator's derivative
-                if (k == 0) then
-                    call sys%rhs(0.0_dp, y, ydot, stat)
-                else
-                    call solver%dense(tau, 1, ydot, stat)
-                end if
-                if (stat%code == 0) call step_tensions(sys, y, ydot, mo%t_bc, mo%t_ad, stat)
-            end if
-            if (stat%code /= 0) then
-                call append_tau(stat, tau)
-                exit
-            end if
-            th3 = mo%th(3)
-            call emit_row(rb, tau, k, mo, e0, 'the motion left the range the model covers', &
-                          .true., want, sm, stat)
-            if (stat%code /= 0) exit
-            if (d%error_estimate .and. k > 0) then
-                call cpu_time(t_e0)
-                call solver2%integrate(sys, tau, y2, stat)
-                if (stat%code /= 0) then
-                    stat%msg = 'error estimate (rerun at rtol/100): '//stat%msg
-                    exit
-                end if
-                call add_estimate(sm, angle_difference(y, y2), &
-                                  abs(sway_of(sys%p, y) - sway_of(sys%p, y2)), t_e0)
-            end if
-            k = k + 1
-        end do
-        if (stat%code == 0) call flush_rows(rb, stat)
-        call finish_run(solver%stats(), t_cpu0, fs, u, sm, stat)
+        call grid_times(d, times)
+        call drive(m, times, sink, stat)
+        if (stat%code == 0) call flush_rows(sink%rb, stat)
+        sm = sink%sm
+        call finish_run(m%solver%stats(), t_cpu0, fs, u, sm, stat)
         if (stat%code /= 0) return
 
         call write_summary(d, sm, fs, sumpath, stat)
     end subroutine simulate_kane
+
+    !> The uniform output grid of a deck: tau_k = min(k dtau_out, tau_end), k = 0 .. nout.
+    subroutine grid_times(d, times)
+        type(deck_t), intent(in) :: d           !! the deck
+        real(dp), allocatable, intent(out) :: times(:)  !! (0:nout)
+        integer :: nout, k
+        nout = nint(d%tau_end/d%dtau_out)
+        if (nout*d%dtau_out < d%tau_end*(1.0_dp - 1.0e-12_dp)) nout = nout + 1
+        allocate (times(0:nout))
+        do k = 0, nout
+            times(k) = min(k*d%dtau_out, d%tau_end)
+        end do
+    end subroutine grid_times
+
+    !> One row of the paper's model's .dat file: the motion at tau as the asked columns
+    !! need it (the tensions from the integrator's derivative when T_BC, T_AD are not
+    !! asked), the row written and folded into the summary, and the error-estimate rerun
+    !! brought to tau.
+    subroutine kane_dat_take(sink, m, k, t, y, stat)
+        class(kane_dat_sink_t), intent(inout) :: sink
+        class(stepped_model_t), intent(inout) :: m
+        integer, intent(in) :: k                !! row number (0: the start)
+        real(dp), intent(in) :: t               !! tau of the row
+        real(dp), intent(in) :: y(:)            !! chart state there
+        type(status_t), intent(out) :: stat
+        type(motion_t) :: mo
+        real(dp) :: ydot(NSTATE), y2(NSTATE), t_e0
+        stat%code = 0
+        select type (m)
+        type is (kane_run_t)
+            call evaluate(m%sys%p, y, m%th3, mo, stat, sink%parts)
+            if (stat%code == 0 .and. .not. sink%parts%accelerations) then
+                ! tensions for the model checks only, from the integrator's derivative
+                if (k == 0) then
+                    call m%sys%rhs(0.0_dp, y, ydot, stat)
+                else
+                    call m%solver%dense(t, 1, ydot, stat)
+                end if
+                if (stat%code == 0) call step_tensions(m%sys, y, ydot, mo%t_bc, mo%t_ad, stat)
+            end if
+            if (stat%code /= 0) then
+                call append_tau(stat, t)
+                return
+            end if
+            m%th3 = mo%th(3)
+            call emit_row(sink%rb, t, k, mo, sink%e0, 'the motion left the range the model '// &
+                          'covers', .true., sink%want, sink%sm, stat)
+            if (stat%code /= 0) return
+            if (sink%error_estimate .and. k > 0) then
+                call cpu_time(t_e0)
+                call sink%solver2%integrate(m%sys, t, y2, stat)
+                if (stat%code /= 0) then
+                    stat%msg = 'error estimate (rerun at rtol/100): '//stat%msg
+                    return
+                end if
+                call add_estimate(sink%sm, angle_difference(y, y2), &
+                                  abs(sway_of(m%sys%p, y) - sway_of(m%sys%p, y2)), t_e0)
+            end if
+        end select
+    end subroutine kane_dat_take
+
+    !> Start a run of the paper's model (for the run loop): the pendulum p from the chart
+    !! state y0 at tau = 0, by the integrator `method` with tolerances rtol, atol, no step
+    !! past t_end; th3 the start's theta_3 (branch of the paper's angles in messages).
+    !! The validity of the model is checked at the end of every step (check_validity).
+    subroutine kane_run_start(m, p, y0, th3, rtol, atol, method, t_end, remedy, stat)
+        type(kane_run_t), intent(out) :: m      !! the run
+        type(pendulum_t), intent(in) :: p       !! scaled parameters
+        real(dp), intent(in) :: y0(NSTATE)      !! chart state at tau = 0
+        real(dp), intent(in) :: th3             !! theta_3 at the start (rad)
+        real(dp), intent(in) :: rtol, atol      !! integrator tolerances
+        integer, intent(in) :: method           !! SOLVER_LSODA or SOLVER_RADAU
+        real(dp), intent(in) :: t_end           !! end of the run (tau), tcrit
+        character(len=*), intent(in) :: remedy  !! what to change when a row takes too long
+        type(status_t), intent(out) :: stat     !! the integrator's init
+        m%sys%p = p
+        m%sys%keep_tensions = .true.            ! for check_validity
+        m%y0 = y0
+        m%ystep = y0
+        m%nsteps = 0
+        m%t_cur = 0.0_dp
+        m%th3 = th3
+        m%t_end = t_end
+        m%rtol = rtol
+        m%atol = atol
+        m%remedy = remedy
+        call m%solver%init(m%sys, 0.0_dp, y0, rtol, [atol], stat, method, tcrit=t_end)
+    end subroutine kane_run_start
+
+    !> One step of the paper's model: an integrator failure explained (singular coordinates
+    !! named, too much accuracy asked), the model checked at the step's end.
+    subroutine kane_advance(m, stat)
+        class(kane_run_t), intent(inout) :: m
+        type(status_t), intent(out) :: stat
+        type(lsoda_stats_t) :: st
+        call m%solver%step(m%sys, stat, tout=m%t_end)
+        st = m%solver%stats()
+        if (stat%code /= 0) then
+            call explain_failure(m%solver, st%t_current, m%th3, stat)
+            if (too_much_accuracy(stat)) then
+                stat%msg = stat%msg//'; &integration rtol = '//sci(m%rtol, 2)// &
+                    ', atol = '//sci(m%atol, 2)//': raise them (rtol >= 3e-14 works '// &
+                    'for the paper scenes)'
+            end if
+            return
+        end if
+        m%nsteps = m%nsteps + 1
+        m%t_cur = st%t_current
+        m%h_cur = st%h_last
+        call m%solver%dense(st%t_current, 0, m%ystep, stat)
+        if (stat%code /= 0) return
+        call check_validity(m%sys, m%solver, m%t_prev, st%t_current, m%ystep, m%th3, stat)
+        if (stat%code /= 0) return
+        m%t_prev = st%t_current
+    end subroutine kane_advance
+
+    !> The state at t inside the last step (the integrator's dense output).
+    subroutine kane_dense(m, t, y, stat)
+        class(kane_run_t), intent(in) :: m
+        real(dp), intent(in) :: t
+        real(dp), intent(out) :: y(:)
+        type(status_t), intent(out) :: stat
+        call m%solver%dense(t, 0, y, stat)
+    end subroutine kane_dense
 
     !> Open OUTDIR/NAME.dat (a file of the run, see output_io) and write its header: title,
     !! units, an optional model note, the effective deck, the line of the &output columns.
@@ -416,21 +533,6 @@ contains
             i1 = i2 + 2
         end do
     end subroutine column_mask
-
-    !> ERR_NUMERIC when the integrator has taken MAX_STEPS_PER_ROW steps without reaching
-    !! the next row at tau; `remedy` says what to change.
-    subroutine check_row_budget(nstep_row, tau, h_last, remedy, stat)
-        integer, intent(in) :: nstep_row        !! steps since the last row
-        real(dp), intent(in) :: tau             !! time of the next row
-        real(dp), intent(in) :: h_last          !! last step size
-        character(len=*), intent(in) :: remedy
-        type(status_t), intent(inout) :: stat
-        character(len=200) :: buf
-        if (nstep_row < MAX_STEPS_PER_ROW) return
-        write (buf, '(a,i0,a)') 'the integrator took ', MAX_STEPS_PER_ROW, &
-            ' steps without reaching tau = '//tau_text(tau)//' (last step '//sci(abs(h_last))//'):'
-        call set_error(stat, ERR_NUMERIC, trim(buf)//' '//remedy)
-    end subroutine check_row_budget
 
     !> Append " at tau = TAU" (f0.4) to a failure's message.
     subroutine append_tau(stat, tau)
@@ -594,138 +696,157 @@ contains
         type(out_files_t), intent(inout) :: fs  !! the run's files
         type(run_summary_t), intent(out) :: sm  !! figures of the run
         type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_MODEL or ERR_IO
-        type(elastic_t) :: sys, sys2
-        type(elastic_solver_t) :: solver, solver2
-        type(lsoda_stats_t) :: st
-        type(motion_t) :: mo, mo2
+        type(elastic_run_t) :: m
+        type(elastic_dat_sink_t) :: sink
+        type(motion_t) :: mo
         type(elastic_cables_t) :: cab
-        type(status_t) :: s2
-        real(dp) :: yc(NSTATE), th0(5), y(ELASTIC_NSTATE), ystep(ELASTIC_NSTATE)
-        real(dp) :: y2(ELASTIC_NSTATE), atol(ELASTIC_NSTATE), th_row(5), th_step(5)
-        real(dp) :: tau, e0, t_cpu0, t_e0, rt2
+        real(dp) :: yc(NSTATE), th0(5), y(ELASTIC_NSTATE), atol(ELASTIC_NSTATE)
+        real(dp) :: t_cpu0, rt2
+        real(dp), allocatable :: times(:)
         character(len=:), allocatable :: sumpath
-        integer :: u, k, nout, nstep_row
-        logical :: want(NCOL)
-        type(row_block_t) :: rb
+        integer :: u
 
-        sm%elastic = .true.
-        call column_mask(d, want)
-        call make_pendulum(d, sys%p, stat)
+        sink%sm%elastic = .true.
+        call column_mask(d, sink%want)
+        call make_pendulum(d, m%sys%p, stat)
         if (stat%code /= 0) return
-        call start_state(d, sys%p, yc, th0, stat)
+        call start_state(d, m%sys%p, yc, th0, stat)
         if (stat%code /= 0) return
-        sys%stiffness = d%cable_stiffness
-        sys%damping = d%cable_damping
-        call elastic_start(sys, yc, y, stat)
+        m%sys%stiffness = d%cable_stiffness
+        m%sys%damping = d%cable_damping
+        call elastic_start(m%sys, yc, y, stat)
         if (stat%code /= 0) then
             stat%msg = 'elastic start: '//stat%msg
             return
         end if
-        atol = elastic_atol(sys, d%atol, d%rtol)
+        atol = elastic_atol(m%sys, d%atol, d%rtol)
 
         call open_dat(d, outdir, '# model elastic: T_BC, T_AD from the springs (0 when '// &
             'slack); energy_error includes the springs'' energy; constraint_residual = '// &
             '|AD| - l''', fs, u, sumpath, stat)
         if (stat%code /= 0) return
-        rb%unit = u
+        sink%rb%unit = u
 
         call cpu_time(t_cpu0)
-        sm%method = merge('radau', 'lsoda', integrator_of(d) == SOLVER_RADAU)
-        call solver%init(sys, 0.0_dp, y, d%rtol, atol, stat, tcrit=d%tau_end, &
-                         method=integrator_of(d))
+        sink%sm%method = merge('radau', 'lsoda', integrator_of(d) == SOLVER_RADAU)
+        call m%solver%init(m%sys, 0.0_dp, y, d%rtol, atol, stat, tcrit=d%tau_end, &
+                           method=integrator_of(d))
         if (stat%code /= 0) return
         if (d%error_estimate) then
             rt2 = tighter_rtol(d%rtol)
-            sys2 = sys                           ! its own cable modes
-            call solver2%init(sys2, 0.0_dp, y, rt2, elastic_atol(sys2, d%atol*rt2/d%rtol, rt2), &
-                              stat, tcrit=d%tau_end, method=integrator_of(d))
+            sink%sys2 = m%sys                    ! its own cable modes
+            call sink%solver2%init(sink%sys2, 0.0_dp, y, rt2, elastic_atol(sink%sys2, &
+                                   d%atol*rt2/d%rtol, rt2), stat, tcrit=d%tau_end, &
+                                   method=integrator_of(d))
             if (stat%code /= 0) return
-            sm%error_estimate_rtol = rt2
-            sm%error_estimate_theta = 0.0_dp
-            sm%error_estimate_q = 0.0_dp
+            sink%error_estimate = .true.
+            sink%sm%error_estimate_rtol = rt2
+            sink%sm%error_estimate_theta = 0.0_dp
+            sink%sm%error_estimate_q = 0.0_dp
         end if
-        nout = nint(d%tau_end/d%dtau_out)
-        if (nout*d%dtau_out < d%tau_end*(1.0_dp - 1.0e-12_dp)) nout = nout + 1
-        th_row = th0
-        th_step = th0
-        e0 = 0.0_dp
-        k = 0
-        nstep_row = 0
-        call elastic_evaluate(sys, y, th0(3), mo, stat, th0, cab)
+        m%y0 = y
+        m%ystep = y
+        m%t_end = d%tau_end
+        m%remedy = 'raise rtol/atol, shorten tau_end, or add &cables damping'
+        sink%th_row = th0
+        m%th_step = th0
+        call elastic_evaluate(m%sys, y, th0(3), mo, stat, th0, cab)
         if (stat%code /= 0) return
-        do while (k <= nout)
-            tau = min(k*d%dtau_out, d%tau_end)
-            st = solver%stats()
-            if (k > 0 .and. st%t_current < tau) then
-                call check_row_budget(nstep_row, tau, st%h_last, 'raise rtol/atol, shorten '// &
-                                      'tau_end, or add &cables damping', stat)
-                if (stat%code /= 0) exit
-                call solver%step(sys, stat, tout=d%tau_end)
-                st = solver%stats()
-                if (stat%code /= 0) then
-                    stat%msg = stat%msg//' at tau = '//tau_text(st%t_current)
-                    exit
-                end if
-                nstep_row = nstep_row + 1
-                call solver%dense(st%t_current, 0, ystep, stat)
-                if (stat%code /= 0) exit
-                ! the cables at the step end: the sanity limit
-                call elastic_evaluate(sys, ystep, th_step(3), mo2, stat, th_step, cab)
-                if (stat%code /= 0) exit
-                th_step = mo2%th
-                if (maxval(cab%strain) > STRAIN_MAX) then
-                    call set_error(stat, ERR_MODEL, 'a cable stretches to more than twice '// &
-                        'its natural length at tau = '//tau_text(st%t_current)//' (strain '// &
-                        sci(maxval(cab%strain))//'): raise &cables stiffness')
-                    exit
-                end if
-                cycle
-            end if
-            if (k > 0) then
-                if (tau >= st%t_current) then
-                    y = ystep
-                else
-                    call solver%dense(tau, 0, y, stat)
-                    if (stat%code /= 0) exit
-                end if
-            end if
-            nstep_row = 0
-            call elastic_evaluate(sys, y, th_row(3), mo, stat, th_row)
-            if (stat%code /= 0) then
-                call append_tau(stat, tau)
-                exit
-            end if
-            th_row = mo%th
-            call emit_row(rb, tau, k, mo, e0, 'the body''s pose left the range the paper''s '// &
-                          'angles cover (line CD vertical?)', .false., want, sm, stat)
-            if (stat%code /= 0) exit
-            if (d%error_estimate .and. k > 0) then
-                call cpu_time(t_e0)
-                call solver2%integrate(sys2, tau, y2, stat)
-                if (stat%code /= 0) then
-                    stat%msg = 'error estimate (rerun at rtol/100): '//stat%msg
-                    exit
-                end if
-                call elastic_evaluate(sys2, y2, mo%th(3), mo2, s2, mo%th)
-                if (s2%code == 0) then
-                    call add_estimate(sm, maxval(abs(mo%th([1, 4, 5]) - mo2%th([1, 4, 5]))), &
-                                      abs(mo%q_sway - mo2%q_sway), t_e0)
-                else
-                    call add_estimate(sm, 0.0_dp, 0.0_dp, t_e0)
-                end if
-            end if
-            k = k + 1
-        end do
-        sm%slack_time = solver%slack_time()
-        sm%slack_intervals = solver%slack_intervals()
-        sm%cable_switches = solver%switches()
-        if (stat%code == 0) call flush_rows(rb, stat)
-        call finish_run(solver%stats(), t_cpu0, fs, u, sm, stat)
+        call grid_times(d, times)
+        call drive(m, times, sink, stat)
+        sm = sink%sm
+        sm%slack_time = m%solver%slack_time()
+        sm%slack_intervals = m%solver%slack_intervals()
+        sm%cable_switches = m%solver%switches()
+        if (stat%code == 0) call flush_rows(sink%rb, stat)
+        call finish_run(m%solver%stats(), t_cpu0, fs, u, sm, stat)
         if (stat%code /= 0) return
-        call write_slack_list(d, outdir, fs, solver%slack_list(), sm%tau_reached, stat)
+        call write_slack_list(d, outdir, fs, m%solver%slack_list(), sm%tau_reached, stat)
         if (stat%code /= 0) return
         call write_summary(d, sm, fs, sumpath, stat)
     end subroutine run_elastic
+
+    !> One row of the elastic model's .dat file (the paper's angles from the body's pose,
+    !! tensions from the springs), and the error-estimate rerun brought to tau.
+    subroutine elastic_dat_take(sink, m, k, t, y, stat)
+        class(elastic_dat_sink_t), intent(inout) :: sink
+        class(stepped_model_t), intent(inout) :: m
+        integer, intent(in) :: k                !! row number (0: the start)
+        real(dp), intent(in) :: t               !! tau of the row
+        real(dp), intent(in) :: y(:)            !! state there
+        type(status_t), intent(out) :: stat
+        type(motion_t) :: mo, mo2
+        type(status_t) :: s2
+        real(dp) :: y2(ELASTIC_NSTATE), t_e0
+        stat%code = 0
+        select type (m)
+        type is (elastic_run_t)
+            call elastic_evaluate(m%sys, y, sink%th_row(3), mo, stat, sink%th_row)
+            if (stat%code /= 0) then
+                call append_tau(stat, t)
+                return
+            end if
+            sink%th_row = mo%th
+            call emit_row(sink%rb, t, k, mo, sink%e0, 'the body''s pose left the range the '// &
+                          'paper''s angles cover (line CD vertical?)', .false., sink%want, &
+                          sink%sm, stat)
+            if (stat%code /= 0) return
+            if (sink%error_estimate .and. k > 0) then
+                call cpu_time(t_e0)
+                call sink%solver2%integrate(sink%sys2, t, y2, stat)
+                if (stat%code /= 0) then
+                    stat%msg = 'error estimate (rerun at rtol/100): '//stat%msg
+                    return
+                end if
+                call elastic_evaluate(sink%sys2, y2, mo%th(3), mo2, s2, mo%th)
+                if (s2%code == 0) then
+                    call add_estimate(sink%sm, maxval(abs(mo%th([1, 4, 5]) - &
+                                      mo2%th([1, 4, 5]))), abs(mo%q_sway - mo2%q_sway), t_e0)
+                else
+                    call add_estimate(sink%sm, 0.0_dp, 0.0_dp, t_e0)
+                end if
+            end if
+        end select
+    end subroutine elastic_dat_take
+
+    !> One step of the elastic model (elastic_solver: taut/slack switches located), the
+    !! sanity limit of the cables' strain checked at its end.
+    subroutine elastic_advance(m, stat)
+        class(elastic_run_t), intent(inout) :: m
+        type(status_t), intent(out) :: stat
+        type(lsoda_stats_t) :: st
+        type(motion_t) :: mo2
+        type(elastic_cables_t) :: cab
+        call m%solver%step(m%sys, stat, tout=m%t_end)
+        st = m%solver%stats()
+        if (stat%code /= 0) then
+            stat%msg = stat%msg//' at tau = '//tau_text(st%t_current)
+            return
+        end if
+        m%nsteps = m%nsteps + 1
+        m%t_cur = st%t_current
+        m%h_cur = st%h_last
+        call m%solver%dense(st%t_current, 0, m%ystep, stat)
+        if (stat%code /= 0) return
+        ! the cables at the step end: the sanity limit
+        call elastic_evaluate(m%sys, m%ystep, m%th_step(3), mo2, stat, m%th_step, cab)
+        if (stat%code /= 0) return
+        m%th_step = mo2%th
+        if (maxval(cab%strain) > STRAIN_MAX) then
+            call set_error(stat, ERR_MODEL, 'a cable stretches to more than twice '// &
+                'its natural length at tau = '//tau_text(st%t_current)//' (strain '// &
+                sci(maxval(cab%strain))//'): raise &cables stiffness')
+        end if
+    end subroutine elastic_advance
+
+    !> The state at t inside the last step (the integrator's dense output).
+    subroutine elastic_dense(m, t, y, stat)
+        class(elastic_run_t), intent(in) :: m
+        real(dp), intent(in) :: t
+        real(dp), intent(out) :: y(:)
+        type(status_t), intent(out) :: stat
+        call m%solver%dense(t, 0, y, stat)
+    end subroutine elastic_dense
 
     !> The checks that end a run because the model no longer holds (ERR_MODEL): a slack
     !! cable, line CD vertical (singular coordinates), cable BC near the horizontal.
@@ -875,17 +996,6 @@ contains
             end if
         end if
     end subroutine explain_failure_at
-
-    !> tau for messages: 0.732039, 42.758454.
-    function tau_text(tau) result(s)
-        real(dp), intent(in) :: tau             !! time
-        character(len=:), allocatable :: s
-        character(len=40) :: buf
-        write (buf, '(f0.6)') tau
-        s = trim(adjustl(buf))
-        if (s(1:1) == '.') s = '0'//s
-        if (s(1:2) == '-.') s = '-0'//s(2:)
-    end function tau_text
 
     !> The integrator of a deck's simulation: &integration method = 'radau' or 'lsoda', or
     !! 'auto': Radau IIA for model = 'elastic' (stiff, lightly damped cables), LSODA for

@@ -18,6 +18,7 @@ program run_tests
     use test_period, only: run_period_tests
     use test_design, only: run_design_tests
     use test_sweep, only: run_sweep_tests
+    use test_identify, only: run_identify_tests
     implicit none
     type(tester_t) :: t
     character(len=1024) :: exe, filter
@@ -43,5 +44,6 @@ program run_tests
     call run_period_tests(t)
     call run_design_tests(t, trim(exe))
     call run_sweep_tests(t, trim(exe))
+    call run_identify_tests(t, trim(exe))
     if (.not. t%summary()) error stop 1
 end program run_tests

@@ -242,8 +242,9 @@ contains
         call t%check('monte carlo: a sample depends only on (seed, k)', s1 == s2)
     end subroutine test_mc
 
-    !> A period no positive I1 gives, and a rig that is not a torsion scene, are refused
-    !! with ERR_DECK naming the variable.
+    !> A period no positive I1 gives, and a symmetric rig whose b1 is not vertical, are
+    !! refused with ERR_DECK naming the variable (unequal cables are inverted by simulation:
+    !! test_identify).
     subroutine test_refusals(t)
         type(tester_t), intent(inout) :: t
         type(deck_t) :: d
@@ -255,11 +256,15 @@ contains
         call t%check('refusal: a period shorter than T(I1 -> 0) is ERR_DECK', st%code == ERR_DECK)
         if (st%code /= 0) call t%check('refusal: message names periods(1) and says why', &
             index(st%msg, 'periods(1)') > 0 .and. index(st%msg, 'no positive I1') > 0)
-        d%l_prime = 1.18_dp
+        ! b1 horizontal at rest (btilde's rows a cyclic permutation): torsion turns the
+        ! body about b3, its period does not depend on I1
+        d = test_rig()
+        d%btilde = reshape([0.0_dp, 0.0_dp, 1.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, &
+                            0.0_dp], [3, 3])
         call invert_periods(d, [1.5_dp], [20.0_dp], u, f, st)
-        call t%check('refusal: unequal cables are not a torsion scene', st%code == ERR_DECK)
-        if (st%code /= 0) call t%check('refusal: message says equal cables', &
-            index(st%msg, 'equal cables') > 0)
+        call t%check('refusal: b1 not vertical at rest is ERR_DECK', st%code == ERR_DECK)
+        if (st%code /= 0) call t%check('refusal: message says b1 is not vertical', &
+            index(st%msg, 'b1 is not vertical') > 0)
     end subroutine test_refusals
 
 end module test_period

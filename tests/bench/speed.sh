@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Speed figures of make bench: instructions (valgrind --tool=callgrind, exact and repeatable)
 # and CPU time of one right-hand side, one Floquet analysis, one chart point, the start of
-# the process, the whole cylinder_l180 deck and the 60 x 6 rig design (input/box_design.nml,
-# one thread).  Usage: tests/bench/speed.sh BINDIR OUTFILE
-# (BINDIR holds bifilar and bench_speed).  One unit's instructions are the difference of a
-# run with N units and one with 0, over N; its CPU time is from a run with more units.
+# the process, the whole cylinder_l180 deck, the 60 x 6 rig design (input/box_design.nml,
+# one thread) and identify's units (issue 10).  Usage: tests/bench/speed.sh BINDIR OUTFILE
+# (BINDIR holds bifilar, bench_speed, bench_identify).  One unit's instructions are the
+# difference of a run with N units and one with 0, over N; its CPU time is from a run with
+# more units.
 set -euo pipefail
 bin=${1:-bin}
 out=${2:-output/bench_speed.dat}
@@ -52,6 +53,16 @@ $(cpu_process 40 "$bin/bifilar" input/cylinder_l180.nml --out "$scratch")"
     # the 60 x 6 rig design of the parallelepiped, whole process on one thread
     echo "design_box_60x6 $(OMP_NUM_THREADS=1 cg "$bin/bifilar" input/box_design.nml --out \
 "$scratch") $(OMP_NUM_THREADS=1 cpu_process 3 "$bin/bifilar" input/box_design.nml --out "$scratch")"
+    # identify (issue 10): a period inversion; the 30 s, 100 Hz record with three
+    # parameters; 2000 Monte Carlo samples from periods (one thread for the count)
+    echo "identify_periods $(per_unit 20 "$bin/bench_identify" periods) \
+$(cpu_unit "$bin/bench_identify" periods 200)"
+    echo "identify_periods_asym $(per_unit 2 "$bin/bench_identify" periods_asym) \
+$(cpu_unit "$bin/bench_identify" periods_asym 10)"
+    echo "identify_record_3par $(per_unit 1 "$bin/bench_identify" record) \
+$(cpu_unit "$bin/bench_identify" record 3)"
+    echo "identify_mc_2000 $(( $(OMP_NUM_THREADS=1 per_unit 200 "$bin/bench_identify" mc) * 2000 )) \
+$(OMP_NUM_THREADS=1 cpu_unit "$bin/bench_identify" mc 2000 | awk '{printf "%.5e", $1 * 2000}')"
 } > "$out.tmp"
 mv "$out.tmp" "$out"
 awk 'NR == 1 {next} {printf "%-28s %14.0f instructions %12.3e s cpu\n", $1, $2, $3}' "$out"

@@ -1,0 +1,101 @@
+!> make_record: measurements made by the program itself, for the example decks of the
+!! identify analysis and their tests (Makefile target `records`).
+!!
+!!   make_record record DECK DURATION RATE SIGMA SEED QUANTITY OUT
+!!       simulate DECK (the true rig, with its &damping) from its &start, sample theta4
+!!       (QUANTITY = angle, rad) or W = omega . n3 (rate, rad/s) every 1/RATE s up to
+!!       DURATION s, add normal noise of standard deviation SIGMA from stream 0 of SEED, and
+!!       write the record OUT (module identify's make_record).
+!!   make_record periods DECK SIGMA SEED A1 [A2 ...]
+!!       print '&measurement'-ready lines: the periods (s) of DECK's rig at peak amplitudes
+!!       A1, A2, ... degrees (period_inversion's rig_period_s: exact torsion, or simulated)
+!!       plus normal noise of standard deviation SIGMA (s) from stream 0 of SEED, rounded
+!!       to 1e-5 s.
+!! Exit status 0, or 2 with one line on standard error.
+program make_record_main
+    use, intrinsic :: iso_c_binding, only: c_int
+    use, intrinsic :: iso_fortran_env, only: error_unit
+    use kinds, only: dp
+    use status, only: status_t
+    use deck, only: deck_t, read_deck
+    use identify, only: make_record
+    use period_inversion, only: rig_period_s
+    use random, only: rng_t, rng_stream, rng_normal
+    implicit none
+    interface
+        !> C library exit(3) (as bifilar: no ERROR STOP line from the run-time library).
+        subroutine c_exit(status) bind(C, name='exit')
+            import :: c_int
+            integer(c_int), value :: status
+        end subroutine c_exit
+    end interface
+    character(len=1024) :: mode, arg
+    type(deck_t) :: d
+    type(status_t) :: st
+    type(rng_t) :: g
+    real(dp) :: duration, rate, sigma, a, tp
+    real(dp), allocatable :: amps(:), per(:)
+    integer :: seed, k, na, ios
+    character(len=:), allocatable :: line1, line2
+    character(len=32) :: buf
+    if (command_argument_count() < 5) call usage()
+    call get_command_argument(1, mode)
+    call get_command_argument(2, arg)
+    call read_deck(trim(arg), d, st)
+    if (st%code /= 0) call fail(trim(arg)//': '//st%msg)
+    select case (trim(mode))
+    case ('record')
+        if (command_argument_count() /= 8) call usage()
+        duration = real_arg(3)
+        rate = real_arg(4)
+        sigma = real_arg(5)
+        seed = nint(real_arg(6))
+        call get_command_argument(7, arg)
+        if (trim(arg) /= 'angle' .and. trim(arg) /= 'rate') call usage()
+        mode = arg
+        call get_command_argument(8, arg)
+        call make_record(d, duration, rate, sigma, seed, trim(mode), trim(arg), st)
+        if (st%code /= 0) call fail(st%msg)
+    case ('periods')
+        sigma = real_arg(3)
+        seed = nint(real_arg(4))
+        na = command_argument_count() - 4
+        allocate (amps(na), per(na))
+        g = rng_stream(seed, 0)
+        line1 = '             periods ='
+        line2 = '             amplitudes ='
+        do k = 1, na
+            a = real_arg(4 + k)
+            call rig_period_s(d, d%inertia(1), a, tp, st)
+            if (st%code /= 0) call fail(st%msg)
+            tp = anint((tp + sigma*rng_normal(g))*1.0e5_dp)/1.0e5_dp
+            write (buf, '(f0.5)') tp
+            line1 = line1//' '//trim(buf)//','
+            write (buf, '(f0.1)') a
+            line2 = line2//' '//trim(buf)//','
+        end do
+        write (*, '(a)') line1
+        write (*, '(a)') line2
+    case default
+        call usage()
+    end select
+contains
+    function real_arg(i) result(x)
+        integer, intent(in) :: i
+        real(dp) :: x
+        character(len=256) :: s
+        call get_command_argument(i, s)
+        read (s, *, iostat=ios) x
+        if (ios /= 0) call fail('argument '//trim(s)//' is not a number')
+    end function real_arg
+    subroutine usage()
+        call fail('usage: make_record record DECK DURATION RATE SIGMA SEED angle|rate OUT'// &
+                  ' | make_record periods DECK SIGMA SEED A1 [A2 ...]')
+    end subroutine usage
+    subroutine fail(msg)
+        character(len=*), intent(in) :: msg
+        write (error_unit, '(a)') 'make_record: '//msg
+        flush (error_unit)
+        call c_exit(2_c_int)
+    end subroutine fail
+end program make_record_main

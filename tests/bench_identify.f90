@@ -1,0 +1,101 @@
+!> Work units for the identify figures of `make bench` (tests/bench/speed.sh, issue 10):
+!! each mode repeats one unit n times, so that its instruction count is the difference of
+!! two runs under `valgrind --tool=callgrind` (n and 0 repetitions) over n, and its CPU time
+!! the cpu_time of a run over n.
+!!
+!!   bench_identify periods N       one inversion of the three periods of
+!!                                  input/identify_periods.nml (symmetric rig: exact torsion)
+!!   bench_identify periods_asym N  the same periods on that rig with l' = 1.18 m and the mass
+!!                                  centre 0.5 mm off (periods of the full model, simulated)
+!!   bench_identify record N        the fit of input/identify_record_swing.dat (30 s, 100 Hz,
+!!                                  3001 samples) with three parameters, I1 c_v c_q, and its
+!!                                  first-order budget (identify_record)
+!!   bench_identify mc N            N Monte Carlo samples from the periods of
+!!                                  input/identify_periods.nml (one unit = one sample; OpenMP
+!!                                  threads as set, OMP_NUM_THREADS)
+!!
+!! Prints one line: `MODE units cpu_seconds_per_unit checksum`.
+program bench_identify
+    use kinds, only: dp
+    use status, only: status_t
+    use deck, only: deck_t, read_deck
+    use period_inversion, only: input_u_t, period_fit_t, invert_periods, period_monte_carlo
+    use identify, only: record_t, identify_result_t, read_record, identify_record
+    implicit none
+    character(len=256) :: mode
+    type(deck_t) :: d
+    type(status_t) :: st
+    type(period_fit_t) :: f
+    type(input_u_t) :: u
+    type(record_t) :: rec
+    type(identify_result_t) :: res
+    real(dp) :: t0, t1, sumck, mean, sdev
+    integer :: n, k, units
+    call get_command_argument(1, mode)
+    n = int_arg(2)
+    sumck = 0.0_dp
+    units = n
+    select case (trim(mode))
+    case ('periods', 'periods_asym', 'mc')
+        call read_deck('input/identify_periods.nml', d, st)
+        call need(st)
+        if (trim(mode) == 'periods_asym') then
+            d%l_prime = 1.18_dp
+            d%lambda = 0.64_dp
+        end if
+        u = input_u_t(period=d%u_period, amplitude=d%u_amplitude, mass=d%u_mass, l=d%u_l, &
+                      l_prime=d%u_l_prime, b=d%u_b, b_prime=d%u_b_prime, g=d%u_g)
+        call cpu_time(t0)
+        if (trim(mode) == 'mc') then
+            if (n >= 2) then
+                call period_monte_carlo(d, d%periods(1:3), d%amplitudes(1:3), u, 0.0512_dp, n, &
+                                        d%seed, mean, sdev, st)
+                call need(st)
+                sumck = sdev
+            end if
+        else
+            do k = 1, n
+                call invert_periods(d, d%periods(1:3), d%amplitudes(1:3), u, f, st)
+                call need(st)
+                sumck = sumck + f%i1
+            end do
+        end if
+        call cpu_time(t1)
+    case ('record')
+        call read_deck('input/identify_record.nml', d, st)
+        call need(st)
+        d%estimate = 'I1 c_v c_q'
+        d%monte_carlo = 0
+        call read_record(d, rec, st)
+        call need(st)
+        call cpu_time(t0)
+        do k = 1, n
+            call identify_record(d, rec, res, st)
+            call need(st)
+            sumck = sumck + res%i1
+        end do
+        call cpu_time(t1)
+    case default
+        write (*, '(a)') 'usage: bench_identify periods|periods_asym|record|mc N'
+        stop 1
+    end select
+    write (*, '(a,1x,i0,es14.5,es24.15)') trim(mode), units, (t1 - t0)/max(1, units), sumck
+
+contains
+
+    integer function int_arg(i)
+        integer, intent(in) :: i
+        character(len=32) :: buf
+        call get_command_argument(i, buf)
+        read (buf, *) int_arg
+    end function int_arg
+
+    subroutine need(s)
+        type(status_t), intent(in) :: s
+        if (s%code /= 0) then
+            write (*, '(a)') 'bench_identify: '//s%msg
+            stop 1
+        end if
+    end subroutine need
+
+end program bench_identify
