@@ -75,6 +75,9 @@ module elastic_solver
         integer :: method = SOLVER_RADAU        ! SOLVER_RADAU or SOLVER_LSODA
         type(stepper_t) :: it                   ! the integrator of the current segment
         logical :: use_gen = .true.             ! Radau: generalized coordinates where regular
+        real(dp) :: quality_leave = QUALITY_LEAVE   ! the chart's limits (es_init chart_limits)
+        real(dp) :: quality_enter = QUALITY_ENTER
+        integer :: n_recoords = 0               ! changes of coordinates (either way)
         integer :: coords = COORDS_MAX          ! coordinates of the current segment
         type(elastic_gen_t) :: gen              ! the model in generalized coordinates
         real(dp) :: yg_ref(GEN_NSTATE) = 0.0_dp ! last generalized state (angle branches)
@@ -104,6 +107,7 @@ module elastic_solver
         procedure :: dense => es_dense
         procedure :: stats => es_stats
         procedure :: switches => es_switches
+        procedure :: recoords => es_recoords
         procedure :: slack_time => es_slack_time
         procedure :: slack_intervals => es_slack_intervals
         procedure :: slack_list => es_slack_list
@@ -124,7 +128,7 @@ contains
     !> Start an elastic integration at (t0, y0): the modes from the state (initial_modes, set
     !! in sys%mode), then the integrator as its init (rtol, atol of size 1 or 13, tcrit).
     subroutine es_init(s, sys, t0, y0, rtol, atol, stat, tcrit, nonstiff_only, method, &
-                       maximal_only)
+                       maximal_only, chart_limits)
         class(elastic_solver_t), intent(inout) :: s
         type(elastic_t), intent(inout) :: sys   !! the model; its modes are set here
         real(dp), intent(in) :: t0, y0(:), rtol, atol(:)
@@ -136,6 +140,9 @@ contains
                                                 !! nonstiff_only implies SOLVER_LSODA
         logical, intent(in), optional :: maximal_only  !! Radau: never the generalized
                                                 !! coordinates (comparisons)
+        real(dp), intent(in), optional :: chart_limits(2)  !! Radau: leave the generalized
+                                                !! chart below chart_limits(1), enter it above
+                                                !! chart_limits(2) (tests; default 0.05, 0.1)
         integer :: j
         s%ready = .false.
         s%adams_only = .false.
@@ -145,6 +152,13 @@ contains
         if (s%adams_only) s%method = SOLVER_LSODA
         s%use_gen = s%method == SOLVER_RADAU
         if (present(maximal_only)) s%use_gen = s%use_gen .and. .not. maximal_only
+        s%quality_leave = QUALITY_LEAVE
+        s%quality_enter = QUALITY_ENTER
+        if (present(chart_limits)) then
+            s%quality_leave = chart_limits(1)
+            s%quality_enter = max(chart_limits(1), chart_limits(2))
+        end if
+        s%n_recoords = 0
         s%have_ref = .false.
         s%rtol = rtol
         s%atol = atol
@@ -183,7 +197,7 @@ contains
         real(dp) :: yg(GEN_NSTATE)
         s%coords = COORDS_MAX
         if (s%use_gen) then
-            if (chart_quality(sys, y0) > QUALITY_ENTER) then
+            if (chart_quality(sys, y0) > s%quality_enter) then
                 s%gen%el = sys
                 if (s%have_ref) then
                     call maximal_to_gen(sys, y0, yg, stat, s%yg_ref)
@@ -304,6 +318,7 @@ contains
             call segment_dense(s, t0, 0, y, stat)
             if (stat%code /= STATUS_OK) return
             s%use_gen = .false.
+            s%n_recoords = s%n_recoords + 1
             call start_segment(s, sys, t0, y, stat, .false., abs(st%h_next))
             s%use_gen = .true.
             if (stat%code /= STATUS_OK) return
@@ -331,11 +346,11 @@ contains
         if (s%coords == COORDS_GEN) then
             y = gen_to_maximal(s%gen%el, ys(1:GEN_NSTATE), quality)
             s%yg_ref = ys(1:GEN_NSTATE)
-            recoord = quality < QUALITY_LEAVE
+            recoord = quality < s%quality_leave
         else
             y = ys
             recoord = .false.
-            if (s%use_gen) recoord = chart_quality(sys, y) > QUALITY_ENTER
+            if (s%use_gen) recoord = chart_quality(sys, y) > s%quality_enter
         end if
         s%t_prev = t0
         s%t_now = t1
@@ -345,6 +360,7 @@ contains
             s%y_switch = y
             s%mode_next = sys%mode
             s%pending = .true.
+            s%n_recoords = s%n_recoords + 1
         end if
         if (any(sw)) then
             s%y_switch = y
@@ -577,6 +593,13 @@ contains
         class(elastic_solver_t), intent(in) :: s
         es_switches = s%n_switches
     end function es_switches
+
+    !> Number of changes between the generalized and the maximal coordinates so far (at
+    !! the chart's limits, and steps retaken in the maximal ones at a chart singularity).
+    integer function es_recoords(s)
+        class(elastic_solver_t), intent(in) :: s
+        es_recoords = s%n_recoords
+    end function es_recoords
 
     !> Total slack time of BC (1) and AD (2) up to t_current.
     function es_slack_time(s) result(t)

@@ -17,7 +17,8 @@ module test_elastic_radau
     use elastic_model, only: elastic_t, elastic_start, elastic_evaluate, elastic_atol, &
                              elastic_from_angles, quat_to_matrix, natural_lengths, &
                              ELASTIC_NSTATE, CABLE_AUTO, CABLE_TAUT
-    use elastic_gen, only: elastic_gen_t, gen_to_maximal, maximal_to_gen, GEN_NSTATE
+    use elastic_gen, only: elastic_gen_t, gen_to_maximal, maximal_to_gen, chart_quality, &
+                           GEN_NSTATE
     use elastic_solver, only: elastic_solver_t, SOLVER_LSODA, SOLVER_RADAU
     use lsoda, only: lsoda_stats_t
     use deck, only: deck_t, read_deck
@@ -47,6 +48,7 @@ contains
         if (t%want('elastic radau: lightly damped stiff cables ahead of CVODE (issue 11)')) &
             call test_cvode(t)
         if (t%want('elastic radau: no blow-up (issue 11)')) call test_blowup(t)
+        if (t%want('elastic radau: in and out of the generalized chart')) call test_recoords(t)
         if (t%want('elastic radau: &integration method chooses the integrator')) &
             call test_method_word(t)
     end subroutine run_elastic_radau_tests
@@ -70,7 +72,7 @@ contains
     !> The scene solved by `method` at rtol (atol = rtol/100; LSODA: elastic_atol's
     !! per-state tolerances), states at the NOUT + 1 output times; the counters; the CPU
     !! seconds of the solve (optional).
-    subroutine solve_scene(el, y0, method, rtol, ys, st, stat, cpu)
+    subroutine solve_scene(el, y0, method, rtol, ys, st, stat, cpu, limits, recoords)
         type(elastic_t), intent(inout) :: el
         real(dp), intent(in) :: y0(:), rtol
         integer, intent(in) :: method
@@ -78,20 +80,28 @@ contains
         type(lsoda_stats_t), intent(out) :: st
         type(status_t), intent(out) :: stat
         real(dp), intent(out), optional :: cpu
+        real(dp), intent(in), optional :: limits(2)     !! Radau: the chart's limits
+        integer, intent(out), optional :: recoords      !! changes of coordinates
         type(elastic_solver_t) :: s
         real(dp) :: c0, c1
         integer :: k
         ys = 0.0_dp
         ys(:, 0) = y0
         call cpu_time(c0)
-        call s%init(el, 0.0_dp, y0, rtol, elastic_atol(el, rtol/100, rtol), stat, tcrit=TEND, &
-                    method=method)
+        if (present(limits)) then
+            call s%init(el, 0.0_dp, y0, rtol, elastic_atol(el, rtol/100, rtol), stat, &
+                        tcrit=TEND, method=method, chart_limits=limits)
+        else
+            call s%init(el, 0.0_dp, y0, rtol, elastic_atol(el, rtol/100, rtol), stat, &
+                        tcrit=TEND, method=method)
+        end if
         do k = 1, NOUT
             if (stat%code == 0) call s%integrate(el, k*DTOUT, ys(:, k), stat, max_steps=5000000)
         end do
         call cpu_time(c1)
         st = s%stats()
         if (present(cpu)) cpu = c1 - c0
+        if (present(recoords)) recoords = s%recoords()
     end subroutine solve_scene
 
     !> The largest differences of theta1, theta4, theta5 (rad) and Q (b') between two
@@ -230,6 +240,65 @@ contains
             end do
         end do
     end subroutine test_follows
+
+    !> Where the generalized chart degenerates (quality below 0.05) Radau goes on in the
+    !! maximal coordinates and comes back above 0.1.  The issue's scene does not get there,
+    !! so the limits are raised into the range its motion sweeps (the 30 % and 70 % points
+    !! of the chart's quality at the output times of a reference): the run then changes
+    !! coordinates many times, both ways, and its error still follows rtol; so does a run in
+    !! the maximal coordinates alone.
+    subroutine test_recoords(t)
+        type(tester_t), intent(inout) :: t
+        real(dp), parameter :: rtol = 1.0e-8_dp
+        type(elastic_t) :: el
+        type(lsoda_stats_t) :: st
+        type(status_t) :: stat
+        real(dp) :: y0(ELASTIC_NSTATE), err(2), q(0:NOUT), lim(2)
+        real(dp), allocatable :: yref(:, :), ys(:, :)
+        integer :: k, nre, nre_max
+        allocate (yref(ELASTIC_NSTATE, 0:NOUT), ys(ELASTIC_NSTATE, 0:NOUT))
+        call issue_scene(1.0e4_dp, 0.1_dp, el, y0)
+        call solve_scene(el, y0, SOLVER_RADAU, 1.0e-12_dp, yref, st, stat, recoords=nre)
+        call t%check('reference in the generalized chart throughout', stat%code == 0 &
+                     .and. nre == 0)
+        do k = 0, NOUT
+            q(k) = chart_quality(el, yref(:, k))
+        end do
+        call sort(q)
+        lim = [q(3*NOUT/10), q(7*NOUT/10)]
+        call solve_scene(el, y0, SOLVER_RADAU, rtol, ys, st, stat, limits=lim, recoords=nre)
+        err = scene_errors(el, ys, yref)
+        write (*, '(a,2f7.3,a,i0,a,i0,a,f6.2,a)') '  chart limits ', lim, ': ', nre, &
+            ' changes of coordinates, ', st%steps, ' steps, error ', err(1)/rtol, ' rtol'
+        call t%check('limits inside the motion: >= 6 changes of coordinates', &
+                     stat%code == 0 .and. nre >= 6)
+        call t%check('limits inside the motion: error <= 30 rtol', stat%code == 0 .and. &
+                     err(1) <= 30*rtol)
+        call solve_scene(el, y0, SOLVER_RADAU, rtol, ys, st, stat, limits=[2.0_dp, 2.0_dp], &
+                         recoords=nre_max)
+        err = scene_errors(el, ys, yref)
+        write (*, '(a,i0,a,f6.2,a)') '  maximal coordinates alone: ', st%steps, &
+            ' steps, error ', err(1)/rtol, ' rtol'
+        call t%check('maximal coordinates alone: no change, error <= 30 rtol', &
+                     stat%code == 0 .and. nre_max == 0 .and. err(1) <= 30*rtol)
+    end subroutine test_recoords
+
+    !> Ascending order, in place (insertion: short arrays).
+    pure subroutine sort(x)
+        real(dp), intent(inout) :: x(:)
+        real(dp) :: v
+        integer :: i, j
+        do i = 2, size(x)
+            v = x(i)
+            j = i - 1
+            do while (j >= 1)
+                if (x(j) <= v) exit
+                x(j + 1) = x(j)
+                j = j - 1
+            end do
+            x(j + 1) = v
+        end do
+    end subroutine sort
 
     !> Issue 11, item 3: damping 0.01, at k = 1e6 and 1e8 Radau (rtol 1e-9) reaches a theta1
     !! error below the 2.5e-9 for which CVODE needs 37 791 steps at k = 1e6 (and far below
