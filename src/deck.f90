@@ -10,7 +10,7 @@ module deck
         ieee_get_halting_mode, ieee_set_halting_mode, ieee_set_flag
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
-    use text, only: itoa, sci
+    use text, only: itoa, sci, lead_zero
     implicit none
     private
 
@@ -2247,13 +2247,8 @@ contains
             end do
         end if
         if (fixed) then
-            s = trim(adjustl(buf))
+            s = lead_zero(buf)
             if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
-            if (len(s) == 0) s = '0'
-            if (s(1:1) == '.') s = '0'//s
-            if (len(s) >= 2) then
-                if (s(1:2) == '-.') s = '-0'//s(2:)
-            end if
         else
             do k = 0, 16
                 write (buf, '(es48.'//itoa(k)//'e3)') x

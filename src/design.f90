@@ -46,7 +46,7 @@
 module design
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_MODEL, ERR_NUMERIC
-    use text, only: itoa, sci
+    use text, only: itoa, sci, fixed
     use deck, only: deck_t, deck_echo
     use geometry, only: pendulum_t
     use simulate, only: make_pendulum
@@ -873,7 +873,6 @@ contains
     function num(x) result(s)
         real(dp), intent(in) :: x
         character(len=:), allocatable :: s
-        character(len=48) :: buf
         integer :: nd, ie
         if (.not. (abs(x) >= 1.0e-3_dp .and. abs(x) < 1.0e5_dp)) then
             s = sci(x, 3)
@@ -889,17 +888,12 @@ contains
             return
         end if
         nd = max(0, 3 - floor(log10(abs(x))))
-        write (buf, '(f0.'//itoa(nd)//')') x
-        s = trim(adjustl(buf))
+        s = fixed(x, nd)
         if (index(s, '.') > 0) then
             do while (s(len(s):len(s)) == '0')
                 s = s(1:len(s) - 1)
             end do
             if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
-        end if
-        if (s(1:1) == '.') s = '0'//s
-        if (len(s) > 1) then
-            if (s(1:2) == '-.') s = '-0'//s(2:)
         end if
     end function num
 
@@ -907,15 +901,12 @@ contains
     pure function short_number(x) result(s)
         real(dp), intent(in) :: x
         character(len=:), allocatable :: s
-        character(len=40) :: buf
         integer :: nd
-        do nd = 0, 6
-            write (buf, '(f0.'//itoa(nd)//')') x
+        do nd = 0, 5
             if (abs(real(nint(x*10.0_dp**nd), dp)/10.0_dp**nd - x) <= 1.0e-9_dp*max(1.0_dp, &
                 abs(x))) exit
         end do
-        s = trim(adjustl(buf))
-        if (s(1:1) == '.') s = '0'//s
+        s = fixed(x, nd)
         if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
     end function short_number
 

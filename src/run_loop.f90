@@ -22,7 +22,7 @@
 module run_loop
     use kinds, only: dp
     use status, only: status_t, set_error, ERR_NUMERIC
-    use text, only: sci
+    use text, only: sci, fixed
     implicit none
     private
 
@@ -83,7 +83,7 @@ module run_loop
         end subroutine take_i
     end interface
 
-    public :: drive, check_row_budget, tau_text
+    public :: drive, check_row_budget
 
     !> Most internal steps between two requested times before the run is given up.
     integer, parameter, public :: MAX_STEPS_PER_ROW = 500000
@@ -188,19 +188,8 @@ contains
         character(len=200) :: buf
         if (nstep_row < MAX_STEPS_PER_ROW) return
         write (buf, '(a,i0,a)') 'the integrator took ', MAX_STEPS_PER_ROW, &
-            ' steps without reaching tau = '//tau_text(tau)//' (last step '//sci(abs(h_last))//'):'
+            ' steps without reaching tau = '//fixed(tau, 6)//' (last step '//sci(abs(h_last))//'):'
         call set_error(stat, ERR_NUMERIC, trim(buf)//' '//remedy)
     end subroutine check_row_budget
-
-    !> tau for messages: 0.732039, 42.758454.
-    function tau_text(tau) result(s)
-        real(dp), intent(in) :: tau             !! time
-        character(len=:), allocatable :: s
-        character(len=40) :: buf
-        write (buf, '(f0.6)') tau
-        s = trim(adjustl(buf))
-        if (s(1:1) == '.') s = '0'//s
-        if (s(1:2) == '-.') s = '-0'//s(2:)
-    end function tau_text
 
 end module run_loop

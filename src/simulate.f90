@@ -20,9 +20,9 @@ module simulate
     use elastic_solver, only: elastic_solver_t, slack_interval_t
     use deck, only: deck_t, deck_echo, OUTPUT_COLUMNS
     use output_io, only: out_files_t, write_kv, all_finite
-    use text, only: sci
+    use text, only: sci, fixed
     use fast_format, only: es_field, f_field
-    use run_loop, only: stepped_model_t, row_sink_t, drive, check_row_budget, tau_text
+    use run_loop, only: stepped_model_t, row_sink_t, drive, check_row_budget
     implicit none
     private
 
@@ -538,7 +538,7 @@ contains
     subroutine append_tau(stat, tau)
         type(status_t), intent(inout) :: stat
         real(dp), intent(in) :: tau
-        stat%msg = stat%msg//' at tau = '//tau_text(tau)
+        stat%msg = stat%msg//' at tau = '//fixed(tau, 6)
     end subroutine append_tau
 
     !> One output row from the motion at tau (row k; the energy error is against the energy
@@ -561,7 +561,7 @@ contains
         row = [tau, mo%th, mo%thd, mo%q_sway, mo%q_axis, mo%t_bc, mo%t_ad, &
                mo%energy - e0, mo%residual]
         if (.not. all_finite(row)) then
-            call set_error(stat, ERR_NUMERIC, 'non-finite result at tau = '//tau_text(tau)// &
+            call set_error(stat, ERR_NUMERIC, 'non-finite result at tau = '//fixed(tau, 6)// &
                            ': '//why)
             return
         end if
@@ -820,7 +820,7 @@ contains
         call m%solver%step(m%sys, stat, tout=m%t_end)
         st = m%solver%stats()
         if (stat%code /= 0) then
-            stat%msg = stat%msg//' at tau = '//tau_text(st%t_current)
+            stat%msg = stat%msg//' at tau = '//fixed(st%t_current, 6)
             return
         end if
         m%nsteps = m%nsteps + 1
@@ -834,7 +834,7 @@ contains
         m%th_step = mo2%th
         if (maxval(cab%strain) > STRAIN_MAX) then
             call set_error(stat, ERR_MODEL, 'a cable stretches to more than twice '// &
-                'its natural length at tau = '//tau_text(st%t_current)//' (strain '// &
+                'its natural length at tau = '//fixed(st%t_current, 6)//' (strain '// &
                 sci(maxval(cab%strain))//'): raise &cables stiffness')
         end if
     end subroutine elastic_advance
@@ -857,17 +857,17 @@ contains
         character(len=400) :: buf
         stat%code = 0
         if (min(mo%t_bc, mo%t_ad) <= 0.0_dp) then
-            call set_error(stat, ERR_MODEL, 'cable goes slack at tau = '//tau_text(tau)// &
+            call set_error(stat, ERR_MODEL, 'cable goes slack at tau = '//fixed(tau, 6)// &
                 ' (T_BC = '//sci(mo%t_bc)//', T_AD = '//sci(mo%t_ad)//' m g): the taut-cable '// &
                 'model no longer holds; lower the amplitude or start speed, or lengthen the cables')
         else if (abs(cos(mo%th(5))) < COS5_MIN) then
-            write (buf, '(a,f0.4,a)') 'line CD turns vertical at tau = '//tau_text(tau)// &
+            write (buf, '(a,f0.4,a)') 'line CD turns vertical at tau = '//fixed(tau, 6)// &
                 ' (theta5 = ', mo%th(5)/deg, ' deg): the paper''s coordinates theta1, theta4 '// &
                 'are singular there; lower the amplitude, tilt or start speed'
             call set_error(stat, ERR_MODEL, trim(buf))
         else if (abs(sin(mo%th(2))) > SIN2_MAX) then
             write (buf, '(a,f0.4,a)') 'cable BC swings up to the horizontal at tau = '// &
-                tau_text(tau)//' (theta2 = ', mo%th(2)/deg, ' deg): the model of a hanging cable no '// &
+                fixed(tau, 6)//' (theta2 = ', mo%th(2)/deg, ' deg): the model of a hanging cable no '// &
                 'longer holds; lower the amplitude or start speed'
             call set_error(stat, ERR_MODEL, trim(buf))
         end if
@@ -989,7 +989,7 @@ contains
             call model_checks(mo, t, stat)
             if (stat%code == 0) then
                 write (buf, '(a,f0.4,a,f0.4,a)') 'the equations of motion become '// &
-                    'singular at tau = '//tau_text(t)//' (theta5 = ', th(5)/deg, ' deg, theta2 = ', &
+                    'singular at tau = '//fixed(t, 6)//' (theta5 = ', th(5)/deg, ' deg, theta2 = ', &
                     th(2)/deg, ' deg): line CD or cable BC near their limits; lower the '// &
                     'amplitude or start speed'
                 call set_error(stat, ERR_MODEL, trim(buf))

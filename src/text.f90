@@ -7,7 +7,7 @@ module text
     implicit none
     private
 
-    public :: itoa, sci
+    public :: itoa, sci, fixed, lead_zero
 
 contains
 
@@ -47,5 +47,34 @@ contains
             if (s(ie + 2:ie + 2) == '0') s = s(1:ie + 1)//s(ie + 3:)
         end if
     end function sci
+
+    !> A real in fixed notation with `digits` digits after the point and a zero before it:
+    !! 0.050000, -0.5, 12.0 (the run-time library's f0.d leaves the zero out); NaN, Inf and
+    !! -Inf as such.
+    pure function fixed(x, digits) result(s)
+        real(dp), intent(in) :: x                   !! value
+        integer, intent(in) :: digits               !! digits after the point (0..30)
+        character(len=:), allocatable :: s
+        character(len=360) :: buf
+        if (.not. ieee_is_finite(x)) then
+            s = sci(x)
+            return
+        end if
+        write (buf, '(f0.'//itoa(max(0, min(30, digits)))//')') x
+        s = lead_zero(buf)
+    end function fixed
+
+    !> A number's text without blanks and with a zero before a leading point: .5 -> 0.5,
+    !! -.5 -> -0.5.
+    pure function lead_zero(buf) result(s)
+        character(len=*), intent(in) :: buf         !! the number, blanks around it allowed
+        character(len=:), allocatable :: s
+        s = trim(adjustl(buf))
+        if (len(s) == 0) return
+        if (s(1:1) == '.') s = '0'//s
+        if (len(s) > 1) then
+            if (s(1:2) == '-.') s = '-0'//s(2:)
+        end if
+    end function lead_zero
 
 end module text

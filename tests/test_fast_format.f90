@@ -7,6 +7,7 @@ module test_fast_format
     use kinds, only: dp
     use testing, only: tester_t
     use fast_format, only: es_field, f_field
+    use text, only: itoa, sci, fixed, lead_zero
     implicit none
     private
 
@@ -27,7 +28,30 @@ contains
         if (t%want('fast_format: ES24.15E3 against the library')) call test_es(t)
         if (t%want('fast_format: F14.6 against the library')) call test_f(t)
         if (t%want('fast_format: other widths and digits')) call test_other(t)
+        if (t%want('text: numbers in messages')) call test_text(t)
     end subroutine run_fast_format_tests
+
+    !> Module text: integers without blanks, sci keeps its E at three-digit exponents,
+    !! fixed and lead_zero put a zero before a leading point; non-finite values by name.
+    subroutine test_text(t)
+        type(tester_t), intent(inout) :: t
+        real(dp) :: inf
+        inf = ieee_value(1.0_dp, ieee_positive_inf)
+        call t%check('itoa', itoa(0) == '0' .and. itoa(-7) == '-7' .and. &
+                     itoa(huge(1)) == '2147483647')
+        call t%check('sci: 1e300, -4.352e-14, 2.214, default 3 digits', &
+                     sci(1.0e300_dp) == '1.000E+300' .and. sci(-4.352e-14_dp) == '-4.352E-14' &
+                     .and. sci(2.214_dp) == '2.214E+00' .and. sci(0.5_dp, 1) == '5.0E-01')
+        call t%check('sci: Inf, -Inf', sci(inf) == 'Inf' .and. sci(-inf) == '-Inf')
+        call t%check('fixed: 0.05 -> 0.050000, -0.5 -> -0.50, 12 -> 12.0, 0 digits', &
+                     fixed(0.05_dp, 6) == '0.050000' .and. fixed(-0.5_dp, 2) == '-0.50' .and. &
+                     fixed(12.0_dp, 1) == '12.0' .and. fixed(2.6_dp, 0) == '3.')
+        call t%check('fixed: -Inf, 1e20', fixed(-inf, 3) == '-Inf' .and. &
+                     fixed(1.0e20_dp, 1) == '100000000000000000000.0')
+        call t%check('lead_zero: .5, -.25, blanks, empty', lead_zero('  .5 ') == '0.5' .and. &
+                     lead_zero('-.25') == '-0.25' .and. lead_zero(' 7 ') == '7' .and. &
+                     lead_zero('   ') == '')
+    end subroutine test_text
 
     !> es_field(x, 15) with a 24-character field against write (..., '(es24.15e3)').
     subroutine test_es(t)
