@@ -67,8 +67,8 @@ endif
 LIB_MODULES = kinds status text progress random lapack_wrap ode_system lsoda radau stepper run_loop \
               geometry kinematics gen_forces bifilar_model elastic_model elastic_gen \
               elastic_solver deck output_io fast_format simulate floquet paper_claims \
-              parallel sweep_engine stability work_precision period_inversion least_squares \
-              identify design driver
+              parallel sweep_engine monte_carlo stability work_precision period_inversion \
+              least_squares identify design driver
 LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
 TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme \
                test_work_precision test_elastic test_elastic_jac test_fast_format test_columns \
@@ -189,7 +189,7 @@ bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench
 	$(BIN)/bifilar input/box_design.nml --out build/bench 2>/dev/null
 	@if command -v mpif90 >/dev/null 2>&1; then \
 	  $(MAKE) --no-print-directory MPI=1 $(BIN)/bifilar_mpi $(BIN)/sweep_probe_mpi; fi
-	@echo "MPI: strong scaling of the 60 x 45 chart, the cost of its points, the model of 1000 x 1000:"
+	@echo "MPI: strong scaling of the 60 x 45 chart and of identify's Monte Carlo, the cost of the chart's points, the model of 1000 x 1000:"
 	tests/bench/mpi_scaling.sh $(BIN) output/bench_mpi.dat
 
 memcheck: $(BIN)/bifilar

@@ -204,8 +204,9 @@ contains
                  '.summary, ... per deck (NAME: the file name without .nml)')
         call say(output_unit, '  --out DIR       output folder (default output), created '// &
                  'when missing')
-        call say(output_unit, '  --resume        continue the sweeps (chart, design) from '// &
-                 'their checkpoints DIR/NAME.*.partial when of the same deck and executable')
+        call say(output_unit, '  --resume        continue the sweeps (chart, design, '// &
+                 'identify''s Monte Carlo) from their checkpoints DIR/NAME.*.partial when of '// &
+                 'the same deck and executable')
         call say(output_unit, '  --checkpoint S  write a sweep''s checkpoint at most every S '// &
                  'seconds (default 5; at most 5 % of the time)')
         call say(output_unit, '  --report [DIR]  DIR/report.md from the paper scenes'' '// &

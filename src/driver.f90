@@ -20,7 +20,8 @@ module driver
     use floquet, only: floquet_result_t
     use work_precision, only: run_work_precision, wp_result_t
     use design, only: run_design, design_ready, design_result_t, design_task, DESIGN_STAGES
-    use identify, only: identify_ready, run_identify, identify_result_t
+    use identify, only: identify_ready, run_identify, identify_result_t, identify_mc_task
+    use monte_carlo, only: MC_ANALYSIS
     use geometry, only: pendulum_t
     implicit none
     private
@@ -40,9 +41,10 @@ contains
     !! is the deck's one summary line and stat is OK; on failure stat carries the error
     !! (its message without the deck's name: error_line adds it) and no file of the run is
     !! left in outdir.  The sweeps (chart, design) run first, before any file of the run is
-    !! staged (the chart's before the design's); their checkpoints (OUTDIR/NAME.chart.partial,
-    !! NAME.design*.partial) are removed once the run's files are committed, and kept when
-    !! the run fails after them (--resume reuses them).
+    !! staged (the chart's before the design's); identify's Monte Carlo is a sweep too, in its
+    !! turn.  Their checkpoints (OUTDIR/NAME.chart.partial, NAME.design*.partial,
+    !! NAME.identify_mc.partial) are removed once the run's files are committed, and kept
+    !! when the run fails after them (--resume reuses them).
     subroutine run_deck(path, outdir, line, stat, options)
         character(len=*), intent(in) :: path        !! deck file
         character(len=*), intent(in) :: outdir      !! output folder
@@ -127,10 +129,15 @@ contains
             end if
             line = line//chart_part//design_part
             if (analysis_requested(d, 'identify')) then
-                call run_identify(d, outdir, idr, stat, files)
+                call run_identify(d, outdir, idr, stat, files, options, rep)
                 if (stat%code /= STATUS_OK) exit run
                 line = line//' identify I1 = '//sci(idr%i1, 5)//' +- '//sci(idr%u_i1, 2)
-                if (idr%u_i1_mc >= 0.0_dp) line = line//' (Monte Carlo '//sci(idr%u_i1_mc, 2)//')'
+                if (idr%u_i1_mc >= 0.0_dp) then
+                    write (buf, '(f0.2)') rep%wall_seconds
+                    line = line//' (Monte Carlo '//sci(idr%u_i1_mc, 2)//' from '// &
+                        itoa(d%monte_carlo)//' samples, '//lead0(buf)//' s'//ranks_note(rep)// &
+                        resume_note(rep)//')'
+                end if
                 write (buf, '(f0.2)') 100.0_dp*idr%linear_error
                 if (idr%i1_linear > 0.0_dp) then
                     line = line//', linear formula '//sci(idr%i1_linear, 5)//' ('// &
@@ -159,6 +166,8 @@ contains
                         call remove_file(checkpoint_path(outdir, d%name, trim(DESIGN_STAGES(k))))
                     end do
                 end if
+                if (analysis_requested(d, 'identify')) &
+                    call remove_file(checkpoint_path(outdir, d%name, MC_ANALYSIS))
             end if
             return
         end block run
@@ -186,6 +195,8 @@ contains
                     call move_alloc(chart, task)
                 case ('design', 'design_edges', 'design_precision')
                     call design_task(job%analysis, d, job%payload, task, st)
+                case (MC_ANALYSIS)
+                    call identify_mc_task(d, job%payload, task, st)
                 case default
                     st%code = ERR_DECK
                     st%msg = 'no sweep named '//job%analysis//' in this executable'

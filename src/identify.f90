@@ -39,7 +39,10 @@
 !!   with the estimate's Jacobian (each step one model run) until the step is below 1e-3 of
 !!   each parameter's first-order u, else Levenberg-Marquardt.  u_I1_monte_carlo is the
 !!   samples' standard deviation.  A sample depends only on (seed, k): any order, thread or
-!!   rank gives the same numbers (OpenMP over the samples here).
+!!   rank gives the same numbers.  The samples (of periods too) are a sweep (module
+!!   monte_carlo) over the OpenMP threads and the MPI ranks, checkpointed to
+!!   OUTDIR/NAME.identify_mc.partial and resumed with --resume; the other ranks build the
+!!   task from the deck and the payload rank 0 sends (identify_mc_task).
 !! * The classical value beside it: I1_linear = m g b b' T^2 / (16 pi^2 l) (l the mean of
 !!   the two cable lengths), T the period at the smallest amplitude or the record's mean
 !!   period; linear_error = I1_linear / I1 - 1.
@@ -48,6 +51,7 @@
 !! record also OUTDIR/NAME.fit.dat (t, measured, model, residual).  No routine stops.
 module identify
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    use, intrinsic :: iso_fortran_env, only: int64
     use kinds, only: dp, pi
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC, ERR_IO
     use text, only: itoa, sci
@@ -63,7 +67,11 @@ module identify
     use random, only: rng_t, rng_stream, rng_normal
     use period_inversion, only: input_u_t, period_fit_t, budget_row_t, invert_periods, &
                                 period_budget, period_monte_carlo, linear_inertia, &
-                                move_b_prime, is_torsion_rig, rig_period_s
+                                move_b_prime, is_torsion_rig, rig_period_s, period_mc_task, &
+                                period_mc_task_t
+    use sweep_engine, only: sweep_task_t, sweep_options_t, sweep_report_t, file_crc, &
+        crc_parts, crc_join
+    use monte_carlo, only: mc_task_t, monte_carlo_run
     implicit none
     private
 
@@ -128,7 +136,22 @@ module identify
         procedure :: take => record_take
     end type record_sink_t
 
+    !> The samples of a record fit's Monte Carlo (record_mc_point) as a sweep: the fit
+    !! problem, the estimate the samples start from, its Jacobian and first-order u, s, and
+    !! the inputs drawn; built by record_mc_task from the deck, the record and the payload.
+    type, extends(mc_task_t) :: record_mc_task_t
+        type(record_fit_t) :: prob              !! the fit (deck, record, weights)
+        real(dp), allocatable :: phat(:)        !! the estimate
+        real(dp), allocatable :: jac(:, :)      !! the Jacobian there (samples, parameters)
+        real(dp), allocatable :: u_p(:)         !! first-order u of each parameter
+        real(dp) :: sigma = 0.0_dp              !! s of the covariance
+        real(dp), allocatable :: xval(:), ux(:) !! the inputs drawn: values, u
+    contains
+        procedure :: sample => record_mc_point
+    end type record_mc_task_t
+
     public :: identify_ready, run_identify, read_record, record_model, make_record
+    public :: identify_mc_task
     public :: fit_record, mean_period, identify_record, set_input
 
     integer, parameter :: MIN_SAMPLES = 20          !! shortest record
@@ -227,8 +250,7 @@ contains
         integer :: u, ios, nline, ncol, n, k, ncol1
         stat%code = 0
         head = '&measurement record = '''//trim(d%record)//''': '
-        path = trim(d%record)
-        if (allocated(d%record_path)) path = d%record_path
+        path = record_file(d)
         open (newunit=u, file=path, status='old', action='read', form='formatted', &
               access='sequential', iostat=ios, iomsg=msg)
         if (ios /= 0) then
@@ -325,6 +347,15 @@ contains
             close (u)
         end subroutine fail
     end subroutine read_record
+
+    !> The record file of a deck: &measurement record relative to the deck's folder
+    !! (d%record_path), or as given.
+    function record_file(d) result(path)
+        type(deck_t), intent(in) :: d
+        character(len=:), allocatable :: path
+        path = trim(d%record)
+        if (allocated(d%record_path)) path = d%record_path
+    end function record_file
 
     !> The numbers of one line (blanks, tabs or commas between them): up to 3 in x, ncol of
     !! them (4 when there are more); msg names a token that is not a number.
@@ -637,22 +668,30 @@ contains
     ! ------------------------------------------------------------------ the analysis
 
     !> Run analyses = 'identify' for a deck and write OUTDIR/NAME.identify (and, with a
-    !! record, OUTDIR/NAME.fit.dat) into `files`.
-    subroutine run_identify(d, outdir, res, stat, files)
+    !! record, OUTDIR/NAME.fit.dat) into `files`.  The Monte Carlo is a sweep over the ranks
+    !! and threads, checkpointed to OUTDIR/NAME.identify_mc.partial (options: --resume and
+    !! the interval; report: how its sweep went, ranks 1 without Monte Carlo).
+    subroutine run_identify(d, outdir, res, stat, files, options, report)
         type(deck_t), intent(in) :: d           !! the deck (identify_ready passed)
         character(len=*), intent(in) :: outdir  !! output directory
         type(identify_result_t), intent(out) :: res
         type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC (exit 3), ERR_IO
         type(out_files_t), intent(inout) :: files   !! the run's files
+        type(sweep_options_t), intent(in), optional :: options  !! --resume, the interval
+        type(sweep_report_t), intent(out), optional :: report   !! of the Monte Carlo
         real(dp) :: c0, c1
         type(record_t) :: rec
+        type(sweep_report_t) :: rep
         call cpu_time(c0)
+        rep%note = ''
         if (d%n_periods > 0) then
-            call identify_periods(d, res, stat)
+            call identify_periods(d, res, stat, outdir, options, rep, files)
         else
             call read_record(d, rec, stat)
-            if (stat%code == 0) call identify_record(d, rec, res, stat)
+            if (stat%code == 0) call identify_record(d, rec, res, stat, outdir, options, rep, &
+                                                     files)
         end if
+        if (present(report)) report = rep
         call cpu_time(c1)
         res%cpu_seconds = c1 - c0
         if (stat%code /= 0) return
@@ -669,11 +708,16 @@ contains
                       b_prime=d%u_b_prime, g=d%u_g, period=d%u_period, amplitude=d%u_amplitude)
     end function input_u
 
-    !> I1 from the deck's periods (module period_inversion).
-    subroutine identify_periods(d, res, stat)
+    !> I1 from the deck's periods (module period_inversion); the Monte Carlo's sweep
+    !! checkpointed in outdir when given (see run_identify).
+    subroutine identify_periods(d, res, stat, outdir, options, report, files)
         type(deck_t), intent(in) :: d
         type(identify_result_t), intent(out) :: res
         type(status_t), intent(out) :: stat
+        character(len=*), intent(in), optional :: outdir
+        type(sweep_options_t), intent(in), optional :: options
+        type(sweep_report_t), intent(inout), optional :: report
+        type(out_files_t), intent(in), optional :: files
         type(period_fit_t) :: f
         type(deck_t) :: dl
         type(input_u_t) :: u
@@ -696,7 +740,8 @@ contains
             if (stat%code /= 0) return
             if (d%monte_carlo > 0) then
                 call period_monte_carlo(d, per, amps, u, f%i1, d%monte_carlo, &
-                                        d%seed, mean, sdev, stat)
+                                        d%seed, mean, sdev, stat, outdir, options, report, &
+                                        files)
                 if (stat%code /= 0) return
                 res%u_i1_mc = sdev
                 res%mc_mean = mean
@@ -724,12 +769,17 @@ contains
     end subroutine identify_periods
 
     !> I1 (and the other parameters asked for) from a record: the fit, the first-order
-    !! budget, Monte Carlo when asked.
-    subroutine identify_record(d, rec, res, stat)
+    !! budget, Monte Carlo when asked (its sweep checkpointed in outdir when given, see
+    !! run_identify).
+    subroutine identify_record(d, rec, res, stat, outdir, options, report, files)
         type(deck_t), intent(in) :: d
         type(record_t), intent(in) :: rec
         type(identify_result_t), intent(out) :: res
         type(status_t), intent(out) :: stat
+        character(len=*), intent(in), optional :: outdir
+        type(sweep_options_t), intent(in), optional :: options
+        type(sweep_report_t), intent(inout), optional :: report
+        type(out_files_t), intent(in), optional :: files
         type(record_fit_t) :: prob
         type(lsq_result_t) :: fit
         type(deck_t) :: dl
@@ -768,18 +818,9 @@ contains
             call explain_fit_failure(stat, prob, fit)
             return
         end if
-        ! the inputs: mass, l, l_prime, b, b_prime, g, and the start amplitude when held
-        nx = 6
-        if (.not. estimated(d, 'amplitude') .and. trim(d%mode) == 'raised') nx = 7
-        allocate (dpdx(np, nx), ux(nx), xval(nx), xname(nx))
-        xname(1:6) = [character(len=16) :: 'mass', 'l', 'l_prime', 'b', 'b_prime', 'g']
-        ux(1:6) = [d%u_mass, d%u_l, d%u_l_prime, d%u_b, d%u_b_prime, d%u_g]
-        xval(1:6) = [d%mass, d%l, d%l_prime, d%b, d%b_prime, d%g]
-        if (nx == 7) then
-            xname(7) = 'amplitude'
-            ux(7) = d%u_amplitude
-            xval(7) = d%amplitude
-        end if
+        call budget_inputs(d, xname, xval, ux)
+        nx = size(xval)
+        allocate (dpdx(np, nx))
         do j = 1, nx
             call input_sensitivity(prob, fit%p, jac, j, xval(j), dpdx(:, j), stat)
             res%evaluations = res%evaluations + 2
@@ -812,7 +853,8 @@ contains
         allocate (res%model(m))
         res%model = fit%r/prob%w + rec%v
         if (d%monte_carlo > 0) then
-            call record_monte_carlo(prob, fit%p, jac, res, xval, ux, nx, stat)
+            call record_monte_carlo(d, rec, fit%p, jac, res, stat, outdir, options, report, &
+                                    files)
             if (stat%code /= 0) return
         end if
         res%period_linear = mean_period(rec)
@@ -929,92 +971,169 @@ contains
         end select
     end subroutine set_input
 
-    !> Monte Carlo of a record fit (see the module header): res%u_i1_mc, res%mc_mean.
-    subroutine record_monte_carlo(prob, phat, jac, res, xval, ux, nx, stat)
-        type(record_fit_t), intent(in) :: prob
+    !> The inputs of a record fit's budget and Monte Carlo: mass, l, l_prime, b, b_prime,
+    !! g, and the start amplitude when it is held (not estimated, &start mode 'raised'):
+    !! their names, values and standard uncertainties (in the order of set_input).
+    subroutine budget_inputs(d, xname, xval, ux)
+        type(deck_t), intent(in) :: d
+        character(len=16), allocatable, intent(out) :: xname(:)
+        real(dp), allocatable, intent(out) :: xval(:), ux(:)
+        xname = [character(len=16) :: 'mass', 'l', 'l_prime', 'b', 'b_prime', 'g']
+        xval = [d%mass, d%l, d%l_prime, d%b, d%b_prime, d%g]
+        ux = [d%u_mass, d%u_l, d%u_l_prime, d%u_b, d%u_b_prime, d%u_g]
+        if (.not. estimated(d, 'amplitude') .and. trim(d%mode) == 'raised') then
+            xname = [xname, [character(len=16) :: 'amplitude']]
+            xval = [xval, d%amplitude]
+            ux = [ux, d%u_amplitude]
+        end if
+    end subroutine budget_inputs
+
+    !> Monte Carlo of a record fit (see the module header) as a sweep (module monte_carlo):
+    !! res%u_i1_mc, res%mc_mean.  phat, jac: the estimate and its Jacobian, res%u_p and
+    !! res%sigma its first-order u and s; the payload carries them (and the record's
+    !! CRC-64) to the other ranks.
+    subroutine record_monte_carlo(d, rec, phat, jac, res, stat, outdir, options, report, files)
+        type(deck_t), intent(in) :: d
+        type(record_t), intent(in) :: rec
         real(dp), intent(in) :: phat(:), jac(:, :)
         type(identify_result_t), intent(inout) :: res
-        real(dp), intent(in) :: xval(:), ux(:)
-        integer, intent(in) :: nx
         type(status_t), intent(out) :: stat
-        integer :: n, k
-        real(dp), allocatable :: s(:)
-        type(status_t), allocatable :: st(:)
-        n = prob%d%monte_carlo
-        allocate (s(n), st(n))
-        !$omp parallel do schedule(dynamic, 1) default(shared) private(k)
-        do k = 1, n
-            call record_mc_sample(prob, phat, jac, res%u_p, res%sigma, xval, ux, nx, k, s(k), &
-                                  st(k))
-        end do
-        !$omp end parallel do
-        stat%code = 0
-        do k = 1, n
-            if (st(k)%code /= 0) then
-                stat = st(k)
-                stat%code = ERR_NUMERIC
-                stat%msg = 'identify: Monte Carlo sample '//itoa(k)//': '//stat%msg
-                return
-            end if
-        end do
-        res%mc_mean = sum(s)/n
-        res%u_i1_mc = sqrt(sum((s - res%mc_mean)**2)/(n - 1))
+        character(len=*), intent(in), optional :: outdir
+        type(sweep_options_t), intent(in), optional :: options
+        type(sweep_report_t), intent(inout), optional :: report
+        type(out_files_t), intent(in), optional :: files
+        type(record_mc_task_t) :: task
+        real(dp), allocatable :: payload(:), mean(:), sdev(:)
+        integer(int64) :: crc
+        integer :: np
+        np = size(phat)
+        call file_crc(record_file(d), crc, stat)
+        if (stat%code /= 0) return
+        payload = [crc_parts(crc), res%sigma, real(np, dp), phat, res%u_p(1:np), &
+                   reshape(jac, [size(jac)])]
+        call record_mc_task(d, rec, payload, task)
+        allocate (mean(np), sdev(np))
+        call monte_carlo_run(task, d, d%monte_carlo, payload, mean, sdev, stat, outdir, &
+                             options, report, files)
+        if (stat%code /= 0) return
+        res%mc_mean = mean(1)
+        res%u_i1_mc = sdev(1)
     end subroutine record_monte_carlo
 
+    !> The samples of a record fit's Monte Carlo from the deck, its record and the payload
+    !! of record_monte_carlo (the task rank 0 runs and the other ranks build).
+    subroutine record_mc_task(d, rec, payload, task)
+        type(deck_t), intent(in) :: d
+        type(record_t), intent(in) :: rec
+        real(dp), intent(in) :: payload(:)      !! crc (2), sigma, np, phat, u_p, jac
+        type(record_mc_task_t), intent(out) :: task
+        real(dp), allocatable :: p0(:), h(:)
+        character(len=16), allocatable :: xname(:)
+        integer :: np, m
+        call fit_problem(d, rec, task%prob, p0, h)
+        call budget_inputs(d, xname, task%xval, task%ux)
+        m = size(rec%t)
+        task%sigma = payload(3)
+        np = nint(payload(4))
+        task%phat = payload(5:4 + np)
+        task%u_p = payload(5 + np:4 + 2*np)
+        task%jac = reshape(payload(5 + 2*np:4 + 2*np + m*np), [m, np])
+        task%nest = np
+    end subroutine record_mc_task
+
+    !> The task of identify's Monte Carlo (sweep 'identify_mc') as the other ranks of an MPI
+    !! run build it: from the deck (its periods, or its record, read here and checked
+    !! against rank 0's by its CRC-64) and the sweep's payload.  ERR_DECK when the record
+    !! cannot be read or is another than rank 0's.
+    subroutine identify_mc_task(d, payload, task, stat)
+        type(deck_t), intent(in) :: d           !! the deck
+        real(dp), intent(in) :: payload(:)      !! the sweep's payload
+        class(sweep_task_t), allocatable, intent(out) :: task
+        type(status_t), intent(out) :: stat     !! ERR_DECK
+        type(record_t) :: rec
+        integer(int64) :: crc
+        stat%code = 0
+        if (d%n_periods > 0) then
+            allocate (period_mc_task_t :: task)
+            select type (task)
+            type is (period_mc_task_t)
+                call period_mc_task(d, payload, task)
+            end select
+            return
+        end if
+        call read_record(d, rec, stat)
+        if (stat%code == 0) call file_crc(record_file(d), crc, stat)
+        if (stat%code /= 0) return
+        if (crc /= crc_join(payload(1:2))) then
+            call set_error(stat, ERR_DECK, '&measurement record = '''//trim(d%record)// &
+                ''': reads another record at '//record_file(d)//' than rank 0 (its CRC-64 '// &
+                'differs): every rank must see the same file')
+            return
+        end if
+        allocate (record_mc_task_t :: task)
+        select type (task)
+        type is (record_mc_task_t)
+            call record_mc_task(d, rec, payload, task)
+        end select
+    end subroutine identify_mc_task
+
     !> Monte Carlo sample k of a record fit: inputs and measured values drawn from stream k
-    !! of the seed, then the refit from the estimate; i1 is the sample's I1.
-    subroutine record_mc_sample(prob, phat, jac, u_p, sigma, xval, ux, nx, k, i1, stat)
-        type(record_fit_t), intent(in) :: prob
-        real(dp), intent(in) :: phat(:), jac(:, :), u_p(:), sigma, xval(:), ux(:)
-        integer, intent(in) :: nx, k
-        real(dp), intent(out) :: i1
+    !! of the seed, then the refit from the estimate; est: the sample's parameters (I1
+    !! first).  A failed refit: ERR_NUMERIC naming the sample.
+    subroutine record_mc_point(self, k, est, stat)
+        class(record_mc_task_t), intent(in) :: self
+        integer, intent(in) :: k                !! sample number
+        real(dp), intent(out) :: est(:)         !! the sample's parameters
         type(status_t), intent(out) :: stat
         type(record_fit_t) :: q
         type(rng_t) :: g
         type(lsq_result_t) :: fit
-        real(dp) :: p(size(phat)), dp_(size(phat)), r(size(jac, 1)), h(size(phat))
+        real(dp) :: p(size(self%phat)), dp_(size(self%phat)), r(size(self%jac, 1))
+        real(dp) :: h(size(self%phat))
         integer :: j, it
         logical :: done
-        g = rng_stream(prob%d%seed, k)
-        q = prob
-        do j = 1, nx
-            call set_input(q%d, j, xval(j) + ux(j)*rng_normal(g))
+        est = 0.0_dp
+        g = rng_stream(self%prob%d%seed, k)
+        q = self%prob
+        do j = 1, size(self%xval)
+            call set_input(q%d, j, self%xval(j) + self%ux(j)*rng_normal(g))
         end do
         do j = 1, size(q%rec%v)
-            if (prob%rec%has_u) then
-                q%rec%v(j) = prob%rec%v(j) + prob%rec%u(j)*rng_normal(g)
+            if (self%prob%rec%has_u) then
+                q%rec%v(j) = self%prob%rec%v(j) + self%prob%rec%u(j)*rng_normal(g)
             else
-                q%rec%v(j) = prob%rec%v(j) + sigma*rng_normal(g)
+                q%rec%v(j) = self%prob%rec%v(j) + self%sigma*rng_normal(g)
             end if
         end do
         ! Gauss-Newton with the estimate's Jacobian
-        p = phat
+        p = self%phat
         done = .false.
         do it = 1, 8
             call q%residual(p, r, stat)
             if (stat%code /= 0) exit
-            call la_lstsq(jac, -r, dp_, stat)
+            call la_lstsq(self%jac, -r, dp_, stat)
             if (stat%code /= 0) exit
             p = p + dp_
-            if (all(abs(dp_) <= 1.0e-3_dp*u_p(1:size(p)) + 1.0e-14_dp*abs(p))) then
+            if (all(abs(dp_) <= 1.0e-3_dp*self%u_p + 1.0e-14_dp*abs(p))) then
                 done = .true.
                 exit
             end if
         end do
         if (.not. done) then
             do j = 1, size(p)
-                h(j) = H_REL*max(abs(phat(j)), u_p(j))
+                h(j) = H_REL*max(abs(self%phat(j)), self%u_p(j))
             end do
-            call lm_fit(q, phat, h, size(r), lsq_options_t(), fit, stat)
+            call lm_fit(q, self%phat, h, size(r), lsq_options_t(), fit, stat)
             if (stat%code /= 0) then
-                i1 = 0.0_dp
+                stat%code = ERR_NUMERIC
+                stat%msg = 'identify: Monte Carlo sample '//itoa(k)//': '//stat%msg
                 return
             end if
             p = fit%p
         end if
         stat%code = 0
-        i1 = p(1)
-    end subroutine record_mc_sample
+        est = p
+    end subroutine record_mc_point
 
     ! ------------------------------------------------------------------ output
 

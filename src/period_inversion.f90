@@ -25,7 +25,8 @@
 !!   u is the standard deviation of the samples.  The two cable lengths are drawn
 !!   independently and the period taken at their mean (their difference changes the period
 !!   only at second order).  Each sample depends only on (seed, k): any order, thread or
-!!   rank gives the same numbers.
+!!   rank gives the same numbers.  The samples are a sweep (module monte_carlo) over the
+!!   OpenMP threads and the MPI ranks, checkpointed and resumed like a chart.
 !!
 !! * Asymmetric rigs (unequal cables, a mass centre off the vertical bisector of AB: the
 !!   rigs where pure torsion is not an exact motion) get their periods from the full model:
@@ -56,6 +57,9 @@ module period_inversion
     use bifilar_model, only: NSTATE
     use stepper, only: SOLVER_LSODA
     use run_loop, only: stepped_model_t, row_sink_t, drive
+    use output_io, only: out_files_t
+    use sweep_engine, only: sweep_options_t, sweep_report_t
+    use monte_carlo, only: mc_task_t, monte_carlo_run
     implicit none
     private
 
@@ -87,7 +91,19 @@ module period_inversion
 
     public :: torsion_period_s, invert_periods, period_budget, period_mc_sample
     public :: period_monte_carlo, linear_inertia, rig_period_s, simulated_period_s
-    public :: is_torsion_rig, move_b_prime
+    public :: is_torsion_rig, move_b_prime, period_mc_payload, period_mc_task
+
+    !> The samples of a Monte Carlo of periods (period_mc_sample) as a sweep; built by
+    !! period_mc_task from the rig and the payload.
+    type, extends(mc_task_t), public :: period_mc_task_t
+        type(deck_t) :: d                       !! the rig
+        real(dp), allocatable :: periods(:), amps(:)    !! measurements (s, degrees)
+        type(input_u_t) :: u                    !! standard uncertainties
+        real(dp) :: i1_start = 0.0_dp           !! start of each inversion
+        integer :: seed = 1
+    contains
+        procedure :: sample => period_mc_point
+    end type period_mc_task_t
 
     !> Finds the period of an asymmetric rig in the run loop: the first maximum of theta4
     !! after theta4 has swung below 0 (a zero of theta4' from + to -, located in the step).
@@ -624,9 +640,14 @@ contains
         end if
     end subroutine period_mc_sample
 
-    !> n Monte Carlo samples (OpenMP over the samples; the result does not depend on the
-    !! number of threads): their mean and standard deviation.
-    subroutine period_monte_carlo(d, periods, amps, u, i1_start, n, seed, mean, sdev, stat)
+    !> n Monte Carlo samples (period_mc_sample) as a sweep over the ranks and threads
+    !! (module monte_carlo; the result does not depend on their number): the mean and the
+    !! standard deviation of the sampled I1, or the failure of the first failed sample.
+    !! With `outdir` the sweep is checkpointed there (OUTDIR/NAME.identify_mc.partial;
+    !! options: --resume, the interval; report: how the sweep went; files: the run's staged
+    !! files, removed on a signal).
+    subroutine period_monte_carlo(d, periods, amps, u, i1_start, n, seed, mean, sdev, stat, &
+                                  outdir, options, report, files)
         type(deck_t), intent(in) :: d           !! the rig
         real(dp), intent(in) :: periods(:), amps(:)   !! measurements (s, degrees)
         type(input_u_t), intent(in) :: u        !! standard uncertainties
@@ -634,9 +655,13 @@ contains
         integer, intent(in) :: n, seed          !! samples (>= 2) and seed
         real(dp), intent(out) :: mean, sdev     !! of the sampled I1
         type(status_t), intent(out) :: stat
-        real(dp) :: s(n)
-        type(status_t) :: st(n)
-        integer :: k
+        character(len=*), intent(in), optional :: outdir    !! checkpoints' folder
+        type(sweep_options_t), intent(in), optional :: options
+        type(sweep_report_t), intent(out), optional :: report
+        type(out_files_t), intent(in), optional :: files
+        type(period_mc_task_t) :: task
+        real(dp), allocatable :: payload(:)
+        real(dp) :: m(1), s(1)
         mean = 0.0_dp
         sdev = 0.0_dp
         stat%code = 0
@@ -644,20 +669,54 @@ contains
             call set_error(stat, ERR_DECK, '&measurement monte_carlo: need at least 2 samples')
             return
         end if
-        !$omp parallel do schedule(dynamic, 16) default(shared) private(k)
-        do k = 1, n
-            call period_mc_sample(d, periods, amps, u, i1_start, seed, k, s(k), st(k))
-        end do
-        !$omp end parallel do
-        do k = 1, n
-            if (st(k)%code /= 0) then
-                stat = st(k)
-                return
-            end if
-        end do
-        mean = sum(s)/n
-        sdev = sqrt(sum((s - mean)**2)/(n - 1))
+        payload = period_mc_payload(periods, amps, u, i1_start, seed)
+        call period_mc_task(d, payload, task)
+        call monte_carlo_run(task, d, n, payload, m, s, stat, outdir, options, report, files)
+        mean = m(1)
+        sdev = s(1)
     end subroutine period_monte_carlo
+
+    !> What a periods Monte Carlo needs beyond the rig, as reals (the sweep's payload):
+    !! seed, i1_start, the eight standard uncertainties, the number of periods, the periods,
+    !! their amplitudes.
+    pure function period_mc_payload(periods, amps, u, i1_start, seed) result(p)
+        real(dp), intent(in) :: periods(:), amps(:)   !! measurements (s, degrees)
+        type(input_u_t), intent(in) :: u        !! standard uncertainties
+        real(dp), intent(in) :: i1_start        !! start of each inversion
+        integer, intent(in) :: seed
+        real(dp), allocatable :: p(:)
+        p = [real(seed, dp), i1_start, u%mass, u%l, u%l_prime, u%b, u%b_prime, u%g, u%period, &
+             u%amplitude, real(size(periods), dp), periods, amps]
+    end function period_mc_payload
+
+    !> The samples of a periods Monte Carlo of the rig d from their payload
+    !! (period_mc_payload): the task rank 0 runs and the other ranks of an MPI run build.
+    pure subroutine period_mc_task(d, payload, task)
+        type(deck_t), intent(in) :: d           !! the rig
+        real(dp), intent(in) :: payload(:)      !! period_mc_payload
+        type(period_mc_task_t), intent(out) :: task
+        integer :: np
+        task%d = d
+        task%seed = nint(payload(1))
+        task%i1_start = payload(2)
+        task%u = input_u_t(mass=payload(3), l=payload(4), l_prime=payload(5), b=payload(6), &
+                           b_prime=payload(7), g=payload(8), period=payload(9), &
+                           amplitude=payload(10))
+        np = nint(payload(11))
+        task%periods = payload(12:11 + np)
+        task%amps = payload(12 + np:11 + 2*np)
+        task%nest = 1
+    end subroutine period_mc_task
+
+    !> Sample k of a periods Monte Carlo (period_mc_sample): est(1) = the sample's I1.
+    subroutine period_mc_point(self, k, est, stat)
+        class(period_mc_task_t), intent(in) :: self
+        integer, intent(in) :: k                !! sample number
+        real(dp), intent(out) :: est(:)         !! I1
+        type(status_t), intent(out) :: stat
+        call period_mc_sample(self%d, self%periods, self%amps, self%u, self%i1_start, &
+                              self%seed, k, est(1), stat)
+    end subroutine period_mc_point
 
     !> The classical small-amplitude formula I1 = m g b b' T^2 / (16 pi^2 l) (deck units).
     pure real(dp) function linear_inertia(d, t) result(i1)

@@ -4,8 +4,8 @@
 !! `compute(i, values, stat)` gives a fixed number of reals), so points may be computed in
 !! any order, by any thread of any rank, and the values come back in index order: every
 !! file made from them is the same byte for byte whatever the ranks, threads or
-!! interruptions.  Used by the stability chart (module stability) and the three sweeps of
-!! the rig design (module design).
+!! interruptions.  Used by the stability chart (module stability), the three sweeps of
+!! the rig design (module design) and identify's Monte Carlo (module monte_carlo).
 !!
 !! Work sharing (dynamic, because points differ a lot in cost): rank 0 keeps the list of
 !! points to do and hands them out in chunks, on request, to the other ranks (module
@@ -106,7 +106,7 @@ module sweep_engine
     end type sweep_job_t
 
     public :: sweep_run, sweep_start, sweep_finish, sweep_is_master, sweep_next_job
-    public :: sweep_serve, checkpoint_path, crc64, sweep_library
+    public :: sweep_serve, checkpoint_path, crc64, sweep_library, file_crc, crc_parts, crc_join
 
     !> A chunk holds at most this many points per thread of the rank that gets it.
     integer, parameter :: CHUNK_MAX_PER_THREAD = 64
@@ -409,6 +409,7 @@ contains
         logical :: found
         real(dp), allocatable :: m(:)
         got = .false.
+        c0 = 0
         do
             call par_poll(PAR_ANY, src, tag, n, found)
             if (.not. found) exit

@@ -1,8 +1,8 @@
 !> Sweeps over threads and ranks, checkpoints and resuming (issue 15): the engine in
-!! process with a task of known values (module probe_task), the stability chart through
-!! bin/bifilar killed and resumed, and, when OpenMPI is installed, bin/bifilar_mpi and
-!! sweep_probe_mpi under mpirun with 1, 2 and 3 ranks, a rank killed mid-sweep, ranks that
-!! see another deck and points that fail.
+!! process with a task of known values (module probe_task), the stability chart, a design
+!! and identify's Monte Carlo through bin/bifilar killed and resumed, and, when OpenMPI is
+!! installed, bin/bifilar_mpi and sweep_probe_mpi under mpirun with 1, 2 and 3 ranks, a
+!! rank killed mid-sweep, ranks that see another deck or record and points that fail.
 module test_sweep
     use, intrinsic :: iso_fortran_env, only: int64
     use kinds, only: dp
@@ -14,6 +14,9 @@ module test_sweep
     use test_deck, only: write_text, exists, shell_count, msg_of
     use test_extreme, only: file_has
     use test_robust, only: run, lines, line_starts, fresh, abs_exe
+    use deck, only: deck_t, read_deck
+    use period_inversion, only: input_u_t, period_fit_t, invert_periods, period_mc_sample
+    use identify, only: make_record
     !$ use omp_lib, only: omp_get_max_threads, omp_set_num_threads
     implicit none
     private
@@ -48,6 +51,20 @@ module test_sweep
         '0.10708333333333333,'//NL// &
         '      r = 0.412310562561766, lambda = 1.325817663668033, sway_depth = 0.8 /'//NL// &
         '&floquet rtol = 1e-6 /'//NL
+    !> The laboratory rig of input/identify_periods.nml with its three periods; the number
+    !! of Monte Carlo samples (and the seed) per test, then ' /'.
+    character(len=*), parameter :: PERIODS = &
+        "&scene title = 'sweep test identify', analyses = 'identify' /"//NL// &
+        '&suspension b = 0.40, b_prime = 0.40, l = 1.20, l_prime = 1.20, g = 9.80665 /'//NL// &
+        '&body mass = 3.10, inertia = 0.045, 0.0630, 0.0304, r = 0.25, '// &
+        'lambda = 0.6435011087932844, sway_depth = 0.30 /'//NL// &
+        '&measurement periods = 1.41564, 1.44107, 1.52913, amplitudes = 10.0, 30.0, 60.0,'// &
+        NL//'      u_mass = 0.001, u_l = 0.001, u_l_prime = 0.001, u_b = 0.0005, '// &
+        'u_b_prime = 0.0005,'//NL//'      u_period = 1e-4, u_amplitude = 0.5, '
+    !> That rig with a period of 0.15 s timed to 0.05 s: some Monte Carlo samples draw a
+    !! period below the shortest any positive I1 gives (0.04 s), and fail.
+    character(len=*), parameter :: BADMC = PERIODS(1:index(PERIODS, '&measurement') - 1)// &
+        '&measurement periods = 0.15, amplitudes = 10.0, u_period = 0.05, monte_carlo = 50 /'//NL
 
 contains
 
@@ -64,9 +81,16 @@ contains
             call test_kill_resume(t, exe)
         if (t%want('sweep: design killed after a checkpoint, resumed: the same file')) &
             call test_design_resume(t, exe)
+        if (t%want('sweep: identify Monte Carlo killed after a checkpoint, resumed: the '// &
+                   'same file')) call test_mc_resume(t, exe)
+        if (t%want('sweep: identify Monte Carlo: the first failed sample ends it')) &
+            call test_mc_failure(t, exe)
         if (t%want('sweep mpi: charts and designs on 1, 2, 3 ranks, killed ranks, other '// &
                    'decks, failures')) &
             call test_mpi(t, exe)
+        if (t%want('sweep mpi: identify Monte Carlo of periods on 1, 2, 3 ranks, of a '// &
+                   'record on 2, 3, rank 0 computing none, another record, a failed sample')) &
+            call test_mpi_mc(t, exe)
     end subroutine run_sweep_tests
 
     ! ---------------------------------------------------------------------------------------
@@ -102,7 +126,7 @@ contains
             task%nap = 20
             call sweep_run(task, 'probe', fp, '', '', task%n, 4, v, st, report=rep)
             call t%check('order: '//itoa(nt)//' threads: status ok', st%code == STATUS_OK)
-            if (st%code /= STATUS_OK) cycle
+            if (st%code /= STATUS_OK .or. .not. allocated(v)) cycle
             call t%check('order: '//itoa(nt)//' threads: point i in column i, exactly', &
                          all([(v(1, i) == real(i, dp) .and. v(2, i) == sqrt(real(i, dp)), &
                          i=1, task%n)]))
@@ -338,8 +362,10 @@ contains
                      'checkpoint)', all([ex == 0, nres > 0]))
         call t%check('design kill: resumed file = uninterrupted file, byte for byte', &
                      same_file(d//'/out/rig.design', d//'/ref/rig.design'))
+        ! (SIGKILL may land while a checkpoint is written: its NAME.*.partial.tmp.PID.N stays,
+        ! as the README says of SIGKILL; the checkpoints themselves must be gone)
         call t%check('design kill: its checkpoints are removed with the commit', &
-                     shell_count('ls '//d//'/out | grep -c partial', d) == 0)
+                     shell_count('ls '//d//'/out | grep -c ''\.partial$''', d) == 0)
     end subroutine test_design_resume
 
     ! ---------------------------------------------------------------------------------------
@@ -482,6 +508,184 @@ contains
     end subroutine test_mpi
 
     ! ---------------------------------------------------------------------------------------
+    !> Identify's Monte Carlo through bin/bifilar: killed (SIGKILL) after its first
+    !! checkpoint and resumed, the uninterrupted .identify (cpu_seconds aside); the
+    !! checkpoint removed with the commit.
+    subroutine test_mc_resume(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d, deck, ck
+        integer :: ex, nres
+        d = fresh('sweep_mc_kill')
+        deck = d//'/per.nml'
+        call write_text(deck, PERIODS//'monte_carlo = 2000 /'//NL)
+        ck = d//'/out/per.identify_mc.partial'
+        ex = run(exe//' '//deck//' --out '//d//'/ref', d)
+        call t%check('mc kill: the uninterrupted run (exit 0)', all([ex == 0, &
+                     exists(d//'/ref/per.identify')]))
+        ex = run('OMP_NUM_THREADS=1 tests/kill_run.sh '//ck//' KILL '//exe//' '//deck// &
+                 ' --out '//d//'/out --checkpoint 0', d)
+        call t%check('mc kill: killed after its first checkpoint (exit 137, got '// &
+                     itoa(ex)//')', all([ex == 137, exists(ck), &
+                     .not. exists(d//'/out/per.identify')]))
+        ex = run(exe//' '//deck//' --out '//d//'/out --resume', d)
+        nres = resumed(d//'/stdout')
+        call t%check('mc kill: resumed (exit 0, '//itoa(nres)//' of 2000 samples from the '// &
+                     'checkpoint)', ex == 0 .and. nres > 0 .and. nres < 2000)
+        call t%check('mc kill: resumed .identify = uninterrupted .identify (cpu_seconds aside)', &
+                     same_identify(d//'/out/per.identify', d//'/ref/per.identify'))
+        call t%check('mc kill: the checkpoint is removed with the commit', .not. exists(ck))
+    end subroutine test_mc_resume
+
+    ! ---------------------------------------------------------------------------------------
+    !> A Monte Carlo with samples that fail (periods drawn below the shortest period any
+    !! positive I1 gives): the run ends with the first failed sample's error, the smallest
+    !! k, found here by calling period_mc_sample for k = 1, 2, ...; no file, the checkpoint
+    !! removed (the failure would repeat).
+    subroutine test_mc_failure(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d
+        type(deck_t) :: dk
+        type(status_t) :: st
+        type(period_fit_t) :: f
+        type(input_u_t) :: u
+        real(dp) :: i1
+        integer :: ex, k, kfail
+        d = fresh('sweep_mc_fail')
+        call write_text(d//'/bad.nml', BADMC)
+        call read_deck(d//'/bad.nml', dk, st)
+        u = input_u_t(period=dk%u_period)
+        call invert_periods(dk, dk%periods(1:1), dk%amplitudes(1:1), u, f, st)
+        kfail = 0
+        do k = 1, dk%monte_carlo
+            call period_mc_sample(dk, dk%periods(1:1), dk%amplitudes(1:1), u, f%i1, dk%seed, &
+                                  k, i1, st)
+            if (st%code /= STATUS_OK) then
+                kfail = k
+                exit
+            end if
+        end do
+        call t%check('mc failure: some sample fails (sample '//itoa(kfail)//')', kfail > 1)
+        ex = run(exe//' '//d//'/bad.nml --out '//d//'/out --checkpoint 0', d)
+        call t%check('mc failure: exit 2, one line naming the first failed sample', &
+                     all([ex == 2, lines(d//'/stderr') == 1, file_has(d//'/stderr', &
+                     'bad.nml: Monte Carlo sample '//itoa(kfail)//': &measurement '// &
+                     'periods(1) = ')]))
+        call t%check('mc failure: no file, no checkpoint', &
+                     shell_count('ls -A '//d//'/out | wc -l', d) == 0)
+    end subroutine test_mc_failure
+
+    ! ---------------------------------------------------------------------------------------
+    !> Identify's Monte Carlo under mpirun (skipped without OpenMPI): periods on 1, 2 and 3
+    !! ranks and a record fit on 2 and 3 ranks give the serial .identify (cpu_seconds aside)
+    !! and .fit.dat byte for byte, and so do 2 ranks of which rank 0 only hands out work
+    !! (BIFILAR_RANK0_COMPUTES=no: every sample computed by rank 1 from the task it built
+    !! from the deck, the record and the payload); ranks that read another record end the
+    !! run with one line; the failed sample's error is the serial one.
+    subroutine test_mpi_mc(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d, mexe, how
+        integer :: ex, np, k
+        character(len=*), parameter :: HOWS(3) = [character(len=34) :: '-np 2', '-np 3', &
+                                                   '-np 2 -x BIFILAR_RANK0_COMPUTES=no']
+        if (shell_count('(command -v mpirun > /dev/null && echo 1 || echo 0)', SCR) /= 1) then
+            write (*, '(a)') 'note: OpenMPI is not installed (no mpirun): the MPI tests of '// &
+                'the Monte Carlo are skipped; make mpi installs it'
+            return
+        end if
+        mexe = exe//'_mpi'
+        call t%check('mpi mc: '//mexe//' is built', exists(mexe))
+        if (.not. exists(mexe)) return
+        mexe = abs_exe(mexe)
+        d = fresh('sweep_mpi_mc')
+
+        ! periods: 1, 2, 3 ranks, and 2 of which rank 0 computes nothing
+        call write_text(d//'/per.nml', PERIODS//'monte_carlo = 60, seed = 3 /'//NL)
+        ex = run(exe//' '//d//'/per.nml --out '//d//'/serial', d)
+        call t%check('mpi mc: serial periods Monte Carlo (exit 0)', all([ex == 0, &
+                     file_has(d//'/serial/per.identify', 'u_I1_monte_carlo = ')]))
+        do np = 1, 3
+            ex = run(MPIRUN//' -np '//itoa(np)//' '//mexe//' '//d//'/per.nml --out '//d// &
+                     '/np'//itoa(np), d)
+            call t%check('mpi mc: -np '//itoa(np)//': exit 0, one stdout line, nothing on '// &
+                         'stderr', all([ex == 0, lines(d//'/stdout') == 1, &
+                         lines(d//'/stderr') == 0]))
+            if (np > 1) call t%check('mpi mc: -np '//itoa(np)//': the summary says the ranks', &
+                                     file_has(d//'/stdout', ' s on '//itoa(np)//' ranks)'))
+            call t%check('mpi mc: -np '//itoa(np)//': .identify = serial .identify '// &
+                         '(cpu_seconds aside)', same_identify(d//'/np'//itoa(np)// &
+                         '/per.identify', d//'/serial/per.identify'))
+        end do
+        ex = run(MPIRUN//' -np 2 -x BIFILAR_RANK0_COMPUTES=no '//mexe//' '//d//'/per.nml '// &
+                 '--out '//d//'/np2w', d)
+        call t%check('mpi mc: -np 2, every sample on rank 1: exit 0, .identify = serial '// &
+                     '.identify', all([ex == 0, lines(d//'/stderr') == 0, &
+                     same_identify(d//'/np2w/per.identify', d//'/serial/per.identify')]))
+
+        ! a record fit's Monte Carlo on 2 and 3 ranks, and on 2 of which rank 0 computes none
+        call make_records(d)
+        ex = run(exe//' '//d//'/w0/rec.nml --out '//d//'/rserial', d)
+        call t%check('mpi mc: serial record Monte Carlo (exit 0)', all([ex == 0, &
+                     file_has(d//'/rserial/rec.identify', 'u_I1_monte_carlo = ')]))
+        do k = 1, 3
+            how = trim(HOWS(k))
+            ex = run(MPIRUN//' '//how//' '//mexe//' '//d//'/w0/rec.nml --out '//d//'/r'// &
+                     itoa(k), d)
+            call t%check('mpi mc: record, '//how//': exit 0, nothing on stderr, '// &
+                         '.identify = serial (cpu_seconds aside), .fit.dat the same bytes', &
+                         all([ex == 0, lines(d//'/stderr') == 0, file_has(d//'/stdout', &
+                         'on '//how(5:5)//' ranks'), same_identify(d//'/r'//itoa(k)// &
+                         '/rec.identify', d//'/rserial/rec.identify'), same_file(d//'/r'// &
+                         itoa(k)//'/rec.fit.dat', d//'/rserial/rec.fit.dat')]))
+        end do
+
+        ! ranks 1, 2 see the same deck but another record
+        ex = run(MPIFAIL//' -np 1 -wdir '//abs_exe(d//'/w0')//' '//mexe//' rec.nml --out out'// &
+                 ' : -np 2 -wdir '//abs_exe(d//'/w1')//' '//mexe//' rec.nml', d)
+        call t%check('mpi mc: another record: exit 2 (got '//itoa(ex)//'), one stderr line '// &
+                     'naming the rank and the record', all([ex == 2, lines(d//'/stderr') == 1, &
+                     line_starts(d//'/stderr', 1, 'bifilar: error (bad input): rec.nml: '// &
+                     'identify_mc: rank '), file_has(d//'/stderr', 'reads another record')]))
+        call t%check('mpi mc: another record: no file', &
+                     shell_count('ls -A '//d//'/w0/out 2>/dev/null | wc -l', d) == 0)
+
+        ! the failed sample: the serial error, on 2 ranks
+        call write_text(d//'/bad.nml', BADMC)
+        ex = run(exe//' '//d//'/bad.nml --out '//d//'/bad', d)
+        call execute_command_line('cp '//d//'/stderr '//d//'/bad.serial')
+        ex = run(MPIFAIL//' -np 2 '//mexe//' '//d//'/bad.nml --out '//d//'/bad', d)
+        call t%check('mpi mc: a failed sample on 2 ranks: exit 2, the serial error line', &
+                     all([ex == 2, same_file(d//'/stderr', d//'/bad.serial')]))
+    end subroutine test_mpi_mc
+
+    !> w0/rec.nml with its record w0/rec.dat (3 s of theta4 at 50 Hz of a damped rig with
+    !! unequal cables, noise 2 mrad, seed 5), and in w1 the same deck with another record
+    !! (noise seed 6).
+    subroutine make_records(d)
+        character(len=*), intent(in) :: d
+        type(deck_t) :: truth
+        type(status_t) :: st
+        character(len=*), parameter :: RIG_REC = &
+            '&suspension b = 0.4, b_prime = 0.4, l = 1.2, l_prime = 1.18, g = 9.80665 /'//NL// &
+            '&start amplitude = 30 /'//NL//'&damping c_v = 2e-4, c_q = 5e-4 /'//NL
+        integer :: k
+        call execute_command_line('mkdir -p '//d//'/w0 '//d//'/w1')
+        call write_text(d//'/truth.nml', "&scene analyses = 'simulate' /"//NL//RIG_REC// &
+            '&body mass = 3.1, inertia = 0.0512, 0.063, 0.0304, r = 0.25, lambda = 0.64 /'//NL)
+        call read_deck(d//'/truth.nml', truth, st)
+        do k = 0, 1
+            call make_record(truth, 3.0_dp, 50.0_dp, 2.0e-3_dp, 5 + k, 'angle', &
+                             d//'/w'//itoa(k)//'/rec.dat', st)
+            call write_text(d//'/w'//itoa(k)//'/rec.nml', "&scene analyses = 'identify' /"// &
+                NL//RIG_REC//'&body mass = 3.1, inertia = 0.05, 0.063, 0.0304, r = 0.25, '// &
+                'lambda = 0.64 /'//NL//"&measurement record = 'rec.dat', estimate = 'I1', "// &
+                'u_mass = 0.001, u_b = 0.0005, monte_carlo = 8, seed = 11 /'//NL)
+        end do
+    end subroutine make_records
+
+    ! ---------------------------------------------------------------------------------------
     ! helpers
 
     !> Two files are the same, byte for byte.
@@ -493,6 +697,17 @@ contains
                                                                    exitstat=ex)
         same_file = ex == 0
     end function same_file
+
+    !> Two .identify files are the same, byte for byte, but for their cpu_seconds lines.
+    logical function same_identify(a, b)
+        character(len=*), intent(in) :: a, b
+        integer :: ex
+        ex = -1
+        if (all([exists(a), exists(b)])) call execute_command_line('grep -v "^cpu_seconds = " '// &
+            a//' > '//a//'.nocpu; grep -v "^cpu_seconds = " '//b//' > '//a//'.ref; cmp -s '// &
+            a//'.nocpu '//a//'.ref', exitstat=ex)
+        same_identify = ex == 0
+    end function same_identify
 
     !> Two files have the same lines apart from the '#' ones.
     logical function same_rows(a, b)
