@@ -10,7 +10,7 @@
 module driver
     use kinds, only: dp
     use status, only: status_t, STATUS_OK, ERR_DECK, ERR_MODEL, ERR_IO
-    use text, only: itoa, sci
+    use text, only: itoa, sci, fixed
     use deck, only: deck_t, read_deck, analysis_requested
     use output_io, only: out_files_t, remove_file
     use simulate, only: run_simulation, run_summary_t, simulation_ready, make_pendulum
@@ -62,7 +62,6 @@ contains
         type(identify_result_t) :: idr
         integer :: nstable, nfailed, k
         real(dp) :: secs
-        character(len=64) :: buf
 
         line = ''
         call read_deck(path, d, stat)
@@ -92,9 +91,8 @@ contains
                 call run_chart(d, outdir, nstable, secs, stat, files=files, nfailed=nfailed, &
                                options=options, report=rep)
                 if (stat%code /= STATUS_OK) exit run
-                write (buf, '(f0.2)') secs
                 chart_part = ' chart '//itoa(d%chart_nx*d%chart_ny)//' points, '// &
-                    itoa(nstable)//' stable, '//lead0(buf)//' s'//ranks_note(rep)
+                    itoa(nstable)//' stable, '//fixed(secs, 2)//' s'//ranks_note(rep)
                 if (nfailed > 0) chart_part = chart_part//', '//itoa(nfailed)// &
                     ' failed (-2 in the file)'
                 chart_part = chart_part//resume_note(rep)//';'
@@ -102,12 +100,11 @@ contains
             if (analysis_requested(d, 'design')) then
                 call run_design(d, outdir, dr, stat, files=files, options=options, report=rep)
                 if (stat%code /= STATUS_OK) exit run
-                write (buf, '(f0.2)') dr%wall_seconds
                 design_part = ' design '//itoa(size(dr%ls)*size(dr%bs))//' candidates x '// &
                     itoa(size(dr%amps))//' amplitudes, '//itoa(dr%n_stable)//' stable, '// &
                     'recommended l = '//sci(dr%ls(dr%il), 4)//', b = '//sci(dr%bs(dr%ib), 4)// &
-                    ', u(I1)/I1 = '//sci(dr%u_rel(dr%il, dr%ib), 2)//', '//lead0(buf)//' s'// &
-                    ranks_note(rep)
+                    ', u(I1)/I1 = '//sci(dr%u_rel(dr%il, dr%ib), 2)//', '// &
+                    fixed(dr%wall_seconds, 2)//' s'//ranks_note(rep)
                 if (dr%n_failed > 0) design_part = design_part//', '//itoa(dr%n_failed)// &
                     ' failed points'
                 design_part = design_part//resume_note(rep)//';'
@@ -123,8 +120,7 @@ contains
             if (analysis_requested(d, 'floquet')) then
                 call run_floquet(d, outdir, fr, stat, files=files)
                 if (stat%code /= STATUS_OK) exit run
-                write (buf, '(f0.6)') fr%period
-                line = line//' floquet period '//lead0(buf)//', max modulus '// &
+                line = line//' floquet period '//fixed(fr%period, 6)//', max modulus '// &
                     sci(fr%max_modulus, 5)//', stable '//trim(merge('yes', 'no ', fr%stable))//';'
             end if
             line = line//chart_part//design_part
@@ -133,15 +129,14 @@ contains
                 if (stat%code /= STATUS_OK) exit run
                 line = line//' identify I1 = '//sci(idr%i1, 5)//' +- '//sci(idr%u_i1, 2)
                 if (idr%u_i1_mc >= 0.0_dp) then
-                    write (buf, '(f0.2)') rep%wall_seconds
                     line = line//' (Monte Carlo '//sci(idr%u_i1_mc, 2)//' from '// &
-                        itoa(d%monte_carlo)//' samples, '//lead0(buf)//' s'//ranks_note(rep)// &
-                        resume_note(rep)//')'
+                        itoa(d%monte_carlo)//' samples, '//fixed(rep%wall_seconds, 2)//' s'// &
+                        ranks_note(rep)//resume_note(rep)//')'
                 end if
-                write (buf, '(f0.2)') 100.0_dp*idr%linear_error
                 if (idr%i1_linear > 0.0_dp) then
                     line = line//', linear formula '//sci(idr%i1_linear, 5)//' ('// &
-                        trim(merge('+', ' ', idr%linear_error >= 0.0_dp))//lead0(buf)//' %)'
+                        trim(merge('+', ' ', idr%linear_error >= 0.0_dp))// &
+                        fixed(100.0_dp*idr%linear_error, 2)//' %)'
                 else
                     line = line//', no period in the record for the linear formula'
                 end if
@@ -150,9 +145,8 @@ contains
             if (analysis_requested(d, 'simulate')) then
                 call run_simulation(d, outdir, sm, stat, files=files)
                 if (stat%code /= STATUS_OK) exit run
-                write (buf, '(f0.4)') sm%cpu_seconds
-                line = line//' simulate cpu '//lead0(buf)//' s, steps '//itoa(sm%steps)// &
-                    ', rhs '//itoa(sm%rhs_evaluations)//', max |dE| '// &
+                line = line//' simulate cpu '//fixed(sm%cpu_seconds, 4)//' s, steps '// &
+                    itoa(sm%steps)//', rhs '//itoa(sm%rhs_evaluations)//', max |dE| '// &
                     sci(sm%max_abs_energy_error, 2)//', max |residual| '// &
                     sci(sm%max_abs_constraint_residual, 2)//';'
             end if
@@ -299,17 +293,5 @@ contains
         if (len(deck_path) > 0) s = s//deck_path//': '
         s = s//msg
     end function error_line
-
-    !> '.5' -> '0.5', '-.5' -> '-0.5' (f0.n drops the leading zero).
-    pure function lead0(buf) result(s)
-        character(len=*), intent(in) :: buf
-        character(len=:), allocatable :: s
-        s = trim(adjustl(buf))
-        if (len(s) == 0) return
-        if (s(1:1) == '.') s = '0'//s
-        if (len(s) > 1) then
-            if (s(1:2) == '-.') s = '-0'//s(2:)
-        end if
-    end function lead0
 
 end module driver

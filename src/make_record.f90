@@ -21,6 +21,7 @@ program make_record_main
     use identify, only: make_record
     use period_inversion, only: rig_period_s
     use random, only: rng_t, rng_stream, rng_normal
+    use text, only: fixed
     implicit none
     interface
         !> C library exit(3) (as bifilar: no ERROR STOP line from the run-time library).
@@ -37,7 +38,6 @@ program make_record_main
     real(dp), allocatable :: amps(:), per(:)
     integer :: seed, k, na, ios
     character(len=:), allocatable :: line1, line2
-    character(len=32) :: buf
     if (command_argument_count() < 5) call usage()
     call get_command_argument(1, mode)
     call get_command_argument(2, arg)
@@ -69,10 +69,8 @@ program make_record_main
             call rig_period_s(d, d%inertia(1), a, tp, st)
             if (st%code /= 0) call fail(st%msg)
             tp = anint((tp + sigma*rng_normal(g))*1.0e5_dp)/1.0e5_dp
-            write (buf, '(f0.5)') tp
-            line1 = line1//' '//trim(buf)//','
-            write (buf, '(f0.1)') a
-            line2 = line2//' '//trim(buf)//','
+            line1 = line1//' '//fixed(tp, 5)//','
+            line2 = line2//' '//fixed(a, 1)//','
         end do
         write (*, '(a)') line1
         write (*, '(a)') line2

@@ -49,6 +49,7 @@
 module period_inversion
     use kinds, only: dp, pi, deg
     use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC
+    use text, only: itoa, fixed
     use geometry, only: pendulum_t
     use deck, only: deck_t
     use simulate, only: make_pendulum, start_state, kane_run_start, kane_run_t
@@ -213,13 +214,13 @@ contains
         sink%watch_steps = .true.
         call drive(m, [0.0_dp, t_end], sink, stat)
         if (stat%code /= 0) then
-            stat%msg = 'the period at '//fixed(amp_deg)//' deg (simulated): '//stat%msg
+            stat%msg = 'the period at '//fixed(amp_deg, 3)//' deg (simulated): '//stat%msg
             return
         end if
         if (.not. (sink%t_max > 0.0_dp)) then
-            call set_error(stat, ERR_NUMERIC, 'the period at '//fixed(amp_deg)//' deg '// &
+            call set_error(stat, ERR_NUMERIC, 'the period at '//fixed(amp_deg, 3)//' deg '// &
                 '(simulated): theta4 reached no maximum after its first swing within '// &
-                'tau = '//fixed(t_end)//'; the rig does not swing in torsion')
+                'tau = '//fixed(t_end, 3)//'; the rig does not swing in torsion')
             return
         end if
         t = sink%t_max*sqrt(d%b_prime/d%g)
@@ -724,23 +725,5 @@ contains
         real(dp), intent(in) :: t               !! period (s)
         i1 = d%mass*d%g*d%b*d%b_prime*t**2/(16.0_dp*pi**2*d%l)
     end function linear_inertia
-
-    !> A number for messages: 12.5, 0.35.
-    pure function fixed(x) result(s)
-        real(dp), intent(in) :: x
-        character(len=:), allocatable :: s
-        character(len=32) :: buf
-        write (buf, '(f0.3)') x
-        s = trim(adjustl(buf))
-        if (s(1:1) == '.') s = '0'//s
-    end function fixed
-
-    pure function itoa(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=16) :: buf
-        write (buf, '(i0)') i
-        s = trim(buf)
-    end function itoa
 
 end module period_inversion
