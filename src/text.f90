@@ -49,18 +49,19 @@ contains
     end function sci
 
     !> A real in fixed notation with `digits` digits after the point and a zero before it:
-    !! 0.050000, -0.5, 12.0 (the run-time library's f0.d leaves the zero out); NaN, Inf and
-    !! -Inf as such.
+    !! 0.050000, -0.5, 12.0 (the run-time library's f0.d leaves the zero out); from 1e9 on in
+    !! scientific notation with as many digits (1.000000E+116: a message stays one short
+    !! line); NaN, Inf and -Inf as such.
     pure function fixed(x, digits) result(s)
         real(dp), intent(in) :: x                   !! value
-        integer, intent(in) :: digits               !! digits after the point (0..30)
+        integer, intent(in) :: digits               !! digits after the point (0..17)
         character(len=:), allocatable :: s
-        character(len=360) :: buf
-        if (.not. ieee_is_finite(x)) then
-            s = sci(x)
+        character(len=48) :: buf
+        if (.not. (abs(x) < 1.0e9_dp)) then
+            s = sci(x, digits)
             return
         end if
-        write (buf, '(f0.'//itoa(max(0, min(30, digits)))//')') x
+        write (buf, '(f0.'//itoa(max(0, min(17, digits)))//')') x
         s = lead_zero(buf)
     end function fixed
 

@@ -46,8 +46,9 @@ contains
         call t%check('fixed: 0.05 -> 0.050000, -0.5 -> -0.50, 12 -> 12.0, 0 digits', &
                      fixed(0.05_dp, 6) == '0.050000' .and. fixed(-0.5_dp, 2) == '-0.50' .and. &
                      fixed(12.0_dp, 1) == '12.0' .and. fixed(2.6_dp, 0) == '3.')
-        call t%check('fixed: -Inf, 1e20', fixed(-inf, 3) == '-Inf' .and. &
-                     fixed(1.0e20_dp, 1) == '100000000000000000000.0')
+        call t%check('fixed: -Inf, 1e116, 999999999.5', fixed(-inf, 3) == '-Inf' .and. &
+                     fixed(1.0e116_dp, 6) == '1.000000E+116' .and. &
+                     fixed(999999999.5_dp, 1) == '999999999.5')
         call t%check('lead_zero: .5, -.25, blanks, empty', lead_zero('  .5 ') == '0.5' .and. &
                      lead_zero('-.25') == '-0.25' .and. lead_zero(' 7 ') == '7' .and. &
                      lead_zero('   ') == '')
