@@ -97,6 +97,7 @@ module deck
     end type deck_t
 
     public :: read_deck, analysis_requested, deck_echo, estimated, count_words
+    public :: traps_off, traps_restore, read_line
 
     !> Words allowed in &scene analyses.
     character(len=*), parameter :: ANALYSES_ALLOWED = &
@@ -140,7 +141,7 @@ module deck
     real(dp), parameter :: ATOL_MIN = 1.0e-30_dp        !! smallest absolute tolerance
     real(dp), parameter :: ATOL_MAX = 1.0_dp            !! largest absolute tolerance
     real(dp), parameter :: MAX_ROWS = 1.0e5_dp          !! largest tau_end/dtau_out
-    real(dp), parameter :: TAU_END_MAX = 1.0e6_dp       !! longest simulation (units of tau)
+    real(dp), parameter, public :: TAU_END_MAX = 1.0e6_dp   !! longest simulation (units of tau)
     !> Every dimensional value (lengths, g, mass, moments of inertia) lies in
     !! DIM_MIN .. DIM_MAX, in any units: no product of them over- or underflows.
     real(dp), parameter :: DIM_MIN = 1.0e-100_dp, DIM_MAX = 1.0e100_dp
@@ -1690,16 +1691,19 @@ contains
     end subroutine scan_group
 
     !> Read one whole line of any length (tabs and carriage returns as blanks), in time linear
-    !! in its length; reading stops after MAX_LINE + 1 characters (the caller refuses such a
-    !! line), so a file without newlines (/dev/zero) ends at once.
-    subroutine read_line(u, line, ios, msg)
+    !! in its length; reading stops after max_len + 1 characters (default MAX_LINE; the
+    !! caller refuses such a line), so a file without newlines (/dev/zero) ends at once.
+    subroutine read_line(u, line, ios, msg, max_len)
         integer, intent(in) :: u                    !! open unit
         character(len=:), allocatable, intent(out) :: line   !! the line, without newline
         integer, intent(out) :: ios                 !! 0, < 0 at end of file, > 0 on error
         character(len=*), intent(inout) :: msg      !! message for ios > 0
+        integer, intent(in), optional :: max_len    !! longest line the caller accepts
         character(len=1024) :: chunk
         character(len=:), allocatable :: buf, grown
-        integer :: n, nl
+        integer :: n, nl, nmax
+        nmax = MAX_LINE
+        if (present(max_len)) nmax = max_len
         allocate (character(len=1024) :: buf)
         nl = 0
         do
@@ -1721,7 +1725,7 @@ contains
                 exit
             end if
             if (ios /= 0) exit
-            if (nl > MAX_LINE) exit
+            if (nl > nmax) exit
         end do
         line = buf(1:nl)
         do n = 1, nl
