@@ -192,11 +192,16 @@ contains
         call set_error(stat, ERR_NUMERIC, trim(buf)//' '//remedy)
     end subroutine check_row_budget
 
-    !> tau for messages: 0.732039, 42.758454.
+    !> tau for messages: 0.732039, 42.758454; 1.000000E+300 from 1e9 on (and NaN, Inf),
+    !! which f0.6 cannot hold in its buffer.
     function tau_text(tau) result(s)
         real(dp), intent(in) :: tau             !! time
         character(len=:), allocatable :: s
         character(len=40) :: buf
+        if (.not. (abs(tau) < 1.0e9_dp)) then
+            s = sci(tau, 6)
+            return
+        end if
         write (buf, '(f0.6)') tau
         s = trim(adjustl(buf))
         if (s(1:1) == '.') s = '0'//s
