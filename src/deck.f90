@@ -164,6 +164,10 @@ module deck
     integer, parameter :: MAX_CHART_N = 1000            !! most chart points along one axis
     integer, parameter :: MAX_CHART_POINTS = 250000     !! most chart points, nx*ny
     integer, parameter :: MAX_DESIGN_AMPLITUDES = 100   !! most &design n_amplitudes
+    !> Smallest torsion amplitude of a Floquet analysis (degrees; &floquet, a chart's
+    !! amplitude axis, the design's smallest amplitude): the linear limit is reached long
+    !! before, and below about 1e-170 degrees products in the variational analysis underflow.
+    real(dp), parameter :: FLOQUET_AMPLITUDE_MIN = 1.0e-6_dp
     real(dp), parameter :: PI_HALF = 1.5707963267948966_dp
     integer, parameter :: MAX_LINE = 4096               !! longest deck line (characters)
     integer, parameter :: MAX_DECK_BYTES = 1000000      !! largest deck (bytes)
@@ -1080,9 +1084,10 @@ contains
         call finite(stat, 'floquet', 'amplitude', d%floquet_amplitude)
         call finite(stat, 'floquet', 'rtol', d%floquet_rtol)
         if (stat%code /= STATUS_OK) return
-        if (d%floquet_amplitude <= 0.0_dp .or. d%floquet_amplitude >= 180.0_dp) then
+        if (d%floquet_amplitude < FLOQUET_AMPLITUDE_MIN .or. d%floquet_amplitude >= 180.0_dp) then
             call bad(stat, 'floquet', 'amplitude', rshort(d%floquet_amplitude), &
-                     'out of range', '0 < amplitude < 180 (degrees of theta4)')
+                     'out of range', rshort(FLOQUET_AMPLITUDE_MIN)//' <= amplitude < 180 '// &
+                     '(degrees of theta4)')
             return
         end if
         if (d%floquet_segments < 1 .or. d%floquet_segments > MAX_SEGMENTS) then
@@ -1155,6 +1160,8 @@ contains
                 lo_in = .true.
             case ('amplitude')
                 desc = 'degrees'
+                lo = FLOQUET_AMPLITUDE_MIN
+                lo_in = .true.
                 hi = 180.0_dp
                 hi_in = .false.
             case ('r')
@@ -1199,7 +1206,8 @@ contains
     !! finite values; 0 < l_min < l_max with l over b' in RATIO_MIN .. RATIO_MAX and
     !! 2 <= nl <= MAX_CHART_N; b kept (b_min = b_max = 0, nb = 1), one b (b_min = b_max > 0,
     !! nb = 1) or 0 < b_min < b_max with 2 <= nb <= MAX_CHART_N, b over b' in range;
-    !! 0 < amplitude_max <= 90 degrees, 1 <= n_amplitudes <= MAX_DESIGN_AMPLITUDES; at most
+    !! 0 < amplitude_max <= 90 degrees, 1 <= n_amplitudes <= MAX_DESIGN_AMPLITUDES, the
+    !! smallest amplitude amplitude_max/n_amplitudes >= FLOQUET_AMPLITUDE_MIN; at most
     !! MAX_CHART_POINTS Floquet points; each uncertainty >= 0 and below the value it
     !! qualifies (u_mass < mass, u_l < l_min, u_b below every b and b'; the period is only
     !! known when computed: the analysis checks u_period against it).
@@ -1265,6 +1273,13 @@ contains
             call bad(stat, 'design', 'n_amplitudes', itoa(d%design_n_amplitudes), &
                      'number of amplitudes out of range', '1 <= n_amplitudes <= '// &
                      itoa(MAX_DESIGN_AMPLITUDES))
+            return
+        end if
+        if (d%design_amplitude_max/d%design_n_amplitudes < FLOQUET_AMPLITUDE_MIN) then
+            call bad(stat, 'design', 'amplitude_max', rshort(d%design_amplitude_max), &
+                     'its smallest amplitude amplitude_max/n_amplitudes is below '// &
+                     rshort(FLOQUET_AMPLITUDE_MIN)//' degrees', 'amplitude_max/n_amplitudes'// &
+                     ' >= '//rshort(FLOQUET_AMPLITUDE_MIN)//' (degrees of theta4)')
             return
         end if
         if (real(d%design_nl, dp)*d%design_nb*d%design_n_amplitudes > MAX_CHART_POINTS) then
