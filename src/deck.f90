@@ -97,6 +97,7 @@ module deck
     end type deck_t
 
     public :: read_deck, analysis_requested, deck_echo, estimated, count_words
+    public :: traps_off, traps_restore, read_line
 
     !> Words allowed in &scene analyses.
     character(len=*), parameter :: ANALYSES_ALLOWED = &
@@ -140,7 +141,7 @@ module deck
     real(dp), parameter :: ATOL_MIN = 1.0e-30_dp        !! smallest absolute tolerance
     real(dp), parameter :: ATOL_MAX = 1.0_dp            !! largest absolute tolerance
     real(dp), parameter :: MAX_ROWS = 1.0e5_dp          !! largest tau_end/dtau_out
-    real(dp), parameter :: TAU_END_MAX = 1.0e6_dp       !! longest simulation (units of tau)
+    real(dp), parameter, public :: TAU_END_MAX = 1.0e6_dp   !! longest simulation (units of tau)
     !> Every dimensional value (lengths, g, mass, moments of inertia) lies in
     !! DIM_MIN .. DIM_MAX, in any units: no product of them over- or underflows.
     real(dp), parameter :: DIM_MIN = 1.0e-100_dp, DIM_MAX = 1.0e100_dp
@@ -163,6 +164,10 @@ module deck
     integer, parameter :: MAX_CHART_N = 1000            !! most chart points along one axis
     integer, parameter :: MAX_CHART_POINTS = 250000     !! most chart points, nx*ny
     integer, parameter :: MAX_DESIGN_AMPLITUDES = 100   !! most &design n_amplitudes
+    !> Smallest torsion amplitude of a Floquet analysis (degrees; &floquet, a chart's
+    !! amplitude axis, the design's smallest amplitude): the linear limit is reached long
+    !! before, and below about 1e-170 degrees products in the variational analysis underflow.
+    real(dp), parameter :: FLOQUET_AMPLITUDE_MIN = 1.0e-6_dp
     real(dp), parameter :: PI_HALF = 1.5707963267948966_dp
     integer, parameter :: MAX_LINE = 4096               !! longest deck line (characters)
     integer, parameter :: MAX_DECK_BYTES = 1000000      !! largest deck (bytes)
@@ -1079,9 +1084,10 @@ contains
         call finite(stat, 'floquet', 'amplitude', d%floquet_amplitude)
         call finite(stat, 'floquet', 'rtol', d%floquet_rtol)
         if (stat%code /= STATUS_OK) return
-        if (d%floquet_amplitude <= 0.0_dp .or. d%floquet_amplitude >= 180.0_dp) then
+        if (d%floquet_amplitude < FLOQUET_AMPLITUDE_MIN .or. d%floquet_amplitude >= 180.0_dp) then
             call bad(stat, 'floquet', 'amplitude', rshort(d%floquet_amplitude), &
-                     'out of range', '0 < amplitude < 180 (degrees of theta4)')
+                     'out of range', rshort(FLOQUET_AMPLITUDE_MIN)//' <= amplitude < 180 '// &
+                     '(degrees of theta4)')
             return
         end if
         if (d%floquet_segments < 1 .or. d%floquet_segments > MAX_SEGMENTS) then
@@ -1154,6 +1160,8 @@ contains
                 lo_in = .true.
             case ('amplitude')
                 desc = 'degrees'
+                lo = FLOQUET_AMPLITUDE_MIN
+                lo_in = .true.
                 hi = 180.0_dp
                 hi_in = .false.
             case ('r')
@@ -1198,7 +1206,8 @@ contains
     !! finite values; 0 < l_min < l_max with l over b' in RATIO_MIN .. RATIO_MAX and
     !! 2 <= nl <= MAX_CHART_N; b kept (b_min = b_max = 0, nb = 1), one b (b_min = b_max > 0,
     !! nb = 1) or 0 < b_min < b_max with 2 <= nb <= MAX_CHART_N, b over b' in range;
-    !! 0 < amplitude_max <= 90 degrees, 1 <= n_amplitudes <= MAX_DESIGN_AMPLITUDES; at most
+    !! 0 < amplitude_max <= 90 degrees, 1 <= n_amplitudes <= MAX_DESIGN_AMPLITUDES, the
+    !! smallest amplitude amplitude_max/n_amplitudes >= FLOQUET_AMPLITUDE_MIN; at most
     !! MAX_CHART_POINTS Floquet points; each uncertainty >= 0 and below the value it
     !! qualifies (u_mass < mass, u_l < l_min, u_b below every b and b'; the period is only
     !! known when computed: the analysis checks u_period against it).
@@ -1264,6 +1273,13 @@ contains
             call bad(stat, 'design', 'n_amplitudes', itoa(d%design_n_amplitudes), &
                      'number of amplitudes out of range', '1 <= n_amplitudes <= '// &
                      itoa(MAX_DESIGN_AMPLITUDES))
+            return
+        end if
+        if (d%design_amplitude_max/d%design_n_amplitudes < FLOQUET_AMPLITUDE_MIN) then
+            call bad(stat, 'design', 'amplitude_max', rshort(d%design_amplitude_max), &
+                     'its smallest amplitude amplitude_max/n_amplitudes is below '// &
+                     rshort(FLOQUET_AMPLITUDE_MIN)//' degrees', 'amplitude_max/n_amplitudes'// &
+                     ' >= '//rshort(FLOQUET_AMPLITUDE_MIN)//' (degrees of theta4)')
             return
         end if
         if (real(d%design_nl, dp)*d%design_nb*d%design_n_amplitudes > MAX_CHART_POINTS) then
@@ -1690,16 +1706,19 @@ contains
     end subroutine scan_group
 
     !> Read one whole line of any length (tabs and carriage returns as blanks), in time linear
-    !! in its length; reading stops after MAX_LINE + 1 characters (the caller refuses such a
-    !! line), so a file without newlines (/dev/zero) ends at once.
-    subroutine read_line(u, line, ios, msg)
+    !! in its length; reading stops after max_len + 1 characters (default MAX_LINE; the
+    !! caller refuses such a line), so a file without newlines (/dev/zero) ends at once.
+    subroutine read_line(u, line, ios, msg, max_len)
         integer, intent(in) :: u                    !! open unit
         character(len=:), allocatable, intent(out) :: line   !! the line, without newline
         integer, intent(out) :: ios                 !! 0, < 0 at end of file, > 0 on error
         character(len=*), intent(inout) :: msg      !! message for ios > 0
+        integer, intent(in), optional :: max_len    !! longest line the caller accepts
         character(len=1024) :: chunk
         character(len=:), allocatable :: buf, grown
-        integer :: n, nl
+        integer :: n, nl, nmax
+        nmax = MAX_LINE
+        if (present(max_len)) nmax = max_len
         allocate (character(len=1024) :: buf)
         nl = 0
         do
@@ -1721,7 +1740,7 @@ contains
                 exit
             end if
             if (ios /= 0) exit
-            if (nl > MAX_LINE) exit
+            if (nl > nmax) exit
         end do
         line = buf(1:nl)
         do n = 1, nl

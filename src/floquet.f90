@@ -176,11 +176,13 @@ contains
             phi = 0.25_dp*pi*(GL_X(k) + 1.0_dp)
             q = amp*sin(phi)
             zs_q = sqrt(p%big_l**2 - h2(q))
-            ! z(A) - z(q) = (h2(A) - h2(q)) / (zs(q) + zs(A)), h2(A) - h2(q) = B/2 (cos q - cos A)
-            dv = p%big_b*sin(0.5_dp*(amp + q))*sin(0.5_dp*(amp - q))/(zs_q + zs_a)
+            ! z(A) - z(q) = (h2(A) - h2(q)) / (zs(q) + zs(A)), h2(A) - h2(q) = B/2 (cos q - cos A);
+            ! dv is that over A^2 (each sine over A), so that a tiny A (1e-231 rad) does not
+            ! underflow dv to 0: the integrand sqrt(jq/(2 (z(A) - z(q)))) A cos(phi)
+            dv = p%big_b*(sin(0.5_dp*(amp + q))/amp)*(sin(0.5_dp*(amp - q))/amp)/(zs_q + zs_a)
             dz = 0.25_dp*p%big_b*sin(q)/zs_q
             jq = p%inertia(ivert) + dz**2
-            s = s + GL_W(k)*sqrt(jq/(2.0_dp*dv))*amp*cos(phi)
+            s = s + GL_W(k)*sqrt(jq/(2.0_dp*dv))*cos(phi)
         end do
         period = 4.0_dp*0.25_dp*pi*s
     contains

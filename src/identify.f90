@@ -50,12 +50,13 @@
 !! Files: OUTDIR/NAME.identify (key = value lines, then the budget table of I1); with a
 !! record also OUTDIR/NAME.fit.dat (t, measured, model, residual).  No routine stops.
 module identify
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_usual
     use, intrinsic :: iso_fortran_env, only: int64
     use kinds, only: dp, pi
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC, ERR_IO
     use text, only: itoa, sci
-    use deck, only: deck_t, deck_echo, estimated, count_words
+    use deck, only: deck_t, deck_echo, estimated, count_words, TAU_END_MAX, traps_off, &
+                    traps_restore, read_line
     use output_io, only: out_files_t, write_kv, all_finite
     use fast_format, only: es_field
     use geometry, only: pendulum_t
@@ -157,6 +158,10 @@ module identify
     integer, parameter :: MIN_SAMPLES = 20          !! shortest record
     integer, parameter :: MAX_SAMPLES = 2000000     !! longest record
     integer, parameter :: MAX_RECORD_LINE = 4096    !! longest line of a record
+    !> Largest recorded value: rad (angle) or rad per unit of tau (rate, W/sqrt(g/b')); a
+    !! standard uncertainty (column 3) from U_MIN to VALUE_MAX in the same units (a smaller
+    !! one makes weights 1/u that overflow the fit's sum of squares).
+    real(dp), parameter :: VALUE_MAX = 1.0e3_dp, U_MIN = 1.0e-12_dp
     real(dp), parameter :: H_REL = 1.0e-5_dp        !! relative difference step of the model
     real(dp), parameter :: DAMP_REF = 1.0e-3_dp     !! scale of c_v, c_q (model's units)
     real(dp), parameter :: COND_MAX = 1.0e10_dp     !! largest condition number of J (scaled)
@@ -176,7 +181,7 @@ contains
         type(pendulum_t) :: p
         type(record_t) :: rec
         type(period_fit_t) :: f
-        real(dp) :: y0(NSTATE), th0(5)
+        real(dp) :: y0(NSTATE), th0(5), t_max
         integer :: np
         stat%code = 0
         if (trim(d%model) /= 'kane') then
@@ -216,6 +221,17 @@ contains
         end if
         call read_record(d, rec, stat)
         if (stat%code /= 0) return
+        ! the model runs from the release (t = 0) to the last sample: no longer than a
+        ! simulation may run (a record of huge times would run the integrator for ever)
+        t_max = TAU_END_MAX/sqrt(d%g/d%b_prime)
+        if (rec%t(size(rec%t)) > t_max) then
+            call set_error(stat, ERR_DECK, '&measurement record = '''//trim(d%record)// &
+                ''': its last sample, t = '//sci(rec%t(size(rec%t)))//' s after the '// &
+                'release, is beyond what the model runs; allowed: times up to '//sci(t_max)// &
+                ' s (tau = t sqrt(g/b_prime) <= '//sci(TAU_END_MAX)//', as &integration '// &
+                'tau_end)')
+            return
+        end if
         if (estimated(d, 'amplitude') .and. trim(d%mode) /= 'raised') then
             call set_error(stat, ERR_DECK, '&measurement estimate = '''//trim(d%estimate)// &
                 ''': amplitude is the raised start''s; allowed with &start mode = ''raised''')
@@ -235,21 +251,34 @@ contains
 
     !> Read and check the record of a deck (d%record_path): a whitespace table, '#' starts
     !! a comment, blank lines skipped; column 1 time (s) strictly increasing, column 2 the
-    !! measured value, an optional column 3 its standard uncertainty (> 0); every data line
-    !! with the same number of columns, every value finite; at least MIN_SAMPLES samples.
-    !! ERR_DECK naming the record, the line, what is wrong and what is allowed.
+    !! measured value (|value| <= VALUE_MAX rad, or VALUE_MAX sqrt(g/b') rad/s for a rate),
+    !! an optional column 3 its standard uncertainty (U_MIN ... VALUE_MAX in those units);
+    !! every data line with the same number of columns, every value finite; at least
+    !! MIN_SAMPLES samples.  Numbers beyond the range of real(dp) (1e400) are read with the
+    !! floating-point traps off and refused as not finite.  ERR_DECK naming the record, the
+    !! line, what is wrong and what is allowed.
     subroutine read_record(d, rec, stat)
         type(deck_t), intent(in) :: d           !! the deck (record, record_path)
         type(record_t), intent(out) :: rec
         type(status_t), intent(out) :: stat     !! ERR_DECK
         character(len=MAX_RECORD_LINE + 1) :: line
         character(len=512) :: msg
-        character(len=:), allocatable :: head, path
-        real(dp) :: x(3)
+        character(len=:), allocatable :: head, path, whole
+        real(dp) :: x(3), scale
         real(dp), allocatable :: t(:), v(:), uu(:)
         integer :: u, ios, nline, ncol, n, k, ncol1
+        logical :: halting(size(ieee_usual))
+        character(len=:), allocatable :: units, per_tau
         stat%code = 0
         head = '&measurement record = '''//trim(d%record)//''': '
+        scale = 1.0_dp
+        units = ' rad'
+        per_tau = ''
+        if (trim(d%quantity) == 'rate') then
+            scale = sqrt(d%g/d%b_prime)
+            units = ' rad/s'
+            per_tau = ' (= '//sci(VALUE_MAX)//' sqrt(g/b_prime))'
+        end if
         path = record_file(d)
         open (newunit=u, file=path, status='old', action='read', form='formatted', &
               access='sequential', iostat=ios, iomsg=msg)
@@ -262,14 +291,18 @@ contains
         n = 0
         nline = 0
         ncol1 = 0
+        call traps_off(halting)
         do
-            read (u, '(a)', iostat=ios, iomsg=msg) line
+            ! a line of any length is read only up to MAX_RECORD_LINE + 1 characters (a file
+            ! without line ends, /dev/zero, ends at once)
+            call read_line(u, whole, ios, msg, MAX_RECORD_LINE)
             if (is_iostat_end(ios)) exit
             nline = nline + 1
             if (ios /= 0) then
                 call fail('cannot read line '//itoa(nline)//': '//trim(msg))
                 return
             end if
+            line = whole
             if (len_trim(line) > MAX_RECORD_LINE) then
                 call fail('line '//itoa(nline)//' is longer than '//itoa(MAX_RECORD_LINE)// &
                     ' characters; allowed: lines of at most '//itoa(MAX_RECORD_LINE))
@@ -303,10 +336,16 @@ contains
                     return
                 end if
             end if
+            if (abs(x(2)) > VALUE_MAX*scale) then
+                call fail('line '//itoa(nline)//': value '//sci(x(2))//' is too large; '// &
+                    'allowed: |value| <= '//sci(VALUE_MAX*scale)//units//per_tau)
+                return
+            end if
             if (ncol == 3) then
-                if (.not. (x(3) > 0.0_dp)) then
+                if (.not. (x(3) >= U_MIN*scale .and. x(3) <= VALUE_MAX*scale)) then
                     call fail('line '//itoa(nline)//': standard uncertainty '//sci(x(3))// &
-                        ' is not > 0; allowed: column 3 > 0')
+                        ' is out of range; allowed: column 3 from '//sci(U_MIN*scale)// &
+                        ' to '//sci(VALUE_MAX*scale)//units)
                     return
                 end if
             end if
@@ -325,6 +364,7 @@ contains
             v(n) = x(2)
             uu(n) = x(3)
         end do
+        call traps_restore(halting)
         close (u)
         if (n < MIN_SAMPLES) then
             call set_error(stat, ERR_DECK, head//itoa(n)//' samples; allowed: at least '// &
@@ -343,6 +383,7 @@ contains
     contains
         subroutine fail(what)
             character(len=*), intent(in) :: what
+            call traps_restore(halting)
             call set_error(stat, ERR_DECK, head//what)
             close (u)
         end subroutine fail

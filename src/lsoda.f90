@@ -574,8 +574,9 @@ contains
             end if
             tol = min(max(tol, 100.0_dp*UROUND), 0.001_dp)
             sm = vmnorm(s%n, s%yh(:, 2), s%rewt)
-            sm = 1.0_dp/(tol*w0*w0) + tol*sm**2
-            h0 = min(1.0_dp/sqrt(sm), tdist)
+            ! h0 = 1/sqrt(1/(tol w0^2) + tol |f|^2), written so that a tiny w0 (an
+            ! interval of 1e-280) neither underflows w0^2 to 0 nor overflows 1/w0^2
+            h0 = min(sqrt(tol)*w0/hypot(1.0_dp, tol*w0*sm), tdist)
         end if
         rh = h0*s%hmxi
         if (rh > 1.0_dp) h0 = h0/rh

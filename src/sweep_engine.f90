@@ -409,7 +409,7 @@ contains
         logical :: found
         real(dp), allocatable :: m(:)
         got = .false.
-        c0 = 0
+        c0 = 0_int64                    ! set on the first message (gcc -flto cannot see it)
         do
             call par_poll(PAR_ANY, src, tag, n, found)
             if (.not. found) exit

@@ -780,7 +780,14 @@ contains
         call bad('floquet_rtol_small', SB//'&floquet rtol = 1e-15 /', ['rtol = 1e-15'])
         call bad('floquet_rtol_nan', SB//'&floquet rtol = nan /', ['rtol = NaN', 'finite    '])
         call bad('floquet_amplitude_180', SB//'&floquet amplitude = 180 /', &
-                 ['&floquet amplitude = 180', '0 < amplitude < 180     '])
+                 ['&floquet amplitude = 180', '1e-6 <= amplitude < 180 '])
+        ! a tiny amplitude: SIGFPE in the variational analysis (found by the fuzz test at
+        ! 1.97e-229 degrees); refused, in a chart's axis and a design too
+        call bad('floquet_amplitude_tiny', SB//'&floquet amplitude = 1.97e-229 /', &
+                 ['&floquet amplitude = 1.97e-229', '1e-6 <= amplitude < 180       '])
+        call bad('chart_amplitude_tiny', SB//"&chart y = 'amplitude', y_min = 1e-200 /", &
+                 ['y_min = 1e-200             ', '1e-6 <= y_min < y_max < 180'])
+        call good('floquet_amplitude_1e-6', SB//'&floquet amplitude = 1e-6 /')
         call bad('floquet_amplitude_text', SB//'&floquet amplitude = big /', &
                  ['amplitude = big', 'not a real     '])
         call bad('floquet_unknown_variable', SB//'&floquet segment = 2 /', &

@@ -322,13 +322,16 @@ contains
     subroutine test_bad(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
-        character(len=*), parameter :: CASES(14) = [character(len=80) :: &
+        ! the last: a smallest amplitude of 1e-7 degrees (Floquet's products underflow
+        ! below about 1e-170 degrees: SIGFPE, found by the fuzz test through &floquet)
+        character(len=*), parameter :: CASES(15) = [character(len=80) :: &
             'l_min = 1.2, l_max = 0.9|l_max', 'l_min = 0.9, l_max = 0.9|l_max', &
             'nl = 1|nl', 'nl = -3|nl', 'amplitude_max = 0|amplitude_max', &
             'amplitude_max = 90.5|amplitude_max', 'amplitude_max = -10|amplitude_max', &
             'u_mass = -0.001|u_mass', 'u_l = -1e-3|u_l', 'u_b = -1e-4|u_b', &
             'u_period = -1e-4|u_period', 'l_min = NaN|l_min', &
-            'nb = 2, b_min = 0, b_max = 0|b_min', 'u_period = 100|u_period']
+            'nb = 2, b_min = 0, b_max = 0|b_min', 'u_period = 100|u_period', &
+            'amplitude_max = 1e-7|amplitude_max']
         character(len=*), parameter :: LAMBDA = 'lambda = 1.325817663668033'
         integer :: il
         character(len=:), allocatable :: d, c, var, nm, decks

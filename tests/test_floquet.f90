@@ -141,6 +141,12 @@ contains
         call torsion_period(p, 0.01_dp*deg, ivert, period, st)
         call t%check_close('small-amplitude t* = 4 pi sqrt(I1 l/(m g b^2))', period, &
                            4*pi*sqrt(p%inertia(1)*p%big_l), rtol=1.0e-8_dp)
+        ! a tiny amplitude (&floquet amplitude = 1.97e-229 degrees: z(A) - z(q) underflowed
+        ! to 0, SIGFPE in the checking build, found by the fuzz test): the same limit
+        call torsion_period(p, 3.4e-231_dp, ivert, period, st)
+        call t%check('tiny-amplitude t*: no failure', st%code == 0)
+        call t%check_close('tiny-amplitude t* = 4 pi sqrt(I1 l/(m g b^2))', period, &
+                           4*pi*sqrt(p%inertia(1)*p%big_l), rtol=1.0e-12_dp)
     end subroutine test_period
 
     !> Z v against Richardson-extrapolated directional differences of the right-hand side.

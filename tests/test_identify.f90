@@ -793,7 +793,7 @@ contains
             'l_prime = 1.18, g = 9.80665 /'//NL//'&body mass = 3.1, inertia = 0.05, 0.063, '// &
             '0.0304, r = 0.25, lambda = 0.64 /'//NL//'&start amplitude = 30 /'//NL// &
             "&scene analyses = 'identify' /"//NL
-        character(len=:), allocatable :: good
+        character(len=:), allocatable :: good, huge_t
         integer :: i
         good = ''
         do i = 0, 24
@@ -802,10 +802,40 @@ contains
         call write_text(SCR//'/bad_mono.dat', '# t theta4'//NL//good//'0.1 0.2'//NL)
         call write_text(SCR//'/bad_short.dat', '0 0.5'//NL//'0.1 0.4'//NL//'0.2 0.3'//NL)
         call write_text(SCR//'/bad_nan.dat', good//'0.6 NaN'//NL)
+        ! times of 1e116 s: the model would run the integrator until its step budget (and
+        ! the budget's message turned tau = 3E+116 into a run-time error: the fuzz test)
+        huge_t = ''
+        do i = 0, 24
+            huge_t = huge_t//itoa(2*i)//'e114 '//num(0.5_dp*cos(8.0_dp*0.02_dp*i))//NL
+        end do
+        call write_text(SCR//'/bad_long.dat', huge_t)
+        ! found by the fuzz test: a number beyond real(dp) (SIGFPE inside the run-time
+        ! library's read in the checking build), values whose squares overflow the fit's
+        ! sum (SIGFPE), a standard uncertainty whose weight 1/u overflows (SIGFPE)
+        call write_text(SCR//'/bad_1e400.dat', good//'0.6 1e400'//NL)
+        call write_text(SCR//'/bad_huge.dat', good//'0.6 1.5e221'//NL)
+        huge_t = ''
+        do i = 0, 24
+            huge_t = huge_t//num(0.02_dp*i)//' '//num(0.5_dp*cos(8.0_dp*0.02_dp*i))// &
+                ' 4.9e-324'//NL
+        end do
+        call write_text(SCR//'/bad_tiny_u.dat', huge_t)
         call one('missing', "&measurement record = 'no_such_file.dat' /", 2, 'cannot open')
         call one('mono', "&measurement record = 'bad_mono.dat' /", 2, 'is not after')
         call one('short', "&measurement record = 'bad_short.dat' /", 2, 'at least 20')
         call one('nan', "&measurement record = 'bad_nan.dat' /", 2, 'not a finite number')
+        call one('long', "&measurement record = 'bad_long.dat' /", 2, &
+                 'is beyond what the model runs; allowed: times up to 2.020E+05 s')
+        call one('1e400', "&measurement record = 'bad_1e400.dat' /", 2, &
+                 'line 26: a value is not a finite number')
+        call one('huge', "&measurement record = 'bad_huge.dat' /", 2, &
+                 'line 26: value 1.500E+221 is too large; allowed: |value| <= 1.000E+03 rad')
+        call one('tiny_u', "&measurement record = 'bad_tiny_u.dat' /", 2, &
+                 'line 1: standard uncertainty 4.941E-324 is out of range; allowed: '// &
+                 'column 3 from 1.000E-12 to 1.000E+03 rad')
+        ! a file without line ends: read whole before (a hang, missed by the fuzz test)
+        call one('dev_zero', "&measurement record = '/dev/zero' /", 2, &
+                 'line 1 is longer than 4096 characters')
         call one('period', "&measurement periods = 0.05, amplitudes = 20 /", 2, &
                  'no positive I1')
         call one('word', "&measurement record = 'bad_mono.dat', estimate = 'I1 inertia' /", &
@@ -829,8 +859,9 @@ contains
             deck = SCR//'/bad_'//label//'.nml'
             dir = SCR//'/out_'//label
             call write_text(deck, RIG//group//NL)
-            call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//' && '//exe//' '// &
-                deck//' --out '//dir//' > '//dir//'.stdout 2> '//dir//'.stderr', exitstat=ex)
+            call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//' && timeout 60 '// &
+                exe//' '//deck//' --out '//dir//' > '//dir//'.stdout 2> '//dir//'.stderr', &
+                exitstat=ex)
             call t%check('bad input '//label//': exit '//achar(iachar('0') + code), ex == code)
             has_deck = file_has(dir//'.stderr', deck)
             has_word = file_has(dir//'.stderr', word)

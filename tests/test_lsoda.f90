@@ -641,6 +641,16 @@ contains
         st = s%stats()
         call t%check('decay: stats consistent', st%steps > 0 .and. st%rhs_evals > st%steps &
             .and. st%t_current >= 1.0_dp .and. st%h_last > 0.0_dp)
+        ! a tiny interval, y' = -1e278 y over [0, 1e-278]: y = exp(-1) (the first-step
+        ! rule squared the interval: a division by zero, SIGFPE in the checking build, found
+        ! by the fuzz test through a record of times in units of 1e-278 s)
+        dec%k = 1.0e278_dp
+        call s%init(dec, 0.0_dp, [1.0_dp], 1.0e-8_dp, [1.0e-12_dp], stat)
+        call s%integrate(dec, 1.0e-278_dp, y1, stat)
+        call t%check('decay over [0, 1e-278]: no failure', stat%code == STATUS_OK)
+        call t%check_close('decay over [0, 1e-278]: y = exp(-1)', y1(1), exp(-1.0_dp), &
+                           rtol=1.0e-6_dp)
+        dec%k = 1.0_dp
         ! backwards in time: y(-2) = exp(2)
         call s%init(dec, 0.0_dp, [1.0_dp], 1.0e-8_dp, [1.0e-12_dp], stat)
         call s%integrate(dec, -1.0_dp, y1, stat)

@@ -118,6 +118,7 @@ contains
         character(len=:), allocatable :: fp
         fp = SCR//'/order.fp'
         call write_text(fp, 'order')
+        allocate (v(4, 0))              ! sweep_run reallocates it (gcc -flto warned otherwise)
         keep = 1
         !$ keep = omp_get_max_threads()
         do nt = 1, 3, 2
