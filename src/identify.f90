@@ -232,6 +232,15 @@ contains
                 'tau_end)')
             return
         end if
+        ! a record that ends within a thousandth of the time scale (b_prime/g)^(1/2) of the
+        ! release holds the release alone: nothing to identify, and steps at roundoff
+        if (rec%t(size(rec%t)) < 1.0e-3_dp*t_max/TAU_END_MAX) then
+            call set_error(stat, ERR_DECK, '&measurement record = '''//trim(d%record)// &
+                ''': its last sample, t = '//sci(rec%t(size(rec%t)))//' s after the '// &
+                'release, is too early to show a swing; allowed: times up to at least '// &
+                sci(1.0e-3_dp*t_max/TAU_END_MAX)//' s (tau = t sqrt(g/b_prime) >= 1e-3)')
+            return
+        end if
         if (estimated(d, 'amplitude') .and. trim(d%mode) /= 'raised') then
             call set_error(stat, ERR_DECK, '&measurement estimate = '''//trim(d%estimate)// &
                 ''': amplitude is the raised start''s; allowed with &start mode = ''raised''')

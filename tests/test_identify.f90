@@ -820,12 +820,22 @@ contains
                 ' 4.9e-324'//NL
         end do
         call write_text(SCR//'/bad_tiny_u.dat', huge_t)
+        ! times of 1e-278 s: the release alone (Radau stopped at once with 'already stands
+        ! at tcrit', found by the fuzz test)
+        huge_t = ''
+        do i = 0, 24
+            huge_t = huge_t//itoa(i)//'e-278 '//num(0.5_dp)//NL
+        end do
+        call write_text(SCR//'/bad_early.dat', huge_t)
         call one('missing', "&measurement record = 'no_such_file.dat' /", 2, 'cannot open')
         call one('mono', "&measurement record = 'bad_mono.dat' /", 2, 'is not after')
         call one('short', "&measurement record = 'bad_short.dat' /", 2, 'at least 20')
         call one('nan', "&measurement record = 'bad_nan.dat' /", 2, 'not a finite number')
         call one('long', "&measurement record = 'bad_long.dat' /", 2, &
                  'is beyond what the model runs; allowed: times up to 2.020E+05 s')
+        call one('early', "&measurement record = 'bad_early.dat' /"//NL// &
+                 "&integration method = 'radau' /", 2, 'is too early to show a swing; '// &
+                 'allowed: times up to at least 2.020E-04 s')
         call one('1e400', "&measurement record = 'bad_1e400.dat' /", 2, &
                  'line 26: a value is not a finite number')
         call one('huge', "&measurement record = 'bad_huge.dat' /", 2, &
