@@ -574,9 +574,16 @@ contains
             end if
             tol = min(max(tol, 100.0_dp*UROUND), 0.001_dp)
             sm = vmnorm(s%n, s%yh(:, 2), s%rewt)
-            ! h0 = 1/sqrt(1/(tol w0^2) + tol |f|^2), written so that a tiny w0 (an
-            ! interval of 1e-280) neither underflows w0^2 to 0 nor overflows 1/w0^2
-            h0 = min(sqrt(tol)*w0/hypot(1.0_dp, tol*w0*sm), tdist)
+            ! h0 = 1/sqrt(1/(tol w0^2) + tol |f|^2); for a tiny w0 (an interval of 1e-280),
+            ! where w0^2 underflows to 0 and 1/w0^2 overflows, as sqrt(tol) w0 / hypot(1,
+            ! tol w0 |f|), equal in exact arithmetic (the first form elsewhere: its last
+            ! bits decide the step counts on the standard problems)
+            if (w0 > 1.0e-100_dp .and. sm < 1.0e100_dp) then
+                sm = 1.0_dp/(tol*w0*w0) + tol*sm**2
+                h0 = min(1.0_dp/sqrt(sm), tdist)
+            else
+                h0 = min(sqrt(tol)*w0/hypot(1.0_dp, tol*w0*sm), tdist)
+            end if
         end if
         rh = h0*s%hmxi
         if (rh > 1.0_dp) h0 = h0/rh
