@@ -78,6 +78,7 @@ module elastic_solver
         real(dp) :: quality_leave = QUALITY_LEAVE   ! the chart's limits (es_init chart_limits)
         real(dp) :: quality_enter = QUALITY_ENTER
         integer :: n_recoords = 0               ! changes of coordinates (either way)
+        logical :: segment_started = .false.    ! a segment ran before (start_segment)
         integer :: coords = COORDS_MAX          ! coordinates of the current segment
         type(elastic_gen_t) :: gen              ! the model in generalized coordinates
         real(dp) :: yg_ref(GEN_NSTATE) = 0.0_dp ! last generalized state (angle branches)
@@ -159,6 +160,7 @@ contains
             s%quality_enter = max(chart_limits(1), chart_limits(2))
         end if
         s%n_recoords = 0
+        s%segment_started = .false.
         s%have_ref = .false.
         s%rtol = rtol
         s%atol = atol
@@ -195,6 +197,8 @@ contains
         logical, intent(in) :: bdf              !! LSODA: first step with BDF
         real(dp), intent(in) :: h0              !! Radau: first step (0: estimated)
         real(dp) :: yg(GEN_NSTATE)
+        integer :: before
+        before = s%coords
         s%coords = COORDS_MAX
         if (s%use_gen) then
             if (chart_quality(sys, y0) > s%quality_enter) then
@@ -207,6 +211,10 @@ contains
                 if (stat%code == STATUS_OK) s%coords = COORDS_GEN
             end if
         end if
+        ! a change of coordinates, at the chart's limits, at a cable switch or to retake a
+        ! step that met a singularity of the chart
+        if (s%segment_started .and. s%coords /= before) s%n_recoords = s%n_recoords + 1
+        s%segment_started = .true.
         if (s%coords == COORDS_GEN) then
             s%yg_ref = yg
             s%have_ref = .true.
@@ -318,7 +326,6 @@ contains
             call segment_dense(s, t0, 0, y, stat)
             if (stat%code /= STATUS_OK) return
             s%use_gen = .false.
-            s%n_recoords = s%n_recoords + 1
             call start_segment(s, sys, t0, y, stat, .false., abs(st%h_next))
             s%use_gen = .true.
             if (stat%code /= STATUS_OK) return
@@ -360,7 +367,6 @@ contains
             s%y_switch = y
             s%mode_next = sys%mode
             s%pending = .true.
-            s%n_recoords = s%n_recoords + 1
         end if
         if (any(sw)) then
             s%y_switch = y

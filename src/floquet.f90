@@ -48,7 +48,7 @@ module floquet
         complex(dp) :: multipliers(NSTATE) = (0.0_dp, 0.0_dp)  !! non-trivial first, by modulus
         logical :: trivial(NSTATE) = .false.    !! the four multipliers that are 1 by structure
         real(dp) :: orbit_closure = 0.0_dp      !! |y(t*) - y(0)|, max norm
-        real(dp) :: trivial_residual = 0.0_dp   !! largest relative residual of the trivial identities
+        real(dp) :: trivial_residual = 0.0_dp   !! largest relative residual, trivial identities
         real(dp) :: monodromy(NSTATE, NSTATE) = 0.0_dp  !! H(t*) of the chart form
         integer :: steps = 0, rhs_evaluations = 0
     end type floquet_result_t

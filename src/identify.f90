@@ -311,12 +311,14 @@ contains
                 call fail('cannot read line '//itoa(nline)//': '//trim(msg))
                 return
             end if
-            line = whole
-            if (len_trim(line) > MAX_RECORD_LINE) then
+            ! the whole text read, blanks included: a longer line is cut where read_line
+            ! stopped, and its rest would be read as the next line
+            if (len(whole) > MAX_RECORD_LINE) then
                 call fail('line '//itoa(nline)//' is longer than '//itoa(MAX_RECORD_LINE)// &
                     ' characters; allowed: lines of at most '//itoa(MAX_RECORD_LINE))
                 return
             end if
+            line = whole
             k = index(line, '#')
             if (k > 0) line(k:) = ' '
             call split(line, x, ncol, msg)
@@ -400,7 +402,7 @@ contains
 
     !> The record file of a deck: &measurement record relative to the deck's folder
     !! (d%record_path), or as given.
-    function record_file(d) result(path)
+    pure function record_file(d) result(path)
         type(deck_t), intent(in) :: d
         character(len=:), allocatable :: path
         path = trim(d%record)

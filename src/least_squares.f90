@@ -188,9 +188,15 @@ contains
                 end if
             end if
         end do
-        call set_error(stat, ERR_NUMERIC, 'Levenberg-Marquardt did not converge in '// &
-            itoa(res%iterations)//' steps (lambda = '//sci(lambda, 1)//'; the Gauss-Newton '// &
-            'step would still lower chi^2 by '//sci(gain, 1)//')')
+        if (gain < huge(1.0_dp)) then
+            call set_error(stat, ERR_NUMERIC, 'Levenberg-Marquardt did not converge in '// &
+                itoa(res%iterations)//' steps (lambda = '//sci(lambda, 1)//'; the '// &
+                'Gauss-Newton step would still lower chi^2 by '//sci(gain, 1)//')')
+        else
+            call set_error(stat, ERR_NUMERIC, 'Levenberg-Marquardt did not converge in '// &
+                itoa(res%iterations)//' steps (lambda = '//sci(lambda, 1)//'; the Jacobian '// &
+                'is rank deficient: the data do not determine every estimated parameter)')
+        end if
     contains
         !> gain: what the Gauss-Newton step of the current Jacobian could still lower S by,
         !! over s^2 = S / (m - n) (huge when J is rank deficient: no verdict then).

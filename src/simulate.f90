@@ -867,8 +867,8 @@ contains
             call set_error(stat, ERR_MODEL, trim(buf))
         else if (abs(sin(mo%th(2))) > SIN2_MAX) then
             write (buf, '(a,f0.4,a)') 'cable BC swings up to the horizontal at tau = '// &
-                fixed(tau, 6)//' (theta2 = ', mo%th(2)/deg, ' deg): the model of a hanging cable no '// &
-                'longer holds; lower the amplitude or start speed'
+                fixed(tau, 6)//' (theta2 = ', mo%th(2)/deg, ' deg): the model of a hanging '// &
+                'cable no longer holds; lower the amplitude or start speed'
             call set_error(stat, ERR_MODEL, trim(buf))
         end if
     end subroutine model_checks
@@ -989,8 +989,9 @@ contains
             call model_checks(mo, t, stat)
             if (stat%code == 0) then
                 write (buf, '(a,f0.4,a,f0.4,a)') 'the equations of motion become '// &
-                    'singular at tau = '//fixed(t, 6)//' (theta5 = ', th(5)/deg, ' deg, theta2 = ', &
-                    th(2)/deg, ' deg): line CD or cable BC near their limits; lower the '// &
+                    'singular at tau = '//fixed(t, 6)//' (theta5 = ', th(5)/deg, &
+                    ' deg, theta2 = ', th(2)/deg, ' deg): line CD or cable BC near their '// &
+                    'limits; lower the '// &
                     'amplitude or start speed'
                 call set_error(stat, ERR_MODEL, trim(buf))
             end if

@@ -9,6 +9,7 @@ module test_extreme
     use simulate, only: model_checks
     use run_loop, only: check_row_budget, MAX_STEPS_PER_ROW
     use text, only: fixed
+    use monte_carlo, only: MC_ANALYSIS
     use deck, only: deck_t, read_deck, deck_echo, OUTPUT_COLUMNS
     use identify, only: record_t, read_record
     implicit none
@@ -495,8 +496,8 @@ contains
         subroutine leftovers(nm, w, wk, wt)
             character(len=*), intent(in) :: nm
             integer, intent(out) :: w, wk, wt
-            character(len=*), parameter :: SWEEPS(4) = [character(len=16) :: 'chart', &
-                'design', 'design_edges', 'design_precision']
+            character(len=*), parameter :: SWEEPS(5) = [character(len=16) :: 'chart', &
+                'design', 'design_edges', 'design_precision', MC_ANALYSIS]
             character(len=1024) :: line
             integer :: u, ios, k
             w = 0

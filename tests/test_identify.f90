@@ -827,6 +827,10 @@ contains
             huge_t = huge_t//itoa(i)//'e-278 '//num(0.5_dp)//NL
         end do
         call write_text(SCR//'/bad_early.dat', huge_t)
+        ! a line of 6000 blanks and then numbers: its rest was read as a line of its own
+        ! (the review), and one of 5000 blanks and text was skipped
+        call write_text(SCR//'/bad_blanks.dat', good//repeat(' ', 6000)//'0.6 0.2'//NL)
+        call write_text(SCR//'/bad_blanks2.dat', good//repeat(' ', 5000)//'abc'//NL)
         call one('missing', "&measurement record = 'no_such_file.dat' /", 2, 'cannot open')
         call one('mono', "&measurement record = 'bad_mono.dat' /", 2, 'is not after')
         call one('short', "&measurement record = 'bad_short.dat' /", 2, 'at least 20')
@@ -836,6 +840,10 @@ contains
         call one('early', "&measurement record = 'bad_early.dat' /"//NL// &
                  "&integration method = 'radau' /", 2, 'is too early to show a swing; '// &
                  'allowed: times up to at least 2.020E-04 s')
+        call one('blanks', "&measurement record = 'bad_blanks.dat' /", 2, &
+                 'line 26 is longer than 4096 characters')
+        call one('blanks2', "&measurement record = 'bad_blanks2.dat' /", 2, &
+                 'line 26 is longer than 4096 characters')
         call one('1e400', "&measurement record = 'bad_1e400.dat' /", 2, &
                  'line 26: a value is not a finite number')
         call one('huge', "&measurement record = 'bad_huge.dat' /", 2, &
