@@ -1,10 +1,12 @@
 !> Tests of the deck reader (every value read back, every bad input an ERR_DECK naming the
 !! variable) and of the atomic output files.
 module test_deck
+    use, intrinsic :: ieee_arithmetic, only: ieee_usual
     use kinds, only: dp
     use status, only: status_t, STATUS_OK, ERR_DECK, ERR_IO
     use testing, only: tester_t
-    use deck, only: deck_t, read_deck, analysis_requested, deck_echo
+    use deck, only: deck_t, read_deck, analysis_requested, deck_echo, rshort, traps_off, &
+                    traps_restore
     use output_io, only: atomic_open, atomic_commit, atomic_abort, write_kv, all_finite, &
                          out_files_t, make_dir, process_id
     use text, only: itoa
@@ -60,6 +62,7 @@ contains
         if (t%want('deck: limits (subscripts, sizes, ratios, angles, rates, rows)')) &
             call test_limits(t, dir)
         if (t%want('deck: echo and key = value lines')) call test_echo(t, dir)
+        if (t%want('deck: shortest reals of the echo')) call test_rshort(t)
         if (t%want('deck: atomic output files')) call test_atomic(t, dir)
         if (t%want('deck: the files of a run, committed or removed together')) &
             call test_run_files(t, dir)
@@ -905,5 +908,113 @@ contains
         end subroutine bad
 
     end subroutine test_cables
+
+    !> rshort against its definition, the digits tried in turn (k = 0, 1, 2, ... in fixed
+    !! notation for 1e-4 <= |x| < 1e15, else in scientific notation), over random bit
+    !! patterns of every magnitude, powers of two, decimals of few digits and their
+    !! neighbours, thirds and the deck values of the paper's scenes.
+    subroutine test_rshort(t)
+        type(tester_t), intent(inout) :: t
+        integer, parameter :: i8 = selected_int_kind(18)
+        real(dp) :: x, u(2)
+        integer :: k, bad, cases
+        integer(i8) :: bits
+        character(len=80) :: first
+        logical :: halting(size(ieee_usual))
+        bad = 0
+        cases = 0
+        first = ''
+        call traps_off(halting)     ! the definition reads 2e308 back: an overflow
+        call random_seed(put=[(12345 + 7*k, k=1, 64)])
+        do k = 1, 3000
+            call random_number(u)
+            bits = int(u(1)*2.0_dp**31, i8)*2_i8**32 + int(u(2)*2.0_dp**32, i8)
+            x = transfer(bits, 1.0_dp)
+            if (x /= x .or. abs(x) > huge(1.0_dp)) cycle
+            call one(x)
+            call random_number(u)
+            call one(10.0_dp**(30.0_dp*u(1) - 10.0_dp)*u(2))
+        end do
+        do k = -20, 60
+            call one(2.0_dp**k)
+            call one(-3.0_dp*2.0_dp**k)
+        end do
+        do k = 0, 2000
+            x = real(k, dp)/1000.0_dp
+            call one(x)
+            call one(nearest(x, 1.0_dp))
+            call one(nearest(x, -1.0_dp))
+            call one(real(k, dp)/3.0_dp)
+            call one(real(k, dp)*1.0e-7_dp)
+            call one(real(k, dp)*1.0e12_dp + 0.5_dp)
+        end do
+        call one(0.1458333333333333_dp)
+        call one(sqrt(0.5_dp))
+        call one(atan(1.0_dp))
+        call one(9.80665_dp)
+        call one(0.0_dp)
+        call one(-0.0_dp)
+        call one(huge(1.0_dp))
+        call one(tiny(1.0_dp))
+        call traps_restore(halting)
+        write (*, '(a,i0,a,i0)') '  rshort: ', cases, ' values, different: ', bad
+        call t%check('rshort = the digits tried in turn, '//itoa(cases)//' values'// &
+                     trim(merge(' (first: '//trim(first)//')', repeat(' ', 90), bad > 0)), &
+                     bad == 0 .and. cases > 15000)
+    contains
+        subroutine one(v)
+            real(dp), intent(in) :: v
+            character(len=:), allocatable :: got, want
+            real(dp) :: y
+            integer :: ios, ie
+            cases = cases + 1
+            got = rshort(v)
+            want = by_turns(v)
+            read (got, *, iostat=ios) y
+            ie = index(got, 'e')
+            if (ie > 0) got = got(1:ie - 1)     ! the mantissa (the whole text reads back)
+            if (got /= want .or. ios /= 0 .or. y /= v) then
+                bad = bad + 1
+                if (len_trim(first) == 0) first = got//' against '//want
+            end if
+        end subroutine one
+        !> The definition: the fewest digits that read back, each k tried in turn.
+        function by_turns(v) result(s)
+            real(dp), intent(in) :: v
+            character(len=:), allocatable :: s
+            character(len=48) :: buf
+            real(dp) :: y
+            integer :: kk, ios, ie
+            logical :: fixed
+            fixed = .false.
+            if (v == 0.0_dp .or. (abs(v) >= 1.0e-4_dp .and. abs(v) < 1.0e15_dp)) then
+                do kk = 0, 24
+                    write (buf, '(f48.'//itoa(kk)//')') v
+                    read (buf, *, iostat=ios) y
+                    fixed = ios == 0 .and. y == v
+                    if (fixed) exit
+                end do
+            end if
+            if (fixed) then
+                s = trim(adjustl(buf))
+                if (s(1:1) == '.') s = '0'//s
+                if (len(s) > 1) then
+                    if (s(1:2) == '-.') s = '-0'//s(2:)
+                end if
+                if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
+                return
+            end if
+            do kk = 0, 16
+                write (buf, '(es48.'//itoa(kk)//'e3)') v
+                read (buf, *, iostat=ios) y
+                if (ios == 0 .and. y == v) exit
+            end do
+            ! the mantissa only: the exponent's text is rshort's own (tested by the echo)
+            s = trim(adjustl(buf))
+            ie = index(s, 'E')
+            s = s(1:ie - 1)
+            if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
+        end function by_turns
+    end subroutine test_rshort
 
 end module test_deck
