@@ -709,7 +709,7 @@ contains
         type(lsoda_t), intent(inout) :: s
         class(ode_system_t), intent(inout) :: sys
         type(status_t), intent(inout) :: stat
-        integer :: ncf, m, newq, i, j, nqm, lm
+        integer :: ncf, m, newq, i, nqm, lm
         logical :: newton, converged, singular, fatal, switched
         real(dp) :: del, delp, dsm, rate, rm, dcon, pnorm, rh, rh1, rh2, rh1it, pdh, exsm
         real(dp) :: dm, exm, alpha
@@ -914,11 +914,7 @@ contains
                 s%hu = s%h
                 s%nqu = s%nq
                 s%mused = s%meth
-                do j = 1, s%l
-                    do i = 1, s%n
-                        s%yh(i, j) = s%yh(i, j) + s%el(j)*s%acor(i)
-                    end do
-                end do
+                call add_correction(s%yh, s%el, s%acor, s%n, s%l)
                 switched = .false.
                 s%icount = s%icount - 1
                 if (s%icount < 0) then
@@ -1204,16 +1200,34 @@ contains
     !> yh <- yh * Pascal triangle (Taylor predictor to tn + h).
     subroutine predict(s)
         type(lsoda_t), intent(inout) :: s
-        integer :: i, j, k, nq
-        nq = s%nq
+        call pascal(s%yh, s%n, s%nq)
+    end subroutine predict
+
+    !> The Pascal triangle on the first nq + 1 columns of yh (rows 1:n), column by column.
+    !! On a dummy argument, which aliases nothing, the columns are added as vectors.
+    pure subroutine pascal(yh, n, nq)
+        real(dp), intent(inout) :: yh(:, :)     !! Nordsieck array
+        integer, intent(in) :: n, nq            !! rows used, order
+        integer :: j, k
         do k = 1, nq
             do j = nq, k, -1
-                do i = 1, s%n
-                    s%yh(i, j) = s%yh(i, j) + s%yh(i, j + 1)
-                end do
+                yh(1:n, j) = yh(1:n, j) + yh(1:n, j + 1)
             end do
         end do
-    end subroutine predict
+    end subroutine pascal
+
+    !> yh(:, j) <- yh(:, j) + el(j) acor, j = 1 ... l: a step's correction added to the
+    !! Nordsieck array (as vectors: dummy arguments alias nothing).
+    pure subroutine add_correction(yh, el, acor, n, l)
+        real(dp), intent(inout) :: yh(:, :)     !! Nordsieck array
+        real(dp), intent(in) :: el(:)           !! method coefficients l_j
+        real(dp), intent(in) :: acor(:)         !! the step's correction
+        integer, intent(in) :: n, l             !! rows used, columns
+        integer :: j
+        do j = 1, l
+            yh(1:n, j) = yh(1:n, j) + el(j)*acor(1:n)
+        end do
+    end subroutine add_correction
 
     !> Inverse of predict.
     subroutine unpredict(s)
