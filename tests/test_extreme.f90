@@ -10,6 +10,7 @@ module test_extreme
     use run_loop, only: check_row_budget, MAX_STEPS_PER_ROW
     use text, only: fixed
     use monte_carlo, only: MC_ANALYSIS
+    use design, only: DESIGN_STAGES
     use deck, only: deck_t, read_deck, deck_echo, OUTPUT_COLUMNS
     use identify, only: record_t, read_record
     implicit none
@@ -172,7 +173,8 @@ contains
             else
                 f1 = file_has(log, 'bifilar: error')
                 f2 = file_has(log, trim(cases(k)%word))
-                call t%check('extreme '//nm//': diagnostic "'//trim(cases(k)%word)//'"', f1 .and. f2)
+                call t%check('extreme '//nm//': diagnostic "'//trim(cases(k)%word)//'"', &
+                             f1 .and. f2)
                 inquire (file=outdir//'/'//nm//'.dat', exist=there)
                 call t%check('extreme '//nm//': no .dat left behind', .not. there)
             end if
@@ -250,7 +252,8 @@ contains
         end do
         close (u)
         call t%check('elastic_slack: .slack rows parse', ok)
-        call t%check('elastic_slack: .slack intervals ordered, inside the run', ordered .and. inside)
+        call t%check('elastic_slack: .slack intervals ordered, inside the run', &
+                     ordered .and. inside)
         call read_kv(sumpath, 'slack_intervals_BC', v, found)
         ok = found .and. nint(v) == n(1)
         call read_kv(sumpath, 'slack_intervals_AD', v, found)
@@ -497,7 +500,7 @@ contains
             character(len=*), intent(in) :: nm
             integer, intent(out) :: w, wk, wt
             character(len=*), parameter :: SWEEPS(5) = [character(len=16) :: 'chart', &
-                'design', 'design_edges', 'design_precision', MC_ANALYSIS]
+                DESIGN_STAGES, MC_ANALYSIS]
             character(len=1024) :: line
             integer :: u, ios, k
             w = 0
