@@ -158,14 +158,14 @@ $(BIN)/bench_radau: tests/bench_radau.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
 $(BIN)/bench_wp: tests/bench_wp.f90 $(LIB_OBJ) | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
 
-$(BIN)/bench_speed: tests/bench_speed.f90 $(LIB_OBJ) | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+$(BIN)/bench_speed: tests/bench_speed.f90 $(LIB_OBJ) $(BUILD)/bench_args.o | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/bench_args.o $(LIBS) -o $@
 
 $(BIN)/bench_sweep: tests/bench_sweep.f90 $(LIB_OBJ) $(BUILD)/probe_task.o | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/probe_task.o $(LIBS) -o $@
 
-$(BIN)/bench_identify: tests/bench_identify.f90 $(LIB_OBJ) | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+$(BIN)/bench_identify: tests/bench_identify.f90 $(LIB_OBJ) $(BUILD)/bench_args.o | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/bench_args.o $(LIBS) -o $@
 
 bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench_elastic \
        $(BIN)/bench_radau $(BIN)/bench_speed $(BIN)/bench_identify $(BIN)/bifilar \

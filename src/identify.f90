@@ -1178,7 +1178,7 @@ contains
             call lm_fit(q, self%phat, h, size(r), lsq_options_t(), fit, stat)
             if (stat%code /= 0) then
                 stat%code = ERR_NUMERIC
-                stat%msg = 'identify: Monte Carlo sample '//itoa(k)//': '//stat%msg
+                stat%msg = 'Monte Carlo sample '//itoa(k)//': '//stat%msg
                 return
             end if
             p = fit%p

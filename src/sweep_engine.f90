@@ -179,6 +179,9 @@ module sweep_engine
     ! unlink(2) and _exit(2), all async-signal-safe).
     character(kind=c_char), allocatable, save :: sig_head(:), sig_tail(:, :)
     integer, save :: sig_tail_len(2) = 0
+    !> The line as the handler writes it, in one write(2) so that it is whole or absent
+    !! (mpirun sends SIGKILL soon after its SIGTERM): head, signal number, tail.
+    character(kind=c_char), allocatable, save :: sig_msg(:)
     character(kind=c_char), allocatable, save :: sig_tmp(:, :)
     integer, save :: sig_ntmp = 0
     !> The checkpoint's temporary file while it is written (sig_writing = 1), removed too.
@@ -1206,6 +1209,9 @@ contains
         end do
         sig_tail(len(kept) + 1, 2) = achar(10)
         sig_tail_len = [len(none) + 1, len(kept) + 1]
+        if (allocated(sig_msg)) deallocate (sig_msg)
+        allocate (sig_msg(len(head) + 4 + maxval(sig_tail_len)))
+        sig_msg = c_null_char
         sig_ntmp = 0
         if (present(files)) then
             n = 1
@@ -1256,13 +1262,12 @@ contains
         integer(c_int), value :: sig
         integer(c_size_t) :: rc
         integer(c_int) :: rcu, s
-        integer :: k, nd
+        integer :: k, nd, n
         character(kind=c_char) :: digits(4)
         do k = 1, sig_ntmp
             rcu = c_unlink_sig(sig_tmp(:, k))
         end do
         if (sig_writing == 1) rcu = c_unlink_sig(sig_ckpt_tmp)
-        rc = c_write(2_c_int, sig_head, int(size(sig_head) - 1, c_size_t))
         s = sig
         nd = 0
         do while (nd < 4)
@@ -1271,8 +1276,13 @@ contains
             s = s/10
             if (s == 0) exit
         end do
-        rc = c_write(2_c_int, digits(5 - nd:4), int(nd, c_size_t))
-        rc = c_write(2_c_int, sig_tail(:, sig_kept), int(sig_tail_len(sig_kept), c_size_t))
+        n = size(sig_head) - 1
+        sig_msg(1:n) = sig_head(1:n)
+        sig_msg(n + 1:n + nd) = digits(5 - nd:4)
+        n = n + nd
+        sig_msg(n + 1:n + sig_tail_len(sig_kept)) = sig_tail(1:sig_tail_len(sig_kept), sig_kept)
+        n = n + sig_tail_len(sig_kept)
+        rc = c_write(2_c_int, sig_msg, int(n, c_size_t))
         call c_exit_now(128_c_int + sig)
     end subroutine on_signal
 

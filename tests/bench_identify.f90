@@ -18,6 +18,7 @@
 program bench_identify
     use kinds, only: dp
     use status, only: status_t
+    use bench_args, only: int_arg, need
     use deck, only: deck_t, read_deck
     use period_inversion, only: input_u_t, period_fit_t, invert_periods, period_monte_carlo
     use identify, only: record_t, identify_result_t, read_record, identify_record
@@ -38,7 +39,7 @@ program bench_identify
     select case (trim(mode))
     case ('periods', 'periods_asym', 'mc')
         call read_deck('input/identify_periods.nml', d, st)
-        call need(st)
+        call need(st, 'bench_identify')
         if (trim(mode) == 'periods_asym') then
             d%l_prime = 1.18_dp
             d%lambda = 0.64_dp
@@ -50,28 +51,28 @@ program bench_identify
             if (n >= 2) then
                 call period_monte_carlo(d, d%periods(1:3), d%amplitudes(1:3), u, 0.0512_dp, n, &
                                         d%seed, mean, sdev, st)
-                call need(st)
+                call need(st, 'bench_identify')
                 sumck = sdev
             end if
         else
             do k = 1, n
                 call invert_periods(d, d%periods(1:3), d%amplitudes(1:3), u, f, st)
-                call need(st)
+                call need(st, 'bench_identify')
                 sumck = sumck + f%i1
             end do
         end if
         call cpu_time(t1)
     case ('record')
         call read_deck('input/identify_record.nml', d, st)
-        call need(st)
+        call need(st, 'bench_identify')
         d%estimate = 'I1 c_v c_q'
         d%monte_carlo = 0
         call read_record(d, rec, st)
-        call need(st)
+        call need(st, 'bench_identify')
         call cpu_time(t0)
         do k = 1, n
             call identify_record(d, rec, res, st)
-            call need(st)
+            call need(st, 'bench_identify')
             sumck = sumck + res%i1
         end do
         call cpu_time(t1)
@@ -80,22 +81,5 @@ program bench_identify
         stop 1
     end select
     write (*, '(a,1x,i0,es14.5,es24.15)') trim(mode), units, (t1 - t0)/max(1, units), sumck
-
-contains
-
-    integer function int_arg(i)
-        integer, intent(in) :: i
-        character(len=32) :: buf
-        call get_command_argument(i, buf)
-        read (buf, *) int_arg
-    end function int_arg
-
-    subroutine need(s)
-        type(status_t), intent(in) :: s
-        if (s%code /= 0) then
-            write (*, '(a)') 'bench_identify: '//s%msg
-            stop 1
-        end if
-    end subroutine need
 
 end program bench_identify

@@ -15,6 +15,7 @@
 program bench_speed
     use kinds, only: dp, deg
     use status, only: status_t
+    use bench_args, only: int_arg, need
     use deck, only: deck_t, read_deck
     use geometry, only: pendulum_t
     use simulate, only: make_pendulum, start_state
@@ -37,11 +38,11 @@ program bench_speed
     case ('rhs')
         n = int_arg(2)
         call read_deck('input/cylinder_l180.nml', d, st)
-        call need(st)
+        call need(st, 'bench_speed')
         call make_pendulum(d, sys%p, st)
-        call need(st)
+        call need(st, 'bench_speed')
         call start_state(d, sys%p, y0, th0, st)
-        call need(st)
+        call need(st, 'bench_speed')
         y0(6:10) = [0.01_dp, -0.02_dp, 0.03_dp, -0.4_dp, 0.05_dp]
         call cpu_time(t0)
         do k = 1, n
@@ -56,13 +57,13 @@ program bench_speed
         call get_command_argument(2, arg)
         n = int_arg(3)
         call read_deck('input/'//trim(arg)//'.nml', d, st)
-        call need(st)
+        call need(st, 'bench_speed')
         call make_pendulum(d, p, st)
-        call need(st)
+        call need(st, 'bench_speed')
         call cpu_time(t0)
         do k = 1, n
             call floquet_analysis(p, 45*deg, 1.0e-10_dp, 1, fr, st)
-            call need(st)
+            call need(st, 'bench_speed')
             sumck = sumck + fr%max_modulus
         end do
         call cpu_time(t1)
@@ -70,7 +71,7 @@ program bench_speed
     case ('chart')
         n = int_arg(2)
         call read_deck('input/box_chart.nml', d, st)
-        call need(st)
+        call need(st, 'bench_speed')
         call cpu_time(t0)
         do k = 1, n
             do j = 1, 5
@@ -91,22 +92,5 @@ program bench_speed
         stop 1
     end select
     write (*, '(a,1x,i0,es14.5,es24.15)') trim(mode), units, (t1 - t0)/max(1, units), sumck
-
-contains
-
-    integer function int_arg(i)
-        integer, intent(in) :: i
-        character(len=32) :: buf
-        call get_command_argument(i, buf)
-        read (buf, *) int_arg
-    end function int_arg
-
-    subroutine need(s)
-        type(status_t), intent(in) :: s
-        if (s%code /= 0) then
-            write (*, '(a)') 'bench_speed: '//s%msg
-            stop 1
-        end if
-    end subroutine need
 
 end program bench_speed
