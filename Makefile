@@ -37,12 +37,30 @@ BIN = bin
 # Objects do not depend on the flags: after changing them, make clean.
 FFLAGS = -O3 -march=x86-64-v2 -flto=auto -fno-backtrace
 # Link statically what Debian ships as archives (LAPACK, BLAS, libgfortran, libquadmath,
-# libgomp): the process starts without loading and relocating them.  libc and libm stay
-# shared.  An archive the compiler cannot find falls back to the shared library.
+# libgomp): the process starts without loading and relocating them.  An archive the compiler
+# cannot find falls back to the shared library.  DYN_LIBS keeps libc and libm shared (for
+# valgrind's memcheck, which needs malloc in a shared libc).
 static_or_shared = $(if $(filter /%,$(shell $(FC) -print-file-name=lib$(1).a)),$(shell \
                    $(FC) -print-file-name=lib$(1).a),-l$(1))
-LIBS := -static-libgcc -Wl,--as-needed $(foreach l,lapack blas gfortran gomp quadmath,$(call \
-        static_or_shared,$(l)))
+DYN_LIBS := -static-libgcc -Wl,--as-needed $(foreach l,lapack blas gfortran gomp quadmath,$(call \
+            static_or_shared,$(l)))
+# Where glibc's archive is there too (libc6-dev, which gfortran needs to link anything), the
+# whole program is static: no dynamic loader at all, about 1 ms less CPU a process (README,
+# "Speed").  libgfortran calls pthread functions through weak references, which a static
+# link leaves at address 0 unless something asks for them (closing a unit then jumps to 0):
+# -u asks for each.  glibc's note that a static program cannot dlopen(3), reached through
+# libgomp's offloading code, which this program never runs, is left out of the link's
+# output (LINK_QUIET); every other message of the linker is shown.
+PTHREAD_WEAK = cond_broadcast cond_destroy cond_init cond_wait create getspecific join \
+               key_create key_delete mutex_destroy mutex_init mutex_lock mutex_trylock \
+               mutex_unlock self setspecific
+ifneq ($(filter /%,$(shell $(FC) -print-file-name=libc.a)),)
+LIBS := -static $(foreach f,$(PTHREAD_WEAK),-Wl,-u,pthread_$(f)) $(DYN_LIBS)
+LINK_QUIET = 2> $@.ld; s=$$?; grep -v -e 'libgomp.a(target.o): in function' \
+             -e "warning: Using 'dlopen' in statically linked" $@.ld >&2; rm -f $@.ld; exit $$s
+else
+LIBS := $(DYN_LIBS)
+endif
 endif
 FFLAGS += -fopenmp -std=f2008 -Wall -Wextra -Wno-compare-reals -fimplicit-none
 
@@ -105,13 +123,13 @@ $(BUILD)/%.o: tests/%.f90 | $(BUILD)
 	$(FC) $(FFLAGS) -J$(BUILD) -c $< -o $@
 
 $(BIN)/bifilar: src/bifilar.f90 $(LIB_OBJ) | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
 
 $(BIN)/bifilar_mpi: src/bifilar.f90 $(LIB_OBJ) | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
 
 $(BIN)/sweep_probe_mpi: tests/sweep_probe.f90 $(LIB_OBJ) $(BUILD)/probe_task.o | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/probe_task.o $(LIBS) -o $@
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/probe_task.o $(LIBS) -o $@ $(LINK_QUIET)
 
 # make mpi: OpenMPI (installed when missing and run as root), then bin/bifilar_mpi.
 mpi:
@@ -127,13 +145,13 @@ mpi:
 	@$(MAKE) --no-print-directory MPI=1 $(BIN)/bifilar_mpi
 
 $(BIN)/make_record: src/make_record.f90 $(LIB_OBJ) | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
 
 $(BIN)/run_tests: tests/run_tests.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
 
 $(BIN)/bench_integrator: tests/bench_integrator.f90 $(LIB_OBJ) $(BUILD)/test_lsoda.o | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/test_lsoda.o $(BUILD)/testing.o $(LIBS) -o $@
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/test_lsoda.o $(BUILD)/testing.o $(LIBS) -o $@ $(LINK_QUIET)
 
 # The MPI tests (suite sweep) run $(BIN)/bifilar_mpi under mpirun: it is built here when
 # OpenMPI is installed; without OpenMPI the suite says so and skips them.
@@ -147,25 +165,25 @@ check:
 	$(MAKE) CHECK=1 test
 
 $(BIN)/bench_bifilar: tests/bench_bifilar.f90 $(LIB_OBJ) | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
 
 $(BIN)/bench_elastic: tests/bench_elastic.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
 
 $(BIN)/bench_radau: tests/bench_radau.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
 
 $(BIN)/bench_wp: tests/bench_wp.f90 $(LIB_OBJ) | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
 
 $(BIN)/bench_speed: tests/bench_speed.f90 $(LIB_OBJ) $(BUILD)/bench_args.o | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/bench_args.o $(LIBS) -o $@
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/bench_args.o $(LIBS) -o $@ $(LINK_QUIET)
 
 $(BIN)/bench_sweep: tests/bench_sweep.f90 $(LIB_OBJ) $(BUILD)/probe_task.o | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/probe_task.o $(LIBS) -o $@
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/probe_task.o $(LIBS) -o $@ $(LINK_QUIET)
 
 $(BIN)/bench_identify: tests/bench_identify.f90 $(LIB_OBJ) $(BUILD)/bench_args.o | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/bench_args.o $(LIBS) -o $@
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/bench_args.o $(LIBS) -o $@ $(LINK_QUIET)
 
 bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench_elastic \
        $(BIN)/bench_radau $(BIN)/bench_speed $(BIN)/bench_identify $(BIN)/bifilar \
@@ -192,10 +210,12 @@ bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench
 	@echo "MPI: strong scaling of the 60 x 45 chart and of identify's Monte Carlo, the cost of the chart's points, the model of 1000 x 1000:"
 	tests/bench/mpi_scaling.sh $(BIN) output/bench_mpi.dat
 
-memcheck: $(BIN)/bifilar
+# memcheck needs a shared libc (its malloc): bin/bifilar's objects, linked with DYN_LIBS.
+memcheck: src/bifilar.f90 $(LIB_OBJ)
 	mkdir -p build/memcheck
-	valgrind --leak-check=full --error-exitcode=1 $(BIN)/bifilar input/cylinder_l195.nml \
-	  --out build/memcheck
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(DYN_LIBS) -o build/memcheck/bifilar
+	valgrind --leak-check=full --error-exitcode=1 build/memcheck/bifilar \
+	  input/cylinder_l195.nml --out build/memcheck
 
 # The measurements of the identify example decks, made by the program itself from the true
 # rigs in input/truth/ (committed: make run needs them; remaking them gives the same files).
