@@ -57,7 +57,7 @@ PTHREAD_WEAK = cond_broadcast cond_destroy cond_init cond_wait create getspecifi
 ifneq ($(filter /%,$(shell $(FC) -print-file-name=libc.a)),)
 LIBS := -static $(foreach f,$(PTHREAD_WEAK),-Wl,-u,pthread_$(f)) $(DYN_LIBS)
 LINK_QUIET = 2> $@.ld; s=$$?; grep -v -e 'libgomp.a(target.o): in function' \
-             -e "warning: Using 'dlopen' in statically linked" $@.ld >&2; rm -f $@.ld; exit $$s
+             -e "Using 'dlopen' in statically linked" $@.ld >&2; rm -f $@.ld; exit $$s
 else
 LIBS := $(DYN_LIBS)
 endif
@@ -75,6 +75,7 @@ BUILD := $(BUILD)-mpi
 FC = mpif90
 ifneq ($(CHECK),1)
 LIBS := $(foreach l,lapack blas,$(call static_or_shared,$(l)))
+LINK_QUIET =
 endif
 PARALLEL_SRC = src/parallel_mpi.f90
 else
