@@ -31,7 +31,8 @@ per_unit() {
 cpu_unit() {
     "$@" | awk '{print $3}'
 }
-# CPU seconds of one process, from REPS runs (user + system of the children)
+# CPU seconds of one process, from REPS runs (user + system of the children: the shell's
+# fork of each is counted too; process_true shows that floor)
 cpu_process() {
     local reps=$1 t
     shift
@@ -48,6 +49,8 @@ $(cpu_unit "$bin/bench_speed" floquet $deck 20)"
     done
     echo "chart_point $(( $(per_unit 1 "$bin/bench_speed" chart) / 30 )) $(cpu_unit "$bin/bench_speed" chart 4)"
     echo "process_start $(cg "$bin/bifilar") $(cpu_process 200 "$bin/bifilar")"
+    # the floor of cpu_process: any process started from this shell (the fork included)
+    echo "process_true $(cg /bin/true) $(cpu_process 200 /bin/true)"
     echo "cylinder_l180 $(cg "$bin/bifilar" input/cylinder_l180.nml --out "$scratch") \
 $(cpu_process 40 "$bin/bifilar" input/cylinder_l180.nml --out "$scratch")"
     # the 60 x 6 rig design of the parallelepiped, whole process on one thread
