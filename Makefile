@@ -12,7 +12,8 @@
 #                   (output/bench_*.dat, plots/work_precision_elastic.png; the speed figures
 #                   count instructions with valgrind --tool=callgrind; the MPI figures need
 #                   OpenMPI: make mpi)
-#   make memcheck   valgrind (leaks, invalid accesses) on bin/bifilar with a paper deck
+#   make memcheck   valgrind (leaks, invalid accesses) on a paper deck: bin/bifilar's objects
+#                   linked with libc shared (build/memcheck/bifilar)
 #   make records    remake the measurements of the identify example decks (bin/make_record:
 #                   input/identify_record_swing.dat; prints the periods of
 #                   input/identify_periods.nml)
@@ -30,6 +31,7 @@ BUILD = build-check
 BIN = build-check/bin
 FFLAGS = -O0 -g -fcheck=all,no-array-temps -ffpe-trap=invalid,zero,overflow -fbacktrace
 LIBS = -llapack -lblas
+DYN_LIBS = $(LIBS)
 else
 BUILD = build
 BIN = bin
@@ -44,8 +46,9 @@ static_or_shared = $(if $(filter /%,$(shell $(FC) -print-file-name=lib$(1).a)),$
                    $(FC) -print-file-name=lib$(1).a),-l$(1))
 DYN_LIBS := -static-libgcc -Wl,--as-needed $(foreach l,lapack blas gfortran gomp quadmath,$(call \
             static_or_shared,$(l)))
-# Where glibc's archive is there too (libc6-dev, which gfortran needs to link anything), the
-# whole program is static: no dynamic loader at all, about 1 ms less CPU a process (README,
+# Where glibc's archive is there too (libc6-dev, which gfortran needs to link anything) and
+# every archive above was found (-static takes no shared library), the whole program is
+# static: no dynamic loader at all, about 1 ms less CPU a process (README,
 # "Speed").  libgfortran calls pthread functions through weak references, which a static
 # link leaves at address 0 unless something asks for them (closing a unit then jumps to 0):
 # -u asks for each.  glibc's note that a static program cannot dlopen(3), reached through
@@ -54,7 +57,8 @@ DYN_LIBS := -static-libgcc -Wl,--as-needed $(foreach l,lapack blas gfortran gomp
 PTHREAD_WEAK = cond_broadcast cond_destroy cond_init cond_wait create getspecific join \
                key_create key_delete mutex_destroy mutex_init mutex_lock mutex_trylock \
                mutex_unlock self setspecific
-ifneq ($(filter /%,$(shell $(FC) -print-file-name=libc.a)),)
+ifneq ($(and $(filter /%,$(shell $(FC) -print-file-name=libc.a)),$(if $(filter \
+       -l%,$(DYN_LIBS)),,yes)),)
 LIBS := -static $(foreach f,$(PTHREAD_WEAK),-Wl,-u,pthread_$(f)) $(DYN_LIBS)
 LINK_QUIET = 2> $@.ld; s=$$?; grep -v -e 'libgomp.a(target.o): in function' \
              -e "Using 'dlopen' in statically linked" $@.ld >&2; rm -f $@.ld; exit $$s
