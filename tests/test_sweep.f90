@@ -38,8 +38,8 @@ module test_sweep
     !! sends SIGTERM, waits again and sends SIGKILL.  Its wait is sleep(3) on whole seconds,
     !! cut short by the SIGCHLD of a rank that dies, and rounded: with the default 1 s the
     !! SIGKILL may follow the SIGTERM at once on a loaded machine, before rank 0 has said
-    !! anything (tests/bench/kill_window.sh, two cores shared with four busy processes: no
-    !! line in 2 of 100 runs with 1 s, in none of 30 with 3 s).  3 s leaves rank 0 its time.
+    !! anything (tests/bench/kill_window.sh, two cores shared with six busy processes: no
+    !! line in 3 of 100 runs with 1 s).  3 s leaves rank 0 its time (README, "Stopping").
     character(len=*), parameter :: MPIKILL = MPIENV//' OMPI_MCA_odls_base_sigkill_timeout=3 '// &
         'OMP_NUM_THREADS=1 mpirun -q --oversubscribe'
     !> The parallelepiped of input/box_chart.nml (stable and unstable points, cheap ones and
