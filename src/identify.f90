@@ -771,7 +771,6 @@ contains
         type(sweep_report_t), intent(inout), optional :: report
         type(out_files_t), intent(in), optional :: files
         type(period_fit_t) :: f
-        type(deck_t) :: dl
         type(input_u_t) :: u
         real(dp) :: mean, sdev
         integer :: n, imin
@@ -814,9 +813,7 @@ contains
         res%u_p(1) = f%u_i1
         res%model_periods = f%model_periods
         res%budget = f%budget
-        dl = d
-        dl%l = 0.5_dp*(d%l + d%l_prime)
-        res%i1_linear = linear_inertia(dl, res%period_linear)
+        res%i1_linear = linear_inertia(d, res%period_linear)
         res%linear_error = res%i1_linear/res%i1 - 1.0_dp
     end subroutine identify_periods
 
@@ -834,7 +831,6 @@ contains
         type(out_files_t), intent(in), optional :: files
         type(record_fit_t) :: prob
         type(lsq_result_t) :: fit
-        type(deck_t) :: dl
         real(dp), allocatable :: p0(:), h(:), jac(:, :), cov(:, :), dpdx(:, :), ux(:), xval(:)
         character(len=16), allocatable :: xname(:)
         real(dp) :: s2
@@ -910,10 +906,8 @@ contains
             if (stat%code /= 0) return
         end if
         res%period_linear = mean_period(rec)
-        dl = d
-        dl%l = 0.5_dp*(d%l + d%l_prime)
         if (res%period_linear > 0.0_dp) then
-            res%i1_linear = linear_inertia(dl, res%period_linear)
+            res%i1_linear = linear_inertia(d, res%period_linear)
             res%linear_error = res%i1_linear/res%i1 - 1.0_dp
         end if
     end subroutine identify_record

@@ -719,11 +719,13 @@ contains
                               self%seed, k, est(1), stat)
     end subroutine period_mc_point
 
-    !> The classical small-amplitude formula I1 = m g b b' T^2 / (16 pi^2 l) (deck units).
+    !> The classical small-amplitude formula I1 = m g b b' T^2 / (16 pi^2 l) (deck units),
+    !! with l the mean of the two cable lengths, (l + l')/2, as it is applied to a rig whose
+    !! cables differ.
     pure real(dp) function linear_inertia(d, t) result(i1)
         type(deck_t), intent(in) :: d           !! the rig
         real(dp), intent(in) :: t               !! period (s)
-        i1 = d%mass*d%g*d%b*d%b_prime*t**2/(16.0_dp*pi**2*d%l)
+        i1 = d%mass*d%g*d%b*d%b_prime*t**2/(16.0_dp*pi**2*(0.5_dp*(d%l + d%l_prime)))
     end function linear_inertia
 
 end module period_inversion
