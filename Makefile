@@ -69,8 +69,8 @@ endif
 FFLAGS += -fopenmp -std=f2008 -Wall -Wextra -Wno-compare-reals -fimplicit-none
 
 # The MPI build (MPI=1, made by `make mpi` and by the tests): the same sources compiled by
-# mpif90 into build-mpi (build-check-mpi), with src/parallel_mpi.f90 as module `parallel`
-# in place of the serial src/parallel.f90; executable $(BIN)/bifilar_mpi.  libgfortran and
+# mpif90 into build-mpi (build-check-mpi), with src/parallel/parallel_mpi.f90 as module `parallel`
+# in place of the serial parallel.f90; executable $(BIN)/bifilar_mpi.  libgfortran and
 # libgomp stay shared there (OpenMPI's Fortran bindings link libgfortran.so), LAPACK and
 # BLAS are the same archives as in the serial build (the same numbers, byte for byte).
 MPI ?= 0
@@ -81,60 +81,69 @@ ifneq ($(CHECK),1)
 LIBS := $(foreach l,lapack blas,$(call static_or_shared,$(l)))
 LINK_QUIET =
 endif
-PARALLEL_SRC = src/parallel_mpi.f90
+PARALLEL_SRC = src/parallel/parallel_mpi.f90
 else
-PARALLEL_SRC = src/parallel.f90
+PARALLEL_SRC = src/parallel/parallel.f90
 endif
 
-# Library modules (one object each, named as the module) and test modules.
-LIB_MODULES = kinds status text progress random lapack_wrap ode_system lsoda radau stepper run_loop \
-              geometry kinematics gen_forces bifilar_model elastic_model elastic_gen \
-              elastic_solver deck output_io fast_format simulate floquet paper_claims \
-              parallel sweep_engine monte_carlo stability work_precision period_inversion \
-              least_squares identify design driver
-LIB_OBJ = $(patsubst %,$(BUILD)/%.o,$(LIB_MODULES))
-TEST_MODULES = testing test_lsoda test_model test_deck test_floquet test_extreme \
-               test_work_precision test_elastic test_elastic_jac test_fast_format test_columns \
-               test_radau test_elastic_radau test_robust test_period test_design probe_task \
-               test_sweep test_identify
-TEST_OBJ = $(patsubst %,$(BUILD)/%.o,$(TEST_MODULES))
+# Sources are found by wildcard: the library is every src/*/*.f90 that is not a program
+# (src/app/bifilar.f90 and make_record.f90) and not the other build's message passing;
+# the test modules are every tests/*.f90 and tests/bench/*.f90 that is not a program.
+# One module (or submodule) per file, named as the file; its object is $(BUILD)/NAME.o.
+SRC_DIRS := $(patsubst %/,%,$(sort $(dir $(wildcard src/*/*.f90))))
+TEST_DIRS := tests tests/bench
+PROGRAM_SRC := $(shell grep -l -i -E '^ *program ' $(wildcard src/*/*.f90 tests/*.f90 \
+                 tests/bench/*.f90))
+LIB_SRC := $(filter-out $(PROGRAM_SRC) src/parallel/parallel.f90 src/parallel/parallel_mpi.f90, \
+             $(wildcard src/*/*.f90))
+LIB_OBJ = $(patsubst %.f90,$(BUILD)/%.o,$(notdir $(LIB_SRC))) $(BUILD)/parallel.o
+TEST_SRC := $(filter-out $(PROGRAM_SRC),$(wildcard tests/*.f90 tests/bench/*.f90))
+TEST_OBJ = $(patsubst %.f90,$(BUILD)/%.o,$(notdir $(TEST_SRC)))
+vpath %.f90 $(SRC_DIRS) $(TEST_DIRS)
 
-.PHONY: all test check run report bench deps clean memcheck mpi records
+.PHONY: all test check run report bench deps clean memcheck mpi records graph
 all: $(BIN)/bifilar
 
 $(BUILD) $(BIN):
 	mkdir -p $@
 
-# Module dependencies, read from the sources' `use` lines (one module per file, named as
-# the file): each object depends on the objects of the modules it uses (gfortran writes the
-# .mod files beside them), so make -j builds in the right order and a change rebuilds only
-# its users.  build/deps.mk is remade whenever a source changes.  Of src/parallel.f90 and
-# src/parallel_mpi.f90 (both module `parallel`) each build reads its own as parallel.o.
-SOURCES = $(filter-out src/parallel.f90 src/parallel_mpi.f90,$(wildcard src/*.f90 tests/*.f90)) \
-          $(PARALLEL_SRC)
-$(BUILD)/deps.mk: $(SOURCES) | $(BUILD)
-	@for f in $(SOURCES); do b=$$(basename $$f .f90); b=$${b%_mpi}; \
-	  for m in $$(sed -n 's/^ *use  *\([a-z0-9_]*\).*/\1/p' $$f | sort -u); do \
-	    if [ "$$m" != "$$b" ] && [ -f src/$$m.f90 -o -f tests/$$m.f90 ]; then \
-	      echo "$(BUILD)/$$b.o: $(BUILD)/$$m.o"; fi; \
+# Dependencies, read from the sources' `use` and `submodule` lines: each object depends on
+# the objects of the modules it uses and a submodule on its parent (gfortran writes the
+# .mod and .smod files beside them), so make -j builds in the right order and a change
+# rebuilds only its users.  build/deps.mk is remade whenever a source changes.  Of
+# src/parallel/parallel.f90 and parallel_mpi.f90 (both module `parallel`) each build reads
+# its own as parallel.o.
+SOURCES = $(LIB_SRC) $(TEST_SRC) $(PARALLEL_SRC)
+MODULE_NAMES = $(basename $(notdir $(LIB_SRC) $(TEST_SRC))) parallel
+$(BUILD)/deps.mk: $(SOURCES) Makefile | $(BUILD)
+	@known=" $(MODULE_NAMES) "; for f in $(SOURCES); do b=$$(basename $$f .f90); b=$${b%_mpi}; \
+	  for m in $$(sed -n -e 's/^ *use  *\([a-z0-9_]*\).*/\1/p' \
+	                     -e 's/^ *submodule *( *\([a-z0-9_]*\) *).*/\1/p' $$f | sort -u); do \
+	    case "$$known" in *" $$m "*) [ "$$m" != "$$b" ] && echo "$(BUILD)/$$b.o: $(BUILD)/$$m.o";; esac; \
 	  done; done > $@
 include $(BUILD)/deps.mk
 
-$(BUILD)/%.o: src/%.f90 | $(BUILD)
+$(BUILD)/%.o: %.f90 | $(BUILD)
 	$(FC) $(FFLAGS) -J$(BUILD) -c $< -o $@
 $(BUILD)/parallel.o: $(PARALLEL_SRC) | $(BUILD)
 	$(FC) $(FFLAGS) -J$(BUILD) -c $< -o $@
-$(BUILD)/%.o: tests/%.f90 | $(BUILD)
-	$(FC) $(FFLAGS) -J$(BUILD) -c $< -o $@
 
-$(BIN)/bifilar: src/bifilar.f90 $(LIB_OBJ) | $(BIN)
+# Programs: the application's (src/app) link the library; the test runner, the benchmarks
+# and probes (tests/, tests/bench/) link the test modules too.
+$(BIN)/%: src/app/%.f90 $(LIB_OBJ) | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
-
-$(BIN)/bifilar_mpi: src/bifilar.f90 $(LIB_OBJ) | $(BIN)
+$(BIN)/%: tests/%.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
+$(BIN)/%: tests/bench/%.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
+$(BIN)/bifilar_mpi: src/app/bifilar.f90 $(LIB_OBJ) | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
+$(BIN)/sweep_probe_mpi: tests/bench/sweep_probe.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
+	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
 
-$(BIN)/sweep_probe_mpi: tests/sweep_probe.f90 $(LIB_OBJ) $(BUILD)/probe_task.o | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/probe_task.o $(LIBS) -o $@ $(LINK_QUIET)
+# The module graph: one line per module with its floor (tests/tools/module_graph.sh).
+graph:
+	@tests/tools/module_graph.sh
 
 # make mpi: OpenMPI (installed when missing and run as root), then bin/bifilar_mpi.
 mpi:
@@ -149,14 +158,8 @@ mpi:
 	  fi; }
 	@$(MAKE) --no-print-directory MPI=1 $(BIN)/bifilar_mpi
 
-$(BIN)/make_record: src/make_record.f90 $(LIB_OBJ) | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
 
-$(BIN)/run_tests: tests/run_tests.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
 
-$(BIN)/bench_integrator: tests/bench_integrator.f90 $(LIB_OBJ) $(BUILD)/test_lsoda.o | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/test_lsoda.o $(BUILD)/testing.o $(LIBS) -o $@ $(LINK_QUIET)
 
 # The MPI tests (suite sweep) run $(BIN)/bifilar_mpi under mpirun: it is built here when
 # OpenMPI is installed; without OpenMPI the suite says so and skips them.
@@ -169,26 +172,12 @@ test: $(BIN)/run_tests $(BIN)/bifilar
 check:
 	$(MAKE) CHECK=1 test
 
-$(BIN)/bench_bifilar: tests/bench_bifilar.f90 $(LIB_OBJ) | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
 
-$(BIN)/bench_elastic: tests/bench_elastic.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
 
-$(BIN)/bench_radau: tests/bench_radau.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
 
-$(BIN)/bench_wp: tests/bench_wp.f90 $(LIB_OBJ) | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
 
-$(BIN)/bench_speed: tests/bench_speed.f90 $(LIB_OBJ) $(BUILD)/bench_args.o | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/bench_args.o $(LIBS) -o $@ $(LINK_QUIET)
 
-$(BIN)/bench_sweep: tests/bench_sweep.f90 $(LIB_OBJ) $(BUILD)/probe_task.o | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/probe_task.o $(LIBS) -o $@ $(LINK_QUIET)
 
-$(BIN)/bench_identify: tests/bench_identify.f90 $(LIB_OBJ) $(BUILD)/bench_args.o | $(BIN)
-	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(BUILD)/bench_args.o $(LIBS) -o $@ $(LINK_QUIET)
 
 bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench_elastic \
        $(BIN)/bench_radau $(BIN)/bench_speed $(BIN)/bench_identify $(BIN)/bifilar \
@@ -216,7 +205,7 @@ bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench
 	tests/bench/mpi_scaling.sh $(BIN) output/bench_mpi.dat
 
 # memcheck needs a shared libc (its malloc): bin/bifilar's objects, linked with DYN_LIBS.
-memcheck: src/bifilar.f90 $(LIB_OBJ)
+memcheck: src/app/bifilar.f90 $(LIB_OBJ)
 	mkdir -p build/memcheck
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(DYN_LIBS) -o build/memcheck/bifilar
 	valgrind --leak-check=full --error-exitcode=1 build/memcheck/bifilar \

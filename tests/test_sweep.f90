@@ -287,7 +287,7 @@ contains
         ck = d//'/out/kchart.chart.partial'
         ex = run(exe//' '//deck//' --out '//d//'/ref', d)
         call t%check('kill: the uninterrupted chart (exit 0)', all([ex == 0, exists(ref)]))
-        ex = run('tests/kill_run.sh '//ck//' KILL '//exe//' '//deck//' --out '//d// &
+        ex = run('tests/tools/kill_run.sh '//ck//' KILL '//exe//' '//deck//' --out '//d// &
                  '/out --checkpoint 0', d)
         call t%check('kill: killed after its first checkpoint (exit 137, got '//itoa(ex)//')', &
                      ex == 137)
@@ -303,7 +303,7 @@ contains
 
         ! SIGTERM during the sweep: one line, nothing but the checkpoint
         call execute_command_line('rm -rf '//d//'/out')
-        ex = run('tests/kill_run.sh '//ck//' TERM '//exe//' '//deck//' --out '//d// &
+        ex = run('tests/tools/kill_run.sh '//ck//' TERM '//exe//' '//deck//' --out '//d// &
                  '/out --checkpoint 0', d)
         call t%check('term: exit 143 (128 + SIGTERM; got '//itoa(ex)//')', ex == 143)
         call t%check('term: one stderr line naming the deck and the checkpoint', &
@@ -361,7 +361,7 @@ contains
         ex = run(exe//' '//deck//' --out '//d//'/ref', d)
         call t%check('design kill: the uninterrupted design (exit 0)', all([ex == 0, &
                      exists(d//'/ref/rig.design')]))
-        ex = run('tests/kill_run.sh '//d//'/out/rig.design.partial KILL '//exe//' '//deck// &
+        ex = run('tests/tools/kill_run.sh '//d//'/out/rig.design.partial KILL '//exe//' '//deck// &
                  ' --out '//d//'/out --checkpoint 0', d)
         call t%check('design kill: killed after the first checkpoint (exit 137, got '// &
                      itoa(ex)//')', all([ex == 137, .not. exists(d//'/out/rig.design')]))
@@ -449,7 +449,7 @@ contains
                         "y = 'amplitude', y_min = 2.0, y_max = 90.0, ny = 16 /"//NL)
         ex = run(exe//' '//big//' --out '//d//'/bigref', d)
         ck = d//'/big/big.chart.partial'
-        ex = run('timeout 120 tests/kill_run.sh '//ck//' rank1 '//MPIKILL//' -np 3 '//mexe// &
+        ex = run('timeout 120 tests/tools/kill_run.sh '//ck//' rank1 '//MPIKILL//' -np 3 '//mexe// &
                  ' '//big//' --out '//d//'/big --checkpoint 0', d)
         call t%check('mpi kill: the run ends (mpirun exit 137 or 143, got '//itoa(ex)//')', &
                      ex == 137 .or. ex == 143)
@@ -534,7 +534,7 @@ contains
         ex = run(exe//' '//deck//' --out '//d//'/ref', d)
         call t%check('mc kill: the uninterrupted run (exit 0)', all([ex == 0, &
                      exists(d//'/ref/per.identify')]))
-        ex = run('OMP_NUM_THREADS=1 tests/kill_run.sh '//ck//' KILL '//exe//' '//deck// &
+        ex = run('OMP_NUM_THREADS=1 tests/tools/kill_run.sh '//ck//' KILL '//exe//' '//deck// &
                  ' --out '//d//'/out --checkpoint 0', d)
         call t%check('mc kill: killed after its first checkpoint (exit 137, got '// &
                      itoa(ex)//')', all([ex == 137, exists(ck), &

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # How often rank 0 gets to print its line when another rank dies (README, "Stopping,
 # failures and what mpirun prints"): RUNS times, the chart of the test `mpi kill` on 3 ranks,
-# rank 1 killed with SIGKILL at the first checkpoint (tests/kill_run.sh), on two cores
+# rank 1 killed with SIGKILL at the first checkpoint (tests/tools/kill_run.sh), on two cores
 # (taskset -c 0,1) shared with BUSY busy-looping processes, with mpirun's
 # odls_base_sigkill_timeout = TIMEOUT seconds.  Of the runs where the kill happened (mpirun's
 # exit status 137 or 143), prints how many ended with exactly rank 0's one line on stderr
@@ -43,7 +43,7 @@ for ((i = 1; i <= runs; i++)); do
     ex=0
     env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1 \
         OMPI_MCA_odls_base_sigkill_timeout="$timeout_s" taskset -c 0,1 timeout 120 \
-        tests/kill_run.sh "$d/big/big.chart.partial" rank1 mpirun -q --oversubscribe -np 3 \
+        tests/tools/kill_run.sh "$d/big/big.chart.partial" rank1 mpirun -q --oversubscribe -np 3 \
         bin/bifilar_mpi "$d/big.nml" --out "$d/big" --checkpoint 0 >/dev/null \
         2>"$d/stderr" || ex=$?
     if [ "$ex" -ne 137 ] && [ "$ex" -ne 143 ]; then
