@@ -5,11 +5,11 @@ module test_deck
     use kinds, only: dp
     use status, only: status_t, STATUS_OK, ERR_DECK, ERR_IO
     use testing, only: tester_t
-    use deck, only: deck_t, read_deck, analysis_requested, deck_echo, rshort, traps_off, &
-                    traps_restore
+    use deck, only: deck_t, read_deck, analysis_requested, deck_echo
+    use fptraps, only: traps_off, traps_restore
     use output_io, only: atomic_open, atomic_commit, atomic_abort, write_kv, all_finite, &
                          out_files_t, make_dir, process_id
-    use text, only: itoa
+    use text, only: itoa, rshort
     use driver, only: error_line
     implicit none
     private

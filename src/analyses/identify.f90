@@ -54,9 +54,10 @@ module identify
     use, intrinsic :: iso_fortran_env, only: int64
     use kinds, only: dp, pi
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC, ERR_IO
-    use text, only: itoa, sci
-    use deck, only: deck_t, deck_echo, estimated, count_words, TAU_END_MAX, traps_off, &
-                    traps_restore, read_line
+    use text, only: itoa, sci, count_words
+    use deck, only: deck_t, deck_echo, estimated, TAU_END_MAX
+    use fptraps, only: traps_off, traps_restore, NTRAPS
+    use lines, only: read_line
     use output_io, only: out_files_t, write_kv, all_finite
     use fast_format, only: es_field
     use geometry, only: pendulum_t

@@ -174,8 +174,8 @@ contains
         do j = 1, d%chart_ny
             task%ys(j) = d%chart_y_min + (d%chart_y_max - d%chart_y_min)*(j - 1)/(d%chart_ny - 1)
         end do
-        task%x = d%chart_x
-        task%y = d%chart_y
+        task%x = trim(d%chart_x)
+        task%y = trim(d%chart_y)
         task%amplitude = d%floquet_amplitude
         task%rtol = d%floquet_rtol
         task%segments = d%floquet_segments
