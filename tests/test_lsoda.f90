@@ -10,9 +10,9 @@ module test_lsoda
     use kinds, only: dp, pi
     use status, only: status_t, set_error, STATUS_OK
     use ode_system, only: ode_system_t
-    use lsoda, only: lsoda_t, lsoda_stats_t, METHOD_ADAMS, METHOD_BDF, LSODA_ERR_MAX_STEPS, &
-        LSODA_ERR_TOO_MUCH_ACCURACY, LSODA_ERR_ERROR_TEST, LSODA_ERR_CONVERGENCE, &
-        LSODA_ERR_ILLEGAL_INPUT, LSODA_ERR_SINGULAR
+    use lsoda, only: lsoda_t, lsoda_stats_t, METHOD_ADAMS, METHOD_BDF
+    use status, only: LSODA_ERR_MAX_STEPS, LSODA_ERR_TOO_MUCH_ACCURACY, LSODA_ERR_ERROR_TEST, &
+        LSODA_ERR_CONVERGENCE, LSODA_ERR_ILLEGAL_INPUT, LSODA_ERR_SINGULAR
     use testing, only: tester_t
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none

@@ -6,8 +6,8 @@ module test_radau
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK
     use ode_system, only: ode_system_t
-    use radau, only: radau_t, radau_stats_t, radau_coeffs_t, radau_coefficients, &
-                     RADAU_ERR_ILLEGAL_INPUT, RADAU_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_MAX_STEPS
+    use radau, only: radau_t, radau_stats_t, radau_coeffs_t, radau_coefficients
+    use status, only: RADAU_ERR_ILLEGAL_INPUT, RADAU_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_MAX_STEPS
     use test_lsoda, only: bench_problem, scaled_error, NBENCH, BENCH_NAMES
     use testing, only: tester_t
     implicit none

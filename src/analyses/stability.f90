@@ -10,13 +10,12 @@
 !! the rig design (module design).
 module stability
     use kinds, only: dp, deg
-    use status, only: status_t, set_error, ERR_NUMERIC, ERR_DECK, ERR_MODEL
+    use status, only: status_t, set_error, ERR_NUMERIC, ERR_DECK, ERR_MODEL, LSODA_ERR_MAX_STEPS
     use geometry, only: pendulum_t
     use deck, only: deck_t, deck_echo
     use simulate, only: make_pendulum
     use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, &
                        FLOQUET_MAX_STEPS
-    use lsoda, only: LSODA_ERR_MAX_STEPS
     use output_io, only: out_files_t, write_kv
     use sweep_engine, only: sweep_task_t, sweep_run, sweep_options_t, sweep_report_t, &
         checkpoint_path

@@ -20,11 +20,10 @@ program bifilar
     use, intrinsic :: iso_c_binding, only: c_int
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     use kinds, only: dp
-    use status, only: status_t, STATUS_OK
+    use status, only: status_t, STATUS_OK, EXIT_OK, EXIT_USAGE
     use output_io, only: make_dir
     use paper_claims, only: write_report
-    use driver, only: run_deck, exit_status, error_line, BIFILAR_VERSION, EXIT_OK, EXIT_USAGE, &
-        serve_sweeps
+    use driver, only: run_deck, exit_status, error_line, BIFILAR_VERSION, serve_sweeps
     use sweep_engine, only: sweep_start, sweep_finish, sweep_is_master, sweep_library, &
         sweep_options_t
     implicit none

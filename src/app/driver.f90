@@ -9,7 +9,7 @@
 !! build the same task and take part (module sweep_engine).
 module driver
     use kinds, only: dp
-    use status, only: status_t, STATUS_OK, ERR_DECK, ERR_MODEL, ERR_IO
+    use status, only: status_t, STATUS_OK, ERR_DECK, exit_status_of, status_meaning
     use text, only: itoa, sci, fixed
     use deck, only: deck_t, read_deck, analysis_requested
     use output_io, only: out_files_t, remove_file
@@ -27,10 +27,6 @@ module driver
     private
 
     public :: run_deck, exit_status, error_line, serve_sweeps
-
-    !> Exit statuses of the program (README "Exit status").
-    integer, parameter, public :: EXIT_OK = 0, EXIT_USAGE = 1, EXIT_DECK = 2, &
-        EXIT_NUMERIC = 3, EXIT_MODEL = 4, EXIT_IO = 5
 
     !> The program's version (bifilar --version).
     character(len=*), parameter, public :: BIFILAR_VERSION = '1.1'
@@ -248,22 +244,11 @@ contains
         if (stat%code /= STATUS_OK) stat%msg = 'analyses = ''chart'': '//stat%msg
     end subroutine chart_ready
 
-    !> The exit status for a status code: 2 bad deck, 3 numerical failure, 4 the model no
-    !! longer holds, 5 output cannot be written.
+    !> The exit status for a status code (status's STATUS_TABLE): 2 bad deck, 3 numerical
+    !! failure, 4 the model no longer holds, 5 output cannot be written.
     pure integer function exit_status(code)
         integer, intent(in) :: code                 !! status_t%code
-        select case (code)
-        case (STATUS_OK)
-            exit_status = EXIT_OK
-        case (ERR_DECK)
-            exit_status = EXIT_DECK
-        case (ERR_MODEL)
-            exit_status = EXIT_MODEL
-        case (ERR_IO)
-            exit_status = EXIT_IO
-        case default
-            exit_status = EXIT_NUMERIC
-        end select
+        exit_status = exit_status_of(code)
     end function exit_status
 
     !> The one line printed for a failed deck: 'bifilar: error (KIND): DECK: MESSAGE', line
@@ -274,16 +259,7 @@ contains
         character(len=:), allocatable :: s
         character(len=:), allocatable :: kind, msg
         integer :: i
-        select case (exit_status(stat%code))
-        case (EXIT_DECK)
-            kind = 'bad input'
-        case (EXIT_MODEL)
-            kind = 'model no longer valid'
-        case (EXIT_IO)
-            kind = 'cannot write output'
-        case default
-            kind = 'numerical failure'
-        end select
+        kind = status_meaning(stat%code)
         msg = '(no message)'
         if (allocated(stat%msg)) msg = stat%msg
         do i = 1, len(msg)

@@ -31,7 +31,9 @@
 !! cause and the time reached; the solution up to the failure is kept.
 module lsoda
     use kinds, only: dp
-    use status, only: status_t, set_error, STATUS_OK
+    use status, only: status_t, set_error, STATUS_OK, LSODA_ERR_MAX_STEPS, &
+        LSODA_ERR_TOO_MUCH_ACCURACY, LSODA_ERR_ERROR_TEST, LSODA_ERR_CONVERGENCE, &
+        LSODA_ERR_ILLEGAL_INPUT, LSODA_ERR_SINGULAR
     use ode_system, only: ode_system_t
     use lapack_wrap, only: la_lu_factor, la_lu_solve
     implicit none
@@ -39,14 +41,6 @@ module lsoda
 
     integer, parameter, public :: METHOD_ADAMS = 1   !! non-stiff method (Adams-Moulton)
     integer, parameter, public :: METHOD_BDF = 2     !! stiff method (backward differentiation)
-
-    !> Failure codes in status_t%code (all > 10, distinct from the project's ERR_* codes).
-    integer, parameter, public :: LSODA_ERR_MAX_STEPS = 11          !! max_steps taken in one call
-    integer, parameter, public :: LSODA_ERR_TOO_MUCH_ACCURACY = 12  !! tolerance below roundoff
-    integer, parameter, public :: LSODA_ERR_ERROR_TEST = 13         !! repeated error-test failures
-    integer, parameter, public :: LSODA_ERR_CONVERGENCE = 14        !! repeated corrector failures
-    integer, parameter, public :: LSODA_ERR_ILLEGAL_INPUT = 15      !! bad argument
-    integer, parameter, public :: LSODA_ERR_SINGULAR = 16           !! singular iteration matrix
 
     integer, parameter :: MAXORD_ADAMS = 12
     integer, parameter :: MAXORD_BDF = 5

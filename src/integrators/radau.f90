@@ -51,7 +51,9 @@
 !! cause and the time reached; the solution up to the failure is kept.
 module radau
     use kinds, only: dp
-    use status, only: status_t, set_error, STATUS_OK
+    use status, only: status_t, set_error, STATUS_OK, RADAU_ERR_MAX_STEPS, &
+        RADAU_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_STEP_TOO_SMALL, RADAU_ERR_ILLEGAL_INPUT, &
+        RADAU_ERR_SINGULAR
     use ode_system, only: ode_system_t
     use lapack_wrap, only: la_lu_factor, la_lu_solve, la_zlu_factor, la_zlu_solve
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -60,11 +62,6 @@ module radau
 
     !> Failure codes in status_t%code (all > 20: distinct from the project's ERR_* codes and
     !! from LSODA's).
-    integer, parameter, public :: RADAU_ERR_MAX_STEPS = 21          !! max_steps in one call
-    integer, parameter, public :: RADAU_ERR_TOO_MUCH_ACCURACY = 22  !! tolerance below roundoff
-    integer, parameter, public :: RADAU_ERR_STEP_TOO_SMALL = 23     !! h below roundoff of t
-    integer, parameter, public :: RADAU_ERR_ILLEGAL_INPUT = 25      !! bad argument
-    integer, parameter, public :: RADAU_ERR_SINGULAR = 26           !! singular iteration matrix
     !> Method code of this integrator where counters of several integrators meet (module
     !! lsoda has METHOD_ADAMS = 1, METHOD_BDF = 2).
     integer, parameter, public :: METHOD_RADAU = 3

@@ -6,11 +6,11 @@
 !! steps as error-test failures, method METHOD_RADAU of order 5).
 module stepper
     use kinds, only: dp
-    use status, only: status_t, set_error
+    use status, only: status_t, set_error, LSODA_ERR_TOO_MUCH_ACCURACY, &
+        RADAU_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_STEP_TOO_SMALL, RADAU_ERR_ILLEGAL_INPUT
     use ode_system, only: ode_system_t
-    use lsoda, only: lsoda_t, lsoda_stats_t, LSODA_ERR_TOO_MUCH_ACCURACY
-    use radau, only: radau_t, radau_stats_t, METHOD_RADAU, RADAU_ERR_TOO_MUCH_ACCURACY, &
-                     RADAU_ERR_STEP_TOO_SMALL, RADAU_ERR_ILLEGAL_INPUT
+    use lsoda, only: lsoda_t, lsoda_stats_t
+    use radau, only: radau_t, radau_stats_t, METHOD_RADAU
     implicit none
     private
 

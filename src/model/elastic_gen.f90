@@ -38,7 +38,7 @@
 !! first and second derivative along a direction) of the construction above.
 module elastic_gen
     use kinds, only: dp, pi
-    use status, only: status_t, set_error, ERR_NUMERIC, STATUS_OK
+    use status, only: status_t, set_error, ERR_NUMERIC, STATUS_OK, GEN_ERR_CHART
     use ode_system, only: ode_system_t
     use lapack_wrap, only: la_solve
     use elastic_model, only: elastic_t, natural_lengths, matrix_to_quat, elastic_pose, &
@@ -50,9 +50,6 @@ module elastic_gen
     integer, parameter, public :: GEN_NSTATE = 12
     !> Indices of the stretches s1 (BC), s2 (AD) and their rates in the state.
     integer, parameter, public :: GEN_S1 = 5, GEN_S2 = 6, GEN_S1_RATE = 11, GEN_S2_RATE = 12
-    !> status_t%code of gen_rhs where the chart is singular (elastic_solver then goes on in
-    !! the maximal coordinates)
-    integer, parameter, public :: GEN_ERR_CHART = 31
     !> Jets: value (0), first derivatives along q_1..q_6 (1:6) and along q' (7), second
     !! derivative along q' (8).
     integer, parameter :: NJ = 8

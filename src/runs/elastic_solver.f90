@@ -33,13 +33,13 @@
 !! where the motion of the cables changes quickly.
 module elastic_solver
     use kinds, only: dp
-    use status, only: status_t, set_error, ERR_NUMERIC, STATUS_OK
+    use status, only: status_t, set_error, ERR_NUMERIC, STATUS_OK, GEN_ERR_CHART
     use lsoda, only: lsoda_stats_t, METHOD_BDF
     use stepper, only: stepper_t, SOLVER_LSODA, SOLVER_RADAU
     use elastic_model, only: elastic_t, cable_switch, cable_switch_stretched, natural_lengths, &
                              ELASTIC_NSTATE, CABLE_TAUT, CABLE_SLACK
     use elastic_gen, only: elastic_gen_t, gen_to_maximal, maximal_to_gen, chart_quality, &
-                           GEN_NSTATE, GEN_ERR_CHART
+                           GEN_NSTATE
     implicit none
     private
 
