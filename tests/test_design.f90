@@ -10,10 +10,11 @@ module test_design
     use testing, only: tester_t
     use deck, only: deck_t, read_deck
     use geometry, only: pendulum_t
-    use simulate, only: make_pendulum
+    use rig, only: rig_of, make_pendulum
     use floquet, only: floquet_result_t, floquet_analysis
     use stability, only: run_chart
-    use design, only: design_result_t, design_sweep, candidate_precision, candidate_deck, &
+    use design, only: design_result_t, design_sweep, candidate_precision, candidate_rig, &
+                      design_rig_of, &
                       DESIGN_TOLERANCE, MARGIN_FRACTION, EDGE_RTOL
     use period_inversion, only: input_u_t
     use test_deck, only: write_text, exists, shell_count
@@ -103,7 +104,7 @@ contains
         end do
         call t%check('recommendation: the smallest u(I1)/I1 among the qualifying', best)
         ! independently: rtol / 100, twice the amplitudes
-        call make_pendulum(candidate_deck(d, l, b), p, st)
+        call make_pendulum(candidate_rig(rig_of(d), l, b), p, st)
         n2 = 2*d%design_n_amplitudes
         ok = st%code == 0
         worst = 0.0_dp
@@ -253,7 +254,7 @@ contains
         l = 1000.0_dp*d%b_prime
         u = input_u_t(mass=1.0e-3_dp, l=1.0e-3_dp, l_prime=1.0e-3_dp, b=5.0e-4_dp, &
                       b_prime=5.0e-4_dp, g=0.0_dp, period=1.0e-4_dp, amplitude=0.0_dp)
-        call candidate_precision(d, l, d%b, 0.5_dp, u, period, urel, lin, st)
+        call candidate_precision(design_rig_of(d), l, d%b, 0.5_dp, u, period, urel, lin, st)
         call t%check('classical: precision computed', st%code == 0)
         expect = sqrt((u%mass/d%mass)**2 + (u%b/d%b)**2 + (u%b_prime/d%b_prime)**2 + &
                       0.5_dp*(u%l/l)**2 + (2.0_dp*u%period/period)**2)
@@ -261,7 +262,7 @@ contains
                            expect, rtol=1.0e-4_dp)
         call t%check_close('classical: linear error at 0.5 deg ~ A^2/8', lin, &
                            (0.5_dp*deg)**2/8.0_dp, rtol=2.0e-2_dp)
-        call candidate_precision(d, l, d%b, 25.0_dp, u, period, urel, lin, st)
+        call candidate_precision(design_rig_of(d), l, d%b, 25.0_dp, u, period, urel, lin, st)
         k = sin(0.5_dp*25.0_dp*deg)
         a = 1.0_dp
         g = sqrt(1.0_dp - k*k)

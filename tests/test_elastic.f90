@@ -6,15 +6,17 @@ module test_elastic
     use status, only: status_t
     use testing, only: tester_t
     use test_model, only: cylinder
-    use geometry, only: pendulum_t, raised_angles, solve_theta5, beta_coeffs
+    use geometry, only: pendulum_t, beta_coeffs
+    use start_pose, only: raised_angles, solve_theta5
     use bifilar_model, only: bifilar_t, motion_t, chart_state, evaluate, chart_energy
     use elastic_model, only: elastic_t, elastic_cables_t, elastic_from_angles, elastic_start, &
                              elastic_evaluate, elastic_chart, elastic_energy, ELASTIC_NSTATE, &
                              natural_lengths, elastic_atol, CABLE_BC, CABLE_AD, CABLE_AUTO, &
                              CABLE_TAUT, CABLE_SLACK, cable_switch
     use elastic_solver, only: elastic_solver_t, slack_interval_t, SOLVER_LSODA
-    use lsoda, only: lsoda_t, lsoda_stats_t, METHOD_BDF
+    use lsoda, only: lsoda_t, METHOD_BDF
     use lapack_wrap, only: la_eig
+    use ode_system, only: integrator_stats_t
     implicit none
     private
 
@@ -113,7 +115,7 @@ contains
         type(tester_t), intent(inout) :: t
         type(elastic_t) :: el
         type(elastic_solver_t) :: s
-        type(lsoda_stats_t) :: ss
+        type(integrator_stats_t) :: ss
         type(status_t) :: st
         real(dp) :: y(ELASTIC_NSTATE), e0, err, qn
         real(dp), parameter :: rtol = 1.0e-10_dp
@@ -155,7 +157,7 @@ contains
         type(motion_t) :: mo
         real(dp), allocatable :: ref(:, :)
         real(dp) :: yc(10), y(ELASTIC_NSTATE), th3, diff(3, nk), slope(3), thr(5)
-        type(lsoda_stats_t) :: ss
+        type(integrator_stats_t) :: ss
         integer :: nout, k, j
         logical :: ok
         character(len=*), parameter :: names(3) = ['theta1', 'theta4', 'Q     ']
@@ -231,7 +233,7 @@ contains
         type(elastic_t) :: el
         type(elastic_solver_t) :: s
         type(status_t) :: st
-        type(lsoda_stats_t) :: ss, sa
+        type(integrator_stats_t) :: ss, sa
         real(dp) :: y(ELASTIC_NSTATE), jac(ELASTIC_NSTATE, ELASTIC_NSTATE), f0(ELASTIC_NSTATE)
         real(dp) :: fp(ELASTIC_NSTATE), fm(ELASTIC_NSTATE), yp(ELASTIC_NSTATE), h, rho, tend
         real(dp) :: rk4_steps(2)
@@ -330,7 +332,7 @@ contains
         real(dp) :: y(ELASTIC_NSTATE), e0, err, thr(5), tsum(2), first(2, 2)
         logical :: zero_when_slack, ok
         integer :: k, j, i, nlist(2)
-        type(lsoda_stats_t) :: ss
+        type(integrator_stats_t) :: ss
         el%p = cylinder(1.8_dp)
         el%stiffness = 1.0e4_dp
         el%damping = 0.0_dp
@@ -409,7 +411,7 @@ contains
         type(elastic_solver_t) :: s
         type(lsoda_t) :: sa
         type(status_t) :: st, sta
-        type(lsoda_stats_t) :: ss, sa_st
+        type(integrator_stats_t) :: ss, sa_st
         real(dp), parameter :: rtol = 1.0e-10_dp, tend = 6.0_dp
         real(dp) :: y(ELASTIC_NSTATE), ya(ELASTIC_NSTATE), diff, g(2)
         logical :: agree_modes

@@ -8,13 +8,14 @@ module test_elastic_jac
     use status, only: status_t
     use testing, only: tester_t
     use test_model, only: cylinder
-    use geometry, only: pendulum_t, solve_theta5, beta_coeffs, raised_angles
+    use geometry, only: pendulum_t, beta_coeffs
+    use start_pose, only: solve_theta5, raised_angles
     use bifilar_model, only: motion_t, chart_state
-    use ode_system, only: ode_system_t
+    use ode_system, only: ode_system_t, integrator_stats_t
     use elastic_model, only: elastic_t, elastic_cables_t, elastic_from_angles, elastic_start, &
                              elastic_evaluate, elastic_atol, elastic_pose, ELASTIC_NSTATE, &
                              CABLE_AUTO, CABLE_TAUT, CABLE_SLACK
-    use lsoda, only: lsoda_t, lsoda_stats_t
+    use lsoda, only: lsoda_t
     implicit none
     private
 
@@ -333,7 +334,7 @@ contains
         type(elastic_fd_t) :: elfd
         type(lsoda_t) :: s
         type(status_t) :: st, st2, st3
-        type(lsoda_stats_t) :: sa, sf
+        type(integrator_stats_t) :: sa, sf
         real(dp) :: y0(N), ya(N), yf(N), yr(N), th(5), atol(N), ea, ef
         real(dp), parameter :: rtol = 1.0e-8_dp, tend = 2*pi
         el%p = cylinder(1.8_dp)

@@ -12,7 +12,8 @@ module test_elastic_radau
     use status, only: status_t, ERR_DECK
     use testing, only: tester_t
     use test_model, only: cylinder
-    use geometry, only: raised_angles, solve_theta5, beta_coeffs
+    use geometry, only: beta_coeffs
+    use start_pose, only: raised_angles, solve_theta5
     use bifilar_model, only: motion_t, chart_state
     use elastic_model, only: elastic_t, elastic_start, elastic_evaluate, elastic_atol, &
                              elastic_from_angles, quat_to_matrix, natural_lengths, &
@@ -20,9 +21,9 @@ module test_elastic_radau
     use elastic_gen, only: elastic_gen_t, gen_to_maximal, maximal_to_gen, chart_quality, &
                            GEN_NSTATE
     use elastic_solver, only: elastic_solver_t, SOLVER_LSODA, SOLVER_RADAU
-    use lsoda, only: lsoda_stats_t
     use deck, only: deck_t, read_deck
     use simulate, only: run_simulation, run_summary_t
+    use ode_system, only: integrator_stats_t
     implicit none
     private
 
@@ -77,7 +78,7 @@ contains
         real(dp), intent(in) :: y0(:), rtol
         integer, intent(in) :: method
         real(dp), intent(out) :: ys(ELASTIC_NSTATE, 0:NOUT)
-        type(lsoda_stats_t), intent(out) :: st
+        type(integrator_stats_t), intent(out) :: st
         type(status_t), intent(out) :: stat
         real(dp), intent(out), optional :: cpu
         real(dp), intent(in), optional :: limits(2)     !! Radau: the chart's limits
@@ -208,7 +209,7 @@ contains
         real(dp), parameter :: kk(4) = [1.0e3_dp, 1.0e4_dp, 1.0e6_dp, 1.0e8_dp]
         real(dp), parameter :: zz(4) = [0.01_dp, 0.5_dp, 0.01_dp, 0.1_dp]
         type(elastic_t) :: el
-        type(lsoda_stats_t) :: st
+        type(integrator_stats_t) :: st
         type(status_t) :: stat
         real(dp) :: y0(ELASTIC_NSTATE), rtol, err(2), agree(2)
         real(dp), allocatable :: yref(:, :), ys(:, :)
@@ -251,7 +252,7 @@ contains
         type(tester_t), intent(inout) :: t
         real(dp), parameter :: rtol = 1.0e-8_dp
         type(elastic_t) :: el
-        type(lsoda_stats_t) :: st
+        type(integrator_stats_t) :: st
         type(status_t) :: stat
         real(dp) :: y0(ELASTIC_NSTATE), err(2), q(0:NOUT), lim(2)
         real(dp), allocatable :: yref(:, :), ys(:, :)
@@ -292,7 +293,7 @@ contains
         type(tester_t), intent(inout) :: t
         real(dp), parameter :: kk(2) = [1.0e6_dp, 1.0e8_dp]
         type(elastic_t) :: el
-        type(lsoda_stats_t) :: st, sl
+        type(integrator_stats_t) :: st, sl
         type(status_t) :: stat, stat2
         real(dp) :: y0(ELASTIC_NSTATE), err(2), errl(2)
         real(dp), allocatable :: yref(:, :), ys(:, :)
@@ -332,7 +333,7 @@ contains
     subroutine test_blowup(t)
         type(tester_t), intent(inout) :: t
         type(elastic_t) :: el
-        type(lsoda_stats_t) :: st
+        type(integrator_stats_t) :: st
         type(status_t) :: stat
         type(deck_t) :: d
         type(run_summary_t) :: sm

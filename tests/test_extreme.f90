@@ -6,7 +6,7 @@ module test_extreme
     use testing, only: tester_t
     use output_io, only: read_kv
     use bifilar_model, only: motion_t
-    use simulate, only: model_checks
+    use kane_run, only: model_checks
     use run_loop, only: check_row_budget, MAX_STEPS_PER_ROW
     use text, only: fixed
     use monte_carlo, only: MC_ANALYSIS

@@ -5,8 +5,8 @@ module test_floquet
     use testing, only: tester_t
     use geometry, only: pendulum_t
     use bifilar_model, only: bifilar_t, chart_accelerations, NSTATE
-    use lsoda, only: lsoda_t, lsoda_stats_t, METHOD_BDF
-    use ode_system, only: ode_system_t
+    use lsoda, only: lsoda_t, METHOD_BDF
+    use ode_system, only: ode_system_t, integrator_stats_t
     use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, torsion_period, &
                        jacobian_z, multipliers_from_monodromy, torsion_start, monodromy, &
                        pencil_multipliers, GL_X, GL_W
@@ -14,7 +14,7 @@ module test_floquet
     use lapack_wrap, only: la_eig, la_lu_factor, la_lu_solve
     use deck, only: deck_t, read_deck
     use test_model, only: torsion_1dof_t
-    use simulate, only: make_pendulum
+    use rig, only: rig_of, make_pendulum
     implicit none
     private
 
@@ -68,7 +68,7 @@ contains
         type(deck_t) :: d
         type(status_t) :: st
         call read_deck(path, d, st)
-        call make_pendulum(d, p, st)
+        call make_pendulum(rig_of(d), p, st)
         p%stab_rate = 0.0_dp
     end function deck_pendulum
 
@@ -600,7 +600,7 @@ contains
         type(tester_t), intent(inout) :: t
         type(blocks_t) :: dense, structured
         type(lsoda_t) :: s1, s2
-        type(lsoda_stats_t) :: st1, st2
+        type(integrator_stats_t) :: st1, st2
         type(status_t) :: e1, e2
         real(dp) :: y1(6), y2(6)
         structured%structured = .true.

@@ -12,7 +12,8 @@ module test_identify
     use deck, only: deck_t, read_deck
     use geometry, only: pendulum_t, pose_of
     use kinematics, only: omega_partials
-    use simulate, only: make_pendulum, run_simulation, run_summary_t
+    use simulate, only: run_simulation, run_summary_t
+    use rig, only: rig_t, start_t, rig_of, start_of, accuracy_of, make_pendulum
     use driver, only: run_deck
     use random, only: rng_t, rng_stream, rng_normal
     use lapack_wrap, only: la_lstsq, la_svd
@@ -131,7 +132,8 @@ contains
         do i = 1, n
             rec%t(i) = (i - 1)/rate_hz
         end do
-        call record_model(dt, rec%t, 0.0_dp, rate, rec%v, st)
+        call record_model(rig_of(dt), start_of(dt), accuracy_of(dt), rec%t, 0.0_dp, rate, rec%v, &
+                          st)
         g = rng_stream(seed, 0)
         do i = 1, n
             rec%v(i) = rec%v(i) + sigma*rng_normal(g)
@@ -224,7 +226,7 @@ contains
         d%dtau_out = 0.005_dp
         d%rtol = 1.0e-12_dp
         d%atol = 1.0e-14_dp
-        call make_pendulum(d, p, st)
+        call make_pendulum(rig_of(d), p, st)
         call run_simulation(d, SCR, sm, st)
         call t%check('energy: damped simulation runs', st%code == 0)
         if (st%code /= 0) return
@@ -294,7 +296,7 @@ contains
         d%c_v = 2.0e-3_dp
         d%tau_end = 80.0_dp
         d%dtau_out = 0.01_dp
-        call make_pendulum(d, p, st)
+        call make_pendulum(rig_of(d), p, st)
         call run_simulation(d, SCR, sm, st)
         call t%check('decay: runs', st%code == 0)
         if (st%code /= 0) return
@@ -344,8 +346,8 @@ contains
         d%rtol = 1.0e-12_dp
         d%atol = 1.0e-14_dp
         do k = 1, 3
-            call torsion_period_s(d, I1_TRUE, amps(k), te, st)
-            call simulated_period_s(d, I1_TRUE, amps(k), ts, s2)
+            call torsion_period_s(rig_of(d), I1_TRUE, amps(k), te, st)
+            call simulated_period_s(rig_of(d), accuracy_of(d), I1_TRUE, amps(k), ts, s2)
             call t%check('simulated period runs', st%code == 0 .and. s2%code == 0)
             call t%check_close('simulated period = exact torsion period (1e-9)', ts, te, &
                                rtol=1.0e-9_dp)
@@ -365,17 +367,17 @@ contains
         real(dp), parameter :: amps(3) = [10.0_dp, 30.0_dp, 60.0_dp]
         d = asym_rig()
         do k = 1, 3
-            call simulated_period_s(d, I1_TRUE, amps(k), per(k), st)
+            call simulated_period_s(rig_of(d), accuracy_of(d), I1_TRUE, amps(k), per(k), st)
         end do
         call t%check('asymmetric: periods simulated', st%code == 0)
         d%inertia(1) = 0.7_dp*I1_TRUE
         u%period = 1.0e-4_dp
-        call invert_periods(d, per, amps, u, f, st)
+        call invert_periods(rig_of(d), accuracy_of(d), per, amps, u, f, st)
         call t%check('asymmetric: inversion converges', st%code == 0)
         call t%check_close('asymmetric: I1 back to 1e-8 from 30% low', f%i1, I1_TRUE, &
                            rtol=1.0e-8_dp)
         d%inertia(1) = 1.3_dp*I1_TRUE
-        call invert_periods(d, per(2:2), amps(2:2), u, f, st)
+        call invert_periods(rig_of(d), accuracy_of(d), per(2:2), amps(2:2), u, f, st)
         call t%check_close('asymmetric: I1 from one period, 30% high', f%i1, I1_TRUE, &
                            rtol=1.0e-8_dp)
     end subroutine test_asym_exact
@@ -399,12 +401,12 @@ contains
         do j = 1, 2
             d%l_prime = d%l - dls(j)
             do k = 1, 3
-                call simulated_period_s(d, I1_TRUE, amps(k), tp(k), st)
+                call simulated_period_s(rig_of(d), accuracy_of(d), I1_TRUE, amps(k), tp(k), st)
             end do
             call t%check('small amplitude: periods simulated', st%code == 0)
             ratio(j) = (tp(1) - tp(2))/(tp(2) - tp(3))
             t0 = tp(3) - (tp(2) - tp(3))/3.0_dp
-            err(j) = linear_inertia(d, t0)/I1_TRUE - 1.0_dp
+            err(j) = linear_inertia(rig_of(d), t0)/I1_TRUE - 1.0_dp
         end do
         call t%check_close('small amplitude: the period converges as amplitude^2', ratio(1), &
                            4.0_dp, rtol=0.01_dp)
@@ -423,7 +425,9 @@ contains
     !! sum of squares of (dI1/dx u_x).
     subroutine test_asym_budget(t)
         type(tester_t), intent(inout) :: t
-        type(deck_t) :: d, dp_, dm
+        type(deck_t) :: d
+        type(rig_t) :: dp_, dm
+        type(start_t) :: sp, sm
         type(status_t) :: st
         type(period_fit_t) :: f, fp, fm
         type(input_u_t) :: u
@@ -432,13 +436,13 @@ contains
         real(dp), parameter :: amps(2) = [15.0_dp, 40.0_dp]
         d = asym_rig()
         do j = 1, 2
-            call simulated_period_s(d, I1_TRUE, amps(j), per(j), st)
+            call simulated_period_s(rig_of(d), accuracy_of(d), I1_TRUE, amps(j), per(j), st)
         end do
         per = per + [3.0e-5_dp, -2.0e-5_dp]     ! measured periods are not exact
         u = input_u_t(mass=0.001_dp, l=0.001_dp, l_prime=0.001_dp, b=0.0005_dp, &
                       b_prime=0.0005_dp, g=0.0_dp, period=1.0e-4_dp, amplitude=0.5_dp)
-        call invert_periods(d, per, amps, u, f, st)
-        call period_budget(d, per, amps, u, f, st)
+        call invert_periods(rig_of(d), accuracy_of(d), per, amps, u, f, st)
+        call period_budget(rig_of(d), accuracy_of(d), per, amps, u, f, st)
         call t%check('budget (asymmetric): computed', st%code == 0)
         if (st%code /= 0) return
         ss = 0.0_dp
@@ -446,8 +450,8 @@ contains
         us = [u%mass, u%l, u%l_prime, u%b, u%b_prime, u%g]
         do j = 1, 6
             call setup(3.0e-4_dp*xs(j))
-            call set_input(dp_, j, xs(j) + h)
-            call set_input(dm, j, xs(j) - h)
+            call set_input(dp_, sp, j, xs(j) + h)
+            call set_input(dm, sm, j, xs(j) - h)
             call add(us(j))
         end do
         do k = 1, 2
@@ -471,8 +475,8 @@ contains
         subroutine setup(hh)
             real(dp), intent(in) :: hh
             h = hh
-            dp_ = d
-            dm = d
+            dp_ = rig_of(d)
+            dm = rig_of(d)
             dp_%inertia(1) = f%i1
             dm%inertia(1) = f%i1
             pp = per
@@ -484,8 +488,8 @@ contains
         subroutine add(ux)
             real(dp), intent(in) :: ux
             if (st%code /= 0) return
-            call invert_periods(dp_, pp, ap, u, fp, st)
-            if (st%code == 0) call invert_periods(dm, pm, am, u, fm, st)
+            call invert_periods(dp_, accuracy_of(d), pp, ap, u, fp, st)
+            if (st%code == 0) call invert_periods(dm, accuracy_of(d), pm, am, u, fm, st)
             if (st%code == 0) ss = ss + ((fp%i1 - fm%i1)/(2.0_dp*h)*ux)**2
         end subroutine add
     end subroutine test_asym_budget
@@ -586,7 +590,7 @@ contains
         real(dp), parameter :: noise(3) = [2.0e-4_dp, -1.5e-4_dp, 0.5e-4_dp]
         d = sym_rig()
         do k = 1, 3
-            call torsion_period_s(d, I1_TRUE, amps(k), per(k), st)
+            call torsion_period_s(rig_of(d), I1_TRUE, amps(k), per(k), st)
         end do
         per = per + noise
         call write_text(SCR//'/scatter.nml', "&scene analyses = 'identify' /"//NL// &
@@ -603,8 +607,8 @@ contains
         call t%check('scatter: u_period_from_scatter written', found .and. s > 0.0_dp)
         g2 = 0.0_dp
         do k = 1, 3
-            call torsion_period_s(d, i1*(1.0_dp + 1.0e-6_dp), amps(k), tp, st)
-            call torsion_period_s(d, i1*(1.0_dp - 1.0e-6_dp), amps(k), tm, st)
+            call torsion_period_s(rig_of(d), i1*(1.0_dp + 1.0e-6_dp), amps(k), tp, st)
+            call torsion_period_s(rig_of(d), i1*(1.0_dp - 1.0e-6_dp), amps(k), tm, st)
             g2 = g2 + ((tp - tm)/(2.0e-6_dp*i1))**2
         end do
         call t%check_close('scatter: u_I1 = s / (sum g^2)^(1/2)', ui1, s/sqrt(g2), rtol=1.0e-3_dp)
@@ -705,7 +709,7 @@ contains
         g = rng_stream(7, 0)
         same = dp_%n_periods == 3
         do k = 1, min(3, dp_%n_periods)
-            call torsion_period_s(dt, dt%inertia(1), dp_%amplitudes(k), tp, st)
+            call torsion_period_s(rig_of(dt), dt%inertia(1), dp_%amplitudes(k), tp, st)
             tp = anint((tp + 1.0e-4_dp*rng_normal(g))*1.0e5_dp)/1.0e5_dp
             same = same .and. abs(tp - dp_%periods(k)) < 1.0e-9_dp
         end do

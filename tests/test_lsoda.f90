@@ -9,8 +9,8 @@
 module test_lsoda
     use kinds, only: dp, pi
     use status, only: status_t, set_error, STATUS_OK
-    use ode_system, only: ode_system_t
-    use lsoda, only: lsoda_t, lsoda_stats_t, METHOD_ADAMS, METHOD_BDF
+    use ode_system, only: ode_system_t, integrator_stats_t
+    use lsoda, only: lsoda_t, METHOD_ADAMS, METHOD_BDF
     use status, only: LSODA_ERR_MAX_STEPS, LSODA_ERR_TOO_MUCH_ACCURACY, LSODA_ERR_ERROR_TEST, &
         LSODA_ERR_CONVERGENCE, LSODA_ERR_ILLEGAL_INPUT, LSODA_ERR_SINGULAR
     use testing, only: tester_t
@@ -504,7 +504,7 @@ contains
         real(dp), intent(in) :: rtol
         real(dp), intent(in) :: atol(:)
         real(dp), intent(out) :: y(:)
-        type(lsoda_stats_t), intent(out) :: st
+        type(integrator_stats_t), intent(out) :: st
         type(status_t), intent(out) :: stat
         type(lsoda_t) :: s
         integer :: k
@@ -544,7 +544,7 @@ contains
         type(linear_t) :: lin
         type(lsoda_t) :: s
         type(status_t) :: st
-        type(lsoda_stats_t) :: sa, sb, sn
+        type(integrator_stats_t) :: sa, sb, sn
         real(dp) :: y0(3), ya(3), yb(3), yn(3)
         real(dp), parameter :: rtol = 1.0e-6_dp, atol = 1.0e-10_dp, tend = 0.01_dp
         y0 = [1.0_dp, 2.0_dp, 3.0_dp]
@@ -553,14 +553,18 @@ contains
         sa = s%stats()
         call t%check('options: automatic run succeeds and ends in BDF', st%code == STATUS_OK &
             .and. sa%method_last == METHOD_BDF)
-        call s%init(lin, 0.0_dp, y0, rtol, [atol], st, start_bdf=.true.)
+        call s%set_options(start_bdf=.true.)
+        call s%init(lin, 0.0_dp, y0, rtol, [atol], st)
+        call s%set_options()
         call s%step(lin, st, tend)
         sb = s%stats()
         call t%check('start_bdf: the first step is BDF', st%code == STATUS_OK .and. &
             sb%method_last == METHOD_BDF .and. sb%steps == 1)
         call s%integrate(lin, tend, yb, st)
         sb = s%stats()
-        call s%init(lin, 0.0_dp, y0, rtol, [atol], st, nonstiff_only=.true.)
+        call s%set_options(nonstiff_only=.true.)
+        call s%init(lin, 0.0_dp, y0, rtol, [atol], st)
+        call s%set_options()
         call s%integrate(lin, tend, yn, st)
         sn = s%stats()
         write (*, '(a,3i8)') '  steps: automatic, start_bdf, nonstiff_only', sa%steps, &
@@ -572,7 +576,9 @@ contains
         call t%check('options: the three runs agree (1e-4 relative)', &
             all(abs(yb - ya) <= 1.0e-4_dp*abs(ya) + 1.0e-8_dp) .and. &
             all(abs(yn - ya) <= 1.0e-4_dp*abs(ya) + 1.0e-8_dp))
-        call s%init(lin, 0.0_dp, y0, rtol, [atol], st, start_bdf=.true., nonstiff_only=.true.)
+        call s%set_options(start_bdf=.true., nonstiff_only=.true.)
+        call s%init(lin, 0.0_dp, y0, rtol, [atol], st)
+        call s%set_options()
         call t%check('options: start_bdf with nonstiff_only is refused', &
             st%code == LSODA_ERR_ILLEGAL_INPUT)
     end subroutine test_method_options
@@ -585,7 +591,7 @@ contains
         type(decay_t) :: dec
         type(lsoda_t) :: s
         type(status_t) :: stat
-        type(lsoda_stats_t) :: st
+        type(integrator_stats_t) :: st
         real(dp) :: y(3), y2(2), y1(1), tt, ex(3), err
         real(dp), parameter :: touts(5) = [1.0e-4_dp, 1.0e-2_dp, 0.5_dp, 3.0_dp, 10.0_dp]
         integer :: k, ij
@@ -676,7 +682,7 @@ contains
     subroutine test_problems(t)
         type(tester_t), intent(inout) :: t
         type(rober_t) :: rob
-        type(lsoda_stats_t) :: st
+        type(integrator_stats_t) :: st
         type(status_t) :: stat
         real(dp) :: y3(3), err
 
@@ -713,7 +719,7 @@ contains
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: name
         real(dp), intent(in) :: rtol, bound
-        type(lsoda_stats_t), intent(out) :: st
+        type(integrator_stats_t), intent(out) :: st
         class(ode_system_t), allocatable :: sys
         real(dp), allocatable :: y0(:), grid(:), atol(:), yref(:), y(:)
         type(status_t) :: stat
@@ -733,7 +739,7 @@ contains
     subroutine test_tolerance(t)
         type(tester_t), intent(inout) :: t
         type(harmonic_t) :: osc
-        type(lsoda_stats_t) :: st
+        type(integrator_stats_t) :: st
         type(status_t) :: stat
         real(dp) :: rtol, y(2), err(8), nfe(8)
         integer :: k
@@ -784,7 +790,7 @@ contains
         type(failing_t) :: fl
         type(lsoda_t) :: s, fresh
         type(status_t) :: stat
-        type(lsoda_stats_t) :: st
+        type(integrator_stats_t) :: st
         real(dp) :: y2(2), y3(3), y1(1)
 
         ! too many steps
@@ -892,7 +898,9 @@ contains
         call s%integrate(dec, 1.0_dp, y3, stat)
         call t%check('illegal: tcrit behind tout', stat%code == LSODA_ERR_ILLEGAL_INPUT .and. &
             has_msg(stat, 'tcrit'))
-        call s%init(dec, 0.0_dp, [1.0_dp], 1.0e-6_dp, [1.0e-8_dp], stat, max_order_bdf=6)
+        call s%set_options(max_order_bdf=6)
+        call s%init(dec, 0.0_dp, [1.0_dp], 1.0e-6_dp, [1.0e-8_dp], stat)
+        call s%set_options()
         call t%check('illegal: max_order_bdf = 6', stat%code == LSODA_ERR_ILLEGAL_INPUT)
         call s%init(dec, 0.0_dp, [0.0_dp], 1.0e-6_dp, [0.0_dp], stat)
         call s%integrate(dec, 1.0_dp, y1, stat)
@@ -901,7 +909,7 @@ contains
 
     integer function count_steps(s)
         type(lsoda_t), intent(in) :: s
-        type(lsoda_stats_t) :: st
+        type(integrator_stats_t) :: st
         st = s%stats()
         count_steps = st%steps
     end function count_steps
@@ -920,7 +928,7 @@ contains
         type(rober_t) :: rb
         type(lsoda_t) :: s1, s2
         type(status_t) :: st1, st2
-        type(lsoda_stats_t) :: a1, a2, b1, b2
+        type(integrator_stats_t) :: a1, a2, b1, b2
         real(dp) :: ya(2), yb(3), ya_sep(2), yb_sep(3), grid(13)
         integer :: k
         logical :: same
@@ -970,7 +978,7 @@ contains
         type(guard_t) :: g
         type(lsoda_t) :: s
         type(status_t) :: stat
-        type(lsoda_stats_t) :: st
+        type(integrator_stats_t) :: st
         real(dp) :: d(2), tt, ta, tb, err0, err1, y1(1)
         integer :: k, j
         logical :: ok

@@ -5,14 +5,16 @@ module test_model
     use status, only: status_t, ERR_DECK
     use testing, only: tester_t
     use ode_system, only: ode_system_t
-    use geometry, only: pendulum_t, raised_angles, solve_theta5, beta_coeffs, constraint_g, &
+    use start_pose, only: raised_angles, solve_theta5
+    use geometry, only: pendulum_t, beta_coeffs, constraint_g, &
                         direction_cosines, point_d, mass_centre
     use kinematics, only: omega_coeffs, omega_dot_quadratic, v_coeffs, vdot_coeffs
     use bifilar_model, only: bifilar_t, motion_t, chart_state, chart_accelerations, &
                              paper_accelerations, evaluate, chart_positions, step_tensions, NSTATE
     use lsoda, only: lsoda_t
     use deck, only: deck_t, read_deck
-    use simulate, only: run_simulation, run_summary_t, make_pendulum, start_state
+    use simulate, only: run_simulation, run_summary_t
+    use rig, only: rig_of, start_of, make_pendulum, start_state
     use paper_claims, only: claim_t, evaluate_claims, write_report, NCLAIMS
     use floquet, only: check_torsion_scene, torsion_period
     implicit none

@@ -9,6 +9,7 @@ module test_period
     use deck, only: deck_t
     use random, only: rng_t, rng_stream, rng_from_word, rng_next, rng_uniform, rng_normal, &
                       splitmix64
+    use rig, only: rig_of, accuracy_of
     use period_inversion, only: input_u_t, period_fit_t, torsion_period_s, invert_periods, &
                                 period_budget, period_monte_carlo, period_mc_sample, &
                                 linear_inertia
@@ -128,20 +129,20 @@ contains
         d = test_rig()
         amps = [10.0_dp, 30.0_dp, 60.0_dp]
         do k = 1, 3
-            call torsion_period_s(d, 0.05_dp, amps(k), periods(k), st)
+            call torsion_period_s(rig_of(d), 0.05_dp, amps(k), periods(k), st)
         end do
         call t%check('exact: periods of the test rig', st%code == 0)
         call t%check('exact: the period grows with the amplitude', &
             periods(1) < periods(2) .and. periods(2) < periods(3))
         d%inertia(1) = 0.065_dp
         u%period = 1.0e-4_dp
-        call invert_periods(d, periods, amps, u, f, st)
+        call invert_periods(rig_of(d), accuracy_of(d), periods, amps, u, f, st)
         call t%check('exact: inversion succeeds', st%code == 0)
         call t%check_close('exact: I1 from three exact periods', f%i1, 0.05_dp, rtol=1.0e-8_dp)
         call t%check('exact: residual below 1e-12 s', f%residual_rms < 1.0e-12_dp)
         call t%check('exact: few Gauss-Newton iterations', f%iterations <= 12)
         d%inertia(1) = 0.035_dp
-        call invert_periods(d, periods(3:3), amps(3:3), u, f, st)
+        call invert_periods(rig_of(d), accuracy_of(d), periods(3:3), amps(3:3), u, f, st)
         call t%check_close('exact: I1 from one period at 60 deg, start 30% low', f%i1, &
             0.05_dp, rtol=1.0e-8_dp)
     end subroutine test_exact
@@ -156,8 +157,8 @@ contains
         integer :: k
         d = test_rig()
         do k = 1, 2
-            call torsion_period_s(d, 0.05_dp, 2.0_dp/k, tp, st)
-            e(k) = linear_inertia(d, tp)/0.05_dp - 1.0_dp
+            call torsion_period_s(rig_of(d), 0.05_dp, 2.0_dp/k, tp, st)
+            e(k) = linear_inertia(rig_of(d), tp)/0.05_dp - 1.0_dp
         end do
         call t%check('linear limit: periods computed', st%code == 0)
         call t%check('linear limit: within 2e-4 at 1 degree', abs(e(2)) < 2.0e-4_dp)
@@ -178,11 +179,11 @@ contains
         real(dp) :: tp(1), a(1), i1, uu
         d = test_rig()
         a = 0.5_dp
-        call torsion_period_s(d, 0.05_dp, a(1), tp(1), st)
+        call torsion_period_s(rig_of(d), 0.05_dp, a(1), tp(1), st)
         u = input_u_t(mass=0.001_dp, l=0.001_dp, l_prime=0.001_dp, b=0.0005_dp, &
                       b_prime=0.0005_dp, g=0.0_dp, period=1.0e-4_dp, amplitude=0.5_dp)
-        call invert_periods(d, tp, a, u, f, st)
-        call period_budget(d, tp, a, u, f, st)
+        call invert_periods(rig_of(d), accuracy_of(d), tp, a, u, f, st)
+        call period_budget(rig_of(d), accuracy_of(d), tp, a, u, f, st)
         call t%check('budget: computed', st%code == 0)
         if (st%code /= 0) return
         i1 = f%i1
@@ -225,20 +226,20 @@ contains
         integer, parameter :: n = 2000
         d = test_rig()
         a = [15.0_dp, 40.0_dp]
-        call torsion_period_s(d, 0.05_dp, a(1), tp(1), st)
-        call torsion_period_s(d, 0.05_dp, a(2), tp(2), st)
+        call torsion_period_s(rig_of(d), 0.05_dp, a(1), tp(1), st)
+        call torsion_period_s(rig_of(d), 0.05_dp, a(2), tp(2), st)
         u = input_u_t(mass=0.001_dp, l=0.001_dp, l_prime=0.001_dp, b=0.0005_dp, &
                       b_prime=0.0005_dp, g=0.0_dp, period=1.0e-4_dp, amplitude=0.5_dp)
-        call invert_periods(d, tp, a, u, f, st)
-        call period_budget(d, tp, a, u, f, st)
+        call invert_periods(rig_of(d), accuracy_of(d), tp, a, u, f, st)
+        call period_budget(rig_of(d), accuracy_of(d), tp, a, u, f, st)
         call period_monte_carlo(d, tp, a, u, f%i1, n, 2026, mean, sdev, st)
         call t%check('monte carlo: runs', st%code == 0)
         call t%check_close('monte carlo: u agrees with first order', sdev, f%u_i1, &
             rtol=3.0_dp*sqrt(2.0_dp/n))
         call t%check_close('monte carlo: mean agrees with the estimate', mean, f%i1, &
             atol=4.0_dp*f%u_i1/sqrt(real(n, dp)))
-        call period_mc_sample(d, tp, a, u, f%i1, 2026, 17, s1, st)
-        call period_mc_sample(d, tp, a, u, f%i1, 2026, 17, s2, st)
+        call period_mc_sample(rig_of(d), accuracy_of(d), tp, a, u, f%i1, 2026, 17, s1, st)
+        call period_mc_sample(rig_of(d), accuracy_of(d), tp, a, u, f%i1, 2026, 17, s2, st)
         call t%check('monte carlo: a sample depends only on (seed, k)', s1 == s2)
     end subroutine test_mc
 
@@ -252,7 +253,7 @@ contains
         type(status_t) :: st
         type(input_u_t) :: u
         d = test_rig()
-        call invert_periods(d, [0.05_dp], [20.0_dp], u, f, st)
+        call invert_periods(rig_of(d), accuracy_of(d), [0.05_dp], [20.0_dp], u, f, st)
         call t%check('refusal: a period shorter than T(I1 -> 0) is ERR_DECK', st%code == ERR_DECK)
         if (st%code /= 0) call t%check('refusal: message names periods(1) and says why', &
             index(st%msg, 'periods(1)') > 0 .and. index(st%msg, 'no positive I1') > 0)
@@ -261,7 +262,7 @@ contains
         d = test_rig()
         d%btilde = reshape([0.0_dp, 0.0_dp, 1.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, &
                             0.0_dp], [3, 3])
-        call invert_periods(d, [1.5_dp], [20.0_dp], u, f, st)
+        call invert_periods(rig_of(d), accuracy_of(d), [1.5_dp], [20.0_dp], u, f, st)
         call t%check('refusal: b1 not vertical at rest is ERR_DECK', st%code == ERR_DECK)
         if (st%code /= 0) call t%check('refusal: message says b1 is not vertical', &
             index(st%msg, 'b1 is not vertical') > 0)

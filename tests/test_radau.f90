@@ -5,8 +5,8 @@
 module test_radau
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK
-    use ode_system, only: ode_system_t
-    use radau, only: radau_t, radau_stats_t, radau_coeffs_t, radau_coefficients
+    use ode_system, only: ode_system_t, integrator_stats_t
+    use radau, only: radau_t, radau_coeffs_t, radau_coefficients
     use status, only: RADAU_ERR_ILLEGAL_INPUT, RADAU_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_MAX_STEPS
     use test_lsoda, only: bench_problem, scaled_error, NBENCH, BENCH_NAMES
     use testing, only: tester_t
@@ -134,7 +134,7 @@ contains
         class(ode_system_t), intent(inout) :: sys
         real(dp), intent(in) :: y0(:), grid(:), rtol, atol(:)
         real(dp), intent(out) :: y(:)
-        type(radau_stats_t), intent(out) :: st
+        type(integrator_stats_t), intent(out) :: st
         type(status_t), intent(out) :: stat
         type(radau_t) :: s
         integer :: k
@@ -202,7 +202,7 @@ contains
         type(tester_t), intent(inout) :: t
         type(cubic_t) :: sys
         type(radau_t) :: s
-        type(radau_stats_t) :: st
+        type(integrator_stats_t) :: st
         type(status_t) :: stat
         real(dp) :: y(1), dy(1), err, derr, tt, t0
         integer :: k, j
@@ -240,7 +240,7 @@ contains
         type(tester_t), intent(inout) :: t
         class(ode_system_t), allocatable :: sys
         real(dp), allocatable :: y0(:), grid(:), atol(:), yref(:), y(:)
-        type(radau_stats_t) :: st
+        type(integrator_stats_t) :: st
         type(status_t) :: stat
         real(dp) :: rtol, err(3), abserr(3)
         integer :: ip, ir, steps(3)
@@ -324,7 +324,7 @@ contains
         type(tester_t), intent(inout) :: t
         type(stiff_osc_t) :: sys
         type(radau_t) :: s
-        type(radau_stats_t) :: st
+        type(integrator_stats_t) :: st
         type(status_t) :: stat
         real(dp), parameter :: a = 0.3_dp, b = -0.2_dp, tend = 10.0_dp
         real(dp) :: y(4), ye(4), y0(4), rtol, errs, errx, dx0(2), hmean
@@ -367,7 +367,7 @@ contains
         type(guard_t) :: g
         type(cubic_t) :: c
         type(status_t) :: stat
-        type(radau_stats_t) :: st
+        type(integrator_stats_t) :: st
         real(dp) :: y(1), y2(2)
         call s%init(fsys, 0.0_dp, [1.0_dp], 0.0_dp, [1.0e-8_dp], stat)
         call t%check('rtol = 0 refused', stat%code == RADAU_ERR_ILLEGAL_INPUT)

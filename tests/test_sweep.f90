@@ -15,6 +15,7 @@ module test_sweep
     use test_extreme, only: file_has
     use test_robust, only: run, lines, line_starts, fresh, abs_exe
     use deck, only: deck_t, read_deck
+    use rig, only: rig_of, accuracy_of
     use period_inversion, only: input_u_t, period_fit_t, invert_periods, period_mc_sample
     use identify, only: make_record
     !$ use omp_lib, only: omp_get_max_threads, omp_set_num_threads
@@ -567,10 +568,10 @@ contains
         call write_text(d//'/bad.nml', BADMC)
         call read_deck(d//'/bad.nml', dk, st)
         u = input_u_t(period=dk%u_period)
-        call invert_periods(dk, dk%periods(1:1), dk%amplitudes(1:1), u, f, st)
+        call invert_periods(rig_of(dk), accuracy_of(dk), dk%periods(1:1), dk%amplitudes(1:1), u, f, st)
         kfail = 0
         do k = 1, dk%monte_carlo
-            call period_mc_sample(dk, dk%periods(1:1), dk%amplitudes(1:1), u, f%i1, dk%seed, &
+            call period_mc_sample(rig_of(dk), accuracy_of(dk), dk%periods(1:1), dk%amplitudes(1:1), u, f%i1, dk%seed, &
                                   k, i1, st)
             if (st%code /= STATUS_OK) then
                 kfail = k

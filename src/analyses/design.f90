@@ -49,9 +49,9 @@ module design
     use text, only: itoa, sci, fixed
     use deck, only: deck_t, deck_echo
     use geometry, only: pendulum_t
-    use simulate, only: make_pendulum
-    use floquet, only: check_torsion_scene, STABILITY_MARGIN
-    use stability, only: floquet_point, CHART_INVALID, CHART_FAILED
+    use rig, only: rig_t, rig_of, accuracy_t, accuracy_of, make_pendulum
+    use floquet, only: check_torsion_scene, STABILITY_MARGIN, floquet_point, CHART_INVALID, &
+                       CHART_FAILED
     use sweep_engine, only: sweep_task_t, sweep_run, sweep_options_t, sweep_report_t, &
         checkpoint_path
     use period_inversion, only: input_u_t, period_fit_t, torsion_period_s, invert_periods, &
@@ -61,7 +61,7 @@ module design
     private
 
     public :: run_design, design_ready, design_grid, design_sweep, candidate_modulus
-    public :: candidate_precision, candidate_deck, design_task
+    public :: candidate_precision, candidate_rig, design_task, design_rig_of
 
     !> The design's three sweeps (their analysis names: checkpoints NAME.STAGE.partial).
     character(len=*), parameter, public :: DESIGN_STAGES(3) = [character(len=16) :: &
@@ -111,10 +111,19 @@ module design
         real(dp) :: wall_seconds = 0.0_dp       !! the three sweeps
     end type design_result_t
 
+    !> What a candidate is made from: the deck's rig (its body, I1 = inertia(1)), the
+    !! accuracy of its runs, and the Floquet analysis's rtol and segments.
+    type, public :: design_rig_t
+        type(rig_t) :: rg
+        type(accuracy_t) :: acc
+        real(dp) :: fq_rtol = 1.0e-10_dp
+        integer :: fq_segments = 1
+    end type design_rig_t
+
     !> Sweep 1: Floquet point k = (amplitude j, l i, b m), amplitude fastest; value: the
     !! largest multiplier (or a sentinel).
     type, extends(sweep_task_t) :: floquet_work_t
-        type(deck_t) :: d
+        type(design_rig_t) :: dr
         real(dp), allocatable :: ls(:), bs(:), amps(:)
     contains
         procedure :: compute => floquet_work_point
@@ -124,7 +133,7 @@ module design
     !! stability left_stable(e) at the left end; values: the edge and the Floquet points
     !! the bisection took.
     type, extends(sweep_task_t) :: edge_work_t
-        type(deck_t) :: d
+        type(design_rig_t) :: dr
         real(dp), allocatable :: ls(:), bs(:), amps(:)
         integer, allocatable :: il(:), ib(:), ia(:)
         logical, allocatable :: left_stable(:)
@@ -135,7 +144,7 @@ module design
     !> Sweep 3: candidate c = (l i, b m), l fastest; values: period (s), u(I1)/I1, linear
     !! error (-1 each when the period cannot be computed).
     type, extends(sweep_task_t) :: precision_work_t
-        type(deck_t) :: d
+        type(design_rig_t) :: dr
         real(dp), allocatable :: ls(:), bs(:)
         real(dp) :: amp = 0.0_dp                !! amplitude_max/2 (deg)
         type(input_u_t) :: u
@@ -145,16 +154,26 @@ module design
 
 contains
 
-    !> The deck's rig with the candidate's cables l = l' and support spacing b (deck units).
-    pure function candidate_deck(d, l, b) result(dd)
+    !> What the candidates of deck d are made from.
+    pure function design_rig_of(d) result(dr)
         type(deck_t), intent(in) :: d           !! the deck
+        type(design_rig_t) :: dr
+        dr%rg = rig_of(d)
+        dr%acc = accuracy_of(d)
+        dr%fq_rtol = d%floquet_rtol
+        dr%fq_segments = d%floquet_segments
+    end function design_rig_of
+
+    !> The rig with the candidate's cables l = l' and support spacing b (deck units).
+    pure function candidate_rig(rg, l, b) result(rr)
+        type(rig_t), intent(in) :: rg           !! the deck's rig
         real(dp), intent(in) :: l, b            !! candidate (deck units)
-        type(deck_t) :: dd
-        dd = d
-        dd%l = l
-        dd%l_prime = l
-        dd%b = b
-    end function candidate_deck
+        type(rig_t) :: rr
+        rr = rg
+        rr%l = l
+        rr%l_prime = l
+        rr%b = b
+    end function candidate_rig
 
     !> The candidate grid of &design: l from l_min to l_max (nl values), b (nb values; the
     !! deck's b when b_min = b_max = 0), amplitudes j amplitude_max / n_amplitudes.
@@ -195,9 +214,11 @@ contains
         real(dp) :: t, tmin, lmin, bmin
         integer :: ivert, i, m
         type(status_t) :: st
+        type(rig_t) :: rg
         call design_grid(d, ls, bs, amps)
+        rg = rig_of(d)
         ! (whether the cables reach is each candidate's own matter: -1 in the table)
-        call make_pendulum(candidate_deck(d, ls(size(ls)), bs(size(bs))), p, st)
+        call make_pendulum(candidate_rig(rg, ls(size(ls)), bs(size(bs))), p, st)
         call check_torsion_scene(p, ivert, stat)
         if (stat%code == STATUS_OK .and. ivert /= 1) call set_error(stat, ERR_DECK, &
             '&body btilde: b1 is not vertical at rest (row 1 must be (+-1, 0, 0)): the '// &
@@ -212,7 +233,7 @@ contains
         bmin = 0.0_dp
         do m = 1, size(bs)
             do i = 1, size(ls)
-                call torsion_period_s(candidate_deck(d, ls(i), bs(m)), d%inertia(1), &
+                call torsion_period_s(candidate_rig(rg, ls(i), bs(m)), rg%inertia(1), &
                                       0.5_dp*d%design_amplitude_max, t, st)
                 if (st%code /= STATUS_OK) cycle
                 if (t < tmin) then
@@ -230,8 +251,8 @@ contains
 
     !> The largest Floquet multiplier of pure torsion of candidate (l, b) at amp_deg, with
     !! the deck's &floquet rtol and segments (CHART_INVALID, CHART_FAILED as in a chart).
-    subroutine candidate_modulus(d, l, b, amp_deg, modulus)
-        type(deck_t), intent(in) :: d           !! the deck
+    subroutine candidate_modulus(dr, l, b, amp_deg, modulus)
+        type(design_rig_t), intent(in) :: dr    !! the deck's rig and Floquet settings
         real(dp), intent(in) :: l, b            !! candidate (deck units)
         real(dp), intent(in) :: amp_deg         !! torsion amplitude (degrees)
         real(dp), intent(out) :: modulus        !! largest |multiplier| or sentinel
@@ -239,9 +260,10 @@ contains
         type(status_t) :: st
         real(dp) :: period
         modulus = CHART_INVALID
-        call make_pendulum(candidate_deck(d, l, b), p, st)
+        call make_pendulum(candidate_rig(dr%rg, l, b), p, st)
         if (st%code /= STATUS_OK) return
-        call floquet_point(p, amp_deg, d%floquet_rtol, d%floquet_segments, modulus, period)
+        call floquet_point(p, amp_deg, dr%fq_rtol, dr%fq_segments, modulus, period, &
+                           dr%acc%method)
     end subroutine candidate_modulus
 
     !> Stable by the design's criterion: a real modulus (no sentinel) <= 1 + tolerance.
@@ -263,7 +285,7 @@ contains
         j = mod(i - 1, na) + 1
         ic = mod((i - 1)/na, nl) + 1
         m = (i - 1)/(na*nl) + 1
-        call candidate_modulus(self%d, self%ls(ic), self%bs(m), self%amps(j), values(1))
+        call candidate_modulus(self%dr, self%ls(ic), self%bs(m), self%amps(j), values(1))
     end subroutine floquet_work_point
 
     !> Sweep 2's edge e: bisection in l until the bracket is at most EDGE_RTOL l; the edge is
@@ -282,7 +304,7 @@ contains
         do while (hi - lo > EDGE_RTOL*hi)
             mid = 0.5_dp*(lo + hi)
             if (.not. (mid > lo .and. mid < hi)) exit
-            call candidate_modulus(self%d, mid, self%bs(self%ib(i)), self%amps(self%ia(i)), &
+            call candidate_modulus(self%dr, mid, self%bs(self%ib(i)), self%amps(self%ia(i)), &
                                    modulus)
             n = n + 1
             if (is_stable(modulus) .eqv. self%left_stable(i)) then
@@ -306,7 +328,7 @@ contains
         stat%code = STATUS_OK
         ic = mod(i - 1, size(self%ls)) + 1
         m = (i - 1)/size(self%ls) + 1
-        call candidate_precision(self%d, self%ls(ic), self%bs(m), self%amp, self%u, values(1), &
+        call candidate_precision(self%dr, self%ls(ic), self%bs(m), self%amp, self%u, values(1), &
                                  values(2), values(3), st)
         if (st%code /= STATUS_OK) values(1:3) = CHART_INVALID
     end subroutine precision_work_point
@@ -314,8 +336,8 @@ contains
     !> The precision of candidate (l, b) measured by one period at amp_deg: its exact period
     !! (s), I1 inverted back from it (invert_periods) and the first-order budget of that
     !! inversion (period_budget): u(I1)/I1; and the linear formula's relative error there.
-    subroutine candidate_precision(d, l, b, amp_deg, u, period_s, u_rel, linear_error, stat)
-        type(deck_t), intent(in) :: d           !! the deck (the body, I1 = inertia(1))
+    subroutine candidate_precision(dr, l, b, amp_deg, u, period_s, u_rel, linear_error, stat)
+        type(design_rig_t), intent(in) :: dr    !! the deck's rig (the body, I1 = inertia(1))
         real(dp), intent(in) :: l, b            !! candidate (deck units)
         real(dp), intent(in) :: amp_deg         !! amplitude of the measurement (degrees)
         type(input_u_t), intent(in) :: u        !! standard uncertainties
@@ -323,16 +345,17 @@ contains
         real(dp), intent(out) :: u_rel          !! predicted u(I1)/I1
         real(dp), intent(out) :: linear_error   !! m g b b' T^2/(16 pi^2 l) / I1 - 1
         type(status_t), intent(out) :: stat     !! ERR_DECK (cables cannot reach), ERR_NUMERIC
-        type(deck_t) :: dd
+        type(rig_t) :: dd
         type(period_fit_t) :: fit
         period_s = CHART_INVALID
         u_rel = CHART_INVALID
         linear_error = CHART_INVALID
-        dd = candidate_deck(d, l, b)
+        dd = candidate_rig(dr%rg, l, b)
         call torsion_period_s(dd, dd%inertia(1), amp_deg, period_s, stat)
         if (stat%code /= STATUS_OK) return
-        call invert_periods(dd, [period_s], [amp_deg], u, fit, stat)
-        if (stat%code == STATUS_OK) call period_budget(dd, [period_s], [amp_deg], u, fit, stat)
+        call invert_periods(dd, dr%acc, [period_s], [amp_deg], u, fit, stat)
+        if (stat%code == STATUS_OK) call period_budget(dd, dr%acc, [period_s], [amp_deg], u, &
+                                                       fit, stat)
         if (stat%code /= STATUS_OK) return
         if (.not. (fit%i1 > 0.0_dp .and. fit%u_i1 >= 0.0_dp .and. fit%u_i1 < huge(1.0_dp))) then
             call set_error(stat, ERR_NUMERIC, 'design: the uncertainty budget is not finite')
@@ -512,10 +535,10 @@ contains
         integer :: ne
         select type (task)
         type is (floquet_work_t)
-            task%d = d
+            task%dr = design_rig_of(d)
             call design_grid(d, task%ls, task%bs, task%amps)
         type is (edge_work_t)
-            task%d = d
+            task%dr = design_rig_of(d)
             call design_grid(d, task%ls, task%bs, task%amps)
             ne = size(payload)/4
             task%il = nint(payload(1:ne))
@@ -523,7 +546,7 @@ contains
             task%ia = nint(payload(2*ne + 1:3*ne))
             task%left_stable = payload(3*ne + 1:4*ne) > 0.5_dp
         type is (precision_work_t)
-            task%d = d
+            task%dr = design_rig_of(d)
             call design_grid(d, task%ls, task%bs, amps)
             task%amp = 0.5_dp*d%design_amplitude_max
             task%u = design_uncertainties(d)

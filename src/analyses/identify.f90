@@ -62,14 +62,16 @@ module identify
     use fast_format, only: es_field
     use geometry, only: pendulum_t
     use bifilar_model, only: NSTATE, motion_t, motion_parts_t, evaluate
-    use simulate, only: make_pendulum, start_state, kane_run_start, kane_run_t, integrator_of
+    use rig, only: rig_t, start_t, accuracy_t, rig_of, start_of, accuracy_of, make_pendulum, &
+        start_state, move_b_prime
+    use kane_run, only: kane_run_start, kane_run_t
     use run_loop, only: stepped_model_t, row_sink_t, drive
     use least_squares, only: lsq_problem_t, lsq_options_t, lsq_result_t, lm_fit, lsq_jacobian
     use lapack_wrap, only: la_lstsq, la_svd
     use random, only: rng_t, rng_stream, rng_normal
     use period_inversion, only: input_u_t, period_fit_t, budget_row_t, invert_periods, &
                                 period_budget, period_monte_carlo, linear_inertia, &
-                                move_b_prime, is_torsion_rig, rig_period_s, period_mc_task, &
+                                is_torsion_rig, rig_period_s, period_mc_task, &
                                 period_mc_task_t
     use sweep_engine, only: sweep_task_t, sweep_options_t, sweep_report_t, file_crc, &
         crc_parts, crc_join
@@ -117,7 +119,10 @@ module identify
     !> The record fit as a least-squares problem: residuals ((model - measured)/u_i) over the
     !! first nuse samples.
     type, extends(lsq_problem_t) :: record_fit_t
-        type(deck_t) :: d                       !! the rig, every held value (inputs)
+        type(rig_t) :: rg                       !! the rig, every held value (inputs)
+        type(start_t) :: st                     !! the start (its amplitude may be fitted)
+        type(accuracy_t) :: acc                 !! the model runs' accuracy
+        integer :: seed = 1                     !! the Monte Carlo's seed
         type(record_t) :: rec                   !! the record (values perturbed by Monte Carlo)
         integer :: np = 0                       !! parameters estimated
         integer :: which(5) = 0                 !! P_* of each estimated parameter
@@ -196,7 +201,7 @@ contains
                 'periods = 1.52, 1.55, amplitudes = 10, 30 or record = ''swing.dat''')
             return
         end if
-        call make_pendulum(d, p, stat)
+        call make_pendulum(rig_of(d), p, stat)
         if (stat%code /= 0) return
         if (.not. estimated(d, 'I1')) then
             call set_error(stat, ERR_DECK, '&measurement estimate = '''//trim(d%estimate)// &
@@ -211,9 +216,10 @@ contains
                     '''I1'' (c_v, c_q, amplitude, t0 need a record)')
                 return
             end if
-            if (is_torsion_rig(d)) then
+            if (is_torsion_rig(rig_of(d))) then
                 ! a period no positive I1 gives: refused now (cheap on a symmetric rig)
-                call invert_periods(d, d%periods(1:d%n_periods), d%amplitudes(1:d%n_periods), &
+                call invert_periods(rig_of(d), accuracy_of(d), d%periods(1:d%n_periods), &
+                                    d%amplitudes(1:d%n_periods), &
                                     input_u(d), f, stat)
                 if (stat%code == ERR_DECK) return
                 stat%code = 0
@@ -254,7 +260,7 @@ contains
                 'allowed: more samples than parameters')
             return
         end if
-        call start_state(d, p, y0, th0, stat)
+        call start_state(start_of(d), p, y0, th0, stat)
     end subroutine identify_ready
 
     ! ------------------------------------------------------------------ the record
@@ -484,12 +490,14 @@ contains
 
     ! ------------------------------------------------------------------ the model
 
-    !> The model at the record's first n sample times, for the rig d with release at t0
-    !! (s): theta4 (rad) or W = omega . n3 (rad/s) when rate.  A sample before t0 sees the
-    !! start.  The model runs through the run loop from &start (the deck's rtol, atol and
+    !> The model at the record's first n sample times, for the rig rg started by st with
+    !! release at t0 (s): theta4 (rad) or W = omega . n3 (rad/s) when rate.  A sample before
+    !! t0 sees the start.  The model runs through the run loop (accuracy acc: rtol, atol,
     !! integrator), in memory.
-    subroutine record_model(d, t, t0, rate, vals, stat)
-        type(deck_t), intent(in) :: d           !! the rig (I1, damping, start as fitted)
+    subroutine record_model(rg, st, acc, t, t0, rate, vals, stat)
+        type(rig_t), intent(in) :: rg           !! the rig (I1, damping as fitted)
+        type(start_t), intent(in) :: st         !! the start (amplitude as fitted)
+        type(accuracy_t), intent(in) :: acc     !! rtol, atol, integrator
         real(dp), intent(in) :: t(:)            !! sample times (s), increasing
         real(dp), intent(in) :: t0              !! release (s)
         logical, intent(in) :: rate             !! W instead of theta4
@@ -503,11 +511,11 @@ contains
         integer :: n, i0, i
         n = size(vals)
         vals = 0.0_dp
-        call make_pendulum(d, p, stat)
+        call make_pendulum(rg, p, stat)
         if (stat%code /= 0) return
-        call start_state(d, p, y0, th0, stat)
+        call start_state(st, p, y0, th0, stat)
         if (stat%code /= 0) return
-        s = sqrt(d%g/d%b_prime)                 ! tau per second
+        s = sqrt(rg%g/rg%b_prime)               ! tau per second
         sink%rate = rate
         sink%p = p
         call sample_value(sink, y0, th0(3), v0, stat)
@@ -528,7 +536,7 @@ contains
             vals(i0:n) = v0*merge(s, 1.0_dp, rate)
             return
         end if
-        call kane_run_start(m, p, y0, th0(3), d%rtol, d%atol, integrator_of(d), &
+        call kane_run_start(m, p, y0, th0(3), acc%rtol, acc%atol, acc%method, &
                             taus(n - i0), 'raise &integration rtol/atol', stat)
         if (stat%code /= 0) return
         call drive(m, taus, sink, stat)
@@ -572,25 +580,28 @@ contains
         if (stat%code /= 0) stat%msg = stat%msg//' at tau = '//sci(t)
     end subroutine record_take
 
-    !> The deck with the parameters p of the fit set (I1, c_v, c_q, amplitude), and t0.
-    subroutine apply_parameters(prob, p, d, t0)
+    !> The rig and start with the parameters p of the fit set (I1, c_v, c_q, amplitude), and
+    !! t0.
+    subroutine apply_parameters(prob, p, rg, st, t0)
         type(record_fit_t), intent(in) :: prob
         real(dp), intent(in) :: p(:)
-        type(deck_t), intent(out) :: d
+        type(rig_t), intent(out) :: rg
+        type(start_t), intent(out) :: st
         real(dp), intent(out) :: t0
         integer :: j
-        d = prob%d
+        rg = prob%rg
+        st = prob%st
         t0 = prob%t0
         do j = 1, prob%np
             select case (prob%which(j))
             case (P_I1)
-                d%inertia(1) = p(j)
+                rg%inertia(1) = p(j)
             case (P_CV)
-                d%c_v = p(j)
+                rg%c_v = p(j)
             case (P_CQ)
-                d%c_q = p(j)
+                rg%c_q = p(j)
             case (P_AMP)
-                d%amplitude = p(j)
+                st%amplitude = p(j)
             case default
                 t0 = p(j)
             end select
@@ -605,18 +616,19 @@ contains
         real(dp), intent(in) :: p(:)
         real(dp), intent(out) :: r(:)
         type(status_t), intent(out) :: stat
-        type(deck_t) :: d
+        type(rig_t) :: rg
+        type(start_t) :: st
         real(dp) :: t0
         real(dp), allocatable :: vals(:)
-        call apply_parameters(prob, p, d, t0)
+        call apply_parameters(prob, p, rg, st, t0)
         r = 0.0_dp
-        if (.not. (d%inertia(1) > 0.0_dp) .or. .not. (d%amplitude > 0.0_dp .and. &
-            d%amplitude < 180.0_dp)) then
+        if (.not. (rg%inertia(1) > 0.0_dp) .or. .not. (st%amplitude > 0.0_dp .and. &
+            st%amplitude < 180.0_dp)) then
             call set_error(stat, ERR_NUMERIC, 'parameters out of the model''s range')
             return
         end if
         allocate (vals(prob%nuse))
-        call record_model(d, prob%rec%t(1:prob%nuse), t0, prob%rate, vals, stat)
+        call record_model(rg, st, prob%acc, prob%rec%t(1:prob%nuse), t0, prob%rate, vals, stat)
         if (stat%code /= 0) return
         r = (vals - prob%rec%v(1:prob%nuse))*prob%w(1:prob%nuse)
         if (.not. all_finite(r)) call set_error(stat, ERR_NUMERIC, 'non-finite model values')
@@ -633,7 +645,10 @@ contains
         real(dp), allocatable, intent(out) :: p0(:), h(:)
         real(dp) :: tp
         integer :: j, k
-        prob%d = d
+        prob%rg = rig_of(d)
+        prob%st = start_of(d)
+        prob%acc = accuracy_of(d)
+        prob%seed = d%seed
         prob%rec = rec
         prob%rate = trim(d%quantity) == 'rate'
         prob%t0 = 0.0_dp
@@ -775,20 +790,24 @@ contains
         type(input_u_t) :: u
         real(dp) :: mean, sdev
         integer :: n, imin
+        type(rig_t) :: rg
+        type(accuracy_t) :: acc
         n = d%n_periods
         u = input_u(d)
+        rg = rig_of(d)
+        acc = accuracy_of(d)
         associate (per => d%periods(1:n), amps => d%amplitudes(1:n))
-            call invert_periods(d, per, amps, u, f, stat)
+            call invert_periods(rg, acc, per, amps, u, f, stat)
             if (stat%code /= 0) return
             if (u%period == 0.0_dp .and. n >= 2) then
                 ! no stated timing uncertainty: the periods' scatter about the model is it
                 ! (s^2 = sum of squares over n - 1), and the inversion is weighted with it
                 res%u_period_scatter = sqrt(sum((f%model_periods - per)**2)/(n - 1))
                 u%period = res%u_period_scatter
-                if (u%period > 0.0_dp) call invert_periods(d, per, amps, u, f, stat)
+                if (u%period > 0.0_dp) call invert_periods(rg, acc, per, amps, u, f, stat)
                 if (stat%code /= 0) return
             end if
-            call period_budget(d, per, amps, u, f, stat)
+            call period_budget(rg, acc, per, amps, u, f, stat)
             if (stat%code /= 0) return
             if (d%monte_carlo > 0) then
                 call period_monte_carlo(d, per, amps, u, f%i1, d%monte_carlo, &
@@ -802,7 +821,7 @@ contains
             res%period_linear = per(imin)
         end associate
         res%from_record = .false.
-        res%periods_exact = is_torsion_rig(d)
+        res%periods_exact = is_torsion_rig(rg)
         res%i1 = f%i1
         res%u_i1 = f%u_i1
         res%residual_rms = f%residual_rms
@@ -814,7 +833,7 @@ contains
         res%u_p(1) = f%u_i1
         res%model_periods = f%model_periods
         res%budget = f%budget
-        res%i1_linear = linear_inertia(d, res%period_linear)
+        res%i1_linear = linear_inertia(rg, res%period_linear)
         res%linear_error = res%i1_linear/res%i1 - 1.0_dp
     end subroutine identify_periods
 
@@ -908,7 +927,7 @@ contains
         end if
         res%period_linear = mean_period(rec)
         if (res%period_linear > 0.0_dp) then
-            res%i1_linear = linear_inertia(d, res%period_linear)
+            res%i1_linear = linear_inertia(rig_of(d), res%period_linear)
             res%linear_error = res%i1_linear/res%i1 - 1.0_dp
         end if
     end subroutine identify_record
@@ -984,8 +1003,8 @@ contains
         hx = H_REL*abs(x)
         pp = prob
         pm = prob
-        call set_input(pp%d, j, x + hx)
-        call set_input(pm%d, j, x - hx)
+        call set_input(pp%rg, pp%st, j, x + hx)
+        call set_input(pm%rg, pm%st, j, x - hx)
         call pp%residual(p, rp, stat)
         if (stat%code /= 0) return
         call pm%residual(p, rm, stat)
@@ -996,25 +1015,26 @@ contains
 
     !> Set input j of an uncertainty budget (1 mass, 2 l, 3 l_prime, 4 b, 5 b_prime (both
     !! body attachment points move, move_b_prime), 6 g, 7 the start amplitude) to v.
-    subroutine set_input(d, j, v)
-        type(deck_t), intent(inout) :: d
+    subroutine set_input(rg, st, j, v)
+        type(rig_t), intent(inout) :: rg
+        type(start_t), intent(inout) :: st
         integer, intent(in) :: j
         real(dp), intent(in) :: v
         select case (j)
         case (1)
-            d%mass = v
+            rg%mass = v
         case (2)
-            d%l = v
+            rg%l = v
         case (3)
-            d%l_prime = v
+            rg%l_prime = v
         case (4)
-            d%b = v
+            rg%b = v
         case (5)
-            call move_b_prime(d, v)
+            call move_b_prime(rg, v)
         case (6)
-            d%g = v
+            rg%g = v
         case default
-            d%amplitude = v
+            st%amplitude = v
         end select
     end subroutine set_input
 
@@ -1140,10 +1160,10 @@ contains
         integer :: j, it
         logical :: done
         est = 0.0_dp
-        g = rng_stream(self%prob%d%seed, k)
+        g = rng_stream(self%prob%seed, k)
         q = self%prob
         do j = 1, size(self%xval)
-            call set_input(q%d, j, self%xval(j) + self%ux(j)*rng_normal(g))
+            call set_input(q%rg, q%st, j, self%xval(j) + self%ux(j)*rng_normal(g))
         end do
         do j = 1, size(q%rec%v)
             if (self%prob%rec%has_u) then
@@ -1313,7 +1333,8 @@ contains
         do i = 0, n
             t(i) = i/rate_hz
         end do
-        call record_model(d, t, 0.0_dp, quantity == 'rate', v, stat)
+        call record_model(rig_of(d), start_of(d), accuracy_of(d), t, 0.0_dp, quantity == 'rate', &
+                          v, stat)
         if (stat%code /= 0) return
         g = rng_stream(seed, 0)
         do i = 0, n

@@ -8,7 +8,8 @@ module paper_claims
     use status, only: status_t, set_error, ERR_IO
     use output_io, only: atomic_open, atomic_commit, read_kv
     use text, only: itoa, sci
-    use geometry, only: pendulum_t, raised_angles
+    use geometry, only: pendulum_t
+    use start_pose, only: raised_angles
     use bifilar_model, only: chart_state
     use floquet, only: jacobian_z
     use lapack_wrap, only: la_eig

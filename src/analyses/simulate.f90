@@ -4,20 +4,22 @@
 !! Writes `OUTDIR/NAME.dat` (header, then one row per output time) and `OUTDIR/NAME.summary`
 !! (`key = value` lines), each through a temporary file renamed when complete, so a failed
 !! run leaves no partial file behind.  Both models run through the run loop (module
-!! run_loop): kane_run_t and elastic_run_t step them and check them at every step's end,
-!! kane_dat_sink_t and elastic_dat_sink_t write the rows; kane_run_start starts the paper's
-!! model for any other sink (identify's records, the simulated periods).
+!! run_loop): kane_run_t (module kane_run) and elastic_run_t (module elastic_solver) step
+!! them and check them at every step's end; kane_dat_sink_t and elastic_dat_sink_t here
+!! write the rows.
 module simulate
     use kinds, only: dp, deg
     use status, only: status_t, set_error, ERR_DECK, ERR_MODEL, ERR_NUMERIC, ERR_IO
-    use geometry, only: pendulum_t, raised_angles, solve_theta5, beta_coeffs
-    use bifilar_model, only: bifilar_t, motion_t, motion_parts_t, chart_state, evaluate, &
-                             paper_angles, chart_positions, step_tensions, NSTATE
-    use lsoda, only: lsoda_stats_t
-    use stepper, only: stepper_t, SOLVER_LSODA, SOLVER_RADAU, too_much_accuracy
+    use geometry, only: pendulum_t
+    use bifilar_model, only: motion_t, motion_parts_t, evaluate, step_tensions, NSTATE
+    use ode_system, only: integrator_t, integrator_stats_t
+    use integrators, only: new_integrator, SOLVER_RADAU
+    use rig, only: rig_t, rig_of, start_of, method_of, make_pendulum, start_state
+    use kane_run, only: kane_run_t, kane_run_start, model_checks, tighter_rtol, &
+                        angle_difference, sway_of
     use elastic_model, only: elastic_t, elastic_cables_t, elastic_start, elastic_evaluate, &
                              elastic_atol, ELASTIC_NSTATE
-    use elastic_solver, only: elastic_solver_t, slack_interval_t
+    use elastic_solver, only: elastic_solver_t, elastic_run_t, slack_interval_t
     use deck, only: deck_t, deck_echo, OUTPUT_COLUMNS
     use output_io, only: out_files_t, write_kv, all_finite
     use text, only: sci, fixed
@@ -53,44 +55,10 @@ module simulate
         character(len=8) :: method = ''         !! the integrator used: 'lsoda' or 'radau'
     end type run_summary_t
 
-    !> A run of the paper's model for the run loop (module run_loop): the pendulum, its
-    !! integrator, the model checked at every step's end (check_validity).
-    type, extends(stepped_model_t), public :: kane_run_t
-        type(bifilar_t) :: sys                  !! the equations (keep_tensions set)
-        type(stepper_t) :: solver               !! LSODA or Radau
-        real(dp) :: th3 = 0.0_dp                !! theta_3 of the last row (branch choice of
-                                                !! the paper's angles in messages)
-        real(dp) :: t_prev = 0.0_dp             !! last time checked valid
-        real(dp) :: t_end = 0.0_dp              !! end of the run (tcrit)
-        real(dp) :: rtol = 0.0_dp, atol = 0.0_dp    !! the tolerances (for messages)
-    contains
-        procedure :: advance => kane_advance
-        procedure :: dense => kane_dense
-    end type kane_run_t
 
-    !> A run of the elastic-cable model for the run loop.
-    type, extends(stepped_model_t) :: elastic_run_t
-        type(elastic_t) :: sys
-        type(elastic_solver_t) :: solver
-        real(dp) :: th_step(5) = 0.0_dp         !! the paper's angles at the last step's end
-        real(dp) :: t_end = 0.0_dp
-    contains
-        procedure :: advance => elastic_advance
-        procedure :: dense => elastic_dense
-    end type elastic_run_t
 
-    public :: make_pendulum, start_state, run_simulation, model_checks, simulation_ready
-    public :: angle_difference, sway_of, tighter_rtol, integrator_of, kane_run_start
-    public :: grid_times
+    public :: run_simulation, simulation_ready, grid_times
 
-    !> |cos theta5| below which line CD counts as vertical: the paper's body angles
-    !! theta1, theta4 turn about the same axis there and eq. (38) becomes singular.
-    real(dp), parameter :: COS5_MIN = 1.0e-3_dp
-    !> sin theta2 above which the cable BC counts as horizontal (chart limit).
-    real(dp), parameter :: SIN2_MAX = 0.9999_dp
-    !> model = 'elastic': the largest cable strain accepted (a cable stretched to twice its
-    !! natural length is no longer a cable; raise &cables stiffness).
-    real(dp), parameter :: STRAIN_MAX = 1.0_dp
 
     !> The .dat columns (deck OUTPUT_COLUMNS, in that order) and the positions of those that
     !! decide what a row computes.
@@ -119,7 +87,7 @@ module simulate
         type(run_summary_t) :: sm               !! figures of the run
         real(dp) :: e0 = 0.0_dp                 !! energy of row 0
         logical :: error_estimate = .false.     !! rerun at rtol/100 in step (solver2)
-        type(stepper_t) :: solver2
+        class(integrator_t), allocatable :: solver2
     contains
         procedure :: take => kane_dat_take
     end type kane_dat_sink_t
@@ -140,71 +108,7 @@ module simulate
 
 contains
 
-    !> Scaled pendulum parameters from a deck (lengths over b', inertia over m b'^2), with the
-    !! geometric checks a deck reader cannot make: the cables must be able to reach.
-    subroutine make_pendulum(d, p, stat)
-        type(deck_t), intent(in) :: d           !! the deck
-        type(pendulum_t), intent(out) :: p      !! scaled parameters
-        type(status_t), intent(out) :: stat     !! ERR_DECK when the geometry is impossible
-        p%big_l = d%l/d%b_prime
-        p%big_lp = d%l_prime/d%b_prime
-        p%big_b = d%b/d%b_prime
-        p%inertia = d%inertia/(d%mass*d%b_prime**2)
-        p%r = d%r/d%b_prime
-        p%lambda = d%lambda
-        p%btilde = d%btilde
-        p%h_e = d%sway_depth/d%b_prime
-        ! &damping in the model's units: torque over m g b', rates per unit tau
-        p%c_v = d%c_v/(d%mass*d%b_prime*sqrt(d%g*d%b_prime))
-        p%c_q = d%c_q/(d%mass*d%b_prime**2)
-        p%stab_rate = 1.0_dp     ! Baumgarte rate: constraint drift decays in about one tau
-        if (d%b >= d%l + d%l_prime + d%b_prime .or. d%b_prime >= d%l + d%l_prime + d%b) then
-            call set_error(stat, ERR_DECK, '&suspension b = '//sci(d%b)//', b_prime = '// &
-                sci(d%b_prime)//', l = '//sci(d%l)//', l_prime = '//sci(d%l_prime)// &
-                ': the cables cannot reach; allowed: b < l + l_prime + b_prime and '// &
-                'b_prime < l + l_prime + b')
-        end if
-    end subroutine make_pendulum
 
-    !> The start of a deck as a chart state: mode 'raised' (the paper's recipe, tilt added to
-    !! theta_1, theta_5 from eq. (2) by the homotopy of eq. (44)) or mode 'angles'
-    !! (theta_1..4 and their rates given; theta_5 from eq. (2), its rate from eq. (5)).
-    subroutine start_state(d, p, y0, th0, stat)
-        type(deck_t), intent(in) :: d           !! the deck
-        type(pendulum_t), intent(in) :: p       !! scaled parameters
-        real(dp), intent(out) :: y0(NSTATE)     !! chart state at tau = 0
-        real(dp), intent(out) :: th0(5)         !! theta_1..5 at tau = 0
-        type(status_t), intent(out) :: stat     !! ERR_DECK when no start satisfies eq. (2)
-        real(dp) :: thd(5), beta(5)
-        character(len=40) :: what
-        thd = 0.0_dp
-        y0 = 0.0_dp
-        if (trim(d%mode) == 'raised') then
-            call raised_angles(p, d%amplitude*deg, th0, stat)
-            what = '&start mode = ''raised'''
-            if (stat%code /= 0) then
-                return
-            end if
-            th0(1) = th0(1) + d%tilt
-        else
-            th0 = [d%theta, 0.0_dp]
-            thd(1:4) = d%theta_dot
-            what = '&start theta'
-        end if
-        call solve_theta5(p, th0, stat)
-        if (stat%code /= 0) then
-            stat%msg = trim(what)//': '//stat%msg
-            return
-        end if
-        beta = beta_coeffs(p, th0)
-        if (.not. (abs(beta(5)) > 1.0e-10_dp)) then
-            call set_error(stat, ERR_DECK, trim(what)// &
-                ': beta5 = 0 at the start, eq. (5) cannot give theta5_dot; change the start')
-            return
-        end if
-        thd(5) = sum(beta(1:4)*thd(1:4))/beta(5)
-        y0 = chart_state(th0, thd)
-    end subroutine start_state
 
     !> The preconditions of analyses = 'simulate' and 'work_precision', checked before any
     !! computing: the cables reach (make_pendulum), the start exists (start_state) and, for
@@ -214,9 +118,9 @@ contains
         type(status_t), intent(out) :: stat     !! ERR_DECK, or the start's failure
         type(elastic_t) :: el
         real(dp) :: yc(NSTATE), th0(5), y(ELASTIC_NSTATE)
-        call make_pendulum(d, el%p, stat)
+        call make_pendulum(rig_of(d), el%p, stat)
         if (stat%code /= 0) return
-        call start_state(d, el%p, yc, th0, stat)
+        call start_state(start_of(d), el%p, yc, th0, stat)
         if (stat%code /= 0 .or. trim(d%model) /= 'elastic') return
         if (d%c_v /= 0.0_dp .or. d%c_q /= 0.0_dp) then
             call set_error(stat, ERR_DECK, '&damping c_v = '//sci(d%c_v)//', c_q = '// &
@@ -271,9 +175,9 @@ contains
         character(len=:), allocatable :: sumpath
         integer :: u
 
-        call make_pendulum(d, p, stat)
+        call make_pendulum(rig_of(d), p, stat)
         if (stat%code /= 0) return
-        call start_state(d, p, y, th0, stat)
+        call start_state(start_of(d), p, y, th0, stat)
         if (stat%code /= 0) return
         ! compute only what the asked columns need (the model checks need only the tensions'
         ! signs: from the integrator's derivative when T_BC, T_AD are not asked)
@@ -292,15 +196,16 @@ contains
 
         call cpu_time(t_cpu0)
         ! tcrit = tau_end: no step goes past the end, so every step end checked lies in the run
-        sink%sm%method = merge('radau', 'lsoda', integrator_of(d) == SOLVER_RADAU)
-        call kane_run_start(m, p, y, th0(3), d%rtol, d%atol, integrator_of(d), d%tau_end, &
+        sink%sm%method = merge('radau', 'lsoda', method_of(d) == SOLVER_RADAU)
+        call kane_run_start(m, p, y, th0(3), d%rtol, d%atol, method_of(d), d%tau_end, &
                             'raise rtol/atol or shorten tau_end', stat)
         if (stat%code /= 0) return
         if (d%error_estimate) then
             ! the same run at a tolerance 100 times tighter, in step with the rows
             rt2 = tighter_rtol(d%rtol)
+            call new_integrator(method_of(d), sink%solver2)
             call sink%solver2%init(m%sys, 0.0_dp, y, rt2, [d%atol*rt2/d%rtol], stat, &
-                                   integrator_of(d), tcrit=d%tau_end)
+                                   tcrit=d%tau_end)
             if (stat%code /= 0) return
             sink%error_estimate = .true.
             sink%sm%error_estimate_rtol = rt2
@@ -377,69 +282,8 @@ contains
         end select
     end subroutine kane_dat_take
 
-    !> Start a run of the paper's model (for the run loop): the pendulum p from the chart
-    !! state y0 at tau = 0, by the integrator `method` with tolerances rtol, atol, no step
-    !! past t_end; th3 the start's theta_3 (branch of the paper's angles in messages).
-    !! The validity of the model is checked at the end of every step (check_validity).
-    subroutine kane_run_start(m, p, y0, th3, rtol, atol, method, t_end, remedy, stat)
-        type(kane_run_t), intent(out) :: m      !! the run
-        type(pendulum_t), intent(in) :: p       !! scaled parameters
-        real(dp), intent(in) :: y0(NSTATE)      !! chart state at tau = 0
-        real(dp), intent(in) :: th3             !! theta_3 at the start (rad)
-        real(dp), intent(in) :: rtol, atol      !! integrator tolerances
-        integer, intent(in) :: method           !! SOLVER_LSODA or SOLVER_RADAU
-        real(dp), intent(in) :: t_end           !! end of the run (tau), tcrit
-        character(len=*), intent(in) :: remedy  !! what to change when a row takes too long
-        type(status_t), intent(out) :: stat     !! the integrator's init
-        m%sys%p = p
-        m%sys%keep_tensions = .true.            ! for check_validity
-        m%y0 = y0
-        m%ystep = y0
-        m%nsteps = 0
-        m%t_cur = 0.0_dp
-        m%th3 = th3
-        m%t_end = t_end
-        m%rtol = rtol
-        m%atol = atol
-        m%remedy = remedy
-        call m%solver%init(m%sys, 0.0_dp, y0, rtol, [atol], stat, method, tcrit=t_end)
-    end subroutine kane_run_start
 
-    !> One step of the paper's model: an integrator failure explained (singular coordinates
-    !! named, too much accuracy asked), the model checked at the step's end.
-    subroutine kane_advance(m, stat)
-        class(kane_run_t), intent(inout) :: m
-        type(status_t), intent(out) :: stat
-        type(lsoda_stats_t) :: st
-        call m%solver%step(m%sys, stat, tout=m%t_end)
-        st = m%solver%stats()
-        if (stat%code /= 0) then
-            call explain_failure(m%solver, st%t_current, m%th3, stat)
-            if (too_much_accuracy(stat)) then
-                stat%msg = stat%msg//'; &integration rtol = '//sci(m%rtol, 2)// &
-                    ', atol = '//sci(m%atol, 2)//': raise them (rtol >= 3e-14 works '// &
-                    'for the paper scenes)'
-            end if
-            return
-        end if
-        m%nsteps = m%nsteps + 1
-        m%t_cur = st%t_current
-        m%h_cur = st%h_last
-        call m%solver%dense(st%t_current, 0, m%ystep, stat)
-        if (stat%code /= 0) return
-        call check_validity(m%sys, m%solver, m%t_prev, st%t_current, m%ystep, m%th3, stat)
-        if (stat%code /= 0) return
-        m%t_prev = st%t_current
-    end subroutine kane_advance
 
-    !> The state at t inside the last step (the integrator's dense output).
-    subroutine kane_dense(m, t, y, stat)
-        class(kane_run_t), intent(in) :: m
-        real(dp), intent(in) :: t
-        real(dp), intent(out) :: y(:)
-        type(status_t), intent(out) :: stat
-        call m%solver%dense(t, 0, y, stat)
-    end subroutine kane_dense
 
     !> Open OUTDIR/NAME.dat (a file of the run, see output_io) and write its header: title,
     !! units, an optional model note, the effective deck, the line of the &output columns.
@@ -588,7 +432,7 @@ contains
     !> End a run: the solver's figures and the CPU time into sm; the .dat closed and checked
     !! (it waits in fs for the commit) unless stat carries an error.
     subroutine finish_run(st, t_cpu0, fs, u, sm, stat)
-        type(lsoda_stats_t), intent(in) :: st   !! the main solver's statistics
+        type(integrator_stats_t), intent(in) :: st  !! the main solver's statistics
         real(dp), intent(in) :: t_cpu0          !! cpu_time at the start of the integration
         type(out_files_t), intent(inout) :: fs  !! the run's files
         integer, intent(in) :: u                !! the open .dat unit
@@ -708,9 +552,9 @@ contains
 
         sink%sm%elastic = .true.
         call column_mask(d, sink%want)
-        call make_pendulum(d, m%sys%p, stat)
+        call make_pendulum(rig_of(d), m%sys%p, stat)
         if (stat%code /= 0) return
-        call start_state(d, m%sys%p, yc, th0, stat)
+        call start_state(start_of(d), m%sys%p, yc, th0, stat)
         if (stat%code /= 0) return
         m%sys%stiffness = d%cable_stiffness
         m%sys%damping = d%cable_damping
@@ -728,16 +572,16 @@ contains
         sink%rb%unit = u
 
         call cpu_time(t_cpu0)
-        sink%sm%method = merge('radau', 'lsoda', integrator_of(d) == SOLVER_RADAU)
+        sink%sm%method = merge('radau', 'lsoda', method_of(d) == SOLVER_RADAU)
         call m%solver%init(m%sys, 0.0_dp, y, d%rtol, atol, stat, tcrit=d%tau_end, &
-                           method=integrator_of(d))
+                           method=method_of(d))
         if (stat%code /= 0) return
         if (d%error_estimate) then
             rt2 = tighter_rtol(d%rtol)
             sink%sys2 = m%sys                    ! its own cable modes
             call sink%solver2%init(sink%sys2, 0.0_dp, y, rt2, elastic_atol(sink%sys2, &
                                    d%atol*rt2/d%rtol, rt2), stat, tcrit=d%tau_end, &
-                                   method=integrator_of(d))
+                                   method=method_of(d))
             if (stat%code /= 0) return
             sink%error_estimate = .true.
             sink%sm%error_estimate_rtol = rt2
@@ -809,230 +653,14 @@ contains
         end select
     end subroutine elastic_dat_take
 
-    !> One step of the elastic model (elastic_solver: taut/slack switches located), the
-    !! sanity limit of the cables' strain checked at its end.
-    subroutine elastic_advance(m, stat)
-        class(elastic_run_t), intent(inout) :: m
-        type(status_t), intent(out) :: stat
-        type(lsoda_stats_t) :: st
-        type(motion_t) :: mo2
-        type(elastic_cables_t) :: cab
-        call m%solver%step(m%sys, stat, tout=m%t_end)
-        st = m%solver%stats()
-        if (stat%code /= 0) then
-            stat%msg = stat%msg//' at tau = '//fixed(st%t_current, 6)
-            return
-        end if
-        m%nsteps = m%nsteps + 1
-        m%t_cur = st%t_current
-        m%h_cur = st%h_last
-        call m%solver%dense(st%t_current, 0, m%ystep, stat)
-        if (stat%code /= 0) return
-        ! the cables at the step end: the sanity limit
-        call elastic_evaluate(m%sys, m%ystep, m%th_step(3), mo2, stat, m%th_step, cab)
-        if (stat%code /= 0) return
-        m%th_step = mo2%th
-        if (maxval(cab%strain) > STRAIN_MAX) then
-            call set_error(stat, ERR_MODEL, 'a cable stretches to more than twice '// &
-                'its natural length at tau = '//fixed(st%t_current, 6)//' (strain '// &
-                sci(maxval(cab%strain))//'): raise &cables stiffness')
-        end if
-    end subroutine elastic_advance
 
-    !> The state at t inside the last step (the integrator's dense output).
-    subroutine elastic_dense(m, t, y, stat)
-        class(elastic_run_t), intent(in) :: m
-        real(dp), intent(in) :: t
-        real(dp), intent(out) :: y(:)
-        type(status_t), intent(out) :: stat
-        call m%solver%dense(t, 0, y, stat)
-    end subroutine elastic_dense
 
-    !> The checks that end a run because the model no longer holds (ERR_MODEL): a slack
-    !! cable, line CD vertical (singular coordinates), cable BC near the horizontal.
-    subroutine model_checks(mo, tau, stat)
-        type(motion_t), intent(in) :: mo       !! the motion at tau
-        real(dp), intent(in) :: tau            !! time of mo
-        type(status_t), intent(out) :: stat    !! ERR_MODEL with a diagnostic, else OK
-        character(len=400) :: buf
-        stat%code = 0
-        if (min(mo%t_bc, mo%t_ad) <= 0.0_dp) then
-            call set_error(stat, ERR_MODEL, 'cable goes slack at tau = '//fixed(tau, 6)// &
-                ' (T_BC = '//sci(mo%t_bc)//', T_AD = '//sci(mo%t_ad)//' m g): the taut-cable '// &
-                'model no longer holds; lower the amplitude or start speed, or lengthen the cables')
-        else if (abs(cos(mo%th(5))) < COS5_MIN) then
-            write (buf, '(a,f0.4,a)') 'line CD turns vertical at tau = '//fixed(tau, 6)// &
-                ' (theta5 = ', mo%th(5)/deg, ' deg): the paper''s coordinates theta1, theta4 '// &
-                'are singular there; lower the amplitude, tilt or start speed'
-            call set_error(stat, ERR_MODEL, trim(buf))
-        else if (abs(sin(mo%th(2))) > SIN2_MAX) then
-            write (buf, '(a,f0.4,a)') 'cable BC swings up to the horizontal at tau = '// &
-                fixed(tau, 6)//' (theta2 = ', mo%th(2)/deg, ' deg): the model of a hanging '// &
-                'cable no longer holds; lower the amplitude or start speed'
-            call set_error(stat, ERR_MODEL, trim(buf))
-        end if
-    end subroutine model_checks
 
-    !> Model checks at the end of one internal step; when one fails, the tau where it first
-    !! fails is located in the step (bisection on the dense output) for the diagnostic.  The
-    !! tensions come from what the step computed: those of its last right-hand side (the
-    !! corrector's last iterate, which the step's end differs from by less than the
-    !! integration error; sys%keep_tensions), else from the state and its derivative in the
-    !! integrator's dense output (step_tensions); never from a new solve of eq. (38).
-    subroutine check_validity(sys, solver, t0, t1, y1, th3, stat)
-        type(bifilar_t), intent(inout) :: sys   !! the pendulum
-        type(stepper_t), intent(in) :: solver   !! after the step
-        real(dp), intent(in) :: t0, t1          !! previous checked time (valid), step end
-        real(dp), intent(in) :: y1(NSTATE)      !! state at t1
-        real(dp), intent(in) :: th3             !! theta3 of the last row (branch choice)
-        type(status_t), intent(out) :: stat     !! ERR_MODEL (or the evaluation's failure)
-        type(status_t) :: s2
-        type(motion_t) :: mo
-        real(dp) :: a, b, m, lo, ylast(NSTATE)
-        integer :: it
-        logical :: found
-        call sys%last_evaluation(ylast, mo%t_bc, mo%t_ad, found)
-        if (found) found = maxval(abs(ylast - y1)) <= 1.0e-6_dp*(1.0_dp + maxval(abs(y1)))
-        if (found) then
-            mo%th(2) = asin(min(1.0_dp, sqrt(y1(2)**2 + y1(3)**2)))
-            mo%th(5) = y1(5)
-            stat%code = 0
-        else
-            call motion_at(t1, mo, stat, .false., y1)
-        end if
-        if (stat%code /= 0) then
-            call explain_failure_at(y1, th3, t1, stat)
-            return
-        end if
-        call model_checks(mo, t1, stat)
-        if (stat%code == 0) return
-        ! locate the first failure within [max(t0, t1 - h), t1]
-        st_h: block
-            type(lsoda_stats_t) :: st
-            st = solver%stats()
-            lo = max(t0, t1 - abs(st%h_last))
-        end block st_h
-        a = lo
-        b = t1
-        do it = 1, 40
-            m = 0.5_dp*(a + b)
-            call motion_at(m, mo, s2, .false.)
-            if (s2%code == 0) call model_checks(mo, m, s2)
-            if (s2%code == 0) then
-                a = m
-            else
-                b = m
-            end if
-        end do
-        call motion_at(b, mo, s2, .true.)
-        if (s2%code == 0) call model_checks(mo, b, s2)
-        if (s2%code == ERR_MODEL) stat = s2
-    contains
-        !> What the model checks read at time t of the step (state y when given, else the
-        !! dense output; the derivative from the dense output): the tensions, theta5 and
-        !! |theta2| (all the paper's angles, branch and sign as the rows', when `angles`).
-        subroutine motion_at(t, mt, st, angles, y)
-            real(dp), intent(in) :: t
-            type(motion_t), intent(out) :: mt
-            type(status_t), intent(out) :: st
-            logical, intent(in) :: angles
-            real(dp), intent(in), optional :: y(NSTATE)
-            real(dp) :: yt(NSTATE), ydt(NSTATE)
-            if (present(y)) then
-                yt = y
-            else
-                call solver%dense(t, 0, yt, st)
-                if (st%code /= 0) return
-            end if
-            call solver%dense(t, 1, ydt, st)
-            if (st%code /= 0) return
-            if (angles) then
-                call paper_angles(yt, th3, mt%th, mt%thd)
-            else
-                mt%th(2) = asin(min(1.0_dp, sqrt(yt(2)**2 + yt(3)**2)))
-                mt%th(5) = yt(5)
-            end if
-            call step_tensions(sys, yt, ydt, mt%t_bc, mt%t_ad, st)
-        end subroutine motion_at
-    end subroutine check_validity
 
-    !> An integrator failure: when the state reached is where the model's coordinates are
-    !! singular (line CD vertical, cable BC horizontal), say so (ERR_MODEL).
-    subroutine explain_failure(solver, t, th3, stat)
-        type(stepper_t), intent(in) :: solver   !! after the failed step
-        real(dp), intent(in) :: t               !! time reached
-        real(dp), intent(in) :: th3             !! branch choice
-        type(status_t), intent(inout) :: stat   !! the failure; replaced when explained
-        real(dp) :: yr(NSTATE)
-        type(status_t) :: s2
-        call solver%dense(t, 0, yr, s2)
-        if (s2%code /= 0) return
-        call explain_failure_at(yr, th3, t, stat)
-    end subroutine explain_failure
 
-    !> As explain_failure, for a given state.
-    subroutine explain_failure_at(y, th3, t, stat)
-        real(dp), intent(in) :: y(NSTATE)       !! state reached
-        real(dp), intent(in) :: th3             !! branch choice
-        real(dp), intent(in) :: t               !! its time
-        type(status_t), intent(inout) :: stat   !! the failure; replaced when explained
-        type(motion_t) :: mo
-        real(dp) :: th(5), thd(5)
-        character(len=400) :: buf
-        if (.not. all_finite(y)) return
-        mo = motion_t()
-        call paper_angles(y, th3, th, thd)
-        mo%th = th
-        mo%t_bc = 1.0_dp
-        mo%t_ad = 1.0_dp
-        if (abs(cos(th(5))) < 10.0_dp*COS5_MIN .or. y(2)**2 + y(3)**2 > SIN2_MAX**2) then
-            call model_checks(mo, t, stat)
-            if (stat%code == 0) then
-                write (buf, '(a,f0.4,a,f0.4,a)') 'the equations of motion become '// &
-                    'singular at tau = '//fixed(t, 6)//' (theta5 = ', th(5)/deg, &
-                    ' deg, theta2 = ', th(2)/deg, ' deg): line CD or cable BC near their '// &
-                    'limits; lower the '// &
-                    'amplitude or start speed'
-                call set_error(stat, ERR_MODEL, trim(buf))
-            end if
-        end if
-    end subroutine explain_failure_at
 
-    !> The integrator of a deck's simulation: &integration method = 'radau' or 'lsoda', or
-    !! 'auto': Radau IIA for model = 'elastic' (stiff, lightly damped cables), LSODA for
-    !! the paper's model.
-    pure integer function integrator_of(d) result(m)
-        type(deck_t), intent(in) :: d           !! the deck
-        m = SOLVER_LSODA
-        if (trim(d%method) == 'radau' .or. (trim(d%method) == 'auto' .and. &
-                                            trim(d%model) == 'elastic')) m = SOLVER_RADAU
-    end function integrator_of
 
-    !> The tolerance of the error-estimate rerun: rtol/100, but not below 3e-14 (the
-    !! smallest the integrator honours).
-    pure real(dp) function tighter_rtol(rtol) result(r)
-        real(dp), intent(in) :: rtol            !! the run's rtol
-        r = max(rtol/100.0_dp, 3.0e-14_dp)
-    end function tighter_rtol
 
-    !> Largest angle difference (rad) between two chart states: theta1, theta4, theta5, and
-    !! the direction of the cable BC (|delta sigma| / cos theta2, the angle between the two
-    !! directions to first order; regular at theta2 = 0 where theta3 is not defined).
-    pure real(dp) function angle_difference(y1, y2) result(da)
-        real(dp), intent(in) :: y1(NSTATE), y2(NSTATE)   !! chart states
-        real(dp) :: c2
-        c2 = sqrt(max(1.0e-12_dp, 1.0_dp - y1(2)**2 - y1(3)**2))
-        da = max(abs(y1(1) - y2(1)), abs(y1(4) - y2(4)), abs(y1(5) - y2(5)), &
-                 norm2(y1(2:3) - y2(2:3))/c2)
-    end function angle_difference
 
-    !> Side-sway Q of a chart state (as in evaluate, without the accelerations).
-    pure real(dp) function sway_of(p, y) result(q)
-        type(pendulum_t), intent(in) :: p       !! scaled parameters
-        real(dp), intent(in) :: y(NSTATE)       !! chart state
-        real(dp) :: c(3), dd(3), rs(3), e(3), n(3, 3)
-        call chart_positions(p, y, c, dd, rs, e, n)
-        q = sqrt(e(1)**2 + (e(2) + 0.5_dp*p%big_b)**2)
-    end function sway_of
 
 end module simulate

@@ -13,8 +13,9 @@ module stability
     use status, only: status_t, set_error, ERR_NUMERIC, ERR_DECK, ERR_MODEL, LSODA_ERR_MAX_STEPS
     use geometry, only: pendulum_t
     use deck, only: deck_t, deck_echo
-    use simulate, only: make_pendulum
-    use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, &
+    use rig, only: rig_of, make_pendulum, method_of
+    use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, floquet_point, &
+                       CHART_FAILED, &
                        FLOQUET_MAX_STEPS
     use output_io, only: out_files_t, write_kv
     use sweep_engine, only: sweep_task_t, sweep_run, sweep_options_t, sweep_report_t, &
@@ -24,14 +25,7 @@ module stability
     private
 
     public :: run_floquet, run_chart, set_chart_variable, floquet_ready, chart_task
-    public :: floquet_point
 
-    !> Sentinel written for chart points where no analysis is possible (not a torsion scene,
-    !! cables cannot reach, impossible inertia): never NaN.
-    real(dp), parameter, public :: CHART_INVALID = -1.0_dp
-    !> Sentinel written for chart points whose analysis failed (e.g. more than
-    !! FLOQUET_MAX_STEPS steps): never NaN.
-    real(dp), parameter, public :: CHART_FAILED = -2.0_dp
 
     !> The points of a chart as a sweep: point k = (i, j) of the grid, x index i fastest
     !! (k = (j - 1) nx + i); its values are max_modulus and period.
@@ -42,6 +36,7 @@ module stability
         real(dp) :: amplitude = 0.0_dp          !! &floquet amplitude (degrees)
         real(dp) :: rtol = 0.0_dp               !! &floquet rtol
         integer :: segments = 1                 !! &floquet segments
+        integer :: method = 1                   !! the integrator (module integrators)
     contains
         procedure :: compute => chart_point
     end type chart_task_t
@@ -55,7 +50,7 @@ contains
         type(status_t), intent(out) :: stat     !! ERR_DECK
         type(pendulum_t) :: p
         integer :: ivert
-        call make_pendulum(d, p, stat)
+        call make_pendulum(rig_of(d), p, stat)
         if (stat%code /= 0) return
         call check_torsion_scene(p, ivert, stat)
         if (stat%code /= 0) stat%msg = 'analyses = ''floquet'' needs a scene in which pure '// &
@@ -81,11 +76,11 @@ contains
         if (present(files)) fs => files
         call floquet_ready(d, stat)
         if (stat%code /= 0) return
-        call make_pendulum(d, p, stat)
+        call make_pendulum(rig_of(d), p, stat)
         if (stat%code /= 0) return
         call cpu_time(t0)
         call floquet_analysis(p, d%floquet_amplitude*deg, d%floquet_rtol, d%floquet_segments, &
-                              res, stat)
+                              res, stat, method_of(d))
         call cpu_time(t1)
         if (stat%code /= 0) then
             call explain_budget(stat)
@@ -164,7 +159,7 @@ contains
         type(chart_task_t), intent(out) :: task
         type(status_t), intent(out) :: stat     !! ERR_DECK when the scene cannot be made
         integer :: i, j
-        call make_pendulum(d, task%p0, stat)
+        call make_pendulum(rig_of(d), task%p0, stat)
         if (stat%code /= 0) return
         allocate (task%xs(d%chart_nx), task%ys(d%chart_ny))
         do i = 1, d%chart_nx
@@ -178,6 +173,7 @@ contains
         task%amplitude = d%floquet_amplitude
         task%rtol = d%floquet_rtol
         task%segments = d%floquet_segments
+        task%method = method_of(d)
     end subroutine chart_task
 
     !> Chart point k: values = [max_modulus, period] (sentinels, see floquet_point).  Never
@@ -197,43 +193,8 @@ contains
         amp = self%amplitude
         call set_chart_variable(self%x, self%xs(ix), p, amp)
         call set_chart_variable(self%y, self%ys(iy), p, amp)
-        call floquet_point(p, amp, self%rtol, self%segments, values(1), values(2))
+        call floquet_point(p, amp, self%rtol, self%segments, values(1), values(2), self%method)
     end subroutine chart_point
-
-    !> One point of a stability sweep (chart, design): the largest multiplier and the period
-    !! of pure torsion of p at amp_deg, or a sentinel in both: CHART_INVALID where no
-    !! analysis is possible (impossible inertia, not a torsion scene, the cables cannot reach
-    !! the raised position), CHART_FAILED where the analysis failed (e.g. more than
-    !! FLOQUET_MAX_STEPS steps).  Never stops, never NaN.
-    subroutine floquet_point(p, amp_deg, rtol, nseg, modulus, period)
-        type(pendulum_t), intent(in) :: p       !! scaled parameters
-        real(dp), intent(in) :: amp_deg         !! torsion amplitude (degrees)
-        real(dp), intent(in) :: rtol            !! integrator tolerance
-        integer, intent(in) :: nseg             !! shooting segments
-        real(dp), intent(out) :: modulus        !! largest |multiplier| (or a sentinel)
-        real(dp), intent(out) :: period         !! t* in units of tau (or a sentinel)
-        type(floquet_result_t) :: res
-        type(status_t) :: st
-        integer :: ivert
-        logical :: valid
-        modulus = CHART_INVALID
-        period = CHART_INVALID
-        valid = all(p%inertia > 0.0_dp) .and. p%inertia(1) <= p%inertia(2) + p%inertia(3) &
-                .and. p%inertia(2) <= p%inertia(1) + p%inertia(3) &
-                .and. p%inertia(3) <= p%inertia(1) + p%inertia(2)
-        if (.not. valid) return
-        call check_torsion_scene(p, ivert, st)
-        if (st%code /= 0) return
-        call floquet_analysis(p, amp_deg*deg, rtol, nseg, res, st)
-        if (st%code == 0) then
-            modulus = res%max_modulus
-            period = res%period
-        else if (st%code /= ERR_DECK .and. st%code /= ERR_MODEL) then
-            ! (ERR_DECK, ERR_MODEL: no torsion at this amplitude, CHART_INVALID)
-            modulus = CHART_FAILED
-            period = CHART_FAILED
-        end if
-    end subroutine floquet_point
 
     !> Stability chart over the grid of &chart: OUTDIR/NAME.chart.dat with one row per point,
     !! `x y max_modulus period` (CHART_INVALID where no analysis is possible, CHART_FAILED

@@ -14,7 +14,7 @@
 !! output interval.
 !!
 !! Errors at the output times: error_theta = the largest angle error (theta1, theta4,
-!! theta5 and the direction of the cable BC, see simulate's angle_difference), error_Q =
+!! theta5 and the direction of the cable BC, see kane_run's angle_difference), error_Q =
 !! the largest |Q error| (over b'), max_abs_energy_error = the largest |E - E(0)| (over
 !! m g b').  CPU seconds are per solve, from repeated solves until at least 0.05 s.
 !! Writes OUTDIR/NAME.wp.dat and OUTDIR/NAME.wp_rk4.dat.
@@ -26,10 +26,12 @@ module work_precision
     use ode_system, only: ode_system_t
     use elastic_model, only: elastic_t, elastic_start, elastic_atol, elastic_evaluate, &
                              elastic_chart, elastic_energy, ELASTIC_NSTATE, CABLE_AUTO, stretch_frequency
-    use elastic_solver, only: elastic_solver_t, SOLVER_LSODA, SOLVER_RADAU
-    use lsoda, only: lsoda_t, lsoda_stats_t
+    use elastic_solver, only: elastic_solver_t
+    use ode_system, only: integrator_t, integrator_stats_t
+    use integrators, only: new_integrator, SOLVER_LSODA, SOLVER_RADAU
     use deck, only: deck_t, deck_echo
-    use simulate, only: make_pendulum, start_state, angle_difference, sway_of
+    use rig, only: rig_of, start_of, make_pendulum, start_state
+    use kane_run, only: angle_difference, sway_of
     use output_io, only: out_files_t, all_finite
     use text, only: sci
     use progress, only: progress_t
@@ -115,10 +117,10 @@ contains
         type(status_t), intent(out) :: stat     !! the integrator's failure
         integer, intent(in), optional :: method !! elastic model: SOLVER_LSODA (default) or
                                                 !! SOLVER_RADAU
-        type(lsoda_t) :: solver
+        class(integrator_t), allocatable :: solver
         type(elastic_solver_t) :: esolver
         integer :: m
-        type(lsoda_stats_t) :: st
+        type(integrator_stats_t) :: st
         real(dp) :: tend
         integer :: k
         ys = 0.0_dp
@@ -134,6 +136,7 @@ contains
             end do
             st = esolver%stats()
         class default
+            call new_integrator(SOLVER_LSODA, solver)
             call solver%init(sys, times(0), y0, rtol, atol, stat, tcrit=tend)
             do k = 1, ubound(times, 1)
                 if (stat%code == 0) call solver%integrate(sys, times(k), ys(:, k), stat)
@@ -248,9 +251,9 @@ contains
         if (present(files)) fs => files
         loud = .true.
         if (present(quiet)) loud = .not. quiet
-        call make_pendulum(d, p, stat)
+        call make_pendulum(rig_of(d), p, stat)
         if (stat%code /= 0) return
-        call start_state(d, p, y0, th0, stat)
+        call start_state(start_of(d), p, y0, th0, stat)
         if (stat%code /= 0) return
         call output_times(d, times)
         n = ubound(times, 1)

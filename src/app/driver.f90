@@ -13,7 +13,8 @@ module driver
     use text, only: itoa, sci, fixed
     use deck, only: deck_t, read_deck, analysis_requested
     use output_io, only: out_files_t, remove_file
-    use simulate, only: run_simulation, run_summary_t, simulation_ready, make_pendulum
+    use simulate, only: run_simulation, run_summary_t, simulation_ready
+    use rig, only: rig_of, make_pendulum
     use stability, only: run_floquet, run_chart, floquet_ready, chart_task, chart_task_t
     use sweep_engine, only: sweep_options_t, sweep_report_t, sweep_job_t, sweep_task_t, &
         sweep_next_job, sweep_serve, checkpoint_path
@@ -240,7 +241,7 @@ contains
         type(deck_t), intent(in) :: d               !! the deck
         type(status_t), intent(out) :: stat         !! ERR_DECK
         type(pendulum_t) :: p
-        call make_pendulum(d, p, stat)
+        call make_pendulum(rig_of(d), p, stat)
         if (stat%code /= STATUS_OK) stat%msg = 'analyses = ''chart'': '//stat%msg
     end subroutine chart_ready
 

@@ -20,6 +20,7 @@ program make_record_main
     use deck, only: deck_t, read_deck
     use identify, only: make_record
     use period_inversion, only: rig_period_s
+    use rig, only: rig_of, accuracy_of
     use random, only: rng_t, rng_stream, rng_normal
     use text, only: fixed
     implicit none
@@ -66,7 +67,7 @@ program make_record_main
         line2 = '             amplitudes ='
         do k = 1, na
             a = real_arg(4 + k)
-            call rig_period_s(d, d%inertia(1), a, tp, st)
+            call rig_period_s(rig_of(d), accuracy_of(d), d%inertia(1), a, tp, st)
             if (st%code /= 0) call fail(st%msg)
             tp = anint((tp + sigma*rng_normal(g))*1.0e5_dp)/1.0e5_dp
             line1 = line1//' '//fixed(tp, 5)//','

@@ -34,13 +34,13 @@ module lsoda
     use status, only: status_t, set_error, STATUS_OK, LSODA_ERR_MAX_STEPS, &
         LSODA_ERR_TOO_MUCH_ACCURACY, LSODA_ERR_ERROR_TEST, LSODA_ERR_CONVERGENCE, &
         LSODA_ERR_ILLEGAL_INPUT, LSODA_ERR_SINGULAR
-    use ode_system, only: ode_system_t
+    use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, METHOD_ADAMS, &
+        METHOD_BDF
     use lapack_wrap, only: la_lu_factor, la_lu_solve
     implicit none
     private
 
-    integer, parameter, public :: METHOD_ADAMS = 1   !! non-stiff method (Adams-Moulton)
-    integer, parameter, public :: METHOD_BDF = 2     !! stiff method (backward differentiation)
+    public :: METHOD_ADAMS, METHOD_BDF
 
     integer, parameter :: MAXORD_ADAMS = 12
     integer, parameter :: MAXORD_BDF = 5
@@ -63,27 +63,13 @@ module lsoda
     integer, parameter :: KF_OK = 0, KF_ERRTEST = -1, KF_CONV = -2, KF_SINGULAR = -3, &
         KF_FATAL = -4
 
-    !> Counters and the state of the method, as returned by lsoda_t%stats().
-    type, public :: lsoda_stats_t
-        integer :: steps = 0            !! successful steps since init
-        integer :: rhs_evals = 0        !! calls of sys%rhs (including finite-difference Jacobians)
-        integer :: jac_evals = 0        !! Jacobian evaluations (analytic or finite differences)
-        integer :: lu_decomps = 0       !! LU factorisations of the iteration matrix
-        integer :: conv_failures = 0    !! step attempts rejected: corrector did not converge
-        integer :: error_test_failures = 0  !! step attempts rejected by the local error test
-        integer :: method_switches = 0  !! switches Adams <-> BDF
-        integer :: method_last = 0      !! METHOD_ADAMS or METHOD_BDF, used on the last step
-        integer :: order_last = 0       !! order used on the last step
-        integer :: method_next = 0      !! method to be tried on the next step
-        integer :: order_next = 0       !! order to be tried on the next step
-        real(dp) :: h_last = 0.0_dp     !! last step size taken (signed)
-        real(dp) :: h_next = 0.0_dp     !! step size to be tried next (signed)
-        real(dp) :: t_current = 0.0_dp  !! time reached by the integration (end of last step)
-    end type lsoda_stats_t
 
     !> One integration: the Nordsieck array, method state, work arrays and counters.
-    type, public :: lsoda_t
+    type, extends(integrator_t), public :: lsoda_t
         private
+        ! options of the next init (set_options)
+        integer :: opt_order_adams = MAXORD_ADAMS, opt_order_bdf = MAXORD_BDF
+        logical :: opt_start_bdf = .false., opt_adams_only = .false.
         logical :: ready = .false.      ! init succeeded
         logical :: started = .false.    ! initial step size chosen
         integer :: n = 0
@@ -123,6 +109,8 @@ module lsoda
         procedure :: dense => lsoda_dense
         procedure :: stats => lsoda_get_stats
         procedure :: set_tcrit => lsoda_set_tcrit
+        procedure :: name => lsoda_name
+        procedure :: set_options => lsoda_set_options
     end type lsoda_t
 
 contains
@@ -146,15 +134,8 @@ contains
     !!                 from f(t0,y0), the tolerances and the first output time.
     !! hmax      [in, optional] largest |h| (> 0); default unlimited.
     !! max_steps [in, optional] most steps in one call of integrate (default 500000).
-    !! max_order_adams [in, optional] highest Adams order, 1..12 (default 12).
-    !! max_order_bdf   [in, optional] highest BDF order, 1..5 (default 5).
-    !! start_bdf [in, optional] .true.: take the first step with BDF (as after a restart of
-    !!                 a problem known to be stiff); default .false., Adams, as LSODA does.
-    !!                 The automatic switching between the methods works as usual after it.
-    !! nonstiff_only [in, optional] .true.: Adams throughout, never switch to BDF (the
-    !!                 non-stiff method alone, for comparisons); not with start_bdf.
-    subroutine lsoda_init(s, sys, t0, y0, rtol, atol, stat, tcrit, h0, hmax, max_steps, &
-                          max_order_adams, max_order_bdf, start_bdf, nonstiff_only)
+    !! The options of set_options (highest orders, start_bdf, nonstiff_only) apply.
+    subroutine lsoda_init(s, sys, t0, y0, rtol, atol, stat, tcrit, h0, hmax, max_steps)
         class(lsoda_t), intent(inout) :: s
         class(ode_system_t), intent(inout) :: sys
         real(dp), intent(in) :: t0
@@ -166,10 +147,6 @@ contains
         real(dp), intent(in), optional :: h0
         real(dp), intent(in), optional :: hmax
         integer, intent(in), optional :: max_steps
-        integer, intent(in), optional :: max_order_adams
-        integer, intent(in), optional :: max_order_bdf
-        logical, intent(in), optional :: start_bdf
-        logical, intent(in), optional :: nonstiff_only
         integer :: n, nwm
         character(len=120) :: buf
 
@@ -195,10 +172,8 @@ contains
             call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda init: atol has a negative entry')
             return
         end if
-        s%mxordn = MAXORD_ADAMS
-        s%mxords = MAXORD_BDF
-        if (present(max_order_adams)) s%mxordn = max_order_adams
-        if (present(max_order_bdf)) s%mxords = max_order_bdf
+        s%mxordn = s%opt_order_adams
+        s%mxords = s%opt_order_bdf
         if (s%mxordn < 1 .or. s%mxordn > MAXORD_ADAMS .or. s%mxords < 1 &
             .or. s%mxords > MAXORD_BDF) then
             call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda init: max_order_adams must '// &
@@ -272,12 +247,8 @@ contains
         s%hmin = 0.0_dp
         s%nq = 1
         s%l = 2
-        s%meth0 = METHOD_ADAMS
-        if (present(start_bdf)) then
-            if (start_bdf) s%meth0 = METHOD_BDF
-        end if
-        s%adams_only = .false.
-        if (present(nonstiff_only)) s%adams_only = nonstiff_only
+        s%meth0 = merge(METHOD_BDF, METHOD_ADAMS, s%opt_start_bdf)
+        s%adams_only = s%opt_adams_only
         if (s%adams_only .and. s%meth0 == METHOD_BDF) then
             call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda init: start_bdf and '// &
                 'nonstiff_only exclude each other')
@@ -477,10 +448,10 @@ contains
         call interpolate(s, t, k, dky, stat)
     end subroutine lsoda_dense
 
-    !> Counters and method state (see lsoda_stats_t).
+    !> Counters and method state (see integrator_stats_t).
     function lsoda_get_stats(s) result(st)
         class(lsoda_t), intent(in) :: s
-        type(lsoda_stats_t) :: st
+        type(integrator_stats_t) :: st
         st%steps = s%nst
         st%rhs_evals = s%nfe
         st%jac_evals = s%nje
@@ -496,6 +467,40 @@ contains
         st%h_next = s%h
         st%t_current = s%tn
     end function lsoda_get_stats
+
+    !> LSODA's own options, for the next init and those after it until set again (an
+    !! option left out here returns to its default).
+    !!
+    !! max_order_adams [in, optional] highest Adams order, 1..12 (default 12).
+    !! max_order_bdf   [in, optional] highest BDF order, 1..5 (default 5).
+    !! start_bdf [in, optional] .true.: take the first step with BDF (as after a restart of
+    !!                 a problem known to be stiff); default .false., Adams, as LSODA does.
+    !!                 The automatic switching between the methods works as usual after it.
+    !! nonstiff_only [in, optional] .true.: Adams throughout, never switch to BDF (the
+    !!                 non-stiff method alone, for comparisons); not with start_bdf.
+    !! init refuses values out of range (LSODA_ERR_ILLEGAL_INPUT).
+    pure subroutine lsoda_set_options(s, max_order_adams, max_order_bdf, start_bdf, &
+                                      nonstiff_only)
+        class(lsoda_t), intent(inout) :: s
+        integer, intent(in), optional :: max_order_adams, max_order_bdf
+        logical, intent(in), optional :: start_bdf, nonstiff_only
+        s%opt_order_adams = MAXORD_ADAMS
+        s%opt_order_bdf = MAXORD_BDF
+        s%opt_start_bdf = .false.
+        s%opt_adams_only = .false.
+        if (present(max_order_adams)) s%opt_order_adams = max_order_adams
+        if (present(max_order_bdf)) s%opt_order_bdf = max_order_bdf
+        if (present(start_bdf)) s%opt_start_bdf = start_bdf
+        if (present(nonstiff_only)) s%opt_adams_only = nonstiff_only
+    end subroutine lsoda_set_options
+
+    !> The integrator's name in output files.
+    pure function lsoda_name(s) result(nm)
+        class(lsoda_t), intent(in) :: s
+        character(len=:), allocatable :: nm
+        nm = 'lsoda'
+        if (.false.) nm = merge('lsoda', 'lsoda', s%ready)   ! keep s referenced
+    end function lsoda_name
 
     !> Set (tcrit present) or remove (absent) the hard stop time.
     !!

@@ -1,6 +1,7 @@
-!> The abstract right-hand side every integration in bifilar works on.
+!> The two abstract types every integration in bifilar goes through: the right-hand side
+!! (ode_system_t) and the integrator (integrator_t, with one statistics type).
 !!
-!! A problem extends ode_system with its own data (lengths, masses, counters) and
+!! The right-hand side.  A problem extends ode_system with its own data (lengths, masses, counters) and
 !! implements rhs; it may also override jacobian and has_jacobian to give an analytic
 !! Jacobian.  The integrator (module lsoda) sees only this type.
 !!
@@ -10,9 +11,28 @@
 !! form and factor P = I - h l0 J at (t, y) in its own storage, and solve_iteration to
 !! replace x by P^-1 x.  The integrator then never forms the n x n matrix; its counts
 !! (Jacobian evaluations, factorisations) are kept as for the dense path.
+!!
+!! The integrator.  An abstract type that the project's integrators extend (LSODA, module
+!! lsoda; Radau IIA, module radau), with one statistics type.  A driver holds a `class(integrator_t), allocatable` made by module
+!! integrators (new_integrator) and never asks which integrator it is, except for the name
+!! it writes into its output.
+!!
+!! The calls:
+!! - init(sys, t0, y0, rtol, atol, stat [, tcrit, h0, hmax, max_steps]): start at (t0, y0);
+!!   atol of size 1 or n; no step goes past tcrit; h0 the first step to try (else
+!!   estimated); hmax the largest step; max_steps the most steps in one call of integrate;
+!! - step(sys, stat [, tout]): one internal step (tout before the first: direction, scale);
+!! - integrate(sys, tout, y, stat): steps up to tout and the solution there;
+!! - dense(t, k, dky, stat): the solution (k = 0) or its derivative (k = 1) at t inside the
+!!   last step;
+!! - stats(): the counters (integrator_stats_t);
+!! - set_tcrit([tcrit], [stat]): set or remove the stop time;
+!! - name(): 'lsoda' or 'radau'.
+!! Failures come back in status_t with the integrator's codes of status's STATUS_TABLE.
 module ode_system
     use kinds, only: dp
-    use status, only: status_t
+    use status, only: status_t, LSODA_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_TOO_MUCH_ACCURACY, &
+        RADAU_ERR_STEP_TOO_SMALL
     implicit none
     private
 
@@ -37,6 +57,109 @@ module ode_system
             type(status_t), intent(out) :: stat
         end subroutine rhs_i
     end interface
+
+    !> The method of a step (integrator_stats_t method_last, method_next).
+    integer, parameter, public :: METHOD_ADAMS = 1   !! non-stiff method (Adams-Moulton)
+    integer, parameter, public :: METHOD_BDF = 2     !! stiff method (backward differentiation)
+    integer, parameter, public :: METHOD_RADAU = 3   !! Radau IIA, order 5
+
+    !> Counters and the state of the method, as returned by integrator_t%stats().
+    type, public :: integrator_stats_t
+        integer :: steps = 0            !! accepted steps since init
+        integer :: rhs_evals = 0        !! calls of sys%rhs (including finite-difference Jacobians)
+        integer :: jac_evals = 0        !! Jacobian evaluations (analytic or finite differences)
+        integer :: lu_decomps = 0       !! LU factorisations of the iteration matrix (Radau: the
+                                        !! real and the complex one count 1)
+        integer :: conv_failures = 0    !! step attempts rejected: the corrector (Newton)
+                                        !! iteration did not converge
+        integer :: error_test_failures = 0  !! step attempts rejected by the local error test
+        integer :: newton_iterations = 0    !! Radau: simplified Newton iterations
+        integer :: method_switches = 0  !! LSODA: switches Adams <-> BDF
+        integer :: method_last = 0      !! METHOD_ADAMS, METHOD_BDF or METHOD_RADAU, last step
+        integer :: order_last = 0       !! order used on the last step
+        integer :: method_next = 0      !! method to be tried on the next step
+        integer :: order_next = 0       !! order to be tried on the next step
+        real(dp) :: h_last = 0.0_dp     !! last step size taken (signed)
+        real(dp) :: h_next = 0.0_dp     !! step size to be tried next (signed)
+        real(dp) :: t_current = 0.0_dp  !! time reached by the integration (end of last step)
+    end type integrator_stats_t
+
+    !> One integration by one of the project's integrators.
+    type, abstract, public :: integrator_t
+    contains
+        procedure(init_i), deferred :: init
+        procedure(integrate_i), deferred :: integrate
+        procedure(step_i), deferred :: step
+        procedure(dense_i), deferred :: dense
+        procedure(stats_i), deferred :: stats
+        procedure(set_tcrit_i), deferred :: set_tcrit
+        procedure(name_i), deferred :: name
+    end type integrator_t
+
+    abstract interface
+        !> Start an integration at (t0, y0).
+        subroutine init_i(s, sys, t0, y0, rtol, atol, stat, tcrit, h0, hmax, max_steps)
+            import :: integrator_t, ode_system_t, dp, status_t
+            class(integrator_t), intent(inout) :: s
+            class(ode_system_t), intent(inout) :: sys
+            real(dp), intent(in) :: t0                  !! initial time
+            real(dp), intent(in) :: y0(:)               !! initial state (size n >= 1)
+            real(dp), intent(in) :: rtol                !! relative tolerance
+            real(dp), intent(in) :: atol(:)             !! absolute tolerance, size 1 or n
+            type(status_t), intent(out) :: stat
+            real(dp), intent(in), optional :: tcrit     !! no step goes past tcrit
+            real(dp), intent(in), optional :: h0        !! first step to try
+            real(dp), intent(in), optional :: hmax      !! largest |h| (> 0)
+            integer, intent(in), optional :: max_steps  !! most steps in one call of integrate
+        end subroutine init_i
+        !> Steps up to tout and the solution there.
+        subroutine integrate_i(s, sys, tout, y, stat)
+            import :: integrator_t, ode_system_t, dp, status_t
+            class(integrator_t), intent(inout) :: s
+            class(ode_system_t), intent(inout) :: sys
+            real(dp), intent(in) :: tout
+            real(dp), intent(out) :: y(:)
+            type(status_t), intent(out) :: stat
+        end subroutine integrate_i
+        !> One internal step.
+        subroutine step_i(s, sys, stat, tout)
+            import :: integrator_t, ode_system_t, dp, status_t
+            class(integrator_t), intent(inout) :: s
+            class(ode_system_t), intent(inout) :: sys
+            type(status_t), intent(out) :: stat
+            real(dp), intent(in), optional :: tout      !! before the first step: direction
+        end subroutine step_i
+        !> The solution (k = 0) or its derivative (k = 1) at t in the last step.
+        subroutine dense_i(s, t, k, dky, stat)
+            import :: integrator_t, dp, status_t
+            class(integrator_t), intent(in) :: s
+            real(dp), intent(in) :: t
+            integer, intent(in) :: k
+            real(dp), intent(out) :: dky(:)
+            type(status_t), intent(out) :: stat
+        end subroutine dense_i
+        !> The counters.
+        function stats_i(s) result(st)
+            import :: integrator_t, integrator_stats_t
+            class(integrator_t), intent(in) :: s
+            type(integrator_stats_t) :: st
+        end function stats_i
+        !> Set (tcrit present) or remove (absent) the stop time.
+        subroutine set_tcrit_i(s, tcrit, stat)
+            import :: integrator_t, dp, status_t
+            class(integrator_t), intent(inout) :: s
+            real(dp), intent(in), optional :: tcrit
+            type(status_t), intent(out), optional :: stat
+        end subroutine set_tcrit_i
+        !> The integrator's name as written in output files: 'lsoda' or 'radau'.
+        pure function name_i(s) result(nm)
+            import :: integrator_t
+            class(integrator_t), intent(in) :: s
+            character(len=:), allocatable :: nm
+        end function name_i
+    end interface
+
+    public :: too_much_accuracy
 
 contains
 
@@ -95,5 +218,14 @@ contains
         if (.false.) x(1) = 0.0_dp                         ! keep arguments referenced
         if (.false.) stat%code = merge(1, 0, same_type_as(sys, sys))
     end subroutine no_solve_iteration
+
+    !> True when stat is an integrator's refusal of a tolerance below what the machine
+    !! precision allows (LSODA), or a step size that fell below the roundoff of t (Radau).
+    pure logical function too_much_accuracy(stat)
+        type(status_t), intent(in) :: stat
+        too_much_accuracy = stat%code == LSODA_ERR_TOO_MUCH_ACCURACY .or. &
+                            stat%code == RADAU_ERR_TOO_MUCH_ACCURACY .or. &
+                            stat%code == RADAU_ERR_STEP_TOO_SMALL
+    end function too_much_accuracy
 
 end module ode_system

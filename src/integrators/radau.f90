@@ -54,17 +54,14 @@ module radau
     use status, only: status_t, set_error, STATUS_OK, RADAU_ERR_MAX_STEPS, &
         RADAU_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_STEP_TOO_SMALL, RADAU_ERR_ILLEGAL_INPUT, &
         RADAU_ERR_SINGULAR
-    use ode_system, only: ode_system_t
+    use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, METHOD_RADAU
     use lapack_wrap, only: la_lu_factor, la_lu_solve, la_zlu_factor, la_zlu_solve
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
 
-    !> Failure codes in status_t%code (all > 20: distinct from the project's ERR_* codes and
-    !! from LSODA's).
-    !> Method code of this integrator where counters of several integrators meet (module
-    !! lsoda has METHOD_ADAMS = 1, METHOD_BDF = 2).
-    integer, parameter, public :: METHOD_RADAU = 3
+    !> Method code of this integrator in integrator_stats_t (module integrator).
+    public :: METHOD_RADAU
 
     real(dp), parameter :: UROUND = epsilon(1.0_dp)
     integer, parameter :: NEWTON_MAX = 7          !! Newton iterations per attempt
@@ -93,22 +90,9 @@ module radau
         real(dp) :: lag(3) = 0.0_dp             !! 1/(c_j prod_{m /= j} (c_j - c_m)) (dense output)
     end type radau_coeffs_t
 
-    !> Counters and step sizes, as returned by radau_t%stats().
-    type, public :: radau_stats_t
-        integer :: steps = 0                    !! accepted steps since init
-        integer :: rhs_evals = 0                !! calls of sys%rhs (difference Jacobians too)
-        integer :: jac_evals = 0                !! Jacobian evaluations (analytic or differences)
-        integer :: lu_decomps = 0               !! factorisations (real + complex count 1)
-        integer :: newton_iterations = 0        !! simplified Newton iterations
-        integer :: newton_failures = 0          !! attempts abandoned: Newton did not converge
-        integer :: rejected = 0                 !! attempts rejected by the error test
-        real(dp) :: h_last = 0.0_dp             !! last step taken (signed)
-        real(dp) :: h_next = 0.0_dp             !! step to be tried next (signed)
-        real(dp) :: t_current = 0.0_dp          !! time reached (end of the last step)
-    end type radau_stats_t
 
     !> One integration.
-    type, public :: radau_t
+    type, extends(integrator_t), public :: radau_t
         private
         logical :: ready = .false.              ! init succeeded
         logical :: started = .false.            ! direction and first step size chosen
@@ -151,6 +135,7 @@ module radau
         procedure :: dense => radau_dense
         procedure :: stats => radau_get_stats
         procedure :: set_tcrit => radau_set_tcrit
+        procedure :: name => radau_name
     end type radau_t
 
     public :: radau_coefficients
@@ -562,21 +547,34 @@ contains
         call interpolate(s, t, k, dky, stat)
     end subroutine radau_dense
 
-    !> Counters and step sizes (see radau_stats_t).
+    !> Counters and step sizes (see integrator_stats_t).
     function radau_get_stats(s) result(st)
         class(radau_t), intent(in) :: s
-        type(radau_stats_t) :: st
+        type(integrator_stats_t) :: st
         st%steps = s%nst
         st%rhs_evals = s%nfe
         st%jac_evals = s%nje
         st%lu_decomps = s%nlu
         st%newton_iterations = s%nit
-        st%newton_failures = s%nncf
-        st%rejected = s%nrej
+        st%conv_failures = s%nncf
+        st%error_test_failures = s%nrej
+        st%method_switches = 0
+        st%method_last = METHOD_RADAU
+        st%order_last = 5
+        st%method_next = METHOD_RADAU
+        st%order_next = 5
         st%h_last = s%hu
         st%h_next = s%h
         st%t_current = s%t
     end function radau_get_stats
+
+    !> The integrator's name in output files.
+    pure function radau_name(s) result(nm)
+        class(radau_t), intent(in) :: s
+        character(len=:), allocatable :: nm
+        nm = 'radau'
+        if (.false.) nm = merge('radau', 'radau', s%ready)   ! keep s referenced
+    end function radau_name
 
     !> Set (tcrit present) or remove (absent) the hard stop time; it must not lie behind the
     !! time reached (then RADAU_ERR_ILLEGAL_INPUT and the old setting stays).

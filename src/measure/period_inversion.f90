@@ -52,11 +52,12 @@ module period_inversion
     use text, only: itoa, fixed
     use geometry, only: pendulum_t
     use deck, only: deck_t
-    use simulate, only: make_pendulum, start_state, kane_run_start, kane_run_t
+    use rig, only: rig_t, accuracy_t, rig_of, accuracy_of, make_pendulum, start_state, &
+        raised_start, move_b_prime
+    use kane_run, only: kane_run_start, kane_run_t
     use floquet, only: check_torsion_scene, torsion_period
     use random, only: rng_t, rng_stream, rng_normal
     use bifilar_model, only: NSTATE
-    use stepper, only: SOLVER_LSODA
     use run_loop, only: stepped_model_t, row_sink_t, drive
     use output_io, only: out_files_t
     use sweep_engine, only: sweep_options_t, sweep_report_t
@@ -92,12 +93,13 @@ module period_inversion
 
     public :: torsion_period_s, invert_periods, period_budget, period_mc_sample
     public :: period_monte_carlo, linear_inertia, rig_period_s, simulated_period_s
-    public :: is_torsion_rig, move_b_prime, period_mc_payload, period_mc_task
+    public :: is_torsion_rig, period_mc_payload, period_mc_task
 
     !> The samples of a Monte Carlo of periods (period_mc_sample) as a sweep; built by
     !! period_mc_task from the rig and the payload.
     type, extends(mc_task_t), public :: period_mc_task_t
-        type(deck_t) :: d                       !! the rig
+        type(rig_t) :: rg                       !! the rig
+        type(accuracy_t) :: acc                 !! its runs' accuracy (simulated periods)
         real(dp), allocatable :: periods(:), amps(:)    !! measurements (s, degrees)
         type(input_u_t) :: u                    !! standard uncertainties
         real(dp) :: i1_start = 0.0_dp           !! start of each inversion
@@ -133,29 +135,29 @@ contains
     !> The exact period (s) of pure torsion of the deck's rig with I1 = i1 at peak
     !! amplitude amp_deg.  ERR_DECK when the rig is not a torsion scene (equal cables, mass
     !! centre below the midpoint of CD, b1 vertical at rest) or the cables cannot reach.
-    subroutine torsion_period_s(d, i1, amp_deg, t, stat)
-        type(deck_t), intent(in) :: d           !! the rig (deck units)
+    subroutine torsion_period_s(rg, i1, amp_deg, t, stat)
+        type(rig_t), intent(in) :: rg           !! the rig (deck units)
         real(dp), intent(in) :: i1              !! principal moment about b1 (deck units)
         real(dp), intent(in) :: amp_deg         !! peak amplitude of theta4 (degrees)
         real(dp), intent(out) :: t              !! period (s)
         type(status_t), intent(out) :: stat
         type(pendulum_t) :: p
-        call torsion_pendulum(d, i1, p, stat)
+        call torsion_pendulum(rg, i1, p, stat)
         t = 0.0_dp
         if (stat%code /= 0) return
-        call scaled_period(d, p, amp_deg, t, stat)
+        call scaled_period(rg, p, amp_deg, t, stat)
     end subroutine torsion_period_s
 
     !> True when the deck's rig is a torsion scene (equal cables, mass centre on the
     !! vertical bisector of AB, a principal axis vertical at rest): its periods are then
     !! those of pure torsion; else they are simulated.
-    logical function is_torsion_rig(d)
-        type(deck_t), intent(in) :: d           !! the rig
+    logical function is_torsion_rig(rg)
+        type(rig_t), intent(in) :: rg           !! the rig
         type(pendulum_t) :: p
         type(status_t) :: st
         integer :: ivert
         is_torsion_rig = .false.
-        call make_pendulum(d, p, st)
+        call make_pendulum(rg, p, st)
         if (st%code /= 0) return
         call check_torsion_scene(p, ivert, st)
         is_torsion_rig = st%code == 0
@@ -164,51 +166,50 @@ contains
     !> The period (s) of the deck's rig with I1 = i1 at peak amplitude amp_deg: the exact
     !! period of pure torsion (torsion_period_s) on a torsion scene, else the period of the
     !! full model (simulated_period_s).
-    subroutine rig_period_s(d, i1, amp_deg, t, stat)
-        type(deck_t), intent(in) :: d           !! the rig
+    subroutine rig_period_s(rg, acc, i1, amp_deg, t, stat)
+        type(rig_t), intent(in) :: rg           !! the rig
+        type(accuracy_t), intent(in) :: acc     !! accuracy of a simulated period
         real(dp), intent(in) :: i1              !! principal moment about b1 (deck units)
         real(dp), intent(in) :: amp_deg         !! peak amplitude of theta4 (degrees)
         real(dp), intent(out) :: t              !! period (s)
         type(status_t), intent(out) :: stat
-        if (is_torsion_rig(d)) then
-            call torsion_period_s(d, i1, amp_deg, t, stat)
+        if (is_torsion_rig(rg)) then
+            call torsion_period_s(rg, i1, amp_deg, t, stat)
         else
-            call simulated_period_s(d, i1, amp_deg, t, stat)
+            call simulated_period_s(rg, acc, i1, amp_deg, t, stat)
         end if
     end subroutine rig_period_s
 
     !> The period (s) of the full model (any rig) with I1 = i1: the time from release at
     !! rest at theta4 = amp_deg (&start mode 'raised' at that amplitude, no tilt, no
     !! damping) to the next maximum of theta4 (see the module header).  Integrated with the
-    !! deck's rtol and atol (LSODA), in memory, through the run loop.
-    subroutine simulated_period_s(d, i1, amp_deg, t, stat)
-        type(deck_t), intent(in) :: d           !! the rig
+    !! accuracy acc (the deck's rtol, atol and integrator), in memory, through the run loop.
+    subroutine simulated_period_s(rg, acc, i1, amp_deg, t, stat)
+        type(rig_t), intent(in) :: rg           !! the rig
+        type(accuracy_t), intent(in) :: acc     !! rtol, atol, integrator
         real(dp), intent(in) :: i1              !! principal moment about b1 (deck units)
         real(dp), intent(in) :: amp_deg         !! peak amplitude of theta4 (degrees)
         real(dp), intent(out) :: t              !! period (s)
         type(status_t), intent(out) :: stat
-        type(deck_t) :: dd
+        type(rig_t) :: rr
         type(pendulum_t) :: p
         type(kane_run_t) :: m
         type(period_sink_t) :: sink
         real(dp) :: y0(NSTATE), th0(5), t_end, jz
         t = 0.0_dp
-        dd = d
-        dd%inertia(1) = i1
-        dd%mode = 'raised'
-        dd%amplitude = amp_deg
-        dd%tilt = 0.0_dp
-        dd%c_v = 0.0_dp
-        dd%c_q = 0.0_dp
-        call make_pendulum(dd, p, stat)
+        rr = rg
+        rr%inertia(1) = i1
+        rr%c_v = 0.0_dp
+        rr%c_q = 0.0_dp
+        call make_pendulum(rr, p, stat)
         if (stat%code /= 0) return
-        call start_state(dd, p, y0, th0, stat)
+        call start_state(raised_start(amp_deg), p, y0, th0, stat)
         if (stat%code /= 0) return
         ! an end well beyond the period: PERIODS_MAX small-amplitude periods of the body
         ! turning about the vertical through its mass centre's offset from O, or about O
         jz = p%inertia(1) + p%r**2 + 0.25_dp
         t_end = PERIODS_MAX*4.0_dp*pi*sqrt(jz*p%big_l/p%big_b)
-        call kane_run_start(m, p, y0, th0(3), d%rtol, d%atol, SOLVER_LSODA, t_end, &
+        call kane_run_start(m, p, y0, th0(3), acc%rtol, acc%atol, acc%method, t_end, &
                             'raise &integration rtol/atol', stat)
         if (stat%code /= 0) return
         sink%watch_steps = .true.
@@ -223,7 +224,7 @@ contains
                 'tau = '//fixed(t_end, 3)//'; the rig does not swing in torsion')
             return
         end if
-        t = sink%t_max*sqrt(d%b_prime/d%g)
+        t = sink%t_max*sqrt(rg%b_prime/rg%g)
     end subroutine simulated_period_s
 
     !> period_sink_t takes no rows.
@@ -288,16 +289,16 @@ contains
 
     !> Scaled parameters of the rig with I1 = i1, checked to be a torsion scene with b1
     !! vertical at rest.
-    subroutine torsion_pendulum(d, i1, p, stat)
-        type(deck_t), intent(in) :: d
+    subroutine torsion_pendulum(rg, i1, p, stat)
+        type(rig_t), intent(in) :: rg
         real(dp), intent(in) :: i1
         type(pendulum_t), intent(out) :: p
         type(status_t), intent(out) :: stat
-        type(deck_t) :: dd
+        type(rig_t) :: rr
         integer :: ivert
-        dd = d
-        dd%inertia(1) = i1
-        call make_pendulum(dd, p, stat)
+        rr = rg
+        rr%inertia(1) = i1
+        call make_pendulum(rr, p, stat)
         if (stat%code /= 0) return
         call check_torsion_scene(p, ivert, stat)
         if (stat%code /= 0) return
@@ -306,21 +307,22 @@ contains
     end subroutine torsion_pendulum
 
     !> Period in seconds of the scaled pendulum p (period in tau over sqrt(g/b')).
-    subroutine scaled_period(d, p, amp_deg, t, stat)
-        type(deck_t), intent(in) :: d
+    subroutine scaled_period(rg, p, amp_deg, t, stat)
+        type(rig_t), intent(in) :: rg
         type(pendulum_t), intent(in) :: p
         real(dp), intent(in) :: amp_deg
         real(dp), intent(out) :: t
         type(status_t), intent(out) :: stat
         call torsion_period(p, amp_deg*deg, 1, t, stat)
-        t = t*sqrt(d%b_prime/d%g)
+        t = t*sqrt(rg%b_prime/rg%g)
     end subroutine scaled_period
 
     !> I1 by weighted least squares from periods (s) measured at peak amplitudes (degrees).
-    !! Starts from d%inertia(1).  ERR_DECK for a period no positive I1 can give (or not a
+    !! Starts from rg%inertia(1).  ERR_DECK for a period no positive I1 can give (or not a
     !! torsion scene); ERR_NUMERIC when Gauss-Newton does not converge.
-    subroutine invert_periods(d, periods, amps, u, fit, stat)
-        type(deck_t), intent(in) :: d           !! the rig; inertia(1) is the start guess
+    subroutine invert_periods(rg, acc, periods, amps, u, fit, stat)
+        type(rig_t), intent(in) :: rg           !! the rig; inertia(1) is the start guess
+        type(accuracy_t), intent(in) :: acc     !! accuracy of simulated periods
         real(dp), intent(in) :: periods(:)      !! measured full periods (s)
         real(dp), intent(in) :: amps(:)         !! their peak amplitudes (degrees)
         type(input_u_t), intent(in) :: u        !! uncertainties (weights from period, amplitude)
@@ -340,8 +342,8 @@ contains
                 'amplitude per period and at least one period')
             return
         end if
-        scale = d%mass*d%b_prime**2
-        sym = is_torsion_rig(d)
+        scale = rg%mass*rg%b_prime**2
+        sym = is_torsion_rig(rg)
         ilo = merge(I_TINY, I_TINY_SIM, sym)*scale
         ! feasibility: T(I1) > T(0+) for every period (asymmetric rigs: see below); weights
         ! from the amplitudes' effect
@@ -358,7 +360,7 @@ contains
                 return
             end if
         end do
-        i1 = d%inertia(1)
+        i1 = rg%inertia(1)
         if (.not. (i1 > ilo)) i1 = scale
         w = 1.0_dp
         if (u%period > 0.0_dp .or. u%amplitude > 0.0_dp) then
@@ -462,9 +464,9 @@ contains
             real(dp), intent(out) :: tp
             type(status_t), intent(out) :: st
             if (sym) then
-                call torsion_period_s(d, ii, a, tp, st)
+                call torsion_period_s(rg, ii, a, tp, st)
             else
-                call simulated_period_s(d, ii, a, tp, st)
+                call simulated_period_s(rg, acc, ii, a, tp, st)
             end if
         end subroutine period_of
     end subroutine invert_periods
@@ -473,8 +475,9 @@ contains
     !! b_prime, g, then period(i) and amplitude(i) for each period) and fit%u_i1.  The
     !! sensitivities are central differences of the whole inversion (relative step 1e-6;
     !! 1e-4 for an asymmetric rig, whose periods are simulated).
-    subroutine period_budget(d, periods, amps, u, fit, stat)
-        type(deck_t), intent(in) :: d           !! the rig
+    subroutine period_budget(rg, acc, periods, amps, u, fit, stat)
+        type(rig_t), intent(in) :: rg           !! the rig
+        type(accuracy_t), intent(in) :: acc     !! accuracy of simulated periods
         real(dp), intent(in) :: periods(:)      !! measured periods (s)
         real(dp), intent(in) :: amps(:)         !! their amplitudes (degrees)
         type(input_u_t), intent(in) :: u        !! standard uncertainties
@@ -485,7 +488,7 @@ contains
         character(len=24) :: nm
         logical :: sym
         n = size(periods)
-        sym = is_torsion_rig(d)
+        sym = is_torsion_rig(rg)
         hrel = merge(FD_REL, FD_REL_SIM, sym)
         if (allocated(fit%budget)) deallocate (fit%budget)
         allocate (fit%budget(6 + 2*n))
@@ -493,17 +496,17 @@ contains
         do k = 1, 6 + 2*n
             select case (k)
             case (1)
-                call row('mass', d%mass, u%mass)
+                call row('mass', rg%mass, u%mass)
             case (2)
-                call row('l', d%l, u%l)
+                call row('l', rg%l, u%l)
             case (3)
-                call row('l_prime', d%l_prime, u%l_prime)
+                call row('l_prime', rg%l_prime, u%l_prime)
             case (4)
-                call row('b', d%b, u%b)
+                call row('b', rg%b, u%b)
             case (5)
-                call row('b_prime', d%b_prime, u%b_prime)
+                call row('b_prime', rg%b_prime, u%b_prime)
             case (6)
-                call row('g', d%g, u%g)
+                call row('g', rg%g, u%g)
             case default
                 i = k - 6
                 if (i <= n) then
@@ -538,10 +541,10 @@ contains
             real(dp), intent(in) :: v
             real(dp), intent(out) :: i1
             type(status_t), intent(out) :: st
-            type(deck_t) :: dd
+            type(rig_t) :: dd
             type(period_fit_t) :: f2
             real(dp) :: pp(n), aa(n)
-            dd = d
+            dd = rg
             dd%inertia(1) = fit%i1
             pp = periods
             aa = amps
@@ -551,8 +554,8 @@ contains
             case ('l', 'l_prime')
                 if (sym) then
                     ! mirror symmetry: each cable carries half the effect of the common length
-                    dd%l = d%l + 0.5_dp*(v - x_of(name))
-                    dd%l_prime = d%l_prime + 0.5_dp*(v - x_of(name))
+                    dd%l = rg%l + 0.5_dp*(v - x_of(name))
+                    dd%l_prime = rg%l_prime + 0.5_dp*(v - x_of(name))
                 else if (name == 'l') then
                     dd%l = v
                 else
@@ -571,38 +574,25 @@ contains
                     aa(k - 6 - n) = v
                 end if
             end select
-            call invert_periods(dd, pp, aa, u, f2, st)
+            call invert_periods(dd, acc, pp, aa, u, f2, st)
             i1 = f2%i1
         end subroutine inverted
         pure real(dp) function x_of(name)
             character(len=*), intent(in) :: name
             if (name == 'l') then
-                x_of = d%l
+                x_of = rg%l
             else
-                x_of = d%l_prime
+                x_of = rg%l_prime
             end if
         end function x_of
     end subroutine period_budget
 
-    !> Set b' to v moving both body attachment points symmetrically: the mass centre keeps
-    !! its depth r sin(lambda) below CD and its offset r cos(lambda) - b'/2 from the
-    !! midpoint of CD.
-    pure subroutine move_b_prime(d, v)
-        type(deck_t), intent(inout) :: d        !! rig to change
-        real(dp), intent(in) :: v               !! new b'
-        real(dp) :: depth, along
-        depth = d%r*sin(d%lambda)
-        along = d%r*cos(d%lambda) - 0.5_dp*d%b_prime + 0.5_dp*v
-        d%b_prime = v
-        d%r = sqrt(depth**2 + along**2)
-        d%lambda = atan2(depth, along)
-    end subroutine move_b_prime
-
     !> Monte Carlo sample k: every input drawn from N(value, u^2) with stream k of `seed`
     !! (draw order: mass, l, l_prime, b, b_prime, g, then period and amplitude of each
     !! measurement), then the inversion again; i1 is that sample's I1.
-    subroutine period_mc_sample(d, periods, amps, u, i1_start, seed, k, i1, stat)
-        type(deck_t), intent(in) :: d           !! the rig
+    subroutine period_mc_sample(rg, acc, periods, amps, u, i1_start, seed, k, i1, stat)
+        type(rig_t), intent(in) :: rg           !! the rig
+        type(accuracy_t), intent(in) :: acc     !! accuracy of simulated periods
         real(dp), intent(in) :: periods(:), amps(:)   !! measurements (s, degrees)
         type(input_u_t), intent(in) :: u        !! standard uncertainties
         real(dp), intent(in) :: i1_start        !! start of the inversion (e.g. the estimate)
@@ -610,31 +600,31 @@ contains
         real(dp), intent(out) :: i1             !! the sample's I1
         type(status_t), intent(out) :: stat
         type(rng_t) :: g
-        type(deck_t) :: dd
+        type(rig_t) :: dd
         type(period_fit_t) :: f
         real(dp) :: pp(size(periods)), aa(size(amps)), la, lb
         integer :: i
         g = rng_stream(seed, k)
-        dd = d
+        dd = rg
         dd%inertia(1) = i1_start
-        dd%mass = d%mass + u%mass*rng_normal(g)
-        la = d%l + u%l*rng_normal(g)
-        lb = d%l_prime + u%l_prime*rng_normal(g)
-        if (is_torsion_rig(d)) then
+        dd%mass = rg%mass + u%mass*rng_normal(g)
+        la = rg%l + u%l*rng_normal(g)
+        lb = rg%l_prime + u%l_prime*rng_normal(g)
+        if (is_torsion_rig(rg)) then
             dd%l = 0.5_dp*(la + lb)
             dd%l_prime = dd%l
         else
             dd%l = la
             dd%l_prime = lb
         end if
-        dd%b = d%b + u%b*rng_normal(g)
-        call move_b_prime(dd, d%b_prime + u%b_prime*rng_normal(g))
-        dd%g = d%g + u%g*rng_normal(g)
+        dd%b = rg%b + u%b*rng_normal(g)
+        call move_b_prime(dd, rg%b_prime + u%b_prime*rng_normal(g))
+        dd%g = rg%g + u%g*rng_normal(g)
         do i = 1, size(periods)
             pp(i) = periods(i) + u%period*rng_normal(g)
             aa(i) = amps(i) + u%amplitude*rng_normal(g)
         end do
-        call invert_periods(dd, pp, aa, u, f, stat)
+        call invert_periods(dd, acc, pp, aa, u, f, stat)
         i1 = f%i1
         if (stat%code /= 0) then
             stat%msg = 'Monte Carlo sample '//itoa(k)//': '//stat%msg
@@ -649,7 +639,7 @@ contains
     !! files, removed on a signal).
     subroutine period_monte_carlo(d, periods, amps, u, i1_start, n, seed, mean, sdev, stat, &
                                   outdir, options, report, files)
-        type(deck_t), intent(in) :: d           !! the rig
+        type(deck_t), intent(in) :: d           !! the deck (its rig, accuracy, name)
         real(dp), intent(in) :: periods(:), amps(:)   !! measurements (s, degrees)
         type(input_u_t), intent(in) :: u        !! standard uncertainties
         real(dp), intent(in) :: i1_start        !! start of each inversion
@@ -690,14 +680,15 @@ contains
              u%amplitude, real(size(periods), dp), periods, amps]
     end function period_mc_payload
 
-    !> The samples of a periods Monte Carlo of the rig d from their payload
+    !> The samples of a periods Monte Carlo of the deck's rig from their payload
     !! (period_mc_payload): the task rank 0 runs and the other ranks of an MPI run build.
     pure subroutine period_mc_task(d, payload, task)
-        type(deck_t), intent(in) :: d           !! the rig
+        type(deck_t), intent(in) :: d           !! the deck (its rig and accuracy)
         real(dp), intent(in) :: payload(:)      !! period_mc_payload
         type(period_mc_task_t), intent(out) :: task
         integer :: np
-        task%d = d
+        task%rg = rig_of(d)
+        task%acc = accuracy_of(d)
         task%seed = nint(payload(1))
         task%i1_start = payload(2)
         task%u = input_u_t(mass=payload(3), l=payload(4), l_prime=payload(5), b=payload(6), &
@@ -715,17 +706,17 @@ contains
         integer, intent(in) :: k                !! sample number
         real(dp), intent(out) :: est(:)         !! I1
         type(status_t), intent(out) :: stat
-        call period_mc_sample(self%d, self%periods, self%amps, self%u, self%i1_start, &
+        call period_mc_sample(self%rg, self%acc, self%periods, self%amps, self%u, self%i1_start, &
                               self%seed, k, est(1), stat)
     end subroutine period_mc_point
 
     !> The classical small-amplitude formula I1 = m g b b' T^2 / (16 pi^2 l) (deck units),
     !! with l the mean of the two cable lengths, (l + l')/2, as it is applied to a rig whose
     !! cables differ.
-    pure real(dp) function linear_inertia(d, t) result(i1)
-        type(deck_t), intent(in) :: d           !! the rig
+    pure real(dp) function linear_inertia(rg, t) result(i1)
+        type(rig_t), intent(in) :: rg           !! the rig
         real(dp), intent(in) :: t               !! period (s)
-        i1 = d%mass*d%g*d%b*d%b_prime*t**2/(16.0_dp*pi**2*(0.5_dp*(d%l + d%l_prime)))
+        i1 = rg%mass*rg%g*rg%b*rg%b_prime*t**2/(16.0_dp*pi**2*(0.5_dp*(rg%l + rg%l_prime)))
     end function linear_inertia
 
 end module period_inversion

@@ -30,7 +30,8 @@ module bifilar_model
     use geometry, only: pendulum_t, pose_t, pose_of, body_pose, frame, body_axes, &
                         cable_direction, mass_centre, point_e
     use kinematics, only: omega_partials, omega_conv, v_partials, vdot_partials, &
-                          omega_partials_tangent, omega_conv_tangent, cross
+                          omega_partials_tangent, omega_conv_tangent
+    use vectors, only: cross
     use gen_forces, only: generalized_inertia, inertia_torque, project
     use lapack_wrap, only: la_small_chol, la_small_chol_solve
     implicit none

@@ -41,8 +41,9 @@ module elastic_gen
     use status, only: status_t, set_error, ERR_NUMERIC, STATUS_OK, GEN_ERR_CHART
     use ode_system, only: ode_system_t
     use lapack_wrap, only: la_solve
+    use vectors, only: cross
     use elastic_model, only: elastic_t, natural_lengths, matrix_to_quat, elastic_pose, &
-                             elastic_rhs_stretched, cross, ELASTIC_NSTATE
+                             elastic_rhs_stretched, ELASTIC_NSTATE
     implicit none
     private
 

@@ -58,6 +58,7 @@ module elastic_model
     use ode_system, only: ode_system_t
     use geometry, only: pendulum_t, direction_cosines, cable_direction, body_axes
     use kinematics, only: omega_coeffs
+    use vectors, only: cross
     use gen_forces, only: inertia_dyadic
     use bifilar_model, only: motion_t, chart_state, paper_angles, evaluate
     implicit none
@@ -96,7 +97,7 @@ module elastic_model
     public :: elastic_from_chart, elastic_from_angles, elastic_evaluate, elastic_chart
     public :: elastic_energy, elastic_pose, quat_to_matrix, matrix_to_quat, elastic_start
     public :: natural_lengths, elastic_atol, cable_switch, stretch_frequency
-    public :: elastic_rhs_stretched, cable_switch_stretched, cross
+    public :: elastic_rhs_stretched, cable_switch_stretched
 
 contains
 
@@ -118,13 +119,6 @@ contains
         ib = inertia_dyadic(p%btilde, p%inertia)
         ibinv = inertia_dyadic(p%btilde, 1.0_dp/p%inertia)
     end subroutine body_inertia
-
-    !> The cross product a x b of two vectors.
-    pure function cross(a, b) result(c)
-        real(dp), intent(in) :: a(3), b(3)
-        real(dp) :: c(3)
-        c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
-    end function cross
 
     !> Rotation matrix of the quaternion q/|q| (w, x, y, z): body components -> n components.
     pure function quat_to_matrix(q) result(r)

@@ -21,7 +21,7 @@
 !! derivative of the right-hand side in bifilar_model's eom_tangent, through omega's change.)
 module gen_forces
     use kinds, only: dp
-    use kinematics, only: cross
+    use vectors, only: cross
     implicit none
     private
 

@@ -21,13 +21,14 @@
 !! pose and call the pose forms; they serve the tests and the elastic model.
 module kinematics
     use kinds, only: dp
+    use vectors, only: cross
     use geometry, only: pendulum_t, pose_t, pose_of, body_pose
     implicit none
     private
 
     public :: omega_coeffs, omega_dot_quadratic, v_coeffs, vdot_coeffs
     public :: omega_partials, omega_conv, v_partials, vdot_partials
-    public :: omega_partials_tangent, omega_conv_tangent, cross
+    public :: omega_partials_tangent, omega_conv_tangent
 
 contains
 
@@ -189,14 +190,5 @@ contains
         real(dp) :: vd(3, 5)
         call vdot_partials(p, pose_of(th, p%lambda), thd, vd)
     end function vdot_coeffs
-
-    !> Vector product a x b.
-    pure function cross(a, b) result(c)
-        real(dp), intent(in) :: a(3), b(3)
-        real(dp) :: c(3)
-        c(1) = a(2)*b(3) - a(3)*b(2)
-        c(2) = a(3)*b(1) - a(1)*b(3)
-        c(3) = a(1)*b(2) - a(2)*b(1)
-    end function cross
 
 end module kinematics

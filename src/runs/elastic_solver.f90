@@ -33,10 +33,15 @@
 !! where the motion of the cables changes quickly.
 module elastic_solver
     use kinds, only: dp
-    use status, only: status_t, set_error, ERR_NUMERIC, STATUS_OK, GEN_ERR_CHART
-    use lsoda, only: lsoda_stats_t, METHOD_BDF
-    use stepper, only: stepper_t, SOLVER_LSODA, SOLVER_RADAU
-    use elastic_model, only: elastic_t, cable_switch, cable_switch_stretched, natural_lengths, &
+    use status, only: status_t, set_error, ERR_NUMERIC, ERR_MODEL, STATUS_OK, GEN_ERR_CHART
+    use text, only: sci, fixed
+    use bifilar_model, only: motion_t
+    use run_loop, only: stepped_model_t
+    use ode_system, only: integrator_t, integrator_stats_t, METHOD_BDF
+    use lsoda, only: lsoda_t
+    use integrators, only: new_integrator, SOLVER_LSODA, SOLVER_RADAU
+    use elastic_model, only: elastic_t, elastic_cables_t, elastic_evaluate, cable_switch, &
+                             cable_switch_stretched, natural_lengths, &
                              ELASTIC_NSTATE, CABLE_TAUT, CABLE_SLACK
     use elastic_gen, only: elastic_gen_t, gen_to_maximal, maximal_to_gen, chart_quality, &
                            GEN_NSTATE
@@ -50,7 +55,7 @@ module elastic_solver
     !> Chatter: this many switches in a row, each after at most QUICK_STEPS steps of its
     !! mode, stop the integration (the tolerance does not resolve the cables' stretch).
     integer, parameter :: MAX_QUICK_SWITCHES = 100, QUICK_STEPS = 2
-    !> The integrators (elastic_solver_t%init method; module stepper).
+    !> The integrators (elastic_solver_t%init method; module integrators).
     public :: SOLVER_LSODA, SOLVER_RADAU
     !> The coordinates of a segment: maximal (elastic_model) or generalized (elastic_gen).
     integer, parameter :: COORDS_MAX = 1, COORDS_GEN = 2
@@ -73,7 +78,7 @@ module elastic_solver
     type, public :: elastic_solver_t
         private
         integer :: method = SOLVER_RADAU        ! SOLVER_RADAU or SOLVER_LSODA
-        type(stepper_t) :: it                   ! the integrator of the current segment
+        class(integrator_t), allocatable :: it  ! the integrator of the current segment
         logical :: use_gen = .true.             ! Radau: generalized coordinates where regular
         real(dp) :: quality_leave = QUALITY_LEAVE   ! the chart's limits (es_init chart_limits)
         real(dp) :: quality_enter = QUALITY_ENTER
@@ -94,7 +99,7 @@ module elastic_solver
         logical :: pending = .false.            ! a switch located, restart at the next step
         real(dp) :: y_switch(ELASTIC_NSTATE) = 0.0_dp
         integer :: mode_next(2) = CABLE_TAUT
-        type(lsoda_stats_t) :: done             ! counters of the finished LSODA segments
+        type(integrator_stats_t) :: done             ! counters of the finished LSODA segments
         integer :: n_switches = 0
         integer :: quick = 0                    ! switches in a row after <= QUICK_STEPS steps
         real(dp) :: slack_t(2) = 0.0_dp
@@ -113,6 +118,21 @@ module elastic_solver
         procedure :: slack_intervals => es_slack_intervals
         procedure :: slack_list => es_slack_list
     end type elastic_solver_t
+
+    !> A run of the elastic-cable model for the run loop.
+    type, extends(stepped_model_t), public :: elastic_run_t
+        type(elastic_t) :: sys
+        type(elastic_solver_t) :: solver
+        real(dp) :: th_step(5) = 0.0_dp         !! the paper's angles at the last step's end
+        real(dp) :: t_end = 0.0_dp
+    contains
+        procedure :: advance => elastic_advance
+        procedure :: dense => elastic_dense
+    end type elastic_run_t
+
+    !> model = 'elastic': the largest cable strain accepted (a cable stretched to twice its
+    !! natural length is no longer a cable; raise &cables stiffness).
+    real(dp), parameter, public :: STRAIN_MAX = 1.0_dp
 
     public :: initial_modes
 
@@ -151,6 +171,7 @@ contains
         s%method = SOLVER_RADAU
         if (present(method)) s%method = method
         if (s%adams_only) s%method = SOLVER_LSODA
+        if (allocated(s%it)) deallocate (s%it)     ! start_segment makes the run's integrator
         s%use_gen = s%method == SOLVER_RADAU
         if (present(maximal_only)) s%use_gen = s%use_gen .and. .not. maximal_only
         s%quality_leave = QUALITY_LEAVE
@@ -169,7 +190,7 @@ contains
         s%t_now = t0
         s%t_prev = t0
         s%pending = .false.
-        s%done = lsoda_stats_t()
+        s%done = integrator_stats_t()
         s%n_switches = 0
         s%quick = 0
         s%slack_t = 0.0_dp
@@ -215,33 +236,35 @@ contains
         ! step that met a singularity of the chart
         if (s%segment_started .and. s%coords /= before) s%n_recoords = s%n_recoords + 1
         s%segment_started = .true.
+        if (.not. allocated(s%it)) call new_integrator(s%method, s%it)
+        select type (it => s%it)
+        type is (lsoda_t)
+            call it%set_options(start_bdf=bdf .and. .not. s%adams_only, &
+                                nonstiff_only=s%adams_only)
+        end select
         if (s%coords == COORDS_GEN) then
             s%yg_ref = yg
             s%have_ref = .true.
             if (s%have_tcrit) then
-                call s%it%init(s%gen, t0, yg, s%rtol, s%atol(1:1), stat, SOLVER_RADAU, &
-                               tcrit=s%tcrit, h0=h0)
+                call s%it%init(s%gen, t0, yg, s%rtol, s%atol(1:1), stat, tcrit=s%tcrit, h0=h0)
             else
-                call s%it%init(s%gen, t0, yg, s%rtol, s%atol(1:1), stat, SOLVER_RADAU, h0=h0)
+                call s%it%init(s%gen, t0, yg, s%rtol, s%atol(1:1), stat, h0=h0)
             end if
         else if (s%method == SOLVER_RADAU .and. s%have_tcrit) then
-            call s%it%init(sys, t0, y0, s%rtol, s%atol(1:1), stat, SOLVER_RADAU, &
-                           tcrit=s%tcrit, h0=h0)
+            call s%it%init(sys, t0, y0, s%rtol, s%atol(1:1), stat, tcrit=s%tcrit, h0=h0)
         else if (s%method == SOLVER_RADAU) then
-            call s%it%init(sys, t0, y0, s%rtol, s%atol(1:1), stat, SOLVER_RADAU, h0=h0)
+            call s%it%init(sys, t0, y0, s%rtol, s%atol(1:1), stat, h0=h0)
         else if (s%have_tcrit) then
-            call s%it%init(sys, t0, y0, s%rtol, s%atol, stat, SOLVER_LSODA, tcrit=s%tcrit, &
-                           start_bdf=bdf .and. .not. s%adams_only, nonstiff_only=s%adams_only)
+            call s%it%init(sys, t0, y0, s%rtol, s%atol, stat, tcrit=s%tcrit)
         else
-            call s%it%init(sys, t0, y0, s%rtol, s%atol, stat, SOLVER_LSODA, &
-                           start_bdf=bdf .and. .not. s%adams_only, nonstiff_only=s%adams_only)
+            call s%it%init(sys, t0, y0, s%rtol, s%atol, stat)
         end if
     end subroutine start_segment
 
-    !> The counters of the current segment's integrator (module stepper: in LSODA's terms).
+    !> The counters of the current segment's integrator.
     function segment_stats(s) result(st)
         type(elastic_solver_t), intent(in) :: s
-        type(lsoda_stats_t) :: st
+        type(integrator_stats_t) :: st
         st = s%it%stats()
     end function segment_stats
 
@@ -276,7 +299,7 @@ contains
         type(elastic_t), intent(inout) :: sys
         type(status_t), intent(out) :: stat     !! the integrator's failure, with the time
         real(dp), intent(in), optional :: tout  !! as lsoda_t%step, radau_t%step
-        type(lsoda_stats_t) :: st
+        type(integrator_stats_t) :: st
         real(dp) :: y(ELASTIC_NSTATE), ys(ELASTIC_NSTATE), t0, t1, a, b, quality
         logical :: sw(2), bdf, near, recoord
         integer :: attempt, i, nsam
@@ -519,8 +542,8 @@ contains
 
     !> Add the counters of a finished segment to the totals.
     pure subroutine add_counts(total, seg)
-        type(lsoda_stats_t), intent(inout) :: total
-        type(lsoda_stats_t), intent(in) :: seg
+        type(integrator_stats_t), intent(inout) :: total
+        type(integrator_stats_t), intent(in) :: seg
         total%steps = total%steps + seg%steps
         total%rhs_evals = total%rhs_evals + seg%rhs_evals
         total%jac_evals = total%jac_evals + seg%jac_evals
@@ -588,7 +611,7 @@ contains
     !! switch ended it).
     function es_stats(s) result(st)
         class(elastic_solver_t), intent(in) :: s
-        type(lsoda_stats_t) :: st
+        type(integrator_stats_t) :: st
         st = segment_stats(s)
         call add_counts(st, s%done)
         st%t_current = s%t_now
@@ -627,5 +650,44 @@ contains
         type(slack_interval_t), allocatable :: list(:)
         list = s%intervals(1:s%n_intervals)
     end function es_slack_list
+
+    !> One step of the elastic model (elastic_solver: taut/slack switches located), the
+    !! sanity limit of the cables' strain checked at its end.
+    subroutine elastic_advance(m, stat)
+        class(elastic_run_t), intent(inout) :: m
+        type(status_t), intent(out) :: stat
+        type(integrator_stats_t) :: st
+        type(motion_t) :: mo2
+        type(elastic_cables_t) :: cab
+        call m%solver%step(m%sys, stat, tout=m%t_end)
+        st = m%solver%stats()
+        if (stat%code /= 0) then
+            stat%msg = stat%msg//' at tau = '//fixed(st%t_current, 6)
+            return
+        end if
+        m%nsteps = m%nsteps + 1
+        m%t_cur = st%t_current
+        m%h_cur = st%h_last
+        call m%solver%dense(st%t_current, 0, m%ystep, stat)
+        if (stat%code /= 0) return
+        ! the cables at the step end: the sanity limit
+        call elastic_evaluate(m%sys, m%ystep, m%th_step(3), mo2, stat, m%th_step, cab)
+        if (stat%code /= 0) return
+        m%th_step = mo2%th
+        if (maxval(cab%strain) > STRAIN_MAX) then
+            call set_error(stat, ERR_MODEL, 'a cable stretches to more than twice '// &
+                'its natural length at tau = '//fixed(st%t_current, 6)//' (strain '// &
+                sci(maxval(cab%strain))//'): raise &cables stiffness')
+        end if
+    end subroutine elastic_advance
+
+    !> The state at t inside the last step (the integrator's dense output).
+    subroutine elastic_dense(m, t, y, stat)
+        class(elastic_run_t), intent(in) :: m
+        real(dp), intent(in) :: t
+        real(dp), intent(out) :: y(:)
+        type(status_t), intent(out) :: stat
+        call m%solver%dense(t, 0, y, stat)
+    end subroutine elastic_dense
 
 end module elastic_solver

@@ -12,13 +12,14 @@
 !! eigenvalues of the product of the segment matrices (LAPACK DGEEV).  Z is the exact
 !! Jacobian of the chart right-hand side (see jacobian_z).
 module floquet
-    use kinds, only: dp, pi
-    use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC
-    use ode_system, only: ode_system_t
-    use geometry, only: pendulum_t, raised_angles, solve_theta5
+    use kinds, only: dp, pi, deg
+    use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC, ERR_MODEL
+    use ode_system, only: ode_system_t, integrator_t, integrator_stats_t
+    use geometry, only: pendulum_t
+    use start_pose, only: raised_angles, solve_theta5
     use bifilar_model, only: chart_accelerations, chart_state, chart_energy, chart_constraint, &
                              chart_jacobian, NSTATE
-    use lsoda, only: lsoda_t, lsoda_stats_t
+    use integrators, only: new_integrator, SOLVER_LSODA
     use lapack_wrap, only: la_eig, la_geig, la_lu_factor, la_lu_solve, la_lu_solve_many
     implicit none
     private
@@ -115,7 +116,14 @@ module floquet
     integer, parameter, public :: FLOQUET_MAX_STEPS = 20000
 
     public :: check_torsion_scene, torsion_period, jacobian_z, monodromy, floquet_analysis
-    public :: multipliers_from_monodromy, torsion_start, pencil_multipliers
+    public :: multipliers_from_monodromy, torsion_start, pencil_multipliers, floquet_point
+
+    !> Sentinel written for chart points where no analysis is possible (not a torsion scene,
+    !! cables cannot reach, impossible inertia): never NaN.
+    real(dp), parameter, public :: CHART_INVALID = -1.0_dp
+    !> Sentinel written for chart points whose analysis failed (e.g. more than
+    !! FLOQUET_MAX_STEPS steps): never NaN.
+    real(dp), parameter, public :: CHART_FAILED = -2.0_dp
 
 contains
 
@@ -285,7 +293,8 @@ contains
     !! segment matrices (each integrated from H = I).  By default only half a period is
     !! integrated and the reversibility of the equations gives the other half (see below);
     !! `full = .true.` integrates the whole period.
-    subroutine monodromy(p, y0, period, nseg, rtol, h, yend, nsteps, nrhs, stat, full, half, yhalf)
+    subroutine monodromy(p, y0, period, nseg, rtol, h, yend, nsteps, nrhs, stat, full, half, &
+                         yhalf, method)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         real(dp), intent(in) :: y0(NSTATE)      !! start of the orbit: a turning point, at rest
         real(dp), intent(in) :: period          !! t*
@@ -299,15 +308,21 @@ contains
         logical, intent(in), optional :: full   !! integrate the whole period (default: half)
         real(dp), intent(out), optional :: half(NSTATE, NSTATE)  !! H(t*/2) (half-period path)
         real(dp), intent(out), optional :: yhalf(NSTATE)         !! y(t*/2) (half-period path)
+        integer, intent(in), optional :: method  !! SOLVER_LSODA (default) or SOLVER_RADAU
         type(variational_t) :: sys
-        type(lsoda_t) :: s
-        type(lsoda_stats_t) :: st
+        class(integrator_t), allocatable :: s
+        type(integrator_stats_t) :: st
         real(dp) :: y(NV), eye(NSTATE, NSTATE), t0, t1, tend, lu(NSTATE, NSTATE), x(NSTATE)
         real(dp) :: rr(NSTATE), hinv(NSTATE, NSTATE)
         integer :: k, j, ipiv(NSTATE)
         logical :: whole
         whole = .false.
         if (present(full)) whole = full
+        if (present(method)) then
+            call new_integrator(method, s)
+        else
+            call new_integrator(SOLVER_LSODA, s)
+        end if
         tend = period
         if (.not. whole) tend = 0.5_dp*period
         sys%p = p
@@ -372,13 +387,14 @@ contains
     !! H f = f,  grad(E)^T H = grad(E)^T (on the constraint's tangent space, where energy is
     !! conserved),  grad(G')^T H = grad(G')^T,  grad(G)^T H = grad(G)^T + t* grad(G')^T
     !! (largest residual, relative to the vector and to max(1, |H|_F), in res%trivial_residual).
-    subroutine floquet_analysis(p_in, amp, rtol, nseg, res, stat)
+    subroutine floquet_analysis(p_in, amp, rtol, nseg, res, stat, method)
         type(pendulum_t), intent(in) :: p_in    !! scaled parameters (a torsion scene)
         real(dp), intent(in) :: amp             !! amplitude of theta4 (rad)
         real(dp), intent(in) :: rtol            !! integrator tolerance
         integer, intent(in) :: nseg             !! shooting segments
         type(floquet_result_t), intent(out) :: res
         type(status_t), intent(out) :: stat     !! ERR_DECK (scene), ERR_NUMERIC
+        integer, intent(in), optional :: method !! SOLVER_LSODA (default) or SOLVER_RADAU
         type(pendulum_t) :: p
         real(dp) :: y0(NSTATE), yend(NSTATE), h(NSTATE, NSTATE), hh(NSTATE, NSTATE)
         real(dp) :: yh(NSTATE)
@@ -392,7 +408,7 @@ contains
         call torsion_start(p, amp, y0, stat)
         if (stat%code /= 0) return
         call monodromy(p, y0, res%period, nseg, rtol, h, yend, res%steps, &
-                       res%rhs_evaluations, stat, half=hh, yhalf=yh)
+                       res%rhs_evaluations, stat, half=hh, yhalf=yh, method=method)
         if (stat%code /= 0) return
         res%orbit_closure = maxval(abs(yend - y0))
         call multipliers_from_monodromy(p, y0, res%period, h, res, stat)
@@ -596,5 +612,41 @@ contains
         end do
         u = q(:, m + 1:n)
     end subroutine complement_basis
+
+    !> One point of a stability sweep (chart, design): the largest multiplier and the period
+    !! of pure torsion of p at amp_deg, or a sentinel in both: CHART_INVALID where no
+    !! analysis is possible (impossible inertia, not a torsion scene, the cables cannot reach
+    !! the raised position), CHART_FAILED where the analysis failed (e.g. more than
+    !! FLOQUET_MAX_STEPS steps).  Never stops, never NaN.
+    subroutine floquet_point(p, amp_deg, rtol, nseg, modulus, period, method)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters
+        real(dp), intent(in) :: amp_deg         !! torsion amplitude (degrees)
+        real(dp), intent(in) :: rtol            !! integrator tolerance
+        integer, intent(in) :: nseg             !! shooting segments
+        real(dp), intent(out) :: modulus        !! largest |multiplier| (or a sentinel)
+        real(dp), intent(out) :: period         !! t* in units of tau (or a sentinel)
+        integer, intent(in), optional :: method !! SOLVER_LSODA (default) or SOLVER_RADAU
+        type(floquet_result_t) :: res
+        type(status_t) :: st
+        integer :: ivert
+        logical :: valid
+        modulus = CHART_INVALID
+        period = CHART_INVALID
+        valid = all(p%inertia > 0.0_dp) .and. p%inertia(1) <= p%inertia(2) + p%inertia(3) &
+                .and. p%inertia(2) <= p%inertia(1) + p%inertia(3) &
+                .and. p%inertia(3) <= p%inertia(1) + p%inertia(2)
+        if (.not. valid) return
+        call check_torsion_scene(p, ivert, st)
+        if (st%code /= 0) return
+        call floquet_analysis(p, amp_deg*deg, rtol, nseg, res, st, method)
+        if (st%code == 0) then
+            modulus = res%max_modulus
+            period = res%period
+        else if (st%code /= ERR_DECK .and. st%code /= ERR_MODEL) then
+            ! (ERR_DECK, ERR_MODEL: no torsion at this amplitude, CHART_INVALID)
+            modulus = CHART_FAILED
+            period = CHART_FAILED
+        end if
+    end subroutine floquet_point
 
 end module floquet

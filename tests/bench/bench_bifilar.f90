@@ -6,7 +6,8 @@ program bench_bifilar
     use kinds, only: dp, deg
     use status, only: status_t
     use deck, only: deck_t, read_deck
-    use simulate, only: run_simulation, run_summary_t, make_pendulum
+    use simulate, only: run_simulation, run_summary_t
+    use rig, only: rig_of, make_pendulum
     use geometry, only: pendulum_t
     use floquet, only: floquet_result_t, floquet_analysis
     use output_io, only: atomic_open, atomic_commit
@@ -53,7 +54,7 @@ program bench_bifilar
     write (*, '(a20,a14,a8,a8,a14)') 'deck', 'cpu ms', 'steps', 'rhs', 'max modulus'
     do k = 1, size(fdecks)
         call read_deck('input/'//trim(fdecks(k))//'.nml', d, st)
-        call make_pendulum(d, p, st)
+        call make_pendulum(rig_of(d), p, st)
         best = huge(1.0_dp)
         do rep = 1, 10
             call cpu_time(t0)

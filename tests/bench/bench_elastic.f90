@@ -22,15 +22,16 @@ program bench_elastic
     use kinds, only: dp, pi
     use status, only: status_t
     use deck, only: deck_t, read_deck
-    use simulate, only: make_pendulum, start_state
+    use rig, only: rig_of, start_of, make_pendulum, start_state
     use bifilar_model, only: NSTATE
     use elastic_model, only: elastic_t, elastic_start, elastic_atol, elastic_energy, &
                              stretch_frequency, ELASTIC_NSTATE, CABLE_AUTO
     use elastic_solver, only: elastic_solver_t, SOLVER_LSODA, SOLVER_RADAU
-    use lsoda, only: lsoda_stats_t, METHOD_BDF
+    use ode_system, only: METHOD_BDF
     use work_precision, only: solve_rk4_sys
     use output_io, only: atomic_open, atomic_commit
     use test_elastic_radau, only: issue_scene, scene_errors, solve_scene, NOUT, TEND
+    use ode_system, only: integrator_stats_t
     implicit none
     character(len=1024) :: outpath
     character(len=:), allocatable :: base
@@ -51,7 +52,7 @@ contains
         character(len=*), intent(in) :: path
         real(dp), parameter :: zz(3) = [0.01_dp, 0.1_dp, 0.5_dp]
         type(elastic_t) :: el
-        type(lsoda_stats_t) :: st, sl
+        type(integrator_stats_t) :: st, sl
         type(status_t) :: stat
         real(dp) :: y0(ELASTIC_NSTATE), err(2), agree(2), agree_rk(2), ratio(5), worst
         real(dp), allocatable :: yref(:, :), ys(:, :), yh(:, :), times(:)
@@ -119,7 +120,7 @@ contains
         real(dp), parameter :: rr(5) = [1.0e-7_dp, 1.0e-8_dp, 1.0e-9_dp, 1.0e-10_dp, 1.0e-11_dp]
         real(dp), parameter :: rl(3) = [1.0e-8_dp, 1.0e-10_dp, 1.0e-12_dp]
         type(elastic_t) :: el
-        type(lsoda_stats_t) :: st
+        type(integrator_stats_t) :: st
         type(status_t) :: stat
         real(dp) :: y0(ELASTIC_NSTATE), err(2), cpu, c, stiff
         real(dp), allocatable :: yref(:, :), ys(:, :)
@@ -162,7 +163,7 @@ contains
     subroutine row(u, stiff, method, rtol, err, st, cpu)
         integer, intent(in) :: u, method
         real(dp), intent(in) :: stiff, rtol, err, cpu
-        type(lsoda_stats_t), intent(in) :: st
+        type(integrator_stats_t), intent(in) :: st
         write (*, '(es8.0,a7,es8.0,es12.2,i9,i10,i7,f10.4)') stiff, &
             trim(merge('Radau', 'LSODA', method == 2)), rtol, err, st%steps, &
             st%rhs_evals, st%jac_evals, cpu
@@ -179,14 +180,14 @@ contains
         type(status_t) :: st
         type(elastic_t) :: el
         type(elastic_solver_t) :: s
-        type(lsoda_stats_t) :: ls, la, lr, lm
+        type(integrator_stats_t) :: ls, la, lr, lm
         real(dp) :: yc(NSTATE), th0(5), y0(ELASTIC_NSTATE), y(ELASTIC_NSTATE), a(ELASTIC_NSTATE)
         real(dp) :: best, bestr, t0, t1, ws, rk_cpu, adams_cpu
         integer :: j, rep, u, nrk
         call read_deck('input/cylinder_l180.nml', d, st)
         if (st%code /= 0) error stop 'bench_elastic: input/cylinder_l180.nml does not read'
-        call make_pendulum(d, el%p, st)
-        call start_state(d, el%p, yc, th0, st)
+        call make_pendulum(rig_of(d), el%p, st)
+        call start_state(start_of(d), el%p, yc, th0, st)
         if (st%code /= 0) error stop 'bench_elastic: no start'
         call atomic_open(path, u, st)
         if (st%code /= 0) error stop 'bench_elastic: cannot write the result file'

@@ -20,6 +20,7 @@ program bench_identify
     use status, only: status_t
     use bench_args, only: int_arg, need
     use deck, only: deck_t, read_deck
+    use rig, only: rig_of, accuracy_of
     use period_inversion, only: input_u_t, period_fit_t, invert_periods, period_monte_carlo
     use identify, only: record_t, identify_result_t, read_record, identify_record
     implicit none
@@ -56,7 +57,7 @@ program bench_identify
             end if
         else
             do k = 1, n
-                call invert_periods(d, d%periods(1:3), d%amplitudes(1:3), u, f, st)
+                call invert_periods(rig_of(d), accuracy_of(d), d%periods(1:3), d%amplitudes(1:3), u, f, st)
                 call need(st, 'bench_identify')
                 sumck = sumck + f%i1
             end do

@@ -15,7 +15,6 @@ program bench_integrator
     use kinds, only: dp
     use status, only: status_t, STATUS_OK
     use ode_system, only: ode_system_t
-    use lsoda, only: lsoda_stats_t
     use test_lsoda, only: bench_problem, scaled_error, solve_on_grid, NBENCH, BENCH_NAMES
     implicit none
 
@@ -33,7 +32,7 @@ program bench_integrator
     character(len=512) :: outpath, csvpath, tmppath
     class(ode_system_t), allocatable :: sys
     real(dp), allocatable :: y0(:), grid(:), atol(:), yref(:), y(:)
-    type(lsoda_stats_t) :: st
+    type(integrator_stats_t) :: st
     type(status_t) :: stat
     real(dp) :: rtol, err, us, r_nfe(NRTOL), r_err(NRTOL), r_us(NRTOL)
     integer :: ip, ir, u, ia, nr, worst
@@ -165,7 +164,7 @@ contains
         real(dp), intent(in) :: y0(:), grid(:), atol(:)
         real(dp), intent(in) :: rtol
         real(dp) :: t0, t1, yy(size(y0))
-        type(lsoda_stats_t) :: s2
+        type(integrator_stats_t) :: s2
         type(status_t) :: st2
         integer :: reps, b, k
         ! calibrate the batch size

@@ -12,8 +12,7 @@ program bench_radau
     use kinds, only: dp
     use status, only: status_t, STATUS_OK
     use ode_system, only: ode_system_t
-    use lsoda, only: lsoda_stats_t
-    use radau, only: radau_stats_t
+    use radau, only: integrator_stats_t
     use test_lsoda, only: bench_problem, scaled_error, solve_on_grid, NBENCH, BENCH_NAMES
     use test_radau, only: radau_on_grid
     use output_io, only: atomic_open, atomic_commit
@@ -21,8 +20,8 @@ program bench_radau
     integer, parameter :: NRTOL = 8
     class(ode_system_t), allocatable :: sys
     real(dp), allocatable :: y0(:), grid(:), atol(:), yref(:), y(:)
-    type(radau_stats_t) :: rs
-    type(lsoda_stats_t) :: ls
+    type(integrator_stats_t) :: rs
+    type(integrator_stats_t) :: ls
     type(status_t) :: stat
     real(dp) :: rtol, err_r, err_l, us
     integer :: ip, ir, u
@@ -69,7 +68,7 @@ contains
         class(ode_system_t), intent(inout) :: sys
         real(dp), intent(in) :: y0(:), grid(:), rtol, atol(:)
         real(dp) :: t0, t1, yy(size(y0))
-        type(radau_stats_t) :: s2
+        type(integrator_stats_t) :: s2
         type(status_t) :: st2
         integer :: b, n
         best = huge(1.0_dp)

@@ -39,9 +39,9 @@ program bench_speed
         n = int_arg(2)
         call read_deck('input/cylinder_l180.nml', d, st)
         call need(st, 'bench_speed')
-        call make_pendulum(d, sys%p, st)
+        call make_pendulum(rig_of(d), sys%p, st)
         call need(st, 'bench_speed')
-        call start_state(d, sys%p, y0, th0, st)
+        call start_state(start_of(d), sys%p, y0, th0, st)
         call need(st, 'bench_speed')
         y0(6:10) = [0.01_dp, -0.02_dp, 0.03_dp, -0.4_dp, 0.05_dp]
         call cpu_time(t0)
@@ -58,7 +58,7 @@ program bench_speed
         n = int_arg(3)
         call read_deck('input/'//trim(arg)//'.nml', d, st)
         call need(st, 'bench_speed')
-        call make_pendulum(d, p, st)
+        call make_pendulum(rig_of(d), p, st)
         call need(st, 'bench_speed')
         call cpu_time(t0)
         do k = 1, n
@@ -76,7 +76,7 @@ program bench_speed
         do k = 1, n
             do j = 1, 5
                 do i = 1, 6
-                    call make_pendulum(d, p, st)
+                    call make_pendulum(rig_of(d), p, st)
                     amp = d%floquet_amplitude
                     call set_chart_variable('l', 0.5_dp + 1.5_dp*(i - 1), p, amp)
                     call set_chart_variable('amplitude', 2.0_dp + 22.0_dp*(j - 1), p, amp)

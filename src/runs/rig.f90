@@ -1,0 +1,202 @@
+!> The rig layer: a physical rig (suspension, body, damping, cables) and how it starts to
+!! move, in the deck's units, between the deck and the analyses.
+!!
+!! An analysis builds its rig once from the deck (rig_of, start_of) and varies the rig_t,
+!! never a copy of the deck: a trial I1 of a fit, a candidate suspension of a design, an
+!! input of an uncertainty budget are changes of a rig_t.  The model sees the rig scaled
+!! (make_pendulum: lengths over b', moments over m b'^2, time tau = sqrt(g/b') t) and starts
+!! from start_state.
+module rig
+    use kinds, only: dp, deg
+    use status, only: status_t, set_error, ERR_DECK
+    use text, only: sci
+    use deck, only: deck_t
+    use geometry, only: pendulum_t, beta_coeffs
+    use start_pose, only: raised_angles, solve_theta5
+    use bifilar_model, only: chart_state, NSTATE
+    use integrators, only: integrator_for, SOLVER_LSODA
+    implicit none
+    private
+
+    !> The rig, in the deck's units (any one consistent system; time in seconds).
+    type, public :: rig_t
+        ! the suspension: spacing of the cables on the support (b) and on the body (b_prime),
+        ! cable lengths BC (l) and AD (l_prime), gravity
+        real(dp) :: b = 1.0_dp, b_prime = 1.0_dp, l = 2.0_dp, l_prime = 2.0_dp, g = 1.0_dp
+        ! the body: mass, principal moments about its mass centre, the mass centre's place
+        ! from C (r, lambda, eq. (21)), the principal axes (btilde, rows in ntilde), the
+        ! depth of the point E of the side-sway Q below the midpoint of CD
+        real(dp) :: mass = 1.0_dp
+        real(dp) :: inertia(3) = [0.125_dp, 0.1458333333333333_dp, 0.1458333333333333_dp]
+        real(dp) :: r = 0.7071067811865476_dp, lambda = 0.7853981633974483_dp
+        real(dp) :: btilde(3, 3) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, &
+                                            0.0_dp, 0.0_dp, 1.0_dp], [3, 3])
+        real(dp) :: sway_depth = 1.0_dp
+        ! the damping torque about the vertical, M = -(c_v W + c_q |W| W) n3
+        real(dp) :: c_v = 0.0_dp, c_q = 0.0_dp
+        ! elastic cables (model 'elastic'): EA/(m g) and the damping ratio of each cable
+        real(dp) :: cable_stiffness = 1.0e6_dp, cable_damping = 0.05_dp
+    end type rig_t
+
+    !> How the rig starts: mode 'raised' (the paper's recipe: turned by `amplitude` degrees
+    !! about the vertical through O, tilt added to theta_1) or 'angles' (theta_1..4 and their
+    !! rates given); theta_5 and its rate follow from the constraint.
+    type, public :: start_t
+        character(len=16) :: mode = 'raised'
+        real(dp) :: amplitude = 45.0_dp         !! degrees (mode 'raised')
+        real(dp) :: tilt = 0.0_dp               !! rad, added to theta_1 (mode 'raised')
+        real(dp) :: theta(4) = 0.0_dp           !! rad (mode 'angles')
+        real(dp) :: theta_dot(4) = 0.0_dp       !! rad per unit tau (mode 'angles')
+    end type start_t
+
+    !> How accurately a rig's runs are integrated: &integration rtol, atol and the
+    !! integrator (module integrators).
+    type, public :: accuracy_t
+        real(dp) :: rtol = 1.0e-10_dp, atol = 1.0e-12_dp
+        integer :: method = SOLVER_LSODA
+    end type accuracy_t
+
+    public :: rig_of, start_of, raised_start, method_of, accuracy_of, make_pendulum
+    public :: start_state, move_b_prime
+
+contains
+
+    !> The rig of a deck (&suspension, &body, &damping, &cables).
+    pure function rig_of(d) result(rg)
+        type(deck_t), intent(in) :: d           !! the deck
+        type(rig_t) :: rg
+        rg%b = d%b
+        rg%b_prime = d%b_prime
+        rg%l = d%l
+        rg%l_prime = d%l_prime
+        rg%g = d%g
+        rg%mass = d%mass
+        rg%inertia = d%inertia
+        rg%r = d%r
+        rg%lambda = d%lambda
+        rg%btilde = d%btilde
+        rg%sway_depth = d%sway_depth
+        rg%c_v = d%c_v
+        rg%c_q = d%c_q
+        rg%cable_stiffness = d%cable_stiffness
+        rg%cable_damping = d%cable_damping
+    end function rig_of
+
+    !> The start of a deck (&start).
+    pure function start_of(d) result(st)
+        type(deck_t), intent(in) :: d           !! the deck
+        type(start_t) :: st
+        st%mode = trim(d%mode)
+        st%amplitude = d%amplitude
+        st%tilt = d%tilt
+        st%theta = d%theta
+        st%theta_dot = d%theta_dot
+    end function start_of
+
+    !> The paper's raised start at `amplitude` degrees, no tilt: a release at rest.
+    pure function raised_start(amplitude) result(st)
+        real(dp), intent(in) :: amplitude       !! degrees of theta_4
+        type(start_t) :: st
+        st%mode = 'raised'
+        st%amplitude = amplitude
+    end function raised_start
+
+    !> The integrator of a deck's runs (module integrators: &integration method, &scene
+    !! model).
+    pure integer function method_of(d)
+        type(deck_t), intent(in) :: d           !! the deck
+        method_of = integrator_for(d%method, d%model)
+    end function method_of
+
+    !> The accuracy of a deck's runs (&integration rtol, atol, method).
+    pure function accuracy_of(d) result(acc)
+        type(deck_t), intent(in) :: d           !! the deck
+        type(accuracy_t) :: acc
+        acc%rtol = d%rtol
+        acc%atol = d%atol
+        acc%method = method_of(d)
+    end function accuracy_of
+
+    !> Scaled pendulum parameters of a rig (lengths over b', inertia over m b'^2, damping in
+    !! the model's units), with the geometric check a deck reader cannot make: the cables
+    !! must be able to reach.
+    subroutine make_pendulum(rg, p, stat)
+        type(rig_t), intent(in) :: rg           !! the rig
+        type(pendulum_t), intent(out) :: p      !! scaled parameters
+        type(status_t), intent(out) :: stat     !! ERR_DECK when the geometry is impossible
+        p%big_l = rg%l/rg%b_prime
+        p%big_lp = rg%l_prime/rg%b_prime
+        p%big_b = rg%b/rg%b_prime
+        p%inertia = rg%inertia/(rg%mass*rg%b_prime**2)
+        p%r = rg%r/rg%b_prime
+        p%lambda = rg%lambda
+        p%btilde = rg%btilde
+        p%h_e = rg%sway_depth/rg%b_prime
+        ! &damping in the model's units: torque over m g b', rates per unit tau
+        p%c_v = rg%c_v/(rg%mass*rg%b_prime*sqrt(rg%g*rg%b_prime))
+        p%c_q = rg%c_q/(rg%mass*rg%b_prime**2)
+        p%stab_rate = 1.0_dp     ! Baumgarte rate: constraint drift decays in about one tau
+        if (rg%b >= rg%l + rg%l_prime + rg%b_prime .or. &
+            rg%b_prime >= rg%l + rg%l_prime + rg%b) then
+            call set_error(stat, ERR_DECK, '&suspension b = '//sci(rg%b)//', b_prime = '// &
+                sci(rg%b_prime)//', l = '//sci(rg%l)//', l_prime = '//sci(rg%l_prime)// &
+                ': the cables cannot reach; allowed: b < l + l_prime + b_prime and '// &
+                'b_prime < l + l_prime + b')
+        end if
+    end subroutine make_pendulum
+
+    !> The start as a chart state: mode 'raised' (the paper's recipe, tilt added to theta_1,
+    !! theta_5 from eq. (2) by the homotopy of eq. (44)) or mode 'angles' (theta_1..4 and
+    !! their rates given; theta_5 from eq. (2), its rate from eq. (5)).
+    subroutine start_state(st, p, y0, th0, stat)
+        type(start_t), intent(in) :: st         !! how the rig starts
+        type(pendulum_t), intent(in) :: p       !! scaled parameters (make_pendulum)
+        real(dp), intent(out) :: y0(NSTATE)     !! chart state at tau = 0
+        real(dp), intent(out) :: th0(5)         !! theta_1..5 at tau = 0
+        type(status_t), intent(out) :: stat     !! ERR_DECK when no start satisfies eq. (2)
+        real(dp) :: thd(5), beta(5)
+        character(len=40) :: what
+        thd = 0.0_dp
+        y0 = 0.0_dp
+        if (trim(st%mode) == 'raised') then
+            call raised_angles(p, st%amplitude*deg, th0, stat)
+            what = '&start mode = ''raised'''
+            if (stat%code /= 0) then
+                return
+            end if
+            th0(1) = th0(1) + st%tilt
+        else
+            th0 = [st%theta, 0.0_dp]
+            thd(1:4) = st%theta_dot
+            what = '&start theta'
+        end if
+        call solve_theta5(p, th0, stat)
+        if (stat%code /= 0) then
+            stat%msg = trim(what)//': '//stat%msg
+            return
+        end if
+        beta = beta_coeffs(p, th0)
+        if (.not. (abs(beta(5)) > 1.0e-10_dp)) then
+            call set_error(stat, ERR_DECK, trim(what)// &
+                ': beta5 = 0 at the start, eq. (5) cannot give theta5_dot; change the start')
+            return
+        end if
+        thd(5) = sum(beta(1:4)*thd(1:4))/beta(5)
+        y0 = chart_state(th0, thd)
+    end subroutine start_state
+
+    !> The rig with the body's spacing b' changed to bp: the two body attachment points move
+    !! symmetrically, so the mass centre keeps its depth below, and its offset along, the
+    !! midpoint of CD (r and lambda follow, eq. (21)).
+    pure subroutine move_b_prime(rg, bp)
+        type(rig_t), intent(inout) :: rg        !! rig to change
+        real(dp), intent(in) :: bp              !! new b'
+        real(dp) :: depth, along
+        depth = rg%r*sin(rg%lambda)
+        along = rg%r*cos(rg%lambda) - 0.5_dp*rg%b_prime + 0.5_dp*bp
+        rg%b_prime = bp
+        rg%r = sqrt(depth**2 + along**2)
+        rg%lambda = atan2(depth, along)
+    end subroutine move_b_prime
+
+end module rig
