@@ -12,7 +12,7 @@ module test_extreme
     use monte_carlo, only: MC_ANALYSIS
     use design, only: DESIGN_STAGES
     use deck, only: deck_t, read_deck, deck_echo, OUTPUT_COLUMNS
-    use identify, only: record_t, read_record
+    use records, only: record_t, read_record
     implicit none
     private
 

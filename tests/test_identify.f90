@@ -20,8 +20,9 @@ module test_identify
     use least_squares, only: lsq_problem_t, lsq_options_t, lsq_result_t, lm_fit
     use period_inversion, only: input_u_t, period_fit_t, invert_periods, period_budget, &
                                 torsion_period_s, simulated_period_s, linear_inertia
-    use identify, only: record_t, identify_result_t, record_model, identify_record, &
-                        read_record, make_record, set_input
+    use identify, only: identify_result_t, identify_record
+    use records, only: record_t, read_record
+    use record_fit, only: record_model, make_record, set_input
     use test_deck, only: write_text, exists
     use test_extreme, only: file_has
     use test_robust, only: lines

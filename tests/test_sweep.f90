@@ -17,7 +17,7 @@ module test_sweep
     use deck, only: deck_t, read_deck
     use rig, only: rig_of, accuracy_of
     use period_inversion, only: input_u_t, period_fit_t, invert_periods, period_mc_sample
-    use identify, only: make_record
+    use record_fit, only: make_record
     !$ use omp_lib, only: omp_get_max_threads, omp_set_num_threads
     implicit none
     private

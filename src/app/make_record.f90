@@ -18,7 +18,7 @@ program make_record_main
     use kinds, only: dp
     use status, only: status_t
     use deck, only: deck_t, read_deck
-    use identify, only: make_record
+    use record_fit, only: make_record
     use period_inversion, only: rig_period_s
     use rig, only: rig_of, accuracy_of
     use random, only: rng_t, rng_stream, rng_normal

@@ -60,26 +60,12 @@ module period_inversion
     use bifilar_model, only: NSTATE
     use run_loop, only: stepped_model_t, row_sink_t, drive
     use output_io, only: out_files_t
+    use budget, only: input_u_t, budget_row_t
     use sweep_engine, only: sweep_options_t, sweep_report_t
     use monte_carlo, only: mc_task_t, monte_carlo_run
     implicit none
     private
 
-    !> Standard uncertainties of the inputs (deck units; period in s, amplitude in degrees);
-    !! each >= 0, 0 when not known.
-    type, public :: input_u_t
-        real(dp) :: mass = 0.0_dp, l = 0.0_dp, l_prime = 0.0_dp, b = 0.0_dp, b_prime = 0.0_dp
-        real(dp) :: g = 0.0_dp, period = 0.0_dp, amplitude = 0.0_dp
-    end type input_u_t
-
-    !> One line of an uncertainty budget.
-    type, public :: budget_row_t
-        character(len=24) :: input = ''         !! e.g. mass, l, period(2)
-        real(dp) :: value = 0.0_dp              !! the input's value (deck units)
-        real(dp) :: u = 0.0_dp                  !! its standard uncertainty
-        real(dp) :: sensitivity = 0.0_dp        !! dI1/dx
-        real(dp) :: contribution = 0.0_dp       !! |sensitivity| u
-    end type budget_row_t
 
     !> Result of an inversion of periods.
     type, public :: period_fit_t
@@ -91,6 +77,7 @@ module period_inversion
         type(budget_row_t), allocatable :: budget(:)
     end type period_fit_t
 
+    public :: input_u_t, budget_row_t
     public :: torsion_period_s, invert_periods, period_budget, period_mc_sample
     public :: period_monte_carlo, linear_inertia, rig_period_s, simulated_period_s
     public :: is_torsion_rig, period_mc_payload, period_mc_task

@@ -22,7 +22,8 @@ program bench_identify
     use deck, only: deck_t, read_deck
     use rig, only: rig_of, accuracy_of
     use period_inversion, only: input_u_t, period_fit_t, invert_periods, period_monte_carlo
-    use identify, only: record_t, identify_result_t, read_record, identify_record
+    use identify, only: identify_result_t, identify_record
+    use records, only: record_t, read_record
     implicit none
     character(len=256) :: mode
     type(deck_t) :: d

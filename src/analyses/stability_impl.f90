@@ -1,0 +1,242 @@
+!> The implementation of the stability analyses (submodule of stability): a Floquet
+!! analysis of one scene and the chart of a grid, with their files.
+submodule (stability) stability_impl
+    use kinds, only: dp, deg
+    use status, only: status_t, set_error, ERR_NUMERIC, ERR_DECK, ERR_MODEL, LSODA_ERR_MAX_STEPS
+    use geometry, only: pendulum_t
+    use deck, only: deck_t, deck_echo
+    use rig, only: rig_of, make_pendulum, method_of
+    use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, floquet_point, &
+                       CHART_FAILED, &
+                       FLOQUET_MAX_STEPS
+    use output_io, only: out_files_t, write_kv
+    use sweep_engine, only: sweep_task_t, sweep_run, sweep_options_t, sweep_report_t, &
+        checkpoint_path
+    use text, only: itoa
+    implicit none
+
+
+
+contains
+
+    !> The preconditions of analyses = 'floquet', checked before any computing: the cables
+    !! can reach and pure torsion is an exact motion of the scene (ERR_DECK otherwise).
+    module subroutine floquet_ready(d, stat)
+        type(deck_t), intent(in) :: d           !! the deck
+        type(status_t), intent(out) :: stat     !! ERR_DECK
+        type(pendulum_t) :: p
+        integer :: ivert
+        call make_pendulum(rig_of(d), p, stat)
+        if (stat%code /= 0) return
+        call check_torsion_scene(p, ivert, stat)
+        if (stat%code /= 0) stat%msg = 'analyses = ''floquet'' needs a scene in which pure '// &
+            'torsion is an exact motion: '//stat%msg
+    end subroutine floquet_ready
+
+    !> Floquet analysis of a deck at &floquet amplitude: OUTDIR/NAME.floquet.  With `files`
+    !! the file joins the run's others (see run_simulation); without it it is committed at
+    !! once.
+    module subroutine run_floquet(d, outdir, res, stat, files)
+        type(deck_t), intent(in) :: d           !! the deck (a torsion scene)
+        character(len=*), intent(in) :: outdir  !! output directory
+        type(floquet_result_t), intent(out) :: res
+        type(status_t), intent(out) :: stat     !! ERR_DECK (not a torsion scene), ERR_NUMERIC
+        type(out_files_t), intent(inout), optional, target :: files  !! the run's files
+        type(out_files_t), target :: own
+        type(out_files_t), pointer :: fs
+        type(pendulum_t) :: p
+        real(dp) :: t0, t1
+        integer :: u, k, ios
+        character(len=:), allocatable :: path
+        fs => own
+        if (present(files)) fs => files
+        call floquet_ready(d, stat)
+        if (stat%code /= 0) return
+        call make_pendulum(rig_of(d), p, stat)
+        if (stat%code /= 0) return
+        call cpu_time(t0)
+        call floquet_analysis(p, d%floquet_amplitude*deg, d%floquet_rtol, d%floquet_segments, &
+                              res, stat, method_of(d))
+        call cpu_time(t1)
+        if (stat%code /= 0) then
+            call explain_budget(stat)
+            stat%msg = 'floquet: '//stat%msg
+            return
+        end if
+        path = outdir//'/'//d%name//'.floquet'
+        call fs%open(path, u, stat)
+        if (stat%code /= 0) return
+        write (u, '(a)', iostat=ios) '# bifilar Floquet analysis of pure torsion: '//trim(d%title)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# period in units of tau = sqrt(g/b'') t; '// &
+            'multipliers of the monodromy matrix H(t*) of eq. (51)'
+        call deck_echo(d, u, ios)
+        call write_kv(u, 'period', res%period, ios)
+        call write_kv(u, 'max_modulus', res%max_modulus, ios)
+        call write_kv(u, 'stable', res%stable, ios)
+        call write_kv(u, 'amplitude_deg', d%floquet_amplitude, ios)
+        call write_kv(u, 'segments', d%floquet_segments, ios)
+        call write_kv(u, 'rtol', d%floquet_rtol, ios)
+        call write_kv(u, 'orbit_closure', res%orbit_closure, ios)
+        call write_kv(u, 'trivial_residual', res%trivial_residual, ios)
+        call write_kv(u, 'cpu_seconds', t1 - t0, ios)
+        call write_kv(u, 'steps', res%steps, ios)
+        call write_kv(u, 'rhs_evaluations', res%rhs_evaluations, ios)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# multipliers: re im modulus trivial '// &
+            '(trivial: 1 by structure -- time shift, energy, constraint and its rate)'
+        do k = 1, size(res%multipliers)
+            if (ios == 0) write (u, '(3es24.15e3,2x,a)', iostat=ios) real(res%multipliers(k)), &
+                aimag(res%multipliers(k)), abs(res%multipliers(k)), &
+                merge('yes', 'no ', res%trivial(k))
+        end do
+        call fs%close(u, ios, stat)
+        if (present(files)) return
+        if (stat%code == 0) call own%commit(stat)
+        if (stat%code /= 0) call own%discard()
+    end subroutine run_floquet
+
+    !> A Floquet failure for want of steps gets its cause and remedy in the message.
+    subroutine explain_budget(stat)
+        type(status_t), intent(inout) :: stat   !! the failure
+        if (stat%code /= LSODA_ERR_MAX_STEPS) return
+        call set_error(stat, ERR_NUMERIC, 'the variational equations took more than '// &
+            itoa(FLOQUET_MAX_STEPS)//' integrator steps over one segment of the half period '// &
+            '(a body turning fast about a principal axis of small inertia?); raise &floquet '// &
+            'rtol (e.g. 1e-8) or add segments')
+    end subroutine explain_budget
+
+    !> Set one chart variable (deck units: l and b over b', amplitude in degrees, r over b',
+    !! lambda in radians, inertia_ratio = I3/I1) in p, or the amplitude.
+    module pure subroutine set_chart_variable(name, value, p, amp_deg)
+        character(len=*), intent(in) :: name    !! l, b, amplitude, r, lambda, inertia_ratio
+        real(dp), intent(in) :: value
+        type(pendulum_t), intent(inout) :: p
+        real(dp), intent(inout) :: amp_deg      !! torsion amplitude (degrees)
+        select case (trim(name))
+        case ('l')
+            p%big_l = value
+            p%big_lp = value
+        case ('b')
+            p%big_b = value
+        case ('amplitude')
+            amp_deg = value
+        case ('r')
+            p%r = value
+        case ('lambda')
+            p%lambda = value
+        case ('inertia_ratio')
+            p%inertia(3) = value*p%inertia(1)
+        end select
+    end subroutine set_chart_variable
+
+    !> The chart of a deck as a sweep (also built by the other ranks of an MPI run from the
+    !! same deck): the scene, the swept variables and their grids.
+    module subroutine chart_task(d, task, stat)
+        type(deck_t), intent(in) :: d           !! the deck
+        type(chart_task_t), intent(out) :: task
+        type(status_t), intent(out) :: stat     !! ERR_DECK when the scene cannot be made
+        integer :: i, j
+        call make_pendulum(rig_of(d), task%p0, stat)
+        if (stat%code /= 0) return
+        allocate (task%xs(d%chart_nx), task%ys(d%chart_ny))
+        do i = 1, d%chart_nx
+            task%xs(i) = d%chart_x_min + (d%chart_x_max - d%chart_x_min)*(i - 1)/(d%chart_nx - 1)
+        end do
+        do j = 1, d%chart_ny
+            task%ys(j) = d%chart_y_min + (d%chart_y_max - d%chart_y_min)*(j - 1)/(d%chart_ny - 1)
+        end do
+        task%x = trim(d%chart_x)
+        task%y = trim(d%chart_y)
+        task%amplitude = d%floquet_amplitude
+        task%rtol = d%floquet_rtol
+        task%segments = d%floquet_segments
+        task%method = method_of(d)
+    end subroutine chart_task
+
+    !> Chart point k: values = [max_modulus, period] (sentinels, see floquet_point).  Never
+    !! fails itself.
+    module subroutine chart_point(self, i, values, stat)
+        class(chart_task_t), intent(in) :: self
+        integer, intent(in) :: i                !! 1 .. nx*ny, x index fastest
+        real(dp), intent(out) :: values(:)      !! max_modulus, period
+        type(status_t), intent(out) :: stat     !! always OK
+        type(pendulum_t) :: p
+        real(dp) :: amp
+        integer :: ix, iy
+        stat%code = 0
+        ix = mod(i - 1, size(self%xs)) + 1
+        iy = (i - 1)/size(self%xs) + 1
+        p = self%p0
+        amp = self%amplitude
+        call set_chart_variable(self%x, self%xs(ix), p, amp)
+        call set_chart_variable(self%y, self%ys(iy), p, amp)
+        call floquet_point(p, amp, self%rtol, self%segments, values(1), values(2), self%method)
+    end subroutine chart_point
+
+    !> Stability chart over the grid of &chart: OUTDIR/NAME.chart.dat with one row per point,
+    !! `x y max_modulus period` (CHART_INVALID where no analysis is possible, CHART_FAILED
+    !! where it failed), a blank line after each x (gnuplot grid format).  The points are a
+    !! sweep over threads and ranks, checkpointed to OUTDIR/NAME.chart.partial (see module
+    !! sweep_engine; `options`: --resume and the checkpoint interval).  With `files` the file
+    !! joins the run's others (see run_simulation); without it it is committed at once.
+    module subroutine run_chart(d, outdir, nstable, wall_seconds, stat, files, nfailed, options, &
+                         report)
+        type(deck_t), intent(in) :: d           !! the deck
+        character(len=*), intent(in) :: outdir  !! output directory
+        integer, intent(out) :: nstable         !! number of stable points
+        real(dp), intent(out) :: wall_seconds   !! elapsed time of the sweep
+        type(status_t), intent(out) :: stat
+        type(out_files_t), intent(inout), optional, target :: files  !! the run's files
+        integer, intent(out), optional :: nfailed   !! number of points whose analysis failed
+        type(sweep_options_t), intent(in), optional :: options  !! resume, checkpoint interval
+        type(sweep_report_t), intent(out), optional :: report   !! ranks, resumed points, ...
+        type(out_files_t), target :: own
+        type(out_files_t), pointer :: fs
+        type(chart_task_t) :: task
+        type(sweep_report_t) :: rep
+        real(dp), allocatable :: vals(:, :), mods(:, :), pers(:, :)
+        integer :: i, j, u, ios
+        character(len=:), allocatable :: path
+
+        fs => own
+        if (present(files)) fs => files
+        wall_seconds = 0.0_dp
+        nstable = 0
+        if (present(nfailed)) nfailed = 0
+        call chart_task(d, task, stat)
+        if (stat%code /= 0) return
+        call sweep_run(task, 'chart', d%path, checkpoint_path(outdir, d%name, 'chart'), &
+                       d%name//': chart', d%chart_nx*d%chart_ny, 2, vals, stat, options, rep, fs)
+        if (present(report)) report = rep
+        if (stat%code /= 0) return
+        wall_seconds = rep%wall_seconds
+        mods = reshape(vals(1, :), [d%chart_nx, d%chart_ny])
+        pers = reshape(vals(2, :), [d%chart_nx, d%chart_ny])
+        nstable = count(mods >= 0.0_dp .and. mods <= 1.0_dp + 1.0e-6_dp)
+        if (present(nfailed)) nfailed = count(mods == CHART_FAILED)
+
+        path = outdir//'/'//d%name//'.chart.dat'
+        call fs%open(path, u, stat)
+        if (stat%code /= 0) return
+        write (u, '(a)', iostat=ios) '# bifilar stability chart of pure torsion: '//trim(d%title)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# x = '//trim(d%chart_x)//', y = '// &
+            trim(d%chart_y)//' (l, b, r over b''; amplitude in degrees; lambda in rad; '// &
+            'inertia_ratio = I3/I1)'
+        if (ios == 0) write (u, '(a)', iostat=ios) '# max_modulus and period = -1 where pure '// &
+            'torsion is not possible (not a torsion scene, cables cannot reach), -2 where '// &
+            'the analysis failed (e.g. more than '//itoa(FLOQUET_MAX_STEPS)//' steps)'
+        call deck_echo(d, u, ios)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# x y max_modulus period'
+        do i = 1, d%chart_nx
+            do j = 1, d%chart_ny
+                if (ios == 0) write (u, '(4es24.15e3)', iostat=ios) task%xs(i), task%ys(j), &
+                    mods(i, j), pers(i, j)
+            end do
+            if (ios == 0) write (u, '(a)', iostat=ios) ''
+        end do
+        call fs%close(u, ios, stat)
+        if (present(files)) return
+        if (stat%code == 0) call own%commit(stat)
+        if (stat%code /= 0) call own%discard()
+    end subroutine run_chart
+
+end submodule stability_impl
