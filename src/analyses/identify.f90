@@ -70,8 +70,8 @@ module identify
                                 period_budget, period_monte_carlo, linear_inertia, &
                                 move_b_prime, is_torsion_rig, rig_period_s, period_mc_task, &
                                 period_mc_task_t
-    use sweep_engine, only: sweep_task_t, sweep_options_t, sweep_report_t, file_crc, &
-        crc_parts, crc_join
+    use sweep_engine, only: sweep_task_t, sweep_options_t, sweep_report_t
+    use crc64, only: file_crc, crc_parts, crc_join
     use monte_carlo, only: mc_task_t, monte_carlo_run
     implicit none
     private
