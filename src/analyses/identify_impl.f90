@@ -19,7 +19,7 @@ submodule (identify) identify_impl
     use period_inversion, only: period_fit_t, invert_periods, period_budget, &
                                 period_monte_carlo, linear_inertia, is_torsion_rig, &
                                 period_mc_task, period_mc_task_t
-    use sweep_engine, only: file_crc, crc_parts, crc_join
+    use crc64, only: file_crc, crc_parts, crc_join
     use monte_carlo, only: monte_carlo_run
     implicit none
 

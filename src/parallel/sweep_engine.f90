@@ -1,4 +1,4 @@
-!> Sweeps of independent points over ranks and threads, with checkpoints (issue 15).
+!> Sweeps of independent points over ranks and threads, with checkpoints.
 !!
 !! A sweep is n points; point i is computed from i alone by a task (`sweep_task_t`, its
 !! `compute(i, values, stat)` gives a fixed number of reals), so points may be computed in
@@ -18,17 +18,17 @@
 !! ranks; environment BIFILAR_RANK0_COMPUTES = yes or no decides otherwise) and answers
 !! requests between its points.  Only rank 0 writes files and prints.
 !!
-!! Checkpoints: rank 0 writes the completed points to OUTDIR/NAME.ANALYSIS.partial (through
-!! a temporary file and a rename, module output_io) at most every `checkpoint_seconds` (and
-!! at most 5 % of the time: the interval is at least 20 times the last write), each value as
-!! its 64-bit pattern in hexadecimal, with a fingerprint of the run: the analysis, the
-!! number of points and values, the CRC-64 of the deck file's bytes (and of the sweep's
-!! payload, when the task needs more than the deck) and of the executable (/proc/self/exe).
-!! With `resume`, a checkpoint whose fingerprint matches supplies its points and the rest
-!! are computed; any other checkpoint is ignored (and replaced by the next one).  A sweep
-!! ended by a signal (SIGINT, SIGTERM, SIGHUP; mpirun sends SIGTERM to every rank when one
-!! dies) prints one line naming the deck and the checkpoint, removes the run's staged files
-!! and exits with status 128 + signal.
+!! Checkpoints: rank 0 writes the completed points to OUTDIR/NAME.ANALYSIS.partial (module
+!! checkpoint: the file, its fingerprint of the run) at most every `checkpoint_seconds` (and
+!! at most 5 % of the time: the interval is at least 20 times the last write).  The
+!! fingerprint's CRC-64s (module crc64), of the deck file (and of the sweep's payload, when
+!! the task needs more than the deck) and of the executable, are also how the other ranks
+!! check that they read the same deck and run the same executable as rank 0.  With
+!! `resume`, a checkpoint whose fingerprint matches supplies its points and the rest are
+!! computed; any other checkpoint is ignored (and replaced by the next one).  A sweep ended
+!! by a signal (SIGINT, SIGTERM, SIGHUP; mpirun sends SIGTERM to every rank when one dies)
+!! prints one line naming the deck and the checkpoint, removes the run's staged files and
+!! exits with status 128 + signal (module signals).
 !!
 !! Failures: a point whose compute returns an error ends the sweep with that error (the
 !! other ranks are told to stop; the sweep returns once every rank has finished its running
@@ -42,17 +42,24 @@
 !! (your part of the sweep is over), QUIT (the program ends); others -> rank 0 RESULTS
 !! (completed points, and a request for more), ERROR (a point or the setup failed), LEAVE
 !! (last results: done).
+!!
+!! State: no module variables.  A sweep's state is its own (`engine_t`, local to sweep_run
+!! and sweep_serve).  One count outlives the sweeps: rank 0's number of sweeps begun, saved
+!! in `sweep_count`, which numbers each sweep's messages so that rank 0 rejects a message of
+!! any other sweep than the running one.  The signal handler's state is in module signals.
 module sweep_engine
-    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_funptr, c_funloc, c_null_char, &
-        c_size_t
+    use, intrinsic :: iso_c_binding, only: c_int
     use, intrinsic :: iso_fortran_env, only: int64
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK, ERR_IO, ERR_DECK
     use text, only: itoa
-    use output_io, only: atomic_open, atomic_commit, atomic_abort, remove_file, out_files_t
+    use output_io, only: remove_file, out_files_t
     use progress, only: progress_t
     use parallel, only: par_start, par_stop, par_rank, par_ranks, par_post, par_poll, &
         par_recv, par_library, PAR_ANY
+    use crc64, only: deck_crc, executable_crc, crc_parts, crc_join, hex16
+    use checkpoint, only: checkpoint_path, checkpoint_write, checkpoint_read
+    use signals, only: install_signals, remove_signals
     !$ use omp_lib, only: omp_get_max_threads
     implicit none
     private
@@ -106,7 +113,8 @@ module sweep_engine
     end type sweep_job_t
 
     public :: sweep_run, sweep_start, sweep_finish, sweep_is_master, sweep_next_job
-    public :: sweep_serve, checkpoint_path, crc64, sweep_library, file_crc, crc_parts, crc_join
+    public :: sweep_serve, sweep_library
+    public :: checkpoint_path                       ! (of module checkpoint)
 
     !> A chunk holds at most this many points per thread of the rank that gets it.
     integer, parameter :: CHUNK_MAX_PER_THREAD = 64
@@ -117,7 +125,6 @@ module sweep_engine
     integer, parameter :: NAP_MIN = 50, NAP_MAX = 2000
     !> The checkpoint interval is at least this multiple of the last write's duration.
     real(dp), parameter :: CHECKPOINT_COST_FACTOR = 20.0_dp
-    integer, parameter :: CHECKPOINT_FORMAT = 1
 
     ! message kinds
     integer, parameter :: TAG_JOB = 1, TAG_QUIT = 2, TAG_WORK = 3, TAG_STOP = 4, TAG_BYE = 5, &
@@ -167,54 +174,11 @@ module sweep_engine
         integer :: nout = 0                         !! points in out
     end type engine_t
 
-    ! the sweep counter and the executable's CRC (computed once)
-    integer, save :: sweeps_run = 0
-    integer(int64), save :: exe_crc_cache = 0
-    logical, save :: exe_crc_known = .false.
-    integer(int64), save :: crc_table(0:255) = 0
-    logical, save :: crc_table_made = .false.
-
-    ! ---------------------------------------------------------------- signals
-    ! What the handler needs, prepared before it is installed (it calls only write(2),
-    ! unlink(2) and _exit(2), all async-signal-safe).
-    character(kind=c_char), allocatable, save :: sig_head(:), sig_tail(:, :)
-    integer, save :: sig_tail_len(2) = 0
-    !> The line as the handler writes it, in one write(2) so that it is whole or absent
-    !! (mpirun sends SIGKILL soon after its SIGTERM): head, signal number, tail.
-    character(kind=c_char), allocatable, save :: sig_msg(:)
-    character(kind=c_char), allocatable, save :: sig_tmp(:, :)
-    integer, save :: sig_ntmp = 0
-    !> The checkpoint's temporary file while it is written (sig_writing = 1), removed too.
-    character(kind=c_char), allocatable, save :: sig_ckpt_tmp(:)
-    integer, save :: sig_writing = 0
-    integer, save :: sig_kept = 1                  !! 1: no checkpoint yet, 2: one kept
-    type(c_funptr), save :: sig_old(3)
-    integer(c_int), parameter :: SIGNALS(3) = [2_c_int, 15_c_int, 1_c_int]  ! INT TERM HUP
-
     interface
         integer(c_int) function c_usleep(usec) bind(C, name='usleep')
             import :: c_int
             integer(c_int), value :: usec
         end function c_usleep
-        type(c_funptr) function c_signal(sig, handler) bind(C, name='signal')
-            import :: c_int, c_funptr
-            integer(c_int), value :: sig
-            type(c_funptr), value :: handler
-        end function c_signal
-        integer(c_size_t) function c_write(fd, buf, n) bind(C, name='write')
-            import :: c_int, c_char, c_size_t
-            integer(c_int), value :: fd
-            character(kind=c_char), dimension(*), intent(in) :: buf
-            integer(c_size_t), value :: n
-        end function c_write
-        integer(c_int) function c_unlink_sig(path) bind(C, name='unlink')
-            import :: c_int, c_char
-            character(kind=c_char), dimension(*), intent(in) :: path
-        end function c_unlink_sig
-        subroutine c_exit_now(status) bind(C, name='_exit')
-            import :: c_int
-            integer(c_int), value :: status
-        end subroutine c_exit_now
     end interface
 
 contains
@@ -238,7 +202,7 @@ contains
         integer :: r
         if (par_rank() == 0) then
             do r = 1, par_ranks() - 1
-                call par_post(r, TAG_QUIT, [real(sweeps_run, dp)])
+                call par_post(r, TAG_QUIT, [real(sweep_count(0), dp)])
             end do
         end if
         call par_stop()
@@ -250,12 +214,14 @@ contains
         s = par_library()
     end function sweep_library
 
-    !> OUTDIR/NAME.ANALYSIS.partial, the checkpoint of a sweep.
-    pure function checkpoint_path(outdir, name, analysis) result(p)
-        character(len=*), intent(in) :: outdir, name, analysis
-        character(len=:), allocatable :: p
-        p = outdir//'/'//name//'.'//analysis//'.partial'
-    end function checkpoint_path
+    !> Rank 0's count of the sweeps it has begun, after adding `add` (1 when one begins, 0 to
+    !! ask): the only state the module keeps from sweep to sweep (see the module's notes).
+    integer function sweep_count(add)
+        integer, intent(in) :: add                  !! sweeps begun now
+        integer, save :: n = 0
+        n = n + add
+        sweep_count = n
+    end function sweep_count
 
     ! ================================================================ rank 0
 
@@ -290,8 +256,7 @@ contains
         stat%code = STATUS_OK
         if (present(options)) opt = options
         call system_clock(c0, rate)
-        sweeps_run = sweeps_run + 1
-        e%id = sweeps_run
+        e%id = sweep_count(1)
         e%n = npoints
         e%nv = nvalues
         e%master = .true.
@@ -334,7 +299,8 @@ contains
 
         had_ckpt = .false.
         if (len(ckpt) > 0 .and. opt%resume) then
-            call read_checkpoint(e, rep%note)
+            call checkpoint_read(ckpt, analysis, e%deck_crc, e%exe_crc, e%values, e%done, &
+                                 e%ndone, rep%note)
             rep%resumed = e%ndone
             had_ckpt = e%ndone > 0
         end if
@@ -350,8 +316,7 @@ contains
         call e%pr%start(label, npoints)
         if (e%ndone > 0) call e%pr%tick(e%ndone)
         call system_clock(e%last_ckpt)
-        sig_kept = merge(2, 1, had_ckpt)
-        call install_signals(deck_path, analysis, ckpt, files)
+        call arm_signals(deck_path, analysis, ckpt, e%nranks, had_ckpt, files)
         call run_threads(e, task)
         call master_finish(e)
         call e%pr%finish()
@@ -384,6 +349,46 @@ contains
              real(size(e%payload), dp), chars_to_reals(e%analysis), chars_to_reals(deck_path), &
              e%payload]
     end function job_message
+
+    !> Rank 0, during a sweep: on SIGINT, SIGTERM or SIGHUP remove the run's staged files,
+    !! print one line naming the deck and what is kept, and exit with 128 + the signal.
+    subroutine arm_signals(deck_path, analysis, ckpt, nranks, kept, files)
+        character(len=*), intent(in) :: deck_path, analysis, ckpt
+        integer, intent(in) :: nranks               !! ranks of the run
+        logical, intent(in) :: kept                 !! a checkpoint is kept already (resumed)
+        type(out_files_t), intent(in), optional :: files    !! staged files (removed)
+        character(len=:), allocatable :: head, tail_kept, tail_none, why
+        integer :: k, n, m
+        head = 'bifilar: error (interrupted): '//deck_path//': '//analysis// &
+            ' stopped by signal '
+        why = ''
+        if (nranks > 1) why = ' (mpirun sends SIGTERM to every rank when one dies)'
+        if (len(ckpt) > 0) then
+            tail_kept = why//'; the points of the last checkpoint are kept in '//ckpt// &
+                ': run again with --resume to continue'
+            tail_none = why//' before its first checkpoint: nothing is kept'
+        else
+            tail_kept = why//': nothing is kept'
+            tail_none = tail_kept
+        end if
+        n = 0
+        m = 0
+        if (present(files)) then
+            n = files%waiting()
+            do k = 1, n
+                m = max(m, len(files%temporary(k)))
+            end do
+        end if
+        block
+            character(len=m) :: staged(n)           ! the temporary files' paths
+            if (present(files)) then
+                do k = 1, n
+                    staged(k) = files%temporary(k)
+                end do
+            end if
+            call install_signals(head, tail_none, tail_kept, kept, staged)
+        end block
+    end subroutine arm_signals
 
     !> Rank 0 after its threads are done: answer the other ranks until every one has left,
     !! checkpointing as due.
@@ -570,7 +575,6 @@ contains
         job%analysis = reals_to_chars(m(11:10 + la))
         job%deck_path = reals_to_chars(m(11 + la:10 + la + lp))
         job%payload = m(11 + la + lp:10 + la + lp + lq)
-        sweeps_run = job%id
     end subroutine sweep_next_job
 
     !> Another rank: take part in the sweep `job` with `task` (built from the job by the
@@ -617,9 +621,12 @@ contains
             call set_error(stat, ERR_DECK, 'reads another deck at '//job%deck_path// &
                            ' than rank 0 (CRC-64 '//hex16(crc)//', rank 0 '// &
                            hex16(job%deck_crc)//'): every rank must see the same file')
-        else if (executable_crc() /= job%exe_crc) then
+            return
+        end if
+        crc = executable_crc()
+        if (crc /= job%exe_crc) then
             call set_error(stat, ERR_DECK, 'runs another executable than rank 0 (CRC-64 '// &
-                           hex16(executable_crc())//', rank 0 '//hex16(job%exe_crc)// &
+                           hex16(crc)//', rank 0 '//hex16(job%exe_crc)// &
                            '): every rank must run the same bin/bifilar_mpi')
         end if
     end subroutine check_fingerprint
@@ -842,317 +849,27 @@ contains
         call write_checkpoint(e)
     end subroutine maybe_checkpoint
 
-    !> Rank 0: write the checkpoint now (temporary file, then rename); a failure to write it
-    !! ends the sweep (ERR_IO): the run could not be resumed, and the output could not be
-    !! written either.
+    !> Rank 0: write the checkpoint now (module checkpoint); a failure to write it ends the
+    !! sweep (ERR_IO): the run could not be resumed, and the output could not be written
+    !! either.
     subroutine write_checkpoint(e)
         type(engine_t), intent(inout) :: e
-        integer :: u, ios, i, k, nb
         integer(int64) :: c0, c1, rate
         type(status_t) :: st
-        character(len=:), allocatable :: block
-        character(len=17) :: hex
-        character(len=4096) :: tmp
-        integer, parameter :: BLOCK_BYTES = 32768
         call system_clock(c0, rate)
-        call atomic_open(e%ckpt, u, st)
+        call checkpoint_write(e%ckpt, e%analysis, e%deck_crc, e%exe_crc, e%values, e%done, st)
         if (st%code /= STATUS_OK) then
-            call fail(e, ERR_IO, e%analysis//': checkpoint: '//st%msg, .false.)
-            return
-        end if
-        tmp = ''
-        inquire (unit=u, name=tmp)
-        call to_c(trim(tmp), sig_ckpt_tmp)
-        sig_writing = 1
-        write (u, '(a)', iostat=ios) '# bifilar sweep checkpoint: the completed points; '// &
-            'bifilar --resume continues from it (the fingerprint must match)'
-        if (ios == 0) write (u, '(a,i0)', iostat=ios) 'format ', CHECKPOINT_FORMAT
-        if (ios == 0) write (u, '(a)', iostat=ios) 'analysis '//e%analysis
-        if (ios == 0) write (u, '(a,i0)', iostat=ios) 'points ', e%n
-        if (ios == 0) write (u, '(a,i0)', iostat=ios) 'values ', e%nv
-        if (ios == 0) write (u, '(a)', iostat=ios) 'deck_crc64 '//hex16(e%deck_crc)
-        if (ios == 0) write (u, '(a)', iostat=ios) 'exe_crc64 '//hex16(e%exe_crc)
-        if (ios == 0) write (u, '(a,i0)', iostat=ios) 'done ', e%ndone
-        allocate (character(len=BLOCK_BYTES + 32*(e%nv + 1)) :: block)
-        nb = 0
-        do i = 1, e%n
-            if (.not. e%done(i)) cycle
-            call put(itoa(i))
-            do k = 1, e%nv
-                hex(1:1) = ' '
-                hex(2:17) = hex16(transfer(e%values(k, i), 0_int64))
-                call put(hex)
-            end do
-            call put(achar(10))
-            if (nb >= BLOCK_BYTES) call flush_block()
-        end do
-        call flush_block()
-        if (ios == 0) write (u, '(a)', iostat=ios) 'end'
-        call atomic_commit(u, e%ckpt, st, ios)
-        sig_writing = 0
-        if (st%code /= STATUS_OK) then
-            call fail(e, ERR_IO, e%analysis//': checkpoint: '//st%msg, .false.)
+            call fail(e, st%code, st%msg, .false.)
             return
         end if
         e%nckpt = e%nckpt + 1
         e%ndone_ckpt = e%ndone
-        sig_kept = 2
         call system_clock(c1)
         e%last_ckpt = c1
         e%interval = max(e%asked_interval, CHECKPOINT_COST_FACTOR*real(c1 - c0, dp)/real(rate, dp))
-
-    contains
-
-        subroutine put(s)
-            character(len=*), intent(in) :: s
-            block(nb + 1:nb + len(s)) = s
-            nb = nb + len(s)
-        end subroutine put
-
-        !> The lines gathered so far as one record (its own newline ends the last line).
-        subroutine flush_block()
-            if (nb > 0 .and. ios == 0) write (u, '(a)', iostat=ios) block(1:nb - 1)
-            nb = 0
-        end subroutine flush_block
-
     end subroutine write_checkpoint
 
-    !> Rank 0: take the points of a checkpoint whose fingerprint matches this sweep's into
-    !! e (done, values, ndone); otherwise leave e as it is and say why in note.
-    subroutine read_checkpoint(e, note)
-        type(engine_t), intent(inout) :: e
-        character(len=:), allocatable, intent(out) :: note
-        integer :: u, ios, ndone, i, k, last, p, q
-        character(len=64 + 17*e%nv) :: line
-        character(len=64) :: head(6)
-        character(len=10), parameter :: KEYS(6) = [character(len=10) :: 'format', &
-            'analysis', 'points', 'values', 'deck_crc64', 'exe_crc64']
-        logical :: exists, ok
-        real(dp), allocatable :: vals(:, :)
-        logical, allocatable :: done(:)
-        integer(int64) :: bits
-        note = ''
-        inquire (file=e%ckpt, exist=exists)
-        if (.not. exists) then
-            note = 'no checkpoint to resume'
-            return
-        end if
-        open (newunit=u, file=e%ckpt, status='old', action='read', iostat=ios)
-        if (ios /= 0) then
-            note = 'the checkpoint cannot be read'
-            return
-        end if
-        note = 'the checkpoint is damaged'
-        parse: block
-            if (.not. next_line('#')) exit parse
-            ! the header, then what differs, the deck's contents first
-            do k = 1, size(KEYS)
-                if (.not. next_line(trim(KEYS(k))//' ')) exit parse
-                head(k) = line(len_trim(KEYS(k)) + 2:)
-            end do
-            if (head(1) /= itoa(CHECKPOINT_FORMAT)) exit parse
-            if (head(2) /= e%analysis) then
-                note = 'the checkpoint is of another analysis'
-            else if (head(5) /= hex16(e%deck_crc)) then
-                note = 'the checkpoint is of another deck (its CRC-64 differs)'
-            else if (head(6) /= hex16(e%exe_crc)) then
-                note = 'the checkpoint is of another executable (its CRC-64 differs)'
-            else if (head(3) /= itoa(e%n) .or. head(4) /= itoa(e%nv)) then
-                note = 'the checkpoint is of another sweep (its number of points differs)'
-            end if
-            if (index(note, 'damaged') == 0) exit parse
-            if (.not. next_line('done ')) exit parse
-            read (line(6:), *, iostat=ios) ndone
-            if (ios /= 0 .or. ndone < 0 .or. ndone > e%n) exit parse
-            allocate (vals(e%nv, e%n), done(e%n))
-            done = .false.
-            vals = 0.0_dp
-            last = 0
-            ok = .true.
-            do k = 1, ndone
-                if (.not. next_line('')) then
-                    ok = .false.
-                    exit
-                end if
-                p = index(line, ' ')
-                if (p <= 1) then
-                    ok = .false.
-                    exit
-                end if
-                read (line(1:p - 1), *, iostat=ios) i
-                if (ios /= 0 .or. i <= last .or. i > e%n .or. &
-                    len_trim(line) /= p - 1 + 17*e%nv) then
-                    ok = .false.
-                    exit
-                end if
-                do q = 1, e%nv
-                    if (line(p + 17*(q - 1):p + 17*(q - 1)) /= ' ') ok = .false.
-                    call unhex16(line(p + 17*(q - 1) + 1:p + 17*q), bits, ok)
-                    vals(q, i) = transfer(bits, 0.0_dp)
-                end do
-                if (.not. ok) exit parse
-                done(i) = .true.
-                last = i
-            end do
-            if (.not. ok) exit parse
-            if (.not. next_line('end')) exit parse
-            if (len_trim(line) /= 3) exit parse
-            e%values = vals
-            e%done = done
-            e%ndone = ndone
-            note = ''
-        end block parse
-        close (u)
-
-    contains
-
-        !> Read the next line into line; true when it starts with prefix.
-        logical function next_line(prefix)
-            character(len=*), intent(in) :: prefix
-            line(:) = ''
-            read (u, '(a)', iostat=ios) line
-            next_line = ios == 0
-            if (next_line .and. len(prefix) > 0) next_line = index(line, prefix) == 1
-        end function next_line
-
-    end subroutine read_checkpoint
-
-    ! ================================================================ fingerprints
-
-    !> CRC-64 (the polynomial of ECMA-182, reflected, initial value and final xor all ones:
-    !! CRC-64/XZ; "123456789" gives 995DC9BBDF1939FA) of the bytes of s, continuing from crc
-    !! (a previous result) when given.
-    function crc64(s, crc) result(r)
-        character(len=*), intent(in) :: s
-        integer(int64), intent(in), optional :: crc
-        integer(int64) :: r
-        integer :: k
-        if (.not. crc_table_made) call make_crc_table()
-        r = not(0_int64)
-        if (present(crc)) r = not(crc)
-        do k = 1, len(s)
-            r = ieor(crc_table(iand(ieor(r, int(iachar(s(k:k)), int64)), 255_int64)), &
-                     ishft(r, -8))
-        end do
-        r = not(r)
-    end function crc64
-
-    !> The table of crc64: the remainders of the 256 bytes.
-    subroutine make_crc_table()
-        integer(int64) :: poly, c
-        integer :: n, k
-        poly = ior(ishft(int(z'C96C5795', int64), 32), int(z'D7870F42', int64))
-        do n = 0, 255
-            c = int(n, int64)
-            do k = 1, 8
-                if (btest(c, 0)) then
-                    c = ieor(poly, ishft(c, -1))
-                else
-                    c = ishft(c, -1)
-                end if
-            end do
-            crc_table(n) = c
-        end do
-        crc_table_made = .true.
-    end subroutine make_crc_table
-
-    !> CRC-64 of a file's bytes (ERR_DECK when it cannot be read).
-    subroutine file_crc(path, crc, stat)
-        character(len=*), intent(in) :: path
-        integer(int64), intent(out) :: crc
-        type(status_t), intent(out) :: stat
-        integer :: u, ios
-        integer(int64) :: size, pos, m
-        character(len=512) :: msg
-        character(len=:), allocatable :: buf
-        integer(int64), parameter :: CHUNK = 1048576
-        stat%code = STATUS_OK
-        crc = 0
-        msg = ''
-        open (newunit=u, file=path, status='old', action='read', access='stream', &
-              form='unformatted', iostat=ios, iomsg=msg)
-        if (ios /= 0) then
-            call set_error(stat, ERR_DECK, 'cannot read '//path//': '//trim(msg))
-            return
-        end if
-        inquire (unit=u, size=size)
-        allocate (character(len=int(min(max(size, 1_int64), CHUNK))) :: buf)
-        pos = 0
-        do while (pos < size)
-            m = min(CHUNK, size - pos)
-            read (u, iostat=ios, iomsg=msg) buf(1:m)
-            if (ios /= 0) exit
-            crc = crc64(buf(1:m), crc)
-            pos = pos + m
-        end do
-        close (u)
-        if (ios /= 0) call set_error(stat, ERR_DECK, 'cannot read '//path//': '//trim(msg))
-    end subroutine file_crc
-
-    !> The deck's part of a fingerprint: CRC-64 of the deck file's bytes continued over the
-    !! bytes of the payload.
-    subroutine deck_crc(path, payload, crc, stat)
-        character(len=*), intent(in) :: path        !! the deck
-        real(dp), intent(in) :: payload(:)          !! the sweep's payload (may be empty)
-        integer(int64), intent(out) :: crc
-        type(status_t), intent(out) :: stat         !! ERR_DECK: the deck cannot be read
-        call file_crc(path, crc, stat)
-        if (size(payload) > 0) crc = crc64(transfer(payload, repeat(' ', 8*size(payload))), crc)
-    end subroutine deck_crc
-
-    !> CRC-64 of this process's executable (/proc/self/exe; 0 where there is none).
-    integer(int64) function executable_crc()
-        type(status_t) :: st
-        if (.not. exe_crc_known) then
-            call file_crc('/proc/self/exe', exe_crc_cache, st)
-            if (st%code /= STATUS_OK) exe_crc_cache = 0
-            exe_crc_known = .true.
-        end if
-        executable_crc = exe_crc_cache
-    end function executable_crc
-
-    !> 16 hexadecimal digits (upper case) of a 64-bit pattern.
-    pure function hex16(x) result(s)
-        integer(int64), intent(in) :: x
-        character(len=16) :: s
-        character(len=16), parameter :: DIGITS = '0123456789ABCDEF'
-        integer :: k, d
-        do k = 1, 16
-            d = int(ibits(x, 64 - 4*k, 4))
-            s(k:k) = DIGITS(d + 1:d + 1)
-        end do
-    end function hex16
-
-    !> The 64-bit pattern of 16 hexadecimal digits; ok becomes false on any other character.
-    pure subroutine unhex16(s, x, ok)
-        character(len=16), intent(in) :: s
-        integer(int64), intent(out) :: x
-        logical, intent(inout) :: ok
-        integer :: k, d
-        x = 0
-        do k = 1, 16
-            d = index('0123456789ABCDEF', s(k:k)) - 1
-            if (d < 0) then
-                ok = .false.
-                return
-            end if
-            x = ior(ishft(x, 4), int(d, int64))
-        end do
-    end subroutine unhex16
-
-    !> A 64-bit pattern as two reals (its 32-bit halves), exact in a message.
-    pure function crc_parts(x) result(r)
-        integer(int64), intent(in) :: x
-        real(dp) :: r(2)
-        r = [real(ibits(x, 32, 32), dp), real(ibits(x, 0, 32), dp)]
-    end function crc_parts
-
-    !> The inverse of crc_parts.
-    pure function crc_join(r) result(x)
-        real(dp), intent(in) :: r(2)
-        integer(int64) :: x
-        x = ior(ishft(int(r(1), int64), 32), int(r(2), int64))
-    end function crc_join
+    ! ================================================================ message contents
 
     !> Characters as reals (their codes), for a message.
     pure function chars_to_reals(s) result(r)
@@ -1173,117 +890,5 @@ contains
             s(k:k) = achar(max(0, min(127, nint(r(k)))))
         end do
     end function reals_to_chars
-
-    ! ================================================================ signals
-
-    !> Rank 0, during a sweep: on SIGINT, SIGTERM or SIGHUP remove the run's staged files,
-    !! print one line naming the deck and what is kept, and exit with 128 + the signal.
-    subroutine install_signals(deck_path, analysis, ckpt, files)
-        character(len=*), intent(in) :: deck_path, analysis, ckpt
-        type(out_files_t), intent(in), optional :: files
-        character(len=:), allocatable :: head, kept, none, tmp, why
-        integer :: k, n
-        head = 'bifilar: error (interrupted): '//deck_path//': '//analysis// &
-            ' stopped by signal '
-        why = ''
-        if (par_ranks() > 1) why = ' (mpirun sends SIGTERM to every rank when one dies)'
-        if (len(ckpt) > 0) then
-            kept = why//'; the points of the last checkpoint are kept in '//ckpt// &
-                ': run again with --resume to continue'
-            none = why//' before its first checkpoint: nothing is kept'
-        else
-            kept = why//': nothing is kept'
-            none = kept
-        end if
-        call to_c(head, sig_head)
-        n = max(len(kept), len(none)) + 1
-        if (allocated(sig_tail)) deallocate (sig_tail)
-        allocate (sig_tail(n, 2))
-        sig_tail = c_null_char
-        do k = 1, len(none)
-            sig_tail(k, 1) = none(k:k)
-        end do
-        sig_tail(len(none) + 1, 1) = achar(10)
-        do k = 1, len(kept)
-            sig_tail(k, 2) = kept(k:k)
-        end do
-        sig_tail(len(kept) + 1, 2) = achar(10)
-        sig_tail_len = [len(none) + 1, len(kept) + 1]
-        if (allocated(sig_msg)) deallocate (sig_msg)
-        allocate (sig_msg(len(head) + 4 + maxval(sig_tail_len)))
-        sig_msg = c_null_char
-        sig_ntmp = 0
-        if (present(files)) then
-            n = 1
-            do k = 1, files%waiting()
-                n = max(n, len(files%temporary(k)) + 1)
-            end do
-            if (allocated(sig_tmp)) deallocate (sig_tmp)
-            allocate (sig_tmp(n, max(1, files%waiting())))
-            sig_tmp = c_null_char
-            do k = 1, files%waiting()
-                tmp = files%temporary(k)
-                if (len(tmp) == 0) cycle
-                sig_ntmp = sig_ntmp + 1
-                do n = 1, len(tmp)
-                    sig_tmp(n, sig_ntmp) = tmp(n:n)
-                end do
-            end do
-        end if
-        do k = 1, size(SIGNALS)
-            sig_old(k) = c_signal(SIGNALS(k), c_funloc(on_signal))
-        end do
-    end subroutine install_signals
-
-    !> Put back the handlers there were before the sweep.
-    subroutine remove_signals()
-        type(c_funptr) :: prev
-        integer :: k
-        do k = 1, size(SIGNALS)
-            prev = c_signal(SIGNALS(k), sig_old(k))
-        end do
-    end subroutine remove_signals
-
-    !> A string as a null-terminated C array.
-    subroutine to_c(s, a)
-        character(len=*), intent(in) :: s
-        character(kind=c_char), allocatable, intent(inout) :: a(:)
-        integer :: k
-        if (allocated(a)) deallocate (a)
-        allocate (a(len(s) + 1))
-        do k = 1, len(s)
-            a(k) = s(k:k)
-        end do
-        a(len(s) + 1) = c_null_char
-    end subroutine to_c
-
-    !> The signal handler (async-signal-safe: write, unlink, _exit only).
-    subroutine on_signal(sig) bind(C)
-        integer(c_int), value :: sig
-        integer(c_size_t) :: rc
-        integer(c_int) :: rcu, s
-        integer :: k, nd, n
-        character(kind=c_char) :: digits(4)
-        do k = 1, sig_ntmp
-            rcu = c_unlink_sig(sig_tmp(:, k))
-        end do
-        if (sig_writing == 1) rcu = c_unlink_sig(sig_ckpt_tmp)
-        s = sig
-        nd = 0
-        do while (nd < 4)
-            nd = nd + 1
-            digits(5 - nd) = achar(48 + mod(s, 10))
-            s = s/10
-            if (s == 0) exit
-        end do
-        n = size(sig_head) - 1
-        sig_msg(1:n) = sig_head(1:n)
-        sig_msg(n + 1:n + nd) = digits(5 - nd:4)
-        n = n + nd
-        sig_msg(n + 1:n + sig_tail_len(sig_kept)) = sig_tail(1:sig_tail_len(sig_kept), sig_kept)
-        n = n + sig_tail_len(sig_kept)
-        rc = c_write(2_c_int, sig_msg, int(n, c_size_t))
-        call c_exit_now(128_c_int + sig)
-    end subroutine on_signal
 
 end module sweep_engine
