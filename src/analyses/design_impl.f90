@@ -295,7 +295,7 @@ contains
             ! 1. the grid's Floquet points
             call fill_task(d, [real(dp) ::], fw)
             call sweep_run(fw, trim(DESIGN_STAGES(1)), d%path, ckpt(1), plabel('Floquet points'), &
-                           na*nl*nb, 1, vals, st, options, rep)
+                           na*nl*nb, 1, vals, st, options, rep, deck_text=d%text)
             call add(rep)
             if (st%code /= STATUS_OK) exit run
             res%modulus = reshape(vals(1, :), [na, nl, nb])
@@ -338,7 +338,7 @@ contains
                 call fill_task(d, edges_payload(ew), ew)
                 call sweep_run(ew, trim(DESIGN_STAGES(2)), d%path, ckpt(2), &
                                plabel('band edges'), ne, 2, vals, st, options, rep, &
-                               payload=edges_payload(ew))
+                               payload=edges_payload(ew), deck_text=d%text)
                 call add(rep)
                 if (st%code /= STATUS_OK) exit run
                 do e = 1, ne
@@ -350,7 +350,7 @@ contains
             ! 3. the precision of every candidate
             call fill_task(d, [real(dp) ::], pw)
             call sweep_run(pw, trim(DESIGN_STAGES(3)), d%path, ckpt(3), plabel('precision'), &
-                           nl*nb, 3, vals, st, options, rep)
+                           nl*nb, 3, vals, st, options, rep, deck_text=d%text)
             call add(rep)
             if (st%code /= STATUS_OK) exit run
             res%period_s = reshape(vals(1, :), [nl, nb])

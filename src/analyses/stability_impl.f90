@@ -205,7 +205,8 @@ contains
         call chart_task(d, task, stat)
         if (stat%code /= 0) return
         call sweep_run(task, 'chart', d%path, checkpoint_path(outdir, d%name, 'chart'), &
-                       d%name//': chart', d%chart_nx*d%chart_ny, 2, vals, stat, options, rep, fs)
+                       d%name//': chart', d%chart_nx*d%chart_ny, 2, vals, stat, options, rep, fs, &
+                       deck_text=d%text)
         if (present(report)) report = rep
         if (stat%code /= 0) return
         wall_seconds = rep%wall_seconds

@@ -11,7 +11,7 @@ module driver
     use kinds, only: dp
     use status, only: status_t, STATUS_OK, ERR_DECK, exit_status_of, status_meaning
     use text, only: itoa, sci, fixed
-    use deck, only: deck_t, read_deck, analysis_requested
+    use deck, only: deck_t, read_deck, read_deck_text, analysis_requested
     use output_io, only: out_files_t, remove_file
     use simulate, only: run_simulation, run_summary_t, simulation_ready
     use rig, only: rig_of, make_pendulum
@@ -177,7 +177,11 @@ contains
         do
             call sweep_next_job(job, quit)
             if (quit) return
-            call read_deck(job%deck_path, d, st)
+            if (len(job%deck_text) > 0) then
+                call read_deck_text(job%deck_path, job%deck_text, d, st)
+            else
+                call read_deck(job%deck_path, d, st)
+            end if
             if (st%code == STATUS_OK) then
                 select case (job%analysis)
                 case ('chart')

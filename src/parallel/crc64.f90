@@ -91,14 +91,21 @@ contains
         if (ios /= 0) call set_error(stat, ERR_DECK, 'cannot read '//path//': '//trim(msg))
     end subroutine file_crc
 
-    !> The deck's part of a sweep's fingerprint: CRC-64 of the deck file's bytes continued
-    !! over the bytes of the payload.
-    subroutine deck_crc(path, payload, crc, stat)
+    !> The deck's part of a sweep's fingerprint: CRC-64 of the deck's text (when given: the
+    !! deck as read into memory, deck_t%text), else of the deck file's bytes, continued over
+    !! the bytes of the payload.
+    subroutine deck_crc(path, payload, crc, stat, text)
         character(len=*), intent(in) :: path        !! the deck
         real(dp), intent(in) :: payload(:)          !! the sweep's payload (may be empty)
         integer(int64), intent(out) :: crc          !! the fingerprint part
         type(status_t), intent(out) :: stat         !! ERR_DECK: the deck cannot be read
-        call file_crc(path, crc, stat)
+        character(len=*), intent(in), optional :: text  !! the deck's text
+        if (present(text)) then
+            crc = crc64_of(text)
+            stat%code = 0
+        else
+            call file_crc(path, crc, stat)
+        end if
         if (size(payload) > 0) then
             crc = crc64_of(transfer(payload, repeat(' ', 8*size(payload))), crc)
         end if

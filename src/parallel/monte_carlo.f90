@@ -101,7 +101,7 @@ contains
             label = d%name//': identify (Monte Carlo)'
         end if
         call sweep_run(task, MC_ANALYSIS, path, ckpt, label, n, nv, vals, stat, options, &
-                       report, files, payload)
+                       report, files, payload, d%text)
         if (stat%code /= STATUS_OK) return
         k = findloc(vals(nv, :) /= 0.0_dp, .true., 1)
         if (k > 0) then

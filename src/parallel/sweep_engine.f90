@@ -109,6 +109,8 @@ module sweep_engine
         integer(int64) :: deck_crc = 0, exe_crc = 0 !! fingerprint parts
         character(len=:), allocatable :: analysis   !! e.g. 'chart'
         character(len=:), allocatable :: deck_path  !! the deck as rank 0 was given it
+        !> the deck's text as rank 0 read it ('' when each rank reads the file deck_path)
+        character(len=:), allocatable :: deck_text
         real(dp), allocatable :: payload(:)         !! what else the task needs (may be empty)
     end type sweep_job_t
 
@@ -230,7 +232,7 @@ contains
     !! for none) the sweep is checkpointed and, with options%resume, continued from a
     !! checkpoint of the same deck, analysis and executable.
     subroutine sweep_run(task, analysis, deck_path, ckpt, label, npoints, nvalues, values, &
-                         stat, options, report, files, payload)
+                         stat, options, report, files, payload, deck_text)
         class(sweep_task_t), intent(in) :: task     !! the points
         character(len=*), intent(in) :: analysis    !! e.g. 'chart'
         character(len=*), intent(in) :: deck_path   !! the deck file (as given)
@@ -245,8 +247,12 @@ contains
         !> What else the other ranks need to build the task beyond the deck (the task's own
         !! encoding; part of the fingerprint)
         real(dp), intent(in), optional :: payload(:)
+        !> The deck as read (deck_t%text): the fingerprint's, and sent to the other ranks,
+        !! which then need no file of the deck; without it the deck file at deck_path
+        character(len=*), intent(in), optional :: deck_text
         type(engine_t) :: e
         type(sweep_options_t) :: opt
+        character(len=:), allocatable :: text
         type(sweep_report_t) :: rep
         integer :: r, k
         integer(int64) :: c0, c1, rate
@@ -288,7 +294,7 @@ contains
             allocate (e%payload(0))
         end if
         if (len(ckpt) > 0 .or. e%nranks > 1) then      ! (a fingerprint is needed)
-            call deck_crc(deck_path, e%payload, e%deck_crc, stat)
+            call deck_crc(deck_path, e%payload, e%deck_crc, stat, deck_text)
             if (stat%code /= STATUS_OK) then
                 stat%msg = analysis//': cannot read the deck for the sweep''s fingerprint: '// &
                     stat%msg
@@ -309,8 +315,10 @@ contains
         e%next = 1
 
         ! tell the other ranks
+        text = ''
+        if (present(deck_text)) text = deck_text
         do r = 1, e%nranks - 1
-            call par_post(r, TAG_JOB, job_message(e, deck_path))
+            call par_post(r, TAG_JOB, job_message(e, deck_path, text))
         end do
 
         call e%pr%start(label, npoints)
@@ -340,14 +348,15 @@ contains
     end subroutine sweep_run
 
     !> The JOB message: id, points, values, the fingerprint, the analysis and the deck.
-    function job_message(e, deck_path) result(m)
+    function job_message(e, deck_path, deck_text) result(m)
         type(engine_t), intent(in) :: e
         character(len=*), intent(in) :: deck_path
+        character(len=*), intent(in) :: deck_text   !! '' when the ranks read the file
         real(dp), allocatable :: m(:)
         m = [real(e%id, dp), real(e%n, dp), real(e%nv, dp), crc_parts(e%deck_crc), &
              crc_parts(e%exe_crc), real(len(e%analysis), dp), real(len(deck_path), dp), &
-             real(size(e%payload), dp), chars_to_reals(e%analysis), chars_to_reals(deck_path), &
-             e%payload]
+             real(size(e%payload), dp), real(len(deck_text), dp), chars_to_reals(e%analysis), &
+             chars_to_reals(deck_path), e%payload, chars_to_reals(deck_text)]
     end function job_message
 
     !> Rank 0, during a sweep: on SIGINT, SIGTERM or SIGHUP remove the run's staged files,
@@ -553,7 +562,7 @@ contains
     subroutine sweep_next_job(job, quit)
         type(sweep_job_t), intent(out) :: job       !! the sweep, when quit is false
         logical, intent(out) :: quit                !! the program ends
-        integer :: tag, la, lp, lq
+        integer :: tag, la, lp, lq, lt
         real(dp), allocatable :: m(:)
         quit = .false.
         do
@@ -562,7 +571,7 @@ contains
                 quit = .true.
                 return
             end if
-            if (tag == TAG_JOB .and. size(m) >= 10) exit
+            if (tag == TAG_JOB .and. size(m) >= 11) exit
         end do                                      ! (a stray message of an ended sweep)
         job%id = nint(m(1))
         job%npoints = nint(m(2))
@@ -572,9 +581,11 @@ contains
         la = nint(m(8))
         lp = nint(m(9))
         lq = nint(m(10))
-        job%analysis = reals_to_chars(m(11:10 + la))
-        job%deck_path = reals_to_chars(m(11 + la:10 + la + lp))
-        job%payload = m(11 + la + lp:10 + la + lp + lq)
+        lt = nint(m(11))
+        job%analysis = reals_to_chars(m(12:11 + la))
+        job%deck_path = reals_to_chars(m(12 + la:11 + la + lp))
+        job%payload = m(12 + la + lp:11 + la + lp + lq)
+        job%deck_text = reals_to_chars(m(12 + la + lp + lq:11 + la + lp + lq + lt))
     end subroutine sweep_next_job
 
     !> Another rank: take part in the sweep `job` with `task` (built from the job by the
@@ -615,7 +626,11 @@ contains
         type(sweep_job_t), intent(in) :: job
         type(status_t), intent(out) :: stat
         integer(int64) :: crc
-        call deck_crc(job%deck_path, job%payload, crc, stat)
+        if (len(job%deck_text) > 0) then
+            call deck_crc(job%deck_path, job%payload, crc, stat, job%deck_text)
+        else
+            call deck_crc(job%deck_path, job%payload, crc, stat)
+        end if
         if (stat%code /= STATUS_OK) return
         if (crc /= job%deck_crc) then
             call set_error(stat, ERR_DECK, 'reads another deck at '//job%deck_path// &
@@ -877,7 +892,7 @@ contains
         real(dp) :: r(len(s))
         integer :: k
         do k = 1, len(s)
-            r(k) = real(iachar(s(k:k)), dp)
+            r(k) = real(ichar(s(k:k)), dp)
         end do
     end function chars_to_reals
 
@@ -887,7 +902,7 @@ contains
         character(len=size(r)) :: s
         integer :: k
         do k = 1, size(r)
-            s(k:k) = achar(max(0, min(127, nint(r(k)))))
+            s(k:k) = char(max(0, min(255, nint(r(k)))))
         end do
     end function reals_to_chars
 
