@@ -313,7 +313,7 @@ contains
     !! exactly one line, on stdout 'NAME: ...' when it ran or on stderr 'bifilar: error
     !! (KIND): PATH: ...' when it failed; no file of a failed deck left, temporary files
     !! included (with --checkpoint 0 a sweep's checkpoint NAME.SWEEP.partial may stay, as
-    !! documented: README "No partial, stale-mixed or corrupt file"); no temporary file and
+    !! documented: doc/output.md); no temporary file and
     !! no checkpoint left by a deck that finished; every analysis of a finished deck wrote
     !! its files, none empty or cut short (note_ran); no NaN, Inf or '****' in any file
     !! written; the batch's exit status the worst of its decks'.  And the decks cover every

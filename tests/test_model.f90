@@ -492,7 +492,7 @@ contains
         if (st%code /= 0) return
                 do k = 1, size(claims)
             call t%check('claim measured: '//claims(k)%what, ieee_is_finite(claims(k)%ours))
-            ! claim 4 (tilting frequency falls by much) is not reproduced: see README
+            ! claim 4 (tilting frequency falls by much) is not reproduced: see doc/paper.md
             if (k == 4) cycle
             call t%check('claim holds: '//claims(k)%what//' ('//claims(k)%measure//')', &
                          claims(k)%holds)

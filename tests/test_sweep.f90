@@ -41,7 +41,7 @@ module test_sweep
     !! cut short by the SIGCHLD of a rank that dies, and rounded: with the default 1 s the
     !! SIGKILL may follow the SIGTERM at once on a loaded machine, before rank 0 has said
     !! anything (tests/bench/kill_window.sh, two cores shared with six busy processes: no
-    !! line in 3 of 100 runs with 1 s).  3 s leaves rank 0 its time (README, "Stopping").
+    !! line in 3 of 100 runs with 1 s).  3 s leaves rank 0 its time (doc/parallel.md).
     character(len=*), parameter :: MPIKILL = MPIENV//' OMPI_MCA_odls_base_sigkill_timeout=3 '// &
         'OMP_NUM_THREADS=1 mpirun -q --oversubscribe'
     !> The parallelepiped of input/box_chart.nml (stable and unstable points, cheap ones and
@@ -374,7 +374,7 @@ contains
         call t%check('design kill: resumed file = uninterrupted file, byte for byte', &
                      same_file(d//'/out/rig.design', d//'/ref/rig.design'))
         ! (SIGKILL may land while a checkpoint is written: its NAME.*.partial.tmp.PID.N stays,
-        ! as the README says of SIGKILL; the checkpoints themselves must be gone)
+        ! as doc/parallel.md says of SIGKILL; the checkpoints themselves must be gone)
         call t%check('design kill: its checkpoints are removed with the commit', &
                      shell_count('ls '//d//'/out | grep -c ''\.partial$''', d) == 0)
     end subroutine test_design_resume

@@ -1,4 +1,4 @@
-!> Rig design (analysis `design`, issue 14): the suspension that measures I1 best and keeps
+!> Rig design (analysis `design`): the suspension that measures I1 best and keeps
 !! its torsion stable.
 !!
 !! Kane & Tseng close their parallelepiped example (after Figs. 13-16) with the advice: to

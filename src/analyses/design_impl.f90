@@ -51,31 +51,24 @@ submodule (design) design_impl
 contains
 
     !> What the candidates of deck d are made from.
-    module pure function design_rig_of(d) result(dr)
-        type(deck_t), intent(in) :: d           !! the deck
-        type(design_rig_t) :: dr
+    module procedure design_rig_of
         dr%rg = rig_of(d)
         dr%acc = accuracy_of(d)
         dr%fq_rtol = d%floquet_rtol
         dr%fq_segments = d%floquet_segments
-    end function design_rig_of
+    end procedure design_rig_of
 
     !> The rig with the candidate's cables l = l' and support spacing b (deck units).
-    module pure function candidate_rig(rg, l, b) result(rr)
-        type(rig_t), intent(in) :: rg           !! the deck's rig
-        real(dp), intent(in) :: l, b            !! candidate (deck units)
-        type(rig_t) :: rr
+    module procedure candidate_rig
         rr = rg
         rr%l = l
         rr%l_prime = l
         rr%b = b
-    end function candidate_rig
+    end procedure candidate_rig
 
     !> The candidate grid of &design: l from l_min to l_max (nl values), b (nb values; the
     !! deck's b when b_min = b_max = 0), amplitudes j amplitude_max / n_amplitudes.
-    module subroutine design_grid(d, ls, bs, amps)
-        type(deck_t), intent(in) :: d           !! the deck
-        real(dp), allocatable, intent(out) :: ls(:), bs(:), amps(:)
+    module procedure design_grid
         integer :: i
         allocate (ls(d%design_nl), bs(d%design_nb), amps(d%design_n_amplitudes))
         do i = 1, d%design_nl
@@ -96,15 +89,13 @@ contains
             amps(i) = d%design_amplitude_max*i/d%design_n_amplitudes
         end do
         amps(d%design_n_amplitudes) = d%design_amplitude_max
-    end subroutine design_grid
+    end procedure design_grid
 
     !> The preconditions of analyses = 'design', before any computing: pure torsion is an
     !! exact motion of the deck's body on equal cables, with b1 the vertical principal axis
     !! (its I1 is the one measured), and u_period lies below the shortest period of the
     !! candidates (ERR_DECK otherwise).
-    module subroutine design_ready(d, stat)
-        type(deck_t), intent(in) :: d           !! the deck
-        type(status_t), intent(out) :: stat     !! ERR_DECK
+    module procedure design_ready
         type(pendulum_t) :: p
         real(dp), allocatable :: ls(:), bs(:), amps(:)
         real(dp) :: t, tmin, lmin, bmin
@@ -143,15 +134,11 @@ contains
             '&design u_period = '//num(d%design_u_period)//' s: not below the shortest '// &
             'period of the candidates ('//num(tmin)//' s at l = '//num(lmin)//', b = '// &
             num(bmin)//'); allowed: 0 <= u_period < '//num(tmin)//' s')
-    end subroutine design_ready
+    end procedure design_ready
 
     !> The largest Floquet multiplier of pure torsion of candidate (l, b) at amp_deg, with
     !! the deck's &floquet rtol and segments (CHART_INVALID, CHART_FAILED as in a chart).
-    module subroutine candidate_modulus(dr, l, b, amp_deg, modulus)
-        type(design_rig_t), intent(in) :: dr    !! the deck's rig and Floquet settings
-        real(dp), intent(in) :: l, b            !! candidate (deck units)
-        real(dp), intent(in) :: amp_deg         !! torsion amplitude (degrees)
-        real(dp), intent(out) :: modulus        !! largest |multiplier| or sentinel
+    module procedure candidate_modulus
         type(pendulum_t) :: p
         type(status_t) :: st
         real(dp) :: period
@@ -160,7 +147,7 @@ contains
         if (st%code /= STATUS_OK) return
         call floquet_point(p, amp_deg, dr%fq_rtol, dr%fq_segments, modulus, period, &
                            dr%acc%method)
-    end subroutine candidate_modulus
+    end procedure candidate_modulus
 
     !> Stable by the design's criterion: a real modulus (no sentinel) <= 1 + tolerance.
     pure logical function is_stable(modulus)
@@ -232,15 +219,7 @@ contains
     !> The precision of candidate (l, b) measured by one period at amp_deg: its exact period
     !! (s), I1 inverted back from it (invert_periods) and the first-order budget of that
     !! inversion (period_budget): u(I1)/I1; and the linear formula's relative error there.
-    module subroutine candidate_precision(dr, l, b, amp_deg, u, period_s, u_rel, linear_error, stat)
-        type(design_rig_t), intent(in) :: dr    !! the deck's rig (the body, I1 = inertia(1))
-        real(dp), intent(in) :: l, b            !! candidate (deck units)
-        real(dp), intent(in) :: amp_deg         !! amplitude of the measurement (degrees)
-        type(input_u_t), intent(in) :: u        !! standard uncertainties
-        real(dp), intent(out) :: period_s       !! exact period (s)
-        real(dp), intent(out) :: u_rel          !! predicted u(I1)/I1
-        real(dp), intent(out) :: linear_error   !! m g b b' T^2/(16 pi^2 l) / I1 - 1
-        type(status_t), intent(out) :: stat     !! ERR_DECK (cables cannot reach), ERR_NUMERIC
+    module procedure candidate_precision
         type(rig_t) :: dd
         type(period_fit_t) :: fit
         period_s = CHART_INVALID
@@ -259,21 +238,14 @@ contains
         end if
         u_rel = fit%u_i1/fit%i1
         linear_error = linear_inertia(dd, period_s)/dd%inertia(1) - 1.0_dp
-    end subroutine candidate_precision
+    end procedure candidate_precision
 
     !> The whole design of deck d (without writing): the three sweeps, the bands, the
     !! margins and the recommendation (res%found).  `label` names the progress lines.  With
     !! `outdir` the sweeps are checkpointed there (options: --resume, the interval); stat
     !! and report say how the sweeps went (a failure: a rank that cannot take part, a
     !! checkpoint that cannot be written).
-    module subroutine design_sweep(d, res, label, stat, outdir, options, report)
-        type(deck_t), intent(in) :: d           !! the deck (checked by design_ready)
-        type(design_result_t), intent(out) :: res
-        character(len=*), intent(in) :: label   !! progress label ('' for none)
-        type(status_t), intent(out), optional :: stat
-        character(len=*), intent(in), optional :: outdir    !! checkpoints' folder
-        type(sweep_options_t), intent(in), optional :: options
-        type(sweep_report_t), intent(out), optional :: report   !! of the three sweeps
+    module procedure design_sweep
         type(floquet_work_t) :: fw
         type(edge_work_t) :: ew
         type(precision_work_t) :: pw
@@ -396,17 +368,12 @@ contains
             res%wall_seconds = all%wall_seconds
         end subroutine add
 
-    end subroutine design_sweep
+    end procedure design_sweep
 
     !> The task of one of the design's sweeps, by its name (DESIGN_STAGES), as the other
     !! ranks of an MPI run build it: from the deck, and for the edges from the sweep's
     !! payload (edges_payload); ERR_DECK for another name.
-    module subroutine design_task(stage, d, payload, task, stat)
-        character(len=*), intent(in) :: stage   !! 'design', 'design_edges', 'design_precision'
-        type(deck_t), intent(in) :: d           !! the deck
-        real(dp), intent(in) :: payload(:)      !! the edges' sweep: il, ib, ia, left_stable
-        class(sweep_task_t), allocatable, intent(out) :: task
-        type(status_t), intent(out) :: stat     !! ERR_DECK: no such stage
+    module procedure design_task
         stat%code = STATUS_OK
         select case (stage)
         case ('design')
@@ -420,7 +387,7 @@ contains
             return
         end select
         call fill_task(d, payload, task)
-    end subroutine design_task
+    end procedure design_task
 
     !> Fill a task of the design's sweeps from the deck (and the edges from payload).
     subroutine fill_task(d, payload, task)
@@ -664,14 +631,7 @@ contains
     !! outdir), then OUTDIR/NAME.design, or, when no candidate qualifies, ERR_MODEL with
     !! the reason and the range to try next (nothing written).  With `files` the file
     !! joins the run's others; without it it is committed at once.
-    module subroutine run_design(d, outdir, res, stat, files, options, report)
-        type(deck_t), intent(in) :: d           !! the deck
-        character(len=*), intent(in) :: outdir  !! output directory
-        type(design_result_t), intent(out) :: res
-        type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_MODEL (no candidate), ERR_IO
-        type(out_files_t), intent(inout), optional, target :: files  !! the run's files
-        type(sweep_options_t), intent(in), optional :: options  !! --resume, the interval
-        type(sweep_report_t), intent(out), optional :: report   !! of the sweeps
+    module procedure run_design
         type(out_files_t), target :: own
         type(out_files_t), pointer :: fs
         integer :: u, ios, i, m, k, na
@@ -785,7 +745,7 @@ contains
             end do
         end function amp_names
 
-    end subroutine run_design
+    end procedure run_design
 
     !> A number for messages: 4 significant digits without trailing zeros, plain from 1e-3
     !! to 1e5 (0.13, 1.137, 50), with its exponent outside (text's sci).

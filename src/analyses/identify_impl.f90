@@ -30,9 +30,7 @@ contains
     !! periods possible on a symmetric rig (T(I1 -> 0) below each); with a record, the
     !! record readable and sound (read_record), I1 among the estimated parameters,
     !! 'amplitude' only with &start mode 'raised', more samples than parameters, the start.
-    module subroutine identify_ready(d, stat)
-        type(deck_t), intent(in) :: d           !! the deck
-        type(status_t), intent(out) :: stat     !! ERR_DECK
+    module procedure identify_ready
         type(pendulum_t) :: p
         type(record_t) :: rec
         type(period_fit_t) :: f
@@ -110,20 +108,13 @@ contains
             return
         end if
         call start_state(start_of(d), p, y0, th0, stat)
-    end subroutine identify_ready
+    end procedure identify_ready
 
     !> Run analyses = 'identify' for a deck and write OUTDIR/NAME.identify (and, with a
     !! record, OUTDIR/NAME.fit.dat) into `files`.  The Monte Carlo is a sweep over the ranks
     !! and threads, checkpointed to OUTDIR/NAME.identify_mc.partial (options: --resume and
     !! the interval; report: how its sweep went, ranks 1 without Monte Carlo).
-    module subroutine run_identify(d, outdir, res, stat, files, options, report)
-        type(deck_t), intent(in) :: d           !! the deck (identify_ready passed)
-        character(len=*), intent(in) :: outdir  !! output directory
-        type(identify_result_t), intent(out) :: res
-        type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC (exit 3), ERR_IO
-        type(out_files_t), intent(inout) :: files   !! the run's files
-        type(sweep_options_t), intent(in), optional :: options  !! --resume, the interval
-        type(sweep_report_t), intent(out), optional :: report   !! of the Monte Carlo
+    module procedure run_identify
         real(dp) :: c0, c1
         type(record_t) :: rec
         type(sweep_report_t) :: rep
@@ -143,7 +134,7 @@ contains
         call write_identify(d, outdir, res, files, stat)
         if (stat%code /= 0) return
         if (res%from_record) call write_fit(d, outdir, rec, res, files, stat)
-    end subroutine run_identify
+    end procedure run_identify
 
     !> The standard uncertainties of a deck's inputs.
     pure function input_u(d) result(u)
@@ -217,15 +208,7 @@ contains
     !> I1 (and the other parameters asked for) from a record: the fit, the first-order
     !! budget, Monte Carlo when asked (its sweep checkpointed in outdir when given, see
     !! run_identify).
-    module subroutine identify_record(d, rec, res, stat, outdir, options, report, files)
-        type(deck_t), intent(in) :: d
-        type(record_t), intent(in) :: rec
-        type(identify_result_t), intent(out) :: res
-        type(status_t), intent(out) :: stat
-        character(len=*), intent(in), optional :: outdir
-        type(sweep_options_t), intent(in), optional :: options
-        type(sweep_report_t), intent(inout), optional :: report
-        type(out_files_t), intent(in), optional :: files
+    module procedure identify_record
         type(record_fit_t) :: prob
         type(lsq_result_t) :: fit
         real(dp), allocatable :: p0(:), h(:), jac(:, :), cov(:, :), dpdx(:, :), ux(:), xval(:)
@@ -307,7 +290,7 @@ contains
             res%i1_linear = linear_inertia(rig_of(d), res%period_linear)
             res%linear_error = res%i1_linear/res%i1 - 1.0_dp
         end if
-    end subroutine identify_record
+    end procedure identify_record
 
     !> Monte Carlo of a record fit (see the module header) as a sweep (module monte_carlo):
     !! res%u_i1_mc, res%mc_mean.  phat, jac: the estimate and its Jacobian, res%u_p and
@@ -345,11 +328,7 @@ contains
     !! run build it: from the deck (its periods, or its record, read here and checked
     !! against rank 0's by its CRC-64) and the sweep's payload.  ERR_DECK when the record
     !! cannot be read or is another than rank 0's.
-    module subroutine identify_mc_task(d, payload, task, stat)
-        type(deck_t), intent(in) :: d           !! the deck
-        real(dp), intent(in) :: payload(:)      !! the sweep's payload
-        class(sweep_task_t), allocatable, intent(out) :: task
-        type(status_t), intent(out) :: stat     !! ERR_DECK
+    module procedure identify_mc_task
         type(record_t) :: rec
         integer(int64) :: crc
         stat%code = 0
@@ -375,7 +354,7 @@ contains
         type is (record_mc_task_t)
             call record_mc_task(d, rec, payload, task)
         end select
-    end subroutine identify_mc_task
+    end procedure identify_mc_task
 
     !> OUTDIR/NAME.identify: key = value lines, then the budget table of I1.
     subroutine write_identify(d, outdir, res, files, stat)

@@ -357,12 +357,12 @@ contains
         if (ios == 0) write (u, '(a)', iostat=ios) '', '## Accuracy against run time', '', &
             'Error against CPU time of LSODA (rtol 1e-3 ... 1e-12) and fixed-step RK4 on the '// &
             'paper''s model (`input/work_precision_cylinder.nml`) and the elastic model '// &
-            '(`input/work_precision_elastic.nml`); README, "Error against run time".'
+            '(`input/work_precision_elastic.nml`); doc/work_precision.md.'
         call figure_lines(-3)
         if (ios == 0) write (u, '(a)', iostat=ios) '', '## The moment of inertia from a record', &
             '', 'The fit of `input/identify_record.nml` (analysis identify: I1, the damping '// &
             'and the release amplitude from a 30 s gyro record of a laboratory rig with '// &
-            'unequal cables; README, "Moment of inertia from what was measured").'
+            'unequal cables; doc/identify.md).'
         call figure_lines(-4)
         call atomic_commit(u, outdir//'/report.md', stat, ios)
 
@@ -496,8 +496,7 @@ contains
         write (u, '(a)', iostat=ios) '', '## Stability of torsion (Figs. 13-16)', '', &
             'Paper: the unstable suspension has a largest Floquet multiplier of modulus 2643 '// &
             'at 45 degrees; from theta1 = 0.01 rad its tilting grows dramatically (Fig. 14), '// &
-            'the stable one''s stays small (Fig. 16).  Our parallelepipeds: README, '// &
-            '"Figs. 13-16".', '', &
+            'the stable one''s stays small (Fig. 16).  Our parallelepipeds: doc/paper.md.', '', &
             '| deck | figures | period t* | largest modulus | stable | max abs theta1 (rad) '// &
             'from theta1(0) = 0.01 |', '|---|---|---|---|---|---|'
         do k = 1, size(decks)
@@ -524,7 +523,7 @@ contains
             iostat=ios) '', 'The paper''s advice, "use the stability analysis for various '// &
             'combinations of b and l until one is found that does not lead to a prediction '// &
             'of instability", automated (`input/box_design.nml`, the block with b'' = 0.2 m; '// &
-            'README, "Rig design"): recommended l = l'' = '//sci(rl, 4)//' m, stable at '// &
+            'doc/design.md): recommended l = l'' = '//sci(rl, 4)//' m, stable at '// &
             'every amplitude up to '//sci(am, 3)//' degrees, '//sci(ml, 3)//' m from the '// &
             'nearest unstable band, predicted u(I1)/I1 = '//sci(ur, 3)//'.'
     end subroutine stability_lines
@@ -560,8 +559,8 @@ contains
         if (ios == 0) write (u, '(a)', iostat=ios) '', &
             '`cylinder_l180_elastic` (`model = ''elastic''`, `&cables` of that deck) against '// &
             '`cylinder_l180` (the paper''s inextensible cables), same start, rows up to tau = '// &
-            trim(adjustl(tend))//'.  The difference is O(1/stiffness) (README, "Elastic '// &
-            'cables").', '', '| max abs diff theta1 (rad) | max abs diff theta4 (rad) | '// &
+            trim(adjustl(tend))//'.  The difference is O(1/stiffness) (doc/elastic.md).', '', &
+            '| max abs diff theta1 (rad) | max abs diff theta4 (rad) | '// &
             'max abs diff Q (b'') | max stretch of AD (b'') | steps |', '|---|---|---|---|---|'
         call read_kv(outdir//'/cylinder_l180_elastic.summary', 'steps', nst, found)
         buf = '| '//trim(num(maxval(abs(sk%v(1:n, 2) - se%v(1:n, 2)))))//' | '// &

@@ -42,7 +42,7 @@ module simulate
         character(len=8) :: method = ''         !! the integrator used: 'lsoda' or 'radau'
     end type run_summary_t
 
-    public :: run_simulation, simulation_ready, grid_times
+    public :: run_simulation, simulation_ready
 
     interface
         !> Run the simulation of a deck and write OUTDIR/NAME.dat and OUTDIR/NAME.summary.
@@ -64,12 +64,6 @@ module simulate
             type(deck_t), intent(in) :: d           !! the deck
             type(status_t), intent(out) :: stat     !! ERR_DECK, or the start's failure
         end subroutine simulation_ready
-
-        !> The uniform output grid of a deck: tau_k = min(k dtau_out, tau_end), k = 0 .. nout.
-        module subroutine grid_times(d, times)
-            type(deck_t), intent(in) :: d           !! the deck
-            real(dp), allocatable, intent(out) :: times(:)  !! (0:nout)
-        end subroutine grid_times
     end interface
 
 end module simulate

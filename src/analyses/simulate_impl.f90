@@ -7,7 +7,7 @@ submodule (simulate) simulate_impl
     use bifilar_model, only: motion_t, motion_parts_t, evaluate, step_tensions, NSTATE
     use ode_system, only: integrator_t, integrator_stats_t
     use integrators, only: new_integrator, SOLVER_RADAU
-    use rig, only: rig_t, rig_of, start_of, method_of, make_pendulum, start_state
+    use rig, only: rig_t, rig_of, start_of, method_of, make_pendulum, start_state, output_times
     use kane_run, only: kane_run_t, kane_run_start, model_checks, tighter_rtol, &
                         angle_difference, sway_of
     use elastic_model, only: elastic_t, elastic_cables_t, elastic_start, elastic_evaluate, &
@@ -76,9 +76,7 @@ contains
     !> The preconditions of analyses = 'simulate' and 'work_precision', checked before any
     !! computing: the cables reach (make_pendulum), the start exists (start_state) and, for
     !! model = 'elastic', no &damping and the elastic start.
-    module subroutine simulation_ready(d, stat)
-        type(deck_t), intent(in) :: d           !! the deck
-        type(status_t), intent(out) :: stat     !! ERR_DECK, or the start's failure
+    module procedure simulation_ready
         type(elastic_t) :: el
         real(dp) :: yc(NSTATE), th0(5), y(ELASTIC_NSTATE)
         call make_pendulum(rig_of(d), el%p, stat)
@@ -96,18 +94,13 @@ contains
         el%damping = d%cable_damping
         call elastic_start(el, yc, y, stat)
         if (stat%code /= 0) stat%msg = 'elastic start: '//stat%msg
-    end subroutine simulation_ready
+    end procedure simulation_ready
 
     !> Run the simulation of a deck and write OUTDIR/NAME.dat and OUTDIR/NAME.summary.
     !! With `files` the files join the run's others there (the caller commits them all
     !! together, or removes them all on failure); without it they are committed at the end
     !! of a successful run and removed on failure.
-    module subroutine run_simulation(d, outdir, sm, stat, files)
-        type(deck_t), intent(in) :: d           !! the deck
-        character(len=*), intent(in) :: outdir  !! output directory
-        type(run_summary_t), intent(out) :: sm  !! figures of the run
-        type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_MODEL or ERR_IO
-        type(out_files_t), intent(inout), optional, target :: files  !! the run's files
+    module procedure run_simulation
         type(out_files_t), target :: own
         type(out_files_t), pointer :: fs
         fs => own
@@ -120,7 +113,7 @@ contains
         if (present(files)) return
         if (stat%code == 0) call own%commit(stat)
         if (stat%code /= 0) call own%discard()
-    end subroutine run_simulation
+    end procedure run_simulation
 
     !> run_simulation for the paper's model (model = 'kane'): the run loop (module run_loop)
     !! with the paper's model (kane_run_t) and the .dat writer (kane_dat_sink_t).
@@ -175,7 +168,7 @@ contains
             sink%sm%error_estimate_theta = 0.0_dp
             sink%sm%error_estimate_q = 0.0_dp
         end if
-        call grid_times(d, times)
+        call output_times(d, times)
         call drive(m, times, sink, stat)
         if (stat%code == 0) call flush_rows(sink%rb, stat)
         sm = sink%sm
@@ -184,19 +177,6 @@ contains
 
         call write_summary(d, sm, fs, sumpath, stat)
     end subroutine simulate_kane
-
-    !> The uniform output grid of a deck: tau_k = min(k dtau_out, tau_end), k = 0 .. nout.
-    module subroutine grid_times(d, times)
-        type(deck_t), intent(in) :: d           !! the deck
-        real(dp), allocatable, intent(out) :: times(:)  !! (0:nout)
-        integer :: nout, k
-        nout = nint(d%tau_end/d%dtau_out)
-        if (nout*d%dtau_out < d%tau_end*(1.0_dp - 1.0e-12_dp)) nout = nout + 1
-        allocate (times(0:nout))
-        do k = 0, nout
-            times(k) = min(k*d%dtau_out, d%tau_end)
-        end do
-    end subroutine grid_times
 
     !> One row of the paper's model's .dat file: the motion at tau as the asked columns
     !! need it (the tensions from the integrator's derivative when T_BC, T_AD are not
@@ -559,7 +539,7 @@ contains
         m%th_step = th0
         call elastic_evaluate(m%sys, y, th0(3), mo, stat, th0, cab)
         if (stat%code /= 0) return
-        call grid_times(d, times)
+        call output_times(d, times)
         call drive(m, times, sink, stat)
         sm = sink%sm
         sm%slack_time = m%solver%slack_time()

@@ -21,9 +21,7 @@ contains
 
     !> The preconditions of analyses = 'floquet', checked before any computing: the cables
     !! can reach and pure torsion is an exact motion of the scene (ERR_DECK otherwise).
-    module subroutine floquet_ready(d, stat)
-        type(deck_t), intent(in) :: d           !! the deck
-        type(status_t), intent(out) :: stat     !! ERR_DECK
+    module procedure floquet_ready
         type(pendulum_t) :: p
         integer :: ivert
         call make_pendulum(rig_of(d), p, stat)
@@ -31,17 +29,12 @@ contains
         call check_torsion_scene(p, ivert, stat)
         if (stat%code /= 0) stat%msg = 'analyses = ''floquet'' needs a scene in which pure '// &
             'torsion is an exact motion: '//stat%msg
-    end subroutine floquet_ready
+    end procedure floquet_ready
 
     !> Floquet analysis of a deck at &floquet amplitude: OUTDIR/NAME.floquet.  With `files`
     !! the file joins the run's others (see run_simulation); without it it is committed at
     !! once.
-    module subroutine run_floquet(d, outdir, res, stat, files)
-        type(deck_t), intent(in) :: d           !! the deck (a torsion scene)
-        character(len=*), intent(in) :: outdir  !! output directory
-        type(floquet_result_t), intent(out) :: res
-        type(status_t), intent(out) :: stat     !! ERR_DECK (not a torsion scene), ERR_NUMERIC
-        type(out_files_t), intent(inout), optional, target :: files  !! the run's files
+    module procedure run_floquet
         type(out_files_t), target :: own
         type(out_files_t), pointer :: fs
         type(pendulum_t) :: p
@@ -92,7 +85,7 @@ contains
         if (present(files)) return
         if (stat%code == 0) call own%commit(stat)
         if (stat%code /= 0) call own%discard()
-    end subroutine run_floquet
+    end procedure run_floquet
 
     !> A Floquet failure for want of steps gets its cause and remedy in the message.
     subroutine explain_budget(stat)
@@ -106,11 +99,7 @@ contains
 
     !> Set one chart variable (deck units: l and b over b', amplitude in degrees, r over b',
     !! lambda in radians, inertia_ratio = I3/I1) in p, or the amplitude.
-    module pure subroutine set_chart_variable(name, value, p, amp_deg)
-        character(len=*), intent(in) :: name    !! l, b, amplitude, r, lambda, inertia_ratio
-        real(dp), intent(in) :: value
-        type(pendulum_t), intent(inout) :: p
-        real(dp), intent(inout) :: amp_deg      !! torsion amplitude (degrees)
+    module procedure set_chart_variable
         select case (trim(name))
         case ('l')
             p%big_l = value
@@ -126,14 +115,11 @@ contains
         case ('inertia_ratio')
             p%inertia(3) = value*p%inertia(1)
         end select
-    end subroutine set_chart_variable
+    end procedure set_chart_variable
 
     !> The chart of a deck as a sweep (also built by the other ranks of an MPI run from the
     !! same deck): the scene, the swept variables and their grids.
-    module subroutine chart_task(d, task, stat)
-        type(deck_t), intent(in) :: d           !! the deck
-        type(chart_task_t), intent(out) :: task
-        type(status_t), intent(out) :: stat     !! ERR_DECK when the scene cannot be made
+    module procedure chart_task
         integer :: i, j
         call make_pendulum(rig_of(d), task%p0, stat)
         if (stat%code /= 0) return
@@ -150,15 +136,11 @@ contains
         task%rtol = d%floquet_rtol
         task%segments = d%floquet_segments
         task%method = method_of(d)
-    end subroutine chart_task
+    end procedure chart_task
 
     !> Chart point k: values = [max_modulus, period] (sentinels, see floquet_point).  Never
     !! fails itself.
-    module subroutine chart_point(self, i, values, stat)
-        class(chart_task_t), intent(in) :: self
-        integer, intent(in) :: i                !! 1 .. nx*ny, x index fastest
-        real(dp), intent(out) :: values(:)      !! max_modulus, period
-        type(status_t), intent(out) :: stat     !! always OK
+    module procedure chart_point
         type(pendulum_t) :: p
         real(dp) :: amp
         integer :: ix, iy
@@ -170,7 +152,7 @@ contains
         call set_chart_variable(self%x, self%xs(ix), p, amp)
         call set_chart_variable(self%y, self%ys(iy), p, amp)
         call floquet_point(p, amp, self%rtol, self%segments, values(1), values(2), self%method)
-    end subroutine chart_point
+    end procedure chart_point
 
     !> Stability chart over the grid of &chart: OUTDIR/NAME.chart.dat with one row per point,
     !! `x y max_modulus period` (CHART_INVALID where no analysis is possible, CHART_FAILED
@@ -178,17 +160,7 @@ contains
     !! sweep over threads and ranks, checkpointed to OUTDIR/NAME.chart.partial (see module
     !! sweep_engine; `options`: --resume and the checkpoint interval).  With `files` the file
     !! joins the run's others (see run_simulation); without it it is committed at once.
-    module subroutine run_chart(d, outdir, nstable, wall_seconds, stat, files, nfailed, options, &
-                         report)
-        type(deck_t), intent(in) :: d           !! the deck
-        character(len=*), intent(in) :: outdir  !! output directory
-        integer, intent(out) :: nstable         !! number of stable points
-        real(dp), intent(out) :: wall_seconds   !! elapsed time of the sweep
-        type(status_t), intent(out) :: stat
-        type(out_files_t), intent(inout), optional, target :: files  !! the run's files
-        integer, intent(out), optional :: nfailed   !! number of points whose analysis failed
-        type(sweep_options_t), intent(in), optional :: options  !! resume, checkpoint interval
-        type(sweep_report_t), intent(out), optional :: report   !! ranks, resumed points, ...
+    module procedure run_chart
         type(out_files_t), target :: own
         type(out_files_t), pointer :: fs
         type(chart_task_t) :: task
@@ -238,6 +210,6 @@ contains
         if (present(files)) return
         if (stat%code == 0) call own%commit(stat)
         if (stat%code /= 0) call own%discard()
-    end subroutine run_chart
+    end procedure run_chart
 
 end submodule stability_impl

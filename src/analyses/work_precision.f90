@@ -60,7 +60,7 @@ module work_precision
         integer :: nout = 0
     end type wp_result_t
 
-    public :: run_work_precision, solve_lsoda, solve_rk4, solve_rk4_sys, output_times
+    public :: run_work_precision, solve_lsoda, solve_rk4, solve_rk4_sys
     public :: trajectory_errors
 
     interface
@@ -108,12 +108,6 @@ module work_precision
             integer, intent(out) :: steps, nfe      !! steps and right-hand-side evaluations
             type(status_t), intent(out) :: stat     !! a right-hand-side failure or non-finite state
         end subroutine solve_rk4_sys
-
-        !> Output times 0, dtau_out, ..., tau_end of a deck (as the simulation's rows).
-        module subroutine output_times(d, times)
-            type(deck_t), intent(in) :: d               !! the deck
-            real(dp), allocatable, intent(out) :: times(:)
-        end subroutine output_times
 
         !> Errors of a trajectory against the reference at the output times, and its energy
         !! error against its own start.

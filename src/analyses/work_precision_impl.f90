@@ -12,7 +12,7 @@ submodule (work_precision) work_precision_impl
     use ode_system, only: integrator_t, integrator_stats_t
     use integrators, only: new_integrator, SOLVER_LSODA, SOLVER_RADAU
     use deck, only: deck_t, deck_echo
-    use rig, only: rig_of, start_of, make_pendulum, start_state
+    use rig, only: rig_of, start_of, make_pendulum, start_state, output_times
     use kane_run, only: angle_difference, sway_of
     use output_io, only: out_files_t, all_finite
     use text, only: sci
@@ -31,32 +31,12 @@ submodule (work_precision) work_precision_impl
 
 contains
 
-    !> Output times 0, dtau_out, ..., tau_end of a deck (as the simulation's rows).
-    module subroutine output_times(d, times)
-        type(deck_t), intent(in) :: d               !! the deck
-        real(dp), allocatable, intent(out) :: times(:)
-        integer :: nout, k
-        nout = nint(d%tau_end/d%dtau_out)
-        if (nout*d%dtau_out < d%tau_end*(1.0_dp - 1.0e-12_dp)) nout = nout + 1
-        allocate (times(0:nout))
-        do k = 0, nout
-            times(k) = min(k*d%dtau_out, d%tau_end)
-        end do
-    end subroutine output_times
-
     !> LSODA from y0 at times(0) to every later time.
-    module subroutine solve_lsoda(p, y0, times, rtol, atol, ys, steps, nfe, stat)
-        type(pendulum_t), intent(in) :: p       !! scaled parameters
-        real(dp), intent(in) :: y0(NSTATE)      !! state at times(0)
-        real(dp), intent(in) :: times(0:)       !! output times, increasing
-        real(dp), intent(in) :: rtol, atol      !! tolerances
-        real(dp), intent(out) :: ys(:, 0:)      !! (NSTATE, 0:n) states at the times
-        integer, intent(out) :: steps, nfe      !! integrator counters
-        type(status_t), intent(out) :: stat     !! the integrator's failure
+    module procedure solve_lsoda
         type(bifilar_t) :: sys
         sys%p = p
         call solve_lsoda_sys(sys, y0, times, rtol, [atol], ys, steps, nfe, stat)
-    end subroutine solve_lsoda
+    end procedure solve_lsoda
 
     !> LSODA on any system, atol of size 1 or n; the elastic model through elastic_solver
     !! (the cables' taut/slack switches located and restarted), by LSODA or, with method =
@@ -102,28 +82,14 @@ contains
     end subroutine solve_lsoda_sys
 
     !> Fixed-step classical Runge-Kutta 4 with `m` equal steps per output interval.
-    module subroutine solve_rk4(p, y0, times, m, ys, steps, nfe, stat)
-        type(pendulum_t), intent(in) :: p       !! scaled parameters
-        real(dp), intent(in) :: y0(NSTATE)      !! state at times(0)
-        real(dp), intent(in) :: times(0:)       !! output times, increasing
-        integer, intent(in) :: m                !! steps per output interval
-        real(dp), intent(out) :: ys(:, 0:)      !! (NSTATE, 0:n) states at the times
-        integer, intent(out) :: steps, nfe      !! steps and right-hand-side evaluations
-        type(status_t), intent(out) :: stat     !! a right-hand-side failure or non-finite state
+    module procedure solve_rk4
         type(bifilar_t) :: sys
         sys%p = p
         call solve_rk4_sys(sys, y0, times, m, ys, steps, nfe, stat)
-    end subroutine solve_rk4
+    end procedure solve_rk4
 
     !> Fixed-step RK4 on any system (the paper's or the elastic model).
-    module subroutine solve_rk4_sys(sys, y0, times, m, ys, steps, nfe, stat)
-        class(ode_system_t), intent(inout) :: sys   !! the equations of motion
-        real(dp), intent(in) :: y0(:)           !! state at times(0)
-        real(dp), intent(in) :: times(0:)       !! output times, increasing
-        integer, intent(in) :: m                !! steps per output interval
-        real(dp), intent(out) :: ys(:, 0:)      !! (n, 0:nout) states at the times
-        integer, intent(out) :: steps, nfe      !! steps and right-hand-side evaluations
-        type(status_t), intent(out) :: stat     !! a right-hand-side failure or non-finite state
+    module procedure solve_rk4_sys
         real(dp), dimension(size(y0)) :: y, k1, k2, k3, k4
         real(dp) :: h, t
         integer :: k, j
@@ -155,15 +121,11 @@ contains
             end do
             ys(:, k) = y
         end do
-    end subroutine solve_rk4_sys
+    end procedure solve_rk4_sys
 
     !> Errors of a trajectory against the reference at the output times, and its energy
     !! error against its own start.
-    module subroutine trajectory_errors(p, ys, yref, err_theta, err_q, err_energy)
-        type(pendulum_t), intent(in) :: p       !! scaled parameters
-        real(dp), intent(in) :: ys(:, 0:)       !! trajectory at the output times
-        real(dp), intent(in) :: yref(:, 0:)     !! reference at the same times
-        real(dp), intent(out) :: err_theta, err_q, err_energy
+    module procedure trajectory_errors
         real(dp) :: e0
         integer :: k
         err_theta = 0.0_dp
@@ -175,18 +137,12 @@ contains
             err_q = max(err_q, abs(sway_of(p, ys(:, k)) - sway_of(p, yref(:, k))))
             err_energy = max(err_energy, abs(chart_energy(p, ys(:, k)) - e0))
         end do
-    end subroutine trajectory_errors
+    end procedure trajectory_errors
 
     !> The analysis: reference, its confirmation, both curves, the two files.  With `files`
     !! the files join the run's others (see run_simulation); without it they are committed
     !! at the end.
-    module subroutine run_work_precision(d, outdir, res, stat, quiet, files)
-        type(deck_t), intent(in) :: d           !! the deck
-        character(len=*), intent(in) :: outdir  !! output directory
-        type(wp_result_t), intent(out) :: res   !! the curves
-        type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_MODEL, ERR_IO
-        logical, intent(in), optional :: quiet  !! do not print the agreement line
-        type(out_files_t), intent(inout), optional, target :: files  !! the run's files
+    module procedure run_work_precision
         type(out_files_t), target :: own
         type(out_files_t), pointer :: fs
         type(progress_t) :: pr
@@ -468,7 +424,7 @@ contains
             if (elastic) nm = 'Radau'
         end function ref_name
 
-    end subroutine run_work_precision
+    end procedure run_work_precision
 
     !> trajectory_errors for the elastic model: angles from the body's pose (elastic_chart,
     !! theta1 and theta4 continued to the reference's branch), Q and the energy (springs'

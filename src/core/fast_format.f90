@@ -1,7 +1,6 @@
 !> Fast text of reals for the data files: exactly the text the run-time library writes for
-!! the edit descriptors ESw.dE3 and Fw.d, made without the library's formatting machinery
-!! (about 89,000 instructions per row of 17 reals through the library's formatted WRITE,
-!! a few hundred per real here).
+!! the edit descriptors ESw.dE3 and Fw.d, made without the library's formatting machinery,
+!! which costs far more per real (doc/performance.md).
 !!
 !! Method.  A finite normal double is |x| = m 2^k with the integer significand
 !! 2^52 <= m < 2^53.  The decimal digits of ESw.dE3 are N = |x| 10^q rounded to the nearest

@@ -13,9 +13,7 @@ contains
 
     !> &scene: model a known word, analyses known words (at least one); both normalised to
     !! lower case, tabs in analyses taken as blanks.
-    module subroutine check_scene(d, stat)
-        type(deck_t), intent(inout) :: d            !! deck with the values read
-        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+    module procedure check_scene
         integer :: k
         if (stat%code /= STATUS_OK) return
         do k = 1, len(d%analyses)
@@ -28,24 +26,20 @@ contains
         if (stat%code /= STATUS_OK) return
         d%analyses = lower(adjustl(d%analyses))
         d%model = lower(adjustl(d%model))
-    end subroutine check_scene
+    end procedure check_scene
 
     !> &output: the columns, blank-separated names of OUTPUT_COLUMNS (check_columns), put in
     !! OUTPUT_COLUMNS' order.
-    module subroutine check_output(d, stat)
-        type(deck_t), intent(inout) :: d            !! deck with the values read
-        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+    module procedure check_output
         character(len=len(d%columns)) :: asked
         if (stat%code /= STATUS_OK) return
         asked = d%columns
         call check_columns(stat, asked, d%columns)
-    end subroutine check_output
+    end procedure check_output
 
     !> &suspension: all lengths and g finite, > 0 and within DIM_MIN .. DIM_MAX; b, l, l'
     !! over b' within RATIO_MIN .. RATIO_MAX.
-    module subroutine check_suspension(d, stat)
-        type(deck_t), intent(in) :: d               !! deck with the values read
-        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+    module procedure check_suspension
         if (stat%code /= STATUS_OK) return
         call positive(stat, 'suspension', 'b', d%b, 'lengths > 0')
         call positive(stat, 'suspension', 'b_prime', d%b_prime, 'lengths > 0')
@@ -60,13 +54,11 @@ contains
         call over_b_prime(stat, 'suspension', 'b', d%b, d%b_prime, RATIO_MIN)
         call over_b_prime(stat, 'suspension', 'l', d%l, d%b_prime, RATIO_MIN)
         call over_b_prime(stat, 'suspension', 'l_prime', d%l_prime, d%b_prime, RATIO_MIN)
-    end subroutine check_suspension
+    end procedure check_suspension
 
     !> &body: mass > 0; principal moments > 0 obeying the triangle inequalities; r >= 0;
     !! btilde a right-handed orthonormal matrix; everything finite.
-    module subroutine check_body(d, stat)
-        type(deck_t), intent(in) :: d               !! deck with the values read
-        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+    module procedure check_body
         real(dp) :: t(3), half(3), slack, mmt(3,3), det, err, lr
         integer :: i, j, iw, jw
         character(len=*), parameter :: TRI_NAMES(3) = ['I1', 'I2', 'I3']
@@ -180,13 +172,11 @@ contains
         if (stat%code /= STATUS_OK) return
         if (d%sway_depth /= 0.0_dp) call over_b_prime(stat, 'body', 'sway_depth', &
                                                        d%sway_depth, d%b_prime, 0.0_dp)
-    end subroutine check_body
+    end procedure check_body
 
     !> &start: finite values; for mode 'raised' 0 < amplitude < 180 degrees; |angles| at most
     !! ANGLE_MAX (they are reduced modulo 2 pi by reduce_angles), |rates| at most RATE_MAX.
-    module subroutine check_start(d, stat)
-        type(deck_t), intent(inout) :: d            !! deck with the values read (words normalised)
-        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+    module procedure check_start
         integer :: i
         if (stat%code /= STATUS_OK) return
         call check_word(stat, 'start', 'mode', d%mode, 'raised angles')
@@ -216,12 +206,10 @@ contains
                          'out of range for mode ''raised''', '0 < amplitude < 180 (degrees)')
             end if
         end if
-    end subroutine check_start
+    end procedure check_start
 
     !> &integration: 0 < dtau_out <= tau_end, at most MAX_ROWS rows, tolerances in range.
-    module subroutine check_integration(d, stat)
-        type(deck_t), intent(inout) :: d            !! deck with the values read (words normalised)
-        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+    module procedure check_integration
         if (stat%code /= STATUS_OK) return
         call check_word(stat, 'integration', 'method', d%method, METHODS_ALLOWED)
         if (stat%code /= STATUS_OK) return
@@ -263,12 +251,10 @@ contains
             call bad(stat, 'integration', 'atol', rshort(d%atol), 'absolute tolerance ' // &
                      'out of range', '1e-30 <= atol <= 1 (radians and rad per unit tau)')
         end if
-    end subroutine check_integration
+    end procedure check_integration
 
     !> &cables (read and checked whatever the model, used by model = 'elastic').
-    module subroutine check_cables(d, stat)
-        type(deck_t), intent(in) :: d               !! deck with the values read
-        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+    module procedure check_cables
         if (stat%code /= STATUS_OK) return
         call finite(stat, 'cables', 'stiffness', d%cable_stiffness)
         call finite(stat, 'cables', 'damping', d%cable_damping)
@@ -282,13 +268,11 @@ contains
             call bad(stat, 'cables', 'damping', rshort(d%cable_damping), &
                      'damping ratio out of range', '0 <= damping <= 10 (fraction of critical)')
         end if
-    end subroutine check_cables
+    end procedure check_cables
 
     !> &damping: c_v, c_q finite and >= 0, each at most DAMPING_SCALED_MAX in the model's
     !! scaled units (c_v / (m b' sqrt(g b')), c_q / (m b'^2)).
-    module subroutine check_damping(d, stat)
-        type(deck_t), intent(in) :: d               !! deck with the values read
-        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+    module procedure check_damping
         if (stat%code /= STATUS_OK) return
         call one('c_v', d%c_v, log(d%mass) + 1.5_dp*log(d%b_prime) + 0.5_dp*log(d%g), &
                  'c_v/(mass b_prime sqrt(g b_prime))')
@@ -312,15 +296,13 @@ contains
                     ' (critical damping of torsion is of order 1 in these units)')
             end if
         end subroutine one
-    end subroutine check_damping
+    end procedure check_damping
 
     !> &measurement: periods given without gaps, each finite, > 0 and at most DIM_MAX, one
     !! amplitude (0 < a < 180 degrees) per period and no more; uncertainties finite, >= 0
     !! and at most DIM_MAX; 0 or 2 .. MAX_MONTE_CARLO Monte Carlo samples.  (quantity and
     !! estimate are checked by read_deck; what identify needs of them, by identify_ready.)
-    module subroutine check_measurement(d, stat)
-        type(deck_t), intent(inout) :: d            !! deck with the values read (words normalised)
-        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+    module procedure check_measurement
         integer :: i, na
         character(len=16) :: nm
         if (stat%code /= STATUS_OK) return
@@ -395,7 +377,7 @@ contains
                 'a standard uncertainty out of range', '0 <= '//var//' <= '// &
                 rshort(DIM_MAX)//' (deck units; 0: not known)')
         end subroutine uncertainty
-    end subroutine check_measurement
+    end procedure check_measurement
 
     !> &measurement estimate: blank-separated words from ESTIMATES_ALLOWED (I1 in any case,
     !! the others in lower case too), at least one, none twice.
@@ -434,9 +416,7 @@ contains
     end subroutine check_estimate
 
     !> &floquet: 0 < amplitude < 180 degrees, 1..MAX_SEGMENTS segments, rtol in range.
-    module subroutine check_floquet(d, stat)
-        type(deck_t), intent(in) :: d               !! deck with the values read
-        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+    module procedure check_floquet
         if (stat%code /= STATUS_OK) return
         call finite(stat, 'floquet', 'amplitude', d%floquet_amplitude)
         call finite(stat, 'floquet', 'rtol', d%floquet_rtol)
@@ -457,13 +437,11 @@ contains
             call bad(stat, 'floquet', 'rtol', rshort(d%floquet_rtol), &
                      'relative tolerance out of range', '1e-14 <= rtol < 1e-2')
         end if
-    end subroutine check_floquet
+    end procedure check_floquet
 
     !> &chart: two different variables (known words, checked by read_deck), each axis a
     !! finite range inside its variable's range with 2..MAX_CHART_N points, nx*ny bounded.
-    module subroutine check_chart(d, stat)
-        type(deck_t), intent(inout) :: d            !! deck with the values read (words normalised)
-        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+    module procedure check_chart
         if (stat%code /= STATUS_OK) return
         call check_word(stat, 'chart', 'x', d%chart_x, CHART_VARIABLES)
         call check_word(stat, 'chart', 'y', d%chart_y, CHART_VARIABLES)
@@ -562,7 +540,7 @@ contains
             end if
         end subroutine chart_axis
 
-    end subroutine check_chart
+    end procedure check_chart
 
     !> &design (checked when the analysis is requested; its lengths are in deck units):
     !! finite values; 0 < l_min < l_max with l over b' in RATIO_MIN .. RATIO_MAX and
@@ -573,9 +551,7 @@ contains
     !! MAX_CHART_POINTS Floquet points; each uncertainty >= 0 and below the value it
     !! qualifies (u_mass < mass, u_l < l_min, u_b below every b and b'; the period is only
     !! known when computed: the analysis checks u_period against it).
-    module subroutine check_design(d, stat)
-        type(deck_t), intent(in) :: d               !! deck with the values read
-        type(status_t), intent(inout) :: stat       !! ERR_DECK on the first problem
+    module procedure check_design
         real(dp) :: bmin
         if (stat%code /= STATUS_OK) return
         call positive(stat, 'design', 'l_min', d%design_l_min, '0 < l_min < l_max (deck units)')
@@ -681,7 +657,7 @@ contains
             end if
         end subroutine uncertainty
 
-    end subroutine check_design
+    end procedure check_design
 
     !> ERR_DECK naming the deck, group, variable and value, what is wrong and what is
     !! allowed (nothing when stat already carries an error).
@@ -751,13 +727,12 @@ contains
     !> The deck's angles (tilt, theta, lambda; |x| <= ANGLE_MAX) reduced modulo 2 pi into
     !! [-pi, pi]: the integrator's error control is relative, so an angle of 1e6 rad would
     !! leave it a tolerance of rtol*1e6 rad.
-    module subroutine reduce_angles(d)
-        type(deck_t), intent(inout) :: d            !! deck after the checks
+    module procedure reduce_angles
         d%tilt = reduced(d%tilt)
         d%theta = [reduced(d%theta(1)), reduced(d%theta(2)), reduced(d%theta(3)), &
                    reduced(d%theta(4))]
         d%lambda = reduced(d%lambda)
-    end subroutine reduce_angles
+    end procedure reduce_angles
 
     !> x - 2 pi n, n the nearest integer to x/(2 pi), with 2 pi split in three parts
     !! (Cody and Waite) so that the result is accurate to roundoff for |x| <= 2**20 * 2 pi;

@@ -14,10 +14,7 @@ contains
     !> Every '&name' that starts a group (outside comments) must be a known group; '&end'
     !! closes a group.  `seen` lists the groups that start somewhere (' name name ... ',
     !! lower case).
-    module subroutine check_group_names(lines, stat, seen)
-        type(deck_line_t), intent(in) :: lines(:)   !! the deck's lines
-        type(status_t), intent(inout) :: stat       !! ERR_DECK on an unknown group
-        character(len=:), allocatable, intent(out) :: seen  !! the groups seen
+    module procedure check_group_names
         character(len=:), allocatable :: line, word
         integer :: i, j, k
         seen = ' '
@@ -47,7 +44,7 @@ contains
                 if (index(seen, ' '//word//' ') == 0) seen = seen//word//' '
             end do
         end do
-    end subroutine check_group_names
+    end procedure check_group_names
 
     !> Find the first '&grp' outside comments and collect its text up to the closing '/' or
     !! '&end' (outside quotes), comments removed, lines joined by blanks (`text`, for the
@@ -55,14 +52,7 @@ contains
     !! as one record for the namelist reader (`rec`: '&grp', the items, ' /'; a line that
     !! ends inside a quoted value is joined without a blank, as the run-time library reads
     !! a value continued on the next record).  Linear in the deck's size.
-    module subroutine scan_group(lines, grp, found, complete, text, breaks, rec)
-        type(deck_line_t), intent(in) :: lines(:)   !! the deck's lines
-        character(len=*), intent(in) :: grp         !! group name
-        logical, intent(out) :: found               !! the group starts somewhere
-        logical, intent(out) :: complete            !! its closing '/' was found
-        character(len=:), allocatable, intent(out) :: text    !! the group's items
-        integer, allocatable, intent(out) :: breaks(:)        !! text(breaks(k)) ends a line
-        character(len=:), allocatable, intent(out) :: rec     !! the group as one record
+    module procedure scan_group
         character(len=:), allocatable :: buf, rbuf
         integer, allocatable :: brk(:)
         character :: q
@@ -160,14 +150,12 @@ contains
             nr = nr + len(s)
         end subroutine append_rec
 
-    end subroutine scan_group
+    end procedure scan_group
 
     !> A value longer than MAX_TEXT characters, quoted or not ('' when none): the run-time
     !! library would cut it to its variable's length (and the checking build prints a
     !! warning); no number needs as many digits.
-    module function long_text(text) result(why)
-        character(len=*), intent(in) :: text        !! group items (from scan_group)
-        character(len=:), allocatable :: why
+    module procedure long_text
         character :: q
         integer :: k, k0, n
         why = ''
@@ -198,16 +186,13 @@ contains
                 return
             end if
         end do
-    end function long_text
+    end procedure long_text
 
     !> The first parenthesis of a group's text that the run-time library cannot be trusted
     !! with (gfortran 12 takes SIGSEGV on a subscript left open at the end of a line): every
     !! '(' outside quotes must follow a variable name, close on the same line, and hold only
     !! digits, blanks, '+', '-', ':' and ','.  Empty when all are well formed.
-    module function subscript_problem(text, breaks) result(why)
-        character(len=*), intent(in) :: text        !! group items (from scan_group)
-        integer, intent(in) :: breaks(:)            !! line ends in text (from scan_group)
-        character(len=:), allocatable :: why
+    module procedure subscript_problem
         character :: q
         integer :: k, j, b, e, nextb
         why = ''
@@ -290,16 +275,12 @@ contains
             s = trim(adjustl(text(i1:i2)))
         end function item_at
 
-    end function subscript_problem
+    end procedure subscript_problem
 
     !> Explain why the run-time library could not read a group: the first item whose name is
     !! unknown, whose value has the wrong form, or which has too many values.  Empty when no
     !! explanation is found.
-    module function explain(text, grp, spec) result(why)
-        character(len=*), intent(in) :: text        !! group items (from scan_group)
-        character(len=*), intent(in) :: grp         !! group name
-        character(len=*), intent(in) :: spec        !! variables, see SPEC_*
-        character(len=:), allocatable :: why
+    module procedure explain
         integer :: neq, k, j, depth, p1, v1, v2, t1, t2, nval, cnt, star, ios
         integer, allocatable :: eqs(:), nstart(:), nend(:)
         logical :: subscripted
@@ -446,7 +427,7 @@ contains
                 return
             end if
         end do
-    end function explain
+    end procedure explain
 
     !> Next token of s after position p (blanks and commas separate; quotes kept whole).
     subroutine next_token(s, p, t1, t2)

@@ -4,9 +4,8 @@
 !! The tension law of elastic_model has a kink where a cable goes slack.  An implicit
 !! method's Newton iteration that crosses it does not converge, and at high stiffness the
 !! iterates cross it all the time: at k = 1e8 a cable's static stretch is 1e-8 b', inside
-!! the position tolerance.  On the cylinder of Figs. 4-6 at k = 1e8 the law decided at each
-!! evaluation costs LSODA 70 666 steps and 12 425 convergence failures over two torsional
-!! periods (rtol 1e-8), as many steps as an explicit method would take.
+!! the position tolerance.  The law decided at each evaluation then costs an implicit
+!! method as many steps as an explicit one would take (figures: doc/elastic.md).
 !!
 !! This driver keeps each cable in a fixed mode (CABLE_TAUT: the smooth spring-dashpot;
 !! CABLE_SLACK: no force) during every integrator step, so the implicit method always sees

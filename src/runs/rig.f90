@@ -57,7 +57,7 @@ module rig
     end type accuracy_t
 
     public :: rig_of, start_of, raised_start, method_of, accuracy_of, make_pendulum
-    public :: start_state, move_b_prime
+    public :: start_state, move_b_prime, output_times
 
 contains
 
@@ -198,5 +198,19 @@ contains
         rg%r = sqrt(depth**2 + along**2)
         rg%lambda = atan2(depth, along)
     end subroutine move_b_prime
+
+    !> The uniform output grid of a deck's run: tau_k = min(k dtau_out, tau_end),
+    !! k = 0 .. nout (&integration).
+    pure subroutine output_times(d, times)
+        type(deck_t), intent(in) :: d           !! the deck
+        real(dp), allocatable, intent(out) :: times(:)  !! (0:nout)
+        integer :: nout, k
+        nout = nint(d%tau_end/d%dtau_out)
+        if (nout*d%dtau_out < d%tau_end*(1.0_dp - 1.0e-12_dp)) nout = nout + 1
+        allocate (times(0:nout))
+        do k = 0, nout
+            times(k) = min(k*d%dtau_out, d%tau_end)
+        end do
+    end subroutine output_times
 
 end module rig
