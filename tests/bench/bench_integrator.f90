@@ -14,7 +14,7 @@
 program bench_integrator
     use kinds, only: dp
     use status, only: status_t, STATUS_OK
-    use ode_system, only: ode_system_t
+    use ode_system, only: ode_system_t, integrator_stats_t
     use test_lsoda, only: bench_problem, scaled_error, solve_on_grid, NBENCH, BENCH_NAMES
     implicit none
 

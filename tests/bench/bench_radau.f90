@@ -11,8 +11,7 @@
 program bench_radau
     use kinds, only: dp
     use status, only: status_t, STATUS_OK
-    use ode_system, only: ode_system_t
-    use radau, only: integrator_stats_t
+    use ode_system, only: ode_system_t, integrator_stats_t
     use test_lsoda, only: bench_problem, scaled_error, solve_on_grid, NBENCH, BENCH_NAMES
     use test_radau, only: radau_on_grid
     use output_io, only: atomic_open, atomic_commit
@@ -51,10 +50,10 @@ program bench_radau
             if (stat%code == STATUS_OK) err_l = scaled_error(y, yref, rtol, atol)
             write (*, '(a9,es8.1,i7,i7,i6,i6,i5,es11.2,f10.1,a3,i8,i7,es11.2)') &
                 BENCH_NAMES(ip), rtol, rs%steps, rs%rhs_evals, rs%jac_evals, rs%lu_decomps, &
-                rs%rejected, err_r, us, '|', ls%steps, ls%rhs_evals, err_l
+                rs%error_test_failures, err_r, us, '|', ls%steps, ls%rhs_evals, err_l
             write (u, '(a,1x,es7.1,5(1x,i0),1x,es11.4,1x,f0.2,2(1x,i0),1x,es11.4)') &
                 trim(BENCH_NAMES(ip)), rtol, rs%steps, rs%rhs_evals, rs%jac_evals, &
-                rs%lu_decomps, rs%rejected, err_r, us, ls%steps, ls%rhs_evals, err_l
+                rs%lu_decomps, rs%error_test_failures, err_r, us, ls%steps, ls%rhs_evals, err_l
         end do
     end do
     call atomic_commit(u, trim(outpath), stat)
