@@ -2,6 +2,8 @@
 #   make            build bin/bifilar
 #   make test       run all tests (optimised build), last line "N passed, N failed";
 #                   ONLY=WORD runs the suites whose name contains WORD (e.g. ONLY=extreme)
+#                   and in the others the checks whose label contains it; a WORD that
+#                   selects nothing fails (bin/run_tests --list names the suites)
 #   make check      run all tests in the checking build (-fcheck=all, FP traps)
 #   make mpi        bin/bifilar_mpi, the MPI build (mpirun -np N bin/bifilar_mpi DECK.nml);
 #                   installs OpenMPI when run as root, else prints the command and stops
@@ -167,7 +169,7 @@ test: $(BIN)/run_tests $(BIN)/bifilar
 	@if command -v mpif90 >/dev/null 2>&1; then \
 	  $(MAKE) --no-print-directory MPI=1 $(BIN)/bifilar_mpi $(BIN)/sweep_probe_mpi; \
 	else echo "note: no OpenMPI (mpif90): the MPI tests are skipped (make mpi installs it)"; fi
-	$(BIN)/run_tests $(BIN)/bifilar $(ONLY)
+	$(BIN)/run_tests $(BIN)/bifilar $(if $(ONLY),"$(ONLY)")
 
 check:
 	$(MAKE) CHECK=1 test

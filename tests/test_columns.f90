@@ -4,7 +4,7 @@
 module test_columns
     use kinds, only: dp
     use status, only: status_t, ERR_DECK
-    use testing, only: tester_t
+    use testing, only: tester_t, write_text, scratch_dir
     use deck, only: deck_t, read_deck, OUTPUT_COLUMNS
     use simulate, only: run_simulation, run_summary_t
     use output_io, only: read_kv
@@ -14,6 +14,7 @@ module test_columns
     public :: run_columns_tests
 
     character(len=*), parameter :: SCRATCH = 'build/test_columns'
+    character, parameter :: NL = new_line('a')
     !> A short run of the Figs. 4-6 cylinder (unequal cables: tilting, sway, tensions vary)
     character(len=*), parameter :: SCENE = &
         '&suspension b = 1.0, b_prime = 1.0, l = 2.0, l_prime = 1.8 /'//achar(10)// &
@@ -26,7 +27,7 @@ contains
     subroutine run_columns_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe     !! path of the bifilar executable
-        call execute_command_line('mkdir -p '//SCRATCH)
+        call scratch_dir(SCRATCH)
         if (t%want('columns: a subset keeps the order and the text of the full run')) &
             call test_subset(t)
         if (t%want('columns: default every column; the paper decks keep all')) &
@@ -49,8 +50,9 @@ contains
         real(dp) :: v
         logical :: found, same
         integer :: k, n
-        call write_deck(SCRATCH//'/all.nml', SCENE)
-        call write_deck(SCRATCH//'/sub.nml', SCENE//achar(10)//'&output columns = ''Q theta4 TAU'' /')
+        call write_text(SCRATCH//'/all.nml', SCENE//NL)
+        call write_text(SCRATCH//'/sub.nml', SCENE//NL//'&output columns = ''Q theta4 TAU'' /'// &
+                        NL)
         call read_deck(SCRATCH//'/all.nml', d, st)
         if (st%code == 0) call run_simulation(d, SCRATCH, sm_all, st)
         call t%check('full run', st%code == 0)
@@ -93,7 +95,7 @@ contains
         type(deck_t) :: d
         type(status_t) :: st
         integer :: k
-        call write_deck(SCRATCH//'/plain.nml', SCENE)
+        call write_text(SCRATCH//'/plain.nml', SCENE//NL)
         call read_deck(SCRATCH//'/plain.nml', d, st)
         call t%check('no &output: every column', st%code == 0 .and. d%columns == OUTPUT_COLUMNS)
         do k = 1, size(decks)
@@ -120,7 +122,7 @@ contains
             logical :: there, named
             path = SCRATCH//'/bad_'//name//'.nml'
             log = SCRATCH//'/bad_'//name//'.log'
-            call write_deck(path, SCENE//achar(10)//'&output columns = '''//value//''' /')
+            call write_text(path, SCENE//NL//'&output columns = '''//value//''' /'//NL)
             call execute_command_line(exe//' '//path//' --out '//SCRATCH//' > '//log// &
                                       ' 2>&1', exitstat=ex)
             call t%check('&output '//name//': exit status 2', ex == ERR_DECK)
@@ -144,14 +146,6 @@ contains
                          'value and the allowed names', named .and. nlines == 1)
         end subroutine bad
     end subroutine test_bad_names
-
-    subroutine write_deck(path, text)
-        character(len=*), intent(in) :: path, text
-        integer :: u
-        open (newunit=u, file=path, status='replace', action='write')
-        write (u, '(a)') text
-        close (u)
-    end subroutine write_deck
 
     !> The column line (last '#' line) and the data rows of a .dat file.
     subroutine read_dat(path, header, rows)

@@ -4,7 +4,7 @@ module test_deck
     use, intrinsic :: ieee_arithmetic, only: ieee_usual
     use kinds, only: dp
     use status, only: status_t, STATUS_OK, ERR_DECK, ERR_IO
-    use testing, only: tester_t
+    use testing, only: tester_t, write_text, exists, shell_count, msg_of, scratch_dir
     use deck, only: deck_t, read_deck, analysis_requested, deck_echo
     use fptraps, only: traps_off, traps_restore
     use output_io, only: atomic_open, atomic_commit, atomic_abort, write_kv, all_finite, &
@@ -14,9 +14,9 @@ module test_deck
     implicit none
     private
 
-    public :: run_deck_tests, write_text, exists, shell_count, msg_of
+    public :: run_deck_tests
 
-    character(len=*), parameter :: DEFAULT_SCRATCH = 'build/test_decks'
+    character(len=*), parameter :: SCRATCH = 'build/test_decks'
     character, parameter :: NL = new_line('a')
 
     ! the groups of a complete, valid deck (the triangular plate of input/)
@@ -49,13 +49,13 @@ module test_deck
 
 contains
 
-    subroutine run_deck_tests(t, scratch)
+    subroutine run_deck_tests(t, exe)
         type(tester_t), intent(inout) :: t
-        character(len=*), intent(in), optional :: scratch   !! directory for deck files
-        character(len=:), allocatable :: dir
-        dir = DEFAULT_SCRATCH
-        if (present(scratch)) dir = scratch
-        call execute_command_line('mkdir -p '//dir)
+        character(len=*), intent(in) :: exe     !! path of the bifilar executable
+        character(len=*), parameter :: dir = SCRATCH    !! directory for deck files
+        associate (unused => exe)   ! every suite is given the executable; this one needs none
+        end associate
+        call scratch_dir(dir)
         if (t%want('deck: a complete deck reads back')) call test_complete(t, dir)
         if (t%want('deck: defaults for absent groups')) call test_defaults(t, dir)
         if (t%want('deck: bad input is ERR_DECK naming the variable')) call test_bad(t, dir)
@@ -69,28 +69,6 @@ contains
         if (t%want('deck: &floquet and &chart')) call test_floquet_chart(t, dir)
         if (t%want('deck: model and &cables')) call test_cables(t, dir)
     end subroutine run_deck_tests
-
-    ! ---------------------------------------------------------------------------------------
-    subroutine write_text(path, text)
-        character(len=*), intent(in) :: path, text
-        integer :: u
-        open (newunit=u, file=path, status='replace', action='write', access='stream', &
-              form='unformatted')
-        write (u) text
-        close (u)
-    end subroutine write_text
-
-    logical function exists(path)
-        character(len=*), intent(in) :: path
-        inquire (file=path, exist=exists)
-    end function exists
-
-    function msg_of(stat) result(m)
-        type(status_t), intent(in) :: stat
-        character(len=:), allocatable :: m
-        m = '(no message)'
-        if (allocated(stat%msg)) m = stat%msg
-    end function msg_of
 
     ! ---------------------------------------------------------------------------------------
     subroutine test_complete(t, dir)
@@ -624,17 +602,6 @@ contains
         character(len=*), intent(in) :: dir, pattern
         n = shell_count('ls -a '//dir//' | grep -c "'//pattern//'"', dir)
     end function count_matching
-
-    !> The integer printed by a shell command (-1 when none); dir holds the scratch file.
-    integer function shell_count(cmd, dir) result(n)
-        character(len=*), intent(in) :: cmd, dir
-        integer :: u, ios
-        n = -1
-        call execute_command_line(cmd//' > '//dir//'/count.txt 2>/dev/null')
-        open (newunit=u, file=dir//'/count.txt', status='old', action='read', iostat=ios)
-        if (ios == 0) read (u, *, iostat=ios) n
-        if (ios == 0) close (u, status='delete')
-    end function shell_count
 
     ! ---------------------------------------------------------------------------------------
     subroutine test_floquet_chart(t, dir)

@@ -7,7 +7,8 @@
 module test_design
     use kinds, only: dp, deg, pi
     use status, only: status_t
-    use testing, only: tester_t
+    use testing, only: tester_t, write_text, file_has, count_lines, run, shell_count, &
+                       scratch_dir, fresh_dir, empty_dir, no_nan
     use deck, only: deck_t, read_deck
     use geometry, only: pendulum_t
     use rig, only: rig_of, make_pendulum
@@ -17,9 +18,6 @@ module test_design
                       design_rig_of, &
                       DESIGN_TOLERANCE, MARGIN_FRACTION, EDGE_RTOL
     use period_inversion, only: input_u_t
-    use test_deck, only: write_text, exists, shell_count
-    use test_extreme, only: file_has, no_nan
-    use test_robust, only: run, lines
     use text, only: itoa, sci
     implicit none
     private
@@ -49,7 +47,7 @@ contains
         type(design_result_t) :: res
         type(status_t) :: st
         logical :: have, want_rec, want_edges
-        call execute_command_line('rm -rf '//SCR//' && mkdir -p '//SCR)
+        call fresh_dir(SCR)
         have = .false.
         want_rec = t%want('design: the recommendation is stable, checked independently')
         want_edges = t%want('design: band edges agree with the stability chart')
@@ -146,7 +144,7 @@ contains
         real(dp) :: v(4)
         character(len=512) :: line
         dir = SCR//'/chart'
-        call execute_command_line('mkdir -p '//dir)
+        call scratch_dir(dir)
         c = d
         c%name = 'edges'
         c%analyses = 'chart'
@@ -291,22 +289,22 @@ contains
         ex = run(exe//' '//d//'/short.nml --out '//d//'/out', d)
         call t%check('none: unstable range: exit 4', ex == 4)
         call t%check('none: ... one stderr line naming the deck, nothing on stdout', &
-                     all([lines(d//'/stderr') == 1, lines(d//'/stdout') == 0, &
+                     all([count_lines(d//'/stderr') == 1, count_lines(d//'/stdout') == 0, &
                      file_has(d//'/stderr', 'bifilar: error (model no longer valid): '//d// &
                      '/short.nml: design: no candidate qualifies')]))
         call t%check('none: ... says 0 are stable and suggests a range', &
                      all([file_has(d//'/stderr', ' 0 are stable'), &
                      file_has(d//'/stderr', 'try l_min = ')]))
-        call t%check('none: ... no file written', shell_count('ls -A '//d//'/out | wc -l', d) == 0)
+        call t%check('none: ... no file written', empty_dir(d//'/out'))
         call write_text(d//'/narrow.nml', BOX//'&design l_min = 0.9, l_max = 0.91, nl = 3, '// &
                         'amplitude_max = 30, n_amplitudes = 2 /'//NL)
         ex = run(exe//' '//d//'/narrow.nml --out '//d//'/out', d)
         call t%check('none: a stable range narrower than the margin: exit 4', ex == 4)
         call t%check('none: ... one line: all 3 stable, none with the margin, a wider range', &
-                     all([lines(d//'/stderr') == 1, file_has(d//'/stderr', ' 3 are stable'), &
+                     all([count_lines(d//'/stderr') == 1, file_has(d//'/stderr', ' 3 are stable'), &
                      file_has(d//'/stderr', 'none lies 5%'), &
                      file_has(d//'/stderr', 'try l_min = ')]))
-        call t%check('none: ... no file written', shell_count('ls -A '//d//'/out | wc -l', d) == 0)
+        call t%check('none: ... no file written', empty_dir(d//'/out'))
         ! cables too short to reach the raised position of 50 degrees (l < 0.0845 m): -1
         call write_text(d//'/reach.nml', BOX//'&design l_min = 0.05, l_max = 1.2, nl = 5, '// &
                         'amplitude_max = 50, n_amplitudes = 2 /'//NL)
@@ -356,7 +354,8 @@ contains
         ex = run(exe//decks//' --out '//d//'/out', d)
         call t%check('bad: '//itoa(size(CASES) + 1)//' decks, exit 2', ex == 2)
         call t%check('bad: one stderr line per deck, nothing on stdout', &
-                     all([lines(d//'/stderr') == size(CASES) + 1, lines(d//'/stdout') == 0]))
+                     all([count_lines(d//'/stderr') == size(CASES) + 1, &
+                     count_lines(d//'/stdout') == 0]))
         call t%check('bad: a body without pure torsion is refused before computing', &
                      file_has(d//'/stderr', d//'/off.nml: analyses = ''design'' needs a body '// &
                      'for which pure torsion on equal cables is an exact motion'))
@@ -373,7 +372,7 @@ contains
         end do
         call t%check('bad: the negative uncertainty is called so', &
                      file_has(d//'/stderr', 'a negative uncertainty'))
-        call t%check('bad: no file written', shell_count('ls -A '//d//'/out | wc -l', d) == 0)
+        call t%check('bad: no file written', empty_dir(d//'/out'))
     end subroutine test_bad
 
     !> A design over l and b with 1 and 2 OpenMP threads: the same file, byte for byte; one

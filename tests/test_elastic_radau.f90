@@ -10,7 +10,7 @@
 module test_elastic_radau
     use kinds, only: dp, deg
     use status, only: status_t, ERR_DECK
-    use testing, only: tester_t
+    use testing, only: tester_t, write_text, scratch_dir
     use test_model, only: cylinder
     use geometry, only: beta_coeffs
     use start_pose, only: raised_angles, solve_theta5
@@ -41,8 +41,11 @@ module test_elastic_radau
 
 contains
 
-    subroutine run_elastic_radau_tests(t)
+    subroutine run_elastic_radau_tests(t, exe)
         type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe     !! path of the bifilar executable
+        associate (unused => exe)   ! every suite is given the executable; this one needs none
+        end associate
         if (t%want('elastic radau: generalized coordinates against the maximal ones')) &
             call test_coordinates(t)
         if (t%want('elastic radau: global error follows rtol (issue 11)')) call test_follows(t)
@@ -354,7 +357,7 @@ contains
         call t%check('rtol 1e-12: steps at k = 1e8 <= 3 x steps at k = 1e6', &
                      steps(2) <= 3*steps(1))
         call read_deck('input/cylinder_l180_elastic.nml', d, stat)
-        call execute_command_line('mkdir -p build/test_elastic_radau')
+        call scratch_dir('build/test_elastic_radau')
         if (stat%code == 0) call run_simulation(d, 'build/test_elastic_radau', sm, stat)
         write (*, '(a,i0,a,a)') '  cylinder_l180_elastic: ', sm%steps, ' steps, method ', &
             trim(sm%method)
@@ -378,7 +381,7 @@ contains
         type(status_t) :: stat
         type(run_summary_t) :: sm
         integer :: iw, im
-        call execute_command_line('mkdir -p '//dir)
+        call scratch_dir(dir)
         do im = 1, 2
             do iw = 1, 3
                 call write_deck(dir//'/method.nml', trim(models(im)), trim(words(iw)))
@@ -402,14 +405,12 @@ contains
     contains
         subroutine write_deck(path, model, word)
             character(len=*), intent(in) :: path, model, word
-            integer :: u
-            open (newunit=u, file=path, status='replace', action='write')
-            write (u, '(a)') '&scene title = ''method'', model = '''//model//''' /'
-            write (u, '(a)') '&suspension b = 1.0, b_prime = 1.0, l = 2.0, l_prime = 1.8 /'
-            write (u, '(a)') '&body mass = 1.0 /'
-            write (u, '(a)') '&integration tau_end = 2.0, dtau_out = 0.1, rtol = 1e-9, '// &
-                'atol = 1e-11, method = '''//word//''' /'
-            close (u)
+            character, parameter :: NL = new_line('a')
+            call write_text(path, '&scene title = ''method'', model = '''//model//''' /'//NL// &
+                '&suspension b = 1.0, b_prime = 1.0, l = 2.0, l_prime = 1.8 /'//NL// &
+                '&body mass = 1.0 /'//NL// &
+                '&integration tau_end = 2.0, dtau_out = 0.1, rtol = 1e-9, '// &
+                'atol = 1e-11, method = '''//word//''' /'//NL)
         end subroutine write_deck
     end subroutine test_method_word
 

@@ -23,8 +23,11 @@ module test_fast_format
 
 contains
 
-    subroutine run_fast_format_tests(t)
+    subroutine run_fast_format_tests(t, exe)
         type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe     !! path of the bifilar executable
+        associate (unused => exe)   ! every suite is given the executable; this one needs none
+        end associate
         if (t%want('fast_format: ES24.15E3 against the library')) call test_es(t)
         if (t%want('fast_format: F14.6 against the library')) call test_f(t)
         if (t%want('fast_format: other widths and digits')) call test_other(t)

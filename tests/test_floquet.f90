@@ -530,10 +530,11 @@ contains
         call check_torsion_scene(p, ivert, st)
         call t%check('no vertical principal axis refused', st%code == ERR_DECK .and. &
                      index(st%msg, 'principal axis') > 0)
-        call execute_command_line('mkdir -p build/test_floquet && sed "s/analyses = ''simulate''/'// &
-            'analyses = ''floquet''/" input/cylinder_l180.nml > build/test_floquet/unequal.nml')
-        call execute_command_line(exe//' build/test_floquet/unequal.nml --out build/test_floquet'// &
-                                  ' > /dev/null 2>&1', exitstat=ex)
+        call execute_command_line('mkdir -p build/test_floquet && sed "s/analyses = '// &
+            '''simulate''/analyses = ''floquet''/" input/cylinder_l180.nml > '// &
+            'build/test_floquet/unequal.nml')
+        call execute_command_line(exe//' build/test_floquet/unequal.nml --out '// &
+                                  'build/test_floquet > /dev/null 2>&1', exitstat=ex)
         call t%check('floquet on unequal cables: exit 2', ex == ERR_DECK)
     end subroutine test_refusal
 

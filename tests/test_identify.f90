@@ -8,7 +8,8 @@
 module test_identify
     use kinds, only: dp, pi, deg
     use status, only: status_t, ERR_DECK, ERR_NUMERIC
-    use testing, only: tester_t
+    use testing, only: tester_t, write_text, exists, file_has, count_lines, scratch_dir, &
+                       empty_dir
     use deck, only: deck_t, read_deck
     use geometry, only: pendulum_t, pose_of
     use kinematics, only: omega_partials
@@ -23,9 +24,6 @@ module test_identify
     use identify, only: identify_result_t, identify_record
     use records, only: record_t, read_record
     use record_fit, only: record_model, make_record, set_input
-    use test_deck, only: write_text, exists
-    use test_extreme, only: file_has
-    use test_robust, only: lines
     use test_period, only: test_rig
     use output_io, only: read_kv
     use text, only: itoa
@@ -56,7 +54,7 @@ contains
     subroutine run_identify_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
-        call execute_command_line('mkdir -p '//SCR)
+        call scratch_dir(SCR)
         if (t%want('least squares: Levenberg-Marquardt and the LAPACK wrappers')) &
             call test_lsq(t)
         if (t%want('identify: damping dissipates the work of its torque')) call test_energy(t)
@@ -730,7 +728,8 @@ contains
         call read_kv(SCR//'/ex/identify_record.identify', 'u_c_v', u, found)
         call t%check_close('examples: record deck c_v within 3 u', v, CV_TRUE, atol=3.0_dp*u)
         call t%check('examples: .fit.dat has every sample', &
-                     lines(SCR//'/ex/identify_record.fit.dat') - count_comments() == 3001)
+                     count_lines(SCR//'/ex/identify_record.fit.dat') - &
+                     count_lines(SCR//'/ex/identify_record.fit.dat', '#', at_start=.true.) == 3001)
         call read_kv(SCR//'/ex/identify_periods.identify', 'I1', v, found)
         call read_kv(SCR//'/ex/identify_periods.identify', 'u_I1', u, found)
         call t%check_close('examples: periods deck I1 within 3 u_I1 of 0.0512', v, I1_TRUE, &
@@ -740,19 +739,6 @@ contains
                            rtol=0.1_dp)
         call t%check('examples: budget table in the .identify', &
                      file_has(SCR//'/ex/identify_periods.identify', 'amplitude(3)'))
-    contains
-        integer function count_comments() result(n)
-            integer :: uu, ios
-            character(len=2) :: c
-            n = 0
-            open (newunit=uu, file=SCR//'/ex/identify_record.fit.dat', status='old', &
-                  action='read', iostat=ios)
-            do while (ios == 0)
-                read (uu, '(a)', iostat=ios) c
-                if (ios == 0 .and. c(1:1) == '#') n = n + 1
-            end do
-            close (uu)
-        end function count_comments
     end subroutine test_examples
 
     !> The Monte Carlo of a record fit gives the same text with 1 and 2 OpenMP threads
@@ -887,15 +873,9 @@ contains
             has_deck = file_has(dir//'.stderr', deck)
             has_word = file_has(dir//'.stderr', word)
             call t%check('bad input '//label//': one stderr line naming the deck and '''// &
-                word//'''', lines(dir//'.stderr') == 1 .and. has_deck .and. has_word)
-            call t%check('bad input '//label//': no output file', empty(dir))
+                word//'''', count_lines(dir//'.stderr') == 1 .and. has_deck .and. has_word)
+            call t%check('bad input '//label//': no output file', empty_dir(dir))
         end subroutine one
-        logical function empty(dir)
-            character(len=*), intent(in) :: dir
-            integer :: ex
-            call execute_command_line('test -z "$(ls -A '//dir//')"', exitstat=ex)
-            empty = ex == 0
-        end function empty
     end subroutine test_bad_input
 
     function num(x) result(s)

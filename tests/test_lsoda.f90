@@ -523,8 +523,11 @@ contains
     ! ====================================================================================
 
     !> All lsoda test suites (each selectable by name through t%want).
-    subroutine run_lsoda_tests(t)
+    subroutine run_lsoda_tests(t, exe)
         type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe     !! path of the bifilar executable
+        associate (unused => exe)   ! every suite is given the executable; this one needs none
+        end associate
         if (t%want('lsoda_exact')) call test_exact(t)
         if (t%want('lsoda_problems')) call test_problems(t)
         if (t%want('lsoda_tolerance')) call test_tolerance(t)

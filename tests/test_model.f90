@@ -3,7 +3,7 @@ module test_model
     use kinds, only: dp, pi, deg
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use status, only: status_t, ERR_DECK
-    use testing, only: tester_t
+    use testing, only: tester_t, write_text, scratch_dir, fresh_dir
     use ode_system, only: ode_system_t
     use start_pose, only: raised_angles, solve_theta5
     use geometry, only: pendulum_t, beta_coeffs, constraint_g, &
@@ -36,7 +36,7 @@ contains
     subroutine run_model_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe     !! path of the bifilar executable
-        call execute_command_line('mkdir -p '//SCRATCH)
+        call scratch_dir(SCRATCH)
         if (t%want('model: kinematics against finite differences')) call test_kinematics_fd(t)
         if (t%want('model: paper form eq. (38) against the regular chart')) call test_paper_form(t)
         if (t%want('model: trajectory kinematics against finite differences')) &
@@ -453,11 +453,9 @@ contains
             path = SCRATCH//'/bad_'//name//'.nml'
             outdir = SCRATCH//'/bad_out'
             log = SCRATCH//'/bad_'//name//'.log'
-            call execute_command_line('rm -rf '//outdir//' && mkdir -p '//outdir)
+            call fresh_dir(outdir)
             if (write_deck) then
-                open (newunit=u, file=path, status='replace', action='write')
-                write (u, '(a)') text
-                close (u)
+                call write_text(path, text//new_line('a'))
             else
                 call execute_command_line('rm -f '//path)
             end if

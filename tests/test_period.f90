@@ -20,8 +20,11 @@ module test_period
 
 contains
 
-    subroutine run_period_tests(t)
+    subroutine run_period_tests(t, exe)
         type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe     !! path of the bifilar executable
+        associate (unused => exe)   ! every suite is given the executable; this one needs none
+        end associate
         if (t%want('random: published sequences, moments, streams')) call test_random(t)
         if (t%want('period inversion: I1 back from the exact periods')) call test_exact(t)
         if (t%want('period inversion: the classical formula at small amplitude')) &

@@ -55,8 +55,11 @@ module test_radau
 
 contains
 
-    subroutine run_radau_tests(t)
+    subroutine run_radau_tests(t, exe)
         type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe     !! path of the bifilar executable
+        associate (unused => exe)   ! every suite is given the executable; this one needs none
+        end associate
         if (t%want('radau: coefficients against the published values')) call test_coefficients(t)
         if (t%want('radau: collocation polynomial exact for a cubic')) call test_cubic(t)
         if (t%want('radau: the seven standard problems')) call test_standard(t)

@@ -5,17 +5,17 @@
 !! build, decks that took long, the progress line, and the figures in the report.
 module test_robust
     use kinds, only: dp, deg
-    use testing, only: tester_t
     use output_io, only: read_kv
     use progress, only: progress_t
     use paper_claims, only: report_figures
-    use test_extreme, only: file_has, no_nan
-    use test_deck, only: write_text, exists, shell_count
+    use testing, only: tester_t, write_text, exists, file_has, count_lines, line_starts, &
+                       read_kv_text, run, shell_count, scratch_dir, fresh_dir, empty_dir, &
+                       abs_path, no_nan
     use text, only: itoa
     implicit none
     private
 
-    public :: run_robust_tests, run, lines, line_starts, fresh, abs_exe
+    public :: run_robust_tests
 
     character(len=*), parameter :: SCR = 'build/test_robust'
     character, parameter :: NL = new_line('a')
@@ -38,7 +38,7 @@ contains
     subroutine run_robust_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe     !! path of the bifilar executable
-        call execute_command_line('mkdir -p '//SCR)
+        call scratch_dir(SCR)
         if (t%want('robust: several decks, the worst exit status, --help, --version')) &
             call test_several(t, exe)
         if (t%want('robust: --out (empty, missing, long) and long deck paths')) &
@@ -65,7 +65,8 @@ contains
         character(len=*), intent(in) :: exe
         character(len=:), allocatable :: d, o
         integer :: ex
-        d = fresh('several')
+        d = SCR//'/several'
+        call fresh_dir(d)
         o = d//'/out'
         call write_deck(d//'/ok1.nml', "&scene analyses = 'simulate' /", SUSP_EQ, '', SHORT)
         call write_deck(d//'/ok2.nml', "&scene analyses = 'simulate' /", SUSP_UNEQ, '', SHORT)
@@ -73,10 +74,10 @@ contains
         call write_deck(d//'/fling.nml', '', SUSP_EQ, FLING, SHORT)
         ex = run(exe//' '//d//'/ok1.nml '//d//'/ok2.nml --out '//o, d)
         call t%check('several: two good decks exit 0', ex == 0)
-        call t%check('several: one stdout line per deck', all([lines(d//'/stdout') == 2, &
+        call t%check('several: one stdout line per deck', all([count_lines(d//'/stdout') == 2, &
                      line_starts(d//'/stdout', 1, 'ok1: simulate '), &
                      line_starts(d//'/stdout', 2, 'ok2: simulate ')]))
-        call t%check('several: nothing on stderr', lines(d//'/stderr') == 0)
+        call t%check('several: nothing on stderr', count_lines(d//'/stderr') == 0)
         call t%check('several: both decks'' files', all([exists(o//'/ok1.dat'), &
                      exists(o//'/ok2.summary')]))
         ex = run(exe//' '//d//'/ok1.nml '//d//'/bad.nml '//d//'/fling.nml '//d// &
@@ -84,9 +85,9 @@ contains
         call t%check('several: exit status the worst of 0, 2, 4, 0 (got '//itoa(ex)//')', &
                      ex == 4)
         call t%check('several: stdout lines of the good decks only', &
-                     all([lines(d//'/stdout') == 2, line_starts(d//'/stdout', 2, 'ok2: ')]))
+                     all([count_lines(d//'/stdout') == 2, line_starts(d//'/stdout', 2, 'ok2: ')]))
         call t%check('several: one stderr line per failed deck, in order', &
-                     all([lines(d//'/stderr') == 2, line_starts(d//'/stderr', 1, &
+                     all([count_lines(d//'/stderr') == 2, line_starts(d//'/stderr', 1, &
                      'bifilar: error (bad input): '//d//'/bad.nml: &suspension l = -1'), &
                      line_starts(d//'/stderr', 2, 'bifilar: error (model no longer valid): '// &
                      d//'/fling.nml: ')]))
@@ -94,17 +95,17 @@ contains
                      .not. exists(o//'/fling.dat'), .not. exists(o//'/fling.summary')]))
         ex = run(exe//' '//d//'/bad.nml '//d//'/ok1.nml --out '//o, d)
         call t%check('several: a bad deck does not stop the next (exit 2)', all([ex == 2, &
-                     lines(d//'/stdout') == 1]))
+                     count_lines(d//'/stdout') == 1]))
         ex = run(exe//' --help', d)
         call t%check('--help: exit 0, usage on stdout, nothing on stderr', all([ex == 0, &
                      file_has(d//'/stdout', 'usage: bifilar DECK.nml'), &
-                     file_has(d//'/stdout', 'Exit status'), lines(d//'/stderr') == 0]))
+                     file_has(d//'/stdout', 'Exit status'), count_lines(d//'/stderr') == 0]))
         ex = run(exe//' --version', d)
         call t%check('--version: exit 0, one line "bifilar VERSION"', all([ex == 0, &
-                     lines(d//'/stdout') == 1, line_starts(d//'/stdout', 1, 'bifilar 1')]))
+                     count_lines(d//'/stdout') == 1, line_starts(d//'/stdout', 1, 'bifilar 1')]))
         ex = run(exe, d)
         call t%check('usage: no deck is exit 1 with one stderr line', all([ex == 1, &
-                     lines(d//'/stderr') == 1, file_has(d//'/stderr', 'usage:')]))
+                     count_lines(d//'/stderr') == 1, file_has(d//'/stderr', 'usage:')]))
         ex = run(exe//' --frobnicate '//d//'/ok1.nml', d)
         call t%check('usage: an unknown option is exit 1', all([ex == 1, &
                      file_has(d//'/stderr', 'unknown option --frobnicate')]))
@@ -119,12 +120,13 @@ contains
         character(len=*), intent(in) :: exe
         character(len=:), allocatable :: d, long
         integer :: ex, k
-        d = fresh('out')
+        d = SCR//'/out'
+        call fresh_dir(d)
         call write_deck(d//'/robust_out_empty_test.nml', '', SUSP_EQ, '', SHORT)
         call execute_command_line('rm -f /robust_out_empty_test.dat /robust_out_empty_test.summary')
-        ex = run('cd '//d//' && '//abs_exe(exe)//' robust_out_empty_test.nml --out ""', d)
+        ex = run('cd '//d//' && '//abs_path(exe)//' robust_out_empty_test.nml --out ""', d)
         call t%check('--out "": exit 1 with one stderr line', all([ex == 1, &
-                     lines(d//'/stderr') == 1, file_has(d//'/stderr', '--out')]))
+                     count_lines(d//'/stderr') == 1, file_has(d//'/stderr', '--out')]))
         call t%check('--out "": nothing written into / or here', &
                      all([.not. exists('/robust_out_empty_test.dat'), &
                      .not. exists(d//'/robust_out_empty_test.dat')]))
@@ -136,7 +138,7 @@ contains
         do k = 1, 6
             long = long//'/'//repeat(achar(iachar('a') + k), 200)
         end do
-        call execute_command_line('mkdir -p '//long)
+        call scratch_dir(long)
         call write_deck(long//'/long_deck.nml', '', SUSP_EQ, '', SHORT)
         ex = run(exe//' '//long//'/long_deck.nml --out '//long//'/out', d)
         call t%check('long names: '//itoa(len(long//'/long_deck.nml'))//'-character deck '// &
@@ -148,7 +150,7 @@ contains
         call write_text(d//'/a_file', 'x')
         ex = run(exe//' '//d//'/robust_out_empty_test.nml --out '//d//'/a_file', d)
         call t%check('--out: a file in the way is exit 5 with one stderr line', all([ex == 5, &
-                     lines(d//'/stderr') == 1, file_has(d//'/stderr', 'output folder')]))
+                     count_lines(d//'/stderr') == 1, file_has(d//'/stderr', 'output folder')]))
     end subroutine test_out
 
     ! ---------------------------------------------------------------------------------------
@@ -160,7 +162,8 @@ contains
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
         character(len=:), allocatable :: d
-        d = fresh('one_line')
+        d = SCR//'/one_line'
+        call fresh_dir(d)
         ! a deck named c whose slack message contains the letter c
         call write_deck(d//'/c.nml', '', SUSP_EQ, FLING, SHORT)
         call one(d//'/c.nml', 4, 'model no longer valid', 'cable BC swings up to the horizontal')
@@ -194,7 +197,7 @@ contains
             call t%check('one line: '//nm//' exit '//itoa(status)//' (got '//itoa(ex)//')', &
                          ex == status)
             call t%check('one line: '//nm//' exactly one stderr line, nothing on stdout', &
-                         all([lines(d//'/stderr') == 1, lines(d//'/stdout') == 0]))
+                         all([count_lines(d//'/stderr') == 1, count_lines(d//'/stdout') == 0]))
             call t%check('one line: '//nm//' "bifilar: error ('//kind//'): '//nm//': ..."', &
                          line_starts(d//'/stderr', 1, 'bifilar: error ('//kind//'): '//deck// &
                          ': '))
@@ -214,7 +217,8 @@ contains
         character(len=*), intent(in) :: exe
         character(len=:), allocatable :: d, o
         integer :: ex
-        d = fresh('no_file')
+        d = SCR//'/no_file'
+        call fresh_dir(d)
         o = d//'/out'
         ! work_precision, then floquet, which needs equal cables: refused before computing
         call write_deck(d//'/wp_floquet.nml', "&scene analyses = 'work_precision floquet' /", &
@@ -257,7 +261,8 @@ contains
         character(len=*), intent(in) :: exe
         character(len=:), allocatable :: d, m
         integer :: ex, uid
-        d = fresh('full_disk')
+        d = SCR//'/full_disk'
+        call fresh_dir(d)
         m = d//'/disk'
         uid = shell_count('id -u', d)
         if (uid /= 0) then
@@ -271,7 +276,7 @@ contains
         ex = run(exe//' input/cylinder_l180.nml --out '//m, d)
         call t%check('full disk: a 480 kB .dat on 64 kB is exit 5 (got '//itoa(ex)//')', ex == 5)
         call t%check('full disk: one stderr line naming the deck and the disk', &
-                     all([lines(d//'/stderr') == 1, file_has(d//'/stderr', &
+                     all([count_lines(d//'/stderr') == 1, file_has(d//'/stderr', &
                      'input/cylinder_l180.nml: cannot write'), &
                      file_has(d//'/stderr', 'disk full')]))
         call t%check('full disk: no file left', empty_dir(m))
@@ -299,7 +304,8 @@ contains
         real(dp) :: rows_sum
         logical :: found, together, clean
         character(len=512) :: sum_deck
-        d = fresh('concurrent')
+        d = SCR//'/concurrent'
+        call fresh_dir(d)
         o = d//'/out'
         call execute_command_line('mkdir -p '//d//'/A '//d//'/B '//o)
         call write_deck(d//'/A/same.nml', '', SUSP_UNEQ, '', &
@@ -341,7 +347,8 @@ contains
         integer :: ex
         real(dp) :: v, w, rows
         logical :: f1, f2, f3
-        d = fresh('rest')
+        d = SCR//'/rest'
+        call fresh_dir(d)
         o = d//'/out'
         call write_deck(d//'/rest.nml', '', SUSP_EQ, "&start mode = 'angles' /", &
                         '&integration tau_end = 60, dtau_out = 0.05 /')
@@ -407,7 +414,8 @@ contains
             "&body mass = 1 / &start mode = 'angles', theta_dot = 0, 0, 0, 1e308 /"], [7, 2])
         integer :: k, ex
         logical :: ok
-        d = fresh('traps')
+        d = SCR//'/traps'
+        call fresh_dir(d)
         ok = .true.
         do k = 1, 7
             call write_text(d//'/trap'//itoa(k)//'.nml', "&scene model = '"// &
@@ -415,7 +423,8 @@ contains
                 trim(subs(k, 2))//NL//SHORT//NL)
             ex = run(exe//' '//d//'/trap'//itoa(k)//'.nml --out '//d//'/out', d)
             call t%check('traps: '//trim(subs(k, 1))//' '//trim(subs(k, 2))//': exit 2, one '// &
-                         'line (got '//itoa(ex)//')', all([ex == 2, lines(d//'/stderr') == 1]))
+                         'line (got '//itoa(ex)//')', &
+                         all([ex == 2, count_lines(d//'/stderr') == 1]))
         end do
     end subroutine test_traps
 
@@ -440,7 +449,8 @@ contains
         real(dp) :: modulus
         logical :: found
         integer :: ex
-        d = fresh('slow')
+        d = SCR//'/slow'
+        call fresh_dir(d)
         o = d//'/out'
         call write_deck(d//'/title.nml', "&scene title = '"//repeat('t', 100000)//"' /", &
                         SUSP_EQ, '', SHORT)
@@ -510,14 +520,15 @@ contains
         call t%check('progress: no ETA when done', pr%line(40.0_dp) == &
                      'deck: chart: 100 of 100 (100%)')
         call pr%finish()
-        d = fresh('progress')
+        d = SCR//'/progress'
+        call fresh_dir(d)
         o = d//'/out'
         call write_deck(d//'/chart.nml', "&scene analyses = 'chart' /", SUSP_EQ, '', &
                         SHORT//NL//'&floquet rtol = 1e-6 /'//NL//"&chart x = 'l', x_min = 1, "// &
                         "x_max = 2, nx = 3, y = 'amplitude', y_min = 10, y_max = 20, ny = 3 /")
         ex = run(exe//' '//d//'/chart.nml --out '//o, d)
         call t%check('progress: stderr a file: exit 0, nothing on stderr', all([ex == 0, &
-                     lines(d//'/stderr') == 0]))
+                     count_lines(d//'/stderr') == 0]))
         call execute_command_line('command -v script > /dev/null', exitstat=ex)
         if (ex /= 0) then
             write (*, '(a)') '   progress on a terminal: skipped (script(1) not installed)'
@@ -540,7 +551,8 @@ contains
         character(len=512) :: gp
         integer :: ex, u, ios, k, nfig
         logical :: listed
-        d = fresh('report')
+        d = SCR//'/report'
+        call fresh_dir(d)
         o = d//'/out'
         ex = run(exe//' input/cylinder_l180.nml input/cylinder_l195.nml '// &
                  'input/triangle_plate.nml input/cylinder_torsion.nml --out '//o, d)
@@ -574,33 +586,6 @@ contains
     ! ---------------------------------------------------------------------------------------
     ! helpers
 
-    !> An empty scratch folder SCR/name.
-    function fresh(name) result(d)
-        character(len=*), intent(in) :: name
-        character(len=:), allocatable :: d
-        d = SCR//'/'//name
-        call execute_command_line('rm -rf '//d//' && mkdir -p '//d)
-    end function fresh
-
-    !> Run a shell command with stdout to d/stdout and stderr to d/stderr; its exit status.
-    integer function run(cmd, d) result(ex)
-        character(len=*), intent(in) :: cmd, d
-        ex = -1
-        call execute_command_line('('//cmd//') > '//d//'/stdout 2> '//d//'/stderr', exitstat=ex)
-    end function run
-
-    !> The executable as an absolute path (for commands run in another folder).
-    function abs_exe(exe) result(a)
-        character(len=*), intent(in) :: exe
-        character(len=:), allocatable :: a
-        character(len=4096) :: cwd
-        integer :: st
-        a = exe
-        if (exe(1:1) == '/') return
-        call get_environment_variable('PWD', cwd, status=st)
-        if (st == 0) a = trim(cwd)//'/'//exe
-    end function abs_exe
-
     !> A deck of the groups given ('' leaves a group out), BODY always.
     subroutine write_deck(path, scene, susp, start, integ)
         character(len=*), intent(in) :: path, scene, susp, start, integ
@@ -613,49 +598,11 @@ contains
         call write_text(path, s)
     end subroutine write_deck
 
-    !> Number of lines of a text file (0 when absent).
-    integer function lines(path) result(n)
-        character(len=*), intent(in) :: path
-        integer :: u, ios
-        character(len=1) :: c
-        n = 0
-        open (newunit=u, file=path, status='old', action='read', iostat=ios)
-        if (ios /= 0) return
-        do
-            read (u, '(a)', iostat=ios) c
-            if (ios /= 0) exit
-            n = n + 1
-        end do
-        close (u)
-    end function lines
-
-    !> Whether line k of a file starts with s.
-    logical function line_starts(path, k, s)
-        character(len=*), intent(in) :: path, s
-        integer, intent(in) :: k
-        integer :: u, ios, i
-        character(len=8192) :: line
-        line_starts = .false.
-        open (newunit=u, file=path, status='old', action='read', iostat=ios)
-        if (ios /= 0) return
-        do i = 1, k
-            read (u, '(a)', iostat=ios) line
-            if (ios /= 0) exit
-        end do
-        close (u)
-        if (ios == 0) line_starts = index(line, s) == 1
-    end function line_starts
-
     !> Number of entries of a folder (hidden ones included); -1 when it cannot be listed.
     integer function count_entries(dir) result(n)
         character(len=*), intent(in) :: dir
         n = shell_count('ls -A '//dir//' | wc -l', SCR)
     end function count_entries
-
-    logical function empty_dir(dir)
-        character(len=*), intent(in) :: dir
-        empty_dir = count_entries(dir) == 0
-    end function empty_dir
 
     !> The deck path of a .dat header ('# deck PATH'); '' when absent.
     function header_deck(path) result(s)
@@ -675,25 +622,6 @@ contains
         end do
         close (u)
     end function header_deck
-
-    !> The text after 'key = ' in a key = value file ('' when absent).
-    subroutine read_kv_text(path, key, val)
-        character(len=*), intent(in) :: path, key
-        character(len=*), intent(out) :: val
-        integer :: u, ios
-        character(len=1024) :: line
-        val = ''
-        open (newunit=u, file=path, status='old', action='read', iostat=ios)
-        do while (ios == 0)
-            read (u, '(a)', iostat=ios) line
-            if (ios /= 0) exit
-            if (index(line, key//' = ') == 1) then
-                val = line(len(key) + 4:)
-                exit
-            end if
-        end do
-        close (u)
-    end subroutine read_kv_text
 
     !> Number of data lines (not '#', not blank) of a file.
     integer function data_rows(path) result(n)

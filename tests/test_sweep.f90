@@ -6,15 +6,14 @@
 module test_sweep
     use, intrinsic :: iso_fortran_env, only: int64
     use kinds, only: dp
-    use testing, only: tester_t
+    use testing, only: tester_t, write_text, exists, file_has, count_lines, line_starts, &
+                       first_line, run, shell_count, msg_of, scratch_dir, fresh_dir, empty_dir, &
+                       abs_path
     use status, only: status_t, STATUS_OK, ERR_NUMERIC
     use text, only: itoa
     use sweep_engine, only: sweep_run, sweep_options_t, sweep_report_t
     use crc64, only: crc64_of
     use probe_task, only: probe_task_t, special_value
-    use test_deck, only: write_text, exists, shell_count, msg_of
-    use test_extreme, only: file_has
-    use test_robust, only: run, lines, line_starts, fresh, abs_exe
     use deck, only: deck_t, read_deck
     use rig, only: rig_of, accuracy_of
     use period_inversion, only: input_u_t, period_fit_t, invert_periods, period_mc_sample
@@ -81,7 +80,7 @@ contains
     subroutine run_sweep_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe     !! path of the bifilar executable
-        call execute_command_line('mkdir -p '//SCR)
+        call scratch_dir(SCR)
         if (t%want('sweep: CRC-64 of the fingerprints')) call test_crc(t)
         if (t%want('sweep: engine: values in index order over threads')) call test_order(t)
         if (t%want('sweep: engine: a failing point ends the sweep')) call test_failure(t)
@@ -280,7 +279,8 @@ contains
         character(len=*), intent(in) :: exe
         character(len=:), allocatable :: d, deck, ck, ref, dat
         integer :: ex, nres
-        d = fresh('sweep_kill')
+        d = SCR//'/sweep_kill'
+        call fresh_dir(d)
         deck = d//'/kchart.nml'
         call write_text(deck, BOX//"&chart x = 'l', x_min = 0.5, x_max = 8.0, nx = 24, "// &
                         "y = 'amplitude', y_min = 2.0, y_max = 90.0, ny = 16 /"//NL)
@@ -309,7 +309,7 @@ contains
                  '/out --checkpoint 0', d)
         call t%check('term: exit 143 (128 + SIGTERM; got '//itoa(ex)//')', ex == 143)
         call t%check('term: one stderr line naming the deck and the checkpoint', &
-                     all([lines(d//'/stderr') == 1, line_starts(d//'/stderr', 1, &
+                     all([count_lines(d//'/stderr') == 1, line_starts(d//'/stderr', 1, &
                      'bifilar: error (interrupted): '//deck//': chart stopped by signal 15'), &
                      file_has(d//'/stderr', ck//': run again with --resume')]))
         call t%check('term: only the checkpoint is left', all([exists(ck), &
@@ -356,7 +356,8 @@ contains
         character(len=*), intent(in) :: exe
         character(len=:), allocatable :: d, deck
         integer :: ex, nres
-        d = fresh('sweep_design')
+        d = SCR//'/sweep_design'
+        call fresh_dir(d)
         deck = d//'/rig.nml'
         call write_text(deck, RIG//'&design l_min = 0.1, l_max = 1.2, nl = 30, '// &
                         'amplitude_max = 50, n_amplitudes = 6 /'//NL)
@@ -399,8 +400,9 @@ contains
         call t%check('mpi: '//mexe//' and '//probe//' are built (make test builds them '// &
                      'where mpif90 is)', all([exists(mexe), exists(probe)]))
         if (.not. all([exists(mexe), exists(probe)])) return
-        d = fresh('sweep_mpi')
-        mexe = abs_exe(mexe)
+        d = SCR//'/sweep_mpi'
+        call fresh_dir(d)
+        mexe = abs_path(mexe)
 
         ex = run(MPIRUN//' -np 2 '//mexe//' --version', d)
         call t%check('mpi: --version names the MPI library', all([ex == 0, &
@@ -416,8 +418,8 @@ contains
             ex = run(MPIRUN//' -np '//itoa(np)//' '//mexe//' '//small//' --out '//d//'/np'// &
                      itoa(np), d)
             call t%check('mpi: -np '//itoa(np)//': exit 0, one stdout line, nothing on '// &
-                         'stderr', all([ex == 0, lines(d//'/stdout') == 1, &
-                         lines(d//'/stderr') == 0]))
+                         'stderr', all([ex == 0, count_lines(d//'/stdout') == 1, &
+                         count_lines(d//'/stderr') == 0]))
             if (np > 1) call t%check('mpi: -np '//itoa(np)//': the summary says the ranks', &
                                      file_has(d//'/stdout', 'on '//itoa(np)//' ranks'))
             call t%check('mpi: -np '//itoa(np)//': chart = serial chart, byte for byte', &
@@ -438,8 +440,8 @@ contains
             ex = run(MPIRUN//' -np '//itoa(np)//' '//mexe//' '//d//'/lb.nml --out '//d// &
                      '/dnp'//itoa(np), d)
             call t%check('mpi design: -np '//itoa(np)//': exit 0, one stdout line, nothing '// &
-                         'on stderr', all([ex == 0, lines(d//'/stdout') == 1, &
-                         lines(d//'/stderr') == 0]))
+                         'on stderr', all([ex == 0, count_lines(d//'/stdout') == 1, &
+                         count_lines(d//'/stderr') == 0]))
             call t%check('mpi design: -np '//itoa(np)//': design = serial design, byte for '// &
                          'byte', same_file(d//'/dnp'//itoa(np)//'/lb.design', d// &
                          '/serial/lb.design'))
@@ -455,7 +457,7 @@ contains
                  ' '//big//' --out '//d//'/big --checkpoint 0', d)
         call t%check('mpi kill: the run ends (mpirun exit 137 or 143, got '//itoa(ex)//')', &
                      ex == 137 .or. ex == 143)
-        ok = all([lines(d//'/stderr') == 1, line_starts(d//'/stderr', 1, &
+        ok = all([count_lines(d//'/stderr') == 1, line_starts(d//'/stderr', 1, &
                  'bifilar: error (interrupted): '//big//': chart stopped by signal 15')])
         call t%check('mpi kill: one stderr line from rank 0 naming the deck', ok)
         if (.not. ok) call execute_command_line('sed "s/^/   stderr: /" '//d//'/stderr')
@@ -488,7 +490,7 @@ contains
         ! the probe: dynamic sharing with threads in the ranks; failing points end the run
         call write_text(d//'/probe.fp', 'probe')
         ex = run(MPIENV//' OMP_NUM_THREADS=2 mpirun -q --oversubscribe --bind-to none -np 3 '// &
-                 abs_exe(probe)// &
+                 abs_path(probe)// &
                  ' ok 300 '//d//'/probe.fp', d)
         line = first_line(d//'/stdout')
         read (line(4:), *, iostat=k) n0, nbad, n0, n1
@@ -498,7 +500,7 @@ contains
                      k == 0 .and. n0 > 0 .and. n1 > 0)
         do k = 1, 2
             buf = merge('fail_worker', 'fail_rank0 ', k == 1)
-            ex = run('timeout 120 '//MPIFAIL//' -np 3 '//abs_exe(probe)//' '//trim(buf)// &
+            ex = run('timeout 120 '//MPIFAIL//' -np 3 '//abs_path(probe)//' '//trim(buf)// &
                      ' 200 '//d//'/probe.fp '//d//'/probe.partial', d)
             line = first_line(d//'/stdout')
             call t%check('mpi probe '//trim(buf)//': the run ends with the point''s error '// &
@@ -511,7 +513,6 @@ contains
 
     contains
 
-        !> rank 0 in w0, ranks 1 and 2 in w1, the deck small.nml as each sees it.
         !> The MPMD run's chart and the serial one's, the header line naming the deck's path
         !! (as given: relative to the run's folder) aside.
         logical function same_chart()
@@ -520,10 +521,11 @@ contains
             same_chart = same_file(d//'/w0/a.txt', d//'/w0/b.txt')
         end function same_chart
 
+        !> rank 0 in w0, ranks 1 and 2 in w1, the deck small.nml as each sees it.
         function mpmd() result(c)
             character(len=:), allocatable :: c
-            c = MPIFAIL//' -np 1 -wdir '//abs_exe(d//'/w0')//' '//mexe//' small.nml --out out'// &
-                ' : -np 2 -wdir '//abs_exe(d//'/w1')//' '//mexe//' small.nml'
+            c = MPIFAIL//' -np 1 -wdir '//abs_path(d//'/w0')//' '//mexe//' small.nml --out out'// &
+                ' : -np 2 -wdir '//abs_path(d//'/w1')//' '//mexe//' small.nml'
         end function mpmd
 
     end subroutine test_mpi
@@ -537,7 +539,8 @@ contains
         character(len=*), intent(in) :: exe
         character(len=:), allocatable :: d, deck, ck
         integer :: ex, nres
-        d = fresh('sweep_mc_kill')
+        d = SCR//'/sweep_mc_kill'
+        call fresh_dir(d)
         deck = d//'/per.nml'
         call write_text(deck, PERIODS//'monte_carlo = 2000 /'//NL)
         ck = d//'/out/per.identify_mc.partial'
@@ -573,15 +576,17 @@ contains
         type(input_u_t) :: u
         real(dp) :: i1
         integer :: ex, k, kfail
-        d = fresh('sweep_mc_fail')
+        d = SCR//'/sweep_mc_fail'
+        call fresh_dir(d)
         call write_text(d//'/bad.nml', BADMC)
         call read_deck(d//'/bad.nml', dk, st)
         u = input_u_t(period=dk%u_period)
-        call invert_periods(rig_of(dk), accuracy_of(dk), dk%periods(1:1), dk%amplitudes(1:1), u, f, st)
+        call invert_periods(rig_of(dk), accuracy_of(dk), dk%periods(1:1), dk%amplitudes(1:1), u, &
+                            f, st)
         kfail = 0
         do k = 1, dk%monte_carlo
-            call period_mc_sample(rig_of(dk), accuracy_of(dk), dk%periods(1:1), dk%amplitudes(1:1), u, f%i1, dk%seed, &
-                                  k, i1, st)
+            call period_mc_sample(rig_of(dk), accuracy_of(dk), dk%periods(1:1), &
+                                  dk%amplitudes(1:1), u, f%i1, dk%seed, k, i1, st)
             if (st%code /= STATUS_OK) then
                 kfail = k
                 exit
@@ -590,11 +595,11 @@ contains
         call t%check('mc failure: some sample fails (sample '//itoa(kfail)//')', kfail > 1)
         ex = run(exe//' '//d//'/bad.nml --out '//d//'/out --checkpoint 0', d)
         call t%check('mc failure: exit 2, one line naming the first failed sample', &
-                     all([ex == 2, lines(d//'/stderr') == 1, file_has(d//'/stderr', &
+                     all([ex == 2, count_lines(d//'/stderr') == 1, file_has(d//'/stderr', &
                      'bad.nml: Monte Carlo sample '//itoa(kfail)//': &measurement '// &
                      'periods(1) = ')]))
         call t%check('mc failure: no file, no checkpoint', &
-                     shell_count('ls -A '//d//'/out | wc -l', d) == 0)
+                     empty_dir(d//'/out'))
     end subroutine test_mc_failure
 
     ! ---------------------------------------------------------------------------------------
@@ -619,8 +624,9 @@ contains
         mexe = exe//'_mpi'
         call t%check('mpi mc: '//mexe//' is built', exists(mexe))
         if (.not. exists(mexe)) return
-        mexe = abs_exe(mexe)
-        d = fresh('sweep_mpi_mc')
+        mexe = abs_path(mexe)
+        d = SCR//'/sweep_mpi_mc'
+        call fresh_dir(d)
 
         ! periods: 1, 2, 3 ranks, and 2 of which rank 0 computes nothing
         call write_text(d//'/per.nml', PERIODS//'monte_carlo = 60, seed = 3 /'//NL)
@@ -631,8 +637,8 @@ contains
             ex = run(MPIRUN//' -np '//itoa(np)//' '//mexe//' '//d//'/per.nml --out '//d// &
                      '/np'//itoa(np), d)
             call t%check('mpi mc: -np '//itoa(np)//': exit 0, one stdout line, nothing on '// &
-                         'stderr', all([ex == 0, lines(d//'/stdout') == 1, &
-                         lines(d//'/stderr') == 0]))
+                         'stderr', all([ex == 0, count_lines(d//'/stdout') == 1, &
+                         count_lines(d//'/stderr') == 0]))
             if (np > 1) call t%check('mpi mc: -np '//itoa(np)//': the summary says the ranks', &
                                      file_has(d//'/stdout', ' s on '//itoa(np)//' ranks)'))
             call t%check('mpi mc: -np '//itoa(np)//': .identify = serial .identify '// &
@@ -642,7 +648,7 @@ contains
         ex = run(MPIRUN//' -np 2 -x BIFILAR_RANK0_COMPUTES=no '//mexe//' '//d//'/per.nml '// &
                  '--out '//d//'/np2w', d)
         call t%check('mpi mc: -np 2, every sample on rank 1: exit 0, .identify = serial '// &
-                     '.identify', all([ex == 0, lines(d//'/stderr') == 0, &
+                     '.identify', all([ex == 0, count_lines(d//'/stderr') == 0, &
                      same_identify(d//'/np2w/per.identify', d//'/serial/per.identify')]))
 
         ! a record fit's Monte Carlo on 2 and 3 ranks, and on 2 of which rank 0 computes none
@@ -656,21 +662,22 @@ contains
                      itoa(k), d)
             call t%check('mpi mc: record, '//how//': exit 0, nothing on stderr, '// &
                          '.identify = serial (cpu_seconds aside), .fit.dat the same bytes', &
-                         all([ex == 0, lines(d//'/stderr') == 0, file_has(d//'/stdout', &
+                         all([ex == 0, count_lines(d//'/stderr') == 0, file_has(d//'/stdout', &
                          'on '//how(5:5)//' ranks'), same_identify(d//'/r'//itoa(k)// &
                          '/rec.identify', d//'/rserial/rec.identify'), same_file(d//'/r'// &
                          itoa(k)//'/rec.fit.dat', d//'/rserial/rec.fit.dat')]))
         end do
 
         ! ranks 1, 2 see the same deck but another record
-        ex = run(MPIFAIL//' -np 1 -wdir '//abs_exe(d//'/w0')//' '//mexe//' rec.nml --out out'// &
-                 ' : -np 2 -wdir '//abs_exe(d//'/w1')//' '//mexe//' rec.nml', d)
+        ex = run(MPIFAIL//' -np 1 -wdir '//abs_path(d//'/w0')//' '//mexe//' rec.nml --out out'// &
+                 ' : -np 2 -wdir '//abs_path(d//'/w1')//' '//mexe//' rec.nml', d)
         call t%check('mpi mc: another record: exit 2 (got '//itoa(ex)//'), one stderr line '// &
-                     'naming the rank and the record', all([ex == 2, lines(d//'/stderr') == 1, &
-                     line_starts(d//'/stderr', 1, 'bifilar: error (bad input): rec.nml: '// &
-                     'identify_mc: rank '), file_has(d//'/stderr', 'reads another record')]))
+                     'naming the rank and the record', &
+                     all([ex == 2, count_lines(d//'/stderr') == 1, line_starts(d//'/stderr', 1, &
+                     'bifilar: error (bad input): rec.nml: identify_mc: rank '), &
+                     file_has(d//'/stderr', 'reads another record')]))
         call t%check('mpi mc: another record: no file', &
-                     shell_count('ls -A '//d//'/w0/out 2>/dev/null | wc -l', d) == 0)
+                     empty_dir(d//'/w0/out'))
 
         ! the failed sample: the serial error, on 2 ranks
         call write_text(d//'/bad.nml', BADMC)
@@ -754,19 +761,5 @@ contains
         read (s(j + 1:k - 1), *, iostat=ios) n
         if (ios /= 0) n = -1
     end function resumed
-
-    !> The first line of a file ('' when none).
-    function first_line(path) result(s)
-        character(len=*), intent(in) :: path
-        character(len=:), allocatable :: s
-        character(len=4096) :: buf
-        integer :: u, ios
-        s = ''
-        open (newunit=u, file=path, status='old', action='read', iostat=ios)
-        if (ios /= 0) return
-        read (u, '(a)', iostat=ios) buf
-        if (ios == 0) s = trim(buf)
-        close (u)
-    end function first_line
 
 end module test_sweep

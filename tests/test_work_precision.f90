@@ -2,7 +2,7 @@
 module test_work_precision
     use kinds, only: dp
     use status, only: status_t
-    use testing, only: tester_t
+    use testing, only: tester_t, write_text, fresh_dir
     use output_io, only: read_kv
     use deck, only: deck_t, read_deck
     use work_precision, only: run_work_precision, wp_result_t, WP_NRTOL, WP_NRK4
@@ -18,7 +18,7 @@ contains
     subroutine run_work_precision_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe     !! path of the bifilar executable
-        call execute_command_line('rm -rf '//SCRATCH//' && mkdir -p '//SCRATCH)
+        call fresh_dir(SCRATCH)
         if (t%want('work_precision: reference, curves, RK4 order, files')) call test_curves(t)
         if (t%want('work_precision: end to end and the error_estimate keys')) &
             call test_end_to_end(t, exe)
@@ -86,16 +86,15 @@ contains
         call t%check('wp elastic: RK4 points run, stable and within 1e-9 of the reference', ok)
     end subroutine test_elastic_curves
 
+    !> A deck of the cylinder on unequal cables, raised 45 degrees: its analyses and the
+    !! variables of its &integration.
     subroutine write_deck(path, analyses, integration)
         character(len=*), intent(in) :: path, analyses, integration
-        integer :: u
-        open (newunit=u, file=path, status='replace', action='write')
-        write (u, '(a)') '&scene title = ''wp test'', analyses = '''//analyses//''' /'
-        write (u, '(a)') '&suspension b = 1.0, b_prime = 1.0, l = 2.0, l_prime = 1.8, g = 1.0 /'
-        write (u, '(a)') '&body mass = 1.0 /'
-        write (u, '(a)') '&start mode = ''raised'', amplitude = 45.0 /'
-        write (u, '(a)') '&integration '//integration//' /'
-        close (u)
+        character, parameter :: NL = new_line('a')
+        call write_text(path, '&scene title = ''wp test'', analyses = '''//analyses//''' /'//NL// &
+            '&suspension b = 1.0, b_prime = 1.0, l = 2.0, l_prime = 1.8, g = 1.0 /'//NL// &
+            '&body mass = 1.0 /'//NL//'&start mode = ''raised'', amplitude = 45.0 /'//NL// &
+            '&integration '//integration//' /'//NL)
     end subroutine write_deck
 
     !> The reference agrees with RK4 + Richardson; LSODA's error falls with rtol and stays

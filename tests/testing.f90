@@ -1,15 +1,22 @@
 !> A small test harness: checks that count, print failures with both values, and a
-!! closing line "N passed, N failed".
+!! closing line "N passed, N failed"; and the small helpers the test suites share (files and
+!! their lines, shell commands, scratch folders, text).
 module testing
     use kinds, only: dp
+    use status, only: status_t
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
 
+    public :: write_text, exists, file_has, count_lines, line_starts, first_line, read_kv_text
+    public :: run, shell_count, scratch_dir, fresh_dir, empty_dir, abs_path, no_nan
+    public :: msg_of, upper
+
     type, public :: tester_t
         integer :: passed = 0
         integer :: failed = 0
-        character(len=:), allocatable :: only   !! run only suites whose name contains this
+        integer :: wanted = 0                   !! calls of want that said yes
+        character(len=:), allocatable :: only   !! run only the parts whose label contains this
     contains
         procedure :: check
         procedure :: check_close
@@ -19,15 +26,19 @@ module testing
 
 contains
 
-    !> True when suite `name` is selected (no filter, or the filter is part of the name).
+    !> True when the part of a suite labelled `name` is to run (no filter, or the filter is
+    !! part of the label); counts the parts that run.
     logical function want(self, name)
-        class(tester_t), intent(in) :: self
+        class(tester_t), intent(inout) :: self
         character(len=*), intent(in) :: name
         want = .true.
         if (allocated(self%only)) then
             if (len_trim(self%only) > 0) want = index(name, trim(self%only)) > 0
         end if
-        if (want) write (*, '(a)') '== '//name
+        if (want) then
+            self%wanted = self%wanted + 1
+            write (*, '(a)') '== '//name
+        end if
     end function want
 
     !> Record a pass when cond holds, else a failure with its name.
@@ -72,5 +83,207 @@ contains
         write (*, '(i0,a,i0,a)') self%passed, ' passed, ', self%failed, ' failed'
         summary = self%failed == 0
     end function summary
+
+    ! ---------------------------------------------------------------------------------------
+    ! files and their lines
+
+    !> Write text to path as it is, byte for byte (no line end added), replacing the file.
+    subroutine write_text(path, text)
+        character(len=*), intent(in) :: path, text
+        integer :: u
+        open (newunit=u, file=path, status='replace', action='write', access='stream', &
+              form='unformatted')
+        write (u) text
+        close (u)
+    end subroutine write_text
+
+    !> Whether a file (or folder) of this path exists.
+    logical function exists(path)
+        character(len=*), intent(in) :: path
+        inquire (file=path, exist=exists)
+    end function exists
+
+    !> True when the text file path contains word.
+    logical function file_has(path, word)
+        character(len=*), intent(in) :: path, word
+        integer :: u, ios
+        character(len=4096) :: line
+        file_has = .false.
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, word) > 0) then
+                file_has = .true.
+                exit
+            end if
+        end do
+        close (u)
+    end function file_has
+
+    !> Number of lines of a text file (0 when absent); with s, those that contain s (that
+    !! start with it when at_start).
+    integer function count_lines(path, s, at_start) result(n)
+        character(len=*), intent(in) :: path
+        character(len=*), intent(in), optional :: s     !! default '': every line
+        logical, intent(in), optional :: at_start       !! default .false.
+        integer :: u, ios, i
+        logical :: start
+        character(len=8192) :: line
+        start = .false.
+        if (present(at_start)) start = at_start
+        n = 0
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            i = 1
+            if (present(s)) then
+                if (len(s) > 0) i = index(line, s)
+            end if
+            if (i == 1 .or. (i > 1 .and. .not. start)) n = n + 1
+        end do
+        close (u)
+    end function count_lines
+
+    !> Whether line k of a file starts with s.
+    logical function line_starts(path, k, s)
+        character(len=*), intent(in) :: path, s
+        integer, intent(in) :: k
+        integer :: u, ios, i
+        character(len=8192) :: line
+        line_starts = .false.
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do i = 1, k
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+        end do
+        close (u)
+        if (ios == 0) line_starts = index(line, s) == 1
+    end function line_starts
+
+    !> The first line of a file ('' when none).
+    function first_line(path) result(s)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: s
+        character(len=4096) :: buf
+        integer :: u, ios
+        s = ''
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        read (u, '(a)', iostat=ios) buf
+        if (ios == 0) s = trim(buf)
+        close (u)
+    end function first_line
+
+    !> The text after 'key = ' in a key = value file ('' when absent).
+    subroutine read_kv_text(path, key, val)
+        character(len=*), intent(in) :: path, key
+        character(len=*), intent(out) :: val
+        integer :: u, ios
+        character(len=1024) :: line
+        val = ''
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        do while (ios == 0)
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, key//' = ') == 1) then
+                val = line(len(key) + 4:)
+                exit
+            end if
+        end do
+        close (u)
+    end subroutine read_kv_text
+
+    !> True when no data line (not starting '#') of any file in dir holds nan or inf, and no
+    !! line of any file holds '****' (a number too wide for its format).
+    logical function no_nan(dir)
+        character(len=*), intent(in) :: dir
+        integer :: ex
+        call execute_command_line('cat '//dir//'/* 2>/dev/null | grep -v ''^#'' | '// &
+            'grep -qiE ''(^|[^a-z])[+-]?(nan|inf)''', exitstat=ex)
+        no_nan = ex /= 0
+        call execute_command_line('cat '//dir//'/* 2>/dev/null | grep -qF ''****''', exitstat=ex)
+        no_nan = no_nan .and. ex /= 0
+    end function no_nan
+
+    ! ---------------------------------------------------------------------------------------
+    ! shell commands and scratch folders
+
+    !> Run a shell command with stdout to d/stdout and stderr to d/stderr; its exit status.
+    integer function run(cmd, d) result(ex)
+        character(len=*), intent(in) :: cmd, d
+        ex = -1
+        call execute_command_line('('//cmd//') > '//d//'/stdout 2> '//d//'/stderr', exitstat=ex)
+    end function run
+
+    !> The integer printed by a shell command (-1 when none); dir holds the scratch file.
+    integer function shell_count(cmd, dir) result(n)
+        character(len=*), intent(in) :: cmd, dir
+        integer :: u, ios
+        n = -1
+        call execute_command_line(cmd//' > '//dir//'/count.txt 2>/dev/null')
+        open (newunit=u, file=dir//'/count.txt', status='old', action='read', iostat=ios)
+        if (ios == 0) read (u, *, iostat=ios) n
+        if (ios == 0) close (u, status='delete')
+    end function shell_count
+
+    !> The folder path and its parents, made when missing (what is in it stays).
+    subroutine scratch_dir(path)
+        character(len=*), intent(in) :: path
+        call execute_command_line('mkdir -p '//path)
+    end subroutine scratch_dir
+
+    !> An empty folder path: removed with all it holds, then made anew.
+    subroutine fresh_dir(path)
+        character(len=*), intent(in) :: path
+        call execute_command_line('rm -rf '//path//' && mkdir -p '//path)
+    end subroutine fresh_dir
+
+    !> Whether a folder holds nothing, hidden entries included (also when it is missing).
+    logical function empty_dir(dir)
+        character(len=*), intent(in) :: dir
+        integer :: ex
+        ex = -1
+        call execute_command_line('test -z "$(ls -A '//dir//' 2>/dev/null)"', exitstat=ex)
+        empty_dir = ex == 0
+    end function empty_dir
+
+    !> A path as an absolute one (for commands run in another folder).
+    function abs_path(path) result(a)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: a
+        character(len=4096) :: cwd
+        integer :: st
+        a = path
+        if (path(1:1) == '/') return
+        call get_environment_variable('PWD', cwd, status=st)
+        if (st == 0) a = trim(cwd)//'/'//path
+    end function abs_path
+
+    ! ---------------------------------------------------------------------------------------
+    ! text
+
+    !> A status's message, '(no message)' when it has none.
+    function msg_of(stat) result(m)
+        type(status_t), intent(in) :: stat
+        character(len=:), allocatable :: m
+        m = '(no message)'
+        if (allocated(stat%msg)) m = stat%msg
+    end function msg_of
+
+    !> s in capitals (ASCII letters).
+    pure function upper(s) result(r)
+        character(len=*), intent(in) :: s
+        character(len=len(s)) :: r
+        integer :: i
+        r = s
+        do i = 1, len(s)
+            if (s(i:i) >= 'a' .and. s(i:i) <= 'z') r(i:i) = achar(iachar(s(i:i)) - 32)
+        end do
+    end function upper
 
 end module testing
