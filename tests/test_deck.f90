@@ -176,7 +176,7 @@ contains
     end subroutine test_defaults
 
     ! ---------------------------------------------------------------------------------------
-    !> The limits of issue 13: subscripts the run-time library cannot be trusted with, deck
+    !> The limits: subscripts the run-time library cannot be trusted with, deck
     !! size and line length, a device as a deck, the dimensional range and the scale-free
     !! ratios, angles (bounded, then reduced modulo 2 pi), rates, tau_end and the row limit;
     !! each a one-line ERR_DECK naming the variable and what is allowed.

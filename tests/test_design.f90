@@ -1,4 +1,4 @@
-!> Tests of the rig design (module design, analysis `design`, issue 14): the recommendation
+!> Tests of the rig design (module design, analysis `design`): the recommendation
 !! checked by an independent Floquet analysis (100 times tighter tolerance, twice the
 !! amplitudes), the band edges against a stability chart of the same body, the predicted
 !! precision and the linear formula's error against the classical limit (exact formulas),

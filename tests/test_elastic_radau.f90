@@ -1,5 +1,5 @@
 !> Tests of the elastic model's generalized coordinates (module elastic_gen) and of Radau IIA
-!! on the elastic cables against the targets of issue 11: the global error follows rtol over
+!! on the elastic cables against the targets: the global error follows rtol over
 !! stiffness and damping; lightly damped stiff cables in far fewer steps than CVODE needs
 !! and fewer evaluations than LSODA at equal accuracy; no blow-up at tight tolerance.
 !!
@@ -32,11 +32,11 @@ module test_elastic_radau
     !> The issue's interval and output grid.
     real(dp), parameter :: TEND = 20.0_dp, DTOUT = 0.05_dp
     integer, parameter :: NOUT = 400
-    !> SUNDIALS CVODE 6.4.1 on the same equations (issue 11): 37 791 steps for a theta1
+    !> SUNDIALS CVODE 6.4.1 on the same equations: 37 791 steps for a theta1
     !! error of 2.5e-9 at k = 1e6, 318 366 steps for 1.3e-7 at k = 1e8 (damping 0.01).
     integer, parameter :: CVODE_STEPS_1E6 = 37791, CVODE_STEPS_1E8 = 318366
     real(dp), parameter :: CVODE_ERR_1E6 = 2.5e-9_dp, CVODE_ERR_1E8 = 1.3e-7_dp
-    !> cylinder_l180_elastic's steps before issue 11 (LSODA, issue 11).
+    !> cylinder_l180_elastic's steps before this was mended (LSODA).
     integer, parameter :: STEPS_BEFORE = 58469
 
 contains
@@ -48,10 +48,10 @@ contains
         end associate
         if (t%want('elastic radau: generalized coordinates against the maximal ones')) &
             call test_coordinates(t)
-        if (t%want('elastic radau: global error follows rtol (issue 11)')) call test_follows(t)
-        if (t%want('elastic radau: lightly damped stiff cables ahead of CVODE (issue 11)')) &
+        if (t%want('elastic radau: global error follows rtol')) call test_follows(t)
+        if (t%want('elastic radau: lightly damped stiff cables ahead of CVODE')) &
             call test_cvode(t)
-        if (t%want('elastic radau: no blow-up (issue 11)')) call test_blowup(t)
+        if (t%want('elastic radau: no blow-up')) call test_blowup(t)
         if (t%want('elastic radau: in and out of the generalized chart')) call test_recoords(t)
         if (t%want('elastic radau: &integration method chooses the integrator')) &
             call test_method_word(t)
@@ -202,7 +202,7 @@ contains
                            e_flow, 0.0_dp, atol=1.0e-8_dp)
     end subroutine test_coordinates
 
-    !> Issue 11, item 2: over stiffness 1e3 ... 1e8 and damping 0.01 ... 0.5 (four corners
+    !> Over stiffness 1e3 ... 1e8 and damping 0.01 ... 0.5 (four corners
     !! and middles: (1e3, 0.01), (1e4, 0.5), (1e6, 0.01), (1e8, 0.1)) at rtol 1e-6, 1e-8,
     !! 1e-10, the largest error in theta1, theta4, theta5 and Q over tau = 0 ... 20 is at most
     !! 30 rtol.  Each reference (Radau 1e-13) is confirmed by LSODA at rtol 1e-13 in the
@@ -286,7 +286,7 @@ contains
                      stat%code == 0 .and. nre_max == 0 .and. err(1) <= 30*rtol)
     end subroutine test_recoords
 
-    !> Issue 11, item 3: damping 0.01, at k = 1e6 and 1e8 Radau (rtol 1e-9) reaches a theta1
+    !> Damping 0.01, at k = 1e6 and 1e8 Radau (rtol 1e-9) reaches a theta1
     !! error below the 2.5e-9 for which CVODE needs 37 791 steps at k = 1e6 (and far below
     !! the 1.3e-7 for which it needs 318 366 at k = 1e8) in under a tenth of CVODE's steps
     !! at k = 1e6; and at k = 1e6 with fewer right-hand sides plus Jacobians than LSODA needs
@@ -330,7 +330,7 @@ contains
         end do
     end subroutine test_cvode
 
-    !> Issue 11, item 4: at rtol 1e-12 (damping 0.01) Radau's steps at k = 1e8 are at most
+    !> At rtol 1e-12 (damping 0.01) Radau's steps at k = 1e8 are at most
     !! 3 times those at k = 1e6; input/cylinder_l180_elastic.nml (k = 1e6, damping 0.05,
     !! tau = 0 ... 60, rtol 1e-10) takes at most a fifth of the 58 469 steps it took before.
     subroutine test_blowup(t)

@@ -1,4 +1,4 @@
-!> Extreme cases and robustness (issue 5): the model-validity checks, the decks of
+!> Extreme cases and robustness: the model-validity checks, the decks of
 !! input/extreme/ and every deck of input/ but the charts run end to end through the
 !! executable, the elastic model through slack and snap.  The fuzz test of hostile decks is
 !! suite fuzz (test_fuzz).

@@ -56,7 +56,7 @@ contains
     end subroutine run_fuzz_tests
 
     ! ---------------------------------------------------------------------------------------
-    !> Fuzz test (issue 13): FUZZ_PER_SEED mutated decks for each seed of FUZZ_SEEDS, made
+    !> Fuzz test: FUZZ_PER_SEED mutated decks for each seed of FUZZ_SEEDS, made
     !! from every shipped deck (input/*.nml, input/extreme/*.nml, input/more/*.nml) kept
     !! small (load_bases) and then mutated: hostile, random, nearby and long values for the
     !! variables of all twelve groups, groups left out, decks cut short, random bytes, broken
@@ -531,7 +531,7 @@ contains
             case (5)
                 call set_var(b, GR_BODY, 'inertia', '1000000*0.1')
             case (6)
-                ! a subscript left open at the end of a line (SIGSEGV before issue 13)
+                ! a subscript left open at the end of a line (SIGSEGV before this was mended)
                 b%grp(GR_BODY) = '&body inertia('//new_line('a')//'/'
             case (7)
                 call set_var(b, GR_BODY, 'btilde(1,'//new_line('a')//'2)', '1')

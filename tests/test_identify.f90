@@ -1,4 +1,4 @@
-!> Tests of issue 10: the damping torque (energy dissipated = the work of the torque, the
+!> Tests of identify: the damping torque (energy dissipated = the work of the torque, the
 !! decay rate of linear theory), periods of asymmetric rigs (the simulated period against
 !! the exact torsion period, I1 back from its own periods, the small-amplitude limit, the
 !! budget against differences done here), Levenberg-Marquardt on problems with known
@@ -67,16 +67,16 @@ contains
         if (t%want('identify: small amplitude on an asymmetric rig')) call test_asym_small(t)
         if (t%want('identify: u_I1 from periods against differences of the inversion')) &
             call test_asym_budget(t)
-        if (t%want('identify: a damped, noisy record of an asymmetric rig (issue 10)')) &
+        if (t%want('identify: a damped, noisy record of an asymmetric rig')) &
             call test_record_fit(t)
-        if (t%want('identify: honest u_I1 over 20 noise seeds (issue 10)')) call test_coverage(t)
+        if (t%want('identify: honest u_I1 over 20 noise seeds')) call test_coverage(t)
         if (t%want('identify: periods without u_period: their scatter')) call test_scatter(t)
         if (t%want('identify: deck groups &damping and &measurement')) call test_groups(t)
         if (t%want('identify: the example decks and their measurements')) &
             call test_examples(t, exe)
         if (t%want('identify: Monte Carlo of a record repeats with 1 and 2 threads')) &
             call test_mc_threads(t, exe)
-        if (t%want('identify: bad input is one line and no file (issue 10)')) &
+        if (t%want('identify: bad input is one line and no file')) &
             call test_bad_input(t, exe)
     end subroutine run_identify_tests
 
@@ -494,7 +494,7 @@ contains
     end subroutine test_asym_budget
 
     ! ------------------------------------------------------------------------------------
-    !> Issue 10: a simulated record with damping and noise (theta4, 50 Hz, 12 s, noise
+    !> A simulated record with damping and noise (theta4, 50 Hz, 12 s, noise
     !! 1 mrad) on unequal cables with an offset mass centre; the fit of I1, c_v, c_q from a
     !! start 30 % off (I1) and no damping: I1 within 0.2 % of the truth and within 3 u_I1,
     !! c_q within 3 u_c_q.
@@ -532,7 +532,7 @@ contains
                      abs(res%i1_linear - res%i1) > 3.0_dp*res%u_i1)
     end subroutine test_record_fit
 
-    !> Issue 10: over 20 noise seeds, the share of fits with I1 within 2 u_I1 of the truth
+    !> Over 20 noise seeds, the share of fits with I1 within 2 u_I1 of the truth
     !! lies between 0.8 and 1 (normal errors: 0.95).  Short records (6 s at 50 Hz, 2 mrad)
     !! of the damped asymmetric rig, I1, c_v and c_q estimated; with column 3 (the stated
     !! noise) for half of them.
@@ -771,7 +771,7 @@ contains
     end subroutine test_mc_threads
 
     ! ------------------------------------------------------------------------------------
-    !> Issue 10, bad input: one line on stderr naming the deck and what is wrong, no output
+    !> Bad input: one line on stderr naming the deck and what is wrong, no output
     !! file, exit 2 for a record that is missing, not increasing in time, shorter than 20
     !! samples or has NaN, a period no positive I1 can give, an unknown estimate word; a fit
     !! that does not converge exits 3 with the residual and what to check.

@@ -1,4 +1,4 @@
-!> Robustness and daily use (issue 13), through the executable of the build under test:
+!> Robustness and daily use, through the executable of the build under test:
 !! several decks per run and the worst exit status, --help and --version, --out, one
 !! stderr line naming the deck, no file left by a failed run, a full disk, concurrent runs
 !! of decks with the same name, bodies at rest, finite input that trapped the checking
@@ -253,7 +253,7 @@ contains
 
     ! ---------------------------------------------------------------------------------------
     !> A full disk: a tmpfs of 64 kB (needs root; skipped otherwise).  gfortran 12 reports
-    !! no error when the disk fills: before issue 13 the run exited 0 with a .dat cut short
+    !! no error when the disk fills: before this was mended the run exited 0 with a .dat cut short
     !! and an empty .summary.  Now: exit 5, one stderr line, no file (not even the .floquet
     !! that fitted); a deck that fits is written.
     subroutine test_full_disk(t, exe)
@@ -295,7 +295,7 @@ contains
     !> Eight runs at once, four each of two different decks named same.nml, into one
     !! folder, three times: the .dat and the .summary always come from the same run (the
     !! deck line of the .dat's header is the summary's deck, the row counts agree), and no
-    !! temporary file is left.  Before issue 13 all runs shared same.dat.tmp.
+    !! temporary file is left.  Before this was mended all runs shared same.dat.tmp.
     subroutine test_concurrent(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
@@ -337,7 +337,7 @@ contains
     end subroutine test_concurrent
 
     ! ---------------------------------------------------------------------------------------
-    !> Bodies at rest stay at rest and exit 0 (before issue 13: exit 3 "already stands at
+    !> Bodies at rest stay at rest and exit 0 (before this was mended: exit 3 "already stands at
     !! tcrit", or exit 4 at amplitude 1e-300); an angle of 1e10 rad is refused in both
     !! builds; angles are taken modulo 2 pi.
     subroutine test_rest(t, exe)

@@ -1,4 +1,4 @@
-!> Sweeps over threads and ranks, checkpoints and resuming (issue 15): the engine in
+!> Sweeps over threads and ranks, checkpoints and resuming: the engine in
 !! process with a task of known values (module probe_task), the stability chart, a design
 !! and identify's Monte Carlo through bin/bifilar killed and resumed, and, when OpenMPI is
 !! installed, bin/bifilar_mpi and sweep_probe_mpi under mpirun with 1, 2 and 3 ranks, a

@@ -1,4 +1,4 @@
-!> Tests of the work-precision analysis and the run's error estimate (issue 5).
+!> Tests of the work-precision analysis and the run's error estimate.
 module test_work_precision
     use kinds, only: dp
     use status, only: status_t
@@ -28,7 +28,7 @@ contains
     !> input/work_precision_elastic.nml (k = 1e6, zeta = 0.01, tau = 0 ... 3): the reference
     !! (Radau 1e-13 in the generalized coordinates) agrees with RK4 + Richardson and with
     !! LSODA 1e-13 in the maximal coordinates to 1e-9; Radau finishes at every rtol and its
-    !! angle error stays within 30 rtol (issue 11), with fewer steps than LSODA at every rtol
+    !! angle error stays within 30 rtol, with fewer steps than LSODA at every rtol
     !! <= 1e-6; LSODA finishes at every rtol the stretch resolves (<= 1e-4) and its error falls
     !! from 1e-4 to 1e-12 by more than 1e5, but lies at 1e2 ... 1e4 rtol for rtol <= 1e-8
     !! (the energy-norm tolerances of the maximal coordinates); every RK4 point run is stable

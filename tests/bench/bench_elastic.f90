@@ -1,6 +1,6 @@
 !> Benchmark of the elastic-cable model (make bench), three tables.
 !!
-!! 1. The grid of issue 11: the Figs. 4-6 cylinder (l = 2 b', l' = 1.8 b', raised 45 deg),
+!! 1. The grid: the Figs. 4-6 cylinder (l = 2 b', l' = 1.8 b', raised 45 deg),
 !!    tau = 0 ... 20, output every 0.05, atol = rtol/100, stiffness k = 1e3 ... 1e8, damping
 !!    ratio 0.01, 0.1, 0.5.  For each (k, zeta) the reference (Radau IIA, rtol 1e-13, in the
 !!    generalized coordinates) and its agreement with two methods in the maximal coordinates:
@@ -11,7 +11,7 @@
 !!    steps at rtol 1e-12.  File: OUT_grid.dat.
 !! 2. Equal accuracy at k = 1e6 and 1e8, damping 0.01: Radau at rtol 1e-7 ... 1e-11 and
 !!    LSODA at rtol 1e-8, 1e-10, 1e-12: theta1 error, steps, right-hand sides, Jacobians,
-!!    CPU, beside SUNDIALS CVODE's figures from issue 11.  File: OUT_accuracy.dat.
+!!    CPU, beside SUNDIALS CVODE's figures.  File: OUT_accuracy.dat.
 !! 3. Stiffness, damping 0.5, tau = 0 ... 4 pi, rtol 1e-8: LSODA with the cables' modes
 !!    (steps, evaluations, failures, last method; CPU best of 3), Radau beside it (and Radau
 !!    kept in the maximal coordinates: steps, Newton failures), fixed-step
@@ -62,12 +62,12 @@ contains
         times = [(ir*TEND/NOUT, ir = 0, NOUT)]
         call atomic_open(path, u, stat)
         if (stat%code /= 0) error stop 'bench_elastic: cannot write the grid file'
-        write (u, '(a)') '# issue 11 grid: cylinder l'' = 1.8, 45 deg, tau 0..20, '// &
+        write (u, '(a)') '# grid: cylinder l'' = 1.8, 45 deg, tau 0..20, '// &
             'atol = rtol/100;'// &
             ' Radau IIA (generalized coordinates); errors: max over theta1, theta4, theta5, Q'
         write (u, '(a)') '# stiffness damping ref_lsoda_agreement ref_rk4_richardson_agreement '// &
             'err_over_rtol(1e-6 ... 1e-10) steps(1e-6 ... 1e-10) steps_1e-12'
-        write (*, '(/,a)') '1. Issue 11 grid: cylinder l'' = 1.8, 45 deg, tau 0..20, '// &
+        write (*, '(/,a)') '1. Grid: cylinder l'' = 1.8, 45 deg, tau 0..20, '// &
             'atol = rtol/100; Radau IIA'
         write (*, '(a)') '   largest error in theta1, theta4, theta5, Q over rtol / steps, '// &
             'at rtol 1e-6 ... 1e-10; steps at 1e-12;'
@@ -110,7 +110,7 @@ contains
                     agree_rk(1), ratio, steps
             end do
         end do
-        write (*, '(a,f6.2,a)') '   largest error over the grid: ', worst, ' rtol (issue 11: <= 30)'
+        write (*, '(a,f6.2,a)') '   largest error over the grid: ', worst, ' rtol (goal: <= 30)'
         call atomic_commit(u, path, stat)
     end subroutine grid_table
 
@@ -132,7 +132,7 @@ contains
             'stiffness rtol theta1_error steps rhs_evaluations jacobian_evaluations cpu_seconds'
         write (*, '(/,a)') '2. Equal accuracy, damping 0.01, tau 0..20 (CPU: Radau best of 3, '// &
             'LSODA one run)'
-        write (*, '(a)') '   SUNDIALS CVODE 6.4.1 (issue 11): k = 1e6: 1 247 steps for 5.1e-4, '// &
+        write (*, '(a)') '   SUNDIALS CVODE 6.4.1: k = 1e6: 1 247 steps for 5.1e-4, '// &
             '36 717 for 2.1e-6, 37 791 for 2.5e-9;'
         write (*, '(a)') '   k = 1e8: 329 615 steps for 7.7e-6, 318 366 for 1.3e-7'
         write (*, '(a8,a7,a8,a12,a9,a10,a7,a10)') 'k', 'method', 'rtol', 'theta1 err', 'steps', &

@@ -1,4 +1,4 @@
-!> Work units for the identify figures of `make bench` (tests/bench/speed.sh, issue 10):
+!> Work units for the identify figures of `make bench` (tests/bench/speed.sh):
 !! each mode repeats one unit n times, so that its instruction count is the difference of
 !! two runs under `valgrind --tool=callgrind` (n and 0 repetitions) over n, and its CPU time
 !! the cpu_time of a run over n.

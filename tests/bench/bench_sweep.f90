@@ -1,5 +1,5 @@
 !> bench_sweep: the cost of the points of a stability chart and a model of a chart's wall
-!! time on many cores (make bench, tests/bench/mpi_scaling.sh; issue 15).
+!! time on many cores (make bench, tests/bench/mpi_scaling.sh).
 !!
 !!   bench_sweep DECK.nml OUT.dat [T_REQ_US [START_S]]
 !!

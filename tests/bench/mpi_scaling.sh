@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# MPI figures of make bench (issue 15): strong scaling of the 60 x 45 chart of
+# MPI figures of make bench: strong scaling of the 60 x 45 chart of
 # input/box_chart.nml on 1 and 2 ranks of one thread each, with the parallel efficiency;
 # rank 0 handing out work only (BIFILAR_RANK0_COMPUTES=no) beside; rank 0's time per
 # request for work (sweep_probe_mpi, points that cost nothing); the process start; the
-# same strong scaling of identify's Monte Carlo (issue 10 on the engine): 2000 samples from
+# same strong scaling of identify's Monte Carlo (on the sweep engine): 2000 samples from
 # the periods of input/identify_periods.nml (RUNS runs) and 200 refits of the gyro record of
 # input/more/identify_record_mc.nml (3 runs), into OUTFILE with _mc_periods and _mc_record
 # before .dat; then bench_sweep: the cost of each chart point on one thread and the model of

@@ -2,7 +2,7 @@
 # Speed figures of make bench: instructions (valgrind --tool=callgrind, exact and repeatable)
 # and CPU time of one right-hand side, one Floquet analysis, one chart point, the start of
 # the process, the whole cylinder_l180 deck, the 60 x 6 rig design (input/box_design.nml,
-# one thread) and identify's units (issue 10).  Usage: tests/bench/speed.sh BINDIR OUTFILE
+# one thread) and identify's units.  Usage: tests/bench/speed.sh BINDIR OUTFILE
 # (BINDIR holds bifilar, bench_speed, bench_identify).  One unit's instructions are the
 # difference of a run with N units and one with 0, over N; its CPU time is from a run with
 # more units.
@@ -56,7 +56,7 @@ $(cpu_process 40 "$bin/bifilar" input/cylinder_l180.nml --out "$scratch")"
     # the 60 x 6 rig design of the parallelepiped, whole process on one thread
     echo "design_box_60x6 $(OMP_NUM_THREADS=1 cg "$bin/bifilar" input/box_design.nml --out \
 "$scratch") $(OMP_NUM_THREADS=1 cpu_process 3 "$bin/bifilar" input/box_design.nml --out "$scratch")"
-    # identify (issue 10): a period inversion; the 30 s, 100 Hz record with three
+    # identify: a period inversion; the 30 s, 100 Hz record with three
     # parameters; 2000 Monte Carlo samples from periods (one thread for the count)
     echo "identify_periods $(per_unit 20 "$bin/bench_identify" periods) \
 $(cpu_unit "$bin/bench_identify" periods 200)"
