@@ -27,6 +27,7 @@ module suites
     use test_sweep, only: run_sweep_tests
     use test_identify, only: run_identify_tests
     use test_graph, only: run_graph_tests
+    use test_stats, only: run_stats_tests
     implicit none
     private
 
@@ -96,8 +97,10 @@ contains
                     'resumed', run_sweep_tests), &
             suite_t('identify', 'damping, periods of asymmetric rigs, least squares, '// &
                     'record fits, examples', run_identify_tests), &
-            suite_t('graph', 'the module graph (layers, no analysis using another, 8 '// &
-                    'floors) and the status table', run_graph_tests), &
+            suite_t('stats', 'Student''s t, chi-square tails, Welch-Satterthwaite, weighted '// &
+                    'means', run_stats_tests), &
+            suite_t('graph', 'the module graph (layers, analyses apart, at most 8 floors); '// &
+                    'the status table', run_graph_tests), &
             suite_t('runner', 'this runner: --list, --help, a filter that selects '// &
                     'nothing', run_runner_tests)]
     end function suite_table

@@ -1,0 +1,330 @@
+!> Tables of numbers as instruments and spreadsheets write them: a text file of rows, read
+!! and checked whole (read_table).
+!!
+!! * Separators: blanks or tabs, a comma, or a semicolon between fields, found from the
+!!   file's first data line (a semicolon wins over a comma; with semicolons, a comma inside
+!!   a number is its decimal point, as in 0,012;1,35).  Quoted fields ("Time (s)") keep
+!!   their separators; the quotes are dropped.
+!! * Line ends LF or CR LF; a UTF-8 byte order mark at the start is skipped; '#' starts a
+!!   comment; blank lines are skipped.
+!! * Header: the lines before the first line whose fields are all numbers.  The last header
+!!   line with as many fields as the data names the columns (names compared in lower case,
+!!   trimmed); a table without such a line has no names.
+!! * Data: every data line has the same number of fields, each a finite number (a field of
+!!   more than 64 characters, NaN, Inf or a value beyond the range of real(dp) is refused);
+!!   a line longer than LINE_MAX characters is refused.
+!! Failures are ERR_DECK statuses whose message names the line and what is wrong; the
+!! caller puts the file's name before it.
+module tables
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    use kinds, only: dp
+    use status, only: status_t, set_error, STATUS_OK, ERR_DECK
+    use text, only: itoa, lower, clip
+    use lines, only: read_line, LINE_MAX
+    use fptraps, only: traps_off, traps_restore, NTRAPS
+    implicit none
+    private
+
+    !> One column's name.
+    type, public :: column_name_t
+        character(len=:), allocatable :: s
+    end type column_name_t
+
+    !> A table read from a file.
+    type, public :: table_t
+        integer :: nrow = 0, ncol = 0
+        real(dp), allocatable :: v(:, :)            !! (nrow, ncol) the values
+        integer, allocatable :: line(:)             !! (nrow) each row's line in the file
+        type(column_name_t), allocatable :: names(:)    !! (ncol) lower case; '' when none
+        character :: separator = ' '                !! ' ', ',' or ';'
+        logical :: decimal_comma = .false.          !! ';' separated with a comma for a point
+    contains
+        procedure :: column => table_column
+    end type table_t
+
+    public :: read_table
+
+    integer, parameter :: FIELD_MAX = 64        !! longest numeric field (characters)
+
+contains
+
+    !> Read the table at path (max_rows rows at most; 0: no limit).  A file that is not a
+    !! regular file (a folder, a device such as /dev/zero) ends at its first line: read_line
+    !! stops after LINE_MAX characters, and a folder cannot be read.
+    subroutine read_table(path, tab, stat, max_rows)
+        character(len=*), intent(in) :: path        !! the file
+        type(table_t), intent(out) :: tab
+        type(status_t), intent(out) :: stat         !! ERR_DECK naming the line
+        integer, intent(in), optional :: max_rows   !! most data rows (0 or absent: no limit)
+        character(len=:), allocatable :: line
+        character(len=512) :: msg
+        type(column_name_t), allocatable :: f(:), header(:)
+        real(dp), allocatable :: v(:, :), x(:)
+        integer, allocatable :: ln(:)
+        integer :: u, ios, nline, n, nmax, k
+        logical :: halting(NTRAPS), numeric, is_dir
+        stat%code = STATUS_OK
+        nmax = 0
+        if (present(max_rows)) nmax = max_rows
+        inquire (file=path//'/.', exist=is_dir)
+        if (is_dir) then
+            call set_error(stat, ERR_DECK, 'is a folder; allowed: a text file')
+            return
+        end if
+        open (newunit=u, file=path, status='old', action='read', form='formatted', &
+              access='sequential', iostat=ios, iomsg=msg)
+        if (ios /= 0) then
+            call set_error(stat, ERR_DECK, 'cannot open it: '//trim(msg))
+            return
+        end if
+        allocate (header(0), v(1, 1024), ln(1024))
+        n = 0
+        nline = 0
+        call traps_off(halting)
+        do
+            call read_line(u, line, ios, msg)
+            if (is_iostat_end(ios)) exit
+            nline = nline + 1
+            if (ios /= 0) then
+                call fail('cannot read line '//itoa(nline)//': '//trim(msg))
+                return
+            end if
+            if (len(line) > LINE_MAX) then
+                call fail('line '//itoa(nline)//' is longer than '//itoa(LINE_MAX)// &
+                          ' characters; allowed: lines of at most '//itoa(LINE_MAX))
+                return
+            end if
+            if (nline == 1) call drop_bom(line)
+            call drop_comment(line)
+            if (len_trim(line) == 0) cycle
+            if (n == 0) call choose_separator(line, tab)
+            call split_fields(line, tab%separator, f)
+            call to_numbers(f, tab%decimal_comma, x, numeric)
+            if (.not. numeric) then
+                if (n > 0) then
+                    call fail('line '//itoa(nline)//': '//non_number(f, tab%decimal_comma)// &
+                              '; allowed: numbers in every field after the header')
+                    return
+                end if
+                header = f
+                cycle
+            end if
+            if (n == 0) then
+                tab%ncol = size(x)
+                deallocate (v)
+                allocate (v(tab%ncol, 1024))
+            else if (size(x) /= tab%ncol) then
+                call fail('line '//itoa(nline)//': '//itoa(size(x))//' fields where the '// &
+                          'first data line has '//itoa(tab%ncol)//'; allowed: the same '// &
+                          'number of fields on every line')
+                return
+            end if
+            if (.not. all(ieee_is_finite(x))) then
+                call fail('line '//itoa(nline)//': a value is not a finite number (NaN, '// &
+                          'Inf, or beyond 1.8e308); allowed: finite numbers')
+                return
+            end if
+            if (nmax > 0 .and. n == nmax) then
+                call fail('more than '//itoa(nmax)//' rows; allowed: at most '//itoa(nmax))
+                return
+            end if
+            if (n == size(v, 2)) then
+                v = reshape(v, [tab%ncol, 2*n], pad=[0.0_dp])
+                ln = [ln, ln]
+            end if
+            n = n + 1
+            v(:, n) = x
+            ln(n) = nline
+        end do
+        call traps_restore(halting)
+        close (u)
+        tab%nrow = n
+        if (n == 0) then
+            call set_error(stat, ERR_DECK, 'no line of numbers (a header alone, or empty); '// &
+                           'allowed: rows of numbers, after an optional header')
+            return
+        end if
+        tab%v = transpose(v(:, 1:n))
+        tab%line = ln(1:n)
+        allocate (tab%names(tab%ncol))
+        do k = 1, tab%ncol
+            tab%names(k)%s = ''
+            if (size(header) == tab%ncol) tab%names(k)%s = lower(trim(adjustl(header(k)%s)))
+        end do
+    contains
+        subroutine fail(what)
+            character(len=*), intent(in) :: what
+            call traps_restore(halting)
+            call set_error(stat, ERR_DECK, what)
+            close (u)
+        end subroutine fail
+    end subroutine read_table
+
+    !> The column named `name` (lower case), 0 when the table has none of that name.
+    pure integer function table_column(tab, name) result(k)
+        class(table_t), intent(in) :: tab
+        character(len=*), intent(in) :: name
+        integer :: j
+        k = 0
+        if (.not. allocated(tab%names)) return
+        do j = 1, size(tab%names)
+            if (tab%names(j)%s == lower(trim(adjustl(name)))) then
+                k = j
+                return
+            end if
+        end do
+    end function table_column
+
+    !> A UTF-8 byte order mark (EF BB BF) at the start of the first line is dropped.
+    subroutine drop_bom(line)
+        character(len=:), allocatable, intent(inout) :: line
+        if (len(line) < 3) return
+        if (iachar(line(1:1)) == 239 .and. iachar(line(2:2)) == 187 .and. &
+            iachar(line(3:3)) == 191) line = line(4:)
+    end subroutine drop_bom
+
+    !> Everything from a '#' outside quotes on is a comment.
+    subroutine drop_comment(line)
+        character(len=:), allocatable, intent(inout) :: line
+        integer :: i
+        logical :: q
+        q = .false.
+        do i = 1, len(line)
+            if (line(i:i) == '"') q = .not. q
+            if (line(i:i) == '#' .and. .not. q) then
+                line = line(1:i - 1)
+                return
+            end if
+        end do
+    end subroutine drop_comment
+
+    !> The separator of a table from its first non-blank line: ';' when it holds one
+    !! outside quotes, else ',' when it holds one, else blanks (and tabs); with ';', a comma
+    !! in the data is a decimal comma.
+    subroutine choose_separator(line, tab)
+        character(len=*), intent(in) :: line
+        type(table_t), intent(inout) :: tab
+        integer :: i
+        logical :: q, semi, comma
+        q = .false.
+        semi = .false.
+        comma = .false.
+        do i = 1, len(line)
+            if (line(i:i) == '"') q = .not. q
+            if (q) cycle
+            if (line(i:i) == ';') semi = .true.
+            if (line(i:i) == ',') comma = .true.
+        end do
+        tab%separator = ' '
+        if (comma) tab%separator = ','
+        if (semi) tab%separator = ';'
+        tab%decimal_comma = semi
+    end subroutine choose_separator
+
+    !> The fields of a line: separated by sep (blanks: any run of blanks), quotes dropped,
+    !! each field trimmed.  With a comma or semicolon an empty field counts.
+    subroutine split_fields(line, sep, f)
+        character(len=*), intent(in) :: line
+        character, intent(in) :: sep
+        type(column_name_t), allocatable, intent(out) :: f(:)
+        character(len=len(line)) :: buf
+        integer :: i, nb, nf
+        logical :: q, in_field
+        allocate (f(0))
+        buf = ''
+        nb = 0
+        q = .false.
+        in_field = .false.
+        nf = 0
+        do i = 1, len(line)
+            if (line(i:i) == '"') then
+                q = .not. q
+                in_field = .true.
+                cycle
+            end if
+            if (.not. q .and. ((sep == ' ' .and. line(i:i) == ' ') .or. &
+                               (sep /= ' ' .and. line(i:i) == sep))) then
+                if (sep /= ' ' .or. in_field) call push()
+                cycle
+            end if
+            if (line(i:i) /= ' ' .or. in_field) then
+                nb = nb + 1
+                buf(nb:nb) = line(i:i)
+                in_field = .true.
+            end if
+        end do
+        if (in_field .or. (sep /= ' ' .and. nf > 0)) call push()
+    contains
+        subroutine push()
+            type(column_name_t) :: one
+            one%s = trim(buf(1:nb))
+            f = [f, one]
+            nf = nf + 1
+            buf = ''
+            nb = 0
+            in_field = .false.
+        end subroutine push
+    end subroutine split_fields
+
+    !> The fields as numbers; numeric is .false. when one is not a number (then x is empty).
+    subroutine to_numbers(f, decimal_comma, x, numeric)
+        type(column_name_t), intent(in) :: f(:)
+        logical, intent(in) :: decimal_comma
+        real(dp), allocatable, intent(out) :: x(:)
+        logical, intent(out) :: numeric
+        integer :: k
+        allocate (x(size(f)))
+        numeric = size(f) > 0
+        do k = 1, size(f)
+            numeric = number(f(k)%s, decimal_comma, x(k))
+            if (.not. numeric) exit
+        end do
+        if (.not. numeric) deallocate (x)
+        if (.not. numeric) allocate (x(0))
+    end subroutine to_numbers
+
+    !> The first field that is not a number, quoted for a message.
+    function non_number(f, decimal_comma) result(s)
+        type(column_name_t), intent(in) :: f(:)
+        logical, intent(in) :: decimal_comma
+        character(len=:), allocatable :: s
+        real(dp) :: x
+        integer :: k
+        s = 'a field is not a number'
+        do k = 1, size(f)
+            if (.not. number(f(k)%s, decimal_comma, x)) then
+                s = 'field '//itoa(k)//', '''//clip(f(k)%s)//''', is not a number'
+                return
+            end if
+        end do
+    end function non_number
+
+    !> A field as a number: digits, sign, point (or decimal comma), exponent; an empty or
+    !! longer than FIELD_MAX field is none.
+    logical function number(s, decimal_comma, x)
+        character(len=*), intent(in) :: s
+        logical, intent(in) :: decimal_comma
+        real(dp), intent(out) :: x
+        character(len=len(s)) :: t
+        integer :: ios, i
+        x = 0.0_dp
+        number = .false.
+        t = adjustl(s)
+        if (len_trim(t) == 0 .or. len_trim(t) > FIELD_MAX) return
+        if (decimal_comma) then
+            do i = 1, len_trim(t)
+                if (t(i:i) == ',') t(i:i) = '.'
+            end do
+        end if
+        if (verify(trim(t), '0123456789+-.eEdD') /= 0) then
+            ! NaN and Inf are numbers to the reader: refused later as not finite
+            if (lower(trim(t)) /= 'nan' .and. lower(trim(t)) /= 'inf' .and. &
+                lower(trim(t)) /= '-inf' .and. lower(trim(t)) /= '+inf') return
+        end if
+        if (scan(trim(t), '0123456789') == 0 .and. lower(trim(t)) /= 'nan' .and. &
+            index(lower(t), 'inf') == 0) return
+        read (t, *, iostat=ios) x
+        number = ios == 0
+    end function number
+
+end module tables
