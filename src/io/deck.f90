@@ -44,12 +44,25 @@ module deck
         character(len=256) :: title = ''
         character(len=256) :: analyses = 'simulate'
         character(len=256) :: model = 'kane'          !! MODELS_ALLOWED: 'kane' or 'elastic'
-        ! &suspension (lengths in any one unit)
+        !> the physical inputs the deck gave itself (' g mass l ... '; see GIVEN_TRACKED): a
+        !! deck that measures must give them, the paper's decks keep the defaults
+        character(len=:), allocatable :: given
+        ! &suspension (lengths in any one unit; b and b_prime the full distances between the
+        ! two cables on the support and on the body)
         real(dp) :: b = 1.0_dp, b_prime = 1.0_dp, l = 2.0_dp, l_prime = 2.0_dp, g = 1.0_dp
+        !> cables >= 3: a platform of that many cables at radius on the support and
+        !! radius_prime on the body (analysis identify; its torsion is that of b = 2 radius,
+        !! b_prime = 2 radius_prime)
+        integer :: cables = 2
+        real(dp) :: radius = 0.0_dp, radius_prime = 0.0_dp
         ! &body
         real(dp) :: mass = 1.0_dp
         real(dp) :: inertia(3) = [0.125_dp, 0.1458333333333333_dp, 0.1458333333333333_dp]
+        !> the mass centre from C (eq. (21)): r and lambda, or as measured: its depth below the
+        !! line CD (cg_depth) and its offset along CD from the midpoint of CD, toward D
+        !! (cg_offset); r cos(lambda) = b_prime/2 + cg_offset, r sin(lambda) = cg_depth
         real(dp) :: r = 0.7071067811865476_dp, lambda = 0.7853981633974483_dp
+        real(dp) :: cg_depth = 0.0_dp, cg_offset = 0.0_dp
         !> default identity; btilde(i,:) is row i as printed in the paper
         real(dp) :: btilde(3,3) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, &
                                            0.0_dp, 0.0_dp, 1.0_dp], [3, 3])
@@ -104,16 +117,36 @@ module deck
         real(dp) :: u_b_prime = 0.0_dp, u_g = 0.0_dp, u_period = 0.0_dp, u_amplitude = 0.0_dp
         integer :: monte_carlo = 0                !! Monte Carlo samples (0: first order only)
         integer :: seed = 1                       !! seed of the Monte Carlo streams
+        ! &tensor (analysis tensor): the table of hangs and the uncertainties of its inputs
+        character(len=256) :: tensor_hangs = ''   !! the hangs table as given ('' for none)
+        character(len=:), allocatable :: tensor_hangs_path  !! relative to the deck's folder
+        !> standard uncertainties of mass, l, l_prime, b, b_prime, g, period (s), amplitude
+        !! (degrees), deck units
+        real(dp) :: tensor_u(8) = 0.0_dp
+        real(dp) :: tensor_u_direction = 0.0_dp   !! of how the body was set in a hang (deg)
+        integer :: tensor_monte_carlo = 0, tensor_seed = 1
+        real(dp) :: tensor_cg(3) = 0.0_dp         !! the mass centre in the body frame
+        logical :: tensor_cg_given = .false.
+        integer :: tensor_plan = 0                !! hangs to plan (0: none)
     end type deck_t
 
-    public :: read_deck, read_deck_text, analysis_requested, deck_echo, estimated
+    public :: read_deck, read_deck_text, analysis_requested, deck_echo, estimated, deck_gave
+
+    !> The physical inputs whose presence in the deck is recorded (deck_t%given).
+    character(len=*), parameter :: GIVEN_TRACKED = 'g mass l l_prime b b_prime r lambda '// &
+        'cg_depth cg_offset cables radius radius_prime inertia'
+    !> The value a tracked input has before the namelist read: still there after it, the
+    !! deck did not give the input.
+    real(dp), parameter :: NOT_GIVEN = -huge(1.0_dp)
+    !> Most cables of a platform (&suspension cables).
+    integer, parameter :: MAX_CABLES = 12
 
     !> Words allowed in &scene analyses.
     character(len=*), parameter :: ANALYSES_ALLOWED = &
-        'simulate floquet chart work_precision design identify'
+        'simulate floquet chart work_precision design identify tensor'
     !> Namelist groups a deck may contain.
     character(len=*), parameter :: GROUPS_ALLOWED = 'scene suspension body start '// &
-        'integration cables floquet chart output design damping measurement'
+        'integration cables floquet chart output design damping measurement tensor'
     !> Words allowed in &scene model.
     character(len=*), parameter :: MODELS_ALLOWED = 'kane elastic'
     !> Words allowed in &integration method: 'auto' (radau for model = 'elastic', lsoda for
@@ -124,9 +157,10 @@ module deck
     !> Variables of each group with their kind (r real, i integer, c character, l logical)
     !! and size; used only to explain a namelist read error.
     character(len=*), parameter :: SPEC_SCENE = 'title:c1 analyses:c1 model:c1'
-    character(len=*), parameter :: SPEC_SUSPENSION = 'b:r1 b_prime:r1 l:r1 l_prime:r1 g:r1'
+    character(len=*), parameter :: SPEC_SUSPENSION = 'b:r1 b_prime:r1 l:r1 l_prime:r1 g:r1 '// &
+        'cables:i1 radius:r1 radius_prime:r1'
     character(len=*), parameter :: SPEC_BODY = &
-        'mass:r1 inertia:r3 r:r1 lambda:r1 btilde:r9 sway_depth:r1'
+        'mass:r1 inertia:r3 r:r1 lambda:r1 cg_depth:r1 cg_offset:r1 btilde:r9 sway_depth:r1'
     character(len=*), parameter :: SPEC_START = 'mode:c1 amplitude:r1 tilt:r1 theta:r4 theta_dot:r4'
     character(len=*), parameter :: SPEC_INTEGRATION = &
         'tau_end:r1 dtau_out:r1 rtol:r1 atol:r1 error_estimate:l1 method:c1'
@@ -141,6 +175,9 @@ module deck
     character(len=*), parameter :: SPEC_MEASUREMENT = 'periods:r100 amplitudes:r100 '// &
         'record:c1 quantity:c1 estimate:c1 u_mass:r1 u_l:r1 u_l_prime:r1 u_b:r1 '// &
         'u_b_prime:r1 u_g:r1 u_period:r1 u_amplitude:r1 monte_carlo:i1 seed:i1'
+    character(len=*), parameter :: SPEC_TENSOR = 'hangs:c1 u_mass:r1 u_l:r1 u_l_prime:r1 '// &
+        'u_b:r1 u_b_prime:r1 u_g:r1 u_period:r1 u_amplitude:r1 u_direction:r1 '// &
+        'monte_carlo:i1 seed:i1 cg:r3 plan:i1'
     !> Most Monte Carlo samples of &measurement monte_carlo.
     integer, parameter :: MAX_MONTE_CARLO = 1000000
     !> Largest damping coefficient in the scaled units of the model (c_v over
@@ -194,14 +231,16 @@ module deck
             type(deck_t), intent(inout) :: d
             type(status_t), intent(inout) :: stat
         end subroutine check_scene
-        !> &suspension: lengths and g finite, > 0, in range.
+        !> &suspension: lengths and g finite, > 0, in range; a platform of 3 or more cables
+        !! as its equivalent pair (b = 2 radius, b_prime = 2 radius_prime).
         module subroutine check_suspension(d, stat)
-            type(deck_t), intent(in) :: d
+            type(deck_t), intent(inout) :: d
             type(status_t), intent(inout) :: stat
         end subroutine check_suspension
-        !> &body: mass, principal moments, mass centre, btilde.
+        !> &body: mass, principal moments, mass centre (cg_depth, cg_offset as r, lambda),
+        !! btilde.
         module subroutine check_body(d, stat)
-            type(deck_t), intent(in) :: d
+            type(deck_t), intent(inout) :: d
             type(status_t), intent(inout) :: stat
         end subroutine check_body
         !> &start: mode, amplitude, angles and rates.
@@ -244,11 +283,22 @@ module deck
             type(deck_t), intent(in) :: d
             type(status_t), intent(inout) :: stat
         end subroutine check_damping
+        !> &tensor: the uncertainties, Monte Carlo, the plan, a table of hangs when asked.
+        module subroutine check_tensor(d, stat)
+            type(deck_t), intent(in) :: d
+            type(status_t), intent(inout) :: stat
+        end subroutine check_tensor
         !> &measurement: periods, amplitudes, record, uncertainties, Monte Carlo.
         module subroutine check_measurement(d, stat)
             type(deck_t), intent(inout) :: d
             type(status_t), intent(inout) :: stat
         end subroutine check_measurement
+        !> A deck that measures (identify, tensor, design) gives every physical input itself;
+        !! a platform of 3 or more cables only with identify.
+        module subroutine check_measuring(d, stat)
+            type(deck_t), intent(in) :: d
+            type(status_t), intent(inout) :: stat
+        end subroutine check_measuring
         !> The deck's angles reduced modulo 2 pi.
         module subroutine reduce_angles(d)
             type(deck_t), intent(inout) :: d
@@ -432,6 +482,7 @@ contains
         call read_group('design', .false., SPEC_DESIGN)
         call read_group('damping', .false., SPEC_DAMPING)
         call read_group('measurement', .false., SPEC_MEASUREMENT)
+        call read_group('tensor', .false., SPEC_TENSOR)
         call traps_restore(halting)
         if (stat%code /= STATUS_OK) return
 
@@ -447,9 +498,14 @@ contains
         if (analysis_requested(d, 'design')) call check_design(d, stat)
         call check_damping(d, stat)
         call check_measurement(d, stat)
+        call check_tensor(d, stat)
+        call check_measuring(d, stat)
         if (stat%code /= STATUS_OK) return
         d%record_path = ''
         if (len_trim(d%record) > 0) d%record_path = record_in_folder(path, d%record)
+        d%tensor_hangs_path = ''
+        if (len_trim(d%tensor_hangs) > 0) d%tensor_hangs_path = record_in_folder(path, &
+                                                                                 d%tensor_hangs)
         call reduce_angles(d)
 
     contains
@@ -513,6 +569,8 @@ contains
                 call read_design(rec, d, ios, msg)
             case ('damping')
                 call read_damping(rec, d, ios, msg)
+            case ('tensor')
+                call read_tensor(rec, d, ios, msg)
             case default
                 call read_measurement(rec, d, ios, msg)
             end select
@@ -552,26 +610,61 @@ contains
         d%model = model
     end subroutine read_scene
 
-    !> &suspension b, b_prime, l, l_prime, g.
+    !> &suspension b, b_prime, l, l_prime, g, cables, radius, radius_prime.
     subroutine read_suspension(rec, d, ios, msg)
         character(len=*), intent(in) :: rec         !! the group as one record
         type(deck_t), intent(inout) :: d            !! defaults in, values read out
         integer, intent(out) :: ios                 !! iostat of the namelist read
         character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
-        real(dp) :: b, b_prime, l, l_prime, g
-        namelist /suspension/ b, b_prime, l, l_prime, g
-        b = d%b
-        b_prime = d%b_prime
-        l = d%l
-        l_prime = d%l_prime
-        g = d%g
+        real(dp) :: b, b_prime, l, l_prime, g, radius, radius_prime
+        integer :: cables
+        namelist /suspension/ b, b_prime, l, l_prime, g, cables, radius, radius_prime
+        b = NOT_GIVEN
+        b_prime = NOT_GIVEN
+        l = NOT_GIVEN
+        l_prime = NOT_GIVEN
+        g = NOT_GIVEN
+        radius = NOT_GIVEN
+        radius_prime = NOT_GIVEN
+        cables = -huge(1)
         read (rec, nml=suspension, iostat=ios, iomsg=msg)
-        d%b = b
-        d%b_prime = b_prime
-        d%l = l
-        d%l_prime = l_prime
-        d%g = g
+        call take('b', b, d%b)
+        call take('b_prime', b_prime, d%b_prime)
+        call take('l', l, d%l)
+        call take('l_prime', l_prime, d%l_prime)
+        call take('g', g, d%g)
+        call take('radius', radius, d%radius)
+        call take('radius_prime', radius_prime, d%radius_prime)
+        if (cables /= -huge(1)) then
+            d%cables = cables
+            call note_given(d, 'cables')
+        end if
+    contains
+        subroutine take(name, v, x)
+            character(len=*), intent(in) :: name
+            real(dp), intent(in) :: v
+            real(dp), intent(inout) :: x
+            if (v == NOT_GIVEN) return
+            x = v
+            call note_given(d, name)
+        end subroutine take
     end subroutine read_suspension
+
+    !> Record that the deck gave the tracked input `name`.
+    pure subroutine note_given(d, name)
+        type(deck_t), intent(inout) :: d
+        character(len=*), intent(in) :: name
+        if (.not. allocated(d%given)) d%given = ' '
+        if (index(d%given, ' '//name//' ') == 0) d%given = d%given//name//' '
+    end subroutine note_given
+
+    !> True when the deck gave the tracked input `name` itself (GIVEN_TRACKED).
+    pure logical function deck_gave(d, name)
+        type(deck_t), intent(in) :: d
+        character(len=*), intent(in) :: name
+        deck_gave = .false.
+        if (allocated(d%given)) deck_gave = index(d%given, ' '//name//' ') > 0
+    end function deck_gave
 
     !> &body mass, inertia, r, lambda, btilde, sway_depth.
     subroutine read_body(rec, d, ios, msg)
@@ -579,21 +672,35 @@ contains
         type(deck_t), intent(inout) :: d            !! defaults in, values read out
         integer, intent(out) :: ios                 !! iostat of the namelist read
         character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
-        real(dp) :: mass, inertia(3), r, lambda, btilde(3, 3), sway_depth
-        namelist /body/ mass, inertia, r, lambda, btilde, sway_depth
-        mass = d%mass
-        inertia = d%inertia
-        r = d%r
-        lambda = d%lambda
+        real(dp) :: mass, inertia(3), r, lambda, cg_depth, cg_offset, btilde(3, 3), sway_depth
+        namelist /body/ mass, inertia, r, lambda, cg_depth, cg_offset, btilde, sway_depth
+        mass = NOT_GIVEN
+        inertia = NOT_GIVEN
+        r = NOT_GIVEN
+        lambda = NOT_GIVEN
+        cg_depth = NOT_GIVEN
+        cg_offset = NOT_GIVEN
         btilde = d%btilde
         sway_depth = d%sway_depth
         read (rec, nml=body, iostat=ios, iomsg=msg)
-        d%mass = mass
-        d%inertia = inertia
-        d%r = r
-        d%lambda = lambda
+        call take('mass', mass, d%mass)
+        call take('r', r, d%r)
+        call take('lambda', lambda, d%lambda)
+        call take('cg_depth', cg_depth, d%cg_depth)
+        call take('cg_offset', cg_offset, d%cg_offset)
+        if (any(inertia /= NOT_GIVEN)) call note_given(d, 'inertia')
+        where (inertia /= NOT_GIVEN) d%inertia = inertia
         d%btilde = btilde
         d%sway_depth = sway_depth
+    contains
+        subroutine take(name, v, x)
+            character(len=*), intent(in) :: name
+            real(dp), intent(in) :: v
+            real(dp), intent(inout) :: x
+            if (v == NOT_GIVEN) return
+            x = v
+            call note_given(d, name)
+        end subroutine take
     end subroutine read_body
 
     !> &start mode, amplitude, tilt, theta, theta_dot.
@@ -771,6 +878,44 @@ contains
         d%c_q = c_q
     end subroutine read_damping
 
+    !> &tensor hangs, the standard uncertainties of the hangs' inputs, monte_carlo, seed, cg,
+    !! plan.
+    subroutine read_tensor(rec, d, ios, msg)
+        character(len=*), intent(in) :: rec         !! the group as one record
+        type(deck_t), intent(inout) :: d            !! defaults in, values read out
+        integer, intent(out) :: ios                 !! iostat of the namelist read
+        character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
+        character(len=256) :: hangs
+        real(dp) :: u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude
+        real(dp) :: u_direction, cg(3)
+        integer :: monte_carlo, seed, plan
+        namelist /tensor/ hangs, u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, &
+            u_amplitude, u_direction, monte_carlo, seed, cg, plan
+        hangs = d%tensor_hangs
+        u_mass = d%tensor_u(1)
+        u_l = d%tensor_u(2)
+        u_l_prime = d%tensor_u(3)
+        u_b = d%tensor_u(4)
+        u_b_prime = d%tensor_u(5)
+        u_g = d%tensor_u(6)
+        u_period = d%tensor_u(7)
+        u_amplitude = d%tensor_u(8)
+        u_direction = d%tensor_u_direction
+        monte_carlo = d%tensor_monte_carlo
+        seed = d%tensor_seed
+        plan = d%tensor_plan
+        cg = NOT_GIVEN
+        read (rec, nml=tensor, iostat=ios, iomsg=msg)
+        d%tensor_hangs = hangs
+        d%tensor_u = [u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude]
+        d%tensor_u_direction = u_direction
+        d%tensor_monte_carlo = monte_carlo
+        d%tensor_seed = seed
+        d%tensor_plan = plan
+        d%tensor_cg_given = any(cg /= NOT_GIVEN)
+        if (d%tensor_cg_given) d%tensor_cg = merge(cg, 0.0_dp, cg /= NOT_GIVEN)
+    end subroutine read_tensor
+
     !> &measurement; n_periods counts the leading periods given (check_measurement refuses
     !! gaps).
     subroutine read_measurement(rec, d, ios, msg)
@@ -874,11 +1019,15 @@ contains
         call put('# deck '//d%path)
         call put('# &scene title = '//quoted(d%title)//', analyses = '//quoted(d%analyses)// &
                  ', model = '//quoted(d%model)//' /')
-        call put('# &suspension b = '//rshort(d%b)//', b_prime = '//rshort(d%b_prime)// &
-                 ', l = '//rshort(d%l)//', l_prime = '//rshort(d%l_prime)//', g = '// &
-                 rshort(d%g)//' /')
+        line = '# &suspension b = '//rshort(d%b)//', b_prime = '//rshort(d%b_prime)// &
+            ', l = '//rshort(d%l)//', l_prime = '//rshort(d%l_prime)//', g = '//rshort(d%g)
+        if (d%cables /= 2) line = line//', cables = '//itoa(d%cables)//', radius = '// &
+            rshort(d%radius)//', radius_prime = '//rshort(d%radius_prime)
+        call put(line//' /')
         line = '# &body mass = '//rshort(d%mass)//', inertia = '//rlist_short(d%inertia)// &
             ', r = '//rshort(d%r)//', lambda = '//rshort(d%lambda)
+        if (deck_gave(d, 'cg_depth') .or. deck_gave(d, 'cg_offset')) line = line// &
+            ', cg_depth = '//rshort(d%cg_depth)//', cg_offset = '//rshort(d%cg_offset)
         do i = 1, 3
             line = line//', btilde('//achar(iachar('0') + i)//',:) = '//rlist_short(d%btilde(i, :))
         end do
@@ -925,6 +1074,18 @@ contains
                      rshort(d%u_b_prime)//', u_g = '//rshort(d%u_g)//', u_period = '// &
                      rshort(d%u_period)//', u_amplitude = '//rshort(d%u_amplitude)// &
                      ', monte_carlo = '//itoa(d%monte_carlo)//', seed = '//itoa(d%seed)//' /')
+        end if
+        if (analysis_requested(d, 'tensor')) then
+            line = '# &tensor hangs = '//quoted(d%tensor_hangs)//', u_mass = '// &
+                rshort(d%tensor_u(1))//', u_l = '//rshort(d%tensor_u(2))//', u_l_prime = '// &
+                rshort(d%tensor_u(3))//', u_b = '//rshort(d%tensor_u(4))//', u_b_prime = '// &
+                rshort(d%tensor_u(5))//', u_g = '//rshort(d%tensor_u(6))//', u_period = '// &
+                rshort(d%tensor_u(7))//', u_amplitude = '//rshort(d%tensor_u(8))// &
+                ', u_direction = '//rshort(d%tensor_u_direction)//', monte_carlo = '// &
+                itoa(d%tensor_monte_carlo)//', seed = '//itoa(d%tensor_seed)
+            if (d%tensor_cg_given) line = line//', cg = '//rlist_short(d%tensor_cg)
+            if (d%tensor_plan > 0) line = line//', plan = '//itoa(d%tensor_plan)
+            call put(line//' /')
         end if
 
     contains

@@ -41,6 +41,45 @@ contains
     !! over b' within RATIO_MIN .. RATIO_MAX.
     module procedure check_suspension
         if (stat%code /= STATUS_OK) return
+        if (d%cables < 2 .or. d%cables > MAX_CABLES) then
+            call bad(stat, 'suspension', 'cables', itoa(d%cables), 'number of cables out of '// &
+                     'range', '2 (a bifilar) .. '//itoa(MAX_CABLES)//' (a platform on that many '// &
+                     'cables at radius and radius_prime)')
+            return
+        end if
+        if (d%cables == 2) then
+            if (deck_gave(d, 'radius') .or. deck_gave(d, 'radius_prime')) then
+                call bad(stat, 'suspension', trim(merge('radius      ', 'radius_prime', &
+                         deck_gave(d, 'radius'))), rshort(merge(d%radius, d%radius_prime, &
+                         deck_gave(d, 'radius'))), 'a platform''s radius with cables = 2', &
+                         'b and b_prime (the full distances between the two cables) for a '// &
+                         'bifilar; radius and radius_prime with cables >= 3')
+                return
+            end if
+        else
+            ! a platform: its cables at one radius; the equivalent pair b = 2 R, b' = 2 R'
+            if (deck_gave(d, 'b') .or. deck_gave(d, 'b_prime')) then
+                call bad(stat, 'suspension', trim(merge('b      ', 'b_prime', deck_gave(d, &
+                         'b'))), rshort(merge(d%b, d%b_prime, deck_gave(d, 'b'))), &
+                         'a bifilar''s spacing with cables = '//itoa(d%cables), 'radius and '// &
+                         'radius_prime (the radii of the attachment circles on the support and '// &
+                         'the body) with cables >= 3')
+                return
+            end if
+            call positive(stat, 'suspension', 'radius', d%radius, 'radius > 0 with cables >= 3')
+            call positive(stat, 'suspension', 'radius_prime', d%radius_prime, &
+                          'radius_prime > 0 with cables >= 3')
+            if (stat%code /= STATUS_OK) return
+            if (deck_gave(d, 'l_prime') .and. d%l_prime /= d%l) then
+                call bad(stat, 'suspension', 'l_prime', rshort(d%l_prime), 'differs from l = '// &
+                         rshort(d%l)//' on a platform of '//itoa(d%cables)//' cables', &
+                         'every cable of length l (leave l_prime out) with cables >= 3')
+                return
+            end if
+            d%b = 2.0_dp*d%radius
+            d%b_prime = 2.0_dp*d%radius_prime
+            d%l_prime = d%l
+        end if
         call positive(stat, 'suspension', 'b', d%b, 'lengths > 0')
         call positive(stat, 'suspension', 'b_prime', d%b_prime, 'lengths > 0')
         call positive(stat, 'suspension', 'l', d%l, 'lengths > 0')
@@ -105,6 +144,36 @@ contains
                 return
             end if
         end do
+        ! the mass centre as measured: its depth below CD and offset along it
+        if ((deck_gave(d, 'cg_depth') .or. deck_gave(d, 'cg_offset')) .and. &
+            (deck_gave(d, 'r') .or. deck_gave(d, 'lambda'))) then
+            call bad(stat, 'body', trim(merge('cg_depth ', 'cg_offset', deck_gave(d, &
+                     'cg_depth'))), rshort(merge(d%cg_depth, d%cg_offset, deck_gave(d, &
+                     'cg_depth'))), 'given with '//trim(merge('r     ', 'lambda', deck_gave(d, &
+                     'r'))), 'the mass centre either as cg_depth, cg_offset (as measured) or '// &
+                     'as r, lambda (the paper''s), not both')
+            return
+        end if
+        if (d%cables > 2 .and. (deck_gave(d, 'r') .or. deck_gave(d, 'lambda') .or. &
+                                d%cg_offset /= 0.0_dp)) then
+            call bad(stat, 'body', trim(merge('cg_offset', 'r        ', d%cg_offset /= 0.0_dp)), &
+                     rshort(merge(d%cg_offset, d%r, d%cg_offset /= 0.0_dp)), 'a mass centre '// &
+                     'off the axis of a platform of '//itoa(d%cables)//' cables', &
+                     'the mass centre on the platform''s axis: cg_depth (any), cg_offset = 0')
+            return
+        end if
+        if (deck_gave(d, 'cg_depth') .or. deck_gave(d, 'cg_offset') .or. d%cables > 2) then
+            call finite(stat, 'body', 'cg_depth', d%cg_depth)
+            call finite(stat, 'body', 'cg_offset', d%cg_offset)
+            if (stat%code /= STATUS_OK) return
+            if (d%cg_depth /= 0.0_dp) call over_b_prime(stat, 'body', 'cg_depth', d%cg_depth, &
+                                                         d%b_prime, 0.0_dp)
+            if (d%cg_offset /= 0.0_dp) call over_b_prime(stat, 'body', 'cg_offset', &
+                                                          d%cg_offset, d%b_prime, 0.0_dp)
+            if (stat%code /= STATUS_OK) return
+            d%r = sqrt((0.5_dp*d%b_prime + d%cg_offset)**2 + d%cg_depth**2)
+            d%lambda = atan2(d%cg_depth, 0.5_dp*d%b_prime + d%cg_offset)
+        end if
         call finite(stat, 'body', 'r', d%r)
         call finite(stat, 'body', 'lambda', d%lambda)
         if (stat%code /= STATUS_OK) return
@@ -876,5 +945,90 @@ contains
         s = '['//rlist_short(bt(1, :))//'; '//rlist_short(bt(2, :))//'; '// &
             rlist_short(bt(3, :))//']'
     end function btilde_short
+
+
+    module procedure check_measuring
+        character(len=:), allocatable :: what, missing
+        if (stat%code /= STATUS_OK) return
+        what = ''
+        if (analysis_requested(d, 'identify')) what = 'identify'
+        if (analysis_requested(d, 'tensor')) what = 'tensor'
+        if (analysis_requested(d, 'design')) what = 'design'
+        if (d%cables > 2 .and. (what /= 'identify' .or. count_words(d%analyses) > 1)) then
+            call bad(stat, 'suspension', 'cables', itoa(d%cables), 'a platform of '// &
+                     itoa(d%cables)//' cables with analyses = '''//trim(d%analyses)//'''', &
+                     'cables >= 3 with analyses = ''identify'' alone (its torsion is exact); '// &
+                     'every other analysis models two cables')
+            return
+        end if
+        if (len(what) == 0) return
+        missing = ''
+        call need('&suspension g', deck_gave(d, 'g'))
+        call need('&body mass', deck_gave(d, 'mass'))
+        call need('&suspension l', deck_gave(d, 'l'))
+        if (d%cables == 2) then
+            call need('&suspension l_prime', deck_gave(d, 'l_prime'))
+            call need('&suspension b', deck_gave(d, 'b'))
+            call need('&suspension b_prime', deck_gave(d, 'b_prime'))
+            call need('&body the mass centre (cg_depth and cg_offset, or r and lambda)', &
+                      deck_gave(d, 'cg_depth') .or. (deck_gave(d, 'r') .and. &
+                      deck_gave(d, 'lambda')))
+        else
+            call need('&suspension radius', deck_gave(d, 'radius'))
+            call need('&suspension radius_prime', deck_gave(d, 'radius_prime'))
+        end if
+        if (len(missing) > 0) call set_error(stat, ERR_DECK, 'not given: '//missing// &
+            '; a deck with analyses = '''//what//''' gives every physical input itself (the '// &
+            'defaults are the paper''s dimensionless scene); allowed: g, mass, l, l_prime, '// &
+            'b and b_prime (the full distances between the two cables on the support and on '// &
+            'the body) in one system of units, and the mass centre')
+    contains
+        subroutine need(name, given)
+            character(len=*), intent(in) :: name
+            logical, intent(in) :: given
+            if (given) return
+            if (len(missing) > 0) missing = missing//', '
+            missing = missing//name
+        end subroutine need
+    end procedure check_measuring
+
+
+    module procedure check_tensor
+        integer :: i
+        character(len=*), parameter :: UNAMES(8) = [character(len=11) :: 'u_mass', 'u_l', &
+            'u_l_prime', 'u_b', 'u_b_prime', 'u_g', 'u_period', 'u_amplitude']
+        if (stat%code /= STATUS_OK) return
+        do i = 1, size(d%tensor_u)
+            call finite(stat, 'tensor', trim(UNAMES(i)), d%tensor_u(i))
+            if (stat%code /= STATUS_OK) return
+            if (d%tensor_u(i) < 0.0_dp .or. d%tensor_u(i) > DIM_MAX) call bad(stat, 'tensor', &
+                trim(UNAMES(i)), rshort(d%tensor_u(i)), 'a standard uncertainty out of range', &
+                '0 <= '//trim(UNAMES(i))//' <= '//rshort(DIM_MAX)//' (deck units; 0: not known)')
+        end do
+        call finite(stat, 'tensor', 'u_direction', d%tensor_u_direction)
+        if (stat%code /= STATUS_OK) return
+        if (d%tensor_u_direction < 0.0_dp .or. d%tensor_u_direction > 30.0_dp) &
+            call bad(stat, 'tensor', 'u_direction', rshort(d%tensor_u_direction), &
+                     'a standard uncertainty of a direction out of range', '0 <= u_direction '// &
+                     '<= 30 (degrees)')
+        do i = 1, 3
+            call finite(stat, 'tensor', 'cg', d%tensor_cg(i))
+        end do
+        if (stat%code /= STATUS_OK) return
+        if (d%tensor_monte_carlo == 1 .or. d%tensor_monte_carlo < 0 .or. &
+            d%tensor_monte_carlo > MAX_MONTE_CARLO) call bad(stat, 'tensor', 'monte_carlo', &
+            itoa(d%tensor_monte_carlo), 'number of Monte Carlo samples out of range', &
+            '0 (first order only) or 2 <= monte_carlo <= '//itoa(MAX_MONTE_CARLO))
+        if (stat%code /= STATUS_OK) return
+        if (d%tensor_plan /= 0 .and. (d%tensor_plan < 6 .or. d%tensor_plan > 26)) &
+            call bad(stat, 'tensor', 'plan', itoa(d%tensor_plan), 'number of hangs to plan '// &
+                     'out of range', '0 (no plan) or 6 <= plan <= 26 (the face, edge and '// &
+                     'corner directions of the body frame)')
+        if (stat%code /= STATUS_OK) return
+        if (analysis_requested(d, 'tensor') .and. len_trim(d%tensor_hangs) == 0 .and. &
+            d%tensor_plan == 0) call bad(stat, 'tensor', 'hangs', '''''', 'no table of hangs', &
+            'hangs = ''FILE'' (a table, relative to the deck''s folder), or plan = N to '// &
+            'plan N hangs')
+    end procedure check_tensor
 
 end submodule deck_checks
