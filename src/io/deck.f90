@@ -32,7 +32,11 @@ module deck
     !> The value of an element of periods, amplitudes the deck did not give.
     real(dp), parameter, public :: PERIOD_UNSET = -huge(1.0_dp)
     !> Words allowed in &measurement estimate: the parameters a record fit can estimate.
-    character(len=*), parameter, public :: ESTIMATES_ALLOWED = 'I1 c_v c_q amplitude t0'
+    character(len=*), parameter, public :: ESTIMATES_ALLOWED = 'I1 c_v c_q amplitude t0 bias'
+    !> Words allowed in &measurement record_units (each implies the quantity).
+    character(len=*), parameter, public :: RECORD_UNITS_ALLOWED = 'rad deg rad/s deg/s'
+    !> Words allowed in &measurement loss.
+    character(len=*), parameter, public :: LOSSES_ALLOWED = 'squares huber'
     !> Words allowed in &measurement quantity: column 2 of a record.
     character(len=*), parameter, public :: QUANTITIES_ALLOWED = 'angle rate'
 
@@ -117,6 +121,23 @@ module deck
         real(dp) :: u_b_prime = 0.0_dp, u_g = 0.0_dp, u_period = 0.0_dp, u_amplitude = 0.0_dp
         integer :: monte_carlo = 0                !! Monte Carlo samples (0: first order only)
         integer :: seed = 1                       !! seed of the Monte Carlo streams
+        !> each period is the total time of cycles(i) cycles (PERIOD_UNSET: 1); one value
+        !! serves every period
+        real(dp) :: cycles(MAX_PERIODS) = PERIOD_UNSET
+        character(len=256) :: trials = ''         !! a table of releases ('' for none)
+        character(len=:), allocatable :: trials_path  !! relative to the deck's folder
+        !> the record's columns: time, value and (0: none) each sample's u
+        integer :: record_columns(3) = [1, 2, 0]
+        character(len=256) :: record_units = ''   !! RECORD_UNITS_ALLOWED ('' : by quantity)
+        character(len=256) :: loss = 'squares'    !! LOSSES_ALLOWED: the record fit's loss
+        !> standard uncertainties of I2 and I3, of the mass centre (as measured: cg_depth,
+        !! cg_offset; or r (length) and lambda (rad))
+        real(dp) :: u_inertia(2) = 0.0_dp
+        real(dp) :: u_cg_depth = 0.0_dp, u_cg_offset = 0.0_dp, u_r = 0.0_dp, u_lambda = 0.0_dp
+        !> a fixture measured alone and subtracted (its I1 about the same axis, u, its mass),
+        !! and a known added inertia (e.g. entrained air) subtracted
+        real(dp) :: tare_i1 = 0.0_dp, u_tare_i1 = 0.0_dp, tare_mass = 0.0_dp
+        real(dp) :: added_inertia = 0.0_dp, u_added_inertia = 0.0_dp
         ! &tensor (analysis tensor): the table of hangs and the uncertainties of its inputs
         character(len=256) :: tensor_hangs = ''   !! the hangs table as given ('' for none)
         character(len=:), allocatable :: tensor_hangs_path  !! relative to the deck's folder
@@ -174,7 +195,10 @@ module deck
     character(len=*), parameter :: SPEC_DAMPING = 'c_v:r1 c_q:r1'
     character(len=*), parameter :: SPEC_MEASUREMENT = 'periods:r100 amplitudes:r100 '// &
         'record:c1 quantity:c1 estimate:c1 u_mass:r1 u_l:r1 u_l_prime:r1 u_b:r1 '// &
-        'u_b_prime:r1 u_g:r1 u_period:r1 u_amplitude:r1 monte_carlo:i1 seed:i1'
+        'u_b_prime:r1 u_g:r1 u_period:r1 u_amplitude:r1 monte_carlo:i1 seed:i1 cycles:r100 '// &
+        'trials:c1 record_columns:i3 record_units:c1 loss:c1 u_inertia:r2 u_cg_depth:r1 '// &
+        'u_cg_offset:r1 u_r:r1 u_lambda:r1 tare_i1:r1 u_tare_i1:r1 tare_mass:r1 '// &
+        'added_inertia:r1 u_added_inertia:r1'
     character(len=*), parameter :: SPEC_TENSOR = 'hangs:c1 u_mass:r1 u_l:r1 u_l_prime:r1 '// &
         'u_b:r1 u_b_prime:r1 u_g:r1 u_period:r1 u_amplitude:r1 u_direction:r1 '// &
         'monte_carlo:i1 seed:i1 cg:r3 plan:i1'
@@ -503,6 +527,8 @@ contains
         if (stat%code /= STATUS_OK) return
         d%record_path = ''
         if (len_trim(d%record) > 0) d%record_path = record_in_folder(path, d%record)
+        d%trials_path = ''
+        if (len_trim(d%trials) > 0) d%trials_path = record_in_folder(path, d%trials)
         d%tensor_hangs_path = ''
         if (len_trim(d%tensor_hangs) > 0) d%tensor_hangs_path = record_in_folder(path, &
                                                                                  d%tensor_hangs)
@@ -923,16 +949,21 @@ contains
         type(deck_t), intent(inout) :: d            !! in defaults, out as read
         integer, intent(out) :: ios                 !! iostat of the namelist read
         character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
-        real(dp) :: periods(MAX_PERIODS), amplitudes(MAX_PERIODS)
-        character(len=256) :: record, quantity, estimate     ! values: at most 256 characters
+        real(dp) :: periods(MAX_PERIODS), amplitudes(MAX_PERIODS), cycles(MAX_PERIODS)
+        character(len=256) :: record, quantity, estimate, trials, record_units, loss
         real(dp) :: u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude
-        integer :: monte_carlo, seed
-        namelist /measurement/ periods, amplitudes, record, quantity, estimate, u_mass, u_l, &
-            u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude, monte_carlo, seed
+        real(dp) :: u_inertia(2), u_cg_depth, u_cg_offset, u_r, u_lambda
+        real(dp) :: tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia
+        integer :: monte_carlo, seed, record_columns(3)
+        namelist /measurement/ periods, amplitudes, cycles, record, quantity, estimate, u_mass, &
+            u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude, monte_carlo, seed, &
+            trials, record_columns, record_units, loss, u_inertia, u_cg_depth, u_cg_offset, &
+            u_r, u_lambda, tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia
         periods = d%periods
         amplitudes = d%amplitudes
+        cycles = PERIOD_UNSET
         record = d%record
-        quantity = d%quantity
+        quantity = ''
         estimate = d%estimate
         u_mass = d%u_mass
         u_l = d%u_l
@@ -944,11 +975,29 @@ contains
         u_amplitude = d%u_amplitude
         monte_carlo = d%monte_carlo
         seed = d%seed
+        trials = d%trials
+        record_columns = d%record_columns
+        record_units = d%record_units
+        loss = d%loss
+        u_inertia = PERIOD_UNSET
+        u_cg_depth = d%u_cg_depth
+        u_cg_offset = d%u_cg_offset
+        u_r = d%u_r
+        u_lambda = d%u_lambda
+        tare_i1 = d%tare_i1
+        u_tare_i1 = d%u_tare_i1
+        tare_mass = d%tare_mass
+        added_inertia = d%added_inertia
+        u_added_inertia = d%u_added_inertia
         read (rec, nml=measurement, iostat=ios, iomsg=msg)
         d%periods = periods
         d%amplitudes = amplitudes
+        d%cycles = cycles
         d%record = record
-        d%quantity = quantity
+        if (len_trim(quantity) > 0) then
+            d%quantity = quantity
+            call note_given(d, 'quantity')
+        end if
         d%estimate = estimate
         d%u_mass = u_mass
         d%u_l = u_l
@@ -960,6 +1009,23 @@ contains
         d%u_amplitude = u_amplitude
         d%monte_carlo = monte_carlo
         d%seed = seed
+        d%trials = trials
+        d%record_columns = record_columns
+        d%record_units = record_units
+        d%loss = loss
+        ! one value of u_inertia serves I2 and I3
+        d%u_inertia = 0.0_dp
+        if (u_inertia(1) /= PERIOD_UNSET) d%u_inertia = u_inertia(1)
+        if (u_inertia(2) /= PERIOD_UNSET) d%u_inertia(2) = u_inertia(2)
+        d%u_cg_depth = u_cg_depth
+        d%u_cg_offset = u_cg_offset
+        d%u_r = u_r
+        d%u_lambda = u_lambda
+        d%tare_i1 = tare_i1
+        d%u_tare_i1 = u_tare_i1
+        d%tare_mass = tare_mass
+        d%added_inertia = added_inertia
+        d%u_added_inertia = u_added_inertia
         d%n_periods = 0
         do while (d%n_periods < MAX_PERIODS)
             if (d%periods(d%n_periods + 1) == PERIOD_UNSET) exit
@@ -1068,12 +1134,35 @@ contains
                 rlist_short(d%amplitudes(1:d%n_periods))//','
             if (len_trim(d%record) > 0) line = line//' record = '//quoted(d%record)// &
                 ', quantity = '//quoted(d%quantity)//','
-            call put(line//' estimate = '//quoted(d%estimate)//', u_mass = '// &
-                     rshort(d%u_mass)//', u_l = '//rshort(d%u_l)//', u_l_prime = '// &
-                     rshort(d%u_l_prime)//', u_b = '//rshort(d%u_b)//', u_b_prime = '// &
-                     rshort(d%u_b_prime)//', u_g = '//rshort(d%u_g)//', u_period = '// &
-                     rshort(d%u_period)//', u_amplitude = '//rshort(d%u_amplitude)// &
-                     ', monte_carlo = '//itoa(d%monte_carlo)//', seed = '//itoa(d%seed)//' /')
+            if (d%n_periods > 0) then
+                if (any(d%cycles(1:d%n_periods) /= 1.0_dp)) line = line//' cycles = '// &
+                    rlist_short(d%cycles(1:d%n_periods))//','
+            end if
+            if (len_trim(d%trials) > 0) line = line//' trials = '//quoted(d%trials)//','
+            if (any(d%record_columns /= [1, 2, 0])) line = line//' record_columns = '// &
+                itoa(d%record_columns(1))//', '//itoa(d%record_columns(2))//', '// &
+                itoa(d%record_columns(3))//','
+            if (len_trim(d%record_units) > 0) line = line//' record_units = '// &
+                quoted(d%record_units)//','
+            if (trim(d%loss) /= 'squares') line = line//' loss = '//quoted(d%loss)//','
+            line = line//' estimate = '//quoted(d%estimate)//', u_mass = '// &
+                rshort(d%u_mass)//', u_l = '//rshort(d%u_l)//', u_l_prime = '// &
+                rshort(d%u_l_prime)//', u_b = '//rshort(d%u_b)//', u_b_prime = '// &
+                rshort(d%u_b_prime)//', u_g = '//rshort(d%u_g)//', u_period = '// &
+                rshort(d%u_period)//', u_amplitude = '//rshort(d%u_amplitude)
+            if (any(d%u_inertia > 0.0_dp)) line = line//', u_inertia = '// &
+                rlist_short(d%u_inertia)
+            if (d%u_cg_depth > 0.0_dp .or. d%u_cg_offset > 0.0_dp) line = line// &
+                ', u_cg_depth = '//rshort(d%u_cg_depth)//', u_cg_offset = '//rshort(d%u_cg_offset)
+            if (d%u_r > 0.0_dp .or. d%u_lambda > 0.0_dp) line = line//', u_r = '// &
+                rshort(d%u_r)//', u_lambda = '//rshort(d%u_lambda)
+            if (d%tare_i1 > 0.0_dp .or. d%tare_mass > 0.0_dp) line = line//', tare_i1 = '// &
+                rshort(d%tare_i1)//', u_tare_i1 = '//rshort(d%u_tare_i1)//', tare_mass = '// &
+                rshort(d%tare_mass)
+            if (d%added_inertia > 0.0_dp) line = line//', added_inertia = '// &
+                rshort(d%added_inertia)//', u_added_inertia = '//rshort(d%u_added_inertia)
+            call put(line//', monte_carlo = '//itoa(d%monte_carlo)//', seed = '// &
+                     itoa(d%seed)//' /')
         end if
         if (analysis_requested(d, 'tensor')) then
             line = '# &tensor hangs = '//quoted(d%tensor_hangs)//', u_mass = '// &

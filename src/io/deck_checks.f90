@@ -372,8 +372,9 @@ contains
     !! and at most DIM_MAX; 0 or 2 .. MAX_MONTE_CARLO Monte Carlo samples.  (quantity and
     !! estimate are checked by read_deck; what identify needs of them, by identify_ready.)
     module procedure check_measurement
-        integer :: i, na
+        integer :: i, na, nc
         character(len=16) :: nm
+        logical :: unit_rate
         if (stat%code /= STATUS_OK) return
         call check_word(stat, 'measurement', 'quantity', d%quantity, QUANTITIES_ALLOWED)
         if (stat%code /= STATUS_OK) return
@@ -431,6 +432,111 @@ contains
         call uncertainty('u_period', d%u_period)
         call uncertainty('u_amplitude', d%u_amplitude)
         if (stat%code /= STATUS_OK) return
+        ! cycles: none (1 each), one value for every period, or one per period
+        nc = count(d%cycles /= PERIOD_UNSET)
+        if (nc > 0) then
+            if (any(d%cycles(nc + 1:) /= PERIOD_UNSET)) then
+                call bad(stat, 'measurement', 'cycles', 'with a gap', 'a value given after '// &
+                         'one left out', 'cycles = N (every period the time of N cycles) or '// &
+                         'one value per period, without gaps')
+                return
+            end if
+            if (nc /= 1 .and. nc /= d%n_periods) then
+                call bad(stat, 'measurement', 'cycles', itoa(nc)//' values', 'there are '// &
+                         itoa(d%n_periods)//' periods', 'cycles = N (every period the time of '// &
+                         'N cycles) or one value per period')
+                return
+            end if
+            do i = 1, nc
+                call finite(stat, 'measurement', 'cycles('//itoa(i)//')', d%cycles(i))
+                if (stat%code /= STATUS_OK) return
+                if (d%cycles(i) < 0.5_dp .or. d%cycles(i) > 1.0e6_dp) then
+                    call bad(stat, 'measurement', 'cycles('//itoa(i)//')', rshort(d%cycles(i)), &
+                             'out of range', '0.5 <= cycles <= 1e6 (the number of cycles the '// &
+                             'period''s time spans)')
+                    return
+                end if
+            end do
+            if (nc == 1) d%cycles(2:max(1, d%n_periods)) = d%cycles(1)
+        end if
+        where (d%cycles == PERIOD_UNSET) d%cycles = 1.0_dp
+        ! the record's columns and units
+        if (any(d%record_columns(1:2) < 1) .or. any(d%record_columns > 100) .or. &
+            d%record_columns(3) < 0 .or. d%record_columns(1) == d%record_columns(2) .or. &
+            (d%record_columns(3) > 0 .and. (d%record_columns(3) == d%record_columns(1) .or. &
+             d%record_columns(3) == d%record_columns(2)))) then
+            call bad(stat, 'measurement', 'record_columns', itoa(d%record_columns(1))//', '// &
+                     itoa(d%record_columns(2))//', '//itoa(d%record_columns(3)), 'not three '// &
+                     'distinct columns', 'record_columns = T, V or T, V, U: the 1-based '// &
+                     'columns of time (s), value and each sample''s standard uncertainty, '// &
+                     'distinct, at most 100')
+            return
+        end if
+        if (len_trim(d%record_units) > 0) then
+            call check_word(stat, 'measurement', 'record_units', d%record_units, &
+                            RECORD_UNITS_ALLOWED)
+            if (stat%code /= STATUS_OK) return
+            d%record_units = lower(adjustl(d%record_units))
+            unit_rate = index(d%record_units, '/s') > 0
+            if (deck_gave(d, 'quantity') .and. (trim(d%quantity) == 'rate') .neqv. unit_rate) then
+                call bad(stat, 'measurement', 'record_units', quoted(d%record_units), &
+                         'a '//trim(merge('rate ', 'angle', unit_rate))//' with quantity = '// &
+                         quoted(d%quantity), 'rad or deg with quantity = ''angle'', rad/s or '// &
+                         'deg/s with quantity = ''rate'' (or leave quantity out: the units '// &
+                         'imply it)')
+                return
+            end if
+            d%quantity = merge('rate ', 'angle', unit_rate)
+        end if
+        call check_word(stat, 'measurement', 'loss', d%loss, LOSSES_ALLOWED)
+        if (stat%code /= STATUS_OK) return
+        d%loss = lower(adjustl(d%loss))
+        if (d%n_periods > 0 .and. len_trim(d%trials) > 0) then
+            call bad(stat, 'measurement', 'trials', quoted(d%trials), 'given with periods', &
+                     'periods (one release) or trials = ''FILE'' (a table of releases), not '// &
+                     'both')
+            return
+        end if
+        if (len_trim(d%record) > 0 .and. len_trim(d%trials) > 0) then
+            call bad(stat, 'measurement', 'trials', quoted(d%trials), 'given with record', &
+                     'record (one release) or trials = ''FILE'' (a table of releases, with a '// &
+                     'column record), not both')
+            return
+        end if
+        call uncertainty('u_inertia', d%u_inertia(1))
+        call uncertainty('u_inertia', d%u_inertia(2))
+        call uncertainty('u_cg_depth', d%u_cg_depth)
+        call uncertainty('u_cg_offset', d%u_cg_offset)
+        call uncertainty('u_r', d%u_r)
+        call uncertainty('u_lambda', d%u_lambda)
+        call uncertainty('u_tare_i1', d%u_tare_i1)
+        call uncertainty('u_added_inertia', d%u_added_inertia)
+        call uncertainty('tare_i1', d%tare_i1)
+        call uncertainty('added_inertia', d%added_inertia)
+        call uncertainty('tare_mass', d%tare_mass)
+        if (stat%code /= STATUS_OK) return
+        if ((d%u_cg_depth > 0.0_dp .or. d%u_cg_offset > 0.0_dp) .and. .not. &
+            (deck_gave(d, 'cg_depth') .or. deck_gave(d, 'cg_offset') .or. d%cables > 2)) then
+            call bad(stat, 'measurement', trim(merge('u_cg_depth ', 'u_cg_offset', &
+                     d%u_cg_depth > 0.0_dp)), rshort(max(d%u_cg_depth, d%u_cg_offset)), &
+                     'the mass centre is given as r, lambda', 'u_r, u_lambda with r, lambda; '// &
+                     'u_cg_depth, u_cg_offset with cg_depth, cg_offset')
+            return
+        end if
+        if ((d%u_r > 0.0_dp .or. d%u_lambda > 0.0_dp) .and. (deck_gave(d, 'cg_depth') .or. &
+            deck_gave(d, 'cg_offset') .or. d%cables > 2)) then
+            call bad(stat, 'measurement', trim(merge('u_r     ', 'u_lambda', d%u_r > 0.0_dp)), &
+                     rshort(max(d%u_r, d%u_lambda)), 'the mass centre is given as cg_depth, '// &
+                     'cg_offset', 'u_cg_depth, u_cg_offset with cg_depth, cg_offset; u_r, '// &
+                     'u_lambda with r, lambda')
+            return
+        end if
+        if (d%tare_mass >= d%mass) then
+            call bad(stat, 'measurement', 'tare_mass', rshort(d%tare_mass), 'not below the '// &
+                     'mass of the whole rig (&body mass = '//rshort(d%mass)//')', '0 <= '// &
+                     'tare_mass < mass (the fixture''s mass; &body mass is the total hung)')
+            return
+        end if
         if (d%monte_carlo == 1 .or. d%monte_carlo < 0 .or. d%monte_carlo > MAX_MONTE_CARLO) &
             call bad(stat, 'measurement', 'monte_carlo', itoa(d%monte_carlo), &
                      'number of Monte Carlo samples out of range', '0 (first order only) '// &
