@@ -836,10 +836,10 @@ contains
         call one('1e400', "&measurement record = 'bad_1e400.dat' /", 2, &
                  'line 26: a value is not a finite number')
         call one('huge', "&measurement record = 'bad_huge.dat' /", 2, &
-                 'line 26: value 1.500E+221 is too large; allowed: |value| <= 1.000E+03 rad')
+                 'line 26: value 1.500E+221 rad is too large; allowed: |value| <= 1.000E+03 rad')
         call one('tiny_u', "&measurement record = 'bad_tiny_u.dat' /", 2, &
-                 'line 1: standard uncertainty 4.941E-324 is out of range; allowed: '// &
-                 'column 3 from 1.000E-12 to 1.000E+03 rad')
+                 'line 1: standard uncertainty 4.941E-324 rad is out of range; allowed: '// &
+                 'from 1.000E-12 to 1.000E+03 rad')
         ! a file without line ends: read whole before (a hang, missed by the fuzz test)
         call one('dev_zero', "&measurement record = '/dev/zero' /", 2, &
                  'line 1 is longer than 4096 characters')

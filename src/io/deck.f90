@@ -126,8 +126,9 @@ module deck
         real(dp) :: cycles(MAX_PERIODS) = PERIOD_UNSET
         character(len=256) :: trials = ''         !! a table of releases ('' for none)
         character(len=:), allocatable :: trials_path  !! relative to the deck's folder
-        !> the record's columns: time, value and (0: none) each sample's u
-        integer :: record_columns(3) = [1, 2, 0]
+        !> the record's columns: time, value and (0: none) each sample's u; -1 in the third:
+        !! not given, then column 3 when the record has exactly three columns (else none)
+        integer :: record_columns(3) = [1, 2, -1]
         character(len=256) :: record_units = ''   !! RECORD_UNITS_ALLOWED ('' : by quantity)
         character(len=256) :: loss = 'squares'    !! LOSSES_ALLOWED: the record fit's loss
         !> standard uncertainties of I2 and I3, of the mass centre (as measured: cg_depth,
@@ -976,7 +977,7 @@ contains
         monte_carlo = d%monte_carlo
         seed = d%seed
         trials = d%trials
-        record_columns = d%record_columns
+        record_columns = -1
         record_units = d%record_units
         loss = d%loss
         u_inertia = PERIOD_UNSET
@@ -1010,7 +1011,10 @@ contains
         d%monte_carlo = monte_carlo
         d%seed = seed
         d%trials = trials
-        d%record_columns = record_columns
+        if (any(record_columns(1:2) /= -1)) then
+            d%record_columns = max(0, record_columns)
+            call note_given(d, 'record_columns')
+        end if
         d%record_units = record_units
         d%loss = loss
         ! one value of u_inertia serves I2 and I3
@@ -1139,7 +1143,7 @@ contains
                     rlist_short(d%cycles(1:d%n_periods))//','
             end if
             if (len_trim(d%trials) > 0) line = line//' trials = '//quoted(d%trials)//','
-            if (any(d%record_columns /= [1, 2, 0])) line = line//' record_columns = '// &
+            if (deck_gave(d, 'record_columns')) line = line//' record_columns = '// &
                 itoa(d%record_columns(1))//', '//itoa(d%record_columns(2))//', '// &
                 itoa(d%record_columns(3))//','
             if (len_trim(d%record_units) > 0) line = line//' record_units = '// &

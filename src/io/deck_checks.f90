@@ -461,10 +461,10 @@ contains
         end if
         where (d%cycles == PERIOD_UNSET) d%cycles = 1.0_dp
         ! the record's columns and units
-        if (any(d%record_columns(1:2) < 1) .or. any(d%record_columns > 100) .or. &
-            d%record_columns(3) < 0 .or. d%record_columns(1) == d%record_columns(2) .or. &
+        if (deck_gave(d, 'record_columns') .and. (any(d%record_columns(1:2) < 1) .or. &
+            any(d%record_columns > 100) .or. d%record_columns(1) == d%record_columns(2) .or. &
             (d%record_columns(3) > 0 .and. (d%record_columns(3) == d%record_columns(1) .or. &
-             d%record_columns(3) == d%record_columns(2)))) then
+             d%record_columns(3) == d%record_columns(2))))) then
             call bad(stat, 'measurement', 'record_columns', itoa(d%record_columns(1))//', '// &
                      itoa(d%record_columns(2))//', '//itoa(d%record_columns(3)), 'not three '// &
                      'distinct columns', 'record_columns = T, V or T, V, U: the 1-based '// &

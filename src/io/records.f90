@@ -1,177 +1,170 @@
 !> Records of a swing as instruments write them: time and a measured value (and, when
 !! given, each sample's standard uncertainty), read and checked whole before any computing
 !! (read_record), with the record's mean period from its crossings (mean_period).
+!!
+!! A record is a table (module tables: blanks, tabs, commas or semicolons between fields,
+!! CR LF line ends, a UTF-8 byte order mark, header lines before the numbers, '#'
+!! comments).  &measurement record_columns picks the columns of time (s), value and,
+!! optionally, each sample's standard uncertainty (1-based; default 1, 2); record_units
+!! says what the value is: 'rad' or 'deg' (theta4) or 'rad/s' or 'deg/s' (W = omega . n3);
+!! without it &measurement quantity says angle (rad) or rate (rad/s).  Values in degrees
+!! are turned into radians here: a record_t is always in rad or rad/s.  Times need not
+!! count from the release (the fit finds it).
 module records
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-    use kinds, only: dp
-    use status, only: status_t, set_error, ERR_DECK
+    use kinds, only: dp, deg
+    use status, only: status_t, set_error, STATUS_OK, ERR_DECK
     use text, only: itoa, sci
     use deck, only: deck_t
-    use fptraps, only: traps_off, traps_restore, NTRAPS
-    use lines, only: read_line
+    use tables, only: table_t, read_table
     implicit none
     private
 
-    !> A record: time from release (s), the measured value (rad or rad/s) and, when the
-    !! record has a third column, each sample's standard uncertainty.
+    !> A record: time (s), the measured value (rad or rad/s) and, when the record gives it,
+    !! each sample's standard uncertainty (else 1).
     type, public :: record_t
         real(dp), allocatable :: t(:), v(:), u(:)
         logical :: has_u = .false.
+        logical :: rate = .false.               !! W (rad/s), else theta4 (rad)
+        real(dp) :: to_rad = 1.0_dp             !! the file's unit in rad (or rad/s)
     end type record_t
 
-    public :: read_record, record_file, mean_period
+    !> How a record file is to be read: its columns, its unit, the rig's rate scale.
+    type, public :: record_format_t
+        !> time, value, u (0: none; -1: column 3 when the file has exactly three columns)
+        integer :: columns(3) = [1, 2, -1]
+        logical :: rate = .false.               !! a rate (W), else an angle (theta4)
+        real(dp) :: to_rad = 1.0_dp             !! the value's unit in rad (deg: pi/180)
+        character(len=8) :: units = 'rad'       !! for messages
+        real(dp) :: rate_scale = 1.0_dp         !! sqrt(g/b'): rad/s per rad per unit tau
+    end type record_format_t
+
+    public :: read_record, read_record_file, record_format_of, record_file, mean_period
 
     integer, parameter, public :: MIN_SAMPLES = 20          !! shortest record
     integer, parameter, public :: MAX_SAMPLES = 2000000     !! longest record
-    integer, parameter :: MAX_RECORD_LINE = 4096    !! longest line of a record
     !> Largest recorded value: rad (angle) or rad per unit of tau (rate, W/sqrt(g/b')); a
-    !! standard uncertainty (column 3) from U_MIN to VALUE_MAX in the same units (a smaller
-    !! one makes weights 1/u that overflow the fit's sum of squares).
+    !! standard uncertainty from U_MIN to VALUE_MAX in the same units (a smaller one makes
+    !! weights 1/u that overflow the fit's sum of squares).
     real(dp), parameter, public :: VALUE_MAX = 1.0e3_dp, U_MIN = 1.0e-12_dp
 
 contains
 
-    !> Read and check the record of a deck (d%record_path): a whitespace table, '#' starts
-    !! a comment, blank lines skipped; column 1 time (s) strictly increasing, column 2 the
-    !! measured value (|value| <= VALUE_MAX rad, or VALUE_MAX sqrt(g/b') rad/s for a rate),
-    !! an optional column 3 its standard uncertainty (U_MIN ... VALUE_MAX in those units);
-    !! every data line with the same number of columns, every value finite; at least
-    !! MIN_SAMPLES samples.  Numbers beyond the range of real(dp) (1e400) are read with the
-    !! floating-point traps off and refused as not finite.  ERR_DECK naming the record, the
-    !! line, what is wrong and what is allowed.
+    !> How the deck's records are to be read (&measurement record_columns, record_units or
+    !! quantity; the rig's sqrt(g/b') for the range of a rate).
+    pure function record_format_of(d) result(f)
+        type(deck_t), intent(in) :: d           !! the deck
+        type(record_format_t) :: f
+        f%columns = d%record_columns
+        f%rate = trim(d%quantity) == 'rate'
+        f%units = trim(merge('rad/s', 'rad  ', f%rate))
+        f%to_rad = 1.0_dp
+        if (len_trim(d%record_units) > 0) then
+            f%units = trim(d%record_units)
+            if (index(d%record_units, 'deg') == 1) f%to_rad = deg
+        end if
+        f%rate_scale = sqrt(d%g/d%b_prime)
+    end function record_format_of
+
+    !> Read and check the record of a deck (&measurement record, relative to the deck's
+    !! folder): read_record_file with the deck's format.  ERR_DECK naming the record.
     subroutine read_record(d, rec, stat)
-        type(deck_t), intent(in) :: d           !! the deck (record, record_path)
+        type(deck_t), intent(in) :: d           !! the deck (record, record_path, format)
         type(record_t), intent(out) :: rec
         type(status_t), intent(out) :: stat     !! ERR_DECK
-        character(len=MAX_RECORD_LINE + 1) :: line
-        character(len=512) :: msg
-        character(len=:), allocatable :: head, path, whole
-        real(dp) :: x(3), scale
-        real(dp), allocatable :: t(:), v(:), uu(:)
-        integer :: u, ios, nline, ncol, n, k, ncol1
-        logical :: halting(NTRAPS)
-        character(len=:), allocatable :: units, per_tau
-        stat%code = 0
-        head = '&measurement record = '''//trim(d%record)//''': '
-        scale = 1.0_dp
-        units = ' rad'
-        per_tau = ''
-        if (trim(d%quantity) == 'rate') then
-            scale = sqrt(d%g/d%b_prime)
-            units = ' rad/s'
-            per_tau = ' (= '//sci(VALUE_MAX)//' sqrt(g/b_prime))'
-        end if
-        path = record_file(d)
-        open (newunit=u, file=path, status='old', action='read', form='formatted', &
-              access='sequential', iostat=ios, iomsg=msg)
-        if (ios /= 0) then
-            call set_error(stat, ERR_DECK, head//'cannot open '//path//': '// &
-                trim(msg)//'; allowed: a file relative to the deck''s folder, or an absolute path')
+        call read_record_file(record_file(d), record_format_of(d), rec, stat)
+        if (stat%code /= STATUS_OK) stat%msg = '&measurement record = '''//trim(d%record)// &
+            ''': '//stat%msg
+    end subroutine read_record
+
+    !> Read and check a record file: its table (module tables), the columns of the format;
+    !! time (s) strictly increasing; the value within VALUE_MAX rad (or VALUE_MAX sqrt(g/b')
+    !! rad/s for a rate) after conversion to rad; a sample's u from U_MIN to VALUE_MAX in
+    !! those units; MIN_SAMPLES .. MAX_SAMPLES samples.  ERR_DECK naming the line.
+    subroutine read_record_file(path, f, rec, stat)
+        character(len=*), intent(in) :: path    !! the file
+        type(record_format_t), intent(in) :: f  !! its columns and units
+        type(record_t), intent(out) :: rec
+        type(status_t), intent(out) :: stat     !! ERR_DECK
+        type(table_t) :: tab
+        real(dp) :: vmax, x
+        integer :: n, i, need, cols(3)
+        character(len=:), allocatable :: per_tau
+        call read_table(path, tab, stat, MAX_SAMPLES)
+        if (stat%code /= STATUS_OK) then
+            if (index(stat%msg, 'more than') == 1) stat%msg = stat%msg(1:index(stat%msg, &
+                ' rows;') - 1)//' samples; allowed: at most '//itoa(MAX_SAMPLES)
             return
         end if
-        allocate (t(1024), v(1024), uu(1024))
-        n = 0
-        nline = 0
-        ncol1 = 0
-        call traps_off(halting)
-        do
-            ! a line of any length is read only up to MAX_RECORD_LINE + 1 characters (a file
-            ! without line ends, /dev/zero, ends at once)
-            call read_line(u, whole, ios, msg, MAX_RECORD_LINE)
-            if (is_iostat_end(ios)) exit
-            nline = nline + 1
-            if (ios /= 0) then
-                call fail('cannot read line '//itoa(nline)//': '//trim(msg))
-                return
-            end if
-            ! the whole text read, blanks included: a longer line is cut where read_line
-            ! stopped, and its rest would be read as the next line
-            if (len(whole) > MAX_RECORD_LINE) then
-                call fail('line '//itoa(nline)//' is longer than '//itoa(MAX_RECORD_LINE)// &
-                    ' characters; allowed: lines of at most '//itoa(MAX_RECORD_LINE))
-                return
-            end if
-            line = whole
-            k = index(line, '#')
-            if (k > 0) line(k:) = ' '
-            call split(line, x, ncol, msg)
-            if (len_trim(msg) > 0) then
-                call fail('line '//itoa(nline)//': '//trim(msg))
-                return
-            end if
-            if (ncol == 0) cycle
-            if (ncol1 == 0) ncol1 = ncol
-            if (ncol < 2 .or. ncol > 3 .or. ncol /= ncol1) then
-                call fail('line '//itoa(nline)//': '//itoa(ncol)//' columns; allowed: every '// &
-                    'line with 2 columns (time in s, value) or every line with 3 (and its '// &
-                    'standard uncertainty)')
-                return
-            end if
-            if (.not. all(ieee_is_finite(x(1:ncol)))) then
-                call fail('line '//itoa(nline)//': a value is not a finite number (NaN, Inf); '// &
-                    'allowed: finite numbers')
-                return
-            end if
-            if (n > 0) then
-                if (.not. (x(1) > t(n))) then
-                    call fail('line '//itoa(nline)//': time '//sci(x(1), 6)// &
-                        ' s is not after the previous sample''s '//sci(t(n), 6)// &
-                        ' s; allowed: column 1 strictly increasing (s from release)')
-                    return
-                end if
-            end if
-            if (abs(x(2)) > VALUE_MAX*scale) then
-                call fail('line '//itoa(nline)//': value '//sci(x(2))//' is too large; '// &
-                    'allowed: |value| <= '//sci(VALUE_MAX*scale)//units//per_tau)
-                return
-            end if
-            if (ncol == 3) then
-                if (.not. (x(3) >= U_MIN*scale .and. x(3) <= VALUE_MAX*scale)) then
-                    call fail('line '//itoa(nline)//': standard uncertainty '//sci(x(3))// &
-                        ' is out of range; allowed: column 3 from '//sci(U_MIN*scale)// &
-                        ' to '//sci(VALUE_MAX*scale)//units)
-                    return
-                end if
-            end if
-            if (n == MAX_SAMPLES) then
-                call fail('more than '//itoa(MAX_SAMPLES)//' samples; allowed: at most '// &
-                    itoa(MAX_SAMPLES))
-                return
-            end if
-            if (n == size(t)) then
-                t = [t, t]
-                v = [v, v]
-                uu = [uu, uu]
-            end if
-            n = n + 1
-            t(n) = x(1)
-            v(n) = x(2)
-            uu(n) = x(3)
-        end do
-        call traps_restore(halting)
-        close (u)
+        cols = f%columns
+        if (cols(3) < 0) cols(3) = merge(3, 0, tab%ncol == 3)
+        need = maxval(cols)
+        if (tab%ncol < need) then
+            call set_error(stat, ERR_DECK, itoa(tab%ncol)//' columns (line '// &
+                itoa(tab%line(1))//'), record_columns asks for column '//itoa(need)// &
+                '; allowed: record_columns = T, V or T, V, U naming columns of the file')
+            return
+        end if
+        n = tab%nrow
         if (n < MIN_SAMPLES) then
-            call set_error(stat, ERR_DECK, head//itoa(n)//' samples; allowed: at least '// &
+            call set_error(stat, ERR_DECK, itoa(n)//' samples; allowed: at least '// &
                 itoa(MIN_SAMPLES))
             return
         end if
-        rec%t = t(1:n)
-        rec%v = v(1:n)
-        rec%has_u = ncol1 == 3
+        rec%rate = f%rate
+        rec%to_rad = f%to_rad
+        rec%t = tab%v(:, cols(1))
+        rec%v = tab%v(:, cols(2))*f%to_rad
+        rec%has_u = cols(3) > 0
         if (rec%has_u) then
-            rec%u = uu(1:n)
+            rec%u = tab%v(:, cols(3))*f%to_rad
         else
             allocate (rec%u(n))
             rec%u = 1.0_dp
         end if
-    contains
-        subroutine fail(what)
-            character(len=*), intent(in) :: what
-            call traps_restore(halting)
-            call set_error(stat, ERR_DECK, head//what)
-            close (u)
-        end subroutine fail
-    end subroutine read_record
+        vmax = VALUE_MAX
+        per_tau = ''
+        if (f%rate) then
+            vmax = VALUE_MAX*f%rate_scale
+            per_tau = ' (= '//sci(VALUE_MAX)//' sqrt(g/b_prime))'
+        end if
+        do i = 1, n
+            if (i > 1) then
+                if (.not. (rec%t(i) > rec%t(i - 1))) then
+                    call set_error(stat, ERR_DECK, 'line '//itoa(tab%line(i))//': time '// &
+                        sci(rec%t(i), 6)//' s is not after the previous sample''s '// &
+                        sci(rec%t(i - 1), 6)//' s; allowed: time strictly increasing (s)')
+                    return
+                end if
+            end if
+            if (abs(rec%v(i)) > vmax) then
+                x = rec%v(i)/f%to_rad
+                call set_error(stat, ERR_DECK, 'line '//itoa(tab%line(i))//': value '// &
+                    sci(x)//' '//trim(f%units)//' is too large; allowed: |value| <= '// &
+                    sci(vmax)//trim(merge(' rad/s', ' rad  ', f%rate))//per_tau// &
+                    trim(unit_hint(f))//'')
+                return
+            end if
+            if (rec%has_u) then
+                if (.not. (rec%u(i) >= U_MIN*merge(f%rate_scale, 1.0_dp, f%rate) .and. &
+                           rec%u(i) <= vmax)) then
+                    call set_error(stat, ERR_DECK, 'line '//itoa(tab%line(i))//': standard '// &
+                        'uncertainty '//sci(rec%u(i)/f%to_rad)//' '//trim(f%units)//' is out '// &
+                        'of range; allowed: from '//sci(U_MIN*merge(f%rate_scale, 1.0_dp, &
+                        f%rate))//' to '//sci(vmax)//trim(merge(' rad/s', ' rad  ', f%rate)))
+                    return
+                end if
+            end if
+        end do
+    end subroutine read_record_file
+
+    !> A hint on the units for a value too large: a record in degrees read as radians.
+    pure function unit_hint(f) result(s)
+        type(record_format_t), intent(in) :: f
+        character(len=:), allocatable :: s
+        s = ''
+        if (f%to_rad == 1.0_dp) s = '; a record in degrees needs record_units = '''// &
+            trim(merge('deg/s', 'deg  ', f%rate))//''''
+    end function unit_hint
 
     !> The record file of a deck: &measurement record relative to the deck's folder
     !! (d%record_path), or as given.
@@ -182,62 +175,28 @@ contains
         if (allocated(d%record_path)) path = d%record_path
     end function record_file
 
-    !> The numbers of one line (blanks, tabs or commas between them): up to 3 in x, ncol of
-    !! them (4 when there are more); msg names a token that is not a number.
-    subroutine split(line, x, ncol, msg)
-        character(len=*), intent(in) :: line
-        real(dp), intent(out) :: x(3)
-        integer, intent(out) :: ncol
-        character(len=*), intent(out) :: msg
-        integer :: i, j, ios
-        real(dp) :: val
-        x = 0.0_dp
-        ncol = 0
-        msg = ''
-        i = 1
-        do
-            do while (i <= len(line))
-                if (index(' ,'//achar(9)//achar(13), line(i:i)) == 0) exit
-                i = i + 1
-            end do
-            if (i > len(line)) return
-            j = i
-            do while (j <= len(line))
-                if (index(' ,'//achar(9)//achar(13), line(j:j)) > 0) exit
-                j = j + 1
-            end do
-            if (verify(line(i:j - 1), '0123456789+-.eEdDnNaAiIfF') /= 0) then
-                msg = '''' // line(i:min(j - 1, i + 30)) // ''' is not a number'
-                return
-            end if
-            read (line(i:j - 1), *, iostat=ios) val
-            if (ios /= 0) then
-                msg = '''' // line(i:min(j - 1, i + 30)) // ''' is not a number'
-                return
-            end if
-            ncol = min(ncol + 1, 4)
-            if (ncol <= 3) x(ncol) = val
-            i = j
-        end do
-    end subroutine split
-
     !> The record's mean period (s): twice the mean spacing of the crossings of its mean
     !! value, up and down (linear interpolation between samples; a crossing counts only
     !! after the signal has been beyond the mean, on the side it leaves, by a tenth of its
     !! largest excursion, so noise does not add crossings).  0 when fewer than two crossings.
-    function mean_period(rec) result(tp)
+    !! From sample i0 on when given.
+    function mean_period(rec, i0) result(tp)
         type(record_t), intent(in) :: rec
+        integer, intent(in), optional :: i0     !! first sample (default 1)
         real(dp) :: tp
         real(dp) :: mean, band, tc, t_first, t_last, a, b
-        integer :: i, nc, side
+        integer :: i, nc, side, k0
         tp = 0.0_dp
-        mean = sum(rec%v)/size(rec%v)
-        band = 0.1_dp*maxval(abs(rec%v - mean))
+        k0 = 1
+        if (present(i0)) k0 = max(1, i0)
+        if (size(rec%v) - k0 < 2) return
+        mean = sum(rec%v(k0:))/size(rec%v(k0:))
+        band = 0.1_dp*maxval(abs(rec%v(k0:) - mean))
         side = 0                                ! -1 below the band, +1 above, 0 not yet
         nc = 0
         t_first = 0.0_dp
         t_last = 0.0_dp
-        do i = 2, size(rec%v)
+        do i = k0 + 1, size(rec%v)
             a = rec%v(i - 1) - mean
             b = rec%v(i) - mean
             if (a < -band) side = -1
