@@ -23,7 +23,8 @@ module test_identify
                                 torsion_period_s, simulated_period_s, linear_inertia
     use identify, only: identify_result_t, identify_record
     use records, only: record_t, read_record
-    use record_fit, only: record_model, make_record, set_input
+    use record_fit, only: record_model, make_record
+    use inputs, only: set_input
     use test_period, only: test_rig
     use output_io, only: read_kv
     use text, only: itoa
@@ -432,6 +433,8 @@ contains
         type(input_u_t) :: u
         real(dp) :: per(2), pp(2), pm(2), ap(2), am(2), h, ss, xs(6), us(6)
         integer :: j, k
+        character(len=8), parameter :: names(6) = [character(len=8) :: 'mass', 'l', &
+            'l_prime', 'b', 'b_prime', 'g']
         real(dp), parameter :: amps(2) = [15.0_dp, 40.0_dp]
         d = asym_rig()
         do j = 1, 2
@@ -449,8 +452,8 @@ contains
         us = [u%mass, u%l, u%l_prime, u%b, u%b_prime, u%g]
         do j = 1, 6
             call setup(3.0e-4_dp*xs(j))
-            call set_input(dp_, sp, j, xs(j) + h)
-            call set_input(dm, sm, j, xs(j) - h)
+            call set_input(dp_, sp, names(j), xs(j) + h)
+            call set_input(dm, sm, names(j), xs(j) - h)
             call add(us(j))
         end do
         do k = 1, 2
@@ -825,10 +828,10 @@ contains
         call one('short', "&measurement record = 'bad_short.dat' /", 2, 'at least 20')
         call one('nan', "&measurement record = 'bad_nan.dat' /", 2, 'not a finite number')
         call one('long', "&measurement record = 'bad_long.dat' /", 2, &
-                 'is beyond what the model runs; allowed: times up to 2.020E+05 s')
+                 'beyond what the model runs; allowed: up to 2.020E+05 s')
         call one('early', "&measurement record = 'bad_early.dat' /"//NL// &
                  "&integration method = 'radau' /", 2, 'is too early to show a swing; '// &
-                 'allowed: times up to at least 2.020E-04 s')
+                 'allowed: records spanning at least 2.020E-04 s')
         call one('blanks', "&measurement record = 'bad_blanks.dat' /", 2, &
                  'line 26 is longer than 4096 characters')
         call one('blanks2', "&measurement record = 'bad_blanks2.dat' /", 2, &

@@ -184,7 +184,7 @@ contains
         a = 0.5_dp
         call torsion_period_s(rig_of(d), 0.05_dp, a(1), tp(1), st)
         u = input_u_t(mass=0.001_dp, l=0.001_dp, l_prime=0.001_dp, b=0.0005_dp, &
-                      b_prime=0.0005_dp, g=0.0_dp, period=1.0e-4_dp, amplitude=0.5_dp)
+                      b_prime=0.0005_dp, g=0.001_dp, period=1.0e-4_dp, amplitude=0.5_dp)
         call invert_periods(rig_of(d), accuracy_of(d), tp, a, u, f, st)
         call period_budget(rig_of(d), accuracy_of(d), tp, a, u, f, st)
         call t%check('budget: computed', st%code == 0)
@@ -209,7 +209,8 @@ contains
         call t%check('budget: amplitude matters little at 0.5 deg', &
             abs(f%budget(8)%sensitivity)*1.0_dp < 1.0e-4_dp*i1)
         uu = sqrt((i1/d%mass*u%mass)**2 + 2*(i1/(2*d%l)*u%l)**2 + (i1/d%b*u%b)**2 + &
-                  (i1/d%b_prime*u%b_prime)**2 + (2*i1/tp(1)*u%period)**2)
+                  (i1/d%b_prime*u%b_prime)**2 + (2*i1/tp(1)*u%period)**2 + &
+                  (i1/d%g*u%g)**2)
         call t%check_close('budget: u(I1) = the root sum of squares of the laws', f%u_i1, uu, &
             rtol=3.0e-3_dp)
         call t%check('budget: contributions are |c| u', &

@@ -71,8 +71,13 @@ module test_sweep
         NL//'      u_mass = 0.001, u_l = 0.001, u_l_prime = 0.001, u_b = 0.0005, '// &
         'u_b_prime = 0.0005,'//NL//'      u_period = 1e-4, u_amplitude = 0.5, '
     !> That rig with a period of 0.15 s timed to 0.05 s: some Monte Carlo samples draw a
-    !! period below the shortest any positive I1 gives (0.04 s), and fail.
-    character(len=*), parameter :: BADMC = PERIODS(1:index(PERIODS, '&measurement') - 1)// &
+    !! period below the shortest any positive I1 gives (0.04 s), and fail.  I2 = I3 (a
+    !! body that may have so small an I1: a rod along b1).
+    character(len=*), parameter :: BADMC = "&scene title = 'sweep test identify', "// &
+        "analyses = 'identify' /"//NL// &
+        '&suspension b = 0.40, b_prime = 0.40, l = 1.20, l_prime = 1.20, g = 9.80665 /'//NL// &
+        '&body mass = 3.10, inertia = 0.0005, 0.0304, 0.0304, r = 0.25, '// &
+        'lambda = 0.6435011087932844, sway_depth = 0.30 /'//NL// &
         '&measurement periods = 0.15, amplitudes = 10.0, u_period = 0.05, monte_carlo = 50 /'//NL
 
 contains

@@ -60,28 +60,51 @@ module identify
     implicit none
     private
 
+    !> One line of warning (stderr, exit 0).
+    type, public :: warning_t
+        character(len=:), allocatable :: s
+    end type warning_t
+
     !> What identify found (deck units; the record's units for residuals).
     type, public :: identify_result_t
         logical :: from_record = .false.        !! a record fit (else periods)
-        real(dp) :: i1 = 0.0_dp, u_i1 = 0.0_dp  !! estimate and first-order u
+        !> I1 of the body (after tare and added inertia) and its combined standard u
+        real(dp) :: i1 = 0.0_dp, u_i1 = 0.0_dp
+        real(dp) :: u_i1_expanded = 0.0_dp      !! U = k u (95 %)
+        real(dp) :: k = 0.0_dp                  !! coverage factor (Student's t, dof_eff)
+        real(dp) :: dof_eff = 0.0_dp            !! Welch-Satterthwaite (NU_INFINITE: inf)
+        !> I1 of all that hung (before tare and added inertia) and its u
+        real(dp) :: i1_total = 0.0_dp, u_i1_total = 0.0_dp
         real(dp) :: u_i1_fit = 0.0_dp           !! the fit's part of u_I1 (record)
+        real(dp) :: u_i1_random = 0.0_dp        !! the releases' random part (Type A)
+        real(dp) :: u_i1_reproducibility = 0.0_dp   !! what their scatter added to it
+        real(dp) :: birge_ratio = -1.0_dp, p_value = -1.0_dp    !! -1: not tested
+        integer :: n_trials = 1                 !! releases pooled
+        character(len=14) :: consistency = 'single release'
         real(dp) :: u_i1_mc = -1.0_dp, mc_mean = 0.0_dp     !! Monte Carlo (when asked)
         real(dp) :: i1_linear = 0.0_dp, linear_error = 0.0_dp
         real(dp) :: period_linear = 0.0_dp      !! the period the linear formula used (s)
-        !> periods without u_period: their scatter about the model, s (used as u_period;
-        !! -1 when u_period is given or there is one period)
+        !> periods without u_period: the scatter of the timed totals about the model, s
+        !! (used as u_period; -1 when u_period is given or there is one period)
         real(dp) :: u_period_scatter = -1.0_dp
         real(dp) :: residual_rms = 0.0_dp       !! of measured - model (s, rad or rad/s)
         integer :: iterations = 0, evaluations = 0, samples = 0
         integer :: np = 0                       !! parameters estimated
-        character(len=9) :: names(5) = ''       !! their names (I1 first)
-        real(dp) :: p(5) = 0.0_dp, u_p(5) = 0.0_dp  !! estimates and first-order u
+        character(len=9) :: names(6) = ''       !! their names (I1 first)
+        real(dp) :: p(6) = 0.0_dp, u_p(6) = 0.0_dp  !! estimates and first-order u
         real(dp) :: sigma = 0.0_dp              !! s of the covariance (record)
         logical :: sigma_stated = .false.       !! s = 1: the record's column 3
-        real(dp), allocatable :: model_periods(:)   !! T_i(I1) (periods)
+        real(dp) :: correlation_time = 1.0_dp   !! of the residuals, samples (record)
+        real(dp) :: n_effective = 0.0_dp        !! samples / correlation time (record)
+        real(dp), allocatable :: model_periods(:)   !! T_i(I1) per cycle (periods)
+        character(len=16) :: period_model = ''  !! 'exact torsion', 'simulated', 'record'
         logical :: periods_exact = .true.       !! periods of pure torsion (else simulated)
+        character(len=64), allocatable :: trial_label(:)    !! each release's label
+        real(dp), allocatable :: trial_i1(:), trial_u(:)    !! each release's I1 and own u
         type(budget_row_t), allocatable :: budget(:)
         real(dp), allocatable :: model(:)       !! the model at the record's times
+        integer :: ifirst = 1                   !! first sample fitted (record)
+        type(warning_t), allocatable :: warnings(:)
         real(dp) :: cpu_seconds = 0.0_dp
     end type identify_result_t
 

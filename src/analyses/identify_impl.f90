@@ -1,51 +1,99 @@
-!> The implementation of analysis identify (submodule of identify): the preconditions,
-!! the periods' and the record's analyses, their Monte Carlo, and the output files.
+!> The implementation of analysis identify (submodule of identify): the preconditions, each
+!! release's analysis (periods or a record), their pooling, the corrections and the checks
+!! against what no body can give, the Monte Carlo, and the output files.
 submodule (identify) identify_impl
     use, intrinsic :: iso_fortran_env, only: int64
     use kinds, only: pi
-    use status, only: set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC, ERR_IO
-    use text, only: itoa, sci, count_words
-    use deck, only: deck_echo, estimated, TAU_END_MAX
+    use status, only: set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC, ERR_MODEL
+    use text, only: itoa, sci, fixed, count_words, quoted
+    use deck, only: deck_echo, estimated, deck_gave, TAU_END_MAX
     use output_io, only: write_kv, all_finite
     use fast_format, only: es_field
     use geometry, only: pendulum_t
     use bifilar_model, only: NSTATE
-    use rig, only: rig_t, accuracy_t, rig_of, start_of, accuracy_of, make_pendulum, start_state
+    use rig, only: rig_t, start_t, accuracy_t, rig_of, start_of, accuracy_of, make_pendulum, &
+        start_state
     use least_squares, only: lsq_result_t, lsq_jacobian
     use budget, only: input_u_t
-    use records, only: read_record, record_file, mean_period
+    use records, only: read_record_file, record_format_t, record_format_of, record_file, mean_period
+    use trials, only: trial_set_t, trial_t, read_trials, RIG_COLUMNS
+    use inputs, only: input_t, deck_inputs, set_input
+    use pooling, only: pooled_t, pool_releases
+    use stats, only: coverage_factor, welch_satterthwaite, NU_INFINITE
     use record_fit, only: record_fit_t, record_mc_task_t, fit_problem, fit_record, covariance, &
-        input_sensitivity, budget_inputs, record_mc_task, explain_fit_failure, PARAM_NAMES
+        input_sensitivity, record_mc_task, explain_fit_failure, huber_weights, &
+        correlation_time, PARAM_NAMES, P_BIAS
     use period_inversion, only: period_fit_t, invert_periods, period_budget, &
                                 period_monte_carlo, linear_inertia, is_torsion_rig, &
-                                period_mc_task, period_mc_task_t
+                                period_mc_task, period_mc_task_t, rig_period_s
     use crc64, only: file_crc, crc_parts, crc_join
     use monte_carlo, only: monte_carlo_run
     implicit none
 
+    !> One release analysed alone.
+    type :: release_t
+        real(dp) :: i1 = 0.0_dp                 !! its I1 (all that hung)
+        real(dp) :: u_own = 0.0_dp              !! the u only this release has
+        real(dp) :: nu_own = NU_INFINITE        !! its degrees of freedom
+        real(dp), allocatable :: c(:)           !! dI1/dx for the common inputs x
+        type(budget_row_t), allocatable :: own(:)   !! the rows of u_own
+        real(dp), allocatable :: nu_row(:)      !! each own row's degrees of freedom
+        real(dp) :: i1_linear = 0.0_dp, period_linear = 0.0_dp
+        real(dp) :: amp_max = 0.0_dp            !! largest amplitude (degrees)
+        type(rig_t) :: rg                       !! its rig
+        logical :: from_record = .false.
+        ! periods
+        real(dp), allocatable :: per(:), amps(:), u_each(:), model_periods(:)
+        real(dp), allocatable :: cycles(:)
+        real(dp) :: u_scatter = -1.0_dp
+        logical :: exact = .true.
+        ! a record
+        type(record_t) :: rec
+        real(dp), allocatable :: model(:)       !! the fitted model (rad or rad/s)
+        real(dp), allocatable :: jac(:, :)      !! the Jacobian at the estimate
+        real(dp), allocatable :: hw(:)          !! the robust weights' roots
+        integer :: np = 1, ifirst = 1
+        character(len=9) :: names(6) = ''
+        real(dp) :: p(6) = 0.0_dp, u_p(6) = 0.0_dp, u_p_own(6) = 0.0_dp
+        real(dp) :: sigma = 0.0_dp, tau = 1.0_dp, n_eff = 0.0_dp, u_fit = 0.0_dp
+        logical :: sigma_stated = .false.
+        real(dp) :: residual_rms = 0.0_dp
+        integer :: iterations = 0, evaluations = 0, samples = 0
+        type(warning_t), allocatable :: warnings(:)
+    end type release_t
+
+    !> An I1 more than this factor above I2 + I3 (or below |I2 - I3| over it) is refused.
+    real(dp), parameter :: TRIANGLE_MARGIN = 1.1_dp
+    !> At amplitudes up to 90 degrees, an I1 further than this from the classical formula's
+    !! is refused (the amplitude correction is 1.3 % at 30 degrees, 20 % at 90).
+    real(dp), parameter :: LINEAR_GAP_MAX = 0.5_dp
+
 contains
 
     !> The preconditions of analyses = 'identify', checked before any computing: the
-    !! paper's model; periods or a record, not both; with periods only I1 estimated and the
-    !! periods possible on a symmetric rig (T(I1 -> 0) below each); with a record, the
-    !! record readable and sound (read_record), I1 among the estimated parameters,
-    !! 'amplitude' only with &start mode 'raised', more samples than parameters, the start.
+    !! paper's model; one of periods, a record or a table of releases; I1 estimated (and
+    !! only I1 from periods); every release readable (its periods possible on a symmetric
+    !! rig, its record sound and long enough); Monte Carlo only for the deck's own release.
     module procedure identify_ready
-        type(pendulum_t) :: p
+        type(trial_set_t) :: ts
         type(record_t) :: rec
         type(period_fit_t) :: f
-        real(dp) :: y0(NSTATE), th0(5), t_max
-        integer :: np
+        type(pendulum_t) :: p
+        type(rig_t) :: rg
+        real(dp) :: y0(NSTATE), th0(5)
+        integer :: i, nsrc
         stat%code = 0
         if (trim(d%model) /= 'kane') then
             call set_error(stat, ERR_DECK, 'analyses = ''identify'': &scene model = '''// &
                 trim(d%model)//''': identify fits the paper''s model; allowed: model = ''kane''')
             return
         end if
-        if (d%n_periods > 0 .eqv. len_trim(d%record) > 0) then
+        nsrc = count([d%n_periods > 0, len_trim(d%record) > 0, len_trim(d%trials) > 0])
+        if (nsrc /= 1) then
             call set_error(stat, ERR_DECK, 'analyses = ''identify'': &measurement needs '// &
-                'either periods (with amplitudes) or a record, and not both; allowed: '// &
-                'periods = 1.52, 1.55, amplitudes = 10, 30 or record = ''swing.dat''')
+                'one of periods (with amplitudes), record or trials; allowed: periods = '// &
+                '15.2, 15.5, cycles = 10, amplitudes = 10, 10 or record = ''swing.csv'' or '// &
+                'trials = ''releases.csv''')
             return
         end if
         call make_pendulum(rig_of(d), p, stat)
@@ -53,46 +101,91 @@ contains
         if (.not. estimated(d, 'I1')) then
             call set_error(stat, ERR_DECK, '&measurement estimate = '''//trim(d%estimate)// &
                 ''': I1 is what identify estimates; allowed: ''I1'' followed by any of '// &
-                'c_v, c_q, amplitude, t0 (with a record)')
+                'c_v, c_q, amplitude, t0, bias (with a record)')
             return
         end if
-        if (d%n_periods > 0) then
-            if (count_words(d%estimate) /= 1) then
-                call set_error(stat, ERR_DECK, '&measurement estimate = '''// &
-                    trim(d%estimate)//''': with periods only I1 is estimated; allowed: '// &
-                    '''I1'' (c_v, c_q, amplitude, t0 need a record)')
-                return
-            end if
-            if (is_torsion_rig(rig_of(d))) then
-                ! a period no positive I1 gives: refused now (cheap on a symmetric rig)
-                call invert_periods(rig_of(d), accuracy_of(d), d%periods(1:d%n_periods), &
-                                    d%amplitudes(1:d%n_periods), &
-                                    input_u(d), f, stat)
-                if (stat%code == ERR_DECK) return
-                stat%code = 0
-            end if
+        if (len_trim(d%trials) > 0 .and. d%monte_carlo > 0) then
+            call set_error(stat, ERR_DECK, '&measurement monte_carlo = '// &
+                itoa(d%monte_carlo)//' with trials: the Monte Carlo draws one release; '// &
+                'allowed: monte_carlo = 0 with trials (the releases'' scatter is their '// &
+                'Type A part), or periods or a record with monte_carlo')
             return
         end if
-        call read_record(d, rec, stat)
+        call read_trials(d, ts, stat)
         if (stat%code /= 0) return
-        ! the model runs from the release (t = 0) to the last sample: no longer than a
-        ! simulation may run (a record of huge times would run the integrator for ever)
-        t_max = TAU_END_MAX/sqrt(d%g/d%b_prime)
-        if (rec%t(size(rec%t)) > t_max) then
-            call set_error(stat, ERR_DECK, '&measurement record = '''//trim(d%record)// &
-                ''': its last sample, t = '//sci(rec%t(size(rec%t)))//' s after the '// &
-                'release, is beyond what the model runs; allowed: times up to '//sci(t_max)// &
+        do i = 1, size(ts%t)
+            rg = trial_rig(d, ts%t(i))
+            if (len(ts%t(i)%record) == 0) then
+                if (count_words(d%estimate) /= 1) then
+                    call set_error(stat, ERR_DECK, '&measurement estimate = '''// &
+                        trim(d%estimate)//''': with periods only I1 is estimated; '// &
+                        'allowed: ''I1'' (c_v, c_q, amplitude, t0, bias need a record)')
+                    return
+                end if
+                call make_pendulum(rg, p, stat)
+                if (stat%code /= 0) then
+                    call in_trial(ts, i, stat)
+                    return
+                end if
+                if (is_torsion_rig(rg)) then
+                    ! a period no positive I1 gives: refused now (cheap on a symmetric rig)
+                    call invert_periods(rg, accuracy_of(d), ts%t(i)%periods/ts%t(i)%cycles, &
+                                        ts%t(i)%amps, input_u(d), f, stat)
+                    if (stat%code == ERR_DECK) then
+                        call in_trial(ts, i, stat)
+                        return
+                    end if
+                    stat%code = 0
+                end if
+            else
+                call read_record_file(ts%t(i)%record, record_format_of(d), rec, stat)
+                if (stat%code /= 0) then
+                    stat%msg = record_name(d, ts, i)//': '//stat%msg
+                    return
+                end if
+                call check_record(d, rg, rec, record_name(d, ts, i), stat)
+                if (stat%code /= 0) return
+                call make_pendulum(rg, p, stat)
+                if (stat%code == 0) call start_state(start_of(d), p, y0, th0, stat)
+                if (stat%code /= 0) then
+                    call in_trial(ts, i, stat)
+                    return
+                end if
+            end if
+        end do
+    end procedure identify_ready
+
+    !> A record's checks beyond its file: times the model can run, long enough to show a
+    !! swing, more samples than parameters, 'amplitude' only with a raised start.
+    subroutine check_record(d, rg, rec, name, stat)
+        type(deck_t), intent(in) :: d
+        type(rig_t), intent(in) :: rg
+        type(record_t), intent(in) :: rec
+        character(len=*), intent(in) :: name    !! for messages
+        type(status_t), intent(out) :: stat
+        real(dp) :: t_max, span
+        integer :: n, np
+        stat%code = 0
+        n = size(rec%t)
+        ! the model runs from the release to the last sample: no longer than a simulation
+        ! may run (a record of huge times would run the integrator for ever); times count
+        ! from the release unless t0 is estimated
+        t_max = TAU_END_MAX/sqrt(rg%g/rg%b_prime)
+        span = rec%t(n)
+        if (estimated(d, 't0')) span = rec%t(n) - rec%t(1)
+        if (span > t_max) then
+            call set_error(stat, ERR_DECK, name//': it spans '//sci(span)//' s from the '// &
+                'release, beyond what the model runs; allowed: up to '//sci(t_max)// &
                 ' s (tau = t sqrt(g/b_prime) <= '//sci(TAU_END_MAX)//', as &integration '// &
                 'tau_end)')
             return
         end if
         ! a record that ends within a thousandth of the time scale (b_prime/g)^(1/2) of the
         ! release holds the release alone: nothing to identify, and steps at roundoff
-        if (rec%t(size(rec%t)) < 1.0e-3_dp*t_max/TAU_END_MAX) then
-            call set_error(stat, ERR_DECK, '&measurement record = '''//trim(d%record)// &
-                ''': its last sample, t = '//sci(rec%t(size(rec%t)))//' s after the '// &
-                'release, is too early to show a swing; allowed: times up to at least '// &
-                sci(1.0e-3_dp*t_max/TAU_END_MAX)//' s (tau = t sqrt(g/b_prime) >= 1e-3)')
+        if (span < 1.0e-3_dp*t_max/TAU_END_MAX) then
+            call set_error(stat, ERR_DECK, name//': its last sample, t = '// &
+                sci(rec%t(n))//' s, is too early to show a swing; allowed: records '// &
+                'spanning at least '//sci(1.0e-3_dp*t_max/TAU_END_MAX)//' s (tau >= 1e-3)')
             return
         end if
         if (estimated(d, 'amplitude') .and. trim(d%mode) /= 'raised') then
@@ -101,39 +194,77 @@ contains
             return
         end if
         np = count_words(d%estimate)
-        if (size(rec%t) <= np) then
-            call set_error(stat, ERR_DECK, '&measurement record = '''//trim(d%record)// &
-                ''': '//itoa(size(rec%t))//' samples for '//itoa(np)//' parameters; '// &
-                'allowed: more samples than parameters')
+        if (n <= np) then
+            call set_error(stat, ERR_DECK, name//': '//itoa(n)//' samples for '//itoa(np)// &
+                ' parameters; allowed: more samples than parameters')
             return
         end if
-        call start_state(start_of(d), p, y0, th0, stat)
-    end procedure identify_ready
+    end subroutine check_record
 
-    !> Run analyses = 'identify' for a deck and write OUTDIR/NAME.identify (and, with a
-    !! record, OUTDIR/NAME.fit.dat) into `files`.  The Monte Carlo is a sweep over the ranks
-    !! and threads, checkpointed to OUTDIR/NAME.identify_mc.partial (options: --resume and
-    !! the interval; report: how its sweep went, ranks 1 without Monte Carlo).
+    !> How a release's record is named in messages.
+    function record_name(d, ts, i) result(s)
+        type(deck_t), intent(in) :: d
+        type(trial_set_t), intent(in) :: ts
+        integer, intent(in) :: i
+        character(len=:), allocatable :: s
+        if (ts%from_table) then
+            s = '&measurement trials = '//quoted(d%trials)//', trial '// &
+                quoted(ts%t(i)%label)//' (line '//itoa(ts%t(i)%line)//'), record '// &
+                quoted(ts%t(i)%record)
+        else
+            s = '&measurement record = '//quoted(d%record)
+        end if
+    end function record_name
+
+    !> A failure of release i of a table: the message names it.
+    subroutine in_trial(ts, i, stat)
+        type(trial_set_t), intent(in) :: ts
+        integer, intent(in) :: i
+        type(status_t), intent(inout) :: stat
+        if (ts%from_table) stat%msg = 'trial '//quoted(ts%t(i)%label)//' (line '// &
+            itoa(ts%t(i)%line)//'): '//stat%msg
+    end subroutine in_trial
+
+    !> The rig of a release: the deck's, with the table's values of l, l_prime, b, b_prime,
+    !! mass (a changed b_prime keeps the mass centre's depth below, and offset along, CD).
+    function trial_rig(d, tr) result(rg)
+        type(deck_t), intent(in) :: d
+        type(trial_t), intent(in) :: tr
+        type(rig_t) :: rg
+        type(start_t) :: st
+        real(dp) :: deckv(5)
+        integer :: k
+        rg = rig_of(d)
+        st = start_of(d)
+        deckv = [d%l, d%l_prime, d%b, d%b_prime, d%mass]
+        do k = 1, 5
+            if (tr%rig(k) /= deckv(k)) call set_input(rg, st, RIG_COLUMNS(k), tr%rig(k))
+        end do
+    end function trial_rig
+
+    !> Run analyses = 'identify' for a deck and write OUTDIR/NAME.identify and the figure's
+    !! data (NAME.fit.dat for records, NAME.periods.dat for periods) into `files`.  The
+    !! Monte Carlo is a sweep over the ranks and threads, checkpointed to
+    !! OUTDIR/NAME.identify_mc.partial (options: --resume and the interval; report: how its
+    !! sweep went, ranks 1 without Monte Carlo).
     module procedure run_identify
         real(dp) :: c0, c1
-        type(record_t) :: rec
         type(sweep_report_t) :: rep
+        type(release_t), allocatable :: rels(:)
         call cpu_time(c0)
         rep%note = ''
-        if (d%n_periods > 0) then
-            call identify_periods(d, res, stat, outdir, options, rep, files)
-        else
-            call read_record(d, rec, stat)
-            if (stat%code == 0) call identify_record(d, rec, res, stat, outdir, options, rep, &
-                                                     files)
-        end if
+        call identify_releases(d, res, rels, stat, outdir, options, rep, files)
         if (present(report)) report = rep
         call cpu_time(c1)
         res%cpu_seconds = c1 - c0
         if (stat%code /= 0) return
         call write_identify(d, outdir, res, files, stat)
         if (stat%code /= 0) return
-        if (res%from_record) call write_fit(d, outdir, rec, res, files, stat)
+        if (res%from_record) then
+            call write_fit(d, outdir, rels, files, stat)
+        else
+            call write_periods(d, outdir, rels, res, files, stat)
+        end if
     end procedure run_identify
 
     !> The standard uncertainties of a deck's inputs.
@@ -144,83 +275,244 @@ contains
                       b_prime=d%u_b_prime, g=d%u_g, period=d%u_period, amplitude=d%u_amplitude)
     end function input_u
 
-    !> I1 from the deck's periods (module period_inversion); the Monte Carlo's sweep
-    !! checkpointed in outdir when given (see run_identify).
-    subroutine identify_periods(d, res, stat, outdir, options, report, files)
+    !> Every release of the deck analysed alone, then pooled (combine); the Monte Carlo of
+    !! the deck's one release when asked.
+    subroutine identify_releases(d, res, rels, stat, outdir, options, report, files)
         type(deck_t), intent(in) :: d
         type(identify_result_t), intent(out) :: res
+        type(release_t), allocatable, intent(out) :: rels(:)
         type(status_t), intent(out) :: stat
         character(len=*), intent(in), optional :: outdir
         type(sweep_options_t), intent(in), optional :: options
         type(sweep_report_t), intent(inout), optional :: report
         type(out_files_t), intent(in), optional :: files
+        type(trial_set_t) :: ts
+        type(input_t), allocatable :: x(:), xr(:)
+        type(record_t) :: rec
+        real(dp) :: mean, sdev
+        integer :: i, k, j
+        call read_trials(d, ts, stat)
+        if (stat%code /= 0) return
+        x = deck_inputs(d, .true.)
+        allocate (rels(size(ts%t)), xr(size(x)))
+        do i = 1, size(ts%t)
+            xr(:) = x
+            do k = 1, 5
+                do j = 1, size(xr)
+                    if (xr(j)%name == RIG_COLUMNS(k)) xr(j)%value = ts%t(i)%rig(k)
+                end do
+            end do
+            if (len(ts%t(i)%record) == 0) then
+                call release_periods(d, trial_rig(d, ts%t(i)), ts%t(i), xr, ts%per_trial, &
+                                     rels(i), stat)
+            else
+                call read_record_file(ts%t(i)%record, record_format_of(d), rec, stat)
+                if (stat%code /= 0) then
+                    stat%msg = record_name(d, ts, i)//': '//stat%msg
+                    return
+                end if
+                call release_record(d, trial_rig(d, ts%t(i)), rec, xr, ts%per_trial, &
+                                    rels(i), stat)
+            end if
+            if (stat%code /= 0) then
+                call in_trial(ts, i, stat)
+                return
+            end if
+        end do
+        call combine(d, rels, x, ts, res, stat)
+        if (stat%code /= 0) return
+        if (d%monte_carlo > 0) then
+            if (res%from_record) then
+                call record_monte_carlo(d, rels(1), res, stat, outdir, options, report, files)
+            else
+                associate (r => rels(1))
+                    call period_monte_carlo(d, r%per, r%amps, mc_u(d, r), r%i1, &
+                                            d%monte_carlo, d%seed, mean, sdev, stat, outdir, &
+                                            options, report, files, r%cycles)
+                end associate
+                res%u_i1_mc = sdev
+                res%mc_mean = mean - (res%i1_total - res%i1)
+            end if
+        end if
+    end subroutine identify_releases
+
+    !> The uncertainties a periods Monte Carlo draws: the deck's, with the timed totals'
+    !! scatter for u_period when that is what the release used.
+    pure function mc_u(d, r) result(u)
+        type(deck_t), intent(in) :: d
+        type(release_t), intent(in) :: r
+        type(input_u_t) :: u
+        u = input_u(d)
+        if (r%u_scatter >= 0.0_dp) u%period = r%u_scatter
+    end function mc_u
+
+    !> I1 (and the other parameters asked for) from a record of the deck's rig: the fit,
+    !! the first-order budget, Monte Carlo when asked (its sweep checkpointed in outdir
+    !! when given, see run_identify).
+    module procedure identify_record
+        type(release_t) :: rels(1)
+        type(trial_set_t) :: ts
+        type(input_t), allocatable :: x(:)
+        x = deck_inputs(d, .true.)
+        allocate (ts%t(1))
+        ts%t(1)%label = '1'
+        ts%t(1)%record = record_file(d)
+        call release_record(d, rig_of(d), rec, x, ts%per_trial, rels(1), stat)
+        if (stat%code /= 0) return
+        call combine(d, rels, x, ts, res, stat)
+        if (stat%code /= 0) return
+        if (d%monte_carlo > 0) call record_monte_carlo(d, rels(1), res, stat, outdir, options, &
+                                                       report, files)
+    end procedure identify_record
+
+    !> Is budget row `name` a part of the release's own u (measured anew for it) rather
+    !! than common to every release?
+    pure logical function own_row(name, per_trial)
+        character(len=*), intent(in) :: name
+        logical, intent(in) :: per_trial(5)
+        integer :: k
+        own_row = index(name, 'period(') == 1 .or. index(name, 'amplitude') == 1 .or. &
+                  trim(name) == 'record'
+        do k = 1, 5
+            if (per_trial(k) .and. trim(name) == trim(RIG_COLUMNS(k))) own_row = .true.
+        end do
+    end function own_row
+
+    !> A release's budget rows split: its own rows (with their degrees of freedom) and the
+    !! sensitivities to the common inputs x.
+    subroutine split_rows(rows, nu_rows, x, per_trial, r)
+        type(budget_row_t), intent(in) :: rows(:)
+        real(dp), intent(in) :: nu_rows(:)
+        type(input_t), intent(in) :: x(:)
+        logical, intent(in) :: per_trial(5)
+        type(release_t), intent(inout) :: r
+        integer :: i, j
+        allocate (r%c(size(x)), r%own(0), r%nu_row(0))
+        r%c = 0.0_dp
+        do i = 1, size(rows)
+            if (own_row(rows(i)%input, per_trial)) then
+                r%own = [r%own, rows(i)]
+                r%nu_row = [r%nu_row, nu_rows(i)]
+            else
+                do j = 1, size(x)
+                    if (trim(x(j)%name) == trim(rows(i)%input)) r%c(j) = rows(i)%sensitivity
+                end do
+            end if
+        end do
+        r%u_own = 0.0_dp
+        r%nu_own = NU_INFINITE
+        if (size(r%own) > 0) then
+            r%u_own = sqrt(sum(r%own%contribution**2))
+            r%nu_own = welch_satterthwaite(r%own%contribution, r%nu_row)
+        end if
+    end subroutine split_rows
+
+    !> One release of timed periods: each total over its cycles, inverted to I1 (module
+    !! period_inversion), with its budget.  Without u_period, two timings or more give it as
+    !! the scatter of the timed totals about the model (s^2 = sum over n - 1 of
+    !! ((T_i,model - T_i) cycles_i)^2: a stopwatch's error is per timing, not per cycle),
+    !! on n - 1 degrees of freedom.
+    subroutine release_periods(d, rg, tr, x, per_trial, r, stat)
+        type(deck_t), intent(in) :: d
+        type(rig_t), intent(in) :: rg
+        type(trial_t), intent(in) :: tr
+        type(input_t), intent(in) :: x(:)
+        logical, intent(in) :: per_trial(5)
+        type(release_t), intent(out) :: r
+        type(status_t), intent(out) :: stat
         type(period_fit_t) :: f
         type(input_u_t) :: u
-        real(dp) :: mean, sdev
-        integer :: n, imin
-        type(rig_t) :: rg
         type(accuracy_t) :: acc
-        n = d%n_periods
+        type(input_t), allocatable :: xp(:)
+        real(dp), allocatable :: nu_rows(:)
+        real(dp) :: nu_per, amin
+        integer :: n, j
+        logical, allocatable :: sel(:)
+        n = size(tr%periods)
         u = input_u(d)
-        rg = rig_of(d)
         acc = accuracy_of(d)
-        associate (per => d%periods(1:n), amps => d%amplitudes(1:n))
-            call invert_periods(rg, acc, per, amps, u, f, stat)
+        r%rg = rg
+        r%per = tr%periods/tr%cycles
+        r%cycles = tr%cycles
+        r%amps = tr%amps
+        r%u_each = tr%u_period/tr%cycles
+        r%exact = is_torsion_rig(rg)
+        r%samples = n
+        xp = pack(x, x%name /= 'amplitude')
+        call invert_periods(rg, acc, r%per, r%amps, u, f, stat, r%u_each)
+        if (stat%code /= 0) return
+        nu_per = NU_INFINITE
+        if (all(tr%u_period == 0.0_dp) .and. n >= 2) then
+            r%u_scatter = sqrt(sum(((f%model_periods - r%per)*tr%cycles)**2)/(n - 1))
+            r%u_each = r%u_scatter/tr%cycles
+            nu_per = n - 1
+            if (r%u_scatter > 0.0_dp) call invert_periods(rg, acc, r%per, r%amps, u, f, stat, &
+                                                          r%u_each)
             if (stat%code /= 0) return
-            if (u%period == 0.0_dp .and. n >= 2) then
-                ! no stated timing uncertainty: the periods' scatter about the model is it
-                ! (s^2 = sum of squares over n - 1), and the inversion is weighted with it
-                res%u_period_scatter = sqrt(sum((f%model_periods - per)**2)/(n - 1))
-                u%period = res%u_period_scatter
-                if (u%period > 0.0_dp) call invert_periods(rg, acc, per, amps, u, f, stat)
-                if (stat%code /= 0) return
-            end if
-            call period_budget(rg, acc, per, amps, u, f, stat)
-            if (stat%code /= 0) return
-            if (d%monte_carlo > 0) then
-                call period_monte_carlo(d, per, amps, u, f%i1, d%monte_carlo, &
-                                        d%seed, mean, sdev, stat, outdir, options, report, &
-                                        files)
-                if (stat%code /= 0) return
-                res%u_i1_mc = sdev
-                res%mc_mean = mean
-            end if
-            imin = minloc(amps, 1)
-            res%period_linear = per(imin)
-        end associate
-        res%from_record = .false.
-        res%periods_exact = is_torsion_rig(rg)
-        res%i1 = f%i1
-        res%u_i1 = f%u_i1
-        res%residual_rms = f%residual_rms
-        res%iterations = f%iterations
-        res%samples = n
-        res%np = 1
-        res%names(1) = 'I1'
-        res%p(1) = f%i1
-        res%u_p(1) = f%u_i1
-        res%model_periods = f%model_periods
-        res%budget = f%budget
-        res%i1_linear = linear_inertia(rg, res%period_linear)
-        res%linear_error = res%i1_linear/res%i1 - 1.0_dp
-    end subroutine identify_periods
+        end if
+        call period_budget(rg, acc, r%per, r%amps, u, f, stat, xp, r%u_each)
+        if (stat%code /= 0) return
+        r%i1 = f%i1
+        r%iterations = f%iterations
+        r%residual_rms = f%residual_rms
+        r%model_periods = f%model_periods
+        allocate (nu_rows(size(f%budget)))
+        nu_rows = NU_INFINITE
+        do j = 1, size(f%budget)
+            if (index(f%budget(j)%input, 'period(') == 1) nu_rows(j) = nu_per
+        end do
+        call split_rows(f%budget, nu_rows, x, per_trial, r)
+        ! the classical formula from the mean period at the smallest amplitude
+        amin = minval(r%amps)
+        sel = r%amps <= amin*(1.0_dp + 1.0e-9_dp)
+        r%period_linear = sum(r%per, sel)/count(sel)
+        r%i1_linear = linear_inertia(rg, r%period_linear)
+        r%amp_max = maxval(r%amps)
+        r%np = 1
+        r%names(1) = 'I1'
+        r%p(1) = r%i1
+    end subroutine release_periods
 
-    !> I1 (and the other parameters asked for) from a record: the fit, the first-order
-    !! budget, Monte Carlo when asked (its sweep checkpointed in outdir when given, see
-    !! run_identify).
-    module procedure identify_record
+    !> One release recorded: the fit (Levenberg-Marquardt on growing windows; with
+    !! loss = 'huber', reweighted three times), the covariance C = s^2 tau (J^T W J)^-1 (s^2
+    !! the residuals' mean square, not below 1 when the record states each sample's u; tau
+    !! their correlation time in samples: n/tau independent samples), the inputs'
+    !! sensitivities by the implicit-function form.
+    subroutine release_record(d, rg, rec, x, per_trial, r, stat)
+        type(deck_t), intent(in) :: d
+        type(rig_t), intent(in) :: rg
+        type(record_t), intent(in) :: rec
+        type(input_t), intent(in) :: x(:)
+        logical, intent(in) :: per_trial(5)
+        type(release_t), intent(out) :: r
+        type(status_t), intent(out) :: stat
         type(record_fit_t) :: prob
         type(lsq_result_t) :: fit
-        real(dp), allocatable :: p0(:), h(:), jac(:, :), cov(:, :), dpdx(:, :), ux(:), xval(:)
-        character(len=16), allocatable :: xname(:)
-        real(dp) :: s2
-        integer :: m, np, j, nx
-        m = size(rec%t)
+        real(dp), allocatable :: p0(:), h(:), jac(:, :), cov(:, :), dpdx(:, :), e(:)
+        real(dp), allocatable :: nu_rows(:)
+        type(budget_row_t), allocatable :: rows(:)
+        type(record_format_t) :: fmt
+        real(dp) :: s2, se, emean
+        integer :: m, np, j, ih, i0
+        r%from_record = .true.
+        r%rg = rg
+        r%rec = rec
         call fit_problem(d, rec, prob, p0, h)
+        prob%rg = rg
         np = prob%np
         call fit_record(prob, p0, h, fit, stat)
-        res%iterations = fit%iterations
-        res%evaluations = fit%evaluations
+        r%iterations = fit%iterations
+        r%evaluations = fit%evaluations
+        if (stat%code == 0 .and. trim(d%loss) == 'huber') then
+            do ih = 1, 3
+                i0 = prob%ifirst
+                call huber_weights(prob, fit%r/prob%hw(i0:prob%nuse))
+                call fit_record(prob, fit%p, h, fit, stat)
+                r%iterations = r%iterations + fit%iterations
+                r%evaluations = r%evaluations + fit%evaluations
+                if (stat%code /= 0) exit
+            end do
+        end if
         if (stat%code == ERR_NUMERIC) then
             call explain_fit_failure(stat, prob, fit)
             return
@@ -228,78 +520,270 @@ contains
             stat%msg = 'identify: the model at the start values: '//stat%msg
             return
         end if
+        m = prob%nres()
+        i0 = prob%ifirst
         ! the Jacobian at the estimate by central differences, the covariance
         allocate (jac(m, np))
         call lsq_jacobian(prob, fit%p, fit%r, h, jac, stat, central=.true.)
-        res%evaluations = res%evaluations + 2*np
+        r%evaluations = r%evaluations + 2*np
         if (stat%code /= 0) then
             stat%msg = 'identify: the Jacobian at the estimate: '//stat%msg
             return
         end if
+        s2 = fit%cost/(m - np)
+        r%sigma_stated = .false.
         if (rec%has_u) then
-            s2 = 1.0_dp
-        else
-            s2 = fit%cost/(m - np)
+            r%sigma_stated = s2 <= 1.0_dp
+            s2 = max(1.0_dp, s2)
         end if
-        call covariance(jac, s2, cov, stat)
+        r%tau = correlation_time(fit%r)
+        r%n_eff = m/r%tau
+        call covariance(jac, s2*r%tau, cov, stat)
         if (stat%code /= 0) then
             call explain_fit_failure(stat, prob, fit)
             return
         end if
-        call budget_inputs(d, xname, xval, ux)
-        nx = size(xval)
-        allocate (dpdx(np, nx))
-        do j = 1, nx
-            call input_sensitivity(prob, fit%p, jac, j, xval(j), dpdx(:, j), stat)
-            res%evaluations = res%evaluations + 2
+        allocate (dpdx(np, size(x)))
+        dpdx = 0.0_dp
+        do j = 1, size(x)
+            if (.not. (x(j)%u > 0.0_dp)) cycle
+            call input_sensitivity(prob, fit%p, jac, x(j), dpdx(:, j), stat)
+            r%evaluations = r%evaluations + 2
             if (stat%code /= 0) then
-                stat%msg = 'identify: sensitivity to '//trim(xname(j))//': '//stat%msg
+                stat%msg = 'identify: sensitivity to '//trim(x(j)%name)//': '//stat%msg
                 return
             end if
         end do
-        res%from_record = .true.
-        res%np = np
-        res%samples = m
-        res%sigma = sqrt(s2)
-        res%sigma_stated = rec%has_u
+        r%np = np
+        r%samples = m
+        r%ifirst = i0
+        r%sigma = sqrt(s2)
+        r%jac = jac
+        r%hw = prob%hw
         do j = 1, np
-            res%names(j) = PARAM_NAMES(prob%which(j))
-            res%p(j) = fit%p(j)
-            res%u_p(j) = sqrt(cov(j, j) + sum((dpdx(j, :)*ux)**2))
+            r%names(j) = PARAM_NAMES(prob%which(j))
+            r%p(j) = fit%p(j)
+            r%u_p(j) = sqrt(cov(j, j) + sum((dpdx(j, :)*x%u)**2))
+            r%u_p_own(j) = sqrt(cov(j, j) + sum((dpdx(j, :)*x%u)**2, &
+                                               mask=[(own_row(x(ih)%name, per_trial), &
+                                                      ih=1, size(x))]))
         end do
-        res%i1 = res%p(1)
-        res%u_i1 = res%u_p(1)
-        res%u_i1_fit = sqrt(cov(1, 1))
-        allocate (res%budget(nx + 1))
-        res%budget(1) = budget_row_t('record', sqrt(s2), sqrt(s2), res%u_i1_fit/sqrt(s2), &
-                                     res%u_i1_fit)
-        do j = 1, nx
-            res%budget(j + 1) = budget_row_t(xname(j), xval(j), ux(j), dpdx(1, j), &
-                                             abs(dpdx(1, j))*ux(j))
+        r%i1 = r%p(1)
+        r%u_fit = sqrt(cov(1, 1))
+        allocate (rows(0), nu_rows(0))
+        rows = [rows, budget_row_t('record', r%sigma, r%sigma*sqrt(r%tau), &
+                                   r%u_fit/(r%sigma*sqrt(r%tau)), r%u_fit)]
+        nu_rows = [nu_rows, max(1.0_dp, r%n_eff - np)]
+        do j = 1, size(x)
+            if (.not. (x(j)%u > 0.0_dp)) cycle
+            rows = [rows, budget_row_t(x(j)%name, x(j)%value, x(j)%u, dpdx(1, j), &
+                                       abs(dpdx(1, j))*x(j)%u)]
+            nu_rows = [nu_rows, NU_INFINITE]
         end do
-        res%residual_rms = sqrt(sum((fit%r/prob%w)**2)/m)
-        allocate (res%model(m))
-        res%model = fit%r/prob%w + rec%v
-        if (d%monte_carlo > 0) then
-            call record_monte_carlo(d, rec, fit%p, jac, res, stat, outdir, options, report, &
-                                    files)
-            if (stat%code /= 0) return
+        call split_rows(rows, nu_rows, x, per_trial, r)
+        e = fit%r/(prob%w(i0:prob%nuse)*prob%hw(i0:prob%nuse))
+        r%residual_rms = sqrt(sum(e**2)/m)
+        r%model = e + rec%v(i0:prob%nuse)
+        allocate (r%warnings(0))
+        fmt = record_format_of(d)
+        if (.not. estimated(d, 'bias')) then
+            ! an offset the fit does not model shows as a mean of the residuals
+            emean = sum(e)/m
+            se = r%residual_rms*sqrt(r%tau/m)
+            if (abs(emean) > 5.0_dp*se .and. abs(emean) > 2.0e-3_dp*maxval(abs(rec%v))) &
+                r%warnings = [warning_t('identify: the record''s residuals have a mean of '// &
+                    sci(-emean/rec%to_rad, 2)//' '//trim(fmt%units)//' ('// &
+                    fixed(abs(emean)/se, 0)//' standard errors): an offset of the '// &
+                    'instrument (a gyro''s bias, an angle''s zero) biases I1 and the '// &
+                    'damping; add bias to &measurement estimate')]
         end if
-        res%period_linear = mean_period(rec)
-        if (res%period_linear > 0.0_dp) then
-            res%i1_linear = linear_inertia(rig_of(d), res%period_linear)
-            res%linear_error = res%i1_linear/res%i1 - 1.0_dp
+        r%period_linear = mean_period(rec, i0)
+        if (r%period_linear > 0.0_dp) r%i1_linear = linear_inertia(rg, r%period_linear)
+        r%amp_max = d%amplitude
+        if (estimated(d, 'amplitude')) r%amp_max = r%p(findloc(prob%which(1:np), 4, 1))
+    end subroutine release_record
+
+    !> The releases pooled (module pooling), the common inputs' budget once (their
+    !! sensitivities averaged with the pool's weights), the tare and added inertia
+    !! subtracted, Welch-Satterthwaite's degrees of freedom and the coverage factor of 95 %;
+    !! then the checks of what no body or rig gives (ERR_MODEL).
+    subroutine combine(d, rels, x, ts, res, stat)
+        type(deck_t), intent(in) :: d
+        type(release_t), intent(in) :: rels(:)
+        type(input_t), intent(in) :: x(:)
+        type(trial_set_t), intent(in) :: ts
+        type(identify_result_t), intent(out) :: res
+        type(status_t), intent(out) :: stat
+        type(pooled_t) :: pool, pj
+        type(budget_row_t), allocatable :: rows(:)
+        real(dp), allocatable :: uc(:), nuc(:)
+        real(dp) :: cbar, u_total
+        integer :: n, j, r
+        stat%code = 0
+        n = size(rels)
+        call pool_releases(rels%i1, rels%u_own, rels%nu_own, pool)
+        res%n_trials = n
+        res%from_record = all(rels%from_record)
+        res%consistency = pool%consistency
+        res%birge_ratio = pool%birge
+        res%p_value = pool%p_value
+        res%u_i1_random = pool%u_random
+        res%u_i1_reproducibility = pool%u_reproducibility
+        if (n == 1) then
+            rows = rels(1)%own
+        else
+            rows = [budget_row_t('releases', pool%mean, pool%u_random, 1.0_dp, pool%u_random)]
         end if
-    end procedure identify_record
+        uc = [pool%u_random]
+        nuc = [pool%nu_random]
+        do j = 1, size(x)
+            if (.not. (x(j)%u > 0.0_dp) .or. own_row(x(j)%name, ts%per_trial)) cycle
+            cbar = 0.0_dp
+            do r = 1, n
+                cbar = cbar + pool%weight(r)*rels(r)%c(j)
+            end do
+            rows = [rows, budget_row_t(x(j)%name, x(j)%value, x(j)%u, cbar, abs(cbar)*x(j)%u)]
+            uc = [uc, abs(cbar)*x(j)%u]
+            nuc = [nuc, NU_INFINITE]
+        end do
+        res%i1_total = pool%mean
+        u_total = sqrt(sum(uc**2))
+        res%u_i1_total = u_total
+        res%i1 = pool%mean - d%tare_i1 - d%added_inertia
+        if (d%tare_i1 > 0.0_dp .or. d%u_tare_i1 > 0.0_dp) then
+            rows = [rows, budget_row_t('tare_I1', d%tare_i1, d%u_tare_i1, -1.0_dp, d%u_tare_i1)]
+            uc = [uc, d%u_tare_i1]
+            nuc = [nuc, NU_INFINITE]
+        end if
+        if (d%added_inertia > 0.0_dp .or. d%u_added_inertia > 0.0_dp) then
+            rows = [rows, budget_row_t('added_inertia', d%added_inertia, d%u_added_inertia, &
+                                       -1.0_dp, d%u_added_inertia)]
+            uc = [uc, d%u_added_inertia]
+            nuc = [nuc, NU_INFINITE]
+        end if
+        res%u_i1 = sqrt(sum(uc**2))
+        res%budget = rows
+        res%dof_eff = welch_satterthwaite(uc, nuc)
+        res%k = coverage_factor(res%dof_eff, 0.95_dp)
+        res%u_i1_expanded = res%k*res%u_i1
+        allocate (res%trial_label(n))
+        do r = 1, n
+            res%trial_label(r) = ts%t(r)%label
+        end do
+        res%trial_i1 = rels%i1
+        res%trial_u = rels%u_own
+        ! the classical formula, pooled like I1 (all that hung)
+        res%i1_linear = sum(pool%weight*rels%i1_linear)
+        res%linear_error = 0.0_dp
+        if (res%i1_linear > 0.0_dp) res%linear_error = res%i1_linear/res%i1_total - 1.0_dp
+        res%period_linear = rels(1)%period_linear
+        ! the parameters: I1, then (records) those estimated with it, pooled alike
+        res%np = rels(1)%np
+        res%names = rels(1)%names
+        res%p(1) = res%i1
+        res%u_p(1) = res%u_i1
+        do j = 2, res%np
+            if (n == 1) then
+                res%p(j) = rels(1)%p(j)
+                res%u_p(j) = rels(1)%u_p(j)
+            else
+                call pool_releases([(rels(r)%p(j), r=1, n)], [(rels(r)%u_p_own(j), r=1, n)], &
+                                   [(rels(r)%nu_own, r=1, n)], pj)
+                res%p(j) = pj%mean
+                res%u_p(j) = pj%u_random
+            end if
+        end do
+        res%iterations = sum(rels%iterations)
+        res%evaluations = sum(rels%evaluations)
+        res%samples = sum(rels%samples)
+        res%residual_rms = sqrt(sum(rels%residual_rms**2*rels%samples)/max(1, res%samples))
+        res%sigma = rels(1)%sigma
+        res%sigma_stated = rels(1)%sigma_stated
+        res%correlation_time = rels(1)%tau
+        res%n_effective = sum(rels%n_eff)
+        res%u_i1_fit = rels(1)%u_fit
+        res%ifirst = rels(1)%ifirst
+        res%u_period_scatter = rels(1)%u_scatter
+        if (n == 1 .and. .not. rels(1)%from_record) res%model_periods = rels(1)%model_periods
+        if (n == 1 .and. rels(1)%from_record) res%model = rels(1)%model
+        res%periods_exact = all(rels%exact .or. rels%from_record)
+        if (res%from_record) then
+            res%period_model = 'record'
+        else
+            res%period_model = trim(merge('exact torsion', 'simulated    ', res%periods_exact))
+        end if
+        allocate (res%warnings(0))
+        do r = 1, n
+            if (allocated(rels(r)%warnings)) res%warnings = [res%warnings, rels(r)%warnings]
+        end do
+        if (trim(pool%consistency) == 'inconsistent') res%warnings = [res%warnings, &
+            warning_t('identify: the '//itoa(n)//' releases disagree beyond their own '// &
+            'uncertainties (chi-square p = '//sci(pool%p_value, 2)//', Birge ratio '// &
+            fixed(pool%birge, 2)//'): their scatter is in u_I1 (u_I1_reproducibility = '// &
+            sci(pool%u_reproducibility, 2)//'); find what changed between releases')]
+        call check_physical(d, rels, res, stat)
+    end subroutine combine
+
+    !> What no rigid body or rig can give, refused (ERR_MODEL, exit 4) with the likely
+    !! cause: at amplitudes up to 90 degrees an I1 more than 50 % from the classical
+    !! formula's; an I1 of all that hung more than 10 % above I2 + I3 (the deck's), or
+    !! 10 % below |I2 - I3|, when the deck gives inertia.  Within those margins of the
+    !! triangle inequality (a lamina has I1 = I2 + I3): a warning.
+    subroutine check_physical(d, rels, res, stat)
+        type(deck_t), intent(in) :: d
+        type(release_t), intent(in) :: rels(:)
+        type(identify_result_t), intent(inout) :: res
+        type(status_t), intent(inout) :: stat
+        real(dp) :: s23, d23, i1
+        character(len=*), parameter :: CAUSES_HIGH = 'likely: periods typed as the totals '// &
+            'of several cycles (give &measurement cycles = N), b or b_prime typed as half '// &
+            'the spacing (they are the full distances between the two cables), periods or '// &
+            'lengths in other units than the deck''s, or I2, I3 too rough'
+        character(len=*), parameter :: CAUSES_LOW = 'likely: b or b_prime typed as twice '// &
+            'the spacing, half periods typed as periods, lengths or periods in other units '// &
+            'than the deck''s, or I2, I3 too rough'
+        i1 = res%i1_total
+        if (maxval(rels%amp_max) <= 90.0_dp .and. res%i1_linear > 0.0_dp) then
+            if (abs(i1/res%i1_linear - 1.0_dp) > LINEAR_GAP_MAX) then
+                call set_error(stat, ERR_MODEL, 'identify: I1 = '//sci(i1, 4)//' from the '// &
+                    'model is '//fixed(100.0_dp*abs(i1/res%i1_linear - 1.0_dp), 0)//' % from '// &
+                    'the classical formula''s '//sci(res%i1_linear, 4)//' (period '// &
+                    sci(res%period_linear, 5)//' s), at amplitudes up to 90 deg, where they '// &
+                    'differ by 20 % at most: check the record''s units (t in s, '// &
+                    'record_units), the lengths and the release (&start)')
+                return
+            end if
+        end if
+        if (.not. deck_gave(d, 'inertia')) return
+        s23 = d%inertia(2) + d%inertia(3)
+        d23 = abs(d%inertia(2) - d%inertia(3))
+        if (i1 > TRIANGLE_MARGIN*s23) then
+            call set_error(stat, ERR_MODEL, 'identify: I1 = '//sci(i1, 4)//' is '// &
+                fixed(i1/s23, 2)//' times I2 + I3 = '//sci(s23, 4)//' (&body inertia): no '// &
+                'rigid body has I1 > I2 + I3; '//CAUSES_HIGH)
+        else if (i1 > s23) then
+            res%warnings = [res%warnings, warning_t('identify: I1 = '//sci(i1, 4)// &
+                ' exceeds I2 + I3 = '//sci(s23, 4)//' by '//fixed(100.0_dp*(i1/s23 - 1.0_dp), &
+                1)//' % (a lamina reaches I2 + I3, a thin rod nearly): check I2, I3 and the '// &
+                'rig; '//CAUSES_HIGH)]
+        else if (d23 > 0.0_dp .and. i1 < d23/TRIANGLE_MARGIN) then
+            call set_error(stat, ERR_MODEL, 'identify: I1 = '//sci(i1, 4)//' is below |I2 '// &
+                '- I3| = '//sci(d23, 4)//' (&body inertia) by '// &
+                fixed(100.0_dp*(1.0_dp - i1/d23), 0)//' %: no rigid body has I1 < |I2 - '// &
+                'I3|; '//CAUSES_LOW)
+        else if (i1 < d23) then
+            res%warnings = [res%warnings, warning_t('identify: I1 = '//sci(i1, 4)// &
+                ' is below |I2 - I3| = '//sci(d23, 4)//': check I2, I3 and the rig; '// &
+                CAUSES_LOW)]
+        end if
+    end subroutine check_physical
 
     !> Monte Carlo of a record fit (see the module header) as a sweep (module monte_carlo):
-    !! res%u_i1_mc, res%mc_mean.  phat, jac: the estimate and its Jacobian, res%u_p and
-    !! res%sigma its first-order u and s; the payload carries them (and the record's
-    !! CRC-64) to the other ranks.
-    subroutine record_monte_carlo(d, rec, phat, jac, res, stat, outdir, options, report, files)
+    !! res%u_i1_mc, res%mc_mean.  The payload carries the estimate, its first-order u, s,
+    !! the Jacobian, the robust weights (and the record's CRC-64) to the other ranks.
+    subroutine record_monte_carlo(d, r, res, stat, outdir, options, report, files)
         type(deck_t), intent(in) :: d
-        type(record_t), intent(in) :: rec
-        real(dp), intent(in) :: phat(:), jac(:, :)
+        type(release_t), intent(in) :: r
         type(identify_result_t), intent(inout) :: res
         type(status_t), intent(out) :: stat
         character(len=*), intent(in), optional :: outdir
@@ -310,18 +794,18 @@ contains
         real(dp), allocatable :: payload(:), mean(:), sdev(:)
         integer(int64) :: crc
         integer :: np
-        np = size(phat)
+        np = r%np
         call file_crc(record_file(d), crc, stat)
         if (stat%code /= 0) return
-        payload = [crc_parts(crc), res%sigma, real(np, dp), phat, res%u_p(1:np), &
-                   reshape(jac, [size(jac)])]
-        call record_mc_task(d, rec, payload, task)
+        payload = [crc_parts(crc), r%sigma*sqrt(r%tau), real(np, dp), r%p(1:np), &
+                   r%u_p(1:np), reshape(r%jac, [size(r%jac)]), r%hw]
+        call record_mc_task(d, r%rec, deck_inputs(d, .true.), payload, task)
         allocate (mean(np), sdev(np))
         call monte_carlo_run(task, d, d%monte_carlo, payload, mean, sdev, stat, outdir, &
                              options, report, files)
         if (stat%code /= 0) return
-        res%mc_mean = mean(1)
-        res%u_i1_mc = sdev(1)
+        res%mc_mean = mean(1) - (res%i1_total - res%i1)
+        res%u_i1_mc = sqrt(sdev(1)**2 + d%u_tare_i1**2 + d%u_added_inertia**2)
     end subroutine record_monte_carlo
 
     !> The task of identify's Monte Carlo (sweep 'identify_mc') as the other ranks of an MPI
@@ -340,7 +824,7 @@ contains
             end select
             return
         end if
-        call read_record(d, rec, stat)
+        call read_record_file(record_file(d), record_format_of(d), rec, stat)
         if (stat%code == 0) call file_crc(record_file(d), crc, stat)
         if (stat%code /= 0) return
         if (crc /= crc_join(payload(1:2))) then
@@ -352,7 +836,7 @@ contains
         allocate (record_mc_task_t :: task)
         select type (task)
         type is (record_mc_task_t)
-            call record_mc_task(d, rec, payload, task)
+            call record_mc_task(d, rec, deck_inputs(d, .true.), payload, task)
         end select
     end procedure identify_mc_task
 
@@ -366,8 +850,10 @@ contains
         integer :: u, ios, j
         character(len=24) :: f(4)
         if (.not. all_finite([res%i1, res%u_i1, res%i1_linear, res%linear_error, &
-                              res%residual_rms, res%p, res%u_p, res%u_i1_mc, &
-                              res%budget%value, res%budget%u, res%budget%sensitivity])) then
+                              res%residual_rms, res%p, res%u_p, res%u_i1_mc, res%k, &
+                              res%u_i1_expanded, res%dof_eff, res%i1_total, res%u_i1_total, &
+                              res%trial_i1, res%trial_u, res%budget%value, res%budget%u, &
+                              res%budget%sensitivity])) then
             call set_error(stat, ERR_NUMERIC, 'identify: a result is not finite')
             return
         end if
@@ -377,10 +863,28 @@ contains
         write (u, '(a)', iostat=ios) '# bifilar identify: '//trim(d%title)
         if (ios == 0) write (u, '(a)', iostat=ios) '# I1 and its standard uncertainties in the '// &
             'deck''s units (mass x length^2); c_v, c_q in torque per rate (squared), '// &
-            'amplitude in degrees, t0 in s'
+            'amplitude in degrees, t0 in s, bias in rad or rad/s'
+        if (ios == 0) write (u, '(a)', iostat=ios) '# b and b_prime are the full distances '// &
+            'between the two cables (at the support, at the body); U_I1 = k u_I1 covers 95 %'
+        if (ios == 0) write (u, '(a)', iostat=ios) '# I1_linear = m g b b_prime T^2 / '// &
+            '(16 pi^2 l), l = (l + l_prime)/2, T the mean period at the smallest amplitude '// &
+            '(all that hung: compare with I1_total)'
         call deck_echo(d, u, ios)
         call write_kv(u, 'I1', res%i1, ios)
         call write_kv(u, 'u_I1', res%u_i1, ios)
+        call write_kv(u, 'U_I1', res%u_i1_expanded, ios)
+        call write_kv(u, 'k', res%k, ios)
+        if (res%dof_eff >= NU_INFINITE) then
+            call write_kv(u, 'dof_eff', 'inf', ios)
+        else
+            call write_kv(u, 'dof_eff', res%dof_eff, ios)
+        end if
+        if (d%tare_i1 > 0.0_dp .or. d%added_inertia > 0.0_dp .or. d%u_tare_i1 > 0.0_dp .or. &
+            d%u_added_inertia > 0.0_dp) then
+            call write_kv(u, 'I1_total', res%i1_total, ios)
+            call write_kv(u, 'u_I1_total', res%u_i1_total, ios)
+            if (d%tare_mass > 0.0_dp) call write_kv(u, 'mass_body', d%mass - d%tare_mass, ios)
+        end if
         if (d%monte_carlo > 0) call write_kv(u, 'u_I1_monte_carlo', res%u_i1_mc, ios)
         call write_kv(u, 'I1_linear', res%i1_linear, ios)
         call write_kv(u, 'linear_error', res%linear_error, ios)
@@ -388,6 +892,14 @@ contains
             call write_kv(u, trim(res%names(j)), res%p(j), ios)
             call write_kv(u, 'u_'//trim(res%names(j)), res%u_p(j), ios)
         end do
+        call write_kv(u, 'n_trials', res%n_trials, ios)
+        call write_kv(u, 'consistency', trim(res%consistency), ios)
+        call write_kv(u, 'u_I1_reproducibility', res%u_i1_reproducibility, ios)
+        if (res%birge_ratio >= 0.0_dp) then
+            call write_kv(u, 'birge_ratio', res%birge_ratio, ios)
+            call write_kv(u, 'consistency_p_value', res%p_value, ios)
+        end if
+        call write_kv(u, 'period_model', trim(res%period_model), ios)
         call write_kv(u, 'residual_rms', res%residual_rms, ios)
         call write_kv(u, 'iterations', res%iterations, ios)
         call write_kv(u, 'cpu_seconds', res%cpu_seconds, ios)
@@ -395,28 +907,40 @@ contains
             call write_kv(u, 'mode', 'record', ios)
             call write_kv(u, 'quantity', trim(d%quantity), ios)
             call write_kv(u, 'samples', res%samples, ios)
-            call write_kv(u, 'sigma', res%sigma, ios)
-            call write_kv(u, 'sigma_source', trim(merge('stated   ', 'residuals', &
-                                                        res%sigma_stated)), ios)
-            call write_kv(u, 'u_I1_fit', res%u_i1_fit, ios)
+            if (res%n_trials == 1) then
+                call write_kv(u, 'sigma', res%sigma, ios)
+                call write_kv(u, 'sigma_source', trim(merge('stated   ', 'residuals', &
+                                                            res%sigma_stated)), ios)
+                call write_kv(u, 'residual_correlation_time', res%correlation_time, ios)
+                call write_kv(u, 'n_effective', res%n_effective, ios)
+                call write_kv(u, 'u_I1_fit', res%u_i1_fit, ios)
+                call write_kv(u, 'mean_period', res%period_linear, ios)
+            end if
             call write_kv(u, 'model_evaluations', res%evaluations, ios)
-            call write_kv(u, 'mean_period', res%period_linear, ios)
         else
             call write_kv(u, 'mode', 'periods', ios)
-            call write_kv(u, 'period_model', trim(merge('exact torsion', 'simulated    ', &
-                                                        res%periods_exact)), ios)
-            do j = 1, res%samples
-                call write_kv(u, 'model_period('//itoa(j)//')', res%model_periods(j), ios)
+            if (res%n_trials == 1) then
+                do j = 1, size(res%model_periods)
+                    call write_kv(u, 'model_period('//itoa(j)//')', res%model_periods(j), ios)
+                end do
+                call write_kv(u, 'linear_period', res%period_linear, ios)
+                if (res%u_period_scatter >= 0.0_dp) &
+                    call write_kv(u, 'u_period_from_scatter', res%u_period_scatter, ios)
+            end if
+        end if
+        if (res%n_trials > 1) then
+            do j = 1, res%n_trials
+                call write_kv(u, 'trial('//itoa(j)//')', trim(res%trial_label(j)), ios)
+                call write_kv(u, 'I1_trial('//itoa(j)//')', res%trial_i1(j), ios)
+                call write_kv(u, 'u_I1_trial('//itoa(j)//')', res%trial_u(j), ios)
             end do
-            call write_kv(u, 'linear_period', res%period_linear, ios)
-            if (res%u_period_scatter >= 0.0_dp) &
-                call write_kv(u, 'u_period_from_scatter', res%u_period_scatter, ios)
         end if
         if (d%monte_carlo > 0) then
             call write_kv(u, 'monte_carlo_samples', d%monte_carlo, ios)
             call write_kv(u, 'monte_carlo_seed', d%seed, ios)
             call write_kv(u, 'I1_monte_carlo_mean', res%mc_mean, ios)
         end if
+        call write_kv(u, 'warnings', size(res%warnings), ios)
         if (ios == 0) write (u, '(a)', iostat=ios) '# budget of I1 (first order, GUM): input '// &
             'value u sensitivity contribution (contribution = |sensitivity| u; u_I1 is '// &
             'their root sum of squares)'
@@ -431,34 +955,133 @@ contains
         call files%close(u, ios, stat)
     end subroutine write_identify
 
-    !> OUTDIR/NAME.fit.dat: t measured model residual (the record's units).
-    subroutine write_fit(d, outdir, rec, res, files, stat)
+    !> OUTDIR/NAME.fit.dat: t measured model residual in the record's units, one block
+    !! (two blank lines between) per release, from its first sample fitted.
+    subroutine write_fit(d, outdir, rels, files, stat)
         type(deck_t), intent(in) :: d
         character(len=*), intent(in) :: outdir
-        type(record_t), intent(in) :: rec
-        type(identify_result_t), intent(in) :: res
+        type(release_t), intent(in) :: rels(:)
         type(out_files_t), intent(inout) :: files
         type(status_t), intent(out) :: stat
-        integer :: u, ios, i
+        integer :: u, ios, i, r, i0
         character(len=96) :: row
         character(len=:), allocatable :: unit_name
+        real(dp) :: s
+        type(record_format_t) :: fmt
+        fmt = record_format_of(d)
         call files%open(outdir//'/'//d%name//'.fit.dat', u, stat)
         if (stat%code /= 0) return
-        unit_name = trim(merge('theta4 (rad)', 'W (rad/s)   ', trim(d%quantity) == 'angle'))
+        unit_name = trim(merge('theta4', 'W     ', trim(d%quantity) == 'angle'))//' ('// &
+            trim(fmt%units)//')'
         ios = 0
         write (u, '(a)', iostat=ios) '# bifilar identify fit: '//trim(d%title)
-        if (ios == 0) write (u, '(a)', iostat=ios) '# t in s from release; measured, model '// &
-            'and residual (measured - model) are '//unit_name
+        if (ios == 0) write (u, '(a)', iostat=ios) '# t in s as recorded; measured, model '// &
+            'and residual (measured - model) are '//unit_name//'; one block per release'
         call deck_echo(d, u, ios)
         if (ios == 0) write (u, '(a)', iostat=ios) '# t measured model residual'
-        do i = 1, size(rec%t)
-            call es_field(rec%t(i), 15, row(1:24))
-            call es_field(rec%v(i), 15, row(25:48))
-            call es_field(res%model(i), 15, row(49:72))
-            call es_field(rec%v(i) - res%model(i), 15, row(73:96))
-            if (ios == 0) write (u, '(a)', iostat=ios) row
+        do r = 1, size(rels)
+            if (r > 1 .and. ios == 0) write (u, '(/)', iostat=ios)
+            s = 1.0_dp/rels(r)%rec%to_rad
+            i0 = rels(r)%ifirst
+            do i = i0, i0 + size(rels(r)%model) - 1
+                call es_field(rels(r)%rec%t(i), 15, row(1:24))
+                call es_field(s*rels(r)%rec%v(i), 15, row(25:48))
+                call es_field(s*rels(r)%model(i - i0 + 1), 15, row(49:72))
+                call es_field(s*(rels(r)%rec%v(i) - rels(r)%model(i - i0 + 1)), 15, row(73:96))
+                if (ios == 0) write (u, '(a)', iostat=ios) row
+            end do
         end do
         call files%close(u, ios, stat)
     end subroutine write_fit
+
+    !> OUTDIR/NAME.periods.dat, the figure of periods against amplitude.  Block 0, the
+    !! timed periods: release, amplitude (deg), period per cycle (s), its u, the model's
+    !! period at I1_total.  Then one block per rig: amplitude, the model's period at
+    !! I1_total, the classical formula's (independent of amplitude), 41 amplitudes from 0 to
+    !! 1.1 times the largest timed (at most 179 deg).  Computed whole before the file opens.
+    subroutine write_periods(d, outdir, rels, res, files, stat)
+        type(deck_t), intent(in) :: d
+        character(len=*), intent(in) :: outdir
+        type(release_t), intent(in) :: rels(:)
+        type(identify_result_t), intent(in) :: res
+        type(out_files_t), intent(inout) :: files
+        type(status_t), intent(out) :: stat
+        integer, parameter :: NA = 41
+        integer :: u, ios, i, r, q, k
+        character(len=104) :: row
+        real(dp) :: amax, tcl(size(rels)), curve(NA, 2, size(rels))
+        logical :: first(size(rels))
+        type(release_t), allocatable :: tm(:)
+        amax = 0.0_dp
+        do r = 1, size(rels)
+            amax = max(amax, maxval(rels(r)%amps))
+        end do
+        amax = min(179.0_dp, 1.1_dp*amax)
+        ! the model's periods at the timed amplitudes, and the curves of each rig
+        allocate (tm(size(rels)))
+        do r = 1, size(rels)
+            allocate (tm(r)%per(size(rels(r)%per)))
+            do i = 1, size(rels(r)%per)
+                call rig_period_s(rels(r)%rg, accuracy_of(d), res%i1_total, rels(r)%amps(i), &
+                                  tm(r)%per(i), stat)
+                if (stat%code /= 0) exit
+            end do
+            first(r) = .true.
+            do q = 1, r - 1
+                if (same_rig(rels(q)%rg, rels(r)%rg)) first(r) = .false.
+            end do
+            if (.not. first(r) .or. stat%code /= 0) cycle
+            associate (g => rels(r)%rg)
+                tcl(r) = 4.0_dp*pi*sqrt(res%i1_total*0.5_dp*(g%l + g%l_prime)/ &
+                                        (g%mass*g%g*g%b*g%b_prime))
+            end associate
+            do k = 1, NA
+                curve(k, 1, r) = max(0.25_dp, amax*(k - 1)/real(NA - 1, dp))
+                call rig_period_s(rels(r)%rg, accuracy_of(d), res%i1_total, curve(k, 1, r), &
+                                  curve(k, 2, r), stat)
+                if (stat%code /= 0) exit
+            end do
+        end do
+        if (stat%code /= 0) then
+            stat%msg = 'identify, the model''s periods of the figure: '//stat%msg
+            return
+        end if
+        call files%open(outdir//'/'//d%name//'.periods.dat', u, stat)
+        if (stat%code /= 0) return
+        ios = 0
+        write (u, '(a)', iostat=ios) '# bifilar identify periods: '//trim(d%title)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# block 0: release amplitude(deg) '// &
+            'period(s, per cycle) u_period model_period; then one block per rig: '// &
+            'amplitude(deg) model_period classical_period (the model at I1_total = '// &
+            trim(sci(res%i1_total, 6))//')'
+        call deck_echo(d, u, ios)
+        do r = 1, size(rels)
+            do i = 1, size(rels(r)%per)
+                write (row(1:8), '(i8)') r
+                call es_field(rels(r)%amps(i), 15, row(9:32))
+                call es_field(rels(r)%per(i), 15, row(33:56))
+                call es_field(rels(r)%u_each(i), 15, row(57:80))
+                call es_field(tm(r)%per(i), 15, row(81:104))
+                if (ios == 0) write (u, '(a)', iostat=ios) row
+            end do
+        end do
+        do r = 1, size(rels)
+            if (.not. first(r)) cycle
+            if (ios == 0) write (u, '(/)', iostat=ios)
+            do k = 1, NA
+                call es_field(curve(k, 1, r), 15, row(1:24))
+                call es_field(curve(k, 2, r), 15, row(25:48))
+                call es_field(tcl(r), 15, row(49:72))
+                if (ios == 0) write (u, '(a)', iostat=ios) row(1:72)
+            end do
+        end do
+        call files%close(u, ios, stat)
+    contains
+        pure logical function same_rig(a1, a2)
+            type(rig_t), intent(in) :: a1, a2
+            same_rig = a1%l == a2%l .and. a1%l_prime == a2%l_prime .and. a1%b == a2%b .and. &
+                       a1%b_prime == a2%b_prime .and. a1%mass == a2%mass
+        end function same_rig
+    end subroutine write_periods
 
 end submodule identify_impl

@@ -8,6 +8,7 @@
 !! points of sweeps (serve_sweeps): for each sweep rank 0 announces, they read the deck,
 !! build the same task and take part (module sweep_engine).
 module driver
+    use, intrinsic :: iso_fortran_env, only: error_unit
     use kinds, only: dp
     use status, only: status_t, STATUS_OK, ERR_DECK, exit_status_of, status_meaning
     use text, only: itoa, sci, fixed
@@ -124,9 +125,18 @@ contains
             if (analysis_requested(d, 'identify')) then
                 call run_identify(d, outdir, idr, stat, files, options, rep)
                 if (stat%code /= STATUS_OK) exit run
-                line = line//' identify I1 = '//sci(idr%i1, 5)//' +- '//sci(idr%u_i1, 2)
+                line = line//' identify I1 = '//sci(idr%i1, 5)//' ± '// &
+                    sci(idr%u_i1_expanded, 2)//' (k = '//fixed(idr%k, 1)//', 95 %)'
+                do k = 2, idr%np
+                    if (idr%names(k) == 'c_v' .or. idr%names(k) == 'c_q') line = line// &
+                        ', '//trim(idr%names(k))//' = '//sci(idr%p(k), 3)//' ± '// &
+                        sci(idr%k*idr%u_p(k), 2)
+                end do
+                if (idr%n_trials > 1) line = line//', '//itoa(idr%n_trials)//' releases '// &
+                    trim(idr%consistency)
+                line = line//', period model '//trim(idr%period_model)
                 if (idr%u_i1_mc >= 0.0_dp) then
-                    line = line//' (Monte Carlo '//sci(idr%u_i1_mc, 2)//' from '// &
+                    line = line//' (Monte Carlo u '//sci(idr%u_i1_mc, 2)//' from '// &
                         itoa(d%monte_carlo)//' samples, '//fixed(rep%wall_seconds, 2)//' s'// &
                         ranks_note(rep)//resume_note(rep)//')'
                 end if
@@ -137,6 +147,9 @@ contains
                 else
                     line = line//', no period in the record for the linear formula'
                 end if
+                do k = 1, size(idr%warnings)
+                    call warn(path, idr%warnings(k)%s)
+                end do
                 line = line//', '//itoa(idr%iterations)//' iterations;'
             end if
             if (analysis_requested(d, 'simulate')) then
@@ -164,6 +177,14 @@ contains
         end block run
         call files%discard()                    ! a failed analysis: remove every file
     end subroutine run_deck
+
+    !> A warning: one line on stderr naming the deck (the run goes on, exit 0).
+    subroutine warn(deck_path, msg)
+        character(len=*), intent(in) :: deck_path   !! the deck as given
+        character(len=*), intent(in) :: msg         !! what is suspicious, what to check
+        write (error_unit, '(a)') 'bifilar: warning: '//deck_path//': '//msg
+        flush (error_unit)
+    end subroutine warn
 
     !> The other ranks of an MPI run: for each sweep rank 0 announces, read its deck, build
     !! its task and compute points, until rank 0 ends the program.

@@ -1070,7 +1070,7 @@ contains
     end function analysis_requested
 
     !> True when the blank-separated word `word` (e.g. 'c_q') is in &measurement estimate.
-    logical function estimated(d, word)
+    pure logical function estimated(d, word)
         type(deck_t), intent(in) :: d               !! the deck
         character(len=*), intent(in) :: word        !! one of ESTIMATES_ALLOWED
         estimated = index(' '//lower(d%estimate)//' ', ' '//lower(trim(word))//' ') > 0

@@ -13,6 +13,9 @@
 !! * Data: every data line has the same number of fields, each a finite number (a field of
 !!   more than 64 characters, NaN, Inf or a value beyond the range of real(dp) is refused);
 !!   a line longer than LINE_MAX characters is refused.
+!! * Text columns (read_table's text_columns, e.g. a table of releases naming a record
+!!   file): the first line is then the header and must name every column; the fields of
+!!   the columns named there are kept as text (tab%text), the others must be numbers.
 !! Failures are ERR_DECK statuses whose message names the line and what is wrong; the
 !! caller puts the file's name before it.
 module tables
@@ -36,6 +39,8 @@ module tables
         real(dp), allocatable :: v(:, :)            !! (nrow, ncol) the values
         integer, allocatable :: line(:)             !! (nrow) each row's line in the file
         type(column_name_t), allocatable :: names(:)    !! (ncol) lower case; '' when none
+        !> (nrow, ncol) the fields of the text columns ('' in the others), with text_columns
+        type(column_name_t), allocatable :: text(:, :)
         character :: separator = ' '                !! ' ', ',' or ';'
         logical :: decimal_comma = .false.          !! ';' separated with a comma for a point
     contains
@@ -51,18 +56,22 @@ contains
     !> Read the table at path (max_rows rows at most; 0: no limit).  A file that is not a
     !! regular file (a folder, a device such as /dev/zero) ends at its first line: read_line
     !! stops after LINE_MAX characters, and a folder cannot be read.
-    subroutine read_table(path, tab, stat, max_rows)
+    subroutine read_table(path, tab, stat, max_rows, text_columns)
         character(len=*), intent(in) :: path        !! the file
         type(table_t), intent(out) :: tab
         type(status_t), intent(out) :: stat         !! ERR_DECK naming the line
         integer, intent(in), optional :: max_rows   !! most data rows (0 or absent: no limit)
+        !> names (lower case) of the columns whose fields are text; the header is required
+        character(len=*), intent(in), optional :: text_columns(:)
         character(len=:), allocatable :: line
         character(len=512) :: msg
         type(column_name_t), allocatable :: f(:), header(:)
         real(dp), allocatable :: v(:, :), x(:)
         integer, allocatable :: ln(:)
+        logical, allocatable :: is_text(:)
+        type(column_name_t), allocatable :: txt(:, :)
         integer :: u, ios, nline, n, nmax, k
-        logical :: halting(NTRAPS), numeric, is_dir
+        logical :: halting(NTRAPS), numeric, is_dir, with_text
         stat%code = STATUS_OK
         nmax = 0
         if (present(max_rows)) nmax = max_rows
@@ -77,7 +86,8 @@ contains
             call set_error(stat, ERR_DECK, 'cannot open it: '//trim(msg))
             return
         end if
-        allocate (header(0), v(1, 1024), ln(1024))
+        allocate (header(0), v(1, 1024), ln(1024), is_text(0))
+        with_text = present(text_columns)
         n = 0
         nline = 0
         call traps_off(halting)
@@ -99,6 +109,30 @@ contains
             if (len_trim(line) == 0) cycle
             if (n == 0) call choose_separator(line, tab)
             call split_fields(line, tab%separator, f)
+            if (with_text) then
+                if (size(header) == 0) then
+                    ! the header: it names the columns, and which hold text
+                    call to_numbers(f, tab%decimal_comma, x, numeric)
+                    if (numeric) then
+                        call fail('line '//itoa(nline)//' is numbers; allowed: a first '// &
+                                  'line (header) naming the columns')
+                        return
+                    end if
+                    header = f
+                    allocate (txt(size(f), 1024))
+                    is_text = [(any(lower(trim(adjustl(f(k)%s))) == text_columns), &
+                                k=1, size(f))]
+                    cycle
+                end if
+                if (size(f) /= size(header)) then
+                    call fail('line '//itoa(nline)//': '//itoa(size(f))//' fields where '// &
+                              'the header names '//itoa(size(header))//'; allowed: one '// &
+                              'field per column on every line')
+                    return
+                end if
+                call keep_text(f, n + 1)
+                where (is_text) f = zero_field()
+            end if
             call to_numbers(f, tab%decimal_comma, x, numeric)
             if (.not. numeric) then
                 if (n > 0) then
@@ -146,6 +180,7 @@ contains
         end if
         tab%v = transpose(v(:, 1:n))
         tab%line = ln(1:n)
+        if (with_text) tab%text = transpose(txt(:, 1:n))
         allocate (tab%names(tab%ncol))
         do k = 1, tab%ncol
             tab%names(k)%s = ''
@@ -158,6 +193,23 @@ contains
             call set_error(stat, ERR_DECK, what)
             close (u)
         end subroutine fail
+        !> The text columns' fields of data row i (the others '').
+        subroutine keep_text(ff, i)
+            type(column_name_t), intent(in) :: ff(:)
+            integer, intent(in) :: i
+            integer :: j
+            if (i > size(txt, 2)) txt = reshape(txt, [size(txt, 1), 2*size(txt, 2)], &
+                                                pad=txt(:, 1:1))
+            do j = 1, size(ff)
+                txt(j, i)%s = ''
+                if (is_text(j)) txt(j, i)%s = ff(j)%s
+            end do
+        end subroutine keep_text
+        !> A field that reads as 0 (a text column's place among the numbers).
+        elemental function zero_field() result(z)
+            type(column_name_t) :: z
+            z%s = '0'
+        end function zero_field
     end subroutine read_table
 
     !> The column named `name` (lower case), 0 when the table has none of that name.

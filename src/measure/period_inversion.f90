@@ -52,8 +52,8 @@ module period_inversion
     use text, only: itoa, fixed
     use geometry, only: pendulum_t
     use deck, only: deck_t
-    use rig, only: rig_t, accuracy_t, rig_of, accuracy_of, make_pendulum, start_state, &
-        raised_start, move_b_prime
+    use rig, only: rig_t, start_t, accuracy_t, rig_of, accuracy_of, make_pendulum, &
+        start_state, raised_start, move_b_prime
     use kane_run, only: kane_run_start, kane_run_t
     use floquet, only: check_torsion_scene, torsion_period
     use random, only: rng_t, rng_stream, rng_normal
@@ -61,6 +61,7 @@ module period_inversion
     use run_loop, only: stepped_model_t, row_sink_t, drive
     use output_io, only: out_files_t
     use budget, only: input_u_t, budget_row_t
+    use inputs, only: input_t, set_input, no_effect_on_torsion, deck_inputs
     use sweep_engine, only: sweep_options_t, sweep_report_t
     use monte_carlo, only: mc_task_t, monte_carlo_run
     implicit none
@@ -88,7 +89,9 @@ module period_inversion
         type(rig_t) :: rg                       !! the rig
         type(accuracy_t) :: acc                 !! its runs' accuracy (simulated periods)
         real(dp), allocatable :: periods(:), amps(:)    !! measurements (s, degrees)
+        real(dp), allocatable :: cycles(:)      !! the cycles each period's time spans
         type(input_u_t) :: u                    !! standard uncertainties
+        type(input_t), allocatable :: x(:)      !! the rig's inputs (module inputs)
         real(dp) :: i1_start = 0.0_dp           !! start of each inversion
         integer :: seed = 1
     contains
@@ -307,7 +310,7 @@ contains
     !> I1 by weighted least squares from periods (s) measured at peak amplitudes (degrees).
     !! Starts from rg%inertia(1).  ERR_DECK for a period no positive I1 can give (or not a
     !! torsion scene); ERR_NUMERIC when Gauss-Newton does not converge.
-    subroutine invert_periods(rg, acc, periods, amps, u, fit, stat)
+    subroutine invert_periods(rg, acc, periods, amps, u, fit, stat, u_each)
         type(rig_t), intent(in) :: rg           !! the rig; inertia(1) is the start guess
         type(accuracy_t), intent(in) :: acc     !! accuracy of simulated periods
         real(dp), intent(in) :: periods(:)      !! measured full periods (s)
@@ -315,7 +318,9 @@ contains
         type(input_u_t), intent(in) :: u        !! uncertainties (weights from period, amplitude)
         type(period_fit_t), intent(out) :: fit
         type(status_t), intent(out) :: stat
+        real(dp), intent(in), optional :: u_each(:) !! each period's u (s), else u%period
         real(dp) :: w(size(periods)), tm(size(periods)), g(size(periods)), r(size(periods))
+        real(dp) :: up(size(periods))
         real(dp) :: scale, i1, di, s0, s1, ilo, tmin, ta, tb, h, di_full
         real(dp) :: r_acc(size(periods))
         integer :: i, it, half
@@ -350,13 +355,15 @@ contains
         i1 = rg%inertia(1)
         if (.not. (i1 > ilo)) i1 = scale
         w = 1.0_dp
-        if (u%period > 0.0_dp .or. u%amplitude > 0.0_dp) then
+        up = u%period
+        if (present(u_each)) up = u_each
+        if (any(up > 0.0_dp) .or. u%amplitude > 0.0_dp) then
             do i = 1, size(periods)
                 h = 1.0e-4_dp*max(1.0_dp, amps(i))
                 call period_of(i1, amps(i) + h, ta, stat)
                 if (stat%code == 0) call period_of(i1, amps(i) - h, tb, stat)
                 if (stat%code /= 0) return
-                w(i) = 1.0_dp/(u%period**2 + ((ta - tb)/(2*h)*u%amplitude)**2)
+                w(i) = 1.0_dp/max(tiny(1.0_dp), up(i)**2 + ((ta - tb)/(2*h)*u%amplitude)**2)
             end do
         end if
         call residuals(i1, tm, r, s0, stat)
@@ -387,10 +394,14 @@ contains
             end do
             stat%code = 0
             if (half > 60) then
-                ! simulated periods: a step at the integration error's level is converged
-                if (sym .or. abs(di_full) > 100.0_dp*I_TOL_SIM*i1) exit
+                ! no step lowers the sum of squares: converged when that is roundoff, i.e.
+                ! the residuals are orthogonal to the slopes (the gradient test) or the step
+                ! is at the level of the periods' own error (simulated: the integration's)
                 call residuals(i1, tm, r, s1, stat)
                 if (stat%code /= 0) return
+                if (.not. (abs(sum(w*g*r)) <= 1.0e-7_dp*sqrt(sum(w*g*g)*sum(w*r*r)) .or. &
+                           abs(di_full) <= merge(1.0e3_dp*I_TOL, 100.0_dp*I_TOL_SIM, sym)*i1)) &
+                    exit
                 di = 0.0_dp
             end if
             i1 = i1 + di
@@ -458,11 +469,18 @@ contains
         end subroutine period_of
     end subroutine invert_periods
 
-    !> First-order (GUM) budget of an inversion: fills fit%budget (mass, l, l_prime, b,
-    !! b_prime, g, then period(i) and amplitude(i) for each period) and fit%u_i1.  The
-    !! sensitivities are central differences of the whole inversion (relative step 1e-6;
-    !! 1e-4 for an asymmetric rig, whose periods are simulated).
-    subroutine period_budget(rg, acc, periods, amps, u, fit, stat)
+    !> First-order (GUM) budget of an inversion: fills fit%budget and fit%u_i1.  Rows: the
+    !! rig's inputs (x when given, with their names of module inputs; else mass, l, l_prime,
+    !! b, b_prime, g with the uncertainties of u), then period(i) and amplitude(i) for each
+    !! period; an input of u = 0 is left out (nothing to propagate, and no step to take).
+    !! The sensitivities are central differences of the whole inversion (relative step
+    !! 1e-6; 1e-4 for an asymmetric rig, whose periods are simulated; an input of value 0
+    !! steps by that fraction of b'); an amplitude near 0 or 180 degrees is differenced on
+    !! the side that stays inside.  On a rig where pure torsion is exact the inputs that do
+    !! not enter pure torsion (I2, I3, the mass centre) have sensitivity 0 by symmetry
+    !! (module inputs), and l, l' share the effect of their common length.  u_each: the
+    !! standard uncertainty of each period (e.g. u_period / cycles), else u%period.
+    subroutine period_budget(rg, acc, periods, amps, u, fit, stat, x, u_each)
         type(rig_t), intent(in) :: rg           !! the rig
         type(accuracy_t), intent(in) :: acc     !! accuracy of simulated periods
         real(dp), intent(in) :: periods(:)      !! measured periods (s)
@@ -470,62 +488,108 @@ contains
         type(input_u_t), intent(in) :: u        !! standard uncertainties
         type(period_fit_t), intent(inout) :: fit    !! from invert_periods
         type(status_t), intent(out) :: stat
-        integer :: n, k, i
-        real(dp) :: c, hx, hrel
+        type(input_t), intent(in), optional :: x(:)     !! the rig's inputs
+        real(dp), intent(in), optional :: u_each(:)     !! each period's u (s)
+        type(input_t), allocatable :: xs(:)
+        type(budget_row_t), allocatable :: rows(:)
+        type(start_t) :: st0
+        real(dp) :: up(size(periods)), c, hx, hrel, ip, im
         character(len=24) :: nm
         logical :: sym
+        integer :: n, i, k
         n = size(periods)
+        stat%code = 0
         sym = is_torsion_rig(rg)
         hrel = merge(FD_REL, FD_REL_SIM, sym)
-        if (allocated(fit%budget)) deallocate (fit%budget)
-        allocate (fit%budget(6 + 2*n))
-        stat%code = 0
-        do k = 1, 6 + 2*n
-            select case (k)
-            case (1)
-                call row('mass', rg%mass, u%mass)
-            case (2)
-                call row('l', rg%l, u%l)
-            case (3)
-                call row('l_prime', rg%l_prime, u%l_prime)
-            case (4)
-                call row('b', rg%b, u%b)
-            case (5)
-                call row('b_prime', rg%b_prime, u%b_prime)
-            case (6)
-                call row('g', rg%g, u%g)
-            case default
-                i = k - 6
-                if (i <= n) then
-                    write (nm, '(a,i0,a)') 'period(', i, ')'
-                    call row(nm, periods(i), u%period)
-                else
-                    write (nm, '(a,i0,a)') 'amplitude(', i - n, ')'
-                    call row(nm, amps(i - n), u%amplitude)
-                end if
-            end select
-            if (stat%code /= 0) return
-        end do
-        fit%u_i1 = sqrt(sum(fit%budget%contribution**2))
-    contains
-        subroutine row(name, x, ux)
-            character(len=*), intent(in) :: name
-            real(dp), intent(in) :: x, ux
-            real(dp) :: ip, im
-            hx = hrel*max(abs(x), tiny(1.0_dp))
-            call inverted(name, x + hx, ip, stat)
-            if (stat%code == 0) call inverted(name, x - hx, im, stat)
+        up = u%period
+        if (present(u_each)) up = u_each
+        if (present(x)) then
+            xs = x
+        else
+            xs = [input_t('mass', rg%mass, u%mass), input_t('l', rg%l, u%l), &
+                  input_t('l_prime', rg%l_prime, u%l_prime), input_t('b', rg%b, u%b), &
+                  input_t('b_prime', rg%b_prime, u%b_prime), input_t('g', rg%g, u%g)]
+        end if
+        allocate (rows(0))
+        do k = 1, size(xs)
+            if (.not. (xs(k)%u > 0.0_dp)) cycle
+            if (sym .and. no_effect_on_torsion(xs(k)%name)) then
+                rows = [rows, budget_row_t(xs(k)%name, xs(k)%value, xs(k)%u, 0.0_dp, 0.0_dp)]
+                cycle
+            end if
+            hx = hrel*abs(xs(k)%value)
+            if (.not. (hx > 0.0_dp)) hx = hrel*rg%b_prime
+            if (trim(xs(k)%name) == 'lambda') hx = hrel
+            call inverted_input(xs(k), xs(k)%value + hx, ip, stat)
+            if (stat%code == 0) call inverted_input(xs(k), xs(k)%value - hx, im, stat)
             if (stat%code /= 0) then
-                stat%msg = 'uncertainty budget, input '//trim(name)//': '//stat%msg
+                stat%msg = 'uncertainty budget, input '//trim(xs(k)%name)//': '//stat%msg
                 return
             end if
             c = (ip - im)/(2*hx)
-            fit%budget(k) = budget_row_t(name, x, ux, c, abs(c)*ux)
-        end subroutine row
-        !> I1 with one input (by budget name) set to value v.
-        subroutine inverted(name, v, i1, st)
-            character(len=*), intent(in) :: name
+            rows = [rows, budget_row_t(xs(k)%name, xs(k)%value, xs(k)%u, c, abs(c)*xs(k)%u)]
+        end do
+        do i = 1, n
+            if (.not. (up(i) > 0.0_dp)) cycle
+            write (nm, '(a,i0,a)') 'period(', i, ')'
+            hx = hrel*periods(i)
+            call inverted_measured(i, periods(i) + hx, amps(i), ip, stat)
+            if (stat%code == 0) call inverted_measured(i, periods(i) - hx, amps(i), im, stat)
+            if (stat%code /= 0) then
+                stat%msg = 'uncertainty budget, input '//trim(nm)//': '//stat%msg
+                return
+            end if
+            c = (ip - im)/(2*hx)
+            rows = [rows, budget_row_t(nm, periods(i), up(i), c, abs(c)*up(i))]
+        end do
+        do i = 1, n
+            if (.not. (u%amplitude > 0.0_dp)) cycle
+            write (nm, '(a,i0,a)') 'amplitude(', i, ')'
+            hx = hrel*max(1.0_dp, amps(i))
+            if (amps(i) + hx < 180.0_dp .and. amps(i) - hx > 0.0_dp) then
+                call inverted_measured(i, periods(i), amps(i) + hx, ip, stat)
+                if (stat%code == 0) call inverted_measured(i, periods(i), amps(i) - hx, im, stat)
+                c = (ip - im)/(2*hx)
+            else
+                ! one-sided, inside 0 .. 180 degrees
+                hx = sign(hx, 90.0_dp - amps(i))
+                call inverted_measured(i, periods(i), amps(i) + hx, ip, stat)
+                c = (ip - fit%i1)/hx
+            end if
+            if (stat%code /= 0) then
+                stat%msg = 'uncertainty budget, input '//trim(nm)//': '//stat%msg
+                return
+            end if
+            rows = [rows, budget_row_t(nm, amps(i), u%amplitude, c, abs(c)*u%amplitude)]
+        end do
+        fit%budget = rows
+        fit%u_i1 = 0.0_dp
+        if (size(rows) > 0) fit%u_i1 = sqrt(sum(rows%contribution**2))
+    contains
+        !> I1 with the rig's input xi set to v.
+        subroutine inverted_input(xi, v, i1, st)
+            type(input_t), intent(in) :: xi
             real(dp), intent(in) :: v
+            real(dp), intent(out) :: i1
+            type(status_t), intent(out) :: st
+            type(rig_t) :: dd
+            type(period_fit_t) :: f2
+            dd = rg
+            dd%inertia(1) = fit%i1
+            if (sym .and. (trim(xi%name) == 'l' .or. trim(xi%name) == 'l_prime')) then
+                ! mirror symmetry: each cable carries half the effect of the common length
+                dd%l = rg%l + 0.5_dp*(v - xi%value)
+                dd%l_prime = rg%l_prime + 0.5_dp*(v - xi%value)
+            else
+                call set_input(dd, st0, xi%name, v)
+            end if
+            call invert_periods(dd, acc, periods, amps, u, f2, st, u_each)
+            i1 = f2%i1
+        end subroutine inverted_input
+        !> I1 with period i and its amplitude set to (tp, ta).
+        subroutine inverted_measured(i, tp, ta, i1, st)
+            integer, intent(in) :: i
+            real(dp), intent(in) :: tp, ta
             real(dp), intent(out) :: i1
             type(status_t), intent(out) :: st
             type(rig_t) :: dd
@@ -535,49 +599,18 @@ contains
             dd%inertia(1) = fit%i1
             pp = periods
             aa = amps
-            select case (name)
-            case ('mass')
-                dd%mass = v
-            case ('l', 'l_prime')
-                if (sym) then
-                    ! mirror symmetry: each cable carries half the effect of the common length
-                    dd%l = rg%l + 0.5_dp*(v - x_of(name))
-                    dd%l_prime = rg%l_prime + 0.5_dp*(v - x_of(name))
-                else if (name == 'l') then
-                    dd%l = v
-                else
-                    dd%l_prime = v
-                end if
-            case ('b')
-                dd%b = v
-            case ('b_prime')
-                call move_b_prime(dd, v)
-            case ('g')
-                dd%g = v
-            case default
-                if (name(1:6) == 'period') then
-                    pp(k - 6) = v
-                else
-                    aa(k - 6 - n) = v
-                end if
-            end select
-            call invert_periods(dd, acc, pp, aa, u, f2, st)
+            pp(i) = tp
+            aa(i) = ta
+            call invert_periods(dd, acc, pp, aa, u, f2, st, u_each)
             i1 = f2%i1
-        end subroutine inverted
-        pure real(dp) function x_of(name)
-            character(len=*), intent(in) :: name
-            if (name == 'l') then
-                x_of = rg%l
-            else
-                x_of = rg%l_prime
-            end if
-        end function x_of
+        end subroutine inverted_measured
     end subroutine period_budget
 
     !> Monte Carlo sample k: every input drawn from N(value, u^2) with stream k of `seed`
     !! (draw order: mass, l, l_prime, b, b_prime, g, then period and amplitude of each
     !! measurement), then the inversion again; i1 is that sample's I1.
-    subroutine period_mc_sample(rg, acc, periods, amps, u, i1_start, seed, k, i1, stat)
+    subroutine period_mc_sample(rg, acc, periods, amps, u, i1_start, seed, k, i1, stat, x, &
+                                cycles)
         type(rig_t), intent(in) :: rg           !! the rig
         type(accuracy_t), intent(in) :: acc     !! accuracy of simulated periods
         real(dp), intent(in) :: periods(:), amps(:)   !! measurements (s, degrees)
@@ -586,10 +619,15 @@ contains
         integer, intent(in) :: seed, k          !! seed and sample number
         real(dp), intent(out) :: i1             !! the sample's I1
         type(status_t), intent(out) :: stat
+        !> the rig's inputs (module inputs): those beyond mass, l, l_prime, b, b_prime, g are
+        !! drawn after the periods, in their order
+        type(input_t), intent(in), optional :: x(:)
+        real(dp), intent(in), optional :: cycles(:) !! each period spans that many cycles
         type(rng_t) :: g
         type(rig_t) :: dd
+        type(start_t) :: st0
         type(period_fit_t) :: f
-        real(dp) :: pp(size(periods)), aa(size(amps)), la, lb
+        real(dp) :: pp(size(periods)), aa(size(amps)), la, lb, up(size(periods))
         integer :: i
         g = rng_stream(seed, k)
         dd = rg
@@ -607,11 +645,23 @@ contains
         dd%b = rg%b + u%b*rng_normal(g)
         call move_b_prime(dd, rg%b_prime + u%b_prime*rng_normal(g))
         dd%g = rg%g + u%g*rng_normal(g)
+        up = u%period
+        if (present(cycles)) up = u%period/cycles
         do i = 1, size(periods)
-            pp(i) = periods(i) + u%period*rng_normal(g)
+            pp(i) = periods(i) + up(i)*rng_normal(g)
             aa(i) = amps(i) + u%amplitude*rng_normal(g)
         end do
-        call invert_periods(dd, acc, pp, aa, u, f, stat)
+        if (present(x)) then
+            do i = 1, size(x)
+                select case (trim(x(i)%name))
+                case ('mass', 'l', 'l_prime', 'b', 'b_prime', 'g')
+                case default
+                    if (x(i)%u > 0.0_dp) call set_input(dd, st0, x(i)%name, &
+                                                        x(i)%value + x(i)%u*rng_normal(g))
+                end select
+            end do
+        end if
+        call invert_periods(dd, acc, pp, aa, u, f, stat, up)
         i1 = f%i1
         if (stat%code /= 0) then
             stat%msg = 'Monte Carlo sample '//itoa(k)//': '//stat%msg
@@ -625,7 +675,7 @@ contains
     !! options: --resume, the interval; report: how the sweep went; files: the run's staged
     !! files, removed on a signal).
     subroutine period_monte_carlo(d, periods, amps, u, i1_start, n, seed, mean, sdev, stat, &
-                                  outdir, options, report, files)
+                                  outdir, options, report, files, cycles)
         type(deck_t), intent(in) :: d           !! the deck (its rig, accuracy, name)
         real(dp), intent(in) :: periods(:), amps(:)   !! measurements (s, degrees)
         type(input_u_t), intent(in) :: u        !! standard uncertainties
@@ -637,8 +687,10 @@ contains
         type(sweep_options_t), intent(in), optional :: options
         type(sweep_report_t), intent(out), optional :: report
         type(out_files_t), intent(in), optional :: files
+        !> the cycles each period spans (u%period is then the u of each timed total)
+        real(dp), intent(in), optional :: cycles(:)
         type(period_mc_task_t) :: task
-        real(dp), allocatable :: payload(:)
+        real(dp), allocatable :: payload(:), cyc(:)
         real(dp) :: m(1), s(1)
         mean = 0.0_dp
         sdev = 0.0_dp
@@ -647,7 +699,10 @@ contains
             call set_error(stat, ERR_DECK, '&measurement monte_carlo: need at least 2 samples')
             return
         end if
-        payload = period_mc_payload(periods, amps, u, i1_start, seed)
+        allocate (cyc(size(periods)))
+        cyc = 1.0_dp
+        if (present(cycles)) cyc = cycles
+        payload = period_mc_payload(periods, amps, u, i1_start, seed, cyc)
         call period_mc_task(d, payload, task)
         call monte_carlo_run(task, d, n, payload, m, s, stat, outdir, options, report, files)
         mean = m(1)
@@ -656,15 +711,16 @@ contains
 
     !> What a periods Monte Carlo needs beyond the rig, as reals (the sweep's payload):
     !! seed, i1_start, the eight standard uncertainties, the number of periods, the periods,
-    !! their amplitudes.
-    pure function period_mc_payload(periods, amps, u, i1_start, seed) result(p)
+    !! their amplitudes, the cycles each spans.
+    pure function period_mc_payload(periods, amps, u, i1_start, seed, cycles) result(p)
         real(dp), intent(in) :: periods(:), amps(:)   !! measurements (s, degrees)
+        real(dp), intent(in) :: cycles(:)       !! cycles of each timed total
         type(input_u_t), intent(in) :: u        !! standard uncertainties
         real(dp), intent(in) :: i1_start        !! start of each inversion
         integer, intent(in) :: seed
         real(dp), allocatable :: p(:)
         p = [real(seed, dp), i1_start, u%mass, u%l, u%l_prime, u%b, u%b_prime, u%g, u%period, &
-             u%amplitude, real(size(periods), dp), periods, amps]
+             u%amplitude, real(size(periods), dp), periods, amps, cycles]
     end function period_mc_payload
 
     !> The samples of a periods Monte Carlo of the deck's rig from their payload
@@ -684,6 +740,8 @@ contains
         np = nint(payload(11))
         task%periods = payload(12:11 + np)
         task%amps = payload(12 + np:11 + 2*np)
+        task%cycles = payload(12 + 2*np:11 + 3*np)
+        task%x = deck_inputs(d, .false.)
         task%nest = 1
     end subroutine period_mc_task
 
@@ -694,7 +752,7 @@ contains
         real(dp), intent(out) :: est(:)         !! I1
         type(status_t), intent(out) :: stat
         call period_mc_sample(self%rg, self%acc, self%periods, self%amps, self%u, self%i1_start, &
-                              self%seed, k, est(1), stat)
+                              self%seed, k, est(1), stat, self%x, self%cycles)
     end subroutine period_mc_point
 
     !> The classical small-amplitude formula I1 = m g b b' T^2 / (16 pi^2 l) (deck units),

@@ -1,12 +1,20 @@
 !> The fit of the paper's model to a record (the record analysis of identify): the model at
 !! the record's sample times (record_model), the least-squares problem of the estimated
-!! parameters (record_fit_t: I1 and any of c_v, c_q, the release amplitude, t0), the fit on
-!! growing windows (fit_record), its covariance and the inputs' sensitivities (the
-!! first-order budget), the Monte Carlo's samples (record_mc_task_t), and records made by
-!! the program itself (make_record).  See module identify for the method.
+!! parameters (record_fit_t: I1 and any of c_v, c_q, the release amplitude, t0, a bias of
+!! the recorded quantity), the release found in the record (find_release), the fit on
+!! growing windows (fit_record), robust weights (huber_weights), the covariance and the
+!! inputs' sensitivities (the first-order budget), the residuals' correlation time, the
+!! Monte Carlo's samples (record_mc_task_t), and records made by the program itself
+!! (make_record).  See module identify for the method.
+!!
+!! The model of a sample: sign (model(t; I1, damping, amplitude, t0)) + bias, where sign is
+!! -1 for a body released the other way (found from the record's first swing) and the
+!! model before t0 is the held start.  A record that starts mid-swing is fitted from its
+!! first turning point on (ifirst): a turning point is a moment at rest, from which the
+!! model is a release.
 module record_fit
     use, intrinsic :: iso_fortran_env, only: int64
-    use kinds, only: dp
+    use kinds, only: dp, pi, deg
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC
     use text, only: itoa, sci
     use deck, only: deck_t, estimated
@@ -14,24 +22,27 @@ module record_fit
     use geometry, only: pendulum_t
     use bifilar_model, only: NSTATE, motion_t, motion_parts_t, evaluate
     use rig, only: rig_t, start_t, accuracy_t, rig_of, start_of, accuracy_of, make_pendulum, &
-        start_state, move_b_prime
+        start_state
     use kane_run, only: kane_run_start, kane_run_t
     use run_loop, only: stepped_model_t, row_sink_t, drive
     use least_squares, only: lsq_problem_t, lsq_options_t, lsq_result_t, lm_fit
     use lapack_wrap, only: la_lstsq, la_svd
     use random, only: rng_t, rng_stream, rng_normal
     use records, only: record_t, mean_period
+    use inputs, only: input_t, set_input
     use monte_carlo, only: mc_task_t
     implicit none
     private
 
     !> Parameters a record fit can estimate (deck ESTIMATES_ALLOWED), in this order.
-    integer, parameter, public :: P_I1 = 1, P_CV = 2, P_CQ = 3, P_AMP = 4, P_T0 = 5
-    character(len=9), parameter, public :: PARAM_NAMES(5) = [character(len=9) :: 'I1', 'c_v', 'c_q', &
-        'amplitude', 't0']
+    integer, parameter, public :: P_I1 = 1, P_CV = 2, P_CQ = 3, P_AMP = 4, P_T0 = 5, P_BIAS = 6
+    integer, parameter, public :: NPARAM = 6
+    character(len=9), parameter, public :: PARAM_NAMES(NPARAM) = [character(len=9) :: 'I1', &
+        'c_v', 'c_q', 'amplitude', 't0', 'bias']
 
-    !> The record fit as a least-squares problem: residuals ((model - measured)/u_i) over the
-    !! first nuse samples.
+    !> The record fit as a least-squares problem: residuals
+    !! (sign model + bias - measured)/u_i, times the robust weights' roots, over the samples
+    !! ifirst .. nuse.
     type, extends(lsq_problem_t), public :: record_fit_t
         type(rig_t) :: rg                       !! the rig, every held value (inputs)
         type(start_t) :: st                     !! the start (its amplitude may be fitted)
@@ -39,14 +50,30 @@ module record_fit
         integer :: seed = 1                     !! the Monte Carlo's seed
         type(record_t) :: rec                   !! the record (values perturbed by Monte Carlo)
         integer :: np = 0                       !! parameters estimated
-        integer :: which(5) = 0                 !! P_* of each estimated parameter
+        integer :: which(NPARAM) = 0            !! P_* of each estimated parameter
         real(dp) :: t0 = 0.0_dp                 !! release time (s), when held
+        real(dp) :: bias = 0.0_dp               !! the record's offset, when held (0)
+        real(dp) :: sign = 1.0_dp               !! -1: the body was released the other way
         logical :: rate = .false.               !! quantity = 'rate'
-        integer :: nuse = 0                     !! samples fitted (the window)
-        real(dp), allocatable :: w(:)           !! 1/u_i (1 without column 3)
+        integer :: ifirst = 1                   !! first sample fitted
+        integer :: nuse = 0                     !! last sample fitted (the window)
+        real(dp), allocatable :: w(:)           !! 1/u_i (1 without u)
+        real(dp), allocatable :: hw(:)          !! the roots of the robust weights (1: squares)
     contains
         procedure :: residual => record_residual
+        procedure :: nres => record_nres
     end type record_fit_t
+
+    !> Where the release is in a record, as find_release sees it.
+    type, public :: release_t
+        logical :: held = .false.               !! the record starts with the body held still
+        real(dp) :: t0 = 0.0_dp                 !! the release (or first turning point), s
+        integer :: ifirst = 1                   !! first sample to fit
+        real(dp) :: amplitude = 0.0_dp          !! degrees, estimated from the record
+        real(dp) :: sign = 1.0_dp               !! the first swing's direction
+        real(dp) :: level = 0.0_dp              !! the held level or the swing's centre
+        real(dp) :: period = 0.0_dp             !! the mean period after the release (s)
+    end type release_t
 
     !> The model's value at the record's sample times (a sink of the run loop).
     type, extends(row_sink_t) :: record_sink_t
@@ -63,20 +90,22 @@ module record_fit
     type, extends(mc_task_t), public :: record_mc_task_t
         type(record_fit_t) :: prob              !! the fit (deck, record, weights)
         real(dp), allocatable :: phat(:)        !! the estimate
-        real(dp), allocatable :: jac(:, :)      !! the Jacobian there (samples, parameters)
+        real(dp), allocatable :: jac(:, :)      !! the Jacobian there (residuals, parameters)
         real(dp), allocatable :: u_p(:)         !! first-order u of each parameter
         real(dp) :: sigma = 0.0_dp              !! s of the covariance
-        real(dp), allocatable :: xval(:), ux(:) !! the inputs drawn: values, u
+        type(input_t), allocatable :: x(:)      !! the inputs drawn: names, values, u
     contains
         procedure :: sample => record_mc_point
     end type record_mc_task_t
 
     public :: record_model, fit_problem, fit_record, covariance, input_sensitivity
-    public :: set_input, budget_inputs, record_mc_task, explain_fit_failure, make_record
+    public :: record_mc_task, explain_fit_failure, make_record, find_release
+    public :: huber_weights, correlation_time, apply_parameters
 
     real(dp), parameter, public :: H_REL = 1.0e-5_dp        !! relative difference step of the model
     real(dp), parameter :: DAMP_REF = 1.0e-3_dp     !! scale of c_v, c_q (model's units)
     real(dp), parameter :: COND_MAX = 1.0e10_dp     !! largest condition number of J (scaled)
+    real(dp), parameter :: HUBER_C = 1.345_dp       !! Huber's constant (95 % efficiency)
 
 contains
 
@@ -170,18 +199,19 @@ contains
         if (stat%code /= 0) stat%msg = stat%msg//' at tau = '//sci(t)
     end subroutine record_take
 
-    !> The rig and start with the parameters p of the fit set (I1, c_v, c_q, amplitude), and
-    !! t0.
-    subroutine apply_parameters(prob, p, rg, st, t0)
+    !> The rig and start with the parameters p of the fit set (I1, c_v, c_q, amplitude), t0
+    !! and bias.
+    subroutine apply_parameters(prob, p, rg, st, t0, bias)
         type(record_fit_t), intent(in) :: prob
         real(dp), intent(in) :: p(:)
         type(rig_t), intent(out) :: rg
         type(start_t), intent(out) :: st
-        real(dp), intent(out) :: t0
+        real(dp), intent(out) :: t0, bias
         integer :: j
         rg = prob%rg
         st = prob%st
         t0 = prob%t0
+        bias = prob%bias
         do j = 1, prob%np
             select case (prob%which(j))
             case (P_I1)
@@ -192,15 +222,23 @@ contains
                 rg%c_q = p(j)
             case (P_AMP)
                 st%amplitude = p(j)
-            case default
+            case (P_T0)
                 t0 = p(j)
+            case default
+                bias = p(j)
             end select
         end do
     end subroutine apply_parameters
 
-    !> Residuals (model - measured)/u_i over the first nuse samples.  A parameter set the
-    !! model cannot take (I1 <= 0, an amplitude outside 0 .. 180 degrees, a cable slack, ...)
-    !! is a failed evaluation.
+    !> The number of residuals of the problem: the samples ifirst .. nuse.
+    pure integer function record_nres(prob) result(n)
+        class(record_fit_t), intent(in) :: prob
+        n = prob%nuse - prob%ifirst + 1
+    end function record_nres
+
+    !> Residuals (sign model + bias - measured)/u_i (times the robust weights' roots) over
+    !! the samples ifirst .. nuse.  A parameter set the model cannot take (I1 <= 0, an
+    !! amplitude outside 0 .. 180 degrees, a cable slack, ...) is a failed evaluation.
     subroutine record_residual(prob, p, r, stat)
         class(record_fit_t), intent(inout) :: prob
         real(dp), intent(in) :: p(:)
@@ -208,31 +246,177 @@ contains
         type(status_t), intent(out) :: stat
         type(rig_t) :: rg
         type(start_t) :: st
-        real(dp) :: t0
+        real(dp) :: t0, bias
         real(dp), allocatable :: vals(:)
-        call apply_parameters(prob, p, rg, st, t0)
+        integer :: i0, i1
+        call apply_parameters(prob, p, rg, st, t0, bias)
         r = 0.0_dp
         if (.not. (rg%inertia(1) > 0.0_dp) .or. .not. (st%amplitude > 0.0_dp .and. &
             st%amplitude < 180.0_dp)) then
             call set_error(stat, ERR_NUMERIC, 'parameters out of the model''s range')
             return
         end if
-        allocate (vals(prob%nuse))
-        call record_model(rg, st, prob%acc, prob%rec%t(1:prob%nuse), t0, prob%rate, vals, stat)
+        i0 = prob%ifirst
+        i1 = prob%nuse
+        allocate (vals(i1 - i0 + 1))
+        call record_model(rg, st, prob%acc, prob%rec%t(i0:i1), t0, prob%rate, vals, stat)
         if (stat%code /= 0) return
-        r = (vals - prob%rec%v(1:prob%nuse))*prob%w(1:prob%nuse)
+        r = (prob%sign*vals + bias - prob%rec%v(i0:i1))*prob%w(i0:i1)*prob%hw(i0:i1)
         if (.not. all_finite(r)) call set_error(stat, ERR_NUMERIC, 'non-finite model values')
     end subroutine record_residual
 
+    !> Where the release is in a record (the start values of t0, the amplitude, the bias and
+    !! the sign).  The first tenth of the record (at least 10 samples, at most 200) gives a
+    !! level and its noise (median and scaled median absolute deviation); the first sample
+    !! beyond max(6 noise, 5 % of the largest excursion) from that level is where the motion
+    !! shows.  When it shows after half that quiet stretch, the body was held still: the
+    !! release is at the last quiet sample, and the held samples stay in the fit (they fix
+    !! the bias).  Otherwise the record starts mid-swing: it is fitted from its first turning
+    !! point (an angle's first extreme about its centre, a rate's first crossing of its
+    !! mean), where the body is at rest for an instant.  The amplitude: the held angle's
+    !! distance from the swing's centre, or a rate's first peak over 2 pi / T; the sign: +1
+    !! when the first swing goes the way the model's does (theta4 falling from +A).
+    subroutine find_release(rec, rate, rl)
+        type(record_t), intent(in) :: rec
+        logical, intent(in) :: rate             !! W (rad/s), else theta4 (rad)
+        type(release_t), intent(out) :: rl
+        real(dp), allocatable :: v(:)
+        real(dp) :: level, noise, vmax, thr, centre, peak, tp
+        integer :: n, k, idep, i, ic, ie, j
+        n = size(rec%v)
+        v = rec%v
+        k = max(10, min(200, n/10))
+        k = min(k, n)
+        level = median(v(1:k))
+        noise = 1.4826_dp*median(abs(v(1:k) - level))
+        vmax = maxval(abs(v - level))
+        thr = max(6.0_dp*noise, 0.05_dp*vmax)
+        idep = n
+        do i = 1, n
+            if (abs(v(i) - level) > thr) then
+                idep = i
+                exit
+            end if
+        end do
+        rl%held = idep > k/2 .and. idep < n
+        if (rl%held) then
+            rl%ifirst = 1
+            rl%t0 = rec%t(max(1, idep - 1))
+            rl%level = level
+            centre = sum(v(idep:))/(n - idep + 1)
+            tp = mean_period(rec, idep)
+            rl%period = tp
+            if (rate) then
+                ! the model's W is negative first (theta4 falls from +A)
+                rl%sign = merge(1.0_dp, -1.0_dp, v(idep) < level)
+                peak = maxval(abs(v(idep:min(n, idep + first_span(tp))) - level))
+                rl%amplitude = amplitude_of_rate(peak, tp)
+            else
+                rl%sign = merge(1.0_dp, -1.0_dp, level > centre)
+                rl%amplitude = abs(level - centre)/deg
+                rl%level = centre               ! the angle's zero: the swing's centre
+            end if
+        else
+            ! mid-swing: the first turning point
+            centre = sum(v)/n
+            tp = mean_period(rec)
+            rl%period = tp
+            ic = first_crossing(v, centre, 1)
+            if (rate) then
+                ie = max(1, ic)
+                rl%sign = merge(1.0_dp, -1.0_dp, v(min(n, ie + 1)) < v(max(1, ie - 1)))
+                peak = maxval(abs(v(ie:min(n, ie + first_span(tp))) - centre))
+                rl%amplitude = amplitude_of_rate(peak, tp)
+            else
+                ! the extreme before the first crossing when it is inside, else the next one
+                ie = maxloc(abs(v(1:max(1, ic)) - centre), 1)
+                if (ie <= 1 .or. ic <= 0) then
+                    j = first_crossing(v, centre, max(1, ic) + 1)
+                    if (j <= 0) j = n
+                    ie = max(1, ic) - 1 + maxloc(abs(v(max(1, ic):j) - centre), 1)
+                end if
+                rl%sign = merge(1.0_dp, -1.0_dp, v(ie) > centre)
+                rl%amplitude = abs(v(ie) - centre)/deg
+            end if
+            rl%ifirst = max(1, ie)
+            rl%t0 = rec%t(rl%ifirst)
+            rl%level = centre
+        end if
+        rl%amplitude = max(1.0e-3_dp, min(179.0_dp, rl%amplitude))
+    contains
+        !> Samples in about half a period (the first swing), at least 3.
+        integer function first_span(t)
+            real(dp), intent(in) :: t
+            first_span = 3
+            if (t > 0.0_dp .and. n > 1) first_span = max(3, nint(0.5_dp*t/ &
+                ((rec%t(n) - rec%t(1))/(n - 1))))
+        end function first_span
+        !> A rate's peak over 2 pi / T as an amplitude (degrees), small-amplitude motion.
+        real(dp) function amplitude_of_rate(pk, t)
+            real(dp), intent(in) :: pk, t
+            amplitude_of_rate = 10.0_dp
+            if (t > 0.0_dp) amplitude_of_rate = pk*t/(2.0_dp*pi)/deg
+        end function amplitude_of_rate
+        !> The first sample from i0 on where v crosses c, after having been a tenth of the
+        !! largest excursion away from it (0 when none).
+        integer function first_crossing(x, c, i0)
+            real(dp), intent(in) :: x(:), c
+            integer, intent(in) :: i0
+            real(dp) :: band
+            integer :: ii, side
+            first_crossing = 0
+            band = 0.1_dp*maxval(abs(x - c))
+            side = 0
+            do ii = max(2, i0), size(x)
+                if (x(ii - 1) - c < -band) side = -1
+                if (x(ii - 1) - c > band) side = 1
+                if ((side == -1 .and. x(ii) >= c) .or. (side == 1 .and. x(ii) <= c)) then
+                    first_crossing = ii
+                    return
+                end if
+            end do
+        end function first_crossing
+    end subroutine find_release
+
+    !> The median of x.
+    function median(x) result(m)
+        real(dp), intent(in) :: x(:)
+        real(dp) :: m
+        real(dp) :: s(size(x)), t
+        integer :: i, j, n
+        n = size(x)
+        s = x
+        do i = 2, n                             ! insertion sort: short arrays only
+            t = s(i)
+            j = i - 1
+            do while (j >= 1)
+                if (s(j) <= t) exit
+                s(j + 1) = s(j)
+                j = j - 1
+            end do
+            s(j + 1) = t
+        end do
+        if (mod(n, 2) == 1) then
+            m = s((n + 1)/2)
+        else
+            m = 0.5_dp*(s(n/2) + s(n/2 + 1))
+        end if
+    end function median
+
     !> The record fit of a deck: the problem (estimated parameters, start values,
-    !! difference steps) from the deck and the record.
-    subroutine fit_problem(d, rec, prob, p0, h)
+    !! difference steps) from the deck and the record.  With t0 estimated, the release is
+    !! found in the record (find_release) and gives the start values of t0, the bias and,
+    !! when estimated, the amplitude, and the sign; else the times count from the release.
+    subroutine fit_problem(d, rec, prob, p0, h, rl)
         type(deck_t), intent(in) :: d
         type(record_t), intent(in) :: rec
         type(record_fit_t), intent(out) :: prob
         real(dp), allocatable, intent(out) :: p0(:), h(:)
-        real(dp) :: tp
-        integer :: j, k
+        type(release_t), intent(out), optional :: rl    !! what find_release found
+        type(release_t) :: rel
+        real(dp) :: tp, vscale
+        integer :: j, k, n
+        n = size(rec%t)
         prob%rg = rig_of(d)
         prob%st = start_of(d)
         prob%acc = accuracy_of(d)
@@ -240,18 +424,30 @@ contains
         prob%rec = rec
         prob%rate = trim(d%quantity) == 'rate'
         prob%t0 = 0.0_dp
-        prob%nuse = size(rec%t)
+        prob%bias = 0.0_dp
+        prob%sign = 1.0_dp
+        prob%ifirst = 1
+        prob%nuse = n
         prob%w = 1.0_dp/rec%u
+        allocate (prob%hw(n))
+        prob%hw = 1.0_dp
         prob%np = 0
-        do k = 1, 5
+        do k = 1, NPARAM
             if (estimated(d, PARAM_NAMES(k))) then
                 prob%np = prob%np + 1
                 prob%which(prob%np) = k
             end if
         end do
+        if (estimated(d, 't0')) then
+            call find_release(rec, prob%rate, rel)
+            prob%sign = rel%sign
+            prob%ifirst = rel%ifirst
+        end if
+        if (present(rl)) rl = rel
         allocate (p0(prob%np), h(prob%np))
-        tp = mean_period(rec)
-        if (.not. (tp > 0.0_dp)) tp = rec%t(size(rec%t)) - rec%t(1)
+        tp = mean_period(rec, prob%ifirst)
+        if (.not. (tp > 0.0_dp)) tp = rec%t(n) - rec%t(1)
+        vscale = max(maxval(abs(rec%v)), tiny(1.0_dp))
         do j = 1, prob%np
             select case (prob%which(j))
             case (P_I1)
@@ -265,10 +461,16 @@ contains
                 h(j) = H_REL*max(d%c_q, DAMP_REF*d%mass*d%b_prime**2)
             case (P_AMP)
                 p0(j) = d%amplitude
-                h(j) = H_REL*max(d%amplitude, 1.0_dp)
+                if (estimated(d, 't0')) p0(j) = rel%amplitude
+                h(j) = H_REL*max(p0(j), 1.0_dp)
+            case (P_T0)
+                p0(j) = rel%t0
+                h(j) = H_REL*tp
             case default
                 p0(j) = 0.0_dp
-                h(j) = H_REL*tp
+                if (estimated(d, 't0')) p0(j) = rel%level
+                if (prob%rate .and. estimated(d, 't0') .and. .not. rel%held) p0(j) = 0.0_dp
+                h(j) = H_REL*vscale
             end select
         end do
     end subroutine fit_problem
@@ -283,25 +485,31 @@ contains
         type(status_t), intent(out) :: stat
         type(lsq_options_t) :: opts
         type(lsq_result_t) :: part
-        real(dp) :: tp, span, win
+        real(dp) :: tp, span, win, tstart
         real(dp), allocatable :: p(:)
         integer :: n, iters, evals
         n = size(prob%rec%t)
-        tp = mean_period(prob%rec)
-        span = prob%rec%t(n) - prob%rec%t(1)
+        tp = mean_period(prob%rec, prob%ifirst)
+        tstart = prob%rec%t(prob%ifirst)
+        span = prob%rec%t(n) - tstart
         p = p0
         iters = 0
         evals = 0
         win = 2.0_dp*tp
         if (.not. (tp > 0.0_dp)) win = 2.0_dp*span
+        ! a held stretch before the release: the window starts after it
+        if (prob%np > 0) then
+            if (any(prob%which(1:prob%np) == P_T0)) &
+                win = win + max(0.0_dp, p0(findloc(prob%which(1:prob%np), P_T0, 1)) - tstart)
+        end if
         do
             prob%nuse = n
-            if (win < span) prob%nuse = max(count(prob%rec%t <= prob%rec%t(1) + win), &
-                                            2*prob%np + 2)
+            if (win < span) prob%nuse = max(count(prob%rec%t <= tstart + win), &
+                                            prob%ifirst + 2*prob%np + 1)
             if (prob%nuse >= n) exit
             opts%xtol = 1.0e-6_dp
             opts%chi2_tol = 1.0_dp
-            call lm_fit(prob, p, h, prob%nuse, opts, part, stat)
+            call lm_fit(prob, p, h, prob%nres(), opts, part, stat)
             iters = iters + part%iterations
             evals = evals + part%evaluations
             if (stat%code /= 0) then
@@ -316,10 +524,50 @@ contains
         end do
         prob%nuse = n
         opts = lsq_options_t()
-        call lm_fit(prob, p, h, n, opts, res, stat)
+        call lm_fit(prob, p, h, prob%nres(), opts, res, stat)
         res%iterations = res%iterations + iters
         res%evaluations = res%evaluations + evals
     end subroutine fit_record
+
+    !> Huber's weights from the residuals r of the samples ifirst .. nuse (weighted by
+    !! 1/u, before any robust weight): each sample's weight min(1, c s/|r_i|) with
+    !! c = HUBER_C and s = 1.4826 median(|r_i|), the robust scale; hw gets their roots.
+    subroutine huber_weights(prob, r)
+        type(record_fit_t), intent(inout) :: prob
+        real(dp), intent(in) :: r(:)            !! (nres) residuals without robust weights
+        real(dp) :: s, c
+        integer :: i, i0
+        s = 1.4826_dp*median(abs(r))
+        if (.not. (s > 0.0_dp)) return
+        c = HUBER_C*s
+        i0 = prob%ifirst
+        do i = 1, size(r)
+            prob%hw(i0 + i - 1) = sqrt(min(1.0_dp, c/max(abs(r(i)), tiny(1.0_dp))))
+        end do
+    end subroutine huber_weights
+
+    !> The integrated correlation time of a sequence of residuals, in samples:
+    !! 1 + 2 sum_k rho_k over the lags k = 1, 2, ... while the autocorrelation rho_k stays
+    !! positive (Geyer's initial positive sequence), at most n/4 lags; 1 for white residuals.
+    !! n / tau is the effective number of independent samples, tau the factor of the
+    !! covariance a fit that takes them for independent underestimates.
+    pure real(dp) function correlation_time(r) result(tau)
+        real(dp), intent(in) :: r(:)
+        real(dp) :: m, c0, ck, x(size(r))
+        integer :: n, k
+        n = size(r)
+        tau = 1.0_dp
+        if (n < 8) return
+        m = sum(r)/n
+        x = r - m
+        c0 = sum(x*x)/n
+        if (.not. (c0 > 0.0_dp)) return
+        do k = 1, n/4
+            ck = sum(x(1:n - k)*x(1 + k:n))/n
+            if (ck/c0 <= 0.0_dp) exit
+            tau = tau + 2.0_dp*ck/c0
+        end do
+    end function correlation_time
 
     !> A fit that gave no estimate (ERR_NUMERIC, exit 3): the message gets the residual
     !! and what to check.
@@ -328,17 +576,133 @@ contains
         type(record_fit_t), intent(in) :: prob
         type(lsq_result_t), intent(in) :: fit
         character(len=:), allocatable :: what
+        real(dp) :: rms
+        integer :: i0, i1
         what = stat%msg
         if (index(what, 'identify: ') == 1) what = what(11:)
+        rms = 0.0_dp
+        i0 = prob%ifirst
+        i1 = min(prob%nuse, prob%ifirst + size(fit%r) - 1)
+        if (allocated(fit%r) .and. i1 >= i0) rms = sqrt(sum((fit%r(1:i1 - i0 + 1)/ &
+            (prob%w(i0:i1)*prob%hw(i0:i1)))**2)/max(1, i1 - i0 + 1))
         stat%code = ERR_NUMERIC
-        stat%msg = 'identify: '//what//' (residual rms '// &
-            sci(sqrt(sum((fit%r/prob%w)**2)/max(1, size(fit%r))))// &
+        stat%msg = 'identify: '//what//' (residual rms '//sci(rms)// &
             trim(merge(' rad  ', ' rad/s', .not. prob%rate))//'); check the record''s'// &
-            ' units (t in s, '//trim(merge('theta4 in rad', 'W in rad/s   ', &
-            .not. prob%rate))//') and &measurement quantity, the start (&start '// &
-            'amplitude, the release time t0), the rig''s lengths and the start '// &
-            'value of I1 (&body inertia(1)), or estimate fewer parameters'
+            ' units (t in s; record_units), the start (&start amplitude; add t0 to '// &
+            'estimate to find the release), the rig''s lengths and the start value of I1 '// &
+            '(&body inertia(1)), or estimate fewer parameters'
     end subroutine explain_fit_failure
+
+    !> dp/dx = -(J^T J)^-1 J^T dr/dx at the estimate for the input x (dr/dx by central
+    !! differences with a relative step H_REL, or H_REL b' for an input of value 0; the
+    !! weights are in J and r).
+    subroutine input_sensitivity(prob, p, jac, x, dpdx, stat)
+        type(record_fit_t), intent(in) :: prob
+        real(dp), intent(in) :: p(:), jac(:, :)
+        type(input_t), intent(in) :: x          !! the input (name, value)
+        real(dp), intent(out) :: dpdx(:)
+        type(status_t), intent(out) :: stat
+        type(record_fit_t) :: pp, pm
+        real(dp) :: hx, rp(size(jac, 1)), rm(size(jac, 1))
+        hx = H_REL*abs(x%value)
+        if (.not. (hx > 0.0_dp)) hx = H_REL*prob%rg%b_prime
+        if (trim(x%name) == 'lambda') hx = H_REL
+        pp = prob
+        pm = prob
+        call set_input(pp%rg, pp%st, x%name, x%value + hx)
+        call set_input(pm%rg, pm%st, x%name, x%value - hx)
+        call pp%residual(p, rp, stat)
+        if (stat%code /= 0) return
+        call pm%residual(p, rm, stat)
+        if (stat%code /= 0) return
+        call la_lstsq(jac, (rp - rm)/(2.0_dp*hx), dpdx, stat)
+        dpdx = -dpdx
+    end subroutine input_sensitivity
+
+    !> The samples of a record fit's Monte Carlo from the deck, its record, its inputs and
+    !! the payload of the record's Monte Carlo (the task rank 0 runs and the other ranks
+    !! build).
+    subroutine record_mc_task(d, rec, x, payload, task)
+        type(deck_t), intent(in) :: d
+        type(record_t), intent(in) :: rec
+        type(input_t), intent(in) :: x(:)       !! the inputs drawn
+        !> crc (2), sigma, np, phat, u_p, jac, and the robust weights' roots (ifirst .. n)
+        real(dp), intent(in) :: payload(:)
+        type(record_mc_task_t), intent(out) :: task
+        real(dp), allocatable :: p0(:), h(:)
+        integer :: np, m, k
+        call fit_problem(d, rec, task%prob, p0, h)
+        task%x = x
+        m = task%prob%nres()
+        task%sigma = payload(3)
+        np = nint(payload(4))
+        task%phat = payload(5:4 + np)
+        task%u_p = payload(5 + np:4 + 2*np)
+        task%jac = reshape(payload(5 + 2*np:4 + 2*np + m*np), [m, np])
+        k = 4 + 2*np + m*np
+        if (size(payload) >= k + size(task%prob%hw)) task%prob%hw = payload(k + 1:k + &
+                                                                           size(task%prob%hw))
+        task%nest = np
+    end subroutine record_mc_task
+
+    !> Monte Carlo sample k of a record fit: inputs and measured values drawn from stream k
+    !! of the seed, then the refit from the estimate; est: the sample's parameters (I1
+    !! first).  A failed refit: ERR_NUMERIC naming the sample.
+    subroutine record_mc_point(self, k, est, stat)
+        class(record_mc_task_t), intent(in) :: self
+        integer, intent(in) :: k                !! sample number
+        real(dp), intent(out) :: est(:)         !! the sample's parameters
+        type(status_t), intent(out) :: stat
+        type(record_fit_t) :: q
+        type(rng_t) :: g
+        type(lsq_result_t) :: fit
+        real(dp) :: p(size(self%phat)), dp_(size(self%phat)), r(size(self%jac, 1))
+        real(dp) :: h(size(self%phat))
+        integer :: j, it
+        logical :: done
+        est = 0.0_dp
+        g = rng_stream(self%prob%seed, k)
+        q = self%prob
+        do j = 1, size(self%x)
+            if (self%x(j)%u > 0.0_dp) call set_input(q%rg, q%st, self%x(j)%name, &
+                self%x(j)%value + self%x(j)%u*rng_normal(g))
+        end do
+        do j = 1, size(q%rec%v)
+            if (self%prob%rec%has_u) then
+                q%rec%v(j) = self%prob%rec%v(j) + self%prob%rec%u(j)*rng_normal(g)
+            else
+                q%rec%v(j) = self%prob%rec%v(j) + self%sigma*rng_normal(g)
+            end if
+        end do
+        ! Gauss-Newton with the estimate's Jacobian
+        p = self%phat
+        done = .false.
+        do it = 1, 8
+            call q%residual(p, r, stat)
+            if (stat%code /= 0) exit
+            call la_lstsq(self%jac, -r, dp_, stat)
+            if (stat%code /= 0) exit
+            p = p + dp_
+            if (all(abs(dp_) <= 1.0e-3_dp*self%u_p + 1.0e-14_dp*abs(p))) then
+                done = .true.
+                exit
+            end if
+        end do
+        if (.not. done) then
+            do j = 1, size(p)
+                h(j) = H_REL*max(abs(self%phat(j)), self%u_p(j))
+            end do
+            call lm_fit(q, self%phat, h, size(r), lsq_options_t(), fit, stat)
+            if (stat%code /= 0) then
+                stat%code = ERR_NUMERIC
+                stat%msg = 'Monte Carlo sample '//itoa(k)//': '//stat%msg
+                return
+            end if
+            p = fit%p
+        end if
+        stat%code = 0
+        est = p
+    end subroutine record_mc_point
 
     !> C = s^2 (J^T J)^-1 from the singular values of J with its columns scaled to unit norm
     !! (ERR_NUMERIC naming the parameters when J is rank deficient: the record does not
@@ -377,151 +741,6 @@ contains
             end do
         end do
     end subroutine covariance
-
-    !> dp/dx_j = -(J^T J)^-1 J^T dr/dx_j at the estimate (dr/dx by central differences with
-    !! a relative step H_REL; the weights are in J and r).
-    subroutine input_sensitivity(prob, p, jac, j, x, dpdx, stat)
-        type(record_fit_t), intent(in) :: prob
-        real(dp), intent(in) :: p(:), jac(:, :)
-        integer, intent(in) :: j                !! input: 1 mass .. 6 g, 7 amplitude
-        real(dp), intent(in) :: x               !! its value
-        real(dp), intent(out) :: dpdx(:)
-        type(status_t), intent(out) :: stat
-        type(record_fit_t) :: pp, pm
-        real(dp) :: hx, rp(size(jac, 1)), rm(size(jac, 1))
-        hx = H_REL*abs(x)
-        pp = prob
-        pm = prob
-        call set_input(pp%rg, pp%st, j, x + hx)
-        call set_input(pm%rg, pm%st, j, x - hx)
-        call pp%residual(p, rp, stat)
-        if (stat%code /= 0) return
-        call pm%residual(p, rm, stat)
-        if (stat%code /= 0) return
-        call la_lstsq(jac, (rp - rm)/(2.0_dp*hx), dpdx, stat)
-        dpdx = -dpdx
-    end subroutine input_sensitivity
-
-    !> Set input j of an uncertainty budget (1 mass, 2 l, 3 l_prime, 4 b, 5 b_prime (both
-    !! body attachment points move, move_b_prime), 6 g, 7 the start amplitude) to v.
-    subroutine set_input(rg, st, j, v)
-        type(rig_t), intent(inout) :: rg
-        type(start_t), intent(inout) :: st
-        integer, intent(in) :: j
-        real(dp), intent(in) :: v
-        select case (j)
-        case (1)
-            rg%mass = v
-        case (2)
-            rg%l = v
-        case (3)
-            rg%l_prime = v
-        case (4)
-            rg%b = v
-        case (5)
-            call move_b_prime(rg, v)
-        case (6)
-            rg%g = v
-        case default
-            st%amplitude = v
-        end select
-    end subroutine set_input
-
-    !> The inputs of a record fit's budget and Monte Carlo: mass, l, l_prime, b, b_prime,
-    !! g, and the start amplitude when it is held (not estimated, &start mode 'raised'):
-    !! their names, values and standard uncertainties (in the order of set_input).
-    subroutine budget_inputs(d, xname, xval, ux)
-        type(deck_t), intent(in) :: d
-        character(len=16), allocatable, intent(out) :: xname(:)
-        real(dp), allocatable, intent(out) :: xval(:), ux(:)
-        xname = [character(len=16) :: 'mass', 'l', 'l_prime', 'b', 'b_prime', 'g']
-        xval = [d%mass, d%l, d%l_prime, d%b, d%b_prime, d%g]
-        ux = [d%u_mass, d%u_l, d%u_l_prime, d%u_b, d%u_b_prime, d%u_g]
-        if (.not. estimated(d, 'amplitude') .and. trim(d%mode) == 'raised') then
-            xname = [xname, [character(len=16) :: 'amplitude']]
-            xval = [xval, d%amplitude]
-            ux = [ux, d%u_amplitude]
-        end if
-    end subroutine budget_inputs
-
-    !> The samples of a record fit's Monte Carlo from the deck, its record and the payload
-    !! of record_monte_carlo (the task rank 0 runs and the other ranks build).
-    subroutine record_mc_task(d, rec, payload, task)
-        type(deck_t), intent(in) :: d
-        type(record_t), intent(in) :: rec
-        real(dp), intent(in) :: payload(:)      !! crc (2), sigma, np, phat, u_p, jac
-        type(record_mc_task_t), intent(out) :: task
-        real(dp), allocatable :: p0(:), h(:)
-        character(len=16), allocatable :: xname(:)
-        integer :: np, m
-        call fit_problem(d, rec, task%prob, p0, h)
-        call budget_inputs(d, xname, task%xval, task%ux)
-        m = size(rec%t)
-        task%sigma = payload(3)
-        np = nint(payload(4))
-        task%phat = payload(5:4 + np)
-        task%u_p = payload(5 + np:4 + 2*np)
-        task%jac = reshape(payload(5 + 2*np:4 + 2*np + m*np), [m, np])
-        task%nest = np
-    end subroutine record_mc_task
-
-    !> Monte Carlo sample k of a record fit: inputs and measured values drawn from stream k
-    !! of the seed, then the refit from the estimate; est: the sample's parameters (I1
-    !! first).  A failed refit: ERR_NUMERIC naming the sample.
-    subroutine record_mc_point(self, k, est, stat)
-        class(record_mc_task_t), intent(in) :: self
-        integer, intent(in) :: k                !! sample number
-        real(dp), intent(out) :: est(:)         !! the sample's parameters
-        type(status_t), intent(out) :: stat
-        type(record_fit_t) :: q
-        type(rng_t) :: g
-        type(lsq_result_t) :: fit
-        real(dp) :: p(size(self%phat)), dp_(size(self%phat)), r(size(self%jac, 1))
-        real(dp) :: h(size(self%phat))
-        integer :: j, it
-        logical :: done
-        est = 0.0_dp
-        g = rng_stream(self%prob%seed, k)
-        q = self%prob
-        do j = 1, size(self%xval)
-            call set_input(q%rg, q%st, j, self%xval(j) + self%ux(j)*rng_normal(g))
-        end do
-        do j = 1, size(q%rec%v)
-            if (self%prob%rec%has_u) then
-                q%rec%v(j) = self%prob%rec%v(j) + self%prob%rec%u(j)*rng_normal(g)
-            else
-                q%rec%v(j) = self%prob%rec%v(j) + self%sigma*rng_normal(g)
-            end if
-        end do
-        ! Gauss-Newton with the estimate's Jacobian
-        p = self%phat
-        done = .false.
-        do it = 1, 8
-            call q%residual(p, r, stat)
-            if (stat%code /= 0) exit
-            call la_lstsq(self%jac, -r, dp_, stat)
-            if (stat%code /= 0) exit
-            p = p + dp_
-            if (all(abs(dp_) <= 1.0e-3_dp*self%u_p + 1.0e-14_dp*abs(p))) then
-                done = .true.
-                exit
-            end if
-        end do
-        if (.not. done) then
-            do j = 1, size(p)
-                h(j) = H_REL*max(abs(self%phat(j)), self%u_p(j))
-            end do
-            call lm_fit(q, self%phat, h, size(r), lsq_options_t(), fit, stat)
-            if (stat%code /= 0) then
-                stat%code = ERR_NUMERIC
-                stat%msg = 'Monte Carlo sample '//itoa(k)//': '//stat%msg
-                return
-            end if
-            p = fit%p
-        end if
-        stat%code = 0
-        est = p
-    end subroutine record_mc_point
 
     !> A record made by the program itself: the deck's rig (with its &damping) released
     !! from &start, sampled every 1/rate_hz s from 0 to duration (s), theta4 (quantity
