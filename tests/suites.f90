@@ -28,6 +28,7 @@ module suites
     use test_identify, only: run_identify_tests
     use test_graph, only: run_graph_tests
     use test_stats, only: run_stats_tests
+    use test_measure, only: run_measure_tests
     implicit none
     private
 
@@ -97,6 +98,8 @@ contains
                     'resumed', run_sweep_tests), &
             suite_t('identify', 'damping, periods of asymmetric rigs, least squares, '// &
                     'record fits, examples', run_identify_tests), &
+            suite_t('measure', 'measurement as done: instrument files, releases pooled, '// &
+                    'traps, tare, trifilar', run_measure_tests), &
             suite_t('stats', 'Student''s t, chi-square tails, Welch-Satterthwaite, weighted '// &
                     'means', run_stats_tests), &
             suite_t('graph', 'the module graph (layers, analyses apart, at most 8 floors); '// &

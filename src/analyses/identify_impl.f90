@@ -425,7 +425,7 @@ contains
         type(accuracy_t) :: acc
         type(input_t), allocatable :: xp(:)
         real(dp), allocatable :: nu_rows(:)
-        real(dp) :: nu_per, amin
+        real(dp) :: nu_per, amin, up
         integer :: n, j
         logical, allocatable :: sel(:)
         n = size(tr%periods)
@@ -462,6 +462,13 @@ contains
             if (index(f%budget(j)%input, 'period(') == 1) nu_rows(j) = nu_per
         end do
         call split_rows(f%budget, nu_rows, x, per_trial, r)
+        if (nu_per < NU_INFINITE .and. size(r%own) > 0) then
+            ! the period rows share one variance estimate (the scatter, n - 1 dof): one
+            ! component for Welch-Satterthwaite
+            up = sqrt(sum(r%own%contribution**2, mask=index(r%own%input, 'period(') == 1))
+            r%nu_own = welch_satterthwaite([up, sqrt(max(0.0_dp, r%u_own**2 - up**2))], &
+                                           [nu_per, NU_INFINITE])
+        end if
         ! the classical formula from the mean period at the smallest amplitude
         amin = minval(r%amps)
         sel = r%amps <= amin*(1.0_dp + 1.0e-9_dp)
@@ -593,7 +600,7 @@ contains
             if (abs(emean) > 5.0_dp*se .and. abs(emean) > 2.0e-3_dp*maxval(abs(rec%v))) &
                 r%warnings = [warning_t('identify: the record''s residuals have a mean of '// &
                     sci(-emean/rec%to_rad, 2)//' '//trim(fmt%units)//' ('// &
-                    fixed(abs(emean)/se, 0)//' standard errors): an offset of the '// &
+                    itoa(nint(abs(emean)/se))//' standard errors): an offset of the '// &
                     'instrument (a gyro''s bias, an angle''s zero) biases I1 and the '// &
                     'damping; add bias to &measurement estimate')]
         end if
@@ -736,17 +743,18 @@ contains
         type(status_t), intent(inout) :: stat
         real(dp) :: s23, d23, i1
         character(len=*), parameter :: CAUSES_HIGH = 'likely: periods typed as the totals '// &
-            'of several cycles (give &measurement cycles = N), b or b_prime typed as half '// &
-            'the spacing (they are the full distances between the two cables), periods or '// &
-            'lengths in other units than the deck''s, or I2, I3 too rough'
-        character(len=*), parameter :: CAUSES_LOW = 'likely: b or b_prime typed as twice '// &
-            'the spacing, half periods typed as periods, lengths or periods in other units '// &
-            'than the deck''s, or I2, I3 too rough'
+            'of several cycles (give &measurement cycles = N), periods or lengths in other '// &
+            'units than the deck''s, b or b_prime typed as twice the spacing, or I2, I3 too '// &
+            'rough'
+        character(len=*), parameter :: CAUSES_LOW = 'likely: b or b_prime typed as half the '// &
+            'spacing (they are the full distances between the two cables), half periods '// &
+            'typed as periods, periods or lengths in other units than the deck''s, or I2, I3 '// &
+            'too rough'
         i1 = res%i1_total
         if (maxval(rels%amp_max) <= 90.0_dp .and. res%i1_linear > 0.0_dp) then
             if (abs(i1/res%i1_linear - 1.0_dp) > LINEAR_GAP_MAX) then
                 call set_error(stat, ERR_MODEL, 'identify: I1 = '//sci(i1, 4)//' from the '// &
-                    'model is '//fixed(100.0_dp*abs(i1/res%i1_linear - 1.0_dp), 0)//' % from '// &
+                    'model is '//itoa(nint(100.0_dp*abs(i1/res%i1_linear - 1.0_dp)))//' % from '// &
                     'the classical formula''s '//sci(res%i1_linear, 4)//' (period '// &
                     sci(res%period_linear, 5)//' s), at amplitudes up to 90 deg, where they '// &
                     'differ by 20 % at most: check the record''s units (t in s, '// &
@@ -769,7 +777,7 @@ contains
         else if (d23 > 0.0_dp .and. i1 < d23/TRIANGLE_MARGIN) then
             call set_error(stat, ERR_MODEL, 'identify: I1 = '//sci(i1, 4)//' is below |I2 '// &
                 '- I3| = '//sci(d23, 4)//' (&body inertia) by '// &
-                fixed(100.0_dp*(1.0_dp - i1/d23), 0)//' %: no rigid body has I1 < |I2 - '// &
+                itoa(nint(100.0_dp*(1.0_dp - i1/d23)))//' %: no rigid body has I1 < |I2 - '// &
                 'I3|; '//CAUSES_LOW)
         else if (i1 < d23) then
             res%warnings = [res%warnings, warning_t('identify: I1 = '//sci(i1, 4)// &

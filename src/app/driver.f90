@@ -22,7 +22,8 @@ module driver
     use floquet, only: floquet_result_t
     use work_precision, only: run_work_precision, wp_result_t
     use design, only: run_design, design_ready, design_result_t, design_task, DESIGN_STAGES
-    use identify, only: identify_ready, run_identify, identify_result_t, identify_mc_task
+    use identify, only: identify_ready, run_identify, identify_result_t, identify_mc_task, &
+        warning_t
     use monte_carlo, only: MC_ANALYSIS
     use geometry, only: pendulum_t
     implicit none
@@ -43,12 +44,16 @@ contains
     !! turn.  Their checkpoints (OUTDIR/NAME.chart.partial, NAME.design*.partial,
     !! NAME.identify_mc.partial) are removed once the run's files are committed, and kept
     !! when the run fails after them (--resume reuses them).
-    subroutine run_deck(path, outdir, line, stat, options)
+    !! Warnings (a suspicious result that stands: one line each) go to stderr as
+    !! "bifilar: warning: DECK: ...", or to `warnings` when given.
+    subroutine run_deck(path, outdir, line, stat, options, warnings)
         character(len=*), intent(in) :: path        !! deck file
         character(len=*), intent(in) :: outdir      !! output folder
         character(len=:), allocatable, intent(out) :: line   !! summary (on success)
         type(status_t), intent(out) :: stat         !! the first failure
         type(sweep_options_t), intent(in), optional :: options   !! --resume, --checkpoint
+        !> the run's warnings, returned instead of written to stderr
+        type(warning_t), allocatable, intent(out), optional :: warnings(:)
         type(deck_t) :: d
         type(sweep_report_t) :: rep
         character(len=:), allocatable :: chart_part, design_part
@@ -147,9 +152,13 @@ contains
                 else
                     line = line//', no period in the record for the linear formula'
                 end if
-                do k = 1, size(idr%warnings)
-                    call warn(path, idr%warnings(k)%s)
-                end do
+                if (present(warnings)) then
+                    warnings = idr%warnings
+                else
+                    do k = 1, size(idr%warnings)
+                        call warn(path, idr%warnings(k)%s)
+                    end do
+                end if
                 line = line//', '//itoa(idr%iterations)//' iterations;'
             end if
             if (analysis_requested(d, 'simulate')) then

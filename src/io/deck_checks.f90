@@ -478,7 +478,7 @@ contains
             if (stat%code /= STATUS_OK) return
             d%record_units = lower(adjustl(d%record_units))
             unit_rate = index(d%record_units, '/s') > 0
-            if (deck_gave(d, 'quantity') .and. (trim(d%quantity) == 'rate') .neqv. unit_rate) then
+            if (deck_gave(d, 'quantity') .and. ((trim(d%quantity) == 'rate') .neqv. unit_rate)) then
                 call bad(stat, 'measurement', 'record_units', quoted(d%record_units), &
                          'a '//trim(merge('rate ', 'angle', unit_rate))//' with quantity = '// &
                          quoted(d%quantity), 'rad or deg with quantity = ''angle'', rad/s or '// &

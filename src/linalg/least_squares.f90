@@ -30,12 +30,15 @@
 !!   remaining step in standard errors.  Converged when g <= chi2_tol (1e-4: a step below
 !!   1e-2 standard errors), or after an accepted step with ||D d|| <= xtol (||D p|| + xtol)
 !!   or a relative reduction of S below ftol (predicted too) while g <= 1, or when no step
-!!   is accepted any more (lambda beyond 1e16) while g <= 1e-2: the floor set by the noise
-!!   of the residuals and of the difference Jacobian (here: the model's integration error,
-!!   about rtol); or when S has fallen below 1e-20 of its start (an exact fit, to roundoff,
-!!   where g measures roundoff).  A small step with much to gain (g > 1) is no convergence:
-!!   it is what a fit pressed against parameters the model cannot take looks like.
-!!   Failure (ERR_NUMERIC): max_iter iterations, or lambda beyond 1e16 with g > 1e-2.
+!!   is accepted any more (lambda beyond 1e16: not even the shortest steepest-descent step
+!!   lowers S) while g <= 1 or the last accepted step met the step test: a minimum at the
+!!   floor set by the noise of the residuals and of the difference Jacobian (here: the
+!!   model's integration error, about rtol), where the promised gain is that noise's; or
+!!   when S has fallen below 1e-20 of its start (an exact fit, to roundoff, where g
+!!   measures roundoff).  A small step with much to gain (g > 1) is no convergence while
+!!   steps are still accepted: it is what a fit pressed against parameters the model
+!!   cannot take looks like.  Failure (ERR_NUMERIC): max_iter iterations, or lambda beyond
+!!   1e16 with g > 1 and no small last step.
 !!
 !! No routine stops; failures come back in status_t.
 module least_squares
@@ -85,8 +88,6 @@ module least_squares
 
     public :: lm_fit, lsq_jacobian
 
-    !> Gain (chi^2) below which a fit that accepts no more steps has converged.
-    real(dp), parameter :: GAIN_FLOOR = 1.0e-2_dp
     !> Fall of S (from its start) that makes an exact fit, to roundoff.
     real(dp), parameter :: EXACT_FIT = 1.0e-20_dp
 
@@ -106,7 +107,7 @@ contains
         real(dp), allocatable :: a(:, :), b(:), rt(:), jd(:)
         real(dp) :: dvec(size(p0)), dstep(size(p0)), pt(size(p0)), lambda, nu, st, pred, rho
         real(dp) :: dnorm, pnorm, gain, cost0
-        logical :: small_step
+        logical :: small_step, last_small
         type(status_t) :: s2
         integer :: n, j
         n = size(p0)
@@ -127,6 +128,7 @@ contains
         if (res%converged) return
         lambda = opts%lambda0
         nu = 2.0_dp
+        last_small = .false.
         do while (res%iterations < opts%max_iter)
             res%iterations = res%iterations + 1
             if (res%cost == 0.0_dp) then
@@ -178,11 +180,18 @@ contains
                 res%converged = gain <= opts%chi2_tol .or. (small_step .and. gain <= 1.0_dp) &
                                 .or. res%cost <= EXACT_FIT*cost0
                 if (res%converged) return
+                last_small = small_step
             else
                 lambda = lambda*nu
                 nu = 2.0_dp*nu
                 if (lambda > 1.0e16_dp) then
-                    res%converged = gain <= GAIN_FLOOR .or. res%cost <= EXACT_FIT*cost0
+                    ! no step along the whole path, down to the steepest descent's, lowers S:
+                    ! a minimum to the residuals' roundoff.  Converged when what Gauss-Newton
+                    ! still promises is below one unit of chi^2 (the parameters are within a
+                    ! fraction of their standard errors), or the last accepted step met the
+                    ! step test
+                    res%converged = gain <= 1.0_dp .or. last_small .or. &
+                                    res%cost <= EXACT_FIT*cost0
                     if (res%converged) return
                     exit
                 end if

@@ -275,7 +275,8 @@ contains
     !! point (an angle's first extreme about its centre, a rate's first crossing of its
     !! mean), where the body is at rest for an instant.  The amplitude: the held angle's
     !! distance from the swing's centre, or a rate's first peak over 2 pi / T; the sign: +1
-    !! when the first swing goes the way the model's does (theta4 falling from +A).
+    !! when the first swing goes the way the model's does (theta4 falling from +A, W rising
+    !! from 0).
     subroutine find_release(rec, rate, rl)
         type(record_t), intent(in) :: rec
         logical, intent(in) :: rate             !! W (rad/s), else theta4 (rad)
@@ -307,8 +308,9 @@ contains
             tp = mean_period(rec, idep)
             rl%period = tp
             if (rate) then
-                ! the model's W is negative first (theta4 falls from +A)
-                rl%sign = merge(1.0_dp, -1.0_dp, v(idep) < level)
+                ! the model's W = omega . n3 is positive first (theta4 falls from +A: W is
+                ! -theta4' to first order)
+                rl%sign = merge(1.0_dp, -1.0_dp, v(idep) > level)
                 peak = maxval(abs(v(idep:min(n, idep + first_span(tp))) - level))
                 rl%amplitude = amplitude_of_rate(peak, tp)
             else
@@ -324,7 +326,8 @@ contains
             ic = first_crossing(v, centre, 1)
             if (rate) then
                 ie = max(1, ic)
-                rl%sign = merge(1.0_dp, -1.0_dp, v(min(n, ie + 1)) < v(max(1, ie - 1)))
+                ! W rising through its mean: theta4 at a maximum, the model's release
+                rl%sign = merge(1.0_dp, -1.0_dp, v(min(n, ie + 1)) > v(max(1, ie - 1)))
                 peak = maxval(abs(v(ie:min(n, ie + first_span(tp))) - centre))
                 rl%amplitude = amplitude_of_rate(peak, tp)
             else

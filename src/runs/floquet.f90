@@ -124,12 +124,16 @@ module floquet
     !> Sentinel written for chart points whose analysis failed (e.g. more than
     !! FLOQUET_MAX_STEPS steps): never NaN.
     real(dp), parameter, public :: CHART_FAILED = -2.0_dp
+    !> A rig symmetric to this (relative: l and l_prime; r cos(lambda) against b'/2) is
+    !! symmetric: measured lengths agree no better, and pure torsion is then exact to
+    !! second order in the difference.
+    real(dp), parameter, public :: SYMMETRY_TOL = 1.0e-6_dp
 
 contains
 
     !> Refuse a scene in which pure torsion is not an exact motion, saying which condition
-    !! fails: equal cables, mass centre on the vertical bisector of AB, a principal axis
-    !! vertical at rest.  Returns the index of the vertical principal axis.
+    !! fails: equal cables, mass centre on the vertical bisector of AB (both to SYMMETRY_TOL),
+    !! a principal axis vertical at rest.  Returns the index of the vertical principal axis.
     subroutine check_torsion_scene(p, ivert, stat)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         integer, intent(out) :: ivert           !! which b_i is vertical at rest
@@ -137,7 +141,7 @@ contains
         integer :: i
         character(len=200) :: buf
         ivert = 0
-        if (abs(p%big_l - p%big_lp) > 1.0e-12_dp*p%big_l) then
+        if (abs(p%big_l - p%big_lp) > SYMMETRY_TOL*p%big_l) then
             write (buf, '(a,es12.5,a,es12.5,a)') '&suspension l/b'' = ', p%big_l, &
                 ', l_prime/b'' = ', p%big_lp, ': pure torsion needs equal cables (l = l_prime)'
             call set_error(stat, ERR_DECK, trim(buf))
@@ -145,7 +149,7 @@ contains
         end if
         ! at rest R* - C = r (s_lam ntilde1 - c_lam ntilde3) with ntilde1 = -n3, ntilde3 = -n2:
         ! on the vertical through O when r cos(lambda) = b'/2
-        if (abs(p%r*cos(p%lambda) - 0.5_dp) > 1.0e-9_dp) then
+        if (abs(p%r*cos(p%lambda) - 0.5_dp) > SYMMETRY_TOL) then
             write (buf, '(a,es12.5,a)') '&body r cos(lambda) / b'' = ', p%r*cos(p%lambda), &
                 ': the mass centre must lie on the vertical bisector of AB (r cos(lambda) = b''/2)'
             call set_error(stat, ERR_DECK, trim(buf))

@@ -1,0 +1,574 @@
+!> Measurement as it is done (analysis identify on real-world inputs): tables as
+!! instruments write them, the pooling of releases, the traps that must not give a number
+!! (exit 2 or 4, one line), a phone's gyro CSV (header, five columns, deg/s, a bias, the
+!! release 1.4 s in), timed totals of several cycles, the mass centre as measured (cg_depth)
+!! against r and lambda, a trifilar platform against an independent quadrature of its
+!! torsion, a tare, trials that disagree, and the 95 % interval's coverage over releases
+!! that scatter more than their own uncertainty says.  Truths are made here: periods by the
+!! exact torsion period (or the quadrature), records by the model with noise drawn here.
+module test_measure
+    use kinds, only: dp, pi, deg
+    use status, only: status_t
+    use testing, only: tester_t, write_text, file_has, count_lines, run, fresh_dir, &
+        read_kv_text
+    use deck, only: deck_t, read_deck_text
+    use rig, only: rig_of, start_of, accuracy_of
+    use driver, only: run_deck
+    use identify, only: warning_t
+    use random, only: rng_t, rng_stream, rng_normal
+    use period_inversion, only: torsion_period_s
+    use record_fit, only: record_model, correlation_time
+    use tables, only: table_t, read_table
+    use pooling, only: pooled_t, pool_releases
+    use stats, only: NU_INFINITE
+    use output_io, only: read_kv
+    use text, only: itoa
+    implicit none
+    private
+
+    public :: run_measure_tests
+
+    character(len=*), parameter :: SCR = 'build/test_measure'
+    character(len=*), parameter :: NL = new_line('a')
+    real(dp), parameter :: I1_TRUE = 0.0512_dp
+    !> A laboratory rig in SI units, symmetric (equal cables, the mass centre on the axis).
+    character(len=*), parameter :: SUSP = &
+        '&suspension b = 0.4, b_prime = 0.4, l = 1.2, l_prime = 1.2, g = 9.80665 /'//NL
+    character(len=*), parameter :: BODY = &
+        '&body mass = 3.1, inertia = 0.0512, 0.063, 0.0304, cg_depth = 0.15 /'//NL
+    character(len=*), parameter :: HEAD = "&scene title = 'measure test', "// &
+        "analyses = 'identify' /"//NL
+
+contains
+
+    !> Suite measure.
+    subroutine run_measure_tests(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        call fresh_dir(SCR)
+        if (t%want('measure: tables as instruments write them, text columns')) call test_tables(t)
+        if (t%want('measure: pooling of releases')) call test_pooling(t)
+        if (t%want('measure: traps refused with one line')) call test_traps(t, exe)
+        if (t%want('measure: cycles, tare, cg_depth against r and lambda')) call test_decks(t)
+        if (t%want('measure: trifilar against its own quadrature')) call test_trifilar(t)
+        if (t%want('measure: phone gyro CSV, bias, release 1.4 s in')) call test_phone(t, exe)
+        if (t%want('measure: trials, consistent and not')) call test_trials(t, exe)
+        if (t%want('measure: coverage over releases that scatter')) call test_coverage(t)
+        if (t%want('measure: correlated residuals')) call test_correlated(t)
+    end subroutine run_measure_tests
+
+    !> A number as deck text (full precision).
+    function num(x) result(s)
+        real(dp), intent(in) :: x
+        character(len=:), allocatable :: s
+        character(len=32) :: b
+        write (b, '(es24.16)') x
+        s = trim(adjustl(b))
+    end function num
+
+    !> The exact torsion period (s) of the SUSP/BODY rig with I1 = i1 at amplitude a (deg).
+    real(dp) function period_of(i1, a) result(tp)
+        real(dp), intent(in) :: i1, a
+        type(deck_t) :: d
+        type(status_t) :: st
+        call read_deck_text(SCR//'/rig.nml', HEAD//SUSP//BODY, d, st)
+        call torsion_period_s(rig_of(d), i1, a, tp, st)
+        if (st%code /= 0) tp = -1.0_dp
+    end function period_of
+
+    !> Run a deck written here in-process; the value of key in its .identify (-1e300 when
+    !! the run failed or the key is absent).
+    real(dp) function kv(name, key) result(v)
+        character(len=*), intent(in) :: name, key
+        logical :: found
+        call read_kv(SCR//'/'//name//'.identify', key, v, found)
+        if (.not. found) v = -1.0e300_dp
+    end function kv
+
+    subroutine run_here(name, text, st)
+        character(len=*), intent(in) :: name, text
+        type(status_t), intent(out) :: st
+        character(len=:), allocatable :: line
+        type(warning_t), allocatable :: w(:)
+        call write_text(SCR//'/'//name//'.nml', text)
+        call run_deck(SCR//'/'//name//'.nml', SCR, line, st, warnings=w)
+    end subroutine run_here
+
+    ! ---------------------------------------------------------------------------------------
+    !> A semicolon table with decimal commas, a byte order mark, CR LF line ends, a quoted
+    !! header; a table with text columns (its header required, its text kept).
+    subroutine test_tables(t)
+        type(tester_t), intent(inout) :: t
+        type(table_t) :: tab
+        type(status_t) :: st
+        character(len=*), parameter :: CR = achar(13)
+        call write_text(SCR//'/semi.csv', char(239)//char(187)//char(191)// &
+            '"Time (s)";"Gyro Z (deg/s)"'//CR//NL//'0,00;1,5'//CR//NL//'0,01;-2,25e1'//CR//NL)
+        call read_table(SCR//'/semi.csv', tab, st)
+        call t%check('tables: semicolons, decimal commas, BOM, CR LF read', st%code == 0 .and. &
+                     tab%nrow == 2 .and. tab%ncol == 2)
+        if (st%code /= 0) return
+        call t%check('tables: values', all(abs(tab%v(:, 2) - [1.5_dp, -22.5_dp]) < 1.0e-12_dp) &
+                     .and. abs(tab%v(2, 1) - 0.01_dp) < 1.0e-15_dp)
+        call t%check('tables: header names (quoted, lower case)', &
+                     tab%column('gyro z (deg/s)') == 2 .and. tab%column('time (s)') == 1)
+        call write_text(SCR//'/text.csv', 'trial, period, record'//NL//'A, 1.5, '//NL// &
+            'B2, 1.6, swing b.csv'//NL)
+        call read_table(SCR//'/text.csv', tab, st, text_columns=['trial ', 'record'])
+        call t%check('tables: text columns kept', st%code == 0 .and. tab%nrow == 2)
+        if (st%code /= 0) return
+        call t%check('tables: text of the text columns, numbers of the others', &
+                     tab%text(2, 1)%s == 'B2' .and. tab%text(2, 3)%s == 'swing b.csv' .and. &
+                     tab%text(1, 3)%s == '' .and. abs(tab%v(2, 2) - 1.6_dp) < 1.0e-15_dp)
+        call write_text(SCR//'/nohead.csv', '1, 1.5'//NL)
+        call read_table(SCR//'/nohead.csv', tab, st, text_columns=['trial'])
+        call t%check('tables: text columns need a header', st%code == 2 .and. &
+                     index(st%msg, 'naming the columns') > 0)
+    end subroutine test_tables
+
+    ! ---------------------------------------------------------------------------------------
+    !> Pooling: one release; consistent releases (the weighted mean, u_int, the
+    !! Welch-Satterthwaite dof of their parts); releases that disagree (DerSimonian-Laird's
+    !! between-release variance by hand, n - 1 dof, flagged); releases without their own u
+    !! (the standard error of the mean); never below that standard error.
+    subroutine test_pooling(t)
+        type(tester_t), intent(inout) :: t
+        type(pooled_t) :: p
+        real(dp) :: x(4), u(4), w(4), q, t2, ws, m
+        call pool_releases([2.0_dp], [0.1_dp], [5.0_dp], p)
+        call t%check('pooling: one release is itself', p%mean == 2.0_dp .and. &
+                     p%u_random == 0.1_dp .and. p%nu_random == 5.0_dp .and. &
+                     p%consistency == 'single release')
+        x = [10.0_dp, 10.1_dp, 9.95_dp, 10.05_dp]
+        u = [0.1_dp, 0.1_dp, 0.2_dp, 0.1_dp]
+        call pool_releases(x, u, [NU_INFINITE, NU_INFINITE, NU_INFINITE, NU_INFINITE], p)
+        w = 1.0_dp/u**2
+        call t%check_close('pooling: consistent, the weighted mean', p%mean, &
+                           sum(w*x)/sum(w), rtol=1.0e-14_dp)
+        call t%check_close('pooling: consistent, u = u_int', p%u_random, 1.0_dp/sqrt(sum(w)), &
+                           rtol=1.0e-14_dp)
+        call t%check('pooling: consistent, flagged so, dof infinite', &
+                     p%consistency == 'consistent' .and. p%nu_random >= NU_INFINITE)
+        call pool_releases(x, u, [4.0_dp, 4.0_dp, 4.0_dp, 4.0_dp], p)
+        call t%check_close('pooling: consistent, Welch-Satterthwaite dof of the parts', &
+                           p%nu_random, (1.0_dp/sum(w))**2/sum((w/sum(w)*u)**4/4.0_dp), &
+                           rtol=1.0e-12_dp)
+        x = [10.0_dp, 11.0_dp, 9.0_dp, 10.5_dp]
+        u = 0.1_dp
+        call pool_releases(x, u, [NU_INFINITE, NU_INFINITE, NU_INFINITE, NU_INFINITE], p)
+        w = 1.0_dp/u**2
+        ws = sum(w)
+        m = sum(w*x)/ws
+        q = sum(w*(x - m)**2)
+        t2 = (q - 3.0_dp)/(ws - sum(w**2)/ws)
+        call t%check('pooling: disagreeing releases flagged inconsistent', &
+                     p%consistency == 'inconsistent' .and. p%p_value < 0.05_dp)
+        call t%check_close('pooling: Birge ratio', p%birge, sqrt(q/3.0_dp), rtol=1.0e-12_dp)
+        call t%check_close('pooling: between-release scatter tau^2 (DerSimonian-Laird)', &
+                           p%tau**2, t2, rtol=1.0e-12_dp)
+        call t%check('pooling: disagreeing, n - 1 dof and u >= the standard error of the mean', &
+                     p%nu_random == 3.0_dp .and. p%u_random >= sqrt(sum((x - sum(x)/4)**2)/3/4) &
+                     .and. p%u_reproducibility > 0.0_dp)
+        call pool_releases(x, [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp], [1.0_dp, 1.0_dp, 1.0_dp, &
+                           1.0_dp], p)
+        call t%check_close('pooling: without u, the standard error of the mean', p%u_random, &
+                           sqrt(sum((x - 10.125_dp)**2)/3.0_dp/4.0_dp), rtol=1.0e-12_dp)
+        call t%check('pooling: without u, untested', p%consistency == 'not tested' .and. &
+                     p%nu_random == 3.0_dp)
+    end subroutine test_pooling
+
+    ! ---------------------------------------------------------------------------------------
+    !> The mistakes people make, each refused with one line on stderr naming the deck and
+    !! the cause, and no file: g left out, the mass centre left out (exit 2); ten-cycle
+    !! totals typed as periods, half spacings typed for b and b_prime (exit 4); an I1 just
+    !! above I2 + I3 is a warning (exit 0, one line).
+    subroutine test_traps(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: per
+        real(dp) :: t1, t2
+        t1 = period_of(I1_TRUE, 10.0_dp)
+        t2 = period_of(I1_TRUE, 20.0_dp)
+        per = '&measurement periods = '//num(t1)//', '//num(t2)//', amplitudes = 10, 20 /'//NL
+        call one('nog', HEAD//'&suspension b = 0.4, b_prime = 0.4, l = 1.2, l_prime = 1.2 /'// &
+                 NL//BODY//per, 2, 'not given: &suspension g')
+        call one('nocg', HEAD//SUSP//'&body mass = 3.1, inertia = 0.0512, 0.063, 0.0304 /'// &
+                 NL//per, 2, 'the mass centre')
+        call one('totals', HEAD//SUSP//BODY//'&measurement periods = '//num(10*t1)//', '// &
+                 num(10*t2)//', amplitudes = 10, 20 /'//NL, 4, 'cycles = N')
+        call one('half_b', HEAD//'&suspension b = 0.2, b_prime = 0.2, l = 1.2, '// &
+                 'l_prime = 1.2, g = 9.80665 /'//NL//BODY//per, 4, 'half the spacing')
+        call one('mm', HEAD//SUSP//BODY//'&measurement periods = '//num(1000*t1)//', '// &
+                 num(1000*t2)//', amplitudes = 10, 20 /'//NL, 4, 'units')
+        ! I1 5 % above I2 + I3: a warning, the number stands
+        call fresh_dir(SCR//'/trap_lamina')
+        t1 = period_of(1.05_dp*(0.063_dp + 0.0304_dp), 10.0_dp)
+        call write_text(SCR//'/trap_lamina/l.nml', HEAD//SUSP//BODY//'&measurement '// &
+                        'periods = '//num(t1)//', amplitudes = 10 /'//NL)
+        call t%check('traps: I1 5 % above I2 + I3: exit 0, one warning line naming I2 + I3', &
+                     all([run(exe//' '//SCR//'/trap_lamina/l.nml --out '//SCR//'/trap_lamina', &
+                          SCR//'/trap_lamina') == 0, &
+                          count_lines(SCR//'/trap_lamina/stderr') == 1, &
+                          file_has(SCR//'/trap_lamina/stderr', 'warning'), &
+                          file_has(SCR//'/trap_lamina/stderr', 'exceeds I2 + I3')]))
+    contains
+        subroutine one(name, text, code, word)
+            character(len=*), intent(in) :: name, text, word
+            integer, intent(in) :: code
+            character(len=:), allocatable :: d
+            integer :: ex
+            d = SCR//'/trap_'//name
+            call fresh_dir(d)
+            call fresh_dir(d//'/out')
+            call write_text(d//'/'//name//'.nml', text)
+            ex = run(exe//' '//d//'/'//name//'.nml --out '//d//'/out', d)
+            call t%check('traps: '//name//': exit '//itoa(code)//', one line naming the deck '// &
+                         'and '''//word//''', no file', all([ex == code, &
+                         count_lines(d//'/stderr') == 1, file_has(d//'/stderr', &
+                         name//'.nml: '), file_has(d//'/stderr', word), &
+                         count_lines(d//'/stdout') == 0, .not. file_has_any(d//'/out')]))
+        end subroutine one
+    end subroutine test_traps
+
+    !> Whether a folder holds any file.
+    logical function file_has_any(dir)
+        character(len=*), intent(in) :: dir
+        integer :: ex
+        call execute_command_line('[ -z "$(ls -A '//dir//')" ]', exitstat=ex)
+        file_has_any = ex /= 0
+    end function file_has_any
+
+    ! ---------------------------------------------------------------------------------------
+    !> Timed totals of 10 cycles with cycles = 10 give the I1 of the periods themselves;
+    !! their scatter is per timing (u_period_from_scatter of the totals); a tare and an added
+    !! inertia are subtracted with their u; cg_depth, cg_offset give the I1 of the r, lambda
+    !! they stand for, on a rig whose periods are simulated (unequal cables).
+    subroutine test_decks(t)
+        type(tester_t), intent(inout) :: t
+        type(status_t) :: st
+        real(dp) :: t1, t2, t3, i_per, i_tot, u_tot, u_b, r, lam
+        character(len=:), allocatable :: asym
+        t1 = period_of(I1_TRUE, 10.0_dp)
+        t2 = period_of(I1_TRUE, 10.0_dp)
+        t3 = period_of(I1_TRUE, 10.0_dp)
+        call run_here('per', HEAD//SUSP//BODY//'&measurement periods = '//num(t1)//', '// &
+                      num(t2 + 1.0e-3_dp)//', '//num(t3 - 2.0e-3_dp)//', amplitudes = 10, 10, 10 /'// &
+                      NL, st)
+        call t%check('cycles: periods deck runs', st%code == 0)
+        call run_here('tot', HEAD//SUSP//BODY//'&measurement periods = '//num(10*t1)//', '// &
+                      num(10*t2 + 1.0e-2_dp)//', '//num(10*t3 - 2.0e-2_dp)//', cycles = 10, '// &
+                      'amplitudes = 10, 10, 10 /'//NL, st)
+        call t%check('cycles: totals of 10 cycles run', st%code == 0)
+        call t%check_close('cycles: the same I1 from totals of 10 cycles', kv('tot', 'I1'), &
+                           kv('per', 'I1'), rtol=1.0e-12_dp)
+        call t%check_close('cycles: the timing scatter is the totals''', &
+                           kv('tot', 'u_period_from_scatter'), &
+                           10*kv('per', 'u_period_from_scatter'), rtol=1.0e-9_dp)
+        call t%check_close('cycles: the same u_I1 (errors per timing 10 times those per '// &
+                           'cycle)', kv('tot', 'u_I1'), kv('per', 'u_I1'), rtol=1.0e-6_dp)
+        call t%check_close('cycles: dof_eff n - 1 = 2 (the scatter of three timings)', &
+                           kv('tot', 'dof_eff'), 2.0_dp, rtol=1.0e-9_dp)
+        call t%check_close('cycles: k = t(0.975, 2) = 4.303', kv('tot', 'k'), 4.30265273_dp, &
+                           rtol=1.0e-7_dp)
+        ! a tare and an added inertia
+        call run_here('tare', HEAD//SUSP//BODY//'&measurement periods = '//num(t1)//', '// &
+                      'amplitudes = 10, u_period = 1e-4, u_b = 5e-4, tare_I1 = 0.004, '// &
+                      'u_tare_I1 = 1e-4, tare_mass = 0.3, added_inertia = 0.0005, '// &
+                      'u_added_inertia = 5e-5 /'//NL, st)
+        call t%check('tare: runs', st%code == 0)
+        i_per = kv('tare', 'I1')
+        i_tot = kv('tare', 'I1_total')
+        u_tot = kv('tare', 'u_I1_total')
+        call t%check_close('tare: I1_total is the rig''s I1', i_tot, I1_TRUE, rtol=1.0e-9_dp)
+        call t%check_close('tare: I1 = I1_total - tare_I1 - added_inertia', i_per, &
+                           i_tot - 0.004_dp - 0.0005_dp, rtol=1.0e-13_dp)
+        call t%check_close('tare: u_I1^2 = u_I1_total^2 + u_tare^2 + u_added^2', &
+                           kv('tare', 'u_I1'), sqrt(u_tot**2 + 1.0e-8_dp + 2.5e-9_dp), &
+                           rtol=1.0e-12_dp)
+        u_b = I1_TRUE/0.4_dp*5.0e-4_dp
+        call t%check('tare: u_I1_total holds the period''s and b''s parts', u_tot > u_b .and. &
+                     u_tot < 2*u_b + 1.0e-4_dp*2*I1_TRUE/t1)
+        call t%check_close('tare: mass_body = mass - tare_mass', kv('tare', 'mass_body'), &
+                           2.8_dp, rtol=1.0e-14_dp)
+        ! cg_depth, cg_offset against r, lambda on unequal cables (simulated periods)
+        r = sqrt((0.2_dp + 0.03_dp)**2 + 0.15_dp**2)
+        lam = atan2(0.15_dp, 0.2_dp + 0.03_dp)
+        asym = '&suspension b = 0.4, b_prime = 0.4, l = 1.2, l_prime = 1.17, g = 9.80665 /'//NL
+        call run_here('cgd', HEAD//asym//'&body mass = 3.1, inertia = 0.05, 0.063, 0.0304, '// &
+                      'cg_depth = 0.15, cg_offset = 0.03 /'//NL//'&measurement periods = '// &
+                      '1.43, amplitudes = 20 /'//NL, st)
+        call t%check('cg_depth: runs (simulated periods)', st%code == 0)
+        call run_here('rl', HEAD//asym//'&body mass = 3.1, inertia = 0.05, 0.063, 0.0304, '// &
+                      'r = '//num(r)//', lambda = '//num(lam)//' /'//NL//'&measurement '// &
+                      'periods = 1.43, amplitudes = 20 /'//NL, st)
+        call t%check_close('cg_depth: the I1 of r and lambda', kv('cgd', 'I1'), kv('rl', 'I1'), &
+                           rtol=1.0e-9_dp)
+        ! r, lambda typed to 8 digits on a symmetric rig: symmetric (to 1e-6), exact torsion
+        call run_here('rl8', HEAD//SUSP//'&body mass = 3.1, inertia = 0.0512, 0.063, 0.0304, '// &
+                      'r = 0.25, lambda = 0.64350111 /'//NL//'&measurement periods = '// &
+                      num(t1)//', amplitudes = 10 /'//NL, st)
+        call t%check('r, lambda to 8 digits: exact torsion', all([st%code == 0, &
+                     file_has(SCR//'/rl8.identify', 'period_model = exact torsion')]))
+    end subroutine test_decks
+
+    ! ---------------------------------------------------------------------------------------
+    !> A trifilar platform (three cables at radius R on the support, R' on the body, length
+    !! l): its exact torsion period computed here from the energy integral,
+    !! z(theta) = (l^2 - R^2 - R'^2 + 2 R R' cos theta)^(1/2), T = 4 int_0^A ((I1 +
+    !! m z'^2)/(2 m g (z - z(A))))^(1/2) dtheta (theta = A sin phi, the midpoint rule on
+    !! 20000 intervals); identify with cables = 3 recovers I1 from two such periods.
+    subroutine test_trifilar(t)
+        type(tester_t), intent(inout) :: t
+        type(status_t) :: st
+        real(dp), parameter :: R = 0.2_dp, RP = 0.15_dp, L = 1.0_dp, M = 2.0_dp, G = 9.80665_dp
+        real(dp), parameter :: I1 = 0.0412_dp
+        real(dp) :: t1, t2
+        t1 = tri_period(5.0_dp*deg)
+        t2 = tri_period(40.0_dp*deg)
+        call run_here('tri', HEAD//'&suspension cables = 3, radius = 0.2, radius_prime = 0.15, '// &
+                      'l = 1.0, g = 9.80665 /'//NL//'&body mass = 2.0, inertia = 0.04, 0.03, '// &
+                      '0.03 /'//NL//'&measurement periods = '//num(t1)//', '//num(t2)// &
+                      ', amplitudes = 5, 40 /'//NL, st)
+        call t%check('trifilar: runs', st%code == 0)
+        call t%check_close('trifilar: I1 of the independent quadrature', kv('tri', 'I1'), I1, &
+                           rtol=1.0e-8_dp)
+        call t%check('trifilar: exact torsion', file_has(SCR//'/tri.identify', &
+                     'period_model = exact torsion'))
+    contains
+        real(dp) function tri_period(a) result(tp)
+            real(dp), intent(in) :: a
+            integer, parameter :: N = 20000
+            real(dp) :: phi, th, z, za, dz, dzdt, s
+            integer :: k
+            za = sqrt(L**2 - R**2 - RP**2 + 2*R*RP*cos(a))
+            s = 0.0_dp
+            do k = 1, N
+                phi = (k - 0.5_dp)*0.5_dp*pi/N
+                th = a*sin(phi)
+                z = sqrt(L**2 - R**2 - RP**2 + 2*R*RP*cos(th))
+                ! z - z(A) = 2 R R' (cos th - cos A)/(z + z(A)), without cancellation
+                dz = 4*R*RP*sin(0.5_dp*(a + th))*sin(0.5_dp*(a - th))/(z + za)
+                dzdt = -R*RP*sin(th)/z
+                s = s + sqrt((I1 + M*dzdt**2)/(2*M*G*dz))*a*cos(phi)
+            end do
+            tp = 4*s*0.5_dp*pi/N
+        end function tri_period
+    end subroutine test_trifilar
+
+    ! ---------------------------------------------------------------------------------------
+    !> A phone's gyro export: a CSV with a header, five columns (time, three accelerations
+    !! and the gyro's z in deg/s), a bias of 0.6 deg/s, noise 0.3 deg/s at 100 Hz, the body
+    !! held for 1.4 s and then released (times from 0 at the start of the record).  With
+    !! record_columns = 1, 5, record_units = 'deg/s' and estimate = 'I1 c_v amplitude t0
+    !! bias': I1 within 0.1 %, c_v and the bias within 3 u, the release within 0.02 s.
+    !! Without bias estimated: a warning line naming the bias.
+    subroutine test_phone(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        type(deck_t) :: d
+        type(status_t) :: st
+        type(rng_t) :: g
+        real(dp), parameter :: CV = 2.0e-3_dp, BIAS = 0.6_dp, NOISE = 0.3_dp, T0 = 1.4_dp
+        real(dp), allocatable :: tt(:), w(:)
+        character(len=:), allocatable :: text, rigtext, csv
+        character(len=120) :: row
+        integer :: i, n, ex
+        real(dp) :: cv_fit, ucv
+        rigtext = HEAD//'&suspension b = 0.4, b_prime = 0.4, l = 1.2, l_prime = 1.18, '// &
+            'g = 9.80665 /'//NL//'&body mass = 3.1, inertia = 0.0512, 0.063, 0.0304, '// &
+            'cg_depth = 0.15, cg_offset = 0.02 /'//NL//"&start mode = 'raised', "// &
+            'amplitude = 25 /'//NL
+        call read_deck_text(SCR//'/phone_truth.nml', rigtext//'&damping c_v = '//num(CV)// &
+                            ' /'//NL//'&integration rtol = 1e-12, atol = 1e-14 /'//NL, d, st)
+        call t%check('phone: the truth deck reads', st%code == 0)
+        if (st%code /= 0) return
+        n = 2001
+        allocate (tt(n), w(n))
+        do i = 1, n
+            tt(i) = (i - 1)*0.01_dp
+        end do
+        call record_model(rig_of(d), start_of(d), accuracy_of(d), tt, T0, .true., w, st)
+        call t%check('phone: the truth record', st%code == 0)
+        if (st%code /= 0) return
+        g = rng_stream(77, 0)
+        csv = '"Time (s)","Acceleration x (m/s^2)","Acceleration y (m/s^2)",'// &
+              '"Acceleration z (m/s^2)","Gyroscope z (deg/s)"'//NL
+        do i = 1, n
+            write (row, '(f0.3,3(a,f0.4),a,f0.5)') tt(i), ',', 0.01_dp*rng_normal(g), ',', &
+                9.81_dp + 0.01_dp*rng_normal(g), ',', 0.01_dp*rng_normal(g), ',', &
+                w(i)/deg + BIAS + NOISE*rng_normal(g)
+            csv = csv//trim(row)//NL
+        end do
+        call write_text(SCR//'/phone.csv', csv)
+        text = rigtext//"&measurement record = 'phone.csv', record_columns = 1, 5, "// &
+            "record_units = 'deg/s', estimate = 'I1 c_v amplitude t0 bias' /"//NL
+        call run_here('phone', text, st)
+        call t%check('phone: the fit converges (exit 0)', st%code == 0)
+        if (st%code /= 0) then
+            write (*, '(a)') '   '//st%msg
+            return
+        end if
+        call t%check_close('phone: I1 within 0.1 %', kv('phone', 'I1'), I1_TRUE, rtol=1.0e-3_dp)
+        cv_fit = kv('phone', 'c_v')
+        ucv = kv('phone', 'u_c_v')
+        call t%check('phone: c_v within 3 u of the truth ('//trim(num(cv_fit))//' +- '// &
+                     trim(num(ucv))//')', abs(cv_fit - CV) <= 3*ucv .and. ucv < 0.5_dp*CV)
+        call t%check('phone: bias within 3 u (rad/s)', abs(kv('phone', 'bias') - BIAS*deg) <= &
+                     3*kv('phone', 'u_bias'))
+        call t%check('phone: release found within 0.02 s', abs(kv('phone', 't0') - T0) < 0.02_dp)
+        call t%check('phone: the fit figure''s data in deg/s', file_has(SCR//'/phone.fit.dat', &
+                     'W (deg/s)'))
+        ! the same record, the bias not estimated: a warning names it
+        call fresh_dir(SCR//'/phone_nobias')
+        call execute_command_line('cp '//SCR//'/phone.csv '//SCR//'/phone_nobias/')
+        call write_text(SCR//'/phone_nobias/nb.nml', rigtext//"&measurement record = "// &
+                        "'phone.csv', record_columns = 1, 5, record_units = 'deg/s', "// &
+                        "estimate = 'I1 c_v amplitude t0' /"//NL)
+        ex = run(exe//' '//SCR//'/phone_nobias/nb.nml --out '//SCR//'/phone_nobias', &
+                 SCR//'/phone_nobias')
+        call t%check('phone: without bias estimated, exit 0 and a warning naming the bias', &
+                     all([ex == 0, count_lines(SCR//'/phone_nobias/stderr', 'warning') == 1, &
+                          file_has(SCR//'/phone_nobias/stderr', 'add bias to')]))
+    end subroutine test_phone
+
+    ! ---------------------------------------------------------------------------------------
+    !> A table of releases: three releases that agree (consistent, no warning), then five
+    !! whose I1 differ by 2 % with timings good to 1 ms (inconsistent: one warning line,
+    !! exit 0, the key in the file, u at least the standard error of their mean); a table
+    !! with a misspelt column and one whose release changes its rig are refused (exit 2).
+    subroutine test_trials(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: tab, dd
+        real(dp) :: i1s(5), sem, m
+        integer :: r, k, ex
+        character(len=32) :: val
+        dd = SCR//'/trials'
+        call fresh_dir(dd)
+        tab = 'trial,period,cycles,amplitude'//NL
+        do r = 1, 3
+            do k = 1, 2
+                tab = tab//itoa(r)//','//num(10*period_of(I1_TRUE, 10.0_dp) + &
+                      1.0e-3_dp*(-1)**(r + k))//',10,10'//NL
+            end do
+        end do
+        call write_text(dd//'/ok.csv', tab)
+        call write_text(dd//'/ok.nml', HEAD//SUSP//BODY//"&measurement trials = 'ok.csv', "// &
+                        'u_period = 0.002 /'//NL)
+        ex = run(exe//' '//dd//'/ok.nml --out '//dd, dd)
+        call read_kv_text(dd//'/ok.identify', 'consistency', val)
+        call t%check('trials: three agreeing releases: consistent, no warning', all([ex == 0, &
+                     trim(val) == 'consistent', count_lines(dd//'/stderr') == 0]))
+        i1s = I1_TRUE*[1.0_dp, 1.02_dp, 0.98_dp, 1.01_dp, 0.99_dp]
+        tab = 'trial,period,cycles,amplitude,u_period'//NL
+        do r = 1, 5
+            tab = tab//'r'//itoa(r)//','//num(10*period_of(i1s(r), 10.0_dp))//',10,10,0.001'//NL
+        end do
+        call write_text(dd//'/bad.csv', tab)
+        call write_text(dd//'/bad.nml', HEAD//SUSP//BODY//"&measurement trials = 'bad.csv' /"//NL)
+        ex = run(exe//' '//dd//'/bad.nml --out '//dd, dd)
+        call read_kv_text(dd//'/bad.identify', 'consistency', val)
+        call t%check('trials: disagreeing releases: exit 0, inconsistent in the file', &
+                     ex == 0 .and. trim(val) == 'inconsistent')
+        call t%check('trials: disagreeing releases: one warning line', &
+                     all([count_lines(dd//'/stderr') == 1, file_has(dd//'/stderr', &
+                          'releases disagree')]))
+        m = sum(i1s)/5
+        sem = sqrt(sum((i1s - m)**2)/4/5)
+        call t%check('trials: u_I1 at least the standard error of the releases'' mean', &
+                     kvp(dd//'/bad.identify', 'u_I1') >= 0.999_dp*sem)
+        call t%check_close('trials: k from 4 dof (t = 2.776)', kvp(dd//'/bad.identify', 'k'), &
+                           2.77644511_dp, rtol=1.0e-6_dp)
+        call t%check('trials: five releases counted', &
+                     nint(kvp(dd//'/bad.identify', 'n_trials')) == 5)
+        call write_text(dd//'/typo.csv', 'trial,perod'//NL//'1,1.5'//NL)
+        call write_text(dd//'/typo.nml', HEAD//SUSP//BODY//"&measurement trials = 'typo.csv' /"// &
+                        NL)
+        ex = run(exe//' '//dd//'/typo.nml --out '//dd, dd)
+        call t%check('trials: a misspelt column refused, one line naming it', all([ex == 2, &
+                     count_lines(dd//'/stderr') == 1, file_has(dd//'/stderr', '''perod''')]))
+        call write_text(dd//'/rig.csv', 'trial,l,period'//NL//'1,1.2,1.5'//NL//'1,1.3,1.5'//NL)
+        call write_text(dd//'/rig.nml', HEAD//SUSP//BODY//"&measurement trials = 'rig.csv' /"//NL)
+        ex = run(exe//' '//dd//'/rig.nml --out '//dd, dd)
+        call t%check('trials: a release whose rig changes refused (line 3, column l)', &
+                     all([ex == 2, count_lines(dd//'/stderr') == 1, &
+                          file_has(dd//'/stderr', 'line 3, column l = ')]))
+    end subroutine test_trials
+
+    real(dp) function kvp(path, key) result(v)
+        character(len=*), intent(in) :: path, key
+        logical :: found
+        call read_kv(path, key, v, found)
+        if (.not. found) v = -1.0e300_dp
+    end function kvp
+
+    ! ---------------------------------------------------------------------------------------
+    !> Over 20 seeds: five releases, each timed three times over 10 cycles (timing u 0.01 s
+    !! stated), each release's I1 off by a normal 1.5 % (what changes between releases: the
+    !! hang, the start, the air), the table pooled.  The 95 % interval I1 +- U covers the
+    !! truth in at least 17 of 20 (binomial at 0.95: 98 %); the releases' own u alone (u_int,
+    !! k = 2) would cover it in few.
+    subroutine test_coverage(t)
+        type(tester_t), intent(inout) :: t
+        type(status_t) :: st
+        type(rng_t) :: g
+        character(len=:), allocatable :: tab, name
+        real(dp) :: i1r, big_u, i1, tp
+        integer :: seed, r, k, inside, ok, naive
+        inside = 0
+        ok = 0
+        naive = 0
+        do seed = 1, 20
+            g = rng_stream(1000 + seed, 0)
+            tab = 'trial,period,cycles,amplitude,u_period'//NL
+            do r = 1, 5
+                i1r = I1_TRUE*(1.0_dp + 0.015_dp*rng_normal(g))
+                tp = period_of(i1r, 10.0_dp)
+                do k = 1, 3
+                    tab = tab//itoa(r)//','//num(10*tp + 0.01_dp*rng_normal(g))//',10,10,0.01'//NL
+                end do
+            end do
+            name = 'cov'//itoa(seed)
+            call write_text(SCR//'/'//name//'.csv', tab)
+            call run_here(name, HEAD//SUSP//BODY//"&measurement trials = '"//name//".csv' /"// &
+                          NL, st)
+            if (st%code /= 0) then
+                write (*, '(a)') '   seed '//itoa(seed)//': '//st%msg
+                cycle
+            end if
+            ok = ok + 1
+            i1 = kv(name, 'I1')
+            big_u = kv(name, 'U_I1')
+            if (abs(i1 - I1_TRUE) <= big_u) inside = inside + 1
+            if (abs(i1 - I1_TRUE) <= 2*(kv(name, 'u_I1')**2 - &
+                kv(name, 'u_I1_reproducibility')**2)**0.5_dp) naive = naive + 1
+        end do
+        write (*, '(a)') '   coverage over releases: '//itoa(inside)//' of 20 within U; '// &
+            'the releases'' own u would cover '//itoa(naive)
+        call t%check('coverage: 20 pooled tables run', ok == 20)
+        call t%check('coverage: I1 +- U covers the truth in at least 17 of 20', inside >= 17)
+        call t%check('coverage: the releases'' own u alone would not', naive < 12)
+    end subroutine test_coverage
+
+    ! ---------------------------------------------------------------------------------------
+    !> The correlation time of AR(1) residuals, x_k = rho x_(k-1) + e_k: (1 + rho)/(1 - rho)
+    !! (19 for rho = 0.9), within 25 % on 20000 samples; 1 within 10 % for white noise.
+    subroutine test_correlated(t)
+        type(tester_t), intent(inout) :: t
+        type(rng_t) :: g
+        real(dp) :: x(20000), y(20000)
+        integer :: k
+        g = rng_stream(5, 0)
+        x(1) = rng_normal(g)
+        y(1) = rng_normal(g)
+        do k = 2, size(x)
+            x(k) = 0.9_dp*x(k - 1) + rng_normal(g)
+            y(k) = rng_normal(g)
+        end do
+        call t%check_close('correlated: AR(1) rho 0.9, tau = 19', correlation_time(x), &
+                           19.0_dp, rtol=0.25_dp)
+        call t%check_close('correlated: white noise, tau = 1', correlation_time(y), 1.0_dp, &
+                           rtol=0.1_dp)
+    end subroutine test_correlated
+
+end module test_measure
