@@ -220,6 +220,8 @@ records: $(BIN)/make_record
 	  input/identify_record_swing.dat
 	@echo "periods of input/identify_periods.nml (&measurement):"
 	$(BIN)/make_record periods input/truth/identify_periods_truth.nml 1e-4 7 10 30 60
+	$(BIN)/make_record trials input/truth/identify_trials_truth.nml input/identify_trials.csv \
+	  11 0.05 0.002 3 2 10 10 0.8 1.2 1.6 2.0
 
 DECKS = $(wildcard input/*.nml)
 run: deps $(BIN)/bifilar

@@ -543,7 +543,8 @@ contains
 
     ! ---------------------------------------------------------------------------------------
     !> report.md links every figure `make run` draws (one per plots/*.gp, named in the
-    !! script as plots/NAME.png), relative to the report's folder.
+    !! script as plots/NAME.png; plots/identify.gp draws one per identify run,
+    !! plots/NAME.identify.png), relative to the report's folder.
     subroutine test_report(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
@@ -567,6 +568,18 @@ contains
             if (ios /= 0) exit
             name = gp(index(gp, '/') + 1:index(gp, '.gp') - 1)
             nfig = nfig + 1
+            if (name == 'identify') then
+                ! one figure per identify run, plots/NAME.identify.png: the examples'
+                call t%check('report: plots/identify.gp draws plots/NAME.identify.png', &
+                             file_has(trim(gp), 'plots/%s.identify.png'))
+                call t%check('report: shows the identify examples'' figures', &
+                             all([file_has(o//'/report.md', ']('//up// &
+                                           'plots/identify_record.identify.png)'), &
+                                  file_has(o//'/report.md', ']('//up// &
+                                           'plots/identify_periods.identify.png)')]))
+                nfig = nfig + 1
+                cycle
+            end if
             call t%check('report: '//trim(gp)//' draws plots/'//name//'.png', &
                          file_has(trim(gp), 'plots/'//name//'.png'))
             call t%check('report: shows ![...]('//up//'plots/'//name//'.png)', &

@@ -985,6 +985,7 @@ contains
         write (u, '(a)', iostat=ios) '# bifilar identify fit: '//trim(d%title)
         if (ios == 0) write (u, '(a)', iostat=ios) '# t in s as recorded; measured, model '// &
             'and residual (measured - model) are '//unit_name//'; one block per release'
+        if (ios == 0) write (u, '(a)', iostat=ios) '# quantity: '//unit_name
         call deck_echo(d, u, ios)
         if (ios == 0) write (u, '(a)', iostat=ios) '# t measured model residual'
         do r = 1, size(rels)

@@ -411,7 +411,8 @@ contains
              figure_t('elastic_vs_kane', 'theta1, elastic cables against the paper''s', -2), &
              figure_t('work_precision', 'Work-precision, the paper''s model', -3), &
              figure_t('work_precision_elastic', 'Work-precision, elastic cables', -3), &
-             figure_t('identify_record_fit', 'A gyro record and the fitted model', -4)]
+             figure_t('identify_record.identify', 'A gyro record and the fitted model', -4), &
+             figure_t('identify_periods.identify', 'Timed periods against amplitude', -4)]
     end function report_figures
 
     !> The link from OUTDIR/report.md to plots/NAME.png (plots/ in the working folder, where

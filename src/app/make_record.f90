@@ -11,6 +11,12 @@
 !!       A1, A2, ... degrees (period_inversion's rig_period_s: exact torsion, or simulated)
 !!       plus normal noise of standard deviation SIGMA (s) from stream 0 of SEED, rounded
 !!       to 1e-5 s.
+!!   make_record trials DECK OUT SEED SIGMA SCATTER RELEASES TIMINGS CYCLES AMP L1 [L2 ...]
+!!       write OUT, a table of releases (&measurement trials): for each cable length L
+!!       (l = l_prime = L), RELEASES releases, each of the rig's I1 times (1 + SCATTER z)
+!!       (what changes between releases), timed TIMINGS times over CYCLES cycles at
+!!       amplitude AMP degrees, each total with normal noise SIGMA (s) and rounded to
+!!       0.01 s (a stopwatch); z and the noise from stream 0 of SEED.
 !! Exit status 0, or 2 with one line on standard error.
 program make_record_main
     use, intrinsic :: iso_c_binding, only: c_int
@@ -22,7 +28,8 @@ program make_record_main
     use period_inversion, only: rig_period_s
     use rig, only: rig_of, accuracy_of
     use random, only: rng_t, rng_stream, rng_normal
-    use text, only: fixed
+    use text, only: fixed, itoa
+    use output_io, only: out_files_t
     implicit none
     interface
         !> C library exit(3) (as bifilar: no ERROR STOP line from the run-time library).
@@ -37,8 +44,10 @@ program make_record_main
     type(rng_t) :: g
     real(dp) :: duration, rate, sigma, a, tp
     real(dp), allocatable :: amps(:), per(:)
-    integer :: seed, k, na, ios
-    character(len=:), allocatable :: line1, line2
+    integer :: seed, k, na, ios, nrel, ntime, r, j, u
+    real(dp) :: scatter, cycles, len_k, i1r
+    character(len=:), allocatable :: line1, line2, out
+    type(out_files_t) :: files
     if (command_argument_count() < 5) call usage()
     call get_command_argument(1, mode)
     call get_command_argument(2, arg)
@@ -75,6 +84,44 @@ program make_record_main
         end do
         write (*, '(a)') line1
         write (*, '(a)') line2
+    case ('trials')
+        if (command_argument_count() < 11) call usage()
+        call get_command_argument(3, arg)
+        out = trim(arg)
+        seed = nint(real_arg(4))
+        sigma = real_arg(5)
+        scatter = real_arg(6)
+        nrel = nint(real_arg(7))
+        ntime = nint(real_arg(8))
+        cycles = real_arg(9)
+        a = real_arg(10)
+        g = rng_stream(seed, 0)
+        call files%open(out, u, st)
+        if (st%code /= 0) call fail(st%msg)
+        ios = 0
+        write (u, '(a)', iostat=ios) '# bifilar make_record trials: '//trim(d%title)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# each release''s I1 scattered by '// &
+            fixed(100*scatter, 2)//' %, timings +- '//fixed(sigma, 3)//' s, seed '//itoa(seed)
+        if (ios == 0) write (u, '(a)', iostat=ios) 'trial,l,l_prime,period,cycles,amplitude'
+        do k = 11, command_argument_count()
+            len_k = real_arg(k)
+            d%l = len_k
+            d%l_prime = len_k
+            do r = 1, nrel
+                i1r = d%inertia(1)*(1.0_dp + scatter*rng_normal(g))
+                call rig_period_s(rig_of(d), accuracy_of(d), i1r, a, tp, st)
+                if (st%code /= 0) call fail(st%msg)
+                do j = 1, ntime
+                    if (ios == 0) write (u, '(a)', iostat=ios) 'l'//fixed(len_k, 2)//'-'// &
+                        itoa(r)//','//fixed(len_k, 4)//','//fixed(len_k, 4)//','// &
+                        fixed(anint((cycles*tp + sigma*rng_normal(g))*100.0_dp)/100.0_dp, 2)// &
+                        ','//itoa(nint(cycles))//','//fixed(a, 1)
+                end do
+            end do
+        end do
+        call files%close(u, ios, st)
+        if (st%code == 0) call files%commit(st)
+        if (st%code /= 0) call fail(st%msg)
     case default
         call usage()
     end select
@@ -89,7 +136,8 @@ contains
     end function real_arg
     subroutine usage()
         call fail('usage: make_record record DECK DURATION RATE SIGMA SEED angle|rate OUT'// &
-                  ' | make_record periods DECK SIGMA SEED A1 [A2 ...]')
+                  ' | make_record periods DECK SIGMA SEED A1 [A2 ...] | make_record trials '// &
+                  'DECK OUT SEED SIGMA SCATTER RELEASES TIMINGS CYCLES AMP L1 [L2 ...]')
     end subroutine usage
     subroutine fail(msg)
         character(len=*), intent(in) :: msg

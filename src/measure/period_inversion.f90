@@ -10,7 +10,11 @@
 !! * Inversion: several periods T_i measured at peak amplitudes A_i (degrees of theta4) are
 !!   combined by weighted least squares, min sum w_i (T_i(I1) - T_i^meas)^2, with
 !!   w_i = 1/(u_T^2 + (dT_i/dA u_A)^2) (equal weights when no uncertainty is given), solved
-!!   by Gauss-Newton in the one unknown, safeguarded to stay at I1 > 0.  T(I1) increases
+!!   by Gauss-Newton in the one unknown, safeguarded to stay at I1 > 0, until the step is
+!!   below 1e-14 of I1 or the weighted residuals are orthogonal to the slopes to 1e-7 (the
+!!   step left below 1e-7 standard errors: the periods' roundoff, about 1e-11 of a period,
+!!   is reached first when they scatter); a step no halving makes lower the sum of squares
+!!   is convergence when one of those tests holds.  T(I1) increases
 !!   strictly with I1 and tends to a positive limit T_min as I1 -> 0 (the body still rises
 !!   as it turns), so a period below T_min is refused: no positive I1 gives it.
 !! * First-order uncertainty (GUM, JCGM 100:2008, section 5.1): u(I1)^2 = sum_j (c_j u_j)^2
@@ -109,6 +113,9 @@ module period_inversion
     end type period_sink_t
 
     integer, parameter :: MAX_ITER = 60         !! Gauss-Newton iterations
+    !> Gauss-Newton has converged when the weighted residuals are orthogonal to the slopes
+    !! to this (the cosine of their angle): the step left is below GRAD_TOL standard errors.
+    real(dp), parameter :: GRAD_TOL = 1.0e-7_dp
     real(dp), parameter :: I_TOL = 1.0e-14_dp   !! relative change of I1 that ends them
     real(dp), parameter :: FD_REL = 1.0e-6_dp   !! relative step of the sensitivities
     real(dp), parameter :: I_TINY = 1.0e-9_dp   !! I1 -> 0 limit, over m b'^2
@@ -379,6 +386,16 @@ contains
             end if
             di = -sum(w*g*r)/sum(w*g*g)
             di_full = di
+            if (abs(sum(w*g*r)) <= GRAD_TOL*sqrt(sum(w*g*g)*sum(w*r*r)) .and. &
+                any(r /= 0.0_dp)) then
+                ! the residuals are orthogonal to the slopes to GRAD_TOL: the remaining step
+                ! is below GRAD_TOL times I1's statistical uncertainty (the periods' own
+                ! roundoff, about 1e-11 of a period, keeps it from I_TOL)
+                fit%i1 = i1
+                fit%model_periods = tm
+                fit%residual_rms = sqrt(sum((tm - periods)**2)/size(periods))
+                return
+            end if
             ! keep I1 positive and make the weighted sum of squares fall (step halving); a
             ! simulated period the model cannot give (e.g. a cable slack at release when
             ! I1 is very small) is a failed step too
@@ -399,7 +416,7 @@ contains
                 ! is at the level of the periods' own error (simulated: the integration's)
                 call residuals(i1, tm, r, s1, stat)
                 if (stat%code /= 0) return
-                if (.not. (abs(sum(w*g*r)) <= 1.0e-7_dp*sqrt(sum(w*g*g)*sum(w*r*r)) .or. &
+                if (.not. (abs(sum(w*g*r)) <= GRAD_TOL*sqrt(sum(w*g*g)*sum(w*r*r)) .or. &
                            abs(di_full) <= merge(1.0e3_dp*I_TOL, 100.0_dp*I_TOL_SIM, sym)*i1)) &
                     exit
                 di = 0.0_dp
