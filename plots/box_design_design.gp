@@ -4,5 +4,4 @@
 # usage (from the repository root): gnuplot -c plots/box_design_design.gp [DESIGN] [PNG]
 data = (ARGC >= 1) ? ARG1 : 'output/box_design.design'
 png  = (ARGC >= 2) ? ARG2 : 'plots/box_design_design.png'
-eval sprintf("call 'plots/design.gpi' '%s' '%s' '%s' '%s'", data, png, \
-     'Parallelepiped hung from its top edges: rig design (Figs. 13-16)', 'm')
+eval sprintf("call 'plots/design.gpi' '%s' '%s' '' '%s'", data, png, 'm')

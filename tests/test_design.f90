@@ -67,6 +67,8 @@ contains
         if (t%want('design: bad &design input is one line, no file')) call test_bad(t, exe)
         if (t%want('design: 1 and 2 threads give the same file (b swept too)')) &
             call test_threads(t, exe)
+        if (t%want('design: b_prime swept, precision at amplitude_measure')) &
+            call test_b_prime(t)
     end subroutine run_design_tests
 
     !> The recommended rig, analysed again at rtol 100 times tighter and at twice as many
@@ -102,7 +104,7 @@ contains
         end do
         call t%check('recommendation: the smallest u(I1)/I1 among the qualifying', best)
         ! independently: rtol / 100, twice the amplitudes
-        call make_pendulum(candidate_rig(rig_of(d), l, b), p, st)
+        call make_pendulum(candidate_rig(rig_of(d), l, b, res%bps(res%ib)), p, st)
         n2 = 2*d%design_n_amplitudes
         ok = st%code == 0
         worst = 0.0_dp
@@ -252,7 +254,8 @@ contains
         l = 1000.0_dp*d%b_prime
         u = input_u_t(mass=1.0e-3_dp, l=1.0e-3_dp, l_prime=1.0e-3_dp, b=5.0e-4_dp, &
                       b_prime=5.0e-4_dp, g=0.0_dp, period=1.0e-4_dp, amplitude=0.0_dp)
-        call candidate_precision(design_rig_of(d), l, d%b, 0.5_dp, u, period, urel, lin, st)
+        call candidate_precision(design_rig_of(d), l, d%b, d%b_prime, 0.5_dp, u, period, urel, &
+                                 lin, st)
         call t%check('classical: precision computed', st%code == 0)
         expect = sqrt((u%mass/d%mass)**2 + (u%b/d%b)**2 + (u%b_prime/d%b_prime)**2 + &
                       0.5_dp*(u%l/l)**2 + (2.0_dp*u%period/period)**2)
@@ -260,7 +263,8 @@ contains
                            expect, rtol=1.0e-4_dp)
         call t%check_close('classical: linear error at 0.5 deg ~ A^2/8', lin, &
                            (0.5_dp*deg)**2/8.0_dp, rtol=2.0e-2_dp)
-        call candidate_precision(design_rig_of(d), l, d%b, 25.0_dp, u, period, urel, lin, st)
+        call candidate_precision(design_rig_of(d), l, d%b, d%b_prime, 25.0_dp, u, period, urel, &
+                                 lin, st)
         k = sin(0.5_dp*25.0_dp*deg)
         a = 1.0_dp
         g = sqrt(1.0_dp - k*k)
@@ -311,8 +315,8 @@ contains
         ex = run(exe//' '//d//'/reach.nml --out '//d//'/out', d)
         call t%check('none: candidates whose cables cannot reach: exit 0 all the same', ex == 0)
         call t%check('none: ... their row is -1 (l = 0.05: stable 0, max_modulus -1, the '// &
-                     'modulus at 50 deg -1)', shell_count('awk ''/^# l b stable/{on=1; next} '// &
-                     'on && NF && $1 < 0.06 && $3 == 0 && $4 == -1 && $NF == -1'' '//d// &
+                     'modulus at 50 deg -1)', shell_count('awk ''/^# l b b_prime stable/{on=1; next} '// &
+                     'on && NF && $1 < 0.06 && $4 == 0 && $5 == -1 && $NF == -1'' '//d// &
                      '/out/reach.design | wc -l', d) == 1)
         call t%check('none: ... no NaN, Inf or ****', no_nan(d//'/out'))
     end subroutine test_none
@@ -394,12 +398,60 @@ contains
                                   exitstat=exc)
         call t%check('threads: 1 and 2 threads give the same .design', exc == 0)
         call t%check('threads: 14 candidate rows (7 l x 2 b)', shell_count('awk ''/^# l b '// &
-                     'stable/{on=1; next} /^# stable bands/{on=0} on && NF'' '//d// &
+                     'b_prime stable/{on=1; next} /^# stable bands/{on=0} on && NF'' '//d// &
                      '/t2/lb.design | wc -l', d) == 14)
         call t%check('threads: recommended b is 0.18 or 0.22', &
                      any([file_has(d//'/t2/lb.design', 'recommended_b = 1.8'), &
                      file_has(d//'/t2/lb.design', 'recommended_b = 2.2')]))
         call t%check('threads: no NaN, Inf or ****', no_nan(d//'/t2'))
     end subroutine test_threads
+
+    !> b' swept with b (three body spacings): the candidates are the pairs, each pair's
+    !! precision is candidate_precision's for that (l, b, b'); a wider b' measures I1 more
+    !! precisely (u_b over b' falls).  The precision is predicted at amplitude_measure, and
+    !! does not move when amplitude_max (the stability range) widens.
+    subroutine test_b_prime(t)
+        type(tester_t), intent(inout) :: t
+        type(deck_t) :: d, d2
+        type(design_result_t) :: res, res2
+        type(status_t) :: st
+        type(input_u_t) :: u
+        real(dp) :: period, urel, lin
+        integer :: m, i
+        call write_text(SCR//'/bprime.nml', BOX//'&design l_min = 0.9, l_max = 1.2, nl = 4, '// &
+                        'b_prime_min = 0.16, b_prime_max = 0.24, nb_prime = 3, '// &
+                        'amplitude_max = 40, n_amplitudes = 2, amplitude_measure = 20 /'//NL)
+        call read_deck(SCR//'/bprime.nml', d, st)
+        call t%check('b_prime: the deck reads', st%code == 0)
+        if (st%code /= 0) return
+        call design_sweep(d, res, '')
+        call t%check('b_prime: 4 x 3 candidates, b'' 0.16, 0.20, 0.24 with the deck''s b', &
+                     size(res%ls)*size(res%bs) == 12 .and. all(abs(res%bps - &
+                     [0.16_dp, 0.2_dp, 0.24_dp]) < 1.0e-15_dp) .and. all(res%bs == d%b))
+        u = input_u_t(mass=d%design_u_mass, l=d%design_u_l, l_prime=d%design_u_l, &
+                      b=d%design_u_b, b_prime=d%design_u_b, period=d%design_u_period)
+        call candidate_precision(design_rig_of(d), res%ls(2), res%bs(3), res%bps(3), 20.0_dp, &
+                                 u, period, urel, lin, st)
+        call t%check_close('b_prime: a pair''s precision is candidate_precision''s', &
+                           res%u_rel(2, 3), urel, rtol=1.0e-14_dp)
+        call t%check('b_prime: a wider b'' measures I1 more precisely', &
+                     all([(res%u_rel(i, 1) > res%u_rel(i, 2) .and. &
+                           res%u_rel(i, 2) > res%u_rel(i, 3), i=1, 4)]))
+        call write_text(SCR//'/bprime2.nml', BOX//'&design l_min = 0.9, l_max = 1.2, nl = 4, '// &
+                        'b_prime_min = 0.16, b_prime_max = 0.24, nb_prime = 3, '// &
+                        'amplitude_max = 60, n_amplitudes = 2, amplitude_measure = 20 /'//NL)
+        call read_deck(SCR//'/bprime2.nml', d2, st)
+        call design_sweep(d2, res2, '')
+        call t%check('b_prime: the precision does not move with amplitude_max', &
+                     all(res2%u_rel == res%u_rel) .and. all(res2%period_s == res%period_s))
+        call write_text(SCR//'/bprime3.nml', BOX//'&design amplitude_max = 40 /'//NL)
+        call read_deck(SCR//'/bprime3.nml', d, st)
+        m = 0
+        if (d%design_amplitude_measure == 25.0_dp) m = 1
+        call write_text(SCR//'/bprime3.nml', BOX//'&design amplitude_max = 20 /'//NL)
+        call read_deck(SCR//'/bprime3.nml', d, st)
+        if (d%design_amplitude_measure == 20.0_dp) m = m + 1
+        call t%check('b_prime: amplitude_measure defaults to min(25, amplitude_max)', m == 2)
+    end subroutine test_b_prime
 
 end module test_design

@@ -7,9 +7,11 @@
 !! module does that over a grid of candidate rigs, and adds what a measurement engineer
 !! weighs next, how precisely each candidate measures I1:
 !!
-!! * Candidates: l = l' at nl values from l_min to l_max, times nb values of b from b_min to
-!!   b_max (b_min = b_max = 0, nb = 1: the deck's b), all in deck units; the body is the
-!!   deck's.
+!! * Candidates: l = l' at nl values from l_min to l_max, times the spacing pairs: nb
+!!   values of the support's b from b_min to b_max (b_min = b_max = 0, nb = 1: the deck's b)
+!!   times nb_prime values of the body's b' from b_prime_min to b_prime_max (likewise), b
+!!   fastest; all in deck units.  The body is the deck's; a changed b' moves its two
+!!   attachment points symmetrically (the mass centre keeps its depth below CD).
 !! * Stability: the Floquet analysis of pure torsion (module floquet, eqs. (45)-(51)) at the
 !!   amplitudes a_j = j amplitude_max / n_amplitudes, j = 1 .. n_amplitudes, with &floquet
 !!   rtol and segments.  A point is stable when its largest multiplier is at most
@@ -20,7 +22,8 @@
 !!   ends of the range); their union over the amplitudes is the unstable set, its
 !!   complement in [l_min, l_max] the stable bands.  (A band narrower than the grid's step
 !!   can fall between two grid values and go unseen, as in a chart.)
-!! * Precision: the period T (s) of the candidate at amplitude_max/2 (the exact period of
+!! * Precision: the period T (s) of the candidate at amplitude_measure (default
+!!   min(25, amplitude_max) degrees, whatever the stability range; the exact period of
 !!   module period_inversion), measured once: I1 is inverted back from it and its first-order
 !!   GUM budget taken by period_budget, the same propagation `identify` uses, with the
 !!   uncertainties u_mass, u_l (each cable), u_b (the support spacing b and the body's b',
@@ -77,17 +80,18 @@ module design
         real(dp) :: l_from = 0.0_dp, l_to = 0.0_dp  !! deck units
     end type design_band_t
 
-    !> Everything the design computed.  Arrays over the candidates are (nl, nb); the
-    !! per-point moduli (n_amplitudes, nl, nb).  Sentinels as in a chart: CHART_INVALID
+    !> Everything the design computed.  Arrays over the candidates are (nl, nb) with nb the
+    !! number of spacing pairs (b, b'); the per-point moduli (n_amplitudes, nl, nb).  Sentinels as in a chart: CHART_INVALID
     !! (-1) where pure torsion is not possible (the cables cannot reach), CHART_FAILED (-2)
     !! where the analysis failed; -1 in the precision columns where the period could not be
     !! computed.
     type, public :: design_result_t
-        real(dp), allocatable :: ls(:), bs(:), amps(:)  !! l, b (deck units), amplitudes (deg)
+        real(dp), allocatable :: ls(:), amps(:)         !! l (deck units), amplitudes (deg)
+        real(dp), allocatable :: bs(:), bps(:)          !! each spacing pair's b and b'
         real(dp), allocatable :: modulus(:, :, :)       !! largest |multiplier| per point
         logical, allocatable :: stable(:, :)            !! at every amplitude
         real(dp), allocatable :: max_modulus(:, :)      !! over the amplitudes (or sentinel)
-        real(dp), allocatable :: period_s(:, :)         !! period at amplitude_max/2 (s)
+        real(dp), allocatable :: period_s(:, :)         !! period at amplitude_measure (s)
         real(dp), allocatable :: u_rel(:, :)            !! predicted u(I1)/I1
         real(dp), allocatable :: linear_error(:, :)     !! I1(linear formula)/I1 - 1
         real(dp), allocatable :: margin(:, :)           !! stable_margin_l (0 if unstable)
@@ -141,11 +145,13 @@ module design
             type(status_t), intent(out) :: stat     !! ERR_DECK
         end subroutine design_ready
 
-        !> The candidate grid of &design: l from l_min to l_max (nl values), b (nb values; the
-        !! deck's b when b_min = b_max = 0), amplitudes j amplitude_max / n_amplitudes.
-        module subroutine design_grid(d, ls, bs, amps)
+        !> The candidate grid of &design: l from l_min to l_max (nl values), the spacing pairs
+        !! (bs(m), bps(m)): nb values of b (the deck's b when b_min = b_max = 0) times
+        !! nb_prime values of b' (likewise), b fastest; amplitudes j amplitude_max /
+        !! n_amplitudes.
+        module subroutine design_grid(d, ls, bs, bps, amps)
             type(deck_t), intent(in) :: d           !! the deck
-            real(dp), allocatable, intent(out) :: ls(:), bs(:), amps(:)
+            real(dp), allocatable, intent(out) :: ls(:), bs(:), bps(:), amps(:)
         end subroutine design_grid
 
         !> The whole design of deck d (without writing): the three sweeps, the bands, the
@@ -163,21 +169,24 @@ module design
             type(sweep_report_t), intent(out), optional :: report   !! of the three sweeps
         end subroutine design_sweep
 
-        !> The largest Floquet multiplier of pure torsion of candidate (l, b) at amp_deg, with
-        !! the deck's &floquet rtol and segments (CHART_INVALID, CHART_FAILED as in a chart).
-        module subroutine candidate_modulus(dr, l, b, amp_deg, modulus)
+        !> The largest Floquet multiplier of pure torsion of candidate (l, b, b') at amp_deg,
+        !! with the deck's &floquet rtol and segments (CHART_INVALID, CHART_FAILED as in a
+        !! chart).
+        module subroutine candidate_modulus(dr, l, b, bp, amp_deg, modulus)
             type(design_rig_t), intent(in) :: dr    !! the deck's rig and Floquet settings
-            real(dp), intent(in) :: l, b            !! candidate (deck units)
+            real(dp), intent(in) :: l, b, bp        !! candidate (deck units)
             real(dp), intent(in) :: amp_deg         !! torsion amplitude (degrees)
             real(dp), intent(out) :: modulus        !! largest |multiplier| or sentinel
         end subroutine candidate_modulus
 
-        !> The precision of candidate (l, b) measured by one period at amp_deg: its exact period
-        !! (s), I1 inverted back from it (invert_periods) and the first-order budget of that
-        !! inversion (period_budget): u(I1)/I1; and the linear formula's relative error there.
-        module subroutine candidate_precision(dr, l, b, amp_deg, u, period_s, u_rel, linear_error, stat)
+        !> The precision of candidate (l, b, b') measured by one period at amp_deg: its exact
+        !! period (s), I1 inverted back from it (invert_periods) and the first-order budget of
+        !! that inversion (period_budget): u(I1)/I1; and the linear formula's relative error
+        !! there.
+        module subroutine candidate_precision(dr, l, b, bp, amp_deg, u, period_s, u_rel, &
+                                              linear_error, stat)
             type(design_rig_t), intent(in) :: dr    !! the deck's rig (the body, I1 = inertia(1))
-            real(dp), intent(in) :: l, b            !! candidate (deck units)
+            real(dp), intent(in) :: l, b, bp        !! candidate (deck units)
             real(dp), intent(in) :: amp_deg         !! amplitude of the measurement (degrees)
             type(input_u_t), intent(in) :: u        !! standard uncertainties
             real(dp), intent(out) :: period_s       !! exact period (s)
@@ -186,10 +195,11 @@ module design
             type(status_t), intent(out) :: stat     !! ERR_DECK (cables cannot reach), ERR_NUMERIC
         end subroutine candidate_precision
 
-        !> The rig with the candidate's cables l = l' and support spacing b (deck units).
-        module pure function candidate_rig(rg, l, b) result(rr)
+        !> The rig with the candidate's cables l = l', support spacing b and body spacing b'
+        !! (deck units; b' moves the body's attachment points symmetrically).
+        module pure function candidate_rig(rg, l, b, bp) result(rr)
             type(rig_t), intent(in) :: rg           !! the deck's rig
-            real(dp), intent(in) :: l, b            !! candidate (deck units)
+            real(dp), intent(in) :: l, b, bp        !! candidate (deck units)
             type(rig_t) :: rr
         end function candidate_rig
 

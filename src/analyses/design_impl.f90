@@ -6,7 +6,7 @@ submodule (design) design_impl
     use text, only: itoa, sci, fixed
     use deck, only: deck_t, deck_echo
     use geometry, only: pendulum_t
-    use rig, only: rig_t, rig_of, accuracy_t, accuracy_of, make_pendulum
+    use rig, only: rig_t, rig_of, accuracy_t, accuracy_of, make_pendulum, move_b_prime
     use floquet, only: check_torsion_scene, STABILITY_MARGIN, floquet_point, CHART_INVALID, &
                        CHART_FAILED
     use sweep_engine, only: sweep_task_t, sweep_run, sweep_options_t, sweep_report_t, &
@@ -20,7 +20,7 @@ submodule (design) design_impl
     !! largest multiplier (or a sentinel).
     type, extends(sweep_task_t) :: floquet_work_t
         type(design_rig_t) :: dr
-        real(dp), allocatable :: ls(:), bs(:), amps(:)
+        real(dp), allocatable :: ls(:), bs(:), bps(:), amps(:)
     contains
         procedure :: compute => floquet_work_point
     end type floquet_work_t
@@ -30,7 +30,7 @@ submodule (design) design_impl
     !! the bisection took.
     type, extends(sweep_task_t) :: edge_work_t
         type(design_rig_t) :: dr
-        real(dp), allocatable :: ls(:), bs(:), amps(:)
+        real(dp), allocatable :: ls(:), bs(:), bps(:), amps(:)
         integer, allocatable :: il(:), ib(:), ia(:)
         logical, allocatable :: left_stable(:)
     contains
@@ -41,8 +41,8 @@ submodule (design) design_impl
     !! error (-1 each when the period cannot be computed).
     type, extends(sweep_task_t) :: precision_work_t
         type(design_rig_t) :: dr
-        real(dp), allocatable :: ls(:), bs(:)
-        real(dp) :: amp = 0.0_dp                !! amplitude_max/2 (deg)
+        real(dp), allocatable :: ls(:), bs(:), bps(:)
+        real(dp) :: amp = 0.0_dp                !! amplitude_measure (deg)
         type(input_u_t) :: u
     contains
         procedure :: compute => precision_work_point
@@ -58,37 +58,57 @@ contains
         dr%fq_segments = d%floquet_segments
     end procedure design_rig_of
 
-    !> The rig with the candidate's cables l = l' and support spacing b (deck units).
+    !> The rig with the candidate's cables l = l', support spacing b and body spacing b'.
     module procedure candidate_rig
         rr = rg
         rr%l = l
         rr%l_prime = l
         rr%b = b
+        if (bp /= rg%b_prime) call move_b_prime(rr, bp)
     end procedure candidate_rig
 
-    !> The candidate grid of &design: l from l_min to l_max (nl values), b (nb values; the
-    !! deck's b when b_min = b_max = 0), amplitudes j amplitude_max / n_amplitudes.
+    !> The candidate grid of &design: l from l_min to l_max (nl values), the spacing pairs
+    !! (b fastest), amplitudes j amplitude_max / n_amplitudes.
     module procedure design_grid
-        integer :: i
-        allocate (ls(d%design_nl), bs(d%design_nb), amps(d%design_n_amplitudes))
+        integer :: i, j
+        real(dp), allocatable :: b1(:), bp1(:)
+        allocate (ls(d%design_nl), amps(d%design_n_amplitudes))
         do i = 1, d%design_nl
             ls(i) = d%design_l_min + (d%design_l_max - d%design_l_min)*(i - 1)/(d%design_nl - 1)
         end do
         ls(d%design_nl) = d%design_l_max
-        if (d%design_nb == 1) then
-            bs(1) = d%design_b_min
-            if (d%design_b_min == 0.0_dp) bs(1) = d%b
-        else
-            do i = 1, d%design_nb
-                bs(i) = d%design_b_min + (d%design_b_max - d%design_b_min)*(i - 1)/ &
-                        (d%design_nb - 1)
+        b1 = spacings(d%design_b_min, d%design_b_max, d%design_nb, d%b)
+        bp1 = spacings(d%design_b_prime_min, d%design_b_prime_max, d%design_nb_prime, &
+                       d%b_prime)
+        allocate (bs(size(b1)*size(bp1)), bps(size(b1)*size(bp1)))
+        do j = 1, size(bp1)
+            do i = 1, size(b1)
+                bs(i + size(b1)*(j - 1)) = b1(i)
+                bps(i + size(b1)*(j - 1)) = bp1(j)
             end do
-            bs(d%design_nb) = d%design_b_max
-        end if
+        end do
         do i = 1, d%design_n_amplitudes
             amps(i) = d%design_amplitude_max*i/d%design_n_amplitudes
         end do
         amps(d%design_n_amplitudes) = d%design_amplitude_max
+    contains
+        !> n spacings from lo to hi; with n = 1, lo (the deck's value when lo = 0).
+        pure function spacings(lo, hi, n, deck_value) result(v)
+            real(dp), intent(in) :: lo, hi, deck_value
+            integer, intent(in) :: n
+            real(dp), allocatable :: v(:)
+            integer :: k
+            allocate (v(n))
+            if (n == 1) then
+                v(1) = lo
+                if (lo == 0.0_dp) v(1) = deck_value
+                return
+            end if
+            do k = 1, n
+                v(k) = lo + (hi - lo)*(k - 1)/(n - 1)
+            end do
+            v(n) = hi
+        end function spacings
     end procedure design_grid
 
     !> The preconditions of analyses = 'design', before any computing: pure torsion is an
@@ -97,15 +117,16 @@ contains
     !! candidates (ERR_DECK otherwise).
     module procedure design_ready
         type(pendulum_t) :: p
-        real(dp), allocatable :: ls(:), bs(:), amps(:)
+        real(dp), allocatable :: ls(:), bs(:), bps(:), amps(:)
         real(dp) :: t, tmin, lmin, bmin
         integer :: ivert, i, m
         type(status_t) :: st
         type(rig_t) :: rg
-        call design_grid(d, ls, bs, amps)
+        call design_grid(d, ls, bs, bps, amps)
         rg = rig_of(d)
         ! (whether the cables reach is each candidate's own matter: -1 in the table)
-        call make_pendulum(candidate_rig(rg, ls(size(ls)), bs(size(bs))), p, st)
+        call make_pendulum(candidate_rig(rg, ls(size(ls)), bs(size(bs)), bps(size(bps))), p, &
+                           st)
         call check_torsion_scene(p, ivert, stat)
         if (stat%code == STATUS_OK .and. ivert /= 1) call set_error(stat, ERR_DECK, &
             '&body btilde: b1 is not vertical at rest (row 1 must be (+-1, 0, 0)): the '// &
@@ -120,8 +141,8 @@ contains
         bmin = 0.0_dp
         do m = 1, size(bs)
             do i = 1, size(ls)
-                call torsion_period_s(candidate_rig(rg, ls(i), bs(m)), rg%inertia(1), &
-                                      0.5_dp*d%design_amplitude_max, t, st)
+                call torsion_period_s(candidate_rig(rg, ls(i), bs(m), bps(m)), rg%inertia(1), &
+                                      d%design_amplitude_measure, t, st)
                 if (st%code /= STATUS_OK) cycle
                 if (t < tmin) then
                     tmin = t
@@ -136,14 +157,14 @@ contains
             num(bmin)//'); allowed: 0 <= u_period < '//num(tmin)//' s')
     end procedure design_ready
 
-    !> The largest Floquet multiplier of pure torsion of candidate (l, b) at amp_deg, with
-    !! the deck's &floquet rtol and segments (CHART_INVALID, CHART_FAILED as in a chart).
+    !> The largest Floquet multiplier of pure torsion of candidate (l, b, b') at amp_deg,
+    !! with the deck's &floquet rtol and segments (CHART_INVALID, CHART_FAILED as in a chart).
     module procedure candidate_modulus
         type(pendulum_t) :: p
         type(status_t) :: st
         real(dp) :: period
         modulus = CHART_INVALID
-        call make_pendulum(candidate_rig(dr%rg, l, b), p, st)
+        call make_pendulum(candidate_rig(dr%rg, l, b, bp), p, st)
         if (st%code /= STATUS_OK) return
         call floquet_point(p, amp_deg, dr%fq_rtol, dr%fq_segments, modulus, period, &
                            dr%acc%method)
@@ -168,7 +189,8 @@ contains
         j = mod(i - 1, na) + 1
         ic = mod((i - 1)/na, nl) + 1
         m = (i - 1)/(na*nl) + 1
-        call candidate_modulus(self%dr, self%ls(ic), self%bs(m), self%amps(j), values(1))
+        call candidate_modulus(self%dr, self%ls(ic), self%bs(m), self%bps(m), self%amps(j), &
+                               values(1))
     end subroutine floquet_work_point
 
     !> Sweep 2's edge e: bisection in l until the bracket is at most EDGE_RTOL l; the edge is
@@ -187,8 +209,8 @@ contains
         do while (hi - lo > EDGE_RTOL*hi)
             mid = 0.5_dp*(lo + hi)
             if (.not. (mid > lo .and. mid < hi)) exit
-            call candidate_modulus(self%dr, mid, self%bs(self%ib(i)), self%amps(self%ia(i)), &
-                                   modulus)
+            call candidate_modulus(self%dr, mid, self%bs(self%ib(i)), self%bps(self%ib(i)), &
+                                   self%amps(self%ia(i)), modulus)
             n = n + 1
             if (is_stable(modulus) .eqv. self%left_stable(i)) then
                 lo = mid
@@ -211,21 +233,22 @@ contains
         stat%code = STATUS_OK
         ic = mod(i - 1, size(self%ls)) + 1
         m = (i - 1)/size(self%ls) + 1
-        call candidate_precision(self%dr, self%ls(ic), self%bs(m), self%amp, self%u, values(1), &
-                                 values(2), values(3), st)
+        call candidate_precision(self%dr, self%ls(ic), self%bs(m), self%bps(m), self%amp, &
+                                 self%u, values(1), values(2), values(3), st)
         if (st%code /= STATUS_OK) values(1:3) = CHART_INVALID
     end subroutine precision_work_point
 
-    !> The precision of candidate (l, b) measured by one period at amp_deg: its exact period
-    !! (s), I1 inverted back from it (invert_periods) and the first-order budget of that
-    !! inversion (period_budget): u(I1)/I1; and the linear formula's relative error there.
+    !> The precision of candidate (l, b, b') measured by one period at amp_deg: its exact
+    !! period (s), I1 inverted back from it (invert_periods) and the first-order budget of
+    !! that inversion (period_budget): u(I1)/I1; and the linear formula's relative error
+    !! there.
     module procedure candidate_precision
         type(rig_t) :: dd
         type(period_fit_t) :: fit
         period_s = CHART_INVALID
         u_rel = CHART_INVALID
         linear_error = CHART_INVALID
-        dd = candidate_rig(dr%rg, l, b)
+        dd = candidate_rig(dr%rg, l, b, bp)
         call torsion_period_s(dd, dd%inertia(1), amp_deg, period_s, stat)
         if (stat%code /= STATUS_OK) return
         call invert_periods(dd, dr%acc, [period_s], [amp_deg], u, fit, stat)
@@ -256,7 +279,7 @@ contains
         logical, allocatable :: sta(:, :, :)
 
         all%note = ''
-        call design_grid(d, res%ls, res%bs, res%amps)
+        call design_grid(d, res%ls, res%bs, res%bps, res%amps)
         na = size(res%amps)
         nl = size(res%ls)
         nb = size(res%bs)
@@ -399,10 +422,10 @@ contains
         select type (task)
         type is (floquet_work_t)
             task%dr = design_rig_of(d)
-            call design_grid(d, task%ls, task%bs, task%amps)
+            call design_grid(d, task%ls, task%bs, task%bps, task%amps)
         type is (edge_work_t)
             task%dr = design_rig_of(d)
-            call design_grid(d, task%ls, task%bs, task%amps)
+            call design_grid(d, task%ls, task%bs, task%bps, task%amps)
             ne = size(payload)/4
             task%il = nint(payload(1:ne))
             task%ib = nint(payload(ne + 1:2*ne))
@@ -410,8 +433,8 @@ contains
             task%left_stable = payload(3*ne + 1:4*ne) > 0.5_dp
         type is (precision_work_t)
             task%dr = design_rig_of(d)
-            call design_grid(d, task%ls, task%bs, amps)
-            task%amp = 0.5_dp*d%design_amplitude_max
+            call design_grid(d, task%ls, task%bs, task%bps, amps)
+            task%amp = d%design_amplitude_measure
             task%u = design_uncertainties(d)
         end select
     end subroutine fill_task
@@ -543,10 +566,15 @@ contains
         span = lmax - lmin
         msg = 'design: no candidate qualifies: of the '//itoa(size(res%ls)*size(res%bs))// &
             ' candidates (l = '//num(lmin)//' ... '//num(lmax)
-        if (size(res%bs) > 1) then
-            msg = msg//', b = '//num(res%bs(1))//' ... '//num(res%bs(size(res%bs)))
+        if (minval(res%bs) < maxval(res%bs)) then
+            msg = msg//', b = '//num(minval(res%bs))//' ... '//num(maxval(res%bs))
         else
             msg = msg//', b = '//num(res%bs(1))
+        end if
+        if (minval(res%bps) < maxval(res%bps)) then
+            msg = msg//', b_prime = '//num(minval(res%bps))//' ... '//num(maxval(res%bps))
+        else
+            msg = msg//', b_prime = '//num(res%bps(1))
         end if
         msg = msg//'), '//itoa(res%n_stable)//' are stable at every amplitude up to '// &
             num(d%design_amplitude_max)//' deg (largest multiplier <= 1 + '// &
@@ -658,21 +686,23 @@ contains
             'torsion at the amplitudes j amplitude_max/n_amplitudes (deg), stable where the '// &
             'largest multiplier is <= 1 + tolerance at every amplitude; band edges bisected '// &
             'in l to edge_rtol l')
-        call put('# precision: one period measured at amplitude_max/2, I1 inverted from '// &
+        call put('# precision: one period measured at amplitude_measure, I1 inverted from '// &
             'the exact period, first-order (GUM) budget with u_mass, u_l (each cable), u_b '// &
-            '(b and b''), u_period (s); none on g or the amplitude')
+            '(b and b''), u_period (s); none on g or the amplitude; b'' moves the body''s '// &
+            'attachment points symmetrically')
         call put('# recommended: the smallest predicted u(I1)/I1 among candidates stable at '// &
             'every amplitude with stable_margin_l >= margin_fraction l (stable_margin_l: '// &
             'distance to the nearest unstable band or end of the swept range)')
         call deck_echo(d, u, ios)
         call write_kv(u, 'recommended_l', res%ls(i), ios)
         call write_kv(u, 'recommended_b', res%bs(m), ios)
+        call write_kv(u, 'recommended_b_prime', res%bps(m), ios)
         call write_kv(u, 'predicted_u_I1_rel', res%u_rel(i, m), ios)
         call write_kv(u, 'period_s', res%period_s(i, m), ios)
         call write_kv(u, 'stable_margin_l', res%margin(i, m), ios)
         call write_kv(u, 'max_modulus', res%max_modulus(i, m), ios)
         call write_kv(u, 'linear_error', res%linear_error(i, m), ios)
-        call write_kv(u, 'period_amplitude_deg', 0.5_dp*d%design_amplitude_max, ios)
+        call write_kv(u, 'period_amplitude_deg', d%design_amplitude_measure, ios)
         call write_kv(u, 'amplitude_max', d%design_amplitude_max, ios)
         call write_kv(u, 'n_amplitudes', na, ios)
         call write_kv(u, 'tolerance', DESIGN_TOLERANCE, ios)
@@ -687,16 +717,17 @@ contains
         call write_kv(u, 'failed_points', res%n_failed, ios)
         call put('')
         call put('')
-        f = '(7es24.15e3,'//itoa(na)//'es24.15e3)'
-        call put('# candidates: l b stable max_modulus u_I1_rel period linear_error, then '// &
+        f = '(8es24.15e3,'//itoa(na)//'es24.15e3)'
+        call put('# candidates: l b b_prime stable max_modulus u_I1_rel period linear_error, '// &
+            'then '// &
             'the largest multiplier at each amplitude (stable: 1 at every amplitude, else 0; '// &
-            'period in s at amplitude_max/2; -1 where pure torsion is not possible, -2 where '// &
+            'period in s at amplitude_measure; -1 where pure torsion is not possible, -2 where '// &
             'the analysis failed)')
-        call put('# l b stable max_modulus u_I1_rel period linear_error'//amp_names())
+        call put('# l b b_prime stable max_modulus u_I1_rel period linear_error'//amp_names())
         do m = 1, size(res%bs)
             if (m > 1) call put('')
             do i = 1, size(res%ls)
-                if (ios == 0) write (u, f, iostat=ios) res%ls(i), res%bs(m), &
+                if (ios == 0) write (u, f, iostat=ios) res%ls(i), res%bs(m), res%bps(m), &
                     merge(1.0_dp, 0.0_dp, res%stable(i, m)), res%max_modulus(i, m), &
                     res%u_rel(i, m), res%period_s(i, m), res%linear_error(i, m), &
                     res%modulus(:, i, m)
@@ -704,11 +735,11 @@ contains
         end do
         call put('')
         call put('')
-        call put('# stable bands (stable at every amplitude up to amplitude_max), for each b: '// &
-            'l_from l_to')
+        call put('# stable bands (stable at every amplitude up to amplitude_max), for each b '// &
+            'and b_prime: l_from l_to')
         do m = 1, size(res%bs)
             if (m > 1) call put('')
-            call put('# b = '//sci(res%bs(m), 15))
+            call put('# b = '//sci(res%bs(m), 15)//', b_prime = '//sci(res%bps(m), 15))
             do k = 1, size(res%stable_bands)
                 if (res%stable_bands(k)%ib == m .and. ios == 0) write (u, '(2es24.15e3)', &
                     iostat=ios) res%stable_bands(k)%l_from, res%stable_bands(k)%l_to
@@ -717,9 +748,10 @@ contains
         call put('')
         call put('')
         call put('# unstable bands of each amplitude (or where pure torsion is not possible): '// &
-            'b amplitude l_from l_to')
+            'b b_prime amplitude l_from l_to')
         do k = 1, size(res%unstable)
-            if (ios == 0) write (u, '(4es24.15e3)', iostat=ios) res%bs(res%unstable(k)%ib), &
+            if (ios == 0) write (u, '(5es24.15e3)', iostat=ios) res%bs(res%unstable(k)%ib), &
+                res%bps(res%unstable(k)%ib), &
                 res%amps(res%unstable(k)%ia), res%unstable(k)%l_from, res%unstable(k)%l_to
         end do
         call fs%close(u, ios, stat)

@@ -106,6 +106,7 @@ contains
                 design_part = ' design '//itoa(size(dr%ls)*size(dr%bs))//' candidates x '// &
                     itoa(size(dr%amps))//' amplitudes, '//itoa(dr%n_stable)//' stable, '// &
                     'recommended l = '//sci(dr%ls(dr%il), 4)//', b = '//sci(dr%bs(dr%ib), 4)// &
+                    ', b_prime = '//sci(dr%bps(dr%ib), 4)// &
                     ', u(I1)/I1 = '//sci(dr%u_rel(dr%il, dr%ib), 2)//', '// &
                     fixed(dr%wall_seconds, 2)//' s'//ranks_note(rep)
                 if (dr%n_failed > 0) design_part = design_part//', '//itoa(dr%n_failed)// &

@@ -100,7 +100,13 @@ module deck
         integer  :: design_nl = 60
         real(dp) :: design_b_min = 0.0_dp, design_b_max = 0.0_dp  !! 0, 0 with nb = 1: deck's b
         integer  :: design_nb = 1
+        !> the body's spacing b' (0, 0 with nb_prime = 1: the deck's b')
+        real(dp) :: design_b_prime_min = 0.0_dp, design_b_prime_max = 0.0_dp
+        integer  :: design_nb_prime = 1
         real(dp) :: design_amplitude_max = 50.0_dp  !! degrees, 0 < a <= 90
+        !> the amplitude (degrees) at which the precision is predicted; PERIOD_UNSET: not
+        !! given, then min(25, amplitude_max) (check_design)
+        real(dp) :: design_amplitude_measure = PERIOD_UNSET
         integer  :: design_n_amplitudes = 6
         real(dp) :: design_u_mass = 1.0e-3_dp, design_u_l = 1.0e-3_dp
         real(dp) :: design_u_b = 5.0e-4_dp, design_u_period = 1.0e-4_dp
@@ -192,7 +198,8 @@ module deck
         'x:c1 x_min:r1 x_max:r1 nx:i1 y:c1 y_min:r1 y_max:r1 ny:i1'
     character(len=*), parameter :: SPEC_OUTPUT = 'columns:c1'
     character(len=*), parameter :: SPEC_DESIGN = 'l_min:r1 l_max:r1 nl:i1 b_min:r1 b_max:r1 '// &
-        'nb:i1 amplitude_max:r1 n_amplitudes:i1 u_mass:r1 u_l:r1 u_b:r1 u_period:r1'
+        'nb:i1 amplitude_max:r1 n_amplitudes:i1 u_mass:r1 u_l:r1 u_b:r1 u_period:r1 '// &
+        'b_prime_min:r1 b_prime_max:r1 nb_prime:i1 amplitude_measure:r1'
     character(len=*), parameter :: SPEC_DAMPING = 'c_v:r1 c_q:r1'
     character(len=*), parameter :: SPEC_MEASUREMENT = 'periods:r100 amplitudes:r100 '// &
         'record:c1 quantity:c1 estimate:c1 u_mass:r1 u_l:r1 u_l_prime:r1 u_b:r1 '// &
@@ -298,9 +305,10 @@ module deck
             type(deck_t), intent(inout) :: d
             type(status_t), intent(inout) :: stat
         end subroutine check_output
-        !> &design (when the analysis is requested): the candidate grid and uncertainties.
+        !> &design (when the analysis is requested): the candidate grid and uncertainties;
+        !! amplitude_measure defaults to min(25, amplitude_max).
         module subroutine check_design(d, stat)
-            type(deck_t), intent(in) :: d
+            type(deck_t), intent(inout) :: d
             type(status_t), intent(inout) :: stat
         end subroutine check_design
         !> &damping: c_v, c_q.
@@ -852,23 +860,29 @@ contains
         d%columns = columns
     end subroutine read_output
 
-    !> &design l_min, l_max, nl, b_min, b_max, nb, amplitude_max, n_amplitudes, u_mass, u_l,
-    !! u_b, u_period (into d's design_* values).
+    !> &design l_min, l_max, nl, b_min, b_max, nb, b_prime_min, b_prime_max, nb_prime,
+    !! amplitude_max, n_amplitudes, amplitude_measure, u_mass, u_l, u_b, u_period (into d's
+    !! design_* values).
     subroutine read_design(rec, d, ios, msg)
         character(len=*), intent(in) :: rec         !! the group as one record
         type(deck_t), intent(inout) :: d            !! design_* values: defaults in, read out
         integer, intent(out) :: ios                 !! iostat of the namelist read
         character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
         real(dp) :: l_min, l_max, b_min, b_max, amplitude_max, u_mass, u_l, u_b, u_period
-        integer :: nl, nb, n_amplitudes
+        real(dp) :: b_prime_min, b_prime_max, amplitude_measure
+        integer :: nl, nb, n_amplitudes, nb_prime
         namelist /design/ l_min, l_max, nl, b_min, b_max, nb, amplitude_max, n_amplitudes, &
-            u_mass, u_l, u_b, u_period
+            u_mass, u_l, u_b, u_period, b_prime_min, b_prime_max, nb_prime, amplitude_measure
         l_min = d%design_l_min
         l_max = d%design_l_max
         nl = d%design_nl
         b_min = d%design_b_min
         b_max = d%design_b_max
         nb = d%design_nb
+        b_prime_min = d%design_b_prime_min
+        b_prime_max = d%design_b_prime_max
+        nb_prime = d%design_nb_prime
+        amplitude_measure = d%design_amplitude_measure
         amplitude_max = d%design_amplitude_max
         n_amplitudes = d%design_n_amplitudes
         u_mass = d%design_u_mass
@@ -882,6 +896,10 @@ contains
         d%design_b_min = b_min
         d%design_b_max = b_max
         d%design_nb = nb
+        d%design_b_prime_min = b_prime_min
+        d%design_b_prime_max = b_prime_max
+        d%design_nb_prime = nb_prime
+        d%design_amplitude_measure = amplitude_measure
         d%design_amplitude_max = amplitude_max
         d%design_n_amplitudes = n_amplitudes
         d%design_u_mass = u_mass
@@ -1123,8 +1141,11 @@ contains
         if (analysis_requested(d, 'design')) call put('# &design l_min = '// &
             rshort(d%design_l_min)//', l_max = '//rshort(d%design_l_max)//', nl = '// &
             itoa(d%design_nl)//', b_min = '//rshort(d%design_b_min)//', b_max = '// &
-            rshort(d%design_b_max)//', nb = '//itoa(d%design_nb)//', amplitude_max = '// &
+            rshort(d%design_b_max)//', nb = '//itoa(d%design_nb)//', b_prime_min = '// &
+            rshort(d%design_b_prime_min)//', b_prime_max = '//rshort(d%design_b_prime_max)// &
+            ', nb_prime = '//itoa(d%design_nb_prime)//', amplitude_max = '// &
             rshort(d%design_amplitude_max)//', n_amplitudes = '//itoa(d%design_n_amplitudes)// &
+            ', amplitude_measure = '//rshort(d%design_amplitude_measure)// &
             ', u_mass = '//rshort(d%design_u_mass)//', u_l = '//rshort(d%design_u_l)// &
             ', u_b = '//rshort(d%design_u_b)//', u_period = '//rshort(d%design_u_period)//' /')
         if (trim(d%columns) /= OUTPUT_COLUMNS) call put('# &output columns = '// &

@@ -775,6 +775,48 @@ contains
             call over_b_prime(stat, 'design', 'b_min', d%design_b_min, d%b_prime, RATIO_MIN)
             call over_b_prime(stat, 'design', 'b_max', d%design_b_max, d%b_prime, RATIO_MIN)
         end if
+        ! the body's spacing b', as b
+        call finite(stat, 'design', 'b_prime_min', d%design_b_prime_min)
+        call finite(stat, 'design', 'b_prime_max', d%design_b_prime_max)
+        if (stat%code /= STATUS_OK) return
+        if (d%design_nb_prime == 1) then
+            if (d%design_b_prime_min /= d%design_b_prime_max) then
+                call bad(stat, 'design', 'b_prime_max', rshort(d%design_b_prime_max), &
+                         'differs from b_prime_min = '//rshort(d%design_b_prime_min)// &
+                         ' with nb_prime = 1', 'b_prime_min = b_prime_max = 0 with '// &
+                         'nb_prime = 1 (the deck''s b_prime), b_prime_min = b_prime_max > 0 '// &
+                         'with nb_prime = 1 (that b_prime), or 0 < b_prime_min < b_prime_max '// &
+                         'with nb_prime >= 2')
+                return
+            end if
+            if (d%design_b_prime_min /= 0.0_dp) call positive(stat, 'design', 'b_prime_min', &
+                d%design_b_prime_min, 'b_prime_min = b_prime_max = 0 (the deck''s b_prime) '// &
+                'or > 0')
+        else if (d%design_nb_prime < 1 .or. d%design_nb_prime > MAX_CHART_N) then
+            call bad(stat, 'design', 'nb_prime', itoa(d%design_nb_prime), 'number of body '// &
+                     'spacings out of range', '1 <= nb_prime <= '//itoa(MAX_CHART_N))
+            return
+        else
+            call positive(stat, 'design', 'b_prime_min', d%design_b_prime_min, &
+                          '0 < b_prime_min < b_prime_max with nb_prime >= 2')
+            if (stat%code /= STATUS_OK) return
+            if (d%design_b_prime_min >= d%design_b_prime_max) call bad(stat, 'design', &
+                'b_prime_max', rshort(d%design_b_prime_max), 'not larger than b_prime_min = '// &
+                rshort(d%design_b_prime_min)//' with nb_prime = '//itoa(d%design_nb_prime), &
+                'b_prime_min < b_prime_max with nb_prime >= 2')
+        end if
+        if (stat%code /= STATUS_OK) return
+        if (d%design_b_prime_min > 0.0_dp) then
+            call over_b_prime(stat, 'design', 'b_prime_min', d%design_b_prime_min, d%b_prime, &
+                              RATIO_MIN)
+            call over_b_prime(stat, 'design', 'b_prime_max', d%design_b_prime_max, d%b_prime, &
+                              RATIO_MIN)
+            if (stat%code /= STATUS_OK) return
+            if (d%design_b_prime_min <= 2.0_dp*abs(d%cg_offset)) call bad(stat, 'design', &
+                'b_prime_min', rshort(d%design_b_prime_min), 'does not reach past the mass '// &
+                'centre''s offset (cg_offset = '//rshort(d%cg_offset)//')', &
+                'b_prime_min > 2 |cg_offset|')
+        end if
         call finite(stat, 'design', 'amplitude_max', d%design_amplitude_max)
         if (stat%code /= STATUS_OK) return
         if (d%design_amplitude_max <= 0.0_dp .or. d%design_amplitude_max > 90.0_dp) then
@@ -788,6 +830,18 @@ contains
                      itoa(MAX_DESIGN_AMPLITUDES))
             return
         end if
+        if (d%design_amplitude_measure == PERIOD_UNSET) &
+            d%design_amplitude_measure = min(25.0_dp, d%design_amplitude_max)
+        call finite(stat, 'design', 'amplitude_measure', d%design_amplitude_measure)
+        if (stat%code /= STATUS_OK) return
+        if (d%design_amplitude_measure <= 0.0_dp .or. &
+            d%design_amplitude_measure > d%design_amplitude_max) then
+            call bad(stat, 'design', 'amplitude_measure', rshort(d%design_amplitude_measure), &
+                     'out of range', '0 < amplitude_measure <= amplitude_max = '// &
+                     rshort(d%design_amplitude_max)//' (degrees of theta4: the amplitude of '// &
+                     'the measurement, within the stability checked)')
+            return
+        end if
         if (d%design_amplitude_max/d%design_n_amplitudes < FLOQUET_AMPLITUDE_MIN) then
             call bad(stat, 'design', 'amplitude_max', rshort(d%design_amplitude_max), &
                      'its smallest amplitude amplitude_max/n_amplitudes is below '// &
@@ -795,7 +849,8 @@ contains
                      ' >= '//rshort(FLOQUET_AMPLITUDE_MIN)//' (degrees of theta4)')
             return
         end if
-        if (real(d%design_nl, dp)*d%design_nb*d%design_n_amplitudes > MAX_CHART_POINTS) then
+        if (real(d%design_nl, dp)*d%design_nb*d%design_nb_prime*d%design_n_amplitudes > &
+            MAX_CHART_POINTS) then
             call bad(stat, 'design', 'n_amplitudes', itoa(d%design_n_amplitudes), &
                      'too many Floquet points (nl*nb*n_amplitudes = '// &
                      sci(real(d%design_nl, dp)*d%design_nb*d%design_n_amplitudes)//')', &
