@@ -55,6 +55,8 @@ contains
         if (t%want('measure: trials, consistent and not')) call test_trials(t, exe)
         if (t%want('measure: coverage over releases that scatter')) call test_coverage(t)
         if (t%want('measure: correlated residuals')) call test_correlated(t)
+        if (t%want('measure: video track from mid-swing, glitches, huber')) call test_video(t)
+        if (t%want('measure: no figure script carries a deck''s title')) call test_titles(t)
     end subroutine run_measure_tests
 
     !> A number as deck text (full precision).
@@ -180,8 +182,9 @@ contains
     ! ---------------------------------------------------------------------------------------
     !> The mistakes people make, each refused with one line on stderr naming the deck and
     !! the cause, and no file: g left out, the mass centre left out (exit 2); ten-cycle
-    !! totals typed as periods, half spacings typed for b and b_prime (exit 4); an I1 just
-    !! above I2 + I3 is a warning (exit 0, one line).
+    !! totals typed as periods, half spacings typed for b and b_prime, periods in ms (exit
+    !! 4); a platform of three cables with another analysis than identify (exit 2); an I1
+    !! just above I2 + I3 is a warning (exit 0, one line).
     subroutine test_traps(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
@@ -200,6 +203,10 @@ contains
                  'l_prime = 1.2, g = 9.80665 /'//NL//BODY//per, 4, 'half the spacing')
         call one('mm', HEAD//SUSP//BODY//'&measurement periods = '//num(1000*t1)//', '// &
                  num(1000*t2)//', amplitudes = 10, 20 /'//NL, 4, 'units')
+        call one('tri_sim', "&scene title = 'measure test', analyses = 'simulate' /"//NL// &
+                 '&suspension cables = 3, radius = 0.2, radius_prime = 0.15, l = 1.0, '// &
+                 'g = 9.80665 /'//NL//'&body mass = 2.0, inertia = 0.04, 0.03, 0.03 /'//NL, 2, &
+                 'cables >= 3 with analyses = ''identify'' alone')
         ! I1 5 % above I2 + I3: a warning, the number stands
         call fresh_dir(SCR//'/trap_lamina')
         t1 = period_of(1.05_dp*(0.063_dp + 0.0304_dp), 10.0_dp)
@@ -270,6 +277,15 @@ contains
                            kv('tot', 'dof_eff'), 2.0_dp, rtol=1.0e-9_dp)
         call t%check_close('cycles: k = t(0.975, 2) = 4.303', kv('tot', 'k'), 4.30265273_dp, &
                            rtol=1.0e-7_dp)
+        ! two timings at one amplitude that disagree, the amplitude uncertain: Gauss-Newton
+        ! ends at the optimum (its line search at roundoff is convergence, not exit 3)
+        call run_here('gn', HEAD//SUSP//BODY//'&measurement periods = '//num(10*t1 - 0.03_dp)// &
+                      ', '//num(10*t1 + 0.02_dp)//', cycles = 10, amplitudes = 10, 10, '// &
+                      'u_period = 0.05, u_amplitude = 1 /'//NL, st)
+        call t%check('equal amplitudes, scattered timings, u_amplitude: converges (exit 0)', &
+                     st%code == 0)
+        call t%check_close('... to the I1 of the mean period', kv('gn', 'I1'), &
+                           I1_TRUE*(1.0_dp - 0.005_dp/(10*t1))**2, rtol=2.0e-4_dp)
         ! a tare and an added inertia
         call run_here('tare', HEAD//SUSP//BODY//'&measurement periods = '//num(t1)//', '// &
                       'amplitudes = 10, u_period = 1e-4, u_b = 5e-4, tare_I1 = 0.004, '// &
@@ -334,6 +350,22 @@ contains
                            rtol=1.0e-8_dp)
         call t%check('trifilar: exact torsion', file_has(SCR//'/tri.identify', &
                      'period_model = exact torsion'))
+        ! the cables' one length in the budget: its sensitivity that of moving every cable
+        call run_here('tri_u', HEAD//'&suspension cables = 3, radius = 0.2, radius_prime = '// &
+                      '0.15, l = 1.0, g = 9.80665 /'//NL//'&body mass = 2.0, inertia = 0.04, '// &
+                      '0.03, 0.03 /'//NL//'&measurement periods = '//num(t1)//', '//num(t2)// &
+                      ', amplitudes = 5, 40, u_l = 0.001 /'//NL, st)
+        call run_here('tri_p', HEAD//'&suspension cables = 3, radius = 0.2, radius_prime = '// &
+                      '0.15, l = 1.0001, g = 9.80665 /'//NL//'&body mass = 2.0, inertia = 0.04, '// &
+                      '0.03, 0.03 /'//NL//'&measurement periods = '//num(t1)//', '//num(t2)// &
+                      ', amplitudes = 5, 40 /'//NL, st)
+        call run_here('tri_m', HEAD//'&suspension cables = 3, radius = 0.2, radius_prime = '// &
+                      '0.15, l = 0.9999, g = 9.80665 /'//NL//'&body mass = 2.0, inertia = 0.04, '// &
+                      '0.03, 0.03 /'//NL//'&measurement periods = '//num(t1)//', '//num(t2)// &
+                      ', amplitudes = 5, 40 /'//NL, st)
+        call t%check_close('trifilar: the budget''s length row moves every cable', &
+                           row_sensitivity(SCR//'/tri_u.identify', 'length'), &
+                           (kv('tri_p', 'I1') - kv('tri_m', 'I1'))/2.0e-4_dp, rtol=1.0e-5_dp)
     contains
         real(dp) function tri_period(a) result(tp)
             real(dp), intent(in) :: a
@@ -487,6 +519,13 @@ contains
         ex = run(exe//' '//dd//'/typo.nml --out '//dd, dd)
         call t%check('trials: a misspelt column refused, one line naming it', all([ex == 2, &
                      count_lines(dd//'/stderr') == 1, file_has(dd//'/stderr', '''perod''')]))
+        call write_text(dd//'/mix.csv', 'trial,period,amplitude,record'//NL//'1,1.45,10,'//NL// &
+                        '2,0,10,swing.csv'//NL)
+        call write_text(dd//'/mix.nml', HEAD//SUSP//BODY//"&measurement trials = 'mix.csv' /"//NL)
+        ex = run(exe//' '//dd//'/mix.nml --out '//dd, dd)
+        call t%check('trials: periods and records in one table refused, one line', &
+                     all([ex == 2, count_lines(dd//'/stderr') == 1, &
+                          file_has(dd//'/stderr', 'one kind of release per table')]))
         call write_text(dd//'/rig.csv', 'trial,l,period'//NL//'1,1.2,1.5'//NL//'1,1.3,1.5'//NL)
         call write_text(dd//'/rig.nml', HEAD//SUSP//BODY//"&measurement trials = 'rig.csv' /"//NL)
         ex = run(exe//' '//dd//'/rig.nml --out '//dd, dd)
@@ -570,5 +609,92 @@ contains
         call t%check_close('correlated: white noise, tau = 1', correlation_time(y), 1.0_dp, &
                            rtol=0.1_dp)
     end subroutine test_correlated
+
+    ! ---------------------------------------------------------------------------------------
+    !> A video track: theta4 in degrees at 30 Hz from an angle tracker, the record starting
+    !! mid-swing 5.3 s after the release (times from 0 at the record's start), a zero offset
+    !! of 1.5 deg, noise 0.15 deg and 12 tracking glitches of 8 deg.  With t0 estimated (the
+    !! release found at the first turning point), bias and amplitude estimated and
+    !! loss = 'huber': I1 within 0.2 % (the glitches would pull least squares further).
+    subroutine test_video(t)
+        type(tester_t), intent(inout) :: t
+        type(deck_t) :: d
+        type(status_t) :: st
+        type(rng_t) :: g
+        real(dp), allocatable :: tt(:), th(:)
+        character(len=:), allocatable :: rigtext, txt
+        character(len=64) :: row
+        integer :: i, n
+        real(dp) :: i1_h, i1_s
+        rigtext = HEAD//SUSP//BODY//"&start mode = 'raised', amplitude = 20 /"//NL
+        call read_deck_text(SCR//'/video_truth.nml', rigtext//'&damping c_v = 1e-3 /'//NL// &
+                            '&integration rtol = 1e-12, atol = 1e-14 /'//NL, d, st)
+        n = 451
+        allocate (tt(n), th(n))
+        do i = 1, n
+            tt(i) = 5.3_dp + (i - 1)/30.0_dp
+        end do
+        call record_model(rig_of(d), start_of(d), accuracy_of(d), tt, 0.0_dp, .false., th, st)
+        call t%check('video: the truth record', st%code == 0)
+        if (st%code /= 0) return
+        g = rng_stream(31, 0)
+        txt = 'frame;t;angle_deg'//NL
+        do i = 1, n
+            th(i) = th(i)/deg + 1.5_dp + 0.15_dp*rng_normal(g)
+            if (mod(i, 37) == 0) th(i) = th(i) + 8.0_dp
+            write (row, '(i0,a,f0.4,a,f0.4)') i, ';', tt(i) - 5.3_dp, ';', th(i)
+            txt = txt//trim(row)//NL
+        end do
+        call write_text(SCR//'/video.csv', txt)
+        call run_here('video', rigtext//"&damping c_v = 1e-3 /"//NL//"&measurement record = "// &
+                      "'video.csv', record_columns = 2, 3, record_units = 'deg', loss = 'huber', "// &
+                      "estimate = 'I1 amplitude t0 bias' /"//NL, st)
+        call t%check('video: mid-swing, huber: converges', st%code == 0)
+        if (st%code /= 0) then
+            write (*, '(a)') '   '//st%msg
+            return
+        end if
+        i1_h = kv('video', 'I1')
+        call t%check_close('video: I1 within 0.2 % (huber)', i1_h, I1_TRUE, rtol=2.0e-3_dp)
+        call run_here('video_ls', rigtext//"&damping c_v = 1e-3 /"//NL//"&measurement "// &
+                      "record = 'video.csv', record_columns = 2, 3, record_units = 'deg', "// &
+                      "estimate = 'I1 amplitude t0 bias' /"//NL, st)
+        i1_s = kv('video_ls', 'I1')
+        write (*, '(a,es12.5,a,es12.5)') '   video: I1 error, huber ', i1_h/I1_TRUE - 1.0_dp, &
+            ', least squares ', i1_s/I1_TRUE - 1.0_dp
+        call t%check('video: least squares converges too, and no closer than huber', &
+                     st%code == 0 .and. abs(i1_s - I1_TRUE) >= 0.5_dp*abs(i1_h - I1_TRUE))
+    end subroutine test_video
+
+    !> No figure script (plots/*.gp, *.gpi) holds the title of a deck of input/: figures take
+    !! their titles from the data.
+    subroutine test_titles(t)
+        type(tester_t), intent(inout) :: t
+        integer :: ex
+        call execute_command_line('for f in input/*.nml input/*/*.nml; do '// &
+            't=$(grep -o "title = ''[^'']*''" "$f" | head -n 1 | sed "s/title = ''//; '// &
+            's/''$//"); [ -n "$t" ] && grep -lF "$t" plots/*.gp plots/*.gpi; done | '// &
+            'grep -q .', exitstat=ex)
+        call t%check('titles: no deck''s title in plots/*.gp or *.gpi', ex /= 0)
+    end subroutine test_titles
+
+    !> The sensitivity (fourth field) of the budget row `name` of a .identify (0 when none).
+    real(dp) function row_sensitivity(path, name) result(c)
+        character(len=*), intent(in) :: path, name
+        character(len=512) :: line
+        character(len=32) :: w
+        real(dp) :: v, uu
+        integer :: u, ios
+        c = 0.0_dp
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        do while (ios == 0)
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, name//' ') /= 1) cycle
+            read (line, *, iostat=ios) w, v, uu, c
+            exit
+        end do
+        close (u)
+    end function row_sensitivity
 
 end module test_measure

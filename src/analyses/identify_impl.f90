@@ -13,7 +13,7 @@ submodule (identify) identify_impl
     use bifilar_model, only: NSTATE
     use rig, only: rig_t, start_t, accuracy_t, rig_of, start_of, accuracy_of, make_pendulum, &
         start_state
-    use least_squares, only: lsq_result_t, lsq_jacobian
+    use least_squares, only: lsq_result_t, lsq_jacobian, lm_fit, lsq_options_t
     use budget, only: input_u_t
     use records, only: read_record_file, record_format_t, record_format_of, record_file, mean_period
     use trials, only: trial_set_t, trial_t, read_trials, RIG_COLUMNS
@@ -113,6 +113,13 @@ contains
         end if
         call read_trials(d, ts, stat)
         if (stat%code /= 0) return
+        if (any([(len(ts%t(i)%record) > 0, i=1, size(ts%t))]) .and. &
+            any([(len(ts%t(i)%record) == 0, i=1, size(ts%t))])) then
+            call set_error(stat, ERR_DECK, '&measurement trials = '//quoted(d%trials)// &
+                ': releases of periods and releases of records in one table; allowed: '// &
+                'one kind of release per table (a deck per kind)')
+            return
+        end if
         do i = 1, size(ts%t)
             rg = trial_rig(d, ts%t(i))
             if (len(ts%t(i)%record) == 0) then
@@ -238,7 +245,13 @@ contains
         st = start_of(d)
         deckv = [d%l, d%l_prime, d%b, d%b_prime, d%mass]
         do k = 1, 5
-            if (tr%rig(k) /= deckv(k)) call set_input(rg, st, RIG_COLUMNS(k), tr%rig(k))
+            if (tr%rig(k) == deckv(k)) cycle
+            if (d%cables > 2 .and. k <= 2) then
+                ! a platform: one length for every cable (the column l; l_prime follows it)
+                if (k == 1) call set_input(rg, st, 'length', tr%rig(1))
+            else
+                call set_input(rg, st, RIG_COLUMNS(k), tr%rig(k))
+            end if
         end do
     end function trial_rig
 
@@ -299,7 +312,8 @@ contains
             xr(:) = x
             do k = 1, 5
                 do j = 1, size(xr)
-                    if (xr(j)%name == RIG_COLUMNS(k)) xr(j)%value = ts%t(i)%rig(k)
+                    if (xr(j)%name == RIG_COLUMNS(k) .or. (k == 1 .and. xr(j)%name == &
+                        'length')) xr(j)%value = ts%t(i)%rig(k)
                 end do
             end do
             if (len(ts%t(i)%record) == 0) then
@@ -330,7 +344,7 @@ contains
                                             d%monte_carlo, d%seed, mean, sdev, stat, outdir, &
                                             options, report, files, r%cycles)
                 end associate
-                res%u_i1_mc = sdev
+                res%u_i1_mc = sqrt(sdev**2 + d%u_tare_i1**2 + d%u_added_inertia**2)
                 res%mc_mean = mean - (res%i1_total - res%i1)
             end if
         end if
@@ -376,6 +390,7 @@ contains
         do k = 1, 5
             if (per_trial(k) .and. trim(name) == trim(RIG_COLUMNS(k))) own_row = .true.
         end do
+        if (per_trial(1) .and. trim(name) == 'length') own_row = .true.
     end function own_row
 
     !> A release's budget rows split: its own rows (with their degrees of freedom) and the
@@ -511,10 +526,13 @@ contains
         r%iterations = fit%iterations
         r%evaluations = fit%evaluations
         if (stat%code == 0 .and. trim(d%loss) == 'huber') then
+            ! iteratively reweighted: Huber's weights from the residuals, then the whole
+            ! record refitted from the last estimate (already in its basin: no windows)
             do ih = 1, 3
                 i0 = prob%ifirst
                 call huber_weights(prob, fit%r/prob%hw(i0:prob%nuse))
-                call fit_record(prob, fit%p, h, fit, stat)
+                p0 = fit%p
+                call lm_fit(prob, p0, h, prob%nres(), lsq_options_t(), fit, stat)
                 r%iterations = r%iterations + fit%iterations
                 r%evaluations = r%evaluations + fit%evaluations
                 if (stat%code /= 0) exit
@@ -697,7 +715,9 @@ contains
                 call pool_releases([(rels(r)%p(j), r=1, n)], [(rels(r)%u_p_own(j), r=1, n)], &
                                    [(rels(r)%nu_own, r=1, n)], pj)
                 res%p(j) = pj%mean
-                res%u_p(j) = pj%u_random
+                ! the common inputs' part, the same in every release: averaged, not reduced
+                res%u_p(j) = sqrt(pj%u_random**2 + sum(pj%weight*[(max(0.0_dp, &
+                    rels(r)%u_p(j)**2 - rels(r)%u_p_own(j)**2), r=1, n)]))
             end if
         end do
         res%iterations = sum(rels%iterations)
@@ -891,8 +911,8 @@ contains
             d%u_added_inertia > 0.0_dp) then
             call write_kv(u, 'I1_total', res%i1_total, ios)
             call write_kv(u, 'u_I1_total', res%u_i1_total, ios)
-            if (d%tare_mass > 0.0_dp) call write_kv(u, 'mass_body', d%mass - d%tare_mass, ios)
         end if
+        if (d%tare_mass > 0.0_dp) call write_kv(u, 'mass_body', d%mass - d%tare_mass, ios)
         if (d%monte_carlo > 0) call write_kv(u, 'u_I1_monte_carlo', res%u_i1_mc, ios)
         call write_kv(u, 'I1_linear', res%i1_linear, ios)
         call write_kv(u, 'linear_error', res%linear_error, ios)

@@ -1181,10 +1181,12 @@ contains
                 ', u_cg_depth = '//rshort(d%u_cg_depth)//', u_cg_offset = '//rshort(d%u_cg_offset)
             if (d%u_r > 0.0_dp .or. d%u_lambda > 0.0_dp) line = line//', u_r = '// &
                 rshort(d%u_r)//', u_lambda = '//rshort(d%u_lambda)
-            if (d%tare_i1 > 0.0_dp .or. d%tare_mass > 0.0_dp) line = line//', tare_i1 = '// &
+            if (d%tare_i1 > 0.0_dp .or. d%tare_mass > 0.0_dp .or. d%u_tare_i1 > 0.0_dp) &
+                line = line//', tare_i1 = '// &
                 rshort(d%tare_i1)//', u_tare_i1 = '//rshort(d%u_tare_i1)//', tare_mass = '// &
                 rshort(d%tare_mass)
-            if (d%added_inertia > 0.0_dp) line = line//', added_inertia = '// &
+            if (d%added_inertia > 0.0_dp .or. d%u_added_inertia > 0.0_dp) &
+                line = line//', added_inertia = '// &
                 rshort(d%added_inertia)//', u_added_inertia = '//rshort(d%u_added_inertia)
             call put(line//', monte_carlo = '//itoa(d%monte_carlo)//', seed = '// &
                      itoa(d%seed)//' /')

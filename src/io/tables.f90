@@ -135,7 +135,7 @@ contains
             end if
             call to_numbers(f, tab%decimal_comma, x, numeric)
             if (.not. numeric) then
-                if (n > 0) then
+                if (n > 0 .or. with_text) then
                     call fail('line '//itoa(nline)//': '//non_number(f, tab%decimal_comma)// &
                               '; allowed: numbers in every field after the header')
                     return

@@ -1,7 +1,8 @@
 !> The inputs of a measurement's uncertainty budget: every quantity of the rig the model
 !! uses, with its value and standard uncertainty, and how to set it on a rig (set_input).
 !!
-!! The inputs: mass, l, l_prime, b, b_prime, g; the moments I2 and I3 (u_inertia); the
+!! The inputs: mass, l, l_prime (a platform of three or more cables: their one length,
+!! `length`, which moves every cable), b, b_prime, g; the moments I2 and I3 (u_inertia); the
 !! mass centre, as cg_depth and cg_offset when the deck gives it so, else as r and lambda;
 !! the release amplitude where it is held (a record fit that does not estimate it).  A
 !! change of b_prime moves the two body attachment points symmetrically: the mass centre
@@ -35,8 +36,14 @@ contains
         type(deck_t), intent(in) :: d           !! the deck
         logical, intent(in) :: with_amplitude   !! add the release amplitude
         type(input_t), allocatable :: x(:)
-        x = [input_t('mass', d%mass, d%u_mass), input_t('l', d%l, d%u_l), &
-             input_t('l_prime', d%l_prime, d%u_l_prime), input_t('b', d%b, d%u_b), &
+        if (d%cables > 2) then
+            ! a platform: every cable of one length, measured as one
+            x = [input_t('mass', d%mass, d%u_mass), input_t('length', d%l, d%u_l)]
+        else
+            x = [input_t('mass', d%mass, d%u_mass), input_t('l', d%l, d%u_l), &
+                 input_t('l_prime', d%l_prime, d%u_l_prime)]
+        end if
+        x = [x, input_t('b', d%b, d%u_b), &
              input_t('b_prime', d%b_prime, d%u_b_prime), input_t('g', d%g, d%u_g), &
              input_t('I2', d%inertia(2), d%u_inertia(1)), &
              input_t('I3', d%inertia(3), d%u_inertia(2))]
@@ -63,6 +70,9 @@ contains
         case ('l')
             rg%l = v
         case ('l_prime')
+            rg%l_prime = v
+        case ('length')
+            rg%l = v
             rg%l_prime = v
         case ('b')
             rg%b = v
@@ -101,7 +111,7 @@ contains
         select case (trim(name))
         case ('mass')
             v = rg%mass
-        case ('l')
+        case ('l', 'length')
             v = rg%l
         case ('l_prime')
             v = rg%l_prime
