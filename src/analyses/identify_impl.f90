@@ -21,7 +21,7 @@ submodule (identify) identify_impl
     use pooling, only: pooled_t, pool_releases
     use stats, only: coverage_factor, welch_satterthwaite, NU_INFINITE
     use record_fit, only: record_fit_t, record_mc_task_t, fit_problem, fit_record, covariance, &
-        input_sensitivity, record_mc_task, explain_fit_failure, huber_weights, &
+        input_sensitivities, record_mc_task, explain_fit_failure, huber_weights, &
         correlation_time, PARAM_NAMES, P_BIAS
     use period_inversion, only: period_fit_t, invert_periods, period_budget, &
                                 period_monte_carlo, linear_inertia, is_torsion_rig, &
@@ -52,6 +52,7 @@ submodule (identify) identify_impl
         real(dp), allocatable :: model(:)       !! the fitted model (rad or rad/s)
         real(dp), allocatable :: jac(:, :)      !! the Jacobian at the estimate
         real(dp), allocatable :: hw(:)          !! the robust weights' roots
+        real(dp), allocatable :: dpdx(:, :)     !! (np, inputs) the parameters' sensitivities
         integer :: np = 1, ifirst = 1
         character(len=9) :: names(6) = ''
         real(dp) :: p(6) = 0.0_dp, u_p(6) = 0.0_dp, u_p_own(6) = 0.0_dp
@@ -547,10 +548,15 @@ contains
         end if
         m = prob%nres()
         i0 = prob%ifirst
-        ! the Jacobian at the estimate by central differences, the covariance
+        ! the Jacobian at the estimate (forward sensitivities: the fit's last; else central
+        ! differences), the covariance
         allocate (jac(m, np))
-        call lsq_jacobian(prob, fit%p, fit%r, h, jac, stat, central=.true.)
-        r%evaluations = r%evaluations + 2*np
+        if (prob%has_jacobian()) then
+            jac = fit%jac
+        else
+            call lsq_jacobian(prob, fit%p, fit%r, h, jac, stat, central=.true.)
+            r%evaluations = r%evaluations + 2*np
+        end if
         if (stat%code /= 0) then
             stat%msg = 'identify: the Jacobian at the estimate: '//stat%msg
             return
@@ -569,16 +575,13 @@ contains
             return
         end if
         allocate (dpdx(np, size(x)))
-        dpdx = 0.0_dp
-        do j = 1, size(x)
-            if (.not. (x(j)%u > 0.0_dp)) cycle
-            call input_sensitivity(prob, fit%p, jac, x(j), dpdx(:, j), stat)
-            r%evaluations = r%evaluations + 2
-            if (stat%code /= 0) then
-                stat%msg = 'identify: sensitivity to '//trim(x(j)%name)//': '//stat%msg
-                return
-            end if
-        end do
+        call input_sensitivities(prob, fit%p, jac, x, dpdx, ih, stat)
+        r%evaluations = r%evaluations + ih
+        if (stat%code /= 0) then
+            stat%msg = 'identify: '//stat%msg
+            return
+        end if
+        r%dpdx = dpdx
         r%np = np
         r%samples = m
         r%ifirst = i0
@@ -826,7 +829,8 @@ contains
         call file_crc(record_file(d), crc, stat)
         if (stat%code /= 0) return
         payload = [crc_parts(crc), r%sigma*sqrt(r%tau), real(np, dp), r%p(1:np), &
-                   r%u_p(1:np), reshape(r%jac, [size(r%jac)]), r%hw]
+                   r%u_p(1:np), reshape(r%jac, [size(r%jac)]), r%hw, &
+                   reshape(r%dpdx, [size(r%dpdx)])]
         call record_mc_task(d, r%rec, deck_inputs(d, .true.), payload, task)
         allocate (mean(np), sdev(np))
         call monte_carlo_run(task, d, d%monte_carlo, payload, mean, sdev, stat, outdir, &

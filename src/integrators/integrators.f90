@@ -11,7 +11,13 @@ module integrators
     !> The integrators.
     integer, parameter, public :: SOLVER_LSODA = 1, SOLVER_RADAU = 2
 
-    public :: new_integrator, integrator_for
+    !> How derivatives of whole runs are taken (&integration sensitivities): forward
+    !! sensitivities integrated with the state (the integrators' sens_init), or the paths of
+    !! before, differences of whole runs (a record fit's Jacobian and budget) and the
+    !! variational equations integrated with the orbit under the error control (Floquet).
+    integer, parameter, public :: SENS_FORWARD = 1, SENS_DIFFERENCES = 2
+
+    public :: new_integrator, integrator_for, sensitivities_for
 
 contains
 
@@ -37,5 +43,13 @@ contains
         if (trim(method) == 'radau' .or. (trim(method) == 'auto' .and. &
                                           trim(model) == 'elastic')) m = SOLVER_RADAU
     end function integrator_for
+
+    !> The way of &integration sensitivities: SENS_DIFFERENCES for 'differences', else
+    !! SENS_FORWARD ('forward', the default).
+    pure integer function sensitivities_for(word) result(m)
+        character(len=*), intent(in) :: word        !! 'forward' or 'differences'
+        m = SENS_FORWARD
+        if (trim(word) == 'differences') m = SENS_DIFFERENCES
+    end function sensitivities_for
 
 end module integrators

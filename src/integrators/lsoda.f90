@@ -24,6 +24,18 @@
 !!   below 1.
 !! * Output: the solution at any t inside the last step by interpolation from the Nordsieck
 !!   array (integrate, dense), optional hard stop time tcrit never stepped over.
+!! * Forward sensitivities (sens_init, sens_dense), by the staggered direct method (Caracotsios
+!!   & Stewart 1985; Maly & Petzold 1996): the sensitivities s_k = dy/dp_k have a Nordsieck
+!!   array of their own, predicted, rescaled and corrected with the state's.  Once the
+!!   state's corrector has converged (and, by default, passed the error test), the step's
+!!   formula is solved for the sensitivities at the new point (t_n, y_n):
+!!       (I - h l0 J) a = h (J z_pred + df/dp) - z'_pred h,   s_n = z_pred + l0 a,
+!!   with the exact products J v and df/dp of the system (ode_system's sens_point, sens_jv).
+!!   A BDF step solves it with its own Newton matrix (the chord iteration, residuals with the
+!!   exact J); an Adams step by its own functional iteration.  An iteration that does not
+!!   contract fast enough ends in a direct solve with I - h l0 J factored anew.  The
+!!   sensitivities do not change the state's steps unless they are asked into the error test
+!!   (error_control): then the step's error norm and the order selection include theirs.
 !!
 !! All state lives in a `lsoda_t` object, so independent integrations can be interleaved.
 !! No routine stops the program: every failure is returned in a status_t with one of the
@@ -36,7 +48,7 @@ module lsoda
         LSODA_ERR_ILLEGAL_INPUT, LSODA_ERR_SINGULAR
     use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, METHOD_ADAMS, &
         METHOD_BDF
-    use lapack_wrap, only: la_lu_factor, la_lu_solve
+    use lapack_wrap, only: la_lu_factor, la_lu_solve, la_small_lu_solve
     implicit none
     private
 
@@ -58,6 +70,8 @@ module lsoda
     integer, parameter :: SWITCH_WAIT = 20         !! steps after a switch before the next test
     real(dp), parameter :: SWITCH_RATIO = 5.0_dp   !! cost ratio of a BDF to an Adams step
     integer, parameter :: DEFAULT_MAX_STEPS = 500000
+    integer, parameter :: SENS_MAXIT = 4           !! sensitivity corrector iterations
+    real(dp), parameter :: SENS_CONV = 0.1_dp      !! their test: this part of the state's
 
     ! internal outcome of one call of take_step
     integer, parameter :: KF_OK = 0, KF_ERRTEST = -1, KF_CONV = -2, KF_SINGULAR = -3, &
@@ -102,6 +116,18 @@ module lsoda
         integer :: max_steps = DEFAULT_MAX_STEPS
         integer :: nst = 0, nfe = 0, nje = 0, nlu = 0, nswitch = 0, steps_call = 0
         integer :: ncfn = 0, netf = 0
+        ! forward sensitivities (sens_init): ns columns of n, one vector of n ns
+        integer :: ns = 0, nsn = 0
+        logical :: sens_errcon = .false.       ! in the error test
+        real(dp), allocatable :: zh(:, :)      ! their Nordsieck array (nsn, LMAX_ALL)
+        real(dp), allocatable :: satol(:), srewt(:), sacor(:)
+        real(dp), allocatable :: sdfdp(:, :)   ! df/dp at the step's point (n, ns)
+        real(dp), allocatable :: sjm(:, :)     ! the sensitivities' own matrix I - h l0 J, LU
+        integer, allocatable :: spiv(:)
+        real(dp) :: shl0 = 0.0_dp              ! its h l0
+        integer :: snslp = 0                   ! the step it was formed at
+        logical :: shave = .false.             ! it is formed
+        integer :: nsp = 0, nsit = 0, nsdir = 0
     contains
         procedure :: init => lsoda_init
         procedure :: integrate => lsoda_integrate
@@ -111,6 +137,8 @@ module lsoda
         procedure :: set_tcrit => lsoda_set_tcrit
         procedure :: name => lsoda_name
         procedure :: set_options => lsoda_set_options
+        procedure :: sens_init => lsoda_sens_init
+        procedure :: sens_dense => lsoda_sens_dense
     end type lsoda_t
 
 contains
@@ -269,6 +297,11 @@ contains
         s%steps_call = 0
         s%tsw = t0
         s%pdnorm = 0.0_dp
+        s%ns = 0
+        s%nsn = 0
+        s%nsp = 0
+        s%nsit = 0
+        s%nsdir = 0
 
         s%yh(:, 1) = y0
         s%y = y0
@@ -466,6 +499,9 @@ contains
         st%h_last = s%hu
         st%h_next = s%h
         st%t_current = s%tn
+        st%sens_points = s%nsp
+        st%sens_iterations = s%nsit
+        st%sens_direct = s%nsdir
     end function lsoda_get_stats
 
     !> LSODA's own options, for the next init and those after it until set again (an
@@ -528,6 +564,109 @@ contains
         s%tcrit = tcrit
         s%have_tcrit = .true.
     end subroutine lsoda_set_tcrit
+
+    !> Start forward sensitivities (see the module header): after init, before the first
+    !! step.
+    !!
+    !! sys   [in,out] the right-hand side; its sens_point and sens_jv give the terms.
+    !! s0    [in]  (n, ns) the sensitivities at t0, ns >= 1.
+    !! stat  [out] STATUS_OK; LSODA_ERR_ILLEGAL_INPUT (no init, the integration has
+    !!             started, a bad shape or scale); or the system's code from its terms.
+    !! scale [in, optional] (ns) the size of sensitivity k against the state's: its absolute
+    !!             tolerance is atol scale(k) (default 1), > 0.
+    !! error_control [in, optional] .true.: the sensitivities take part in the error test
+    !!             and the order selection (default .false.: the state's steps alone).
+    subroutine lsoda_sens_init(s, sys, s0, stat, scale, error_control)
+        class(lsoda_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        real(dp), intent(in) :: s0(:, :)
+        type(status_t), intent(out) :: stat
+        real(dp), intent(in), optional :: scale(:)
+        logical, intent(in), optional :: error_control
+        real(dp) :: sc(size(s0, 2)), w
+        integer :: ns, n, k, i
+        stat%code = STATUS_OK
+        s%ns = 0
+        s%nsn = 0
+        n = s%n
+        ns = size(s0, 2)
+        if (.not. s%ready .or. s%started) then
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda sens_init: after init and '// &
+                'before the first step only')
+            return
+        end if
+        if (size(s0, 1) /= n .or. ns < 1) then
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda sens_init: s0 must be n x ns, '// &
+                'ns >= 1')
+            return
+        end if
+        sc = 1.0_dp
+        if (present(scale)) then
+            if (size(scale) /= ns .or. .not. all(scale > 0.0_dp)) then
+                call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda sens_init: scale must '// &
+                    'have ns entries, each > 0')
+                return
+            end if
+            sc = scale
+        end if
+        s%sens_errcon = .false.
+        if (present(error_control)) s%sens_errcon = error_control
+        s%nsn = n*ns
+        if (allocated(s%zh)) then
+            if (size(s%zh, 1) /= s%nsn) deallocate (s%zh)
+        end if
+        if (.not. allocated(s%zh)) allocate (s%zh(s%nsn, LMAX_ALL))
+        call realloc_vec(s%satol, s%nsn)
+        call realloc_vec(s%srewt, s%nsn)
+        call realloc_vec(s%sacor, s%nsn)
+        if (allocated(s%sdfdp)) deallocate (s%sdfdp, s%sjm, s%spiv)
+        allocate (s%sdfdp(n, ns), s%sjm(n, n), s%spiv(n))
+        s%shl0 = 0.0_dp
+        s%snslp = 0
+        s%shave = .false.
+        s%zh = 0.0_dp
+        s%sacor = 0.0_dp
+        do k = 1, ns
+            do i = 1, n
+                ! atol = 0 (a relative test only) would make a weight infinite where s = 0
+                w = s%atol(i)
+                if (.not. (w > 0.0_dp)) w = max(s%rtol, UROUND)
+                s%satol(i + (k - 1)*n) = w*sc(k)
+            end do
+        end do
+        s%zh(:, 1) = reshape(s0, [s%nsn])
+        s%ns = ns
+        ! the slope at t0 (scaled by the first step in start_integration)
+        call sens_slope(s, sys, s%tn, s%yh(:, 1), stat)
+        if (stat%code /= STATUS_OK) then
+            call prefix_time(stat, s%tn)
+            s%ns = 0
+            s%nsn = 0
+        end if
+    end subroutine lsoda_sens_init
+
+    !> The sensitivities (k = 0) or their k-th derivative at t within the last step (as
+    !! dense for the state).
+    !!
+    !! ds   [out] (n, ns).
+    !! stat [out] STATUS_OK or LSODA_ERR_ILLEGAL_INPUT (no sensitivities, t outside the
+    !!            step, a bad k or shape).
+    subroutine lsoda_sens_dense(s, t, k, ds, stat)
+        class(lsoda_t), intent(in) :: s
+        real(dp), intent(in) :: t
+        integer, intent(in) :: k
+        real(dp), intent(out) :: ds(:, :)
+        type(status_t), intent(out) :: stat
+        real(dp) :: v(s%nsn)
+        if (.not. s%ready .or. s%ns == 0 .or. size(ds, 1) /= s%n .or. size(ds, 2) /= s%ns) then
+            ds = 0.0_dp
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda sens_dense: no '// &
+                'sensitivities, or ds is not n x ns')
+            return
+        end if
+        call interpolate(s, t, k, v, stat, sens=.true.)
+        ds = reshape(v, [s%n, s%ns])
+    end subroutine lsoda_sens_dense
 
     ! ------------------------------------------------------------------------------------
     ! Driver level
@@ -592,6 +731,7 @@ contains
         end if
         s%h = h0
         s%yh(:, 2) = h0*s%yh(:, 2)
+        if (s%ns > 0) s%zh(:, 2) = h0*s%zh(:, 2)
         s%jstart = 0
         s%started = .true.
     end subroutine start_integration
@@ -685,6 +825,7 @@ contains
             end if
             s%rewt(i) = 1.0_dp/w
         end do
+        if (s%ns > 0) s%srewt = 1.0_dp/(s%rtol*abs(s%zh(:, 1)) + s%satol)
     end subroutine update_weights
 
     subroutine too_much_accuracy(s, stat)
@@ -905,6 +1046,17 @@ contains
             else
                 dsm = vmnorm(s%n, s%acor, s%rewt)/s%tesco(2, s%nq, s%meth)
             end if
+            ! the sensitivities at the converged point: after the error test, or before it
+            ! when they take part in it
+            if (s%ns > 0 .and. (s%sens_errcon .or. dsm <= 1.0_dp)) then
+                call sens_correct(s, sys, stat)
+                if (stat%code /= STATUS_OK) then
+                    call fail_fatal(s, stat)
+                    return
+                end if
+                if (s%sens_errcon) dsm = max(dsm, vmnorm(s%nsn, s%sacor, s%srewt)/ &
+                                                  s%tesco(2, s%nq, s%meth))
+            end if
 
             if (dsm <= 1.0_dp) then
                 ! ---- successful step
@@ -914,6 +1066,7 @@ contains
                 s%nqu = s%nq
                 s%mused = s%meth
                 call add_correction(s%yh, s%el, s%acor, s%n, s%l)
+                if (s%ns > 0) call add_correction(s%zh, s%el, s%sacor, s%nsn, s%l)
                 switched = .false.
                 s%icount = s%icount - 1
                 if (s%icount < 0) then
@@ -1007,6 +1160,7 @@ contains
                 end if
                 if (s%ialth == 1 .and. s%l /= s%lmax) then
                     s%yh(:, s%lmax) = s%acor          ! kept for the order-increase test
+                    if (s%ns > 0) s%zh(:, s%lmax) = s%sacor
                 end if
                 exit attempt
             end if
@@ -1038,6 +1192,15 @@ contains
                     exit attempt
                 end if
                 s%yh(:, 2) = s%h*s%savf
+                if (s%ns > 0) then
+                    call sens_slope(s, sys, s%tn, s%y, stat)
+                    if (stat%code /= STATUS_OK) then
+                        call prefix_time(stat, s%tn)
+                        s%kflag = KF_FATAL
+                        exit attempt
+                    end if
+                    s%zh(:, 2) = s%h*s%zh(:, 2)
+                end if
                 s%ipup = s%meth == METHOD_BDF
                 s%ialth = 5
                 if (s%nq /= 1) then
@@ -1100,12 +1263,16 @@ contains
                 s%savf(i) = s%acor(i) - s%yh(i, lmx)
             end do
             dup = vmnorm(s%n, s%savf, s%rewt)/s%tesco(3, s%nq, s%meth)
+            if (s%ns > 0 .and. s%sens_errcon) dup = max(dup, vmnorm(s%nsn, s%sacor - &
+                s%zh(:, lmx), s%srewt)/s%tesco(3, s%nq, s%meth))
             rhup = 1.0_dp/(1.4_dp*dup**(1.0_dp/(s%l + 1)) + 1.4e-6_dp)
         end if
         rhsm = 1.0_dp/(1.2_dp*dsm**(1.0_dp/s%l) + 1.2e-6_dp)
         rhdn = 0.0_dp
         if (s%nq /= 1) then
             ddn = vmnorm(s%n, s%yh(:, s%l), s%rewt)/s%tesco(1, s%nq, s%meth)
+            if (s%ns > 0 .and. s%sens_errcon) ddn = max(ddn, vmnorm(s%nsn, s%zh(:, s%l), &
+                s%srewt)/s%tesco(1, s%nq, s%meth))
             rhdn = 1.0_dp/(1.3_dp*ddn**(1.0_dp/s%nq) + 1.3e-6_dp)
         end if
         pdh = 0.0_dp
@@ -1138,6 +1305,7 @@ contains
             do i = 1, s%n
                 s%yh(i, newq + 1) = s%acor(i)*(s%el(s%l)/s%l)
             end do
+            if (s%ns > 0) s%zh(:, newq + 1) = s%sacor*(s%el(s%l)/s%l)
             return
         else
             newq = s%nq - 1
@@ -1190,6 +1358,7 @@ contains
             do i = 1, s%n
                 s%yh(i, j) = s%yh(i, j)*r
             end do
+            if (s%ns > 0) s%zh(:, j) = s%zh(:, j)*r
         end do
         s%h = s%h*rh
         s%rc = s%rc*rh
@@ -1200,6 +1369,7 @@ contains
     subroutine predict(s)
         type(lsoda_t), intent(inout) :: s
         call pascal(s%yh, s%n, s%nq)
+        if (s%ns > 0) call pascal(s%zh, s%nsn, s%nq)
     end subroutine predict
 
     !> The Pascal triangle on the first nq + 1 columns of yh (rows 1:n), column by column.
@@ -1240,7 +1410,20 @@ contains
                 end do
             end do
         end do
+        if (s%ns > 0) call unpascal(s%zh, s%nsn, s%nq)
     end subroutine unpredict
+
+    !> The inverse of pascal.
+    pure subroutine unpascal(yh, n, nq)
+        real(dp), intent(inout) :: yh(:, :)     !! Nordsieck array
+        integer, intent(in) :: n, nq            !! rows used, order
+        integer :: j, k
+        do k = nq, 1, -1
+            do j = k, nq
+                yh(1:n, j) = yh(1:n, j) - yh(1:n, j + 1)
+            end do
+        end do
+    end subroutine unpascal
 
     !> P = I - h*l0*J (J analytic or by finite differences), its LU factors, and the
     !! weighted norm of J used by the stiff -> non-stiff test.  On entry y = predicted
@@ -1315,16 +1498,206 @@ contains
         singular = lst%code /= STATUS_OK
     end subroutine build_iteration_matrix
 
-    !> k-th derivative at t of the polynomial held in the Nordsieck array.
-    subroutine interpolate(s, t, k, dky, stat)
+    !> zh(:, 2) = the sensitivities' slope J zh(:, 1) + df/dp at (t, y) (unscaled).
+    subroutine sens_slope(s, sys, t, y, stat)
+        type(lsoda_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        real(dp), intent(in) :: t, y(:)
+        type(status_t), intent(out) :: stat
+        real(dp) :: v(s%n, s%ns), jv(s%n, s%ns)
+        call sys%sens_point(t, y, s%sdfdp, stat)
+        s%nsp = s%nsp + 1
+        if (stat%code /= STATUS_OK) return
+        v = reshape(s%zh(:, 1), [s%n, s%ns])
+        call sys%sens_jv(v, jv, stat)
+        if (stat%code /= STATUS_OK) return
+        s%zh(:, 2) = reshape(jv + s%sdfdp, [s%nsn])
+    end subroutine sens_slope
+
+    !> The sensitivities' corrector at the step's converged point (tn, y): sacor with
+    !!     (I - h l0 J) sacor = h (J zh1 + df/dp) - zh2
+    !! (zh predicted; J and df/dp exact at (tn, y)).  Out of the error control the system is
+    !! solved once with the step's iteration matrix: a BDF step's Newton matrix, or for an
+    !! Adams step the sensitivities' own I - h l0 J, kept by the Newton matrix's rules (a new
+    !! one every MSBP steps or when h l0 changed by more than CCMAX); the right-hand side is
+    !! exact, and the matrix's age changes sacor by h l0 (J - J_old) sacor, a fraction of the
+    !! step's own local error.  In the error control (sens_errcon) the system is solved to a
+    !! tenth of the state's convergence test, a BDF step by its chord iteration, an Adams
+    !! step by its functional iteration, a slow one ending in a direct solve.
+    subroutine sens_correct(s, sys, stat)
+        type(lsoda_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        type(status_t), intent(inout) :: stat
+        real(dp) :: b(s%n, s%ns), a(s%n, s%ns), d(s%n, s%ns), jv(s%n, s%ns), hl0, del, delp, tol
+        integer :: m, k
+        logical :: conv
+        hl0 = s%h*s%el(1)
+        call sys%sens_point(s%tn, s%y, s%sdfdp, stat)
+        s%nsp = s%nsp + 1
+        if (stat%code /= STATUS_OK) return
+        if (.not. s%sens_errcon .and. s%meth == METHOD_ADAMS) then
+            ! the sensitivities' own matrix, first: its J makes the products below cheap
+            if (.not. s%shave .or. s%nst >= s%snslp + MSBP .or. &
+                abs(hl0 - s%shl0) > CCMAX*abs(s%shl0)) then
+                call sens_matrix(s, sys, hl0, stat)
+                if (stat%code /= STATUS_OK) return
+            end if
+        end if
+        call copy_columns(s%zh(:, 1), a)
+        call sys%sens_jv(a, jv, stat)
+        if (stat%code /= STATUS_OK) return
+        call copy_columns(s%zh(:, 2), d)
+        b = s%h*(jv + s%sdfdp) - d
+        if (.not. s%sens_errcon) then
+            a = b
+            do k = 1, s%ns
+                if (s%meth == METHOD_ADAMS) then
+                    call la_small_lu_solve(s%sjm, s%spiv, a(:, k))
+                else if (s%structured) then
+                    call sys%solve_iteration(a(:, k), stat)
+                    if (stat%code /= STATUS_OK) return
+                else
+                    call la_small_lu_solve(s%wm, s%ipiv, a(:, k))
+                end if
+            end do
+            s%nsit = s%nsit + 1
+            call store_columns(a, s%sacor)
+            return
+        end if
+        tol = SENS_CONV*s%tesco(2, s%nq, s%meth)*s%conit
+        conv = .false.
+        delp = 0.0_dp
+        if (s%meth == METHOD_ADAMS) then
+            ! the functional iteration a <- b + h l0 J a, from a = b
+            a = b
+            do m = 1, SENS_MAXIT
+                call sys%sens_jv(a, jv, stat)
+                if (stat%code /= STATUS_OK) return
+                s%nsit = s%nsit + 1
+                d = b + hl0*jv - a
+                a = a + d
+                del = snorm(d)
+                if (del <= tol) then
+                    conv = .true.
+                    exit
+                end if
+                if (m > 1 .and. del > 0.5_dp*delp) exit
+                delp = del
+            end do
+        else
+            ! the chord iteration with the step's Newton matrix P: a <- a + P^-1 (b + h l0 J a - a)
+            a = 0.0_dp
+            d = b
+            do m = 1, SENS_MAXIT
+                do k = 1, s%ns
+                    if (s%structured) then
+                        call sys%solve_iteration(d(:, k), stat)
+                        if (stat%code /= STATUS_OK) return
+                    else
+                        call la_small_lu_solve(s%wm, s%ipiv, d(:, k))
+                    end if
+                end do
+                s%nsit = s%nsit + 1
+                a = a + d
+                del = snorm(d)
+                if (del <= tol) then
+                    conv = .true.
+                    exit
+                end if
+                if (m > 1 .and. del > 0.5_dp*delp) exit
+                delp = del
+                call sys%sens_jv(a, jv, stat)
+                if (stat%code /= STATUS_OK) return
+                d = b + hl0*jv - a
+            end do
+        end if
+        if (.not. conv) then
+            ! a direct solve with I - h l0 J factored here
+            call sens_matrix(s, sys, hl0, stat)
+            if (stat%code /= STATUS_OK) return
+            a = b
+            do k = 1, s%ns
+                call la_small_lu_solve(s%sjm, s%spiv, a(:, k))
+            end do
+        end if
+        call store_columns(a, s%sacor)
+    contains
+        !> The weighted max-norm of a change of the sensitivities.
+        real(dp) function snorm(v)
+            real(dp), intent(in) :: v(:, :)
+            integer :: kk, ii
+            snorm = 0.0_dp
+            do kk = 1, size(v, 2)
+                do ii = 1, size(v, 1)
+                    snorm = max(snorm, abs(v(ii, kk))*s%srewt(ii + (kk - 1)*s%n))
+                end do
+            end do
+        end function snorm
+    end subroutine sens_correct
+
+    !> The sensitivities' own iteration matrix I - hl0 J at the point of the last
+    !! sens_point, factored (sjm, spiv), with its h l0 and step (shl0, snslp).
+    subroutine sens_matrix(s, sys, hl0, stat)
+        type(lsoda_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        real(dp), intent(in) :: hl0
+        type(status_t), intent(inout) :: stat
+        real(dp) :: eye(s%n, s%n)
+        integer :: i
+        type(status_t) :: lst
+        eye = 0.0_dp
+        do i = 1, s%n
+            eye(i, i) = 1.0_dp
+        end do
+        call sys%sens_jv(eye, s%sjm, stat)
+        if (stat%code /= STATUS_OK) return
+        s%sjm = eye - hl0*s%sjm
+        s%nsdir = s%nsdir + 1
+        s%shl0 = hl0
+        s%snslp = s%nst
+        s%shave = .true.
+        call la_lu_factor(s%sjm, s%spiv, lst)
+        if (lst%code /= STATUS_OK) then
+            call set_error(stat, LSODA_ERR_SINGULAR, 'lsoda: the sensitivities'' iteration '// &
+                'matrix I - h l0 J is singular')
+        end if
+    end subroutine sens_matrix
+
+    !> The columns of a (n x ns) from a vector of n ns, and back.
+    pure subroutine copy_columns(v, a)
+        real(dp), intent(in) :: v(:)
+        real(dp), intent(out) :: a(:, :)
+        integer :: k, n
+        n = size(a, 1)
+        do k = 1, size(a, 2)
+            a(:, k) = v((k - 1)*n + 1:k*n)
+        end do
+    end subroutine copy_columns
+
+    pure subroutine store_columns(a, v)
+        real(dp), intent(in) :: a(:, :)
+        real(dp), intent(inout) :: v(:)
+        integer :: k, n
+        n = size(a, 1)
+        do k = 1, size(a, 2)
+            v((k - 1)*n + 1:k*n) = a(:, k)
+        end do
+    end subroutine store_columns
+
+    !> k-th derivative at t of the polynomial held in the Nordsieck array (of the
+    !! sensitivities when `sens`: dky of size n ns).
+    subroutine interpolate(s, t, k, dky, stat, sens)
         type(lsoda_t), intent(in) :: s
         real(dp), intent(in) :: t
         integer, intent(in) :: k
         real(dp), intent(out) :: dky(:)
         type(status_t), intent(out) :: stat
-        real(dp) :: tp, tol, sc, c
-        integer :: j, jj, ic
+        logical, intent(in), optional :: sens
+        real(dp) :: tp, tol, sc
         character(len=200) :: buf
+        logical :: z
+        z = .false.
+        if (present(sens)) z = sens
 
         if (k < 0 .or. k > s%nq) then
             dky = 0.0_dp
@@ -1336,42 +1709,63 @@ contains
         tol = 100.0_dp*UROUND*(abs(s%tn) + abs(s%hu))
         tp = s%tn - s%hu
         if (min(tp, s%tn) - tol > t .or. t > max(tp, s%tn) + tol) then
-            dky = s%yh(:, 1)
+            if (z) then
+                dky = s%zh(:, 1)
+            else
+                dky = s%yh(:, 1)
+            end if
             write (buf, '(a,es15.7e3,a,es15.7e3,a,es15.7e3,a)') 'lsoda dense: t = ', t, &
                 ' is outside the last step [', min(tp, s%tn), ', ', max(tp, s%tn), ']'
             call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
             return
         end if
-        if (s%h == 0.0_dp) then
-            dky = s%yh(:, 1)
+        sc = 0.0_dp
+        if (s%h /= 0.0_dp) sc = (t - s%tn)/s%h
+        if (z) then
+            call horner(s%zh, s%nq, s%h, sc, k, dky)
+        else
+            call horner(s%yh, s%nq, s%h, sc, k, dky)
+        end if
+    end subroutine interpolate
+
+    !> The k-th derivative of the polynomial of a Nordsieck array yh (order nq, step h) at
+    !! the point sc h from the step's end.
+    pure subroutine horner(yh, nq, h, sc, k, dky)
+        real(dp), intent(in) :: yh(:, :)        !! Nordsieck array
+        integer, intent(in) :: nq, k            !! order, derivative
+        real(dp), intent(in) :: h, sc           !! step, (t - tn)/h
+        real(dp), intent(out) :: dky(:)
+        real(dp) :: c
+        integer :: j, jj, ic
+        if (h == 0.0_dp) then
+            dky = yh(:, 1)
             if (k > 0) dky = 0.0_dp
             return
         end if
-        sc = (t - s%tn)/s%h
         if (sc == 0.0_dp .and. k <= 1) then
             ! at the end of the step the Horner scheme below reduces to one column (the same
             ! numbers, without the sums of zero terms): y = yh(:,1), y' = yh(:,2)/h
-            dky = s%yh(:, k + 1)
-            if (k > 0) dky = dky*s%h**(-k)
+            dky = yh(:, k + 1)
+            if (k > 0) dky = dky*h**(-k)
             return
         end if
         ! Horner scheme on the Nordsieck columns, differentiated k times
         ic = 1
-        do jj = s%nq + 1 - k, s%nq
+        do jj = nq + 1 - k, nq
             ic = ic*jj
         end do
         c = real(ic, dp)
-        dky = c*s%yh(:, s%nq + 1)
-        do j = s%nq - 1, k, -1
+        dky = c*yh(:, nq + 1)
+        do j = nq - 1, k, -1
             ic = 1
             do jj = j + 1 - k, j
                 ic = ic*jj
             end do
             c = real(ic, dp)
-            dky = c*s%yh(:, j + 1) + sc*dky
+            dky = c*yh(:, j + 1) + sc*dky
         end do
-        if (k > 0) dky = dky*s%h**(-k)
-    end subroutine interpolate
+        if (k > 0) dky = dky*h**(-k)
+    end subroutine horner
 
     ! ------------------------------------------------------------------------------------
     ! Helpers

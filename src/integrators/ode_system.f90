@@ -27,16 +27,34 @@
 !!   last step;
 !! - stats(): the counters (integrator_stats_t);
 !! - set_tcrit([tcrit], [stat]): set or remove the stop time;
-!! - name(): 'lsoda' or 'radau'.
+!! - name(): 'lsoda' or 'radau';
+!! - sens_init(sys, s0, stat [, scale, error_control]): forward sensitivities from s0 (n x ns)
+!!   along with the state (below); sens_dense(t, k, ds, stat): them (k = 0) or their
+!!   derivative (k = 1) at t inside the last step.
 !! Failures come back in status_t with the integrator's codes of status's STATUS_TABLE.
+!!
+!! Forward sensitivities.  After init and before the first step, sens_init starts ns
+!! sensitivities s_k = dy/dp_k with s_k(t0) = s0(:, k); they follow
+!!     s_k' = J(t, y) s_k + df/dp_k(t, y)
+!! by the staggered direct method (Caracotsios & Stewart 1985; Maly & Petzold 1996): once a
+!! step's state has converged, the same formula is solved for the sensitivities at the new
+!! point, reusing the step's iteration (LSODA: the Newton matrix of a BDF step, the
+!! functional iteration of an Adams step; Radau IIA: the step's factored matrices).  The
+!! state's steps are not changed by them: the sensitivities take no part in the error
+!! control unless sens_init asks for it (error_control = .true.).  The system gives the
+!! terms through sens_point (df/dp at a point; default 0, sensitivities of the initial
+!! conditions only) and sens_jv (products J v at that point; default from the analytic
+!! Jacobian, else forward differences of the right-hand side).
 module ode_system
     use kinds, only: dp
-    use status, only: status_t, LSODA_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_TOO_MUCH_ACCURACY, &
+    use status, only: status_t, set_error, ERR_NUMERIC, LSODA_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_TOO_MUCH_ACCURACY, &
         RADAU_ERR_STEP_TOO_SMALL
     implicit none
     private
 
     type, abstract, public :: ode_system_t
+        !> the Jacobian of the default sens_point (sens_jv multiplies with it)
+        real(dp), allocatable, private :: sens_jac(:, :)
     contains
         procedure(rhs_i), deferred :: rhs
         procedure :: jacobian => no_jacobian
@@ -44,6 +62,8 @@ module ode_system
         procedure :: has_iteration_solver => no_iteration_solver_given
         procedure :: factor_iteration => no_factor_iteration
         procedure :: solve_iteration => no_solve_iteration
+        procedure :: sens_point => default_sens_point
+        procedure :: sens_jv => default_sens_jv
     end type ode_system_t
 
     abstract interface
@@ -75,6 +95,10 @@ module ode_system
         integer :: error_test_failures = 0  !! step attempts rejected by the local error test
         integer :: newton_iterations = 0    !! Radau: simplified Newton iterations
         integer :: method_switches = 0  !! LSODA: switches Adams <-> BDF
+        integer :: sens_points = 0      !! points where the sensitivity terms were taken
+                                        !! (sens_point: one per step, Radau three)
+        integer :: sens_iterations = 0  !! iterations of the sensitivities' corrector
+        integer :: sens_direct = 0      !! sensitivity solves with a new factorisation
         integer :: method_last = 0      !! METHOD_ADAMS, METHOD_BDF or METHOD_RADAU, last step
         integer :: order_last = 0       !! order used on the last step
         integer :: method_next = 0      !! method to be tried on the next step
@@ -94,6 +118,8 @@ module ode_system
         procedure(stats_i), deferred :: stats
         procedure(set_tcrit_i), deferred :: set_tcrit
         procedure(name_i), deferred :: name
+        procedure(sens_init_i), deferred :: sens_init
+        procedure(sens_dense_i), deferred :: sens_dense
     end type integrator_t
 
     abstract interface
@@ -159,7 +185,30 @@ module ode_system
         end function name_i
     end interface
 
-    public :: too_much_accuracy
+    abstract interface
+        !> Start forward sensitivities (after init, before the first step).
+        subroutine sens_init_i(s, sys, s0, stat, scale, error_control)
+            import :: integrator_t, ode_system_t, dp, status_t
+            class(integrator_t), intent(inout) :: s
+            class(ode_system_t), intent(inout) :: sys
+            real(dp), intent(in) :: s0(:, :)            !! (n, ns) dy(t0)/dp_k
+            type(status_t), intent(out) :: stat
+            real(dp), intent(in), optional :: scale(:)  !! (ns) the size of column k
+                                                        !! against the state's (atol x scale)
+            logical, intent(in), optional :: error_control  !! in the error test (default no)
+        end subroutine sens_init_i
+        !> The sensitivities (k = 0) or their derivative (k = 1) at t in the last step.
+        subroutine sens_dense_i(s, t, k, ds, stat)
+            import :: integrator_t, dp, status_t
+            class(integrator_t), intent(in) :: s
+            real(dp), intent(in) :: t
+            integer, intent(in) :: k
+            real(dp), intent(out) :: ds(:, :)           !! (n, ns)
+            type(status_t), intent(out) :: stat
+        end subroutine sens_dense_i
+    end interface
+
+    public :: too_much_accuracy, default_sens_point
 
 contains
 
@@ -218,6 +267,58 @@ contains
         if (.false.) x(1) = 0.0_dp                         ! keep arguments referenced
         if (.false.) stat%code = merge(1, 0, same_type_as(sys, sys))
     end subroutine no_solve_iteration
+
+    !> Default sensitivity terms at (t, y): df/dp = 0 (the sensitivities of the initial
+    !! conditions: the variational equations), and J(t, y) for sens_jv: the analytic Jacobian
+    !! when the system has one, else forward differences of the right-hand side (increments
+    !! sqrt(eps) max(|y_j|, 1e-5)).  Public, so that a system's own sens_point can take its
+    !! Jacobian from here and add its df/dp.
+    subroutine default_sens_point(sys, t, y, dfdp, stat)
+        class(ode_system_t), intent(inout) :: sys
+        real(dp), intent(in) :: t                !! independent variable
+        real(dp), intent(in) :: y(:)             !! state
+        real(dp), intent(out) :: dfdp(:, :)      !! (n, ns) df/dp_k at (t, y)
+        type(status_t), intent(out) :: stat
+        real(dp) :: f0(size(y)), f1(size(y)), yj(size(y)), del
+        integer :: n, j
+        n = size(y)
+        dfdp = 0.0_dp
+        if (allocated(sys%sens_jac)) then
+            if (size(sys%sens_jac, 1) /= n) deallocate (sys%sens_jac)
+        end if
+        if (.not. allocated(sys%sens_jac)) allocate (sys%sens_jac(n, n))
+        if (sys%has_jacobian()) then
+            call sys%jacobian(t, y, sys%sens_jac, stat)
+            return
+        end if
+        call sys%rhs(t, y, f0, stat)
+        if (stat%code /= 0) return
+        yj = y
+        do j = 1, n
+            del = sqrt(epsilon(1.0_dp))*max(abs(y(j)), 1.0e-5_dp)
+            yj(j) = y(j) + del
+            del = yj(j) - y(j)
+            call sys%rhs(t, yj, f1, stat)
+            if (stat%code /= 0) return
+            sys%sens_jac(:, j) = (f1 - f0)/del
+            yj(j) = y(j)
+        end do
+    end subroutine default_sens_point
+
+    !> Default products jv = J v with the Jacobian of the last sens_point.
+    subroutine default_sens_jv(sys, v, jv, stat)
+        class(ode_system_t), intent(inout) :: sys
+        real(dp), intent(in) :: v(:, :)          !! (n, m)
+        real(dp), intent(out) :: jv(:, :)        !! (n, m)
+        type(status_t), intent(out) :: stat
+        stat%code = 0
+        if (.not. allocated(sys%sens_jac)) then
+            jv = 0.0_dp
+            call set_error(stat, ERR_NUMERIC, 'sensitivities: sens_jv before sens_point')
+            return
+        end if
+        jv = matmul(sys%sens_jac, v)
+    end subroutine default_sens_jv
 
     !> True when stat is an integrator's refusal of a tolerance below what the machine
     !! precision allows (LSODA), or a step size that fell below the roundoff of t (Radau).

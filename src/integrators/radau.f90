@@ -42,6 +42,16 @@
 !! * Output: the collocation polynomial of the last step (degree 3 through y0 and the three
 !!   stage values) gives the solution anywhere in it (dense, order 3 uniformly, 5 at the
 !!   step ends).
+!! * Forward sensitivities (sens_init, sens_dense), by the staggered direct method
+!!   (Caracotsios & Stewart 1985; Maly & Petzold 1996): once a step's stage values are
+!!   found (and, by default, the step accepted), the collocation equations are solved for the
+!!   sensitivities' stage increments, Zs = h (A x I) Fs, Fs_i = J_i (s0 + Zs_i) + df/dp_i,
+!!   with the exact J_i and df/dp_i at the three stage values, by the step's own simplified
+!!   Newton iteration (its factored real and complex matrices; residuals exact), and, should
+!!   it contract too slowly, by a direct solve of the 3n x 3n system.  The sensitivities at
+!!   the step's end are s0 + Zs_3 (the method is stiffly accurate), and their collocation
+!!   polynomial their dense output.  They take part in the error estimate only when asked
+!!   (error_control), through the same embedded formula.
 !!
 !! All state lives in a `radau_t` object, so independent integrations can be interleaved.
 !! No routine stops the program: every failure is returned in a status_t with one of the
@@ -70,6 +80,8 @@ module radau
     real(dp), parameter :: H_KEEP_LO = 1.0_dp, H_KEEP_HI = 1.2_dp  !! keep h and the factors
     integer, parameter :: MAX_FAILS = 50          !! consecutive failed attempts of one step
     integer, parameter :: DEFAULT_MAX_STEPS = 500000
+    integer, parameter :: SENS_MAXIT = 10          !! sensitivity iterations before a direct solve
+    real(dp), parameter :: SENS_CONV = 0.1_dp      !! their test: this part of the state's
     !> The local error estimate is held to TOL_FACTOR rtol (at most TOL_MAX): see the header.
     real(dp), parameter :: TOL_FACTOR = 10.0_dp, TOL_MAX = 1.0e-2_dp
 
@@ -125,6 +137,12 @@ module radau
         integer :: max_steps = DEFAULT_MAX_STEPS
         ! counters
         integer :: nst = 0, nfe = 0, nje = 0, nlu = 0, nit = 0, nncf = 0, nrej = 0
+        ! forward sensitivities (sens_init): at t, at the last step's start, its stage
+        ! increments, their slope at t (for the error estimate), absolute tolerances
+        integer :: ns = 0
+        logical :: sens_errcon = .false.
+        real(dp), allocatable :: sy(:, :), sy_old(:, :), zs_old(:, :, :), sf0(:, :), satol(:, :)
+        integer :: nsp = 0, nsit = 0, nsdir = 0
         real(dp) :: hu = 0.0_dp
     contains
         procedure :: init => radau_init
@@ -134,6 +152,8 @@ module radau
         procedure :: stats => radau_get_stats
         procedure :: set_tcrit => radau_set_tcrit
         procedure :: name => radau_name
+        procedure :: sens_init => radau_sens_init
+        procedure :: sens_dense => radau_sens_dense
     end type radau_t
 
     public :: radau_coefficients
@@ -388,6 +408,10 @@ contains
         s%nit = 0
         s%nncf = 0
         s%nrej = 0
+        s%ns = 0
+        s%nsp = 0
+        s%nsit = 0
+        s%nsdir = 0
         call sys%rhs(t0, s%y, s%f0, stat)
         s%nfe = 1
         if (stat%code /= STATUS_OK) then
@@ -564,6 +588,9 @@ contains
         st%h_last = s%hu
         st%h_next = s%h
         st%t_current = s%t
+        st%sens_points = s%nsp
+        st%sens_iterations = s%nsit
+        st%sens_direct = s%nsdir
     end function radau_get_stats
 
     !> The integrator's name in output files.
@@ -597,6 +624,116 @@ contains
         s%tcrit = tcrit
         s%have_tcrit = .true.
     end subroutine radau_set_tcrit
+
+    !> Start forward sensitivities (see the module header): after init, before the first
+    !! step.
+    !!
+    !! s0    [in]  (n, ns) the sensitivities at t0, ns >= 1.
+    !! stat  [out] STATUS_OK; RADAU_ERR_ILLEGAL_INPUT (no init, the integration has started,
+    !!             a bad shape or scale); or the system's code from its terms.
+    !! scale [in, optional] (ns) the size of sensitivity k against the state's: its absolute
+    !!             tolerance is atol scale(k) (default 1), > 0.
+    !! error_control [in, optional] .true.: the sensitivities take part in the error
+    !!             estimate (default .false.: the state's steps alone).
+    subroutine radau_sens_init(s, sys, s0, stat, scale, error_control)
+        class(radau_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        real(dp), intent(in) :: s0(:, :)
+        type(status_t), intent(out) :: stat
+        real(dp), intent(in), optional :: scale(:)
+        logical, intent(in), optional :: error_control
+        real(dp) :: sc(size(s0, 2)), w
+        integer :: n, ns, k, i
+        stat%code = STATUS_OK
+        s%ns = 0
+        n = s%n
+        ns = size(s0, 2)
+        if (.not. s%ready .or. s%started) then
+            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, 'radau sens_init: after init and '// &
+                'before the first step only')
+            return
+        end if
+        if (size(s0, 1) /= n .or. ns < 1) then
+            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, 'radau sens_init: s0 must be n x ns, '// &
+                'ns >= 1')
+            return
+        end if
+        sc = 1.0_dp
+        if (present(scale)) then
+            if (size(scale) /= ns .or. .not. all(scale > 0.0_dp)) then
+                call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, 'radau sens_init: scale must '// &
+                    'have ns entries, each > 0')
+                return
+            end if
+            sc = scale
+        end if
+        s%sens_errcon = .false.
+        if (present(error_control)) s%sens_errcon = error_control
+        if (allocated(s%sy)) deallocate (s%sy, s%sy_old, s%zs_old, s%sf0, s%satol)
+        allocate (s%sy(n, ns), s%sy_old(n, ns), s%zs_old(n, ns, 3), s%sf0(n, ns), &
+                  s%satol(n, ns))
+        s%sy = s0
+        s%sy_old = s0
+        s%zs_old = 0.0_dp
+        s%sf0 = 0.0_dp
+        do k = 1, ns
+            do i = 1, n
+                ! the transformed atol; 0 would make a weight infinite where s = 0
+                w = s%atol(i)
+                if (.not. (w > 0.0_dp)) w = s%rtol
+                s%satol(i, k) = w*sc(k)
+            end do
+        end do
+        s%ns = ns
+        if (s%sens_errcon) then
+            block
+                real(dp) :: jm(n, n), pk(n, ns)
+                call stage_terms(s, sys, s%t, s%y, jm, pk, stat)
+                if (stat%code /= STATUS_OK) then
+                    s%ns = 0
+                    return
+                end if
+                s%sf0 = matmul(jm, s%sy) + pk
+            end block
+        end if
+    end subroutine radau_sens_init
+
+    !> The sensitivities (k = 0) or their derivative (k = 1) at t within the last step.
+    !!
+    !! ds   [out] (n, ns).
+    !! stat [out] STATUS_OK or RADAU_ERR_ILLEGAL_INPUT (no sensitivities, t outside the step,
+    !!            a bad k or shape).
+    subroutine radau_sens_dense(s, t, k, ds, stat)
+        class(radau_t), intent(in) :: s
+        real(dp), intent(in) :: t
+        integer, intent(in) :: k
+        real(dp), intent(out) :: ds(:, :)
+        type(status_t), intent(out) :: stat
+        real(dp) :: x, l(3)
+        integer :: j
+        ds = 0.0_dp
+        if (.not. s%ready .or. s%ns == 0 .or. size(ds, 1) /= s%n .or. size(ds, 2) /= s%ns) then
+            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, 'radau sens_dense: no '// &
+                'sensitivities, or ds is not n x ns')
+            return
+        end if
+        call dense_position(s, t, k, x, stat)
+        if (stat%code /= STATUS_OK) return
+        if (.not. s%have_step) then
+            if (k == 0) ds = s%sy
+            if (k == 1) ds = s%sf0
+            return
+        end if
+        if (k == 0) then
+            l = lagrange(s%cf, x)
+            ds = s%sy_old
+        else
+            l = lagrange_d(s%cf, x)/s%h_old
+        end if
+        do j = 1, 3
+            ds = ds + l(j)*s%zs_old(:, :, j)
+        end do
+    end subroutine radau_sens_dense
 
     ! ------------------------------------------------------------------------------------
     ! The step
@@ -659,7 +796,7 @@ contains
         class(ode_system_t), intent(inout) :: sys
         type(status_t), intent(out) :: stat
         real(dp) :: z(s%n, 3), sc(s%n), err, fac, quot, hnew, facgus, hh, ynew(s%n)
-        real(dp) :: f1(s%n)
+        real(dp) :: f1(s%n), zs(s%n, s%ns, 3), j3(s%n, s%n), p3(s%n, s%ns)
         integer :: newt, nfail
         logical :: conv
         character(len=160) :: buf
@@ -721,12 +858,21 @@ contains
             sc = s%atol + s%rtol*max(abs(s%y), abs(ynew))
             call estimate(s, sys, z, sc, err, stat)
             if (stat%code /= STATUS_OK) return
+            if (s%ns > 0 .and. s%sens_errcon) then
+                call sens_stages(s, sys, z, zs, j3, p3, stat)
+                if (stat%code /= STATUS_OK) return
+                err = max(err, sens_error(s, zs))
+            end if
             ! ---- new step size
             fac = min(SAFETY, SAFETY*real(2*NEWTON_MAX + 1, dp)/real(newt + 2*NEWTON_MAX, dp))
             quot = max(FAC_DOWN, min(FAC_UP, err**0.25_dp/fac))
             hnew = s%h/quot
             if (err < 1.0_dp) then
                 ! accepted
+                if (s%ns > 0 .and. .not. s%sens_errcon) then
+                    call sens_stages(s, sys, z, zs, j3, p3, stat)
+                    if (stat%code /= STATUS_OK) return
+                end if
                 if (.not. s%first) then
                     facgus = (s%h_acc/s%h)*(err**2/s%err_acc)**0.25_dp/SAFETY
                     facgus = max(FAC_DOWN, min(FAC_UP, facgus))
@@ -739,6 +885,12 @@ contains
                 s%h_old = s%h
                 s%y_old = s%y
                 s%z_old = z
+                if (s%ns > 0) then
+                    s%sy_old = s%sy
+                    s%zs_old = zs
+                    s%sy = s%sy + zs(:, :, 3)
+                    if (s%sens_errcon) s%sf0 = matmul(j3, s%sy) + p3
+                end if
                 s%have_step = .true.
                 s%t = s%t + s%h
                 if (s%have_tcrit) then
@@ -824,6 +976,176 @@ contains
         end if
         s%jac_current = .true.
     end subroutine eval_jacobian
+
+    !> The sensitivity terms at (t, y): the Jacobian jm and df/dp pk (ode_system's
+    !! sens_point, sens_jv).
+    subroutine stage_terms(s, sys, t, y, jm, pk, stat)
+        type(radau_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        real(dp), intent(in) :: t, y(:)
+        real(dp), intent(out) :: jm(:, :), pk(:, :)
+        type(status_t), intent(out) :: stat
+        real(dp) :: eye(s%n, s%n)
+        integer :: i
+        jm = 0.0_dp
+        call sys%sens_point(t, y, pk, stat)
+        s%nsp = s%nsp + 1
+        if (stat%code == STATUS_OK) then
+            eye = 0.0_dp
+            do i = 1, s%n
+                eye(i, i) = 1.0_dp
+            end do
+            call sys%sens_jv(eye, jm, stat)
+        end if
+        if (stat%code /= STATUS_OK) call prefix_time(stat, t)
+    end subroutine stage_terms
+
+    !> The sensitivities' stage increments zs of the step from (t, y) whose state has the
+    !! stage increments z (see the module header): the step's simplified Newton iteration
+    !! with exact residuals, from the last step's polynomial extrapolated, to a tenth of the
+    !! state's Newton threshold; a direct solve of the 3n x 3n system when it contracts too
+    !! slowly.  j3, p3: the terms at the last stage (the step's end).
+    subroutine sens_stages(s, sys, z, zs, j3, p3, stat)
+        type(radau_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        real(dp), intent(in) :: z(:, :)
+        real(dp), intent(out) :: zs(:, :, :), j3(:, :), p3(:, :)
+        type(status_t), intent(out) :: stat
+        real(dp) :: jm(s%n, s%n, 3), pk(s%n, s%ns, 3), w(s%n, s%ns, 3), f(s%n, s%ns, 3)
+        real(dp) :: r(s%n, s%ns, 3), dw(s%n, s%ns, 3), scs(s%n, s%ns), fac1, alphn, betan
+        real(dp) :: del, delp, tol, sn, l(3)
+        complex(dp) :: cv(s%n)
+        integer :: i, j, k, m
+        logical :: conv
+        zs = 0.0_dp
+        do i = 1, 3
+            call stage_terms(s, sys, s%t + s%cf%c(i)*s%h, s%y + z(:, i), jm(:, :, i), &
+                             pk(:, :, i), stat)
+            if (stat%code /= STATUS_OK) return
+        end do
+        j3 = jm(:, :, 3)
+        p3 = pk(:, :, 3)
+        if (s%have_step) then
+            do i = 1, 3
+                sn = 1.0_dp + s%cf%c(i)*s%h/s%h_old
+                l = lagrange(s%cf, sn)
+                do j = 1, 3
+                    zs(:, :, i) = zs(:, :, i) + l(j)*s%zs_old(:, :, j)
+                end do
+                zs(:, :, i) = zs(:, :, i) - s%zs_old(:, :, 3)
+            end do
+        end if
+        fac1 = s%cf%gam/s%h
+        alphn = s%cf%alpha/s%h
+        betan = s%cf%beta/s%h
+        scs = s%satol + s%rtol*abs(s%sy)
+        tol = SENS_CONV*s%fnewt
+        call transform(s%cf%tinv, zs, w)
+        conv = .false.
+        delp = 0.0_dp
+        do m = 1, SENS_MAXIT
+            do i = 1, 3
+                f(:, :, i) = matmul(jm(:, :, i), s%sy + zs(:, :, i)) + pk(:, :, i)
+            end do
+            call transform(s%cf%tinv, f, r)
+            r(:, :, 1) = r(:, :, 1) - fac1*w(:, :, 1)
+            r(:, :, 2) = r(:, :, 2) - (alphn*w(:, :, 2) - betan*w(:, :, 3))
+            r(:, :, 3) = r(:, :, 3) - (betan*w(:, :, 2) + alphn*w(:, :, 3))
+            do k = 1, s%ns
+                dw(:, k, 1) = r(:, k, 1)
+                call la_lu_solve(s%e1, s%ip1, dw(:, k, 1), stat)
+                if (stat%code /= STATUS_OK) return
+                cv = cmplx(r(:, k, 2), r(:, k, 3), kind=dp)
+                call la_zlu_solve(s%e2, s%ip2, cv, stat)
+                if (stat%code /= STATUS_OK) return
+                dw(:, k, 2) = real(cv)
+                dw(:, k, 3) = aimag(cv)
+            end do
+            s%nsit = s%nsit + 1
+            w = w + dw
+            call transform(s%cf%t, w, zs)
+            del = sqrt((sum((dw(:, :, 1)/scs)**2) + sum((dw(:, :, 2)/scs)**2) + &
+                        sum((dw(:, :, 3)/scs)**2))/(3*size(scs)))
+            if (.not. ieee_is_finite(del)) exit
+            if (del <= tol) then
+                conv = .true.
+                exit
+            end if
+            if (m > 1 .and. del > 0.5_dp*delp) exit
+            delp = del
+        end do
+        if (.not. conv) call direct()
+    contains
+        !> y(:, :, i) = sum_j m(i, j) x(:, :, j)
+        pure subroutine transform(mt, x, y)
+            real(dp), intent(in) :: mt(3, 3), x(:, :, :)
+            real(dp), intent(out) :: y(:, :, :)
+            integer :: ii
+            do ii = 1, 3
+                y(:, :, ii) = mt(ii, 1)*x(:, :, 1) + mt(ii, 2)*x(:, :, 2) + mt(ii, 3)*x(:, :, 3)
+            end do
+        end subroutine transform
+        !> The collocation equations of the sensitivities as one 3n x 3n system:
+        !! zs_i - h sum_j a_ij J_j zs_j = h sum_j a_ij (J_j s0 + p_j).
+        subroutine direct()
+            real(dp) :: mm(3*s%n, 3*s%n), rhs(3*s%n, s%ns), g(s%n, s%ns, 3)
+            integer :: ipv(3*s%n), ii, jj, n
+            type(status_t) :: lst
+            n = s%n
+            s%nsdir = s%nsdir + 1
+            mm = 0.0_dp
+            do jj = 1, 3
+                g(:, :, jj) = matmul(jm(:, :, jj), s%sy) + pk(:, :, jj)
+            end do
+            do ii = 1, 3
+                rhs((ii - 1)*n + 1:ii*n, :) = s%h*(s%cf%a(ii, 1)*g(:, :, 1) + &
+                    s%cf%a(ii, 2)*g(:, :, 2) + s%cf%a(ii, 3)*g(:, :, 3))
+                do jj = 1, 3
+                    mm((ii - 1)*n + 1:ii*n, (jj - 1)*n + 1:jj*n) = -s%h*s%cf%a(ii, jj)*jm(:, :, jj)
+                end do
+            end do
+            do ii = 1, 3*n
+                mm(ii, ii) = mm(ii, ii) + 1.0_dp
+            end do
+            call la_lu_factor(mm, ipv, lst)
+            if (lst%code /= STATUS_OK) then
+                call set_error(stat, RADAU_ERR_SINGULAR, 'radau: the sensitivities'' '// &
+                    'collocation system is singular')
+                call prefix_time(stat, s%t)
+                return
+            end if
+            do k = 1, s%ns
+                call la_lu_solve(mm, ipv, rhs(:, k), stat)
+                if (stat%code /= STATUS_OK) return
+            end do
+            do ii = 1, 3
+                zs(:, :, ii) = rhs((ii - 1)*n + 1:ii*n, :)
+            end do
+        end subroutine direct
+    end subroutine sens_stages
+
+    !> The sensitivities' error estimate, by the state's embedded formula and filter
+    !! (estimate), in their own weights.
+    real(dp) function sens_error(s, zs) result(err)
+        type(radau_t), intent(in) :: s
+        real(dp), intent(in) :: zs(:, :, :)
+        real(dp) :: v(s%n), scs(s%n)
+        type(status_t) :: st
+        integer :: k
+        err = 1.0e-10_dp
+        do k = 1, s%ns
+            v = s%sf0(:, k) + (s%cf%e(1)*zs(:, k, 1) + s%cf%e(2)*zs(:, k, 2) + &
+                               s%cf%e(3)*zs(:, k, 3))/(s%h*s%cf%gam0)
+            call la_lu_solve(s%e1, s%ip1, v, st)
+            if (st%code /= STATUS_OK) then
+                err = huge(1.0_dp)
+                return
+            end if
+            scs = s%satol(:, k) + s%rtol*max(abs(s%sy(:, k)), abs(s%sy(:, k) + zs(:, k, 3)))
+            err = max(err, rms(v/scs))
+        end do
+        if (.not. ieee_is_finite(err)) err = huge(1.0_dp)
+    end function sens_error
 
     !> Factor gam/h I - J (real) and (alpha + i beta)/h I - J (complex) for the current h.
     subroutine factor(s, stat)
@@ -1018,25 +1340,46 @@ contains
         integer, intent(in) :: k
         real(dp), intent(out) :: dky(:)
         type(status_t), intent(out) :: stat
-        real(dp) :: x, tol, l(3)
+        real(dp) :: x, l(3)
         integer :: j
+        dky = 0.0_dp
+        call dense_position(s, t, k, x, stat)
+        if (stat%code /= STATUS_OK) return
+        if (.not. s%have_step) then
+            if (k == 0) dky = s%y
+            if (k == 1) dky = s%f0
+            return
+        end if
+        if (k == 0) then
+            l = lagrange(s%cf, x)
+            dky = s%y_old
+        else
+            l = lagrange_d(s%cf, x)/s%h_old
+        end if
+        do j = 1, 3
+            dky = dky + l(j)*s%z_old(:, j)
+        end do
+    end subroutine interpolate
+
+    !> Where t lies in the last step, x = (t - t_old)/h_old (0 before the first step, where
+    !! only t = t0 is allowed), and the checks of dense output (k = 0 or 1, t in the step).
+    subroutine dense_position(s, t, k, x, stat)
+        type(radau_t), intent(in) :: s
+        real(dp), intent(in) :: t
+        integer, intent(in) :: k
+        real(dp), intent(out) :: x
+        type(status_t), intent(out) :: stat
+        real(dp) :: tol
         character(len=160) :: buf
         stat%code = STATUS_OK
-        dky = 0.0_dp
+        x = 0.0_dp
         if (k < 0 .or. k > 1) then
             call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, 'radau dense: k must be 0 or 1')
             return
         end if
         tol = 100.0_dp*UROUND*max(abs(s%t), abs(s%t_old), 1.0e-300_dp)
         if (.not. s%have_step) then
-            if (abs(t - s%t) <= tol .and. k == 0) then
-                dky = s%y
-                return
-            end if
-            if (abs(t - s%t) <= tol .and. k == 1) then
-                dky = s%f0
-                return
-            end if
+            if (abs(t - s%t) <= tol) return
             write (buf, '(a,es12.5,a)') 'radau dense: t = ', t, ' before the first step'
             call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, trim(buf))
             return
@@ -1048,16 +1391,7 @@ contains
             return
         end if
         x = (t - s%t_old)/s%h_old
-        if (k == 0) then
-            l = lagrange(s%cf, x)
-            dky = s%y_old
-        else
-            l = lagrange_d(s%cf, x)/s%h_old
-        end if
-        do j = 1, 3
-            dky = dky + l(j)*s%z_old(:, j)
-        end do
-    end subroutine interpolate
+    end subroutine dense_position
 
     ! ------------------------------------------------------------------------------------
     ! Helpers

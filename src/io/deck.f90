@@ -79,6 +79,9 @@ module deck
         real(dp) :: tau_end = 60.0_dp, dtau_out = 0.05_dp, rtol = 1.0e-10_dp, atol = 1.0e-12_dp
         logical  :: error_estimate = .false.
         character(len=256) :: method = 'auto'      !! METHODS_ALLOWED: the integrator
+        !> SENSITIVITIES_ALLOWED: derivatives of whole runs by forward sensitivities or by
+        !! the paths of before (differences of runs; Floquet's augmented system)
+        character(len=256) :: sensitivities = 'forward'
         ! &cables (model = 'elastic' only)
         real(dp) :: cable_stiffness = 1.0e6_dp    !! EA/(m g) of each cable, 1 <= k <= 1e12
         real(dp) :: cable_damping = 0.05_dp       !! damping ratio zeta of each cable, 0..10
@@ -180,6 +183,10 @@ module deck
     !> Words allowed in &integration method: 'auto' (radau for model = 'elastic', lsoda for
     !! the paper's model), 'lsoda', 'radau'.
     character(len=*), parameter :: METHODS_ALLOWED = 'auto lsoda radau'
+    !> Words allowed in &integration sensitivities: 'forward' (sensitivities integrated with
+    !! the state), 'differences' (differences of whole runs, and Floquet's monodromy
+    !! integrated as one system with the orbit).
+    character(len=*), parameter :: SENSITIVITIES_ALLOWED = 'forward differences'
     !> Words allowed in &chart x and y.
     character(len=*), parameter :: CHART_VARIABLES = 'l b amplitude r lambda inertia_ratio'
     !> Variables of each group with their kind (r real, i integer, c character, l logical)
@@ -191,7 +198,7 @@ module deck
         'mass:r1 inertia:r3 r:r1 lambda:r1 cg_depth:r1 cg_offset:r1 btilde:r9 sway_depth:r1'
     character(len=*), parameter :: SPEC_START = 'mode:c1 amplitude:r1 tilt:r1 theta:r4 theta_dot:r4'
     character(len=*), parameter :: SPEC_INTEGRATION = &
-        'tau_end:r1 dtau_out:r1 rtol:r1 atol:r1 error_estimate:l1 method:c1'
+        'tau_end:r1 dtau_out:r1 rtol:r1 atol:r1 error_estimate:l1 method:c1 sensitivities:c1'
     character(len=*), parameter :: SPEC_CABLES = 'stiffness:r1 damping:r1'
     character(len=*), parameter :: SPEC_FLOQUET = 'amplitude:r1 segments:i1 rtol:r1'
     character(len=*), parameter :: SPEC_CHART = &
@@ -760,7 +767,7 @@ contains
         d%theta_dot = theta_dot
     end subroutine read_start
 
-    !> &integration tau_end, dtau_out, rtol, atol, error_estimate, method.
+    !> &integration tau_end, dtau_out, rtol, atol, error_estimate, method, sensitivities.
     subroutine read_integration(rec, d, ios, msg)
         character(len=*), intent(in) :: rec         !! the group as one record
         type(deck_t), intent(inout) :: d            !! defaults in, values read out
@@ -768,14 +775,16 @@ contains
         character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
         real(dp) :: tau_end, dtau_out, rtol, atol
         logical :: error_estimate
-        character(len=256) :: method
-        namelist /integration/ tau_end, dtau_out, rtol, atol, error_estimate, method
+        character(len=256) :: method, sensitivities
+        namelist /integration/ tau_end, dtau_out, rtol, atol, error_estimate, method, &
+            sensitivities
         tau_end = d%tau_end
         dtau_out = d%dtau_out
         rtol = d%rtol
         atol = d%atol
         error_estimate = d%error_estimate
         method = d%method
+        sensitivities = d%sensitivities
         read (rec, nml=integration, iostat=ios, iomsg=msg)
         d%tau_end = tau_end
         d%dtau_out = dtau_out
@@ -783,6 +792,7 @@ contains
         d%atol = atol
         d%error_estimate = error_estimate
         d%method = method
+        d%sensitivities = sensitivities
     end subroutine read_integration
 
     !> &cables stiffness, damping.
@@ -1127,7 +1137,8 @@ contains
         if (d%error_estimate) line = '.true.'
         call put('# &integration tau_end = '//rshort(d%tau_end)//', dtau_out = '// &
                  rshort(d%dtau_out)//', rtol = '//rshort(d%rtol)//', atol = '//rshort(d%atol)// &
-                 ', error_estimate = '//line//', method = '//quoted(d%method)//' /')
+                 ', error_estimate = '//line//', method = '//quoted(d%method)// &
+                 ', sensitivities = '//quoted(d%sensitivities)//' /')
         if (trim(d%model) == 'elastic') call put('# &cables stiffness = '// &
             rshort(d%cable_stiffness)//', damping = '//rshort(d%cable_damping)//' /')
         if (analysis_requested(d, 'floquet')) call put('# &floquet amplitude = '// &

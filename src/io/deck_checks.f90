@@ -283,6 +283,10 @@ contains
         call check_word(stat, 'integration', 'method', d%method, METHODS_ALLOWED)
         if (stat%code /= STATUS_OK) return
         d%method = lower(adjustl(d%method))
+        call check_word(stat, 'integration', 'sensitivities', d%sensitivities, &
+                        SENSITIVITIES_ALLOWED)
+        if (stat%code /= STATUS_OK) return
+        d%sensitivities = lower(adjustl(d%sensitivities))
         call positive(stat, 'integration', 'tau_end', d%tau_end, 'tau_end > 0')
         call positive(stat, 'integration', 'dtau_out', d%dtau_out, '0 < dtau_out <= tau_end')
         call finite(stat, 'integration', 'rtol', d%rtol)

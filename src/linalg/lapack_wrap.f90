@@ -22,7 +22,7 @@ module lapack_wrap
     private
 
     public :: la_solve, la_lu_factor, la_lu_solve, la_lu_solve_many, la_eig, la_geig
-    public :: la_small_chol, la_small_chol_solve
+    public :: la_small_chol, la_small_chol_solve, la_small_lu_solve
     public :: la_zlu_factor, la_zlu_solve
     public :: la_lstsq, la_svd
 
@@ -253,6 +253,39 @@ contains
         call dgetrs('N', n, 1, lu, n, ipiv, b, n, info)
         if (info /= 0) call set_error(stat, ERR_NUMERIC, 'la_lu_solve (dgetrs): illegal argument')
     end subroutine la_lu_solve
+
+    !> Solve A x = b with the factors and pivots of la_lu_factor, written out (for small
+    !! systems, where LAPACK's call costs more than the arithmetic): the row interchanges,
+    !! then L (unit lower) and U by columns.
+    !!
+    !! lu   [in]     real(dp)(n,n): factors from la_lu_factor.
+    !! ipiv [in]     integer(n):    pivots from la_lu_factor.
+    !! b    [in,out] real(dp)(n):   right-hand side on entry, solution on return.
+    pure subroutine la_small_lu_solve(lu, ipiv, b)
+        real(dp), intent(in) :: lu(:, :)
+        integer, intent(in) :: ipiv(:)
+        real(dp), intent(inout) :: b(:)
+        real(dp) :: t
+        integer :: n, i, j
+        n = size(b)
+        do i = 1, n
+            j = ipiv(i)
+            if (j /= i) then
+                t = b(i)
+                b(i) = b(j)
+                b(j) = t
+            end if
+        end do
+        do j = 1, n - 1
+            t = b(j)
+            if (t /= 0.0_dp) b(j + 1:n) = b(j + 1:n) - t*lu(j + 1:n, j)
+        end do
+        do j = n, 1, -1
+            b(j) = b(j)/lu(j, j)
+            t = b(j)
+            if (t /= 0.0_dp) b(1:j - 1) = b(1:j - 1) - t*lu(1:j - 1, j)
+        end do
+    end subroutine la_small_lu_solve
 
     !> Solve A X = B for several right-hand sides with the factors from la_lu_factor
     !! (LAPACK DGETRS, no transpose, one call).

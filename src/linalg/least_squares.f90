@@ -23,7 +23,9 @@
 !!   multiplied by max(1/3, 1 - (2 rho - 1)^3) and nu = 2; on rejection lambda by nu and nu
 !!   doubled.
 !! * J by forward differences r(p + h_j e_j) - r(p) over h_j (lsq_jacobian: central
-!!   differences on request, for the covariance at the solution).
+!!   differences on request, for the covariance at the solution), or the problem's own J
+!!   (has_jacobian, residual_jacobian: e.g. from forward sensitivities), taken with the
+!!   residuals at every point tried: an accepted step then costs no further evaluation.
 !! * Convergence is judged by the gain the undamped (Gauss-Newton) step of the current
 !!   Jacobian could still make, g = (S - min ||J d + r||^2) (m - n) / S: the fall of chi^2
 !!   measured in the residuals' own variance s^2 = S / (m - n), i.e. the square of the
@@ -53,6 +55,8 @@ module least_squares
     type, abstract, public :: lsq_problem_t
     contains
         procedure(residual_i), deferred :: residual
+        procedure :: has_jacobian => no_jacobian_given
+        procedure :: residual_jacobian => no_residual_jacobian
     end type lsq_problem_t
 
     abstract interface
@@ -81,12 +85,14 @@ module least_squares
         real(dp), allocatable :: r(:)           !! residuals there
         real(dp), allocatable :: jac(:, :)      !! the last forward-difference Jacobian
         real(dp) :: cost = 0.0_dp               !! S = ||r||^2
+        real(dp) :: lambda = 0.0_dp             !! the damping at the end (a next fit from
+                                                !! here may start with it)
         integer :: iterations = 0               !! steps tried
         integer :: evaluations = 0              !! residual evaluations (Jacobians included)
         logical :: converged = .false.
     end type lsq_result_t
 
-    public :: lm_fit, lsq_jacobian
+    public :: lm_fit, lsq_jacobian, problem_jacobian
 
     !> Fall of S (from its start) that makes an exact fit, to roundoff.
     real(dp), parameter :: EXACT_FIT = 1.0e-20_dp
@@ -104,29 +110,38 @@ contains
         type(lsq_options_t), intent(in) :: opts
         type(lsq_result_t), intent(out) :: res
         type(status_t), intent(out) :: stat
-        real(dp), allocatable :: a(:, :), b(:), rt(:), jd(:)
+        real(dp), allocatable :: a(:, :), b(:), rt(:), jd(:), jt(:, :)
         real(dp) :: dvec(size(p0)), dstep(size(p0)), pt(size(p0)), lambda, nu, st, pred, rho
         real(dp) :: dnorm, pnorm, gain, cost0
-        logical :: small_step, last_small
+        logical :: small_step, last_small, analytic
         type(status_t) :: s2
         integer :: n, j
         n = size(p0)
         allocate (res%p(n), res%r(m), res%jac(m, n), a(m + n, n), b(m + n), rt(m), jd(m))
         res%p = p0
-        call prob%residual(res%p, res%r, stat)
-        res%evaluations = 1
-        if (stat%code /= 0) return
+        analytic = prob%has_jacobian()
+        if (analytic) then
+            allocate (jt(m, n))
+            call prob%residual_jacobian(res%p, res%r, res%jac, stat)
+            res%evaluations = 1
+            if (stat%code /= 0) return
+        else
+            call prob%residual(res%p, res%r, stat)
+            res%evaluations = 1
+            if (stat%code /= 0) return
+            call lsq_jacobian(prob, res%p, res%r, h, res%jac, stat)
+            res%evaluations = res%evaluations + n
+            if (stat%code /= 0) return
+        end if
         res%cost = sum(res%r**2)
         cost0 = res%cost
-        call lsq_jacobian(prob, res%p, res%r, h, res%jac, stat)
-        res%evaluations = res%evaluations + n
-        if (stat%code /= 0) return
         dvec = 0.0_dp
         call scale_columns()
         call gauss_newton_gain()
         res%converged = gain <= opts%chi2_tol
         if (res%converged) return
         lambda = opts%lambda0
+        res%lambda = lambda
         nu = 2.0_dp
         last_small = .false.
         do while (res%iterations < opts%max_iter)
@@ -151,7 +166,11 @@ contains
             jd = matmul(res%jac, dstep)
             pred = res%cost - sum((res%r + jd)**2)
             pt = res%p + dstep
-            call prob%residual(pt, rt, s2)
+            if (analytic) then
+                call prob%residual_jacobian(pt, rt, jt, s2)
+            else
+                call prob%residual(pt, rt, s2)
+            end if
             res%evaluations = res%evaluations + 1
             rho = -1.0_dp
             if (s2%code == 0) then
@@ -168,12 +187,17 @@ contains
                 res%r = rt
                 res%cost = st
                 lambda = lambda*max(1.0_dp/3.0_dp, 1.0_dp - (2.0_dp*rho - 1.0_dp)**3)
+                res%lambda = lambda
                 nu = 2.0_dp
-                call lsq_jacobian(prob, res%p, res%r, h, res%jac, stat)
-                res%evaluations = res%evaluations + n
-                if (stat%code /= 0) then
-                    stat%msg = 'Levenberg-Marquardt Jacobian: '//stat%msg
-                    return
+                if (analytic) then
+                    res%jac = jt
+                else
+                    call lsq_jacobian(prob, res%p, res%r, h, res%jac, stat)
+                    res%evaluations = res%evaluations + n
+                    if (stat%code /= 0) then
+                        stat%msg = 'Levenberg-Marquardt Jacobian: '//stat%msg
+                        return
+                    end if
                 end if
                 call scale_columns()
                 call gauss_newton_gain()
@@ -230,6 +254,50 @@ contains
             end do
         end subroutine scale_columns
     end subroutine lm_fit
+
+    !> Default: the problem gives no Jacobian of its own (lm_fit takes differences).
+    logical function no_jacobian_given(prob)
+        class(lsq_problem_t), intent(in) :: prob
+        no_jacobian_given = .false.
+        if (.false.) no_jacobian_given = same_type_as(prob, prob)
+    end function no_jacobian_given
+
+    !> Default residual_jacobian: the residuals and forward differences with steps of 1e-7
+    !! max(|p_j|, 1) (only called when has_jacobian() is .true.; a problem that says so
+    !! overrides it).
+    subroutine no_residual_jacobian(prob, p, r, jac, stat)
+        class(lsq_problem_t), intent(inout) :: prob
+        real(dp), intent(in) :: p(:)
+        real(dp), intent(out) :: r(:), jac(:, :)
+        type(status_t), intent(out) :: stat
+        call prob%residual(p, r, stat)
+        if (stat%code /= 0) return
+        call lsq_jacobian(prob, p, r, 1.0e-7_dp*max(abs(p), 1.0_dp), jac, stat)
+    end subroutine no_residual_jacobian
+
+    !> The Jacobian at p: the problem's own when it has one (residual_jacobian), else
+    !! differences with steps h (central when `central`); r gets r(p).  evaluations counts
+    !! the residual evaluations.
+    subroutine problem_jacobian(prob, p, r, h, jac, evaluations, stat, central)
+        class(lsq_problem_t), intent(inout) :: prob !! the residuals
+        real(dp), intent(in) :: p(:)            !! the point
+        real(dp), intent(inout) :: r(:)         !! r(p) (in: used by forward differences)
+        real(dp), intent(in) :: h(:)            !! difference steps, > 0
+        real(dp), intent(out) :: jac(:, :)      !! (m, n)
+        integer, intent(out) :: evaluations
+        type(status_t), intent(out) :: stat
+        logical, intent(in), optional :: central
+        logical :: c
+        c = .false.
+        if (present(central)) c = central
+        if (prob%has_jacobian()) then
+            call prob%residual_jacobian(p, r, jac, stat)
+            evaluations = 1
+        else
+            call lsq_jacobian(prob, p, r, h, jac, stat, central)
+            evaluations = size(p)*merge(2, 1, c)
+        end if
+    end subroutine problem_jacobian
 
     !> The Jacobian dr/dp by differences with steps h: forward from (p, r) (n evaluations),
     !! or central (2n evaluations) when `central` is .true.

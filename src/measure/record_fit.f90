@@ -12,24 +12,37 @@
 !! model before t0 is the held start.  A record that starts mid-swing is fitted from its
 !! first turning point on (ifirst): a turning point is a moment at rest, from which the
 !! model is a release.
+!!
+!! Derivatives of the model (&integration sensitivities = 'forward', the default): one run
+!! carries the forward sensitivities of every quantity asked (record_model_sens: the fit's
+!! parameters for its Jacobian, the budget's inputs for their sensitivities).  A quantity
+!! moves the scaled pendulum (its direction, sens_dir_t, from central differences of
+!! make_pendulum, which is algebraic), the start (central differences of start_state: the
+!! initial condition of its sensitivity), the time scale sqrt(g/b') and the release time t0;
+!! the last two through the motion's own direction f(y), itself a sensitivity started from
+!! f(y0).  With 'differences' the Jacobian and the inputs' sensitivities are differences of
+!! whole runs, as before.
 module record_fit
     use, intrinsic :: iso_fortran_env, only: int64
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use kinds, only: dp, pi, deg
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC
     use text, only: itoa, sci
     use deck, only: deck_t, estimated
     use output_io, only: out_files_t, all_finite
     use geometry, only: pendulum_t
-    use bifilar_model, only: NSTATE, motion_t, motion_parts_t, evaluate
+    use bifilar_model, only: NSTATE, bifilar_t, sens_dir_t, vertical_rate, &
+        vertical_rate_gradient
     use rig, only: rig_t, start_t, accuracy_t, rig_of, start_of, accuracy_of, make_pendulum, &
         start_state
     use kane_run, only: kane_run_start, kane_run_t
     use run_loop, only: stepped_model_t, row_sink_t, drive
+    use integrators, only: SENS_FORWARD
     use least_squares, only: lsq_problem_t, lsq_options_t, lsq_result_t, lm_fit
     use lapack_wrap, only: la_lstsq, la_svd
     use random, only: rng_t, rng_stream, rng_normal
     use records, only: record_t, mean_period
-    use inputs, only: input_t, set_input
+    use inputs, only: input_t, set_input, input_value
     use monte_carlo, only: mc_task_t
     implicit none
     private
@@ -59,9 +72,19 @@ module record_fit
         integer :: nuse = 0                     !! last sample fitted (the window)
         real(dp), allocatable :: w(:)           !! 1/u_i (1 without u)
         real(dp), allocatable :: hw(:)          !! the roots of the robust weights (1: squares)
+        real(dp) :: xs(NPARAM) = 1.0_dp         !! the size of each estimated parameter
+        !> fit_record's look-ahead: residual_jacobian runs the model to sample nrun
+        !! (> nuse) and keeps it (the parameters, the model and its derivatives from sample
+        !! ifirst), so that the next window's first evaluation, at the same parameters, is
+        !! this run's
+        logical :: look_ahead = .false.
+        integer :: nrun = 0, kept_n = 0
+        real(dp), allocatable :: kept_p(:), kept_v(:), kept_dv(:, :)
     contains
         procedure :: residual => record_residual
         procedure :: nres => record_nres
+        procedure :: has_jacobian => record_has_jacobian
+        procedure :: residual_jacobian => record_residual_jacobian
     end type record_fit_t
 
     !> Where the release is in a record, as find_release sees it.
@@ -78,8 +101,9 @@ module record_fit
     !> The model's value at the record's sample times (a sink of the run loop).
     type, extends(row_sink_t) :: record_sink_t
         logical :: rate = .false.
-        type(pendulum_t) :: p                   !! for W = omega . n3
         real(dp), allocatable :: vals(:)        !! theta4 (rad) or W (rad per unit tau)
+        integer :: ns = 0                       !! forward sensitivities carried (0: none)
+        real(dp), allocatable :: dvals(:, :)    !! (0:, ns) the value's change along each
     contains
         procedure :: take => record_take
     end type record_sink_t
@@ -94,11 +118,16 @@ module record_fit
         real(dp), allocatable :: u_p(:)         !! first-order u of each parameter
         real(dp) :: sigma = 0.0_dp              !! s of the covariance
         type(input_t), allocatable :: x(:)      !! the inputs drawn: names, values, u
+        !> (np, size(x)) the parameters' first-order change per unit of each input (0 for an
+        !! input without u); with it (forward sensitivities) a refit starts from the
+        !! sample's first-order estimate
+        real(dp), allocatable :: dpdx(:, :)
     contains
         procedure :: sample => record_mc_point
     end type record_mc_task_t
 
-    public :: record_model, fit_problem, fit_record, covariance, input_sensitivity
+    public :: record_model, record_model_sens, fit_problem, fit_record, covariance
+    public :: input_sensitivity, input_sensitivities
     public :: record_mc_task, explain_fit_failure, make_record, find_release
     public :: huber_weights, correlation_time, apply_parameters
 
@@ -122,66 +151,217 @@ contains
         logical, intent(in) :: rate             !! W instead of theta4
         real(dp), intent(out) :: vals(:)        !! the model at t(1:size(vals))
         type(status_t), intent(out) :: stat     !! the start's or the run's failure
-        type(pendulum_t) :: p
+        character(len=16) :: none(0)
+        real(dp) :: dv(size(vals), 0), xs(0)
+        call model_run(rg, st, acc, t, t0, rate, none, xs, vals, dv, stat)
+    end subroutine record_model
+
+    !> record_model and its derivatives dvals(:, c) with respect to the quantities names(c)
+    !! (a fit parameter, 'I1', 'c_v', 'c_q', 'amplitude', 't0', or an input of module
+    !! inputs), from the forward sensitivities of one run (see the module header); xs(c) the
+    !! size of quantity c (its difference steps are 1e-5 xs(c)).
+    subroutine record_model_sens(rg, st, acc, t, t0, rate, names, xs, vals, dvals, stat)
+        type(rig_t), intent(in) :: rg           !! the rig
+        type(start_t), intent(in) :: st         !! the start
+        type(accuracy_t), intent(in) :: acc     !! rtol, atol, integrator
+        real(dp), intent(in) :: t(:)            !! sample times (s), increasing
+        real(dp), intent(in) :: t0              !! release (s)
+        logical, intent(in) :: rate             !! W instead of theta4
+        character(len=*), intent(in) :: names(:)    !! the quantities
+        real(dp), intent(in) :: xs(:)           !! their sizes (deck units)
+        real(dp), intent(out) :: vals(:)        !! the model at t(1:size(vals))
+        real(dp), intent(out) :: dvals(:, :)    !! (size(vals), size(names))
+        type(status_t), intent(out) :: stat     !! the start's or the run's failure
+        call model_run(rg, st, acc, t, t0, rate, names, xs, vals, dvals, stat)
+    end subroutine record_model_sens
+
+    !> The model run of record_model and record_model_sens.  With quantities, column c of the
+    !! run's sensitivities follows names(c): its pendulum direction and initial condition by
+    !! central differences of make_pendulum and start_state; a last column f(y), started
+    !! from f(y0), follows the motion itself when a quantity moves the time scale s =
+    !! sqrt(g/b') or the release: a sample at t is the model at tau = (t - t0) s, so
+    !! dv/dx = (dv/dy) (s_x + f (t - t0) ds/dx - f s dt0/dx) (times s, plus v ds/dx, for W).
+    subroutine model_run(rg, st, acc, t, t0, rate, names, xs, vals, dvals, stat)
+        type(rig_t), intent(in) :: rg
+        type(start_t), intent(in) :: st
+        type(accuracy_t), intent(in) :: acc
+        real(dp), intent(in) :: t(:), t0
+        logical, intent(in) :: rate
+        character(len=*), intent(in) :: names(:)
+        real(dp), intent(in) :: xs(:)
+        real(dp), intent(out) :: vals(:), dvals(:, :)
+        type(status_t), intent(out) :: stat
+        real(dp), parameter :: FD_REL = 1.0e-5_dp
+        type(pendulum_t) :: p, pp, pm
         type(kane_run_t) :: m
         type(record_sink_t) :: sink
-        real(dp) :: y0(NSTATE), th0(5), s, v0
-        real(dp), allocatable :: taus(:)
-        integer :: n, i0, i
+        type(rig_t) :: rp, rm
+        type(start_t) :: sp, sm
+        type(sens_dir_t), allocatable :: dirs(:)
+        type(bifilar_t) :: sys
+        real(dp) :: y0(NSTATE), th0(5), s, v0, yp(NSTATE), ym(NSTATE), th(5), h
+        real(dp) :: f0(NSTATE), g0(NSTATE), sfac, dtau
+        real(dp), allocatable :: taus(:), s0(:, :), scale(:), ds(:), dt0(:)
+        integer :: n, i0, i, nq, ns, c
+        logical :: shift
         n = size(vals)
+        nq = size(names)
         vals = 0.0_dp
+        dvals = 0.0_dp
         call make_pendulum(rg, p, stat)
         if (stat%code /= 0) return
         call start_state(st, p, y0, th0, stat)
         if (stat%code /= 0) return
         s = sqrt(rg%g/rg%b_prime)               ! tau per second
+        sfac = merge(s, 1.0_dp, rate)
+        ! the quantities' directions, initial conditions, changes of s and of t0
+        allocate (dirs(nq), ds(nq), dt0(nq), s0(NSTATE, nq + 1), scale(nq + 1))
+        s0 = 0.0_dp
+        scale = 1.0_dp
+        ds = 0.0_dp
+        dt0 = 0.0_dp
+        do c = 1, nq
+            scale(c) = 1.0_dp/max(xs(c), tiny(1.0_dp))
+            if (trim(names(c)) == 't0') then
+                dt0(c) = 1.0_dp
+                cycle
+            end if
+            h = FD_REL*xs(c)
+            call moved(names(c), h, rp, sp)
+            call moved(names(c), -h, rm, sm)
+            call make_pendulum(rp, pp, stat)
+            if (stat%code == 0) call make_pendulum(rm, pm, stat)
+            if (stat%code /= 0) return
+            dirs(c)%inertia = (pp%inertia - pm%inertia)/(2.0_dp*h)
+            dirs(c)%c_v = (pp%c_v - pm%c_v)/(2.0_dp*h)
+            dirs(c)%c_q = (pp%c_q - pm%c_q)/(2.0_dp*h)
+            dirs(c)%big_l = (pp%big_l - pm%big_l)/(2.0_dp*h)
+            dirs(c)%big_lp = (pp%big_lp - pm%big_lp)/(2.0_dp*h)
+            dirs(c)%big_b = (pp%big_b - pm%big_b)/(2.0_dp*h)
+            dirs(c)%r = (pp%r - pm%r)/(2.0_dp*h)
+            dirs(c)%lambda = (pp%lambda - pm%lambda)/(2.0_dp*h)
+            ds(c) = (sqrt(rp%g/rp%b_prime) - sqrt(rm%g/rm%b_prime))/(2.0_dp*h)
+            if (any([dirs(c)%big_l, dirs(c)%big_lp, dirs(c)%big_b, dirs(c)%r, &
+                     dirs(c)%lambda] /= 0.0_dp) .or. trim(names(c)) == 'amplitude') then
+                call start_state(sp, pp, yp, th, stat)
+                if (stat%code == 0) call start_state(sm, pm, ym, th, stat)
+                if (stat%code /= 0) return
+                s0(:, c) = (yp - ym)/(2.0_dp*h)
+            end if
+        end do
+        shift = any(ds /= 0.0_dp) .or. any(dt0 /= 0.0_dp)
+        ns = nq
+        if (shift) then
+            ! the motion's own direction: its sensitivity from f(y0) is f(y(tau))
+            ns = nq + 1
+            sys%p = p
+            call sys%rhs(0.0_dp, y0, f0, stat)
+            if (stat%code /= 0) return
+            s0(:, ns) = f0
+        end if
         sink%rate = rate
-        sink%p = p
-        call sample_value(sink, y0, th0(3), v0, stat)
-        if (stat%code /= 0) return
+        sink%ns = ns
+        v0 = output_value(rate, y0)
+        g0 = output_gradient(rate, y0)
         i0 = n + 1
         do i = 1, n
             if (t(i) >= t0) then
                 i0 = i
                 exit
             end if
-            vals(i) = v0
         end do
-        if (rate) vals(1:i0 - 1) = vals(1:i0 - 1)*s
+        ! the samples before the release see the start
+        vals(1:i0 - 1) = v0*sfac
+        do c = 1, nq
+            dvals(1:i0 - 1, c) = dot_product(g0, s0(:, c))*sfac
+            if (rate) dvals(1:i0 - 1, c) = dvals(1:i0 - 1, c) + v0*ds(c)
+        end do
         if (i0 > n) return
-        allocate (taus(0:n - i0), sink%vals(0:n - i0))
+        allocate (taus(0:n - i0), sink%vals(0:n - i0), sink%dvals(0:n - i0, ns))
         taus = (t(i0:n) - t0)*s
         if (taus(n - i0) <= 0.0_dp) then
-            vals(i0:n) = v0*merge(s, 1.0_dp, rate)
+            vals(i0:n) = v0*sfac
+            do c = 1, nq
+                dvals(i0:n, c) = dvals(1, c)
+            end do
+            if (i0 == 1) then
+                do c = 1, nq
+                    dvals(:, c) = dot_product(g0, s0(:, c))*sfac
+                    if (rate) dvals(:, c) = dvals(:, c) + v0*ds(c)
+                end do
+            end if
             return
         end if
-        call kane_run_start(m, p, y0, th0(3), acc%rtol, acc%atol, acc%method, &
-                            taus(n - i0), 'raise &integration rtol/atol', stat)
+        if (ns > 0) then
+            call kane_run_start(m, p, y0, th0(3), acc%rtol, acc%atol, acc%method, &
+                                taus(n - i0), 'raise &integration rtol/atol', stat, &
+                                s0=s0(:, 1:ns), dirs=dirs, scale=scale(1:ns))
+        else
+            call kane_run_start(m, p, y0, th0(3), acc%rtol, acc%atol, acc%method, &
+                                taus(n - i0), 'raise &integration rtol/atol', stat)
+        end if
         if (stat%code /= 0) return
         call drive(m, taus, sink, stat)
         if (stat%code /= 0) return
-        vals(i0:n) = sink%vals
-        if (rate) vals(i0:n) = vals(i0:n)*s
-    end subroutine record_model
+        vals(i0:n) = sink%vals*sfac
+        do c = 1, nq
+            do i = i0, n
+                dtau = (t(i) - t0)*ds(c) - s*dt0(c)
+                if (shift) then
+                    dvals(i, c) = (sink%dvals(i - i0, c) + sink%dvals(i - i0, ns)*dtau)*sfac
+                else
+                    dvals(i, c) = sink%dvals(i - i0, c)*sfac
+                end if
+                if (rate) dvals(i, c) = dvals(i, c) + sink%vals(i - i0)*ds(c)
+            end do
+        end do
+    contains
+        !> The rig and start with quantity `name` moved by dx.
+        subroutine moved(name, dx, r2, s2)
+            character(len=*), intent(in) :: name
+            real(dp), intent(in) :: dx
+            type(rig_t), intent(out) :: r2
+            type(start_t), intent(out) :: s2
+            r2 = rg
+            s2 = st
+            select case (trim(name))
+            case ('I1')
+                r2%inertia(1) = rg%inertia(1) + dx
+            case ('c_v')
+                r2%c_v = rg%c_v + dx
+            case ('c_q')
+                r2%c_q = rg%c_q + dx
+            case default
+                call set_input(r2, s2, name, input_value(rg, st, name) + dx)
+            end select
+        end subroutine moved
+    end subroutine model_run
 
     !> theta4 (rad) or W = omega . n3 (rad per unit tau) of a chart state.
-    subroutine sample_value(sink, y, th3, v, stat)
-        type(record_sink_t), intent(in) :: sink
+    pure real(dp) function output_value(rate, y) result(v)
+        logical, intent(in) :: rate
         real(dp), intent(in) :: y(NSTATE)
-        real(dp), intent(in) :: th3
-        real(dp), intent(out) :: v
-        type(status_t), intent(out) :: stat
-        type(motion_t) :: mo
-        stat%code = 0
-        if (.not. sink%rate) then
+        if (rate) then
+            v = vertical_rate(y)
+        else
             v = y(4)
-            return
         end if
-        call evaluate(sink%p, y, th3, mo, stat, motion_parts_t(.false., .false., .false., .false.))
-        v = mo%omega(3)
-    end subroutine sample_value
+    end function output_value
 
-    !> One sample of the model (record_sink_t).
+    !> The gradient of output_value with respect to the chart state.
+    pure function output_gradient(rate, y) result(g)
+        logical, intent(in) :: rate
+        real(dp), intent(in) :: y(NSTATE)
+        real(dp) :: g(NSTATE)
+        if (rate) then
+            g = vertical_rate_gradient(y)
+        else
+            g = 0.0_dp
+            g(4) = 1.0_dp
+        end if
+    end function output_gradient
+
+    !> One sample of the model (record_sink_t), with its sensitivities when carried.
     subroutine record_take(sink, m, k, t, y, stat)
         class(record_sink_t), intent(inout) :: sink
         class(stepped_model_t), intent(inout) :: m
@@ -189,14 +369,20 @@ contains
         real(dp), intent(in) :: t               !! its tau
         real(dp), intent(in) :: y(:)            !! chart state there
         type(status_t), intent(out) :: stat
-        real(dp) :: th3
-        th3 = 0.0_dp
+        real(dp) :: sv(NSTATE, sink%ns), g(NSTATE)
+        stat%code = 0
+        sink%vals(k) = output_value(sink%rate, y(1:NSTATE))
+        if (sink%ns == 0) return
         select type (m)
         type is (kane_run_t)
-            th3 = m%th3
+            call m%sens_at(t, sv, stat)
         end select
-        call sample_value(sink, y, th3, sink%vals(k), stat)
-        if (stat%code /= 0) stat%msg = stat%msg//' at tau = '//sci(t)
+        if (stat%code /= 0) then
+            stat%msg = stat%msg//' at tau = '//sci(t)
+            return
+        end if
+        g = output_gradient(sink%rate, y(1:NSTATE))
+        sink%dvals(k, :) = matmul(g, sv)
     end subroutine record_take
 
     !> The rig and start with the parameters p of the fit set (I1, c_v, c_q, amplitude), t0
@@ -265,6 +451,82 @@ contains
         if (.not. all_finite(r)) call set_error(stat, ERR_NUMERIC, 'non-finite model values')
     end subroutine record_residual
 
+    !> The problem has its own Jacobian with forward sensitivities (&integration
+    !! sensitivities = 'forward').
+    logical function record_has_jacobian(prob)
+        class(record_fit_t), intent(in) :: prob
+        record_has_jacobian = prob%acc%sensitivities == SENS_FORWARD
+    end function record_has_jacobian
+
+    !> The residuals (record_residual) and their Jacobian dr/dp from one run with the
+    !! forward sensitivities of the estimated parameters (record_model_sens; the bias's
+    !! column is the weights).
+    subroutine record_residual_jacobian(prob, p, r, jac, stat)
+        class(record_fit_t), intent(inout) :: prob
+        real(dp), intent(in) :: p(:)
+        real(dp), intent(out) :: r(:), jac(:, :)
+        type(status_t), intent(out) :: stat
+        type(rig_t) :: rg
+        type(start_t) :: st
+        real(dp) :: t0, bias
+        real(dp), allocatable :: vals(:), dv(:, :), xs(:), wt(:)
+        character(len=16), allocatable :: names(:)
+        integer :: i0, i1, i2, j, c
+        logical :: reuse
+        call apply_parameters(prob, p, rg, st, t0, bias)
+        r = 0.0_dp
+        jac = 0.0_dp
+        if (.not. (rg%inertia(1) > 0.0_dp) .or. .not. (st%amplitude > 0.0_dp .and. &
+            st%amplitude < 180.0_dp)) then
+            call set_error(stat, ERR_NUMERIC, 'parameters out of the model''s range')
+            return
+        end if
+        allocate (names(0), xs(0))
+        do j = 1, prob%np
+            if (prob%which(j) == P_BIAS) cycle
+            names = [character(len=16) :: names, PARAM_NAMES(prob%which(j))]
+            xs = [xs, prob%xs(j)]
+        end do
+        i0 = prob%ifirst
+        i1 = prob%nuse
+        reuse = .false.
+        if (prob%look_ahead .and. allocated(prob%kept_p)) reuse = prob%kept_n >= i1 .and. &
+            all(prob%kept_p == p)
+        if (reuse) then
+            vals = prob%kept_v(1:i1 - i0 + 1)
+            dv = prob%kept_dv(1:i1 - i0 + 1, :)
+        else
+            ! with the look-ahead, to the next window's end
+            i2 = i1
+            if (prob%look_ahead) i2 = max(i1, min(prob%nrun, size(prob%rec%t)))
+            allocate (vals(i2 - i0 + 1), dv(i2 - i0 + 1, size(names)))
+            call record_model_sens(rg, st, prob%acc, prob%rec%t(i0:i2), t0, prob%rate, names, &
+                                   xs, vals, dv, stat)
+            if (stat%code /= 0) return
+            if (prob%look_ahead) then
+                prob%kept_p = p
+                prob%kept_n = i2
+                prob%kept_v = vals
+                prob%kept_dv = dv
+            end if
+            vals = vals(1:i1 - i0 + 1)
+            dv = dv(1:i1 - i0 + 1, :)
+        end if
+        wt = prob%w(i0:i1)*prob%hw(i0:i1)
+        r = (prob%sign*vals + bias - prob%rec%v(i0:i1))*wt
+        c = 0
+        do j = 1, prob%np
+            if (prob%which(j) == P_BIAS) then
+                jac(:, j) = wt
+            else
+                c = c + 1
+                jac(:, j) = prob%sign*dv(:, c)*wt
+            end if
+        end do
+        if (.not. all_finite(r) .or. .not. all(ieee_is_finite(jac))) &
+            call set_error(stat, ERR_NUMERIC, 'non-finite model values')
+    end subroutine record_residual_jacobian
+
     !> Where the release is in a record (the start values of t0, the amplitude, the bias and
     !! the sign).  The first tenth of the record (at least 10 samples, at most 200) gives a
     !! level and its noise (median and scaled median absolute deviation); the first sample
@@ -285,7 +547,7 @@ contains
         real(dp) :: level, noise, vmax, thr, centre, peak, tp
         integer :: n, k, idep, i, ic, ie, j
         n = size(rec%v)
-        v = rec%v
+        allocate (v, source=rec%v)
         k = max(10, min(200, n/10))
         k = min(k, n)
         level = median(v(1:k))
@@ -448,6 +710,7 @@ contains
         end if
         if (present(rl)) rl = rel
         allocate (p0(prob%np), h(prob%np))
+        prob%xs = 1.0_dp
         tp = mean_period(rec, prob%ifirst)
         if (.not. (tp > 0.0_dp)) tp = rec%t(n) - rec%t(1)
         vscale = max(maxval(abs(rec%v)), tiny(1.0_dp))
@@ -475,12 +738,15 @@ contains
                 if (prob%rate .and. estimated(d, 't0') .and. .not. rel%held) p0(j) = 0.0_dp
                 h(j) = H_REL*vscale
             end select
+            prob%xs(j) = h(j)/H_REL
         end do
     end subroutine fit_problem
 
     !> Fit the record by Levenberg-Marquardt on growing windows (about two mean periods of
     !! the record, then twice as long each time, then the whole record), each from the
-    !! last estimate.  res: the last fit (whole record); iterations summed over windows.
+    !! last estimate and with its last damping lambda (a window in the basin of the last
+    !! takes Gauss-Newton steps at once).  res: the last fit (whole record); iterations
+    !! summed over windows.
     subroutine fit_record(prob, p0, h, res, stat)
         type(record_fit_t), intent(inout) :: prob
         real(dp), intent(in) :: p0(:), h(:)
@@ -488,9 +754,9 @@ contains
         type(status_t), intent(out) :: stat
         type(lsq_options_t) :: opts
         type(lsq_result_t) :: part
-        real(dp) :: tp, span, win, tstart
+        real(dp) :: tp, span, win, tstart, lambda
         real(dp), allocatable :: p(:)
-        integer :: n, iters, evals
+        integer :: n, iters, evals, nwin
         n = size(prob%rec%t)
         tp = mean_period(prob%rec, prob%ifirst)
         tstart = prob%rec%t(prob%ifirst)
@@ -498,6 +764,8 @@ contains
         p = p0
         iters = 0
         evals = 0
+        opts = lsq_options_t()
+        lambda = opts%lambda0
         win = 2.0_dp*tp
         if (.not. (tp > 0.0_dp)) win = 2.0_dp*span
         ! a held stretch before the release: the window starts after it
@@ -505,14 +773,21 @@ contains
             if (any(prob%which(1:prob%np) == P_T0)) &
                 win = win + max(0.0_dp, p0(findloc(prob%which(1:prob%np), P_T0, 1)) - tstart)
         end if
+        nwin = 0
         do
-            prob%nuse = n
-            if (win < span) prob%nuse = max(count(prob%rec%t <= tstart + win), &
-                                            prob%ifirst + 2*prob%np + 1)
+            prob%nuse = window_end(win)
             if (prob%nuse >= n) exit
+            nwin = nwin + 1
+            ! from the second window on, the runs look ahead to the next window's end: its
+            ! first evaluation is then this window's last (the first window takes several
+            ! steps from a start far off, each would cost twice)
+            prob%look_ahead = nwin > 1
+            prob%nrun = window_end(2.0_dp*win)
             opts%xtol = 1.0e-6_dp
             opts%chi2_tol = 1.0_dp
+            opts%lambda0 = lambda
             call lm_fit(prob, p, h, prob%nres(), opts, part, stat)
+            lambda = part%lambda
             iters = iters + part%iterations
             evals = evals + part%evaluations
             if (stat%code /= 0) then
@@ -520,16 +795,34 @@ contains
                 res = part
                 res%iterations = iters
                 res%evaluations = evals
+                call forget()
                 return
             end if
             p = part%p
             win = 2.0_dp*win
         end do
         prob%nuse = n
+        prob%nrun = n
         opts = lsq_options_t()
+        opts%lambda0 = lambda
         call lm_fit(prob, p, h, prob%nres(), opts, res, stat)
+        call forget()
         res%iterations = res%iterations + iters
         res%evaluations = res%evaluations + evals
+    contains
+        !> The last sample of a window of w seconds (at least 2 np + 1 samples).
+        integer function window_end(w)
+            real(dp), intent(in) :: w
+            window_end = n
+            if (w < span) window_end = max(count(prob%rec%t <= tstart + w), &
+                                           prob%ifirst + 2*prob%np + 1)
+        end function window_end
+        !> The look-ahead off, its run forgotten.
+        subroutine forget()
+            prob%look_ahead = .false.
+            prob%kept_n = 0
+            if (allocated(prob%kept_p)) deallocate (prob%kept_p, prob%kept_v, prob%kept_dv)
+        end subroutine forget
     end subroutine fit_record
 
     !> Huber's weights from the residuals r of the samples ifirst .. nuse (weighted by
@@ -622,6 +915,76 @@ contains
         dpdx = -dpdx
     end subroutine input_sensitivity
 
+    !> dp/dx = -(J^T J)^-1 J^T dr/dx at the estimate for every input x with u > 0 at once,
+    !! dr/dx from the forward sensitivities of one run (record_model_sens); dpdx(:, j) = 0
+    !! for an input without u.  With &integration sensitivities = 'differences', central
+    !! differences of whole runs, two per input (input_sensitivity).
+    subroutine input_sensitivities(prob, p, jac, x, dpdx, runs, stat)
+        type(record_fit_t), intent(in) :: prob
+        real(dp), intent(in) :: p(:), jac(:, :)
+        type(input_t), intent(in) :: x(:)       !! the inputs (name, value, u)
+        real(dp), intent(out) :: dpdx(:, :)     !! (size(p), size(x))
+        integer, intent(out) :: runs            !! model runs made
+        type(status_t), intent(out) :: stat
+        type(rig_t) :: rg
+        type(start_t) :: st
+        real(dp) :: t0, bias
+        real(dp), allocatable :: vals(:), dv(:, :), xs(:), wt(:)
+        character(len=16), allocatable :: names(:)
+        integer, allocatable :: idx(:)
+        integer :: i0, i1, j, c
+        dpdx = 0.0_dp
+        runs = 0
+        stat%code = 0
+        if (prob%acc%sensitivities /= SENS_FORWARD) then
+            do j = 1, size(x)
+                if (.not. (x(j)%u > 0.0_dp)) cycle
+                call input_sensitivity(prob, p, jac, x(j), dpdx(:, j), stat)
+                runs = runs + 2
+                if (stat%code /= 0) then
+                    stat%msg = 'sensitivity to '//trim(x(j)%name)//': '//stat%msg
+                    return
+                end if
+            end do
+            return
+        end if
+        allocate (names(0), xs(0), idx(0))
+        do j = 1, size(x)
+            if (.not. (x(j)%u > 0.0_dp)) cycle
+            names = [character(len=16) :: names, x(j)%name]
+            xs = [xs, input_size(prob, x(j))]
+            idx = [idx, j]
+        end do
+        if (size(names) == 0) return
+        call apply_parameters(prob, p, rg, st, t0, bias)
+        i0 = prob%ifirst
+        i1 = prob%nuse
+        allocate (vals(i1 - i0 + 1), dv(i1 - i0 + 1, size(names)))
+        call record_model_sens(rg, st, prob%acc, prob%rec%t(i0:i1), t0, prob%rate, names, xs, &
+                               vals, dv, stat)
+        runs = 1
+        if (stat%code /= 0) then
+            stat%msg = 'sensitivities to the inputs: '//stat%msg
+            return
+        end if
+        wt = prob%w(i0:i1)*prob%hw(i0:i1)
+        do c = 1, size(names)
+            call la_lstsq(jac, prob%sign*dv(:, c)*wt, dpdx(:, idx(c)), stat)
+            if (stat%code /= 0) return
+            dpdx(:, idx(c)) = -dpdx(:, idx(c))
+        end do
+    end subroutine input_sensitivities
+
+    !> The size of an input for its difference step: |value|, b' for an input of value 0,
+    !! 1 rad for lambda (as input_sensitivity's steps, over H_REL).
+    pure real(dp) function input_size(prob, x) result(xs)
+        type(record_fit_t), intent(in) :: prob
+        type(input_t), intent(in) :: x
+        xs = abs(x%value)
+        if (.not. (xs > 0.0_dp)) xs = prob%rg%b_prime
+        if (trim(x%name) == 'lambda') xs = 1.0_dp
+    end function input_size
+
     !> The samples of a record fit's Monte Carlo from the deck, its record, its inputs and
     !! the payload of the record's Monte Carlo (the task rank 0 runs and the other ranks
     !! build).
@@ -629,7 +992,8 @@ contains
         type(deck_t), intent(in) :: d
         type(record_t), intent(in) :: rec
         type(input_t), intent(in) :: x(:)       !! the inputs drawn
-        !> crc (2), sigma, np, phat, u_p, jac, and the robust weights' roots (ifirst .. n)
+        !> crc (2), sigma, np, phat, u_p, jac, the robust weights' roots (1 .. n) and the
+        !! parameters' sensitivities to the inputs (np x size(x))
         real(dp), intent(in) :: payload(:)
         type(record_mc_task_t), intent(out) :: task
         real(dp), allocatable :: p0(:), h(:)
@@ -645,12 +1009,18 @@ contains
         k = 4 + 2*np + m*np
         if (size(payload) >= k + size(task%prob%hw)) task%prob%hw = payload(k + 1:k + &
                                                                            size(task%prob%hw))
+        k = k + size(task%prob%hw)
+        if (size(payload) >= k + np*size(x)) task%dpdx = reshape(payload(k + 1:k + np*size(x)), &
+                                                                 [np, size(x)])
         task%nest = np
     end subroutine record_mc_task
 
     !> Monte Carlo sample k of a record fit: inputs and measured values drawn from stream k
-    !! of the seed, then the refit from the estimate; est: the sample's parameters (I1
-    !! first).  A failed refit: ERR_NUMERIC naming the sample.
+    !! of the seed, then the refit by Gauss-Newton with the estimate's Jacobian, from the
+    !! sample's first-order estimate (forward sensitivities: the estimate moved by the
+    !! parameters' sensitivities to the inputs drawn and by J^+ of the values' noise) or from
+    !! the estimate itself; est: the sample's parameters (I1 first).  A failed refit:
+    !! ERR_NUMERIC naming the sample.
     subroutine record_mc_point(self, k, est, stat)
         class(record_mc_task_t), intent(in) :: self
         integer, intent(in) :: k                !! sample number
@@ -660,15 +1030,18 @@ contains
         type(rng_t) :: g
         type(lsq_result_t) :: fit
         real(dp) :: p(size(self%phat)), dp_(size(self%phat)), r(size(self%jac, 1))
-        real(dp) :: h(size(self%phat))
-        integer :: j, it
+        real(dp) :: h(size(self%phat)), dx(size(self%x))
+        integer :: j, it, i0, i1
         logical :: done
         est = 0.0_dp
         g = rng_stream(self%prob%seed, k)
         q = self%prob
+        dx = 0.0_dp
         do j = 1, size(self%x)
-            if (self%x(j)%u > 0.0_dp) call set_input(q%rg, q%st, self%x(j)%name, &
-                self%x(j)%value + self%x(j)%u*rng_normal(g))
+            if (self%x(j)%u > 0.0_dp) then
+                dx(j) = self%x(j)%u*rng_normal(g)
+                call set_input(q%rg, q%st, self%x(j)%name, self%x(j)%value + dx(j))
+            end if
         end do
         do j = 1, size(q%rec%v)
             if (self%prob%rec%has_u) then
@@ -679,6 +1052,14 @@ contains
         end do
         ! Gauss-Newton with the estimate's Jacobian
         p = self%phat
+        if (q%has_jacobian() .and. allocated(self%dpdx)) then
+            ! the first-order estimate: the inputs' part, and the values' noise through J^+
+            i0 = q%ifirst
+            i1 = q%nuse
+            call la_lstsq(self%jac, (q%rec%v(i0:i1) - self%prob%rec%v(i0:i1))*q%w(i0:i1)* &
+                          q%hw(i0:i1), dp_, stat)
+            if (stat%code == 0) p = p + dp_ + matmul(self%dpdx, dx)
+        end if
         done = .false.
         do it = 1, 8
             call q%residual(p, r, stat)

@@ -19,10 +19,18 @@
 !! The 5 x 5 system is factored by lapack_wrap's written-out LU (la_small_factor).  The
 !! Jacobian Z of the chart right-hand side (eq. (51)) is exact: the derivatives of the
 !! kinematics (chart_kinematics_tangent) carried through Kane's equations and the constraint
-!! (eom_tangent), solved with the same factors (chart_jacobian).  Z is that of the undamped
-!! equations: the Floquet analysis, its only user, refuses &damping (a damped torsion is not
-!! periodic).  The damping torque about the vertical (&damping, pendulum_t c_v, c_q) enters
-!! eq. (38) as an active torque through the partial angular velocities (damping_torque).
+!! (eom_tangent), solved with the same factors (chart_jacobian); the damping torque's
+!! derivative is in it.  The damping torque about the vertical (&damping, pendulum_t c_v,
+!! c_q) enters eq. (38) as an active torque through the partial angular velocities
+!! (damping_torque).
+!!
+!! Forward sensitivities (ode_system's sens_point, sens_jv; the integrators' staggered
+!! direct method): bifilar_t's `dirs` name the parameter direction of each sensitivity
+!! (sens_dir_t).  Their df/dp is analytic for the moments of inertia and the damping (the
+!! change of the generalized active and inertia forces, solved with the factor of eq. (38))
+!! and by central differences of the right-hand side for the geometry (L, L', B, r,
+!! lambda); the products J v are the tangents of the kinematics through Kane's equations
+!! (eom_tangent), one per column, or the whole of Z once a point needs more columns.
 module bifilar_model
     use kinds, only: dp, pi
     use status, only: status_t, set_error, ERR_MODEL, ERR_NUMERIC
@@ -39,20 +47,17 @@ module bifilar_model
 
     integer, parameter, public :: NSTATE = 10   !! y = (q(5), qdot(5))
 
-    !> The pendulum as an ODE system for the integrator.
-    type, extends(ode_system_t), public :: bifilar_t
-        type(pendulum_t) :: p                   !! scaled parameters
-        !> .true.: each right-hand side also keeps the state it evaluated and the cable
-        !! tensions there (last_evaluation), for the validity check at the end of each step
-        logical :: keep_tensions = .false.
-        !> sin and cos of p%lambda, computed when p%lambda is first seen (lambda_key)
-        real(dp), private :: lambda_key = huge(1.0_dp), sc_lambda(2) = 0.0_dp
-        logical, private :: have_last = .false.
-        real(dp), private :: last_y(NSTATE) = 0.0_dp, last_t(2) = 0.0_dp
-    contains
-        procedure :: rhs => bifilar_rhs
-        procedure :: last_evaluation
-    end type bifilar_t
+    !> A direction in the pendulum's scaled parameters, dp/dx for the quantity x a
+    !! sensitivity follows (pendulum_t's fields of the same names).  The moments and the
+    !! damping have analytic df/dp; the geometry's comes from central differences of the
+    !! right-hand side.  All 0: a sensitivity of the initial conditions only.
+    type, public :: sens_dir_t
+        real(dp) :: inertia(3) = 0.0_dp         !! d I_i/(m b'^2) / dx
+        real(dp) :: c_v = 0.0_dp, c_q = 0.0_dp  !! of the damping
+        real(dp) :: big_l = 0.0_dp, big_lp = 0.0_dp, big_b = 0.0_dp, r = 0.0_dp, &
+                    lambda = 0.0_dp             !! of the geometry
+    end type sens_dir_t
+
 
     !> Everything about the motion at one instant (scaled units: b' = m = g = 1).
     type, public :: motion_t
@@ -107,8 +112,46 @@ module bifilar_model
         real(dp) :: qdd(5)                      !! the accelerations
     end type eom_t
 
+    !> The pendulum as an ODE system for the integrator.
+    type, extends(ode_system_t), public :: bifilar_t
+        type(pendulum_t) :: p                   !! scaled parameters
+        !> .true.: each right-hand side also keeps the state it evaluated and the cable
+        !! tensions there (last_evaluation), for the validity check at the end of each step
+        logical :: keep_tensions = .false.
+        !> sin and cos of p%lambda, computed when p%lambda is first seen (lambda_key)
+        real(dp), private :: lambda_key = huge(1.0_dp), sc_lambda(2) = 0.0_dp
+        logical, private :: have_last = .false.
+        real(dp), private :: last_y(NSTATE) = 0.0_dp, last_t(2) = 0.0_dp
+        !> the parameter direction of each sensitivity (sens_point; a column beyond them
+        !! follows the initial conditions only)
+        type(sens_dir_t), allocatable :: dirs(:)
+        !> the point of the last sens_point, for sens_jv: the state, its kinematics, eq.
+        !! (38) solved, R*'s acceleration, the torque on the body, the constraint's
+        !! multiplier; Z once computed there; the columns taken by tangents there
+        real(dp), private :: sp_y(NSTATE) = 0.0_dp
+        type(chart_kin_t), private :: sp_k
+        type(eom_t), private :: sp_eo
+        real(dp), private :: sp_a(3) = 0.0_dp, sp_tq(3) = 0.0_dp, sp_mu = 0.0_dp
+        real(dp), private :: sp_z(NSTATE, NSTATE) = 0.0_dp
+        logical, private :: sp_have_z = .false.
+        integer, private :: sp_cols = 0
+    contains
+        procedure :: rhs => bifilar_rhs
+        procedure :: last_evaluation
+        procedure :: sens_point => bifilar_sens_point
+        procedure :: sens_jv => bifilar_sens_jv
+    end type bifilar_t
+
     public :: chart_state, paper_angles, chart_accelerations, paper_accelerations, evaluate
     public :: chart_positions, chart_energy, chart_constraint, chart_jacobian, step_tensions
+    public :: vertical_rate, vertical_rate_gradient
+
+    !> A point costs about this many tangents' worth for the whole of Z (five of its columns
+    !! change the angles, five only the rates): sens_jv takes Z once the columns asked at a
+    !! point exceed it.
+    integer, parameter :: Z_COST = 7
+    !> Relative step of the central differences of the right-hand side in the geometry.
+    real(dp), parameter :: GEOMETRY_STEP = 1.0e-5_dp
 
 contains
 
@@ -518,36 +561,64 @@ contains
     !! f = (qdot, qddot) (eq. (51)), exact.  Each column of the lower half is the derivative of
     !! the accelerations along a unit change of y: the derivatives of the kinematics
     !! (chart_kinematics_tangent) carried through Kane's equations and the constraint
-    !! (eom_tangent) and solved with the factors of eq. (38).  For the undamped equations
-    !! (p%c_v = p%c_q = 0; the Floquet analysis refuses damping).
+    !! (eom_tangent) and solved with the factors of eq. (38); the damping torque's derivative
+    !! included.
     subroutine chart_jacobian(p, y, qdd, z, stat)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         real(dp), intent(in) :: y(NSTATE)       !! chart state
         real(dp), intent(out) :: qdd(5)         !! accelerations at y
         real(dp), intent(out) :: z(NSTATE, NSTATE)  !! df_i/dy_j
         type(status_t), intent(out) :: stat     !! as chart_accelerations
-        type(chart_kin_t) :: k, dk
+        type(chart_kin_t) :: k
         type(eom_t) :: eo
-        real(dp) :: dy(NSTATE), a(3), alpha(3), res(5), tq(3), mu, iwk(3)
-        integer :: j
+        real(dp) :: a(3), tq(3), mu
         z = 0.0_dp
         call chart_solve(p, y, k, eo, stat)
         qdd = eo%qdd
         if (stat%code /= 0) return
-        do j = 1, 5
-            z(j, j + 5) = 1.0_dp
-        end do
-        ! the solution's accelerations, the residual of the unconstrained Kane's equations
-        ! (R = f - M qddot, equal to gradg mu at the solution) and the multiplier mu
-        a = matmul(k%jv, qdd) + k%cv
-        alpha = matmul(k%wb, qdd) + k%cwb
+        call tangent_setup(p, k, eo, a, tq, mu)
+        call jacobian_columns(p, y, k, eo, a, tq, mu, z)
+    end subroutine chart_jacobian
+
+    !> What the tangents of eq. (38) need at a solved point: R*'s acceleration a, the torque
+    !! on the body tq (inertia torque and damping, principal axes), the constraint's
+    !! multiplier mu (the residual of the unconstrained Kane's equations, R = f - M qddot, is
+    !! gradg mu at the solution), and column k of the generalized inertia M (eo%mk, for
+    !! constrained_solve).
+    pure subroutine tangent_setup(p, k, eo, a, tq, mu)
+        type(pendulum_t), intent(in) :: p
+        type(chart_kin_t), intent(in) :: k
+        type(eom_t), intent(inout) :: eo
+        real(dp), intent(out) :: a(3), tq(3), mu
+        real(dp) :: alpha(3), res(5), iwk(3)
+        integer :: j
+        a = matmul(k%jv, eo%qdd) + k%cv
+        alpha = matmul(k%wb, eo%qdd) + k%cwb
         tq = inertia_torque(p%inertia, alpha, k%omb)
+        if (p%c_v /= 0.0_dp .or. p%c_q /= 0.0_dp) tq = tq + damping_torque(p, k%omega, k%b)
         call project(5, k%jv, k%wb, -(a + [0.0_dp, 0.0_dp, 1.0_dp]), tq, res)
         mu = res(eo%k)/eo%gradg(eo%k)
-        ! column k of the generalized inertia M, for constrained_solve
         iwk = p%inertia*k%wb(:, eo%k)
         do j = 1, 5
             eo%mk(j) = dot_product(k%jv(:, j), k%jv(:, eo%k)) + dot_product(k%wb(:, j), iwk)
+        end do
+    end subroutine tangent_setup
+
+    !> Z of a solved point (tangent_setup done): the upper half (0 I), the lower half one
+    !! tangent per column.
+    pure subroutine jacobian_columns(p, y, k, eo, a, tq, mu, z)
+        type(pendulum_t), intent(in) :: p
+        real(dp), intent(in) :: y(NSTATE)
+        type(chart_kin_t), intent(in) :: k
+        type(eom_t), intent(in) :: eo
+        real(dp), intent(in) :: a(3), tq(3), mu
+        real(dp), intent(out) :: z(NSTATE, NSTATE)
+        type(chart_kin_t) :: dk
+        real(dp) :: dy(NSTATE)
+        integer :: j
+        z = 0.0_dp
+        do j = 1, 5
+            z(j, j + 5) = 1.0_dp
         end do
         do j = 1, NSTATE
             dy = 0.0_dp
@@ -555,7 +626,128 @@ contains
             call chart_kinematics_tangent(p, y, k, dy, dk)
             call eom_tangent(p, y, k, eo, a, tq, mu, dy, dk, z(6:10, j))
         end do
-    end subroutine chart_jacobian
+    end subroutine jacobian_columns
+
+    !> The sensitivity terms at (t, y) (ode_system's sens_point): eq. (38) solved and made
+    !! ready for the tangents of sens_jv, and df/dp of each direction of sys%dirs (0 for the
+    !! columns beyond them): the moments' and the damping's analytic (the change of the
+    !! generalized inertia and active forces at fixed accelerations, solved with the factor
+    !! of eq. (38), the constraint unchanged), the geometry's by central differences of the
+    !! right-hand side (relative step GEOMETRY_STEP).
+    subroutine bifilar_sens_point(sys, t, y, dfdp, stat)
+        class(bifilar_t), intent(inout) :: sys
+        real(dp), intent(in) :: t               !! tau (the system is autonomous)
+        real(dp), intent(in) :: y(:)            !! chart state
+        real(dp), intent(out) :: dfdp(:, :)     !! (NSTATE, ns)
+        type(status_t), intent(out) :: stat
+        type(sens_dir_t) :: d
+        type(pendulum_t) :: pp, pm
+        type(chart_kin_t) :: kk
+        type(eom_t) :: ee
+        real(dp) :: dtq(3), e(5), dq(5), w, hstep, qp(5), scale
+        integer :: j
+        if (.false.) dfdp(1, 1) = t
+        dfdp = 0.0_dp
+        call refresh_lambda(sys)
+        sys%sp_y = y(1:NSTATE)
+        sys%sp_have_z = .false.
+        sys%sp_cols = 0
+        call chart_solve(sys%p, y, sys%sp_k, sys%sp_eo, stat, sys%sc_lambda)
+        if (stat%code /= 0) return
+        call tangent_setup(sys%p, sys%sp_k, sys%sp_eo, sys%sp_a, sys%sp_tq, sys%sp_mu)
+        if (.not. allocated(sys%dirs)) return
+        associate (k => sys%sp_k, eo => sys%sp_eo, p => sys%p)
+            w = k%omega(3)
+            do j = 1, min(size(dfdp, 2), size(sys%dirs))
+                d = sys%dirs(j)
+                dtq = 0.0_dp
+                if (any(d%inertia /= 0.0_dp)) dtq = dtq - d%inertia*(matmul(k%wb, eo%qdd) &
+                    + k%cwb) - cross(k%omb, d%inertia*k%omb)
+                if (d%c_v /= 0.0_dp .or. d%c_q /= 0.0_dp) dtq = dtq - (d%c_v*w + &
+                    d%c_q*abs(w)*w)*k%b(:, 3)
+                dq = 0.0_dp
+                if (any(dtq /= 0.0_dp)) then
+                    call project(5, k%jv, k%wb, [0.0_dp, 0.0_dp, 0.0_dp], dtq, e)
+                    call constrained_solve(eo, e, 0.0_dp, dq)
+                end if
+                if (any([d%big_l, d%big_lp, d%big_b, d%r, d%lambda] /= 0.0_dp)) then
+                    ! central differences along the geometry's part of the direction
+                    scale = maxval(abs([d%big_l, d%big_lp, d%big_b, d%r, d%lambda]) / &
+                                   max([p%big_l, p%big_lp, p%big_b, p%r, 1.0_dp], 1.0e-3_dp))
+                    hstep = GEOMETRY_STEP/scale
+                    pp = p
+                    pm = p
+                    call move(pp, hstep)
+                    call move(pm, -hstep)
+                    call chart_solve(pp, y, kk, ee, stat)
+                    if (stat%code /= 0) return
+                    qp = ee%qdd
+                    call chart_solve(pm, y, kk, ee, stat)
+                    if (stat%code /= 0) return
+                    dq = dq + (qp - ee%qdd)/(2.0_dp*hstep)
+                end if
+                dfdp(6:10, j) = dq
+            end do
+        end associate
+    contains
+        pure subroutine move(q, h)
+            type(pendulum_t), intent(inout) :: q
+            real(dp), intent(in) :: h
+            q%big_l = q%big_l + h*d%big_l
+            q%big_lp = q%big_lp + h*d%big_lp
+            q%big_b = q%big_b + h*d%big_b
+            q%r = q%r + h*d%r
+            q%lambda = q%lambda + h*d%lambda
+        end subroutine move
+    end subroutine bifilar_sens_point
+
+    !> Products jv = Z v at the point of the last sens_point (ode_system's sens_jv): one
+    !! tangent per column, or the whole of Z (computed once there) when the columns asked at
+    !! the point exceed Z_COST.
+    subroutine bifilar_sens_jv(sys, v, jv, stat)
+        class(bifilar_t), intent(inout) :: sys
+        real(dp), intent(in) :: v(:, :)         !! (NSTATE, m)
+        real(dp), intent(out) :: jv(:, :)       !! (NSTATE, m)
+        type(status_t), intent(out) :: stat
+        type(chart_kin_t) :: dk
+        integer :: c, m
+        stat%code = 0
+        m = size(v, 2)
+        jv(1:5, :) = v(6:10, :)
+        if (.not. sys%sp_have_z .and. sys%sp_cols + m > Z_COST) then
+            call jacobian_columns(sys%p, sys%sp_y, sys%sp_k, sys%sp_eo, sys%sp_a, sys%sp_tq, &
+                                  sys%sp_mu, sys%sp_z)
+            sys%sp_have_z = .true.
+        end if
+        if (sys%sp_have_z) then
+            jv(6:10, :) = matmul(sys%sp_z(6:10, :), v)
+            return
+        end if
+        do c = 1, m
+            call chart_kinematics_tangent(sys%p, sys%sp_y, sys%sp_k, v(:, c), dk)
+            call eom_tangent(sys%p, sys%sp_y, sys%sp_k, sys%sp_eo, sys%sp_a, sys%sp_tq, &
+                             sys%sp_mu, v(:, c), dk, jv(6:10, c))
+        end do
+        sys%sp_cols = sys%sp_cols + m
+    end subroutine bifilar_sens_jv
+
+    !> W = omega . n3, the body's rate about the vertical (per unit tau), of a chart state:
+    !! -sin(theta5) theta1' - theta4' (eq. (14)).
+    pure real(dp) function vertical_rate(y) result(w)
+        real(dp), intent(in) :: y(NSTATE)       !! chart state
+        w = -sin(y(5))*y(6) - y(9)
+    end function vertical_rate
+
+    !> The gradient of W = omega . n3 (the body's rate about the vertical, per unit tau) with
+    !! respect to the chart state: W = -sin(theta5) theta1' - theta4' (eq. (14)).
+    pure function vertical_rate_gradient(y) result(g)
+        real(dp), intent(in) :: y(NSTATE)       !! chart state
+        real(dp) :: g(NSTATE)
+        g = 0.0_dp
+        g(5) = -cos(y(5))*y(6)
+        g(6) = -sin(y(5))
+        g(9) = -1.0_dp
+    end function vertical_rate_gradient
 
     !> The change of the accelerations along a change dy of the state (kinematics changed by
     !! dk): eq. (38) with the Lagrange multiplier mu of the constraint, M qddot - gradg mu = f,
@@ -573,13 +765,19 @@ contains
         real(dp), intent(in) :: dy(:)
         real(dp), intent(out) :: dqdd(5)
         real(dp) :: da(3), dalpha(3), dtq(3), e1(5), e2(5), dgradg(5), dvd(3)
-        real(dp) :: dgconv
+        real(dp) :: dgconv, wv
         integer :: j
         associate (qdd => eo%qdd, in => p%inertia, w => k%omb, dw => dk%omb)
             ! Kane's equations: R = Jv^T (-(a + g n3)) + Wb^T T, T = -I alpha - w x I w
             da = matmul(dk%jv, qdd) + dk%cv
             dalpha = matmul(dk%wb, qdd) + dk%cwb
             dtq = -in*dalpha - cross(dw, in*w) - cross(w, in*dw)
+            if (p%c_v /= 0.0_dp .or. p%c_q /= 0.0_dp) then
+                ! the damping torque -(c_v W + c_q |W| W) b(:, 3), W = omega . n3
+                wv = k%omega(3)
+                dtq = dtq - (p%c_v + 2.0_dp*p%c_q*abs(wv))*dk%omega(3)*k%b(:, 3) &
+                      - (p%c_v*wv + p%c_q*abs(wv)*wv)*dk%b(:, 3)
+            end if
             call project(5, k%jv, k%wb, -da, dtq, e2)
             if (any(dy(1:5) /= 0.0_dp)) then
                 call project(5, dk%jv, dk%wb, -(a + [0.0_dp, 0.0_dp, 1.0_dp]), tq, e1)

@@ -11,6 +11,13 @@
 !! coordinates are singular) over `nseg` shooting segments; the multipliers are the
 !! eigenvalues of the product of the segment matrices (LAPACK DGEEV).  Z is the exact
 !! Jacobian of the chart right-hand side (see jacobian_z).
+!!
+!! By default (SENS_FORWARD) H is the orbit's forward sensitivity to its initial state,
+!! the integrator's staggered direct method (ode_system's sens_init): at each step's
+!! converged point Z, computed once, solves the step's formula for H, and H takes part in
+!! the error control (the orbit alone would set steps too long for the motions about it).  With SENS_DIFFERENCES (&integration sensitivities =
+!! 'differences') the orbit and H are one system of 110 equations under the error control,
+!! Z evaluated at every right-hand side (variational_t), as before.
 module floquet
     use kinds, only: dp, pi, deg
     use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC, ERR_MODEL
@@ -18,8 +25,8 @@ module floquet
     use geometry, only: pendulum_t
     use start_pose, only: raised_angles, solve_theta5
     use bifilar_model, only: chart_accelerations, chart_state, chart_energy, chart_constraint, &
-                             chart_jacobian, NSTATE
-    use integrators, only: new_integrator, SOLVER_LSODA
+                             chart_jacobian, NSTATE, bifilar_t
+    use integrators, only: new_integrator, SOLVER_LSODA, SENS_FORWARD, SENS_DIFFERENCES
     use lapack_wrap, only: la_eig, la_geig, la_lu_factor, la_lu_solve, la_lu_solve_many
     implicit none
     private
@@ -298,7 +305,7 @@ contains
     !! integrated and the reversibility of the equations gives the other half (see below);
     !! `full = .true.` integrates the whole period.
     subroutine monodromy(p, y0, period, nseg, rtol, h, yend, nsteps, nrhs, stat, full, half, &
-                         yhalf, method)
+                         yhalf, method, sensitivities)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         real(dp), intent(in) :: y0(NSTATE)      !! start of the orbit: a turning point, at rest
         real(dp), intent(in) :: period          !! t*
@@ -313,15 +320,21 @@ contains
         real(dp), intent(out), optional :: half(NSTATE, NSTATE)  !! H(t*/2) (half-period path)
         real(dp), intent(out), optional :: yhalf(NSTATE)         !! y(t*/2) (half-period path)
         integer, intent(in), optional :: method  !! SOLVER_LSODA (default) or SOLVER_RADAU
+        !> SENS_FORWARD (default): H as the orbit's forward sensitivities; SENS_DIFFERENCES:
+        !! the orbit and H as one system under the error control
+        integer, intent(in), optional :: sensitivities
         type(variational_t) :: sys
+        type(bifilar_t) :: orbit
         class(integrator_t), allocatable :: s
         type(integrator_stats_t) :: st
         real(dp) :: y(NV), eye(NSTATE, NSTATE), t0, t1, tend, lu(NSTATE, NSTATE), x(NSTATE)
-        real(dp) :: rr(NSTATE), hinv(NSTATE, NSTATE)
+        real(dp) :: rr(NSTATE), hinv(NSTATE, NSTATE), seg(NSTATE, NSTATE)
         integer :: k, j, ipiv(NSTATE)
-        logical :: whole
+        logical :: whole, forward
         whole = .false.
         if (present(full)) whole = full
+        forward = .true.
+        if (present(sensitivities)) forward = sensitivities /= SENS_DIFFERENCES
         if (present(method)) then
             call new_integrator(method, s)
         else
@@ -330,6 +343,7 @@ contains
         tend = period
         if (.not. whole) tend = 0.5_dp*period
         sys%p = p
+        orbit%p = p
         eye = 0.0_dp
         do j = 1, NSTATE
             eye(j, j) = 1.0_dp
@@ -341,16 +355,35 @@ contains
         do k = 1, nseg
             t0 = tend*(k - 1)/nseg
             t1 = tend*k/nseg
-            y(NSTATE + 1:NV) = reshape(eye, [NSTATE*NSTATE])
-            call s%init(sys, t0, y, rtol, [rtol*1.0e-2_dp], stat, tcrit=t1, &
-                        max_steps=FLOQUET_MAX_STEPS)
-            if (stat%code /= 0) return
-            call s%integrate(sys, t1, y, stat)
-            st = s%stats()
-            nsteps = nsteps + st%steps
-            nrhs = nrhs + st%rhs_evals
-            if (stat%code /= 0) return
-            h = matmul(reshape(y(NSTATE + 1:NV), [NSTATE, NSTATE]), h)
+            if (forward) then
+                ! the orbit with its sensitivities to its state at t0 (H = I there), in the
+                ! error control: the orbit is smoother than the motions about it that H
+                ! follows, and its steps alone leave H a hundred times less accurate
+                call s%init(orbit, t0, y(1:NSTATE), rtol, [rtol*1.0e-2_dp], stat, tcrit=t1, &
+                            max_steps=FLOQUET_MAX_STEPS)
+                if (stat%code /= 0) return
+                call s%sens_init(orbit, eye, stat, error_control=.true.)
+                if (stat%code /= 0) return
+                call s%integrate(orbit, t1, y(1:NSTATE), stat)
+                st = s%stats()
+                nsteps = nsteps + st%steps
+                nrhs = nrhs + st%rhs_evals
+                if (stat%code /= 0) return
+                call s%sens_dense(t1, 0, seg, stat)
+                if (stat%code /= 0) return
+            else
+                y(NSTATE + 1:NV) = reshape(eye, [NSTATE*NSTATE])
+                call s%init(sys, t0, y, rtol, [rtol*1.0e-2_dp], stat, tcrit=t1, &
+                            max_steps=FLOQUET_MAX_STEPS)
+                if (stat%code /= 0) return
+                call s%integrate(sys, t1, y, stat)
+                st = s%stats()
+                nsteps = nsteps + st%steps
+                nrhs = nrhs + st%rhs_evals
+                if (stat%code /= 0) return
+                seg = reshape(y(NSTATE + 1:NV), [NSTATE, NSTATE])
+            end if
+            h = matmul(seg, h)
         end do
         yend = y(1:NSTATE)
         if (whole) return
@@ -391,7 +424,7 @@ contains
     !! H f = f,  grad(E)^T H = grad(E)^T (on the constraint's tangent space, where energy is
     !! conserved),  grad(G')^T H = grad(G')^T,  grad(G)^T H = grad(G)^T + t* grad(G')^T
     !! (largest residual, relative to the vector and to max(1, |H|_F), in res%trivial_residual).
-    subroutine floquet_analysis(p_in, amp, rtol, nseg, res, stat, method)
+    subroutine floquet_analysis(p_in, amp, rtol, nseg, res, stat, method, sensitivities)
         type(pendulum_t), intent(in) :: p_in    !! scaled parameters (a torsion scene)
         real(dp), intent(in) :: amp             !! amplitude of theta4 (rad)
         real(dp), intent(in) :: rtol            !! integrator tolerance
@@ -399,6 +432,8 @@ contains
         type(floquet_result_t), intent(out) :: res
         type(status_t), intent(out) :: stat     !! ERR_DECK (scene), ERR_NUMERIC
         integer, intent(in), optional :: method !! SOLVER_LSODA (default) or SOLVER_RADAU
+        integer, intent(in), optional :: sensitivities  !! SENS_FORWARD (default) or
+                                                        !! SENS_DIFFERENCES (monodromy)
         type(pendulum_t) :: p
         real(dp) :: y0(NSTATE), yend(NSTATE), h(NSTATE, NSTATE), hh(NSTATE, NSTATE)
         real(dp) :: yh(NSTATE)
@@ -412,7 +447,8 @@ contains
         call torsion_start(p, amp, y0, stat)
         if (stat%code /= 0) return
         call monodromy(p, y0, res%period, nseg, rtol, h, yend, res%steps, &
-                       res%rhs_evaluations, stat, half=hh, yhalf=yh, method=method)
+                       res%rhs_evaluations, stat, half=hh, yhalf=yh, method=method, &
+                       sensitivities=sensitivities)
         if (stat%code /= 0) return
         res%orbit_closure = maxval(abs(yend - y0))
         call multipliers_from_monodromy(p, y0, res%period, h, res, stat)
@@ -622,7 +658,7 @@ contains
     !! analysis is possible (impossible inertia, not a torsion scene, the cables cannot reach
     !! the raised position), CHART_FAILED where the analysis failed (e.g. more than
     !! FLOQUET_MAX_STEPS steps).  Never stops, never NaN.
-    subroutine floquet_point(p, amp_deg, rtol, nseg, modulus, period, method)
+    subroutine floquet_point(p, amp_deg, rtol, nseg, modulus, period, method, sensitivities)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         real(dp), intent(in) :: amp_deg         !! torsion amplitude (degrees)
         real(dp), intent(in) :: rtol            !! integrator tolerance
@@ -630,6 +666,8 @@ contains
         real(dp), intent(out) :: modulus        !! largest |multiplier| (or a sentinel)
         real(dp), intent(out) :: period         !! t* in units of tau (or a sentinel)
         integer, intent(in), optional :: method !! SOLVER_LSODA (default) or SOLVER_RADAU
+        integer, intent(in), optional :: sensitivities  !! SENS_FORWARD (default) or
+                                                        !! SENS_DIFFERENCES (monodromy)
         type(floquet_result_t) :: res
         type(status_t) :: st
         integer :: ivert
@@ -642,7 +680,7 @@ contains
         if (.not. valid) return
         call check_torsion_scene(p, ivert, st)
         if (st%code /= 0) return
-        call floquet_analysis(p, amp_deg*deg, rtol, nseg, res, st, method)
+        call floquet_analysis(p, amp_deg*deg, rtol, nseg, res, st, method, sensitivities)
         if (st%code == 0) then
             modulus = res%max_modulus
             period = res%period

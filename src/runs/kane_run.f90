@@ -10,7 +10,7 @@ module kane_run
     use text, only: sci, fixed
     use geometry, only: pendulum_t
     use bifilar_model, only: bifilar_t, motion_t, paper_angles, chart_positions, &
-                             step_tensions, NSTATE
+                             step_tensions, NSTATE, sens_dir_t
     use ode_system, only: integrator_t, integrator_stats_t, too_much_accuracy
     use integrators, only: new_integrator
     use run_loop, only: stepped_model_t
@@ -28,9 +28,11 @@ module kane_run
         real(dp) :: t_prev = 0.0_dp             !! last time checked valid
         real(dp) :: t_end = 0.0_dp              !! end of the run (tcrit)
         real(dp) :: rtol = 0.0_dp, atol = 0.0_dp    !! the tolerances (for messages)
+        real(dp), allocatable :: s0(:, :)       !! forward sensitivities at the start, if any
     contains
         procedure :: advance => kane_advance
         procedure :: dense => kane_dense
+        procedure :: sens_at => kane_sens_at
     end type kane_run_t
 
     public :: kane_run_start, model_checks, tighter_rtol, angle_difference, sway_of
@@ -47,7 +49,11 @@ contains
     !! state y0 at tau = 0, by the integrator `method` with tolerances rtol, atol, no step
     !! past t_end; th3 the start's theta_3 (branch of the paper's angles in messages).
     !! The validity of the model is checked at the end of every step (check_validity).
-    subroutine kane_run_start(m, p, y0, th3, rtol, atol, method, t_end, remedy, stat)
+    !! With s0 the run carries forward sensitivities (the integrator's sens_init): column k
+    !! starts at s0(:, k) and follows the parameter direction dirs(k) (sens_dir_t; IC only
+    !! beyond size(dirs)), scale(k) its size against the state's; sens_at gives them.
+    subroutine kane_run_start(m, p, y0, th3, rtol, atol, method, t_end, remedy, stat, s0, &
+                              dirs, scale)
         type(kane_run_t), intent(out) :: m      !! the run
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         real(dp), intent(in) :: y0(NSTATE)      !! chart state at tau = 0
@@ -57,6 +63,9 @@ contains
         real(dp), intent(in) :: t_end           !! end of the run (tau), tcrit
         character(len=*), intent(in) :: remedy  !! what to change when a row takes too long
         type(status_t), intent(out) :: stat     !! the integrator's init
+        real(dp), intent(in), optional :: s0(:, :)          !! (NSTATE, ns) at tau = 0
+        type(sens_dir_t), intent(in), optional :: dirs(:)   !! their parameter directions
+        real(dp), intent(in), optional :: scale(:)          !! (ns) their sizes
         m%sys%p = p
         m%sys%keep_tensions = .true.            ! for check_validity
         m%y0 = y0
@@ -70,7 +79,26 @@ contains
         m%remedy = remedy
         call new_integrator(method, m%solver)
         call m%solver%init(m%sys, 0.0_dp, y0, rtol, [atol], stat, tcrit=t_end)
+        if (stat%code /= 0 .or. .not. present(s0)) return
+        if (present(dirs)) m%sys%dirs = dirs
+        m%s0 = s0
+        call m%solver%sens_init(m%sys, s0, stat, scale=scale)
     end subroutine kane_run_start
+
+    !> The forward sensitivities at t (as state_at: the start before any step, the step's
+    !! end at or after it, the dense output inside the last step).
+    subroutine kane_sens_at(m, t, s, stat)
+        class(kane_run_t), intent(in) :: m
+        real(dp), intent(in) :: t
+        real(dp), intent(out) :: s(:, :)        !! (NSTATE, ns)
+        type(status_t), intent(out) :: stat
+        stat%code = 0
+        if (m%nsteps == 0) then
+            s = m%s0
+        else
+            call m%solver%sens_dense(min(t, m%t_cur), 0, s, stat)
+        end if
+    end subroutine kane_sens_at
 
     !> One step of the paper's model: an integrator failure explained (singular coordinates
     !! named, too much accuracy asked), the model checked at the step's end.

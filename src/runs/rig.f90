@@ -14,7 +14,7 @@ module rig
     use geometry, only: pendulum_t, beta_coeffs
     use start_pose, only: raised_angles, solve_theta5
     use bifilar_model, only: chart_state, NSTATE
-    use integrators, only: integrator_for, SOLVER_LSODA
+    use integrators, only: integrator_for, SOLVER_LSODA, SENS_FORWARD, sensitivities_for
     implicit none
     private
 
@@ -49,11 +49,12 @@ module rig
         real(dp) :: theta_dot(4) = 0.0_dp       !! rad per unit tau (mode 'angles')
     end type start_t
 
-    !> How accurately a rig's runs are integrated: &integration rtol, atol and the
-    !! integrator (module integrators).
+    !> How accurately a rig's runs are integrated: &integration rtol, atol, the integrator
+    !! and how derivatives of runs are taken (module integrators).
     type, public :: accuracy_t
         real(dp) :: rtol = 1.0e-10_dp, atol = 1.0e-12_dp
         integer :: method = SOLVER_LSODA
+        integer :: sensitivities = SENS_FORWARD     !! SENS_FORWARD or SENS_DIFFERENCES
     end type accuracy_t
 
     public :: rig_of, start_of, raised_start, method_of, accuracy_of, make_pendulum
@@ -108,13 +109,14 @@ contains
         method_of = integrator_for(d%method, d%model)
     end function method_of
 
-    !> The accuracy of a deck's runs (&integration rtol, atol, method).
+    !> The accuracy of a deck's runs (&integration rtol, atol, method, sensitivities).
     pure function accuracy_of(d) result(acc)
         type(deck_t), intent(in) :: d           !! the deck
         type(accuracy_t) :: acc
         acc%rtol = d%rtol
         acc%atol = d%atol
         acc%method = method_of(d)
+        acc%sensitivities = sensitivities_for(d%sensitivities)
     end function accuracy_of
 
     !> Scaled pendulum parameters of a rig (lengths over b', inertia over m b'^2, damping in
