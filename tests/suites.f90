@@ -29,6 +29,7 @@ module suites
     use test_graph, only: run_graph_tests
     use test_stats, only: run_stats_tests
     use test_measure, only: run_measure_tests
+    use test_sensitivities, only: run_sensitivities_tests
     implicit none
     private
 
@@ -100,6 +101,8 @@ contains
                     'record fits, examples', run_identify_tests), &
             suite_t('measure', 'measurement as done: instrument files, releases pooled, '// &
                     'traps, tare, trifilar', run_measure_tests), &
+            suite_t('sensitivities', 'forward sensitivities: exact, against differences of '// &
+                    'runs, fits, monodromies', run_sensitivities_tests), &
             suite_t('stats', 'Student''s t, chi-square tails, Welch-Satterthwaite, weighted '// &
                     'means', run_stats_tests), &
             suite_t('graph', 'the module graph (layers, analyses apart, at most 8 floors); '// &

@@ -167,7 +167,7 @@ contains
         call make_pendulum(candidate_rig(dr%rg, l, b, bp), p, st)
         if (st%code /= STATUS_OK) return
         call floquet_point(p, amp_deg, dr%fq_rtol, dr%fq_segments, modulus, period, &
-                           dr%acc%method)
+                           dr%acc%method, dr%acc%sensitivities)
     end procedure candidate_modulus
 
     !> Stable by the design's criterion: a real modulus (no sentinel) <= 1 + tolerance.

@@ -29,6 +29,8 @@ module stability
         real(dp) :: rtol = 0.0_dp               !! &floquet rtol
         integer :: segments = 1                 !! &floquet segments
         integer :: method = 1                   !! the integrator (module integrators)
+        !> the monodromy's way (module integrators: SENS_FORWARD, SENS_DIFFERENCES)
+        integer :: sensitivities = 1
     contains
         procedure :: compute => chart_point
     end type chart_task_t

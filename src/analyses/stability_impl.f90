@@ -6,6 +6,7 @@ submodule (stability) stability_impl
     use geometry, only: pendulum_t
     use deck, only: deck_t, deck_echo
     use rig, only: rig_of, make_pendulum, method_of
+    use integrators, only: sensitivities_for
     use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, floquet_point, &
                        CHART_FAILED, &
                        FLOQUET_MAX_STEPS
@@ -49,7 +50,7 @@ contains
         if (stat%code /= 0) return
         call cpu_time(t0)
         call floquet_analysis(p, d%floquet_amplitude*deg, d%floquet_rtol, d%floquet_segments, &
-                              res, stat, method_of(d))
+                              res, stat, method_of(d), sensitivities_for(d%sensitivities))
         call cpu_time(t1)
         if (stat%code /= 0) then
             call explain_budget(stat)
@@ -136,6 +137,7 @@ contains
         task%rtol = d%floquet_rtol
         task%segments = d%floquet_segments
         task%method = method_of(d)
+        task%sensitivities = sensitivities_for(d%sensitivities)
     end procedure chart_task
 
     !> Chart point k: values = [max_modulus, period] (sentinels, see floquet_point).  Never
@@ -151,7 +153,8 @@ contains
         amp = self%amplitude
         call set_chart_variable(self%x, self%xs(ix), p, amp)
         call set_chart_variable(self%y, self%ys(iy), p, amp)
-        call floquet_point(p, amp, self%rtol, self%segments, values(1), values(2), self%method)
+        call floquet_point(p, amp, self%rtol, self%segments, values(1), values(2), self%method, &
+                           self%sensitivities)
     end procedure chart_point
 
     !> Stability chart over the grid of &chart: OUTDIR/NAME.chart.dat with one row per point,

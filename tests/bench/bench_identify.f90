@@ -10,6 +10,9 @@
 !!   bench_identify record N        the fit of input/identify_record_swing.dat (30 s, 100 Hz,
 !!                                  3001 samples) with three parameters, I1 c_v c_q, and its
 !!                                  first-order budget (identify_record)
+!!   bench_identify record_differences N  the same with &integration sensitivities =
+!!                                  'differences' (the Jacobian and the budget's input
+!!                                  sensitivities from differences of whole runs)
 !!   bench_identify mc N            N Monte Carlo samples from the periods of
 !!                                  input/identify_periods.nml (one unit = one sample; OpenMP
 !!                                  threads as set, OMP_NUM_THREADS)
@@ -64,9 +67,10 @@ program bench_identify
             end do
         end if
         call cpu_time(t1)
-    case ('record')
+    case ('record', 'record_differences')
         call read_deck('input/identify_record.nml', d, st)
         call need(st, 'bench_identify')
+        if (trim(mode) == 'record_differences') d%sensitivities = 'differences'
         d%estimate = 'I1 c_v c_q'
         d%monte_carlo = 0
         call read_record(d, rec, st)
@@ -79,7 +83,7 @@ program bench_identify
         end do
         call cpu_time(t1)
     case default
-        write (*, '(a)') 'usage: bench_identify periods|periods_asym|record|mc N'
+        write (*, '(a)') 'usage: bench_identify periods|periods_asym|record|record_differences|mc N'
         stop 1
     end select
     write (*, '(a,1x,i0,es14.5,es24.15)') trim(mode), units, (t1 - t0)/max(1, units), sumck

@@ -9,6 +9,10 @@
 !!   bench_speed chart N              one stability-chart point: the mean over the 6 x 5 grid
 !!                                    l = 0.5 ... 8, amplitude 2 ... 90 deg of input/box_chart.nml
 !!                                    (the box hung from its top edges), rtol 1e-8, one thread
+!!   bench_speed floquet_differences DECK N, chart_differences N
+!!                                    the same with the monodromy of &integration
+!!                                    sensitivities = 'differences' (the variational equations
+!!                                    integrated with the orbit as one system)
 !!
 !! Prints one line: `MODE units cpu_seconds_per_unit checksum` (the checksum keeps the work
 !! from being optimised away and shows that two builds computed the same).
@@ -22,6 +26,7 @@ program bench_speed
     use bifilar_model, only: bifilar_t, NSTATE
     use floquet, only: floquet_result_t, floquet_analysis
     use stability, only: set_chart_variable
+    use integrators, only: SENS_FORWARD, SENS_DIFFERENCES
     implicit none
     character(len=256) :: mode, arg
     type(deck_t) :: d
@@ -30,8 +35,16 @@ program bench_speed
     type(floquet_result_t) :: fr
     type(pendulum_t) :: p
     real(dp) :: y0(NSTATE), y(NSTATE), ydot(NSTATE), th0(5), t0, t1, sumck, amp
-    integer :: n, k, i, j, units
+    integer :: n, k, i, j, units, sens, ls
     call get_command_argument(1, mode)
+    sens = SENS_FORWARD
+    ls = len_trim(mode)
+    if (ls > 12) then
+        if (mode(ls - 11:ls) == '_differences') then
+            sens = SENS_DIFFERENCES
+            mode = mode(1:ls - 12)
+        end if
+    end if
     sumck = 0.0_dp
     units = 0
     select case (trim(mode))
@@ -62,7 +75,7 @@ program bench_speed
         call need(st, 'bench_speed')
         call cpu_time(t0)
         do k = 1, n
-            call floquet_analysis(p, 45*deg, 1.0e-10_dp, 1, fr, st)
+            call floquet_analysis(p, 45*deg, 1.0e-10_dp, 1, fr, st, sensitivities=sens)
             call need(st, 'bench_speed')
             sumck = sumck + fr%max_modulus
         end do
@@ -80,7 +93,8 @@ program bench_speed
                     amp = d%floquet_amplitude
                     call set_chart_variable('l', 0.5_dp + 1.5_dp*(i - 1), p, amp)
                     call set_chart_variable('amplitude', 2.0_dp + 22.0_dp*(j - 1), p, amp)
-                    call floquet_analysis(p, amp*deg, 1.0e-8_dp, 1, fr, st)
+                    call floquet_analysis(p, amp*deg, 1.0e-8_dp, 1, fr, st, &
+                                           sensitivities=sens)
                     if (st%code == 0) sumck = sumck + fr%max_modulus
                 end do
             end do
@@ -88,7 +102,8 @@ program bench_speed
         call cpu_time(t1)
         units = 30*n
     case default
-        write (*, '(a)') 'usage: bench_speed rhs N | floquet DECK N | chart N'
+        write (*, '(a)') 'usage: bench_speed rhs N | floquet[_differences] DECK N | '// &
+            'chart[_differences] N'
         stop 1
     end select
     write (*, '(a,1x,i0,es14.5,es24.15)') trim(mode), units, (t1 - t0)/max(1, units), sumck

@@ -1,0 +1,374 @@
+!> Tests of the forward sensitivities (issue 23): the integrators' staggered direct method
+!! against an exact solution, the record model's derivatives against differences of whole
+!! runs (every fit parameter and some budget inputs, symmetric and asymmetric rig, small and
+!! large amplitude, LSODA and Radau), a record fit and its budget by sensitivities against
+!! the same by differences of runs, and the monodromy as the orbit's sensitivities against
+!! the variational equations integrated with the orbit.
+module test_sensitivities
+    use kinds, only: dp, deg
+    use status, only: status_t
+    use testing, only: tester_t, msg_of_ => msg_of
+    use ode_system, only: ode_system_t, integrator_t, default_sens_point
+    use integrators, only: new_integrator, SOLVER_LSODA, SOLVER_RADAU, SENS_FORWARD, &
+                           SENS_DIFFERENCES
+    use deck, only: deck_t, read_deck
+    use rig, only: rig_t, start_t, accuracy_t, rig_of, start_of, accuracy_of, make_pendulum
+    use inputs, only: set_input, input_value
+    use record_fit, only: record_model, record_model_sens
+    use records, only: record_t, read_record
+    use identify, only: identify_result_t, identify_record
+    use geometry, only: pendulum_t
+    use floquet, only: floquet_result_t, floquet_analysis
+    implicit none
+    private
+
+    public :: run_sensitivities_tests
+
+    !> A harmonic oscillator y1' = y2, y2' = -k y1 and a stiff component
+    !! y3' = -lam (y3 - cos t): sensitivities to k and lam with exact solutions.
+    type, extends(ode_system_t) :: osc_t
+        real(dp) :: k = 4.0_dp, lam = 1.0e4_dp
+    contains
+        procedure :: rhs => osc_rhs
+        procedure :: jacobian => osc_jacobian
+        procedure :: has_jacobian => osc_has_jacobian
+        procedure :: sens_point => osc_sens_point
+    end type osc_t
+
+contains
+
+    subroutine run_sensitivities_tests(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        if (.false.) write (*, '(a)') exe
+        if (t%want('sensitivities: integrators against an exact solution')) call test_exact(t)
+        if (t%want('sensitivities: the record model against differences of whole runs')) &
+            call test_record_model(t)
+        if (t%want('sensitivities: a record fit and its budget, forward = differences')) &
+            call test_fit(t)
+        if (t%want('sensitivities: monodromy, forward = variational system')) &
+            call test_monodromy(t)
+    end subroutine run_sensitivities_tests
+
+    ! ---- the oscillator
+
+    subroutine osc_rhs(sys, t, y, ydot, stat)
+        class(osc_t), intent(inout) :: sys
+        real(dp), intent(in) :: t, y(:)
+        real(dp), intent(out) :: ydot(:)
+        type(status_t), intent(out) :: stat
+        stat%code = 0
+        ydot = [y(2), -sys%k*y(1), -sys%lam*(y(3) - cos(t))]
+    end subroutine osc_rhs
+
+    subroutine osc_jacobian(sys, t, y, jac, stat)
+        class(osc_t), intent(inout) :: sys
+        real(dp), intent(in) :: t, y(:)
+        real(dp), intent(out) :: jac(:, :)
+        type(status_t), intent(out) :: stat
+        stat%code = 0
+        if (.false.) jac(1, 1) = t + y(1)
+        jac = 0.0_dp
+        jac(1, 2) = 1.0_dp
+        jac(2, 1) = -sys%k
+        jac(3, 3) = -sys%lam
+    end subroutine osc_jacobian
+
+    logical function osc_has_jacobian(sys)
+        class(osc_t), intent(in) :: sys
+        osc_has_jacobian = sys%k > 0.0_dp
+    end function osc_has_jacobian
+
+    !> df/dk and df/dlam, the Jacobian from ode_system's default.
+    subroutine osc_sens_point(sys, t, y, dfdp, stat)
+        class(osc_t), intent(inout) :: sys
+        real(dp), intent(in) :: t, y(:)
+        real(dp), intent(out) :: dfdp(:, :)
+        type(status_t), intent(out) :: stat
+        call default_sens_point(sys, t, y, dfdp, stat)
+        if (stat%code /= 0) return
+        dfdp(:, 1) = [0.0_dp, -y(1), 0.0_dp]
+        dfdp(:, 2) = [0.0_dp, 0.0_dp, -(y(3) - cos(t))]
+    end subroutine osc_sens_point
+
+    !> Both integrators (LSODA through its non-stiff and stiff phases), the sensitivities in
+    !! and out of the error control, against the exact dy/dk and dy/dlam at t = 10, and the
+    !! dense output inside the last step against the exact ones there.
+    subroutine test_exact(t)
+        type(tester_t), intent(inout) :: t
+        type(osc_t) :: sys
+        class(integrator_t), allocatable :: s
+        type(status_t) :: st
+        real(dp) :: y(3), s0(3, 2), sv(3, 2), ex(3, 2), a, ap, bp, w, tend, tm, err
+        integer :: im, ie
+        character(len=40) :: label
+        w = sqrt(sys%k)
+        a = sys%lam**2/(sys%lam**2 + 1.0_dp)
+        ap = 2.0_dp*sys%lam/(sys%lam**2 + 1.0_dp)**2
+        bp = (1.0_dp - sys%lam**2)/(sys%lam**2 + 1.0_dp)**2
+        tend = 10.0_dp
+        do im = 1, 2
+            do ie = 0, 1
+                write (label, '(a,a,l1)') trim(merge('lsoda', 'radau', im == 1)), &
+                    ' error_control=', ie == 1
+                call new_integrator(merge(SOLVER_LSODA, SOLVER_RADAU, im == 1), s)
+                y = [1.0_dp, 0.0_dp, a]
+                call s%init(sys, 0.0_dp, y, 1.0e-10_dp, [1.0e-12_dp], st)
+                call t%check('sensitivities: init '//trim(label)//msg_of(st), st%code == 0)
+                s0 = 0.0_dp
+                s0(3, 2) = ap
+                call s%sens_init(sys, s0, st, error_control=ie == 1)
+                call t%check('sensitivities: sens_init '//trim(label)//msg_of(st), st%code == 0)
+                call s%integrate(sys, tend, y, st)
+                call t%check('sensitivities: integrate '//trim(label)//msg_of(st), st%code == 0)
+                if (st%code /= 0) cycle
+                call s%sens_dense(tend, 0, sv, st)
+                ex = exact(tend)
+                err = maxval(abs(sv - ex))/maxval(abs(ex))
+                call t%check_close('sensitivities: exact at t = 10, '//trim(label), &
+                                   1.0_dp + err, 1.0_dp, 1.0e-6_dp)
+                ! inside the last step
+                tm = tend - 0.5_dp*s%stats()%h_last
+                call s%sens_dense(tm, 0, sv, st)
+                ex = exact(tm)
+                err = maxval(abs(sv - ex))/maxval(abs(ex))
+                call t%check_close('sensitivities: dense output, '//trim(label), &
+                                   1.0_dp + err, 1.0_dp, 1.0e-5_dp)
+                ! out of place: a wrong shape is refused
+                block
+                    real(dp) :: bad(3, 3)
+                    call s%sens_dense(tend, 0, bad, st)
+                    call t%check('sensitivities: a wrong shape refused, '//trim(label), &
+                                 st%code /= 0)
+                end block
+            end do
+        end do
+    contains
+        function exact(tt) result(e)
+            real(dp), intent(in) :: tt
+            real(dp) :: e(3, 2)
+            e = 0.0_dp
+            e(1, 1) = -tt*sin(w*tt)/(2.0_dp*w)
+            e(2, 1) = -(sin(w*tt) + w*tt*cos(w*tt))/(2.0_dp*w)
+            e(3, 2) = ap*cos(tt) + bp*sin(tt) - ap*exp(-sys%lam*tt)
+        end function exact
+    end subroutine test_exact
+
+    !> record_model_sens's derivatives of the model at the samples against central
+    !! differences of record_model, for the fit's parameters (I1, c_v, c_q, amplitude, t0)
+    !! and inputs of the budget (l, b_prime, mass, lambda): the identify_record rig
+    !! (unequal cables, offset mass centre) and a symmetric one, 5 and 60 degrees, LSODA and
+    !! Radau, the angle on the symmetric rig and the rate on the other.
+    subroutine test_record_model(t)
+        type(tester_t), intent(inout) :: t
+        character(len=16), parameter :: names(9) = [character(len=16) :: 'I1', 'c_v', 'c_q', &
+            'amplitude', 't0', 'l', 'b_prime', 'mass', 'lambda']
+        integer, parameter :: NT = 61
+        type(deck_t) :: d
+        type(status_t) :: st
+        type(rig_t) :: rg, r2
+        type(start_t) :: s1, s2
+        type(accuracy_t) :: acc
+        real(dp) :: ts(NT), xs(size(names)), vals(NT), dv(NT, size(names)), vp(NT), vm(NT)
+        real(dp) :: t0, h, fd(NT), err, worst
+        integer :: isym, iamp, im, c, i
+        logical :: rate
+        character(len=60) :: label
+        call read_deck('input/identify_record.nml', d, st)
+        call t%check('sensitivities: the deck'//msg_of(st), st%code == 0)
+        if (st%code /= 0) return
+        do i = 1, NT
+            ts(i) = 0.05_dp*(i - 1)
+        end do
+        t0 = 0.3123_dp
+        do isym = 1, 2
+            do iamp = 1, 2
+                do im = 1, 2
+                    rg = rig_of(d)
+                    rg%c_v = 2.0e-4_dp
+                    rg%c_q = 5.0e-4_dp
+                    if (isym == 1) then
+                        rg%l_prime = rg%l
+                        rg%lambda = atan(0.75_dp)
+                    end if
+                    rate = isym == 2
+                    s1 = start_of(d)
+                    s1%amplitude = merge(5.0_dp, 60.0_dp, iamp == 1)
+                    acc = accuracy_of(d)
+                    acc%rtol = 1.0e-10_dp
+                    acc%method = merge(SOLVER_LSODA, SOLVER_RADAU, im == 1)
+                    write (label, '(a,a,i0,a,a)') trim(merge('symmetric ', 'asymmetric', &
+                        isym == 1)), ', ', nint(s1%amplitude), ' deg, ', &
+                        trim(merge('lsoda', 'radau', im == 1))
+                    do c = 1, size(names)
+                        xs(c) = abs(value_of(rg, s1, t0, names(c)))
+                    end do
+                    call record_model_sens(rg, s1, acc, ts, t0, rate, names, xs, vals, dv, st)
+                    call t%check('sensitivities: run, '//trim(label)//msg_of(st), st%code == 0)
+                    if (st%code /= 0) cycle
+                    worst = 0.0_dp
+                    do c = 1, size(names)
+                        h = 1.0e-4_dp*xs(c)
+                        call moved(names(c), h, r2, s2, t0, vp)
+                        if (st%code /= 0) exit
+                        call moved(names(c), -h, r2, s2, t0, vm)
+                        if (st%code /= 0) exit
+                        fd = (vp - vm)/(2.0_dp*h)
+                        err = maxval(abs(dv(:, c) - fd))/max(maxval(abs(fd)), tiny(1.0_dp))
+                        call t%check_close('sensitivities: d model/d '//trim(names(c))//', '// &
+                                           trim(label), 1.0_dp + err, 1.0_dp, 2.0e-5_dp)
+                        ! the column is not trivially small
+                        call t%check('sensitivities: d model/d '//trim(names(c))// &
+                                     ' not zero, '//trim(label), maxval(abs(fd)) > 0.0_dp)
+                        worst = max(worst, err)
+                    end do
+                    call t%check('sensitivities: the differences ran, '//trim(label)// &
+                                 msg_of(st), st%code == 0)
+                end do
+            end do
+        end do
+    contains
+        real(dp) function value_of(r, s, tr, name) result(v)
+            type(rig_t), intent(in) :: r
+            type(start_t), intent(in) :: s
+            real(dp), intent(in) :: tr
+            character(len=*), intent(in) :: name
+            select case (trim(name))
+            case ('I1')
+                v = r%inertia(1)
+            case ('c_v')
+                v = r%c_v
+            case ('c_q')
+                v = r%c_q
+            case ('t0')
+                v = tr
+            case default
+                v = input_value(r, s, name)
+            end select
+        end function value_of
+        !> The model with quantity `name` moved by dx.
+        subroutine moved(name, dx, r, s, tr, v)
+            character(len=*), intent(in) :: name
+            real(dp), intent(in) :: dx
+            type(rig_t), intent(out) :: r
+            type(start_t), intent(out) :: s
+            real(dp), intent(in) :: tr
+            real(dp), intent(out) :: v(:)
+            real(dp) :: tt
+            r = rg
+            s = s1
+            tt = tr
+            select case (trim(name))
+            case ('I1')
+                r%inertia(1) = r%inertia(1) + dx
+            case ('c_v')
+                r%c_v = r%c_v + dx
+            case ('c_q')
+                r%c_q = r%c_q + dx
+            case ('t0')
+                tt = tr + dx
+            case default
+                call set_input(r, s, name, input_value(rg, s1, name) + dx)
+            end select
+            call record_model(r, s, acc, ts, tt, rate, v, st)
+        end subroutine moved
+    end subroutine test_record_model
+
+    !> The first 10 s of input/identify_record_swing.dat fitted (I1, c_v, c_q) with its
+    !! first-order budget, by forward sensitivities and by differences of whole runs: I1, its
+    !! u and every row of the budget agree to 1e-6, and the forward fit evaluates the model
+    !! fewer times.
+    subroutine test_fit(t)
+        type(tester_t), intent(inout) :: t
+        type(deck_t) :: d
+        type(record_t) :: rec, part
+        type(status_t) :: st
+        type(identify_result_t) :: rf, rd
+        integer :: n, i
+        call read_deck('input/identify_record.nml', d, st)
+        if (st%code == 0) call read_record(d, rec, st)
+        call t%check('sensitivities: fit: the deck and record'//msg_of(st), st%code == 0)
+        if (st%code /= 0) return
+        d%estimate = 'I1 c_v c_q'
+        d%monte_carlo = 0
+        n = count(rec%t <= rec%t(1) + 10.0_dp)
+        part = rec
+        part%t = rec%t(1:n)
+        part%v = rec%v(1:n)
+        if (rec%has_u) part%u = rec%u(1:n)
+        d%sensitivities = 'forward'
+        call identify_record(d, part, rf, st)
+        call t%check('sensitivities: fit forward'//msg_of(st), st%code == 0)
+        if (st%code /= 0) return
+        d%sensitivities = 'differences'
+        call identify_record(d, part, rd, st)
+        call t%check('sensitivities: fit differences'//msg_of(st), st%code == 0)
+        if (st%code /= 0) return
+        call t%check_close('sensitivities: fit I1, forward = differences', rf%i1, rd%i1, &
+                           1.0e-6_dp)
+        call t%check_close('sensitivities: fit u(I1), forward = differences', rf%u_i1, &
+                           rd%u_i1, 1.0e-6_dp)
+        call t%check('sensitivities: fit, budgets of the same rows', &
+                     size(rf%budget) == size(rd%budget) .and. size(rf%budget) > 3)
+        if (size(rf%budget) /= size(rd%budget)) return
+        do i = 1, size(rf%budget)
+            if (rd%budget(i)%contribution == 0.0_dp .and. rf%budget(i)%contribution == 0.0_dp) &
+                cycle
+            call t%check_close('sensitivities: fit budget '//trim(rd%budget(i)%input)// &
+                               ', forward = differences', rf%budget(i)%sensitivity, &
+                               rd%budget(i)%sensitivity, 1.0e-6_dp)
+        end do
+        call t%check('sensitivities: the forward fit evaluates the model fewer times', &
+                     rf%evaluations < rd%evaluations)
+    end subroutine test_fit
+
+    !> The paper's parallelepipeds (box_stable, box_unstable) and the cylinder at 45 deg:
+    !! the multipliers from the orbit's forward sensitivities against those from the
+    !! variational equations integrated with the orbit, within 1e-8, with each integrator.
+    subroutine test_monodromy(t)
+        type(tester_t), intent(inout) :: t
+        character(len=*), parameter :: decks(3) = [character(len=20) :: 'box_stable', &
+            'box_unstable', 'cylinder_torsion']
+        type(deck_t) :: d
+        type(status_t) :: st, st2
+        type(pendulum_t) :: p
+        type(floquet_result_t) :: rf, rd
+        integer :: k, im
+        real(dp) :: err
+        character(len=60) :: label
+        do k = 1, size(decks)
+            call read_deck('input/'//trim(decks(k))//'.nml', d, st)
+            if (st%code == 0) call make_pendulum(rig_of(d), p, st)
+            call t%check('sensitivities: monodromy deck '//trim(decks(k))//msg_of(st), &
+                         st%code == 0)
+            if (st%code /= 0) cycle
+            p%stab_rate = 0.0_dp
+            do im = 1, 2
+                label = trim(decks(k))//', '//trim(merge('lsoda', 'radau', im == 1))
+                call floquet_analysis(p, 45*deg, 1.0e-10_dp, 1, rf, st, &
+                                      merge(SOLVER_LSODA, SOLVER_RADAU, im == 1), SENS_FORWARD)
+                call floquet_analysis(p, 45*deg, 1.0e-10_dp, 1, rd, st2, &
+                                      merge(SOLVER_LSODA, SOLVER_RADAU, im == 1), &
+                                      SENS_DIFFERENCES)
+                call t%check('sensitivities: monodromy runs, '//trim(label)//msg_of(st)// &
+                             msg_of(st2), st%code == 0 .and. st2%code == 0)
+                if (st%code /= 0 .or. st2%code /= 0) cycle
+                err = maxval(abs(rf%multipliers - rd%multipliers)/ &
+                             max(1.0_dp, abs(rd%multipliers)))
+                call t%check_close('sensitivities: multipliers, forward = variational, '// &
+                                   trim(label), 1.0_dp + err, 1.0_dp, 1.0e-8_dp)
+                call t%check_close('sensitivities: largest modulus, '//trim(label), &
+                                   rf%max_modulus, rd%max_modulus, 1.0e-8_dp)
+            end do
+        end do
+    end subroutine test_monodromy
+
+    !> ': the message' of a failed status, '' of a good one (for a check's label).
+    function msg_of(stat) result(m)
+        type(status_t), intent(in) :: stat
+        character(len=:), allocatable :: m
+        m = ''
+        if (stat%code /= 0) m = ': '//msg_of_(stat)
+    end function msg_of
+
+end module test_sensitivities
