@@ -1516,14 +1516,14 @@ contains
 
     !> The sensitivities' corrector at the step's converged point (tn, y): sacor with
     !!     (I - h l0 J) sacor = h (J zh1 + df/dp) - zh2
-    !! (zh predicted; J and df/dp exact at (tn, y)).  Out of the error control the system is
-    !! solved once with the step's iteration matrix: a BDF step's Newton matrix, or for an
-    !! Adams step the sensitivities' own I - h l0 J, kept by the Newton matrix's rules (a new
-    !! one every MSBP steps or when h l0 changed by more than CCMAX); the right-hand side is
-    !! exact, and the matrix's age changes sacor by h l0 (J - J_old) sacor, a fraction of the
-    !! step's own local error.  In the error control (sens_errcon) the system is solved to a
-    !! tenth of the state's convergence test, a BDF step by its chord iteration, an Adams
-    !! step by its functional iteration, a slow one ending in a direct solve.
+    !! (zh predicted; J and df/dp exact at (tn, y)), solved by a chord iteration whose
+    !! residuals use the exact J: a BDF step's iteration matrix is its Newton matrix, an Adams
+    !! step's the sensitivities' own I - h l0 J (kept by the Newton matrix's rules: a new one
+    !! every MSBP steps or when h l0 changed by more than CCMAX).  The iteration stops when a
+    !! correction is below SENS_CONV times the state's convergence test, in the
+    !! sensitivities' weights; one that contracts too slowly ends in a direct solve with
+    !! I - h l0 J factored at the point.  The sensitivities are thus the solution of the
+    !! step's formula to that tolerance whether or not they take part in the error test.
     subroutine sens_correct(s, sys, stat)
         type(lsoda_t), intent(inout) :: s
         class(ode_system_t), intent(inout) :: sys
@@ -1535,7 +1535,7 @@ contains
         call sys%sens_point(s%tn, s%y, s%sdfdp, stat)
         s%nsp = s%nsp + 1
         if (stat%code /= STATUS_OK) return
-        if (.not. s%sens_errcon .and. s%meth == METHOD_ADAMS) then
+        if (s%meth == METHOD_ADAMS) then
             ! the sensitivities' own matrix, first: its J makes the products below cheap
             if (.not. s%shave .or. s%nst >= s%snslp + MSBP .or. &
                 abs(hl0 - s%shl0) > CCMAX*abs(s%shl0)) then
@@ -1548,69 +1548,36 @@ contains
         if (stat%code /= STATUS_OK) return
         call copy_columns(s%zh(:, 2), d)
         b = s%h*(jv + s%sdfdp) - d
-        if (.not. s%sens_errcon) then
-            a = b
-            do k = 1, s%ns
-                if (s%meth == METHOD_ADAMS) then
-                    call la_small_lu_solve(s%sjm, s%spiv, a(:, k))
-                else if (s%structured) then
-                    call sys%solve_iteration(a(:, k), stat)
-                    if (stat%code /= STATUS_OK) return
-                else
-                    call la_small_lu_solve(s%wm, s%ipiv, a(:, k))
-                end if
-            end do
-            s%nsit = s%nsit + 1
-            call store_columns(a, s%sacor)
-            return
-        end if
         tol = SENS_CONV*s%tesco(2, s%nq, s%meth)*s%conit
         conv = .false.
         delp = 0.0_dp
-        if (s%meth == METHOD_ADAMS) then
-            ! the functional iteration a <- b + h l0 J a, from a = b
-            a = b
-            do m = 1, SENS_MAXIT
-                call sys%sens_jv(a, jv, stat)
-                if (stat%code /= STATUS_OK) return
-                s%nsit = s%nsit + 1
-                d = b + hl0*jv - a
-                a = a + d
-                del = snorm(d)
-                if (del <= tol) then
-                    conv = .true.
-                    exit
+        ! the chord iteration a <- a + P^-1 (b + h l0 J a - a), from a = 0
+        a = 0.0_dp
+        d = b
+        do m = 1, SENS_MAXIT
+            do k = 1, s%ns
+                if (s%meth == METHOD_ADAMS) then
+                    call la_small_lu_solve(s%sjm, s%spiv, d(:, k))
+                else if (s%structured) then
+                    call sys%solve_iteration(d(:, k), stat)
+                    if (stat%code /= STATUS_OK) return
+                else
+                    call la_small_lu_solve(s%wm, s%ipiv, d(:, k))
                 end if
-                if (m > 1 .and. del > 0.5_dp*delp) exit
-                delp = del
             end do
-        else
-            ! the chord iteration with the step's Newton matrix P: a <- a + P^-1 (b + h l0 J a - a)
-            a = 0.0_dp
-            d = b
-            do m = 1, SENS_MAXIT
-                do k = 1, s%ns
-                    if (s%structured) then
-                        call sys%solve_iteration(d(:, k), stat)
-                        if (stat%code /= STATUS_OK) return
-                    else
-                        call la_small_lu_solve(s%wm, s%ipiv, d(:, k))
-                    end if
-                end do
-                s%nsit = s%nsit + 1
-                a = a + d
-                del = snorm(d)
-                if (del <= tol) then
-                    conv = .true.
-                    exit
-                end if
-                if (m > 1 .and. del > 0.5_dp*delp) exit
-                delp = del
-                call sys%sens_jv(a, jv, stat)
-                if (stat%code /= STATUS_OK) return
-                d = b + hl0*jv - a
-            end do
-        end if
+            s%nsit = s%nsit + 1
+            a = a + d
+            del = snorm(d)
+            if (del <= tol) then
+                conv = .true.
+                exit
+            end if
+            if (m > 1 .and. del > 0.5_dp*delp) exit
+            delp = del
+            call sys%sens_jv(a, jv, stat)
+            if (stat%code /= STATUS_OK) return
+            d = b + hl0*jv - a
+        end do
         if (.not. conv) then
             ! a direct solve with I - h l0 J factored here
             call sens_matrix(s, sys, hl0, stat)
