@@ -71,7 +71,7 @@ module lsoda
     real(dp), parameter :: SWITCH_RATIO = 5.0_dp   !! cost ratio of a BDF to an Adams step
     integer, parameter :: DEFAULT_MAX_STEPS = 500000
     integer, parameter :: SENS_MAXIT = 4           !! sensitivity corrector iterations
-    real(dp), parameter :: SENS_CONV = 0.1_dp      !! their test: this part of the state's
+    real(dp), parameter :: SENS_CONV = 0.5_dp      !! their test: this part of the state's
 
     ! internal outcome of one call of take_step
     integer, parameter :: KF_OK = 0, KF_ERRTEST = -1, KF_CONV = -2, KF_SINGULAR = -3, &
@@ -128,6 +128,7 @@ module lsoda
         integer :: snslp = 0                   ! the step it was formed at
         logical :: shave = .false.             ! it is formed
         integer :: nsp = 0, nsit = 0, nsdir = 0
+        real(dp) :: scrate = 0.7_dp            ! their iteration's convergence rate
     contains
         procedure :: init => lsoda_init
         procedure :: integrate => lsoda_integrate
@@ -624,6 +625,7 @@ contains
         s%shl0 = 0.0_dp
         s%snslp = 0
         s%shave = .false.
+        s%scrate = 0.7_dp
         s%zh = 0.0_dp
         s%sacor = 0.0_dp
         do k = 1, ns
@@ -1519,10 +1521,11 @@ contains
     !! (zh predicted; J and df/dp exact at (tn, y)), solved by a chord iteration whose
     !! residuals use the exact J: a BDF step's iteration matrix is its Newton matrix, an Adams
     !! step's the sensitivities' own I - h l0 J (kept by the Newton matrix's rules: a new one
-    !! every MSBP steps or when h l0 changed by more than CCMAX).  The iteration stops when a
-    !! correction is below SENS_CONV times the state's convergence test, in the
-    !! sensitivities' weights; one that contracts too slowly ends in a direct solve with
-    !! I - h l0 J factored at the point.  The sensitivities are thus the solution of the
+    !! every MSBP steps or when h l0 changed by more than CCMAX).  The iteration stops, as
+    !! the state's corrector, when a correction times min(1, 1.5 rate) (the iteration's rate,
+    !! measured and kept from step to step) is below SENS_CONV times the state's
+    !! convergence test, in the sensitivities' weights; one that contracts too slowly ends in
+    !! a direct solve with I - h l0 J factored at the point.  The sensitivities are thus the solution of the
     !! step's formula to that tolerance whether or not they take part in the error test.
     subroutine sens_correct(s, sys, stat)
         type(lsoda_t), intent(inout) :: s
@@ -1568,7 +1571,9 @@ contains
             s%nsit = s%nsit + 1
             a = a + d
             del = snorm(d)
-            if (del <= tol) then
+            ! the rate of the iteration, as the state's (kept from step to step)
+            if (m > 1) s%scrate = max(0.2_dp*s%scrate, del/delp)
+            if (del*min(1.0_dp, 1.5_dp*s%scrate) <= tol) then
                 conv = .true.
                 exit
             end if

@@ -28,7 +28,7 @@
 !! direct method): bifilar_t's `dirs` name the parameter direction of each sensitivity
 !! (sens_dir_t).  Their df/dp is analytic for the moments of inertia and the damping (the
 !! change of the generalized active and inertia forces, solved with the factor of eq. (38))
-!! and by central differences of the right-hand side for the geometry (L, L', B, r,
+!! and by forward differences of the right-hand side for the geometry (L, L', B, r,
 !! lambda); the products J v are the tangents of the kinematics through Kane's equations
 !! (eom_tangent), one per column, or the whole of Z once a point needs more columns.
 module bifilar_model
@@ -49,7 +49,7 @@ module bifilar_model
 
     !> A direction in the pendulum's scaled parameters, dp/dx for the quantity x a
     !! sensitivity follows (pendulum_t's fields of the same names).  The moments and the
-    !! damping have analytic df/dp; the geometry's comes from central differences of the
+    !! damping have analytic df/dp; the geometry's comes from forward differences of the
     !! right-hand side.  All 0: a sensitivity of the initial conditions only.
     type, public :: sens_dir_t
         real(dp) :: inertia(3) = 0.0_dp         !! d I_i/(m b'^2) / dx
@@ -150,8 +150,8 @@ module bifilar_model
     !! change the angles, five only the rates): sens_jv takes Z once the columns asked at a
     !! point exceed it.
     integer, parameter :: Z_COST = 7
-    !> Relative step of the central differences of the right-hand side in the geometry.
-    real(dp), parameter :: GEOMETRY_STEP = 1.0e-5_dp
+    !> Relative step of the forward differences of the right-hand side in the geometry.
+    real(dp), parameter :: GEOMETRY_STEP = 2.0e-8_dp
 
 contains
 
@@ -632,7 +632,7 @@ contains
     !! ready for the tangents of sens_jv, and df/dp of each direction of sys%dirs (0 for the
     !! columns beyond them): the moments' and the damping's analytic (the change of the
     !! generalized inertia and active forces at fixed accelerations, solved with the factor
-    !! of eq. (38), the constraint unchanged), the geometry's by central differences of the
+    !! of eq. (38), the constraint unchanged), the geometry's by forward differences of the
     !! right-hand side (relative step GEOMETRY_STEP).
     subroutine bifilar_sens_point(sys, t, y, dfdp, stat)
         class(bifilar_t), intent(inout) :: sys
@@ -641,10 +641,10 @@ contains
         real(dp), intent(out) :: dfdp(:, :)     !! (NSTATE, ns)
         type(status_t), intent(out) :: stat
         type(sens_dir_t) :: d
-        type(pendulum_t) :: pp, pm
+        type(pendulum_t) :: pp
         type(chart_kin_t) :: kk
         type(eom_t) :: ee
-        real(dp) :: dtq(3), e(5), dq(5), w, hstep, qp(5), scale
+        real(dp) :: dtq(3), e(5), dq(5), w, hstep, scale
         integer :: j
         if (.false.) dfdp(1, 1) = t
         dfdp = 0.0_dp
@@ -671,25 +671,33 @@ contains
                     call constrained_solve(eo, e, 0.0_dp, dq)
                 end if
                 if (any([d%big_l, d%big_lp, d%big_b, d%r, d%lambda] /= 0.0_dp)) then
-                    ! central differences along the geometry's part of the direction
+                    ! forward differences along the geometry's part of the direction, from
+                    ! the point's own solution (a step near sqrt(eps): about 1e-8 relative)
                     scale = maxval(abs([d%big_l, d%big_lp, d%big_b, d%r, d%lambda]) / &
                                    max([p%big_l, p%big_lp, p%big_b, p%r, 1.0_dp], 1.0e-3_dp))
                     hstep = GEOMETRY_STEP/scale
                     pp = p
-                    pm = p
                     call move(pp, hstep)
-                    call move(pm, -hstep)
+                    hstep = geometry_moved(pp, p)
                     call chart_solve(pp, y, kk, ee, stat)
                     if (stat%code /= 0) return
-                    qp = ee%qdd
-                    call chart_solve(pm, y, kk, ee, stat)
-                    if (stat%code /= 0) return
-                    dq = dq + (qp - ee%qdd)/(2.0_dp*hstep)
+                    dq = dq + (ee%qdd - eo%qdd)/hstep
                 end if
                 dfdp(6:10, j) = dq
             end do
         end associate
     contains
+        !> The step actually taken (the largest change of a field over its direction's).
+        pure real(dp) function geometry_moved(q, q0) result(h)
+            type(pendulum_t), intent(in) :: q, q0
+            real(dp) :: dd(5), dx(5)
+            integer :: i
+            dd = [d%big_l, d%big_lp, d%big_b, d%r, d%lambda]
+            dx = [q%big_l - q0%big_l, q%big_lp - q0%big_lp, q%big_b - q0%big_b, q%r - q0%r, &
+                  q%lambda - q0%lambda]
+            i = maxloc(abs(dd), 1)
+            h = dx(i)/dd(i)
+        end function geometry_moved
         pure subroutine move(q, h)
             type(pendulum_t), intent(inout) :: q
             real(dp), intent(in) :: h
