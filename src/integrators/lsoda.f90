@@ -72,6 +72,7 @@ module lsoda
     integer, parameter :: DEFAULT_MAX_STEPS = 500000
     integer, parameter :: SENS_MAXIT = 4           !! sensitivity corrector iterations
     real(dp), parameter :: SENS_CONV = 0.5_dp      !! their test: this part of the state's
+    real(dp), parameter :: SENS_CONV_EC = 0.1_dp   !! the same in the error control (Adams)
 
     ! internal outcome of one call of take_step
     integer, parameter :: KF_OK = 0, KF_ERRTEST = -1, KF_CONV = -2, KF_SINGULAR = -3, &
@@ -1525,7 +1526,9 @@ contains
     !! the state's corrector, when a correction times min(1, 1.5 rate) (the iteration's rate,
     !! measured and kept from step to step) is below SENS_CONV times the state's
     !! convergence test, in the sensitivities' weights; one that contracts too slowly ends in
-    !! a direct solve with I - h l0 J factored at the point.  The sensitivities are thus the solution of the
+    !! a direct solve with I - h l0 J factored at the point.  In the error control an Adams
+    !! step uses its own functional iteration instead (to SENS_CONV_EC of the state's test):
+    !! there the columns are many, and Z at the point, which the products use, is at hand.  The sensitivities are thus the solution of the
     !! step's formula to that tolerance whether or not they take part in the error test.
     subroutine sens_correct(s, sys, stat)
         type(lsoda_t), intent(inout) :: s
@@ -1538,7 +1541,7 @@ contains
         call sys%sens_point(s%tn, s%y, s%sdfdp, stat)
         s%nsp = s%nsp + 1
         if (stat%code /= STATUS_OK) return
-        if (s%meth == METHOD_ADAMS) then
+        if (s%meth == METHOD_ADAMS .and. .not. s%sens_errcon) then
             ! the sensitivities' own matrix, first: its J makes the products below cheap
             if (.not. s%shave .or. s%nst >= s%snslp + MSBP .or. &
                 abs(hl0 - s%shl0) > CCMAX*abs(s%shl0)) then
@@ -1554,6 +1557,29 @@ contains
         tol = SENS_CONV*s%tesco(2, s%nq, s%meth)*s%conit
         conv = .false.
         delp = 0.0_dp
+        if (s%sens_errcon .and. s%meth == METHOD_ADAMS) then
+            ! in the error control (many columns: Z at the point is at hand) an Adams step's
+            ! functional iteration a <- b + h l0 J a, from a = b, to a tenth of the state's test
+            tol = SENS_CONV_EC*s%tesco(2, s%nq, s%meth)*s%conit
+            a = b
+            do m = 1, SENS_MAXIT
+                call sys%sens_jv(a, jv, stat)
+                if (stat%code /= STATUS_OK) return
+                s%nsit = s%nsit + 1
+                d = b + hl0*jv - a
+                a = a + d
+                del = snorm(d)
+                if (del <= tol) then
+                    conv = .true.
+                    exit
+                end if
+                if (m > 1 .and. del > 0.5_dp*delp) exit
+                delp = del
+            end do
+            if (.not. conv) call direct()
+            call store_columns(a, s%sacor)
+            return
+        end if
         ! the chord iteration a <- a + P^-1 (b + h l0 J a - a), from a = 0
         a = 0.0_dp
         d = b
@@ -1583,17 +1609,18 @@ contains
             if (stat%code /= STATUS_OK) return
             d = b + hl0*jv - a
         end do
-        if (.not. conv) then
-            ! a direct solve with I - h l0 J factored here
+        if (.not. conv) call direct()
+        call store_columns(a, s%sacor)
+    contains
+        !> A direct solve with I - h l0 J factored here.
+        subroutine direct()
             call sens_matrix(s, sys, hl0, stat)
             if (stat%code /= STATUS_OK) return
             a = b
             do k = 1, s%ns
                 call la_small_lu_solve(s%sjm, s%spiv, a(:, k))
             end do
-        end if
-        call store_columns(a, s%sacor)
-    contains
+        end subroutine direct
         !> The weighted max-norm of a change of the sensitivities.
         real(dp) function snorm(v)
             real(dp), intent(in) :: v(:, :)
