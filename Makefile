@@ -183,12 +183,13 @@ check:
 
 bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench_elastic \
        $(BIN)/bench_radau $(BIN)/bench_speed $(BIN)/bench_identify $(BIN)/bifilar \
-       $(BIN)/bench_sweep
+       $(BIN)/bench_sweep $(BIN)/bench_global_error
 	mkdir -p output build/bench
 	$(BIN)/bench_integrator output/bench_integrator.dat
 	$(BIN)/bench_radau output/bench_radau.dat
 	$(BIN)/bench_bifilar output/bench_bifilar.dat
 	$(BIN)/bench_wp
+	$(BIN)/bench_global_error output/bench_global_error.dat
 	$(BIN)/bench_elastic output/bench_elastic.dat
 	$(BIN)/bifilar input/work_precision_elastic.nml --out build/bench
 	@if command -v gnuplot >/dev/null 2>&1; then gnuplot -c plots/work_precision_elastic.gp \

@@ -43,11 +43,17 @@ cpu_process() {
 {
     echo "# bifilar speed figures (make bench): what instructions cpu_seconds"
     echo "rhs $(per_unit 2000 "$bin/bench_speed" rhs) $(cpu_unit "$bin/bench_speed" rhs 200000)"
+    # the monodromy as the orbit's forward sensitivities (the default), and as the
+    # variational equations integrated with the orbit (sensitivities = 'differences')
     for deck in cylinder_torsion box_stable box_unstable box_tall_floquet; do
         echo "floquet_$deck $(per_unit 1 "$bin/bench_speed" floquet $deck) \
 $(cpu_unit "$bin/bench_speed" floquet $deck 20)"
+        echo "floquet_${deck}_differences $(per_unit 1 "$bin/bench_speed" floquet_differences $deck) \
+$(cpu_unit "$bin/bench_speed" floquet_differences $deck 20)"
     done
     echo "chart_point $(( $(per_unit 1 "$bin/bench_speed" chart) / 30 )) $(cpu_unit "$bin/bench_speed" chart 4)"
+    echo "chart_point_differences $(( $(per_unit 1 "$bin/bench_speed" chart_differences) / 30 )) \
+$(cpu_unit "$bin/bench_speed" chart_differences 4)"
     echo "process_start $(cg "$bin/bifilar") $(cpu_process 200 "$bin/bifilar")"
     # the floor of cpu_process: any process started from this shell (the fork included)
     echo "process_true $(cg /bin/true) $(cpu_process 200 /bin/true)"
@@ -64,6 +70,8 @@ $(cpu_unit "$bin/bench_identify" periods 200)"
 $(cpu_unit "$bin/bench_identify" periods_asym 10)"
     echo "identify_record_3par $(per_unit 1 "$bin/bench_identify" record) \
 $(cpu_unit "$bin/bench_identify" record 3)"
+    echo "identify_record_3par_differences $(per_unit 1 "$bin/bench_identify" record_differences) \
+$(cpu_unit "$bin/bench_identify" record_differences 3)"
     echo "identify_mc_2000 $(( $(OMP_NUM_THREADS=1 per_unit 200 "$bin/bench_identify" mc) * 2000 )) \
 $(OMP_NUM_THREADS=1 cpu_unit "$bin/bench_identify" mc 2000 | awk '{printf "%.5e", $1 * 2000}')"
 } > "$out.tmp"
