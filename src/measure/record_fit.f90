@@ -469,7 +469,7 @@ contains
         type(rig_t) :: rg
         type(start_t) :: st
         real(dp) :: t0, bias
-        real(dp), allocatable :: vals(:), dv(:, :), xs(:), wt(:)
+        real(dp), allocatable :: vals(:), dv(:, :), xs(:)
         character(len=16), allocatable :: names(:)
         integer :: i0, i1, i2, j, c
         logical :: reuse
@@ -512,15 +512,14 @@ contains
             vals = vals(1:i1 - i0 + 1)
             dv = dv(1:i1 - i0 + 1, :)
         end if
-        wt = prob%w(i0:i1)*prob%hw(i0:i1)
-        r = (prob%sign*vals + bias - prob%rec%v(i0:i1))*wt
+        r = (prob%sign*vals + bias - prob%rec%v(i0:i1))*prob%w(i0:i1)*prob%hw(i0:i1)
         c = 0
         do j = 1, prob%np
             if (prob%which(j) == P_BIAS) then
-                jac(:, j) = wt
+                jac(:, j) = prob%w(i0:i1)*prob%hw(i0:i1)
             else
                 c = c + 1
-                jac(:, j) = prob%sign*dv(:, c)*wt
+                jac(:, j) = prob%sign*dv(:, c)*prob%w(i0:i1)*prob%hw(i0:i1)
             end if
         end do
         if (.not. all_finite(r) .or. .not. all(ieee_is_finite(jac))) &
@@ -929,7 +928,7 @@ contains
         type(rig_t) :: rg
         type(start_t) :: st
         real(dp) :: t0, bias
-        real(dp), allocatable :: vals(:), dv(:, :), xs(:), wt(:)
+        real(dp), allocatable :: vals(:), dv(:, :), xs(:)
         character(len=16), allocatable :: names(:)
         integer, allocatable :: idx(:)
         integer :: i0, i1, j, c
@@ -967,9 +966,9 @@ contains
             stat%msg = 'sensitivities to the inputs: '//stat%msg
             return
         end if
-        wt = prob%w(i0:i1)*prob%hw(i0:i1)
         do c = 1, size(names)
-            call la_lstsq(jac, prob%sign*dv(:, c)*wt, dpdx(:, idx(c)), stat)
+            call la_lstsq(jac, prob%sign*dv(:, c)*prob%w(i0:i1)*prob%hw(i0:i1), dpdx(:, idx(c)), &
+                          stat)
             if (stat%code /= 0) return
             dpdx(:, idx(c)) = -dpdx(:, idx(c))
         end do
