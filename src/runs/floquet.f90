@@ -121,6 +121,9 @@ module floquet
     !! most 640 at rtol 1e-10): a hopeless point (a body turning fast about a principal axis
     !! of tiny inertia) fails in about a second instead of running for minutes.
     integer, parameter, public :: FLOQUET_MAX_STEPS = 20000
+    !> The monodromy's absolute tolerance (forward sensitivities) over the orbit's, rtol/100:
+    !! H's entries are measured against rtol itself (H = I at the start).
+    real(dp), parameter :: H_ATOL_SCALE = 100.0_dp
 
     public :: check_torsion_scene, torsion_period, jacobian_z, monodromy, floquet_analysis
     public :: multipliers_from_monodromy, torsion_start, pencil_multipliers, floquet_point
@@ -358,11 +361,13 @@ contains
             if (forward) then
                 ! the orbit with its sensitivities to its state at t0 (H = I there), in the
                 ! error control: the orbit is smoother than the motions about it that H
-                ! follows, and its steps alone leave H a hundred times less accurate
+                ! follows, and its steps alone leave H a hundred times less accurate; H's
+                ! absolute tolerance is rtol (H_ATOL_SCALE)
                 call s%init(orbit, t0, y(1:NSTATE), rtol, [rtol*1.0e-2_dp], stat, tcrit=t1, &
                             max_steps=FLOQUET_MAX_STEPS)
                 if (stat%code /= 0) return
-                call s%sens_init(orbit, eye, stat, error_control=.true.)
+                call s%sens_init(orbit, eye, stat, error_control=.true., &
+                                 scale=[(H_ATOL_SCALE, j = 1, NSTATE)])
                 if (stat%code /= 0) return
                 call s%integrate(orbit, t1, y(1:NSTATE), stat)
                 st = s%stats()
