@@ -154,7 +154,7 @@ contains
         ! tcrit = tau_end: no step goes past the end, so every step end checked lies in the run
         sink%sm%method = merge('radau', 'lsoda', method_of(d) == SOLVER_RADAU)
         call kane_run_start(m, p, y, th0(3), d%rtol, d%atol, method_of(d), d%tau_end, &
-                            'raise rtol/atol or shorten tau_end', stat)
+                            'raise rtol/atol or shorten tau_end', stat, global=.true.)
         if (stat%code /= 0) return
         if (d%error_estimate) then
             ! the same run at a tolerance 100 times tighter, in step with the rows
