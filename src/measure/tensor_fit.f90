@@ -188,9 +188,10 @@ module tensor_fit
     !> A period without any stated uncertainty counts this much of itself.
     real(dp), parameter :: U_FLOOR = 1.0e-9_dp
     !> Gauss-Newton: iterations, and the step that ends them over the largest moment (at
-    !! small amplitude; simulated periods: 10 rtol at least).
+    !! small amplitude; simulated periods: 10 rtol at least); a step up to 1000 times that
+    !! ends them too when it lowers the misfit by less than 1e-10 of itself.
     integer, parameter :: MAX_ITER = 40
-    real(dp), parameter :: X_TOL = 1.0e-13_dp
+    real(dp), parameter :: X_TOL = 1.0e-12_dp
     !> Relative steps of the differences: the Jacobian, the inputs (linearised model /
     !! simulated periods).
     real(dp), parameter :: H_LIN = 1.0e-6_dp, H_SIM = 1.0e-5_dp
@@ -674,10 +675,12 @@ contains
         integer :: h
         stat%code = STATUS_OK
         do h = 1, size(blocks)
-            part = b(blocks(h)%rows, :)
+            allocate (part(size(blocks(h)%rows), size(b, 2)))
+            part(:, :) = b(blocks(h)%rows, :)
             call la_tri_solve(blocks(h)%l, part, stat)
             if (stat%code /= STATUS_OK) return
             b(blocks(h)%rows, :) = part
+            deallocate (part)
         end do
     end subroutine whiten
 
@@ -691,7 +694,7 @@ contains
         integer, intent(inout) :: iters, evals
         type(status_t), intent(out) :: stat
         real(dp), allocatable :: a(:, :), aw(:, :), rw(:, :), tt(:)
-        real(dp) :: dx(6), xt(6), st, lam, tol
+        real(dp) :: dx(6), xt(6), st, lam, tol, gain
         integer :: n, it, half
         type(status_t) :: s2
         n = size(prob%rows)
@@ -731,8 +734,12 @@ contains
             end if
             x = xt
             tc = tt
+            gain = s - st
             s = st
             if (maxval(abs(lam*dx)) <= tol*maxval(x(1:3))) return
+            ! nothing left to gain at the model's resolution
+            if (gain <= 1.0e-10_dp*(s + gain) .and. &
+                maxval(abs(lam*dx)) <= 1.0e3_dp*tol*maxval(x(1:3))) return
         end do
         call set_error(stat, ERR_NUMERIC, 'the fit of the tensor did not converge in '// &
             itoa(MAX_ITER)//' Gauss-Newton iterations (entries '//rlist_short(x)//'); check '// &
@@ -771,6 +778,7 @@ contains
         allocate (tc(nc), a(nc, 6), s_amp(nc), s_dir(nc, 3), s_rig(nc, 4), s_mass(nc), &
                   s_g(nc), u_t(n))
         u_t = prob%rows%u_period
+        fit%x_proj = x0
         x = x0
         ! a start that is not positive definite (noisy periods): its moments raised
         call principal_axes(x, w, v, stat)
