@@ -378,7 +378,8 @@ contains
         type(out_files_t), intent(inout) :: files
         type(status_t), intent(out) :: stat
         integer :: u, ios, h
-        character(len=24) :: f(4)
+        character(len=22) :: f(2)
+        character(len=16) :: e(2)
         call files%open(outdir//'/'//d%name//'.tensor.dat', u, stat)
         if (stat%code /= STATUS_OK) return
         ios = 0
@@ -387,12 +388,12 @@ contains
             'hang I_fitted (u . J u of the fit) I_measured (what its periods give) '// &
             'u_I_measured residual (normalised)'
         do h = 1, size(prob%hangs)
-            call es_field(fit%iv_fit(h), 12, f(1))
-            call es_field(fit%iv(h), 12, f(2))
-            call es_field(fit%u_iv(h), 6, f(3))
-            call es_field(fit%resid(h), 6, f(4))
-            if (ios == 0) write (u, '(i8,4a)', iostat=ios) prob%hangs(h)%id, f(1)(1:20), &
-                f(2)(1:20), f(3)(1:14), f(4)(1:14)
+            call es_field(fit%iv_fit(h), 14, f(1))
+            call es_field(fit%iv(h), 14, f(2))
+            call es_field(fit%u_iv(h), 8, e(1))
+            call es_field(fit%resid(h), 8, e(2))
+            if (ios == 0) write (u, '(i8,4(1x,a))', iostat=ios) prob%hangs(h)%id, f(1), f(2), e(1), &
+                e(2)
         end do
         call files%close(u, ios, stat)
     end subroutine write_data
