@@ -65,7 +65,7 @@ contains
         if (t%want('tensor: refusals are one line, exit 2 and no file')) &
             call test_refusals(t, exe)
         if (t%want('tensor: chi-square warning')) call test_warning(t, exe)
-        if (t%want('tensor: Monte Carlo repeats with 1 and 2 threads')) &
+        if (t%want('tensor: Monte Carlo: threads, kill and resume, MPI ranks')) &
             call test_mc(t, exe)
     end subroutine run_tensor_tests
 
@@ -734,7 +734,9 @@ contains
     end subroutine test_warning
 
     !> The Monte Carlo of a small deck gives the same numbers on one thread and on two, and
-    !! its u of the principal moments agrees with the first-order u to 25 %.
+    !! its u of the principal moments agrees with the first-order u to 25 %; killed after
+    !! its first checkpoint and resumed, it gives the uninterrupted file; on two MPI ranks
+    !! the serial file.
     subroutine test_mc(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
@@ -744,6 +746,8 @@ contains
         logical :: l1
         character(len=:), allocatable :: tab
         character(len=512) :: line1, line2
+        character(len=*), parameter :: HOW(2) = [character(len=30) :: '', &
+                                                  '-x BIFILAR_RANK0_COMPUTES=no']
         integer :: k, ex1, ex2, ex
         x = true_tensor()
         u = directions(9)
@@ -778,6 +782,49 @@ contains
         end do
         l1 = exists(SCR//'/mc1/mc.tensor_mc.partial')
         call t%check('mc: its checkpoint removed', .not. l1)
+        ! killed after its first checkpoint, resumed: the uninterrupted file
+        call write_text(SCR//'/mck.nml', "&scene analyses = 'tensor' /"//NL//RIG_LINES// &
+            "&tensor hangs = 'mc.txt', u_period = 2e-4, u_direction = 0.2, u_l = 1e-3, "// &
+            'monte_carlo = 1500, seed = 5 /'//NL)
+        call execute_command_line('rm -rf '//SCR//'/mck '//SCR//'/mckref && mkdir -p '// &
+            SCR//'/mck '//SCR//'/mckref && OMP_NUM_THREADS=1 '//exe//' '//SCR//'/mck.nml '// &
+            '--out '//SCR//'/mckref > /dev/null 2>&1', exitstat=ex1)
+        call execute_command_line('OMP_NUM_THREADS=1 tests/tools/kill_run.sh '//SCR// &
+            '/mck/mck.tensor_mc.partial KILL '//exe//' '//SCR//'/mck.nml --out '//SCR// &
+            '/mck --checkpoint 0 > /dev/null 2>&1', exitstat=ex)
+        l1 = exists(SCR//'/mck/mck.tensor_mc.partial')
+        call t%check('mc: killed after its first checkpoint (exit 137, got '//itoa(ex)//')', &
+                     ex1 == 0 .and. ex == 137 .and. l1)
+        call execute_command_line(exe//' '//SCR//'/mck.nml --out '//SCR//'/mck --resume > '// &
+            SCR//'/mck.stdout 2>&1', exitstat=ex)
+        l1 = file_has(SCR//'/mck.stdout', ' resumed from the checkpoint')
+        call t%check('mc: resumed from its checkpoint (exit 0)', ex == 0 .and. l1)
+        call execute_command_line('bash -c "cmp -s <(grep -v cpu_seconds '//SCR// &
+            '/mck/mck.tensor) <(grep -v cpu_seconds '//SCR//'/mckref/mck.tensor)"', exitstat=ex)
+        l1 = exists(SCR//'/mck/mck.tensor_mc.partial')
+        call t%check('mc: resumed = uninterrupted (cpu_seconds aside), checkpoint removed', &
+                     ex == 0 .and. .not. l1)
+        ! MPI (when OpenMPI and bin/bifilar_mpi are there): 2 ranks, and 2 ranks of which
+        ! rank 0 only hands out work (every sample from the task rank 1 built from the deck
+        ! and the payload)
+        call execute_command_line('command -v mpirun > /dev/null', exitstat=ex)
+        l1 = exists(exe//'_mpi')
+        if (ex /= 0 .or. .not. l1) then
+            write (*, '(a)') 'note: no mpirun or '//exe//'_mpi: the MPI runs of tensor''s '// &
+                'Monte Carlo are skipped'
+            return
+        end if
+        do k = 1, 2
+            call execute_command_line('rm -rf '//SCR//'/mcmpi && mkdir -p '//SCR//'/mcmpi && '// &
+                'env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 '// &
+                'OMP_NUM_THREADS=1 mpirun -q --oversubscribe -np 2 '// &
+                trim(HOW(k))//' '//exe//'_mpi '//SCR//'/mc.nml --out '//SCR// &
+                '/mcmpi > /dev/null 2>&1', exitstat=ex1)
+            call execute_command_line('bash -c "cmp -s <(grep -v cpu_seconds '//SCR// &
+                '/mcmpi/mc.tensor) <(grep -v cpu_seconds '//SCR//'/mc1/mc.tensor)"', exitstat=ex)
+            call t%check('mc: 2 MPI ranks '//trim(HOW(k))//': the serial file', &
+                         ex1 == 0 .and. ex == 0)
+        end do
     end subroutine test_mc
 
     !> The value text of `key = a, b, c`.
