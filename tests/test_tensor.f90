@@ -20,7 +20,8 @@ module test_tensor
     use output_io, only: read_kv
     use hang_table, only: hang_t, hang_set_t, read_hangs
     use hang_model, only: tensor_entries, principal_axes, hang_rig, hang_period, &
-        torsion_mode, torsion_mode_t, maxima_drift, turned_hang
+        torsion_mode, torsion_mode_t, maxima_drift, turned_hang, rest_pose
+    use bifilar_model, only: NSTATE, chart_positions
     use tensor_fit, only: tensor_problem_t, tensor_fit_t, tensor_plan_t, problem_of, &
         check_directions, projection, fit_tensor, plan_hangs, design_trace, along_for, &
         DRIFT_MAX, DRIFT_CYCLES
@@ -48,6 +49,8 @@ contains
         call scratch_dir(SCR)
         if (t%want('tensor: an aligned hang''s torsion mode is the exact period of torsion')) &
             call test_aligned(t)
+        if (t%want('tensor: the rest pose of an asymmetric hang is in equilibrium')) &
+            call test_rest(t)
         if (t%want('tensor: the simulated period tends to the torsion mode''s')) &
             call test_small_limit(t)
         if (t%want('tensor: the six entries back from 6, 9 and 12 hangs')) call test_exact(t)
@@ -215,6 +218,38 @@ contains
                          st%code == STATUS_OK .and. dr < 1.0e-6_dp)
         end do
     end subroutine test_aligned
+
+    !> The rest pose of a hang with unequal cables, b /= b' and the mass centre off the
+    !! midpoint of CD: the body is a three-force member, so the two cables' lines and the
+    !! vertical through the mass centre meet in one point (statics, not the equations of
+    !! motion); and the pose is not theta = 0.
+    subroutine test_rest(t)
+        type(tester_t), intent(inout) :: t
+        type(hang_t) :: h
+        type(rig_t) :: rg
+        type(pendulum_t) :: p
+        type(status_t) :: st
+        real(dp) :: y(NSTATE), c(3), d(3), rs(3), e(3), n(3, 3), bb(3), s, tt, det, py
+        h = rig_hang([0.0_dp, 0.0_dp, 1.0_dp], [1.0_dp, 0.0_dp, 0.0_dp], 1)
+        h%l_prime = 1.35_dp
+        h%cg_offset = 0.06_dp
+        call hang_rig(MASS, G0, h, true_tensor(), rg, st)
+        call make_pendulum(rg, p, st)
+        call rest_pose(p, y, st)
+        call t%check('rest: found: '//msg_of(st), st%code == STATUS_OK)
+        call chart_positions(p, y, c, d, rs, e, n)
+        ! B + s (C - B) = tt D in the plane x = 0 (A at the origin)
+        bb = [0.0_dp, -p%big_b, 0.0_dp]
+        det = (c(2) - bb(2))*(-d(3)) - (c(3) - bb(3))*(-d(2))
+        s = ((-bb(2))*(-d(3)) - (-bb(3))*(-d(2)))/det
+        tt = ((c(2) - bb(2))*(-bb(3)) - (c(3) - bb(3))*(-bb(2)))/det
+        py = bb(2) + s*(c(2) - bb(2))
+        call t%check_close('rest: the cables'' lines meet on the vertical through R*', py, &
+                           rs(2), atol=1.0e-10_dp)
+        call t%check('rest: in the plane of the cables (x = 0), CD tilted', &
+                     maxval(abs([c(1), d(1), rs(1)])) < 1.0e-12_dp .and. abs(y(5)) > 1.0e-3_dp)
+        if (.false.) s = tt
+    end subroutine test_rest
 
     !> A misaligned hang: the full model's period from a release in the torsion mode's shape
     !! tends to the mode's period as the amplitude vanishes; its maxima drift, the more the
