@@ -63,8 +63,8 @@
 !!   order, mass, g, l, l_prime, b, b_prime; per hang the three rotations and its four rig
 !!   inputs; per row its timing, amplitude (normal) and definition (uniform within
 !!   +-3^(1/2) u_def); then refits by Gauss-Newton with the estimate's Jacobian (each step
-!!   one model period per case) and gives x, the principal moments and the turns of the
-!!   axes toward the others.  The samples are a sweep (module monte_carlo); the task is
+!!   one model period per case) until each step is below 1e-3 of the entry's first-order u,
+!!   and gives x, the principal moments and the turns of the axes toward the others.  The samples are a sweep (module monte_carlo); the task is
 !!   built from the deck and the payload (tensor_mc_payload, tensor_mc_task).
 !!
 !! Units are the deck's (mass x length^2, s); directions in degrees in messages.  No
@@ -164,6 +164,7 @@ module tensor_fit
         real(dp) :: axes(3, 3) = 0.0_dp         !! its principal axes
         real(dp), allocatable :: chord(:, :)    !! 6 x rows
         real(dp), allocatable :: u_row(:)       !! per row: timing u (s)
+        real(dp) :: u_x(6) = 0.0_dp             !! the estimate's first-order u
         integer :: seed = 1
     contains
         procedure :: sample => tensor_mc_point
@@ -196,6 +197,8 @@ module tensor_fit
     !! simulated periods).
     real(dp), parameter :: H_LIN = 1.0e-6_dp, H_SIM = 1.0e-5_dp
     real(dp), parameter :: HX_LIN = 1.0e-6_dp, HX_SIM = 1.0e-4_dp
+    !> A Monte Carlo refit ends when each step is below this fraction of the entry's u.
+    real(dp), parameter :: MC_STEP = 1.0e-3_dp
     !> Largest amplitude the limit search tries (degrees).
     real(dp), parameter :: LIMIT_SEARCH_MAX = 64.0_dp
 
@@ -1444,7 +1447,7 @@ contains
     !> What a tensor Monte Carlo needs beyond the deck, as reals (the sweep's payload): the
     !! seed, the counts, per hang its id, up, along, rig and mass centre and which rig
     !! inputs are its own, per row its hang, period, cycles, amplitude, timing u and u_def,
-    !! the estimate, its axes, the chord matrix.
+    !! the estimate, its axes, its first-order u, the chord matrix.
     function tensor_mc_payload(prob, fit, seed) result(p)
         type(tensor_problem_t), intent(in) :: prob
         type(tensor_fit_t), intent(in) :: fit
@@ -1468,7 +1471,7 @@ contains
                      fit%u_row(i), prob%u_def(i)]
             end associate
         end do
-        p = [p, fit%x, reshape(fit%axes, [9]), reshape(fit%chord, [size(fit%chord)])]
+        p = [p, fit%x, reshape(fit%axes, [9]), fit%u_x, reshape(fit%chord, [size(fit%chord)])]
     end function tensor_mc_payload
 
     !> The Monte Carlo task of a deck from its payload (tensor_mc_payload): the task rank 0
@@ -1488,7 +1491,7 @@ contains
         task%seed = nint(payload(1))
         nh = nint(payload(2))
         n = nint(payload(3))
-        if (nh < 1 .or. n < 1 .or. size(payload) /= 3 + 15*nh + 7*n + 15 + 6*n) then
+        if (nh < 1 .or. n < 1 .or. size(payload) /= 3 + 15*nh + 7*n + 21 + 6*n) then
             call set_error(stat, ERR_DECK, 'tensor Monte Carlo: the payload does not match '// &
                 'its counts')
             return
@@ -1530,7 +1533,8 @@ contains
         task%prob%u_def = payload(3 + 15*nh + 7:3 + 15*nh + 7*n:7)
         task%x = payload(j + 1:j + 6)
         task%axes = reshape(payload(j + 7:j + 15), [3, 3])
-        task%chord = reshape(payload(j + 16:j + 15 + 6*n), [6, n])
+        task%u_x = payload(j + 16:j + 21)
+        task%chord = reshape(payload(j + 22:j + 21 + 6*n), [6, n])
         task%nest = MC_ESTIMATES
     end subroutine tensor_mc_task
 
@@ -1600,7 +1604,9 @@ contains
             if (stat%code /= STATUS_OK) exit
             dx = -matmul(task%chord, tc(p%row_case) - tmeas)
             x = x + dx
+            ! converged: at the model's resolution, or each step below 1e-3 of its u
             if (maxval(abs(dx)) <= 10.0_dp*tol*maxval(x(1:3))) exit
+            if (all(task%u_x > 0.0_dp) .and. all(abs(dx) <= MC_STEP*task%u_x)) exit
         end do
         if (stat%code == STATUS_OK .and. it > MAX_ITER) call set_error(stat, ERR_NUMERIC, &
             'the refit did not converge in '//itoa(MAX_ITER)//' steps')
