@@ -213,12 +213,14 @@ contains
             return
         end if
         call hang_defaults(d, h0, have_cg)
-        if (form_up .and. .not. have_cg .and. (c_depth == 0 .or. c_off == 0)) then
+        ! without a mass centre in the deck, a cg_depth column with the offset 0 by default
+        if (.not. have_cg) h0%cg_offset = 0.0_dp
+        if (form_up .and. .not. have_cg .and. c_depth == 0) then
             call set_error(stat, ERR_DECK, 'not given: &body the mass centre (cg_depth and '// &
                 'cg_offset, or r and lambda); a deck with analyses = ''tensor'' gives every '// &
                 'physical input itself (the defaults are the paper''s dimensionless scene); '// &
-                'allowed: &body cg_depth, cg_offset for every hang, or columns cg_depth and '// &
-                'cg_offset in '//table_name(d)//', or c_x ... d_z with &tensor cg')
+                'allowed: &body cg_depth, cg_offset for every hang, or columns cg_depth (and '// &
+                'cg_offset) in '//table_name(d)//', or c_x ... d_z with &tensor cg')
             return
         end if
         ! the rows

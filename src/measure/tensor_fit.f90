@@ -996,15 +996,17 @@ contains
         do k = 1, 3
             g = moment_direction(fit%axes(:, k))
             fit%u_moments(k) = sqrt(max(0.0_dp, dot_product(g, matmul(fit%cov, g))))
+            ! the turn toward axis j: (v_j . dJ v_k)/(I_k - I_j); 90 degrees (undetermined)
+            ! when the moments are too close for it
             fit%u_axes(k) = 0.0_dp
             do j = 1, 3
                 if (j == k) cycle
                 g = mixed(fit%axes(:, j), fit%axes(:, k))
-                if (abs(fit%moments(k) - fit%moments(j)) > 0.0_dp) then
-                    fit%u_axes(k) = fit%u_axes(k) + dot_product(g, matmul(fit%cov, g))/ &
-                                    (fit%moments(k) - fit%moments(j))**2
+                if (abs(fit%moments(k) - fit%moments(j)) > 1.0e-12_dp*fit%moments(3)) then
+                    fit%u_axes(k) = fit%u_axes(k) + min(1.0e4_dp, &
+                        dot_product(g, matmul(fit%cov, g))/(fit%moments(k) - fit%moments(j))**2)
                 else
-                    fit%u_axes(k) = huge(1.0_dp)
+                    fit%u_axes(k) = 1.0e4_dp
                 end if
             end do
             fit%u_axes(k) = min(90.0_dp, sqrt(max(0.0_dp, fit%u_axes(k)))/deg)
@@ -1113,8 +1115,12 @@ contains
                 if (stat%code /= STATUS_OK) return
                 aa = sum(q**2)
                 fit%iv_fit(h) = vertical_moment(x, u)
-                delta = sum(q*r)/aa
-                fit%u_iv(h) = 1.0_dp/sqrt(aa)
+                delta = 0.0_dp
+                fit%u_iv(h) = 0.0_dp
+                if (aa > 0.0_dp) then
+                    delta = sum(q*r)/aa
+                    fit%u_iv(h) = 1.0_dp/sqrt(aa)
+                end if
                 if (fit%scatter .and. fit%u_scatter == 0.0_dp) fit%u_iv(h) = 0.0_dp
                 fit%iv(h) = fit%iv_fit(h) + delta
                 fit%resid(h) = 0.0_dp
