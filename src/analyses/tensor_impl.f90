@@ -392,8 +392,8 @@ contains
             call es_field(fit%iv(h), 14, f(2))
             call es_field(fit%u_iv(h), 8, e(1))
             call es_field(fit%resid(h), 8, e(2))
-            if (ios == 0) write (u, '(i8,4(1x,a))', iostat=ios) prob%hangs(h)%id, f(1), f(2), e(1), &
-                e(2)
+            if (ios == 0) write (u, '(i8,4(1x,a))', iostat=ios) prob%hangs(h)%id, f(1), f(2), &
+                e(1), e(2)
         end do
         call files%close(u, ios, stat)
     end subroutine write_data

@@ -64,8 +64,9 @@
 !!   inputs; per row its timing, amplitude (normal) and definition (uniform within
 !!   +-3^(1/2) u_def); then refits by Gauss-Newton with the estimate's Jacobian (each step
 !!   one model period per case) until each step is below 1e-3 of the entry's first-order u,
-!!   and gives x, the principal moments and the turns of the axes toward the others.  The samples are a sweep (module monte_carlo); the task is
-!!   built from the deck and the payload (tensor_mc_payload, tensor_mc_task).
+!!   and gives x, the principal moments and the turns of the axes toward the others.  The
+!!   samples are a sweep (module monte_carlo); the task is built from the deck and the
+!!   payload (tensor_mc_payload, tensor_mc_task).
 !!
 !! Units are the deck's (mass x length^2, s); directions in degrees in messages.  No
 !! routine stops; failures come back in status_t.
