@@ -229,7 +229,7 @@ contains
         type(rig_t) :: rg
         type(pendulum_t) :: p
         type(status_t) :: st
-        real(dp) :: y(NSTATE), c(3), d(3), rs(3), e(3), n(3, 3), bb(3), s, tt, det, py
+        real(dp) :: y(NSTATE), c(3), d(3), rs(3), e(3), n(3, 3), bb(3), s, det, py
         h = rig_hang([0.0_dp, 0.0_dp, 1.0_dp], [1.0_dp, 0.0_dp, 0.0_dp], 1)
         h%l_prime = 1.35_dp
         h%cg_offset = 0.06_dp
@@ -242,13 +242,11 @@ contains
         bb = [0.0_dp, -p%big_b, 0.0_dp]
         det = (c(2) - bb(2))*(-d(3)) - (c(3) - bb(3))*(-d(2))
         s = ((-bb(2))*(-d(3)) - (-bb(3))*(-d(2)))/det
-        tt = ((c(2) - bb(2))*(-bb(3)) - (c(3) - bb(3))*(-bb(2)))/det
         py = bb(2) + s*(c(2) - bb(2))
         call t%check_close('rest: the cables'' lines meet on the vertical through R*', py, &
                            rs(2), atol=1.0e-10_dp)
         call t%check('rest: in the plane of the cables (x = 0), CD tilted', &
                      maxval(abs([c(1), d(1), rs(1)])) < 1.0e-12_dp .and. abs(y(5)) > 1.0e-3_dp)
-        if (.false.) s = tt
     end subroutine test_rest
 
     !> A misaligned hang: the full model's period from a release in the torsion mode's shape

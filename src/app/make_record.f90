@@ -105,7 +105,7 @@ contains
         type(hang_set_t) :: set
         type(rig_t) :: rg
         real(dp) :: x(6), jt(3, 3), tp
-        integer :: i, k, u, c_per, c_cyc
+        integer :: i, k, u, c_per
         character(len=:), allocatable :: row
         call read_hangs(d, set, st)
         if (st%code /= 0) call fail(st%msg)
@@ -118,7 +118,6 @@ contains
         end do
         x = tensor_entries(jt)
         c_per = tab%column('period')
-        c_cyc = tab%column('cycles')
         g = rng_stream(seed, 0)
         open (newunit=u, file=out, status='replace', action='write', iostat=ios)
         if (ios /= 0) call fail('cannot write '//out)
@@ -152,7 +151,6 @@ contains
             write (u, '(a)') row
         end do
         close (u)
-        if (c_cyc == 0) continue
     end subroutine make_hangs
     function real_arg(i) result(x)
         integer, intent(in) :: i

@@ -847,7 +847,7 @@ contains
         aw = a(prob%row_case, :)
         call whiten(blocks, aw, stat)
         if (stat%code /= STATUS_OK) return
-        call covariance_and_budget(prob, blocks, x, tc, a, aw, u_t, s_amp, s_dir, s_rig, &
+        call covariance_and_budget(prob, blocks, x, aw, u_t, s_amp, s_dir, s_rig, &
                                    s_mass, s_g, fit, stat)
         if (stat%code /= STATUS_OK) return
         call per_hang(prob, blocks, x, tc, a, fit, stat)
@@ -879,11 +879,11 @@ contains
 
     !> The covariance of x (sum over the inputs of S_k S_k^T u_k^2), the budget, the
     !! principal moments and axes with their u, coverage factors, the chord for Monte Carlo.
-    subroutine covariance_and_budget(prob, blocks, x, tc, a, aw, u_t, s_amp, s_dir, s_rig, &
+    subroutine covariance_and_budget(prob, blocks, x, aw, u_t, s_amp, s_dir, s_rig, &
                                      s_mass, s_g, fit, stat)
         type(tensor_problem_t), intent(in) :: prob
         type(block_t), intent(in) :: blocks(:)
-        real(dp), intent(in) :: x(6), tc(:), a(:, :), aw(:, :), u_t(:)
+        real(dp), intent(in) :: x(6), aw(:, :), u_t(:)
         real(dp), intent(in) :: s_amp(:), s_dir(:, :), s_rig(:, :), s_mass(:), s_g(:)
         type(tensor_fit_t), intent(inout) :: fit
         type(status_t), intent(out) :: stat
@@ -922,8 +922,8 @@ contains
         if (stat%code /= STATUS_OK) return
         allocate (col(n, 1))
         ! mass, g
-        call group('mass', prob%u%mass, [ (s_mass(prob%row_case(i)), i=1, n) ], .false.)
-        call group('g', prob%u%g, [ (s_g(prob%row_case(i)), i=1, n) ], .false.)
+        call group('mass', prob%u%mass, [ (s_mass(prob%row_case(i)), i=1, n) ])
+        call group('g', prob%u%g, [ (s_g(prob%row_case(i)), i=1, n) ])
         do k = 1, 4
             col(:, 1) = 0.0_dp
             do i = 1, n
@@ -931,7 +931,7 @@ contains
                     col(i, 1) = s_rig(prob%row_case(i), k)
             end do
             if (any(col(:, 1) /= 0.0_dp)) call group(trim(RIG_NAMES(k)), prob%u%rig(k), &
-                                                     col(:, 1), .false.)
+                                                     col(:, 1))
         end do
         do h = 1, size(prob%hangs)
             ! the timings of its rows
@@ -940,7 +940,7 @@ contains
                 if (prob%rows(i)%hang /= h) cycle
                 col(:, 1) = 0.0_dp
                 col(i, 1) = -1.0_dp
-                call add_input(col(:, 1), u_t(i), cgrp, .true.)
+                call add_input(col(:, 1), u_t(i), cgrp)
             end do
             call push('period('//itoa(prob%hangs(h)%id)//')', u_t(first_row(h)), cgrp)
             ! amplitudes
@@ -951,7 +951,7 @@ contains
                     if (prob%rows(i)%hang /= h) cycle
                     col(:, 1) = 0.0_dp
                     col(i, 1) = s_amp(prob%row_case(i))
-                    call add_input(col(:, 1), prob%u%amplitude, cgrp, .false.)
+                    call add_input(col(:, 1), prob%u%amplitude, cgrp)
                 end do
                 call push('amplitude('//itoa(prob%hangs(h)%id)//')', prob%u%amplitude, cgrp)
             end if
@@ -962,7 +962,7 @@ contains
                     if (prob%rows(i)%hang /= h) cycle
                     col(:, 1) = 0.0_dp
                     col(i, 1) = -1.0_dp
-                    call add_input(col(:, 1), prob%u_def(i), cgrp, .false.)
+                    call add_input(col(:, 1), prob%u_def(i), cgrp)
                 end do
                 call push('definition('//itoa(prob%hangs(h)%id)//')', &
                           maxval(prob%u_def(pack([(i, i=1, n)], prob%rows%hang == h))), cgrp)
@@ -975,7 +975,7 @@ contains
                     do i = 1, n
                         if (prob%rows(i)%hang == h) col(i, 1) = s_dir(prob%row_case(i), k)
                     end do
-                    call add_input(col(:, 1), prob%u%direction, cgrp, .false.)
+                    call add_input(col(:, 1), prob%u%direction, cgrp)
                 end do
                 call push('direction('//itoa(prob%hangs(h)%id)//')', prob%u%direction/deg, cgrp)
             end if
@@ -987,7 +987,7 @@ contains
                 do i = 1, n
                     if (prob%rows(i)%hang == h) col(i, 1) = s_rig(prob%row_case(i), k)
                 end do
-                call add_input(col(:, 1), prob%u%rig(k), cgrp, .false.)
+                call add_input(col(:, 1), prob%u%rig(k), cgrp)
                 call push(trim(RIG_NAMES(k))//'('//itoa(prob%hangs(h)%id)//')', &
                           prob%u%rig(k), cgrp)
             end do
@@ -1021,29 +1021,25 @@ contains
             end if
             fit%k95(k) = coverage_factor(fit%nu_eff(k), 0.95_dp)
         end do
-        if (.false.) fit%u_x = fit%u_x + tc(1) + a(1, 1)
     contains
         !> A common input's group: its column of dr/dx over every row.
-        subroutine group(name, u, dr, is_t)
+        subroutine group(name, u, dr)
             character(len=*), intent(in) :: name
             real(dp), intent(in) :: u, dr(:)
-            logical, intent(in) :: is_t
             real(dp) :: cg(6, 6)
             cg = 0.0_dp
-            call add_input(dr, u, cg, is_t)
+            call add_input(dr, u, cg)
             call push(name, u, cg)
         end subroutine group
         !> S = -G L^-1 dr: its covariance S S^T u^2 added to cg and to fit%cov.
-        subroutine add_input(dr, u, cg, is_t)
+        subroutine add_input(dr, u, cg)
             real(dp), intent(in) :: dr(:), u
             real(dp), intent(inout) :: cg(6, 6)
-            logical, intent(in) :: is_t
             real(dp) :: sk(6)
             if (.not. (u > 0.0_dp)) return
             sk = -matmul(fit%chord, dr)
             cg = cg + outer(sk, sk)*u**2
             fit%cov = fit%cov + outer(sk, sk)*u**2
-            if (is_t .and. .false.) cg = 0.0_dp
         end subroutine add_input
         !> One budget line from a group's covariance.
         subroutine push(name, u, cg)
