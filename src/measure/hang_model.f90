@@ -15,9 +15,9 @@
 !!   sigma_1 = 0): the statics does not depend on the inertia, only on the geometry.  The
 !!   remaining pose (sigma_2, theta_5) is where the planar four-bar A-B-C-D carries the
 !!   mass centre lowest: the constraint eq. (2) solved for theta_5 in closed form, and
-!!   sigma_2 by Newton's method on the accelerations at rest (zero there).  For equal cables,
-!!   b = b' and the mass centre below the midpoint of CD it is theta = 0; otherwise the body
-!!   tilts and the cables lean.
+!!   sigma_2 by Newton's method on the accelerations at rest (zero there).  For equal cables
+!!   and the mass centre below the midpoint of CD the body hangs level (theta_5 = 0);
+!!   otherwise it tilts.
 !! * Small amplitude (torsion_mode): the equations linearised at the rest pose, with the
 !!   exact Jacobian of the chart's right-hand side (bifilar_model's chart_jacobian, no
 !!   Baumgarte term): qddot = K q with K = Z(6:10, 1:5).  Its eigenvalues (LAPACK dgeev) are
