@@ -29,6 +29,7 @@ module suites
     use test_graph, only: run_graph_tests
     use test_stats, only: run_stats_tests
     use test_measure, only: run_measure_tests
+    use test_tensor, only: run_tensor_tests
     implicit none
     private
 
@@ -102,6 +103,8 @@ contains
                     'traps, tare, trifilar', run_measure_tests), &
             suite_t('stats', 'Student''s t, chi-square tails, Welch-Satterthwaite, weighted '// &
                     'means', run_stats_tests), &
+            suite_t('tensor', 'the inertia tensor from several hangs: exact fit, projection, '// &
+                    'u, plan, refusals', run_tensor_tests), &
             suite_t('graph', 'the module graph (layers, analyses apart, at most 8 floors); '// &
                     'the status table', run_graph_tests), &
             suite_t('runner', 'this runner: --list, --help, a filter that selects '// &

@@ -24,7 +24,8 @@ module driver
     use design, only: run_design, design_ready, design_result_t, design_task, DESIGN_STAGES
     use identify, only: identify_ready, run_identify, identify_result_t, identify_mc_task, &
         warning_t
-    use monte_carlo, only: MC_ANALYSIS
+    use tensor, only: tensor_ready, run_tensor, tensor_result_t, tensor_sweep_task
+    use monte_carlo, only: MC_ANALYSIS, MC_TENSOR
     use geometry, only: pendulum_t
     implicit none
     private
@@ -63,6 +64,7 @@ contains
         type(wp_result_t) :: wp
         type(design_result_t) :: dr
         type(identify_result_t) :: idr
+        type(tensor_result_t) :: tsr
         integer :: nstable, nfailed, k
         real(dp) :: secs
 
@@ -84,6 +86,8 @@ contains
             call undamped_ready(d, stat)
         if (stat%code == STATUS_OK .and. analysis_requested(d, 'identify')) &
             call identify_ready(d, stat)
+        if (stat%code == STATUS_OK .and. analysis_requested(d, 'tensor')) &
+            call tensor_ready(d, stat)
         if (stat%code /= STATUS_OK) return
 
         line = d%name//':'
@@ -162,6 +166,11 @@ contains
                 end if
                 line = line//', '//itoa(idr%iterations)//' iterations;'
             end if
+            if (analysis_requested(d, 'tensor')) then
+                call run_tensor(d, outdir, tsr, stat, files, options, rep)
+                if (stat%code /= STATUS_OK) exit run
+                line = line//tensor_summary(tsr, rep)
+            end if
             if (analysis_requested(d, 'simulate')) then
                 call run_simulation(d, outdir, sm, stat, files=files)
                 if (stat%code /= STATUS_OK) exit run
@@ -182,6 +191,13 @@ contains
                 end if
                 if (analysis_requested(d, 'identify')) &
                     call remove_file(checkpoint_path(outdir, d%name, MC_ANALYSIS))
+                if (analysis_requested(d, 'tensor')) then
+                    call remove_file(checkpoint_path(outdir, d%name, MC_TENSOR))
+                    if (allocated(tsr%warning)) then
+                        if (len(tsr%warning) > 0) write (error_unit, '(a)') &
+                            'bifilar: warning: '//path//': '//tsr%warning
+                    end if
+                end if
             end if
             return
         end block run
@@ -195,6 +211,31 @@ contains
         write (error_unit, '(a)') 'bifilar: warning: '//deck_path//': '//msg
         flush (error_unit)
     end subroutine warn
+
+    !> The summary line's part of analysis tensor: the principal moments with their u, the
+    !! chi-square, how far the projection solution lies, the Monte Carlo, the plan.
+    function tensor_summary(res, rep) result(s)
+        type(tensor_result_t), intent(in) :: res    !! what tensor found
+        type(sweep_report_t), intent(in) :: rep     !! its Monte Carlo's sweep
+        character(len=:), allocatable :: s
+        s = ' tensor'
+        if (res%fitted) then
+            s = s//' I_principal = '//sci(res%moments(1), 5)//', '//sci(res%moments(2), 5)// &
+                ', '//sci(res%moments(3), 5)//' (u '//sci(res%u_moments(1), 2)//', '// &
+                sci(res%u_moments(2), 2)//', '//sci(res%u_moments(3), 2)//'), chi2 '// &
+                fixed(res%chi2, 2)//'/dof '//itoa(res%dof)//', '//itoa(res%hangs)// &
+                ' hangs, projection off by '//sci(res%projection_difference, 2)
+            if (res%mc_samples > 0) s = s//', Monte Carlo u '//sci(res%u_moments_mc(1), 2)// &
+                ', '//sci(res%u_moments_mc(2), 2)//', '//sci(res%u_moments_mc(3), 2)// &
+                ' from '//itoa(res%mc_samples)//' samples, '//fixed(rep%wall_seconds, 2)// &
+                ' s'//ranks_note(rep)//resume_note(rep)
+        end if
+        if (res%plan > 0) then
+            if (res%fitted) s = s//','
+            s = s//' a plan of '//itoa(res%plan)//' hangs in '//res%plan_file
+        end if
+        s = s//';'
+    end function tensor_summary
 
     !> The other ranks of an MPI run: for each sweep rank 0 announces, read its deck, build
     !! its task and compute points, until rank 0 ends the program.
@@ -223,6 +264,8 @@ contains
                     call design_task(job%analysis, d, job%payload, task, st)
                 case (MC_ANALYSIS)
                     call identify_mc_task(d, job%payload, task, st)
+                case (MC_TENSOR)
+                    call tensor_sweep_task(d, job%payload, task, st)
                 case default
                     st%code = ERR_DECK
                     st%msg = 'no sweep named '//job%analysis//' in this executable'

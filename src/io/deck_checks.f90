@@ -1131,9 +1131,11 @@ contains
             call need('&suspension l_prime', deck_gave(d, 'l_prime'))
             call need('&suspension b', deck_gave(d, 'b'))
             call need('&suspension b_prime', deck_gave(d, 'b_prime'))
-            call need('&body the mass centre (cg_depth and cg_offset, or r and lambda)', &
-                      deck_gave(d, 'cg_depth') .or. (deck_gave(d, 'r') .and. &
-                      deck_gave(d, 'lambda')))
+            ! (a tensor deck's mass centre may come from its table of hangs: checked there)
+            if (what /= 'tensor') &
+                call need('&body the mass centre (cg_depth and cg_offset, or r and lambda)', &
+                          deck_gave(d, 'cg_depth') .or. (deck_gave(d, 'r') .and. &
+                          deck_gave(d, 'lambda')))
         else
             call need('&suspension radius', deck_gave(d, 'radius'))
             call need('&suspension radius_prime', deck_gave(d, 'radius_prime'))

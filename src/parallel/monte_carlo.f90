@@ -1,6 +1,6 @@
 !> Monte Carlo of independent samples as a sweep (GUM Supplement 1, JCGM 101:2008; issues
 !! 10 and 15): the one Monte Carlo code path of the program (identify's, from periods and
-!! from a record).
+!! from a record; tensor's, from the periods of several hangs).
 !!
 !! Sample k (1 .. n) draws its inputs from stream k of the seed (module random) and gives
 !! a fixed number of estimates (`mc_task_t`, deferred `sample(k, est, stat)`), so the
@@ -15,7 +15,7 @@
 !! same bits on any number of ranks and threads.
 !!
 !! The other ranks of an MPI run build the same task from the deck and the sweep's payload
-!! (module identify, identify_mc_task).
+!! (module identify, identify_mc_task; module tensor, tensor_sweep_task).
 module monte_carlo
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK
@@ -31,6 +31,8 @@ module monte_carlo
 
     !> The sweep's analysis name (its checkpoint: OUTDIR/NAME.identify_mc.partial).
     character(len=*), parameter, public :: MC_ANALYSIS = 'identify_mc'
+    !> The sweep of analysis tensor's Monte Carlo (OUTDIR/NAME.tensor_mc.partial).
+    character(len=*), parameter, public :: MC_TENSOR = 'tensor_mc'
 
     !> The samples of a Monte Carlo: extend it with what a sample needs and a `sample`.
     type, abstract, extends(sweep_task_t), public :: mc_task_t
@@ -73,9 +75,10 @@ contains
     !! sample.  With `outdir` the sweep is checkpointed there (OUTDIR/NAME.identify_mc
     !! .partial; options: --resume, the interval) and draws a progress line on a terminal;
     !! `payload` is what the other ranks need beyond the deck to build the same task (see
-    !! sweep_run); `files`: the run's staged files (removed on a signal).
+    !! sweep_run); `files`: the run's staged files (removed on a signal); `analysis`: the
+    !! sweep's name (MC_ANALYSIS, the default, or MC_TENSOR), which names its checkpoint.
     subroutine monte_carlo_run(task, d, n, payload, mean, sdev, stat, outdir, options, &
-                               report, files)
+                               report, files, analysis)
         class(mc_task_t), intent(in) :: task    !! the samples
         type(deck_t), intent(in) :: d           !! the deck (its path and name)
         integer, intent(in) :: n                !! samples (>= 2)
@@ -86,8 +89,9 @@ contains
         type(sweep_options_t), intent(in), optional :: options
         type(sweep_report_t), intent(out), optional :: report
         type(out_files_t), intent(in), optional :: files
+        character(len=*), intent(in), optional :: analysis
         real(dp), allocatable :: vals(:, :), s(:), est(:)
-        character(len=:), allocatable :: ckpt, label, path
+        character(len=:), allocatable :: ckpt, label, path, sweep
         integer :: k, j, nv
         mean = 0.0_dp
         sdev = 0.0_dp
@@ -96,11 +100,14 @@ contains
         label = ''
         path = ''
         if (allocated(d%path)) path = d%path
+        sweep = MC_ANALYSIS
+        if (present(analysis)) sweep = analysis
         if (present(outdir)) then
-            ckpt = checkpoint_path(outdir, d%name, MC_ANALYSIS)
-            label = d%name//': identify (Monte Carlo)'
+            ckpt = checkpoint_path(outdir, d%name, sweep)
+            label = d%name//': '//sweep(1:index(sweep, '_mc', back=.true.) - 1)// &
+                ' (Monte Carlo)'
         end if
-        call sweep_run(task, MC_ANALYSIS, path, ckpt, label, n, nv, vals, stat, options, &
+        call sweep_run(task, sweep, path, ckpt, label, n, nv, vals, stat, options, &
                        report, files, payload, d%text)
         if (stat%code /= STATUS_OK) return
         k = findloc(vals(nv, :) /= 0.0_dp, .true., 1)
