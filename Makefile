@@ -143,9 +143,9 @@ $(BIN)/bifilar_mpi: src/app/bifilar.f90 $(LIB_OBJ) | $(BIN)
 $(BIN)/sweep_probe_mpi: tests/bench/sweep_probe.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
 
-# The module graph: one line per module with its floor (tests/tools/module_graph.sh).
+# The module graph: one line per module with its floor (tests/module_graph.sh).
 graph:
-	@tests/tools/module_graph.sh
+	@tests/module_graph.sh
 
 # make mpi: OpenMPI (installed when missing and run as root), then bin/bifilar_mpi.
 mpi:

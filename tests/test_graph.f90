@@ -12,7 +12,7 @@ module test_graph
 
     public :: run_graph_tests
 
-    character(len=*), parameter :: SCRIPT = 'tests/tools/module_graph.sh'
+    character(len=*), parameter :: SCRIPT = 'tests/module_graph.sh'
 
 contains
 
