@@ -159,6 +159,7 @@ module deck
     end type deck_t
 
     public :: read_deck, read_deck_text, analysis_requested, deck_echo, estimated, deck_gave
+    public :: record_in_folder
 
     !> The physical inputs whose presence in the deck is recorded (deck_t%given).
     character(len=*), parameter :: GIVEN_TRACKED = 'g mass l l_prime b b_prime r lambda '// &

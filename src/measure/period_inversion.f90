@@ -62,7 +62,7 @@ module period_inversion
     use floquet, only: check_torsion_scene, torsion_period
     use random, only: rng_t, rng_stream, rng_normal
     use bifilar_model, only: NSTATE
-    use run_loop, only: stepped_model_t, row_sink_t, drive
+    use run_loop, only: stepped_model_t, row_sink_t, drive, falling_zero
     use output_io, only: out_files_t
     use budget, only: input_u_t, budget_row_t
     use inputs, only: input_t, set_input, no_effect_on_torsion, deck_inputs
@@ -244,42 +244,16 @@ contains
         class(stepped_model_t), intent(inout) :: m
         real(dp), intent(in) :: t0, t1          !! the step
         type(status_t), intent(out) :: stat
-        real(dp) :: y(NSTATE), a, b, fa, fb, c, fc
-        integer :: it, side
-        call m%state_at(t1, y, stat)
-        if (stat%code /= 0) return
-        fb = y(9)
+        real(dp) :: y(NSTATE), c
+        logical :: found
         if (.not. sink%below) then
+            call m%state_at(t1, y, stat)
+            if (stat%code /= 0) return
             sink%below = y(4) < 0.0_dp
             return
         end if
-        if (fb > 0.0_dp) return
-        call m%state_at(t0, y, stat)
-        if (stat%code /= 0) return
-        fa = y(9)
-        if (.not. (fa > 0.0_dp)) return
-        a = t0
-        b = t1
-        side = 0
-        do it = 1, 200
-            c = (a*fb - b*fa)/(fb - fa)
-            if (.not. (c > a .and. c < b)) c = 0.5_dp*(a + b)
-            call m%state_at(c, y, stat)
-            if (stat%code /= 0) return
-            fc = y(9)
-            if (fc > 0.0_dp) then
-                a = c
-                fa = fc
-                if (side == -1) fb = 0.5_dp*fb
-                side = -1
-            else
-                b = c
-                fb = fc
-                if (side == 1) fa = 0.5_dp*fa
-                side = 1
-            end if
-            if (b - a <= 4.0_dp*epsilon(1.0_dp)*b .or. fc == 0.0_dp) exit
-        end do
+        call falling_zero(m, t0, t1, 9, found, c, y, stat)
+        if (stat%code /= 0 .or. .not. found) return
         sink%t_max = c
         sink%done = .true.
     end subroutine period_after_step
