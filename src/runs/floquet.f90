@@ -12,6 +12,7 @@
 !! eigenvalues of the product of the segment matrices (LAPACK DGEEV).  Z is the exact
 !! Jacobian of the chart right-hand side (see jacobian_z).
 module floquet
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use kinds, only: dp, pi, deg
     use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC, ERR_MODEL
     use ode_system, only: ode_system_t, integrator_t, integrator_stats_t
@@ -117,6 +118,7 @@ module floquet
 
     public :: check_torsion_scene, torsion_period, jacobian_z, monodromy, floquet_analysis
     public :: multipliers_from_monodromy, torsion_start, pencil_multipliers, floquet_point
+    public :: point_values_valid
 
     !> Sentinel written for chart points where no analysis is possible (not a torsion scene,
     !! cables cannot reach, impossible inertia): never NaN.
@@ -652,5 +654,22 @@ contains
             period = CHART_FAILED
         end if
     end subroutine floquet_point
+
+    !> Whether values could come from floquet_point (values of a chart or a design read back
+    !! from a checkpoint): a finite modulus >= 0 with a finite period > 0, or a sentinel
+    !! (CHART_INVALID, CHART_FAILED) in both; without a period, the modulus alone.
+    pure logical function point_values_valid(modulus, period) result(ok)
+        real(dp), intent(in) :: modulus                 !! largest |multiplier| or a sentinel
+        real(dp), intent(in), optional :: period        !! the period or the same sentinel
+        logical :: real_point
+        real_point = ieee_is_finite(modulus) .and. modulus >= 0.0_dp
+        if (present(period)) real_point = real_point .and. ieee_is_finite(period) .and. &
+            period > 0.0_dp
+        ok = real_point
+        if (modulus == CHART_INVALID .or. modulus == CHART_FAILED) then
+            ok = .true.
+            if (present(period)) ok = period == modulus
+        end if
+    end function point_values_valid
 
 end module floquet
