@@ -501,6 +501,7 @@ contains
         integer :: i, nmade, r
         integer(c_int) :: rc
         integer, allocatable :: made(:)
+        character(len=:), allocatable :: why
         stat%code = STATUS_OK
         if (len(dir) == 0) then
             call set_error(stat, ERR_IO, 'output folder: an empty name')
@@ -510,7 +511,14 @@ contains
         if (present(room)) r = room
         call path_fits(dir, repeat('x', r), stat)
         if (stat%code /= STATUS_OK) then
-            stat%msg = 'output folder: '//stat%msg
+            why = ''
+            if (len(dir) + r + 25 <= PATH_MAX - 1) why = ' with a part longer than '// &
+                itoa(NAME_MAX)
+            call set_error(stat, ERR_IO, 'output folder '//clipped(dir)//': a name of '// &
+                itoa(len(dir))//' characters'//why//'; allowed: at most '// &
+                itoa(PATH_MAX - 1 - r - 25)//' characters (the system''s PATH_MAX less room '// &
+                'for the files in it), each part at most '//itoa(NAME_MAX)// &
+                ' (NAME_MAX); nothing was created')
             return
         end if
         allocate (made(len(dir)))
@@ -574,20 +582,18 @@ contains
             clipped(name)//' has a part of '//itoa(longest)//' characters (with a '// &
             'temporary suffix); allowed: at most '//itoa(NAME_MAX)//' (the system''s NAME_MAX)')
 
-    contains
-
-        !> s, or its first and last 40 characters around ' ... ' when longer than 100.
-        pure function clipped(s) result(c)
-            character(len=*), intent(in) :: s
-            character(len=:), allocatable :: c
-            if (len(s) <= 100) then
-                c = s
-            else
-                c = s(1:40)//' ... '//s(len(s) - 39:)
-            end if
-        end function clipped
-
     end subroutine path_fits
+
+    !> s, or its first and last 40 characters around ' ... ' when longer than 100.
+    pure function clipped(s) result(c)
+        character(len=*), intent(in) :: s
+        character(len=:), allocatable :: c
+        if (len(s) <= 100) then
+            c = s
+        else
+            c = s(1:40)//' ... '//s(len(s) - 39:)
+        end if
+    end function clipped
 
     ! ---------------------------------------------------------------- key = value
 
