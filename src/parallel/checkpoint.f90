@@ -261,8 +261,8 @@ contains
 
     contains
 
-        !> The next line of bytes (from pos) into line, when it holds at most maxlen
-        !! characters; false at the end of the bytes or for a longer line.
+        !> The next line of bytes (from pos) into line, cut after maxlen + 1 characters (a
+        !! line longer than maxlen is then no line the caller takes); false at the end.
         logical function next_line(maxlen)
             integer, intent(in) :: maxlen
             integer :: e
@@ -274,8 +274,7 @@ contains
             else
                 e = pos + e - 1
             end if
-            if (e - pos > maxlen) return
-            line = bytes(pos:e - 1)
+            line = bytes(pos:min(e - 1, pos + maxlen))
             pos = e + 1
             next_line = .true.
         end function next_line

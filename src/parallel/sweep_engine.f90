@@ -129,6 +129,7 @@ module sweep_engine
     end type sweep_job_t
 
     public :: sweep_run, sweep_start, sweep_finish, sweep_is_master, sweep_next_job
+    public :: sweep_resume_points
     public :: sweep_serve, sweep_library
     public :: checkpoint_path                       ! (of module checkpoint)
 
@@ -323,17 +324,8 @@ contains
 
         had_ckpt = .false.
         if (len(ckpt) > 0 .and. opt%resume) then
-            call checkpoint_read(ckpt, analysis, e%deck_crc, e%exe_crc, e%values, e%done, &
-                                 e%ndone, nbad, rep%note)
-            ! every value as if computed: what the task would not give is computed again
-            do k = 1, npoints
-                if (.not. e%done(k)) cycle
-                if (task%accepts(k, e%values(:, k))) cycle
-                e%done(k) = .false.
-                e%values(:, k) = 0.0_dp
-                e%ndone = e%ndone - 1
-                nbad = nbad + 1
-            end do
+            call sweep_resume_points(task, ckpt, analysis, e%deck_crc, e%exe_crc, e%values, &
+                                     e%done, e%ndone, nbad, rep%note)
             rep%resumed = e%ndone
             rep%rejected = nbad
             had_ckpt = e%ndone > 0
@@ -379,6 +371,33 @@ contains
         end if
         call move_alloc(e%values, values)
     end subroutine sweep_run
+
+    !> The points of a sweep's checkpoint that --resume takes (module checkpoint: the
+    !! fingerprint, each record's checksum), each then checked as if computed
+    !! (task%accepts): those that fail are not done and counted in nbad with the damaged
+    !! records; note says why no point was taken ('' when the header was).
+    subroutine sweep_resume_points(task, ckpt, analysis, deck_crc, exe_crc, values, done, &
+                                   ndone, nbad, note)
+        class(sweep_task_t), intent(in) :: task     !! the points
+        character(len=*), intent(in) :: ckpt        !! the checkpoint's path
+        character(len=*), intent(in) :: analysis    !! e.g. 'chart'
+        integer(int64), intent(in) :: deck_crc, exe_crc     !! the fingerprint
+        real(dp), intent(inout) :: values(:, :)     !! (values, points)
+        logical, intent(inout) :: done(:)           !! the points taken
+        integer, intent(out) :: ndone               !! their number
+        integer, intent(out) :: nbad                !! points damaged or refused
+        character(len=:), allocatable, intent(out) :: note
+        integer :: k
+        call checkpoint_read(ckpt, analysis, deck_crc, exe_crc, values, done, ndone, nbad, note)
+        do k = 1, size(done)
+            if (.not. done(k)) cycle
+            if (task%accepts(k, values(:, k))) cycle
+            done(k) = .false.
+            values(:, k) = 0.0_dp
+            ndone = ndone - 1
+            nbad = nbad + 1
+        end do
+    end subroutine sweep_resume_points
 
     !> The JOB message: id, points, values, the fingerprint, the analysis and the deck.
     function job_message(e, deck_path, deck_text) result(m)
