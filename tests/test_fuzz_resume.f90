@@ -1,13 +1,14 @@
 !> Fuzz of what `--resume` reads and of stopping a run (issue 22): the paths an audit took.
 !!
 !! - Checkpoints mutated pseudo-randomly (fixed seeds; module random) in 21 ways: a hex
-!!   digit flipped, NaN, Inf or a value out of its range (with the record's checksum made
-!!   anew, so that only the check of the values can refuse them, or not), cut short at any
-!!   byte, bytes inserted, records duplicated, swapped, blank lines, the `done` count, the
-!!   header's deck, executable, analysis, size or format changed, CR LF line ends, empty,
-!!   too large, no comment line.  First in process, on the sweep engine with a probe task
-!!   that checks its values exactly; then through the executable, on the checkpoints of a
-!!   deck with every sweep (a chart, a design's three stages, identify's Monte Carlo).
+!!   digit flipped, a quiet or signalling NaN, Inf or a value out of its range (with the
+!!   record's checksum made anew, so that only the check of the values can refuse them, or
+!!   not), cut short at any byte, bytes inserted, records duplicated, swapped, blank
+!!   lines, the `done` count, the header's deck, executable, analysis, size or format
+!!   changed, CR LF line ends, empty, too large, no comment line.  First in process, on
+!!   the sweep engine with a probe task that checks its values exactly; then through the
+!!   executable, on the checkpoints of a deck with every sweep (a chart, a design's three
+!!   stages, identify's Monte Carlo).
 !! - FIFOs, devices (links to /dev/zero, /dev/null, /dev/urandom), folders, links that lead
 !!   nowhere and a sparse file of 200 MB where a checkpoint should be.
 !! - SIGINT, SIGTERM and SIGHUP at every stage: as each sweep's first checkpoint appears,
@@ -22,7 +23,6 @@
 !! (cpu_seconds aside).
 module test_fuzz_resume
     use, intrinsic :: iso_fortran_env, only: int64
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use kinds, only: dp
     use testing, only: tester_t, write_text, exists, file_has, count_lines, line_starts, &
                        first_line, run, shell_count, scratch_dir, fresh_dir, abs_path, no_nan
@@ -70,7 +70,11 @@ module test_fuzz_resume
         NL//'      u_mass = 0.001, u_l = 0.001, u_l_prime = 0.001, u_b = 0.0005, '// &
         'u_b_prime = 0.0005,'//NL//'      u_period = 1e-4, u_amplitude = 0.5, '// &
         'monte_carlo = 200 /'//NL
-    !> The sweeps' checkpoints of ALL_DECK (NAME.X.partial).
+    !> ALL_DECK with its sweeps alone (what a resume recomputes is then only what a
+    !! mutation damaged, and identify's fit).
+    character(len=*), parameter :: SWEEP_DECK = "&scene analyses = 'chart design identify' /"// &
+        NL//ALL_DECK(index(ALL_DECK, '&suspension'):)
+    !> The sweeps' checkpoints of ALL_DECK and SWEEP_DECK (NAME.X.partial).
     integer, parameter :: NSWEEPS = 5
     character(len=16), parameter :: SWEEPS(NSWEEPS) = [character(len=16) :: 'chart', &
         'design', 'design_edges', 'design_precision', 'identify_mc']
@@ -203,7 +207,7 @@ contains
     end subroutine test_probe
 
     ! ---------------------------------------------------------------------------------------
-    !> Through the executable: ALL_DECK's five checkpoints, whole (made by a run whose commit
+    !> Through the executable: SWEEP_DECK's five checkpoints, whole (made by a run whose commit
     !! fails: NAME.chart.dat is a folder), mutated one at a time and resumed.  Every resume:
     !! exit 0, one stdout line saying what was taken or why not, nothing on stderr, files
     !! equal to the uninterrupted run's, no checkpoint or temporary file left, no NaN.
@@ -218,7 +222,7 @@ contains
         d = SCR//'/mutated'
         call fresh_dir(d)
         deck = d//'/all.nml'
-        call write_text(deck, ALL_DECK)
+        call write_text(deck, SWEEP_DECK)
         call make_reference(exe, deck, d//'/ref', d, ok)
         call t%check('mutated: the uninterrupted run (exit 0)', ok)
         seed = d//'/seed'
@@ -260,7 +264,8 @@ contains
                 end if
             end if
         end do
-        write (*, '(a)') '   fuzz_resume: '//itoa(NCASES)//' runs resumed from checkpoints of a '// &
+        write (*, '(a)') '   fuzz_resume: '//itoa(NCASES)//' runs resumed from checkpoints '// &
+            'of a '// &
             'chart, a design''s three stages and a Monte Carlo, mutated in '//itoa(NKINDS)// &
             ' ways'
         call t%check('mutated: '//itoa(NCASES)//' resumes from mutated checkpoints: exit 0, '// &
@@ -292,7 +297,7 @@ contains
         d = SCR//'/devices'
         call fresh_dir(d)
         deck = d//'/all.nml'
-        call write_text(deck, ALL_DECK)
+        call write_text(deck, SWEEP_DECK)
         call make_reference(exe, deck, d//'/ref', d, ok)
         seed = d//'/seed'
         call make_full_checkpoints(exe, deck, seed, d, have_all)
@@ -401,7 +406,7 @@ contains
                 ok = finished_ok(o, d//'/ref')
             else
                 nstopped = nstopped + 1
-                ok = stopped_ok(o, deck, SIGNUMS(s), trim(SIGNAMES(s)), .true.)
+                ok = stopped_ok(d, o, deck, ex, SIGNUMS(s), trim(SIGNAMES(s)), .true.)
                 ex = run(exe//' '//deck//' --out '//o//' --resume', d)
                 if (ok) ok = ex == 0
                 if (ok) ok = finished_ok(o, d//'/ref')
@@ -416,8 +421,8 @@ contains
         ! a long simulation, and a record's fit (input/identify_record.nml): each stopped at
         ! a random moment; nothing is kept
         call write_text(d//'/sim.nml', SIM_DECK)
-        call execute_command_line('cp input/identify_record.nml input/identify_record_swing.dat '// &
-                                  d//'/')
+        call execute_command_line('cp input/identify_record.nml '// &
+                                  'input/identify_record_swing.dat '//d//'/')
         call execute_command_line('sed -i "s#record = ''[^'']*''#record = '// &
             '''identify_record_swing.dat''#" '//d//'/identify_record.nml')
         refd = .false.
@@ -441,7 +446,7 @@ contains
                 if (ok) ok = finished_ok(o, d//'/ref'//itoa(k))
             else
                 nstopped = nstopped + 1
-                ok = stopped_ok(o, deck, SIGNUMS(s), trim(SIGNAMES(s)), .false.)
+                ok = stopped_ok(d, o, deck, ex, SIGNUMS(s), trim(SIGNAMES(s)), .false.)
                 if (ok) ok = shell_count('ls -A '//o//' | wc -l', d) == 0
             end if
             if (.not. ok) then
@@ -463,9 +468,9 @@ contains
 
         !> A run stopped by signal n: one stderr line naming the deck and the signal, nothing
         !! on stdout, no temporary file, only checkpoints (sweeps), the one named kept there.
-        logical function stopped_ok(o, deck, n, name, sweeps) result(ok)
-            character(len=*), intent(in) :: o, deck, name
-            integer, intent(in) :: n
+        logical function stopped_ok(d, o, deck, ex, n, name, sweeps) result(ok)
+            character(len=*), intent(in) :: d, o, deck, name
+            integer, intent(in) :: ex, n
             logical, intent(in) :: sweeps
             character(len=:), allocatable :: l, kept
             integer :: p, q
@@ -680,8 +685,8 @@ contains
         case (2, 3, 4, 5)                           ! NaN, Inf or out of range in one value
             col = pick(g, nv)
             select case (kind)
-            case (2, 3)
-                val = '7FF8000000000000'
+            case (2, 3)                             ! a quiet or a signalling NaN
+                val = merge('7FF8000000000000', '7FF0000000000001', pick(g, 2) == 1)
             case (4)
                 val = merge('7FF0000000000000', 'FFF0000000000000', pick(g, 2) == 1)
             case default
@@ -827,8 +832,8 @@ contains
         ok = all([ex == 0, count_lines(d//'/stdout') == 1])
     end subroutine make_reference
 
-    !> ALL_DECK's five checkpoints, whole, in seed: a run with --checkpoint 0 whose commit
-    !! fails (NAME.chart.dat is a folder) keeps them.
+    !> The five checkpoints of ALL_DECK or SWEEP_DECK, whole, in seed: a run with
+    !! --checkpoint 0 whose commit fails (NAME.chart.dat is a folder) keeps them.
     subroutine make_full_checkpoints(exe, deck, seed, d, ok)
         character(len=*), intent(in) :: exe, deck, seed, d
         logical, intent(out) :: ok

@@ -249,15 +249,15 @@ contains
         call execute_command_line('cp '//ck//' '//ck//'.full')
         ! a record damaged: that point alone is computed again, the others are taken
         call execute_command_line('sed -i "s/^5 4/5 G/" '//ck)
-        call partly(.false., 'a damaged record', 5)
+        call partly(fp, ck, .false., 'a damaged record', 5)
         ! one hexadecimal digit flipped: its checksum fails
         call execute_command_line('cp '//ck//'.full '//ck//' && sed -i "s/^9 40/9 50/" '//ck)
-        call partly(.false., 'a flipped digit', 9)
+        call partly(fp, ck, .false., 'a flipped digit', 9)
         ! a value changed and its record sealed again: taken, unless the task refuses it
         call execute_command_line('cp '//ck//'.full '//ck//' && sed -i "s/^7 \([0-9A-F]*\)'// &
             ' [0-9A-F]*/7 \1 0000000000000000/" '//ck)
         call seal_records(ck)
-        call partly(.true., 'a value out of range, sealed', 7)
+        call partly(fp, ck, .true., 'a value out of range, sealed', 7)
         ! the header damaged: nothing is taken
         call execute_command_line('cp '//ck//'.full '//ck//' && sed -i "s/^done 64/done x/" '//ck)
         call stale(fp, ck, 'a damaged header', 'probe', task%n, 'damaged')
@@ -268,7 +268,8 @@ contains
 
         !> A resume with this checkpoint takes every point but `bad`, which it computes again
         !! (a strict task: one that checks its values).
-        subroutine partly(strict, what, bad)
+        subroutine partly(fp, ck, strict, what, bad)
+            character(len=*), intent(in) :: fp, ck      !! fingerprint file, checkpoint
             logical, intent(in) :: strict
             character(len=*), intent(in) :: what
             integer, intent(in) :: bad

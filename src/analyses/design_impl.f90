@@ -1,8 +1,8 @@
 !> The implementation of the rig design (submodule of design): the three sweeps (Floquet
 !! points, band edges, precision), the bands, the recommendation and the file.
 submodule (design) design_impl
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use kinds, only: dp
+    use fptraps, only: finite_bits
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_MODEL, ERR_NUMERIC
     use text, only: itoa, sci, fixed
     use deck, only: deck_t, deck_echo
@@ -215,7 +215,7 @@ contains
         real(dp), intent(in) :: values(:)
         ok = size(values) == 2 .and. i >= 1 .and. i <= size(self%il)
         if (.not. ok) return
-        ok = ieee_is_finite(values(1)) .and. ieee_is_finite(values(2))
+        ok = all(finite_bits(values))
         if (.not. ok) return
         ok = values(1) >= self%ls(self%il(i)) .and. values(1) <= self%ls(self%il(i) + 1) .and. &
             values(2) >= 0.0_dp .and. values(2) <= 200.0_dp .and. values(2) == aint(values(2))
@@ -228,10 +228,10 @@ contains
         integer, intent(in) :: i
         real(dp), intent(in) :: values(:)
         ok = size(values) == 3 .and. i >= 1 .and. i <= size(self%ls)*size(self%bs)
+        if (ok) ok = all(finite_bits(values))
         if (.not. ok) return
         if (all(values == CHART_INVALID)) return
-        ok = all(ieee_is_finite(values))
-        if (ok) ok = values(1) > 0.0_dp .and. values(2) >= 0.0_dp .and. values(3) > -1.0_dp
+        ok = values(1) > 0.0_dp .and. values(2) >= 0.0_dp .and. values(3) > -1.0_dp
     end function precision_work_accepts
 
     !> Sweep 2's edge e: bisection in l until the bracket is at most EDGE_RTOL l; the edge is

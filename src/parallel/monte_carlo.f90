@@ -17,8 +17,8 @@
 !! The other ranks of an MPI run build the same task from the deck and the sweep's payload
 !! (module identify, identify_mc_task).
 module monte_carlo
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use kinds, only: dp
+    use fptraps, only: finite_bits
     use status, only: status_t, set_error, STATUS_OK
     use text, only: itoa
     use deck, only: deck_t
@@ -78,7 +78,7 @@ contains
         integer, intent(in) :: i                !! sample number
         real(dp), intent(in) :: values(:)       !! nest estimates, status code
         ok = size(values) == self%nest + 1 .and. i >= 1
-        if (ok) ok = all(ieee_is_finite(values))
+        if (ok) ok = all(finite_bits(values))
         if (ok) ok = values(self%nest + 1) == 0.0_dp
     end function mc_accepts
 

@@ -54,8 +54,8 @@
 module sweep_engine
     use, intrinsic :: iso_c_binding, only: c_int
     use, intrinsic :: iso_fortran_env, only: int64
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use kinds, only: dp
+    use fptraps, only: finite_bits
     use status, only: status_t, set_error, STATUS_OK, ERR_IO, ERR_DECK
     use text, only: itoa
     use output_io, only: remove_file
@@ -830,7 +830,7 @@ contains
         integer, intent(in) :: i                    !! point index
         real(dp), intent(in) :: values(:)           !! its values, as read from a checkpoint
         ! (the default needs none of the task's data: self is only named)
-        ok = all(ieee_is_finite(values)) .and. i >= 1 .and. same_type_as(self, self)
+        ok = all(finite_bits(values)) .and. i >= 1 .and. same_type_as(self, self)
     end function sweep_accepts
 
     !> Append points to the rank's queue.

@@ -11,8 +11,8 @@
 !! only point i's own sqrt(i) in the second value, with every value finite.
 module probe_task
     use, intrinsic :: iso_c_binding, only: c_int
-    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, &
-        ieee_is_finite
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
+    use fptraps, only: finite_bits
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK, ERR_NUMERIC
     use text, only: itoa
@@ -54,7 +54,7 @@ contains
         real(dp), intent(in) :: values(:)
         ok = .true.
         if (.not. self%strict) return
-        ok = all(ieee_is_finite(values)) .and. size(values) == 4
+        ok = all(finite_bits(values)) .and. size(values) == 4
         if (ok) ok = values(2) == sqrt(real(i, dp))
     end function probe_accepts
 
