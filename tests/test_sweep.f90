@@ -8,7 +8,7 @@ module test_sweep
     use kinds, only: dp
     use testing, only: tester_t, write_text, exists, file_has, count_lines, line_starts, &
                        first_line, run, shell_count, msg_of, scratch_dir, fresh_dir, empty_dir, &
-                       abs_path
+                       abs_path, seal_records
     use status, only: status_t, STATUS_OK, ERR_NUMERIC
     use text, only: itoa
     use sweep_engine, only: sweep_run, sweep_options_t, sweep_report_t
@@ -246,12 +246,51 @@ contains
         call write_text(fp, 'checkpoint deck 1')
         call stale(fp, ck, 'another analysis', 'probe2', task%n, 'another analysis')
         call stale(fp, ck, 'another size', 'probe', task%n + 1, 'number of points')
+        call execute_command_line('cp '//ck//' '//ck//'.full')
+        ! a record damaged: that point alone is computed again, the others are taken
         call execute_command_line('sed -i "s/^5 4/5 G/" '//ck)
-        call stale(fp, ck, 'a damaged value', 'probe', task%n, 'damaged')
-        call execute_command_line('rm -f '//ck)
+        call partly(fp, ck, .false., 'a damaged record', 5)
+        ! one hexadecimal digit flipped: its checksum fails
+        call execute_command_line('cp '//ck//'.full '//ck//' && sed -i "s/^9 40/9 50/" '//ck)
+        call partly(fp, ck, .false., 'a flipped digit', 9)
+        ! a value changed and its record sealed again: taken, unless the task refuses it
+        call execute_command_line('cp '//ck//'.full '//ck//' && sed -i "s/^7 \([0-9A-F]*\)'// &
+            ' [0-9A-F]*/7 \1 0000000000000000/" '//ck)
+        call seal_records(ck)
+        call partly(fp, ck, .true., 'a value out of range, sealed', 7)
+        ! the header damaged: nothing is taken
+        call execute_command_line('cp '//ck//'.full '//ck//' && sed -i "s/^done 64/done x/" '//ck)
+        call stale(fp, ck, 'a damaged header', 'probe', task%n, 'damaged')
+        call execute_command_line('rm -f '//ck//' '//ck//'.full')
         call stale(fp, ck, 'no checkpoint', 'probe', task%n, 'no checkpoint')
 
     contains
+
+        !> A resume with this checkpoint takes every point but `bad`, which it computes again
+        !! (a strict task: one that checks its values).
+        subroutine partly(fp, ck, strict, what, bad)
+            character(len=*), intent(in) :: fp, ck      !! fingerprint file, checkpoint
+            logical, intent(in) :: strict
+            character(len=*), intent(in) :: what
+            integer, intent(in) :: bad
+            type(probe_task_t) :: tk
+            type(sweep_options_t) :: o
+            o%resume = .true.
+            o%checkpoint_seconds = 1.0e6_dp
+            tk%n = task%n
+            tk%nap = 0
+            tk%shift = 0.25_dp
+            tk%strict = strict
+            call sweep_run(tk, 'probe', fp, ck, '', tk%n, 4, v, st, o, rep)
+            call t%check('checkpoint: '//what//': '//itoa(tk%n - 1)//' resumed, 1 computed '// &
+                'again (resumed '//itoa(rep%resumed)//', rejected '//itoa(rep%rejected)//')', &
+                st%code == STATUS_OK .and. rep%resumed == tk%n - 1 .and. rep%rejected == 1 &
+                .and. len(rep%note) == 0)
+            if (st%code == STATUS_OK) call t%check('checkpoint: '//what//': point '// &
+                itoa(bad)//' computed, the others from the checkpoint', &
+                all([(v(1, i) == real(i, dp) + merge(0.25_dp, merge(0.5_dp, 0.0_dp, i <= 20), &
+                i == bad), i=1, tk%n)]))
+        end subroutine partly
 
         !> A resume with this checkpoint computes every point and says why.
         subroutine stale(fp, ck, what, analysis, n, why)
@@ -332,10 +371,12 @@ contains
                      file_has(d//'/stdout', 'another deck (its CRC-64 differs): computed afresh')]))
         call t%check('stale: the file is that of a fresh run', same_file(d// &
                      '/other/kchart.chart.dat', d//'/o/kchart.chart.dat'))
-        ! the kept checkpoint of kchart.nml with its first value made 100: used (100 shows)
+        ! the kept checkpoint of kchart.nml with its first value made 100 (a modulus a point
+        ! could have) and its record's checksum made anew: used (100 shows)
         call execute_command_line('cp '//d//'/kept.partial '//d//'/other/kchart.chart.partial'// &
             ' && sed -i "/^done/{n;s/ [0-9A-F]\{16\}/ 4059000000000000/}" '//d// &
             '/other/kchart.chart.partial')
+        call seal_records(d//'/other/kchart.chart.partial')
         ex = run(exe//' '//deck//' --out '//d//'/other --resume', d)
         call t%check('stale: its own deck''s checkpoint is used (the tampered 100 shows)', &
                      all([ex == 0, resumed(d//'/stdout') > 0, &

@@ -18,6 +18,7 @@
 !! (module identify, identify_mc_task; module tensor, tensor_sweep_task).
 module monte_carlo
     use kinds, only: dp
+    use fptraps, only: finite_bits
     use status, only: status_t, set_error, STATUS_OK
     use text, only: itoa
     use deck, only: deck_t
@@ -40,6 +41,7 @@ module monte_carlo
     contains
         procedure(mc_sample_i), deferred :: sample
         procedure :: compute => mc_compute
+        procedure :: accepts => mc_accepts
     end type mc_task_t
 
     abstract interface
@@ -70,13 +72,26 @@ contains
         stat%code = STATUS_OK
     end subroutine mc_compute
 
+    !> Sample i's values as read back from a checkpoint: a sample that succeeded (status 0)
+    !! with finite estimates.  A failed sample is not taken from a checkpoint: it is
+    !! computed again (the run then fails with its own message, or it does not fail).
+    logical function mc_accepts(self, i, values) result(ok)
+        class(mc_task_t), intent(in) :: self
+        integer, intent(in) :: i                !! sample number
+        real(dp), intent(in) :: values(:)       !! nest estimates, status code
+        ok = size(values) == self%nest + 1 .and. i >= 1
+        if (ok) ok = all(finite_bits(values))
+        if (ok) ok = values(self%nest + 1) == 0.0_dp
+    end function mc_accepts
+
     !> Run the n samples of `task` over the ranks and threads: the mean and standard
     !! deviation (divisor n - 1) of each estimate, or the failure of the first failed
     !! sample.  With `outdir` the sweep is checkpointed there (OUTDIR/NAME.identify_mc
     !! .partial; options: --resume, the interval) and draws a progress line on a terminal;
     !! `payload` is what the other ranks need beyond the deck to build the same task (see
-    !! sweep_run); `files`: the run's staged files (removed on a signal); `analysis`: the
-    !! sweep's name (MC_ANALYSIS, the default, or MC_TENSOR), which names its checkpoint.
+    !! sweep_run); `analysis`: the sweep's name (MC_ANALYSIS, the default, or MC_TENSOR),
+    !! which names its checkpoint.  `files` is not needed any more (module signals removes
+    !! the run's temporary files on a signal, whatever the stage); callers may still pass it.
     subroutine monte_carlo_run(task, d, n, payload, mean, sdev, stat, outdir, options, &
                                report, files, analysis)
         class(mc_task_t), intent(in) :: task    !! the samples
@@ -107,8 +122,9 @@ contains
             label = d%name//': '//sweep(1:index(sweep, '_mc', back=.true.) - 1)// &
                 ' (Monte Carlo)'
         end if
+        if (present(files)) continue
         call sweep_run(task, sweep, path, ckpt, label, n, nv, vals, stat, options, &
-                       report, files, payload, d%text)
+                       report, payload, d%text)
         if (stat%code /= STATUS_OK) return
         k = findloc(vals(nv, :) /= 0.0_dp, .true., 1)
         if (k > 0) then

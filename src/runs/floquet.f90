@@ -13,6 +13,7 @@
 !! Jacobian of the chart right-hand side (see jacobian_z).
 module floquet
     use kinds, only: dp, pi, deg
+    use fptraps, only: finite_bits
     use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC, ERR_MODEL
     use ode_system, only: ode_system_t, integrator_t, integrator_stats_t
     use geometry, only: pendulum_t
@@ -117,6 +118,7 @@ module floquet
 
     public :: check_torsion_scene, torsion_period, jacobian_z, monodromy, floquet_analysis
     public :: multipliers_from_monodromy, torsion_start, pencil_multipliers, floquet_point
+    public :: point_values_valid
 
     !> Sentinel written for chart points where no analysis is possible (not a torsion scene,
     !! cables cannot reach, impossible inertia): never NaN.
@@ -652,5 +654,26 @@ contains
             period = CHART_FAILED
         end if
     end subroutine floquet_point
+
+    !> Whether values could come from floquet_point (values of a chart or a design read back
+    !! from a checkpoint): a finite modulus >= 0 with a finite period > 0, or a sentinel
+    !! (CHART_INVALID, CHART_FAILED) in both; without a period, the modulus alone.  (No
+    !! operation on a value before it is known finite: a signalling NaN traps.)
+    pure logical function point_values_valid(modulus, period) result(ok)
+        real(dp), intent(in) :: modulus                 !! largest |multiplier| or a sentinel
+        real(dp), intent(in), optional :: period        !! the period or the same sentinel
+        ok = .false.
+        if (.not. finite_bits(modulus)) return
+        if (present(period)) then
+            if (.not. finite_bits(period)) return
+        end if
+        if (modulus == CHART_INVALID .or. modulus == CHART_FAILED) then
+            ok = .true.
+            if (present(period)) ok = period == modulus
+            return
+        end if
+        ok = modulus >= 0.0_dp
+        if (ok .and. present(period)) ok = period > 0.0_dp
+    end function point_values_valid
 
 end module floquet
