@@ -2,7 +2,7 @@
 !! points, band edges, precision), the bands, the recommendation and the file.
 submodule (design) design_impl
     use kinds, only: dp
-    use fptraps, only: finite_bits
+    use finite, only: finite_bits
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_MODEL, ERR_NUMERIC
     use text, only: itoa, sci, fixed
     use deck, only: deck_t, deck_echo

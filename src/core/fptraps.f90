@@ -3,31 +3,18 @@
 !! 1.7e308 that reads back as an overflow.  The halting modes are saved and restored and the
 !! flags raised in between cleared, so the checking build's traps (-ffpe-trap) stay armed
 !! everywhere else.
-!!
-!! And `finite_bits`: whether a double is finite, from its bits alone (its exponent is not
-!! all ones), for values that come from outside, such as a checkpoint's: ieee_is_finite
-!! and every comparison trap on a signalling NaN in the checking build.
 module fptraps
-    use, intrinsic :: iso_fortran_env, only: int64
-    use kinds, only: dp
     use, intrinsic :: ieee_arithmetic, only: ieee_usual, ieee_support_halting, &
         ieee_get_halting_mode, ieee_set_halting_mode, ieee_set_flag
     implicit none
     private
 
-    public :: traps_off, traps_restore, finite_bits
+    public :: traps_off, traps_restore
 
     !> Size of the array traps_off fills (one mode per flag of ieee_usual).
     integer, parameter, public :: NTRAPS = size(ieee_usual)
 
 contains
-
-    !> x is finite (neither Inf nor NaN), decided from its bits without an operation that
-    !! could trap.
-    pure elemental logical function finite_bits(x)
-        real(dp), intent(in) :: x                   !! the value
-        finite_bits = iand(shiftr(transfer(x, 0_int64), 52), 2047_int64) /= 2047_int64
-    end function finite_bits
 
     !> Stop trapping overflow, division by zero and invalid (when traps are supported),
     !! remembering the halting modes in saved.

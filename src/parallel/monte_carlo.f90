@@ -18,7 +18,7 @@
 !! (module identify, identify_mc_task; module tensor, tensor_sweep_task).
 module monte_carlo
     use kinds, only: dp
-    use fptraps, only: finite_bits
+    use finite, only: finite_bits
     use status, only: status_t, set_error, STATUS_OK
     use text, only: itoa
     use deck, only: deck_t

@@ -55,7 +55,7 @@ module sweep_engine
     use, intrinsic :: iso_c_binding, only: c_int
     use, intrinsic :: iso_fortran_env, only: int64
     use kinds, only: dp
-    use fptraps, only: finite_bits
+    use finite, only: finite_bits
     use status, only: status_t, set_error, STATUS_OK, ERR_IO, ERR_DECK
     use text, only: itoa
     use output_io, only: remove_file

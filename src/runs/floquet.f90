@@ -13,7 +13,7 @@
 !! Jacobian of the chart right-hand side (see jacobian_z).
 module floquet
     use kinds, only: dp, pi, deg
-    use fptraps, only: finite_bits
+    use finite, only: finite_bits
     use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC, ERR_MODEL
     use ode_system, only: ode_system_t, integrator_t, integrator_stats_t
     use geometry, only: pendulum_t

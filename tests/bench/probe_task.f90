@@ -12,7 +12,7 @@
 module probe_task
     use, intrinsic :: iso_c_binding, only: c_int
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
-    use fptraps, only: finite_bits
+    use finite, only: finite_bits
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK, ERR_NUMERIC
     use text, only: itoa
