@@ -418,7 +418,7 @@ contains
         if (stat%code /= 0) return
         ! the cable swings out most at the turning point: beyond the model there (exit 4)
         if (.not. (y0(2)**2 + y0(3)**2 < SIN2_LIMIT**2)) then
-            call set_error(stat, ERR_MODEL, 'floquet: at the amplitude cable BC is up at '// &
+            call set_error(stat, ERR_MODEL, 'at the amplitude cable BC is up at '// &
                 'the horizontal (sin theta2 = '//sci(sqrt(y0(2)**2 + y0(3)**2), 6)//', '// &
                 'beyond '//sci(SIN2_LIMIT, 4)//'): the model of a hanging cable no longer '// &
                 'holds; lower the amplitude or lengthen the cables')
@@ -590,7 +590,7 @@ contains
         rows = 0.0_dp
         f = 0.0_dp
         if (.not. (y(2)**2 + y(3)**2 < SIN2_LIMIT**2)) then
-            call set_error(stat, ERR_MODEL, 'floquet: cable BC swings up to the horizontal '// &
+            call set_error(stat, ERR_MODEL, 'cable BC swings up to the horizontal '// &
                 'in the torsion (sin theta2 = '//sci(sqrt(y(2)**2 + y(3)**2), 6)//'): the '// &
                 'model of a hanging cable no longer holds; lower the amplitude or lengthen '// &
                 'the cables')
