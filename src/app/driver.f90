@@ -28,7 +28,7 @@ module driver
     use work_precision, only: run_work_precision, wp_result_t
     use design, only: run_design, design_ready, design_result_t, design_task, DESIGN_STAGES
     use identify, only: identify_ready, run_identify, identify_result_t, identify_mc_task, &
-        warning_t
+        warning_t, identify_input_t
     use tensor, only: tensor_ready, run_tensor, tensor_result_t, tensor_sweep_task
     use monte_carlo, only: MC_ANALYSIS, MC_TENSOR
     use geometry, only: pendulum_t
@@ -96,6 +96,7 @@ contains
         type(identify_result_t) :: idr
         type(tensor_result_t) :: tsr
         type(warning_t), allocatable :: ws(:)
+        type(identify_input_t) :: idin              !! what identify_ready read, read once
         integer :: nstable, nfailed, k
         real(dp) :: secs
 
@@ -121,7 +122,7 @@ contains
             analysis_requested(d, 'chart') .or. analysis_requested(d, 'design'))) &
             call undamped_ready(d, stat)
         if (stat%code == STATUS_OK .and. analysis_requested(d, 'identify')) &
-            call identify_ready(d, stat)
+            call identify_ready(d, stat, idin)
         if (stat%code == STATUS_OK .and. analysis_requested(d, 'tensor')) &
             call tensor_ready(d, stat)
         if (stat%code /= STATUS_OK) return
@@ -176,11 +177,16 @@ contains
             line = line//chart_part//design_part
             if (analysis_requested(d, 'identify')) then
                 call signals_stage('identify')
-                call run_identify(d, outdir, idr, stat, files, options, rep)
+                call run_identify(d, outdir, idr, stat, files, options, rep, idin)
                 call add_warning(rep)
                 if (stat%code /= STATUS_OK) exit run
-                line = line//' identify I1 = '//sci(idr%i1, 5)//' ± '// &
-                    sci(idr%u_i1_expanded, 2)//' (k = '//fixed(idr%k, 1)//', 95 %)'
+                if (idr%uncertainty_given) then
+                    line = line//' identify I1 = '//sci(idr%i1, 5)//' ± '// &
+                        sci(idr%u_i1_expanded, 2)//' (k = '//fixed(idr%k, 1)//', 95 %)'
+                else
+                    line = line//' identify I1 = '//sci(idr%i1, 5)//' (no uncertainty '// &
+                        'given: every u_* of &measurement is 0)'
+                end if
                 do k = 2, idr%np
                     if (idr%names(k) == 'c_v' .or. idr%names(k) == 'c_q') line = line// &
                         ', '//trim(idr%names(k))//' = '//sci(idr%p(k), 3)//' ± '// &
