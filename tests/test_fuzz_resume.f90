@@ -25,6 +25,7 @@ module test_fuzz_resume
     use, intrinsic :: iso_fortran_env, only: int64
     use kinds, only: dp
     use testing, only: tester_t, write_text, exists, file_has, count_lines, line_starts, &
+        message_lines, &
                        first_line, run, shell_count, scratch_dir, fresh_dir, abs_path, no_nan
     use text, only: itoa
     use status, only: status_t, STATUS_OK
@@ -243,7 +244,7 @@ contains
             call mutate(full, g, kind, trim(SWEEPS(w)), mutated, expect, note)
             call write_file(ck, mutated)
             ex = run('OMP_NUM_THREADS=1 '//exe//' '//deck//' --out '//c//' --resume', d)
-            ok = all([ex == 0, count_lines(d//'/stdout') == 1, count_lines(d//'/stderr') == 0, &
+            ok = all([ex == 0, count_lines(d//'/stdout') == 1, message_lines(d//'/stderr') == 0, &
                       same_outputs(c, d//'/ref', d), clean(c, d), no_nan(c)])
             select case (expect)
             case (EXP_ONE)
@@ -314,6 +315,7 @@ contains
                 call execute_command_line('rm -rf '//c//' && mkdir -p '//c//' && cp '//seed// &
                                           '/*.partial '//c//'/')
                 ck = c//'/all.'//trim(SWEEPS(w))//'.partial'
+                make = ''
                 select case (k)
                 case (1)
                     make = 'mkfifo '//ck
@@ -330,7 +332,7 @@ contains
                 ex = run('OMP_NUM_THREADS=1 timeout 20 '//exe//' '//deck//' --out '//c// &
                          ' --resume', d)
                 ok = all([ex == 0, count_lines(d//'/stdout') == 1, &
-                          count_lines(d//'/stderr') == 0, same_outputs(c, d//'/ref', d), &
+                          message_lines(d//'/stderr') == 0, same_outputs(c, d//'/ref', d), &
                           no_nan(c)])
                 if (ok .and. len_trim(SAYS(k)) > 0) ok = file_has(d//'/stdout', trim(SAYS(k)))
                 ! (a folder at the checkpoint's name stays: it is not a file to remove)
@@ -474,7 +476,7 @@ contains
             logical, intent(in) :: sweeps
             character(len=:), allocatable :: l, kept
             integer :: p, q
-            ok = all([ex == 128 + n, count_lines(d//'/stderr') == 1, &
+            ok = all([ex == 128 + n, message_lines(d//'/stderr') == 1, &
                       count_lines(d//'/stdout') == 0, &
                       line_starts(d//'/stderr', 1, 'bifilar: error (interrupted): '//deck//': '), &
                       file_has(d//'/stderr', 'stopped by signal '//itoa(n)//' ('//name//')'), &
@@ -532,11 +534,11 @@ contains
                      ' --out '//o//' --checkpoint 0', d)
             if (count_lines(d//'/stdout') == 1) then
                 ! (the chart ended before mpirun passed the signal on: it is whole)
-                ok = all([ex == 0 .or. ex == 1, count_lines(d//'/stderr') == 0, &
+                ok = all([ex == 0 .or. ex == 1, message_lines(d//'/stderr') == 0, &
                           exists(o//'/mchart.chart.dat'), clean(o, d), no_nan(o)])
             else
                 nstopped = nstopped + 1
-                ok = all([ex == merge(143, 1, len(to) > 0), count_lines(d//'/stderr') == 1, &
+                ok = all([ex == merge(143, 1, len(to) > 0), message_lines(d//'/stderr') == 1, &
                           count_lines(d//'/stdout') == 0, &
                           line_starts(d//'/stderr', 1, 'bifilar: error (interrupted): '// &
                           deck//': chart stopped by signal 15 (SIGTERM)'), &
@@ -615,12 +617,12 @@ contains
             ex = run(exe//' '''//deck//''' --out '''//out//'''', d)
             if (ex == 0) then
                 n0 = n0 + 1
-                ok = all([count_lines(d//'/stdout') == 1, count_lines(d//'/stderr') == 0, &
+                ok = all([count_lines(d//'/stdout') == 1, message_lines(d//'/stderr') == 0, &
                           exists(out//'/'//name//'.dat'), exists(out//'/'//name//'.summary')])
             else
                 n5 = n5 + 1
                 ok = all([ex == 5, count_lines(d//'/stdout') == 0, &
-                          count_lines(d//'/stderr') == 1, &
+                          message_lines(d//'/stderr') == 1, &
                           line_starts(d//'/stderr', 1, 'bifilar: error (cannot write output): ')])
                 ! (nothing created; a deck's name too long for the folder: its folder may be
                 ! made, since other decks could use it, but holds no file)
@@ -853,7 +855,7 @@ contains
         character(len=*), intent(in) :: o, ref
         character(len=:), allocatable :: d
         d = o//'/..'
-        ok = all([count_lines(d//'/stdout') == 1, count_lines(d//'/stderr') == 0, &
+        ok = all([count_lines(d//'/stdout') == 1, message_lines(d//'/stderr') == 0, &
                   same_outputs(o, ref, d), clean(o, d), no_nan(o)])
     end function finished_ok
 

@@ -11,7 +11,7 @@ module testing
 
     public :: write_text, exists, file_has, count_lines, line_starts, first_line, read_kv_text
     public :: run, shell_count, scratch_dir, fresh_dir, empty_dir, abs_path, no_nan
-    public :: msg_of, upper, seal_records
+    public :: msg_of, upper, seal_records, message_lines
 
     type, public :: tester_t
         integer :: passed = 0
@@ -148,6 +148,14 @@ contains
         end do
         close (u)
     end function count_lines
+
+    !> Lines of a file of standard error that are messages, not 'bifilar: note: ' lines (the
+    !! one line a long run may print at its start saying what it does and how long it will
+    !! take).
+    integer function message_lines(path) result(n)
+        character(len=*), intent(in) :: path
+        n = count_lines(path) - count_lines(path, 'bifilar: note: ', .true.)
+    end function message_lines
 
     !> Whether line k of a file starts with s.
     logical function line_starts(path, k, s)
