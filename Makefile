@@ -143,9 +143,9 @@ $(BIN)/bifilar_mpi: src/app/bifilar.f90 $(LIB_OBJ) | $(BIN)
 $(BIN)/sweep_probe_mpi: tests/bench/sweep_probe.f90 $(LIB_OBJ) $(TEST_OBJ) | $(BIN)
 	$(FC) $(FFLAGS) -J$(BUILD) $< $(LIB_OBJ) $(TEST_OBJ) $(LIBS) -o $@ $(LINK_QUIET)
 
-# The module graph: one line per module with its floor (tests/tools/module_graph.sh).
+# The module graph: one line per module with its floor (tests/module_graph.sh).
 graph:
-	@tests/tools/module_graph.sh
+	@tests/module_graph.sh
 
 # make mpi: OpenMPI (installed when missing and run as root), then bin/bifilar_mpi.
 mpi:
@@ -206,6 +206,8 @@ bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench
 	  $(MAKE) --no-print-directory MPI=1 $(BIN)/bifilar_mpi $(BIN)/sweep_probe_mpi; fi
 	@echo "MPI: strong scaling of the 60 x 45 chart and of identify's Monte Carlo, the cost of the chart's points, the model of 1000 x 1000:"
 	tests/bench/mpi_scaling.sh $(BIN) output/bench_mpi.dat
+	@echo "tensor: the 9-hang example without Monte Carlo (aim: under 1 s) and its 2000 Monte Carlo samples on 2 threads (aim: under 30 s):"
+	tests/bench/tensor_speed.sh $(BIN) output/bench_tensor.dat
 
 # memcheck needs a shared libc (its malloc): bin/bifilar's objects, linked with DYN_LIBS.
 memcheck: src/app/bifilar.f90 $(LIB_OBJ)
@@ -223,6 +225,8 @@ records: $(BIN)/make_record
 	$(BIN)/make_record periods input/truth/identify_periods_truth.nml 1e-4 7 10 30 60
 	$(BIN)/make_record trials input/truth/identify_trials_truth.nml input/identify_trials.csv \
 	  11 0.05 0.002 3 2 10 10 0.8 1.2 1.6 2.0
+	@# the periods of the tensor example's hangs (input/tensor_example.nml)
+	$(BIN)/make_record hangs input/truth/tensor_example_truth.nml 0 1 input/tensor_example_hangs.csv
 
 DECKS = $(wildcard input/*.nml)
 run: deps $(BIN)/bifilar

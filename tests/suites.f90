@@ -14,6 +14,7 @@ module suites
     use test_floquet, only: run_floquet_tests
     use test_extreme, only: run_extreme_tests
     use test_fuzz, only: run_fuzz_tests
+    use test_fuzz_resume, only: run_fuzz_resume_tests
     use test_work_precision, only: run_work_precision_tests
     use test_elastic, only: run_elastic_tests
     use test_elastic_jac, only: run_elastic_jac_tests
@@ -30,6 +31,7 @@ module suites
     use test_stats, only: run_stats_tests
     use test_measure, only: run_measure_tests
     use test_sensitivities, only: run_sensitivities_tests
+    use test_tensor, only: run_tensor_tests
     implicit none
     private
 
@@ -75,6 +77,8 @@ contains
                     'input/, slack and snap', run_extreme_tests), &
             suite_t('fuzz', 'about 2000 hostile decks and records through the executable', &
                     run_fuzz_tests), &
+            suite_t('fuzz_resume', 'checkpoints damaged, forged and not files; signals at '// &
+                    'every stage; --out limits', run_fuzz_resume_tests), &
             suite_t('work_precision', 'work-precision curves, their reference, RK4''s '// &
                     'order, the error estimate', run_work_precision_tests), &
             suite_t('elastic', 'elastic cables: conversions, energy, convergence to the '// &
@@ -105,6 +109,8 @@ contains
                     'runs, fits, monodromies', run_sensitivities_tests), &
             suite_t('stats', 'Student''s t, chi-square tails, Welch-Satterthwaite, weighted '// &
                     'means', run_stats_tests), &
+            suite_t('tensor', 'the inertia tensor from several hangs: exact fit, projection, '// &
+                    'u, plan, refusals', run_tensor_tests), &
             suite_t('graph', 'the module graph (layers, analyses apart, at most 8 floors); '// &
                     'the status table', run_graph_tests), &
             suite_t('runner', 'this runner: --list, --help, a filter that selects '// &

@@ -179,8 +179,12 @@ contains
             do i = 1, n
                 kind = ''
                 one_line = count_lines(dir//'/stdout', trim(names(i))//': ', .true.) + &
-                    count_lines(dir//'/stderr', ': '//trim(paths(i))//': ', .false.) == 1
-                if (count_lines(dir//'/stderr', ': '//trim(paths(i))//': ', .false.) == 1) &
+                    count_lines(dir//'/stderr', ': '//trim(paths(i))//': ', .false.) - &
+                    count_lines(dir//'/stderr', 'bifilar: note: '//trim(paths(i))//': ', &
+                                .true.) == 1
+                if (count_lines(dir//'/stderr', ': '//trim(paths(i))//': ', .false.) - &
+                    count_lines(dir//'/stderr', 'bifilar: note: '//trim(paths(i))//': ', &
+                                .true.) == 1) &
                     kind = error_kind(dir//'/stderr', ': '//trim(paths(i))//': ')
                 if (.not. one_line) call bad(2, trim(names(i)))
                 st = 0
@@ -1211,7 +1215,7 @@ contains
         do
             read (u, '(a)', iostat=ios) line
             if (ios /= 0) exit
-            if (index(line, s) == 0) cycle
+            if (index(line, s) == 0 .or. index(line, 'bifilar: note: ') == 1) cycle
             kind = '?'
             e = index(line, '): ')
             if (index(line, 'bifilar: error (') == 1 .and. e > 17) kind = line(17:e - 1)

@@ -12,7 +12,7 @@ module test_graph
 
     public :: run_graph_tests
 
-    character(len=*), parameter :: SCRIPT = 'tests/tools/module_graph.sh'
+    character(len=*), parameter :: SCRIPT = 'tests/module_graph.sh'
 
 contains
 
@@ -71,14 +71,14 @@ contains
                      file_has(d//'/stderr', 'two uses one: an analysis uses another analysis'))
         ex = run(SCRIPT//' '//s, d)
         call t%check('graph breaks: without --check the graph is printed, exit 0', &
-                     ex == 0 .and. file_has(d//'/stdout', 'floors, 4 units'))
+                     all([ex == 0, file_has(d//'/stdout', 'floors, 4 units')]))
         ! nine floors in one folder: a chain m1 <- m2 <- ... <- m9
         call execute_command_line('rm -rf '//s//' && mkdir -p '//s//'/core && for i in 1 2 '// &
             '3 4 5 6 7 8 9; do { echo "module m$i"; [ $i -gt 1 ] && echo "    use m$((i-1))"; '// &
             'echo "end module m$i"; } > '//s//'/core/m$i.f90; done')
         ex = run(SCRIPT//' --check '//s, d)
-        call t%check('graph breaks: 9 floors fail the check, named', ex == 1 .and. &
-                     file_has(d//'/stderr', 'the graph has 9 floors; allowed: at most 8'))
+        call t%check('graph breaks: 9 floors fail the check, named', all([ex == 1, &
+                     file_has(d//'/stderr', 'the graph has 9 floors; allowed: at most 8')]))
     end subroutine test_breaks
 
     subroutine test_status(t)

@@ -843,9 +843,10 @@ contains
         call one('tiny_u', "&measurement record = 'bad_tiny_u.dat' /", 2, &
                  'line 1: standard uncertainty 4.941E-324 rad is out of range; allowed: '// &
                  'from 1.000E-12 to 1.000E+03 rad')
-        ! a file without line ends: read whole before (a hang, missed by the fuzz test)
+        ! a file without line ends: read whole before (a hang, missed by the fuzz test); a
+        ! device is refused before it is opened
         call one('dev_zero', "&measurement record = '/dev/zero' /", 2, &
-                 'line 1 is longer than 4096 characters')
+                 'is a device or a file without a size')
         call one('period', "&measurement periods = 0.05, amplitudes = 20 /", 2, &
                  'no positive I1')
         call one('word', "&measurement record = 'bad_mono.dat', estimate = 'I1 inertia' /", &

@@ -557,6 +557,7 @@ contains
         inside = 0
         ok = 0
         naive = 0
+        name = ''
         do seed = 1, 20
             g = rng_stream(1000 + seed, 0)
             tab = 'trial,period,cycles,amplitude,u_period'//NL

@@ -5,12 +5,13 @@ module testing
     use kinds, only: dp
     use status, only: status_t
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    use crc64, only: crc64_of, hex16
     implicit none
     private
 
     public :: write_text, exists, file_has, count_lines, line_starts, first_line, read_kv_text
     public :: run, shell_count, scratch_dir, fresh_dir, empty_dir, abs_path, no_nan
-    public :: msg_of, upper
+    public :: msg_of, upper, seal_records, message_lines
 
     type, public :: tester_t
         integer :: passed = 0
@@ -148,6 +149,14 @@ contains
         close (u)
     end function count_lines
 
+    !> Lines of a file of standard error that are messages, not 'bifilar: note: ' lines (the
+    !! one line a long run may print at its start saying what it does and how long it will
+    !! take).
+    integer function message_lines(path) result(n)
+        character(len=*), intent(in) :: path
+        n = count_lines(path) - count_lines(path, 'bifilar: note: ', .true.)
+    end function message_lines
+
     !> Whether line k of a file starts with s.
     logical function line_starts(path, k, s)
         character(len=*), intent(in) :: path, s
@@ -264,6 +273,45 @@ contains
         call get_environment_variable('PWD', cwd, status=st)
         if (st == 0) a = trim(cwd)//'/'//path
     end function abs_path
+
+    !> Give every record of the sweep checkpoint at path (the lines between `done K` and
+    !! `end` with a blank before their last 16 characters) the checksum of its text again, so
+    !! that a value changed on purpose passes the checksum and only the check of the values
+    !! themselves can refuse it.
+    subroutine seal_records(path)
+        character(len=*), intent(in) :: path
+        character(len=4096), allocatable :: ls(:)
+        character(len=4096) :: line
+        integer :: u, ios, n, k, m
+        logical :: inside
+        allocate (ls(0))
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            ls = [character(len=4096) :: ls, line]
+        end do
+        close (u)
+        n = size(ls)
+        inside = .false.
+        do k = 1, n
+            m = len_trim(ls(k))
+            if (index(ls(k), 'done ') == 1) then
+                inside = .true.
+            else if (ls(k) == 'end') then
+                inside = .false.
+            else if (inside .and. m > 17) then
+                if (ls(k)(m - 16:m - 16) == ' ') ls(k)(m - 15:m) = hex16(crc64_of(ls(k)(1:m - 17)))
+            end if
+        end do
+        open (newunit=u, file=path, status='replace', action='write', iostat=ios)
+        if (ios /= 0) return
+        do k = 1, n
+            write (u, '(a)') trim(ls(k))
+        end do
+        close (u)
+    end subroutine seal_records
 
     ! ---------------------------------------------------------------------------------------
     ! text

@@ -2,18 +2,19 @@
 !! points, band edges, precision), the bands, the recommendation and the file.
 submodule (design) design_impl
     use kinds, only: dp
+    use finite, only: finite_bits
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_MODEL, ERR_NUMERIC
     use text, only: itoa, sci, fixed
     use deck, only: deck_t, deck_echo
     use geometry, only: pendulum_t
     use rig, only: rig_t, rig_of, accuracy_t, accuracy_of, make_pendulum, move_b_prime
     use floquet, only: check_torsion_scene, STABILITY_MARGIN, floquet_point, CHART_INVALID, &
-                       CHART_FAILED
+                       CHART_FAILED, point_values_valid
     use sweep_engine, only: sweep_task_t, sweep_run, sweep_options_t, sweep_report_t, &
         checkpoint_path
     use period_inversion, only: period_fit_t, torsion_period_s, invert_periods, &
                                 period_budget, linear_inertia
-    use output_io, only: out_files_t, write_kv
+    use output_io, only: out_files_t, write_kv, remove_file
     implicit none
 
     !> Sweep 1: Floquet point k = (amplitude j, l i, b m), amplitude fastest; value: the
@@ -23,6 +24,7 @@ submodule (design) design_impl
         real(dp), allocatable :: ls(:), bs(:), bps(:), amps(:)
     contains
         procedure :: compute => floquet_work_point
+        procedure :: accepts => floquet_work_accepts
     end type floquet_work_t
 
     !> Sweep 2: edge e between l(il(e)) and l(il(e) + 1) at b(ib(e)), amplitude ia(e), with
@@ -35,6 +37,7 @@ submodule (design) design_impl
         logical, allocatable :: left_stable(:)
     contains
         procedure :: compute => edge_work_point
+        procedure :: accepts => edge_work_accepts
     end type edge_work_t
 
     !> Sweep 3: candidate c = (l i, b m), l fastest; values: period (s), u(I1)/I1, linear
@@ -46,6 +49,7 @@ submodule (design) design_impl
         type(input_u_t) :: u
     contains
         procedure :: compute => precision_work_point
+        procedure :: accepts => precision_work_accepts
     end type precision_work_t
 
 contains
@@ -193,6 +197,43 @@ contains
                                values(1))
     end subroutine floquet_work_point
 
+    !> Sweep 1's point i as read back from a checkpoint: a modulus as floquet_point gives it.
+    logical function floquet_work_accepts(self, i, values) result(ok)
+        class(floquet_work_t), intent(in) :: self
+        integer, intent(in) :: i
+        real(dp), intent(in) :: values(:)
+        ok = size(values) == 1 .and. i >= 1 .and. &
+            i <= size(self%amps)*size(self%ls)*size(self%bs)
+        if (ok) ok = point_values_valid(values(1))
+    end function floquet_work_accepts
+
+    !> Sweep 2's edge i as read back from a checkpoint: inside its bracket of l, after a
+    !! whole number of bisection steps (at most 200: each halves the bracket).
+    logical function edge_work_accepts(self, i, values) result(ok)
+        class(edge_work_t), intent(in) :: self
+        integer, intent(in) :: i
+        real(dp), intent(in) :: values(:)
+        ok = size(values) == 2 .and. i >= 1 .and. i <= size(self%il)
+        if (.not. ok) return
+        ok = all(finite_bits(values))
+        if (.not. ok) return
+        ok = values(1) >= self%ls(self%il(i)) .and. values(1) <= self%ls(self%il(i) + 1) .and. &
+            values(2) >= 0.0_dp .and. values(2) <= 200.0_dp .and. values(2) == aint(values(2))
+    end function edge_work_accepts
+
+    !> Sweep 3's candidate i as read back from a checkpoint: a period > 0, u(I1)/I1 >= 0 and
+    !! a linear error > -1, all finite, or CHART_INVALID in all three.
+    logical function precision_work_accepts(self, i, values) result(ok)
+        class(precision_work_t), intent(in) :: self
+        integer, intent(in) :: i
+        real(dp), intent(in) :: values(:)
+        ok = size(values) == 3 .and. i >= 1 .and. i <= size(self%ls)*size(self%bs)
+        if (ok) ok = all(finite_bits(values))
+        if (.not. ok) return
+        if (all(values == CHART_INVALID)) return
+        ok = values(1) > 0.0_dp .and. values(2) >= 0.0_dp .and. values(3) > -1.0_dp
+    end function precision_work_accepts
+
     !> Sweep 2's edge e: bisection in l until the bracket is at most EDGE_RTOL l; the edge is
     !! the bracket's midpoint.
     subroutine edge_work_point(self, i, values, stat)
@@ -279,6 +320,7 @@ contains
         logical, allocatable :: sta(:, :, :)
 
         all%note = ''
+        all%warning = ''
         call design_grid(d, res%ls, res%bs, res%bps, res%amps)
         na = size(res%amps)
         nl = size(res%ls)
@@ -383,11 +425,13 @@ contains
             all%ranks = r%ranks
             all%threads = r%threads
             all%resumed = all%resumed + r%resumed
+            all%rejected = all%rejected + r%rejected
             all%checkpoints = all%checkpoints + r%checkpoints
             all%requests = all%requests + r%requests
             all%wall_seconds = all%wall_seconds + r%wall_seconds
             all%serve_seconds = all%serve_seconds + r%serve_seconds
             if (len(all%note) == 0 .and. allocated(r%note)) all%note = r%note
+            if (len(all%warning) == 0 .and. allocated(r%warning)) all%warning = r%warning
             res%wall_seconds = all%wall_seconds
         end subroutine add
 
@@ -673,6 +717,10 @@ contains
         if (stat%code /= STATUS_OK) return
         if (.not. res%found) then
             call set_error(stat, ERR_MODEL, no_candidate_message(d, res))
+            ! the failure would repeat: the sweeps' checkpoints go (as a failed point's)
+            do k = 1, size(DESIGN_STAGES)
+                call remove_file(checkpoint_path(outdir, d%name, trim(DESIGN_STAGES(k))))
+            end do
             return
         end if
         na = size(res%amps)

@@ -55,10 +55,23 @@ module identify
     use deck, only: deck_t
     use output_io, only: out_files_t
     use budget, only: budget_row_t
+    use, intrinsic :: iso_fortran_env, only: int64
     use records, only: record_t
+    use trials, only: trial_set_t
     use sweep_engine, only: sweep_task_t, sweep_options_t, sweep_report_t
     implicit none
     private
+
+    !> What identify_ready read, kept for the run (issue 22: a record read twice could be
+    !! replaced in between, a logger still writing, and its second reading went unchecked):
+    !! the releases (the deck's one or a table's) and each release's record, read and
+    !! checked once, with the CRC-64 of the record file's bytes as read.
+    type, public :: identify_input_t
+        logical :: ready = .false.              !! filled by identify_ready
+        type(trial_set_t) :: ts                 !! the releases
+        type(record_t), allocatable :: recs(:)  !! each release's record (records only)
+        integer(int64), allocatable :: crc(:)   !! each record file's CRC-64 (CRC-64/XZ)
+    end type identify_input_t
 
     !> One line of warning (stderr, exit 0).
     type, public :: warning_t
@@ -68,6 +81,10 @@ module identify
     !> What identify found (deck units; the record's units for residuals).
     type, public :: identify_result_t
         logical :: from_record = .false.        !! a record fit (else periods)
+        !> an uncertainty was given (a u of an input, the timings' scatter, a record's
+        !! residuals, the releases' scatter); else u_I1 = 0 says nothing
+        logical :: uncertainty_given = .true.
+        integer(int64), allocatable :: record_crc(:)    !! each release's record's CRC-64
         !> I1 of the body (after tare and added inertia) and its combined standard u
         real(dp) :: i1 = 0.0_dp, u_i1 = 0.0_dp
         real(dp) :: u_i1_expanded = 0.0_dp      !! U = k u (95 %)
@@ -111,14 +128,17 @@ module identify
     public :: identify_ready, run_identify, identify_record, identify_mc_task
 
     interface
-        !> The preconditions of analyses = 'identify', checked before any computing.
-        module subroutine identify_ready(d, stat)
+        !> The preconditions of analyses = 'identify', checked before any computing; the
+        !! releases and records read once into `input` for run_identify; the work estimated
+        !! (a note on stderr when it is long).
+        module subroutine identify_ready(d, stat, input)
             type(deck_t), intent(in) :: d           !! the deck
-            type(status_t), intent(out) :: stat     !! ERR_DECK
+            type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_MODEL
+            type(identify_input_t), intent(out), optional :: input  !! what was read
         end subroutine identify_ready
 
         !> Run analyses = 'identify' for a deck: OUTDIR/NAME.identify (and NAME.fit.dat).
-        module subroutine run_identify(d, outdir, res, stat, files, options, report)
+        module subroutine run_identify(d, outdir, res, stat, files, options, report, input)
             type(deck_t), intent(in) :: d           !! the deck (identify_ready passed)
             character(len=*), intent(in) :: outdir  !! output directory
             type(identify_result_t), intent(out) :: res
@@ -126,6 +146,8 @@ module identify
             type(out_files_t), intent(inout) :: files   !! the run's files
             type(sweep_options_t), intent(in), optional :: options  !! --resume, the interval
             type(sweep_report_t), intent(out), optional :: report   !! of the Monte Carlo
+            !> what identify_ready read (else the releases are read here, once)
+            type(identify_input_t), intent(in), optional :: input
         end subroutine run_identify
 
         !> I1 (and the other parameters asked for) from a record: the fit, the first-order

@@ -15,7 +15,8 @@ submodule (identify) identify_impl
         start_state
     use least_squares, only: lsq_result_t, lsq_jacobian, lm_fit, lsq_options_t
     use budget, only: input_u_t
-    use records, only: read_record_file, record_format_t, record_format_of, record_file, mean_period
+    use records, only: read_record_file, record_format_t, record_format_of, record_file, &
+        mean_period
     use trials, only: trial_set_t, trial_t, read_trials, RIG_COLUMNS
     use inputs, only: input_t, deck_inputs, set_input
     use pooling, only: pooled_t, pool_releases
@@ -25,9 +26,13 @@ submodule (identify) identify_impl
         correlation_time, PARAM_NAMES, P_BIAS
     use period_inversion, only: period_fit_t, invert_periods, period_budget, &
                                 period_monte_carlo, linear_inertia, is_torsion_rig, &
-                                period_mc_task, period_mc_task_t, rig_period_s
-    use crc64, only: file_crc, crc_parts, crc_join
+                                period_mc_task, period_mc_task_t, rig_period_s, &
+                                torsion_period_s, simulated_period_s
+    use crc64, only: crc64_of, crc_parts, hex16
     use monte_carlo, only: monte_carlo_run
+    use work_estimate, only: check_timings, check_record_times, periods_runs, record_runs, &
+        work_note, reference_periods, record_swing_period, CAUSES_HIGH, CAUSES_LOW, &
+        TRIANGLE_MARGIN, LINEAR_GAP_MAX
     implicit none
 
     !> One release analysed alone.
@@ -60,29 +65,36 @@ submodule (identify) identify_impl
         logical :: sigma_stated = .false.
         real(dp) :: residual_rms = 0.0_dp
         integer :: iterations = 0, evaluations = 0, samples = 0
+        integer(int64) :: crc = 0               !! its record file's CRC-64
         type(warning_t), allocatable :: warnings(:)
     end type release_t
 
-    !> An I1 more than this factor above I2 + I3 (or below |I2 - I3| over it) is refused.
-    real(dp), parameter :: TRIANGLE_MARGIN = 1.1_dp
-    !> At amplitudes up to 90 degrees, an I1 further than this from the classical formula's
-    !! is refused (the amplitude correction is 1.3 % at 30 degrees, 20 % at 90).
-    real(dp), parameter :: LINEAR_GAP_MAX = 0.5_dp
+    ! TRIANGLE_MARGIN: an I1 more than this factor above I2 + I3 (or below |I2 - I3| over
+    ! it) is refused; LINEAR_GAP_MAX: at amplitudes up to 90 degrees, an I1 further than this
+    ! from the classical formula's is refused (the amplitude correction is 1.3 % at 30
+    ! degrees, 20 % at 90).  Both from module work_estimate, which checks them on the
+    ! classical I1 before the work.
 
 contains
 
     !> The preconditions of analyses = 'identify', checked before any computing: the
     !! paper's model; one of periods, a record or a table of releases; I1 estimated (and
     !! only I1 from periods); every release readable (its periods possible on a symmetric
-    !! rig, its record sound and long enough); Monte Carlo only for the deck's own release.
+    !! rig, its record sound and long enough), and what no rig gives refused at once
+    !! (module work_estimate: periods or a record's swing far beyond the rig's, the
+    !! classical I1 beyond the triangle inequality, a record sampled too coarsely, with a
+    !! long gap, in degrees without record_units); Monte Carlo only for the deck's own
+    !! release.  The releases and their records are read once, into `input`, with each
+    !! record's CRC-64.  The work is estimated; when it is long, one note line says so.
     module procedure identify_ready
+        type(identify_input_t) :: inp
         type(trial_set_t) :: ts
-        type(record_t) :: rec
         type(period_fit_t) :: f
         type(pendulum_t) :: p
         type(rig_t) :: rg
-        real(dp) :: y0(NSTATE), th0(5)
-        integer :: i, nsrc
+        real(dp) :: y0(NSTATE), th0(5), secs, total
+        character(len=:), allocatable :: bytes, what, first_what
+        integer :: i, nsrc, nrec, nup, j
         stat%code = 0
         if (trim(d%model) /= 'kane') then
             call set_error(stat, ERR_DECK, 'analyses = ''identify'': &scene model = '''// &
@@ -121,6 +133,11 @@ contains
                 'one kind of release per table (a deck per kind)')
             return
         end if
+        nrec = count([(len(ts%t(i)%record) > 0, i=1, size(ts%t))])
+        allocate (inp%recs(nrec), inp%crc(nrec))
+        total = 0.0_dp
+        first_what = ''
+        j = 0
         do i = 1, size(ts%t)
             rg = trial_rig(d, ts%t(i))
             if (len(ts%t(i)%record) == 0) then
@@ -135,6 +152,13 @@ contains
                     call in_trial(ts, i, stat)
                     return
                 end if
+                ! periods no rig gives, a classical I1 beyond the triangle: refused now
+                call check_timings(d, rg, ts%t(i)%periods/ts%t(i)%cycles, ts%t(i)%amps, &
+                                   .not. ts%from_table, stat)
+                if (stat%code /= 0) then
+                    call in_trial(ts, i, stat)
+                    return
+                end if
                 if (is_torsion_rig(rg)) then
                     ! a period no positive I1 gives: refused now (cheap on a symmetric rig)
                     call invert_periods(rg, accuracy_of(d), ts%t(i)%periods/ts%t(i)%cycles, &
@@ -145,13 +169,21 @@ contains
                     end if
                     stat%code = 0
                 end if
+                nup = count(ts%t(i)%u_period > 0.0_dp)
+                if (nup == 0 .and. size(ts%t(i)%periods) >= 2) nup = size(ts%t(i)%periods)
+                call periods_work(d, rg, ts%t(i)%periods/ts%t(i)%cycles, ts%t(i)%amps, nup, &
+                                  secs, what)
             else
-                call read_record_file(ts%t(i)%record, record_format_of(d), rec, stat)
+                j = j + 1
+                call read_record_file(ts%t(i)%record, record_format_of(d), inp%recs(j), &
+                                      stat, bytes)
                 if (stat%code /= 0) then
                     stat%msg = record_name(d, ts, i)//': '//stat%msg
                     return
                 end if
-                call check_record(d, rg, rec, record_name(d, ts, i), stat)
+                inp%crc(j) = crc64_of(bytes)
+                deallocate (bytes)
+                call check_record(d, rg, inp%recs(j), record_name(d, ts, i), stat)
                 if (stat%code /= 0) return
                 call make_pendulum(rg, p, stat)
                 if (stat%code == 0) call start_state(start_of(d), p, y0, th0, stat)
@@ -159,9 +191,103 @@ contains
                     call in_trial(ts, i, stat)
                     return
                 end if
+                ! a swing no rig gives (times in ms), too coarse, a long gap, degrees
+                call check_record_times(d, rg, inp%recs(j), record_name(d, ts, i), stat)
+                if (stat%code /= 0) return
+                call record_work(d, inp%recs(j), secs, what)
+            end if
+            total = total + secs
+            if (i == 1) first_what = what
+        end do
+        if (size(ts%t) > 1) first_what = itoa(size(ts%t))//' releases, the first: '// &
+            first_what
+        call work_note(d, total, first_what)
+        if (present(input)) then
+            input%ready = .true.
+            call move_alloc(ts%t, input%ts%t)
+            input%ts%per_trial = ts%per_trial
+            input%ts%from_table = ts%from_table
+            call move_alloc(inp%recs, input%recs)
+            call move_alloc(inp%crc, input%crc)
+        end if
+    end procedure identify_ready
+
+    !> The work of a release of timed periods (per cycle, at amps degrees; nup of them with
+    !! a u), in wall seconds (module work_estimate's count of model periods times one period
+    !! timed now at the classical I1 of the longest timing: several of pure torsion, which
+    !! are cheap, for the clock) and in words.
+    subroutine periods_work(d, rg, per, amps, nup, seconds, what)
+        type(deck_t), intent(in) :: d
+        type(rig_t), intent(in) :: rg
+        real(dp), intent(in) :: per(:), amps(:)
+        integer, intent(in) :: nup
+        real(dp), intent(out) :: seconds
+        character(len=:), allocatable, intent(out) :: what
+        type(status_t) :: st
+        real(dp) :: i1p, tp, one, runs
+        integer(int64) :: c0, c1, rate
+        integer :: imax, k, reps
+        logical :: sym
+        seconds = 0.0_dp
+        what = ''
+        if (size(per) == 0) return
+        sym = is_torsion_rig(rg)
+        imax = maxloc(per, 1)
+        i1p = max(linear_inertia(rg, per(imax)), 1.0e-9_dp*rg%mass*rg%b_prime**2)
+        reps = merge(20, 1, sym)
+        call system_clock(c0, rate)
+        do k = 1, reps
+            if (sym) then
+                call torsion_period_s(rg, i1p, amps(imax), tp, st)
+            else
+                call simulated_period_s(rg, accuracy_of(d), i1p, amps(imax), tp, st)
             end if
         end do
-    end procedure identify_ready
+        call system_clock(c1)
+        one = real(c1 - c0, dp)/real(rate, dp)/reps
+        call periods_runs(d, size(per), nup, sym, one, runs, what)
+        seconds = runs*one
+    end subroutine periods_work
+
+    !> The work of a record fit, in wall seconds (module work_estimate's count of runs over
+    !! the whole record times one run timed now over its first five periods, scaled to its
+    !! span) and in words.
+    subroutine record_work(d, rec, seconds, what)
+        type(deck_t), intent(in) :: d
+        type(record_t), intent(in) :: rec
+        real(dp), intent(out) :: seconds
+        character(len=:), allocatable, intent(out) :: what
+        type(record_fit_t) :: prob
+        type(status_t) :: st
+        real(dp), allocatable :: p0(:), h(:), r(:)
+        real(dp) :: tsw, span, part, one, runs, ta, tg
+        integer(int64) :: c0, c1, rate
+        integer :: n
+        seconds = 0.0_dp
+        what = ''
+        n = size(rec%t)
+        if (n < 3) return
+        call fit_problem(d, rec, prob, p0, h)
+        span = rec%t(n) - rec%t(prob%ifirst)
+        if (.not. estimated(d, 't0')) span = rec%t(n)
+        tsw = record_swing_period(rec)
+        if (.not. (tsw > 0.0_dp)) then
+            call reference_periods(d, prob%rg, ta, tg)
+            tsw = max(ta, tg)
+        end if
+        prob%nuse = max(prob%ifirst + 1, min(n, count(rec%t <= rec%t(prob%ifirst) + &
+                                                      5.0_dp*tsw)))
+        part = rec%t(prob%nuse) - rec%t(prob%ifirst)
+        if (.not. estimated(d, 't0')) part = rec%t(prob%nuse)
+        allocate (r(prob%nres()))
+        call system_clock(c0, rate)
+        call prob%residual(p0, r, st)
+        call system_clock(c1)
+        one = real(c1 - c0, dp)/real(rate, dp)
+        if (part > 0.0_dp) one = one*max(1.0_dp, span/part)
+        call record_runs(d, prob%np, span, span/max(tsw, tiny(1.0_dp)), one, runs, what)
+        seconds = runs*one
+    end subroutine record_work
 
     !> A record's checks beyond its file: times the model can run, long enough to show a
     !! swing, more samples than parameters, 'amplitude' only with a raised start.
@@ -265,9 +391,20 @@ contains
         real(dp) :: c0, c1
         type(sweep_report_t) :: rep
         type(release_t), allocatable :: rels(:)
+        type(identify_input_t) :: own
+        logical :: have
         call cpu_time(c0)
         rep%note = ''
-        call identify_releases(d, res, rels, stat, outdir, options, rep, files)
+        have = .false.
+        if (present(input)) have = input%ready
+        if (have) then
+            call identify_releases(d, input, res, rels, stat, outdir, options, rep, files)
+        else
+            ! read (once) and checked here: the driver's identify_ready kept nothing
+            call identify_ready(d, stat, own)
+            if (stat%code == 0) call identify_releases(d, own, res, rels, stat, outdir, &
+                                                       options, rep, files)
+        end if
         if (present(report)) report = rep
         call cpu_time(c1)
         res%cpu_seconds = c1 - c0
@@ -291,8 +428,9 @@ contains
 
     !> Every release of the deck analysed alone, then pooled (combine); the Monte Carlo of
     !! the deck's one release when asked.
-    subroutine identify_releases(d, res, rels, stat, outdir, options, report, files)
+    subroutine identify_releases(d, inp, res, rels, stat, outdir, options, report, files)
         type(deck_t), intent(in) :: d
+        type(identify_input_t), intent(in) :: inp   !! the releases and records, read once
         type(identify_result_t), intent(out) :: res
         type(release_t), allocatable, intent(out) :: rels(:)
         type(status_t), intent(out) :: stat
@@ -300,15 +438,14 @@ contains
         type(sweep_options_t), intent(in), optional :: options
         type(sweep_report_t), intent(inout), optional :: report
         type(out_files_t), intent(in), optional :: files
-        type(trial_set_t) :: ts
         type(input_t), allocatable :: x(:), xr(:)
-        type(record_t) :: rec
         real(dp) :: mean, sdev
-        integer :: i, k, j
-        call read_trials(d, ts, stat)
-        if (stat%code /= 0) return
+        integer :: i, k, j, jr
+        stat%code = 0
         x = deck_inputs(d, .true.)
-        allocate (rels(size(ts%t)), xr(size(x)))
+        allocate (rels(size(inp%ts%t)), xr(size(x)))
+        jr = 0
+        associate (ts => inp%ts)
         do i = 1, size(ts%t)
             xr(:) = x
             do k = 1, 5
@@ -321,20 +458,18 @@ contains
                 call release_periods(d, trial_rig(d, ts%t(i)), ts%t(i), xr, ts%per_trial, &
                                      rels(i), stat)
             else
-                call read_record_file(ts%t(i)%record, record_format_of(d), rec, stat)
-                if (stat%code /= 0) then
-                    stat%msg = record_name(d, ts, i)//': '//stat%msg
-                    return
-                end if
-                call release_record(d, trial_rig(d, ts%t(i)), rec, xr, ts%per_trial, &
-                                    rels(i), stat)
+                jr = jr + 1
+                call release_record(d, trial_rig(d, ts%t(i)), inp%recs(jr), xr, &
+                                    ts%per_trial, rels(i), stat)
+                rels(i)%crc = inp%crc(jr)
             end if
             if (stat%code /= 0) then
                 call in_trial(ts, i, stat)
                 return
             end if
         end do
-        call combine(d, rels, x, ts, res, stat)
+        end associate
+        call combine(d, rels, x, inp%ts, res, stat)
         if (stat%code /= 0) return
         if (d%monte_carlo > 0) then
             if (res%from_record) then
@@ -619,11 +754,11 @@ contains
             emean = sum(e)/m
             se = r%residual_rms*sqrt(r%tau/m)
             if (abs(emean) > 5.0_dp*se .and. abs(emean) > 2.0e-3_dp*maxval(abs(rec%v))) &
-                r%warnings = [warning_t('identify: the record''s residuals have a mean of '// &
-                    sci(-emean/rec%to_rad, 2)//' '//trim(fmt%units)//' ('// &
+                call add_warning(r%warnings, 'identify: the record''s residuals have a '// &
+                    'mean of '//sci(-emean/rec%to_rad, 2)//' '//trim(fmt%units)//' ('// &
                     itoa(nint(abs(emean)/se))//' standard errors): an offset of the '// &
                     'instrument (a gyro''s bias, an angle''s zero) biases I1 and the '// &
-                    'damping; add bias to &measurement estimate')]
+                    'damping; add bias to &measurement estimate')
         end if
         r%period_linear = mean_period(rec, i0)
         if (r%period_linear > 0.0_dp) r%i1_linear = linear_inertia(rg, r%period_linear)
@@ -691,6 +826,10 @@ contains
         end if
         res%u_i1 = sqrt(sum(uc**2))
         res%budget = rows
+        ! no u of any input, no scatter, no record: u_I1 = 0 means nothing was given
+        res%uncertainty_given = .false.
+        if (size(rows) > 0) res%uncertainty_given = any(rows%u > 0.0_dp)
+        res%record_crc = pack(rels%crc, rels%from_record)
         res%dof_eff = welch_satterthwaite(uc, nuc)
         res%k = coverage_factor(res%dof_eff, 0.95_dp)
         res%u_i1_expanded = res%k*res%u_i1
@@ -746,11 +885,11 @@ contains
         do r = 1, n
             if (allocated(rels(r)%warnings)) res%warnings = [res%warnings, rels(r)%warnings]
         end do
-        if (trim(pool%consistency) == 'inconsistent') res%warnings = [res%warnings, &
-            warning_t('identify: the '//itoa(n)//' releases disagree beyond their own '// &
+        if (trim(pool%consistency) == 'inconsistent') call add_warning(res%warnings, &
+            'identify: the '//itoa(n)//' releases disagree beyond their own '// &
             'uncertainties (chi-square p = '//sci(pool%p_value, 2)//', Birge ratio '// &
             fixed(pool%birge, 2)//'): their scatter is in u_I1 (u_I1_reproducibility = '// &
-            sci(pool%u_reproducibility, 2)//'); find what changed between releases')]
+            sci(pool%u_reproducibility, 2)//'); find what changed between releases')
         call check_physical(d, rels, res, stat)
     end subroutine combine
 
@@ -765,14 +904,6 @@ contains
         type(identify_result_t), intent(inout) :: res
         type(status_t), intent(inout) :: stat
         real(dp) :: s23, d23, i1
-        character(len=*), parameter :: CAUSES_HIGH = 'likely: periods typed as the totals '// &
-            'of several cycles (give &measurement cycles = N), periods or lengths in other '// &
-            'units than the deck''s, b or b_prime typed as twice the spacing, or I2, I3 too '// &
-            'rough'
-        character(len=*), parameter :: CAUSES_LOW = 'likely: b or b_prime typed as half the '// &
-            'spacing (they are the full distances between the two cables), half periods '// &
-            'typed as periods, periods or lengths in other units than the deck''s, or I2, I3 '// &
-            'too rough'
         i1 = res%i1_total
         if (maxval(rels%amp_max) <= 90.0_dp .and. res%i1_linear > 0.0_dp) then
             if (abs(i1/res%i1_linear - 1.0_dp) > LINEAR_GAP_MAX) then
@@ -793,25 +924,39 @@ contains
                 fixed(i1/s23, 2)//' times I2 + I3 = '//sci(s23, 4)//' (&body inertia): no '// &
                 'rigid body has I1 > I2 + I3; '//CAUSES_HIGH)
         else if (i1 > s23) then
-            res%warnings = [res%warnings, warning_t('identify: I1 = '//sci(i1, 4)// &
+            call add_warning(res%warnings, 'identify: I1 = '//sci(i1, 4)// &
                 ' exceeds I2 + I3 = '//sci(s23, 4)//' by '//fixed(100.0_dp*(i1/s23 - 1.0_dp), &
                 1)//' % (a lamina reaches I2 + I3, a thin rod nearly): check I2, I3 and the '// &
-                'rig; '//CAUSES_HIGH)]
+                'rig; '//CAUSES_HIGH)
         else if (d23 > 0.0_dp .and. i1 < d23/TRIANGLE_MARGIN) then
             call set_error(stat, ERR_MODEL, 'identify: I1 = '//sci(i1, 4)//' is below |I2 '// &
                 '- I3| = '//sci(d23, 4)//' (&body inertia) by '// &
                 itoa(nint(100.0_dp*(1.0_dp - i1/d23)))//' %: no rigid body has I1 < |I2 - '// &
                 'I3|; '//CAUSES_LOW)
         else if (i1 < d23) then
-            res%warnings = [res%warnings, warning_t('identify: I1 = '//sci(i1, 4)// &
+            call add_warning(res%warnings, 'identify: I1 = '//sci(i1, 4)// &
                 ' is below |I2 - I3| = '//sci(d23, 4)//': check I2, I3 and the rig; '// &
-                CAUSES_LOW)]
+                CAUSES_LOW)
         end if
     end subroutine check_physical
 
+    !> One more warning line (built first: gfortran 12 fails to compile a structure
+    !! constructor of such text inside an array constructor).
+    subroutine add_warning(ws, msg)
+        type(warning_t), allocatable, intent(inout) :: ws(:)
+        character(len=*), intent(in) :: msg
+        type(warning_t) :: w
+        w%s = msg
+        if (.not. allocated(ws)) allocate (ws(0))
+        ws = [ws, w]
+    end subroutine add_warning
+
     !> Monte Carlo of a record fit (see the module header) as a sweep (module monte_carlo):
     !! res%u_i1_mc, res%mc_mean.  The payload carries the estimate, its first-order u, s,
-    !! the Jacobian, the robust weights (and the record's CRC-64) to the other ranks.
+    !! the Jacobian, the robust weights, the parameters' sensitivities to the inputs, and
+    !! the record itself with its CRC-64
+    !! (record_payload): the other ranks of an MPI run take the record from it and never
+    !! read the file (issue 22).
     subroutine record_monte_carlo(d, r, res, stat, outdir, options, report, files)
         type(deck_t), intent(in) :: d
         type(release_t), intent(in) :: r
@@ -823,14 +968,11 @@ contains
         type(out_files_t), intent(in), optional :: files
         type(record_mc_task_t) :: task
         real(dp), allocatable :: payload(:), mean(:), sdev(:)
-        integer(int64) :: crc
         integer :: np
         np = r%np
-        call file_crc(record_file(d), crc, stat)
-        if (stat%code /= 0) return
-        payload = [crc_parts(crc), r%sigma*sqrt(r%tau), real(np, dp), r%p(1:np), &
+        payload = [crc_parts(r%crc), r%sigma*sqrt(r%tau), real(np, dp), r%p(1:np), &
                    r%u_p(1:np), reshape(r%jac, [size(r%jac)]), r%hw, &
-                   reshape(r%dpdx, [size(r%dpdx)])]
+                   reshape(r%dpdx, [size(r%dpdx)]), record_payload(r%rec)]
         call record_mc_task(d, r%rec, deck_inputs(d, .true.), payload, task)
         allocate (mean(np), sdev(np))
         call monte_carlo_run(task, d, d%monte_carlo, payload, mean, sdev, stat, outdir, &
@@ -840,13 +982,45 @@ contains
         res%u_i1_mc = sqrt(sdev(1)**2 + d%u_tare_i1**2 + d%u_added_inertia**2)
     end subroutine record_monte_carlo
 
+    !> A record as reals, last in a Monte Carlo's payload: t(n), v(n), u(n), has_u, rate,
+    !! to_rad, n (n last, so that it is found from the end).
+    pure function record_payload(rec) result(p)
+        type(record_t), intent(in) :: rec
+        real(dp), allocatable :: p(:)
+        p = [rec%t, rec%v, rec%u, merge(1.0_dp, 0.0_dp, rec%has_u), &
+             merge(1.0_dp, 0.0_dp, rec%rate), rec%to_rad, real(size(rec%t), dp)]
+    end function record_payload
+
+    !> The record from the end of a payload (record_payload); ok = .false. when the payload
+    !! holds none.
+    pure subroutine record_from_payload(p, rec, ok)
+        real(dp), intent(in) :: p(:)
+        type(record_t), intent(out) :: rec
+        logical, intent(out) :: ok
+        integer :: n, m, k
+        m = size(p)
+        ok = .false.
+        if (m < 4) return
+        if (.not. (p(m) >= 1.0_dp .and. p(m) <= real(m, dp))) return
+        n = nint(p(m))
+        k = m - 4 - 3*n
+        if (k < 0) return
+        rec%t = p(k + 1:k + n)
+        rec%v = p(k + n + 1:k + 2*n)
+        rec%u = p(k + 2*n + 1:k + 3*n)
+        rec%has_u = p(m - 3) > 0.5_dp
+        rec%rate = p(m - 2) > 0.5_dp
+        rec%to_rad = p(m - 1)
+        ok = .true.
+    end subroutine record_from_payload
+
     !> The task of identify's Monte Carlo (sweep 'identify_mc') as the other ranks of an MPI
-    !! run build it: from the deck (its periods, or its record, read here and checked
-    !! against rank 0's by its CRC-64) and the sweep's payload.  ERR_DECK when the record
-    !! cannot be read or is another than rank 0's.
+    !! run build it: from the deck (its periods) or the record rank 0 read, which travels in
+    !! the payload (record_payload; the file is not read again), and the sweep's payload.
+    !! ERR_DECK when the payload holds no record or its record is not rank 0's (CRC-64).
     module procedure identify_mc_task
         type(record_t) :: rec
-        integer(int64) :: crc
+        logical :: ok
         stat%code = 0
         if (d%n_periods > 0) then
             allocate (period_mc_task_t :: task)
@@ -856,13 +1030,11 @@ contains
             end select
             return
         end if
-        call read_record_file(record_file(d), record_format_of(d), rec, stat)
-        if (stat%code == 0) call file_crc(record_file(d), crc, stat)
-        if (stat%code /= 0) return
-        if (crc /= crc_join(payload(1:2))) then
+        call record_from_payload(payload, rec, ok)
+        if (.not. ok) then
             call set_error(stat, ERR_DECK, '&measurement record = '''//trim(d%record)// &
-                ''': reads another record at '//record_file(d)//' than rank 0 (its CRC-64 '// &
-                'differs): every rank must see the same file')
+                ''': the Monte Carlo''s message from rank 0 holds no record; allowed: the '// &
+                'same bin/bifilar_mpi on every rank')
             return
         end if
         allocate (record_mc_task_t :: task)
@@ -904,6 +1076,8 @@ contains
         call deck_echo(d, u, ios)
         call write_kv(u, 'I1', res%i1, ios)
         call write_kv(u, 'u_I1', res%u_i1, ios)
+        call write_kv(u, 'uncertainty_given', trim(merge('yes', 'no ', res%uncertainty_given)), &
+                      ios)
         call write_kv(u, 'U_I1', res%u_i1_expanded, ios)
         call write_kv(u, 'k', res%k, ios)
         if (res%dof_eff >= NU_INFINITE) then
@@ -937,6 +1111,8 @@ contains
         call write_kv(u, 'cpu_seconds', res%cpu_seconds, ios)
         if (res%from_record) then
             call write_kv(u, 'mode', 'record', ios)
+            if (res%n_trials == 1 .and. size(res%record_crc) == 1) &
+                call write_kv(u, 'record_crc64', hex16(res%record_crc(1)), ios)
             call write_kv(u, 'quantity', trim(d%quantity), ios)
             call write_kv(u, 'samples', res%samples, ios)
             if (res%n_trials == 1) then
@@ -965,6 +1141,8 @@ contains
                 call write_kv(u, 'trial('//itoa(j)//')', trim(res%trial_label(j)), ios)
                 call write_kv(u, 'I1_trial('//itoa(j)//')', res%trial_i1(j), ios)
                 call write_kv(u, 'u_I1_trial('//itoa(j)//')', res%trial_u(j), ios)
+                if (res%from_record .and. size(res%record_crc) >= j) call write_kv(u, &
+                    'record_crc64('//itoa(j)//')', hex16(res%record_crc(j)), ios)
             end do
         end if
         if (d%monte_carlo > 0) then

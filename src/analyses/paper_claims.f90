@@ -364,6 +364,11 @@ contains
             'and the release amplitude from a 30 s gyro record of a laboratory rig with '// &
             'unequal cables; doc/identify.md).'
         call figure_lines(-4)
+        if (ios == 0) write (u, '(a)', iostat=ios) '', '## The inertia tensor from several '// &
+            'hangs', '', 'The fit of `input/tensor_example.nml` (analysis tensor: the six '// &
+            'entries of a body''s tensor from nine hangs, each period from the full model of '// &
+            'its hang; doc/tensor.md).'
+        call figure_lines(-5)
         call atomic_commit(u, outdir//'/report.md', stat, ios)
 
     contains
@@ -412,7 +417,8 @@ contains
              figure_t('work_precision', 'Work-precision, the paper''s model', -3), &
              figure_t('work_precision_elastic', 'Work-precision, elastic cables', -3), &
              figure_t('identify_record.identify', 'A gyro record and the fitted model', -4), &
-             figure_t('identify_periods.identify', 'Timed periods against amplitude', -4)]
+             figure_t('identify_periods.identify', 'Timed periods against amplitude', -4), &
+             figure_t('tensor', 'Each hang''s vertical moment against the fitted tensor''s', -5)]
     end function report_figures
 
     !> The link from OUTDIR/report.md to plots/NAME.png (plots/ in the working folder, where

@@ -18,6 +18,7 @@ submodule (simulate) simulate_impl
     use text, only: sci, fixed
     use fast_format, only: es_field, f_field
     use run_loop, only: stepped_model_t, row_sink_t, drive, check_row_budget
+    use progress, only: pace_t
     implicit none
 
     !> The .dat columns (deck OUTPUT_COLUMNS, in that order) and the positions of those that
@@ -125,6 +126,7 @@ contains
         type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_MODEL or ERR_IO
         type(kane_run_t) :: m
         type(kane_dat_sink_t) :: sink
+        type(pace_t) :: pace
         type(pendulum_t) :: p
         real(dp) :: y(NSTATE), th0(5), t_cpu0, rt2
         real(dp), allocatable :: times(:)
@@ -169,7 +171,8 @@ contains
             sink%sm%error_estimate_q = 0.0_dp
         end if
         call output_times(d, times)
-        call drive(m, times, sink, stat)
+        call pace%start('bifilar: note: '//d%path//': simulate', 0.0_dp, d%tau_end, 'tau')
+        call drive(m, times, sink, stat, pace)
         if (stat%code == 0) call flush_rows(sink%rb, stat)
         sm = sink%sm
         call finish_run(m%solver%stats(), t_cpu0, fs, u, sm, stat)
@@ -485,6 +488,7 @@ contains
         type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_MODEL or ERR_IO
         type(elastic_run_t) :: m
         type(elastic_dat_sink_t) :: sink
+        type(pace_t) :: pace
         type(motion_t) :: mo
         type(elastic_cables_t) :: cab
         real(dp) :: yc(NSTATE), th0(5), y(ELASTIC_NSTATE), atol(ELASTIC_NSTATE)
@@ -540,7 +544,9 @@ contains
         call elastic_evaluate(m%sys, y, th0(3), mo, stat, th0, cab)
         if (stat%code /= 0) return
         call output_times(d, times)
-        call drive(m, times, sink, stat)
+        call pace%start('bifilar: note: '//d%path//': simulate (elastic cables, stiffness '// &
+                        sci(d%cable_stiffness, 2)//')', 0.0_dp, d%tau_end, 'tau')
+        call drive(m, times, sink, stat, pace)
         sm = sink%sm
         sm%slack_time = m%solver%slack_time()
         sm%slack_intervals = m%solver%slack_intervals()

@@ -33,6 +33,7 @@ module stability
         integer :: sensitivities = 1
     contains
         procedure :: compute => chart_point
+        procedure :: accepts => chart_accepts
     end type chart_task_t
 
     public :: run_floquet, run_chart, set_chart_variable, floquet_ready, chart_task
@@ -100,6 +101,14 @@ module stability
             real(dp), intent(out) :: values(:)      !! max_modulus, period
             type(status_t), intent(out) :: stat     !! always OK
         end subroutine chart_point
+
+        !> Whether values could be chart point i's (read back from a checkpoint): a modulus
+        !! >= 0 with a period > 0, both finite, or a sentinel in both (floquet_point).
+        module logical function chart_accepts(self, i, values)
+            class(chart_task_t), intent(in) :: self
+            integer, intent(in) :: i                !! 1 .. nx*ny
+            real(dp), intent(in) :: values(:)       !! max_modulus, period
+        end function chart_accepts
     end interface
 
 end module stability

@@ -8,7 +8,7 @@ submodule (stability) stability_impl
     use rig, only: rig_of, make_pendulum, method_of
     use integrators, only: sensitivities_for
     use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, floquet_point, &
-                       CHART_FAILED, &
+                       CHART_FAILED, point_values_valid, &
                        FLOQUET_MAX_STEPS
     use output_io, only: out_files_t, write_kv
     use sweep_engine, only: sweep_task_t, sweep_run, sweep_options_t, sweep_report_t, &
@@ -157,6 +157,13 @@ contains
                            self%sensitivities)
     end procedure chart_point
 
+    !> Chart point i's values as read back from a checkpoint: as floquet_point gives them.
+    module procedure chart_accepts
+        chart_accepts = size(values) == 2 .and. i >= 1 .and. &
+            i <= size(self%xs)*size(self%ys)
+        if (chart_accepts) chart_accepts = point_values_valid(values(1), values(2))
+    end procedure chart_accepts
+
     !> Stability chart over the grid of &chart: OUTDIR/NAME.chart.dat with one row per point,
     !! `x y max_modulus period` (CHART_INVALID where no analysis is possible, CHART_FAILED
     !! where it failed), a blank line after each x (gnuplot grid format).  The points are a
@@ -180,7 +187,7 @@ contains
         call chart_task(d, task, stat)
         if (stat%code /= 0) return
         call sweep_run(task, 'chart', d%path, checkpoint_path(outdir, d%name, 'chart'), &
-                       d%name//': chart', d%chart_nx*d%chart_ny, 2, vals, stat, options, rep, fs, &
+                       d%name//': chart', d%chart_nx*d%chart_ny, 2, vals, stat, options, rep, &
                        deck_text=d%text)
         if (present(report)) report = rep
         if (stat%code /= 0) return

@@ -16,12 +16,19 @@
 !! The program ends through C's exit() after flushing its output, so that nothing but its
 !! own lines reaches the terminal (gfortran's `error stop` adds "ERROR STOP n" and notes on
 !! floating-point flags).
+!!
+!! SIGINT, SIGTERM and SIGHUP (module signals) stop the run at any moment with one line,
+!! no temporary file left and exit status 128 + the signal; a deck's files are renamed
+!! into place and its line printed before a signal is acted on, and once the last deck's
+!! line is out signals are ignored.  The other ranks of an MPI run end quietly.
 program bifilar
     use, intrinsic :: iso_c_binding, only: c_int
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     use kinds, only: dp
     use status, only: status_t, STATUS_OK, EXIT_OK, EXIT_USAGE
     use output_io, only: make_dir
+    use signals, only: signals_install, signals_worker, signals_deck, signals_stage, &
+        signals_release, signals_ignore
     use paper_claims, only: write_report
     use driver, only: run_deck, exit_status, error_line, BIFILAR_VERSION, serve_sweeps
     use sweep_engine, only: sweep_start, sweep_finish, sweep_is_master, sweep_library, &
@@ -51,9 +58,11 @@ program bifilar
 
     call sweep_start(stat)
     if (.not. sweep_is_master()) then
+        call signals_worker()
         if (stat%code == STATUS_OK) call serve_sweeps()
         call finish(EXIT_OK)
     end if
+    call signals_install()
     if (stat%code /= STATUS_OK) then
         call say(error_unit, error_line('', stat))
         call finish(exit_status(stat%code))
@@ -124,6 +133,7 @@ program bifilar
 
     if (report) then
         if (ndecks > 0 .or. out_given) call usage('--report takes no decks and no --out')
+        call signals_stage('report')
         call write_report(report_dir%s, stat)
         if (stat%code /= STATUS_OK) then
             call say(error_unit, error_line('', stat))
@@ -149,7 +159,17 @@ program bifilar
         else
             call say(error_unit, error_line(decks(i)%s, stat))
         end if
+        flush (output_unit)
+        flush (error_unit)
         worst = max(worst, exit_status(stat%code))
+        ! a signal that came while the deck's files were renamed into place: the next deck
+        ! is not run (or, after the last one, the run is complete and it is ignored)
+        if (i == ndecks) then
+            call signals_ignore()
+        else
+            call signals_deck(decks(i + 1)%s)
+        end if
+        call signals_release()
     end do
     call finish(worst)
 
@@ -223,6 +243,7 @@ contains
     !! freed first: nothing frees them at exit, and valgrind counts them as lost).
     subroutine finish(status)
         integer, intent(in) :: status
+        call signals_ignore()                   ! everything is said
         if (allocated(decks)) deallocate (decks)
         if (allocated(outdir%s)) deallocate (outdir%s)
         if (allocated(arg%s)) deallocate (arg%s)

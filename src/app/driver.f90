@@ -4,6 +4,10 @@
 !! remove every one of them when anything fails.  The main program only reads the command
 !! line, calls run_deck for each deck and prints what comes back.
 !!
+!! Signals: the line a signal prints names the deck and the analysis running (module
+!! signals); the deck's files are renamed into place with signals deferred, so that a signal
+!! never leaves part of a set (the main program acts on it once the deck's line is out).
+!!
 !! In an MPI run (bin/bifilar_mpi) rank 0 runs the decks; the other ranks only compute
 !! points of sweeps (serve_sweeps): for each sweep rank 0 announces, they read the deck,
 !! build the same task and take part (module sweep_engine).
@@ -13,7 +17,8 @@ module driver
     use status, only: status_t, STATUS_OK, ERR_DECK, exit_status_of, status_meaning
     use text, only: itoa, sci, fixed
     use deck, only: deck_t, read_deck, read_deck_text, analysis_requested
-    use output_io, only: out_files_t, remove_file
+    use output_io, only: out_files_t, remove_file, path_fits
+    use signals, only: signals_deck, signals_stage, signals_defer
     use simulate, only: run_simulation, run_summary_t, simulation_ready
     use rig, only: rig_of, make_pendulum
     use stability, only: run_floquet, run_chart, floquet_ready, chart_task, chart_task_t
@@ -23,8 +28,9 @@ module driver
     use work_precision, only: run_work_precision, wp_result_t
     use design, only: run_design, design_ready, design_result_t, design_task, DESIGN_STAGES
     use identify, only: identify_ready, run_identify, identify_result_t, identify_mc_task, &
-        warning_t
-    use monte_carlo, only: MC_ANALYSIS
+        warning_t, identify_input_t
+    use tensor, only: tensor_ready, run_tensor, tensor_result_t, tensor_sweep_task
+    use monte_carlo, only: MC_ANALYSIS, MC_TENSOR
     use geometry, only: pendulum_t
     implicit none
     private
@@ -33,6 +39,27 @@ module driver
 
     !> The program's version (bifilar --version).
     character(len=*), parameter, public :: BIFILAR_VERSION = '1.1'
+
+    !> The longest file name a deck NAME makes in the output folder is NAME followed by
+    !! this (a design's last checkpoint), before the temporary suffix.
+    character(len=*), parameter :: LONGEST_EXT = '.design_precision.partial'
+
+    !> The files an analysis may write, NAME followed by one of these: when a deck's run
+    !! commits its files, those of its analyses that this run did not write are removed
+    !! (an old NAME.fit.dat of a record beside a new NAME.identify from periods).
+    type :: owned_t
+        character(len=16) :: analysis
+        character(len=16) :: ext
+    end type owned_t
+    type(owned_t), parameter :: OWNED(*) = [ &
+        owned_t('simulate', '.dat'), owned_t('simulate', '.summary'), &
+        owned_t('simulate', '.slack'), owned_t('floquet', '.floquet'), &
+        owned_t('chart', '.chart.dat'), owned_t('work_precision', '.wp.dat'), &
+        owned_t('work_precision', '.wp_rk4.dat'), owned_t('work_precision', '.wp_radau.dat'), &
+        owned_t('design', '.design'), owned_t('identify', '.identify'), &
+        owned_t('identify', '.fit.dat'), owned_t('identify', '.periods.dat'), &
+        owned_t('tensor', '.tensor'), owned_t('tensor', '.tensor.dat'), &
+        owned_t('tensor', '.plan.csv')]
 
 contains
 
@@ -43,9 +70,13 @@ contains
     !! staged (the chart's before the design's); identify's Monte Carlo is a sweep too, in its
     !! turn.  Their checkpoints (OUTDIR/NAME.chart.partial, NAME.design*.partial,
     !! NAME.identify_mc.partial) are removed once the run's files are committed, and kept
-    !! when the run fails after them (--resume reuses them).
-    !! Warnings (a suspicious result that stands: one line each) go to stderr as
-    !! "bifilar: warning: DECK: ...", or to `warnings` when given.
+    !! when the run fails after them (--resume reuses them).  On a commit the files of the
+    !! deck's analyses that this run did not write are removed (OWNED).
+    !! Warnings (a suspicious result that stands, a checkpoint that could not be written:
+    !! one line each) go to stderr as "bifilar: warning: DECK: ...", or to `warnings` when
+    !! given; they come once the deck's files are committed.
+    !! With signals deferred when it returns (module signals): the caller prints the deck's
+    !! line, then releases them.
     subroutine run_deck(path, outdir, line, stat, options, warnings)
         character(len=*), intent(in) :: path        !! deck file
         character(len=*), intent(in) :: outdir      !! output folder
@@ -63,11 +94,19 @@ contains
         type(wp_result_t) :: wp
         type(design_result_t) :: dr
         type(identify_result_t) :: idr
+        type(tensor_result_t) :: tsr
+        type(warning_t), allocatable :: ws(:)
+        type(identify_input_t) :: idin              !! what identify_ready read, read once
         integer :: nstable, nfailed, k
         real(dp) :: secs
 
         line = ''
+        allocate (ws(0))
+        call signals_deck(path)
         call read_deck(path, d, stat)
+        if (stat%code /= STATUS_OK) return
+        ! the output folder can take the deck's files (before any computing)
+        call path_fits(outdir, d%name//LONGEST_EXT, stat)
         if (stat%code /= STATUS_OK) return
 
         ! every analysis's preconditions before any computing
@@ -83,7 +122,9 @@ contains
             analysis_requested(d, 'chart') .or. analysis_requested(d, 'design'))) &
             call undamped_ready(d, stat)
         if (stat%code == STATUS_OK .and. analysis_requested(d, 'identify')) &
-            call identify_ready(d, stat)
+            call identify_ready(d, stat, idin)
+        if (stat%code == STATUS_OK .and. analysis_requested(d, 'tensor')) &
+            call tensor_ready(d, stat)
         if (stat%code /= STATUS_OK) return
 
         line = d%name//':'
@@ -91,8 +132,10 @@ contains
         design_part = ''
         run: block
             if (analysis_requested(d, 'chart')) then
+                call signals_stage('chart')
                 call run_chart(d, outdir, nstable, secs, stat, files=files, nfailed=nfailed, &
                                options=options, report=rep)
+                call add_warning(rep)
                 if (stat%code /= STATUS_OK) exit run
                 chart_part = ' chart '//itoa(d%chart_nx*d%chart_ny)//' points, '// &
                     itoa(nstable)//' stable, '//fixed(secs, 2)//' s'//ranks_note(rep)
@@ -101,7 +144,9 @@ contains
                 chart_part = chart_part//resume_note(rep)//';'
             end if
             if (analysis_requested(d, 'design')) then
+                call signals_stage('design')
                 call run_design(d, outdir, dr, stat, files=files, options=options, report=rep)
+                call add_warning(rep)
                 if (stat%code /= STATUS_OK) exit run
                 design_part = ' design '//itoa(size(dr%ls)*size(dr%bs))//' candidates x '// &
                     itoa(size(dr%amps))//' amplitudes, '//itoa(dr%n_stable)//' stable, '// &
@@ -114,6 +159,7 @@ contains
                 design_part = design_part//resume_note(rep)//';'
             end if
             if (analysis_requested(d, 'work_precision')) then
+                call signals_stage('work_precision')
                 call run_work_precision(d, outdir, wp, stat, quiet=.true., files=files)
                 if (stat%code /= STATUS_OK) exit run
                 line = line//' work_precision '//itoa(count(wp%lsoda%ok))//' LSODA, '
@@ -122,6 +168,7 @@ contains
                     sci(wp%ref_agreement_theta, 1)//' rad;'
             end if
             if (analysis_requested(d, 'floquet')) then
+                call signals_stage('floquet')
                 call run_floquet(d, outdir, fr, stat, files=files)
                 if (stat%code /= STATUS_OK) exit run
                 line = line//' floquet period '//fixed(fr%period, 6)//', max modulus '// &
@@ -129,10 +176,17 @@ contains
             end if
             line = line//chart_part//design_part
             if (analysis_requested(d, 'identify')) then
-                call run_identify(d, outdir, idr, stat, files, options, rep)
+                call signals_stage('identify')
+                call run_identify(d, outdir, idr, stat, files, options, rep, idin)
+                call add_warning(rep)
                 if (stat%code /= STATUS_OK) exit run
-                line = line//' identify I1 = '//sci(idr%i1, 5)//' ± '// &
-                    sci(idr%u_i1_expanded, 2)//' (k = '//fixed(idr%k, 1)//', 95 %)'
+                if (idr%uncertainty_given) then
+                    line = line//' identify I1 = '//sci(idr%i1, 5)//' ± '// &
+                        sci(idr%u_i1_expanded, 2)//' (k = '//fixed(idr%k, 1)//', 95 %)'
+                else
+                    line = line//' identify I1 = '//sci(idr%i1, 5)//' (no uncertainty '// &
+                        'given: every u_* of &measurement is 0)'
+                end if
                 do k = 2, idr%np
                     if (idr%names(k) == 'c_v' .or. idr%names(k) == 'c_q') line = line// &
                         ', '//trim(idr%names(k))//' = '//sci(idr%p(k), 3)//' ± '// &
@@ -153,16 +207,23 @@ contains
                 else
                     line = line//', no period in the record for the linear formula'
                 end if
-                if (present(warnings)) then
-                    warnings = idr%warnings
-                else
-                    do k = 1, size(idr%warnings)
-                        call warn(path, idr%warnings(k)%s)
-                    end do
-                end if
+                do k = 1, size(idr%warnings)
+                    call add_text(idr%warnings(k)%s)
+                end do
                 line = line//', '//itoa(idr%iterations)//' iterations;'
             end if
+            if (analysis_requested(d, 'tensor')) then
+                call signals_stage('tensor')
+                call run_tensor(d, outdir, tsr, stat, files, options, rep)
+                call add_warning(rep)
+                if (stat%code /= STATUS_OK) exit run
+                line = line//tensor_summary(tsr, rep)
+                if (allocated(tsr%warning)) then
+                    if (len(tsr%warning) > 0) call add_text(tsr%warning)
+                end if
+            end if
             if (analysis_requested(d, 'simulate')) then
+                call signals_stage('simulate')
                 call run_simulation(d, outdir, sm, stat, files=files)
                 if (stat%code /= STATUS_OK) exit run
                 line = line//' simulate cpu '//fixed(sm%cpu_seconds, 4)//' s, steps '// &
@@ -170,7 +231,9 @@ contains
                     sci(sm%max_abs_energy_error, 2)//', max |residual| '// &
                     sci(sm%max_abs_constraint_residual, 2)//';'
             end if
-            call files%commit(stat)                 ! on failure it removes them all
+            ! renamed into place together, and the line printed, before a signal is acted on
+            call signals_defer()
+            call files%commit(stat, stale_files())  ! on failure it removes them all
             if (stat%code == STATUS_OK) then
                 line = line(1:len(line) - 1)
                 if (analysis_requested(d, 'chart')) &
@@ -182,10 +245,54 @@ contains
                 end if
                 if (analysis_requested(d, 'identify')) &
                     call remove_file(checkpoint_path(outdir, d%name, MC_ANALYSIS))
+                if (analysis_requested(d, 'tensor')) &
+                    call remove_file(checkpoint_path(outdir, d%name, MC_TENSOR))
+                if (present(warnings)) then
+                    warnings = ws
+                else
+                    do k = 1, size(ws)
+                        call warn(path, ws(k)%s)
+                    end do
+                end if
             end if
             return
         end block run
         call files%discard()                    ! a failed analysis: remove every file
+
+    contains
+
+        !> A sweep's warning (a checkpoint that could not be written), for the end.
+        subroutine add_warning(r)
+            type(sweep_report_t), intent(in) :: r
+            if (.not. allocated(r%warning)) return
+            if (len(r%warning) > 0) call add_text(r%warning)
+        end subroutine add_warning
+
+        !> One more warning (grown by hand: gfortran 12 loses the text of a constructor
+        !! [ws, warning_t(s)] here).
+        subroutine add_text(s)
+            character(len=*), intent(in) :: s
+            type(warning_t), allocatable :: grown(:)
+            integer :: j
+            allocate (grown(size(ws) + 1))
+            do j = 1, size(ws)
+                call move_alloc(ws(j)%s, grown(j)%s)
+            end do
+            grown(size(ws) + 1)%s = s
+            call move_alloc(grown, ws)
+        end subroutine add_text
+
+        !> OUTDIR/NAME.EXT of every file the deck's analyses may write (OWNED).
+        function stale_files() result(p)
+            character(len=len(outdir) + len(d%name) + 17), allocatable :: p(:)
+            integer :: j
+            allocate (p(0))
+            do j = 1, size(OWNED)
+                if (analysis_requested(d, trim(OWNED(j)%analysis))) &
+                    p = [character(len=len(p)) :: p, outdir//'/'//d%name//trim(OWNED(j)%ext)]
+            end do
+        end function stale_files
+
     end subroutine run_deck
 
     !> A warning: one line on stderr naming the deck (the run goes on, exit 0).
@@ -195,6 +302,31 @@ contains
         write (error_unit, '(a)') 'bifilar: warning: '//deck_path//': '//msg
         flush (error_unit)
     end subroutine warn
+
+    !> The summary line's part of analysis tensor: the principal moments with their u, the
+    !! chi-square, how far the projection solution lies, the Monte Carlo, the plan.
+    function tensor_summary(res, rep) result(s)
+        type(tensor_result_t), intent(in) :: res    !! what tensor found
+        type(sweep_report_t), intent(in) :: rep     !! its Monte Carlo's sweep
+        character(len=:), allocatable :: s
+        s = ' tensor'
+        if (res%fitted) then
+            s = s//' I_principal = '//sci(res%moments(1), 5)//', '//sci(res%moments(2), 5)// &
+                ', '//sci(res%moments(3), 5)//' (u '//sci(res%u_moments(1), 2)//', '// &
+                sci(res%u_moments(2), 2)//', '//sci(res%u_moments(3), 2)//'), chi2 '// &
+                fixed(res%chi2, 2)//'/dof '//itoa(res%dof)//', '//itoa(res%hangs)// &
+                ' hangs, projection off by '//sci(res%projection_difference, 2)
+            if (res%mc_samples > 0) s = s//', Monte Carlo u '//sci(res%u_moments_mc(1), 2)// &
+                ', '//sci(res%u_moments_mc(2), 2)//', '//sci(res%u_moments_mc(3), 2)// &
+                ' from '//itoa(res%mc_samples)//' samples, '//fixed(rep%wall_seconds, 2)// &
+                ' s'//ranks_note(rep)//resume_note(rep)
+        end if
+        if (res%plan > 0) then
+            if (res%fitted) s = s//','
+            s = s//' a plan of '//itoa(res%plan)//' hangs in '//res%plan_file
+        end if
+        s = s//';'
+    end function tensor_summary
 
     !> The other ranks of an MPI run: for each sweep rank 0 announces, read its deck, build
     !! its task and compute points, until rank 0 ends the program.
@@ -223,6 +355,8 @@ contains
                     call design_task(job%analysis, d, job%payload, task, st)
                 case (MC_ANALYSIS)
                     call identify_mc_task(d, job%payload, task, st)
+                case (MC_TENSOR)
+                    call tensor_sweep_task(d, job%payload, task, st)
                 case default
                     st%code = ERR_DECK
                     st%msg = 'no sweep named '//job%analysis//' in this executable'
@@ -265,6 +399,8 @@ contains
         character(len=:), allocatable :: s
         s = ''
         if (rep%resumed > 0) s = ', '//itoa(rep%resumed)//' resumed from the checkpoint'
+        if (rep%rejected > 0) s = s//', '//itoa(rep%rejected)//' of its points damaged or '// &
+            'out of range: computed again'
         if (allocated(rep%note)) then
             if (len(rep%note) > 0) s = s//', '//rep%note//': computed afresh'
         end if

@@ -17,6 +17,15 @@
 !!       (what changes between releases), timed TIMINGS times over CYCLES cycles at
 !!       amplitude AMP degrees, each total with normal noise SIGMA (s) and rounded to
 !!       0.01 s (a stopwatch); z and the noise from stream 0 of SEED.
+!!   make_record hangs DECK SIGMA SEED OUT
+!!       the table of hangs of DECK's &tensor hangs (its periods are not read) with each
+!!       row's period made by the model of that hang (module hang_model: the torsion mode at
+!!       amplitude 0, else the full model at the row's amplitude) for the body whose
+!!       principal moments are DECK's &body inertia and whose principal axes are the rows
+!!       of DECK's &body btilde in the body frame: cycles times the period plus normal
+!!       noise of standard deviation SIGMA (s) from stream 0 of SEED, to 1e-9 s; written to
+!!       OUT as a comma-separated table with the input's columns (analysis tensor's
+!!       example).
 !! Exit status 0, or 2 with one line on standard error.
 program make_record_main
     use, intrinsic :: iso_c_binding, only: c_int
@@ -28,8 +37,12 @@ program make_record_main
     use period_inversion, only: rig_period_s
     use rig, only: rig_of, accuracy_of
     use random, only: rng_t, rng_stream, rng_normal
-    use text, only: fixed, itoa
+    use text, only: fixed, itoa, rshort
     use output_io, only: out_files_t
+    use tables, only: table_t, read_table
+    use hang_table, only: hang_set_t, read_hangs
+    use hang_model, only: hang_rig, hang_period, tensor_entries
+    use rig, only: rig_t
     implicit none
     interface
         !> C library exit(3) (as bifilar: no ERROR STOP line from the run-time library).
@@ -122,10 +135,70 @@ program make_record_main
         call files%close(u, ios, st)
         if (st%code == 0) call files%commit(st)
         if (st%code /= 0) call fail(st%msg)
+    case ('hangs')
+        if (command_argument_count() /= 5) call usage()
+        sigma = real_arg(3)
+        seed = nint(real_arg(4))
+        call get_command_argument(5, arg)
+        call make_hangs(trim(arg))
     case default
         call usage()
     end select
 contains
+    !> The hangs table of d with the periods of the body of &body inertia and btilde.
+    subroutine make_hangs(out)
+        character(len=*), intent(in) :: out
+        type(table_t) :: tab
+        type(hang_set_t) :: set
+        type(rig_t) :: rg
+        real(dp) :: x(6), jt(3, 3), tp
+        integer :: i, k, u, c_per
+        character(len=:), allocatable :: row
+        call read_hangs(d, set, st)
+        if (st%code /= 0) call fail(st%msg)
+        call read_table(d%tensor_hangs_path, tab, st)
+        if (st%code /= 0) call fail(st%msg)
+        ! J = sum_i I_i b_i b_i^T, b_i the rows of btilde (body frame)
+        jt = 0.0_dp
+        do k = 1, 3
+            jt = jt + d%inertia(k)*spread(d%btilde(k, :), 2, 3)*spread(d%btilde(k, :), 1, 3)
+        end do
+        x = tensor_entries(jt)
+        c_per = tab%column('period')
+        g = rng_stream(seed, 0)
+        open (newunit=u, file=out, status='replace', action='write', iostat=ios)
+        if (ios /= 0) call fail('cannot write '//out)
+        write (u, '(a)') '# made by bin/make_record hangs '//trim(d%path)//' '// &
+            rshort(sigma)//' '//itoa(seed)//' (the periods of the true body: the full '// &
+            'model of each hang, cycles times the period plus noise of '//rshort(sigma)//' s)'
+        row = ''
+        do k = 1, tab%ncol
+            if (k > 1) row = row//','
+            row = row//tab%names(k)%s
+        end do
+        write (u, '(a)') row
+        do i = 1, tab%nrow
+            associate (r => set%rows(i))
+                call hang_rig(d%mass, d%g, set%hangs(r%hang), x, rg, st)
+                if (st%code == 0) call hang_period(rg, accuracy_of(d), r%amplitude, tp, st)
+                if (st%code /= 0) call fail('line '//itoa(r%line)//': '//st%msg)
+                tp = r%cycles*tp + sigma*rng_normal(g)
+            end associate
+            row = ''
+            do k = 1, tab%ncol
+                if (k > 1) row = row//','
+                if (k == c_per) then
+                    row = row//fixed(tp, 9)
+                else if (tab%v(i, k) == anint(tab%v(i, k)) .and. abs(tab%v(i, k)) < 1.0e9_dp) then
+                    row = row//itoa(nint(tab%v(i, k)))
+                else
+                    row = row//rshort(tab%v(i, k))
+                end if
+            end do
+            write (u, '(a)') row
+        end do
+        close (u)
+    end subroutine make_hangs
     function real_arg(i) result(x)
         integer, intent(in) :: i
         real(dp) :: x
@@ -137,7 +210,8 @@ contains
     subroutine usage()
         call fail('usage: make_record record DECK DURATION RATE SIGMA SEED angle|rate OUT'// &
                   ' | make_record periods DECK SIGMA SEED A1 [A2 ...] | make_record trials '// &
-                  'DECK OUT SEED SIGMA SCATTER RELEASES TIMINGS CYCLES AMP L1 [L2 ...]')
+                  'DECK OUT SEED SIGMA SCATTER RELEASES TIMINGS CYCLES AMP L1 [L2 ...]'// &
+                  ' | make_record hangs DECK SIGMA SEED OUT')
     end subroutine usage
     subroutine fail(msg)
         character(len=*), intent(in) :: msg

@@ -13,6 +13,7 @@ module progress
     use, intrinsic :: iso_c_binding, only: c_int
     use, intrinsic :: iso_fortran_env, only: error_unit, int64
     use kinds, only: dp
+    use text, only: fixed
     implicit none
     private
 
@@ -33,7 +34,30 @@ module progress
         procedure :: line => progress_line
     end type progress_t
 
-    public :: stderr_is_terminal
+    !> A run that may take long says so once, on one line of standard error, after
+    !! note_after() seconds (default NOTE_SECONDS), whether or not it is a terminal: what it
+    !! is doing and, at the pace so far, how much longer it will take (issue 22: a deck
+    !! ends within 10 s, or refuses at once, or says within 10 s what it is doing).
+    !!     call pace%start('bifilar: note: DECK: simulate', tau0, tau_end, 'tau')
+    !!     ... call pace%check(tau)      (often; it reads the clock every 64 calls)
+    type, public :: pace_t
+        character(len=:), allocatable :: label  !! 'bifilar: note: DECK: what'
+        character(len=:), allocatable :: unit   !! what x counts ('tau')
+        real(dp) :: x0 = 0.0_dp, x1 = 1.0_dp    !! the run's start and end
+        real(dp) :: after = 5.0_dp              !! seconds before the note
+        integer(int64) :: c0 = 0, rate = 1
+        integer :: calls = 0
+        logical :: armed = .false.              !! started, not yet said
+    contains
+        procedure :: start => pace_start
+        procedure :: check => pace_check
+    end type pace_t
+
+    public :: stderr_is_terminal, note_after, say_note, duration
+
+    !> Seconds a run goes on before it says what it is doing (BIFILAR_NOTE_AFTER overrides,
+    !! for tests).
+    real(dp), parameter :: NOTE_SECONDS = 5.0_dp
 
     !> Least time between two redraws (s).
     real(dp), parameter :: REDRAW_SECONDS = 0.5_dp
@@ -119,6 +143,69 @@ contains
             s = s//', ETA '//duration(left)
         end if
     end function progress_line
+
+    !> Seconds before a long run says what it is doing: NOTE_SECONDS, or the environment's
+    !! BIFILAR_NOTE_AFTER (a number >= 0) when set.
+    function note_after() result(t)
+        real(dp) :: t
+        character(len=32) :: v
+        integer :: ios, n
+        t = NOTE_SECONDS
+        call get_environment_variable('BIFILAR_NOTE_AFTER', v, n)
+        if (n < 1 .or. n > len(v)) return
+        read (v, *, iostat=ios) t
+        if (ios /= 0 .or. .not. (t >= 0.0_dp .and. t <= 1.0e6_dp)) t = NOTE_SECONDS
+    end function note_after
+
+    !> One line on standard error: 'bifilar: note: DECK: TEXT' (the run goes on).
+    subroutine say_note(deck_path, text)
+        character(len=*), intent(in) :: deck_path   !! the deck as given
+        character(len=*), intent(in) :: text        !! what it is doing, how long it takes
+        write (error_unit, '(a)') 'bifilar: note: '//deck_path//': '//text
+        flush (error_unit)
+    end subroutine say_note
+
+    !> Begin a run from x0 to x1 (in `unit`s), `label` its note's start.
+    subroutine pace_start(self, label, x0, x1, unit)
+        class(pace_t), intent(inout) :: self
+        character(len=*), intent(in) :: label       !! 'bifilar: note: DECK: simulate'
+        real(dp), intent(in) :: x0, x1              !! the run's start and end
+        character(len=*), intent(in) :: unit        !! what x counts
+        self%label = label
+        self%unit = unit
+        self%x0 = x0
+        self%x1 = x1
+        self%after = note_after()
+        self%calls = 0
+        call system_clock(self%c0, self%rate)
+        self%armed = x1 > x0
+    end subroutine pace_start
+
+    !> The run is at x: after note_after() seconds, one line with the pace so far.
+    subroutine pace_check(self, x)
+        class(pace_t), intent(inout) :: self
+        real(dp), intent(in) :: x                   !! how far the run is
+        integer(int64) :: c
+        real(dp) :: el, f
+        character(len=:), allocatable :: s
+        if (.not. self%armed) return
+        self%calls = self%calls + 1
+        if (mod(self%calls, 64) /= 1) return
+        call system_clock(c)
+        el = real(c - self%c0, dp)/real(self%rate, dp)
+        if (el < self%after) return
+        self%armed = .false.
+        f = (x - self%x0)/(self%x1 - self%x0)
+        s = self%label//': '//self%unit//' = '//fixed(x, 4)//' of '//fixed(self%x1, 4)// &
+            ' after '//duration(el)
+        if (f > 0.0_dp .and. f < 1.0_dp) then
+            s = s//'; at this pace about '//duration(el*(1.0_dp - f)/f)//' more'
+        else
+            s = s//'; the end cannot be told yet'
+        end if
+        write (error_unit, '(a)') s
+        flush (error_unit)
+    end subroutine pace_check
 
     !> A duration for people: 8 s, 2 min 5 s, 1 h 3 min.
     function duration(secs) result(s)

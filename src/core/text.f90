@@ -1,57 +1,118 @@
 !> Numbers as text for messages and headers: integers without blanks, reals in scientific
 !! notation that always keeps its E (a plain `es10.3` prints 1e300 as `1.000+300`, which
 !! no reader takes for a number).
+!!
+!! Thread-safe (issue 22): no module variable, no SAVE, every function pure, and no
+!! function returns `character(len=:), allocatable`.  gfortran 12 keeps the length of such
+!! a result, at every place that calls the function, in a static variable (its tree dump
+!! shows `static integer(kind=8) slen.N`): two threads calling one place at once mixed
+!! their lengths, which cut numbers short, lost a format's digits ("Nonnegative width
+!! required in format" at the old text.f90:42) and corrupted the heap, in Monte Carlo runs
+!! whose samples failed on two threads.  Here each result's length is a specification
+!! expression (the length of the text made into a fixed buffer by the *_text functions),
+!! which the caller evaluates in its own frame.  Test: suite fast_format, "text: numbers
+!! made on two threads at once".
 module text
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+    use, intrinsic :: iso_fortran_env, only: int64
     use kinds, only: dp
-    use fptraps, only: traps_off, traps_restore, NTRAPS
     implicit none
     private
 
     public :: itoa, sci, fixed, lead_zero, rshort, rlist_short
     public :: lower, is_ident, next_word, count_words, commas, clip, quoted
+    ! the specification functions of the results' lengths (the callers evaluate them)
+    public :: itoa_text, sci_text, fixed_text, lead_zero_text, rshort_text, rlist_len, &
+              quoted_len, commas_len
 
     !> Longest value quoted in a message (characters; clip)
     integer, parameter :: CLIP_LEN = 60
+    !> The buffer of one number's text (sci, fixed, rshort: at most 28 characters)
+    integer, parameter :: NUM_LEN = 48
+
+    !> A real in scientific notation: sci(x) with 3 digits after the point, sci(x, digits).
+    interface sci
+        module procedure sci_3, sci_d
+    end interface sci
+
+    !> 'a b c' -> 'a, b, c': commas(words), or commas(words, sep) with another separator.
+    interface commas
+        module procedure commas_default, commas_sep
+    end interface commas
 
 contains
 
     !> An integer without blanks: 42, -7.
     pure function itoa(i) result(s)
         integer, intent(in) :: i                    !! value
-        character(len=:), allocatable :: s
-        character(len=16) :: buf
-        write (buf, '(i0)') i
-        s = trim(buf)
+        character(len=len_trim(itoa_text(i))) :: s
+        s = itoa_text(i)
     end function itoa
 
-    !> A real in scientific notation with `digits` digits after the point and an exponent of
-    !! two or three digits: 1.000E+300, -4.352E-14, 2.214E+00; NaN, Inf and -Inf as such.
-    pure function sci(x, digits) result(s)
+    !> itoa's text, left-justified in 12 characters: digits by division, no I/O.
+    pure function itoa_text(i) result(s)
+        integer, intent(in) :: i                    !! value
+        character(len=12) :: s
+        character(len=12) :: buf
+        integer(int64) :: v
+        integer :: k
+        v = abs(int(i, int64))
+        k = len(buf) + 1
+        do
+            k = k - 1
+            buf(k:k) = achar(iachar('0') + int(mod(v, 10_int64)))
+            v = v/10_int64
+            if (v == 0_int64) exit
+        end do
+        if (i < 0) then
+            k = k - 1
+            buf(k:k) = '-'
+        end if
+        s = buf(k:)
+    end function itoa_text
+
+    !> A real in scientific notation with 3 digits after the point and an exponent of two
+    !! or three digits: 1.000E+300, -4.352E-14, 2.214E+00; NaN, Inf and -Inf as such.
+    pure function sci_3(x) result(s)
         real(dp), intent(in) :: x                   !! value
-        integer, intent(in), optional :: digits     !! digits after the point (default 3, 0..17)
-        character(len=:), allocatable :: s
+        character(len=len_trim(sci_text(x, 3))) :: s
+        s = sci_text(x, 3)
+    end function sci_3
+
+    !> As sci(x) with `digits` digits after the point (0..17).
+    pure function sci_d(x, digits) result(s)
+        real(dp), intent(in) :: x                   !! value
+        integer, intent(in) :: digits               !! digits after the point (0..17)
+        character(len=len_trim(sci_text(x, digits))) :: s
+        s = sci_text(x, digits)
+    end function sci_d
+
+    !> sci's text, left-justified.
+    pure function sci_text(x, digits) result(s)
+        real(dp), intent(in) :: x                   !! value
+        integer, intent(in) :: digits               !! digits after the point (0..17)
+        character(len=NUM_LEN) :: s
         character(len=40) :: buf
-        integer :: nd, ie
+        character(len=16) :: fmt
+        integer :: ie, n
         if (ieee_is_nan(x)) then
             s = 'NaN'
             return
         end if
         if (.not. ieee_is_finite(x)) then
-            s = merge('-Inf', ' Inf', x < 0.0_dp)
-            s = trim(adjustl(s))
+            s = merge('-Inf', 'Inf ', x < 0.0_dp)
             return
         end if
-        nd = 3
-        if (present(digits)) nd = max(0, min(17, digits))
-        write (buf, '(es40.'//itoa(nd)//'e3)') x
-        s = trim(adjustl(buf))
+        fmt = '(es40.'//itoa(max(0, min(17, digits)))//'e3)'
+        write (buf, fmt) x
+        s = adjustl(buf)
+        n = len_trim(s)
         ie = index(s, 'E')
         ! E+300 stays, E-014 -> E-14
-        if (ie > 0 .and. len(s) == ie + 4) then
-            if (s(ie + 2:ie + 2) == '0') s = s(1:ie + 1)//s(ie + 3:)
+        if (ie > 0 .and. n == ie + 4) then
+            if (s(ie + 2:ie + 2) == '0') s = s(1:ie + 1)//s(ie + 3:n)
         end if
-    end function sci
+    end function sci_text
 
     !> A real in fixed notation with `digits` digits after the point and a zero before it:
     !! 0.050000, -0.5, 12.0 (the run-time library's f0.d leaves the zero out); from 1e9 on in
@@ -60,73 +121,103 @@ contains
     pure function fixed(x, digits) result(s)
         real(dp), intent(in) :: x                   !! value
         integer, intent(in) :: digits               !! digits after the point (0..17)
-        character(len=:), allocatable :: s
-        character(len=48) :: buf
+        character(len=len_trim(fixed_text(x, digits))) :: s
+        s = fixed_text(x, digits)
+    end function fixed
+
+    !> fixed's text, left-justified.
+    pure function fixed_text(x, digits) result(s)
+        real(dp), intent(in) :: x                   !! value
+        integer, intent(in) :: digits               !! digits after the point (0..17)
+        character(len=NUM_LEN) :: s
+        character(len=NUM_LEN) :: buf
+        character(len=16) :: fmt
         if (.not. (abs(x) < 1.0e9_dp)) then
-            s = sci(x, digits)
+            s = sci_text(x, digits)
             return
         end if
-        write (buf, '(f0.'//itoa(max(0, min(17, digits)))//')') x
-        s = lead_zero(buf)
-    end function fixed
+        fmt = '(f0.'//itoa(max(0, min(17, digits)))//')'
+        write (buf, fmt) x
+        s = lead_zero_text(buf)
+    end function fixed_text
 
     !> A number's text without blanks and with a zero before a leading point: .5 -> 0.5,
     !! -.5 -> -0.5.
     pure function lead_zero(buf) result(s)
         character(len=*), intent(in) :: buf         !! the number, blanks around it allowed
-        character(len=:), allocatable :: s
-        s = trim(adjustl(buf))
-        if (len(s) == 0) return
-        if (s(1:1) == '.') s = '0'//s
-        if (len(s) > 1) then
-            if (s(1:2) == '-.') s = '-0'//s(2:)
-        end if
+        character(len=len_trim(lead_zero_text(buf))) :: s
+        s = lead_zero_text(buf)
     end function lead_zero
 
+    !> lead_zero's text, left-justified (one character longer than buf).
+    pure function lead_zero_text(buf) result(s)
+        character(len=*), intent(in) :: buf         !! the number, blanks around it allowed
+        character(len=len(buf) + 1) :: s
+        integer :: n
+        s = adjustl(buf)
+        n = len_trim(s)
+        if (n == 0) return
+        if (s(1:1) == '.') then
+            s = '0'//s(1:n)
+        else if (n > 1) then
+            if (s(1:2) == '-.') s = '-0'//s(2:n)
+        end if
+    end function lead_zero_text
+
     !> Shortest real that reads back exactly (for messages): 180, 0.3, 1e-15, 1.7e308.
-    function rshort(x) result(s)
+    pure function rshort(x) result(s)
         real(dp), intent(in) :: x                   !! value
-        character(len=:), allocatable :: s
-        character(len=48) :: buf
-        integer :: k, ie
-        logical :: halting(NTRAPS), fixed
+        character(len=len_trim(rshort_text(x))) :: s
+        s = rshort_text(x)
+    end function rshort
+
+    !> rshort's text, left-justified.
+    pure function rshort_text(x) result(s)
+        real(dp), intent(in) :: x                   !! value
+        character(len=NUM_LEN) :: s
+        character(len=NUM_LEN) :: buf
+        character(len=16) :: fmt
+        integer :: k, ie, n
+        logical :: fixed_form
         if (.not. ieee_is_finite(x)) then
             write (buf, '(g0)') x
-            s = trim(adjustl(buf))
+            s = adjustl(buf)
             return
         end if
-        call traps_off(halting)     ! a rounded 1.7e308 reads back as an overflow
-        fixed = .false.
+        fixed_form = .false.
         if (x == 0.0_dp .or. (abs(x) >= 1.0e-4_dp .and. abs(x) < 1.0e15_dp)) then
             k = fewest_digits(x, .true.)
-            fixed = k >= 0
+            fixed_form = k >= 0
         end if
-        if (fixed) then
-            write (buf, '(f48.'//itoa(k)//')') x
-            s = lead_zero(buf)
-            if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
+        if (fixed_form) then
+            fmt = '(f48.'//itoa(k)//')'
+            write (buf, fmt) x
+            s = lead_zero_text(buf)
+            n = len_trim(s)
+            if (s(n:n) == '.') s(n:n) = ' '
         else
             k = fewest_digits(x, .false.)
             if (k < 0) k = 16
-            write (buf, '(es48.'//itoa(k)//'e3)') x
-            s = trim(adjustl(buf))
-            ie = index(s, 'E')
+            fmt = '(es48.'//itoa(k)//'e3)'
+            write (buf, fmt) x
+            buf = adjustl(buf)
+            n = len_trim(buf)
+            ie = index(buf, 'E')
             ! 1.E-015 -> 1e-15, 1.7E+308 -> 1.7e308
             k = ie + 2
-            do while (k < len(s))
-                if (s(k:k) /= '0') exit
+            do while (k < n)
+                if (buf(k:k) /= '0') exit
                 k = k + 1
             end do
-            if (s(ie + 1:ie + 1) == '-') then
-                s = s(1:ie - 1)//'e-'//s(k:)
+            if (buf(ie + 1:ie + 1) == '-') then
+                s = buf(1:ie - 1)//'e-'//buf(k:n)
             else
-                s = s(1:ie - 1)//'e'//s(k:)
+                s = buf(1:ie - 1)//'e'//buf(k:n)
             end if
             ie = index(s, '.e')
             if (ie > 0) s = s(1:ie - 1)//s(ie + 1:)
         end if
-        call traps_restore(halting)
-    end function rshort
+    end function rshort_text
 
     !> The fewest digits after the point, k, with which x written in fixed (f48.k, k <= 24) or
     !! scientific notation (es48.ke3, k <= 16) reads back exactly; -1 when none does.  The
@@ -135,8 +226,10 @@ contains
     !! then down while a shorter text still reads back.  Where x is not a power of two the
     !! values that read back as x lie symmetrically around it, and a text with one digit more
     !! is never further from x, so the texts that read back are those from the fewest digits
-    !! on; powers of two (asymmetric) and surprises take the trials in turn.  Traps off.
-    function fewest_digits(x, fixed_form) result(k)
+    !! on; powers of two (asymmetric) and surprises take the trials in turn.  A text beyond
+    !! the largest real (1.7976931348623157e308 rounded up) is not read: it cannot read
+    !! back, and reading it would overflow (a trap in the checking build).
+    pure function fewest_digits(x, fixed_form) result(k)
         real(dp), intent(in) :: x                   !! finite value
         logical, intent(in) :: fixed_form           !! f48.k, else es48.ke3
         integer :: k
@@ -180,31 +273,60 @@ contains
         k = -1
     contains
         !> x written with kk digits after the point reads back as x.
-        logical function reads_back(kk)
+        pure logical function reads_back(kk)
             integer, intent(in) :: kk
-            character(len=48) :: txt
-            real(dp) :: y
-            integer :: ios
+            character(len=48) :: txt, fmt
+            real(dp) :: y, mant
+            integer :: ios, ie2
             if (fixed_form) then
-                write (txt, '(f48.'//itoa(kk)//')') x
+                fmt = '(f48.'//itoa(kk)//')'
             else
-                write (txt, '(es48.'//itoa(kk)//'e3)') x
+                fmt = '(es48.'//itoa(kk)//'e3)'
+            end if
+            write (txt, fmt) x
+            reads_back = .false.
+            if (abs(x) > 1.0e308_dp) then
+                ! beyond the largest real?  Its mantissa alone cannot overflow
+                txt = adjustl(txt)
+                ie2 = index(txt, 'E')
+                if (ie2 > 1) then
+                    read (txt(1:ie2 - 1), *, iostat=ios) mant
+                    if (ios /= 0) return
+                    if (index(txt, 'E+309') > 0) return
+                    if (index(txt, 'E+308') > 0 .and. abs(mant) > 1.7976931348623157_dp) return
+                end if
             end if
             read (txt, *, iostat=ios) y
             reads_back = ios == 0 .and. y == x
         end function reads_back
     end function fewest_digits
 
-    function rlist_short(x) result(s)
+    !> rshort of each value, joined by ', '.
+    pure function rlist_short(x) result(s)
         real(dp), intent(in) :: x(:)                !! values
-        character(len=:), allocatable :: s
-        integer :: i
-        s = ''
+        character(len=rlist_len(x)) :: s
+        integer :: i, n, m
+        n = 0
         do i = 1, size(x)
-            if (i > 1) s = s//', '
-            s = s//rshort(x(i))
+            if (i > 1) then
+                s(n + 1:n + 2) = ', '
+                n = n + 2
+            end if
+            m = len_trim(rshort_text(x(i)))
+            s(n + 1:n + m) = rshort_text(x(i))
+            n = n + m
         end do
     end function rlist_short
+
+    !> The length of rlist_short(x).
+    pure integer function rlist_len(x) result(n)
+        real(dp), intent(in) :: x(:)                !! values
+        integer :: i
+        n = 2*max(0, size(x) - 1)
+        do i = 1, size(x)
+            n = n + len_trim(rshort_text(x(i)))
+        end do
+    end function rlist_len
 
     !> Next blank-separated word of s after position i2: s(i1:i2); i1 = 0 when none.
     pure subroutine next_word(s, i2, i1)
@@ -256,32 +378,60 @@ contains
                    (c >= '0' .and. c <= '9') .or. c == '_'
     end function is_ident
 
-    !> 'a b c' -> 'a, b, c' (or another separator).
-    pure function commas(words, sep) result(s)
+    !> 'a b c' -> 'a, b, c'.
+    pure function commas_default(words) result(s)
         character(len=*), intent(in) :: words       !! blank-separated words
-        character(len=*), intent(in), optional :: sep   !! separator, default ', '
-        character(len=:), allocatable :: s
-        integer :: i1, i2
-        s = ''
+        character(len=commas_len(words, ', ')) :: s
+        call join_words(words, ', ', s)
+    end function commas_default
+
+    !> 'a b c' -> 'a'//sep//'b'//sep//'c'.
+    pure function commas_sep(words, sep) result(s)
+        character(len=*), intent(in) :: words       !! blank-separated words
+        character(len=*), intent(in) :: sep         !! separator
+        character(len=commas_len(words, sep)) :: s
+        call join_words(words, sep, s)
+    end function commas_sep
+
+    !> The length of the words joined by sep.
+    pure integer function commas_len(words, sep) result(n)
+        character(len=*), intent(in) :: words, sep
+        integer :: i1, i2, nw
+        n = 0
+        nw = 0
         i2 = 0
         do
             call next_word(words, i2, i1)
             if (i1 == 0) exit
-            if (len(s) > 0) then
-                if (present(sep)) then
-                    s = s//sep
-                else
-                    s = s//', '
-                end if
-            end if
-            s = s//words(i1:i2)
+            nw = nw + 1
+            n = n + i2 - i1 + 1
         end do
-    end function commas
+        n = n + len(sep)*max(0, nw - 1)
+    end function commas_len
+
+    !> The words joined by sep into s (of length commas_len(words, sep)).
+    pure subroutine join_words(words, sep, s)
+        character(len=*), intent(in) :: words, sep
+        character(len=*), intent(out) :: s
+        integer :: i1, i2, n
+        n = 0
+        i2 = 0
+        do
+            call next_word(words, i2, i1)
+            if (i1 == 0) exit
+            if (n > 0) then
+                s(n + 1:n + len(sep)) = sep
+                n = n + len(sep)
+            end if
+            s(n + 1:n + i2 - i1 + 1) = words(i1:i2)
+            n = n + i2 - i1 + 1
+        end do
+    end subroutine join_words
 
     !> s for a message: at most CLIP_LEN characters, longer text cut with '...'.
     pure function clip(s) result(t)
         character(len=*), intent(in) :: s          !! any text
-        character(len=:), allocatable :: t
+        character(len=min(len(s), CLIP_LEN)) :: t
         if (len(s) <= CLIP_LEN) then
             t = s
         else
@@ -292,17 +442,30 @@ contains
     !> Quoted for namelist output, inner quotes doubled.
     pure function quoted(s) result(t)
         character(len=*), intent(in) :: s           !! text
-        character(len=:), allocatable :: t
-        integer :: i
-        t = ''''
+        character(len=quoted_len(s)) :: t
+        integer :: i, n
+        t(1:1) = ''''
+        n = 1
         do i = 1, len_trim(s)
             if (s(i:i) == '''') then
-                t = t//''''''
+                t(n + 1:n + 2) = ''''''
+                n = n + 2
             else
-                t = t//s(i:i)
+                t(n + 1:n + 1) = s(i:i)
+                n = n + 1
             end if
         end do
-        t = t//''''
+        t(n + 1:n + 1) = ''''
     end function quoted
+
+    !> The length of quoted(s).
+    pure integer function quoted_len(s) result(n)
+        character(len=*), intent(in) :: s           !! text
+        integer :: i
+        n = 2 + len_trim(s)
+        do i = 1, len_trim(s)
+            if (s(i:i) == '''') n = n + 1
+        end do
+    end function quoted_len
 
 end module text

@@ -23,6 +23,7 @@ module run_loop
     use kinds, only: dp
     use status, only: status_t, set_error, ERR_NUMERIC
     use text, only: sci, fixed
+    use progress, only: pace_t
     implicit none
     private
 
@@ -83,7 +84,7 @@ module run_loop
         end subroutine take_i
     end interface
 
-    public :: drive, check_row_budget
+    public :: drive, check_row_budget, falling_zero
 
     !> Most internal steps between two requested times before the run is given up.
     integer, parameter, public :: MAX_STEPS_PER_ROW = 500000
@@ -92,12 +93,15 @@ contains
 
     !> Step the model and hand its state at each requested time to the sink, in order.
     !! The integration runs to the last requested time (the model's integrator was started
-    !! with that tcrit) or until the sink is done.
-    subroutine drive(m, times, sink, stat)
+    !! with that tcrit) or until the sink is done.  With `pace` (module progress), a run
+    !! that goes on for long says once, on one line, how far it is and how long it will
+    !! take at that pace.
+    subroutine drive(m, times, sink, stat, pace)
         class(stepped_model_t), intent(inout) :: m  !! started model and integrator
         real(dp), intent(in) :: times(0:)       !! requested times, non-decreasing, from the start
         class(row_sink_t), intent(inout) :: sink    !! where the states go
         type(status_t), intent(out) :: stat     !! the first failure (model, integrator, sink)
+        type(pace_t), intent(inout), optional :: pace   !! the note of a long run
         real(dp), allocatable :: y(:)
         real(dp) :: t0, t_reached
         integer :: k, nstep_row
@@ -117,6 +121,7 @@ contains
                 if (stat%code /= 0) exit
                 t_reached = m%t_now()
                 nstep_row = nstep_row + 1
+                if (present(pace)) call pace%check(t_reached)
                 if (sink%watch_steps) then
                     call sink%after_step(m, t0, t_reached, stat)
                     if (stat%code /= 0 .or. sink%done) exit
@@ -187,9 +192,59 @@ contains
         type(status_t), intent(inout) :: stat
         character(len=200) :: buf
         if (nstep_row < MAX_STEPS_PER_ROW) return
+        ! the texts first: no I/O statement calls a function that does I/O (module text)
         write (buf, '(a,i0,a)') 'the integrator took ', MAX_STEPS_PER_ROW, &
-            ' steps without reaching tau = '//fixed(tau, 6)//' (last step '//sci(abs(h_last))//'):'
-        call set_error(stat, ERR_NUMERIC, trim(buf)//' '//remedy)
+            ' steps without reaching tau = '
+        call set_error(stat, ERR_NUMERIC, trim(buf)//' '//fixed(tau, 6)//' (last step '// &
+                       sci(abs(h_last))//'): '//remedy)
     end subroutine check_row_budget
+
+    !> Where component k of the model's state falls through 0 in the step [t0, t1] (+ at t0,
+    !! <= 0 at t1: found), located on the dense output to roundoff by the Illinois variant of
+    !! regula falsi; y: the state there.  Not found when the component does not fall so.
+    subroutine falling_zero(m, t0, t1, k, found, c, y, stat)
+        class(stepped_model_t), intent(inout) :: m
+        real(dp), intent(in) :: t0, t1          !! the step
+        integer, intent(in) :: k                !! the state's component
+        logical, intent(out) :: found
+        real(dp), intent(out) :: c              !! the zero (when found)
+        real(dp), intent(out) :: y(:)           !! the state at c
+        type(status_t), intent(out) :: stat
+        real(dp) :: a, b, fa, fb, fc
+        integer :: it, side
+        found = .false.
+        c = t1
+        call m%state_at(t1, y, stat)
+        if (stat%code /= 0) return
+        fb = y(k)
+        if (fb > 0.0_dp) return
+        call m%state_at(t0, y, stat)
+        if (stat%code /= 0) return
+        fa = y(k)
+        if (.not. (fa > 0.0_dp)) return
+        a = t0
+        b = t1
+        side = 0
+        do it = 1, 200
+            c = (a*fb - b*fa)/(fb - fa)
+            if (.not. (c > a .and. c < b)) c = 0.5_dp*(a + b)
+            call m%state_at(c, y, stat)
+            if (stat%code /= 0) return
+            fc = y(k)
+            if (fc > 0.0_dp) then
+                a = c
+                fa = fc
+                if (side == -1) fb = 0.5_dp*fb
+                side = -1
+            else
+                b = c
+                fb = fc
+                if (side == 1) fa = 0.5_dp*fa
+                side = 1
+            end if
+            if (b - a <= 4.0_dp*epsilon(1.0_dp)*b .or. fc == 0.0_dp) exit
+        end do
+        found = .true.
+    end subroutine falling_zero
 
 end module run_loop

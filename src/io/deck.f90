@@ -162,6 +162,7 @@ module deck
     end type deck_t
 
     public :: read_deck, read_deck_text, analysis_requested, deck_echo, estimated, deck_gave
+    public :: record_in_folder
 
     !> The physical inputs whose presence in the deck is recorded (deck_t%given).
     character(len=*), parameter :: GIVEN_TRACKED = 'g mass l l_prime b b_prime r lambda '// &
@@ -374,6 +375,13 @@ module deck
             character(len=:), allocatable :: why
         end function subscript_problem
         !> Why the run-time library could not read a group ('' when not found).
+        !> A namelist error as 'WHAT NOTE; allowed: ...': the allowed part of what when it
+        !! has one (moved after the note), else the group's variables (spec, see SPEC_*).
+        module function with_allowed(what, note, spec) result(m)
+            character(len=*), intent(in) :: what, note, spec
+            character(len=:), allocatable :: m
+        end function with_allowed
+
         module function explain(text, grp, spec) result(why)
             character(len=*), intent(in) :: text, grp, spec
             character(len=:), allocatable :: why
@@ -442,7 +450,8 @@ contains
         open (newunit=u, file=path, status='old', action='read', form='formatted', &
               access='sequential', iostat=ios, iomsg=msg)
         if (ios /= 0) then
-            call set_error(stat, ERR_DECK, 'cannot open the deck: '//trim(msg))
+            call set_error(stat, ERR_DECK, 'cannot open the deck: '//trim(msg)//'; allowed: '// &
+                           'a readable text file of namelist groups')
             return
         end if
         allocate (ls(64))
@@ -451,7 +460,8 @@ contains
         do
             call read_line(u, line, ios, msg)
             if (ios > 0) then
-                call set_error(stat, ERR_DECK, 'cannot read the deck: '//trim(msg))
+                call set_error(stat, ERR_DECK, 'cannot read the deck: '//trim(msg)// &
+                               '; allowed: a readable text file of namelist groups')
                 exit
             end if
             if (ios < 0) exit
@@ -566,25 +576,27 @@ contains
             if (stat%code /= STATUS_OK) return
             if (index(seen, ' '//grp//' ') == 0) then   ! no line starts the group
                 if (required) call set_error(stat, ERR_DECK, '&'//grp// &
-                    ' group missing; it is required (a deck needs &suspension and &body)')
+                    ' group missing; allowed: a deck with &suspension and &body (both required)')
                 return
             end if
             call scan_group(ls, grp, found, complete, items, breaks, rec)
             if (.not. found) then
                 if (required) call set_error(stat, ERR_DECK, '&'//grp// &
-                    ' group missing; it is required (a deck needs &suspension and &body)')
+                    ' group missing; allowed: a deck with &suspension and &body (both required)')
                 return
             end if
             ! what the run-time library cannot be trusted with never reaches it
             why = subscript_problem(items, breaks)
             if (len(why) == 0) why = long_text(items)
             if (len(why) > 0) then
-                call set_error(stat, ERR_DECK, 'cannot read namelist group &'//grp//': '//why)
+                call set_error(stat, ERR_DECK, with_allowed('cannot read namelist group &'// &
+                               grp//': '//why, '', spec))
                 return
             end if
             if (.not. complete) then
                 call set_error(stat, ERR_DECK, 'cannot read namelist group &'//grp// &
-                    ': no closing ''/'' before the end of the file (truncated deck?)')
+                    ': no closing ''/'' before the end of the file (truncated deck?); '// &
+                    'allowed: each group closed by ''/'' (or &end)')
                 return
             end if
             msg = ''
@@ -619,13 +631,14 @@ contains
             if (ios == 0) return
             why = explain(items, grp, spec)
             if (len(why) > 0) then
-                call set_error(stat, ERR_DECK, 'cannot read namelist group &'//grp// &
-                               ': '//why//' (reader: '//trim(msg)//')')
+                call set_error(stat, ERR_DECK, with_allowed('cannot read namelist group &'// &
+                               grp//': '//why, ' (reader: '//trim(msg)//')', spec))
             else
-                call set_error(stat, ERR_DECK, 'cannot read namelist group &'//grp// &
-                               ': '//trim(msg))
+                call set_error(stat, ERR_DECK, with_allowed('cannot read namelist group &'// &
+                               grp//': '//trim(msg), '', spec))
             end if
         end subroutine read_group
+
 
     end subroutine parse_deck
 

@@ -535,6 +535,36 @@ contains
                      'u_lambda with r, lambda')
             return
         end if
+        ! a u whose 5-sigma range leaves its input's domain: the Monte Carlo would draw
+        ! values no rig has (l < 0, g < 0, an amplitude beyond 180 degrees), the budget's
+        ! steps would cross the edge (issue 22)
+        call in_domain(stat, 'measurement', 'u_mass', d%u_mass, 'mass', d%mass, 0.0_dp, &
+                       0.0_dp)
+        call in_domain(stat, 'measurement', 'u_l', d%u_l, 'l', d%l, 0.0_dp, 0.0_dp)
+        if (d%cables == 2) call in_domain(stat, 'measurement', 'u_l_prime', d%u_l_prime, &
+                                          'l_prime', d%l_prime, 0.0_dp, 0.0_dp)
+        call in_domain(stat, 'measurement', 'u_b', d%u_b, 'b', d%b, 0.0_dp, 0.0_dp)
+        call in_domain(stat, 'measurement', 'u_b_prime', d%u_b_prime, 'b_prime', d%b_prime, &
+                       0.0_dp, 0.0_dp)
+        call in_domain(stat, 'measurement', 'u_g', d%u_g, 'g', d%g, 0.0_dp, 0.0_dp)
+        call in_domain(stat, 'measurement', 'u_inertia', d%u_inertia(1), 'inertia(2)', &
+                       d%inertia(2), 0.0_dp, 0.0_dp)
+        call in_domain(stat, 'measurement', 'u_inertia', d%u_inertia(2), 'inertia(3)', &
+                       d%inertia(3), 0.0_dp, 0.0_dp)
+        if (.not. (deck_gave(d, 'cg_depth') .or. deck_gave(d, 'cg_offset') .or. d%cables > 2)) &
+            call in_domain(stat, 'measurement', 'u_r', d%u_r, 'r', d%r, 0.0_dp, 0.0_dp, .true.)
+        do i = 1, d%n_periods
+            call in_domain(stat, 'measurement', 'u_period', d%u_period, 'periods('//itoa(i)// &
+                           ')', d%periods(i), 0.0_dp, 0.0_dp)
+            ! the period depends on |amplitude|: only 180 degrees bounds its draws
+            call in_domain(stat, 'measurement', 'u_amplitude', d%u_amplitude, 'amplitudes('// &
+                           itoa(i)//')', d%amplitudes(i), -180.0_dp, 180.0_dp)
+        end do
+        if (len_trim(d%record) > 0 .and. trim(d%mode) == 'raised' .and. .not. &
+            estimated(d, 'amplitude')) call in_domain(stat, 'measurement', 'u_amplitude', &
+            d%u_amplitude, 'the release amplitude (&start amplitude)', d%amplitude, 0.0_dp, &
+            180.0_dp)
+        if (stat%code /= STATUS_OK) return
         if (d%tare_mass >= d%mass) then
             call bad(stat, 'measurement', 'tare_mass', rshort(d%tare_mass), 'not below the '// &
                      'mass of the whole rig (&body mass = '//rshort(d%mass)//')', '0 <= '// &
@@ -903,6 +933,45 @@ contains
                        what//'; allowed: '//allowed)
     end subroutine bad
 
+    !> ERR_DECK when the standard uncertainty u of input x puts the 5-sigma range x +- 5 u
+    !! outside the input's domain: lo < x - 5 u (lo <= x - 5 u when closed) and, when
+    !! hi > lo, x + 5 u < hi.  A Monte Carlo draws its inputs from N(x, u^2) and the budget
+    !! steps around x: neither may leave the domain (l < 0, g < 0, an amplitude beyond 180
+    !! degrees).  u = 0 and a non-finite x (refused elsewhere) pass.
+    subroutine in_domain(stat, grp, uname, u, xname, x, lo, hi, closed)
+        type(status_t), intent(inout) :: stat       !! the first problem
+        character(len=*), intent(in) :: grp         !! the group of u
+        character(len=*), intent(in) :: uname, xname    !! the names of u and of its input
+        real(dp), intent(in) :: u, x                !! the uncertainty and the input's value
+        real(dp), intent(in) :: lo, hi              !! the domain (hi <= lo: no upper bound)
+        logical, intent(in), optional :: closed     !! x = lo allowed
+        real(dp) :: umax
+        character(len=:), allocatable :: dom
+        logical :: low_ok, cl
+        if (stat%code /= STATUS_OK) return
+        if (.not. (u > 0.0_dp) .or. .not. ieee_is_finite(x) .or. .not. ieee_is_finite(u)) &
+            return
+        cl = .false.
+        if (present(closed)) cl = closed
+        if (cl) then
+            low_ok = x - 5.0_dp*u >= lo
+        else
+            low_ok = x - 5.0_dp*u > lo
+        end if
+        if (low_ok .and. (hi <= lo .or. x + 5.0_dp*u < hi)) return
+        umax = (x - lo)/5.0_dp
+        if (hi > lo) umax = min(umax, (hi - x)/5.0_dp)
+        umax = max(0.0_dp, umax)
+        dom = xname//trim(merge(' >= ', ' >  ', cl))//' '//rshort(lo)
+        if (hi > lo) dom = rshort(lo)//' < '//xname//' < '//rshort(hi)
+        call bad(stat, grp, uname, rshort(u), 'the 5-sigma range of '//xname// &
+                 ' = '//rshort(x)//' +- 5 '//uname//' reaches '// &
+                 rshort(merge(x - 5.0_dp*u, x + 5.0_dp*u, .not. low_ok))//', outside '//dom// &
+                 ' (a Monte Carlo would draw such values, the budget step there)', &
+                 '0 <= '//uname//' < '//rshort(umax)//' for '//xname//' = '//rshort(x)// &
+                 ' (a fifth of the distance to the edge)')
+    end subroutine in_domain
+
     !> ERR_DECK when x is NaN or infinite.
     subroutine finite(stat, grp, var, x)
         type(status_t), intent(inout) :: stat       !! the first problem
@@ -1135,9 +1204,11 @@ contains
             call need('&suspension l_prime', deck_gave(d, 'l_prime'))
             call need('&suspension b', deck_gave(d, 'b'))
             call need('&suspension b_prime', deck_gave(d, 'b_prime'))
-            call need('&body the mass centre (cg_depth and cg_offset, or r and lambda)', &
-                      deck_gave(d, 'cg_depth') .or. (deck_gave(d, 'r') .and. &
-                      deck_gave(d, 'lambda')))
+            ! (a tensor deck's mass centre may come from its table of hangs: checked there)
+            if (what /= 'tensor') &
+                call need('&body the mass centre (cg_depth and cg_offset, or r and lambda)', &
+                          deck_gave(d, 'cg_depth') .or. (deck_gave(d, 'r') .and. &
+                          deck_gave(d, 'lambda')))
         else
             call need('&suspension radius', deck_gave(d, 'radius'))
             call need('&suspension radius_prime', deck_gave(d, 'radius_prime'))
@@ -1162,13 +1233,24 @@ contains
         integer :: i
         character(len=*), parameter :: UNAMES(8) = [character(len=11) :: 'u_mass', 'u_l', &
             'u_l_prime', 'u_b', 'u_b_prime', 'u_g', 'u_period', 'u_amplitude']
+        character(len=*), parameter :: XNAMES(6) = [character(len=7) :: 'mass', 'l', &
+            'l_prime', 'b', 'b_prime', 'g']
+        real(dp) :: xv(6)
         if (stat%code /= STATUS_OK) return
+        xv = [d%mass, d%l, d%l_prime, d%b, d%b_prime, d%g]
         do i = 1, size(d%tensor_u)
             call finite(stat, 'tensor', trim(UNAMES(i)), d%tensor_u(i))
             if (stat%code /= STATUS_OK) return
             if (d%tensor_u(i) < 0.0_dp .or. d%tensor_u(i) > DIM_MAX) call bad(stat, 'tensor', &
                 trim(UNAMES(i)), rshort(d%tensor_u(i)), 'a standard uncertainty out of range', &
                 '0 <= '//trim(UNAMES(i))//' <= '//rshort(DIM_MAX)//' (deck units; 0: not known)')
+        end do
+        if (stat%code /= STATUS_OK) return
+        ! the 5-sigma range of each input inside its domain (check_measurement's rule); the
+        ! periods and amplitudes are the table's, checked with it
+        do i = 1, 6
+            call in_domain(stat, 'tensor', trim(UNAMES(i)), d%tensor_u(i), trim(XNAMES(i)), &
+                           xv(i), 0.0_dp, 0.0_dp)
         end do
         call finite(stat, 'tensor', 'u_direction', d%tensor_u_direction)
         if (stat%code /= STATUS_OK) return

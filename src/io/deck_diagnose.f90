@@ -525,6 +525,17 @@ contains
         is_real = verify(s(i:), '0123456789') == 0
     end function is_real
 
+    module procedure with_allowed
+        integer :: i
+        i = index(what, '; allowed')
+        if (i > 0) then
+            m = what(1:i - 1)//note//what(i:)
+        else
+            m = what//note//'; allowed: name = value items of the group''s variables ('// &
+                spec_names(spec)//'), values of their kind, closed by ''/'''
+        end if
+    end procedure with_allowed
+
     !> Blank-separated names of a spec, as 'a, b, c'.
     function spec_names(spec) result(s)
         character(len=*), intent(in) :: spec        !! see SPEC_*

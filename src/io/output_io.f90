@@ -18,7 +18,13 @@
 !! the disk is full (the writes, the flush and the close all return iostat = 0 and the file
 !! is cut short), and the size check is what catches it.  Failures are ERR_IO.
 !!
-!! `make_dir` creates a folder and its parents (mkdir -p) and checks that it can be written.
+!! `make_dir` creates a folder and its parents (mkdir -p) and checks that it can be written;
+!! a name the system cannot take (longer than PATH_MAX, or a part longer than NAME_MAX) is
+!! refused before anything is created, and a failure removes the folders it made.
+!!
+!! Signals: every temporary file is registered with module signals from just before it is
+!! created until it is renamed or removed, so that SIGINT, SIGTERM or SIGHUP at any moment
+!! removes it (only SIGKILL can leave one).
 module output_io
     use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_null_ptr, &
         c_associated
@@ -27,11 +33,16 @@ module output_io
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK, ERR_IO
     use text, only: itoa
+    use signals, only: signals_track, signals_untrack, signals_created
     implicit none
     private
 
     public :: atomic_open, atomic_commit, atomic_abort, write_kv, read_kv, all_finite
-    public :: make_dir, remove_file, process_id
+    public :: make_dir, remove_file, process_id, path_fits
+
+    !> The longest path the system takes (bytes, with its terminating null: Linux's
+    !! PATH_MAX) and the longest part of one (NAME_MAX).
+    integer, parameter, public :: PATH_MAX = 4096, NAME_MAX = 255
 
     !> Write `key = value` on one line; reals in full precision, logicals as yes/no.
     !! The last argument is the writer's iostat: nothing is written when it is already
@@ -87,6 +98,11 @@ module output_io
             character(kind=c_char), dimension(*), intent(in) :: path   !! null-terminated
             integer(c_int), value :: mode
         end function c_mkdir
+        !> C library rmdir(2).
+        integer(c_int) function c_rmdir(path) bind(C, name='rmdir')
+            import :: c_int, c_char
+            character(kind=c_char), dimension(*), intent(in) :: path   !! null-terminated
+        end function c_rmdir
         !> C library access(2).
         integer(c_int) function c_access(path, mode) bind(C, name='access')
             import :: c_int, c_char
@@ -138,9 +154,14 @@ contains
         do k = 1, MAX_TMP_TRIES
             tmp = base//itoa(k)
             msg = ''
+            call signals_track(tmp)
             open (newunit=unit, file=tmp, status='new', action='write', form='formatted', &
                   access='sequential', iostat=ios, iomsg=msg)
-            if (ios == 0) return
+            if (ios == 0) then
+                call signals_created(tmp)
+                return
+            end if
+            call signals_untrack(tmp)
             unit = -1
             inquire (file=tmp, exist=exists)
             if (.not. exists) exit          ! not a name clash: the folder is the problem
@@ -165,6 +186,7 @@ contains
             call set_error(stat, ERR_IO, 'cannot rename '//tmp//' to '//path)
             call remove_file(tmp)
         end if
+        call signals_untrack(tmp)
     end subroutine atomic_commit
 
     !> Give up a file from atomic_open: close the unit deleting its temporary file; PATH is
@@ -185,6 +207,7 @@ contains
         end if
         close (unit, status='delete', iostat=ios)
         call remove_file(tmp)                       ! whatever the close did
+        call signals_untrack(tmp)
     end subroutine atomic_abort
 
     !> Flush, check and close a unit from atomic_open: ERR_IO (and the temporary file
@@ -206,6 +229,7 @@ contains
             call set_error(stat, ERR_IO, 'cannot write '//path//' (iostat '//itoa(wios)//')')
             close (unit, status='delete', iostat=ios)
             call remove_file(tmp)
+            call signals_untrack(tmp)
             return
         end if
         flush (unit, iostat=ios, iomsg=msg)
@@ -215,20 +239,31 @@ contains
             call set_error(stat, ERR_IO, 'cannot write '//path//': '//trim(msg))
             close (unit, status='delete', iostat=ios)
             call remove_file(tmp)
+            call signals_untrack(tmp)
             return
         end if
         close (unit, iostat=ios, iomsg=msg)
         if (ios /= 0) then
             call set_error(stat, ERR_IO, 'cannot close '//path//': '//trim(msg))
             call remove_file(tmp)
+            call signals_untrack(tmp)
             return
         end if
         on_disk = -1
         inquire (file=tmp, size=on_disk, iostat=ios)
         if (written >= 0 .and. on_disk /= written) then
-            call set_error(stat, ERR_IO, 'cannot write '//path//': '//itoa64(on_disk)// &
-                           ' of '//itoa64(written)//' bytes reached the disk (disk full?)')
+            ! (on a full disk the run-time library's count of what it wrote may itself be
+            ! short of what the program wrote: only a shorter file is certain)
+            if (on_disk >= 0 .and. on_disk < written) then
+                call set_error(stat, ERR_IO, 'cannot write '//path//': only '// &
+                    itoa64(on_disk)//' of its '//itoa64(written)//' bytes reached the disk '// &
+                    '(disk full?)')
+            else
+                call set_error(stat, ERR_IO, 'cannot write '//path//': the file on the '// &
+                    'disk ('//itoa64(on_disk)//' bytes) is not what was written (disk full?)')
+            end if
             call remove_file(tmp)
+            call signals_untrack(tmp)
         end if
     end subroutine finish_unit
 
@@ -307,14 +342,19 @@ contains
     end subroutine files_close
 
     !> Rename every staged file of the run to its final name, under an exclusive lock on
-    !! the folder of the first one.  A file still open is an error.  On any failure every
-    !! file of the run is removed, those already renamed included (ERR_IO).
-    subroutine files_commit(self, stat)
+    !! the folder of the first one, then (under the same lock) remove the files `stale`
+    !! that this run did not write: files of an earlier run that the run's analyses could
+    !! have written (an old NAME.fit.dat beside a new NAME.identify).  A file still open is
+    !! an error.  On any failure every file of the run is removed, those already renamed
+    !! included, and the stale ones are left (ERR_IO).
+    subroutine files_commit(self, stat, stale)
         class(out_files_t), intent(inout) :: self
         type(status_t), intent(out) :: stat         !! ERR_IO
+        character(len=*), intent(in), optional :: stale(:)  !! paths (trailing blanks dropped)
         type(c_ptr) :: dir
         integer(c_int) :: rc
-        integer :: k
+        integer :: k, j
+        logical :: ours
         stat%code = STATUS_OK
         do k = 1, self%n
             if (self%f(k)%state == ENTRY_OPEN) then
@@ -333,8 +373,20 @@ contains
                                self%f(k)%path)
                 exit
             end if
+            call signals_untrack(self%f(k)%tmp)
             self%f(k)%state = ENTRY_COMMITTED
         end do
+        if (stat%code == STATUS_OK .and. present(stale)) then
+            do j = 1, size(stale)
+                if (len_trim(stale(j)) == 0) cycle
+                ours = .false.
+                do k = 1, self%n
+                    if (self%f(k)%state /= ENTRY_COMMITTED) cycle
+                    if (self%f(k)%path == trim(stale(j))) ours = .true.
+                end do
+                if (.not. ours) call remove_file(trim(stale(j)))
+            end do
+        end if
         if (c_associated(dir)) rc = c_closedir(dir)      ! releases the lock
         if (stat%code /= STATUS_OK) call self%discard()
     end subroutine files_commit
@@ -351,8 +403,10 @@ contains
                 inquire (unit=self%f(k)%unit, opened=opened, iostat=ios)
                 if (opened) close (self%f(k)%unit, status='delete', iostat=ios)
                 call remove_file(self%f(k)%tmp)
+                call signals_untrack(self%f(k)%tmp)
             case (ENTRY_STAGED)
                 call remove_file(self%f(k)%tmp)
+                call signals_untrack(self%f(k)%tmp)
             case (ENTRY_COMMITTED)
                 call remove_file(self%f(k)%path)
             end select
@@ -436,28 +490,110 @@ contains
     ! ---------------------------------------------------------------- folders
 
     !> Create the folder `dir` and its parents when missing (as mkdir -p; mode 0777 less
-    !! the umask), then check that it is a folder that can be written.
-    subroutine make_dir(dir, stat)
+    !! the umask), then check that it is a folder that can be written.  A name the system
+    !! cannot take, with room for the run's files in it (path_fits with a name of `room`
+    !! characters), is refused before anything is created; on any failure the folders made
+    !! here are removed again.
+    subroutine make_dir(dir, stat, room)
         character(len=*), intent(in) :: dir         !! folder name, not empty
         type(status_t), intent(out) :: stat         !! ERR_IO when it cannot be made or written
-        integer :: i
+        integer, intent(in), optional :: room       !! longest file name to fit in it (default 64)
+        integer :: i, nmade, r
         integer(c_int) :: rc
+        integer, allocatable :: made(:)
+        character(len=:), allocatable :: why
         stat%code = STATUS_OK
         if (len(dir) == 0) then
             call set_error(stat, ERR_IO, 'output folder: an empty name')
             return
         end if
+        r = 64
+        if (present(room)) r = room
+        call path_fits(dir, repeat('x', r), stat)
+        if (stat%code /= STATUS_OK) then
+            why = ''
+            if (len(dir) + r + 25 <= PATH_MAX - 1) why = ' with a part longer than '// &
+                itoa(NAME_MAX)
+            call set_error(stat, ERR_IO, 'output folder '//clipped(dir)//': a name of '// &
+                itoa(len(dir))//' characters'//why//'; allowed: at most '// &
+                itoa(PATH_MAX - 1 - r - 25)//' characters (the system''s PATH_MAX less room '// &
+                'for the files in it), each part at most '//itoa(NAME_MAX)// &
+                ' (NAME_MAX); nothing was created')
+            return
+        end if
+        allocate (made(len(dir)))
+        nmade = 0
         do i = 2, len(dir)
-            if (dir(i:i) == '/' .and. dir(i - 1:i - 1) /= '/') &
-                rc = c_mkdir(dir(1:i - 1)//c_null_char, int(o'777', c_int))
+            if (dir(i:i) == '/' .and. dir(i - 1:i - 1) /= '/') call mk(i - 1)
         end do
-        rc = c_mkdir(dir//c_null_char, int(o'777', c_int))
+        call mk(len(dir))
         if (c_access(dir//'/.'//c_null_char, 0_c_int) /= 0) then
             call set_error(stat, ERR_IO, 'cannot create the output folder '//dir)
         else if (c_access(dir//'/.'//c_null_char, W_OK + X_OK) /= 0) then
             call set_error(stat, ERR_IO, 'cannot write into the output folder '//dir)
         end if
+        if (stat%code /= STATUS_OK) then
+            do i = nmade, 1, -1                     ! what was made, deepest first
+                rc = c_rmdir(dir(1:made(i))//c_null_char)
+            end do
+        end if
+
+    contains
+
+        !> mkdir of dir(1:m); remembered when made here.
+        subroutine mk(m)
+            integer, intent(in) :: m
+            if (c_mkdir(dir(1:m)//c_null_char, int(o'777', c_int)) == 0) then
+                nmade = nmade + 1
+                made(nmade) = m
+            end if
+        end subroutine mk
+
     end subroutine make_dir
+
+    !> Whether the system can take the path dir/name: at most PATH_MAX - 1 bytes, with room
+    !! for a temporary name's '.tmp.PID.N' (24 more), and no part longer than NAME_MAX
+    !! (the name with that suffix included).  ERR_IO naming the limit otherwise.
+    subroutine path_fits(dir, name, stat)
+        character(len=*), intent(in) :: dir         !! the folder
+        character(len=*), intent(in) :: name        !! a file name in it (the longest)
+        type(status_t), intent(out) :: stat         !! ERR_IO
+        integer, parameter :: TMP_SUFFIX = 24       !! '.tmp.' PID (<= 10) '.' N (<= 4), spare
+        integer :: i, j, longest
+        stat%code = STATUS_OK
+        if (len(dir) + 1 + len(name) + TMP_SUFFIX > PATH_MAX - 1) then
+            call set_error(stat, ERR_IO, 'the path '//clipped(dir)//'/'//clipped(name)// &
+                ' would be '//itoa(len(dir) + 1 + len(name) + TMP_SUFFIX)//' characters '// &
+                'with a temporary suffix; allowed: at most '//itoa(PATH_MAX - 1)// &
+                ' (the system''s PATH_MAX)')
+            return
+        end if
+        longest = len(name) + TMP_SUFFIX
+        j = 0
+        do i = 1, len(dir) + 1
+            if (i > len(dir)) then
+                longest = max(longest, i - 1 - j)
+            else if (dir(i:i) == '/') then
+                longest = max(longest, i - 1 - j)
+                j = i
+            end if
+        end do
+        if (longest > NAME_MAX) call set_error(stat, ERR_IO, 'the path '//clipped(dir)//'/'// &
+            clipped(name)//' has a part of '//itoa(longest)//' characters (with a '// &
+            'temporary suffix); allowed: at most '//itoa(NAME_MAX)//' (the system''s NAME_MAX)')
+
+    end subroutine path_fits
+
+    !> s, or its first and last 40 characters around ' ... ' when longer than 100.
+    pure function clipped(s) result(c)
+        character(len=*), intent(in) :: s
+        character(len=:), allocatable :: c
+        if (len(s) <= 100) then
+            c = s
+        else
+            c = s(1:40)//' ... '//s(len(s) - 39:)
+        end if
+    end function clipped
 
     ! ---------------------------------------------------------------- key = value
 

@@ -80,16 +80,25 @@ contains
     !! time (s) strictly increasing; the value within VALUE_MAX rad (or VALUE_MAX sqrt(g/b')
     !! rad/s for a rate) after conversion to rad; a sample's u from U_MIN to VALUE_MAX in
     !! those units; MIN_SAMPLES .. MAX_SAMPLES samples.  ERR_DECK naming the line.
-    subroutine read_record_file(path, f, rec, stat)
+    subroutine read_record_file(path, f, rec, stat, bytes)
         character(len=*), intent(in) :: path    !! the file
         type(record_format_t), intent(in) :: f  !! its columns and units
         type(record_t), intent(out) :: rec
         type(status_t), intent(out) :: stat     !! ERR_DECK
+        !> the file's bytes as read once (for its CRC-64), when asked
+        character(len=:), allocatable, intent(out), optional :: bytes
         type(table_t) :: tab
         real(dp) :: vmax, x
         integer :: n, i, need, cols(3)
-        character(len=:), allocatable :: per_tau
-        call read_table(path, tab, stat, MAX_SAMPLES)
+        character(len=:), allocatable :: per_tau, raw
+        if (present(bytes)) then
+            ! through a local: gfortran 12 hands an optional deferred-length dummy on to
+            ! another with a copy of its length, and the length read is lost
+            call read_table(path, tab, stat, MAX_SAMPLES, bytes=raw)
+            if (allocated(raw)) call move_alloc(raw, bytes)
+        else
+            call read_table(path, tab, stat, MAX_SAMPLES)
+        end if
         if (stat%code /= STATUS_OK) then
             if (index(stat%msg, 'more than') == 1) stat%msg = stat%msg(1:index(stat%msg, &
                 ' rows;') - 1)//' samples; allowed: at most '//itoa(MAX_SAMPLES)

@@ -16,6 +16,9 @@
 !! * Text columns (read_table's text_columns, e.g. a table of releases naming a record
 !!   file): the first line is then the header and must name every column; the fields of
 !!   the columns named there are kept as text (tab%text), the others must be numbers.
+!! * The file: a regular file (a FIFO, a device or a folder is refused before it is
+!!   opened: module file_kind), of at most MAX_TABLE_BYTES, read once whole into memory;
+!!   its bytes can go back to the caller (a record's CRC-64 in NAME.identify).
 !! Failures are ERR_DECK statuses whose message names the line and what is wrong; the
 !! caller puts the file's name before it.
 module tables
@@ -23,7 +26,9 @@ module tables
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
     use text, only: itoa, lower, clip
-    use lines, only: read_line, LINE_MAX
+    use, intrinsic :: iso_fortran_env, only: int64
+    use lines, only: LINE_MAX
+    use file_kind, only: kind_of_file, kind_name, FILE_REGULAR, FILE_MISSING
     use fptraps, only: traps_off, traps_restore, NTRAPS
     implicit none
     private
@@ -50,55 +55,47 @@ module tables
     public :: read_table
 
     integer, parameter :: FIELD_MAX = 64        !! longest numeric field (characters)
+    !> Largest table file (bytes): 512 MiB, room for 2 000 000 samples of long numbers
+    integer(int64), parameter, public :: MAX_TABLE_BYTES = 536870912_int64
 
 contains
 
-    !> Read the table at path (max_rows rows at most; 0: no limit).  A file that is not a
-    !! regular file (a folder, a device such as /dev/zero) ends at its first line: read_line
-    !! stops after LINE_MAX characters, and a folder cannot be read.
-    subroutine read_table(path, tab, stat, max_rows, text_columns)
+    !> Read the table at path (max_rows rows at most; 0: no limit): the file read once,
+    !! whole, into memory (load_file), then taken apart line by line.  bytes: the file's
+    !! bytes as read (for a checksum), when asked.
+    subroutine read_table(path, tab, stat, max_rows, text_columns, bytes)
         character(len=*), intent(in) :: path        !! the file
         type(table_t), intent(out) :: tab
         type(status_t), intent(out) :: stat         !! ERR_DECK naming the line
         integer, intent(in), optional :: max_rows   !! most data rows (0 or absent: no limit)
         !> names (lower case) of the columns whose fields are text; the header is required
         character(len=*), intent(in), optional :: text_columns(:)
-        character(len=:), allocatable :: line
-        character(len=512) :: msg
+        !> the file's bytes, as read
+        character(len=:), allocatable, intent(out), optional :: bytes
+        character(len=:), allocatable :: line, text
         type(column_name_t), allocatable :: f(:), header(:)
         real(dp), allocatable :: v(:, :), x(:)
         integer, allocatable :: ln(:)
         logical, allocatable :: is_text(:)
         type(column_name_t), allocatable :: txt(:, :)
-        integer :: u, ios, nline, n, nmax, k
-        logical :: halting(NTRAPS), numeric, is_dir, with_text
+        integer :: ios, nline, n, nmax, k
+        integer(int64) :: pos
+        logical :: halting(NTRAPS), numeric, with_text
         stat%code = STATUS_OK
         nmax = 0
         if (present(max_rows)) nmax = max_rows
-        inquire (file=path//'/.', exist=is_dir)
-        if (is_dir) then
-            call set_error(stat, ERR_DECK, 'is a folder; allowed: a text file')
-            return
-        end if
-        open (newunit=u, file=path, status='old', action='read', form='formatted', &
-              access='sequential', iostat=ios, iomsg=msg)
-        if (ios /= 0) then
-            call set_error(stat, ERR_DECK, 'cannot open it: '//trim(msg))
-            return
-        end if
+        call load_file(path, text, stat)
+        if (stat%code /= STATUS_OK) return
         allocate (header(0), v(1, 1024), ln(1024), is_text(0))
         with_text = present(text_columns)
         n = 0
         nline = 0
+        pos = 1
         call traps_off(halting)
         do
-            call read_line(u, line, ios, msg)
-            if (is_iostat_end(ios)) exit
+            call next_line(text, pos, line, ios)
+            if (ios < 0) exit
             nline = nline + 1
-            if (ios /= 0) then
-                call fail('cannot read line '//itoa(nline)//': '//trim(msg))
-                return
-            end if
             if (len(line) > LINE_MAX) then
                 call fail('line '//itoa(nline)//' is longer than '//itoa(LINE_MAX)// &
                           ' characters; allowed: lines of at most '//itoa(LINE_MAX))
@@ -171,7 +168,7 @@ contains
             ln(n) = nline
         end do
         call traps_restore(halting)
-        close (u)
+        if (present(bytes)) call move_alloc(text, bytes)
         tab%nrow = n
         if (n == 0) then
             call set_error(stat, ERR_DECK, 'no line of numbers (a header alone, or empty); '// &
@@ -191,7 +188,6 @@ contains
             character(len=*), intent(in) :: what
             call traps_restore(halting)
             call set_error(stat, ERR_DECK, what)
-            close (u)
         end subroutine fail
         !> The text columns' fields of data row i (the others '').
         subroutine keep_text(ff, i)
@@ -211,6 +207,96 @@ contains
             z%s = '0'
         end function zero_field
     end subroutine read_table
+
+    !> The whole file at path, read once (a stream of bytes) after its kind is known
+    !! (module file_kind: a FIFO, a device or a folder is refused before it is opened, so
+    !! nothing blocks or reads for ever); at most MAX_TABLE_BYTES; a file whose size changed
+    !! while it was read (a logger still writing) is refused.
+    subroutine load_file(path, text, stat)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable, intent(out) :: text
+        type(status_t), intent(inout) :: stat       !! ERR_DECK
+        character(len=512) :: msg
+        integer :: u, ios, k
+        integer(int64) :: size0, size1
+        k = kind_of_file(path)
+        if (k /= FILE_REGULAR .and. k /= FILE_MISSING) then
+            call set_error(stat, ERR_DECK, 'is '//trim(kind_name(k))//', not a file of '// &
+                           'text (reading it could wait or go on for ever); allowed: a '// &
+                           'regular text file')
+            return
+        end if
+        msg = ''
+        open (newunit=u, file=path, status='old', action='read', access='stream', &
+              form='unformatted', iostat=ios, iomsg=msg)
+        if (ios /= 0) then
+            call set_error(stat, ERR_DECK, 'cannot open it: '//trim(msg)//'; allowed: a '// &
+                           'readable text file')
+            return
+        end if
+        inquire (unit=u, size=size0)
+        if (size0 > MAX_TABLE_BYTES) then
+            close (u)
+            call set_error(stat, ERR_DECK, 'it has '//itoa64(size0)//' bytes; allowed: at '// &
+                           'most '//itoa64(MAX_TABLE_BYTES)//' bytes')
+            return
+        end if
+        allocate (character(len=max(0_int64, size0)) :: text)
+        ios = 0
+        if (size0 > 0) read (u, iostat=ios, iomsg=msg) text
+        inquire (unit=u, size=size1)
+        close (u)
+        if (ios /= 0) then
+            call set_error(stat, ERR_DECK, 'cannot read it: '//trim(msg)//'; allowed: a '// &
+                           'readable text file')
+        else if (size1 /= size0) then
+            call set_error(stat, ERR_DECK, 'its size changed while it was read ('// &
+                           itoa64(size0)//' bytes, then '//itoa64(size1)//'): is it still '// &
+                           'being written?; allowed: a finished file')
+        end if
+    end subroutine load_file
+
+    !> The next line of text from byte pos on (pos moves past its line end), tabs and
+    !! carriage returns as blanks; ios = -1 at the end of the text.
+    pure subroutine next_line(text, pos, line, ios)
+        character(len=*), intent(in) :: text
+        integer(int64), intent(inout) :: pos
+        character(len=:), allocatable, intent(out) :: line
+        integer, intent(out) :: ios
+        integer(int64) :: j, n
+        integer :: i
+        ios = 0
+        n = len(text, kind=int64)
+        if (pos > n) then
+            ios = -1
+            line = ''
+            return
+        end if
+        j = index(text(pos:), achar(10), kind=int64)
+        if (j == 0) then
+            line = text(pos:)
+            pos = n + 1
+        else
+            line = text(pos:pos + j - 2)
+            pos = pos + j
+        end if
+        do i = 1, len(line)
+            if (line(i:i) == achar(9) .or. line(i:i) == achar(13)) line(i:i) = ' '
+        end do
+    end subroutine next_line
+
+    !> A 64-bit integer without blanks.
+    pure function itoa64(i) result(s)
+        integer(int64), intent(in) :: i
+        character(len=len_trim(i64_text(i))) :: s
+        s = i64_text(i)
+    end function itoa64
+
+    pure function i64_text(i) result(s)
+        integer(int64), intent(in) :: i
+        character(len=24) :: s
+        write (s, '(i0)') i
+    end function i64_text
 
     !> The column named `name` (lower case), 0 when the table has none of that name.
     pure integer function table_column(tab, name) result(k)

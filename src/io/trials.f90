@@ -21,7 +21,7 @@ module trials
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
     use text, only: itoa, rshort, quoted
-    use deck, only: deck_t
+    use deck, only: deck_t, record_in_folder
     use tables, only: table_t, read_table
     implicit none
     private
@@ -172,7 +172,7 @@ contains
                                  'with periods (trial '//quoted(ts%t(it)%label)//')')
                     return
                 end if
-                ts%t(it)%record = in_folder(d%trials_path, trim(rec))
+                ts%t(it)%record = record_in_folder(d%trials_path, trim(rec))
                 cycle
             end if
             if (col(7) == 0) then
@@ -265,16 +265,5 @@ contains
         end do
     end function names_list
 
-    !> A file named in the table: as given when absolute, else relative to the table's
-    !! folder.
-    pure function in_folder(table_path, name) result(p)
-        character(len=*), intent(in) :: table_path, name
-        character(len=:), allocatable :: p
-        integer :: i
-        p = trim(adjustl(name))
-        if (p(1:1) == '/') return
-        i = index(table_path, '/', back=.true.)
-        if (i > 0) p = table_path(1:i)//p
-    end function in_folder
 
 end module trials

@@ -3,6 +3,9 @@
 !!
 !! Least squares: la_lstsq (DGELS, QR) and la_svd (DGESVD, singular values and right
 !! singular vectors), for the identification's Levenberg-Marquardt steps and covariances.
+!! The inertia tensor (analysis tensor): la_syev (DSYEV, a symmetric matrix's eigenvalues
+!! and eigenvectors), la_eigv (DGEEV with right eigenvectors: the normal modes of a hang),
+!! la_chol and la_tri_solve (DPOTRF, DTRTRS: whitening by a covariance's Cholesky factor).
 !!
 !! Each wrapper checks the shapes of its arguments, calls LAPACK through an explicit
 !! interface, and maps INFO to a status_t with a message naming the routine and the cause.
@@ -25,6 +28,7 @@ module lapack_wrap
     public :: la_small_chol, la_small_chol_solve, la_small_lu_solve
     public :: la_zlu_factor, la_zlu_solve
     public :: la_lstsq, la_svd
+    public :: la_syev, la_eigv, la_chol, la_tri_solve
 
     integer, parameter, public :: SMALL_N = 8   !! largest order of la_small_chol
 
@@ -84,6 +88,29 @@ module lapack_wrap
             real(dp), intent(out) :: s(*), u(ldu, *), vt(ldvt, *), work(*)
             integer, intent(out) :: info
         end subroutine dgesvd
+        subroutine dsyev(jobz, uplo, n, a, lda, w, work, lwork, info)
+            import :: dp
+            character(len=1), intent(in) :: jobz, uplo
+            integer, intent(in) :: n, lda, lwork
+            real(dp), intent(inout) :: a(lda, *)
+            real(dp), intent(out) :: w(*), work(*)
+            integer, intent(out) :: info
+        end subroutine dsyev
+        subroutine dpotrf(uplo, n, a, lda, info)
+            import :: dp
+            character(len=1), intent(in) :: uplo
+            integer, intent(in) :: n, lda
+            real(dp), intent(inout) :: a(lda, *)
+            integer, intent(out) :: info
+        end subroutine dpotrf
+        subroutine dtrtrs(uplo, trans, diag, n, nrhs, a, lda, b, ldb, info)
+            import :: dp
+            character(len=1), intent(in) :: uplo, trans, diag
+            integer, intent(in) :: n, nrhs, lda, ldb
+            real(dp), intent(in) :: a(lda, *)
+            real(dp), intent(inout) :: b(ldb, *)
+            integer, intent(out) :: info
+        end subroutine dtrtrs
         subroutine zgetrf(m, n, a, lda, ipiv, info)
             import :: dp
             integer, intent(in) :: m, n, lda
@@ -518,5 +545,151 @@ contains
             call set_error(stat, ERR_NUMERIC, trim(buf))
         end if
     end subroutine la_svd
+
+    !> Eigenvalues and eigenvectors of a real symmetric matrix (LAPACK DSYEV, lower
+    !! triangle read).
+    !!
+    !! a    [in]  real(dp)(n,n): the symmetric matrix (not changed: a copy is reduced).
+    !! w    [out] real(dp)(n):   eigenvalues in ascending order.
+    !! v    [out] real(dp)(n,n): column j the unit eigenvector of w(j) (orthonormal).
+    !! stat [out]: ERR_NUMERIC on a shape mismatch or when the QL/QR iteration fails to
+    !!             converge (INFO = i > 0: i off-diagonal elements did not converge to zero).
+    subroutine la_syev(a, w, v, stat)
+        real(dp), intent(in) :: a(:, :)
+        real(dp), intent(out) :: w(:)
+        real(dp), intent(out) :: v(:, :)
+        type(status_t), intent(out) :: stat
+        real(dp), allocatable :: work(:)
+        real(dp) :: wquery(1)
+        integer :: n, info, lwork
+        character(len=100) :: buf
+        n = size(a, 1)
+        w = 0.0_dp
+        v = 0.0_dp
+        if (n < 1 .or. size(a, 2) /= n .or. size(w) /= n .or. any(shape(v) /= [n, n])) then
+            call set_error(stat, ERR_NUMERIC, 'la_syev: shapes disagree (a and v n x n, w n)')
+            return
+        end if
+        v(:, :) = a
+        call dsyev('V', 'L', n, v, n, w, wquery, -1, info)
+        lwork = max(3*n, int(wquery(1)))
+        allocate (work(lwork))
+        call dsyev('V', 'L', n, v, n, w, work, lwork, info)
+        if (info /= 0) then
+            write (buf, '(a,i0,a)') 'la_syev (dsyev): ', info, ' off-diagonal elements did '// &
+                'not converge to zero'
+            if (info < 0) write (buf, '(a,i0)') 'la_syev (dsyev): illegal argument ', -info
+            call set_error(stat, ERR_NUMERIC, trim(buf))
+        end if
+    end subroutine la_syev
+
+    !> Eigenvalues and right eigenvectors of a general real square matrix (LAPACK DGEEV).
+    !!
+    !! a    [in]  real(dp)(n,n): the matrix (not changed: a copy is reduced).
+    !! wr, wi [out] real(dp)(n): real and imaginary parts of the eigenvalues; a conjugate
+    !!            pair is adjacent, positive imaginary part first.
+    !! vr   [out] real(dp)(n,n): right eigenvectors, each of unit Euclidean norm with its
+    !!            largest component real: for a real eigenvalue column j is its vector; for
+    !!            a pair j, j+1 the vector of wr(j) + i wi(j) is vr(:,j) + i vr(:,j+1).
+    !! stat [out]: ERR_NUMERIC on a shape mismatch or when the QR algorithm fails to
+    !!             converge (INFO > 0).
+    subroutine la_eigv(a, wr, wi, vr, stat)
+        real(dp), intent(in) :: a(:, :)
+        real(dp), intent(out) :: wr(:), wi(:)
+        real(dp), intent(out) :: vr(:, :)
+        type(status_t), intent(out) :: stat
+        real(dp), allocatable :: acopy(:, :), work(:)
+        real(dp) :: vl(1, 1), wquery(1)
+        integer :: n, info, lwork
+        character(len=80) :: buf
+        n = size(a, 1)
+        wr = 0.0_dp
+        wi = 0.0_dp
+        vr = 0.0_dp
+        if (n < 1 .or. size(a, 2) /= n .or. size(wr) /= n .or. size(wi) /= n .or. &
+            any(shape(vr) /= [n, n])) then
+            call set_error(stat, ERR_NUMERIC, 'la_eigv: shapes disagree (a and vr n x n, '// &
+                           'wr and wi n)')
+            return
+        end if
+        allocate (acopy(n, n))
+        acopy(:, :) = a
+        call dgeev('N', 'V', n, acopy, n, wr, wi, vl, 1, vr, n, wquery, -1, info)
+        lwork = max(4*n, int(wquery(1)))
+        allocate (work(lwork))
+        call dgeev('N', 'V', n, acopy, n, wr, wi, vl, 1, vr, n, work, lwork, info)
+        if (info /= 0) then
+            write (buf, '(a,i0)') 'la_eigv (dgeev): QR algorithm failed to converge, info = ', &
+                info
+            if (info < 0) write (buf, '(a,i0)') 'la_eigv (dgeev): illegal argument ', -info
+            call set_error(stat, ERR_NUMERIC, trim(buf))
+        end if
+    end subroutine la_eigv
+
+    !> Cholesky factor of a symmetric positive definite matrix, A = L L^T (LAPACK DPOTRF,
+    !! lower triangle).
+    !!
+    !! a    [in,out] real(dp)(n,n): the matrix (its lower triangle read); on return L in the
+    !!               lower triangle and zeros above it.
+    !! stat [out]: ERR_NUMERIC on a shape mismatch or when A is not positive definite
+    !!             (INFO = i > 0: the leading minor of order i is not positive).
+    subroutine la_chol(a, stat)
+        real(dp), intent(inout) :: a(:, :)
+        type(status_t), intent(out) :: stat
+        integer :: n, info, j
+        character(len=100) :: buf
+        n = size(a, 1)
+        if (n < 1 .or. size(a, 2) /= n) then
+            call set_error(stat, ERR_NUMERIC, 'la_chol: the matrix is not square')
+            return
+        end if
+        call dpotrf('L', n, a, n, info)
+        if (info /= 0) then
+            write (buf, '(a,i0,a)') 'la_chol (dpotrf): the leading minor of order ', info, &
+                ' is not positive (the matrix is not positive definite)'
+            if (info < 0) write (buf, '(a,i0)') 'la_chol (dpotrf): illegal argument ', -info
+            call set_error(stat, ERR_NUMERIC, trim(buf))
+            return
+        end if
+        do j = 2, n
+            a(1:j - 1, j) = 0.0_dp
+        end do
+    end subroutine la_chol
+
+    !> Solve L X = B (or L^T X = B) in place for a lower triangular L (LAPACK DTRTRS), e.g.
+    !! to whiten a least-squares problem by the Cholesky factor of its covariance.
+    !!
+    !! l    [in]     real(dp)(n,n): lower triangular, nonzero diagonal (la_chol's factor).
+    !! b    [in,out] real(dp)(n,nrhs): right-hand sides; the solutions on return.
+    !! stat [out]: ERR_NUMERIC on a shape mismatch or a zero diagonal element (INFO > 0).
+    !! transposed [in, optional]: .true.: solve L^T X = B.
+    subroutine la_tri_solve(l, b, stat, transposed)
+        real(dp), intent(in) :: l(:, :)
+        real(dp), intent(inout) :: b(:, :)
+        type(status_t), intent(out) :: stat
+        logical, intent(in), optional :: transposed
+        integer :: n, info
+        character(len=1) :: tr
+        character(len=80) :: buf
+        n = size(l, 1)
+        if (n < 1 .or. size(l, 2) /= n .or. size(b, 1) /= n) then
+            call set_error(stat, ERR_NUMERIC, 'la_tri_solve: shapes disagree (l n x n, b n rows)')
+            return
+        end if
+        if (size(b, 2) == 0) then
+            stat%code = 0
+            return
+        end if
+        tr = 'N'
+        if (present(transposed)) then
+            if (transposed) tr = 'T'
+        end if
+        call dtrtrs('L', tr, 'N', n, size(b, 2), l, n, b, n, info)
+        if (info /= 0) then
+            write (buf, '(a,i0,a)') 'la_tri_solve (dtrtrs): diagonal element ', info, ' is zero'
+            if (info < 0) write (buf, '(a,i0)') 'la_tri_solve (dtrtrs): illegal argument ', -info
+            call set_error(stat, ERR_NUMERIC, trim(buf))
+        end if
+    end subroutine la_tri_solve
 
 end module lapack_wrap

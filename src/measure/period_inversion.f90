@@ -53,7 +53,7 @@
 module period_inversion
     use kinds, only: dp, pi, deg
     use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC
-    use text, only: itoa, fixed
+    use text, only: itoa, fixed, sci
     use geometry, only: pendulum_t
     use deck, only: deck_t
     use rig, only: rig_t, start_t, accuracy_t, rig_of, accuracy_of, make_pendulum, &
@@ -62,7 +62,7 @@ module period_inversion
     use floquet, only: check_torsion_scene, torsion_period
     use random, only: rng_t, rng_stream, rng_normal
     use bifilar_model, only: NSTATE
-    use run_loop, only: stepped_model_t, row_sink_t, drive
+    use run_loop, only: stepped_model_t, row_sink_t, drive, falling_zero
     use output_io, only: out_files_t
     use budget, only: input_u_t, budget_row_t
     use inputs, only: input_t, set_input, no_effect_on_torsion, deck_inputs
@@ -244,42 +244,16 @@ contains
         class(stepped_model_t), intent(inout) :: m
         real(dp), intent(in) :: t0, t1          !! the step
         type(status_t), intent(out) :: stat
-        real(dp) :: y(NSTATE), a, b, fa, fb, c, fc
-        integer :: it, side
-        call m%state_at(t1, y, stat)
-        if (stat%code /= 0) return
-        fb = y(9)
+        real(dp) :: y(NSTATE), c
+        logical :: found
         if (.not. sink%below) then
+            call m%state_at(t1, y, stat)
+            if (stat%code /= 0) return
             sink%below = y(4) < 0.0_dp
             return
         end if
-        if (fb > 0.0_dp) return
-        call m%state_at(t0, y, stat)
-        if (stat%code /= 0) return
-        fa = y(9)
-        if (.not. (fa > 0.0_dp)) return
-        a = t0
-        b = t1
-        side = 0
-        do it = 1, 200
-            c = (a*fb - b*fa)/(fb - fa)
-            if (.not. (c > a .and. c < b)) c = 0.5_dp*(a + b)
-            call m%state_at(c, y, stat)
-            if (stat%code /= 0) return
-            fc = y(9)
-            if (fc > 0.0_dp) then
-                a = c
-                fa = fc
-                if (side == -1) fb = 0.5_dp*fb
-                side = -1
-            else
-                b = c
-                fb = fc
-                if (side == 1) fa = 0.5_dp*fa
-                side = 1
-            end if
-            if (b - a <= 4.0_dp*epsilon(1.0_dp)*b .or. fc == 0.0_dp) exit
-        end do
+        call falling_zero(m, t0, t1, 9, found, c, y, stat)
+        if (stat%code /= 0 .or. .not. found) return
         sink%t_max = c
         sink%done = .true.
     end subroutine period_after_step
@@ -300,7 +274,8 @@ contains
         call check_torsion_scene(p, ivert, stat)
         if (stat%code /= 0) return
         if (ivert /= 1) call set_error(stat, ERR_DECK, '&body btilde: b1 is not vertical at '// &
-            'rest (row 1 must be (+-1, 0, 0)): the period of torsion does not depend on I1')
+            'rest: the period of torsion does not depend on I1; allowed: row 1 of btilde '// &
+            '(+-1, 0, 0) for identify')
     end subroutine torsion_pendulum
 
     !> Period in seconds of the scaled pendulum p (period in tau over sqrt(g/b')).
@@ -328,7 +303,7 @@ contains
         real(dp), intent(in), optional :: u_each(:) !! each period's u (s), else u%period
         real(dp) :: w(size(periods)), tm(size(periods)), g(size(periods)), r(size(periods))
         real(dp) :: up(size(periods))
-        real(dp) :: scale, i1, di, s0, s1, ilo, tmin, ta, tb, h, di_full
+        real(dp) :: scale, i1, di, s0, s1, ilo, tmin, ta, tb, h, di_full, dtda
         real(dp) :: r_acc(size(periods))
         integer :: i, it, half
         character(len=300) :: buf
@@ -337,8 +312,8 @@ contains
         allocate (fit%model_periods(size(periods)))
         fit%model_periods = 0.0_dp
         if (size(periods) < 1 .or. size(amps) /= size(periods)) then
-            call set_error(stat, ERR_DECK, '&measurement periods, amplitudes: need one '// &
-                'amplitude per period and at least one period')
+            call set_error(stat, ERR_DECK, '&measurement periods, amplitudes: not one '// &
+                'amplitude per period; allowed: at least one period, one amplitude each')
             return
         end if
         scale = rg%mass*rg%b_prime**2
@@ -351,11 +326,11 @@ contains
             call period_of(ilo, amps(i), tmin, stat)
             if (stat%code /= 0) return
             if (.not. (periods(i) > tmin)) then
-                write (buf, '(a,i0,a,es12.5,a,es12.5,a,f0.3,a)') '&measurement periods(', i, &
-                    ') = ', periods(i), ' s: shorter than the period of this rig with I1 -> 0 (', &
-                    tmin, ' s at ', amps(i), ' deg); no positive I1 gives it: check the '// &
-                    'units (s), the amplitude and the suspension lengths'
-                call set_error(stat, ERR_DECK, trim(buf))
+                call set_error(stat, ERR_DECK, '&measurement periods('//itoa(i)//') = '// &
+                    sci(periods(i), 5)//' s: shorter than the period of this rig with I1 -> 0 ('// &
+                    sci(tmin, 5)//' s at '//fixed(amps(i), 3)//' deg); no positive I1 gives '// &
+                    'it: check the units (s), the amplitude and the suspension lengths; '// &
+                    'allowed: periods above '//sci(tmin, 5)//' s at that amplitude')
                 return
             end if
         end do
@@ -366,12 +341,23 @@ contains
         if (present(u_each)) up = u_each
         if (any(up > 0.0_dp) .or. u%amplitude > 0.0_dp) then
             do i = 1, size(periods)
-                h = 1.0e-4_dp*max(1.0_dp, amps(i))
-                call period_of(i1, amps(i) + h, ta, stat)
-                if (stat%code == 0) call period_of(i1, amps(i) - h, tb, stat)
-                if (stat%code /= 0) return
-                w(i) = 1.0_dp/max(tiny(1.0_dp), up(i)**2 + ((ta - tb)/(2*h)*u%amplitude)**2)
+                dtda = 0.0_dp
+                if (u%amplitude > 0.0_dp) then
+                    ! dT/dA by a difference that stays inside 0 < A < 180 degrees (a step
+                    ! past 180 gave a NaN period and a weight of 1/tiny: issue 22)
+                    h = 1.0e-4_dp*max(1.0_dp, amps(i))
+                    h = min(h, 0.5_dp*amps(i), 0.5_dp*(180.0_dp - amps(i)))
+                    call period_of(i1, amps(i) + h, ta, stat)
+                    if (stat%code == 0) call period_of(i1, amps(i) - h, tb, stat)
+                    if (stat%code /= 0) return
+                    dtda = (ta - tb)/(2*h)
+                end if
+                w(i) = 1.0_dp/max(tiny(1.0_dp), up(i)**2 + (dtda*u%amplitude)**2)
+                if (.not. (w(i) < huge(1.0_dp))) w(i) = 1.0_dp
             end do
+            ! weights relative to the largest when huge: their scale does not matter, their
+            ! overflow in w g^2 would (a period with no u beside others with)
+            if (maxval(w) > 1.0e100_dp) w = w/maxval(w)
         end if
         call residuals(i1, tm, r, s0, stat)
         if (stat%code /= 0) return
@@ -434,12 +420,11 @@ contains
         if (.not. sym .and. all(r_acc > 0.0_dp)) then
             ! the model's periods are all still longer at the smallest I1 the model could
             ! swing with (a cable goes slack below it): no I1 gives them
-            write (buf, '(a,es12.5,a,es12.5,a)') '&measurement periods: shorter than the '// &
-                'periods of this rig (simulated) down to I1 = ', i1, ' (', &
-                r_acc(1) + periods(1), ' s for periods(1)), below which a cable goes slack;'// &
-                ' no positive I1 gives them: check the units (s), the amplitudes and the '// &
-                'suspension lengths'
-            call set_error(stat, ERR_DECK, trim(buf))
+            call set_error(stat, ERR_DECK, '&measurement periods: shorter than the '// &
+                'periods of this rig (simulated) down to I1 = '//sci(i1, 5)//' ('// &
+                sci(r_acc(1) + periods(1), 5)//' s for periods(1)), below which a cable '// &
+                'goes slack; no positive I1 gives them: check the units (s), the amplitudes '// &
+                'and the suspension lengths; allowed: periods the rig gives for some I1 > 0')
             return
         end if
         write (buf, '(a,i0,a,es12.5)') 'period inversion: Gauss-Newton did not converge in ', &
@@ -666,7 +651,8 @@ contains
         if (present(cycles)) up = u%period/cycles
         do i = 1, size(periods)
             pp(i) = periods(i) + up(i)*rng_normal(g)
-            aa(i) = amps(i) + u%amplitude*rng_normal(g)
+            ! the peak amplitude's sign is no measurement: the period depends on |A|
+            aa(i) = abs(amps(i) + u%amplitude*rng_normal(g))
         end do
         if (present(x)) then
             do i = 1, size(x)
@@ -681,6 +667,15 @@ contains
         call invert_periods(dd, acc, pp, aa, u, f, stat, up)
         i1 = f%i1
         if (stat%code /= 0) then
+            ! the values are the sample's draws, not the deck's: what is allowed is a u
+            if (stat%code == ERR_DECK) then
+                i = index(stat%msg, '; allowed:')
+                if (i > 0) stat%msg = stat%msg(1:i - 1)
+                stat%msg = stat%msg//' (a draw of this sample from the deck''s values and '// &
+                    'their u, not the deck''s own values); allowed: u_period, u_amplitude '// &
+                    'and the rig''s u small enough that every draw is a period some positive '// &
+                    'I1 gives'
+            end if
             stat%msg = 'Monte Carlo sample '//itoa(k)//': '//stat%msg
         end if
     end subroutine period_mc_sample
@@ -713,7 +708,8 @@ contains
         sdev = 0.0_dp
         stat%code = 0
         if (n < 2) then
-            call set_error(stat, ERR_DECK, '&measurement monte_carlo: need at least 2 samples')
+            call set_error(stat, ERR_DECK, '&measurement monte_carlo = '//itoa(n)// &
+                ': too few samples; allowed: at least 2')
             return
         end if
         allocate (cyc(size(periods)))

@@ -542,11 +542,11 @@ contains
         type(record_t), intent(in) :: rec
         logical, intent(in) :: rate             !! W (rad/s), else theta4 (rad)
         type(release_t), intent(out) :: rl
-        real(dp), allocatable :: v(:)
+        real(dp) :: v(size(rec%v))
         real(dp) :: level, noise, vmax, thr, centre, peak, tp
         integer :: n, k, idep, i, ic, ie, j
         n = size(rec%v)
-        allocate (v, source=rec%v)
+        v = rec%v
         k = max(10, min(200, n/10))
         k = min(k, n)
         level = median(v(1:k))

@@ -1,6 +1,6 @@
 !> Monte Carlo of independent samples as a sweep (GUM Supplement 1, JCGM 101:2008; issues
 !! 10 and 15): the one Monte Carlo code path of the program (identify's, from periods and
-!! from a record).
+!! from a record; tensor's, from the periods of several hangs).
 !!
 !! Sample k (1 .. n) draws its inputs from stream k of the seed (module random) and gives
 !! a fixed number of estimates (`mc_task_t`, deferred `sample(k, est, stat)`), so the
@@ -15,9 +15,10 @@
 !! same bits on any number of ranks and threads.
 !!
 !! The other ranks of an MPI run build the same task from the deck and the sweep's payload
-!! (module identify, identify_mc_task).
+!! (module identify, identify_mc_task; module tensor, tensor_sweep_task).
 module monte_carlo
     use kinds, only: dp
+    use finite, only: finite_bits
     use status, only: status_t, set_error, STATUS_OK
     use text, only: itoa
     use deck, only: deck_t
@@ -31,6 +32,8 @@ module monte_carlo
 
     !> The sweep's analysis name (its checkpoint: OUTDIR/NAME.identify_mc.partial).
     character(len=*), parameter, public :: MC_ANALYSIS = 'identify_mc'
+    !> The sweep of analysis tensor's Monte Carlo (OUTDIR/NAME.tensor_mc.partial).
+    character(len=*), parameter, public :: MC_TENSOR = 'tensor_mc'
 
     !> The samples of a Monte Carlo: extend it with what a sample needs and a `sample`.
     type, abstract, extends(sweep_task_t), public :: mc_task_t
@@ -38,6 +41,7 @@ module monte_carlo
     contains
         procedure(mc_sample_i), deferred :: sample
         procedure :: compute => mc_compute
+        procedure :: accepts => mc_accepts
     end type mc_task_t
 
     abstract interface
@@ -68,14 +72,28 @@ contains
         stat%code = STATUS_OK
     end subroutine mc_compute
 
+    !> Sample i's values as read back from a checkpoint: a sample that succeeded (status 0)
+    !! with finite estimates.  A failed sample is not taken from a checkpoint: it is
+    !! computed again (the run then fails with its own message, or it does not fail).
+    logical function mc_accepts(self, i, values) result(ok)
+        class(mc_task_t), intent(in) :: self
+        integer, intent(in) :: i                !! sample number
+        real(dp), intent(in) :: values(:)       !! nest estimates, status code
+        ok = size(values) == self%nest + 1 .and. i >= 1
+        if (ok) ok = all(finite_bits(values))
+        if (ok) ok = values(self%nest + 1) == 0.0_dp
+    end function mc_accepts
+
     !> Run the n samples of `task` over the ranks and threads: the mean and standard
     !! deviation (divisor n - 1) of each estimate, or the failure of the first failed
     !! sample.  With `outdir` the sweep is checkpointed there (OUTDIR/NAME.identify_mc
     !! .partial; options: --resume, the interval) and draws a progress line on a terminal;
     !! `payload` is what the other ranks need beyond the deck to build the same task (see
-    !! sweep_run); `files`: the run's staged files (removed on a signal).
+    !! sweep_run); `analysis`: the sweep's name (MC_ANALYSIS, the default, or MC_TENSOR),
+    !! which names its checkpoint.  `files` is not needed any more (module signals removes
+    !! the run's temporary files on a signal, whatever the stage); callers may still pass it.
     subroutine monte_carlo_run(task, d, n, payload, mean, sdev, stat, outdir, options, &
-                               report, files)
+                               report, files, analysis)
         class(mc_task_t), intent(in) :: task    !! the samples
         type(deck_t), intent(in) :: d           !! the deck (its path and name)
         integer, intent(in) :: n                !! samples (>= 2)
@@ -86,8 +104,9 @@ contains
         type(sweep_options_t), intent(in), optional :: options
         type(sweep_report_t), intent(out), optional :: report
         type(out_files_t), intent(in), optional :: files
+        character(len=*), intent(in), optional :: analysis
         real(dp), allocatable :: vals(:, :), s(:), est(:)
-        character(len=:), allocatable :: ckpt, label, path
+        character(len=:), allocatable :: ckpt, label, path, sweep
         integer :: k, j, nv
         mean = 0.0_dp
         sdev = 0.0_dp
@@ -96,12 +115,16 @@ contains
         label = ''
         path = ''
         if (allocated(d%path)) path = d%path
+        sweep = MC_ANALYSIS
+        if (present(analysis)) sweep = analysis
         if (present(outdir)) then
-            ckpt = checkpoint_path(outdir, d%name, MC_ANALYSIS)
-            label = d%name//': identify (Monte Carlo)'
+            ckpt = checkpoint_path(outdir, d%name, sweep)
+            label = d%name//': '//sweep(1:index(sweep, '_mc', back=.true.) - 1)// &
+                ' (Monte Carlo)'
         end if
-        call sweep_run(task, MC_ANALYSIS, path, ckpt, label, n, nv, vals, stat, options, &
-                       report, files, payload, d%text)
+        if (present(files)) continue
+        call sweep_run(task, sweep, path, ckpt, label, n, nv, vals, stat, options, &
+                       report, payload, d%text)
         if (stat%code /= STATUS_OK) return
         k = findloc(vals(nv, :) /= 0.0_dp, .true., 1)
         if (k > 0) then

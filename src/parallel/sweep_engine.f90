@@ -25,10 +25,14 @@
 !! the task needs more than the deck) and of the executable, are also how the other ranks
 !! check that they read the same deck and run the same executable as rank 0.  With
 !! `resume`, a checkpoint whose fingerprint matches supplies its points and the rest are
-!! computed; any other checkpoint is ignored (and replaced by the next one).  A sweep ended
-!! by a signal (SIGINT, SIGTERM, SIGHUP; mpirun sends SIGTERM to every rank when one dies)
-!! prints one line naming the deck and the checkpoint, removes the run's staged files and
-!! exits with status 128 + signal (module signals).
+!! computed; any other checkpoint is ignored (and replaced by the next one).  Every point
+!! taken from a checkpoint is checked as if it had been computed (its record's checksum,
+!! and the task's `accepts`: finite, in its range); one that fails is computed again, and
+!! the report counts it.  A checkpoint that cannot be written does not end the sweep: the
+!! report carries one warning and the sweep goes on without checkpoints.  A sweep stopped
+!! by a signal (SIGINT, SIGTERM, SIGHUP; under mpirun SIGTERM) is handled by module signals
+!! for the whole run: the sweep only names itself as the stage, and its checkpoint once
+!! written, in the one line the handler prints.
 !!
 !! Failures: a point whose compute returns an error ends the sweep with that error (the
 !! other ranks are told to stop; the sweep returns once every rank has finished its running
@@ -51,15 +55,16 @@ module sweep_engine
     use, intrinsic :: iso_c_binding, only: c_int
     use, intrinsic :: iso_fortran_env, only: int64
     use kinds, only: dp
+    use finite, only: finite_bits
     use status, only: status_t, set_error, STATUS_OK, ERR_IO, ERR_DECK
     use text, only: itoa
-    use output_io, only: remove_file, out_files_t
+    use output_io, only: remove_file
     use progress, only: progress_t
     use parallel, only: par_start, par_stop, par_rank, par_ranks, par_post, par_poll, &
         par_recv, par_library, PAR_ANY
     use crc64, only: deck_crc, executable_crc, crc_parts, crc_join, hex16
     use checkpoint, only: checkpoint_path, checkpoint_write, checkpoint_read
-    use signals, only: install_signals, remove_signals
+    use signals, only: signals_stage, signals_stage_now, signals_mpi, signals_kept
     !$ use omp_lib, only: omp_get_max_threads
     implicit none
     private
@@ -68,6 +73,10 @@ module sweep_engine
     type, abstract, public :: sweep_task_t
     contains
         procedure(sweep_compute_i), deferred :: compute
+        !> Whether values could be point i's (for values taken from a checkpoint); the
+        !! default: every value finite.  A task whose points have ranges or sentinels says
+        !! so by overriding it.
+        procedure :: accepts => sweep_accepts
     end type sweep_task_t
 
     abstract interface
@@ -94,8 +103,13 @@ module sweep_engine
         integer :: ranks = 1                        !! ranks of the run
         integer :: threads = 1                      !! OpenMP threads of all ranks
         integer :: resumed = 0                      !! points taken from the checkpoint
+        !> points of the checkpoint computed again: a record damaged or missing, or values
+        !! the task does not accept
+        integer :: rejected = 0
         integer :: checkpoints = 0                  !! checkpoints written
         character(len=:), allocatable :: note       !! why a checkpoint was not resumed ('')
+        !> why the sweep went on without checkpoints ('' when it did not)
+        character(len=:), allocatable :: warning
         real(dp) :: wall_seconds = 0.0_dp           !! elapsed time of the sweep
         integer :: requests = 0                     !! requests for work rank 0 answered
         real(dp) :: serve_seconds = 0.0_dp          !! rank 0's time taking messages
@@ -115,6 +129,7 @@ module sweep_engine
     end type sweep_job_t
 
     public :: sweep_run, sweep_start, sweep_finish, sweep_is_master, sweep_next_job
+    public :: sweep_resume_points
     public :: sweep_serve, sweep_library
     public :: checkpoint_path                       ! (of module checkpoint)
 
@@ -161,6 +176,7 @@ module sweep_engine
         character(len=:), allocatable :: analysis
         real(dp), allocatable :: payload(:)         !! sent with JOB
         integer(int64) :: deck_crc = 0, exe_crc = 0
+        character(len=:), allocatable :: ckpt_warning   !! a checkpoint could not be written
         real(dp) :: interval = 5.0_dp               !! least seconds between checkpoints
         real(dp) :: asked_interval = 5.0_dp
         integer(int64) :: last_ckpt = 0             !! clock of the last checkpoint
@@ -191,6 +207,7 @@ contains
     subroutine sweep_start(stat)
         type(status_t), intent(out) :: stat         !! a failure of the MPI library
         call par_start(stat)
+        if (stat%code == STATUS_OK .and. par_rank() == 0) call signals_mpi(par_ranks())
     end subroutine sweep_start
 
     !> True on rank 0, the rank that reads the command line, runs the decks and writes.
@@ -232,7 +249,7 @@ contains
     !! for none) the sweep is checkpointed and, with options%resume, continued from a
     !! checkpoint of the same deck, analysis and executable.
     subroutine sweep_run(task, analysis, deck_path, ckpt, label, npoints, nvalues, values, &
-                         stat, options, report, files, payload, deck_text)
+                         stat, options, report, payload, deck_text)
         class(sweep_task_t), intent(in) :: task     !! the points
         character(len=*), intent(in) :: analysis    !! e.g. 'chart'
         character(len=*), intent(in) :: deck_path   !! the deck file (as given)
@@ -243,7 +260,6 @@ contains
         type(status_t), intent(out) :: stat         !! the first failure
         type(sweep_options_t), intent(in), optional :: options
         type(sweep_report_t), intent(out), optional :: report
-        type(out_files_t), intent(in), optional :: files    !! staged files (removed on a signal)
         !> What else the other ranks need to build the task beyond the deck (the task's own
         !! encoding; part of the fingerprint)
         real(dp), intent(in), optional :: payload(:)
@@ -254,10 +270,11 @@ contains
         type(sweep_options_t) :: opt
         character(len=:), allocatable :: text
         type(sweep_report_t) :: rep
-        integer :: r, k
+        integer :: r, k, nbad
         integer(int64) :: c0, c1, rate
         logical :: had_ckpt
         character(len=16) :: env
+        character(len=:), allocatable :: stage0
 
         stat%code = STATUS_OK
         if (present(options)) opt = options
@@ -287,6 +304,8 @@ contains
         e%left(0) = .true.
         rep%ranks = e%nranks
         rep%note = ''
+        rep%warning = ''
+        e%ckpt_warning = ''
 
         if (present(payload)) then
             e%payload = payload
@@ -305,9 +324,10 @@ contains
 
         had_ckpt = .false.
         if (len(ckpt) > 0 .and. opt%resume) then
-            call checkpoint_read(ckpt, analysis, e%deck_crc, e%exe_crc, e%values, e%done, &
-                                 e%ndone, rep%note)
+            call sweep_resume_points(task, ckpt, analysis, e%deck_crc, e%exe_crc, e%values, &
+                                     e%done, e%ndone, nbad, rep%note)
             rep%resumed = e%ndone
+            rep%rejected = nbad
             had_ckpt = e%ndone > 0
         end if
         e%ndone_ckpt = e%ndone
@@ -324,13 +344,18 @@ contains
         call e%pr%start(label, npoints)
         if (e%ndone > 0) call e%pr%tick(e%ndone)
         call system_clock(e%last_ckpt)
-        call arm_signals(deck_path, analysis, ckpt, e%nranks, had_ckpt, files)
+        ! the signal line names this sweep (and its checkpoint once one is kept: module
+        ! checkpoint); a checkpoint resumed is kept already
+        stage0 = signals_stage_now()
+        call signals_stage(analysis, sweep=len(ckpt) > 0)
+        if (had_ckpt) call signals_kept(ckpt)
         call run_threads(e, task)
         call master_finish(e)
         call e%pr%finish()
-        if (.not. e%failed .and. (e%nckpt > 0 .or. had_ckpt) .and. e%ndone > e%ndone_ckpt) &
-            call write_checkpoint(e)
-        call remove_signals()
+        if (.not. e%failed .and. len(e%ckpt) > 0 .and. (e%nckpt > 0 .or. had_ckpt) .and. &
+            e%ndone > e%ndone_ckpt) call write_checkpoint(e)
+        call signals_stage(stage0)
+        rep%warning = e%ckpt_warning
 
         rep%threads = sum(e%threads)
         rep%checkpoints = e%nckpt
@@ -347,6 +372,33 @@ contains
         call move_alloc(e%values, values)
     end subroutine sweep_run
 
+    !> The points of a sweep's checkpoint that --resume takes (module checkpoint: the
+    !! fingerprint, each record's checksum), each then checked as if computed
+    !! (task%accepts): those that fail are not done and counted in nbad with the damaged
+    !! records; note says why no point was taken ('' when the header was).
+    subroutine sweep_resume_points(task, ckpt, analysis, deck_crc, exe_crc, values, done, &
+                                   ndone, nbad, note)
+        class(sweep_task_t), intent(in) :: task     !! the points
+        character(len=*), intent(in) :: ckpt        !! the checkpoint's path
+        character(len=*), intent(in) :: analysis    !! e.g. 'chart'
+        integer(int64), intent(in) :: deck_crc, exe_crc     !! the fingerprint
+        real(dp), intent(inout) :: values(:, :)     !! (values, points)
+        logical, intent(inout) :: done(:)           !! the points taken
+        integer, intent(out) :: ndone               !! their number
+        integer, intent(out) :: nbad                !! points damaged or refused
+        character(len=:), allocatable, intent(out) :: note
+        integer :: k
+        call checkpoint_read(ckpt, analysis, deck_crc, exe_crc, values, done, ndone, nbad, note)
+        do k = 1, size(done)
+            if (.not. done(k)) cycle
+            if (task%accepts(k, values(:, k))) cycle
+            done(k) = .false.
+            values(:, k) = 0.0_dp
+            ndone = ndone - 1
+            nbad = nbad + 1
+        end do
+    end subroutine sweep_resume_points
+
     !> The JOB message: id, points, values, the fingerprint, the analysis and the deck.
     function job_message(e, deck_path, deck_text) result(m)
         type(engine_t), intent(in) :: e
@@ -358,46 +410,6 @@ contains
              real(size(e%payload), dp), real(len(deck_text), dp), chars_to_reals(e%analysis), &
              chars_to_reals(deck_path), e%payload, chars_to_reals(deck_text)]
     end function job_message
-
-    !> Rank 0, during a sweep: on SIGINT, SIGTERM or SIGHUP remove the run's staged files,
-    !! print one line naming the deck and what is kept, and exit with 128 + the signal.
-    subroutine arm_signals(deck_path, analysis, ckpt, nranks, kept, files)
-        character(len=*), intent(in) :: deck_path, analysis, ckpt
-        integer, intent(in) :: nranks               !! ranks of the run
-        logical, intent(in) :: kept                 !! a checkpoint is kept already (resumed)
-        type(out_files_t), intent(in), optional :: files    !! staged files (removed)
-        character(len=:), allocatable :: head, tail_kept, tail_none, why
-        integer :: k, n, m
-        head = 'bifilar: error (interrupted): '//deck_path//': '//analysis// &
-            ' stopped by signal '
-        why = ''
-        if (nranks > 1) why = ' (mpirun sends SIGTERM to every rank when one dies)'
-        if (len(ckpt) > 0) then
-            tail_kept = why//'; the points of the last checkpoint are kept in '//ckpt// &
-                ': run again with --resume to continue'
-            tail_none = why//' before its first checkpoint: nothing is kept'
-        else
-            tail_kept = why//': nothing is kept'
-            tail_none = tail_kept
-        end if
-        n = 0
-        m = 0
-        if (present(files)) then
-            n = files%waiting()
-            do k = 1, n
-                m = max(m, len(files%temporary(k)))
-            end do
-        end if
-        block
-            character(len=m) :: staged(n)           ! the temporary files' paths
-            if (present(files)) then
-                do k = 1, n
-                    staged(k) = files%temporary(k)
-                end do
-            end if
-            call install_signals(head, tail_none, tail_kept, kept, staged)
-        end block
-    end subroutine arm_signals
 
     !> Rank 0 after its threads are done: answer the other ranks until every one has left,
     !! checkpointing as due.
@@ -811,6 +823,16 @@ contains
         if (allocated(st%msg)) m = st%msg
     end function message_of
 
+    !> The default of sweep_task_t%accepts: values could be a point's when every one is
+    !! finite.
+    logical function sweep_accepts(self, i, values) result(ok)
+        class(sweep_task_t), intent(in) :: self     !! the sweep's data
+        integer, intent(in) :: i                    !! point index
+        real(dp), intent(in) :: values(:)           !! its values, as read from a checkpoint
+        ! (the default needs none of the task's data: self is only named)
+        ok = all(finite_bits(values)) .and. i >= 1 .and. same_type_as(self, self)
+    end function sweep_accepts
+
     !> Append points to the rank's queue.
     subroutine enqueue(e, c)
         type(engine_t), intent(inout) :: e
@@ -864,9 +886,10 @@ contains
         call write_checkpoint(e)
     end subroutine maybe_checkpoint
 
-    !> Rank 0: write the checkpoint now (module checkpoint); a failure to write it ends the
-    !! sweep (ERR_IO): the run could not be resumed, and the output could not be written
-    !! either.
+    !> Rank 0: write the checkpoint now (module checkpoint).  One that cannot be written
+    !! (a full disk, a folder in its place) does not end the sweep, whose own file may well
+    !! fit: the sweep goes on without checkpoints, and its report says why (one warning).
+    !! A checkpoint written before stays (its points are still right).
     subroutine write_checkpoint(e)
         type(engine_t), intent(inout) :: e
         integer(int64) :: c0, c1, rate
@@ -874,7 +897,9 @@ contains
         call system_clock(c0, rate)
         call checkpoint_write(e%ckpt, e%analysis, e%deck_crc, e%exe_crc, e%values, e%done, st)
         if (st%code /= STATUS_OK) then
-            call fail(e, st%code, st%msg, .false.)
+            e%ckpt_warning = message_of(st)//': going on without checkpoints (--resume '// &
+                'cannot continue this run from here)'
+            e%ckpt = ''
             return
         end if
         e%nckpt = e%nckpt + 1

@@ -15,23 +15,29 @@
 !! By default (SENS_FORWARD) H is the orbit's forward sensitivity to its initial state,
 !! the integrator's staggered direct method (ode_system's sens_init): at each step's
 !! converged point Z, computed once, solves the step's formula for H, and H takes part in
-!! the error control (the orbit alone would set steps too long for the motions about it).  With SENS_DIFFERENCES (&integration sensitivities =
-!! 'differences') the orbit and H are one system of 110 equations under the error control,
-!! Z evaluated at every right-hand side (variational_t), as before.
+!! the error control (the orbit alone would set steps too long for the motions about it).
+!! With SENS_DIFFERENCES (&integration sensitivities = 'differences') the orbit and H are
+!! one system of 110 equations under the error control, Z evaluated at every right-hand
+!! side (variational_t), as before.
 module floquet
     use kinds, only: dp, pi, deg
+    use finite, only: finite_bits
     use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC, ERR_MODEL
     use ode_system, only: ode_system_t, integrator_t, integrator_stats_t
     use geometry, only: pendulum_t
     use start_pose, only: raised_angles, solve_theta5
     use bifilar_model, only: chart_accelerations, chart_state, chart_energy, chart_constraint, &
                              chart_jacobian, NSTATE, bifilar_t
+    use text, only: sci
     use integrators, only: new_integrator, SOLVER_LSODA, SENS_FORWARD, SENS_DIFFERENCES
     use lapack_wrap, only: la_eig, la_geig, la_lu_factor, la_lu_solve, la_lu_solve_many
     implicit none
     private
 
     integer, parameter :: NV = NSTATE + NSTATE*NSTATE   !! orbit + monodromy columns
+    !> Largest |sin theta2| of cable BC the model is analysed at (kane_run's SIN2_MAX: a run
+    !! beyond it stops with exit status 4)
+    real(dp), parameter :: SIN2_LIMIT = 0.9999_dp
 
     !> The orbit and its variational equations as one ODE system.  Its stiff-method iteration
     !! matrix is I - h l0 diag(Z, ..., Z) (the coupling of H to the orbit left out, see
@@ -127,6 +133,7 @@ module floquet
 
     public :: check_torsion_scene, torsion_period, jacobian_z, monodromy, floquet_analysis
     public :: multipliers_from_monodromy, torsion_start, pencil_multipliers, floquet_point
+    public :: point_values_valid
 
     !> Sentinel written for chart points where no analysis is possible (not a torsion scene,
     !! cables cannot reach, impossible inertia): never NaN.
@@ -435,7 +442,8 @@ contains
         real(dp), intent(in) :: rtol            !! integrator tolerance
         integer, intent(in) :: nseg             !! shooting segments
         type(floquet_result_t), intent(out) :: res
-        type(status_t), intent(out) :: stat     !! ERR_DECK (scene), ERR_NUMERIC
+        !> ERR_DECK (scene), ERR_NUMERIC, ERR_MODEL (cable BC near the horizontal)
+        type(status_t), intent(out) :: stat
         integer, intent(in), optional :: method !! SOLVER_LSODA (default) or SOLVER_RADAU
         integer, intent(in), optional :: sensitivities  !! SENS_FORWARD (default) or
                                                         !! SENS_DIFFERENCES (monodromy)
@@ -451,6 +459,14 @@ contains
         if (stat%code /= 0) return
         call torsion_start(p, amp, y0, stat)
         if (stat%code /= 0) return
+        ! the cable swings out most at the turning point: beyond the model there (exit 4)
+        if (.not. (y0(2)**2 + y0(3)**2 < SIN2_LIMIT**2)) then
+            call set_error(stat, ERR_MODEL, 'at the amplitude cable BC is up at '// &
+                'the horizontal (sin theta2 = '//sci(sqrt(y0(2)**2 + y0(3)**2), 6)//', '// &
+                'beyond '//sci(SIN2_LIMIT, 4)//'): the model of a hanging cable no longer '// &
+                'holds; lower the amplitude or lengthen the cables')
+            return
+        end if
         call monodromy(p, y0, res%period, nseg, rtol, h, yend, res%steps, &
                        res%rhs_evaluations, stat, half=hh, yhalf=yh, method=method, &
                        sensitivities=sensitivities)
@@ -603,16 +619,37 @@ contains
 
     !> Gradients at y of the constraint G, its rate G' and the energy E (columns 1-3, by the
     !! fourth-order central stencil, h = 1e-3 max(1, |y_j|): error ~ 1e-13), and the flow f(y).
+    !! The steps in the cable's chart coordinates y(2), y(3) (sigma, |sigma| < 1) stay within
+    !! a quarter of the distance to |sigma| = 1 (issue 22: near the horizontal a step of 1e-3
+    !! took |sigma| past 1, and the multipliers were computed through NaN); a state whose
+    !! cable BC is near the horizontal (|sin theta2| > SIN2_LIMIT) is ERR_MODEL.
     subroutine structure_rows(p, y, rows, f, stat)
         type(pendulum_t), intent(in) :: p
         real(dp), intent(in) :: y(NSTATE)
         real(dp), intent(out) :: rows(NSTATE, 3), f(NSTATE)
         type(status_t), intent(out) :: stat
-        real(dp) :: yp(NSTATE), h, v(3, 4), a(5)
+        real(dp) :: yp(NSTATE), h, v(3, 4), a(5), room
         real(dp), parameter :: off(4) = [1.0_dp, -1.0_dp, 2.0_dp, -2.0_dp]
         integer :: j, k
+        rows = 0.0_dp
+        f = 0.0_dp
+        if (.not. (y(2)**2 + y(3)**2 < SIN2_LIMIT**2)) then
+            call set_error(stat, ERR_MODEL, 'cable BC swings up to the horizontal '// &
+                'in the torsion (sin theta2 = '//sci(sqrt(y(2)**2 + y(3)**2), 6)//'): the '// &
+                'model of a hanging cable no longer holds; lower the amplitude or lengthen '// &
+                'the cables')
+            return
+        end if
         do j = 1, NSTATE
             h = 1.0e-3_dp*max(1.0_dp, abs(y(j)))
+            if (j == 2) then
+                ! room to |sigma| = 1 along y(2), y(3)
+                room = sqrt(max(0.0_dp, 1.0_dp - y(3)**2)) - abs(y(2))
+                h = min(h, 0.125_dp*room)
+            else if (j == 3) then
+                room = sqrt(max(0.0_dp, 1.0_dp - y(2)**2)) - abs(y(3))
+                h = min(h, 0.125_dp*room)
+            end if
             do k = 1, 4
                 yp = y
                 yp(j) = y(j) + off(k)*h
@@ -695,5 +732,26 @@ contains
             period = CHART_FAILED
         end if
     end subroutine floquet_point
+
+    !> Whether values could come from floquet_point (values of a chart or a design read back
+    !! from a checkpoint): a finite modulus >= 0 with a finite period > 0, or a sentinel
+    !! (CHART_INVALID, CHART_FAILED) in both; without a period, the modulus alone.  (No
+    !! operation on a value before it is known finite: a signalling NaN traps.)
+    pure logical function point_values_valid(modulus, period) result(ok)
+        real(dp), intent(in) :: modulus                 !! largest |multiplier| or a sentinel
+        real(dp), intent(in), optional :: period        !! the period or the same sentinel
+        ok = .false.
+        if (.not. finite_bits(modulus)) return
+        if (present(period)) then
+            if (.not. finite_bits(period)) return
+        end if
+        if (modulus == CHART_INVALID .or. modulus == CHART_FAILED) then
+            ok = .true.
+            if (present(period)) ok = period == modulus
+            return
+        end if
+        ok = modulus >= 0.0_dp
+        if (ok .and. present(period)) ok = period > 0.0_dp
+    end function point_values_valid
 
 end module floquet

@@ -161,22 +161,20 @@ contains
         type(motion_t), intent(in) :: mo       !! the motion at tau
         real(dp), intent(in) :: tau            !! time of mo
         type(status_t), intent(out) :: stat    !! ERR_MODEL with a diagnostic, else OK
-        character(len=400) :: buf
         stat%code = 0
         if (min(mo%t_bc, mo%t_ad) <= 0.0_dp) then
             call set_error(stat, ERR_MODEL, 'cable goes slack at tau = '//fixed(tau, 6)// &
                 ' (T_BC = '//sci(mo%t_bc)//', T_AD = '//sci(mo%t_ad)//' m g): the taut-cable '// &
                 'model no longer holds; lower the amplitude or start speed, or lengthen the cables')
         else if (abs(cos(mo%th(5))) < COS5_MIN) then
-            write (buf, '(a,f0.4,a)') 'line CD turns vertical at tau = '//fixed(tau, 6)// &
-                ' (theta5 = ', mo%th(5)/deg, ' deg): the paper''s coordinates theta1, theta4 '// &
-                'are singular there; lower the amplitude, tilt or start speed'
-            call set_error(stat, ERR_MODEL, trim(buf))
+            ! the texts first: no I/O statement calls a function that does I/O (module text)
+            call set_error(stat, ERR_MODEL, 'line CD turns vertical at tau = '//fixed(tau, 6)// &
+                ' (theta5 = '//fixed(mo%th(5)/deg, 4)//' deg): the paper''s coordinates '// &
+                'theta1, theta4 are singular there; lower the amplitude, tilt or start speed')
         else if (abs(sin(mo%th(2))) > SIN2_MAX) then
-            write (buf, '(a,f0.4,a)') 'cable BC swings up to the horizontal at tau = '// &
-                fixed(tau, 6)//' (theta2 = ', mo%th(2)/deg, ' deg): the model of a hanging '// &
-                'cable no longer holds; lower the amplitude or start speed'
-            call set_error(stat, ERR_MODEL, trim(buf))
+            call set_error(stat, ERR_MODEL, 'cable BC swings up to the horizontal at tau = '// &
+                fixed(tau, 6)//' (theta2 = '//fixed(mo%th(2)/deg, 4)//' deg): the model of a '// &
+                'hanging cable no longer holds; lower the amplitude or start speed')
         end if
     end subroutine model_checks
 
@@ -285,7 +283,6 @@ contains
         type(status_t), intent(inout) :: stat   !! the failure; replaced when explained
         type(motion_t) :: mo
         real(dp) :: th(5), thd(5)
-        character(len=400) :: buf
         if (.not. all_finite(y)) return
         mo = motion_t()
         call paper_angles(y, th3, th, thd)
@@ -295,12 +292,10 @@ contains
         if (abs(cos(th(5))) < 10.0_dp*COS5_MIN .or. y(2)**2 + y(3)**2 > SIN2_MAX**2) then
             call model_checks(mo, t, stat)
             if (stat%code == 0) then
-                write (buf, '(a,f0.4,a,f0.4,a)') 'the equations of motion become '// &
-                    'singular at tau = '//fixed(t, 6)//' (theta5 = ', th(5)/deg, &
-                    ' deg, theta2 = ', th(2)/deg, ' deg): line CD or cable BC near their '// &
-                    'limits; lower the '// &
-                    'amplitude or start speed'
-                call set_error(stat, ERR_MODEL, trim(buf))
+                call set_error(stat, ERR_MODEL, 'the equations of motion become singular '// &
+                    'at tau = '//fixed(t, 6)//' (theta5 = '//fixed(th(5)/deg, 4)// &
+                    ' deg, theta2 = '//fixed(th(2)/deg, 4)//' deg): line CD or cable BC '// &
+                    'near their limits; lower the amplitude or start speed')
             end if
         end if
     end subroutine explain_failure_at

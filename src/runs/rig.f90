@@ -180,7 +180,8 @@ contains
         beta = beta_coeffs(p, th0)
         if (.not. (abs(beta(5)) > 1.0e-10_dp)) then
             call set_error(stat, ERR_DECK, trim(what)// &
-                ': beta5 = 0 at the start, eq. (5) cannot give theta5_dot; change the start')
+                ': beta5 = 0 at the start, eq. (5) cannot give theta5_dot; allowed: a start '// &
+                'with line CD not vertical (change theta or the rates)')
             return
         end if
         thd(5) = sum(beta(1:4)*thd(1:4))/beta(5)

@@ -7,9 +7,12 @@
 !! the ranks other than 0), `fail_rank0` (points from n/2 on fail on rank 0), `fail_at`
 !! (point `at` fails wherever it is computed), `special` (the values of point i are the
 !! special doubles of `special_value`, to check that checkpoints keep every bit).
+!! Values read back from a checkpoint are all accepted (`accepts`), unless `strict`: then
+!! only point i's own sqrt(i) in the second value, with every value finite.
 module probe_task
     use, intrinsic :: iso_c_binding, only: c_int
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
+    use finite, only: finite_bits
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK, ERR_NUMERIC
     use text, only: itoa
@@ -28,8 +31,10 @@ module probe_task
         integer :: at = 0                       !! the point that fails (mode fail_at)
         integer :: nap = 1000                   !! microseconds of sleep per unit of cost
         real(dp) :: shift = 0.0_dp              !! added to the first value (tells runs apart)
+        logical :: strict = .false.             !! accepts only the probe's own values
     contains
         procedure :: compute => probe_compute
+        procedure :: accepts => probe_accepts
     end type probe_task_t
 
     interface
@@ -40,6 +45,18 @@ module probe_task
     end interface
 
 contains
+
+    !> Values of point i read back from a checkpoint: any (the special values included),
+    !! or when strict only finite ones with sqrt(i) second.
+    logical function probe_accepts(self, i, values) result(ok)
+        class(probe_task_t), intent(in) :: self
+        integer, intent(in) :: i
+        real(dp), intent(in) :: values(:)
+        ok = .true.
+        if (.not. self%strict) return
+        ok = all(finite_bits(values)) .and. size(values) == 4
+        if (ok) ok = values(2) == sqrt(real(i, dp))
+    end function probe_accepts
 
     subroutine probe_compute(self, i, values, stat)
         class(probe_task_t), intent(in) :: self

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The module graph of the program, from the sources' `use` and `submodule` lines.
 #
-#   tests/tools/module_graph.sh [--check] [SRC]      (SRC defaults to src)
+#   tests/module_graph.sh [--check] [SRC]      (SRC defaults to src)
 #
 # Prints one line per program unit (module, submodule, program): its floor, its folder, its
 # name and the units of SRC it uses.  A unit that uses nothing of SRC is on floor 1; any other

@@ -1,0 +1,451 @@
+!> The implementation of analysis tensor (submodule of tensor): the preconditions, the run
+!! (the projection solution, the exact fit, the amplitude limits, the Monte Carlo, the
+!! plan) and the output files.
+submodule (tensor) tensor_impl
+    use kinds, only: deg
+    use status, only: set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC
+    use text, only: itoa, sci, fixed, rshort
+    use deck, only: deck_echo
+    use output_io, only: write_kv, all_finite
+    use fast_format, only: es_field
+    use rig, only: rig_t
+    use monte_carlo, only: monte_carlo_run, MC_TENSOR
+    use hang_table, only: hang_t, hang_set_t, read_hangs, hang_defaults, table_name
+    use hang_model, only: tensor_entries, hang_rig, torsion_mode, torsion_mode_t
+    use tensor_fit, only: tensor_problem_t, tensor_fit_t, tensor_plan_t, tensor_mc_task_t, &
+        problem_of, check_directions, projection, fit_tensor, amplitude_limits, plan_hangs, &
+        tensor_mc_payload, tensor_mc_task, DRIFT_MAX, DRIFT_CYCLES, MC_ESTIMATES
+    implicit none
+
+    !> The names of the six entries, in their order.
+    character(len=4), parameter :: ENTRY_NAMES(6) = ['J_xx', 'J_yy', 'J_zz', 'J_xy', &
+                                                     'J_xz', 'J_yz']
+
+contains
+
+    !> The deck's &body principal moments as a tensor along the body frame's axes (the
+    !! start of the checks and of a plan without hangs).
+    pure function deck_tensor(d) result(x)
+        type(deck_t), intent(in) :: d
+        real(dp) :: x(6)
+        x = [d%inertia(1), d%inertia(2), d%inertia(3), 0.0_dp, 0.0_dp, 0.0_dp]
+    end function deck_tensor
+
+    !> The preconditions of analyses = 'tensor' (see the interface).
+    module procedure tensor_ready
+        type(hang_set_t) :: set
+        type(hang_t) :: h0
+        type(rig_t) :: rg
+        type(torsion_mode_t) :: md
+        real(dp) :: cond
+        logical :: have_cg
+        integer :: h
+        stat%code = STATUS_OK
+        if (trim(d%model) /= 'kane') then
+            call set_error(stat, ERR_DECK, 'analyses = ''tensor'': &scene model = '''// &
+                trim(d%model)//''': tensor fits the paper''s model; allowed: model = ''kane''')
+            return
+        end if
+        if (len_trim(d%tensor_hangs) > 0) then
+            call read_hangs(d, set, stat)
+            if (stat%code /= STATUS_OK) return
+            call check_directions(set%hangs, table_name(d), cond, stat)
+            if (stat%code /= STATUS_OK) return
+            do h = 1, size(set%hangs)
+                call hang_rig(d%mass, d%g, set%hangs(h), deck_tensor(d), rg, stat)
+                if (stat%code == STATUS_OK) call torsion_mode(rg, md, stat)
+                if (stat%code /= STATUS_OK) then
+                    stat%msg = table_name(d)//': hang '//itoa(set%hangs(h)%id)//' (line '// &
+                        itoa(set%hangs(h)%line)//'): '//stat%msg
+                    return
+                end if
+            end do
+        end if
+        if (d%tensor_plan > 0) then
+            call hang_defaults(d, h0, have_cg)
+            if (len_trim(d%tensor_hangs) > 0 .and. .not. have_cg) then
+                h0 = set%hangs(1)
+                have_cg = .true.
+            end if
+            if (.not. have_cg) then
+                call set_error(stat, ERR_DECK, 'not given: &body the mass centre (cg_depth '// &
+                    'and cg_offset, or r and lambda); a deck with analyses = ''tensor'' '// &
+                    'gives every physical input itself (the defaults are the paper''s '// &
+                    'dimensionless scene); allowed: &body cg_depth, cg_offset for the '// &
+                    'planned hangs (&tensor plan)')
+                return
+            end if
+            call hang_rig(d%mass, d%g, h0, deck_tensor(d), rg, stat)
+            if (stat%code == STATUS_OK) call torsion_mode(rg, md, stat)
+            if (stat%code /= STATUS_OK) then
+                stat%msg = '&tensor plan = '//itoa(d%tensor_plan)//': the deck''s rig: '// &
+                    stat%msg
+                return
+            end if
+        end if
+    end procedure tensor_ready
+
+    !> Run analyses = 'tensor' (see the interface).
+    module procedure run_tensor
+        type(hang_set_t) :: set
+        type(tensor_problem_t) :: prob
+        type(tensor_fit_t) :: fit
+        type(tensor_plan_t) :: plan
+        type(tensor_mc_task_t) :: task
+        type(sweep_report_t) :: rep
+        type(hang_t) :: h0
+        real(dp), allocatable :: drift(:), limit(:), payload(:)
+        real(dp) :: c0, c1, x_proj(6), cond, mean(MC_ESTIMATES), sdev(MC_ESTIMATES), x(6)
+        real(dp) :: u_x_mc(6), u_moments_mc(3), u_axes_mc(3)
+        logical :: have_cg
+        integer :: i, h
+        call cpu_time(c0)
+        u_x_mc = 0.0_dp
+        u_moments_mc = 0.0_dp
+        u_axes_mc = 0.0_dp
+        rep%note = ''
+        res%warning = ''
+        res%plan_file = ''
+        stat%code = STATUS_OK
+        if (len_trim(d%tensor_hangs) > 0) then
+            call read_hangs(d, set, stat)
+            if (stat%code /= STATUS_OK) return
+            call check_directions(set%hangs, table_name(d), cond, stat)
+            if (stat%code /= STATUS_OK) return
+            call problem_of(d, set, prob)
+            call projection(prob, x_proj, stat)
+            if (stat%code /= STATUS_OK) return
+            call fit_tensor(prob, x_proj, fit, stat)
+            if (stat%code /= STATUS_OK) return
+            ! the amplitude limits at the fit: refuse a period that is not defined, carry
+            ! the drift of the others as the uncertainty of their definition, fit again
+            allocate (drift(size(prob%rows)), limit(size(prob%hangs)))
+            call amplitude_limits(prob, fit%x, drift, limit, stat)
+            if (stat%code /= STATUS_OK) return
+            do i = 1, size(prob%rows)
+                if (drift(i) > DRIFT_MAX) then
+                    h = prob%rows(i)%hang
+                    call set_error(stat, ERR_DECK, table_name(d)//': line '// &
+                        itoa(prob%rows(i)%line)//': hang '//itoa(prob%hangs(h)%id)// &
+                        ' at amplitude = '//rshort(prob%rows(i)%amplitude)//' deg: its '// &
+                        'period is not defined well enough: theta4''s maxima drift by '// &
+                        sci(drift(i), 1)//' of the period over the first '// &
+                        itoa(DRIFT_CYCLES)//' cycles (the torsion couples with tilting and '// &
+                        'sway); allowed: a drift <= '//rshort(DRIFT_MAX)//', amplitudes up '// &
+                        'to '//degrees(limit(h))//' deg for this hang, or 0 (small amplitude)')
+                    return
+                end if
+            end do
+            if (any(drift > 0.0_dp)) then
+                prob%u_def = drift*fit%model_period/sqrt(3.0_dp)
+                x = fit%x
+                call fit_tensor(prob, x, fit, stat)
+                if (stat%code /= STATUS_OK) return
+            end if
+            fit%x_proj = x_proj
+            fit%projection_difference = maxval(abs(x_proj - fit%x))/maxval(fit%moments)
+            fit%condition = cond
+            res%fitted = .true.
+            res%moments = fit%moments
+            res%u_moments = fit%u_moments
+            res%chi2 = fit%chi2
+            res%p_value = fit%p_value
+            res%dof = fit%dof
+            res%projection_difference = fit%projection_difference
+            res%hangs = size(prob%hangs)
+            res%rows = size(prob%rows)
+            if (d%tensor_monte_carlo > 0) then
+                payload = tensor_mc_payload(prob, fit, d%tensor_seed)
+                call tensor_mc_task(d, payload, task, stat)
+                if (stat%code /= STATUS_OK) return
+                call monte_carlo_run(task, d, d%tensor_monte_carlo, payload, mean, sdev, stat, &
+                                     outdir, options, rep, files, MC_TENSOR)
+                if (stat%code /= STATUS_OK) return
+                res%mc_samples = d%tensor_monte_carlo
+                u_x_mc = sdev(1:6)
+                u_moments_mc = sdev(7:9)
+                u_axes_mc = [norm2(sdev(10:11)), norm2(sdev(12:13)), norm2(sdev(14:15))]/deg
+                res%u_moments_mc = u_moments_mc
+            end if
+            if (fit%dof > 0 .and. fit%p_value < 0.05_dp .and. .not. fit%scatter) then
+                h = maxloc(abs(fit%resid), 1)
+                res%warning = 'tensor: chi2 = '//fixed(fit%chi2, 2)//' for '//itoa(fit%dof)// &
+                    ' degrees of freedom is improbable (p = '//sci(fit%p_value, 1)// &
+                    ' < 0.05): the hangs disagree with the fit beyond their uncertainties; '// &
+                    'hang '//itoa(prob%hangs(h)%id)//' (line '//itoa(prob%hangs(h)%line)// &
+                    ') has the largest normalised residual, '//fixed(fit%resid(h), 2)// &
+                    ': check its timing, orientation and rig'
+            end if
+        end if
+        if (d%tensor_plan > 0) then
+            call hang_defaults(d, h0, have_cg)
+            if (res%fitted) then
+                if (.not. have_cg) h0 = prob%hangs(1)
+                x = fit%x
+            else
+                call problem_of(d, set_empty(), prob)
+                x = deck_tensor(d)
+            end if
+            call plan_hangs(prob, h0, d%tensor_u(7), x, d%tensor_plan, plan, stat)
+            if (stat%code /= STATUS_OK) return
+            res%plan = plan%n
+            res%plan_file = outdir//'/'//d%name//'.plan.csv'
+        end if
+        if (present(report)) report = rep
+        call cpu_time(c1)
+        res%cpu_seconds = c1 - c0
+        call write_tensor(d, outdir, res, fit, prob, drift, limit, plan, u_x_mc, &
+                          u_moments_mc, u_axes_mc, files, stat)
+        if (stat%code /= STATUS_OK) return
+        if (res%fitted) call write_data(d, outdir, fit, prob, files, stat)
+        if (stat%code /= STATUS_OK) return
+        if (res%plan > 0) call write_plan(d, res%plan_file, plan, x, files, stat)
+    end procedure run_tensor
+
+    !> An amplitude limit as text: two significant digits.
+    function degrees(a) result(s)
+        real(dp), intent(in) :: a
+        character(len=:), allocatable :: s
+        if (a >= 10.0_dp) then
+            s = itoa(nint(a))
+        else
+            s = fixed(a, merge(1, 2, a >= 1.0_dp))
+        end if
+    end function degrees
+
+    !> A set of no hangs (a plan without a table).
+    function set_empty() result(set)
+        type(hang_set_t) :: set
+        allocate (set%hangs(0), set%rows(0))
+    end function set_empty
+
+    !> The task of tensor's Monte Carlo (see the interface).
+    module procedure tensor_sweep_task
+        allocate (tensor_mc_task_t :: task)
+        select type (task)
+        type is (tensor_mc_task_t)
+            call tensor_mc_task(d, payload, task, stat)
+        end select
+    end procedure tensor_sweep_task
+
+    !> Reals as 'a, b, c' in full precision.
+    function reals_text(v) result(s)
+        real(dp), intent(in) :: v(:)
+        character(len=:), allocatable :: s
+        character(len=32) :: buf
+        integer :: k
+        s = ''
+        do k = 1, size(v)
+            write (buf, '(es25.16e3)') v(k)
+            if (k > 1) s = s//', '
+            s = s//trim(adjustl(buf))
+        end do
+    end function reals_text
+
+    !> OUTDIR/NAME.tensor: key = value lines, then the budget.
+    subroutine write_tensor(d, outdir, res, fit, prob, drift, limit, plan, u_x_mc, &
+                            u_moments_mc, u_axes_mc, files, stat)
+        type(deck_t), intent(in) :: d
+        character(len=*), intent(in) :: outdir
+        type(tensor_result_t), intent(in) :: res
+        type(tensor_fit_t), intent(in) :: fit
+        type(tensor_problem_t), intent(in) :: prob
+        real(dp), intent(in), allocatable :: drift(:), limit(:)
+        type(tensor_plan_t), intent(in) :: plan
+        real(dp), intent(in) :: u_x_mc(6), u_moments_mc(3), u_axes_mc(3)
+        type(out_files_t), intent(inout) :: files
+        type(status_t), intent(out) :: stat
+        real(dp) :: corr(6, 6)
+        integer :: u, ios, k, j, h, i
+        character(len=24) :: f(7)
+        character(len=:), allocatable :: id
+        stat%code = STATUS_OK
+        if (res%fitted) then
+            if (.not. all_finite([fit%x, fit%u_x, reshape(fit%cov, [36]), fit%moments, &
+                                  fit%u_moments, reshape(fit%axes, [9]), fit%u_axes, fit%chi2, &
+                                  fit%condition, fit%projection_difference, fit%iv, fit%u_iv, &
+                                  fit%resid, fit%iv_fit, fit%model_period, drift, limit, &
+                                  fit%k95, fit%x_proj])) then
+                call set_error(stat, ERR_NUMERIC, 'tensor: a result is not finite')
+                return
+            end if
+            if (res%mc_samples > 0) then
+                if (.not. all_finite([u_x_mc, u_moments_mc, u_axes_mc])) then
+                    call set_error(stat, ERR_NUMERIC, 'tensor: a Monte Carlo result is not '// &
+                                   'finite')
+                    return
+                end if
+            end if
+        end if
+        call files%open(outdir//'/'//d%name//'.tensor', u, stat)
+        if (stat%code /= STATUS_OK) return
+        ios = 0
+        write (u, '(a)', iostat=ios) '# bifilar tensor: '//trim(d%title)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# the inertia tensor about the mass '// &
+            'centre in the body frame (deck units: mass x length^2; J_xy = -int x y dm), '// &
+            'standard uncertainties u_, periods in s, angles in degrees'
+        call deck_echo(d, u, ios)
+        if (res%fitted) then
+            do k = 1, 6
+                call write_kv(u, ENTRY_NAMES(k), fit%x(k), ios)
+                call write_kv(u, 'u_'//ENTRY_NAMES(k), fit%u_x(k), ios)
+            end do
+            do k = 1, 6
+                do j = 1, 6
+                    corr(k, j) = merge(1.0_dp, 0.0_dp, k == j)
+                    if (k /= j .and. fit%u_x(k) > 0.0_dp .and. fit%u_x(j) > 0.0_dp) &
+                        corr(k, j) = max(-1.0_dp, min(1.0_dp, &
+                                                     fit%cov(k, j)/(fit%u_x(k)*fit%u_x(j))))
+                end do
+                call write_kv(u, 'correlation('//itoa(k)//',:)', reals_text(corr(k, :)), ios)
+            end do
+            call write_kv(u, 'I_principal', reals_text(fit%moments), ios)
+            call write_kv(u, 'u_I_principal', reals_text(fit%u_moments), ios)
+            do k = 1, 3
+                call write_kv(u, 'axis_'//itoa(k), reals_text(fit%axes(:, k)), ios)
+            end do
+            call write_kv(u, 'u_axis_deg', reals_text(fit%u_axes), ios)
+            call write_kv(u, 'chi2', fit%chi2, ios)
+            call write_kv(u, 'dof', fit%dof, ios)
+            call write_kv(u, 'condition', fit%condition, ios)
+            call write_kv(u, 'projection_difference', fit%projection_difference, ios)
+            call write_kv(u, 'p_value', fit%p_value, ios)
+            call write_kv(u, 'k95_I_principal', reals_text(fit%k95), ios)
+            call write_kv(u, 'U95_I_principal', reals_text(fit%k95*fit%u_moments), ios)
+            call write_kv(u, 'J_projection', reals_text(fit%x_proj), ios)
+            call write_kv(u, 'hangs', size(prob%hangs), ios)
+            call write_kv(u, 'rows', size(prob%rows), ios)
+            call write_kv(u, 'iterations', fit%iterations, ios)
+            call write_kv(u, 'u_period_source', trim(merge('scatter', 'stated ', fit%scatter)), &
+                          ios)
+            if (fit%scatter) call write_kv(u, 'u_period_from_scatter', fit%u_scatter, ios)
+            call write_kv(u, 'drift_max', DRIFT_MAX, ios)
+            do h = 1, size(prob%hangs)
+                id = itoa(prob%hangs(h)%id)
+                call write_kv(u, 'I_vertical('//id//')', fit%iv(h), ios)
+                call write_kv(u, 'u_I_vertical('//id//')', fit%u_iv(h), ios)
+                call write_kv(u, 'residual('//id//')', fit%resid(h), ios)
+            end do
+            do h = 1, size(prob%hangs)
+                call write_kv(u, 'amplitude_limit('//itoa(prob%hangs(h)%id)//')', limit(h), ios)
+            end do
+            do i = 1, size(prob%rows)
+                call write_kv(u, 'model_period('//itoa(i)//')', fit%model_period(i), ios)
+                call write_kv(u, 'drift('//itoa(i)//')', drift(i), ios)
+            end do
+            if (res%mc_samples > 0) then
+                call write_kv(u, 'monte_carlo_samples', res%mc_samples, ios)
+                call write_kv(u, 'monte_carlo_seed', d%tensor_seed, ios)
+                do k = 1, 6
+                    call write_kv(u, 'u_'//ENTRY_NAMES(k)//'_monte_carlo', u_x_mc(k), ios)
+                end do
+                call write_kv(u, 'u_I_principal_monte_carlo', reals_text(u_moments_mc), ios)
+                call write_kv(u, 'u_axis_deg_monte_carlo', reals_text(u_axes_mc), ios)
+            end if
+        end if
+        if (res%plan > 0) then
+            call write_kv(u, 'plan_hangs', plan%n, ios)
+            call write_kv(u, 'plan_file', res%plan_file, ios)
+            call write_kv(u, 'plan_trace', plan%trace, ios)
+            call write_kv(u, 'plan_u', reals_text(plan%u_x), ios)
+        end if
+        call write_kv(u, 'cpu_seconds', res%cpu_seconds, ios)
+        if (res%fitted) then
+            if (ios == 0) write (u, '(a)', iostat=ios) '# budget (first order, GUM): input, '// &
+                'its standard uncertainty (direction in degrees), and what it adds to the u '// &
+                'of J_xx J_yy J_zz J_xy J_xz J_yz (their root sum of squares over the inputs '// &
+                'is the u, correlations aside)'
+            do k = 1, size(fit%budget)
+                call es_field(fit%budget(k)%u, 8, f(1)(1:16))
+                do j = 1, 6
+                    call es_field(fit%budget(k)%contribution(j), 8, f(j + 1)(1:16))
+                end do
+                if (ios == 0) write (u, '(a)', iostat=ios) fit%budget(k)%input(1:18)// &
+                    f(1)(1:16)//f(2)(1:16)//f(3)(1:16)//f(4)(1:16)//f(5)(1:16)//f(6)(1:16)// &
+                    f(7)(1:16)
+            end do
+        end if
+        call files%close(u, ios, stat)
+    end subroutine write_tensor
+
+    !> OUTDIR/NAME.tensor.dat: per hang its id, the fitted tensor's vertical moment, the one
+    !! its periods measure, that one's u, the normalised residual; line 1 the title.
+    subroutine write_data(d, outdir, fit, prob, files, stat)
+        type(deck_t), intent(in) :: d
+        character(len=*), intent(in) :: outdir
+        type(tensor_fit_t), intent(in) :: fit
+        type(tensor_problem_t), intent(in) :: prob
+        type(out_files_t), intent(inout) :: files
+        type(status_t), intent(out) :: stat
+        integer :: u, ios, h
+        character(len=22) :: f(2)
+        character(len=16) :: e(2)
+        call files%open(outdir//'/'//d%name//'.tensor.dat', u, stat)
+        if (stat%code /= STATUS_OK) return
+        ios = 0
+        write (u, '(a)', iostat=ios) '# '//trim(d%title)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# bifilar tensor, per hang (deck units): '// &
+            'hang I_fitted (u . J u of the fit) I_measured (what its periods give) '// &
+            'u_I_measured residual (normalised)'
+        do h = 1, size(prob%hangs)
+            call es_field(fit%iv_fit(h), 14, f(1))
+            call es_field(fit%iv(h), 14, f(2))
+            call es_field(fit%u_iv(h), 8, e(1))
+            call es_field(fit%resid(h), 8, e(2))
+            if (ios == 0) write (u, '(i8,4(1x,a))', iostat=ios) prob%hangs(h)%id, f(1), f(2), &
+                e(1), e(2)
+        end do
+        call files%close(u, ios, stat)
+    end subroutine write_data
+
+    !> OUTDIR/NAME.plan.csv: the planned hangs as a table of hangs to copy (the periods the
+    !! tensor x predicts at small amplitude, to be replaced by the timed ones).
+    subroutine write_plan(d, path, plan, x, files, stat)
+        type(deck_t), intent(in) :: d
+        character(len=*), intent(in) :: path
+        type(tensor_plan_t), intent(in) :: plan
+        real(dp), intent(in) :: x(6)
+        type(out_files_t), intent(inout) :: files
+        type(status_t), intent(out) :: stat
+        integer :: u, ios, k
+        real(dp) :: up(3), al(3)
+        call files%open(path, u, stat)
+        if (stat%code /= STATUS_OK) return
+        ios = 0
+        write (u, '(a)', iostat=ios) '# bifilar tensor plan: '//trim(d%title)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# '//itoa(plan%n)//' hangs among the '// &
+            'face, edge and corner directions of the body frame that minimise the trace of '// &
+            'the covariance of the tensor, '//sci(plan%trace, 3)//' (deck units squared), '// &
+            'under the deck''s uncertainties'
+        if (ios == 0) write (u, '(a)', iostat=ios) '# period: the period the tensor '// &
+            trim(reals_short(x))//' predicts at small amplitude on the deck''s rig: replace '// &
+            'it by the timed one (and cycles, amplitude by yours)'
+        if (ios == 0) write (u, '(a)', iostat=ios) &
+            'hang,up_x,up_y,up_z,along_x,along_y,along_z,period,cycles,amplitude'
+        do k = 1, plan%n
+            up = plan%up(:, k)/maxval(abs(plan%up(:, k)))
+            al = plan%along(:, k)/maxval(abs(plan%along(:, k)))
+            if (ios == 0) write (u, '(a)', iostat=ios) itoa(k)//','//ints(up)//','//ints(al)// &
+                ','//fixed(plan%period(k), 6)//',1,0'
+        end do
+        call files%close(u, ios, stat)
+    contains
+        function ints(v) result(s)
+            real(dp), intent(in) :: v(3)
+            character(len=:), allocatable :: s
+            s = itoa(nint(v(1)))//','//itoa(nint(v(2)))//','//itoa(nint(v(3)))
+        end function ints
+        function reals_short(v) result(s)
+            real(dp), intent(in) :: v(:)
+            character(len=:), allocatable :: s
+            integer :: m
+            s = '('
+            do m = 1, size(v)
+                if (m > 1) s = s//', '
+                s = s//sci(v(m), 4)
+            end do
+            s = s//')'
+        end function reals_short
+    end subroutine write_plan
+
+end submodule tensor_impl

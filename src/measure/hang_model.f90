@@ -1,0 +1,510 @@
+!> The period of one hang of a body with a known inertia tensor, from the paper's full model
+!! (analysis tensor).
+!!
+!! * The body: the inertia tensor J about the mass centre in the user's body frame, six
+!!   entries x = (J_xx, J_yy, J_zz, J_xy, J_xz, J_yz) with J_xy = -int x y dm (the matrix
+!!   entries themselves), so that the moment about a unit direction u is u . J u.
+!! * The hang (module hang_table): the body turned so that `up` points up at rest and
+!!   `along` from C toward D.  In the model's terms ntilde_1 = -up (down at rest), ntilde_3
+!!   = -along (from D to C), ntilde_2 = ntilde_3 x ntilde_1; the principal axes of J
+!!   (eigenvectors, LAPACK dsyev) expressed in that frame are the rows of btilde, the
+!!   principal moments the model's inertia; the mass centre from C by eq. (21):
+!!   r cos(lambda) = b'/2 + cg_offset, r sin(lambda) = cg_depth (hang_rig).
+!! * The rest pose (rest_pose): the body hangs with its mass centre in the vertical plane
+!!   through CD (theta_1 = 0) and CD in the plane of the support's cables (theta_4 = 0,
+!!   sigma_1 = 0): the statics does not depend on the inertia, only on the geometry.  The
+!!   remaining pose (sigma_2, theta_5) is where the planar four-bar A-B-C-D carries the
+!!   mass centre lowest: the constraint eq. (2) solved for theta_5 in closed form, and
+!!   sigma_2 by Newton's method on the accelerations at rest (zero there).  For equal cables
+!!   and the mass centre below the midpoint of CD the body hangs level (theta_5 = 0);
+!!   otherwise it tilts.
+!! * Small amplitude (torsion_mode): the equations linearised at the rest pose, with the
+!!   exact Jacobian of the chart's right-hand side (bifilar_model's chart_jacobian, no
+!!   Baumgarte term): qddot = K q with K = Z(6:10, 1:5).  Its eigenvalues (LAPACK dgeev) are
+!!   -omega_k^2 for the four oscillations (torsion, tilting about CD and the two sways) and
+!!   0 for the direction that leaves the constraint.  A body whose vertical is not a
+!!   principal axis does not twist purely: its torsion couples with tilting and sway and
+!!   every mode mixes them.  The torsion mode is the one whose shape has the largest share of
+!!   theta_4, each coordinate counted by the displacement it causes (rotations times b'/2,
+!!   the cable's sigma times l).  Its period is 2 pi/omega (b'/g)^(1/2).
+!! * At amplitude A > 0 (hang_period): the full model, released at rest in the torsion
+!!   mode's shape scaled to theta_4 = A (the pose a small torsion passes through at its
+!!   turning point; theta_5 from the constraint), run to the next maximum of theta_4 after
+!!   theta_4 has swung below its rest value: the time from release to that maximum, located
+!!   in the integrator's dense output (as identify's simulated periods).  As A -> 0 it tends
+!!   to the mode's period.
+!! * The drift of the maxima (maxima_drift): at larger amplitudes the torsion feeds the
+!!   other modes and theta_4's maxima no longer come a period apart; the drift is the
+!!   largest change of the interval between successive maxima over the first cycles, over
+!!   the first interval.  The analysis refuses amplitudes where it is too large (see
+!!   tensor_fit).
+!!
+!! Units are the deck's; angles in degrees where the table gives them.  No routine stops.
+module hang_model
+    use kinds, only: dp, pi, deg
+    use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC
+    use text, only: sci, fixed
+    use geometry, only: pendulum_t
+    use vectors, only: cross
+    use bifilar_model, only: NSTATE, chart_jacobian, chart_accelerations, chart_constraint, &
+        paper_angles
+    use rig, only: rig_t, accuracy_t, make_pendulum
+    use kane_run, only: kane_run_t, kane_run_start
+    use run_loop, only: stepped_model_t, row_sink_t, drive, falling_zero
+    use lapack_wrap, only: la_syev, la_eigv
+    use hang_table, only: hang_t
+    implicit none
+    private
+
+    !> The torsion mode of a hang at small amplitude.
+    type, public :: torsion_mode_t
+        real(dp) :: y_rest(NSTATE) = 0.0_dp     !! the rest pose as a chart state
+        real(dp) :: shape(5) = 0.0_dp           !! the mode's shape, theta_4 component 1
+        real(dp) :: omega = 0.0_dp              !! its angular frequency per unit tau
+        real(dp) :: period = 0.0_dp             !! its period, s
+        real(dp) :: share = 0.0_dp              !! theta_4's share of the mode's shape
+        real(dp) :: next_share = 0.0_dp         !! the largest share among the other modes
+    end type torsion_mode_t
+
+    public :: tensor_matrix, tensor_entries, principal_axes, hang_frame, turned_hang
+    public :: hang_rig, rest_pose, torsion_mode, hang_period, maxima_drift, vertical_moment
+    public :: moment_direction
+
+    !> Finds maxima of theta_4 in the run loop: each the first zero of theta_4' from + to -
+    !! after theta_4 has been below its rest value (0), located in the step.
+    type, extends(row_sink_t) :: maxima_sink_t
+        integer :: want = 1                     !! maxima to find
+        integer :: found = 0
+        logical :: below = .false.
+        real(dp), allocatable :: t(:), a(:)     !! their times (tau) and theta_4 (rad)
+    contains
+        procedure :: take => maxima_take
+        procedure :: after_step => maxima_after_step
+    end type maxima_sink_t
+
+    !> Newton's method on the rest pose: iterations, and the relative change that ends it.
+    integer, parameter :: REST_ITER = 60
+    !> |qddot| at the rest pose above which it is not one (scaled units).
+    real(dp), parameter :: REST_TOL = 1.0e-9_dp
+
+contains
+
+    !> The symmetric 3 x 3 tensor of the six entries (J_xx, J_yy, J_zz, J_xy, J_xz, J_yz).
+    pure function tensor_matrix(x) result(j)
+        real(dp), intent(in) :: x(6)            !! the entries
+        real(dp) :: j(3, 3)
+        j = reshape([x(1), x(4), x(5), x(4), x(2), x(6), x(5), x(6), x(3)], [3, 3])
+    end function tensor_matrix
+
+    !> The six entries (J_xx, J_yy, J_zz, J_xy, J_xz, J_yz) of a symmetric tensor.
+    pure function tensor_entries(j) result(x)
+        real(dp), intent(in) :: j(3, 3)         !! the tensor
+        real(dp) :: x(6)
+        x = [j(1, 1), j(2, 2), j(3, 3), 0.5_dp*(j(1, 2) + j(2, 1)), 0.5_dp*(j(1, 3) + j(3, 1)), &
+             0.5_dp*(j(2, 3) + j(3, 2))]
+    end function tensor_entries
+
+    !> The moment u . J u about the unit direction u.
+    pure real(dp) function vertical_moment(x, u) result(m)
+        real(dp), intent(in) :: x(6)            !! the tensor's entries
+        real(dp), intent(in) :: u(3)            !! unit direction
+        m = dot_product(moment_direction(u), x)
+    end function vertical_moment
+
+    !> The row of the moment about u in the entries: u . J u = sum_k a(k) x(k),
+    !! a = (ux^2, uy^2, uz^2, 2 ux uy, 2 ux uz, 2 uy uz).
+    pure function moment_direction(u) result(a)
+        real(dp), intent(in) :: u(3)            !! unit direction
+        real(dp) :: a(6)
+        a = [u(1)**2, u(2)**2, u(3)**2, 2.0_dp*u(1)*u(2), 2.0_dp*u(1)*u(3), 2.0_dp*u(2)*u(3)]
+    end function moment_direction
+
+    !> The principal moments (ascending) and axes (columns, unit, a right-handed set) of a
+    !! symmetric tensor (LAPACK dsyev).
+    subroutine principal_axes(x, w, v, stat)
+        real(dp), intent(in) :: x(6)            !! the tensor's entries
+        real(dp), intent(out) :: w(3)           !! principal moments, ascending
+        real(dp), intent(out) :: v(3, 3)        !! column k the axis of w(k)
+        type(status_t), intent(out) :: stat     !! ERR_NUMERIC from dsyev
+        integer :: k
+        call la_syev(tensor_matrix(x), w, v, stat)
+        if (stat%code /= STATUS_OK) return
+        ! each axis with its largest component positive, and det(v) = +1
+        do k = 1, 3
+            if (v(maxloc(abs(v(:, k)), 1), k) < 0.0_dp) v(:, k) = -v(:, k)
+        end do
+        if (dot_product(cross(v(:, 1), v(:, 2)), v(:, 3)) < 0.0_dp) v(:, 3) = -v(:, 3)
+    end subroutine principal_axes
+
+    !> The ntilde frame of a hang in the body frame: row i is ntilde_i (ntilde_1 = -up,
+    !! ntilde_3 = -along, ntilde_2 = ntilde_3 x ntilde_1).
+    pure function hang_frame(h) result(r)
+        type(hang_t), intent(in) :: h           !! the hang
+        real(dp) :: r(3, 3)
+        r(1, :) = -h%up
+        r(3, :) = -h%along
+        r(2, :) = cross(r(3, :), r(1, :))
+    end function hang_frame
+
+    !> The hang with the body turned by the small rotation eps (rad, components along
+    !! ntilde_1, ntilde_2, ntilde_3 of the hang): the directions fixed in space (up, along)
+    !! turn by -eps in the body (Rodrigues' formula, exact for any angle).
+    pure function turned_hang(h, eps) result(t)
+        type(hang_t), intent(in) :: h           !! the hang
+        real(dp), intent(in) :: eps(3)          !! the rotation, rad, in ntilde components
+        type(hang_t) :: t
+        real(dp) :: r(3, 3), k(3), th
+        t = h
+        th = norm2(eps)
+        if (.not. (th > 0.0_dp)) return
+        r = hang_frame(h)
+        k = -matmul(eps, r)/th                  ! the axis in body components, turned by -th
+        t%up = rotated(h%up)
+        t%along = rotated(h%along)
+        t%along = t%along - dot_product(t%along, t%up)*t%up
+        t%along = t%along/norm2(t%along)
+        t%up = t%up/norm2(t%up)
+    contains
+        pure function rotated(v) result(w)
+            real(dp), intent(in) :: v(3)
+            real(dp) :: w(3)
+            w = v*cos(th) + cross(k, v)*sin(th) + k*dot_product(k, v)*(1.0_dp - cos(th))
+        end function rotated
+    end function turned_hang
+
+    !> The rig of a hang of the body with mass `mass` and tensor x, under gravity g:
+    !! the hang's suspension and mass centre, the principal moments of x and btilde (rows:
+    !! the principal axes in the hang's ntilde frame); no damping.
+    subroutine hang_rig(mass, g, h, x, rg, stat)
+        real(dp), intent(in) :: mass, g         !! the body's mass, gravity (deck units)
+        type(hang_t), intent(in) :: h           !! the hang
+        real(dp), intent(in) :: x(6)            !! the tensor's entries
+        type(rig_t), intent(out) :: rg
+        type(status_t), intent(out) :: stat     !! ERR_DECK: not positive definite
+        real(dp) :: w(3), v(3, 3)
+        call principal_axes(x, w, v, stat)
+        if (stat%code /= STATUS_OK) return
+        if (.not. (w(1) > 1.0e-12_dp*abs(w(3)) .and. w(1) > 0.0_dp)) then
+            call set_error(stat, ERR_DECK, 'the tensor is not positive definite (principal '// &
+                'moments '//sci(w(1))//', '//sci(w(2))//', '//sci(w(3))//')')
+            return
+        end if
+        rg%mass = mass
+        rg%g = g
+        rg%b = h%b
+        rg%b_prime = h%b_prime
+        rg%l = h%l
+        rg%l_prime = h%l_prime
+        rg%r = sqrt((0.5_dp*h%b_prime + h%cg_offset)**2 + h%cg_depth**2)
+        rg%lambda = atan2(h%cg_depth, 0.5_dp*h%b_prime + h%cg_offset)
+        rg%inertia = w
+        ! btilde(i, j) = b_i . ntilde_j: row i is the axis v(:, i) in the hang's frame
+        rg%btilde = transpose(matmul(hang_frame(h), v))
+        rg%sway_depth = h%cg_depth
+        rg%c_v = 0.0_dp
+        rg%c_q = 0.0_dp
+    end subroutine hang_rig
+
+    !> The rest pose of a rig as a chart state (rates 0): theta_1 = theta_4 = sigma_1 = 0,
+    !! sigma_2 where the accelerations at rest vanish, theta_5 from the constraint (see the
+    !! module header).  p: the rig's scaled parameters.
+    subroutine rest_pose(p, y, stat)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters
+        real(dp), intent(out) :: y(NSTATE)      !! the rest pose
+        type(status_t), intent(out) :: stat     !! ERR_DECK: no rest pose
+        type(pendulum_t) :: q
+        real(dp) :: s, f, fp, ds, h, qdd(5)
+        integer :: it
+        y = 0.0_dp
+        ! the statics does not depend on the inertia: solve it for an isotropic body, whose
+        ! accelerations at rest stay in the plane of the four-bar
+        q = p
+        q%inertia = sum(p%inertia)/3.0_dp
+        q%btilde = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+                            1.0_dp], [3, 3])
+        q%c_v = 0.0_dp
+        q%c_q = 0.0_dp
+        s = max(-0.9_dp, min(0.9_dp, 0.5_dp*(p%big_b - 1.0_dp)/p%big_l))
+        h = 1.0e-7_dp
+        do it = 1, REST_ITER
+            call residual(s, f)
+            if (stat%code /= STATUS_OK) return
+            call residual(s + h, fp)
+            if (stat%code /= STATUS_OK) return
+            if (.not. (abs(fp - f) > 0.0_dp)) exit
+            ds = -f*h/(fp - f)
+            ds = max(-0.1_dp, min(0.1_dp, ds))
+            s = s + ds
+            h = max(1.0e-9_dp, min(1.0e-7_dp, 0.1_dp*abs(ds)))
+            if (abs(ds) <= 1.0e-15_dp) exit
+        end do
+        call residual(s, f)
+        if (stat%code /= STATUS_OK) return
+        ! the body with its own inertia rests there too
+        call chart_accelerations(p, y, qdd, stat)
+        if (stat%code /= STATUS_OK) return
+        if (.not. (maxval(abs(qdd)) < REST_TOL)) then
+            call set_error(stat, ERR_NUMERIC, 'no rest pose found (accelerations '// &
+                sci(maxval(abs(qdd)))//' at the best pose); check the rig''s geometry')
+        end if
+    contains
+        !> The chart state at sigma_2 = ss (theta_5 from the constraint in closed form) and the
+        !! acceleration of sigma_2 there.
+        subroutine residual(ss, ff)
+            real(dp), intent(in) :: ss
+            real(dp), intent(out) :: ff
+            real(dp) :: a, c, k, rr, phi, t1, t2, acc(5)
+            ff = 0.0_dp
+            if (.not. (abs(ss) < 0.999_dp)) then
+                call set_error(stat, ERR_DECK, 'no rest pose: the cable BC would lean to the '// &
+                    'horizontal; check l, l_prime, b, b_prime')
+                return
+            end if
+            ! D = (0, a + cos th5, c + sin th5), a = -B + L sigma_2, c = -L zeta: |D| = L'
+            a = -p%big_b + p%big_l*ss
+            c = -p%big_l*sqrt(1.0_dp - ss**2)
+            k = 0.5_dp*(p%big_lp**2 - a**2 - c**2 - 1.0_dp)
+            rr = sqrt(a**2 + c**2)
+            if (.not. (abs(k) <= rr)) then
+                call set_error(stat, ERR_DECK, 'no rest pose: the cables cannot both be taut '// &
+                    '(l, l_prime, b, b_prime); allowed: a suspension the body can hang in')
+                return
+            end if
+            phi = atan2(c, a)
+            t1 = wrapped(phi + acos(k/rr))
+            t2 = wrapped(phi - acos(k/rr))
+            y = 0.0_dp
+            y(3) = ss
+            y(5) = merge(t1, t2, abs(t1) <= abs(t2))
+            call chart_accelerations(q, y, acc, stat)
+            ff = acc(3)
+        end subroutine residual
+        pure real(dp) function wrapped(t)
+            real(dp), intent(in) :: t
+            wrapped = t - 2.0_dp*pi*anint(t/(2.0_dp*pi))
+        end function wrapped
+    end subroutine rest_pose
+
+    !> The torsion mode of a rig at small amplitude (see the module header): the rest pose,
+    !! the linearised equations there, their normal modes, the one with the largest share of
+    !! theta_4.
+    subroutine torsion_mode(rg, mode, stat)
+        type(rig_t), intent(in) :: rg           !! the rig (no damping)
+        type(torsion_mode_t), intent(out) :: mode
+        type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC
+        type(pendulum_t) :: p
+        real(dp) :: z(NSTATE, NSTATE), qdd(5), wr(5), wi(5), vr(5, 5), gradg(5), yt(NSTATE)
+        real(dp) :: gg, gd, share(5), leak(5), v(5), lam_max
+        integer :: j, kc, kt
+        call make_pendulum(rg, p, stat)
+        if (stat%code /= STATUS_OK) return
+        p%stab_rate = 0.0_dp
+        p%c_v = 0.0_dp
+        p%c_q = 0.0_dp
+        call rest_pose(p, mode%y_rest, stat)
+        if (stat%code /= STATUS_OK) return
+        call chart_jacobian(p, mode%y_rest, qdd, z, stat)
+        if (stat%code /= STATUS_OK) return
+        call la_eigv(z(6:10, 1:5), wr, wi, vr, stat)
+        if (stat%code /= STATUS_OK) return
+        ! the constraint's gradient: the direction whose vector leaves it is not a mode
+        do j = 1, 5
+            yt = mode%y_rest
+            yt(6:10) = 0.0_dp
+            yt(5 + j) = 1.0_dp
+            call chart_constraint(p, yt, gg, gd)
+            gradg(j) = gd
+        end do
+        lam_max = maxval(abs(wr))
+        do j = 1, 5
+            v = vr(:, j)
+            leak(j) = abs(dot_product(gradg, v))/(norm2(gradg)*norm2(v))
+            share(j) = (0.5_dp*v(4))**2/(0.25_dp*(v(1)**2 + v(4)**2 + v(5)**2) + &
+                                         p%big_l**2*(v(2)**2 + v(3)**2))
+        end do
+        kc = maxloc(leak, 1)
+        share(kc) = -1.0_dp
+        do j = 1, 5
+            if (j == kc) cycle
+            if (abs(wi(j)) > 1.0e-6_dp*lam_max .or. .not. (wr(j) < 0.0_dp)) then
+                call set_error(stat, ERR_DECK, 'the body does not hang stably: the linearised '// &
+                    'motion at rest has the eigenvalue '//sci(wr(j))//' + '//sci(wi(j))// &
+                    ' i; allowed: a hang whose mass centre lies below the line CD')
+                return
+            end if
+        end do
+        kt = maxloc(share, 1)
+        mode%share = share(kt)
+        share(kt) = -1.0_dp
+        mode%next_share = maxval(share)
+        mode%shape = vr(:, kt)/vr(4, kt)
+        mode%omega = sqrt(-wr(kt))
+        mode%period = 2.0_dp*pi/mode%omega*sqrt(rg%b_prime/rg%g)
+    end subroutine torsion_mode
+
+    !> The period (s) of a hang's rig at peak amplitude amp (degrees of theta_4): the torsion
+    !! mode's at amp = 0, else the full model's from a release in the mode's shape (see the
+    !! module header), integrated with acc.
+    subroutine hang_period(rg, acc, amp, t, stat)
+        type(rig_t), intent(in) :: rg           !! the rig (no damping)
+        type(accuracy_t), intent(in) :: acc     !! rtol, atol, integrator
+        real(dp), intent(in) :: amp             !! degrees, >= 0
+        real(dp), intent(out) :: t              !! the period, s
+        type(status_t), intent(out) :: stat
+        type(torsion_mode_t) :: mode
+        real(dp), allocatable :: tm(:), am(:)
+        t = 0.0_dp
+        call torsion_mode(rg, mode, stat)
+        if (stat%code /= STATUS_OK) return
+        if (amp <= 0.0_dp) then
+            t = mode%period
+            return
+        end if
+        call run_maxima(rg, acc, mode, amp, 1, tm, am, stat)
+        if (stat%code /= STATUS_OK) return
+        t = tm(1)*sqrt(rg%b_prime/rg%g)
+    end subroutine hang_period
+
+    !> The drift of theta_4's maxima at peak amplitude amp (degrees) over the first `cycles`
+    !! cycles after a release in the torsion mode's shape: max_k |(t_k - t_(k-1)) - t_1| / t_1
+    !! (t_k the time of the k-th maximum, t_0 = 0), and the largest change of the maxima
+    !! themselves over amp (both 0 at amp = 0).
+    subroutine maxima_drift(rg, acc, amp, cycles, drift, amp_drift, stat)
+        type(rig_t), intent(in) :: rg           !! the rig (no damping)
+        type(accuracy_t), intent(in) :: acc     !! rtol, atol, integrator
+        real(dp), intent(in) :: amp             !! degrees
+        integer, intent(in) :: cycles           !! cycles watched, >= 2
+        real(dp), intent(out) :: drift          !! of the intervals, relative
+        real(dp), intent(out) :: amp_drift      !! of the maxima, relative
+        type(status_t), intent(out) :: stat
+        type(torsion_mode_t) :: mode
+        real(dp), allocatable :: tm(:), am(:)
+        real(dp) :: dk
+        integer :: k
+        drift = 0.0_dp
+        amp_drift = 0.0_dp
+        stat%code = STATUS_OK
+        if (amp <= 0.0_dp) return
+        call torsion_mode(rg, mode, stat)
+        if (stat%code /= STATUS_OK) return
+        call run_maxima(rg, acc, mode, amp, cycles, tm, am, stat)
+        if (stat%code /= STATUS_OK) return
+        do k = 2, cycles
+            dk = tm(k) - tm(k - 1)
+            drift = max(drift, abs(dk - tm(1))/tm(1))
+        end do
+        amp_drift = maxval(abs(am - amp*deg))/(amp*deg)
+    end subroutine maxima_drift
+
+    !> Run the full model from a release at rest in the mode's shape at theta_4 = amp
+    !! (degrees) to the n-th maximum of theta_4: their times (tau) and values (rad).
+    subroutine run_maxima(rg, acc, mode, amp, n, tm, am, stat)
+        type(rig_t), intent(in) :: rg
+        type(accuracy_t), intent(in) :: acc
+        type(torsion_mode_t), intent(in) :: mode
+        real(dp), intent(in) :: amp
+        integer, intent(in) :: n
+        real(dp), allocatable, intent(out) :: tm(:), am(:)
+        type(status_t), intent(out) :: stat
+        type(pendulum_t) :: p
+        type(kane_run_t) :: m
+        type(maxima_sink_t) :: sink
+        real(dp) :: y0(NSTATE), th(5), thd(5), t_end
+        call make_pendulum(rg, p, stat)
+        if (stat%code /= STATUS_OK) return
+        p%c_v = 0.0_dp
+        p%c_q = 0.0_dp
+        call mode_start(p, mode, amp*deg, y0, stat)
+        if (stat%code /= STATUS_OK) return
+        call paper_angles(y0, 0.0_dp, th, thd)
+        ! an end well beyond the n-th maximum: twice the small-amplitude periods, and more
+        t_end = 2.0_dp*(n + 1)*2.0_dp*pi/mode%omega
+        call kane_run_start(m, p, y0, th(3), acc%rtol, acc%atol, acc%method, t_end, &
+                            'raise &integration rtol/atol', stat)
+        if (stat%code /= STATUS_OK) return
+        sink%watch_steps = .true.
+        sink%want = n
+        allocate (sink%t(n), sink%a(n))
+        call drive(m, [0.0_dp, t_end], sink, stat)
+        if (stat%code /= STATUS_OK) then
+            stat%msg = 'the period at '//fixed(amp, 3)//' deg: '//stat%msg
+            return
+        end if
+        if (sink%found < n) then
+            call set_error(stat, ERR_NUMERIC, 'the period at '//fixed(amp, 3)//' deg: '// &
+                'theta4 reached no maximum after its swing within tau = '//fixed(t_end, 3)// &
+                '; the body does not swing in torsion in this hang')
+            return
+        end if
+        tm = sink%t
+        am = sink%a
+    end subroutine run_maxima
+
+    !> The release at rest in the mode's shape at theta_4 = a (rad): the rest pose plus
+    !! (a/shape_4) shape, theta_5 then from the constraint (Newton's method).
+    subroutine mode_start(p, mode, a, y0, stat)
+        type(pendulum_t), intent(in) :: p
+        type(torsion_mode_t), intent(in) :: mode
+        real(dp), intent(in) :: a
+        real(dp), intent(out) :: y0(NSTATE)
+        type(status_t), intent(out) :: stat
+        real(dp) :: yt(NSTATE), gg, gd
+        integer :: it
+        stat%code = STATUS_OK
+        y0 = mode%y_rest
+        y0(1:5) = y0(1:5) + a*mode%shape
+        y0(6:10) = 0.0_dp
+        do it = 1, 40
+            yt = y0
+            yt(10) = 1.0_dp
+            call chart_constraint(p, yt, gg, gd)
+            if (.not. (abs(gd) > 0.0_dp)) exit
+            y0(5) = y0(5) - gg/gd
+            if (abs(gg) <= 1.0e-15_dp*max(1.0_dp, p%big_lp**2)) exit
+        end do
+        call chart_constraint(p, y0, gg, gd)
+        if (.not. (abs(gg) <= 1.0e-12_dp*max(1.0_dp, p%big_lp**2)) .or. &
+            .not. (y0(2)**2 + y0(3)**2 < 0.99_dp)) then
+            call set_error(stat, ERR_DECK, 'no release at '//fixed(a/deg, 3)//' deg: the '// &
+                'cables cannot both be taut there; allowed: a smaller amplitude')
+        end if
+    end subroutine mode_start
+
+    !> maxima_sink_t takes no rows.
+    subroutine maxima_take(sink, m, k, t, y, stat)
+        class(maxima_sink_t), intent(inout) :: sink
+        class(stepped_model_t), intent(inout) :: m
+        integer, intent(in) :: k
+        real(dp), intent(in) :: t
+        real(dp), intent(in) :: y(:)
+        type(status_t), intent(out) :: stat
+        stat%code = 0
+        if (.false.) sink%done = same_type_as(m, m) .and. k + t + y(1) > 0.0_dp
+    end subroutine maxima_take
+
+    !> After a step [t0, t1]: note theta_4 below 0; after that, a theta_4' going from + to -
+    !! within the step is a maximum, located by the Illinois variant of regula falsi on the
+    !! dense output to roundoff.
+    subroutine maxima_after_step(sink, m, t0, t1, stat)
+        class(maxima_sink_t), intent(inout) :: sink
+        class(stepped_model_t), intent(inout) :: m
+        real(dp), intent(in) :: t0, t1          !! the step
+        type(status_t), intent(out) :: stat
+        real(dp) :: y(NSTATE), c
+        logical :: found
+        if (.not. sink%below) then
+            call m%state_at(t1, y, stat)
+            if (stat%code /= 0) return
+            sink%below = y(4) < 0.0_dp
+            return
+        end if
+        call falling_zero(m, t0, t1, 9, found, c, y, stat)
+        if (stat%code /= 0 .or. .not. found) return
+        sink%found = sink%found + 1
+        sink%t(sink%found) = c
+        sink%a(sink%found) = y(4)
+        sink%below = .false.
+        sink%done = sink%found >= sink%want
+    end subroutine maxima_after_step
+
+end module hang_model

@@ -1,0 +1,1635 @@
+!> The whole inertia tensor from the periods of several hangs (analysis tensor): the
+!! projection solution, the exact fit, its uncertainty, the amplitude limit of a hang, the
+!! plan of hangs, and the Monte Carlo task.
+!!
+!! * The problem: the six entries x = (J_xx, J_yy, J_zz, J_xy, J_xz, J_yz) of the tensor
+!!   about the mass centre in the body frame; each row of the table of hangs (module
+!!   hang_table) a measured period T_i of hang h(i) at amplitude A_i; the model period
+!!   T(x; hang, A) of module hang_model (the torsion mode of the linearised full model at
+!!   A = 0, the full model's time from release to the next maximum of theta_4 at A > 0).
+!!   Rows of one hang at one amplitude share one model period (a case).
+!! * Directions: the moment about the vertical of a hang is u . J u = a(u) . x
+!!   (moment_direction).  Six directions, no two parallel, whose design matrix (rows a(u)
+!!   of the distinct unit up directions) has condition <= COND_MAX determine x; fewer or a
+!!   worse condition are refused (check_directions), naming the face, edge or corner
+!!   directions of the body frame whose hangs would make it determined.
+!! * The projection solution (projection): the tool in use: the linear formula per row,
+!!   u . J u = m g b b' T^2 / (16 pi^2 l) (l the mean cable length), then least squares of
+!!   a(u) . x on those moments (LAPACK dgels).
+!! * The fit (fit_tensor): generalised least squares, min r^T V^-1 r, r = T(x) - T_meas,
+!!   by Gauss-Newton from the projection solution (the Jacobian by forward differences of
+!!   the model; a step that fails or raises the sum is halved), whitened by the Cholesky
+!!   factor of V (LAPACK dpotrf, dtrtrs) and solved by dgels.  V holds what scatters the
+!!   rows independently of the tensor: each row's timing (u_period over cycles), its
+!!   amplitude (u_amplitude times dT/dA), the definition of its period (u_def, below), and
+!!   per hang, shared by its rows, how the body was set (three small rotations about
+!!   ntilde_1, ntilde_2, ntilde_3, each u_direction) and the hang's own rig columns.  V is
+!!   evaluated at the start and again at the first solution, then the fit is repeated from
+!!   there.  A row without any stated uncertainty counts 1e-9 of its period; a table
+!!   without any (no u_period, u_amplitude, u_direction) is fitted with equal weights and
+!!   the timing's u taken from the scatter, s^2 = sum r^2/(n - 6).
+!! * First-order uncertainty (GUM): every input x_k moves the estimate by
+!!   S_k = -(A_w^T A_w)^-1 A_w^T L^-1 dr/dx_k (A_w = L^-1 A, V = L L^T); the covariance is
+!!   C = sum_k S_k S_k^T u_k^2 over the timing, amplitude and definition of every row, the
+!!   direction and own rig of every hang (together the fit's covariance (A_w^T A_w)^-1) and
+!!   the inputs common to every hang: mass (dT/dm = -(1/m) sum x_p dT/dx_p, exactly: the
+!!   model sees J/m), g (dT/dg = -T/(2 g)), and the deck's l, l_prime, b, b_prime (central
+!!   differences of the model).  The principal moments (LAPACK dsyev) have
+!!   u^2 = a(v_k)^T C a(v_k); axis k turns toward axis j by (v_j^T dJ v_k)/(I_k - I_j), and
+!!   its u in degrees is the root sum of the two.  Coverage: Welch-Satterthwaite over the
+!!   inputs (a timing u from the scatter has n - 6 degrees of freedom, the others are Type B:
+!!   infinite), k from Student's t (module stats).
+!! * The chi-square r_w^T r_w of the rows against the fit with n - 6 degrees of freedom;
+!!   per hang, the vertical moment its rows measure, I_v = u . J u + delta with delta the
+!!   generalised least-squares shift of u . J u alone that its rows ask for, its u from the
+!!   hang's own V block, and its normalised residual delta/u.
+!! * The amplitude limit (amplitude_limits): a hang whose vertical is not a principal axis
+!!   does not twist purely, and at finite amplitude the quadratic terms of the equations
+!!   feed the other modes: the time to the next maximum of theta_4 then depends on which
+!!   cycle is timed.  The drift is the largest change of the interval between successive
+!!   maxima over the first DRIFT_CYCLES cycles, relative to the first (hang_model's
+!!   maxima_drift); a hang's period at amplitude A is defined well enough while the drift is
+!!   at most DRIFT_MAX.  Larger amplitudes are refused; smaller ones carry the drift as a
+!!   Type B uncertainty of the period's definition, u_def = drift T/3^(1/2) (the period
+!!   timed over any of those cycles lies within drift T of the first).  Each hang's limit is
+!!   found by doubling the amplitude from 1 degree and bisecting in log A.
+!! * The plan (plan_hangs): n hangs among the 26 face, edge and corner directions of the
+!!   body frame (along: the first of them normal to up), each at small amplitude on the
+!!   deck's rig, that minimise the trace of C under the deck's uncertainties (the periods'
+!!   sensitivities of the linearised model at the given tensor): a well-conditioned start
+!!   (the three faces and three edges), greedy additions, then exchanges until none lowers
+!!   the trace.
+!! * Monte Carlo (GUM Supplement 1): sample k draws from stream k of the seed, in this
+!!   order, mass, g, l, l_prime, b, b_prime; per hang the three rotations and its four rig
+!!   inputs; per row its timing, amplitude (normal) and definition (uniform within
+!!   +-3^(1/2) u_def); then refits by Gauss-Newton with the estimate's Jacobian (each step
+!!   one model period per case) until each step is below 1e-3 of the entry's first-order u,
+!!   and gives x, the principal moments and the turns of the axes toward the others.  The
+!!   samples are a sweep (module monte_carlo); the task is built from the deck and the
+!!   payload (tensor_mc_payload, tensor_mc_task).
+!!
+!! Units are the deck's (mass x length^2, s); directions in degrees in messages.  No
+!! routine stops; failures come back in status_t.
+module tensor_fit
+    use kinds, only: dp, pi, deg
+    use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC
+    use text, only: itoa, sci, fixed, rshort, rlist_short
+    use deck, only: deck_t
+    use rig, only: rig_t, accuracy_t, accuracy_of
+    use lapack_wrap, only: la_lstsq, la_svd, la_syev, la_chol, la_tri_solve
+    use random, only: rng_t, rng_stream, rng_normal, rng_uniform
+    use stats, only: chi2_sf, coverage_factor, welch_satterthwaite, NU_INFINITE
+    use monte_carlo, only: mc_task_t
+    use hang_table, only: hang_t, hang_row_t, hang_set_t, RIG_NAMES
+    use hang_model, only: tensor_entries, principal_axes, hang_rig, hang_period, &
+        maxima_drift, vertical_moment, moment_direction, turned_hang
+    implicit none
+    private
+
+    !> The standard uncertainties of the inputs that are not the periods' timing (deck
+    !! units; amplitude in degrees, direction in rad).
+    type, public :: tensor_u_t
+        real(dp) :: mass = 0.0_dp, g = 0.0_dp
+        real(dp) :: rig(4) = 0.0_dp             !! l, l_prime, b, b_prime
+        real(dp) :: amplitude = 0.0_dp          !! degrees
+        real(dp) :: direction = 0.0_dp          !! rad, each of the three rotations
+    end type tensor_u_t
+
+    !> What the fit needs: the body's mass, gravity, the hangs and their timings, the runs'
+    !! accuracy, the uncertainties.
+    type, public :: tensor_problem_t
+        real(dp) :: mass = 1.0_dp, g = 1.0_dp
+        type(hang_t), allocatable :: hangs(:)
+        type(hang_row_t), allocatable :: rows(:)
+        type(accuracy_t) :: acc
+        type(tensor_u_t) :: u
+        real(dp), allocatable :: u_def(:)       !! per row: the period's definition (s)
+        integer, allocatable :: row_case(:)     !! per row: its case (hang and amplitude)
+        integer, allocatable :: case_hang(:)    !! per case: its hang
+        real(dp), allocatable :: case_amp(:)    !! per case: its amplitude (degrees)
+    end type tensor_problem_t
+
+    !> One line of the budget: an input (or the inputs of a hang) and what it adds to the
+    !! standard uncertainty of each entry.
+    type, public :: tensor_budget_row_t
+        character(len=24) :: input = ''
+        real(dp) :: u = 0.0_dp                  !! the input's u (direction in degrees)
+        real(dp) :: contribution(6) = 0.0_dp    !! to J_xx ... J_yz
+    end type tensor_budget_row_t
+
+    !> The fit and its uncertainty.
+    type, public :: tensor_fit_t
+        real(dp) :: x(6) = 0.0_dp               !! the entries
+        real(dp) :: x_proj(6) = 0.0_dp          !! the projection solution
+        real(dp) :: cov(6, 6) = 0.0_dp          !! first-order covariance of x
+        real(dp) :: u_x(6) = 0.0_dp
+        real(dp) :: moments(3) = 0.0_dp         !! principal moments, ascending
+        real(dp) :: u_moments(3) = 0.0_dp
+        real(dp) :: axes(3, 3) = 0.0_dp         !! column k: axis of moments(k)
+        real(dp) :: u_axes(3) = 0.0_dp          !! degrees
+        real(dp) :: nu_eff(3) = NU_INFINITE     !! effective degrees of freedom of u_moments
+        real(dp) :: k95(3) = 0.0_dp             !! their coverage factors for 95 %
+        real(dp) :: chi2 = 0.0_dp, p_value = 1.0_dp
+        integer :: dof = 0
+        real(dp) :: condition = 0.0_dp          !! of the directions' design matrix
+        real(dp) :: projection_difference = 0.0_dp  !! max |x_proj - x| / moments(3)
+        logical :: scatter = .false.            !! timing u from the residuals' scatter
+        real(dp) :: u_scatter = 0.0_dp          !! that u (s)
+        integer :: iterations = 0, evaluations = 0
+        real(dp), allocatable :: model_period(:)    !! per row (s)
+        real(dp), allocatable :: iv_fit(:), iv(:), u_iv(:), resid(:)  !! per hang
+        type(tensor_budget_row_t), allocatable :: budget(:)
+        real(dp), allocatable :: chord(:, :)    !! 6 x rows: the step -chord r (Monte Carlo)
+        real(dp), allocatable :: u_row(:)       !! per row: the timing's u used (s)
+    end type tensor_fit_t
+
+    !> The covariance of the rows of one hang, as its Cholesky factor once factored.
+    type :: block_t
+        integer, allocatable :: rows(:)         !! the hang's rows
+        real(dp), allocatable :: l(:, :)        !! V of those rows, then L with V = L L^T
+    end type block_t
+
+    !> A plan of hangs.
+    type, public :: tensor_plan_t
+        integer :: n = 0
+        real(dp), allocatable :: up(:, :), along(:, :)  !! 3 x n, body frame
+        real(dp), allocatable :: period(:)      !! predicted at small amplitude (s)
+        real(dp) :: trace = 0.0_dp              !! of the covariance of x
+        real(dp) :: u_x(6) = 0.0_dp             !! predicted standard uncertainties
+    end type tensor_plan_t
+
+    !> The samples of the Monte Carlo of a tensor fit as a sweep (built by tensor_mc_task).
+    type, extends(mc_task_t), public :: tensor_mc_task_t
+        type(tensor_problem_t) :: prob
+        real(dp) :: x(6) = 0.0_dp               !! the estimate
+        real(dp) :: axes(3, 3) = 0.0_dp         !! its principal axes
+        real(dp), allocatable :: chord(:, :)    !! 6 x rows
+        real(dp), allocatable :: u_row(:)       !! per row: timing u (s)
+        real(dp) :: u_x(6) = 0.0_dp             !! the estimate's first-order u
+        integer :: seed = 1
+    contains
+        procedure :: sample => tensor_mc_point
+    end type tensor_mc_task_t
+
+    public :: problem_of, check_directions, projection, fit_tensor, amplitude_limits
+    public :: plan_hangs, design_trace, candidate_directions, along_for
+    public :: tensor_mc_payload, tensor_mc_task, tensor_mc_sample, model_periods
+    public :: distinct_directions
+
+    !> Largest condition number of the directions' design matrix.
+    real(dp), parameter, public :: COND_MAX = 1.0e8_dp
+    !> The drift of theta_4's maxima up to which a period counts as defined, and the cycles
+    !! watched.
+    real(dp), parameter, public :: DRIFT_MAX = 1.0e-3_dp
+    integer, parameter, public :: DRIFT_CYCLES = 10
+    !> Estimates of a Monte Carlo sample: x (6), principal moments (3), the turns of axis k
+    !! toward the two others (6).
+    integer, parameter, public :: MC_ESTIMATES = 15
+    !> Two unit directions count as one when |u . v| exceeds 1 - PARALLEL_TOL.
+    real(dp), parameter :: PARALLEL_TOL = 1.0e-9_dp
+    !> A period without any stated uncertainty counts this much of itself.
+    real(dp), parameter :: U_FLOOR = 1.0e-9_dp
+    !> Gauss-Newton: iterations, and the step that ends them over the largest moment (at
+    !! small amplitude; simulated periods: 10 rtol at least); a step up to 1000 times that
+    !! ends them too when it lowers the misfit by less than 1e-10 of itself.
+    integer, parameter :: MAX_ITER = 40
+    real(dp), parameter :: X_TOL = 1.0e-12_dp
+    !> Relative steps of the differences: the Jacobian, the inputs (linearised model /
+    !! simulated periods).
+    real(dp), parameter :: H_LIN = 1.0e-6_dp, H_SIM = 1.0e-5_dp
+    real(dp), parameter :: HX_LIN = 1.0e-6_dp, HX_SIM = 1.0e-4_dp
+    !> A Monte Carlo refit ends when each step is below this fraction of the entry's u.
+    real(dp), parameter :: MC_STEP = 1.0e-3_dp
+    !> Largest amplitude the limit search tries (degrees).
+    real(dp), parameter :: LIMIT_SEARCH_MAX = 64.0_dp
+
+contains
+
+    ! ------------------------------------------------------------------ the problem
+
+    !> The problem of a deck and its table of hangs: mass, g, accuracy and uncertainties
+    !! from the deck (&tensor), the cases (hang, amplitude) of the rows.
+    subroutine problem_of(d, set, prob)
+        type(deck_t), intent(in) :: d           !! the deck
+        type(hang_set_t), intent(in) :: set     !! its hangs
+        type(tensor_problem_t), intent(out) :: prob
+        prob%mass = d%mass
+        prob%g = d%g
+        prob%hangs = set%hangs
+        prob%rows = set%rows
+        prob%acc = accuracy_of(d)
+        prob%u%mass = d%tensor_u(1)
+        prob%u%rig = d%tensor_u(2:5)
+        prob%u%g = d%tensor_u(6)
+        prob%u%amplitude = d%tensor_u(8)
+        prob%u%direction = d%tensor_u_direction*deg
+        call set_cases(prob)
+    end subroutine problem_of
+
+    !> The cases of a problem's rows: one per distinct (hang, amplitude); u_def = 0.
+    pure subroutine set_cases(prob)
+        type(tensor_problem_t), intent(inout) :: prob
+        integer :: i, j, n, nc
+        n = size(prob%rows)
+        allocate (prob%row_case(n), prob%case_hang(n), prob%case_amp(n))
+        if (.not. allocated(prob%u_def)) then
+            allocate (prob%u_def(n))
+            prob%u_def = 0.0_dp
+        end if
+        nc = 0
+        do i = 1, n
+            prob%row_case(i) = 0
+            do j = 1, nc
+                if (prob%case_hang(j) == prob%rows(i)%hang .and. &
+                    prob%case_amp(j) == prob%rows(i)%amplitude) then
+                    prob%row_case(i) = j
+                    exit
+                end if
+            end do
+            if (prob%row_case(i) == 0) then
+                nc = nc + 1
+                prob%case_hang(nc) = prob%rows(i)%hang
+                prob%case_amp(nc) = prob%rows(i)%amplitude
+                prob%row_case(i) = nc
+            end if
+        end do
+        prob%case_hang = prob%case_hang(1:nc)
+        prob%case_amp = prob%case_amp(1:nc)
+    end subroutine set_cases
+
+    !> 'hang ID (line L)' for messages.
+    function hang_label(h) result(s)
+        type(hang_t), intent(in) :: h
+        character(len=:), allocatable :: s
+        s = 'hang '//itoa(h%id)//' (line '//itoa(h%line)//')'
+    end function hang_label
+
+    ! ------------------------------------------------------------------ directions
+
+    !> The 26 face, edge and corner directions of the body frame (unit): the faces x, -x,
+    !! y, -y, z, -z, then the 12 edges and the 8 corners, each direction followed by its
+    !! opposite.
+    pure function candidate_directions() result(c)
+        real(dp) :: c(3, 26)
+        integer :: i, j, k, n, nz, f
+        real(dp) :: v(3)
+        n = 0
+        do nz = 1, 3
+            do i = 1, -1, -1
+                do j = 1, -1, -1
+                    do k = 1, -1, -1
+                        if (count([i, j, k] /= 0) /= nz) cycle
+                        ! the first nonzero component positive: each direction once
+                        f = i
+                        if (f == 0) f = j
+                        if (f == 0) f = k
+                        if (f < 0) cycle
+                        v = real([i, j, k], dp)
+                        n = n + 1
+                        c(:, n) = v/norm2(v)
+                        n = n + 1
+                        c(:, n) = -v/norm2(v)
+                    end do
+                end do
+            end do
+        end do
+    end function candidate_directions
+
+    !> The along of a planned hang with up u: the first candidate direction normal to u.
+    pure function along_for(u) result(a)
+        real(dp), intent(in) :: u(3)            !! unit
+        real(dp) :: a(3)
+        real(dp) :: c(3, 26)
+        integer :: k
+        c = candidate_directions()
+        a = c(:, 1)
+        do k = 1, 26
+            if (abs(dot_product(c(:, k), u)) < 1.0e-12_dp) then
+                a = c(:, k)
+                return
+            end if
+        end do
+    end function along_for
+
+    !> The distinct unit directions of up among the hangs (u and -u count as one), and the
+    !! hang of each.
+    pure subroutine distinct_directions(hangs, dirs, first, n)
+        type(hang_t), intent(in) :: hangs(:)
+        real(dp), intent(out) :: dirs(3, size(hangs))
+        integer, intent(out) :: first(size(hangs))
+        integer, intent(out) :: n
+        integer :: h, k
+        logical :: seen
+        n = 0
+        do h = 1, size(hangs)
+            seen = .false.
+            do k = 1, n
+                if (abs(dot_product(dirs(:, k), hangs(h)%up)) > 1.0_dp - PARALLEL_TOL) then
+                    seen = .true.
+                    exit
+                end if
+            end do
+            if (seen) cycle
+            n = n + 1
+            dirs(:, n) = hangs(h)%up
+            first(n) = h
+        end do
+    end subroutine distinct_directions
+
+    !> The condition number of the design matrix of unit directions (rows a(u)); huge
+    !! when fewer than six or singular.
+    function design_condition(dirs) result(cond)
+        real(dp), intent(in) :: dirs(:, :)
+        real(dp) :: cond
+        real(dp), allocatable :: a(:, :), s(:)
+        real(dp) :: vt(6, 6)
+        type(status_t) :: st
+        integer :: k, n
+        n = size(dirs, 2)
+        cond = huge(1.0_dp)
+        if (n < 6) return
+        allocate (a(n, 6), s(6))
+        do k = 1, n
+            a(k, :) = moment_direction(dirs(:, k))
+        end do
+        call la_svd(a, s, vt, st)
+        if (st%code /= STATUS_OK) return
+        if (s(6) > 0.0_dp) cond = s(1)/s(6)
+    end function design_condition
+
+    !> The hangs' directions determine the tensor: at least six distinct directions of up
+    !! whose design matrix has condition <= COND_MAX; else ERR_DECK naming the face, edge or
+    !! corner directions whose hangs would make it so (added greedily).
+    subroutine check_directions(hangs, what, cond, stat)
+        type(hang_t), intent(in) :: hangs(:)    !! the hangs
+        character(len=*), intent(in) :: what    !! the table, for messages
+        real(dp), intent(out) :: cond           !! the design matrix's condition
+        type(status_t), intent(out) :: stat     !! ERR_DECK
+        real(dp) :: dirs(3, size(hangs)), c(3, 26), best, cb
+        real(dp), allocatable :: cur(:, :)
+        integer :: first(size(hangs)), n, k, kb, added
+        character(len=:), allocatable :: adds, head
+        stat%code = STATUS_OK
+        call distinct_directions(hangs, dirs, first, n)
+        cond = design_condition(dirs(:, 1:n))
+        if (n >= 6 .and. cond <= COND_MAX) return
+        ! the candidates to add, one at a time, each the one that helps most
+        c = candidate_directions()
+        cur = dirs(:, 1:n)
+        adds = ''
+        do added = 1, 6
+            kb = 0
+            best = huge(1.0_dp)
+            do k = 1, 26, 2
+                if (any(abs(matmul(c(:, k), cur)) > 1.0_dp - PARALLEL_TOL)) cycle
+                cb = score([cur, c(:, k)], size(cur, 2) + 1)
+                if (cb < best) then
+                    best = cb
+                    kb = k
+                end if
+            end do
+            if (kb == 0) exit
+            cur = reshape([cur, c(:, kb)], [3, size(cur, 2) + 1])
+            if (len(adds) > 0) adds = adds//'; '
+            adds = adds//'('//dirtext(c(:, kb))//')'
+            if (size(cur, 2) >= 6) then
+                if (design_condition(cur) <= COND_MAX) exit
+            end if
+        end do
+        if (n < 6) then
+            head = what//': '//itoa(n)//' distinct direction'//trim(merge('s', ' ', n /= 1))// &
+                ' of up among '//itoa(size(hangs))//' hang'//trim(merge('s', ' ', &
+                size(hangs) /= 1))//' (u and -u count as one) cannot determine the six '// &
+                'entries of the tensor'
+        else
+            head = what//': the '//itoa(n)//' directions of up have a design matrix of '// &
+                'condition '//sci(min(cond, 1.0e300_dp), 2)//' (> '//rshort(COND_MAX)// &
+                '): they do not determine the six entries of the tensor (coplanar or nearly so)'
+        end if
+        call set_error(stat, ERR_DECK, head//'; allowed: at least six directions, no two '// &
+            'parallel, whose design matrix has condition <= '//rshort(COND_MAX)// &
+            '; add hangs with up = '//adds//' (body frame)')
+    contains
+        !> How far a set of directions is from determining x: the condition when there are
+        !! six or more, else minus the smallest of the nonzero singular values of a full set.
+        function score(dd, m) result(sc)
+            integer, intent(in) :: m
+            real(dp), intent(in) :: dd(3, m)
+            real(dp) :: sc
+            real(dp), allocatable :: a(:, :), s(:), vt(:, :)
+            type(status_t) :: st
+            integer :: j, r
+            allocate (a(m, 6), s(min(m, 6)), vt(6, 6))
+            do j = 1, m
+                a(j, :) = moment_direction(dd(:, j))
+            end do
+            call la_svd(a, s, vt, st)
+            r = count(s > 1.0e-10_dp*s(1))
+            ! more rank first, then the largest smallest singular value, then the condition
+            sc = 1.0e6_dp*(6 - r) - s(max(1, r))
+            if (r == 6) sc = -1.0e3_dp + min(1.0e2_dp, log10(s(1)/s(6)))
+        end function score
+    end subroutine check_directions
+
+    !> A direction as text: its components to 4 digits.
+    function dirtext(u) result(s)
+        real(dp), intent(in) :: u(3)
+        character(len=:), allocatable :: s
+        real(dp) :: v(3)
+        v = u/maxval(abs(u))
+        s = rshort(anint(v(1)*1.0e4_dp)/1.0e4_dp)//', '//rshort(anint(v(2)*1.0e4_dp)/1.0e4_dp) &
+            //', '//rshort(anint(v(3)*1.0e4_dp)/1.0e4_dp)
+    end function dirtext
+
+    ! ------------------------------------------------------------------ the projection
+
+    !> The projection solution: each row's vertical moment by the linear formula
+    !! m g b b' T^2 / (16 pi^2 l), l = (l + l')/2 of its hang, then least squares of
+    !! a(up) . x on them.
+    subroutine projection(prob, x, stat)
+        type(tensor_problem_t), intent(in) :: prob
+        real(dp), intent(out) :: x(6)
+        type(status_t), intent(out) :: stat     !! ERR_NUMERIC from dgels
+        real(dp), allocatable :: a(:, :), b(:)
+        integer :: i, n
+        n = size(prob%rows)
+        allocate (a(n, 6), b(n))
+        do i = 1, n
+            associate (h => prob%hangs(prob%rows(i)%hang))
+                a(i, :) = moment_direction(h%up)
+                b(i) = prob%mass*prob%g*h%b*h%b_prime*prob%rows(i)%period**2/ &
+                       (16.0_dp*pi**2*0.5_dp*(h%l + h%l_prime))
+            end associate
+        end do
+        call la_lstsq(a, b, x, stat)
+        if (stat%code /= STATUS_OK) stat%msg = 'the projection solution: '//stat%msg
+    end subroutine projection
+
+    ! ------------------------------------------------------------------ model periods
+
+    !> The model period of each case of the problem (hang_model's hang_period) at the
+    !! tensor x; optionally with other hangs, mass, g (a perturbed problem).
+    subroutine model_periods(prob, x, tc, stat)
+        type(tensor_problem_t), intent(in) :: prob
+        real(dp), intent(in) :: x(6)
+        real(dp), intent(out) :: tc(:)          !! per case (s)
+        type(status_t), intent(out) :: stat
+        integer :: c
+        tc = 0.0_dp
+        stat%code = STATUS_OK
+        do c = 1, size(prob%case_hang)
+            call case_period(prob, prob%hangs(prob%case_hang(c)), prob%case_amp(c), &
+                             prob%mass, prob%g, x, tc(c), stat)
+            if (stat%code /= STATUS_OK) return
+        end do
+    end subroutine model_periods
+
+    !> The period of hang h at amplitude amp for the tensor x, mass and g.
+    subroutine case_period(prob, h, amp, mass, g, x, t, stat)
+        type(tensor_problem_t), intent(in) :: prob
+        type(hang_t), intent(in) :: h
+        real(dp), intent(in) :: amp, mass, g, x(6)
+        real(dp), intent(out) :: t
+        type(status_t), intent(out) :: stat
+        type(rig_t) :: rg
+        t = 0.0_dp
+        call hang_rig(mass, g, h, x, rg, stat)
+        if (stat%code == STATUS_OK) call hang_period(rg, prob%acc, amp, t, stat)
+        if (stat%code /= STATUS_OK) stat%msg = hang_label(h)//': '//stat%msg
+    end subroutine case_period
+
+    !> The step of the Jacobian's differences for the tensor x (relative to its size).
+    pure real(dp) function x_step(prob, x)
+        type(tensor_problem_t), intent(in) :: prob
+        real(dp), intent(in) :: x(6)
+        x_step = merge(H_SIM, H_LIN, any(prob%case_amp > 0.0_dp))*maxval(x(1:3))
+    end function x_step
+
+    !> dT/dx of each case by forward differences from tc (the periods at x).
+    subroutine case_jacobian(prob, x, tc, a, stat)
+        type(tensor_problem_t), intent(in) :: prob
+        real(dp), intent(in) :: x(6), tc(:)
+        real(dp), intent(out) :: a(:, :)        !! (cases, 6)
+        type(status_t), intent(out) :: stat
+        real(dp) :: xp(6), h, tp(size(tc))
+        integer :: p
+        h = x_step(prob, x)
+        do p = 1, 6
+            xp = x
+            xp(p) = x(p) + h
+            call model_periods(prob, xp, tp, stat)
+            if (stat%code /= STATUS_OK) then
+                stat%msg = 'the Jacobian: '//stat%msg
+                return
+            end if
+            a(:, p) = (tp - tc)/h
+        end do
+    end subroutine case_jacobian
+
+    !> The sensitivities of each case's period to its inputs at x (central differences;
+    !! mass and g exactly): amplitude (per degree), the three rotations of the body (per
+    !! rad), the hang's l, l_prime, b, b_prime, mass, g.
+    subroutine case_sensitivities(prob, x, tc, a, s_amp, s_dir, s_rig, s_mass, s_g, stat)
+        type(tensor_problem_t), intent(in) :: prob
+        real(dp), intent(in) :: x(6), tc(:), a(:, :)
+        real(dp), intent(out) :: s_amp(:), s_dir(:, :), s_rig(:, :), s_mass(:), s_g(:)
+        type(status_t), intent(out) :: stat
+        type(hang_t) :: hp, hm
+        real(dp) :: tp, tm, hx, ha, eps(3), v
+        integer :: c, k
+        logical :: sim
+        stat%code = STATUS_OK
+        do c = 1, size(tc)
+            associate (h => prob%hangs(prob%case_hang(c)), amp => prob%case_amp(c))
+                sim = amp > 0.0_dp
+                hx = merge(HX_SIM, HX_LIN, sim)
+                s_mass(c) = -dot_product(x, a(c, :))/prob%mass
+                s_g(c) = -0.5_dp*tc(c)/prob%g
+                s_amp(c) = 0.0_dp
+                if (sim) then
+                    ha = min(0.5_dp*amp, max(1.0e-3_dp, 1.0e-2_dp*amp))
+                    call case_period(prob, h, amp + ha, prob%mass, prob%g, x, tp, stat)
+                    if (stat%code == STATUS_OK) &
+                        call case_period(prob, h, amp - ha, prob%mass, prob%g, x, tm, stat)
+                    if (stat%code /= STATUS_OK) return
+                    s_amp(c) = (tp - tm)/(2.0_dp*ha)
+                end if
+                do k = 1, 3
+                    eps = 0.0_dp
+                    eps(k) = hx
+                    hp = turned_hang(h, eps)
+                    hm = turned_hang(h, -eps)
+                    call case_period(prob, hp, amp, prob%mass, prob%g, x, tp, stat)
+                    if (stat%code == STATUS_OK) &
+                        call case_period(prob, hm, amp, prob%mass, prob%g, x, tm, stat)
+                    if (stat%code /= STATUS_OK) return
+                    s_dir(c, k) = (tp - tm)/(2.0_dp*hx)
+                end do
+                do k = 1, 4
+                    hp = h
+                    hm = h
+                    v = rig_value(h, k)
+                    call set_rig_value(hp, k, v*(1.0_dp + hx))
+                    call set_rig_value(hm, k, v*(1.0_dp - hx))
+                    call case_period(prob, hp, amp, prob%mass, prob%g, x, tp, stat)
+                    if (stat%code == STATUS_OK) &
+                        call case_period(prob, hm, amp, prob%mass, prob%g, x, tm, stat)
+                    if (stat%code /= STATUS_OK) return
+                    s_rig(c, k) = (tp - tm)/(2.0_dp*hx*v)
+                end do
+            end associate
+        end do
+    end subroutine case_sensitivities
+
+    !> A hang's rig input k (l, l_prime, b, b_prime).
+    pure real(dp) function rig_value(h, k) result(v)
+        type(hang_t), intent(in) :: h
+        integer, intent(in) :: k
+        select case (k)
+        case (1)
+            v = h%l
+        case (2)
+            v = h%l_prime
+        case (3)
+            v = h%b
+        case default
+            v = h%b_prime
+        end select
+    end function rig_value
+
+    !> Set a hang's rig input k; b_prime moves both attachment points symmetrically (the
+    !! mass centre keeps its depth below CD and its offset from CD's midpoint).
+    pure subroutine set_rig_value(h, k, v)
+        type(hang_t), intent(inout) :: h
+        integer, intent(in) :: k
+        real(dp), intent(in) :: v
+        select case (k)
+        case (1)
+            h%l = v
+        case (2)
+            h%l_prime = v
+        case (3)
+            h%b = v
+        case default
+            h%b_prime = v
+        end select
+    end subroutine set_rig_value
+
+    ! ------------------------------------------------------------------ the fit
+
+    !> The covariance blocks of the rows, one per hang: V = diag(u_T^2 + u_def^2 +
+    !! (dT/dA u_A)^2) + sum over the three rotations and the hang's own rig of s s^T u^2;
+    !! a zero diagonal counts U_FLOOR of its period.  none = .true. when no row has any
+    !! stated uncertainty.
+    subroutine row_covariance(prob, u_t, tc, s_amp, s_dir, s_rig, blocks, none)
+        type(tensor_problem_t), intent(in) :: prob
+        real(dp), intent(in) :: u_t(:)          !! per row: the timing's u (s)
+        real(dp), intent(in) :: tc(:), s_amp(:), s_dir(:, :), s_rig(:, :)
+        type(block_t), allocatable, intent(out) :: blocks(:)
+        logical, intent(out) :: none
+        integer :: h, m, i, j, k, ci, cj
+        integer, allocatable :: idx(:)
+        allocate (blocks(size(prob%hangs)))
+        none = .true.
+        do h = 1, size(prob%hangs)
+            idx = pack([(i, i=1, size(prob%rows))], prob%rows%hang == h)
+            m = size(idx)
+            blocks(h)%rows = idx
+            allocate (blocks(h)%l(m, m))
+            do j = 1, m
+                cj = prob%row_case(idx(j))
+                do i = 1, m
+                    ci = prob%row_case(idx(i))
+                    blocks(h)%l(i, j) = sum(s_dir(ci, :)*s_dir(cj, :))*prob%u%direction**2
+                    do k = 1, 4
+                        if (prob%hangs(h)%own(k)) blocks(h)%l(i, j) = blocks(h)%l(i, j) + &
+                            s_rig(ci, k)*s_rig(cj, k)*prob%u%rig(k)**2
+                    end do
+                end do
+                blocks(h)%l(j, j) = blocks(h)%l(j, j) + u_t(idx(j))**2 + &
+                    prob%u_def(idx(j))**2 + (s_amp(cj)*prob%u%amplitude)**2
+                if (blocks(h)%l(j, j) > 0.0_dp) none = .false.
+                if (.not. (blocks(h)%l(j, j) > 0.0_dp)) &
+                    blocks(h)%l(j, j) = (U_FLOOR*tc(cj))**2
+            end do
+        end do
+    end subroutine row_covariance
+
+    !> Factor each block: V = L L^T.
+    subroutine factor_blocks(blocks, stat)
+        type(block_t), intent(inout) :: blocks(:)
+        type(status_t), intent(out) :: stat
+        integer :: h
+        stat%code = STATUS_OK
+        do h = 1, size(blocks)
+            call la_chol(blocks(h)%l, stat)
+            if (stat%code /= STATUS_OK) then
+                stat%msg = 'the covariance of the rows: '//stat%msg
+                return
+            end if
+        end do
+    end subroutine factor_blocks
+
+    !> L^-1 b for the rows' factors, b (rows, any columns).
+    subroutine whiten(blocks, b, stat)
+        type(block_t), intent(in) :: blocks(:)
+        real(dp), intent(inout) :: b(:, :)
+        type(status_t), intent(out) :: stat
+        real(dp), allocatable :: part(:, :)
+        integer :: h
+        stat%code = STATUS_OK
+        do h = 1, size(blocks)
+            allocate (part(size(blocks(h)%rows), size(b, 2)))
+            part(:, :) = b(blocks(h)%rows, :)
+            call la_tri_solve(blocks(h)%l, part, stat)
+            if (stat%code /= STATUS_OK) return
+            b(blocks(h)%rows, :) = part
+            deallocate (part)
+        end do
+    end subroutine whiten
+
+    !> Gauss-Newton on the whitened residuals from x (see the module header); x is the
+    !! solution on return, tc its periods, s its sum of squares.
+    subroutine gauss_newton(prob, blocks, x, tc, s, iters, evals, stat)
+        type(tensor_problem_t), intent(in) :: prob
+        type(block_t), intent(in) :: blocks(:)
+        real(dp), intent(inout) :: x(6)
+        real(dp), intent(out) :: tc(:), s
+        integer, intent(inout) :: iters, evals
+        type(status_t), intent(out) :: stat
+        real(dp), allocatable :: a(:, :), aw(:, :), rw(:, :), tt(:)
+        real(dp) :: dx(6), xt(6), st, lam, tol, gain
+        integer :: n, it, half
+        type(status_t) :: s2
+        n = size(prob%rows)
+        allocate (a(size(tc), 6), aw(n, 6), rw(n, 1), tt(size(tc)))
+        tol = X_TOL
+        if (any(prob%case_amp > 0.0_dp)) tol = max(X_TOL, 10.0_dp*prob%acc%rtol)
+        call residuals(x, tc, rw, s, stat)
+        if (stat%code /= STATUS_OK) return
+        do it = 1, MAX_ITER
+            iters = iters + 1
+            call case_jacobian(prob, x, tc, a, stat)
+            evals = evals + 6
+            if (stat%code /= STATUS_OK) return
+            aw = a(prob%row_case, :)
+            call whiten(blocks, aw, stat)
+            if (stat%code /= STATUS_OK) return
+            call la_lstsq(aw, -rw(:, 1), dx, stat)
+            if (stat%code /= STATUS_OK) then
+                stat%msg = 'the Gauss-Newton step: '//stat%msg
+                return
+            end if
+            lam = 1.0_dp
+            do half = 1, 40
+                xt = x + lam*dx
+                call residuals(xt, tt, rw, st, s2)
+                if (s2%code == STATUS_OK .and. st <= s*(1.0_dp + 1.0e-12_dp)) exit
+                lam = 0.5_dp*lam
+            end do
+            if (s2%code /= STATUS_OK .or. .not. (st <= s*(1.0_dp + 1.0e-12_dp))) then
+                ! no step lowers the sum: converged at the model's resolution, or stuck
+                call residuals(x, tc, rw, s, stat)
+                if (maxval(abs(dx)) <= 1.0e3_dp*tol*maxval(x(1:3))) return
+                call set_error(stat, ERR_NUMERIC, 'the fit of the tensor: no Gauss-Newton step '// &
+                    'lowers the misfit (at the entries '//rlist_short(x)//'); check that the '// &
+                    'periods agree with each other and with the rig')
+                return
+            end if
+            x = xt
+            tc = tt
+            gain = s - st
+            s = st
+            if (maxval(abs(lam*dx)) <= tol*maxval(x(1:3))) return
+            ! nothing left to gain at the model's resolution
+            if (gain <= 1.0e-10_dp*(s + gain) .and. &
+                maxval(abs(lam*dx)) <= 1.0e3_dp*tol*maxval(x(1:3))) return
+        end do
+        call set_error(stat, ERR_NUMERIC, 'the fit of the tensor did not converge in '// &
+            itoa(MAX_ITER)//' Gauss-Newton iterations (entries '//rlist_short(x)//'); check '// &
+            'that the periods agree with each other and with the rig')
+    contains
+        subroutine residuals(xx, tcc, rr, ss, sta)
+            real(dp), intent(in) :: xx(6)
+            real(dp), intent(out) :: tcc(:), rr(:, :), ss
+            type(status_t), intent(out) :: sta
+            evals = evals + 1
+            ss = huge(1.0_dp)
+            call model_periods(prob, xx, tcc, sta)
+            if (sta%code /= STATUS_OK) return
+            rr(:, 1) = tcc(prob%row_case) - prob%rows%period
+            call whiten(blocks, rr, sta)
+            if (sta%code /= STATUS_OK) return
+            ss = sum(rr**2)
+        end subroutine residuals
+    end subroutine gauss_newton
+
+    !> The fit of the tensor from x0 with its first-order uncertainty (see the module
+    !! header).
+    subroutine fit_tensor(prob, x0, fit, stat)
+        type(tensor_problem_t), intent(in) :: prob  !! the problem (u_def set)
+        real(dp), intent(in) :: x0(6)           !! start (the projection solution)
+        type(tensor_fit_t), intent(out) :: fit
+        type(status_t), intent(out) :: stat     !! ERR_NUMERIC, ERR_DECK
+        type(block_t), allocatable :: blocks(:)
+        real(dp), allocatable :: tc(:), a(:, :), s_amp(:), s_dir(:, :), s_rig(:, :)
+        real(dp), allocatable :: s_mass(:), s_g(:), u_t(:), aw(:, :), r(:, :)
+        real(dp) :: x(6), s, w(3), v(3, 3)
+        integer :: n, nc, round
+        logical :: none
+        n = size(prob%rows)
+        nc = size(prob%case_hang)
+        allocate (tc(nc), a(nc, 6), s_amp(nc), s_dir(nc, 3), s_rig(nc, 4), s_mass(nc), &
+                  s_g(nc), u_t(n))
+        u_t = prob%rows%u_period
+        fit%x_proj = x0
+        x = x0
+        ! a start that is not positive definite (noisy periods): its moments raised
+        call principal_axes(x, w, v, stat)
+        if (stat%code /= STATUS_OK) return
+        if (.not. (w(1) > 1.0e-3_dp*w(3))) then
+            w = max(w, 1.0e-3_dp*abs(w(3)), tiny(1.0_dp))
+            x = tensor_entries(matmul(v, matmul(diag3(w), transpose(v))))
+        end if
+        call model_periods(prob, x, tc, stat)
+        if (stat%code /= STATUS_OK) then
+            stat%msg = 'the model at the projection solution: '//stat%msg
+            return
+        end if
+        do round = 1, 2
+            call case_jacobian(prob, x, tc, a, stat)
+            if (stat%code /= STATUS_OK) return
+            call case_sensitivities(prob, x, tc, a, s_amp, s_dir, s_rig, s_mass, s_g, stat)
+            if (stat%code /= STATUS_OK) return
+            fit%evaluations = fit%evaluations + 6 + 2*nc*8
+            call row_covariance(prob, u_t, tc, s_amp, s_dir, s_rig, blocks, none)
+            if (none .and. .not. fit%scatter) then
+                ! no stated uncertainty: equal weights, then the timing u from the scatter
+                fit%scatter = .true.
+                blocks = unit_blocks(blocks)
+            else if (fit%scatter) then
+                blocks = unit_blocks(blocks)
+            end if
+            call factor_blocks(blocks, stat)
+            if (stat%code /= STATUS_OK) return
+            call gauss_newton(prob, blocks, x, tc, s, fit%iterations, fit%evaluations, stat)
+            if (stat%code /= STATUS_OK) return
+        end do
+        ! the final Jacobian and sensitivities at the solution
+        call case_jacobian(prob, x, tc, a, stat)
+        if (stat%code /= STATUS_OK) return
+        call case_sensitivities(prob, x, tc, a, s_amp, s_dir, s_rig, s_mass, s_g, stat)
+        if (stat%code /= STATUS_OK) return
+        fit%evaluations = fit%evaluations + 6 + 2*nc*8
+        fit%dof = n - 6
+        if (fit%scatter) then
+            fit%u_scatter = 0.0_dp
+            if (fit%dof > 0) fit%u_scatter = sqrt(sum((tc(prob%row_case) - &
+                                                       prob%rows%period)**2)/fit%dof)
+            u_t = fit%u_scatter
+        end if
+        call row_covariance(prob, u_t, tc, s_amp, s_dir, s_rig, blocks, none)
+        if (fit%scatter .and. fit%u_scatter == 0.0_dp) blocks = unit_blocks(blocks)
+        call factor_blocks(blocks, stat)
+        if (stat%code /= STATUS_OK) return
+        fit%x = x
+        fit%model_period = tc(prob%row_case)
+        fit%u_row = u_t
+        ! chi-square of the rows against the fit
+        allocate (r(n, 1), aw(n, 6))
+        r(:, 1) = tc(prob%row_case) - prob%rows%period
+        call whiten(blocks, r, stat)
+        if (stat%code /= STATUS_OK) return
+        fit%chi2 = sum(r**2)
+        if (fit%scatter) fit%chi2 = real(max(fit%dof, 0), dp)
+        fit%p_value = 1.0_dp
+        if (fit%dof > 0) fit%p_value = chi2_sf(fit%chi2, real(fit%dof, dp))
+        aw = a(prob%row_case, :)
+        call whiten(blocks, aw, stat)
+        if (stat%code /= STATUS_OK) return
+        call covariance_and_budget(prob, blocks, x, aw, u_t, s_amp, s_dir, s_rig, &
+                                   s_mass, s_g, fit, stat)
+        if (stat%code /= STATUS_OK) return
+        call per_hang(prob, blocks, x, tc, a, fit, stat)
+    end subroutine fit_tensor
+
+    !> Blocks of the identity (equal weights) of the same shapes.
+    pure function unit_blocks(b) result(u)
+        type(block_t), intent(in) :: b(:)
+        type(block_t) :: u(size(b))
+        integer :: h, j
+        do h = 1, size(b)
+            u(h)%rows = b(h)%rows
+            allocate (u(h)%l(size(b(h)%rows), size(b(h)%rows)))
+            u(h)%l = 0.0_dp
+            do j = 1, size(b(h)%rows)
+                u(h)%l(j, j) = 1.0_dp
+            end do
+        end do
+    end function unit_blocks
+
+    pure function diag3(w) result(m)
+        real(dp), intent(in) :: w(3)
+        real(dp) :: m(3, 3)
+        m = 0.0_dp
+        m(1, 1) = w(1)
+        m(2, 2) = w(2)
+        m(3, 3) = w(3)
+    end function diag3
+
+    !> The covariance of x (sum over the inputs of S_k S_k^T u_k^2), the budget, the
+    !! principal moments and axes with their u, coverage factors, the chord for Monte Carlo.
+    subroutine covariance_and_budget(prob, blocks, x, aw, u_t, s_amp, s_dir, s_rig, &
+                                     s_mass, s_g, fit, stat)
+        type(tensor_problem_t), intent(in) :: prob
+        type(block_t), intent(in) :: blocks(:)
+        real(dp), intent(in) :: x(6), aw(:, :), u_t(:)
+        real(dp), intent(in) :: s_amp(:), s_dir(:, :), s_rig(:, :), s_mass(:), s_g(:)
+        type(tensor_fit_t), intent(inout) :: fit
+        type(status_t), intent(out) :: stat
+        real(dp) :: sv(6), vt(6, 6), ninv(6, 6), g(6)
+        real(dp), allocatable :: gmat(:, :), col(:, :), gt(:, :)
+        real(dp), allocatable :: cmoment(:, :)       ! per budget row: contribution to moments
+        integer :: n, i, h, k, j
+        real(dp) :: cgrp(6, 6)
+        n = size(prob%rows)
+        call la_svd(aw, sv, vt, stat)
+        if (stat%code /= STATUS_OK) return
+        if (.not. (sv(6) > 1.0e-14_dp*sv(1))) then
+            call set_error(stat, ERR_NUMERIC, 'the fit''s Jacobian is singular: the hangs do '// &
+                'not determine the tensor')
+            return
+        end if
+        ninv = 0.0_dp
+        do k = 1, 6
+            ninv = ninv + outer(vt(k, :), vt(k, :))/sv(k)**2
+        end do
+        ! the chord: dx = -G L^-1 r, G = (A_w^T A_w)^-1 A_w^T; per block (G L^-1)^T =
+        ! L^-T G^T
+        gmat = matmul(ninv, transpose(aw))
+        allocate (fit%chord(6, n))
+        do h = 1, size(blocks)
+            gt = transpose(gmat(:, blocks(h)%rows))
+            call la_tri_solve(blocks(h)%l, gt, stat, transposed=.true.)
+            if (stat%code /= STATUS_OK) return
+            fit%chord(:, blocks(h)%rows) = transpose(gt)
+        end do
+        ! the budget: one group per common input, and per hang its timing, amplitude,
+        ! definition, direction and own rig inputs
+        allocate (fit%budget(0), cmoment(3, 0))
+        fit%cov = 0.0_dp
+        call principal_axes(x, fit%moments, fit%axes, stat)
+        if (stat%code /= STATUS_OK) return
+        allocate (col(n, 1))
+        ! mass, g
+        call group('mass', prob%u%mass, [ (s_mass(prob%row_case(i)), i=1, n) ])
+        call group('g', prob%u%g, [ (s_g(prob%row_case(i)), i=1, n) ])
+        do k = 1, 4
+            col(:, 1) = 0.0_dp
+            do i = 1, n
+                if (.not. prob%hangs(prob%rows(i)%hang)%own(k)) &
+                    col(i, 1) = s_rig(prob%row_case(i), k)
+            end do
+            if (any(col(:, 1) /= 0.0_dp)) call group(trim(RIG_NAMES(k)), prob%u%rig(k), &
+                                                     col(:, 1))
+        end do
+        do h = 1, size(prob%hangs)
+            ! the timings of its rows
+            cgrp = 0.0_dp
+            do i = 1, n
+                if (prob%rows(i)%hang /= h) cycle
+                col(:, 1) = 0.0_dp
+                col(i, 1) = -1.0_dp
+                call add_input(col(:, 1), u_t(i), cgrp)
+            end do
+            call push('period('//itoa(prob%hangs(h)%id)//')', u_t(first_row(h)), cgrp)
+            ! amplitudes
+            if (prob%u%amplitude > 0.0_dp .and. any(prob%case_amp(pack(prob%row_case, &
+                prob%rows%hang == h)) > 0.0_dp)) then
+                cgrp = 0.0_dp
+                do i = 1, n
+                    if (prob%rows(i)%hang /= h) cycle
+                    col(:, 1) = 0.0_dp
+                    col(i, 1) = s_amp(prob%row_case(i))
+                    call add_input(col(:, 1), prob%u%amplitude, cgrp)
+                end do
+                call push('amplitude('//itoa(prob%hangs(h)%id)//')', prob%u%amplitude, cgrp)
+            end if
+            ! the period's definition (the drift of the maxima)
+            if (any(prob%u_def(pack([(i, i=1, n)], prob%rows%hang == h)) > 0.0_dp)) then
+                cgrp = 0.0_dp
+                do i = 1, n
+                    if (prob%rows(i)%hang /= h) cycle
+                    col(:, 1) = 0.0_dp
+                    col(i, 1) = -1.0_dp
+                    call add_input(col(:, 1), prob%u_def(i), cgrp)
+                end do
+                call push('definition('//itoa(prob%hangs(h)%id)//')', &
+                          maxval(prob%u_def(pack([(i, i=1, n)], prob%rows%hang == h))), cgrp)
+            end if
+            ! the direction: three rotations shared by its rows
+            if (prob%u%direction > 0.0_dp) then
+                cgrp = 0.0_dp
+                do k = 1, 3
+                    col(:, 1) = 0.0_dp
+                    do i = 1, n
+                        if (prob%rows(i)%hang == h) col(i, 1) = s_dir(prob%row_case(i), k)
+                    end do
+                    call add_input(col(:, 1), prob%u%direction, cgrp)
+                end do
+                call push('direction('//itoa(prob%hangs(h)%id)//')', prob%u%direction/deg, cgrp)
+            end if
+            ! its own rig
+            do k = 1, 4
+                if (.not. prob%hangs(h)%own(k)) cycle
+                cgrp = 0.0_dp
+                col(:, 1) = 0.0_dp
+                do i = 1, n
+                    if (prob%rows(i)%hang == h) col(i, 1) = s_rig(prob%row_case(i), k)
+                end do
+                call add_input(col(:, 1), prob%u%rig(k), cgrp)
+                call push(trim(RIG_NAMES(k))//'('//itoa(prob%hangs(h)%id)//')', &
+                          prob%u%rig(k), cgrp)
+            end do
+        end do
+        fit%u_x = sqrt(max(0.0_dp, [(fit%cov(k, k), k=1, 6)]))
+        ! the principal moments and axes
+        do k = 1, 3
+            g = moment_direction(fit%axes(:, k))
+            fit%u_moments(k) = sqrt(max(0.0_dp, dot_product(g, matmul(fit%cov, g))))
+            ! the turn toward axis j: (v_j . dJ v_k)/(I_k - I_j); 90 degrees (undetermined)
+            ! when the moments are too close for it
+            fit%u_axes(k) = 0.0_dp
+            do j = 1, 3
+                if (j == k) cycle
+                g = mixed(fit%axes(:, j), fit%axes(:, k))
+                if (abs(fit%moments(k) - fit%moments(j)) > 1.0e-12_dp*fit%moments(3)) then
+                    fit%u_axes(k) = fit%u_axes(k) + min(1.0e4_dp, &
+                        dot_product(g, matmul(fit%cov, g))/(fit%moments(k) - fit%moments(j))**2)
+                else
+                    fit%u_axes(k) = 1.0e4_dp
+                end if
+            end do
+            fit%u_axes(k) = min(90.0_dp, sqrt(max(0.0_dp, fit%u_axes(k)))/deg)
+            ! effective degrees of freedom: the timing from the scatter has dof, all else
+            ! is Type B
+            fit%nu_eff(k) = NU_INFINITE
+            if (fit%scatter .and. fit%dof > 0) then
+                fit%nu_eff(k) = welch_satterthwaite(cmoment(k, :), &
+                    [(merge(real(fit%dof, dp), 0.0_dp, is_timing(fit%budget(j)%input)), &
+                      j=1, size(fit%budget))])
+            end if
+            fit%k95(k) = coverage_factor(fit%nu_eff(k), 0.95_dp)
+        end do
+    contains
+        !> A common input's group: its column of dr/dx over every row.
+        subroutine group(name, u, dr)
+            character(len=*), intent(in) :: name
+            real(dp), intent(in) :: u, dr(:)
+            real(dp) :: cg(6, 6)
+            cg = 0.0_dp
+            call add_input(dr, u, cg)
+            call push(name, u, cg)
+        end subroutine group
+        !> S = -G L^-1 dr: its covariance S S^T u^2 added to cg and to fit%cov.
+        subroutine add_input(dr, u, cg)
+            real(dp), intent(in) :: dr(:), u
+            real(dp), intent(inout) :: cg(6, 6)
+            real(dp) :: sk(6)
+            if (.not. (u > 0.0_dp)) return
+            sk = -matmul(fit%chord, dr)
+            cg = cg + outer(sk, sk)*u**2
+            fit%cov = fit%cov + outer(sk, sk)*u**2
+        end subroutine add_input
+        !> One budget line from a group's covariance.
+        subroutine push(name, u, cg)
+            character(len=*), intent(in) :: name
+            real(dp), intent(in) :: u, cg(6, 6)
+            type(tensor_budget_row_t) :: row
+            real(dp) :: cm(3, 1), gg(6)
+            integer :: m
+            row%input = name
+            row%u = u
+            row%contribution = sqrt(max(0.0_dp, [(cg(m, m), m=1, 6)]))
+            fit%budget = [fit%budget, row]
+            do m = 1, 3
+                gg = moment_direction(fit%axes(:, m))
+                cm(m, 1) = sqrt(max(0.0_dp, dot_product(gg, matmul(cg, gg))))
+            end do
+            cmoment = reshape([cmoment, cm], [3, size(cmoment, 2) + 1])
+        end subroutine push
+        pure logical function is_timing(name)
+            character(len=*), intent(in) :: name
+            is_timing = index(name, 'period(') == 1
+        end function is_timing
+        pure integer function first_row(hh)
+            integer, intent(in) :: hh
+            first_row = findloc(prob%rows%hang, hh, 1)
+        end function first_row
+    end subroutine covariance_and_budget
+
+    pure function outer(a, b) result(m)
+        real(dp), intent(in) :: a(:), b(:)
+        real(dp) :: m(size(a), size(b))
+        integer :: i
+        do i = 1, size(b)
+            m(:, i) = a*b(i)
+        end do
+    end function outer
+
+    !> The row of v . J w in the entries: v . J w = sum_k m(k) x(k).
+    pure function mixed(v, w) result(m)
+        real(dp), intent(in) :: v(3), w(3)
+        real(dp) :: m(6)
+        m = [v(1)*w(1), v(2)*w(2), v(3)*w(3), v(1)*w(2) + v(2)*w(1), v(1)*w(3) + v(3)*w(1), &
+             v(2)*w(3) + v(3)*w(2)]
+    end function mixed
+
+    !> Per hang: the vertical moment its rows measure, its u and normalised residual; the
+    !! projection difference.
+    subroutine per_hang(prob, blocks, x, tc, a, fit, stat)
+        type(tensor_problem_t), intent(in) :: prob
+        type(block_t), intent(in) :: blocks(:)
+        real(dp), intent(in) :: x(6), tc(:), a(:, :)
+        type(tensor_fit_t), intent(inout) :: fit
+        type(status_t), intent(out) :: stat
+        real(dp), allocatable :: q(:, :), r(:, :)
+        real(dp) :: qq(6), aa, delta
+        integer :: h, nh, m
+        nh = size(prob%hangs)
+        allocate (fit%iv_fit(nh), fit%iv(nh), fit%u_iv(nh), fit%resid(nh))
+        stat%code = STATUS_OK
+        do h = 1, nh
+            associate (idx => blocks(h)%rows, u => prob%hangs(h)%up)
+                m = size(idx)
+                ! dx for a unit change of u . J u alone: dJ = u u^T
+                qq = [u(1)**2, u(2)**2, u(3)**2, u(1)*u(2), u(1)*u(3), u(2)*u(3)]
+                allocate (q(m, 1), r(m, 1))
+                q(:, 1) = matmul(a(prob%row_case(idx), :), qq)
+                r(:, 1) = prob%rows(idx)%period - tc(prob%row_case(idx))
+                call la_tri_solve(blocks(h)%l, q, stat)
+                if (stat%code == STATUS_OK) call la_tri_solve(blocks(h)%l, r, stat)
+                if (stat%code /= STATUS_OK) return
+                aa = sum(q**2)
+                fit%iv_fit(h) = vertical_moment(x, u)
+                delta = 0.0_dp
+                fit%u_iv(h) = 0.0_dp
+                if (aa > 0.0_dp) then
+                    delta = sum(q*r)/aa
+                    fit%u_iv(h) = 1.0_dp/sqrt(aa)
+                end if
+                if (fit%scatter .and. fit%u_scatter == 0.0_dp) fit%u_iv(h) = 0.0_dp
+                fit%iv(h) = fit%iv_fit(h) + delta
+                fit%resid(h) = 0.0_dp
+                if (fit%u_iv(h) > 0.0_dp) fit%resid(h) = delta/fit%u_iv(h)
+                deallocate (q, r)
+            end associate
+        end do
+        fit%projection_difference = maxval(abs(fit%x_proj - x))/maxval(fit%moments)
+    end subroutine per_hang
+
+    ! ------------------------------------------------------------------ amplitude limit
+
+    !> The drift of theta_4's maxima of each row at its amplitude (0 at 0) for the tensor x,
+    !! and each hang's amplitude limit: the largest amplitude (degrees, to 2 digits) with a
+    !! drift <= DRIFT_MAX, LIMIT_SEARCH_MAX when none up to it drifts more.
+    subroutine amplitude_limits(prob, x, drift, limit, stat)
+        type(tensor_problem_t), intent(in) :: prob
+        real(dp), intent(in) :: x(6)
+        real(dp), intent(out) :: drift(:)       !! per row
+        real(dp), intent(out) :: limit(:)       !! per hang, degrees
+        type(status_t), intent(out) :: stat
+        real(dp), allocatable :: dc(:)
+        real(dp) :: lo, hi, mid, dm
+        type(rig_t) :: rg
+        integer :: c, h, k
+        stat%code = STATUS_OK
+        allocate (dc(size(prob%case_hang)))
+        dc = 0.0_dp
+        do c = 1, size(prob%case_hang)
+            if (prob%case_amp(c) <= 0.0_dp) cycle
+            call drift_at(prob%hangs(prob%case_hang(c)), prob%case_amp(c), dc(c), stat)
+            if (stat%code /= STATUS_OK) return
+        end do
+        drift = dc(prob%row_case)
+        do h = 1, size(prob%hangs)
+            lo = 0.0_dp
+            hi = 1.0_dp
+            do
+                call drift_at(prob%hangs(h), hi, dm, stat)
+                if (stat%code /= STATUS_OK) then
+                    stat%code = STATUS_OK
+                    dm = huge(1.0_dp)
+                end if
+                if (dm > DRIFT_MAX) exit
+                lo = hi
+                if (hi >= LIMIT_SEARCH_MAX) exit
+                hi = min(LIMIT_SEARCH_MAX, 2.0_dp*hi)
+            end do
+            if (lo < hi) then
+                do k = 1, 5
+                    if (lo > 0.0_dp) then
+                        mid = sqrt(lo*hi)
+                    else
+                        mid = 0.5_dp*hi
+                    end if
+                    call drift_at(prob%hangs(h), mid, dm, stat)
+                    if (stat%code /= STATUS_OK) then
+                        stat%code = STATUS_OK
+                        dm = huge(1.0_dp)
+                    end if
+                    if (dm > DRIFT_MAX) then
+                        hi = mid
+                    else
+                        lo = mid
+                    end if
+                end do
+            end if
+            limit(h) = round2(lo)
+        end do
+    contains
+        subroutine drift_at(hh, amp, dr, st)
+            type(hang_t), intent(in) :: hh
+            real(dp), intent(in) :: amp
+            real(dp), intent(out) :: dr
+            type(status_t), intent(out) :: st
+            real(dp) :: ad
+            dr = 0.0_dp
+            call hang_rig(prob%mass, prob%g, hh, x, rg, st)
+            if (st%code == STATUS_OK) call maxima_drift(rg, prob%acc, amp, DRIFT_CYCLES, dr, &
+                                                        ad, st)
+            if (st%code /= STATUS_OK) st%msg = hang_label(hh)//': '//st%msg
+        end subroutine drift_at
+        !> Two significant digits, rounded down.
+        pure real(dp) function round2(v)
+            real(dp), intent(in) :: v
+            real(dp) :: e
+            round2 = 0.0_dp
+            if (.not. (v > 0.0_dp)) return
+            e = 10.0_dp**(floor(log10(v)) - 1)
+            round2 = floor(v/e)*e
+        end function round2
+    end subroutine amplitude_limits
+
+    ! ------------------------------------------------------------------ the plan
+
+    !> The period of a candidate hang at small amplitude and its sensitivities: to x (6),
+    !! the three rotations, l, l_prime, b, b_prime, mass and g.
+    subroutine candidate_row(prob, h, x, t, a, sdir, srig, smass, sg, stat)
+        type(tensor_problem_t), intent(in) :: prob
+        type(hang_t), intent(in) :: h
+        real(dp), intent(in) :: x(6)
+        real(dp), intent(out) :: t, a(6), sdir(3), srig(4), smass, sg
+        type(status_t), intent(out) :: stat
+        real(dp) :: xp(6), tp, tm, hh, eps(3), v
+        type(hang_t) :: hp, hm
+        integer :: k
+        call case_period(prob, h, 0.0_dp, prob%mass, prob%g, x, t, stat)
+        if (stat%code /= STATUS_OK) return
+        hh = HX_LIN*maxval(x(1:3))
+        do k = 1, 6
+            xp = x
+            xp(k) = x(k) + hh
+            call case_period(prob, h, 0.0_dp, prob%mass, prob%g, xp, tp, stat)
+            if (stat%code /= STATUS_OK) return
+            xp(k) = x(k) - hh
+            call case_period(prob, h, 0.0_dp, prob%mass, prob%g, xp, tm, stat)
+            if (stat%code /= STATUS_OK) return
+            a(k) = (tp - tm)/(2.0_dp*hh)
+        end do
+        do k = 1, 3
+            eps = 0.0_dp
+            eps(k) = HX_LIN
+            call case_period(prob, turned_hang(h, eps), 0.0_dp, prob%mass, prob%g, x, tp, stat)
+            if (stat%code /= STATUS_OK) return
+            call case_period(prob, turned_hang(h, -eps), 0.0_dp, prob%mass, prob%g, x, tm, stat)
+            if (stat%code /= STATUS_OK) return
+            sdir(k) = (tp - tm)/(2.0_dp*HX_LIN)
+        end do
+        do k = 1, 4
+            hp = h
+            hm = h
+            v = rig_value(h, k)
+            call set_rig_value(hp, k, v*(1.0_dp + HX_LIN))
+            call set_rig_value(hm, k, v*(1.0_dp - HX_LIN))
+            call case_period(prob, hp, 0.0_dp, prob%mass, prob%g, x, tp, stat)
+            if (stat%code /= STATUS_OK) return
+            call case_period(prob, hm, 0.0_dp, prob%mass, prob%g, x, tm, stat)
+            if (stat%code /= STATUS_OK) return
+            srig(k) = (tp - tm)/(2.0_dp*HX_LIN*v)
+        end do
+        smass = -dot_product(x, a)/prob%mass
+        sg = -0.5_dp*t/prob%g
+    end subroutine candidate_row
+
+    !> The trace of the covariance of x for hangs with the given ups and alongs (body frame,
+    !! unit, along normal to up) on the rig h0, at small amplitude, each timed once with the
+    !! timing u u_t (s), under prob's other uncertainties; also the periods and u of each
+    !! entry.  Without any uncertainty of the period or the direction, each period counts
+    !! 1e-4 of itself.
+    subroutine design_trace(prob, h0, u_t, x, ups, alongs, trace, stat, periods, u_x)
+        type(tensor_problem_t), intent(in) :: prob  !! mass, g, accuracy, uncertainties
+        type(hang_t), intent(in) :: h0          !! the rig of every hang
+        real(dp), intent(in) :: u_t             !! timing u of each period (s)
+        real(dp), intent(in) :: x(6)            !! the tensor
+        real(dp), intent(in) :: ups(:, :), alongs(:, :)  !! 3 x n
+        real(dp), intent(out) :: trace
+        type(status_t), intent(out) :: stat
+        real(dp), intent(out), optional :: periods(:), u_x(:)
+        real(dp), allocatable :: t(:), a(:, :), sdir(:, :), srig(:, :), smass(:), sg(:)
+        real(dp) :: cc(6, 6)
+        integer :: k, n
+        type(hang_t) :: h
+        n = size(ups, 2)
+        allocate (t(n), a(n, 6), sdir(n, 3), srig(n, 4), smass(n), sg(n))
+        do k = 1, n
+            h = h0
+            h%up = ups(:, k)
+            h%along = alongs(:, k)
+            call candidate_row(prob, h, x, t(k), a(k, :), sdir(k, :), srig(k, :), smass(k), &
+                               sg(k), stat)
+            if (stat%code /= STATUS_OK) return
+        end do
+        call set_covariance(prob, u_t, t, a, sdir, srig, smass, sg, [(k, k=1, n)], cc)
+        trace = cc(1, 1) + cc(2, 2) + cc(3, 3) + cc(4, 4) + cc(5, 5) + cc(6, 6)
+        if (present(periods)) periods = t
+        if (present(u_x)) u_x = sqrt(max(0.0_dp, [(cc(k, k), k=1, 6)]))
+    end subroutine design_trace
+
+    !> The covariance of x from the candidate rows `set` (see design_trace).
+    subroutine set_covariance(prob, u_t, t, a, sdir, srig, smass, sg, set, cc)
+        type(tensor_problem_t), intent(in) :: prob
+        real(dp), intent(in) :: u_t, t(:), a(:, :), sdir(:, :), srig(:, :), smass(:), sg(:)
+        integer, intent(in) :: set(:)
+        real(dp), intent(out) :: cc(6, 6)
+        real(dp) :: nmat(6, 6), w(6), v(6, 6), ninv(6, 6), bk(6), sk(6), uc(6)
+        real(dp) :: sens(size(t), 6)
+        integer :: i, j, k
+        type(status_t) :: st
+        nmat = 0.0_dp
+        do j = 1, size(set)
+            i = set(j)
+            nmat = nmat + outer(a(i, :), a(i, :))/row_var(i)
+        end do
+        cc = huge(1.0_dp)/1.0e10_dp
+        call la_syev(nmat, w, v, st)
+        if (st%code /= STATUS_OK) return
+        if (.not. (w(1) > 1.0e-12_dp*w(6))) return
+        ninv = 0.0_dp
+        do k = 1, 6
+            ninv = ninv + outer(v(:, k), v(:, k))/w(k)
+        end do
+        cc = ninv
+        ! the common inputs: mass, g, l, l_prime, b, b_prime
+        sens(:, 1) = smass
+        sens(:, 2) = sg
+        sens(:, 3:6) = srig
+        uc = [prob%u%mass, prob%u%g, prob%u%rig]
+        do k = 1, 6
+            bk = 0.0_dp
+            do j = 1, size(set)
+                i = set(j)
+                bk = bk + a(i, :)*sens(i, k)/row_var(i)
+            end do
+            sk = -matmul(ninv, bk)
+            cc = cc + outer(sk, sk)*uc(k)**2
+        end do
+    contains
+        pure real(dp) function row_var(ii)
+            integer, intent(in) :: ii
+            row_var = u_t**2 + sum(sdir(ii, :)**2)*prob%u%direction**2
+            if (.not. (row_var > 0.0_dp)) row_var = (1.0e-4_dp*t(ii))**2
+        end function row_var
+    end subroutine set_covariance
+
+    !> n hangs among the 26 face, edge and corner directions that minimise the trace of
+    !! the covariance of x (see the module header), on the rig h0 with timing u u_t.
+    subroutine plan_hangs(prob, h0, u_t, x, n, plan, stat)
+        type(tensor_problem_t), intent(in) :: prob  !! mass, g, accuracy, uncertainties
+        type(hang_t), intent(in) :: h0          !! the rig of every hang
+        real(dp), intent(in) :: u_t             !! timing u of each period (s)
+        real(dp), intent(in) :: x(6)            !! the tensor
+        integer, intent(in) :: n                !! hangs, 6 .. 26
+        type(tensor_plan_t), intent(out) :: plan
+        type(status_t), intent(out) :: stat
+        real(dp) :: c(3, 26), t(26), a(26, 6), sdir(26, 3), srig(26, 4), smass(26), sg(26)
+        real(dp) :: cc(6, 6), best, tr
+        integer, allocatable :: set(:)
+        integer :: k, i, j, kb, it
+        logical :: in_set(26), improved
+        type(hang_t) :: h
+        c = candidate_directions()
+        do k = 1, 26
+            h = h0
+            h%up = c(:, k)
+            h%along = along_for(c(:, k))
+            call candidate_row(prob, h, x, t(k), a(k, :), sdir(k, :), srig(k, :), smass(k), &
+                               sg(k), stat)
+            if (stat%code /= STATUS_OK) then
+                stat%msg = 'the plan: '//stat%msg
+                return
+            end if
+        end do
+        ! start: the three faces and three edges (x, y, z, xy, xz, yz), then greedy
+        set = [1, 3, 5, first_of(1, 1, 0), first_of(1, 0, 1), first_of(0, 1, 1)]
+        set = set(1:min(n, 6))
+        in_set = .false.
+        in_set(set) = .true.
+        do while (size(set) < n)
+            kb = 0
+            best = huge(1.0_dp)
+            do k = 1, 26
+                if (in_set(k)) cycle
+                tr = trace_of([set, k])
+                if (tr < best) then
+                    best = tr
+                    kb = k
+                end if
+            end do
+            set = [set, kb]
+            in_set(kb) = .true.
+        end do
+        ! exchanges until none lowers the trace
+        best = trace_of(set)
+        do it = 1, 100
+            improved = .false.
+            do i = 1, size(set)
+                do j = 1, 26
+                    if (in_set(j)) cycle
+                    k = set(i)
+                    set(i) = j
+                    tr = trace_of(set)
+                    if (tr < best*(1.0_dp - 1.0e-12_dp)) then
+                        best = tr
+                        in_set(k) = .false.
+                        in_set(j) = .true.
+                        improved = .true.
+                    else
+                        set(i) = k
+                    end if
+                end do
+            end do
+            if (.not. improved) exit
+        end do
+        plan%n = n
+        allocate (plan%up(3, n), plan%along(3, n), plan%period(n))
+        do i = 1, n
+            plan%up(:, i) = c(:, set(i))
+            plan%along(:, i) = along_for(c(:, set(i)))
+            plan%period(i) = t(set(i))
+        end do
+        call set_covariance(prob, u_t, t, a, sdir, srig, smass, sg, set, cc)
+        plan%trace = best
+        plan%u_x = sqrt(max(0.0_dp, [(cc(k, k), k=1, 6)]))
+    contains
+        real(dp) function trace_of(s)
+            integer, intent(in) :: s(:)
+            real(dp) :: cv(6, 6)
+            integer :: m
+            call set_covariance(prob, u_t, t, a, sdir, srig, smass, sg, s, cv)
+            trace_of = sum([(cv(m, m), m=1, 6)])
+        end function trace_of
+        integer function first_of(i1, i2, i3)
+            integer, intent(in) :: i1, i2, i3
+            real(dp) :: v(3)
+            integer :: m
+            v = real([i1, i2, i3], dp)
+            v = v/norm2(v)
+            first_of = 1
+            do m = 1, 26
+                if (all(abs(c(:, m) - v) < 1.0e-12_dp)) then
+                    first_of = m
+                    return
+                end if
+            end do
+        end function first_of
+    end subroutine plan_hangs
+
+    ! ------------------------------------------------------------------ Monte Carlo
+
+    !> What a tensor Monte Carlo needs beyond the deck, as reals (the sweep's payload): the
+    !! seed, the counts, per hang its id, up, along, rig and mass centre and which rig
+    !! inputs are its own, per row its hang, period, cycles, amplitude, timing u and u_def,
+    !! the estimate, its axes, its first-order u, the chord matrix.
+    function tensor_mc_payload(prob, fit, seed) result(p)
+        type(tensor_problem_t), intent(in) :: prob
+        type(tensor_fit_t), intent(in) :: fit
+        integer, intent(in) :: seed
+        real(dp), allocatable :: p(:)
+        integer :: h, i, k, own
+        p = [real(seed, dp), real(size(prob%hangs), dp), real(size(prob%rows), dp)]
+        do h = 1, size(prob%hangs)
+            associate (hh => prob%hangs(h))
+                own = 0
+                do k = 1, 4
+                    if (hh%own(k)) own = own + 2**(k - 1)
+                end do
+                p = [p, real(hh%id, dp), real(hh%line, dp), hh%up, hh%along, hh%l, &
+                     hh%l_prime, hh%b, hh%b_prime, hh%cg_depth, hh%cg_offset, real(own, dp)]
+            end associate
+        end do
+        do i = 1, size(prob%rows)
+            associate (r => prob%rows(i))
+                p = [p, real(r%hang, dp), real(r%line, dp), r%period, r%cycles, r%amplitude, &
+                     fit%u_row(i), prob%u_def(i)]
+            end associate
+        end do
+        p = [p, fit%x, reshape(fit%axes, [9]), fit%u_x, reshape(fit%chord, [size(fit%chord)])]
+    end function tensor_mc_payload
+
+    !> The Monte Carlo task of a deck from its payload (tensor_mc_payload): the task rank 0
+    !! runs and the other ranks of an MPI run build.  ERR_DECK when the payload is not one.
+    subroutine tensor_mc_task(d, payload, task, stat)
+        type(deck_t), intent(in) :: d           !! the deck (mass, g, &tensor, accuracy)
+        real(dp), intent(in) :: payload(:)
+        type(tensor_mc_task_t), intent(out) :: task
+        type(status_t), intent(out) :: stat
+        type(hang_set_t) :: set
+        integer :: nh, n, h, i, j, k, own
+        stat%code = STATUS_OK
+        if (size(payload) < 3) then
+            call set_error(stat, ERR_DECK, 'tensor Monte Carlo: a payload too short')
+            return
+        end if
+        task%seed = nint(payload(1))
+        nh = nint(payload(2))
+        n = nint(payload(3))
+        if (nh < 1 .or. n < 1 .or. size(payload) /= 3 + 15*nh + 7*n + 21 + 6*n) then
+            call set_error(stat, ERR_DECK, 'tensor Monte Carlo: the payload does not match '// &
+                'its counts')
+            return
+        end if
+        allocate (set%hangs(nh), set%rows(n))
+        j = 3
+        do h = 1, nh
+            associate (hh => set%hangs(h), q => payload(j + 1:j + 15))
+                hh%id = nint(q(1))
+                hh%line = nint(q(2))
+                hh%up = q(3:5)
+                hh%along = q(6:8)
+                hh%l = q(9)
+                hh%l_prime = q(10)
+                hh%b = q(11)
+                hh%b_prime = q(12)
+                hh%cg_depth = q(13)
+                hh%cg_offset = q(14)
+                own = nint(q(15))
+                do k = 1, 4
+                    hh%own(k) = btest(own, k - 1)
+                end do
+            end associate
+            j = j + 15
+        end do
+        allocate (task%u_row(n))
+        do i = 1, n
+            associate (r => set%rows(i), q => payload(j + 1:j + 7))
+                r%hang = nint(q(1))
+                r%line = nint(q(2))
+                r%period = q(3)
+                r%cycles = q(4)
+                r%amplitude = q(5)
+                task%u_row(i) = q(6)
+            end associate
+            j = j + 7
+        end do
+        call problem_of(d, set, task%prob)
+        task%prob%u_def = payload(3 + 15*nh + 7:3 + 15*nh + 7*n:7)
+        task%x = payload(j + 1:j + 6)
+        task%axes = reshape(payload(j + 7:j + 15), [3, 3])
+        task%u_x = payload(j + 16:j + 21)
+        task%chord = reshape(payload(j + 22:j + 21 + 6*n), [6, n])
+        task%nest = MC_ESTIMATES
+    end subroutine tensor_mc_task
+
+    !> Sample k of a tensor Monte Carlo (tensor_mc_sample).
+    subroutine tensor_mc_point(self, k, est, stat)
+        class(tensor_mc_task_t), intent(in) :: self
+        integer, intent(in) :: k                !! sample number
+        real(dp), intent(out) :: est(:)         !! MC_ESTIMATES
+        type(status_t), intent(out) :: stat
+        call tensor_mc_sample(self, k, est, stat)
+    end subroutine tensor_mc_point
+
+    !> Monte Carlo sample k (see the module header): est = x (6), the principal moments
+    !! (3), the turns (rad) of axis 1 toward axes 2 and 3, of axis 2 toward 1 and 3, of
+    !! axis 3 toward 1 and 2.
+    subroutine tensor_mc_sample(task, k, est, stat)
+        type(tensor_mc_task_t), intent(in) :: task
+        integer, intent(in) :: k
+        real(dp), intent(out) :: est(:)
+        type(status_t), intent(out) :: stat
+        type(tensor_problem_t) :: p
+        type(rng_t) :: g
+        real(dp) :: eps(3), z(4), x(6), dx(6), w(3), v(3, 3), tol
+        real(dp), allocatable :: tc(:), tmeas(:)
+        integer :: h, i, j, it, m
+        est = 0.0_dp
+        g = rng_stream(task%seed, k)
+        p = task%prob
+        p%mass = task%prob%mass + p%u%mass*rng_normal(g)
+        p%g = task%prob%g + p%u%g*rng_normal(g)
+        do j = 1, 4
+            z(j) = rng_normal(g)
+        end do
+        do h = 1, size(p%hangs)
+            do j = 1, 4
+                if (.not. p%hangs(h)%own(j)) &
+                    call set_rig_value(p%hangs(h), j, rig_value(p%hangs(h), j) + p%u%rig(j)*z(j))
+            end do
+        end do
+        do h = 1, size(p%hangs)
+            do j = 1, 3
+                eps(j) = p%u%direction*rng_normal(g)
+            end do
+            p%hangs(h) = turned_hang(p%hangs(h), eps)
+            do j = 1, 4
+                z(j) = rng_normal(g)
+                if (p%hangs(h)%own(j)) call set_rig_value(p%hangs(h), j, &
+                    rig_value(p%hangs(h), j) + p%u%rig(j)*z(j))
+            end do
+        end do
+        allocate (tmeas(size(p%rows)))
+        do i = 1, size(p%rows)
+            tmeas(i) = p%rows(i)%period + task%u_row(i)*rng_normal(g)
+            z(1) = rng_normal(g)
+            if (p%rows(i)%amplitude > 0.0_dp) p%rows(i)%amplitude = &
+                max(0.0_dp, p%rows(i)%amplitude + p%u%amplitude*z(1))
+            tmeas(i) = tmeas(i) + sqrt(3.0_dp)*p%u_def(i)*(2.0_dp*rng_uniform(g) - 1.0_dp)
+        end do
+        deallocate (p%row_case, p%case_hang, p%case_amp)
+        call set_cases(p)
+        allocate (tc(size(p%case_hang)))
+        x = task%x
+        tol = X_TOL
+        if (any(p%case_amp > 0.0_dp)) tol = max(X_TOL, 10.0_dp*p%acc%rtol)
+        do it = 1, MAX_ITER
+            call model_periods(p, x, tc, stat)
+            if (stat%code /= STATUS_OK) exit
+            dx = -matmul(task%chord, tc(p%row_case) - tmeas)
+            x = x + dx
+            ! converged: at the model's resolution, or each step below 1e-3 of its u
+            if (maxval(abs(dx)) <= 10.0_dp*tol*maxval(x(1:3))) exit
+            if (all(task%u_x > 0.0_dp) .and. all(abs(dx) <= MC_STEP*task%u_x)) exit
+        end do
+        if (stat%code == STATUS_OK .and. it > MAX_ITER) call set_error(stat, ERR_NUMERIC, &
+            'the refit did not converge in '//itoa(MAX_ITER)//' steps')
+        if (stat%code /= STATUS_OK) then
+            stat%msg = 'Monte Carlo sample '//itoa(k)//': '//stat%msg
+            return
+        end if
+        call principal_axes(x, w, v, stat)
+        if (stat%code /= STATUS_OK) return
+        est(1:6) = x
+        est(7:9) = w
+        m = 9
+        do i = 1, 3
+            if (dot_product(v(:, i), task%axes(:, i)) < 0.0_dp) v(:, i) = -v(:, i)
+            do j = 1, 3
+                if (j == i) cycle
+                m = m + 1
+                est(m) = dot_product(v(:, i), task%axes(:, j))
+            end do
+        end do
+    end subroutine tensor_mc_sample
+
+end module tensor_fit
