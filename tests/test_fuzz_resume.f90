@@ -88,7 +88,9 @@ module test_fuzz_resume
         "&start mode = 'raised', amplitude = 45.0 /"//NL// &
         '&integration tau_end = 20000.0, dtau_out = 0.2, rtol = 1e-10, atol = 1e-12 /'//NL
     !> A chart for mpirun: 48 x 32 points (the box of input/box_chart.nml), about 2 s on 2
-    !! ranks: mpirun passes an interrupt on only after odls_base_sigkill_timeout (1 s).
+    !! ranks: mpirun passes an interrupt on only after odls_base_sigkill_timeout (1 s).  Its
+    !! monodromies by the variational system (sensitivities = 'differences'): the forward
+    !! sensitivities finish it in well under that second.
     character(len=*), parameter :: MPI_DECK = &
         "&scene title = 'fuzz resume: chart under mpirun', analyses = 'chart' /"//NL// &
         '&suspension b = 1.0, b_prime = 1.0, l = 2.0, l_prime = 2.0, g = 1.0 /'//NL// &
@@ -97,7 +99,8 @@ module test_fuzz_resume
         '      r = 2.06155281280883, lambda = 1.325817663668033, sway_depth = 4 /'//NL// &
         '&floquet amplitude = 45.0, segments = 1, rtol = 1e-6 /'//NL// &
         "&chart x = 'l', x_min = 0.5, x_max = 8.0, nx = 48, y = 'amplitude', y_min = 2.0, "// &
-        'y_max = 90.0, ny = 32 /'//NL
+        'y_max = 90.0, ny = 32 /'//NL// &
+        "&integration sensitivities = 'differences' /"//NL
     !> A short simulation, for --out.
     character(len=*), parameter :: SHORT_DECK = &
         "&scene title = 'fuzz resume: --out', analyses = 'simulate' /"//NL// &
