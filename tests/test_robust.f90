@@ -434,9 +434,9 @@ contains
     !! 1e7 output rows, Floquet with b = 1e-300.  A slender body (I1 = 1e-5 m b'^2) at 90
     !! degrees, 40-80 s a point before the exact Z and the structured BDF solve, is solved
     !! (exit 0, a finite multiplier, its 2 x 2 chart with no failed point); at the true edge
-    !! (I1 = 1e-6 with I2 = I3 = 1, 179 degrees, rtol 1e-12: I2 = I3 = 0.1 became solvable
-    !! with the monodromy as forward sensitivities) a point fails on its step budget with a
-    !! message, and a chart marks such points -2.
+    !! (I1 = 1e-6, 179 degrees, rtol 1e-12, the monodromy by the variational system:
+    !! sensitivities = 'differences'; the forward sensitivities solve that point) a point
+    !! fails on its step budget with a message, and a chart marks such points -2.
     subroutine test_slow(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
@@ -445,8 +445,8 @@ contains
             '&body mass = 1.0, inertia = 1e-5, 0.1, 0.1, r = 0.7071067811865476, '// &
             'lambda = 0.7853981633974483 /'
         character(len=*), parameter :: NEEDLE = &
-            '&body mass = 1.0, inertia = 1e-6, 1, 1, r = 0.7071067811865476, '// &
-            'lambda = 0.7853981633974483 /'
+            '&body mass = 1.0, inertia = 1e-6, 0.1, 0.1, r = 0.7071067811865476, '// &
+            'lambda = 0.7853981633974483 /'//NL//"&integration sensitivities = 'differences' /"
         real(dp) :: modulus
         logical :: found
         integer :: ex
