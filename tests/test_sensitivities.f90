@@ -2,8 +2,9 @@
 !! against an exact solution, the record model's derivatives against differences of whole
 !! runs (every fit parameter and some budget inputs, symmetric and asymmetric rig, small and
 !! large amplitude, LSODA and Radau), a record fit and its budget by sensitivities against
-!! the same by differences of runs, and the monodromy as the orbit's sensitivities against
-!! the variational equations integrated with the orbit.
+!! the same by differences of runs, the monodromy as the orbit's sensitivities against
+!! the variational equations integrated with the orbit, and simulate's global error within
+!! 10 rtol.
 module test_sensitivities
     use kinds, only: dp, deg
     use status, only: status_t
@@ -19,6 +20,12 @@ module test_sensitivities
     use identify, only: identify_result_t, identify_record
     use geometry, only: pendulum_t
     use floquet, only: floquet_result_t, floquet_analysis
+    use rig, only: start_state
+    use bifilar_model, only: NSTATE
+    use kane_run, only: kane_run_t, kane_run_start
+    use run_loop, only: drive
+    use keep_sink, only: keep_t
+    use work_precision, only: trajectory_errors
     implicit none
     private
 
@@ -48,6 +55,7 @@ contains
             call test_fit(t)
         if (t%want('sensitivities: monodromy, forward = variational system')) &
             call test_monodromy(t)
+        if (t%want('sensitivities: global error within 10 rtol')) call test_global_error(t)
     end subroutine run_sensitivities_tests
 
     ! ---- the oscillator
@@ -380,6 +388,71 @@ contains
             end do
         end do
     end subroutine test_monodromy
+
+    !> simulate's run (kane_run with global = .true.) of the cylinder (input/cylinder_l180.nml)
+    !! and of it with b = 1.3 b' released from 80 degrees, at rtol 1e-7 and 1e-10, against
+    !! a run at rtol/1000: the largest angle error over the rows within 10 rtol (the whole
+    !! range and the other scenes: bench_global_error in make bench).
+    subroutine test_global_error(t)
+        type(tester_t), intent(inout) :: t
+        real(dp), parameter :: rtols(2) = [1.0e-7_dp, 1.0e-10_dp]
+        type(deck_t) :: d
+        type(status_t) :: st
+        type(rig_t) :: rg
+        type(start_t) :: s0
+        type(pendulum_t) :: p
+        real(dp) :: y0(NSTATE), th0(5), eth, eq, ee
+        real(dp), allocatable :: times(:), ys(:, :), yref(:, :)
+        integer :: k, j, n, i
+        character(len=60) :: label
+        call read_deck('input/cylinder_l180.nml', d, st)
+        call t%check('sensitivities: global error deck'//msg_of(st), st%code == 0)
+        if (st%code /= 0) return
+        n = nint(d%tau_end/d%dtau_out)
+        allocate (times(0:n), ys(NSTATE, 0:n), yref(NSTATE, 0:n))
+        do i = 0, n
+            times(i) = d%dtau_out*i
+        end do
+        do k = 1, 2
+            rg = rig_of(d)
+            s0 = start_of(d)
+            if (k == 2) then
+                rg%b = 1.3_dp*rg%b_prime
+                s0%amplitude = 80.0_dp
+            end if
+            call make_pendulum(rg, p, st)
+            if (st%code == 0) call start_state(s0, p, y0, th0, st)
+            call t%check('sensitivities: global error scene'//msg_of(st), st%code == 0)
+            if (st%code /= 0) cycle
+            do j = 1, size(rtols)
+                write (label, '(a,a,es8.1)') trim(merge('cylinder_l180         ', &
+                    'b = 1.3 b'', 80 degrees', k == 1)), ', rtol ', rtols(j)
+                call run(rtols(j)/1000, rtols(j)/1.0e5_dp, .false., yref)
+                if (st%code == 0) call run(rtols(j), rtols(j)/100, .true., ys)
+                call t%check('sensitivities: global error runs, '//trim(label)//msg_of(st), &
+                             st%code == 0)
+                if (st%code /= 0) cycle
+                call trajectory_errors(p, ys, yref, eth, eq, ee)
+                call t%check('sensitivities: global error within 10 rtol, '//trim(label), &
+                             eth <= 10.0_dp*rtols(j) .and. eth > 0.0_dp)
+            end do
+        end do
+    contains
+        subroutine run(rt, at, global, yout)
+            real(dp), intent(in) :: rt, at
+            logical, intent(in) :: global
+            real(dp), intent(out) :: yout(:, 0:)
+            type(kane_run_t) :: m
+            type(keep_t) :: sink
+            yout = 0.0_dp
+            call kane_run_start(m, p, y0, th0(3), rt, at, SOLVER_LSODA, times(n), 'test', st, &
+                                global=global)
+            if (st%code /= 0) return
+            allocate (sink%ys(NSTATE, 0:n))
+            call drive(m, times, sink, st)
+            if (st%code == 0) yout = sink%ys
+        end subroutine run
+    end subroutine test_global_error
 
     !> The largest distance from a multiplier of a to the nearest of b, relative to
     !! max(1, |b|) (the sets, whatever the order of a conjugate pair or of equal moduli).
