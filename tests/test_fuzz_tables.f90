@@ -22,6 +22,7 @@ module test_fuzz_tables
     use hang_table, only: hang_set_t, read_hangs
     use work_estimate, only: check_record_times, check_timings, periods_runs
     use checkpoint, only: checkpoint_write, checkpoint_read
+    use tensor, only: tensor_ready
     implicit none
     private
 
@@ -371,12 +372,12 @@ contains
         type(hang_set_t) :: set
         type(status_t) :: st
         character(len=:), allocatable :: base, text, path, what
-        integer :: k, i, kind, nbad(3), counts(2)
-        logical :: valid
+        integer :: k, i, kind, nbad(3), counts(3)
+        logical :: valid, must_refuse
         character(len=120) :: first_bad(3)
         character(len=*), parameter :: WHAT_BAD(3) = [character(len=48) :: &
             'refusal not one line naming the table', 'taken value not finite or in range', &
-            'valid mutation refused']
+            'unit mistake not refused or valid one refused']
         call read_deck('input/tensor_example.nml', d0, st)
         call t%check('fuzz_tables: input/tensor_example.nml read', st%code == STATUS_OK)
         if (st%code /= STATUS_OK) return
@@ -390,11 +391,13 @@ contains
             d%tensor_hangs = 'hangs.csv'
             d%tensor_hangs_path = path
             valid = .false.
+            must_refuse = .false.
             kind = int(10*rnd(state))
             what = 'kind '//itoa(kind)
             select case (kind)
             case (0)
                 text = scale_column(base, 8, 1000.0_dp)
+                must_refuse = .true.
                 what = 'periods in ms'
             case (1)
                 text = scale_column(base, 8, -1.0_dp)
@@ -443,7 +446,16 @@ contains
                 if (valid) call bad(3, what//': '//st%msg)
                 cycle
             end if
-            counts(2) = counts(2) + 1
+            ! the analysis's preconditions (each hang's rig, the periods against it)
+            call tensor_ready(d, st)
+            if (st%code /= STATUS_OK) then
+                counts(2) = counts(2) + 1
+                if (.not. one_line_naming(st%msg, 'hangs.csv')) call bad(1, what//': '//st%msg)
+                if (valid) call bad(3, what//': '//st%msg)
+            else
+                counts(3) = counts(3) + 1
+                if (must_refuse) call bad(3, what)
+            end if
             do i = 1, size(set%rows)
                 if (.not. (ieee_is_finite(set%rows(i)%period) .and. set%rows(i)%period > 0.0_dp &
                            .and. ieee_is_finite(set%rows(i)%cycles) .and. &
@@ -457,14 +469,14 @@ contains
                     call bad(2, what//' hang '//itoa(i))
             end do
         end do
-        write (*, '(a,3(i0,a))') '   fuzz_tables: ', N_HANGS, ' tables of hangs: ', &
-            counts(1), ' refused, ', counts(2), ' taken'
+        write (*, '(a,4(i0,a))') '   fuzz_tables: ', N_HANGS, ' tables of hangs: ', &
+            counts(1), ' refused by the reader, ', counts(2), ' by the analysis''s checks, ', &
+            counts(3), ' taken'
         do i = 1, size(nbad)
             call t%check('fuzz_tables: hangs: '//trim(WHAT_BAD(i))//': '//itoa(nbad(i))// &
                          ' '//trim(first_bad(i)), nbad(i) == 0)
         end do
-        call t%check('fuzz_tables: hangs: some refused, some taken', &
-                     counts(1) > 0 .and. counts(2) > 0)
+        call t%check('fuzz_tables: hangs: some refused, some taken', all(counts > 0))
 
     contains
 
