@@ -26,7 +26,7 @@ module test_fuzz_tables
     implicit none
     private
 
-    public :: run_fuzz_table_tests
+    public :: run_fuzz_table_tests, scale_column, insert_bytes, file_text
 
     character(len=*), parameter :: SCRATCH = 'build/test_fuzz_tables'
     !> Cases of each kind (records, tables of releases, tables of hangs, checkpoints).
