@@ -75,7 +75,7 @@ contains
                     'refusals, the chart', run_floquet_tests), &
             suite_t('extreme', 'model-validity checks, the decks of input/extreme/ and '// &
                     'input/, slack and snap', run_extreme_tests), &
-            suite_t('fuzz', 'about 2000 hostile decks and records through the executable', &
+            suite_t('fuzz', 'about 2000 hostile decks, records, hangs through the executable', &
                     run_fuzz_tests), &
             suite_t('fuzz_resume', 'checkpoints damaged, forged and not files; signals at '// &
                     'every stage; --out limits', run_fuzz_resume_tests), &

@@ -1,4 +1,5 @@
-!> The fuzz test: about 2000 hostile decks, each a mutation of a shipped deck made
+!> The fuzz test: about 2000 hostile decks (and 80 of analysis tensor with their tables of
+!! hangs mutated), each a mutation of a shipped deck made
 !! small (every group, the analyses, the model, broken structure, random bytes, mutated
 !! records of analysis identify), run through the executable in batches; every deck ends in
 !! one line, a finished one with its files whole, a failed one with nothing left.
