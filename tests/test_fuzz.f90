@@ -1,9 +1,10 @@
-!> The fuzz test: about 2000 hostile decks (and 80 of analysis tensor with their tables of
+!> The fuzz test: about 2000 hostile decks (and 24 of analysis tensor with their tables of
 !! hangs mutated), each a mutation of a shipped deck made
 !! small (every group, the analyses, the model, broken structure, random bytes, mutated
 !! records of analysis identify), run through the executable in batches; every deck ends in
 !! one line, a finished one with its files whole, a failed one with nothing left.
 module test_fuzz
+    use, intrinsic :: iso_fortran_env, only: compiler_options
     use kinds, only: dp
     use status, only: status_t
     use testing, only: tester_t, write_text, file_has, count_lines, no_nan, upper, fresh_dir
@@ -29,10 +30,12 @@ module test_fuzz
     !> Issue 22's rule: a small deck ends within FUZZ_SMALL_SECONDS or has said on one line
     !! ('bifilar: note:') what it does and how long it takes; a batch slower than that is
     !! run again deck by deck under `timeout FUZZ_SMALL_SECONDS`.
+    !! (In the checking build, -fcheck=all and no optimisation, three times as long.)
     integer, parameter :: FUZZ_SMALL_SECONDS = 10
     !> Decks of analysis tensor (input/tensor_example.nml made small: &tensor and its
-    !! table of hangs mutated), after the seeds' decks.
-    integer, parameter :: FUZZ_TENSOR = 80
+    !! table of hangs mutated), after the seeds' decks, FUZZ_TENSOR_BATCH at a time (a
+    !! tensor deck takes about 0.5 s, 2 s in the checking build).
+    integer, parameter :: FUZZ_TENSOR = 24, FUZZ_TENSOR_BATCH = 8
     !> The groups of a deck, in the order the fuzz test writes them.
     integer, parameter :: NGROUPS = 12
     character(len=12), parameter :: GROUPS(NGROUPS) = [character(len=12) :: 'scene', &
@@ -93,7 +96,7 @@ contains
         type(record_t) :: rec
         integer(8) :: state
         integer :: is, k, kb, ndeck, nbad(8), counts(0:5), worst, ex, nb, j, mutated(NGROUPS)
-        integer :: ran(NRAN), kept, nslow, ntensor_mut
+        integer :: ran(NRAN), kept, nslow, ntensor_mut, small_seconds
         logical :: ckpt
         character(len=*), parameter :: dir = SCRATCH, outdir = dir//'/out'
         character(len=64) :: names(FUZZ_BATCH)
@@ -119,6 +122,8 @@ contains
         kept = 0
         ndeck = 0
         nslow = 0
+        small_seconds = FUZZ_SMALL_SECONDS
+        if (index(compiler_options(), 'fcheck') > 0) small_seconds = 3*FUZZ_SMALL_SECONDS
         ntensor_mut = 0
         do is = 1, size(FUZZ_SEEDS)
             state = FUZZ_SEEDS(is)
@@ -137,8 +142,8 @@ contains
             end do
         end do
         ! analysis tensor: its deck made small, &tensor and the table of hangs mutated
-        do kb = 1, FUZZ_TENSOR, FUZZ_BATCH
-            nb = min(FUZZ_BATCH, FUZZ_TENSOR - kb + 1)
+        do kb = 1, FUZZ_TENSOR, FUZZ_TENSOR_BATCH
+            nb = min(FUZZ_TENSOR_BATCH, FUZZ_TENSOR - kb + 1)
             do j = 1, nb
                 names(j) = 'ft_'//itoa(kb + j - 1)
                 paths(j) = dir//'/'//trim(names(j))//'.nml'
@@ -151,7 +156,7 @@ contains
         write (*, '(a,i0,a,i0,a)') '   fuzz: ', FUZZ_TENSOR, ' of them tensor decks (', &
             ntensor_mut, ' with &tensor or the table of hangs mutated)'
         write (*, '(a,i0,a,i0,a)') '   fuzz: ', nslow, ' decks ran past ', &
-            FUZZ_SMALL_SECONDS, ' s alone (each must have said so on a note line)'
+            small_seconds, ' s alone (each must have said so on a note line)'
         write (*, '(a,i0,a,i0,a,6(i0,a))') '   fuzz: ', ndeck, ' decks from ', size(bases), &
             ' shipped decks; exit 0: ', counts(0), ', 2: ', counts(2), ', 3: ', counts(3), &
             ', 4: ', counts(4), ', 5: ', counts(5), ', other: ', counts(1), ''
@@ -203,7 +208,7 @@ contains
                 call rerun_alone(n)
                 return
             end if
-            if (real(c1 - c0, dp)/real(rate, dp) > FUZZ_SMALL_SECONDS) then
+            if (real(c1 - c0, dp)/real(rate, dp) > small_seconds) then
                 call slow_alone(n)
                 call fresh_dir(outdir)
                 call execute_command_line(cmd//' --out '//outdir//' > '//dir//'/stdout 2> '// &
@@ -283,7 +288,7 @@ contains
             do i = 1, n
                 call fresh_dir(outdir)
                 e = -1
-                call execute_command_line('timeout '//itoa(FUZZ_SMALL_SECONDS)//' '//exe// &
+                call execute_command_line('timeout '//itoa(small_seconds)//' '//exe// &
                     ' '//trim(paths(i))//' --out '//outdir//' > '//dir//'/stdout 2> '//dir// &
                     '/stderr', exitstat=e)
                 if (e == 124) then

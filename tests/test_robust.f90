@@ -698,17 +698,23 @@ contains
                      d//'/mc.nml: tensor_mc: ', .true.) == 1, file_has(d//'/stderr', &
                      'of 1000000 points after')]))
         ! identify: refused at once
-        call refused('p1000', "-e 's/l_prime = 1.20,/l_prime = 1.05,/' -e 's/periods = "// &
+        call audit_refused(t, d, o, x, 'p1000', "-e 's/l_prime = 1.20,/l_prime = 1.05,/' -e 's/periods = "// &
                      "1.41564, 1.44107, 1.52913,/periods = 1000,/' -e 's/amplitudes = 10.0, "// &
                      "30.0, 60.0,/amplitudes = 10.0,/'", 'input/identify_periods.nml', 4, &
                      'radius of gyration')
-        call record('ms', '$1*1000, $2', 4, 'likely: times in other units than s (ms)')
-        call record('gap', '($1 > 10 ? $1 + 1000 : $1), $2', 2, 'a gap of 1.000E+03 s')
-        call record('epoch', '$1 + 1.7e9, $2', 2, 'from the release')
-        call record('degs', '$1, $2*57.29577951308232', 2, 'they look like deg/s')
+        ! a period at 179.9999 deg with u_amplitude = 0: no step across 180 deg, no NaN
+        call audit_refused(t, d, o, x, 'p180', "-e 's/periods = 1.41564, 1.44107, 1.52913,/periods = 3.0,/' "// &
+                     "-e 's/amplitudes = 10.0, 30.0, 60.0,/amplitudes = 179.9999,/' -e "// &
+                     "'s/u_amplitude = 0.5/u_amplitude = 0/' -e 's/monte_carlo = 2000/"// &
+                     "monte_carlo = 0/'", 'input/identify_periods.nml', 4, 'no rigid body')
+        call t%check('audit: p180: no NaN in the message', .not. file_has(d//'/stderr', 'NaN'))
+        call audit_record(t, d, o, x, 'ms', '$1*1000, $2', 4, 'likely: times in other units than s (ms)')
+        call audit_record(t, d, o, x, 'gap', '($1 > 10 ? $1 + 1000 : $1), $2', 2, 'a gap of 1.000E+03 s')
+        call audit_record(t, d, o, x, 'epoch', '$1 + 1.7e9, $2', 2, 'from the release')
+        call audit_record(t, d, o, x, 'degs', '$1, $2*57.29577951308232', 2, 'they look like deg/s')
         call execute_command_line("awk -F, 'NR<=2{print;next}{$8=$8*1000; print}' OFS=, "// &
             'input/tensor_example_hangs.csv > '//d//'/hangs_ms.csv')
-        call refused('hangs_ms', "-e 's/tensor_example_hangs.csv/hangs_ms.csv/'", &
+        call audit_refused(t, d, o, x, 'hangs_ms', "-e 's/tensor_example_hangs.csv/hangs_ms.csv/'", &
                      'input/tensor_example.nml', 4, '(ms)')
         ! 100 periods on an asymmetric rig with monte_carlo = 10: its work said at the start
         call execute_command_line("sed -e 's/l_prime = 1.20,/l_prime = 1.05,/' -e 's/periods"// &
@@ -720,31 +726,32 @@ contains
                      'on one note line (exit '//itoa(ex)//')', all([count_lines(d//'/stderr', &
                      'bifilar: note: '//d//'/p100.nml: identify: about ', .true.) == 1, &
                      file_has(d//'/stderr', '100 periods of the full model')]))
-    contains
-
-        !> A deck made by sed from base: exit status want and one line holding word.
-        subroutine refused(nm, sed, base, want, word)
-            character(len=*), intent(in) :: nm, sed, base, word
-            integer, intent(in) :: want
-            integer :: e
-            call execute_command_line('sed '//sed//' '//base//' > '//d//'/'//nm//'.nml')
-            e = run('timeout 10 '//x//' '//d//'/'//nm//'.nml --out '//o, d)
-            call t%check('audit: '//nm//': refused at once, exit '//itoa(e)//' (want '// &
-                         itoa(want)//'), one line saying "'//word//'"', all([e == want, &
-                         count_lines(d//'/stderr') == 1, file_has(d//'/stderr', word), &
-                         count_lines(d//'/stderr', 'bifilar: error (', .true.) == 1]))
-        end subroutine refused
-
-        !> The example record rewritten by awk (columns expr), in a copy of its deck.
-        subroutine record(nm, expr, want, word)
-            character(len=*), intent(in) :: nm, expr, word
-            integer, intent(in) :: want
-            call execute_command_line("awk '/^#/{print;next}{printf ""%.6f %s\n"", "// &
-                expr//"}' input/identify_record_swing.dat > "//d//'/rec_'//nm//'.dat')
-            call refused('r_'//nm, "-e 's/identify_record_swing.dat/rec_"//nm//".dat/'", &
-                         'input/identify_record.nml', want, word)
-        end subroutine record
-
     end subroutine test_audit_long
+
+    !> A deck made by sed from base: exit status want and one line holding word.
+    subroutine audit_refused(t, d, o, x, nm, sed, base, want, word)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: d, o, x, nm, sed, base, word
+        integer, intent(in) :: want
+        integer :: e
+        call execute_command_line('sed '//sed//' '//base//' > '//d//'/'//nm//'.nml')
+        e = run('timeout 10 '//x//' '//d//'/'//nm//'.nml --out '//o, d)
+        call t%check('audit: '//nm//': refused at once, exit '//itoa(e)//' (want '// &
+                     itoa(want)//'), one line saying "'//word//'"', all([e == want, &
+                     count_lines(d//'/stderr') == 1, file_has(d//'/stderr', word), &
+                     count_lines(d//'/stderr', 'bifilar: error (', .true.) == 1]))
+    end subroutine audit_refused
+
+    !> The example record rewritten by awk (columns expr), in a copy of its deck.
+    subroutine audit_record(t, d, o, x, nm, expr, want, word)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: d, o, x, nm, expr, word
+        integer, intent(in) :: want
+        call execute_command_line("awk '/^#/{print;next}{printf ""%.6f %s\n"", "// &
+            expr//"}' input/identify_record_swing.dat > "//d//'/rec_'//nm//'.dat')
+        call audit_refused(t, d, o, x, 'r_'//nm, "-e 's/identify_record_swing.dat/rec_"// &
+                           nm//".dat/'", 'input/identify_record.nml', want, word)
+    end subroutine audit_record
+
 
 end module test_robust

@@ -290,7 +290,7 @@ contains
         do
             read (u, '(a)', iostat=ios) line
             if (ios /= 0) exit
-            ls = [ls, line]
+            ls = [character(len=4096) :: ls, line]
         end do
         close (u)
         n = size(ls)
