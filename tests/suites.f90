@@ -15,6 +15,7 @@ module suites
     use test_extreme, only: run_extreme_tests
     use test_fuzz, only: run_fuzz_tests
     use test_fuzz_resume, only: run_fuzz_resume_tests
+    use test_fuzz_tables, only: run_fuzz_table_tests
     use test_work_precision, only: run_work_precision_tests
     use test_elastic, only: run_elastic_tests
     use test_elastic_jac, only: run_elastic_jac_tests
@@ -75,10 +76,12 @@ contains
                     'refusals, the chart', run_floquet_tests), &
             suite_t('extreme', 'model-validity checks, the decks of input/extreme/ and '// &
                     'input/, slack and snap', run_extreme_tests), &
-            suite_t('fuzz', 'about 2000 hostile decks and records through the executable', &
+            suite_t('fuzz', 'about 2000 hostile decks, records, hangs through the executable', &
                     run_fuzz_tests), &
             suite_t('fuzz_resume', 'checkpoints damaged, forged and not files; signals at '// &
                     'every stage; --out limits', run_fuzz_resume_tests), &
+            suite_t('fuzz_tables', 'records, periods, hangs, checkpoints mutated; '// &
+                    'read in process', run_fuzz_table_tests), &
             suite_t('work_precision', 'work-precision curves, their reference, RK4''s '// &
                     'order, the error estimate', run_work_precision_tests), &
             suite_t('elastic', 'elastic cables: conversions, energy, convergence to the '// &

@@ -1,8 +1,10 @@
-!> The fuzz test: about 2000 hostile decks, each a mutation of a shipped deck made
+!> The fuzz test: about 2000 hostile decks (and 24 of analysis tensor with their tables of
+!! hangs mutated), each a mutation of a shipped deck made
 !! small (every group, the analyses, the model, broken structure, random bytes, mutated
 !! records of analysis identify), run through the executable in batches; every deck ends in
 !! one line, a finished one with its files whole, a failed one with nothing left.
 module test_fuzz
+    use, intrinsic :: iso_fortran_env, only: compiler_options
     use kinds, only: dp
     use status, only: status_t
     use testing, only: tester_t, write_text, file_has, count_lines, no_nan, upper, fresh_dir
@@ -11,6 +13,7 @@ module test_fuzz
     use design, only: DESIGN_STAGES
     use deck, only: deck_t, read_deck, deck_echo, OUTPUT_COLUMNS
     use records, only: record_t, read_record
+    use test_fuzz_tables, only: scale_column, insert_bytes, file_text
     implicit none
     private
 
@@ -23,7 +26,16 @@ module test_fuzz
     integer, parameter :: FUZZ_SEEDS(4) = [20261121, 1966, 4242, 31337]
     integer, parameter :: FUZZ_PER_SEED = 520
     integer, parameter :: FUZZ_BATCH = 40
-    integer, parameter :: FUZZ_BATCH_SECONDS = 120, FUZZ_DECK_SECONDS = 20
+    integer, parameter :: FUZZ_BATCH_SECONDS = 120, FUZZ_DECK_SECONDS = 10
+    !> Issue 22's rule: a small deck ends within FUZZ_SMALL_SECONDS or has said on one line
+    !! ('bifilar: note:') what it does and how long it takes; a batch slower than that is
+    !! run again deck by deck under `timeout FUZZ_SMALL_SECONDS`.
+    !! (In the checking build, -fcheck=all and no optimisation, three times as long.)
+    integer, parameter :: FUZZ_SMALL_SECONDS = 10
+    !> Decks of analysis tensor (input/tensor_example.nml made small: &tensor and its
+    !! table of hangs mutated), after the seeds' decks, FUZZ_TENSOR_BATCH at a time (a
+    !! tensor deck takes about 0.5 s, 2 s in the checking build).
+    integer, parameter :: FUZZ_TENSOR = 24, FUZZ_TENSOR_BATCH = 8
     !> The groups of a deck, in the order the fuzz test writes them.
     integer, parameter :: NGROUPS = 12
     character(len=12), parameter :: GROUPS(NGROUPS) = [character(len=12) :: 'scene', &
@@ -33,9 +45,10 @@ module test_fuzz
         GR_INTEGRATION = 5, GR_CABLES = 6, GR_FLOQUET = 7, GR_CHART = 8, GR_OUTPUT = 9, &
         GR_DESIGN = 10, GR_DAMPING = 11, GR_MEASUREMENT = 12
     !> The analyses the fuzz test must see finish (identify from periods and from a record).
-    integer, parameter :: NRAN = 7
+    integer, parameter :: NRAN = 8
     character(len=16), parameter :: RAN_NAMES(NRAN) = [character(len=16) :: 'simulate', &
-        'floquet', 'chart', 'work_precision', 'design', 'identify periods', 'identify record']
+        'floquet', 'chart', 'work_precision', 'design', 'identify periods', 'identify record', &
+        'tensor']
     !> The fuzz decks' record: the shipped record's first FUZZ_RECORD_SPAN seconds, every
     !! FUZZ_RECORD_EVERY-th sample (50 samples); Monte Carlo of at most FUZZ_MC_MAX samples.
     character(len=*), parameter :: FUZZ_RECORD = 'rec_base.dat'
@@ -82,19 +95,20 @@ contains
         type(base_t), allocatable :: bases(:)
         type(record_t) :: rec
         integer(8) :: state
-        integer :: is, k, kb, ndeck, nbad(7), counts(0:5), worst, ex, nb, j, mutated(NGROUPS)
-        integer :: ran(NRAN), kept
+        integer :: is, k, kb, ndeck, nbad(8), counts(0:5), worst, ex, nb, j, mutated(NGROUPS)
+        integer :: ran(NRAN), kept, nslow, ntensor_mut, small_seconds
         logical :: ckpt
         character(len=*), parameter :: dir = SCRATCH, outdir = dir//'/out'
         character(len=64) :: names(FUZZ_BATCH)
         character(len=256) :: paths(FUZZ_BATCH)
-        character(len=200) :: first_bad(7)
+        character(len=200) :: first_bad(8)
         character(len=:), allocatable :: list
-        character(len=*), parameter :: WHAT(7) = [character(len=60) :: &
+        character(len=*), parameter :: WHAT(8) = [character(len=60) :: &
             'a signal, a run-time error or a hang', 'not exactly one line naming the deck', &
             'a file of a failed deck left', 'NaN, Inf or **** written', &
             'exit status not the worst of the decks''', 'a kind of error that is no exit status', &
-            'a finished analysis''s file missing, empty or cut short']
+            'a finished analysis''s file missing, empty or cut short', &
+            'past 10 s with no ''bifilar: note:'' line']
         call fresh_dir(dir)
         call load_bases(dir, bases, rec)
         call t%check('fuzz: shipped decks to mutate (at least 30)', size(bases) >= 30)
@@ -107,6 +121,10 @@ contains
         ran = 0
         kept = 0
         ndeck = 0
+        nslow = 0
+        small_seconds = FUZZ_SMALL_SECONDS
+        if (index(compiler_options(), 'fcheck') > 0) small_seconds = 3*FUZZ_SMALL_SECONDS
+        ntensor_mut = 0
         do is = 1, size(FUZZ_SEEDS)
             state = FUZZ_SEEDS(is)
             do kb = 1, FUZZ_PER_SEED, FUZZ_BATCH
@@ -123,6 +141,22 @@ contains
                 call run_batch(nb)
             end do
         end do
+        ! analysis tensor: its deck made small, &tensor and the table of hangs mutated
+        do kb = 1, FUZZ_TENSOR, FUZZ_TENSOR_BATCH
+            nb = min(FUZZ_TENSOR_BATCH, FUZZ_TENSOR - kb + 1)
+            do j = 1, nb
+                names(j) = 'ft_'//itoa(kb + j - 1)
+                paths(j) = dir//'/'//trim(names(j))//'.nml'
+                call write_tensor_deck(dir, trim(names(j)), state, ntensor_mut)
+            end do
+            ndeck = ndeck + nb
+            ckpt = .false.
+            call run_batch(nb)
+        end do
+        write (*, '(a,i0,a,i0,a)') '   fuzz: ', FUZZ_TENSOR, ' of them tensor decks (', &
+            ntensor_mut, ' with &tensor or the table of hangs mutated)'
+        write (*, '(a,i0,a,i0,a)') '   fuzz: ', nslow, ' decks ran past ', &
+            small_seconds, ' s alone (each must have said so on a note line)'
         write (*, '(a,i0,a,i0,a,6(i0,a))') '   fuzz: ', ndeck, ' decks from ', size(bases), &
             ' shipped decks; exit 0: ', counts(0), ', 2: ', counts(2), ', 3: ', counts(3), &
             ', 4: ', counts(4), ', 5: ', counts(5), ', other: ', counts(1), ''
@@ -143,6 +177,7 @@ contains
                          trim(first_bad(j)), nbad(j) == 0)
         end do
         call t%check('fuzz: at least 2000 decks', ndeck >= 2000)
+        call t%check('fuzz: tensor decks mutated', ntensor_mut > 0)
         call t%check('fuzz: every group mutated', all(mutated > 0))
         call t%check('fuzz: every analysis finished at least once', all(ran > 0))
         call t%check('fuzz: some decks run, some are refused', counts(0) > 0 .and. counts(2) > 0)
@@ -157,6 +192,7 @@ contains
             integer :: i, st, w, wk, wt
             logical :: one_line
             character(len=:), allocatable :: kind
+            integer(8) :: c0, c1, rate
             call fresh_dir(outdir)
             cmd = 'timeout '//itoa(FUZZ_BATCH_SECONDS)//' '//exe
             do i = 1, n
@@ -164,11 +200,19 @@ contains
             end do
             if (ckpt) cmd = cmd//' --checkpoint 0'
             ex = -1
+            call system_clock(c0, rate)
             call execute_command_line(cmd//' --out '//outdir//' > '//dir//'/stdout 2> '// &
                                       dir//'/stderr', exitstat=ex)
+            call system_clock(c1)
             if (abnormal(ex, dir//'/stderr')) then
                 call rerun_alone(n)
                 return
+            end if
+            if (real(c1 - c0, dp)/real(rate, dp) > small_seconds) then
+                call slow_alone(n)
+                call fresh_dir(outdir)
+                call execute_command_line(cmd//' --out '//outdir//' > '//dir//'/stdout 2> '// &
+                                          dir//'/stderr', exitstat=ex)
             end if
             call execute_command_line('ls -a '//outdir//' > '//dir//'/listing')
             ! the files that are empty or do not end with a line end (cut short)
@@ -178,13 +222,10 @@ contains
             worst = 0
             do i = 1, n
                 kind = ''
+                ! (a note or a warning is a line beside the deck's one line)
                 one_line = count_lines(dir//'/stdout', trim(names(i))//': ', .true.) + &
-                    count_lines(dir//'/stderr', ': '//trim(paths(i))//': ', .false.) - &
-                    count_lines(dir//'/stderr', 'bifilar: note: '//trim(paths(i))//': ', &
-                                .true.) == 1
-                if (count_lines(dir//'/stderr', ': '//trim(paths(i))//': ', .false.) - &
-                    count_lines(dir//'/stderr', 'bifilar: note: '//trim(paths(i))//': ', &
-                                .true.) == 1) &
+                    error_lines(i) == 1
+                if (error_lines(i) == 1) &
                     kind = error_kind(dir//'/stderr', ': '//trim(paths(i))//': ')
                 if (.not. one_line) call bad(2, trim(names(i)))
                 st = 0
@@ -239,6 +280,25 @@ contains
             culprit = abnormal(e, dir//'/stderr')
         end subroutine run_batch_alone_one
 
+        !> A batch slower than FUZZ_SMALL_SECONDS: each deck alone under timeout
+        !! FUZZ_SMALL_SECONDS; one cut off must have said what it does on a note line.
+        subroutine slow_alone(n)
+            integer, intent(in) :: n
+            integer :: i, e
+            do i = 1, n
+                call fresh_dir(outdir)
+                e = -1
+                call execute_command_line('timeout '//itoa(small_seconds)//' '//exe// &
+                    ' '//trim(paths(i))//' --out '//outdir//' > '//dir//'/stdout 2> '//dir// &
+                    '/stderr', exitstat=e)
+                if (e == 124) then
+                    nslow = nslow + 1
+                    if (count_lines(dir//'/stderr', 'bifilar: note: '//trim(paths(i))//': ', &
+                                    .true.) /= 1) call bad(8, trim(names(i)))
+                end if
+            end do
+        end subroutine slow_alone
+
         subroutine rerun_alone(n)
             integer, intent(in) :: n
             integer :: i
@@ -282,6 +342,14 @@ contains
             end do
             close (u)
         end subroutine leftovers
+
+        !> Lines of the batch's stderr that name deck i, its notes and warnings left out.
+        integer function error_lines(i)
+            integer, intent(in) :: i
+            error_lines = count_lines(dir//'/stderr', ': '//trim(paths(i))//': ', .false.) - &
+                count_lines(dir//'/stderr', 'bifilar: note: '//trim(paths(i))//': ', .true.) - &
+                count_lines(dir//'/stderr', 'bifilar: warning: '//trim(paths(i))//': ', .true.)
+        end function error_lines
 
         !> Lines of the batch's stderr that belong to some deck of the batch.
         integer function nfailed_lines(n)
@@ -356,6 +424,10 @@ contains
                     ran(7) = ran(7) + 1
                     if (.not. written_file(nm, '.fit.dat')) whole = .false.
                 end if
+            end if
+            if (line_with(dir//'/stdout', nm//': ', ' tensor I_principal')) then
+                ran(8) = ran(8) + 1
+                if (.not. written_file(nm, '.tensor')) whole = .false.
             end if
             if (.not. whole) call bad(7, nm)
         end subroutine note_ran
@@ -588,6 +660,77 @@ contains
             call write_text(path, assemble(b%grp))
         end select
     end subroutine write_fuzz_deck
+
+    !> A tensor deck NAME.nml in dir from input/tensor_example.nml made small (Monte Carlo
+    !! of at most FUZZ_MC_MAX samples), with its own table of hangs NAME.hangs.csv: as it
+    !! is, or (nmut counts them) the table's periods in ms, totals without their cycles,
+    !! directions with their sign flipped (both: the same hang; one: another), amplitudes
+    !! in radians or scaled, cycles 0 or negative, random bytes, cut short, another file
+    !! (a device, a folder, missing), or a value of &tensor, &suspension or &body hostile.
+    subroutine write_tensor_deck(dir, name, state, nmut)
+        character(len=*), intent(in) :: dir, name
+        integer(8), intent(inout) :: state
+        integer, intent(inout) :: nmut
+        character(len=*), parameter :: NL = new_line('a')
+        character(len=16), parameter :: HOSTILE(10) = [character(len=16) :: '-1', '0', &
+            '1e100', '1e-300', 'NaN', '-0.0', '1e9', '2', '0.5', '3']
+        character(len=16), parameter :: TVARS(9) = [character(len=16) :: 'u_mass', 'u_l', &
+            'u_b_prime', 'u_period', 'u_amplitude', 'u_direction', 'monte_carlo', 'seed', &
+            'plan']
+        character(len=16), parameter :: RVARS(6) = [character(len=16) :: 'b', 'b_prime', &
+            'l', 'mass', 'cg_depth', 'cg_offset']
+        character(len=24), parameter :: ODD(5) = [character(len=24) :: '/dev/zero', '.', &
+            'missing.csv', '/dev/null', '']
+        character(len=:), allocatable :: table, hangs, sus, body, tens, v
+        integer :: kind, i
+        table = file_text('input/tensor_example_hangs.csv')
+        hangs = name//'.hangs.csv'
+        sus = "&suspension b = 0.60, b_prime = 0.50, l = 1.50, l_prime = 1.50, g = 9.80665"
+        body = "&body mass = 4.2, inertia = 0.10, 0.12, 0.15, cg_depth = 0.12, cg_offset = 0.0"
+        tens = ", u_mass = 0.001, u_l = 0.001, u_l_prime = 0.001, u_b = 0.0005, "// &
+            "u_b_prime = 0.0005, u_g = 0, u_period = 1e-3, u_amplitude = 0.5, "// &
+            "u_direction = 0.2, monte_carlo = "//itoa(int((FUZZ_MC_MAX + 1)*rnd(state)))
+        kind = int(14*rnd(state))
+        if (kind < 10) nmut = nmut + 1
+        select case (kind)
+        case (0)
+            table = scale_column(table, 8, 1000.0_dp)
+        case (1)
+            table = scale_column(table, 8, 10.0_dp)
+        case (2)
+            table = scale_column(scale_column(table, 2 + int(3*rnd(state)), -1.0_dp), &
+                                 5 + int(3*rnd(state)), -1.0_dp)
+        case (3)
+            table = scale_column(table, 2 + int(6*rnd(state)), -1.0_dp)
+        case (4)
+            table = scale_column(table, 10, merge(0.017453292519943295_dp, &
+                                 10.0_dp**(int(4*rnd(state)) - 1), rnd(state) < 0.5_dp))
+        case (5)
+            table = scale_column(table, 9, real(int(3*rnd(state)) - 1, dp))
+        case (6)
+            do i = 1, 1 + int(3*rnd(state))
+                call insert_bytes(table, state)
+            end do
+        case (7)
+            table = table(1:int(len(table)*rnd(state)))
+        case (8)
+            hangs = trim(ODD(1 + int(size(ODD)*rnd(state))))
+        case (9)
+            v = trim(HOSTILE(1 + int(size(HOSTILE)*rnd(state))))
+            select case (int(3*rnd(state)))
+            case (0)
+                tens = tens//', '//trim(TVARS(1 + int(size(TVARS)*rnd(state))))//' = '//v
+            case (1)
+                sus = sus//', '//trim(RVARS(1 + int(3*rnd(state))))//' = '//v
+            case default
+                body = body//', '//trim(RVARS(4 + int(3*rnd(state))))//' = '//v
+            end select
+        end select
+        if (kind /= 8) call write_text(dir//'/'//name//'.hangs.csv', table)
+        call write_text(dir//'/'//name//'.nml', "&scene title = 'fuzz tensor', "// &
+            "analyses = 'tensor' /"//NL//sus//' /'//NL//body//' /'//NL//"&tensor hangs = '"// &
+            hangs//"'"//tens//' /'//NL)
+    end subroutine write_tensor_deck
 
     !> A mutated record for deck NAME: written to dir/NAME.rec (unless it is to be missing);
     !! value: the &measurement record that names it (or another file).  From the shipped
@@ -1215,7 +1358,8 @@ contains
         do
             read (u, '(a)', iostat=ios) line
             if (ios /= 0) exit
-            if (index(line, s) == 0 .or. index(line, 'bifilar: note: ') == 1) cycle
+            if (index(line, s) == 0 .or. index(line, 'bifilar: note: ') == 1 .or. &
+                index(line, 'bifilar: warning: ') == 1) cycle
             kind = '?'
             e = index(line, '): ')
             if (index(line, 'bifilar: error (') == 1 .and. e > 17) kind = line(17:e - 1)

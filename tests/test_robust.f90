@@ -53,6 +53,8 @@ contains
             call test_traps(t, exe)
         if (t%want('robust: small decks that took long fail fast or are refused')) &
             call test_slow(t, exe)
+        if (t%want('robust: the audit''s long decks end, refuse at once or say so')) &
+            call test_audit_long(t, exe)
         if (t%want('robust: progress on a terminal only')) call test_progress(t, exe)
         if (t%want('robust: the report shows every figure')) call test_report(t, exe)
     end subroutine run_robust_tests
@@ -658,5 +660,99 @@ contains
         end do
         close (u)
     end function data_rows_with
+
+    ! ---------------------------------------------------------------------------------------
+    !> Issue 22's hangs, each run alone under `timeout` (BIFILAR_NOTE_AFTER=1: the note
+    !! comes after 1 s instead of 5, so that the test is short): the elastic deck of
+    !! stiffness 1e12 at 170 deg spun at 100 rad per unit tau, and a tensor deck of 1e6
+    !! Monte Carlo samples, each say within the timeout on one 'bifilar: note:' line what
+    !! they do and how long it takes; identify of one period of 1000 s on an asymmetric rig
+    !! (exit 4), a record in ms (exit 4), with a 1000 s gap (exit 2), with times from the
+    !! epoch (exit 2), in deg/s read as rad/s (exit 2), and hangs timed in ms (exit 4) are
+    !! refused at once with one line; 100 periods with monte_carlo = 10 say their work.
+    subroutine test_audit_long(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d, o, x
+        integer :: ex
+        d = SCR//'/audit'
+        o = d//'/o'
+        call fresh_dir(d)
+        x = abs_path(exe)
+        ! the elastic deck: the note within 4 s
+        call execute_command_line('sed -e "s/stiffness = 1.0e6/stiffness = 1.0e12/" -e '// &
+            '"s/&start mode = .*/\&start mode = '//"'angles'"//', theta = 0, 0, 0, '// &
+            '2.9670597, theta_dot = 0, 0, 0, 100 \//" input/cylinder_l180_elastic.nml > '// &
+            d//'/spin.nml')
+        ex = run('BIFILAR_NOTE_AFTER=1 timeout 4 '//x//' '//d//'/spin.nml --out '//o, d)
+        call t%check('audit: elastic 1e12, 170 deg, spin 100: a note within 4 s (exit '// &
+                     itoa(ex)//')', all([file_has(d//'/spin.nml', 'theta_dot = 0, 0, 0, 100'), &
+                     count_lines(d//'/stderr', 'bifilar: note: '//d//'/spin.nml: simulate', &
+                                 .true.) == 1, file_has(d//'/stderr', 'more')]))
+        ! tensor with 1e6 Monte Carlo samples: the sweep's note
+        call execute_command_line('sed -e "s/monte_carlo = 2000/monte_carlo = 1000000/" '// &
+            '-e "s#tensor_example_hangs.csv#'//abs_path('input')//'/tensor_example_hangs.csv#" '// &
+            'input/tensor_example.nml > '//d//'/mc.nml')
+        ex = run('BIFILAR_NOTE_AFTER=1 timeout 5 '//x//' '//d//'/mc.nml --out '//o, d)
+        call t%check('audit: tensor of 1e6 Monte Carlo samples: a note with the pace within '// &
+                     '5 s (exit '//itoa(ex)//')', all([count_lines(d//'/stderr', 'bifilar: note: '// &
+                     d//'/mc.nml: tensor_mc: ', .true.) == 1, file_has(d//'/stderr', &
+                     'of 1000000 points after')]))
+        ! identify: refused at once
+        call audit_refused(t, d, o, x, 'p1000', "-e 's/l_prime = 1.20,/l_prime = 1.05,/' -e 's/periods = "// &
+                     "1.41564, 1.44107, 1.52913,/periods = 1000,/' -e 's/amplitudes = 10.0, "// &
+                     "30.0, 60.0,/amplitudes = 10.0,/'", 'input/identify_periods.nml', 4, &
+                     'radius of gyration')
+        ! a period at 179.9999 deg with u_amplitude = 0: no step across 180 deg, no NaN
+        call audit_refused(t, d, o, x, 'p180', "-e 's/periods = 1.41564, 1.44107, 1.52913,/periods = 3.0,/' "// &
+                     "-e 's/amplitudes = 10.0, 30.0, 60.0,/amplitudes = 179.9999,/' -e "// &
+                     "'s/u_amplitude = 0.5/u_amplitude = 0/' -e 's/monte_carlo = 2000/"// &
+                     "monte_carlo = 0/'", 'input/identify_periods.nml', 4, 'no rigid body')
+        call t%check('audit: p180: no NaN in the message', .not. file_has(d//'/stderr', 'NaN'))
+        call audit_record(t, d, o, x, 'ms', '$1*1000, $2', 4, 'likely: times in other units than s (ms)')
+        call audit_record(t, d, o, x, 'gap', '($1 > 10 ? $1 + 1000 : $1), $2', 2, 'a gap of 1.000E+03 s')
+        call audit_record(t, d, o, x, 'epoch', '$1 + 1.7e9, $2', 2, 'from the release')
+        call audit_record(t, d, o, x, 'degs', '$1, $2*57.29577951308232', 2, 'they look like deg/s')
+        call execute_command_line("awk -F, 'NR<=2{print;next}{$8=$8*1000; print}' OFS=, "// &
+            'input/tensor_example_hangs.csv > '//d//'/hangs_ms.csv')
+        call audit_refused(t, d, o, x, 'hangs_ms', "-e 's/tensor_example_hangs.csv/hangs_ms.csv/'", &
+                     'input/tensor_example.nml', 4, '(ms)')
+        ! 100 periods on an asymmetric rig with monte_carlo = 10: its work said at the start
+        call execute_command_line("sed -e 's/l_prime = 1.20,/l_prime = 1.05,/' -e 's/periods"// &
+            " = 1.41564, 1.44107, 1.52913,/periods = 100*1.43,/' -e 's/amplitudes = 10.0, "// &
+            "30.0, 60.0,/amplitudes = 100*10.0,/' -e 's/monte_carlo = 2000/monte_carlo = 10/' "// &
+            'input/identify_periods.nml > '//d//'/p100.nml')
+        ex = run('BIFILAR_NOTE_AFTER=1 timeout 4 '//x//' '//d//'/p100.nml --out '//o, d)
+        call t%check('audit: 100 periods, asymmetric rig, monte_carlo = 10: its work said '// &
+                     'on one note line (exit '//itoa(ex)//')', all([count_lines(d//'/stderr', &
+                     'bifilar: note: '//d//'/p100.nml: identify: about ', .true.) == 1, &
+                     file_has(d//'/stderr', '100 periods of the full model')]))
+    end subroutine test_audit_long
+
+    !> A deck made by sed from base: exit status want and one line holding word.
+    subroutine audit_refused(t, d, o, x, nm, sed, base, want, word)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: d, o, x, nm, sed, base, word
+        integer, intent(in) :: want
+        integer :: e
+        call execute_command_line('sed '//sed//' '//base//' > '//d//'/'//nm//'.nml')
+        e = run('timeout 10 '//x//' '//d//'/'//nm//'.nml --out '//o, d)
+        call t%check('audit: '//nm//': refused at once, exit '//itoa(e)//' (want '// &
+                     itoa(want)//'), one line saying "'//word//'"', all([e == want, &
+                     count_lines(d//'/stderr') == 1, file_has(d//'/stderr', word), &
+                     count_lines(d//'/stderr', 'bifilar: error (', .true.) == 1]))
+    end subroutine audit_refused
+
+    !> The example record rewritten by awk (columns expr), in a copy of its deck.
+    subroutine audit_record(t, d, o, x, nm, expr, want, word)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: d, o, x, nm, expr, word
+        integer, intent(in) :: want
+        call execute_command_line("awk '/^#/{print;next}{printf ""%.6f %s\n"", "// &
+            expr//"}' input/identify_record_swing.dat > "//d//'/rec_'//nm//'.dat')
+        call audit_refused(t, d, o, x, 'r_'//nm, "-e 's/identify_record_swing.dat/rec_"// &
+                           nm//".dat/'", 'input/identify_record.nml', want, word)
+    end subroutine audit_record
+
 
 end module test_robust

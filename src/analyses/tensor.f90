@@ -49,7 +49,7 @@ module tensor
         !! hang the body, the directions determining the tensor; a plan's rig.
         module subroutine tensor_ready(d, stat)
             type(deck_t), intent(in) :: d           !! the deck
-            type(status_t), intent(out) :: stat     !! ERR_DECK
+            type(status_t), intent(out) :: stat     !! ERR_DECK; ERR_MODEL: a period no rig gives
         end subroutine tensor_ready
 
         !> Run analyses = 'tensor' for a deck: OUTDIR/NAME.tensor, NAME.tensor.dat (and

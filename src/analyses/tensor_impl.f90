@@ -2,8 +2,9 @@
 !! (the projection solution, the exact fit, the amplitude limits, the Monte Carlo, the
 !! plan) and the output files.
 submodule (tensor) tensor_impl
-    use kinds, only: deg
-    use status, only: set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC
+    use kinds, only: deg, pi
+    use status, only: set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC, ERR_MODEL
+    use work_estimate, only: GYRATION_MAX
     use text, only: itoa, sci, fixed, rshort
     use deck, only: deck_echo
     use output_io, only: write_kv, all_finite
@@ -59,6 +60,8 @@ contains
                         itoa(set%hangs(h)%line)//'): '//stat%msg
                     return
                 end if
+                call period_in_reach(h, rg, stat)
+                if (stat%code /= STATUS_OK) return
             end do
         end if
         if (d%tensor_plan > 0) then
@@ -83,6 +86,35 @@ contains
                 return
             end if
         end if
+    contains
+
+        !> Issue 22: a period (per cycle) more than GYRATION_MAX times the hang's rig's
+        !! period with the body's mass at its cable attachments, 2 pi (l b'/(g b))^(1/2), is
+        !! refused before any computing (times in ms would simulate for minutes).
+        subroutine period_in_reach(h, rg, st)
+            integer, intent(in) :: h
+            type(rig_t), intent(in) :: rg
+            type(status_t), intent(inout) :: st
+            real(dp) :: ta
+            integer :: i
+            ta = 2.0_dp*pi*sqrt(0.5_dp*(rg%l + rg%l_prime)*rg%b_prime/(rg%g*rg%b))
+            do i = 1, size(set%rows)
+                if (set%rows(i)%hang /= h) cycle
+                if (set%rows(i)%period > GYRATION_MAX*ta) then
+                    call set_error(st, ERR_MODEL, table_name(d)//': line '// &
+                        itoa(set%rows(i)%line)//': hang '//itoa(set%hangs(h)%id)// &
+                        ': a period of '//sci(set%rows(i)%period, 4)//' s (per cycle) is '// &
+                        itoa(nint(set%rows(i)%period/ta))//' times that of this hang''s '// &
+                        'rig with the body''s mass at its cable attachments (2 pi (l '// &
+                        'b_prime/(g b))^(1/2) = '//sci(ta, 4)//' s), beyond the '// &
+                        itoa(nint(GYRATION_MAX))//' times any bifilar body gives; likely: '// &
+                        'times in other units than s (ms), totals of cycles with a wrong '// &
+                        'cycles column, or lengths in other units than the deck''s')
+                    return
+                end if
+            end do
+        end subroutine period_in_reach
+
     end procedure tensor_ready
 
     !> Run analyses = 'tensor' (see the interface).

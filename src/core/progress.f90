@@ -13,7 +13,7 @@ module progress
     use, intrinsic :: iso_c_binding, only: c_int
     use, intrinsic :: iso_fortran_env, only: error_unit, int64
     use kinds, only: dp
-    use text, only: fixed
+    use text, only: fixed, itoa
     implicit none
     private
 
@@ -47,6 +47,7 @@ module progress
         real(dp) :: after = 5.0_dp              !! seconds before the note
         integer(int64) :: c0 = 0, rate = 1
         integer :: calls = 0
+        integer :: every = 64                   !! calls between readings of the clock
         logical :: armed = .false.              !! started, not yet said
     contains
         procedure :: start => pace_start
@@ -166,11 +167,14 @@ contains
     end subroutine say_note
 
     !> Begin a run from x0 to x1 (in `unit`s), `label` its note's start.
-    subroutine pace_start(self, label, x0, x1, unit)
+    subroutine pace_start(self, label, x0, x1, unit, every)
         class(pace_t), intent(inout) :: self
         character(len=*), intent(in) :: label       !! 'bifilar: note: DECK: simulate'
         real(dp), intent(in) :: x0, x1              !! the run's start and end
         character(len=*), intent(in) :: unit        !! what x counts
+        integer, intent(in), optional :: every      !! calls between clock readings (64)
+        self%every = 64
+        if (present(every)) self%every = max(1, every)
         self%label = label
         self%unit = unit
         self%x0 = x0
@@ -190,14 +194,19 @@ contains
         character(len=:), allocatable :: s
         if (.not. self%armed) return
         self%calls = self%calls + 1
-        if (mod(self%calls, 64) /= 1) return
+        if (mod(self%calls, self%every) /= min(1, self%every - 1)) return
         call system_clock(c)
         el = real(c - self%c0, dp)/real(self%rate, dp)
         if (el < self%after) return
         self%armed = .false.
         f = (x - self%x0)/(self%x1 - self%x0)
-        s = self%label//': '//self%unit//' = '//fixed(x, 4)//' of '//fixed(self%x1, 4)// &
-            ' after '//duration(el)
+        if (self%unit == 'points') then
+            s = self%label//': '//itoa(nint(x))//' of '//itoa(nint(self%x1))//' points '// &
+                'after '//duration(el)
+        else
+            s = self%label//': '//self%unit//' = '//fixed(x, 4)//' of '//fixed(self%x1, 4)// &
+                ' after '//duration(el)
+        end if
         if (f > 0.0_dp .and. f < 1.0_dp) then
             s = s//'; at this pace about '//duration(el*(1.0_dp - f)/f)//' more'
         else

@@ -284,10 +284,10 @@ contains
     end subroutine select_kth
 
     !> The model periods a release of n timed periods asks for (nup of them with a u, the
-    !! amplitudes with u_amplitude), on a symmetric rig (sym: pure torsion, and a budget of
-    !! whole inversions) or another (simulated: the budget's timings by the implicit-function
-    !! form): the inversion, the budget, the Monte Carlo over the threads, the figure's
-    !! curve.  what: the work in words, for one period of `one` seconds.
+    !! amplitudes with u_amplitude), on a symmetric rig (sym: pure torsion) or another
+    !! (simulated): the inversion, the budget (two whole inversions for each input, period
+    !! and amplitude with a u: period_budget, on every rig), the Monte Carlo over the
+    !! threads, the figure's curve.  what: the work in words, for one period of `one` seconds.
     subroutine periods_runs(d, n, nup, sym, one, runs, what)
         type(deck_t), intent(in) :: d
         integer, intent(in) :: n, nup
@@ -301,11 +301,9 @@ contains
         inv = real(ITER_FIT*2*n + 2*n, dp)
         refit = real(ITER_REFIT*2*n, dp)
         runs = inv + nu*2*refit + n + 41
-        if (sym) then
-            runs = runs + (nup + merge(n, 0, d%u_amplitude > 0.0_dp))*2*refit
-        else
-            runs = runs + 2*n + merge(2*n, 0, d%u_amplitude > 0.0_dp)
-        end if
+        ! the budget inverts all n periods twice for each period with a u and for each
+        ! amplitude when u_amplitude > 0 (period_budget), whatever the rig
+        runs = runs + (nup + merge(n, 0, d%u_amplitude > 0.0_dp))*2*refit
         runs = runs + real(d%monte_carlo, dp)*inv/max(1, omp_get_max_threads())
         what = itoa(n)//' period'//trim(merge('s', ' ', n > 1))//' of '// &
             trim(merge('pure torsion        ', 'the full model      ', sym))//' (about '// &

@@ -59,7 +59,7 @@ module sweep_engine
     use status, only: status_t, set_error, STATUS_OK, ERR_IO, ERR_DECK
     use text, only: itoa
     use output_io, only: remove_file
-    use progress, only: progress_t
+    use progress, only: progress_t, pace_t
     use parallel, only: par_start, par_stop, par_rank, par_ranks, par_post, par_poll, &
         par_recv, par_library, PAR_ANY
     use crc64, only: deck_crc, executable_crc, crc_parts, crc_join, hex16
@@ -172,6 +172,8 @@ module sweep_engine
         type(status_t) :: err                       !! the first failure
         logical :: point_failed = .false.           !! the failure was a point's
         type(progress_t) :: pr
+        !> the one 'bifilar: note:' line of a sweep still running after note_after() s
+        type(pace_t) :: pc
         character(len=:), allocatable :: ckpt       !! checkpoint path ('' none)
         character(len=:), allocatable :: analysis
         real(dp), allocatable :: payload(:)         !! sent with JOB
@@ -343,6 +345,8 @@ contains
 
         call e%pr%start(label, npoints)
         if (e%ndone > 0) call e%pr%tick(e%ndone)
+        if (e%master) call e%pc%start('bifilar: note: '//deck_path//': '//analysis, &
+                                      real(e%ndone, dp), real(npoints, dp), 'points', every=1)
         call system_clock(e%last_ckpt)
         ! the signal line names this sweep (and its checkpoint once one is kept: module
         ! checkpoint); a checkpoint resumed is kept already
@@ -506,6 +510,7 @@ contains
             p = p + 1 + e%nv
         end do
         if (count > 0) call e%pr%tick(count)
+        if (count > 0) call e%pc%check(real(e%ndone, dp))
     end subroutine store_results
 
     !> Rank 0: answer rank src's request: a chunk (WORK; empty when nothing is left) or STOP.
@@ -776,6 +781,7 @@ contains
                     e%done(i) = .true.
                     e%ndone = e%ndone + 1
                     call e%pr%tick()
+                    call e%pc%check(real(e%ndone, dp))
                 end if
             end if
             call master_serve(e, got)
