@@ -86,6 +86,7 @@ contains
         if (present(max_rows)) nmax = max_rows
         call load_file(path, text, stat)
         if (stat%code /= STATUS_OK) return
+        if (.not. allocated(text)) text = ''
         allocate (header(0), v(1, 1024), ln(1024), is_text(0))
         with_text = present(text_columns)
         n = 0

@@ -107,7 +107,7 @@ contains
         character(len=*), intent(in), optional :: analysis
         real(dp), allocatable :: vals(:, :), s(:), est(:)
         character(len=:), allocatable :: ckpt, label, path, sweep
-        integer :: k, j, nv
+        integer :: k, j, nv, code
         mean = 0.0_dp
         sdev = 0.0_dp
         nv = task%nest + 1
@@ -126,13 +126,15 @@ contains
         call sweep_run(task, sweep, path, ckpt, label, n, nv, vals, stat, options, &
                        report, payload, d%text)
         if (stat%code /= STATUS_OK) return
+        if (.not. allocated(vals)) return           ! (sweep_run fills it when it succeeds)
         k = findloc(vals(nv, :) /= 0.0_dp, .true., 1)
         if (k > 0) then
             ! the first failed sample again, here, for its message
+            code = nint(vals(nv, k))
             allocate (est(task%nest))
             call task%sample(k, est, stat)
-            if (stat%code == STATUS_OK) call set_error(stat, nint(vals(nv, k)), &
-                'Monte Carlo sample '//itoa(k)//' failed (status '//itoa(nint(vals(nv, k)))// &
+            if (stat%code == STATUS_OK) call set_error(stat, code, &
+                'Monte Carlo sample '//itoa(k)//' failed (status '//itoa(code)// &
                 ') on another rank and not here')
             if (len(ckpt) > 0) call remove_file(ckpt)
             return
