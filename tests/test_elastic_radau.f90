@@ -3,7 +3,7 @@
 !! stiffness and damping; lightly damped stiff cables in far fewer steps than CVODE needs
 !! and fewer evaluations than LSODA at equal accuracy; no blow-up at tight tolerance.
 !!
-!! Scene of the issue: the Figs. 4-6 cylinder (l = 2 b', l' = 1.8 b'), raised 45 degrees,
+!! The stiff-cable scene: the Figs. 4-6 cylinder (l = 2 b', l' = 1.8 b'), raised 45 degrees,
 !! tau = 0 ... 20, output every 0.05, atol = rtol/100; errors in theta1, theta4, theta5 and
 !! Q against a reference (Radau, rtol 1e-13), itself confirmed by LSODA in the maximal
 !! coordinates where that is affordable (make bench confirms every reference).
@@ -29,7 +29,7 @@ module test_elastic_radau
 
     public :: run_elastic_radau_tests, issue_scene, scene_errors, solve_scene, NOUT, TEND
 
-    !> The issue's interval and output grid.
+    !> The stiff-cable scene's interval and output grid.
     real(dp), parameter :: TEND = 20.0_dp, DTOUT = 0.05_dp
     integer, parameter :: NOUT = 400
     !> SUNDIALS CVODE 6.4.1 on the same equations: 37 791 steps for a theta1
@@ -58,7 +58,7 @@ contains
     end subroutine run_elastic_radau_tests
 
     ! ---------------------------------------------------------------------------------------
-    !> The issue's scene at stiffness k and damping ratio zeta: the model and its start.
+    !> The stiff-cable scene at stiffness k and damping ratio zeta: the model and its start.
     subroutine issue_scene(k, zeta, el, y0)
         real(dp), intent(in) :: k, zeta
         type(elastic_t), intent(out) :: el
@@ -246,7 +246,7 @@ contains
     end subroutine test_follows
 
     !> Where the generalized chart degenerates (quality below 0.05) Radau goes on in the
-    !! maximal coordinates and comes back above 0.1.  The issue's scene does not get there,
+    !! maximal coordinates and comes back above 0.1.  The stiff-cable scene does not get there,
     !! so the limits are raised into the range its motion sweeps (at 30 % and 70 % of the
     !! range of the chart's quality at the output times of a reference): the run then changes
     !! coordinates many times, both ways, and its error still follows rtol; so does a run in

@@ -1,4 +1,4 @@
-!> Tests of the Floquet analysis of pure torsion (issue: stability, Figs. 13-16).
+!> Tests of the Floquet analysis of pure torsion (stability, Figs. 13-16).
 module test_floquet
     use kinds, only: dp, pi, deg
     use status, only: status_t, ERR_DECK

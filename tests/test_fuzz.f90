@@ -27,7 +27,7 @@ module test_fuzz
     integer, parameter :: FUZZ_PER_SEED = 520
     integer, parameter :: FUZZ_BATCH = 40
     integer, parameter :: FUZZ_BATCH_SECONDS = 120, FUZZ_DECK_SECONDS = 10
-    !> Issue 22's rule: a small deck ends within FUZZ_SMALL_SECONDS or has said on one line
+    !> The rule: a small deck ends within FUZZ_SMALL_SECONDS or has said on one line
     !! ('bifilar: note:') what it does and how long it takes; a batch slower than that is
     !! run again deck by deck under `timeout FUZZ_SMALL_SECONDS`.
     !! (In the checking build, -fcheck=all and no optimisation, three times as long.)

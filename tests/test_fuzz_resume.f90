@@ -1,4 +1,4 @@
-!> Fuzz of what `--resume` reads and of stopping a run (issue 22): the paths an audit took.
+!> Fuzz of what `--resume` reads and of stopping a run: the paths an audit took.
 !!
 !! - Checkpoints mutated pseudo-randomly (fixed seeds; module random) in 21 ways: a hex
 !!   digit flipped, a quiet or signalling NaN, Inf or a value out of its range (with the

@@ -1,4 +1,4 @@
-!> The in-process fuzz (issue 22): records, tables of releases (periods), tables of hangs
+!> The in-process fuzz: records, tables of releases (periods), tables of hangs
 !! and sweep checkpoints, mutated in their values and units (times in ms, from the epoch,
 !! with gaps; values in degrees, deg/s, with their sign flipped; random bytes, a BOM,
 !! tokens that are no number, rows cut or doubled) and read through the library's own

@@ -27,7 +27,24 @@ contains
         if (t%want('graph: the check finds a use of a higher folder, an analysis using '// &
                    'another, too many floors')) call test_breaks(t)
         if (t%want('graph: the status table, one row per code')) call test_status(t)
+        if (t%want('graph: no source, test or manual page speaks of issues or commits')) &
+            call test_no_history(t)
     end subroutine run_graph_tests
+
+    !> The sources, the tests, doc/ and the README say what the program does, not which
+    !! issue or commit brought it: no issue numbers, no commit hashes.
+    subroutine test_no_history(t)
+        type(tester_t), intent(inout) :: t
+        character(len=:), allocatable :: d
+        integer :: ex
+        d = 'build/test_graph/history'
+        call fresh_dir(d)
+        ex = run('grep -rnEi "issues? ?#?[0-9]+|issue''s|the iss'//'ue\b|commit [0-9a-f]{7}" '// &
+                 'src tests doc README.md Makefile --include=*.f90 --include=*.md '// &
+                 '--include=Makefile --include=*.sh --include=*.gp', d)
+        call t%check('graph: no source, test or manual page speaks of issues or commits '// &
+                     '(first: '//first_line(d//'/stdout')//')', ex == 1)
+    end subroutine test_no_history
 
     subroutine test_sources(t)
         type(tester_t), intent(inout) :: t

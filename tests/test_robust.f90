@@ -662,7 +662,7 @@ contains
     end function data_rows_with
 
     ! ---------------------------------------------------------------------------------------
-    !> Issue 22's hangs, each run alone under `timeout` (BIFILAR_NOTE_AFTER=1: the note
+    !> The audit's long decks, each run alone under `timeout` (BIFILAR_NOTE_AFTER=1: the note
     !! comes after 1 s instead of 5, so that the test is short): the elastic deck of
     !! stiffness 1e12 at 170 deg spun at 100 rad per unit tau, and a tensor deck of 1e6
     !! Monte Carlo samples, each say within the timeout on one 'bifilar: note:' line what

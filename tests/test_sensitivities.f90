@@ -1,4 +1,4 @@
-!> Tests of the forward sensitivities (issue 23): the integrators' staggered direct method
+!> Tests of the forward sensitivities: the integrators' staggered direct method
 !! against an exact solution, the record model's derivatives against differences of whole
 !! runs (every fit parameter and some budget inputs, symmetric and asymmetric rig, small and
 !! large amplitude, LSODA and Radau), a record fit and its budget by sensitivities against

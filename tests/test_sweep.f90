@@ -717,7 +717,7 @@ contains
         end do
 
         ! ranks 1, 2 see the same deck but another record: they never read it, the record
-        ! travels from rank 0 with the Monte Carlo's payload (issue 22): the serial file
+        ! travels from rank 0 with the Monte Carlo's payload: the serial file
         ex = run(MPIFAIL//' -np 1 -wdir '//abs_path(d//'/w0')//' '//mexe//' rec.nml --out out'// &
                  ' : -np 2 -wdir '//abs_path(d//'/w1')//' '//mexe//' rec.nml', d)
         call t%check('mpi mc: another record beside the other ranks: exit 0 (got '//itoa(ex)// &

@@ -62,7 +62,7 @@ module identify
     implicit none
     private
 
-    !> What identify_ready read, kept for the run (issue 22: a record read twice could be
+    !> What identify_ready read, kept for the run (a record read twice could be
     !! replaced in between, a logger still writing, and its second reading went unchecked):
     !! the releases (the deck's one or a table's) and each release's record, read and
     !! checked once, with the CRC-64 of the record file's bytes as read.

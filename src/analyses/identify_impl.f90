@@ -956,7 +956,7 @@ contains
     !! the Jacobian, the robust weights, the parameters' sensitivities to the inputs, and
     !! the record itself with its CRC-64
     !! (record_payload): the other ranks of an MPI run take the record from it and never
-    !! read the file (issue 22).
+    !! read the file.
     subroutine record_monte_carlo(d, r, res, stat, outdir, options, report, files)
         type(deck_t), intent(in) :: d
         type(release_t), intent(in) :: r

@@ -88,7 +88,7 @@ contains
         end if
     contains
 
-        !> Issue 22: a period (per cycle) more than GYRATION_MAX times the hang's rig's
+        !> A period (per cycle) more than GYRATION_MAX times the hang's rig's
         !! period with the body's mass at its cable attachments, 2 pi (l b'/(g b))^(1/2), is
         !! refused before any computing (times in ms would simulate for minutes).
         subroutine period_in_reach(h, rg, st)

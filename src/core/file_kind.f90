@@ -1,4 +1,4 @@
-!> What a path names, found without blocking, before a reader opens it (issue 22: a FIFO
+!> What a path names, found without blocking, before a reader opens it (a FIFO
 !! given as a record or a deck blocked the program for ever in `open`, waiting for a
 !! writer).
 !!

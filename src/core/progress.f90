@@ -36,7 +36,7 @@ module progress
 
     !> A run that may take long says so once, on one line of standard error, after
     !! note_after() seconds (default NOTE_SECONDS), whether or not it is a terminal: what it
-    !! is doing and, at the pace so far, how much longer it will take (issue 22: a deck
+    !! is doing and, at the pace so far, how much longer it will take (the rule: a deck
     !! ends within 10 s, or refuses at once, or says within 10 s what it is doing).
     !!     call pace%start('bifilar: note: DECK: simulate', tau0, tau_end, 'tau')
     !!     ... call pace%check(tau)      (often; it reads the clock every 64 calls)

@@ -2,7 +2,7 @@
 !! notation that always keeps its E (a plain `es10.3` prints 1e300 as `1.000+300`, which
 !! no reader takes for a number).
 !!
-!! Thread-safe (issue 22): no module variable, no SAVE, every function pure, and no
+!! Thread-safe: no module variable, no SAVE, every function pure, and no
 !! function returns `character(len=:), allocatable`.  gfortran 12 keeps the length of such
 !! a result, at every place that calls the function, in a static variable (its tree dump
 !! shows `static integer(kind=8) slen.N`): two threads calling one place at once mixed

@@ -537,7 +537,7 @@ contains
         end if
         ! a u whose 5-sigma range leaves its input's domain: the Monte Carlo would draw
         ! values no rig has (l < 0, g < 0, an amplitude beyond 180 degrees), the budget's
-        ! steps would cross the edge (issue 22)
+        ! steps would cross the edge
         call in_domain(stat, 'measurement', 'u_mass', d%u_mass, 'mass', d%mass, 0.0_dp, &
                        0.0_dp)
         call in_domain(stat, 'measurement', 'u_l', d%u_l, 'l', d%l, 0.0_dp, 0.0_dp)

@@ -344,7 +344,7 @@ contains
                 dtda = 0.0_dp
                 if (u%amplitude > 0.0_dp) then
                     ! dT/dA by a difference that stays inside 0 < A < 180 degrees (a step
-                    ! past 180 gave a NaN period and a weight of 1/tiny: issue 22)
+                    ! past 180 gave a NaN period and a weight of 1/tiny)
                     h = 1.0e-4_dp*max(1.0_dp, amps(i))
                     h = min(h, 0.5_dp*amps(i), 0.5_dp*(180.0_dp - amps(i)))
                     call period_of(i1, amps(i) + h, ta, stat)

@@ -1,5 +1,5 @@
 !> Work before it is done: what a measurement deck asks the model to do, weighed before any
-!! computing (issue 22's rule: a deck ends within 10 s, or is refused at once with the
+!! computing (the rule: a deck ends within 10 s, or is refused at once with the
 !! likely mistake named, or says within 10 s, on one line, what it is doing and how long it
 !! will take).  Used by identify_ready for each release.
 !!

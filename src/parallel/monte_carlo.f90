@@ -1,5 +1,5 @@
-!> Monte Carlo of independent samples as a sweep (GUM Supplement 1, JCGM 101:2008; issues
-!! 10 and 15): the one Monte Carlo code path of the program (identify's, from periods and
+!> Monte Carlo of independent samples as a sweep (GUM Supplement 1, JCGM 101:2008):
+!! the one Monte Carlo code path of the program (identify's, from periods and
 !! from a record; tensor's, from the periods of several hangs).
 !!
 !! Sample k (1 .. n) draws its inputs from stream k of the seed (module random) and gives

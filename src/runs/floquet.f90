@@ -620,7 +620,7 @@ contains
     !> Gradients at y of the constraint G, its rate G' and the energy E (columns 1-3, by the
     !! fourth-order central stencil, h = 1e-3 max(1, |y_j|): error ~ 1e-13), and the flow f(y).
     !! The steps in the cable's chart coordinates y(2), y(3) (sigma, |sigma| < 1) stay within
-    !! a quarter of the distance to |sigma| = 1 (issue 22: near the horizontal a step of 1e-3
+    !! a quarter of the distance to |sigma| = 1 (near the horizontal a step of 1e-3
     !! took |sigma| past 1, and the multipliers were computed through NaN); a state whose
     !! cable BC is near the horizontal (|sin theta2| > SIN2_LIMIT) is ERR_MODEL.
     subroutine structure_rows(p, y, rows, f, stat)

@@ -1,4 +1,4 @@
-!> Global error against rtol (make bench, issue 23): for every simulation deck of the paper's
+!> Global error against rtol (make bench): for every simulation deck of the paper's
 !! model in input/ and three general scenes made from input/cylinder_l180.nml (the body
 !! turned 20 degrees about b1 and b2 in C, b = 1.3 b', and b = 1.3 b' released from 80
 !! degrees), simulate's run (kane_run with global = .true.: LSODA at rtol/4) at
