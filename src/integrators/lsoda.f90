@@ -46,8 +46,8 @@ module lsoda
     use status, only: status_t, set_error, STATUS_OK, LSODA_ERR_MAX_STEPS, &
         LSODA_ERR_TOO_MUCH_ACCURACY, LSODA_ERR_ERROR_TEST, LSODA_ERR_CONVERGENCE, &
         LSODA_ERR_ILLEGAL_INPUT, LSODA_ERR_SINGULAR
-    use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, METHOD_ADAMS, &
-        METHOD_BDF
+    use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, sens_init_args, &
+        METHOD_ADAMS, METHOD_BDF
     use lapack_wrap, only: la_lu_factor, la_lu_solve, la_small_lu_solve
     implicit none
     private
@@ -592,25 +592,9 @@ contains
         s%nsn = 0
         n = s%n
         ns = size(s0, 2)
-        if (.not. s%ready .or. s%started) then
-            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda sens_init: after init and '// &
-                'before the first step only')
-            return
-        end if
-        if (size(s0, 1) /= n .or. ns < 1) then
-            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda sens_init: s0 must be n x ns, '// &
-                'ns >= 1')
-            return
-        end if
-        sc = 1.0_dp
-        if (present(scale)) then
-            if (size(scale) /= ns .or. .not. all(scale > 0.0_dp)) then
-                call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda sens_init: scale must '// &
-                    'have ns entries, each > 0')
-                return
-            end if
-            sc = scale
-        end if
+        call sens_init_args('lsoda sens_init', LSODA_ERR_ILLEGAL_INPUT, s%ready, &
+                            s%started, n, s0, sc, stat, scale)
+        if (stat%code /= STATUS_OK) return
         s%sens_errcon = .false.
         if (present(error_control)) s%sens_errcon = error_control
         s%nsn = n*ns

@@ -208,9 +208,39 @@ module ode_system
         end subroutine sens_dense_i
     end interface
 
-    public :: too_much_accuracy, default_sens_point
+    public :: too_much_accuracy, default_sens_point, sens_init_args
 
 contains
+
+    !> The checks every integrator's sens_init makes of its arguments: called after init
+    !! and before the first step (ready, not started), s0 of n rows and ns >= 1 columns,
+    !! scale (when given) ns entries each > 0.  On success sc is the scales (default 1) and
+    !! stat is OK; else stat carries `code` and a message that starts with `who`.
+    subroutine sens_init_args(who, code, ready, started, n, s0, sc, stat, scale)
+        character(len=*), intent(in) :: who        !! 'lsoda sens_init', 'radau sens_init'
+        integer, intent(in) :: code                 !! the integrator's illegal-input code
+        logical, intent(in) :: ready, started       !! init done, a step taken
+        integer, intent(in) :: n                    !! the state's size
+        real(dp), intent(in) :: s0(:, :)            !! the sensitivities' start (n x ns)
+        real(dp), intent(out) :: sc(:)              !! (ns) the scales
+        type(status_t), intent(out) :: stat
+        real(dp), intent(in), optional :: scale(:)  !! (ns) as given to sens_init
+        integer :: ns
+        stat%code = 0
+        ns = size(s0, 2)
+        sc = 1.0_dp
+        if (.not. ready .or. started) then
+            call set_error(stat, code, who//': after init and before the first step only')
+        else if (size(s0, 1) /= n .or. ns < 1) then
+            call set_error(stat, code, who//': s0 must be n x ns, ns >= 1')
+        else if (present(scale)) then
+            if (size(scale) /= ns .or. .not. all(scale > 0.0_dp)) then
+                call set_error(stat, code, who//': scale must have ns entries, each > 0')
+            else
+                sc = scale
+            end if
+        end if
+    end subroutine sens_init_args
 
     !> Default Jacobian: none.  Only called when has_jacobian() is .true.
     subroutine no_jacobian(sys, t, y, dfdy, stat)

@@ -62,7 +62,8 @@ module radau
     use status, only: status_t, set_error, STATUS_OK, RADAU_ERR_MAX_STEPS, &
         RADAU_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_STEP_TOO_SMALL, RADAU_ERR_ILLEGAL_INPUT, &
         RADAU_ERR_SINGULAR
-    use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, METHOD_RADAU
+    use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, sens_init_args, &
+        METHOD_RADAU
     use lapack_wrap, only: la_lu_factor, la_lu_solve, la_zlu_factor, la_zlu_solve
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
@@ -648,25 +649,9 @@ contains
         s%ns = 0
         n = s%n
         ns = size(s0, 2)
-        if (.not. s%ready .or. s%started) then
-            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, 'radau sens_init: after init and '// &
-                'before the first step only')
-            return
-        end if
-        if (size(s0, 1) /= n .or. ns < 1) then
-            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, 'radau sens_init: s0 must be n x ns, '// &
-                'ns >= 1')
-            return
-        end if
-        sc = 1.0_dp
-        if (present(scale)) then
-            if (size(scale) /= ns .or. .not. all(scale > 0.0_dp)) then
-                call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, 'radau sens_init: scale must '// &
-                    'have ns entries, each > 0')
-                return
-            end if
-            sc = scale
-        end if
+        call sens_init_args('radau sens_init', RADAU_ERR_ILLEGAL_INPUT, s%ready, &
+                            s%started, n, s0, sc, stat, scale)
+        if (stat%code /= STATUS_OK) return
         s%sens_errcon = .false.
         if (present(error_control)) s%sens_errcon = error_control
         if (allocated(s%sy)) deallocate (s%sy, s%sy_old, s%zs_old, s%sf0, s%satol)
