@@ -282,28 +282,8 @@ contains
             case (3)
                 text = scale_column(base, 5, real(int(3*rnd(state)) - 1, dp))
                 what = 'cycles -1, 0 or 1'
-            case (4)
-                text = char(239)//char(187)//char(191)//crlf_tabs(base)
-                valid = .true.
-                what = 'BOM, CR LF'
-            case (5)
-                text = base
-                i = 1 + int((len(text) - 1)*rnd(state))
-                text = text(1:i)//trim(TOKENS(1 + int(size(TOKENS)*rnd(state))))//text(i + 1:)
-                what = 'a token'
-            case (6)
-                text = base
-                do i = 1, 1 + int(3*rnd(state))
-                    call insert_bytes(text, state)
-                end do
-                what = 'random bytes'
-            case (7)
-                text = base(1:int(len(base)*rnd(state)))
-                what = 'cut short'
             case default
-                text = base
-                valid = .true.
-                what = 'as it is'
+                call table_mutation(base, kind - 3, state, text, valid, what)
             end select
             call write_text(path, text)
             call read_trials(d, ts, st)
@@ -414,28 +394,8 @@ contains
             case (4)
                 text = scale_column(base, 9, real(int(3*rnd(state)) - 1, dp))
                 what = 'cycles -1, 0 or 1'
-            case (5)
-                text = char(239)//char(187)//char(191)//crlf_tabs(base)
-                valid = .true.
-                what = 'BOM, CR LF'
-            case (6)
-                text = base
-                i = 1 + int((len(text) - 1)*rnd(state))
-                text = text(1:i)//trim(TOKENS(1 + int(size(TOKENS)*rnd(state))))//text(i + 1:)
-                what = 'a token'
-            case (7)
-                text = base
-                do i = 1, 1 + int(3*rnd(state))
-                    call insert_bytes(text, state)
-                end do
-                what = 'random bytes'
-            case (8)
-                text = base(1:int(len(base)*rnd(state)))
-                what = 'cut short'
             case default
-                text = base
-                valid = .true.
-                what = 'as it is'
+                call table_mutation(base, kind - 4, state, text, valid, what)
             end select
             call write_text(path, text)
             call read_hangs(d, set, st)
@@ -720,6 +680,42 @@ contains
             r = r//line(1:a - 1)//trim(adjustl(num))//line(b + 1:)
         end do
     end function scale_column
+
+    !> The mutations a table of releases and a table of hangs share, k: 1 a byte order mark
+    !! and CR LF line ends with tabs (valid), 2 a token that is no number, 3 random bytes,
+    !! 4 cut short; any other k the table as it is (valid).  valid is left alone otherwise.
+    subroutine table_mutation(base, k, state, text, valid, what)
+        character(len=*), intent(in) :: base
+        integer, intent(in) :: k
+        integer(8), intent(inout) :: state
+        character(len=:), allocatable, intent(out) :: text, what
+        logical, intent(inout) :: valid
+        integer :: i
+        select case (k)
+        case (1)
+            text = char(239)//char(187)//char(191)//crlf_tabs(base)
+            valid = .true.
+            what = 'BOM, CR LF'
+        case (2)
+            text = base
+            i = 1 + int((len(text) - 1)*rnd(state))
+            text = text(1:i)//trim(TOKENS(1 + int(size(TOKENS)*rnd(state))))//text(i + 1:)
+            what = 'a token'
+        case (3)
+            text = base
+            do i = 1, 1 + int(3*rnd(state))
+                call insert_bytes(text, state)
+            end do
+            what = 'random bytes'
+        case (4)
+            text = base(1:int(len(base)*rnd(state)))
+            what = 'cut short'
+        case default
+            text = base
+            valid = .true.
+            what = 'as it is'
+        end select
+    end subroutine table_mutation
 
     !> 1 to 10 random bytes inserted at a random place.
     subroutine insert_bytes(s, state)
