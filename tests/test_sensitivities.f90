@@ -8,7 +8,8 @@
 module test_sensitivities
     use kinds, only: dp, deg
     use status, only: status_t
-    use testing, only: tester_t, msg_of_ => msg_of
+    use testing, only: tester_t, msg_of_ => msg_of, write_text, run_cmd => run, fresh_dir, &
+        count_lines, file_has, empty_dir
     use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, default_sens_point
     use integrators, only: new_integrator, SOLVER_LSODA, SOLVER_RADAU, SENS_FORWARD, &
                            SENS_DIFFERENCES
@@ -47,7 +48,6 @@ contains
     subroutine run_sensitivities_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
-        if (.false.) write (*, '(a)') exe
         if (t%want('sensitivities: integrators against an exact solution')) call test_exact(t)
         if (t%want('sensitivities: the record model against differences of whole runs')) &
             call test_record_model(t)
@@ -56,7 +56,30 @@ contains
         if (t%want('sensitivities: monodromy, forward = variational system')) &
             call test_monodromy(t)
         if (t%want('sensitivities: global error within 10 rtol')) call test_global_error(t)
+        if (t%want('sensitivities: a bad &integration sensitivities is one line, no file')) &
+            call test_bad_word(t, exe)
     end subroutine run_sensitivities_tests
+
+    !> &integration sensitivities = 'exact' through the executable: exit 2, one line on
+    !! stderr naming the deck, the variable and the words allowed, nothing on stdout, no
+    !! file in --out.
+    subroutine test_bad_word(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=*), parameter :: d = 'build/test_sensitivities/bad'
+        character, parameter :: NL = new_line('a')
+        integer :: ex
+        call fresh_dir(d)
+        call write_text(d//'/bad.nml', '&scene title = ''bad word'', analyses = ''floquet'' /'// &
+            NL//'&suspension b = 1.0, b_prime = 1.0, l = 2.0, l_prime = 2.0 /'//NL// &
+            '&body mass = 1.0 /'//NL//'&integration sensitivities = ''exact'' /'//NL)
+        ex = run_cmd(exe//' '//d//'/bad.nml --out '//d//'/out', d)
+        call t%check('sensitivities: a bad word: exit 2, one stderr line naming the deck, '// &
+            'the variable and the words allowed, no output', all([ex == 2, &
+            count_lines(d//'/stderr') == 1, count_lines(d//'/stdout') == 0, &
+            file_has(d//'/stderr', 'bad.nml: &integration sensitivities = ''exact'''), &
+            file_has(d//'/stderr', 'allowed: forward, differences'), empty_dir(d//'/out')]))
+    end subroutine test_bad_word
 
     ! ---- the oscillator
 
