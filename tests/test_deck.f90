@@ -36,7 +36,7 @@ module test_deck
         //NL//"       theta_dot = -1, -2, -3, -4 /"
     character(len=*), parameter :: G_INTEG = &
         '&integration tau_end = 10.0, dtau_out = 0.5, rtol = 1e-9, atol = 1d-11, ' // &
-        'error_estimate = .true. /'
+        'error_estimate = .true., sensitivity_error_control = .true. /'
     ! minimal required groups
     character(len=*), parameter :: MIN_SUSP = '&suspension b = 1.0, l = 2.0 /'
     character(len=*), parameter :: MIN_BODY = '&body mass = 1.0 /'
@@ -118,6 +118,7 @@ contains
         call t%check_close('complete: rtol', d%rtol, 1.0e-9_dp)
         call t%check_close('complete: atol', d%atol, 1.0e-11_dp)
         call t%check('complete: error_estimate', d%error_estimate)
+        call t%check('complete: sensitivity_error_control', d%sensitivity_error_control)
 
         ! the decks shipped in input/ are valid
         call read_deck('input/cylinder_l180.nml', d, stat)
@@ -363,6 +364,9 @@ contains
         call bad('rtol_one', SB//'&integration rtol = 1 /', ['rtol'])
         call bad('atol_negative', SB//'&integration atol = -1e-12 /', ['atol'])
         call bad('bad_logical', SB//'&integration error_estimate = maybe /', ['error_estimate'])
+        call bad('sens_control_differences', SB//'&integration sensitivities = ''differences'','// &
+                 ' sensitivity_error_control = .true. /', ['sensitivity_error_control', &
+                 'differences              ', 'allowed                  '])
         call bad('long_title', "&scene title = '"//repeat('x', 2000)//"' /"//NL//SB// &
                  '&start mode = 1 /', ['&scene     ', 'at most 256'])
         call bad('long_mode', SB//"&start mode = '"//repeat('x', 300)//"' /", &
@@ -450,7 +454,8 @@ contains
                      all(d%theta_dot == e%theta_dot) .and. d%tau_end == e%tau_end .and. &
                      d%dtau_out == e%dtau_out .and. d%rtol == e%rtol .and. d%atol == e%atol)
         call t%check('echo: same mode and flags', d%mode == e%mode .and. &
-                     (d%error_estimate .eqv. e%error_estimate))
+                     (d%error_estimate .eqv. e%error_estimate) .and. &
+                     (d%sensitivity_error_control .eqv. e%sensitivity_error_control))
         call t%check('all_finite: finite', all_finite([1.0_dp, -2.0_dp, huge(1.0_dp)]))
         call t%check('all_finite: empty', all_finite([real(dp) ::]))
     end subroutine test_echo

@@ -323,13 +323,14 @@ contains
     !! first-order budget, by forward sensitivities (rtol 1e-10) and by differences of whole
     !! runs (rtol 1e-12, so that the differences are good to about 1e-7): I1 and its u agree
     !! to 1e-6, every row of the budget to 2e-6 of u(I1), and the forward fit evaluates the
-    !! model fewer times.
+    !! model fewer times.  The same with the sensitivities in the error control
+    !! (&integration sensitivity_error_control).
     subroutine test_fit(t)
         type(tester_t), intent(inout) :: t
         type(deck_t) :: d
         type(record_t) :: rec, part
         type(status_t) :: st
-        type(identify_result_t) :: rf, rd
+        type(identify_result_t) :: rf, rd, rc
         integer :: n, i
         call read_deck('input/identify_record.nml', d, st)
         if (st%code == 0) call read_record(d, rec, st)
@@ -346,6 +347,11 @@ contains
         call identify_record(d, part, rf, st)
         call t%check('sensitivities: fit forward'//msg_of(st), st%code == 0)
         if (st%code /= 0) return
+        d%sensitivity_error_control = .true.
+        call identify_record(d, part, rc, st)
+        call t%check('sensitivities: fit forward in the error control'//msg_of(st), st%code == 0)
+        if (st%code /= 0) return
+        d%sensitivity_error_control = .false.
         d%sensitivities = 'differences'
         d%rtol = 1.0e-12_dp
         d%atol = 1.0e-14_dp
@@ -356,8 +362,13 @@ contains
                            1.0e-6_dp)
         call t%check_close('sensitivities: fit u(I1), forward = differences', rf%u_i1, &
                            rd%u_i1, 1.0e-6_dp)
+        call t%check_close('sensitivities: fit I1, in the error control = differences', &
+                           rc%i1, rd%i1, 1.0e-6_dp)
+        call t%check_close('sensitivities: fit u(I1), in the error control = differences', &
+                           rc%u_i1, rd%u_i1, 1.0e-6_dp)
         call t%check('sensitivities: fit, budgets of the same rows', &
-                     size(rf%budget) == size(rd%budget) .and. size(rf%budget) > 3)
+                     size(rf%budget) == size(rd%budget) .and. size(rf%budget) > 3 .and. &
+                     size(rc%budget) == size(rd%budget))
         if (size(rf%budget) /= size(rd%budget)) return
         do i = 1, size(rf%budget)
             ! each row's contribution to u(I1), to 2e-6 of u(I1) (the reference's own
@@ -367,6 +378,11 @@ contains
                                rd%budget(i)%contribution, 0.0_dp, 2.0e-6_dp*rd%u_i1)
             call t%check('sensitivities: fit budget '//trim(rd%budget(i)%input)//' the same row', &
                          rf%budget(i)%input == rd%budget(i)%input)
+            if (size(rc%budget) == size(rd%budget)) &
+                call t%check_close('sensitivities: fit budget '//trim(rd%budget(i)%input)// &
+                                   ', in the error control = differences', &
+                                   rc%budget(i)%contribution, rd%budget(i)%contribution, &
+                                   0.0_dp, 2.0e-6_dp*rd%u_i1)
         end do
         call t%check('sensitivities: the forward fit evaluates the model fewer times', &
                      rf%evaluations < rd%evaluations)

@@ -82,6 +82,9 @@ module deck
         !> SENSITIVITIES_ALLOWED: derivatives of whole runs by forward sensitivities or by
         !! the paths of before (differences of runs; Floquet's augmented system)
         character(len=256) :: sensitivities = 'forward'
+        !> .true.: forward sensitivities take part in the integrator's error test (a record
+        !! fit's Jacobian and budget; Floquet's monodromy always does)
+        logical :: sensitivity_error_control = .false.
         ! &cables (model = 'elastic' only)
         real(dp) :: cable_stiffness = 1.0e6_dp    !! EA/(m g) of each cable, 1 <= k <= 1e12
         real(dp) :: cable_damping = 0.05_dp       !! damping ratio zeta of each cable, 0..10
@@ -199,7 +202,8 @@ module deck
         'mass:r1 inertia:r3 r:r1 lambda:r1 cg_depth:r1 cg_offset:r1 btilde:r9 sway_depth:r1'
     character(len=*), parameter :: SPEC_START = 'mode:c1 amplitude:r1 tilt:r1 theta:r4 theta_dot:r4'
     character(len=*), parameter :: SPEC_INTEGRATION = &
-        'tau_end:r1 dtau_out:r1 rtol:r1 atol:r1 error_estimate:l1 method:c1 sensitivities:c1'
+        'tau_end:r1 dtau_out:r1 rtol:r1 atol:r1 error_estimate:l1 method:c1 sensitivities:c1 '// &
+        'sensitivity_error_control:l1'
     character(len=*), parameter :: SPEC_CABLES = 'stiffness:r1 damping:r1'
     character(len=*), parameter :: SPEC_FLOQUET = 'amplitude:r1 segments:i1 rtol:r1'
     character(len=*), parameter :: SPEC_CHART = &
@@ -780,17 +784,18 @@ contains
         d%theta_dot = theta_dot
     end subroutine read_start
 
-    !> &integration tau_end, dtau_out, rtol, atol, error_estimate, method, sensitivities.
+    !> &integration tau_end, dtau_out, rtol, atol, error_estimate, method, sensitivities,
+    !! sensitivity_error_control.
     subroutine read_integration(rec, d, ios, msg)
         character(len=*), intent(in) :: rec         !! the group as one record
         type(deck_t), intent(inout) :: d            !! defaults in, values read out
         integer, intent(out) :: ios                 !! iostat of the namelist read
         character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
         real(dp) :: tau_end, dtau_out, rtol, atol
-        logical :: error_estimate
+        logical :: error_estimate, sensitivity_error_control
         character(len=256) :: method, sensitivities
         namelist /integration/ tau_end, dtau_out, rtol, atol, error_estimate, method, &
-            sensitivities
+            sensitivities, sensitivity_error_control
         tau_end = d%tau_end
         dtau_out = d%dtau_out
         rtol = d%rtol
@@ -798,6 +803,7 @@ contains
         error_estimate = d%error_estimate
         method = d%method
         sensitivities = d%sensitivities
+        sensitivity_error_control = d%sensitivity_error_control
         read (rec, nml=integration, iostat=ios, iomsg=msg)
         d%tau_end = tau_end
         d%dtau_out = dtau_out
@@ -806,6 +812,7 @@ contains
         d%error_estimate = error_estimate
         d%method = method
         d%sensitivities = sensitivities
+        d%sensitivity_error_control = sensitivity_error_control
     end subroutine read_integration
 
     !> &cables stiffness, damping.
@@ -1151,7 +1158,9 @@ contains
         call put('# &integration tau_end = '//rshort(d%tau_end)//', dtau_out = '// &
                  rshort(d%dtau_out)//', rtol = '//rshort(d%rtol)//', atol = '//rshort(d%atol)// &
                  ', error_estimate = '//line//', method = '//quoted(d%method)// &
-                 ', sensitivities = '//quoted(d%sensitivities)//' /')
+                 ', sensitivities = '//quoted(d%sensitivities)// &
+                 ', sensitivity_error_control = '// &
+                 trim(merge('.true. ', '.false.', d%sensitivity_error_control))//' /')
         if (trim(d%model) == 'elastic') call put('# &cables stiffness = '// &
             rshort(d%cable_stiffness)//', damping = '//rshort(d%cable_damping)//' /')
         if (analysis_requested(d, 'floquet')) call put('# &floquet amplitude = '// &

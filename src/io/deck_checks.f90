@@ -287,6 +287,13 @@ contains
                         SENSITIVITIES_ALLOWED)
         if (stat%code /= STATUS_OK) return
         d%sensitivities = lower(adjustl(d%sensitivities))
+        if (d%sensitivity_error_control .and. trim(d%sensitivities) /= 'forward') then
+            call set_error(stat, ERR_DECK, '&integration sensitivity_error_control = '// &
+                           '.true.: there are no forward sensitivities to control with '// &
+                           'sensitivities = '''//trim(d%sensitivities)//'''; allowed: '// &
+                           '.false., or .true. with sensitivities = ''forward''')
+            return
+        end if
         call positive(stat, 'integration', 'tau_end', d%tau_end, 'tau_end > 0')
         call positive(stat, 'integration', 'dtau_out', d%dtau_out, '0 < dtau_out <= tau_end')
         call finite(stat, 'integration', 'rtol', d%rtol)

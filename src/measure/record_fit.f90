@@ -295,7 +295,8 @@ contains
         if (ns > 0) then
             call kane_run_start(m, p, y0, th0(3), acc%rtol, acc%atol, acc%method, &
                                 taus(n - i0), 'raise &integration rtol/atol', stat, &
-                                s0=s0(:, 1:ns), dirs=dirs, scale=scale(1:ns))
+                                s0=s0(:, 1:ns), dirs=dirs, scale=scale(1:ns), &
+                                sens_error_control=acc%sens_error_control)
         else
             call kane_run_start(m, p, y0, th0(3), acc%rtol, acc%atol, acc%method, &
                                 taus(n - i0), 'raise &integration rtol/atol', stat)

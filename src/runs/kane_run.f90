@@ -57,12 +57,13 @@ contains
     !! The validity of the model is checked at the end of every step (check_validity).
     !! With s0 the run carries forward sensitivities (the integrator's sens_init): column k
     !! starts at s0(:, k) and follows the parameter direction dirs(k) (sens_dir_t; IC only
-    !! beyond size(dirs)), scale(k) its size against the state's; sens_at gives them.
+    !! beyond size(dirs)), scale(k) its size against the state's; sens_at gives them;
+    !! with sens_error_control they take part in the error test.
     !! With `global` (simulate's runs) the local error is held to rtol/GLOBAL_SHARE (not
     !! below 3e-14), atol likewise, so that the global error follows rtol (within 10 rtol:
     !! tests/bench/bench_global_error.f90); messages quote the rtol and atol given.
     subroutine kane_run_start(m, p, y0, th3, rtol, atol, method, t_end, remedy, stat, s0, &
-                              dirs, scale, global)
+                              dirs, scale, global, sens_error_control)
         type(kane_run_t), intent(out) :: m      !! the run
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         real(dp), intent(in) :: y0(NSTATE)      !! chart state at tau = 0
@@ -76,6 +77,7 @@ contains
         type(sens_dir_t), intent(in), optional :: dirs(:)   !! their parameter directions
         real(dp), intent(in), optional :: scale(:)          !! (ns) their sizes
         logical, intent(in), optional :: global !! hold the global error to rtol
+        logical, intent(in), optional :: sens_error_control  !! s0's columns in the error test
         real(dp) :: rt, at
         m%sys%p = p
         m%sys%keep_tensions = .true.            ! for check_validity
@@ -101,7 +103,7 @@ contains
         if (stat%code /= 0 .or. .not. present(s0)) return
         if (present(dirs)) m%sys%dirs = dirs
         m%s0 = s0
-        call m%solver%sens_init(m%sys, s0, stat, scale=scale)
+        call m%solver%sens_init(m%sys, s0, stat, scale=scale, error_control=sens_error_control)
     end subroutine kane_run_start
 
     !> The forward sensitivities at t (as state_at: the start before any step, the step's

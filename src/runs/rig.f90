@@ -55,6 +55,9 @@ module rig
         real(dp) :: rtol = 1.0e-10_dp, atol = 1.0e-12_dp
         integer :: method = SOLVER_LSODA
         integer :: sensitivities = SENS_FORWARD     !! SENS_FORWARD or SENS_DIFFERENCES
+        !> forward sensitivities in the integrator's error test (&integration
+        !! sensitivity_error_control)
+        logical :: sens_error_control = .false.
     end type accuracy_t
 
     public :: rig_of, start_of, raised_start, method_of, accuracy_of, make_pendulum
@@ -117,6 +120,7 @@ contains
         acc%atol = d%atol
         acc%method = method_of(d)
         acc%sensitivities = sensitivities_for(d%sensitivities)
+        acc%sens_error_control = d%sensitivity_error_control
     end function accuracy_of
 
     !> Scaled pendulum parameters of a rig (lengths over b', inertia over m b'^2, damping in
