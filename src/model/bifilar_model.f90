@@ -295,6 +295,29 @@ contains
                     - 3.0_dp*ssd**2*dz/(z3*z)]
         dk%jv(:, 2) = p%big_l*[0.0_dp, 0.0_dp, dy(2)/z - y(2)*dz/z**2]
         dk%jv(:, 3) = p%big_l*[0.0_dp, 0.0_dp, dy(3)/z - y(3)*dz/z**2]
+        if (all(dy([1, 4, 5, 6, 9, 10]) == 0.0_dp)) then
+            ! only the cable BC changes (four of Z's ten columns): the body's angles and
+            ! rates, its frame, rotation and the offsets rho and D - C stay as they are
+            dk%n = 0.0_dp
+            dk%jw = 0.0_dp
+            dk%omega = 0.0_dp
+            dk%cw = 0.0_dp
+            dk%rho = 0.0_dp
+            dk%jv(:, 1) = 0.0_dp
+            dk%jv(:, 4:5) = 0.0_dp
+            dk%cv = p%big_l*dk%econv
+            dk%d = dk%c
+            dk%jd(:, 1) = 0.0_dp
+            dk%jd(:, 2:3) = dk%jv(:, 2:3)
+            dk%jd(:, 4:5) = 0.0_dp
+            dk%cd = p%big_l*dk%econv
+            dk%b = 0.0_dp
+            dk%wb = 0.0_dp
+            dk%omb = 0.0_dp
+            dk%cwb = 0.0_dp
+            dk%ps = pose_t()
+            return
+        end if
         ! the body's rotation: dTheta, the frame, the partial angular velocities
         dtheta = (k%jw(:, 1)*dy(1) + k%jw(:, 4)*dy(4)) + k%jw(:, 5)*dy(5)
         if (moved) then
