@@ -1002,8 +1002,9 @@ contains
             'inertia(2)', 'r', 'lambda', 'btilde(1,:)', 'btilde(2,2)', 'sway_depth']
         character(len=16), parameter :: V4(6) = [character(len=16) :: 'mode', 'amplitude', &
             'tilt', 'theta', 'theta_dot', 'theta_dot(4)']
-        character(len=16), parameter :: V5(6) = [character(len=16) :: 'tau_end', 'dtau_out', &
-            'rtol', 'atol', 'error_estimate', 'method']
+        character(len=25), parameter :: V5(8) = [character(len=25) :: 'tau_end', 'dtau_out', &
+            'rtol', 'atol', 'error_estimate', 'method', 'sensitivities', &
+            'sensitivity_error_control']
         character(len=16), parameter :: V6(2) = [character(len=16) :: 'stiffness', 'damping']
         character(len=16), parameter :: V7(3) = [character(len=16) :: 'amplitude', &
             'segments', 'rtol']
@@ -1073,6 +1074,8 @@ contains
             '''angles''', '''ANGLES''', '''dropped''']
         character(len=16), parameter :: methods(6) = [character(len=16) :: '''auto''', &
             '''lsoda''', '''radau''', '''RADAU''', '''rk4''', '''''']
+        character(len=16), parameter :: sens_ways(5) = [character(len=16) :: '''forward''', &
+            '''differences''', '''FORWARD''', '''adjoint''', '''''']
         character(len=16), parameter :: axes(8) = [character(len=16) :: '''l''', '''b''', &
             '''amplitude''', '''r''', '''lambda''', '''inertia_ratio''', '''theta''', '''''']
         character(len=8), parameter :: counts_n(8) = [character(len=8) :: '0', '1', '2', '3', &
@@ -1116,6 +1119,9 @@ contains
         case ('method')
             v = trim(methods(1 + int(size(methods)*rnd(state))))
             return
+        case ('sensitivities')
+            v = trim(sens_ways(1 + int(size(sens_ways)*rnd(state))))
+            return
         case ('x', 'y')
             v = trim(axes(1 + int(size(axes)*rnd(state))))
             return
@@ -1154,7 +1160,7 @@ contains
         case ('title')
             v = '''fuzz '//random_bytes_printable(state, int(40*rnd(state)))//''''
             return
-        case ('error_estimate')
+        case ('error_estimate', 'sensitivity_error_control')
             v = trim(merge('.true. ', '.false.', rnd(state) < 0.5_dp))
             if (kind == 0) v = trim(hostile(1 + int(size(hostile)*rnd(state))))
             return
