@@ -1,5 +1,6 @@
 !> Tests of the forward sensitivities: the integrators' staggered direct method
-!! against an exact solution, the record model's derivatives against differences of whole
+!! against an exact solution, the model's df/dp along every parameter against differences
+!! of its accelerations, the record model's derivatives against differences of whole
 !! runs (every fit parameter and some budget inputs, symmetric and asymmetric rig, small and
 !! large amplitude, LSODA and Radau), a record fit and its budget by sensitivities against
 !! the same by differences of runs, the monodromy as the orbit's sensitivities against
@@ -22,7 +23,7 @@ module test_sensitivities
     use geometry, only: pendulum_t
     use floquet, only: floquet_result_t, floquet_analysis
     use rig, only: start_state
-    use bifilar_model, only: NSTATE
+    use bifilar_model, only: NSTATE, bifilar_t, sens_dir_t, chart_accelerations
     use kane_run, only: kane_run_t, kane_run_start
     use run_loop, only: drive
     use keep_sink, only: keep_t
@@ -49,6 +50,8 @@ contains
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
         if (t%want('sensitivities: integrators against an exact solution')) call test_exact(t)
+        if (t%want('sensitivities: df/dp of each parameter against differences of the rhs')) &
+            call test_dfdp(t)
         if (t%want('sensitivities: the record model against differences of whole runs')) &
             call test_record_model(t)
         if (t%want('sensitivities: a record fit and its budget, forward = differences')) &
@@ -492,6 +495,95 @@ contains
             if (st%code == 0) yout = sink%ys
         end subroutine run
     end subroutine test_global_error
+
+    !> The model's df/dp (bifilar_t's sens_point) along each of its scaled parameters alone
+    !! (L, L', B, r, lambda, the three moments, c_v, c_q) and along a direction that moves
+    !! them all, at a moving, tilted state of an asymmetric rig with damping and Baumgarte's
+    !! term, against the central differences of the accelerations (chart_accelerations)
+    !! extrapolated from steps h and h/2 (Richardson): within 1e-8 of the largest
+    !! acceleration's change (the differences' own error is about 1e-11).
+    subroutine test_dfdp(t)
+        type(tester_t), intent(inout) :: t
+        character(len=*), parameter :: names(11) = [character(len=8) :: 'L', "L'", 'B', &
+            'r', 'lambda', 'I1', 'I2', 'I3', 'c_v', 'c_q', 'all']
+        type(bifilar_t) :: sys
+        type(pendulum_t) :: p
+        type(sens_dir_t) :: dirs(11)
+        type(status_t) :: st
+        real(dp) :: y(NSTATE), dfdp(NSTATE, 11), fd(5), fd2(5), err
+        integer :: j
+        p%big_l = 3.1_dp
+        p%big_lp = 2.9_dp
+        p%big_b = 1.2_dp
+        p%r = 0.55_dp
+        p%lambda = 0.7_dp
+        p%inertia = [0.31_dp, 0.42_dp, 0.19_dp]
+        p%c_v = 0.02_dp
+        p%c_q = 0.03_dp
+        p%stab_rate = 1.0_dp
+        p%btilde = reshape([0.8_dp, 0.6_dp, 0.0_dp, -0.6_dp, 0.8_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+                            1.0_dp], [3, 3])
+        y = [0.05_dp, 0.12_dp, -0.07_dp, 0.4_dp, 0.03_dp, 0.02_dp, -0.05_dp, 0.08_dp, -0.6_dp, &
+             0.04_dp]
+        dirs(1)%big_l = 1.0_dp
+        dirs(2)%big_lp = 1.0_dp
+        dirs(3)%big_b = 1.0_dp
+        dirs(4)%r = 1.0_dp
+        dirs(5)%lambda = 1.0_dp
+        dirs(6)%inertia(1) = 1.0_dp
+        dirs(7)%inertia(2) = 1.0_dp
+        dirs(8)%inertia(3) = 1.0_dp
+        dirs(9)%c_v = 1.0_dp
+        dirs(10)%c_q = 1.0_dp
+        dirs(11) = sens_dir_t([0.3_dp, -0.2_dp, 0.1_dp], 0.5_dp, -0.4_dp, 0.7_dp, -0.6_dp, &
+                              0.9_dp, 0.35_dp, -0.25_dp)
+        sys%p = p
+        sys%dirs = dirs
+        call sys%sens_point(0.0_dp, y, dfdp, st)
+        call t%check('sensitivities: df/dp at the state'//msg_of(st), st%code == 0)
+        if (st%code /= 0) return
+        do j = 1, size(dirs)
+            call central(dirs(j), 1.0e-4_dp, fd)
+            call central(dirs(j), 0.5e-4_dp, fd2)
+            fd = (4.0_dp*fd2 - fd)/3.0_dp
+            err = maxval(abs(dfdp(6:10, j) - fd))/max(maxval(abs(fd)), 1.0e-12_dp)
+            call t%check_close('sensitivities: df/dp along '//trim(names(j))// &
+                               ' = differences of the accelerations', 1.0_dp + err, 1.0_dp, &
+                               1.0e-8_dp)
+            call t%check('sensitivities: df/dp along '//trim(names(j))//' is not 0', &
+                         maxval(abs(fd)) > 1.0e-6_dp)
+            call t%check('sensitivities: df/dp along '//trim(names(j))//' leaves the rates', &
+                         all(dfdp(1:5, j) == 0.0_dp))
+        end do
+    contains
+        !> Central differences of the accelerations along direction dd with step h.
+        subroutine central(dd, h, g)
+            type(sens_dir_t), intent(in) :: dd
+            real(dp), intent(in) :: h
+            real(dp), intent(out) :: g(5)
+            real(dp) :: ap(5), am(5)
+            type(status_t) :: s1, s2
+            call chart_accelerations(moved(dd, h), y, ap, s1)
+            call chart_accelerations(moved(dd, -h), y, am, s2)
+            g = (ap - am)/(2.0_dp*h)
+            if (s1%code /= 0 .or. s2%code /= 0) g = huge(1.0_dp)
+        end subroutine central
+        !> The pendulum moved by h along dd.
+        function moved(dd, h) result(q)
+            type(sens_dir_t), intent(in) :: dd
+            real(dp), intent(in) :: h
+            type(pendulum_t) :: q
+            q = p
+            q%big_l = p%big_l + h*dd%big_l
+            q%big_lp = p%big_lp + h*dd%big_lp
+            q%big_b = p%big_b + h*dd%big_b
+            q%r = p%r + h*dd%r
+            q%lambda = p%lambda + h*dd%lambda
+            q%inertia = p%inertia + h*dd%inertia
+            q%c_v = p%c_v + h*dd%c_v
+            q%c_q = p%c_q + h*dd%c_q
+        end function moved
+    end subroutine test_dfdp
 
     !> The largest distance from a multiplier of a to the nearest of b, relative to
     !! max(1, |b|) (the sets, whatever the order of a conjugate pair or of equal moduli).

@@ -657,6 +657,8 @@ contains
         r%rec = rec
         call fit_problem(d, rec, prob, p0, h)
         prob%rg = rg
+        ! the budget's inputs ride along the fit's last runs (record_fit's model_values)
+        prob%x = x
         np = prob%np
         call fit_record(prob, p0, h, fit, stat)
         r%iterations = fit%iterations

@@ -23,7 +23,7 @@
 !! f(y0).  With 'differences' the Jacobian and the inputs' sensitivities are differences of
 !! whole runs, as before.
 module record_fit
-    use, intrinsic :: iso_fortran_env, only: int64
+    use, intrinsic :: iso_fortran_env, only: int8, int64
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use kinds, only: dp, pi, deg
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC
@@ -53,6 +53,20 @@ module record_fit
     character(len=9), parameter, public :: PARAM_NAMES(NPARAM) = [character(len=9) :: 'I1', &
         'c_v', 'c_q', 'amplitude', 't0', 'bias']
 
+    !> A run of the record model kept for reuse: the model is a function of the rig, the
+    !! start and the release time only (the weights, the bias and the sign act on its
+    !! values), so an evaluation whose rig, start and release are bit for bit those of the
+    !! run (key) and whose samples it reached takes its values and derivatives.
+    type, public :: model_cache_t
+        logical :: valid = .false.
+        integer(int8), allocatable :: key(:)    !! the rig, start and release of the run
+        integer :: n = 0                        !! the last sample it reached (from ifirst)
+        integer :: nfit = 0                     !! its columns of the fit's parameters
+        integer :: nx = 0                       !! its columns of the budget's inputs
+        real(dp), allocatable :: v(:)           !! the model at samples ifirst .. n
+        real(dp), allocatable :: dv(:, :)       !! its derivatives: the fit's, the inputs'
+    end type model_cache_t
+
     !> The record fit as a least-squares problem: residuals
     !! (sign model + bias - measured)/u_i, times the robust weights' roots, over the samples
     !! ifirst .. nuse.
@@ -73,13 +87,16 @@ module record_fit
         real(dp), allocatable :: w(:)           !! 1/u_i (1 without u)
         real(dp), allocatable :: hw(:)          !! the roots of the robust weights (1: squares)
         real(dp) :: xs(NPARAM) = 1.0_dp         !! the size of each estimated parameter
-        !> fit_record's look-ahead: residual_jacobian runs the model to sample nrun
-        !! (> nuse) and keeps it (the parameters, the model and its derivatives from sample
-        !! ifirst), so that the next window's first evaluation, at the same parameters, is
-        !! this run's
-        logical :: look_ahead = .false.
-        integer :: nrun = 0, kept_n = 0
-        real(dp), allocatable :: kept_p(:), kept_v(:), kept_dv(:, :)
+        !> The budget's inputs (release_record sets them): a run of the whole record after
+        !! its first carries their forward sensitivities beside the fit's, so that the
+        !! budget at the estimate (input_sensitivities) takes them from the fit's last run
+        type(input_t), allocatable :: x(:)
+        !> The Gauss-Newton gain at the last whole-record Jacobian (record_residual_jacobian):
+        !! the square of the step still to go, in standard errors
+        real(dp) :: whole_gain = huge(1.0_dp)
+        !> The last run of the model (model_cache_t): an evaluation of the same model (the
+        !! same rig, start and release) within its samples takes it instead of a run
+        type(model_cache_t) :: cache
     contains
         procedure :: residual => record_residual
         procedure :: nres => record_nres
@@ -135,6 +152,9 @@ module record_fit
     real(dp), parameter :: DAMP_REF = 1.0e-3_dp     !! scale of c_v, c_q (model's units)
     real(dp), parameter :: COND_MAX = 1.0e10_dp     !! largest condition number of J (scaled)
     real(dp), parameter :: HUBER_C = 1.345_dp       !! Huber's constant (95 % efficiency)
+    !> A whole-record run after one whose Gauss-Newton gain is at most this carries the
+    !! budget's inputs (model_values)
+    real(dp), parameter :: CARRY_GAIN = 1.0_dp
 
 contains
 
@@ -431,23 +451,14 @@ contains
         real(dp), intent(in) :: p(:)
         real(dp), intent(out) :: r(:)
         type(status_t), intent(out) :: stat
-        type(rig_t) :: rg
-        type(start_t) :: st
-        real(dp) :: t0, bias
-        real(dp), allocatable :: vals(:)
+        real(dp) :: bias
+        real(dp), allocatable :: vals(:), dv(:, :)
         integer :: i0, i1
-        call apply_parameters(prob, p, rg, st, t0, bias)
         r = 0.0_dp
-        if (.not. (rg%inertia(1) > 0.0_dp) .or. .not. (st%amplitude > 0.0_dp .and. &
-            st%amplitude < 180.0_dp)) then
-            call set_error(stat, ERR_NUMERIC, 'parameters out of the model''s range')
-            return
-        end if
+        call model_values(prob, p, .false., vals, dv, bias, stat)
+        if (stat%code /= 0) return
         i0 = prob%ifirst
         i1 = prob%nuse
-        allocate (vals(i1 - i0 + 1))
-        call record_model(rg, st, prob%acc, prob%rec%t(i0:i1), t0, prob%rate, vals, stat)
-        if (stat%code /= 0) return
         r = (prob%sign*vals + bias - prob%rec%v(i0:i1))*prob%w(i0:i1)*prob%hw(i0:i1)
         if (.not. all_finite(r)) call set_error(stat, ERR_NUMERIC, 'non-finite model values')
     end subroutine record_residual
@@ -467,52 +478,15 @@ contains
         real(dp), intent(in) :: p(:)
         real(dp), intent(out) :: r(:), jac(:, :)
         type(status_t), intent(out) :: stat
-        type(rig_t) :: rg
-        type(start_t) :: st
-        real(dp) :: t0, bias
-        real(dp), allocatable :: vals(:), dv(:, :), xs(:)
-        character(len=16), allocatable :: names(:)
-        integer :: i0, i1, i2, j, c
-        logical :: reuse
-        call apply_parameters(prob, p, rg, st, t0, bias)
+        real(dp) :: bias
+        real(dp), allocatable :: vals(:), dv(:, :)
+        integer :: i0, i1, j, c
         r = 0.0_dp
         jac = 0.0_dp
-        if (.not. (rg%inertia(1) > 0.0_dp) .or. .not. (st%amplitude > 0.0_dp .and. &
-            st%amplitude < 180.0_dp)) then
-            call set_error(stat, ERR_NUMERIC, 'parameters out of the model''s range')
-            return
-        end if
-        allocate (names(0), xs(0))
-        do j = 1, prob%np
-            if (prob%which(j) == P_BIAS) cycle
-            names = [character(len=16) :: names, PARAM_NAMES(prob%which(j))]
-            xs = [xs, prob%xs(j)]
-        end do
+        call model_values(prob, p, .true., vals, dv, bias, stat)
+        if (stat%code /= 0) return
         i0 = prob%ifirst
         i1 = prob%nuse
-        reuse = .false.
-        if (prob%look_ahead .and. allocated(prob%kept_p)) reuse = prob%kept_n >= i1 .and. &
-            all(prob%kept_p == p)
-        if (reuse) then
-            vals = prob%kept_v(1:i1 - i0 + 1)
-            dv = prob%kept_dv(1:i1 - i0 + 1, :)
-        else
-            ! with the look-ahead, to the next window's end
-            i2 = i1
-            if (prob%look_ahead) i2 = max(i1, min(prob%nrun, size(prob%rec%t)))
-            allocate (vals(i2 - i0 + 1), dv(i2 - i0 + 1, size(names)))
-            call record_model_sens(rg, st, prob%acc, prob%rec%t(i0:i2), t0, prob%rate, names, &
-                                   xs, vals, dv, stat)
-            if (stat%code /= 0) return
-            if (prob%look_ahead) then
-                prob%kept_p = p
-                prob%kept_n = i2
-                prob%kept_v = vals
-                prob%kept_dv = dv
-            end if
-            vals = vals(1:i1 - i0 + 1)
-            dv = dv(1:i1 - i0 + 1, :)
-        end if
         r = (prob%sign*vals + bias - prob%rec%v(i0:i1))*prob%w(i0:i1)*prob%hw(i0:i1)
         c = 0
         do j = 1, prob%np
@@ -523,9 +497,111 @@ contains
                 jac(:, j) = prob%sign*dv(:, c)*prob%w(i0:i1)*prob%hw(i0:i1)
             end if
         end do
-        if (.not. all_finite(r) .or. .not. all(ieee_is_finite(jac))) &
+        if (.not. all_finite(r) .or. .not. all(ieee_is_finite(jac))) then
             call set_error(stat, ERR_NUMERIC, 'non-finite model values')
+            return
+        end if
+        if (i1 == size(prob%rec%t)) prob%whole_gain = gauss_newton_gain(r, jac)
     end subroutine record_residual_jacobian
+
+    !> What the Gauss-Newton step of (r, jac) could still lower the sum of squares S by,
+    !! over s^2 = S / (m - n): the square of that step in standard errors (huge when it
+    !! cannot be had), as least_squares judges convergence.
+    real(dp) function gauss_newton_gain(r, jac) result(g)
+        real(dp), intent(in) :: r(:), jac(:, :)
+        real(dp) :: d(size(jac, 2)), s
+        type(status_t) :: st
+        g = huge(1.0_dp)
+        s = sum(r**2)
+        if (.not. (s > 0.0_dp) .or. size(r) <= size(jac, 2)) return
+        call la_lstsq(jac, -r, d, st)
+        if (st%code /= 0) return
+        g = (s - sum((r + matmul(jac, d))**2))*(size(r) - size(jac, 2))/s
+    end function gauss_newton_gain
+
+    !> The model at the parameters p over the samples ifirst .. nuse (vals), with its
+    !! derivatives along the estimated parameters but the bias when `derivs` (dv, a column
+    !! each), and the bias; from the problem's cache when its run was of the same model and
+    !! reached nuse (with the derivatives when asked), else from a run, which becomes the
+    !! cache.  A run of the whole record with derivatives after one whose Gauss-Newton step
+    !! was within CARRY_GAIN (one standard error: the fit converges at the next point, as a
+    !! rule) carries the budget's inputs' too (prob%x with u > 0), unless the sensitivities
+    !! are in the error control (there a column changes the steps of the others).
+    subroutine model_values(prob, p, derivs, vals, dv, bias, stat)
+        type(record_fit_t), intent(inout) :: prob
+        real(dp), intent(in) :: p(:)
+        logical, intent(in) :: derivs
+        real(dp), allocatable, intent(out) :: vals(:), dv(:, :)
+        real(dp), intent(out) :: bias
+        type(status_t), intent(out) :: stat
+        type(rig_t) :: rg
+        type(start_t) :: st
+        real(dp) :: t0
+        real(dp), allocatable :: xs(:), dall(:, :)
+        character(len=16), allocatable :: names(:)
+        integer(int8), allocatable :: key(:)
+        integer :: i0, i1, j, m, nfit, nx
+        logical :: whole
+        stat%code = 0
+        call apply_parameters(prob, p, rg, st, t0, bias)
+        i0 = prob%ifirst
+        i1 = prob%nuse
+        m = i1 - i0 + 1
+        if (.not. (rg%inertia(1) > 0.0_dp) .or. .not. (st%amplitude > 0.0_dp .and. &
+            st%amplitude < 180.0_dp)) then
+            allocate (vals(m), dv(m, 0))
+            vals = 0.0_dp
+            call set_error(stat, ERR_NUMERIC, 'parameters out of the model''s range')
+            return
+        end if
+        key = [transfer(rg, [0_int8]), transfer(st, [0_int8]), transfer(t0, [0_int8])]
+        allocate (names(0), xs(0))
+        if (derivs) then
+            do j = 1, prob%np
+                if (prob%which(j) == P_BIAS) cycle
+                names = [character(len=16) :: names, PARAM_NAMES(prob%which(j))]
+                xs = [xs, prob%xs(j)]
+            end do
+        end if
+        nfit = size(names)
+        associate (c => prob%cache)
+            if (c%valid .and. c%n >= i1 .and. (c%nfit == nfit .or. .not. derivs)) then
+                if (all(c%key == key)) then
+                    vals = c%v(1:m)
+                    dv = c%dv(1:m, 1:merge(nfit, 0, derivs))
+                    return
+                end if
+            end if
+        end associate
+        whole = i1 == size(prob%rec%t)
+        nx = 0
+        if (derivs .and. whole .and. prob%whole_gain <= CARRY_GAIN .and. .not. &
+            prob%acc%sens_error_control .and. allocated(prob%x)) then
+            call budget_columns(prob, prob%x, names, xs)
+            nx = size(names) - nfit
+        end if
+        allocate (vals(m), dall(m, size(names)))
+        call record_model_sens(rg, st, prob%acc, prob%rec%t(i0:i1), t0, prob%rate, names, xs, &
+                               vals, dall, stat)
+        prob%cache%valid = .false.
+        if (stat%code /= 0) return
+        dv = dall(:, 1:nfit)
+        prob%cache = model_cache_t(.true., key, i1, nfit, nx, vals, dall)
+    end subroutine model_values
+
+    !> The names and sizes of the budget's inputs with u > 0 (x), appended to names and xs.
+    pure subroutine budget_columns(prob, x, names, xs)
+        type(record_fit_t), intent(in) :: prob
+        type(input_t), intent(in) :: x(:)
+        character(len=16), allocatable, intent(inout) :: names(:)
+        real(dp), allocatable, intent(inout) :: xs(:)
+        integer :: j
+        do j = 1, size(x)
+            if (.not. (x(j)%u > 0.0_dp)) cycle
+            names = [character(len=16) :: names, x(j)%name]
+            xs = [xs, input_size(prob, x(j))]
+        end do
+    end subroutine budget_columns
 
     !> Where the release is in a record (the start values of t0, the amplitude, the bias and
     !! the sign).  The first tenth of the record (at least 10 samples, at most 200) gives a
@@ -742,11 +818,13 @@ contains
         end do
     end subroutine fit_problem
 
-    !> Fit the record by Levenberg-Marquardt on growing windows (about two mean periods of
-    !! the record, then twice as long each time, then the whole record), each from the
-    !! last estimate and with its last damping lambda (a window in the basin of the last
-    !! takes Gauss-Newton steps at once).  res: the last fit (whole record); iterations
-    !! summed over windows.
+    !> Fit the record by Levenberg-Marquardt on growing windows, each from the last
+    !! estimate and with its last damping lambda (a window in the basin of the last takes
+    !! Gauss-Newton steps at once), then the whole record.  The first window is about two
+    !! mean periods of the record; each next one as long as the last window's estimate
+    !! predicts the model well enough to stay in the fit's basin there (window_growth), and
+    !! at least twice as long.  res: the last fit (whole record); iterations summed over
+    !! windows.
     subroutine fit_record(prob, p0, h, res, stat)
         type(record_fit_t), intent(inout) :: prob
         real(dp), intent(in) :: p0(:), h(:)
@@ -756,7 +834,7 @@ contains
         type(lsq_result_t) :: part
         real(dp) :: tp, span, win, tstart, lambda
         real(dp), allocatable :: p(:)
-        integer :: n, iters, evals, nwin
+        integer :: n, iters, evals
         n = size(prob%rec%t)
         tp = mean_period(prob%rec, prob%ifirst)
         tstart = prob%rec%t(prob%ifirst)
@@ -773,16 +851,9 @@ contains
             if (any(prob%which(1:prob%np) == P_T0)) &
                 win = win + max(0.0_dp, p0(findloc(prob%which(1:prob%np), P_T0, 1)) - tstart)
         end if
-        nwin = 0
         do
             prob%nuse = window_end(win)
             if (prob%nuse >= n) exit
-            nwin = nwin + 1
-            ! from the second window on, the runs look ahead to the next window's end: its
-            ! first evaluation is then this window's last (the first window takes several
-            ! steps from a start far off, each would cost twice)
-            prob%look_ahead = nwin > 1
-            prob%nrun = window_end(2.0_dp*win)
             opts%xtol = 1.0e-6_dp
             opts%chi2_tol = 1.0_dp
             opts%lambda0 = lambda
@@ -795,18 +866,15 @@ contains
                 res = part
                 res%iterations = iters
                 res%evaluations = evals
-                call forget()
                 return
             end if
             p = part%p
-            win = 2.0_dp*win
+            win = win*window_growth(prob, part, tp)
         end do
         prob%nuse = n
-        prob%nrun = n
         opts = lsq_options_t()
         opts%lambda0 = lambda
         call lm_fit(prob, p, h, prob%nres(), opts, res, stat)
-        call forget()
         res%iterations = res%iterations + iters
         res%evaluations = res%evaluations + evals
     contains
@@ -817,13 +885,52 @@ contains
             if (w < span) window_end = max(count(prob%rec%t <= tstart + w), &
                                            prob%ifirst + 2*prob%np + 1)
         end function window_end
-        !> The look-ahead off, its run forgotten.
-        subroutine forget()
-            prob%look_ahead = .false.
-            prob%kept_n = 0
-            if (allocated(prob%kept_p)) deallocate (prob%kept_p, prob%kept_v, prob%kept_dv)
-        end subroutine forget
     end subroutine fit_record
+
+    !> How much longer than the window just fitted (samples ifirst .. nuse, fit `part`) the
+    !! next may be.  The estimate's covariance C = s^2 (J^T J)^-1 gives the model's standard
+    !! uncertainty at each sample, sigma_i = sqrt(g_i C g_i) (g_i the model's gradient in
+    !! the parameters); over the window's last period its largest, sigma_w, is compared
+    !! with the swing's half range A there.  An error of the period or of the decay makes
+    !! the model's error grow as t or, through the amplitude's effect on the period, as t^2:
+    !! taken as (t / L)^2 from the window's length L, the next window ends where
+    !! WINDOW_SIGMAS sigma reach WINDOW_PHASE A (a phase error of 0.2 rad at five standard
+    !! uncertainties, well inside the basin of the fit).  At least 2 (the windows of before,
+    !! also when C cannot be had).
+    real(dp) function window_growth(prob, part, tp) result(g)
+        type(record_fit_t), intent(in) :: prob
+        type(lsq_result_t), intent(in) :: part  !! the window's fit (p, r, jac)
+        real(dp), intent(in) :: tp              !! the record's mean period (s)
+        real(dp), parameter :: WINDOW_SIGMAS = 5.0_dp, WINDOW_PHASE = 0.2_dp, GROWTH_MAX = 1.0e6_dp
+        real(dp), allocatable :: cov(:, :)
+        real(dp) :: s2, sig, sigw, vmin, vmax, tend, gi(prob%np)
+        type(status_t) :: st
+        integer :: m, i, k
+        g = 2.0_dp
+        m = size(part%r)
+        if (m <= prob%np .or. prob%np == 0 .or. .not. allocated(part%jac)) return
+        s2 = part%cost/(m - prob%np)
+        call covariance(part%jac, s2, cov, st)
+        if (st%code /= 0) return
+        tend = prob%rec%t(prob%nuse)
+        sigw = 0.0_dp
+        vmin = huge(1.0_dp)
+        vmax = -huge(1.0_dp)
+        do i = prob%ifirst, prob%nuse
+            if (prob%rec%t(i) < tend - tp) cycle
+            k = i - prob%ifirst + 1
+            gi = part%jac(k, :)/(prob%w(i)*prob%hw(i))
+            sig = sqrt(max(0.0_dp, dot_product(gi, matmul(cov, gi))))
+            sigw = max(sigw, sig)
+            vmin = min(vmin, prob%rec%v(i))
+            vmax = max(vmax, prob%rec%v(i))
+        end do
+        if (.not. (vmax > vmin)) return
+        ! an exact fit (sigma_w 0 or at roundoff): the next window is the whole record
+        g = GROWTH_MAX
+        if (sigw > 1.0e-12_dp*(vmax - vmin)) g = min(GROWTH_MAX, max(2.0_dp, &
+            sqrt(WINDOW_PHASE*0.5_dp*(vmax - vmin)/(WINDOW_SIGMAS*sigw))))
+    end function window_growth
 
     !> Huber's weights from the residuals r of the samples ifirst .. nuse (weighted by
     !! 1/u, before any robust weight): each sample's weight min(1, c s/|r_i|) with
@@ -916,8 +1023,9 @@ contains
     end subroutine input_sensitivity
 
     !> dp/dx = -(J^T J)^-1 J^T dr/dx at the estimate for every input x with u > 0 at once,
-    !! dr/dx from the forward sensitivities of one run (record_model_sens); dpdx(:, j) = 0
-    !! for an input without u.  With &integration sensitivities = 'differences', central
+    !! dr/dx from the forward sensitivities of one run (record_model_sens), or of the fit's
+    !! last run when it carried them at the estimate (model_values); dpdx(:, j) = 0 for an
+    !! input without u.  With &integration sensitivities = 'differences', central
     !! differences of whole runs, two per input (input_sensitivity).
     subroutine input_sensitivities(prob, p, jac, x, dpdx, runs, stat)
         type(record_fit_t), intent(in) :: prob
@@ -932,7 +1040,7 @@ contains
         real(dp), allocatable :: vals(:), dv(:, :), xs(:)
         character(len=16), allocatable :: names(:)
         integer, allocatable :: idx(:)
-        integer :: i0, i1, j, c
+        integer :: i0, i1, j, c, m
         dpdx = 0.0_dp
         runs = 0
         stat%code = 0
@@ -949,23 +1057,26 @@ contains
             return
         end if
         allocate (names(0), xs(0), idx(0))
+        call budget_columns(prob, x, names, xs)
         do j = 1, size(x)
-            if (.not. (x(j)%u > 0.0_dp)) cycle
-            names = [character(len=16) :: names, x(j)%name]
-            xs = [xs, input_size(prob, x(j))]
-            idx = [idx, j]
+            if (x(j)%u > 0.0_dp) idx = [idx, j]
         end do
         if (size(names) == 0) return
         call apply_parameters(prob, p, rg, st, t0, bias)
         i0 = prob%ifirst
         i1 = prob%nuse
-        allocate (vals(i1 - i0 + 1), dv(i1 - i0 + 1, size(names)))
-        call record_model_sens(rg, st, prob%acc, prob%rec%t(i0:i1), t0, prob%rate, names, xs, &
-                               vals, dv, stat)
-        runs = 1
-        if (stat%code /= 0) then
-            stat%msg = 'sensitivities to the inputs: '//stat%msg
-            return
+        m = i1 - i0 + 1
+        if (carried()) then
+            dv = prob%cache%dv(1:m, prob%cache%nfit + 1:)
+        else
+            allocate (vals(m), dv(m, size(names)))
+            call record_model_sens(rg, st, prob%acc, prob%rec%t(i0:i1), t0, prob%rate, &
+                                   names, xs, vals, dv, stat)
+            runs = 1
+            if (stat%code /= 0) then
+                stat%msg = 'sensitivities to the inputs: '//stat%msg
+                return
+            end if
         end if
         do c = 1, size(names)
             call la_lstsq(jac, prob%sign*dv(:, c)*prob%w(i0:i1)*prob%hw(i0:i1), dpdx(:, idx(c)), &
@@ -973,6 +1084,24 @@ contains
             if (stat%code /= 0) return
             dpdx(:, idx(c)) = -dpdx(:, idx(c))
         end do
+    contains
+        !> The fit's last run was of this model, over these samples, and carried these
+        !! inputs (the same names, the same values).
+        logical function carried()
+            integer :: k
+            carried = .false.
+            associate (cc => prob%cache)
+                if (.not. cc%valid .or. cc%n < i1 .or. cc%nx /= size(names)) return
+                if (.not. allocated(prob%x)) return
+                if (size(prob%x) /= size(x)) return
+                do k = 1, size(x)
+                    if (prob%x(k)%name /= x(k)%name .or. prob%x(k)%value /= x(k)%value .or. &
+                        (prob%x(k)%u > 0.0_dp .neqv. x(k)%u > 0.0_dp)) return
+                end do
+                carried = all(cc%key == [transfer(rg, [0_int8]), transfer(st, [0_int8]), &
+                                         transfer(t0, [0_int8])])
+            end associate
+        end function carried
     end subroutine input_sensitivities
 
     !> The size of an input for its difference step: |value|, b' for an input of value 0,

@@ -26,11 +26,12 @@
 !!
 !! Forward sensitivities (ode_system's sens_point, sens_jv; the integrators' staggered
 !! direct method): bifilar_t's `dirs` name the parameter direction of each sensitivity
-!! (sens_dir_t).  Their df/dp is analytic for the moments of inertia and the damping (the
-!! change of the generalized active and inertia forces, solved with the factor of eq. (38))
-!! and by forward differences of the right-hand side for the geometry (L, L', B, r,
-!! lambda); the products J v are the tangents of the kinematics through Kane's equations
-!! (eom_tangent), one per column, or the whole of Z once a point needs more columns.
+!! (sens_dir_t).  Their df/dp is analytic: the change of the generalized active and inertia
+!! forces with the moments and the damping, and of the kinematics at a fixed state with
+!! the geometry (L, L', B, r, lambda), through Kane's equations and the constraint
+!! (param_tangent), solved with the factor of eq. (38); the products J v are the tangents
+!! of the kinematics through Kane's equations (eom_tangent), one per column, or the whole
+!! of Z once a point needs more columns.
 module bifilar_model
     use kinds, only: dp, pi
     use status, only: status_t, set_error, ERR_MODEL, ERR_NUMERIC
@@ -48,9 +49,8 @@ module bifilar_model
     integer, parameter, public :: NSTATE = 10   !! y = (q(5), qdot(5))
 
     !> A direction in the pendulum's scaled parameters, dp/dx for the quantity x a
-    !! sensitivity follows (pendulum_t's fields of the same names).  The moments and the
-    !! damping have analytic df/dp; the geometry's comes from forward differences of the
-    !! right-hand side.  All 0: a sensitivity of the initial conditions only.
+    !! sensitivity follows (pendulum_t's fields of the same names); its df/dp is analytic
+    !! (param_tangent).  All 0: a sensitivity of the initial conditions only.
     type, public :: sens_dir_t
         real(dp) :: inertia(3) = 0.0_dp         !! d I_i/(m b'^2) / dx
         real(dp) :: c_v = 0.0_dp, c_q = 0.0_dp  !! of the damping
@@ -150,8 +150,6 @@ module bifilar_model
     !! change the angles, five only the rates): sens_jv takes Z once the columns asked at a
     !! point exceed it.
     integer, parameter :: Z_COST = 7
-    !> Relative step of the forward differences of the right-hand side in the geometry.
-    real(dp), parameter :: GEOMETRY_STEP = 2.0e-8_dp
 
 contains
 
@@ -653,10 +651,9 @@ contains
 
     !> The sensitivity terms at (t, y) (ode_system's sens_point): eq. (38) solved and made
     !! ready for the tangents of sens_jv, and df/dp of each direction of sys%dirs (0 for the
-    !! columns beyond them): the moments' and the damping's analytic (the change of the
+    !! columns beyond them), analytic: the moments' and the damping's (the change of the
     !! generalized inertia and active forces at fixed accelerations, solved with the factor
-    !! of eq. (38), the constraint unchanged), the geometry's by forward differences of the
-    !! right-hand side (relative step GEOMETRY_STEP).
+    !! of eq. (38), the constraint unchanged), the geometry's through param_tangent.
     subroutine bifilar_sens_point(sys, t, y, dfdp, stat)
         class(bifilar_t), intent(inout) :: sys
         real(dp), intent(in) :: t               !! tau (the system is autonomous)
@@ -664,10 +661,7 @@ contains
         real(dp), intent(out) :: dfdp(:, :)     !! (NSTATE, ns)
         type(status_t), intent(out) :: stat
         type(sens_dir_t) :: d
-        type(pendulum_t) :: pp
-        type(chart_kin_t) :: kk
-        type(eom_t) :: ee
-        real(dp) :: dtq(3), e(5), dq(5), w, hstep, scale
+        real(dp) :: dtq(3), e(5), dq(5), w
         integer :: j
         if (.false.) dfdp(1, 1) = t
         dfdp = 0.0_dp
@@ -683,6 +677,12 @@ contains
             w = k%omega(3)
             do j = 1, min(size(dfdp, 2), size(sys%dirs))
                 d = sys%dirs(j)
+                if (any([d%big_l, d%big_lp, d%big_b, d%r, d%lambda] /= 0.0_dp)) then
+                    call param_tangent(p, y, k, eo, sys%sp_a, sys%sp_mu, d, &
+                                       dfdp(6:10, j))
+                    cycle
+                end if
+                ! the moments and the damping alone: the forces change, the kinematics not
                 dtq = 0.0_dp
                 if (any(d%inertia /= 0.0_dp)) dtq = dtq - d%inertia*(matmul(k%wb, eo%qdd) &
                     + k%cwb) - cross(k%omb, d%inertia*k%omb)
@@ -693,44 +693,73 @@ contains
                     call project(5, k%jv, k%wb, [0.0_dp, 0.0_dp, 0.0_dp], dtq, e)
                     call constrained_solve(eo, e, 0.0_dp, dq)
                 end if
-                if (any([d%big_l, d%big_lp, d%big_b, d%r, d%lambda] /= 0.0_dp)) then
-                    ! forward differences along the geometry's part of the direction, from
-                    ! the point's own solution (a step near sqrt(eps): about 1e-8 relative)
-                    scale = maxval(abs([d%big_l, d%big_lp, d%big_b, d%r, d%lambda]) / &
-                                   max([p%big_l, p%big_lp, p%big_b, p%r, 1.0_dp], 1.0e-3_dp))
-                    hstep = GEOMETRY_STEP/scale
-                    pp = p
-                    call move(pp, hstep)
-                    hstep = geometry_moved(pp, p)
-                    call chart_solve(pp, y, kk, ee, stat)
-                    if (stat%code /= 0) return
-                    dq = dq + (ee%qdd - eo%qdd)/hstep
-                end if
                 dfdp(6:10, j) = dq
             end do
         end associate
-    contains
-        !> The step actually taken (the largest change of a field over its direction's).
-        pure real(dp) function geometry_moved(q, q0) result(h)
-            type(pendulum_t), intent(in) :: q, q0
-            real(dp) :: dd(5), dx(5)
-            integer :: i
-            dd = [d%big_l, d%big_lp, d%big_b, d%r, d%lambda]
-            dx = [q%big_l - q0%big_l, q%big_lp - q0%big_lp, q%big_b - q0%big_b, q%r - q0%r, &
-                  q%lambda - q0%lambda]
-            i = maxloc(abs(dd), 1)
-            h = dx(i)/dd(i)
-        end function geometry_moved
-        pure subroutine move(q, h)
-            type(pendulum_t), intent(inout) :: q
-            real(dp), intent(in) :: h
-            q%big_l = q%big_l + h*d%big_l
-            q%big_lp = q%big_lp + h*d%big_lp
-            q%big_b = q%big_b + h*d%big_b
-            q%r = q%r + h*d%r
-            q%lambda = q%lambda + h*d%lambda
-        end subroutine move
     end subroutine bifilar_sens_point
+
+    !> The change of the accelerations along a direction d of the pendulum's scaled
+    !! parameters at a fixed state (df/dp of a sensitivity), exact: eq. (38) with the
+    !! constraint's multiplier mu differentiated as in eom_tangent, M dqddot - gradg dmu =
+    !! dR - mu dgradg, gradg . dqddot = -(dgconv + dgradg . qddot), where now the kinematics
+    !! change with the geometry at a fixed state: C = B + L e moves with L and B (D with
+    !! it, the cable's partial velocities with L), R*'s offset rho = r (s_lam ntilde1 -
+    !! c_lam ntilde3) with r and lambda (its partial velocities Omega_j x rho and
+    !! convective acceleration); the inertia torque with the moments, the damping torque
+    !! with c_v, c_q; L' enters only Baumgarte's term of the constraint.  (k, eo, a, mu:
+    !! the solved point, tangent_setup.)
+    pure subroutine param_tangent(p, y, k, eo, a, mu, d, dqdd)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters
+        real(dp), intent(in) :: y(:)            !! chart state
+        type(chart_kin_t), intent(in) :: k      !! its kinematics
+        type(eom_t), intent(in) :: eo           !! eq. (38) solved there (mk set)
+        real(dp), intent(in) :: a(3)            !! R*'s acceleration
+        real(dp), intent(in) :: mu              !! the constraint's multiplier
+        type(sens_dir_t), intent(in) :: d       !! the direction in the parameters
+        real(dp), intent(out) :: dqdd(5)
+        real(dp) :: dc(3), drho(3), djv(3, 5), dcv(3), djd(3, 5), dcd(3), da(3), dtq(3)
+        real(dp) :: e1(5), e2(5), dgradg(5), dvd(3), dgconv, w, iz
+        integer :: j
+        associate (qdd => eo%qdd, sl => k%ps%s_lambda, cl => k%ps%c_lambda)
+            ! the kinematics at the fixed state
+            dc = [d%big_l*k%e(1), -d%big_b + d%big_l*k%e(2), d%big_l*k%e(3)]
+            drho = (d%r*sl + p%r*d%lambda*cl)*k%n(1, :) + (p%r*d%lambda*sl - d%r*cl)*k%n(3, :)
+            iz = 1.0_dp/k%zeta
+            djv(:, 1) = cross(k%jw(:, 1), drho)
+            djv(:, 2) = d%big_l*[1.0_dp, 0.0_dp, y(2)*iz]
+            djv(:, 3) = d%big_l*[0.0_dp, 1.0_dp, y(3)*iz]
+            djv(:, 4) = [drho(2), -drho(1), 0.0_dp]
+            djv(:, 5) = cross(k%jw(:, 5), drho)
+            dcv = d%big_l*k%econv + cross(k%cw, drho) + cross(k%omega, cross(k%omega, drho))
+            djd = 0.0_dp
+            djd(:, 2:3) = djv(:, 2:3)
+            dcd = d%big_l*k%econv
+            ! Kane's equations at fixed accelerations: R = Jv^T (-(a + g n3)) + Wb^T T
+            da = matmul(djv, qdd) + dcv
+            dtq = -d%inertia*(matmul(k%wb, qdd) + k%cwb) - cross(k%omb, d%inertia*k%omb)
+            w = k%omega(3)
+            dtq = dtq - (d%c_v*w + d%c_q*abs(w)*w)*k%b(:, 3)
+            call project(5, k%jv, k%wb, -da, dtq, e2)
+            do j = 1, 5
+                e1(j) = -dot_product(djv(:, j), a + [0.0_dp, 0.0_dp, 1.0_dp])
+            end do
+            ! the constraint G'' = gradg . qddot + gconv
+            do j = 1, 5
+                dgradg(j) = 2.0_dp*(dot_product(dc, k%jd(:, j)) + dot_product(k%d, djd(:, j)))
+            end do
+            dgradg(1) = 0.0_dp
+            dvd = matmul(djd, y(6:10))
+            dgconv = 2.0_dp*(2.0_dp*dot_product(eo%vd, dvd) + dot_product(dc, k%cd) &
+                             + dot_product(k%d, dcd))
+            if (p%stab_rate > 0.0_dp) then
+                dgconv = dgconv + 4.0_dp*p%stab_rate*(dot_product(dc, eo%vd) &
+                                                      + dot_product(k%d, dvd)) &
+                         + 2.0_dp*p%stab_rate**2*(dot_product(k%d, dc) - p%big_lp*d%big_lp)
+            end if
+            e1 = e1 + e2 - mu*dgradg
+            call constrained_solve(eo, e1, -(dgconv + dot_product(dgradg, qdd)), dqdd)
+        end associate
+    end subroutine param_tangent
 
     !> Products jv = Z v at the point of the last sens_point (ode_system's sens_jv): one
     !! tangent per column, or the whole of Z (computed once there) when the columns asked at
