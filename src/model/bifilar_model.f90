@@ -121,7 +121,9 @@ module bifilar_model
         !> sin and cos of p%lambda, computed when p%lambda is first seen (lambda_key)
         real(dp), private :: lambda_key = huge(1.0_dp), sc_lambda(2) = 0.0_dp
         logical, private :: have_last = .false.
-        real(dp), private :: last_y(NSTATE) = 0.0_dp, last_t(2) = 0.0_dp
+        !> the state of the last right-hand side, D and R*'s acceleration there (the cable
+        !! tensions follow from them when asked, last_evaluation)
+        real(dp), private :: last_y(NSTATE) = 0.0_dp, last_d(3) = 0.0_dp, last_a(3) = 0.0_dp
         !> the parameter direction of each sensitivity (sens_point; a column beyond them
         !! follows the initial conditions only)
         type(sens_dir_t), allocatable :: dirs(:)
@@ -171,8 +173,8 @@ contains
             sys%have_last = stat%code == 0
             if (sys%have_last) then
                 sys%last_y = y(1:NSTATE)
-                call cable_tensions(y, k, matmul(k%jv, eo%qdd) + k%cv, sys%last_t(1), &
-                                    sys%last_t(2))
+                sys%last_d = k%d
+                sys%last_a = matmul(k%jv, eo%qdd) + k%cv
             end if
         end if
     end subroutine bifilar_rhs
@@ -186,8 +188,9 @@ contains
         logical, intent(out) :: found
         found = sys%have_last
         y = sys%last_y
-        t_bc = sys%last_t(1)
-        t_ad = sys%last_t(2)
+        t_bc = 0.0_dp
+        t_ad = 0.0_dp
+        if (found) call cable_tensions(sys%last_y, sys%last_d, sys%last_a, t_bc, t_ad)
     end subroutine last_evaluation
 
     !> sin and cos of sys%p%lambda, computed again only when lambda changed.
@@ -1019,7 +1022,7 @@ contains
             mo%qdd = eo%qdd
             mo%astar = matmul(k%jv, mo%qdd) + k%cv
             mo%alpha = matmul(k%jw, mo%qdd) + k%cw
-            call cable_tensions(y, k, mo%astar, mo%t_bc, mo%t_ad)
+            call cable_tensions(y, k%d, mo%astar, mo%t_bc, mo%t_ad)
         end if
         mo%frame = k%b
         mo%rstar = k%c + k%rho
@@ -1055,20 +1058,20 @@ contains
         end if
         call refresh_lambda(sys)
         call chart_kinematics(sys%p, y, k, sys%sc_lambda, dynamics=.false.)
-        call cable_tensions(y, k, matmul(k%jv, ydot(6:10)) + k%cv, t_bc, t_ad)
+        call cable_tensions(y, k%d, matmul(k%jv, ydot(6:10)) + k%cv, t_bc, t_ad)
     end subroutine step_tensions
 
     !> Tensions from R*'s acceleration a: least squares of [e_BC e_AD] T = -(a + g n3); when the
     !! cables are parallel only their sum is determined and it is shared equally (before,
     !! each cable was given the whole sum).
-    pure subroutine cable_tensions(y, k, astar, t_bc, t_ad)
+    pure subroutine cable_tensions(y, d, astar, t_bc, t_ad)
         real(dp), intent(in) :: y(:)            !! chart state
-        type(chart_kin_t), intent(in) :: k      !! its kinematics
+        real(dp), intent(in) :: d(3)            !! the point D there (A at the origin)
         real(dp), intent(in) :: astar(3)        !! acceleration of R*
         real(dp), intent(out) :: t_bc, t_ad
         real(dp) :: ebc(3), ead(3), f(3), a11, a12, a22, r1, r2, det
         ebc = cable_direction(y(2:3))
-        ead = k%d/norm2(k%d)
+        ead = d/norm2(d)
         f = -(astar + [0.0_dp, 0.0_dp, 1.0_dp])
         a11 = dot_product(ebc, ebc); a12 = dot_product(ebc, ead); a22 = dot_product(ead, ead)
         r1 = dot_product(ebc, f); r2 = dot_product(ead, f)
