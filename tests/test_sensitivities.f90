@@ -194,13 +194,14 @@ contains
 
     !> record_model_sens's derivatives of the model at the samples against central
     !! differences of record_model, for the fit's parameters (I1, c_v, c_q, amplitude, t0)
-    !! and inputs of the budget (l, b_prime, mass, lambda): the identify_record rig
-    !! (unequal cables, offset mass centre) and a symmetric one, 5 and 60 degrees, LSODA and
-    !! Radau, the angle on the symmetric rig and the rate on the other.
+    !! and inputs of the budget (l, b_prime, mass, b, and lambda, r on the identify_record
+    !! rig (unequal cables, offset mass centre), l_prime, g on a symmetric one, where lambda
+    !! and r move nothing to first order), 5 and 60 degrees, LSODA and Radau, the angle on
+    !! the symmetric rig and the rate on the other.
     subroutine test_record_model(t)
         type(tester_t), intent(inout) :: t
-        character(len=16) :: names(9) = [character(len=16) :: 'I1', 'c_v', 'c_q', &
-            'amplitude', 't0', 'l', 'b_prime', 'mass', 'lambda']
+        character(len=16) :: names(11) = [character(len=16) :: 'I1', 'c_v', 'c_q', &
+            'amplitude', 't0', 'l', 'b_prime', 'mass', 'lambda', 'b', 'r']
         integer, parameter :: NT = 61
         type(deck_t) :: d
         type(status_t) :: st
@@ -232,6 +233,8 @@ contains
                     rate = isym == 2
                     ! lambda moves nothing to first order on the symmetric rig: l' there
                     names(9) = merge('l_prime', 'lambda ', isym == 1)
+                    ! nor r (the mass centre off the bisector): g (the time scale) there
+                    names(11) = merge('g', 'r', isym == 1)
                     s1 = start_of(d)
                     s1%amplitude = merge(5.0_dp, 60.0_dp, iamp == 1)
                     acc = accuracy_of(d)
