@@ -1052,8 +1052,8 @@ contains
                 s%hu = s%h
                 s%nqu = s%nq
                 s%mused = s%meth
-                call add_correction(s%yh, s%el, s%acor, s%n, s%l)
-                if (s%ns > 0) call add_correction(s%zh, s%el, s%sacor, s%nsn, s%l)
+                call add_correction(s%yh, s%n, s%el, s%acor, s%l)
+                if (s%ns > 0) call add_correction(s%zh, s%nsn, s%el, s%sacor, s%l)
                 switched = .false.
                 s%icount = s%icount - 1
                 if (s%icount < 0) then
@@ -1325,8 +1325,7 @@ contains
         type(lsoda_t), intent(inout) :: s
         real(dp), intent(in) :: rh_in
         logical, intent(in) :: use_hmin
-        real(dp) :: rh, r, pdh
-        integer :: i, j
+        real(dp) :: rh, pdh
         rh = rh_in
         if (use_hmin) rh = max(rh, s%hmin/abs(s%h))
         rh = min(rh, s%rmax)
@@ -1339,14 +1338,8 @@ contains
                 s%irflag = 1
             end if
         end if
-        r = 1.0_dp
-        do j = 2, s%l
-            r = r*rh
-            do i = 1, s%n
-                s%yh(i, j) = s%yh(i, j)*r
-            end do
-            if (s%ns > 0) s%zh(:, j) = s%zh(:, j)*r
-        end do
+        call scale_columns(s%yh, s%n, s%l, rh)
+        if (s%ns > 0) call scale_columns(s%zh, s%nsn, s%l, rh)
         s%h = s%h*rh
         s%rc = s%rc*rh
         s%ialth = s%l
@@ -1359,58 +1352,148 @@ contains
         if (s%ns > 0) call pascal(s%zh, s%nsn, s%nq)
     end subroutine predict
 
-    !> The Pascal triangle on the first nq + 1 columns of yh (rows 1:n), column by column.
-    !! On a dummy argument, which aliases nothing, the columns are added as vectors.
-    pure subroutine pascal(yh, n, nq)
-        real(dp), intent(inout) :: yh(:, :)     !! Nordsieck array
-        integer, intent(in) :: n, nq            !! rows used, order
-        integer :: j, k
-        do k = 1, nq
-            do j = nq, k, -1
-                yh(1:n, j) = yh(1:n, j) + yh(1:n, j + 1)
+    !> yh <- yh times the Pascal triangle on columns 1 ... nq + 1, rows 1:nrow (the Taylor
+    !! predictor): for k = 1 ... nq and j = nq down to k, yh(:, j) = yh(:, j) + yh(:, j + 1),
+    !! each element by these additions in this order however the rows are grouped.  From
+    !! order 4 up, two rows at a time with the columns held in registers c1 ... c13: the
+    !! triangle of order nq is the last nq levels of the triangle of order 12, so column j goes
+    !! to register j + 12 - nq and level k of the order-12 triangle (c12 down to ck) runs when
+    !! nq >= 13 - k (the compiler turns these tests into one jump into the sequence per pair of
+    !! rows); the registers below c13 - nq are loaded from column 1, unused.  Below order 4,
+    !! and for an odd last row, column by column.
+    pure subroutine pascal(yh, nrow, nq)
+        integer, intent(in) :: nrow, nq                  !! rows used, order (1 ... 12)
+        real(dp), intent(inout) :: yh(nrow, LMAX_ALL)    !! Nordsieck array
+        real(dp), dimension(2) :: c1, c2, c3, c4, c5, c6, c7, c8, c9, c10, c11, c12, c13
+        integer :: i, j, k, o
+        if (nq < 4) then
+            do k = 1, nq
+                do j = nq, k, -1
+                    yh(:, j) = yh(:, j) + yh(:, j + 1)
+                end do
             end do
+            return
+        end if
+        o = nq - 12
+        do i = 1, nrow - 1, 2
+            c13 = yh(i:i + 1, 13 + o)
+            c12 = yh(i:i + 1, 12 + o)
+            c11 = yh(i:i + 1, 11 + o)
+            c10 = yh(i:i + 1, 10 + o)
+            c9 = yh(i:i + 1, 9 + o)
+            c8 = yh(i:i + 1, max(8 + o, 1))
+            c7 = yh(i:i + 1, max(7 + o, 1))
+            c6 = yh(i:i + 1, max(6 + o, 1))
+            c5 = yh(i:i + 1, max(5 + o, 1))
+            c4 = yh(i:i + 1, max(4 + o, 1))
+            c3 = yh(i:i + 1, max(3 + o, 1))
+            c2 = yh(i:i + 1, max(2 + o, 1))
+            c1 = yh(i:i + 1, max(1 + o, 1))
+            if (nq >= 12) then
+                c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10; c8 = c8 + c9
+                c7 = c7 + c8; c6 = c6 + c7; c5 = c5 + c6; c4 = c4 + c5; c3 = c3 + c4; c2 = c2 + c3
+                c1 = c1 + c2
+            end if
+            if (nq >= 11) then
+                c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10; c8 = c8 + c9
+                c7 = c7 + c8; c6 = c6 + c7; c5 = c5 + c6; c4 = c4 + c5; c3 = c3 + c4; c2 = c2 + c3
+            end if
+            if (nq >= 10) then
+                c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10; c8 = c8 + c9
+                c7 = c7 + c8; c6 = c6 + c7; c5 = c5 + c6; c4 = c4 + c5; c3 = c3 + c4
+            end if
+            if (nq >= 9) then
+                c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10; c8 = c8 + c9
+                c7 = c7 + c8; c6 = c6 + c7; c5 = c5 + c6; c4 = c4 + c5
+            end if
+            if (nq >= 8) then
+                c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10; c8 = c8 + c9
+                c7 = c7 + c8; c6 = c6 + c7; c5 = c5 + c6
+            end if
+            if (nq >= 7) then
+                c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10; c8 = c8 + c9
+                c7 = c7 + c8; c6 = c6 + c7
+            end if
+            if (nq >= 6) then
+                c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10; c8 = c8 + c9
+                c7 = c7 + c8
+            end if
+            if (nq >= 5) then
+                c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10; c8 = c8 + c9
+            end if
+            c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10
+            c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11
+            c12 = c12 + c13; c11 = c11 + c12
+            c12 = c12 + c13
+            yh(i:i + 1, 12 + o) = c12
+            yh(i:i + 1, 11 + o) = c11
+            yh(i:i + 1, 10 + o) = c10
+            yh(i:i + 1, 9 + o) = c9
+            if (nq >= 5) yh(i:i + 1, 8 + o) = c8
+            if (nq >= 6) yh(i:i + 1, 7 + o) = c7
+            if (nq >= 7) yh(i:i + 1, 6 + o) = c6
+            if (nq >= 8) yh(i:i + 1, 5 + o) = c5
+            if (nq >= 9) yh(i:i + 1, 4 + o) = c4
+            if (nq >= 10) yh(i:i + 1, 3 + o) = c3
+            if (nq >= 11) yh(i:i + 1, 2 + o) = c2
+            if (nq >= 12) yh(i:i + 1, 1 + o) = c1
         end do
+        if (mod(nrow, 2) == 1) then
+            do k = 1, nq
+                do j = nq, k, -1
+                    yh(nrow, j) = yh(nrow, j) + yh(nrow, j + 1)
+                end do
+            end do
+        end if
     end subroutine pascal
 
     !> yh(:, j) <- yh(:, j) + el(j) acor, j = 1 ... l: a step's correction added to the
-    !! Nordsieck array (as vectors: dummy arguments alias nothing).
-    pure subroutine add_correction(yh, el, acor, n, l)
-        real(dp), intent(inout) :: yh(:, :)     !! Nordsieck array
-        real(dp), intent(in) :: el(:)           !! method coefficients l_j
-        real(dp), intent(in) :: acor(:)         !! the step's correction
-        integer, intent(in) :: n, l             !! rows used, columns
+    !! Nordsieck array (rows 1:nrow).
+    pure subroutine add_correction(yh, nrow, el, acor, l)
+        integer, intent(in) :: nrow, l                   !! rows used, columns
+        real(dp), intent(inout) :: yh(nrow, LMAX_ALL)    !! Nordsieck array
+        real(dp), intent(in) :: el(LMAX_ALL)             !! method coefficients l_j
+        real(dp), intent(in) :: acor(nrow)               !! the step's correction
         integer :: j
         do j = 1, l
-            yh(1:n, j) = yh(1:n, j) + el(j)*acor(1:n)
+            yh(:, j) = yh(:, j) + el(j)*acor
         end do
     end subroutine add_correction
 
     !> Inverse of predict.
     subroutine unpredict(s)
         type(lsoda_t), intent(inout) :: s
-        integer :: i, j, k, nq
-        nq = s%nq
-        do k = nq, 1, -1
-            do j = k, nq
-                do i = 1, s%n
-                    s%yh(i, j) = s%yh(i, j) - s%yh(i, j + 1)
-                end do
-            end do
-        end do
+        call unpascal(s%yh, s%n, s%nq)
         if (s%ns > 0) call unpascal(s%zh, s%nsn, s%nq)
     end subroutine unpredict
 
-    !> The inverse of pascal.
-    pure subroutine unpascal(yh, n, nq)
-        real(dp), intent(inout) :: yh(:, :)     !! Nordsieck array
-        integer, intent(in) :: n, nq            !! rows used, order
+    !> The inverse of pascal: for k = nq down to 1 and j = k ... nq,
+    !! yh(:, j) = yh(:, j) - yh(:, j + 1).
+    pure subroutine unpascal(yh, nrow, nq)
+        integer, intent(in) :: nrow, nq                  !! rows used, order
+        real(dp), intent(inout) :: yh(nrow, LMAX_ALL)    !! Nordsieck array
         integer :: j, k
         do k = nq, 1, -1
             do j = k, nq
-                yh(1:n, j) = yh(1:n, j) - yh(1:n, j + 1)
+                yh(:, j) = yh(:, j) - yh(:, j + 1)
             end do
         end do
     end subroutine unpascal
+
+    !> yh(:, j) <- yh(:, j) r^(j-1), j = 2 ... l (rows 1:nrow), the powers of r by successive
+    !! products: the Nordsieck array rescaled to the step h r.
+    pure subroutine scale_columns(yh, nrow, l, r)
+        integer, intent(in) :: nrow, l                   !! rows used, columns
+        real(dp), intent(inout) :: yh(nrow, LMAX_ALL)    !! Nordsieck array
+        real(dp), intent(in) :: r                        !! step ratio
+        real(dp) :: rj
+        integer :: j
+        rj = 1.0_dp
+        do j = 2, l
+            rj = rj*r
+            yh(:, j) = yh(:, j)*rj
+        end do
+    end subroutine scale_columns
 
     !> P = I - h*l0*J (J analytic or by finite differences), its LU factors, and the
     !! weighted norm of J used by the stiff -> non-stiff test.  On entry y = predicted
