@@ -799,21 +799,45 @@ contains
     subroutine update_weights(s, stat)
         type(lsoda_t), intent(inout) :: s
         type(status_t), intent(inout) :: stat
-        real(dp) :: w
         integer :: i
         character(len=160) :: buf
-        do i = 1, s%n
-            w = s%rtol*abs(s%yh(i, 1)) + s%atol(i)
+        call weights(s%n, s%rtol, s%yh(:, 1), s%atol, s%rewt, i)
+        if (i > 0) then
+            write (buf, '(a,i0,a,es15.7e3,a)') 'lsoda: error weight of component ', i, &
+                ' became zero at t = ', s%tn, ' (atol(i) = 0 and y(i) = 0)'
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
+            return
+        end if
+        if (s%ns > 0) call sens_weights(s%nsn, s%rtol, s%zh(:, 1), s%satol, s%srewt)
+    end subroutine update_weights
+
+    !> rewt = 1/(rtol |y| + atol), component by component up to the first whose weight is
+    !! not > 0 (bad = its index, rewt kept from there on), else bad = 0.
+    pure subroutine weights(n, rtol, y, atol, rewt, bad)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: rtol, y(n), atol(n)
+        real(dp), intent(inout) :: rewt(n)
+        integer, intent(out) :: bad
+        real(dp) :: w
+        integer :: i
+        bad = 0
+        do i = 1, n
+            w = rtol*abs(y(i)) + atol(i)
             if (.not. (w > 0.0_dp)) then
-                write (buf, '(a,i0,a,es15.7e3,a)') 'lsoda: error weight of component ', i, &
-                    ' became zero at t = ', s%tn, ' (atol(i) = 0 and y(i) = 0)'
-                call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
+                bad = i
                 return
             end if
-            s%rewt(i) = 1.0_dp/w
+            rewt(i) = 1.0_dp/w
         end do
-        if (s%ns > 0) s%srewt = 1.0_dp/(s%rtol*abs(s%zh(:, 1)) + s%satol)
-    end subroutine update_weights
+    end subroutine weights
+
+    !> The sensitivities' reciprocal weights srewt = 1/(rtol |z| + satol) (satol > 0).
+    pure subroutine sens_weights(n, rtol, z, satol, srewt)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: rtol, z(n), satol(n)
+        real(dp), intent(out) :: srewt(n)
+        srewt = 1.0_dp/(rtol*abs(z) + satol)
+    end subroutine sens_weights
 
     subroutine too_much_accuracy(s, stat)
         type(lsoda_t), intent(in) :: s
@@ -836,7 +860,7 @@ contains
         type(lsoda_t), intent(inout) :: s
         class(ode_system_t), intent(inout) :: sys
         type(status_t), intent(inout) :: stat
-        integer :: ncf, m, newq, i, nqm, lm
+        integer :: ncf, m, newq, nqm, lm
         logical :: newton, converged, singular, fatal, switched
         real(dp) :: del, delp, dsm, rate, rm, dcon, pnorm, rh, rh1, rh2, rh1it, pdh, exsm
         real(dp) :: dm, exm, alpha
@@ -938,21 +962,11 @@ contains
                 s%acor = 0.0_dp
                 iterate: do
                     if (.not. newton) then
-                        ! functional iteration
-                        do i = 1, s%n
-                            s%savf(i) = s%h*s%savf(i) - s%yh(i, 2)
-                            s%y(i) = s%savf(i) - s%acor(i)
-                        end do
-                        del = vmnorm(s%n, s%y, s%rewt)
-                        do i = 1, s%n
-                            s%y(i) = s%yh(i, 1) + s%el(1)*s%savf(i)
-                            s%acor(i) = s%savf(i)
-                        end do
+                        call functional_update(s%n, s%h, s%el(1), s%yh(:, 1), s%yh(:, 2), &
+                                               s%rewt, s%savf, s%acor, s%y, del)
                     else
                         ! chord Newton iteration
-                        do i = 1, s%n
-                            s%y(i) = s%h*s%savf(i) - (s%yh(i, 2) + s%acor(i))
-                        end do
+                        call newton_residual(s%n, s%h, s%savf, s%yh(:, 2), s%acor, s%y)
                         if (s%structured) then
                             call sys%solve_iteration(s%y, stat)
                         else
@@ -962,11 +976,7 @@ contains
                             fatal = .true.     ! cannot happen with consistent shapes
                             exit corrector
                         end if
-                        del = vmnorm(s%n, s%y, s%rewt)
-                        do i = 1, s%n
-                            s%acor(i) = s%acor(i) + s%y(i)
-                            s%y(i) = s%yh(i, 1) + s%el(1)*s%acor(i)
-                        end do
+                        call newton_update(s%n, s%el(1), s%yh(:, 1), s%rewt, s%acor, s%y, del)
                     end if
                     ! convergence test; at least two iterations for Adams (Lipschitz estimate)
                     if (del <= 100.0_dp*pnorm*UROUND) then
@@ -1250,7 +1260,7 @@ contains
                 s%savf(i) = s%acor(i) - s%yh(i, lmx)
             end do
             dup = vmnorm(s%n, s%savf, s%rewt)/s%tesco(3, s%nq, s%meth)
-            if (s%ns > 0 .and. s%sens_errcon) dup = max(dup, vmnorm(s%nsn, s%sacor - &
+            if (s%ns > 0 .and. s%sens_errcon) dup = max(dup, vmnorm_diff(s%nsn, s%sacor, &
                 s%zh(:, lmx), s%srewt)/s%tesco(3, s%nq, s%meth))
             rhup = 1.0_dp/(1.4_dp*dup**(1.0_dp/(s%l + 1)) + 1.4e-6_dp)
         end if
@@ -1840,14 +1850,71 @@ contains
     !> Weighted max-norm max_i |v_i|*rw_i (rw = reciprocal weights).
     pure real(dp) function vmnorm(n, v, rw)
         integer, intent(in) :: n
-        real(dp), intent(in) :: v(:)
-        real(dp), intent(in) :: rw(:)
+        real(dp), intent(in) :: v(n)
+        real(dp), intent(in) :: rw(n)
         integer :: i
         vmnorm = 0.0_dp
         do i = 1, n
             vmnorm = max(vmnorm, abs(v(i))*rw(i))
         end do
     end function vmnorm
+
+    !> The weighted max-norm of a - b (vmnorm of the difference, without forming it).
+    pure real(dp) function vmnorm_diff(n, a, b, rw)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: a(n), b(n)
+        real(dp), intent(in) :: rw(n)
+        integer :: i
+        vmnorm_diff = 0.0_dp
+        do i = 1, n
+            vmnorm_diff = max(vmnorm_diff, abs(a(i) - b(i))*rw(i))
+        end do
+    end function vmnorm_diff
+
+    !> One functional (fixed-point) iteration of the Adams corrector, f on entry the
+    !! right-hand side at y: f <- h f - yh2, del = ||f - acor|| (vmnorm), y = yh1 + l0 f,
+    !! acor = f.
+    pure subroutine functional_update(n, h, el1, yh1, yh2, rewt, f, acor, y, del)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: h, el1                  !! step, l0
+        real(dp), intent(in) :: yh1(n), yh2(n)          !! Nordsieck columns 1 and 2
+        real(dp), intent(in) :: rewt(n)                 !! reciprocal weights
+        real(dp), intent(inout) :: f(n), acor(n)
+        real(dp), intent(out) :: y(n)
+        real(dp), intent(out) :: del
+        integer :: i
+        del = 0.0_dp
+        do i = 1, n
+            f(i) = h*f(i) - yh2(i)
+            del = max(del, abs(f(i) - acor(i))*rewt(i))
+            y(i) = yh1(i) + el1*f(i)
+            acor(i) = f(i)
+        end do
+    end subroutine functional_update
+
+    !> The chord Newton iteration's residual r = h f - (yh2 + acor).
+    pure subroutine newton_residual(n, h, f, yh2, acor, r)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: h, f(n), yh2(n), acor(n)
+        real(dp), intent(out) :: r(n)
+        r = h*f - (yh2 + acor)
+    end subroutine newton_residual
+
+    !> The chord Newton iteration's update, y the correction on entry: del = ||y|| (vmnorm),
+    !! acor <- acor + y, y = yh1 + l0 acor.
+    pure subroutine newton_update(n, el1, yh1, rewt, acor, y, del)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: el1, yh1(n), rewt(n)
+        real(dp), intent(inout) :: acor(n), y(n)
+        real(dp), intent(out) :: del
+        integer :: i
+        del = 0.0_dp
+        do i = 1, n
+            del = max(del, abs(y(i))*rewt(i))
+            acor(i) = acor(i) + y(i)
+            y(i) = yh1(i) + el1*acor(i)
+        end do
+    end subroutine newton_update
 
     !> Prefix a message with the time reached.
     subroutine prefix_time(stat, t)
