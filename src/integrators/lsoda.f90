@@ -123,6 +123,10 @@ module lsoda
         real(dp), allocatable :: zh(:, :)      ! their Nordsieck array (nsn, LMAX_ALL)
         real(dp), allocatable :: satol(:), srewt(:), sacor(:)
         real(dp), allocatable :: sdfdp(:, :)   ! df/dp at the step's point (n, ns)
+        ! sens_correct's work vectors of n ns (columns of n in a row): right-hand side b,
+        ! change d, products J v
+        real(dp), allocatable :: sb(:), sd(:), sjv(:)
+        real(dp), allocatable :: seye(:, :)    ! the identity of n, for J = J I
         real(dp), allocatable :: sjm(:, :)     ! the sensitivities' own matrix I - h l0 J, LU
         integer, allocatable :: spiv(:)
         real(dp) :: shl0 = 0.0_dp              ! its h l0
@@ -381,7 +385,7 @@ contains
         s%steps_call = 0
         do
             if ((s%tn - tout)*s%dir >= 0.0_dp) then
-                call interpolate(s, tout, 0, y, dst)
+                call interpolate(s, s%yh, s%n, 0, tout, 0, y, dst)
                 if (dst%code /= STATUS_OK) then
                     stat = dst
                     y = s%yh(:, 1)
@@ -480,7 +484,7 @@ contains
                 'lsoda dense: solver not initialised or size(dky) /= n')
             return
         end if
-        call interpolate(s, t, k, dky, stat)
+        call interpolate(s, s%yh, s%n, 0, t, k, dky, stat)
     end subroutine lsoda_dense
 
     !> Counters and method state (see integrator_stats_t).
@@ -605,8 +609,15 @@ contains
         call realloc_vec(s%satol, s%nsn)
         call realloc_vec(s%srewt, s%nsn)
         call realloc_vec(s%sacor, s%nsn)
-        if (allocated(s%sdfdp)) deallocate (s%sdfdp, s%sjm, s%spiv)
-        allocate (s%sdfdp(n, ns), s%sjm(n, n), s%spiv(n))
+        call realloc_vec(s%sb, s%nsn)
+        call realloc_vec(s%sd, s%nsn)
+        call realloc_vec(s%sjv, s%nsn)
+        if (allocated(s%sdfdp)) deallocate (s%sdfdp, s%sjm, s%spiv, s%seye)
+        allocate (s%sdfdp(n, ns), s%sjm(n, n), s%spiv(n), s%seye(n, n))
+        s%seye = 0.0_dp
+        do i = 1, n
+            s%seye(i, i) = 1.0_dp
+        end do
         s%shl0 = 0.0_dp
         s%snslp = 0
         s%shave = .false.
@@ -644,15 +655,17 @@ contains
         integer, intent(in) :: k
         real(dp), intent(out) :: ds(:, :)
         type(status_t), intent(out) :: stat
-        real(dp) :: v(s%nsn)
+        integer :: c
         if (.not. s%ready .or. s%ns == 0 .or. size(ds, 1) /= s%n .or. size(ds, 2) /= s%ns) then
             ds = 0.0_dp
             call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda sens_dense: no '// &
                 'sensitivities, or ds is not n x ns')
             return
         end if
-        call interpolate(s, t, k, v, stat, sens=.true.)
-        ds = reshape(v, [s%n, s%ns])
+        ! column by column from the rows of zh (each column the same outcome)
+        do c = 1, s%ns
+            call interpolate(s, s%zh, s%nsn, (c - 1)*s%n, t, k, ds(:, c), stat)
+        end do
     end subroutine lsoda_sens_dense
 
     ! ------------------------------------------------------------------------------------
@@ -1584,14 +1597,12 @@ contains
         class(ode_system_t), intent(inout) :: sys
         real(dp), intent(in) :: t, y(:)
         type(status_t), intent(out) :: stat
-        real(dp) :: v(s%n, s%ns), jv(s%n, s%ns)
         call sys%sens_point(t, y, s%sdfdp, stat)
         s%nsp = s%nsp + 1
         if (stat%code /= STATUS_OK) return
-        v = reshape(s%zh(:, 1), [s%n, s%ns])
-        call sys%sens_jv(v, jv, stat)
+        call sens_products(sys, s%n, s%ns, s%zh(:, 1), s%sjv, stat)
         if (stat%code /= STATUS_OK) return
-        s%zh(:, 2) = reshape(jv + s%sdfdp, [s%nsn])
+        call sens_sum(s%nsn, s%sjv, s%sdfdp, s%zh(:, 2))
     end subroutine sens_slope
 
     !> The sensitivities' corrector at the step's converged point (tn, y): sacor with
@@ -1611,9 +1622,11 @@ contains
         type(lsoda_t), intent(inout) :: s
         class(ode_system_t), intent(inout) :: sys
         type(status_t), intent(inout) :: stat
-        real(dp) :: b(s%n, s%ns), a(s%n, s%ns), d(s%n, s%ns), jv(s%n, s%ns), hl0, del, delp, tol
-        integer :: m, k
+        real(dp) :: hl0, del, delp, tol
+        integer :: m, k, n, i0
         logical :: conv
+        ! the columns a of the corrector are sacor, b, d and J v sb, sd and sjv (n ns each)
+        n = s%n
         hl0 = s%h*s%el(1)
         call sys%sens_point(s%tn, s%y, s%sdfdp, stat)
         s%nsp = s%nsp + 1
@@ -1626,11 +1639,9 @@ contains
                 if (stat%code /= STATUS_OK) return
             end if
         end if
-        call copy_columns(s%zh(:, 1), a)
-        call sys%sens_jv(a, jv, stat)
+        call sens_products(sys, n, s%ns, s%zh(:, 1), s%sjv, stat)
         if (stat%code /= STATUS_OK) return
-        call copy_columns(s%zh(:, 2), d)
-        b = s%h*(jv + s%sdfdp) - d
+        call sens_rhs(s%nsn, s%h, s%sjv, s%sdfdp, s%zh(:, 2), s%sb)
         tol = SENS_CONV*s%tesco(2, s%nq, s%meth)*s%conit
         conv = .false.
         delp = 0.0_dp
@@ -1638,14 +1649,12 @@ contains
             ! in the error control (many columns: Z at the point is at hand) an Adams step's
             ! functional iteration a <- b + h l0 J a, from a = b, to a tenth of the state's test
             tol = SENS_CONV_EC*s%tesco(2, s%nq, s%meth)*s%conit
-            a = b
+            s%sacor = s%sb
             do m = 1, SENS_MAXIT
-                call sys%sens_jv(a, jv, stat)
+                call sens_products(sys, n, s%ns, s%sacor, s%sjv, stat)
                 if (stat%code /= STATUS_OK) return
                 s%nsit = s%nsit + 1
-                d = b + hl0*jv - a
-                a = a + d
-                del = snorm(d)
+                call sens_fixed_point(s%nsn, hl0, s%sb, s%sjv, s%srewt, s%sacor, del)
                 if (del <= tol) then
                     conv = .true.
                     exit
@@ -1654,26 +1663,25 @@ contains
                 delp = del
             end do
             if (.not. conv) call direct()
-            call store_columns(a, s%sacor)
             return
         end if
         ! the chord iteration a <- a + P^-1 (b + h l0 J a - a), from a = 0
-        a = 0.0_dp
-        d = b
+        s%sacor = 0.0_dp
+        s%sd = s%sb
         do m = 1, SENS_MAXIT
             do k = 1, s%ns
+                i0 = (k - 1)*n
                 if (s%meth == METHOD_ADAMS) then
-                    call la_small_lu_solve(s%sjm, s%spiv, d(:, k))
+                    call la_small_lu_solve(s%sjm, s%spiv, s%sd(i0 + 1:i0 + n))
                 else if (s%structured) then
-                    call sys%solve_iteration(d(:, k), stat)
+                    call sys%solve_iteration(s%sd(i0 + 1:i0 + n), stat)
                     if (stat%code /= STATUS_OK) return
                 else
-                    call la_small_lu_solve(s%wm, s%ipiv, d(:, k))
+                    call la_small_lu_solve(s%wm, s%ipiv, s%sd(i0 + 1:i0 + n))
                 end if
             end do
             s%nsit = s%nsit + 1
-            a = a + d
-            del = snorm(d)
+            call sens_accumulate(s%nsn, s%sd, s%srewt, s%sacor, del)
             ! the rate of the iteration, as the state's (kept from step to step)
             if (m > 1) s%scrate = max(0.2_dp*s%scrate, del/delp)
             if (del*min(1.0_dp, 1.5_dp*s%scrate) <= tol) then
@@ -1682,34 +1690,90 @@ contains
             end if
             if (m > 1 .and. del > 0.5_dp*delp) exit
             delp = del
-            call sys%sens_jv(a, jv, stat)
+            call sens_products(sys, n, s%ns, s%sacor, s%sjv, stat)
             if (stat%code /= STATUS_OK) return
-            d = b + hl0*jv - a
+            call sens_residual(s%nsn, hl0, s%sb, s%sjv, s%sacor, s%sd)
         end do
         if (.not. conv) call direct()
-        call store_columns(a, s%sacor)
     contains
         !> A direct solve with I - h l0 J factored here.
         subroutine direct()
             call sens_matrix(s, sys, hl0, stat)
             if (stat%code /= STATUS_OK) return
-            a = b
+            s%sacor = s%sb
             do k = 1, s%ns
-                call la_small_lu_solve(s%sjm, s%spiv, a(:, k))
+                i0 = (k - 1)*n
+                call la_small_lu_solve(s%sjm, s%spiv, s%sacor(i0 + 1:i0 + n))
             end do
         end subroutine direct
-        !> The weighted max-norm of a change of the sensitivities.
-        real(dp) function snorm(v)
-            real(dp), intent(in) :: v(:, :)
-            integer :: kk, ii
-            snorm = 0.0_dp
-            do kk = 1, size(v, 2)
-                do ii = 1, size(v, 1)
-                    snorm = max(snorm, abs(v(ii, kk))*s%srewt(ii + (kk - 1)*s%n))
-                end do
-            end do
-        end function snorm
     end subroutine sens_correct
+
+    !> jv = J v at the system's last sens_point for the columns of v, n x ns (the
+    !! sensitivities' vectors of n ns seen as their columns, without a copy).
+    subroutine sens_products(sys, n, ns, v, jv, stat)
+        class(ode_system_t), intent(inout) :: sys
+        integer, intent(in) :: n, ns
+        real(dp), intent(in) :: v(n, ns)
+        real(dp), intent(out) :: jv(n, ns)
+        type(status_t), intent(out) :: stat
+        call sys%sens_jv(v, jv, stat)
+    end subroutine sens_products
+
+    !> z = jv + dfdp (the sensitivities' slope), vectors of m = n ns.
+    pure subroutine sens_sum(m, jv, dfdp, z)
+        integer, intent(in) :: m
+        real(dp), intent(in) :: jv(m), dfdp(m)
+        real(dp), intent(out) :: z(m)
+        z = jv + dfdp
+    end subroutine sens_sum
+
+    !> The corrector's right-hand side b = h (J z + df/dp) - z2 (z2 the predicted scaled
+    !! slope), vectors of m = n ns.
+    pure subroutine sens_rhs(m, h, jv, dfdp, z2, b)
+        integer, intent(in) :: m
+        real(dp), intent(in) :: h, jv(m), dfdp(m), z2(m)
+        real(dp), intent(out) :: b(m)
+        b = h*(jv + dfdp) - z2
+    end subroutine sens_rhs
+
+    !> d = b + h l0 J a - a, the residual of (I - h l0 J) a = b.
+    pure subroutine sens_residual(m, hl0, b, jv, a, d)
+        integer, intent(in) :: m
+        real(dp), intent(in) :: hl0, b(m), jv(m), a(m)
+        real(dp), intent(out) :: d(m)
+        d = b + hl0*jv - a
+    end subroutine sens_residual
+
+    !> a <- a + d and del = the weighted max-norm of d (rw the reciprocal weights).
+    pure subroutine sens_accumulate(m, d, rw, a, del)
+        integer, intent(in) :: m
+        real(dp), intent(in) :: d(m), rw(m)
+        real(dp), intent(inout) :: a(m)
+        real(dp), intent(out) :: del
+        integer :: i
+        del = 0.0_dp
+        do i = 1, m
+            a(i) = a(i) + d(i)
+            del = max(del, abs(d(i))*rw(i))
+        end do
+    end subroutine sens_accumulate
+
+    !> One functional iteration a <- b + h l0 J a: d = b + h l0 jv - a, a <- a + d, and
+    !! del = the weighted max-norm of d.
+    pure subroutine sens_fixed_point(m, hl0, b, jv, rw, a, del)
+        integer, intent(in) :: m
+        real(dp), intent(in) :: hl0, b(m), jv(m), rw(m)
+        real(dp), intent(inout) :: a(m)
+        real(dp), intent(out) :: del
+        real(dp) :: d
+        integer :: i
+        del = 0.0_dp
+        do i = 1, m
+            d = b(i) + hl0*jv(i) - a(i)
+            a(i) = a(i) + d
+            del = max(del, abs(d)*rw(i))
+        end do
+    end subroutine sens_fixed_point
 
     !> The sensitivities' own iteration matrix I - hl0 J at the point of the last
     !! sens_point, factored (sjm, spiv), with its h l0 and step (shl0, snslp).
@@ -1718,16 +1782,10 @@ contains
         class(ode_system_t), intent(inout) :: sys
         real(dp), intent(in) :: hl0
         type(status_t), intent(inout) :: stat
-        real(dp) :: eye(s%n, s%n)
-        integer :: i
         type(status_t) :: lst
-        eye = 0.0_dp
-        do i = 1, s%n
-            eye(i, i) = 1.0_dp
-        end do
-        call sys%sens_jv(eye, s%sjm, stat)
+        call sys%sens_jv(s%seye, s%sjm, stat)
         if (stat%code /= STATUS_OK) return
-        s%sjm = eye - hl0*s%sjm
+        s%sjm = s%seye - hl0*s%sjm
         s%nsdir = s%nsdir + 1
         s%shl0 = hl0
         s%snslp = s%nst
@@ -1739,42 +1797,20 @@ contains
         end if
     end subroutine sens_matrix
 
-    !> The columns of a (n x ns) from a vector of n ns, and back.
-    pure subroutine copy_columns(v, a)
-        real(dp), intent(in) :: v(:)
-        real(dp), intent(out) :: a(:, :)
-        integer :: k, n
-        n = size(a, 1)
-        do k = 1, size(a, 2)
-            a(:, k) = v((k - 1)*n + 1:k*n)
-        end do
-    end subroutine copy_columns
-
-    pure subroutine store_columns(a, v)
-        real(dp), intent(in) :: a(:, :)
-        real(dp), intent(inout) :: v(:)
-        integer :: k, n
-        n = size(a, 1)
-        do k = 1, size(a, 2)
-            v((k - 1)*n + 1:k*n) = a(:, k)
-        end do
-    end subroutine store_columns
-
-    !> k-th derivative at t of the polynomial held in the Nordsieck array (of the
-    !! sensitivities when `sens`: dky of size n ns).
-    subroutine interpolate(s, t, k, dky, stat, sens)
+    !> k-th derivative at t of the polynomial held in a Nordsieck array yh of ld rows (the
+    !! state's or the sensitivities'), for its rows i0 + 1 ... i0 + size(dky).
+    subroutine interpolate(s, yh, ld, i0, t, k, dky, stat)
         type(lsoda_t), intent(in) :: s
+        integer, intent(in) :: ld, i0
+        real(dp), intent(in) :: yh(ld, LMAX_ALL)
         real(dp), intent(in) :: t
         integer, intent(in) :: k
         real(dp), intent(out) :: dky(:)
         type(status_t), intent(out) :: stat
-        logical, intent(in), optional :: sens
         real(dp) :: tp, tol, sc
+        integer :: m
         character(len=200) :: buf
-        logical :: z
-        z = .false.
-        if (present(sens)) z = sens
-
+        m = size(dky)
         if (k < 0 .or. k > s%nq) then
             dky = 0.0_dp
             write (buf, '(a,i0,a,i0)') 'lsoda dense: derivative order k = ', k, &
@@ -1785,11 +1821,7 @@ contains
         tol = 100.0_dp*UROUND*(abs(s%tn) + abs(s%hu))
         tp = s%tn - s%hu
         if (min(tp, s%tn) - tol > t .or. t > max(tp, s%tn) + tol) then
-            if (z) then
-                dky = s%zh(:, 1)
-            else
-                dky = s%yh(:, 1)
-            end if
+            dky = yh(i0 + 1:i0 + m, 1)
             write (buf, '(a,es15.7e3,a,es15.7e3,a,es15.7e3,a)') 'lsoda dense: t = ', t, &
                 ' is outside the last step [', min(tp, s%tn), ', ', max(tp, s%tn), ']'
             call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
@@ -1797,31 +1829,28 @@ contains
         end if
         sc = 0.0_dp
         if (s%h /= 0.0_dp) sc = (t - s%tn)/s%h
-        if (z) then
-            call horner(s%zh, s%nq, s%h, sc, k, dky)
-        else
-            call horner(s%yh, s%nq, s%h, sc, k, dky)
-        end if
+        call horner(yh, ld, i0, m, s%nq, s%h, sc, k, dky)
     end subroutine interpolate
 
     !> The k-th derivative of the polynomial of a Nordsieck array yh (order nq, step h) at
-    !! the point sc h from the step's end.
-    pure subroutine horner(yh, nq, h, sc, k, dky)
-        real(dp), intent(in) :: yh(:, :)        !! Nordsieck array
-        integer, intent(in) :: nq, k            !! order, derivative
-        real(dp), intent(in) :: h, sc           !! step, (t - tn)/h
-        real(dp), intent(out) :: dky(:)
+    !! the point sc h from the step's end, for its rows i0 + 1 ... i0 + m.
+    pure subroutine horner(yh, ld, i0, m, nq, h, sc, k, dky)
+        integer, intent(in) :: ld, i0, m                !! rows of yh, the rows wanted
+        real(dp), intent(in) :: yh(ld, LMAX_ALL)        !! Nordsieck array
+        integer, intent(in) :: nq, k                    !! order, derivative
+        real(dp), intent(in) :: h, sc                   !! step, (t - tn)/h
+        real(dp), intent(out) :: dky(m)
         real(dp) :: c
         integer :: j, jj, ic
         if (h == 0.0_dp) then
-            dky = yh(:, 1)
+            dky = yh(i0 + 1:i0 + m, 1)
             if (k > 0) dky = 0.0_dp
             return
         end if
         if (sc == 0.0_dp .and. k <= 1) then
             ! at the end of the step the Horner scheme below reduces to one column (the same
             ! numbers, without the sums of zero terms): y = yh(:,1), y' = yh(:,2)/h
-            dky = yh(:, k + 1)
+            dky = yh(i0 + 1:i0 + m, k + 1)
             if (k > 0) dky = dky*h**(-k)
             return
         end if
@@ -1831,14 +1860,14 @@ contains
             ic = ic*jj
         end do
         c = real(ic, dp)
-        dky = c*yh(:, nq + 1)
+        dky = c*yh(i0 + 1:i0 + m, nq + 1)
         do j = nq - 1, k, -1
             ic = 1
             do jj = j + 1 - k, j
                 ic = ic*jj
             end do
             c = real(ic, dp)
-            dky = c*yh(:, j + 1) + sc*dky
+            dky = c*yh(i0 + 1:i0 + m, j + 1) + sc*dky
         end do
         if (k > 0) dky = dky*h**(-k)
     end subroutine horner
