@@ -385,7 +385,7 @@ contains
         s%steps_call = 0
         do
             if ((s%tn - tout)*s%dir >= 0.0_dp) then
-                call interpolate(s, s%yh, s%n, 0, tout, 0, y, dst)
+                call interpolate(s, s%yh, s%n, tout, 0, y, dst)
                 if (dst%code /= STATUS_OK) then
                     stat = dst
                     y = s%yh(:, 1)
@@ -484,7 +484,7 @@ contains
                 'lsoda dense: solver not initialised or size(dky) /= n')
             return
         end if
-        call interpolate(s, s%yh, s%n, 0, t, k, dky, stat)
+        call interpolate(s, s%yh, s%n, t, k, dky, stat)
     end subroutine lsoda_dense
 
     !> Counters and method state (see integrator_stats_t).
@@ -655,17 +655,13 @@ contains
         integer, intent(in) :: k
         real(dp), intent(out) :: ds(:, :)
         type(status_t), intent(out) :: stat
-        integer :: c
         if (.not. s%ready .or. s%ns == 0 .or. size(ds, 1) /= s%n .or. size(ds, 2) /= s%ns) then
             ds = 0.0_dp
             call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda sens_dense: no '// &
                 'sensitivities, or ds is not n x ns')
             return
         end if
-        ! column by column from the rows of zh (each column the same outcome)
-        do c = 1, s%ns
-            call interpolate(s, s%zh, s%nsn, (c - 1)*s%n, t, k, ds(:, c), stat)
-        end do
+        call interpolate(s, s%zh, s%nsn, t, k, ds, stat)     ! ds as a vector of n ns
     end subroutine lsoda_sens_dense
 
     ! ------------------------------------------------------------------------------------
@@ -953,7 +949,7 @@ contains
                 m = 0
                 rate = 0.0_dp
                 del = 0.0_dp
-                s%y = s%yh(:, 1)
+                call copy_vec(s%n, s%yh(:, 1), s%y)
                 call sys%rhs(s%tn, s%y, s%savf, stat)
                 s%nfe = s%nfe + 1
                 if (stat%code /= STATUS_OK) then
@@ -1231,7 +1227,7 @@ contains
 
         if (s%kflag == KF_OK) then
             rm = 1.0_dp/s%tesco(2, s%nqu, s%mused)
-            s%acor = s%acor*rm
+            call scale_vec(s%n, rm, s%acor)
         end if
         s%hold = s%h
         s%jstart = 1
@@ -1797,20 +1793,18 @@ contains
         end if
     end subroutine sens_matrix
 
-    !> k-th derivative at t of the polynomial held in a Nordsieck array yh of ld rows (the
-    !! state's or the sensitivities'), for its rows i0 + 1 ... i0 + size(dky).
-    subroutine interpolate(s, yh, ld, i0, t, k, dky, stat)
+    !> k-th derivative at t of the polynomial held in a Nordsieck array yh of m rows (the
+    !! state's, or the sensitivities' with dky their n x ns as one vector).
+    subroutine interpolate(s, yh, m, t, k, dky, stat)
         type(lsoda_t), intent(in) :: s
-        integer, intent(in) :: ld, i0
-        real(dp), intent(in) :: yh(ld, LMAX_ALL)
+        integer, intent(in) :: m
+        real(dp), intent(in) :: yh(m, LMAX_ALL)
         real(dp), intent(in) :: t
         integer, intent(in) :: k
-        real(dp), intent(out) :: dky(:)
+        real(dp), intent(out) :: dky(m)
         type(status_t), intent(out) :: stat
         real(dp) :: tp, tol, sc
-        integer :: m
         character(len=200) :: buf
-        m = size(dky)
         if (k < 0 .or. k > s%nq) then
             dky = 0.0_dp
             write (buf, '(a,i0,a,i0)') 'lsoda dense: derivative order k = ', k, &
@@ -1821,7 +1815,7 @@ contains
         tol = 100.0_dp*UROUND*(abs(s%tn) + abs(s%hu))
         tp = s%tn - s%hu
         if (min(tp, s%tn) - tol > t .or. t > max(tp, s%tn) + tol) then
-            dky = yh(i0 + 1:i0 + m, 1)
+            dky = yh(:, 1)
             write (buf, '(a,es15.7e3,a,es15.7e3,a,es15.7e3,a)') 'lsoda dense: t = ', t, &
                 ' is outside the last step [', min(tp, s%tn), ', ', max(tp, s%tn), ']'
             call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
@@ -1829,29 +1823,48 @@ contains
         end if
         sc = 0.0_dp
         if (s%h /= 0.0_dp) sc = (t - s%tn)/s%h
-        call horner(yh, ld, i0, m, s%nq, s%h, sc, k, dky)
+        call horner(yh, m, s%nq, s%h, sc, k, dky)
     end subroutine interpolate
 
     !> The k-th derivative of the polynomial of a Nordsieck array yh (order nq, step h) at
-    !! the point sc h from the step's end, for its rows i0 + 1 ... i0 + m.
-    pure subroutine horner(yh, ld, i0, m, nq, h, sc, k, dky)
-        integer, intent(in) :: ld, i0, m                !! rows of yh, the rows wanted
-        real(dp), intent(in) :: yh(ld, LMAX_ALL)        !! Nordsieck array
+    !! the point sc h from the step's end.
+    pure subroutine horner(yh, m, nq, h, sc, k, dky)
+        integer, intent(in) :: m                        !! rows
+        real(dp), intent(in) :: yh(m, LMAX_ALL)         !! Nordsieck array
         integer, intent(in) :: nq, k                    !! order, derivative
         real(dp), intent(in) :: h, sc                   !! step, (t - tn)/h
         real(dp), intent(out) :: dky(m)
-        real(dp) :: c
-        integer :: j, jj, ic
+        real(dp) :: c, t(2)
+        integer :: i, j, jj, ic
         if (h == 0.0_dp) then
-            dky = yh(i0 + 1:i0 + m, 1)
+            dky = yh(:, 1)
             if (k > 0) dky = 0.0_dp
             return
         end if
         if (sc == 0.0_dp .and. k <= 1) then
             ! at the end of the step the Horner scheme below reduces to one column (the same
             ! numbers, without the sums of zero terms): y = yh(:,1), y' = yh(:,2)/h
-            dky = yh(i0 + 1:i0 + m, k + 1)
+            dky = yh(:, k + 1)
             if (k > 0) dky = dky*h**(-k)
+            return
+        end if
+        if (k == 0) then
+            ! the solution itself (every factor c below is 1, and 1 x = x exactly): two rows
+            ! at a time, the sum in registers
+            do i = 1, m - 1, 2
+                t = yh(i:i + 1, nq + 1)
+                do j = nq - 1, 0, -1
+                    t = yh(i:i + 1, j + 1) + sc*t
+                end do
+                dky(i:i + 1) = t
+            end do
+            if (mod(m, 2) == 1) then
+                t(1) = yh(m, nq + 1)
+                do j = nq - 1, 0, -1
+                    t(1) = yh(m, j + 1) + sc*t(1)
+                end do
+                dky(m) = t(1)
+            end if
             return
         end if
         ! Horner scheme on the Nordsieck columns, differentiated k times
@@ -1860,14 +1873,14 @@ contains
             ic = ic*jj
         end do
         c = real(ic, dp)
-        dky = c*yh(i0 + 1:i0 + m, nq + 1)
+        dky = c*yh(:, nq + 1)
         do j = nq - 1, k, -1
             ic = 1
             do jj = j + 1 - k, j
                 ic = ic*jj
             end do
             c = real(ic, dp)
-            dky = c*yh(i0 + 1:i0 + m, j + 1) + sc*dky
+            dky = c*yh(:, j + 1) + sc*dky
         end do
         if (k > 0) dky = dky*h**(-k)
     end subroutine horner
@@ -1899,6 +1912,22 @@ contains
             vmnorm_diff = max(vmnorm_diff, abs(a(i) - b(i))*rw(i))
         end do
     end function vmnorm_diff
+
+    !> b = a (vectors of n).
+    pure subroutine copy_vec(n, a, b)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: a(n)
+        real(dp), intent(out) :: b(n)
+        b = a
+    end subroutine copy_vec
+
+    !> v <- r v (a vector of n).
+    pure subroutine scale_vec(n, r, v)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: r
+        real(dp), intent(inout) :: v(n)
+        v = v*r
+    end subroutine scale_vec
 
     !> One functional (fixed-point) iteration of the Adams corrector, f on entry the
     !! right-hand side at y: f <- h f - yh2, del = ||f - acor|| (vmnorm), y = yh1 + l0 f,
