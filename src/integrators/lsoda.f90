@@ -1467,16 +1467,20 @@ contains
     end subroutine pascal
 
     !> yh(:, j) <- yh(:, j) + el(j) acor, j = 1 ... l: a step's correction added to the
-    !! Nordsieck array (rows 1:nrow).
+    !! Nordsieck array (rows 1:nrow), two columns in one pass over acor.
     pure subroutine add_correction(yh, nrow, el, acor, l)
         integer, intent(in) :: nrow, l                   !! rows used, columns
         real(dp), intent(inout) :: yh(nrow, LMAX_ALL)    !! Nordsieck array
         real(dp), intent(in) :: el(LMAX_ALL)             !! method coefficients l_j
         real(dp), intent(in) :: acor(nrow)               !! the step's correction
-        integer :: j
-        do j = 1, l
-            yh(:, j) = yh(:, j) + el(j)*acor
+        integer :: i, j
+        do j = 1, l - 1, 2
+            do i = 1, nrow
+                yh(i, j) = yh(i, j) + el(j)*acor(i)
+                yh(i, j + 1) = yh(i, j + 1) + el(j + 1)*acor(i)
+            end do
         end do
+        if (mod(l, 2) == 1) yh(:, l) = yh(:, l) + el(l)*acor
     end subroutine add_correction
 
     !> Inverse of predict.
