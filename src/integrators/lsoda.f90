@@ -1378,8 +1378,8 @@ contains
     !! triangle of order nq is the last nq levels of the triangle of order 12, so column j goes
     !! to register j + 12 - nq and level k of the order-12 triangle (c12 down to ck) runs when
     !! nq >= 13 - k (the compiler turns these tests into one jump into the sequence per pair of
-    !! rows); the registers below c13 - nq are loaded from column 1, unused.  Below order 4,
-    !! and for an odd last row, column by column.
+    !! rows); the registers below c13 - nq stay 0, unused.  Below order 4, and for an odd last
+    !! row, column by column.
     pure subroutine pascal(yh, nrow, nq)
         integer, intent(in) :: nrow, nq                  !! rows used, order (1 ... 12)
         real(dp), intent(inout) :: yh(nrow, LMAX_ALL)    !! Nordsieck array
@@ -1394,20 +1394,22 @@ contains
             return
         end if
         o = nq - 12
+        c1 = 0.0_dp; c2 = 0.0_dp; c3 = 0.0_dp; c4 = 0.0_dp; c5 = 0.0_dp; c6 = 0.0_dp; c7 = 0.0_dp
+        c8 = 0.0_dp
         do i = 1, nrow - 1, 2
             c13 = yh(i:i + 1, 13 + o)
             c12 = yh(i:i + 1, 12 + o)
             c11 = yh(i:i + 1, 11 + o)
             c10 = yh(i:i + 1, 10 + o)
             c9 = yh(i:i + 1, 9 + o)
-            c8 = yh(i:i + 1, max(8 + o, 1))
-            c7 = yh(i:i + 1, max(7 + o, 1))
-            c6 = yh(i:i + 1, max(6 + o, 1))
-            c5 = yh(i:i + 1, max(5 + o, 1))
-            c4 = yh(i:i + 1, max(4 + o, 1))
-            c3 = yh(i:i + 1, max(3 + o, 1))
-            c2 = yh(i:i + 1, max(2 + o, 1))
-            c1 = yh(i:i + 1, max(1 + o, 1))
+            if (nq >= 5) c8 = yh(i:i + 1, 8 + o)
+            if (nq >= 6) c7 = yh(i:i + 1, 7 + o)
+            if (nq >= 7) c6 = yh(i:i + 1, 6 + o)
+            if (nq >= 8) c5 = yh(i:i + 1, 5 + o)
+            if (nq >= 9) c4 = yh(i:i + 1, 4 + o)
+            if (nq >= 10) c3 = yh(i:i + 1, 3 + o)
+            if (nq >= 11) c2 = yh(i:i + 1, 2 + o)
+            if (nq >= 12) c1 = yh(i:i + 1, 1 + o)
             if (nq >= 12) then
                 c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10; c8 = c8 + c9
                 c7 = c7 + c8; c6 = c6 + c7; c5 = c5 + c6; c4 = c4 + c5; c3 = c3 + c4; c2 = c2 + c3
