@@ -123,8 +123,8 @@ module lsoda
         real(dp), allocatable :: zh(:, :)      ! their Nordsieck array (nsn, LMAX_ALL)
         real(dp), allocatable :: satol(:), srewt(:), sacor(:)
         real(dp), allocatable :: sdfdp(:, :)   ! df/dp at the step's point (n, ns)
-        ! sens_correct's work vectors of n ns (columns of n in a row): right-hand side b,
-        ! change d, products J v
+        ! sens_correct's work vectors of n ns (the n x ns columns one after another, as zh's):
+        ! right-hand side b, change d, products J v
         real(dp), allocatable :: sb(:), sd(:), sjv(:)
         real(dp), allocatable :: seye(:, :)    ! the identity of n, for J = J I
         real(dp), allocatable :: sjm(:, :)     ! the sensitivities' own matrix I - h l0 J, LU
@@ -1627,7 +1627,8 @@ contains
         real(dp) :: hl0, del, delp, tol
         integer :: m, k, n, i0
         logical :: conv
-        ! the columns a of the corrector are sacor, b, d and J v sb, sd and sjv (n ns each)
+        ! the iteration's a is sacor itself; its b, d and J a are sb, sd and sjv (vectors of
+        ! n ns, the columns one after another, as zh's)
         n = s%n
         hl0 = s%h*s%el(1)
         call sys%sens_point(s%tn, s%y, s%sdfdp, stat)
