@@ -123,6 +123,10 @@ module lsoda
         real(dp), allocatable :: zh(:, :)      ! their Nordsieck array (nsn, LMAX_ALL)
         real(dp), allocatable :: satol(:), srewt(:), sacor(:)
         real(dp), allocatable :: sdfdp(:, :)   ! df/dp at the step's point (n, ns)
+        ! sens_correct's work vectors of n ns (the n x ns columns one after another, as zh's):
+        ! right-hand side b, change d, products J v
+        real(dp), allocatable :: sb(:), sd(:), sjv(:)
+        real(dp), allocatable :: seye(:, :)    ! the identity of n, for J = J I
         real(dp), allocatable :: sjm(:, :)     ! the sensitivities' own matrix I - h l0 J, LU
         integer, allocatable :: spiv(:)
         real(dp) :: shl0 = 0.0_dp              ! its h l0
@@ -381,7 +385,7 @@ contains
         s%steps_call = 0
         do
             if ((s%tn - tout)*s%dir >= 0.0_dp) then
-                call interpolate(s, tout, 0, y, dst)
+                call interpolate(s, s%yh, s%n, tout, 0, y, dst)
                 if (dst%code /= STATUS_OK) then
                     stat = dst
                     y = s%yh(:, 1)
@@ -480,7 +484,7 @@ contains
                 'lsoda dense: solver not initialised or size(dky) /= n')
             return
         end if
-        call interpolate(s, t, k, dky, stat)
+        call interpolate(s, s%yh, s%n, t, k, dky, stat)
     end subroutine lsoda_dense
 
     !> Counters and method state (see integrator_stats_t).
@@ -605,8 +609,15 @@ contains
         call realloc_vec(s%satol, s%nsn)
         call realloc_vec(s%srewt, s%nsn)
         call realloc_vec(s%sacor, s%nsn)
-        if (allocated(s%sdfdp)) deallocate (s%sdfdp, s%sjm, s%spiv)
-        allocate (s%sdfdp(n, ns), s%sjm(n, n), s%spiv(n))
+        call realloc_vec(s%sb, s%nsn)
+        call realloc_vec(s%sd, s%nsn)
+        call realloc_vec(s%sjv, s%nsn)
+        if (allocated(s%sdfdp)) deallocate (s%sdfdp, s%sjm, s%spiv, s%seye)
+        allocate (s%sdfdp(n, ns), s%sjm(n, n), s%spiv(n), s%seye(n, n))
+        s%seye = 0.0_dp
+        do i = 1, n
+            s%seye(i, i) = 1.0_dp
+        end do
         s%shl0 = 0.0_dp
         s%snslp = 0
         s%shave = .false.
@@ -644,15 +655,13 @@ contains
         integer, intent(in) :: k
         real(dp), intent(out) :: ds(:, :)
         type(status_t), intent(out) :: stat
-        real(dp) :: v(s%nsn)
         if (.not. s%ready .or. s%ns == 0 .or. size(ds, 1) /= s%n .or. size(ds, 2) /= s%ns) then
             ds = 0.0_dp
             call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda sens_dense: no '// &
                 'sensitivities, or ds is not n x ns')
             return
         end if
-        call interpolate(s, t, k, v, stat, sens=.true.)
-        ds = reshape(v, [s%n, s%ns])
+        call interpolate(s, s%zh, s%nsn, t, k, ds, stat)     ! ds as a vector of n ns
     end subroutine lsoda_sens_dense
 
     ! ------------------------------------------------------------------------------------
@@ -799,21 +808,45 @@ contains
     subroutine update_weights(s, stat)
         type(lsoda_t), intent(inout) :: s
         type(status_t), intent(inout) :: stat
-        real(dp) :: w
         integer :: i
         character(len=160) :: buf
-        do i = 1, s%n
-            w = s%rtol*abs(s%yh(i, 1)) + s%atol(i)
+        call weights(s%n, s%rtol, s%yh(:, 1), s%atol, s%rewt, i)
+        if (i > 0) then
+            write (buf, '(a,i0,a,es15.7e3,a)') 'lsoda: error weight of component ', i, &
+                ' became zero at t = ', s%tn, ' (atol(i) = 0 and y(i) = 0)'
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
+            return
+        end if
+        if (s%ns > 0) call sens_weights(s%nsn, s%rtol, s%zh(:, 1), s%satol, s%srewt)
+    end subroutine update_weights
+
+    !> rewt = 1/(rtol |y| + atol), component by component up to the first whose weight is
+    !! not > 0 (bad = its index, rewt kept from there on), else bad = 0.
+    pure subroutine weights(n, rtol, y, atol, rewt, bad)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: rtol, y(n), atol(n)
+        real(dp), intent(inout) :: rewt(n)
+        integer, intent(out) :: bad
+        real(dp) :: w
+        integer :: i
+        bad = 0
+        do i = 1, n
+            w = rtol*abs(y(i)) + atol(i)
             if (.not. (w > 0.0_dp)) then
-                write (buf, '(a,i0,a,es15.7e3,a)') 'lsoda: error weight of component ', i, &
-                    ' became zero at t = ', s%tn, ' (atol(i) = 0 and y(i) = 0)'
-                call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
+                bad = i
                 return
             end if
-            s%rewt(i) = 1.0_dp/w
+            rewt(i) = 1.0_dp/w
         end do
-        if (s%ns > 0) s%srewt = 1.0_dp/(s%rtol*abs(s%zh(:, 1)) + s%satol)
-    end subroutine update_weights
+    end subroutine weights
+
+    !> The sensitivities' reciprocal weights srewt = 1/(rtol |z| + satol) (satol > 0).
+    pure subroutine sens_weights(n, rtol, z, satol, srewt)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: rtol, z(n), satol(n)
+        real(dp), intent(out) :: srewt(n)
+        srewt = 1.0_dp/(rtol*abs(z) + satol)
+    end subroutine sens_weights
 
     subroutine too_much_accuracy(s, stat)
         type(lsoda_t), intent(in) :: s
@@ -836,7 +869,7 @@ contains
         type(lsoda_t), intent(inout) :: s
         class(ode_system_t), intent(inout) :: sys
         type(status_t), intent(inout) :: stat
-        integer :: ncf, m, newq, i, nqm, lm
+        integer :: ncf, m, newq, nqm, lm
         logical :: newton, converged, singular, fatal, switched
         real(dp) :: del, delp, dsm, rate, rm, dcon, pnorm, rh, rh1, rh2, rh1it, pdh, exsm
         real(dp) :: dm, exm, alpha
@@ -916,7 +949,7 @@ contains
                 m = 0
                 rate = 0.0_dp
                 del = 0.0_dp
-                s%y = s%yh(:, 1)
+                call copy_vec(s%n, s%yh(:, 1), s%y)
                 call sys%rhs(s%tn, s%y, s%savf, stat)
                 s%nfe = s%nfe + 1
                 if (stat%code /= STATUS_OK) then
@@ -938,21 +971,11 @@ contains
                 s%acor = 0.0_dp
                 iterate: do
                     if (.not. newton) then
-                        ! functional iteration
-                        do i = 1, s%n
-                            s%savf(i) = s%h*s%savf(i) - s%yh(i, 2)
-                            s%y(i) = s%savf(i) - s%acor(i)
-                        end do
-                        del = vmnorm(s%n, s%y, s%rewt)
-                        do i = 1, s%n
-                            s%y(i) = s%yh(i, 1) + s%el(1)*s%savf(i)
-                            s%acor(i) = s%savf(i)
-                        end do
+                        call functional_update(s%n, s%h, s%el(1), s%yh(:, 1), s%yh(:, 2), &
+                                               s%rewt, s%savf, s%acor, s%y, del)
                     else
                         ! chord Newton iteration
-                        do i = 1, s%n
-                            s%y(i) = s%h*s%savf(i) - (s%yh(i, 2) + s%acor(i))
-                        end do
+                        call newton_residual(s%n, s%h, s%savf, s%yh(:, 2), s%acor, s%y)
                         if (s%structured) then
                             call sys%solve_iteration(s%y, stat)
                         else
@@ -962,11 +985,7 @@ contains
                             fatal = .true.     ! cannot happen with consistent shapes
                             exit corrector
                         end if
-                        del = vmnorm(s%n, s%y, s%rewt)
-                        do i = 1, s%n
-                            s%acor(i) = s%acor(i) + s%y(i)
-                            s%y(i) = s%yh(i, 1) + s%el(1)*s%acor(i)
-                        end do
+                        call newton_update(s%n, s%el(1), s%yh(:, 1), s%rewt, s%acor, s%y, del)
                     end if
                     ! convergence test; at least two iterations for Adams (Lipschitz estimate)
                     if (del <= 100.0_dp*pnorm*UROUND) then
@@ -1052,8 +1071,8 @@ contains
                 s%hu = s%h
                 s%nqu = s%nq
                 s%mused = s%meth
-                call add_correction(s%yh, s%el, s%acor, s%n, s%l)
-                if (s%ns > 0) call add_correction(s%zh, s%el, s%sacor, s%nsn, s%l)
+                call add_correction(s%yh, s%n, s%el, s%acor, s%l)
+                if (s%ns > 0) call add_correction(s%zh, s%nsn, s%el, s%sacor, s%l)
                 switched = .false.
                 s%icount = s%icount - 1
                 if (s%icount < 0) then
@@ -1208,7 +1227,7 @@ contains
 
         if (s%kflag == KF_OK) then
             rm = 1.0_dp/s%tesco(2, s%nqu, s%mused)
-            s%acor = s%acor*rm
+            call scale_vec(s%n, rm, s%acor)
         end if
         s%hold = s%h
         s%jstart = 1
@@ -1250,7 +1269,7 @@ contains
                 s%savf(i) = s%acor(i) - s%yh(i, lmx)
             end do
             dup = vmnorm(s%n, s%savf, s%rewt)/s%tesco(3, s%nq, s%meth)
-            if (s%ns > 0 .and. s%sens_errcon) dup = max(dup, vmnorm(s%nsn, s%sacor - &
+            if (s%ns > 0 .and. s%sens_errcon) dup = max(dup, vmnorm_diff(s%nsn, s%sacor, &
                 s%zh(:, lmx), s%srewt)/s%tesco(3, s%nq, s%meth))
             rhup = 1.0_dp/(1.4_dp*dup**(1.0_dp/(s%l + 1)) + 1.4e-6_dp)
         end if
@@ -1325,8 +1344,7 @@ contains
         type(lsoda_t), intent(inout) :: s
         real(dp), intent(in) :: rh_in
         logical, intent(in) :: use_hmin
-        real(dp) :: rh, r, pdh
-        integer :: i, j
+        real(dp) :: rh, pdh
         rh = rh_in
         if (use_hmin) rh = max(rh, s%hmin/abs(s%h))
         rh = min(rh, s%rmax)
@@ -1339,14 +1357,8 @@ contains
                 s%irflag = 1
             end if
         end if
-        r = 1.0_dp
-        do j = 2, s%l
-            r = r*rh
-            do i = 1, s%n
-                s%yh(i, j) = s%yh(i, j)*r
-            end do
-            if (s%ns > 0) s%zh(:, j) = s%zh(:, j)*r
-        end do
+        call scale_columns(s%yh, s%n, s%l, rh)
+        if (s%ns > 0) call scale_columns(s%zh, s%nsn, s%l, rh)
         s%h = s%h*rh
         s%rc = s%rc*rh
         s%ialth = s%l
@@ -1359,58 +1371,154 @@ contains
         if (s%ns > 0) call pascal(s%zh, s%nsn, s%nq)
     end subroutine predict
 
-    !> The Pascal triangle on the first nq + 1 columns of yh (rows 1:n), column by column.
-    !! On a dummy argument, which aliases nothing, the columns are added as vectors.
-    pure subroutine pascal(yh, n, nq)
-        real(dp), intent(inout) :: yh(:, :)     !! Nordsieck array
-        integer, intent(in) :: n, nq            !! rows used, order
-        integer :: j, k
-        do k = 1, nq
-            do j = nq, k, -1
-                yh(1:n, j) = yh(1:n, j) + yh(1:n, j + 1)
+    !> yh <- yh times the Pascal triangle on columns 1 ... nq + 1, rows 1:nrow (the Taylor
+    !! predictor): for k = 1 ... nq and j = nq down to k, yh(:, j) = yh(:, j) + yh(:, j + 1),
+    !! each element by these additions in this order however the rows are grouped.  From
+    !! order 4 up, two rows at a time with the columns held in registers c1 ... c13: the
+    !! triangle of order nq is the last nq levels of the triangle of order 12, so column j goes
+    !! to register j + 12 - nq and level k of the order-12 triangle (c12 down to ck) runs when
+    !! nq >= 13 - k (the compiler turns these tests into one jump into the sequence per pair of
+    !! rows); the registers below c13 - nq stay 0, unused.  Below order 4, and for an odd last
+    !! row, column by column.
+    pure subroutine pascal(yh, nrow, nq)
+        integer, intent(in) :: nrow, nq                  !! rows used, order (1 ... 12)
+        real(dp), intent(inout) :: yh(nrow, LMAX_ALL)    !! Nordsieck array
+        real(dp), dimension(2) :: c1, c2, c3, c4, c5, c6, c7, c8, c9, c10, c11, c12, c13
+        integer :: i, j, k, o
+        if (nq < 4) then
+            do k = 1, nq
+                do j = nq, k, -1
+                    yh(:, j) = yh(:, j) + yh(:, j + 1)
+                end do
             end do
+            return
+        end if
+        o = nq - 12
+        c1 = 0.0_dp; c2 = 0.0_dp; c3 = 0.0_dp; c4 = 0.0_dp; c5 = 0.0_dp; c6 = 0.0_dp; c7 = 0.0_dp
+        c8 = 0.0_dp
+        do i = 1, nrow - 1, 2
+            c13 = yh(i:i + 1, 13 + o)
+            c12 = yh(i:i + 1, 12 + o)
+            c11 = yh(i:i + 1, 11 + o)
+            c10 = yh(i:i + 1, 10 + o)
+            c9 = yh(i:i + 1, 9 + o)
+            if (nq >= 5) c8 = yh(i:i + 1, 8 + o)
+            if (nq >= 6) c7 = yh(i:i + 1, 7 + o)
+            if (nq >= 7) c6 = yh(i:i + 1, 6 + o)
+            if (nq >= 8) c5 = yh(i:i + 1, 5 + o)
+            if (nq >= 9) c4 = yh(i:i + 1, 4 + o)
+            if (nq >= 10) c3 = yh(i:i + 1, 3 + o)
+            if (nq >= 11) c2 = yh(i:i + 1, 2 + o)
+            if (nq >= 12) c1 = yh(i:i + 1, 1 + o)
+            if (nq >= 12) then
+                c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10; c8 = c8 + c9
+                c7 = c7 + c8; c6 = c6 + c7; c5 = c5 + c6; c4 = c4 + c5; c3 = c3 + c4; c2 = c2 + c3
+                c1 = c1 + c2
+            end if
+            if (nq >= 11) then
+                c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10; c8 = c8 + c9
+                c7 = c7 + c8; c6 = c6 + c7; c5 = c5 + c6; c4 = c4 + c5; c3 = c3 + c4; c2 = c2 + c3
+            end if
+            if (nq >= 10) then
+                c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10; c8 = c8 + c9
+                c7 = c7 + c8; c6 = c6 + c7; c5 = c5 + c6; c4 = c4 + c5; c3 = c3 + c4
+            end if
+            if (nq >= 9) then
+                c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10; c8 = c8 + c9
+                c7 = c7 + c8; c6 = c6 + c7; c5 = c5 + c6; c4 = c4 + c5
+            end if
+            if (nq >= 8) then
+                c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10; c8 = c8 + c9
+                c7 = c7 + c8; c6 = c6 + c7; c5 = c5 + c6
+            end if
+            if (nq >= 7) then
+                c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10; c8 = c8 + c9
+                c7 = c7 + c8; c6 = c6 + c7
+            end if
+            if (nq >= 6) then
+                c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10; c8 = c8 + c9
+                c7 = c7 + c8
+            end if
+            if (nq >= 5) then
+                c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10; c8 = c8 + c9
+            end if
+            c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11; c9 = c9 + c10
+            c12 = c12 + c13; c11 = c11 + c12; c10 = c10 + c11
+            c12 = c12 + c13; c11 = c11 + c12
+            c12 = c12 + c13
+            yh(i:i + 1, 12 + o) = c12
+            yh(i:i + 1, 11 + o) = c11
+            yh(i:i + 1, 10 + o) = c10
+            yh(i:i + 1, 9 + o) = c9
+            if (nq >= 5) yh(i:i + 1, 8 + o) = c8
+            if (nq >= 6) yh(i:i + 1, 7 + o) = c7
+            if (nq >= 7) yh(i:i + 1, 6 + o) = c6
+            if (nq >= 8) yh(i:i + 1, 5 + o) = c5
+            if (nq >= 9) yh(i:i + 1, 4 + o) = c4
+            if (nq >= 10) yh(i:i + 1, 3 + o) = c3
+            if (nq >= 11) yh(i:i + 1, 2 + o) = c2
+            if (nq >= 12) yh(i:i + 1, 1 + o) = c1
         end do
+        if (mod(nrow, 2) == 1) then
+            do k = 1, nq
+                do j = nq, k, -1
+                    yh(nrow, j) = yh(nrow, j) + yh(nrow, j + 1)
+                end do
+            end do
+        end if
     end subroutine pascal
 
     !> yh(:, j) <- yh(:, j) + el(j) acor, j = 1 ... l: a step's correction added to the
-    !! Nordsieck array (as vectors: dummy arguments alias nothing).
-    pure subroutine add_correction(yh, el, acor, n, l)
-        real(dp), intent(inout) :: yh(:, :)     !! Nordsieck array
-        real(dp), intent(in) :: el(:)           !! method coefficients l_j
-        real(dp), intent(in) :: acor(:)         !! the step's correction
-        integer, intent(in) :: n, l             !! rows used, columns
-        integer :: j
-        do j = 1, l
-            yh(1:n, j) = yh(1:n, j) + el(j)*acor(1:n)
+    !! Nordsieck array (rows 1:nrow), two columns in one pass over acor.
+    pure subroutine add_correction(yh, nrow, el, acor, l)
+        integer, intent(in) :: nrow, l                   !! rows used, columns
+        real(dp), intent(inout) :: yh(nrow, LMAX_ALL)    !! Nordsieck array
+        real(dp), intent(in) :: el(LMAX_ALL)             !! method coefficients l_j
+        real(dp), intent(in) :: acor(nrow)               !! the step's correction
+        integer :: i, j
+        do j = 1, l - 1, 2
+            do i = 1, nrow
+                yh(i, j) = yh(i, j) + el(j)*acor(i)
+                yh(i, j + 1) = yh(i, j + 1) + el(j + 1)*acor(i)
+            end do
         end do
+        if (mod(l, 2) == 1) yh(:, l) = yh(:, l) + el(l)*acor
     end subroutine add_correction
 
     !> Inverse of predict.
     subroutine unpredict(s)
         type(lsoda_t), intent(inout) :: s
-        integer :: i, j, k, nq
-        nq = s%nq
-        do k = nq, 1, -1
-            do j = k, nq
-                do i = 1, s%n
-                    s%yh(i, j) = s%yh(i, j) - s%yh(i, j + 1)
-                end do
-            end do
-        end do
+        call unpascal(s%yh, s%n, s%nq)
         if (s%ns > 0) call unpascal(s%zh, s%nsn, s%nq)
     end subroutine unpredict
 
-    !> The inverse of pascal.
-    pure subroutine unpascal(yh, n, nq)
-        real(dp), intent(inout) :: yh(:, :)     !! Nordsieck array
-        integer, intent(in) :: n, nq            !! rows used, order
+    !> The inverse of pascal: for k = nq down to 1 and j = k ... nq,
+    !! yh(:, j) = yh(:, j) - yh(:, j + 1).
+    pure subroutine unpascal(yh, nrow, nq)
+        integer, intent(in) :: nrow, nq                  !! rows used, order
+        real(dp), intent(inout) :: yh(nrow, LMAX_ALL)    !! Nordsieck array
         integer :: j, k
         do k = nq, 1, -1
             do j = k, nq
-                yh(1:n, j) = yh(1:n, j) - yh(1:n, j + 1)
+                yh(:, j) = yh(:, j) - yh(:, j + 1)
             end do
         end do
     end subroutine unpascal
+
+    !> yh(:, j) <- yh(:, j) r^(j-1), j = 2 ... l (rows 1:nrow), the powers of r by successive
+    !! products: the Nordsieck array rescaled to the step h r.
+    pure subroutine scale_columns(yh, nrow, l, r)
+        integer, intent(in) :: nrow, l                   !! rows used, columns
+        real(dp), intent(inout) :: yh(nrow, LMAX_ALL)    !! Nordsieck array
+        real(dp), intent(in) :: r                        !! step ratio
+        real(dp) :: rj
+        integer :: j
+        rj = 1.0_dp
+        do j = 2, l
+            rj = rj*r
+            yh(:, j) = yh(:, j)*rj
+        end do
+    end subroutine scale_columns
 
     !> P = I - h*l0*J (J analytic or by finite differences), its LU factors, and the
     !! weighted norm of J used by the stiff -> non-stiff test.  On entry y = predicted
@@ -1491,14 +1599,12 @@ contains
         class(ode_system_t), intent(inout) :: sys
         real(dp), intent(in) :: t, y(:)
         type(status_t), intent(out) :: stat
-        real(dp) :: v(s%n, s%ns), jv(s%n, s%ns)
         call sys%sens_point(t, y, s%sdfdp, stat)
         s%nsp = s%nsp + 1
         if (stat%code /= STATUS_OK) return
-        v = reshape(s%zh(:, 1), [s%n, s%ns])
-        call sys%sens_jv(v, jv, stat)
+        call sens_products(sys, s%n, s%ns, s%zh(:, 1), s%sjv, stat)
         if (stat%code /= STATUS_OK) return
-        s%zh(:, 2) = reshape(jv + s%sdfdp, [s%nsn])
+        call sens_sum(s%nsn, s%sjv, s%sdfdp, s%zh(:, 2))
     end subroutine sens_slope
 
     !> The sensitivities' corrector at the step's converged point (tn, y): sacor with
@@ -1518,9 +1624,12 @@ contains
         type(lsoda_t), intent(inout) :: s
         class(ode_system_t), intent(inout) :: sys
         type(status_t), intent(inout) :: stat
-        real(dp) :: b(s%n, s%ns), a(s%n, s%ns), d(s%n, s%ns), jv(s%n, s%ns), hl0, del, delp, tol
-        integer :: m, k
+        real(dp) :: hl0, del, delp, tol
+        integer :: m, k, n, i0
         logical :: conv
+        ! the iteration's a is sacor itself; its b, d and J a are sb, sd and sjv (vectors of
+        ! n ns, the columns one after another, as zh's)
+        n = s%n
         hl0 = s%h*s%el(1)
         call sys%sens_point(s%tn, s%y, s%sdfdp, stat)
         s%nsp = s%nsp + 1
@@ -1533,11 +1642,9 @@ contains
                 if (stat%code /= STATUS_OK) return
             end if
         end if
-        call copy_columns(s%zh(:, 1), a)
-        call sys%sens_jv(a, jv, stat)
+        call sens_products(sys, n, s%ns, s%zh(:, 1), s%sjv, stat)
         if (stat%code /= STATUS_OK) return
-        call copy_columns(s%zh(:, 2), d)
-        b = s%h*(jv + s%sdfdp) - d
+        call sens_rhs(s%nsn, s%h, s%sjv, s%sdfdp, s%zh(:, 2), s%sb)
         tol = SENS_CONV*s%tesco(2, s%nq, s%meth)*s%conit
         conv = .false.
         delp = 0.0_dp
@@ -1545,14 +1652,12 @@ contains
             ! in the error control (many columns: Z at the point is at hand) an Adams step's
             ! functional iteration a <- b + h l0 J a, from a = b, to a tenth of the state's test
             tol = SENS_CONV_EC*s%tesco(2, s%nq, s%meth)*s%conit
-            a = b
+            s%sacor = s%sb
             do m = 1, SENS_MAXIT
-                call sys%sens_jv(a, jv, stat)
+                call sens_products(sys, n, s%ns, s%sacor, s%sjv, stat)
                 if (stat%code /= STATUS_OK) return
                 s%nsit = s%nsit + 1
-                d = b + hl0*jv - a
-                a = a + d
-                del = snorm(d)
+                call sens_fixed_point(s%nsn, hl0, s%sb, s%sjv, s%srewt, s%sacor, del)
                 if (del <= tol) then
                     conv = .true.
                     exit
@@ -1561,26 +1666,25 @@ contains
                 delp = del
             end do
             if (.not. conv) call direct()
-            call store_columns(a, s%sacor)
             return
         end if
         ! the chord iteration a <- a + P^-1 (b + h l0 J a - a), from a = 0
-        a = 0.0_dp
-        d = b
+        s%sacor = 0.0_dp
+        s%sd = s%sb
         do m = 1, SENS_MAXIT
             do k = 1, s%ns
+                i0 = (k - 1)*n
                 if (s%meth == METHOD_ADAMS) then
-                    call la_small_lu_solve(s%sjm, s%spiv, d(:, k))
+                    call la_small_lu_solve(s%sjm, s%spiv, s%sd(i0 + 1:i0 + n))
                 else if (s%structured) then
-                    call sys%solve_iteration(d(:, k), stat)
+                    call sys%solve_iteration(s%sd(i0 + 1:i0 + n), stat)
                     if (stat%code /= STATUS_OK) return
                 else
-                    call la_small_lu_solve(s%wm, s%ipiv, d(:, k))
+                    call la_small_lu_solve(s%wm, s%ipiv, s%sd(i0 + 1:i0 + n))
                 end if
             end do
             s%nsit = s%nsit + 1
-            a = a + d
-            del = snorm(d)
+            call sens_accumulate(s%nsn, s%sd, s%srewt, s%sacor, del)
             ! the rate of the iteration, as the state's (kept from step to step)
             if (m > 1) s%scrate = max(0.2_dp*s%scrate, del/delp)
             if (del*min(1.0_dp, 1.5_dp*s%scrate) <= tol) then
@@ -1589,34 +1693,90 @@ contains
             end if
             if (m > 1 .and. del > 0.5_dp*delp) exit
             delp = del
-            call sys%sens_jv(a, jv, stat)
+            call sens_products(sys, n, s%ns, s%sacor, s%sjv, stat)
             if (stat%code /= STATUS_OK) return
-            d = b + hl0*jv - a
+            call sens_residual(s%nsn, hl0, s%sb, s%sjv, s%sacor, s%sd)
         end do
         if (.not. conv) call direct()
-        call store_columns(a, s%sacor)
     contains
         !> A direct solve with I - h l0 J factored here.
         subroutine direct()
             call sens_matrix(s, sys, hl0, stat)
             if (stat%code /= STATUS_OK) return
-            a = b
+            s%sacor = s%sb
             do k = 1, s%ns
-                call la_small_lu_solve(s%sjm, s%spiv, a(:, k))
+                i0 = (k - 1)*n
+                call la_small_lu_solve(s%sjm, s%spiv, s%sacor(i0 + 1:i0 + n))
             end do
         end subroutine direct
-        !> The weighted max-norm of a change of the sensitivities.
-        real(dp) function snorm(v)
-            real(dp), intent(in) :: v(:, :)
-            integer :: kk, ii
-            snorm = 0.0_dp
-            do kk = 1, size(v, 2)
-                do ii = 1, size(v, 1)
-                    snorm = max(snorm, abs(v(ii, kk))*s%srewt(ii + (kk - 1)*s%n))
-                end do
-            end do
-        end function snorm
     end subroutine sens_correct
+
+    !> jv = J v at the system's last sens_point for the columns of v, n x ns (the
+    !! sensitivities' vectors of n ns seen as their columns, without a copy).
+    subroutine sens_products(sys, n, ns, v, jv, stat)
+        class(ode_system_t), intent(inout) :: sys
+        integer, intent(in) :: n, ns
+        real(dp), intent(in) :: v(n, ns)
+        real(dp), intent(out) :: jv(n, ns)
+        type(status_t), intent(out) :: stat
+        call sys%sens_jv(v, jv, stat)
+    end subroutine sens_products
+
+    !> z = jv + dfdp (the sensitivities' slope), vectors of m = n ns.
+    pure subroutine sens_sum(m, jv, dfdp, z)
+        integer, intent(in) :: m
+        real(dp), intent(in) :: jv(m), dfdp(m)
+        real(dp), intent(out) :: z(m)
+        z = jv + dfdp
+    end subroutine sens_sum
+
+    !> The corrector's right-hand side b = h (J z + df/dp) - z2 (z2 the predicted scaled
+    !! slope), vectors of m = n ns.
+    pure subroutine sens_rhs(m, h, jv, dfdp, z2, b)
+        integer, intent(in) :: m
+        real(dp), intent(in) :: h, jv(m), dfdp(m), z2(m)
+        real(dp), intent(out) :: b(m)
+        b = h*(jv + dfdp) - z2
+    end subroutine sens_rhs
+
+    !> d = b + h l0 J a - a, the residual of (I - h l0 J) a = b.
+    pure subroutine sens_residual(m, hl0, b, jv, a, d)
+        integer, intent(in) :: m
+        real(dp), intent(in) :: hl0, b(m), jv(m), a(m)
+        real(dp), intent(out) :: d(m)
+        d = b + hl0*jv - a
+    end subroutine sens_residual
+
+    !> a <- a + d and del = the weighted max-norm of d (rw the reciprocal weights).
+    pure subroutine sens_accumulate(m, d, rw, a, del)
+        integer, intent(in) :: m
+        real(dp), intent(in) :: d(m), rw(m)
+        real(dp), intent(inout) :: a(m)
+        real(dp), intent(out) :: del
+        integer :: i
+        del = 0.0_dp
+        do i = 1, m
+            a(i) = a(i) + d(i)
+            del = max(del, abs(d(i))*rw(i))
+        end do
+    end subroutine sens_accumulate
+
+    !> One functional iteration a <- b + h l0 J a: d = b + h l0 jv - a, a <- a + d, and
+    !! del = the weighted max-norm of d.
+    pure subroutine sens_fixed_point(m, hl0, b, jv, rw, a, del)
+        integer, intent(in) :: m
+        real(dp), intent(in) :: hl0, b(m), jv(m), rw(m)
+        real(dp), intent(inout) :: a(m)
+        real(dp), intent(out) :: del
+        real(dp) :: d
+        integer :: i
+        del = 0.0_dp
+        do i = 1, m
+            d = b(i) + hl0*jv(i) - a(i)
+            a(i) = a(i) + d
+            del = max(del, abs(d)*rw(i))
+        end do
+    end subroutine sens_fixed_point
 
     !> The sensitivities' own iteration matrix I - hl0 J at the point of the last
     !! sens_point, factored (sjm, spiv), with its h l0 and step (shl0, snslp).
@@ -1625,16 +1785,10 @@ contains
         class(ode_system_t), intent(inout) :: sys
         real(dp), intent(in) :: hl0
         type(status_t), intent(inout) :: stat
-        real(dp) :: eye(s%n, s%n)
-        integer :: i
         type(status_t) :: lst
-        eye = 0.0_dp
-        do i = 1, s%n
-            eye(i, i) = 1.0_dp
-        end do
-        call sys%sens_jv(eye, s%sjm, stat)
+        call sys%sens_jv(s%seye, s%sjm, stat)
         if (stat%code /= STATUS_OK) return
-        s%sjm = eye - hl0*s%sjm
+        s%sjm = s%seye - hl0*s%sjm
         s%nsdir = s%nsdir + 1
         s%shl0 = hl0
         s%snslp = s%nst
@@ -1646,42 +1800,18 @@ contains
         end if
     end subroutine sens_matrix
 
-    !> The columns of a (n x ns) from a vector of n ns, and back.
-    pure subroutine copy_columns(v, a)
-        real(dp), intent(in) :: v(:)
-        real(dp), intent(out) :: a(:, :)
-        integer :: k, n
-        n = size(a, 1)
-        do k = 1, size(a, 2)
-            a(:, k) = v((k - 1)*n + 1:k*n)
-        end do
-    end subroutine copy_columns
-
-    pure subroutine store_columns(a, v)
-        real(dp), intent(in) :: a(:, :)
-        real(dp), intent(inout) :: v(:)
-        integer :: k, n
-        n = size(a, 1)
-        do k = 1, size(a, 2)
-            v((k - 1)*n + 1:k*n) = a(:, k)
-        end do
-    end subroutine store_columns
-
-    !> k-th derivative at t of the polynomial held in the Nordsieck array (of the
-    !! sensitivities when `sens`: dky of size n ns).
-    subroutine interpolate(s, t, k, dky, stat, sens)
+    !> k-th derivative at t of the polynomial held in a Nordsieck array yh of m rows (the
+    !! state's, or the sensitivities' with dky their n x ns as one vector).
+    subroutine interpolate(s, yh, m, t, k, dky, stat)
         type(lsoda_t), intent(in) :: s
+        integer, intent(in) :: m
+        real(dp), intent(in) :: yh(m, LMAX_ALL)
         real(dp), intent(in) :: t
         integer, intent(in) :: k
-        real(dp), intent(out) :: dky(:)
+        real(dp), intent(out) :: dky(m)
         type(status_t), intent(out) :: stat
-        logical, intent(in), optional :: sens
         real(dp) :: tp, tol, sc
         character(len=200) :: buf
-        logical :: z
-        z = .false.
-        if (present(sens)) z = sens
-
         if (k < 0 .or. k > s%nq) then
             dky = 0.0_dp
             write (buf, '(a,i0,a,i0)') 'lsoda dense: derivative order k = ', k, &
@@ -1692,11 +1822,7 @@ contains
         tol = 100.0_dp*UROUND*(abs(s%tn) + abs(s%hu))
         tp = s%tn - s%hu
         if (min(tp, s%tn) - tol > t .or. t > max(tp, s%tn) + tol) then
-            if (z) then
-                dky = s%zh(:, 1)
-            else
-                dky = s%yh(:, 1)
-            end if
+            dky = yh(:, 1)
             write (buf, '(a,es15.7e3,a,es15.7e3,a,es15.7e3,a)') 'lsoda dense: t = ', t, &
                 ' is outside the last step [', min(tp, s%tn), ', ', max(tp, s%tn), ']'
             call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
@@ -1704,22 +1830,19 @@ contains
         end if
         sc = 0.0_dp
         if (s%h /= 0.0_dp) sc = (t - s%tn)/s%h
-        if (z) then
-            call horner(s%zh, s%nq, s%h, sc, k, dky)
-        else
-            call horner(s%yh, s%nq, s%h, sc, k, dky)
-        end if
+        call horner(yh, m, s%nq, s%h, sc, k, dky)
     end subroutine interpolate
 
     !> The k-th derivative of the polynomial of a Nordsieck array yh (order nq, step h) at
     !! the point sc h from the step's end.
-    pure subroutine horner(yh, nq, h, sc, k, dky)
-        real(dp), intent(in) :: yh(:, :)        !! Nordsieck array
-        integer, intent(in) :: nq, k            !! order, derivative
-        real(dp), intent(in) :: h, sc           !! step, (t - tn)/h
-        real(dp), intent(out) :: dky(:)
-        real(dp) :: c
-        integer :: j, jj, ic
+    pure subroutine horner(yh, m, nq, h, sc, k, dky)
+        integer, intent(in) :: m                        !! rows
+        real(dp), intent(in) :: yh(m, LMAX_ALL)         !! Nordsieck array
+        integer, intent(in) :: nq, k                    !! order, derivative
+        real(dp), intent(in) :: h, sc                   !! step, (t - tn)/h
+        real(dp), intent(out) :: dky(m)
+        real(dp) :: c, t(2)
+        integer :: i, j, jj, ic
         if (h == 0.0_dp) then
             dky = yh(:, 1)
             if (k > 0) dky = 0.0_dp
@@ -1730,6 +1853,25 @@ contains
             ! numbers, without the sums of zero terms): y = yh(:,1), y' = yh(:,2)/h
             dky = yh(:, k + 1)
             if (k > 0) dky = dky*h**(-k)
+            return
+        end if
+        if (k == 0) then
+            ! the solution itself (every factor c below is 1, and 1 x = x exactly): two rows
+            ! at a time, the sum in registers
+            do i = 1, m - 1, 2
+                t = yh(i:i + 1, nq + 1)
+                do j = nq - 1, 0, -1
+                    t = yh(i:i + 1, j + 1) + sc*t
+                end do
+                dky(i:i + 1) = t
+            end do
+            if (mod(m, 2) == 1) then
+                t(1) = yh(m, nq + 1)
+                do j = nq - 1, 0, -1
+                    t(1) = yh(m, j + 1) + sc*t(1)
+                end do
+                dky(m) = t(1)
+            end if
             return
         end if
         ! Horner scheme on the Nordsieck columns, differentiated k times
@@ -1757,14 +1899,87 @@ contains
     !> Weighted max-norm max_i |v_i|*rw_i (rw = reciprocal weights).
     pure real(dp) function vmnorm(n, v, rw)
         integer, intent(in) :: n
-        real(dp), intent(in) :: v(:)
-        real(dp), intent(in) :: rw(:)
+        real(dp), intent(in) :: v(n)
+        real(dp), intent(in) :: rw(n)
         integer :: i
         vmnorm = 0.0_dp
         do i = 1, n
             vmnorm = max(vmnorm, abs(v(i))*rw(i))
         end do
     end function vmnorm
+
+    !> The weighted max-norm of a - b (vmnorm of the difference, without forming it).
+    pure real(dp) function vmnorm_diff(n, a, b, rw)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: a(n), b(n)
+        real(dp), intent(in) :: rw(n)
+        integer :: i
+        vmnorm_diff = 0.0_dp
+        do i = 1, n
+            vmnorm_diff = max(vmnorm_diff, abs(a(i) - b(i))*rw(i))
+        end do
+    end function vmnorm_diff
+
+    !> b = a (vectors of n).
+    pure subroutine copy_vec(n, a, b)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: a(n)
+        real(dp), intent(out) :: b(n)
+        b = a
+    end subroutine copy_vec
+
+    !> v <- r v (a vector of n).
+    pure subroutine scale_vec(n, r, v)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: r
+        real(dp), intent(inout) :: v(n)
+        v = v*r
+    end subroutine scale_vec
+
+    !> One functional (fixed-point) iteration of the Adams corrector, f on entry the
+    !! right-hand side at y: f <- h f - yh2, del = ||f - acor|| (vmnorm), y = yh1 + l0 f,
+    !! acor = f.
+    pure subroutine functional_update(n, h, el1, yh1, yh2, rewt, f, acor, y, del)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: h, el1                  !! step, l0
+        real(dp), intent(in) :: yh1(n), yh2(n)          !! Nordsieck columns 1 and 2
+        real(dp), intent(in) :: rewt(n)                 !! reciprocal weights
+        real(dp), intent(inout) :: f(n), acor(n)
+        real(dp), intent(out) :: y(n)
+        real(dp), intent(out) :: del
+        integer :: i
+        del = 0.0_dp
+        do i = 1, n
+            f(i) = h*f(i) - yh2(i)
+            del = max(del, abs(f(i) - acor(i))*rewt(i))
+            y(i) = yh1(i) + el1*f(i)
+            acor(i) = f(i)
+        end do
+    end subroutine functional_update
+
+    !> The chord Newton iteration's residual r = h f - (yh2 + acor).
+    pure subroutine newton_residual(n, h, f, yh2, acor, r)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: h, f(n), yh2(n), acor(n)
+        real(dp), intent(out) :: r(n)
+        r = h*f - (yh2 + acor)
+    end subroutine newton_residual
+
+    !> The chord Newton iteration's update, y the correction on entry: del = ||y|| (vmnorm),
+    !! acor <- acor + y, y = yh1 + l0 acor.
+    pure subroutine newton_update(n, el1, yh1, rewt, acor, y, del)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: el1, yh1(n), rewt(n)
+        real(dp), intent(inout) :: acor(n), y(n)
+        real(dp), intent(out) :: del
+        integer :: i
+        del = 0.0_dp
+        do i = 1, n
+            del = max(del, abs(y(i))*rewt(i))
+            acor(i) = acor(i) + y(i)
+            y(i) = yh1(i) + el1*acor(i)
+        end do
+    end subroutine newton_update
 
     !> Prefix a message with the time reached.
     subroutine prefix_time(stat, t)
