@@ -48,7 +48,7 @@ module lsoda
         LSODA_ERR_ILLEGAL_INPUT, LSODA_ERR_SINGULAR
     use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, sens_init_args, &
         METHOD_ADAMS, METHOD_BDF
-    use lapack_wrap, only: la_lu_factor, la_lu_solve, la_small_lu_solve
+    use lapack_wrap, only: la_lu_factor, la_lu_solve, la_lu_solve_many, la_small_lu_solve
     implicit none
     private
 
@@ -129,6 +129,7 @@ module lsoda
         real(dp), allocatable :: seye(:, :)    ! the identity of n, for J = J I
         real(dp), allocatable :: sjm(:, :)     ! the sensitivities' own matrix I - h l0 J, LU
         integer, allocatable :: spiv(:)
+        real(dp), allocatable :: sinv(:, :)    ! its inverse (the solves of all columns at once)
         real(dp) :: shl0 = 0.0_dp              ! its h l0
         integer :: snslp = 0                   ! the step it was formed at
         logical :: shave = .false.             ! it is formed
@@ -612,8 +613,8 @@ contains
         call realloc_vec(s%sb, s%nsn)
         call realloc_vec(s%sd, s%nsn)
         call realloc_vec(s%sjv, s%nsn)
-        if (allocated(s%sdfdp)) deallocate (s%sdfdp, s%sjm, s%spiv, s%seye)
-        allocate (s%sdfdp(n, ns), s%sjm(n, n), s%spiv(n), s%seye(n, n))
+        if (allocated(s%sdfdp)) deallocate (s%sdfdp, s%sjm, s%spiv, s%seye, s%sinv)
+        allocate (s%sdfdp(n, ns), s%sjm(n, n), s%spiv(n), s%seye(n, n), s%sinv(n, n))
         s%seye = 0.0_dp
         do i = 1, n
             s%seye(i, i) = 1.0_dp
@@ -1672,19 +1673,24 @@ contains
         s%sacor = 0.0_dp
         s%sd = s%sb
         do m = 1, SENS_MAXIT
-            do k = 1, s%ns
-                i0 = (k - 1)*n
-                if (s%meth == METHOD_ADAMS) then
-                    call la_small_lu_solve(s%sjm, s%spiv, s%sd(i0 + 1:i0 + n))
-                else if (s%structured) then
-                    call sys%solve_iteration(s%sd(i0 + 1:i0 + n), stat)
-                    if (stat%code /= STATUS_OK) return
-                else
-                    call la_small_lu_solve(s%wm, s%ipiv, s%sd(i0 + 1:i0 + n))
-                end if
-            end do
-            s%nsit = s%nsit + 1
-            call sens_accumulate(s%nsn, s%sd, s%srewt, s%sacor, del)
+            if (s%meth == METHOD_ADAMS) then
+                ! all columns at once by the inverse (sjv is free until the next products)
+                call inverse_times(n, s%ns, s%sinv, s%sd, s%sjv)
+                s%nsit = s%nsit + 1
+                call sens_accumulate(s%nsn, s%sjv, s%srewt, s%sacor, del)
+            else
+                do k = 1, s%ns
+                    i0 = (k - 1)*n
+                    if (s%structured) then
+                        call sys%solve_iteration(s%sd(i0 + 1:i0 + n), stat)
+                        if (stat%code /= STATUS_OK) return
+                    else
+                        call la_small_lu_solve(s%wm, s%ipiv, s%sd(i0 + 1:i0 + n))
+                    end if
+                end do
+                s%nsit = s%nsit + 1
+                call sens_accumulate(s%nsn, s%sd, s%srewt, s%sacor, del)
+            end if
             ! the rate of the iteration, as the state's (kept from step to step)
             if (m > 1) s%scrate = max(0.2_dp*s%scrate, del/delp)
             if (del*min(1.0_dp, 1.5_dp*s%scrate) <= tol) then
@@ -1699,15 +1705,11 @@ contains
         end do
         if (.not. conv) call direct()
     contains
-        !> A direct solve with I - h l0 J factored here.
+        !> A direct solve with I - h l0 J factored and inverted here.
         subroutine direct()
             call sens_matrix(s, sys, hl0, stat)
             if (stat%code /= STATUS_OK) return
-            s%sacor = s%sb
-            do k = 1, s%ns
-                i0 = (k - 1)*n
-                call la_small_lu_solve(s%sjm, s%spiv, s%sacor(i0 + 1:i0 + n))
-            end do
+            call inverse_times(n, s%ns, s%sinv, s%sb, s%sacor)
         end subroutine direct
     end subroutine sens_correct
 
@@ -1779,7 +1781,11 @@ contains
     end subroutine sens_fixed_point
 
     !> The sensitivities' own iteration matrix I - hl0 J at the point of the last
-    !! sens_point, factored (sjm, spiv), with its h l0 and step (shl0, snslp).
+    !! sens_point, factored (sjm, spiv) and inverted (sinv), with its h l0 and step (shl0,
+    !! snslp).  The inverse solves every column with one product (a 10 x 10 LU solve a
+    !! column cost about ten times that); the matrix is near I here (an Adams step, or one
+    !! whose iteration failed to contract), so the inverse costs no accuracy worth the
+    !! name, and the iteration's residuals use the exact J.
     subroutine sens_matrix(s, sys, hl0, stat)
         type(lsoda_t), intent(inout) :: s
         class(ode_system_t), intent(inout) :: sys
@@ -1794,11 +1800,29 @@ contains
         s%snslp = s%nst
         s%shave = .true.
         call la_lu_factor(s%sjm, s%spiv, lst)
+        if (lst%code == STATUS_OK) then
+            s%sinv = s%seye
+            call la_lu_solve_many(s%sjm, s%spiv, s%sinv, lst)
+        end if
         if (lst%code /= STATUS_OK) then
             call set_error(stat, LSODA_ERR_SINGULAR, 'lsoda: the sensitivities'' iteration '// &
                 'matrix I - h l0 J is singular')
         end if
     end subroutine sens_matrix
+
+    !> w = p v for the columns of v (n x ns): the solves of sens_correct by the inverse.
+    pure subroutine inverse_times(n, ns, p, v, w)
+        integer, intent(in) :: n, ns
+        real(dp), intent(in) :: p(n, n), v(n, ns)
+        real(dp), intent(out) :: w(n, ns)
+        integer :: j, k
+        do k = 1, ns
+            w(:, k) = p(:, 1)*v(1, k)
+            do j = 2, n
+                w(:, k) = w(:, k) + p(:, j)*v(j, k)
+            end do
+        end do
+    end subroutine inverse_times
 
     !> k-th derivative at t of the polynomial held in a Nordsieck array yh of m rows (the
     !! state's, or the sensitivities' with dky their n x ns as one vector).
