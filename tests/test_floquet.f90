@@ -4,7 +4,7 @@ module test_floquet
     use status, only: status_t, ERR_DECK
     use testing, only: tester_t
     use geometry, only: pendulum_t
-    use bifilar_model, only: bifilar_t, chart_accelerations, NSTATE
+    use bifilar_model, only: bifilar_t, chart_accelerations, chart_jacobian, NSTATE
     use lsoda, only: lsoda_t, METHOD_BDF
     use ode_system, only: ode_system_t, integrator_stats_t
     use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, torsion_period, &
@@ -48,6 +48,8 @@ contains
         if (t%want('floquet: Jacobian Z against directional differences')) call test_jacobian(t)
         if (t%want('floquet: exact Z against central differences, every column')) &
             call test_jacobian_columns(t)
+        if (t%want('floquet: Z in one pass = Z by one tangent per column')) &
+            call test_jacobian_one_pass(t)
         if (t%want('floquet: structured iteration matrix = the integrator''s own')) &
             call test_structured_solve(t)
         if (t%want('floquet: small amplitude against the natural frequencies at rest')) &
@@ -591,6 +593,51 @@ contains
         call t%check_close('Z: every column = central differences (relative to max |Z|)', e, &
                            0.0_dp, atol=1.0e-8_dp)
     end subroutine test_jacobian_columns
+
+    !> Z in one pass (chart_jacobian's default, bifilar_model's jacobian_columns) against Z
+    !! by one kinematic tangent and eom_tangent per column (the single-direction path),
+    !! every entry to roundoff (1e-13 of max |Z|): the box, the cylinder with Baumgarte's
+    !! terms, the cylinder damped (linear and quadratic), the triangular plate with its
+    !! principal axes off ntilde, the tall box; at rest and at three generic states.
+    subroutine test_jacobian_one_pass(t)
+        type(tester_t), intent(inout) :: t
+        type(pendulum_t) :: p
+        type(status_t) :: st, st2
+        real(dp) :: y(NSTATE), z1(NSTATE, NSTATE), z2(NSTATE, NSTATE), qdd(5), e
+        integer :: ip, is
+        logical :: ok
+        e = 0.0_dp
+        ok = .true.
+        do ip = 1, 5
+            select case (ip)
+            case (1)
+                p = deck_pendulum('input/box_unstable.nml')
+            case (2)
+                p = deck_pendulum('input/cylinder_l180.nml')
+                p%stab_rate = 1.3_dp
+            case (3)
+                p = deck_pendulum('input/cylinder_l180.nml')
+                p%c_v = 0.03_dp
+                p%c_q = 0.02_dp
+            case (4)
+                p = deck_pendulum('input/triangle_plate.nml')
+            case default
+                p = deck_pendulum('input/box_tall_floquet.nml')
+            end select
+            do is = 0, 3
+                y = [0.02_dp, 0.1_dp, -0.05_dp, 0.4_dp, 0.03_dp, 0.1_dp, -0.2_dp, 0.15_dp, &
+                     0.5_dp, -0.1_dp]*is
+                y(4) = y(4) + 0.3_dp
+                call chart_jacobian(p, y, qdd, z1, st)
+                call chart_jacobian(p, y, qdd, z2, st2, tangents=.true.)
+                ok = ok .and. st%code == 0 .and. st2%code == 0
+                e = max(e, maxval(abs(z1 - z2))/maxval(abs(z2)))
+            end do
+        end do
+        call t%check('Z in one pass and by tangents: every evaluation succeeds', ok)
+        call t%check_close('Z in one pass = Z by tangents, every entry (relative to max |Z|)', &
+                           e, 0.0_dp, atol=1.0e-13_dp)
+    end subroutine test_jacobian_one_pass
 
     pure function unit10(j) result(v)
         integer, intent(in) :: j

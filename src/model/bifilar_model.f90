@@ -146,10 +146,11 @@ module bifilar_model
     public :: chart_positions, chart_energy, chart_constraint, chart_jacobian, step_tensions
     public :: vertical_rate, vertical_rate_gradient
 
-    !> A point costs about this many tangents' worth for the whole of Z (five of its columns
-    !! change the angles, five only the rates): sens_jv takes Z once the columns asked at a
-    !! point exceed it.
-    integer, parameter :: Z_COST = 7
+    !> A point costs about this many tangents' worth for the whole of Z (jacobian_columns'
+    !! one pass, about 6 300 instructions, against 2 100 for one general direction through
+    !! chart_kinematics_tangent and eom_tangent): sens_jv takes Z once the columns asked at
+    !! a point exceed it.
+    integer, parameter :: Z_COST = 3
     !> Relative step of the forward differences of the right-hand side in the geometry.
     real(dp), parameter :: GEOMETRY_STEP = 2.0e-8_dp
 
@@ -582,25 +583,34 @@ contains
 
     !> The accelerations and their Jacobian Z = d f / d y of the chart right-hand side
     !! f = (qdot, qddot) (eq. (51)), exact.  Each column of the lower half is the derivative of
-    !! the accelerations along a unit change of y: the derivatives of the kinematics
-    !! (chart_kinematics_tangent) carried through Kane's equations and the constraint
-    !! (eom_tangent) and solved with the factors of eq. (38); the damping torque's derivative
-    !! included.
-    subroutine chart_jacobian(p, y, qdd, z, stat)
+    !! the accelerations along a unit change of y: the derivatives of the kinematics carried
+    !! through Kane's equations and the constraint and solved with the factors of eq. (38),
+    !! the damping torque's derivative included; all ten in one pass (jacobian_columns), or
+    !! with `tangents` one chart_kinematics_tangent and eom_tangent per column (the
+    !! single-direction path of sens_jv, which the tests compare).
+    subroutine chart_jacobian(p, y, qdd, z, stat, tangents)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         real(dp), intent(in) :: y(NSTATE)       !! chart state
         real(dp), intent(out) :: qdd(5)         !! accelerations at y
         real(dp), intent(out) :: z(NSTATE, NSTATE)  !! df_i/dy_j
         type(status_t), intent(out) :: stat     !! as chart_accelerations
+        logical, intent(in), optional :: tangents   !! .true.: one tangent per column
         type(chart_kin_t) :: k
         type(eom_t) :: eo
         real(dp) :: a(3), tq(3), mu
+        logical :: each
         z = 0.0_dp
         call chart_solve(p, y, k, eo, stat)
         qdd = eo%qdd
         if (stat%code /= 0) return
         call tangent_setup(p, k, eo, a, tq, mu)
-        call jacobian_columns(p, y, k, eo, a, tq, mu, z)
+        each = .false.
+        if (present(tangents)) each = tangents
+        if (each) then
+            call jacobian_by_tangents(p, y, k, eo, a, tq, mu, z)
+        else
+            call jacobian_columns(p, y, k, eo, a, tq, mu, z)
+        end if
     end subroutine chart_jacobian
 
     !> What the tangents of eq. (38) need at a solved point: R*'s acceleration a, the torque
@@ -627,9 +637,10 @@ contains
         end do
     end subroutine tangent_setup
 
-    !> Z of a solved point (tangent_setup done): the upper half (0 I), the lower half one
-    !! tangent per column.
-    pure subroutine jacobian_columns(p, y, k, eo, a, tq, mu, z)
+    !> Z of a solved point (tangent_setup done), each column one tangent of its own
+    !! (chart_kinematics_tangent, eom_tangent along a unit change of the state): the
+    !! reference the one-pass jacobian_columns is tested against.
+    pure subroutine jacobian_by_tangents(p, y, k, eo, a, tq, mu, z)
         type(pendulum_t), intent(in) :: p
         real(dp), intent(in) :: y(NSTATE)
         type(chart_kin_t), intent(in) :: k
@@ -649,7 +660,227 @@ contains
             call chart_kinematics_tangent(p, y, k, dy, dk)
             call eom_tangent(p, y, k, eo, a, tq, mu, dy, dk, z(6:10, j))
         end do
+    end subroutine jacobian_by_tangents
+
+    !> Z of a solved point (tangent_setup done) in one pass: the upper half (0 I), the lower
+    !! half the change of the accelerations along each unit change of the state.  Each column
+    !! is what chart_kinematics_tangent and eom_tangent give for its unit direction, but what
+    !! a unit direction leaves unchanged is never formed, and what the directions share is
+    !! formed once:
+    !! * the cable's position sigma_j (columns 2, 3) moves C along de = (e_j, sigma_j/zeta)
+    !!   and changes only the vertical components of the cable's partial velocities and
+    !!   convective acceleration;
+    !! * the cable's rates (7, 8) change only that convective acceleration;
+    !! * the body's rates (6, 9, 10) change omega by Omega_j and the convective terms
+    !!   (omega_conv's derivative), the kinematics' positions and partials not at all;
+    !! * the body's angles (1, 4, 5) turn the body by dTheta = Omega_j: a body vector u by
+    !!   dTheta x u (rho, D - C, the principal axes), with omega_partials' and omega_conv's
+    !!   derivatives.
+    !! The ten right-hand sides of the differentiated eq. (38) (see eom_tangent) are then
+    !! solved together with its factor (constrained_solve's algorithm).  The damping torque's
+    !! and Baumgarte's terms are included.
+    pure subroutine jacobian_columns(p, y, k, eo, a, tq, mu, z)
+        type(pendulum_t), intent(in) :: p
+        real(dp), intent(in) :: y(NSTATE)
+        type(chart_kin_t), intent(in) :: k
+        type(eom_t), intent(in) :: eo
+        real(dp), intent(in) :: a(3), tq(3), mu
+        real(dp), intent(out) :: z(NSTATE, NSTATE)
+        integer, parameter :: BODY(3) = [1, 4, 5]   ! the body's coordinates theta_1, 4, 5
+        real(dp) :: e(5, NSTATE), c(NSTATE), dgradg(5), fg(3), iw(3), u(3), wr(3), wu(3)
+        real(dp) :: dd(3), dvd(3), dcv(3), dcd(3), dcw(3), dw(3), dth(3), drho(3), du(3)
+        real(dp) :: djw1(3), djw5(3), djv1(3), djv4(3), djv5(3), djd4(3), djd5(3), db(3, 3)
+        real(dp) :: dwb4(3), dwb5(3), domb(3), dcwb(3), da(3), dtq(3), e1(5)
+        real(dp) :: dcw_rate(3, 3), dcw_pos(3, 3)
+        real(dp) :: iz, sdsd, ssd, dz, dj(2), decv, dgconv, sr, wv, dm0, dm1, d1, d4, d5
+        real(dp) :: d14, d15, d45
+        integer :: m, j, ib, bj, i
+        logical :: damped
+        associate (qdd => eo%qdd, s4 => k%ps%s4, c4 => k%ps%c4, s5 => k%ps%s5, &
+                   c5 => k%ps%c5, in => p%inertia, ll => p%big_l)
+            z = 0.0_dp
+            do j = 1, 5
+                z(j, j + 5) = 1.0_dp
+            end do
+            sr = p%stab_rate
+            fg = -a
+            fg(3) = fg(3) - 1.0_dp                  ! the force on R*: -(a + g n3)
+            iw = in*k%omb
+            u = -k%n(3, :)                          ! D - C
+            wr = cross(k%omega, k%rho)
+            wu = cross(k%omega, u)
+            damped = p%c_v /= 0.0_dp .or. p%c_q /= 0.0_dp
+            wv = k%omega(3)
+            dm0 = p%c_v*wv + p%c_q*abs(wv)*wv       ! the damping torque's magnitude
+            dm1 = p%c_v + 2.0_dp*p%c_q*abs(wv)      ! its derivative in W
+            ! --- the cable: sigma_m (column m + 1) and its rate (column m + 6)
+            iz = 1.0_dp/k%zeta
+            sdsd = y(7)*y(7) + y(8)*y(8)
+            ssd = y(2)*y(7) + y(3)*y(8)
+            do m = 1, 2
+                ! position: dzeta = -sigma_m/zeta, de = (e_m, sigma_m/zeta), dC = L de
+                j = m + 1
+                dz = -y(j)*iz
+                dd = 0.0_dp
+                dd(m) = ll
+                dd(3) = ll*y(j)*iz
+                ! the vertical components of the cable's partial velocities (columns 2, 3)
+                ! and of its convective acceleration
+                dj = [-y(2), -y(3)]*dz*iz**2
+                dj(m) = dj(m) + iz
+                dj = ll*dj
+                decv = ll*(-sdsd*dz*iz**2 + 2.0_dp*ssd*y(j + 5)*iz**3 - 3.0_dp*ssd**2*dz*iz**4)
+                da(3) = dj(1)*qdd(2) + dj(2)*qdd(3) + decv
+                e(:, j) = -k%jv(3, :)*da(3)
+                e(2, j) = e(2, j) + dj(1)*fg(3)
+                e(3, j) = e(3, j) + dj(2)*fg(3)
+                dgradg(1) = 0.0_dp
+                do i = 2, 5
+                    dgradg(i) = 2.0_dp*dot3(dd, k%jd(:, i))
+                end do
+                dgradg(2) = dgradg(2) + 2.0_dp*k%d(3)*dj(1)
+                dgradg(3) = dgradg(3) + 2.0_dp*k%d(3)*dj(2)
+                dvd(3) = dj(1)*y(7) + dj(2)*y(8)
+                dgconv = 2.0_dp*(2.0_dp*eo%vd(3)*dvd(3) + dot3(dd, k%cd) + k%d(3)*decv)
+                if (sr > 0.0_dp) dgconv = dgconv + 4.0_dp*sr*(dot3(dd, eo%vd) + k%d(3)*dvd(3)) &
+                                          + 2.0_dp*sr**2*dot3(k%d, dd)
+                e(:, j) = e(:, j) - mu*dgradg
+                c(j) = -(dgconv + dot5(dgradg, qdd))
+                ! rate: only e'' changes
+                j = m + 6
+                decv = ll*(2.0_dp*y(j)*iz + 2.0_dp*ssd*y(m + 1)*iz**3)
+                e(:, j) = -k%jv(3, :)*decv
+                dvd = k%jd(:, m + 1)
+                dgconv = 2.0_dp*(2.0_dp*dot3(eo%vd, dvd) + k%d(3)*decv)
+                if (sr > 0.0_dp) dgconv = dgconv + 4.0_dp*sr*dot3(k%d, dvd)
+                c(j) = -dgconv
+            end do
+            ! --- the body: derivatives of omega_conv in its rates and angles (theta_1: none)
+            d1 = y(6)
+            d4 = y(9)
+            d5 = y(10)
+            dcw_rate(:, 1) = [-c4*c5*d4 + s4*s5*d5, s4*c5*d4 + c4*s5*d5, -c5*d5]
+            dcw_rate(:, 2) = [-c4*c5*d1 - s4*d5, s4*c5*d1 - c4*d5, 0.0_dp]
+            dcw_rate(:, 3) = [s4*s5*d1 - s4*d4, c4*s5*d1 - c4*d4, -c5*d1]
+            d14 = d1*d4
+            d15 = d1*d5
+            d45 = d4*d5
+            dcw_pos(:, 1) = 0.0_dp
+            dcw_pos(:, 2) = [s4*c5*d14 + c4*s5*d15 - c4*d45, c4*c5*d14 - s4*s5*d15 + s4*d45, &
+                             0.0_dp]
+            dcw_pos(:, 3) = [c4*s5*d14 + s4*c5*d15, -s4*s5*d14 + c4*c5*d15, s5*d15]
+            do ib = 1, 3
+                bj = BODY(ib)
+                ! rate of theta_bj (column bj + 5): domega = Omega_bj, the convective terms
+                j = bj + 5
+                dw = k%jw(:, bj)
+                dcw = dcw_rate(:, ib)
+                dcv = cross(dcw, k%rho) + cross(dw, wr) + cross(k%omega, cross(dw, k%rho))
+                dcd = cross(dcw, u) + cross(dw, wu) + cross(k%omega, cross(dw, u))
+                dcwb = (k%b(:, 1)*dcw(1) + k%b(:, 2)*dcw(2)) + k%b(:, 3)*dcw(3)
+                domb = k%wb(:, bj)
+                dtq = -in*dcwb - cross(domb, iw) - cross(k%omb, in*domb)
+                if (damped) dtq = dtq - dm1*dw(3)*k%b(:, 3)
+                call project(5, k%jv, k%wb, -dcv, dtq, e(:, j))
+                dvd = k%jd(:, bj)
+                dgconv = 2.0_dp*(2.0_dp*dot3(eo%vd, dvd) + dot3(k%d, dcd))
+                if (sr > 0.0_dp) dgconv = dgconv + 4.0_dp*sr*dot3(k%d, dvd)
+                c(j) = -dgconv
+                ! angle theta_bj (column bj): the body turns by dTheta = Omega_bj
+                j = bj
+                dth = k%jw(:, bj)
+                select case (bj)
+                case (4)
+                    djw1 = [-c4*c5, s4*c5, 0.0_dp]
+                    djw5 = [-s4, -c4, 0.0_dp]
+                case (5)
+                    djw1 = [s4*s5, c4*s5, -c5]
+                    djw5 = 0.0_dp
+                case default
+                    djw1 = 0.0_dp
+                    djw5 = 0.0_dp
+                end select
+                dw = djw1*y(6) + djw5*y(10)
+                dcw = dcw_pos(:, ib)
+                drho = cross(dth, k%rho)
+                du = cross(dth, u)
+                djv1 = cross(djw1, k%rho) + cross(k%jw(:, 1), drho)
+                djv4 = cross(k%jw(:, 4), drho)
+                djv5 = cross(djw5, k%rho) + cross(k%jw(:, 5), drho)
+                dcv = cross(dcw, k%rho) + cross(k%cw, drho) + cross(dw, wr) &
+                      + cross(k%omega, cross(dw, k%rho) + cross(k%omega, drho))
+                djd4 = cross(k%jw(:, 4), du)
+                djd5 = cross(djw5, u) + cross(k%jw(:, 5), du)
+                dcd = cross(dcw, u) + cross(k%cw, du) + cross(dw, wu) &
+                      + cross(k%omega, cross(dw, u) + cross(k%omega, du))
+                do i = 1, 3
+                    db(i, :) = cross(dth, k%b(i, :))
+                end do
+                dwb4 = -db(:, 3)
+                dwb5 = c4*db(:, 1) - s4*db(:, 2)
+                if (bj == 4) dwb5 = dwb5 - (s4*k%b(:, 1) + c4*k%b(:, 2))
+                domb = dwb4*y(9) + dwb5*y(10)
+                dcwb = (db(:, 1)*k%cw(1) + db(:, 2)*k%cw(2) + db(:, 3)*k%cw(3)) &
+                       + ((k%b(:, 1)*dcw(1) + k%b(:, 2)*dcw(2)) + k%b(:, 3)*dcw(3))
+                da = (djv1*qdd(1) + djv4*qdd(4) + djv5*qdd(5)) + dcv
+                dtq = -in*((dwb4*qdd(4) + dwb5*qdd(5)) + dcwb) - cross(domb, iw) &
+                      - cross(k%omb, in*domb)
+                if (damped) dtq = dtq - dm1*dw(3)*k%b(:, 3) - dm0*db(:, 3)
+                call project(5, k%jv, k%wb, -da, dtq, e(:, j))
+                e1 = [dot3(djv1, fg), 0.0_dp, 0.0_dp, dot3(djv4, fg) + dot3(dwb4, tq), &
+                      dot3(djv5, fg) + dot3(dwb5, tq)]
+                dgradg = [0.0_dp, 2.0_dp*dot3(du, k%jd(:, 2)), 2.0_dp*dot3(du, k%jd(:, 3)), &
+                          2.0_dp*(dot3(du, k%jd(:, 4)) + dot3(k%d, djd4)), &
+                          2.0_dp*(dot3(du, k%jd(:, 5)) + dot3(k%d, djd5))]
+                dvd = djd4*y(9) + djd5*y(10)
+                dgconv = 2.0_dp*(2.0_dp*dot3(eo%vd, dvd) + dot3(du, k%cd) + dot3(k%d, dcd))
+                if (sr > 0.0_dp) dgconv = dgconv + 4.0_dp*sr*(dot3(du, eo%vd) + dot3(k%d, dvd)) &
+                                          + 2.0_dp*sr**2*dot3(k%d, du)
+                e(:, j) = e(:, j) + e1 - mu*dgradg
+                c(j) = -(dgconv + dot5(dgradg, qdd))
+            end do
+            call constrained_solve_many(eo, e, c, z(6:10, :))
+        end associate
     end subroutine jacobian_columns
+
+    !> constrained_solve for several right-hand sides (e(:, j), c(j)) at once: x(:, j).
+    pure subroutine constrained_solve_many(eo, e, c, x)
+        type(eom_t), intent(in) :: eo           !! factored system (solve_eq38), eo%mk set
+        real(dp), intent(in) :: e(:, :), c(:)   !! (5, m), (m)
+        real(dp), intent(out) :: x(:, :)        !! (5, m)
+        real(dp) :: u(4), t0, mt(4), gi(4)
+        integer :: a, j, ind(4), kk
+        kk = eo%k
+        ind = eo%ind
+        do a = 1, 4
+            gi(a) = eo%gam(ind(a))
+            mt(a) = eo%mk(ind(a)) + gi(a)*eo%mk(kk)
+        end do
+        do j = 1, size(c)
+            t0 = c(j)/eo%gradg(kk)
+            do a = 1, 4
+                u(a) = (e(ind(a), j) + gi(a)*e(kk, j)) - t0*mt(a)
+            end do
+            call la_small_chol_solve(4, eo%chol, u)
+            x(kk, j) = t0
+            do a = 1, 4
+                x(ind(a), j) = u(a)
+                x(kk, j) = x(kk, j) + gi(a)*u(a)
+            end do
+        end do
+    end subroutine constrained_solve_many
+
+    !> a . b of two 3-vectors, in the order the model's sums use.
+    pure real(dp) function dot3(a, b)
+        real(dp), intent(in) :: a(3), b(3)
+        dot3 = (a(1)*b(1) + a(2)*b(2)) + a(3)*b(3)
+    end function dot3
+
+    !> a . b of two 5-vectors.
+    pure real(dp) function dot5(a, b)
+        real(dp), intent(in) :: a(5), b(5)
+        dot5 = (((a(1)*b(1) + a(2)*b(2)) + a(3)*b(3)) + a(4)*b(4)) + a(5)*b(5)
+    end function dot5
 
     !> The sensitivity terms at (t, y) (ode_system's sens_point): eq. (38) solved and made
     !! ready for the tangents of sens_jv, and df/dp of each direction of sys%dirs (0 for the
@@ -741,7 +972,8 @@ contains
         real(dp), intent(out) :: jv(:, :)       !! (NSTATE, m)
         type(status_t), intent(out) :: stat
         type(chart_kin_t) :: dk
-        integer :: c, m
+        real(dp) :: acc(5)
+        integer :: c, m, j
         stat%code = 0
         m = size(v, 2)
         jv(1:5, :) = v(6:10, :)
@@ -751,7 +983,14 @@ contains
             sys%sp_have_z = .true.
         end if
         if (sys%sp_have_z) then
-            jv(6:10, :) = matmul(sys%sp_z(6:10, :), v)
+            ! the lower half of Z times each column, written out (Z's upper half is (0 I))
+            do c = 1, m
+                acc = 0.0_dp
+                do j = 1, NSTATE
+                    acc = acc + sys%sp_z(6:10, j)*v(j, c)
+                end do
+                jv(6:10, c) = acc
+            end do
             return
         end if
         do c = 1, m
