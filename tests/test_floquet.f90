@@ -4,7 +4,8 @@ module test_floquet
     use status, only: status_t, ERR_DECK
     use testing, only: tester_t
     use geometry, only: pendulum_t
-    use bifilar_model, only: bifilar_t, chart_accelerations, chart_jacobian, NSTATE
+    use bifilar_model, only: bifilar_t, chart_accelerations, chart_jacobian, NSTATE, &
+                             chart_invariant_gradients, chart_constraint, chart_energy
     use lsoda, only: lsoda_t, METHOD_BDF
     use ode_system, only: ode_system_t, integrator_stats_t
     use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, torsion_period, &
@@ -50,6 +51,8 @@ contains
             call test_jacobian_columns(t)
         if (t%want('floquet: Z in one pass = Z by one tangent per column')) &
             call test_jacobian_one_pass(t)
+        if (t%want('floquet: gradients of G, G'' and E against central differences')) &
+            call test_invariant_gradients(t)
         if (t%want('floquet: structured iteration matrix = the integrator''s own')) &
             call test_structured_solve(t)
         if (t%want('floquet: small amplitude against the natural frequencies at rest')) &
@@ -714,6 +717,56 @@ contains
         call t%check_close('Z in one pass = Z by tangents, every entry (relative to max |Z|)', &
                            e, 0.0_dp, atol=1.0e-13_dp)
     end subroutine test_jacobian_one_pass
+
+    !> The exact gradients of the constraint G, its rate G' and the energy E
+    !! (chart_invariant_gradients, the rows of the reduction to S) against fourth-order central
+    !! differences of chart_constraint and chart_energy (h = 1e-3 max(1, |y_j|): error about
+    !! 1e-12), every component, relative to the largest of its gradient: the box, the
+    !! cylinder, the triangular plate, the tall box, at a turning point of the torsion and at
+    !! generic states.
+    subroutine test_invariant_gradients(t)
+        type(tester_t), intent(inout) :: t
+        type(pendulum_t) :: p
+        type(status_t) :: st
+        real(dp) :: y(NSTATE), rows(NSTATE, 3), fd(NSTATE, 3), v(3, -2:2), h, e
+        integer :: ip, is, j, m
+        e = 0.0_dp
+        do ip = 1, 4
+            select case (ip)
+            case (1)
+                p = deck_pendulum('input/box_unstable.nml')
+            case (2)
+                p = deck_pendulum('input/cylinder_l180.nml')
+            case (3)
+                p = deck_pendulum('input/triangle_plate.nml')
+            case default
+                p = deck_pendulum('input/box_tall_floquet.nml')
+            end select
+            do is = 0, 3
+                if (is == 0) then
+                    call torsion_start(deck_pendulum('input/box_unstable.nml'), 45*deg, y, st)
+                else
+                    y = [0.02_dp, 0.1_dp, -0.05_dp, 0.4_dp, 0.03_dp, 0.1_dp, -0.2_dp, &
+                         0.15_dp, 0.5_dp, -0.1_dp]*is
+                end if
+                call chart_invariant_gradients(p, y, rows)
+                do j = 1, NSTATE
+                    h = 1.0e-3_dp*max(1.0_dp, abs(y(j)))
+                    do m = -2, 2
+                        if (m == 0) cycle
+                        call chart_constraint(p, y + m*h*unit10(j), v(1, m), v(2, m))
+                        v(3, m) = chart_energy(p, y + m*h*unit10(j))
+                    end do
+                    fd(j, :) = (8*(v(:, 1) - v(:, -1)) - (v(:, 2) - v(:, -2)))/(12*h)
+                end do
+                do m = 1, 3
+                    e = max(e, maxval(abs(rows(:, m) - fd(:, m)))/maxval(abs(fd(:, m))))
+                end do
+            end do
+        end do
+        call t%check_close('grad G, grad G'', grad E = central differences (relative)', e, &
+                           0.0_dp, atol=1.0e-9_dp)
+    end subroutine test_invariant_gradients
 
     pure function unit10(j) result(v)
         integer, intent(in) :: j

@@ -144,6 +144,7 @@ module bifilar_model
 
     public :: chart_state, paper_angles, chart_accelerations, paper_accelerations, evaluate
     public :: chart_positions, chart_energy, chart_constraint, chart_jacobian, step_tensions
+    public :: chart_invariant_gradients
     public :: vertical_rate, vertical_rate_gradient
 
     !> A point costs about this many tangents' worth for the whole of Z (jacobian_columns'
@@ -1197,6 +1198,38 @@ contains
         g = dot_product(k%d, k%d) - p%big_lp**2
         gdot = 2.0_dp*dot_product(k%d, matmul(k%jd, y(6:10)))
     end subroutine chart_constraint
+
+    !> The gradients in the chart state y of the constraint G = |AD|^2 - L'^2, its rate
+    !! G' = dG/dtau and the energy E (chart_constraint, chart_energy), exact: along the rates
+    !! from the partial velocities (dG'/dqdot_j = dG/dq_j = 2 D . Jd_j, dE/dqdot_j = v . Jv_j
+    !! + omega . I Wb_j, the generalized momentum), along the coordinates from the
+    !! kinematics' tangents (chart_kinematics_tangent: dG'/dq_j = 2 (dD . vD + D . dJd qdot),
+    !! dE/dq_j = v . dJv qdot + omega . I domega + dR*_3).
+    pure subroutine chart_invariant_gradients(p, y, rows)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters
+        real(dp), intent(in) :: y(NSTATE)       !! chart state (regular: |sigma| < 1)
+        real(dp), intent(out) :: rows(NSTATE, 3)    !! columns grad G, grad G', grad E
+        type(chart_kin_t) :: k, dk
+        real(dp) :: dy(NSTATE), v(3), vd(3), iw(3), gj
+        integer :: j
+        call chart_kinematics(p, y, k)
+        v = matmul(k%jv, y(6:10))
+        vd = matmul(k%jd, y(6:10))
+        iw = p%inertia*k%omb
+        do j = 1, 5
+            gj = 2.0_dp*dot_product(k%d, k%jd(:, j))
+            rows(j, 1) = gj
+            rows(j + 5, 1) = 0.0_dp
+            rows(j + 5, 2) = gj
+            rows(j + 5, 3) = dot_product(v, k%jv(:, j)) + dot_product(iw, k%wb(:, j))
+            dy = 0.0_dp
+            dy(j) = 1.0_dp
+            call chart_kinematics_tangent(p, y, k, dy, dk)
+            rows(j, 2) = 2.0_dp*(dot_product(dk%d, vd) + dot_product(k%d, matmul(dk%jd, y(6:10))))
+            rows(j, 3) = dot_product(v, matmul(dk%jv, y(6:10))) + dot_product(iw, dk%omb) &
+                         + (dk%c(3) + dk%rho(3))
+        end do
+    end subroutine chart_invariant_gradients
 
     !> The motion reported at one instant: angles in the paper's terms, and as `parts` asks
     !! (default: all) the accelerations with the cable tensions from Newton's law for the

@@ -30,7 +30,7 @@ module floquet
     use ode_system, only: ode_system_t, integrator_t, integrator_stats_t
     use geometry, only: pendulum_t
     use start_pose, only: raised_angles, solve_theta5
-    use bifilar_model, only: chart_accelerations, chart_state, chart_energy, chart_constraint, &
+    use bifilar_model, only: chart_accelerations, chart_state, chart_invariant_gradients, &
                              chart_jacobian, NSTATE, bifilar_t
     use text, only: sci
     use integrators, only: new_integrator, SOLVER_LSODA, SENS_FORWARD, SENS_DIFFERENCES
@@ -727,20 +727,15 @@ contains
         end do
     end function projector_along
 
-    !> Gradients at y of the constraint G, its rate G' and the energy E (columns 1-3, by the
-    !! fourth-order central stencil, h = 1e-3 max(1, |y_j|): error ~ 1e-13), and the flow f(y).
-    !! The steps in the cable's chart coordinates y(2), y(3) (sigma, |sigma| < 1) stay within
-    !! a quarter of the distance to |sigma| = 1 (near the horizontal a step of 1e-3
-    !! took |sigma| past 1, and the multipliers were computed through NaN); a state whose
-    !! cable BC is near the horizontal (|sin theta2| > SIN2_LIMIT) is ERR_MODEL.
+    !> Gradients at y of the constraint G, its rate G' and the energy E (columns 1-3, exact:
+    !! bifilar_model's chart_invariant_gradients), and the flow f(y).  A state whose cable BC
+    !! is near the horizontal (|sin theta2| > SIN2_LIMIT) is ERR_MODEL.
     subroutine structure_rows(p, y, rows, f, stat)
         type(pendulum_t), intent(in) :: p
         real(dp), intent(in) :: y(NSTATE)
         real(dp), intent(out) :: rows(NSTATE, 3), f(NSTATE)
         type(status_t), intent(out) :: stat
-        real(dp) :: yp(NSTATE), h, v(3, 4), a(5), room
-        real(dp), parameter :: off(4) = [1.0_dp, -1.0_dp, 2.0_dp, -2.0_dp]
-        integer :: j, k
+        real(dp) :: a(5)
         rows = 0.0_dp
         f = 0.0_dp
         if (.not. (y(2)**2 + y(3)**2 < SIN2_LIMIT**2)) then
@@ -750,24 +745,7 @@ contains
                 'the cables')
             return
         end if
-        do j = 1, NSTATE
-            h = 1.0e-3_dp*max(1.0_dp, abs(y(j)))
-            if (j == 2) then
-                ! room to |sigma| = 1 along y(2), y(3)
-                room = sqrt(max(0.0_dp, 1.0_dp - y(3)**2)) - abs(y(2))
-                h = min(h, 0.125_dp*room)
-            else if (j == 3) then
-                room = sqrt(max(0.0_dp, 1.0_dp - y(2)**2)) - abs(y(3))
-                h = min(h, 0.125_dp*room)
-            end if
-            do k = 1, 4
-                yp = y
-                yp(j) = y(j) + off(k)*h
-                call chart_constraint(p, yp, v(1, k), v(2, k))
-                v(3, k) = chart_energy(p, yp)
-            end do
-            rows(j, :) = (8*(v(:, 1) - v(:, 2)) - (v(:, 3) - v(:, 4)))/(12*h)
-        end do
+        call chart_invariant_gradients(p, y, rows)
         call chart_accelerations(p, y, a, stat)
         f = [y(6:10), a]
     end subroutine structure_rows
