@@ -699,7 +699,7 @@ contains
         logical :: damped
         associate (qdd => eo%qdd, s4 => k%ps%s4, c4 => k%ps%c4, s5 => k%ps%s5, &
                    c5 => k%ps%c5, in => p%inertia, ll => p%big_l)
-            z = 0.0_dp
+            z(1:5, :) = 0.0_dp
             do j = 1, 5
                 z(j, j + 5) = 1.0_dp
             end do
@@ -787,42 +787,49 @@ contains
                 dgconv = 2.0_dp*(2.0_dp*dot3(eo%vd, dvd) + dot3(k%d, dcd))
                 if (sr > 0.0_dp) dgconv = dgconv + 4.0_dp*sr*dot3(k%d, dvd)
                 c(j) = -dgconv
-                ! angle theta_bj (column bj): the body turns by dTheta = Omega_bj
+                ! angle theta_bj (column bj): the body turns by dTheta = Omega_bj; its points
+                ! move by du = dTheta x u, their partial velocities Omega_j x u and
+                ! convective accelerations cw x u + omega x (omega x u) change with u ...
                 j = bj
                 dth = k%jw(:, bj)
-                select case (bj)
-                case (4)
-                    djw1 = [-c4*c5, s4*c5, 0.0_dp]
-                    djw5 = [-s4, -c4, 0.0_dp]
-                case (5)
-                    djw1 = [s4*s5, c4*s5, -c5]
-                    djw5 = 0.0_dp
-                case default
-                    djw1 = 0.0_dp
-                    djw5 = 0.0_dp
-                end select
-                dw = djw1*y(6) + djw5*y(10)
-                dcw = dcw_pos(:, ib)
                 drho = cross(dth, k%rho)
                 du = cross(dth, u)
-                djv1 = cross(djw1, k%rho) + cross(k%jw(:, 1), drho)
-                djv4 = cross(k%jw(:, 4), drho)
-                djv5 = cross(djw5, k%rho) + cross(k%jw(:, 5), drho)
-                dcv = cross(dcw, k%rho) + cross(k%cw, drho) + cross(dw, wr) &
-                      + cross(k%omega, cross(dw, k%rho) + cross(k%omega, drho))
-                djd4 = cross(k%jw(:, 4), du)
-                djd5 = cross(djw5, u) + cross(k%jw(:, 5), du)
-                dcd = cross(dcw, u) + cross(k%cw, du) + cross(dw, wu) &
-                      + cross(k%omega, cross(dw, u) + cross(k%omega, du))
+                djv1 = cross(k%jw(:, 1), drho)
+                djv4 = [drho(2), -drho(1), 0.0_dp]      ! Omega_4 = -n3
+                djv5 = cross(k%jw(:, 5), drho)
+                djd4 = [du(2), -du(1), 0.0_dp]
+                djd5 = cross(k%jw(:, 5), du)
+                dcv = cross(k%cw, drho) + cross(k%omega, cross(k%omega, drho))
+                dcd = cross(k%cw, du) + cross(k%omega, cross(k%omega, du))
                 do i = 1, 3
                     db(i, :) = cross(dth, k%b(i, :))
                 end do
+                dcwb = (db(:, 1)*k%cw(1) + db(:, 2)*k%cw(2)) + db(:, 3)*k%cw(3)
+                dw = 0.0_dp
+                if (bj /= 1) then
+                    ! ... and theta_4, theta_5 turn Omega_1 and Omega_5 (omega_partials'
+                    ! derivative), hence omega and omega_conv (theta_1 turns neither)
+                    if (bj == 4) then
+                        djw1 = [-c4*c5, s4*c5, 0.0_dp]
+                        djw5 = [-s4, -c4, 0.0_dp]
+                        djv5 = djv5 + cross(djw5, k%rho)
+                        djd5 = djd5 + cross(djw5, u)
+                    else
+                        djw1 = [s4*s5, c4*s5, -c5]
+                        djw5 = 0.0_dp
+                    end if
+                    djv1 = djv1 + cross(djw1, k%rho)
+                    dw = djw1*y(6) + djw5*y(10)
+                    dcw = dcw_pos(:, ib)
+                    dcv = dcv + (cross(dcw, k%rho) + cross(dw, wr) &
+                                 + cross(k%omega, cross(dw, k%rho)))
+                    dcd = dcd + (cross(dcw, u) + cross(dw, wu) + cross(k%omega, cross(dw, u)))
+                    dcwb = dcwb + ((k%b(:, 1)*dcw(1) + k%b(:, 2)*dcw(2)) + k%b(:, 3)*dcw(3))
+                end if
                 dwb4 = -db(:, 3)
                 dwb5 = c4*db(:, 1) - s4*db(:, 2)
                 if (bj == 4) dwb5 = dwb5 - (s4*k%b(:, 1) + c4*k%b(:, 2))
                 domb = dwb4*y(9) + dwb5*y(10)
-                dcwb = (db(:, 1)*k%cw(1) + db(:, 2)*k%cw(2) + db(:, 3)*k%cw(3)) &
-                       + ((k%b(:, 1)*dcw(1) + k%b(:, 2)*dcw(2)) + k%b(:, 3)*dcw(3))
                 da = (djv1*qdd(1) + djv4*qdd(4) + djv5*qdd(5)) + dcv
                 dtq = -in*((dwb4*qdd(4) + dwb5*qdd(5)) + dcwb) - cross(domb, iw) &
                       - cross(k%omb, in*domb)
@@ -844,30 +851,42 @@ contains
         end associate
     end subroutine jacobian_columns
 
-    !> constrained_solve for several right-hand sides (e(:, j), c(j)) at once: x(:, j).
+    !> constrained_solve for several right-hand sides (e(:, j), c(j)) at once: x(:, j), the
+    !! Cholesky factor's forward and back substitution (DPOTRS's) written out for its 4 x 4.
     pure subroutine constrained_solve_many(eo, e, c, x)
         type(eom_t), intent(in) :: eo           !! factored system (solve_eq38), eo%mk set
         real(dp), intent(in) :: e(:, :), c(:)   !! (5, m), (m)
         real(dp), intent(out) :: x(:, :)        !! (5, m)
-        real(dp) :: u(4), t0, mt(4), gi(4)
+        real(dp) :: u1, u2, u3, u4, t0, mt(4), gi(4), l(4, 4)
         integer :: a, j, ind(4), kk
         kk = eo%k
         ind = eo%ind
+        l = eo%chol
         do a = 1, 4
             gi(a) = eo%gam(ind(a))
             mt(a) = eo%mk(ind(a)) + gi(a)*eo%mk(kk)
         end do
         do j = 1, size(c)
             t0 = c(j)/eo%gradg(kk)
-            do a = 1, 4
-                u(a) = (e(ind(a), j) + gi(a)*e(kk, j)) - t0*mt(a)
-            end do
-            call la_small_chol_solve(4, eo%chol, u)
-            x(kk, j) = t0
-            do a = 1, 4
-                x(ind(a), j) = u(a)
-                x(kk, j) = x(kk, j) + gi(a)*u(a)
-            end do
+            u1 = (e(ind(1), j) + gi(1)*e(kk, j)) - t0*mt(1)
+            u2 = (e(ind(2), j) + gi(2)*e(kk, j)) - t0*mt(2)
+            u3 = (e(ind(3), j) + gi(3)*e(kk, j)) - t0*mt(3)
+            u4 = (e(ind(4), j) + gi(4)*e(kk, j)) - t0*mt(4)
+            ! L y = b
+            u1 = u1/l(1, 1)
+            u2 = (u2 - l(2, 1)*u1)/l(2, 2)
+            u3 = ((u3 - l(3, 1)*u1) - l(3, 2)*u2)/l(3, 3)
+            u4 = (((u4 - l(4, 1)*u1) - l(4, 2)*u2) - l(4, 3)*u3)/l(4, 4)
+            ! L^T x = y
+            u4 = u4/l(4, 4)
+            u3 = (u3 - l(4, 3)*u4)/l(3, 3)
+            u2 = ((u2 - l(3, 2)*u3) - l(4, 2)*u4)/l(2, 2)
+            u1 = (((u1 - l(2, 1)*u2) - l(3, 1)*u3) - l(4, 1)*u4)/l(1, 1)
+            x(ind(1), j) = u1
+            x(ind(2), j) = u2
+            x(ind(3), j) = u3
+            x(ind(4), j) = u4
+            x(kk, j) = (((t0 + gi(1)*u1) + gi(2)*u2) + gi(3)*u3) + gi(4)*u4
         end do
     end subroutine constrained_solve_many
 
@@ -973,27 +992,19 @@ contains
         real(dp), intent(out) :: jv(:, :)       !! (NSTATE, m)
         type(status_t), intent(out) :: stat
         type(chart_kin_t) :: dk
-        real(dp) :: acc(5)
-        integer :: c, m, j
+        integer :: c, m
         stat%code = 0
         m = size(v, 2)
-        jv(1:5, :) = v(6:10, :)
         if (.not. sys%sp_have_z .and. sys%sp_cols + m > Z_COST) then
             call jacobian_columns(sys%p, sys%sp_y, sys%sp_k, sys%sp_eo, sys%sp_a, sys%sp_tq, &
                                   sys%sp_mu, sys%sp_z)
             sys%sp_have_z = .true.
         end if
         if (sys%sp_have_z) then
-            ! the lower half of Z times each column, written out (Z's upper half is (0 I))
-            do c = 1, m
-                acc = 0.0_dp
-                do j = 1, NSTATE
-                    acc = acc + sys%sp_z(6:10, j)*v(j, c)
-                end do
-                jv(6:10, c) = acc
-            end do
+            call z_products(m, sys%sp_z, v, jv)
             return
         end if
+        jv(1:5, :) = v(6:10, :)
         do c = 1, m
             call chart_kinematics_tangent(sys%p, sys%sp_y, sys%sp_k, v(:, c), dk)
             call eom_tangent(sys%p, sys%sp_y, sys%sp_k, sys%sp_eo, sys%sp_a, sys%sp_tq, &
@@ -1001,6 +1012,24 @@ contains
         end do
         sys%sp_cols = sys%sp_cols + m
     end subroutine bifilar_sens_jv
+
+    !> jv = Z v for m columns (explicit shapes: contiguous columns the compiler can see),
+    !! Z's upper half (0 I) taken as the copy of the rates.
+    pure subroutine z_products(m, z, v, jv)
+        integer, intent(in) :: m                !! columns
+        real(dp), intent(in) :: z(NSTATE, NSTATE), v(NSTATE, m)
+        real(dp), intent(out) :: jv(NSTATE, m)
+        real(dp) :: acc(5)
+        integer :: c, j
+        do c = 1, m
+            jv(1:5, c) = v(6:10, c)
+            acc = z(6:10, 1)*v(1, c)
+            do j = 2, NSTATE
+                acc = acc + z(6:10, j)*v(j, c)
+            end do
+            jv(6:10, c) = acc
+        end do
+    end subroutine z_products
 
     !> W = omega . n3, the body's rate about the vertical (per unit tau), of a chart state:
     !! -sin(theta5) theta1' - theta4' (eq. (14)).
