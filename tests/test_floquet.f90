@@ -5,7 +5,9 @@ module test_floquet
     use testing, only: tester_t
     use geometry, only: pendulum_t
     use bifilar_model, only: bifilar_t, chart_accelerations, chart_jacobian, NSTATE, &
-                             chart_invariant_gradients, chart_constraint, chart_energy
+                             chart_invariant_gradients, chart_constraint, chart_energy, &
+                             chart_state
+    use start_pose, only: raised_angles, solve_theta5
     use lsoda, only: lsoda_t, METHOD_BDF
     use ode_system, only: ode_system_t, integrator_stats_t
     use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, torsion_period, &
@@ -46,6 +48,7 @@ contains
         character(len=*), intent(in) :: exe
         if (t%want('floquet: Gauss-Legendre table')) call test_gauss_table(t)
         if (t%want('floquet: period of pure torsion')) call test_period(t)
+        if (t%want('floquet: the turning point by Newton = by the homotopy')) call test_start(t)
         if (t%want('floquet: Jacobian Z against directional differences')) call test_jacobian(t)
         if (t%want('floquet: exact Z against central differences, every column')) &
             call test_jacobian_columns(t)
@@ -155,6 +158,45 @@ contains
         call t%check_close('tiny-amplitude t* = 4 pi sqrt(I1 l/(m g b^2))', period, &
                            4*pi*sqrt(p%inertia(1)*p%big_l), rtol=1.0e-12_dp)
     end subroutine test_period
+
+    !> torsion_start's theta_5 (Newton on eq. (2) from the raised pose) against start_pose's
+    !! homotopy (solve_theta5), the whole chart state to 1e-14: the cylinder and the tall box
+    !! with l' = l, and with l' = l (1 + 9e-7) (inside SYMMETRY_TOL, theta_5 /= 0), at 2, 45
+    !! and 120 degrees.
+    subroutine test_start(t)
+        type(tester_t), intent(inout) :: t
+        type(pendulum_t) :: p
+        type(status_t) :: st, st2
+        real(dp), parameter :: amps(3) = [2.0_dp, 45.0_dp, 120.0_dp]
+        real(dp) :: y0(NSTATE), yh(NSTATE), th(5), e, amp
+        integer :: ip, ia
+        logical :: ok, moved
+        e = 0.0_dp
+        ok = .true.
+        moved = .false.
+        do ip = 1, 4
+            p = deck_pendulum(trim(merge('input/cylinder_torsion.nml', &
+                                         'input/box_tall_floquet.nml', ip <= 2)))
+            if (mod(ip, 2) == 0) p%big_lp = p%big_l*(1.0_dp + 9.0e-7_dp)
+            do ia = 1, 3
+                amp = amps(ia)*deg
+                call torsion_start(p, amp, y0, st)
+                call raised_angles(p, amp, th, st2)
+                if (st2%code == 0) call solve_theta5(p, th, st2)
+                if (st%code /= 0 .or. st2%code /= 0) then
+                    ok = ok .and. st%code == st2%code
+                    cycle
+                end if
+                yh = chart_state(th, [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp])
+                e = max(e, maxval(abs(y0 - yh)))
+                moved = moved .or. abs(y0(5)) > 1.0e-8_dp
+            end do
+        end do
+        call t%check('torsion start: both ways succeed or fail alike; theta5 /= 0 met', &
+                     ok .and. moved)
+        call t%check_close('torsion start by Newton = by the homotopy (max norm)', e, 0.0_dp, &
+                           atol=1.0e-14_dp)
+    end subroutine test_start
 
     !> Z v against Richardson-extrapolated directional differences of the right-hand side:
     !! three general directions and each of Z's ten columns (the cable's own four take a

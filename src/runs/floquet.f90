@@ -28,7 +28,7 @@ module floquet
     use finite, only: finite_bits
     use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC, ERR_MODEL
     use ode_system, only: ode_system_t, integrator_t, integrator_stats_t
-    use geometry, only: pendulum_t
+    use geometry, only: pendulum_t, constraint_g, beta_coeffs
     use start_pose, only: raised_angles, solve_theta5
     use bifilar_model, only: chart_accelerations, chart_state, chart_invariant_gradients, &
                              chart_jacobian, NSTATE, bifilar_t
@@ -567,18 +567,40 @@ contains
         call reversible_multipliers(p, u0, yh, nu, res, stat)
     end subroutine floquet_analysis
 
-    !> The chart state of pure torsion at its turning point theta4 = amp (at rest).
+    !> The chart state of pure torsion at its turning point theta4 = amp (at rest): the
+    !! paper's raised pose (raised_angles) with theta_5 from the constraint eq. (2).  In a
+    !! torsion scene the raised pose, CD horizontal (theta_5 = 0), satisfies eq. (2) up to
+    !! l' - l (at most SYMMETRY_TOL l): Newton's method on G(theta_5) from 0 converges at
+    !! once.  Only where it does not is the homotopy of start_pose's solve_theta5 used.
     subroutine torsion_start(p, amp, y0, stat)
         type(pendulum_t), intent(in) :: p       !! scaled parameters (a torsion scene)
         real(dp), intent(in) :: amp             !! amplitude (rad)
         real(dp), intent(out) :: y0(NSTATE)
         type(status_t), intent(out) :: stat
-        real(dp) :: th(5)
+        real(dp) :: th(5), g, dg, b(5)
+        integer :: it
+        logical :: solved
         y0 = 0.0_dp
         call raised_angles(p, amp, th, stat)
         if (stat%code /= 0) return
-        call solve_theta5(p, th, stat)
-        if (stat%code /= 0) return
+        solved = .false.
+        do it = 1, 8
+            g = constraint_g(p, th)
+            b = beta_coeffs(p, th)
+            dg = -2.0_dp*b(5)                   ! dG/dtheta_5, eq. (4)
+            if (.not. (abs(dg) > 1.0e-12_dp)) exit
+            th(5) = th(5) - g/dg
+            if (abs(g) < 1.0e-15_dp) then
+                solved = abs(th(5)) < 0.5_dp*pi
+                exit
+            end if
+        end do
+        if (solved) solved = abs(constraint_g(p, th)) < 1.0e-12_dp
+        if (.not. solved) then
+            th(5) = 0.0_dp
+            call solve_theta5(p, th, stat)
+            if (stat%code /= 0) return
+        end if
         y0 = chart_state(th, [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp])
     end subroutine torsion_start
 
