@@ -19,8 +19,10 @@
 !! The 5 x 5 system is factored by lapack_wrap's written-out LU (la_small_factor).  The
 !! Jacobian Z of the chart right-hand side (eq. (51)) is exact: the derivatives of the
 !! kinematics (chart_kinematics_tangent) carried through Kane's equations and the constraint
-!! (eom_tangent), solved with the same factors (chart_jacobian); the damping torque's
-!! derivative is in it.  The damping torque about the vertical (&damping, pendulum_t c_v,
+!! (eom_tangent), solved with the same factors (chart_jacobian); its ten columns in one
+!! pass (jacobian_columns); the damping torque's derivative is in it.  The gradients of the
+!! constraint, its rate and the energy are exact the same way (chart_invariant_gradients).
+!! The damping torque about the vertical (&damping, pendulum_t c_v,
 !! c_q) enters eq. (38) as an active torque through the partial angular velocities
 !! (damping_torque).
 !!

@@ -136,8 +136,8 @@ module floquet
     !! most 640 at rtol 1e-10): a hopeless point (a body turning fast about a principal axis
     !! of tiny inertia) fails in about a second instead of running for minutes.
     integer, parameter, public :: FLOQUET_MAX_STEPS = 20000
-    !> The monodromy's absolute tolerance (forward sensitivities) over the orbit's, rtol/100:
-    !! H's entries are measured against rtol itself (H = I at the start).
+    !> The forward sensitivities' absolute tolerance over the orbit's, rtol/100: their
+    !! entries are measured against rtol itself (unit columns at the start: I or U0).
     real(dp), parameter :: H_ATOL_SCALE = 100.0_dp
 
     public :: check_torsion_scene, torsion_period, jacobian_z, monodromy, floquet_analysis
