@@ -679,9 +679,15 @@ contains
         r = r/max(1.0_dp, norm2(nu))
     end function trivial_residual_of
 
-    !> The multipliers of a monodromy matrix h of the chart form over the orbit through y0
-    !! with period t* (see floquet_analysis): fills res%multipliers, trivial, max_modulus,
-    !! stable, trivial_residual and monodromy.
+    !> The multipliers of a whole monodromy matrix h of the chart form over the orbit
+    !! through y0 with period t* (e.g. one from differences of the nonlinear flow): the six
+    !! non-trivial ones the eigenvalues of h reduced to S, M6 = U^T P h U (U an orthonormal
+    !! basis of S at y0, P the projection along f(y0); see floquet_analysis), the four
+    !! trivial ones 1 and checked through their identities on the whole of h: h f = f,
+    !! grad(E)^T h = grad(E)^T on the constraint's tangent space, grad(G')^T h = grad(G')^T,
+    !! grad(G)^T h = grad(G)^T + t* grad(G')^T (largest residual, relative to the vector and
+    !! to max(1, |h|_F)).  Fills res%multipliers, trivial, max_modulus, stable,
+    !! trivial_residual and monodromy.
     subroutine multipliers_from_monodromy(p, y0, period, h, res, stat)
         type(pendulum_t), intent(in) :: p       !! scaled parameters (stab_rate 0)
         real(dp), intent(in) :: y0(NSTATE)      !! point of the orbit where h starts
