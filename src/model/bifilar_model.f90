@@ -150,7 +150,7 @@ module bifilar_model
     public :: vertical_rate, vertical_rate_gradient
 
     !> A point costs about this many tangents' worth for the whole of Z (jacobian_columns'
-    !! one pass, about 6 300 instructions, against 2 100 for one general direction through
+    !! one pass, about 5 600 instructions, against 2 100 for one general direction through
     !! chart_kinematics_tangent and eom_tangent): sens_jv takes Z once the columns asked at
     !! a point exceed it.
     integer, parameter :: Z_COST = 3
