@@ -4,12 +4,15 @@ module test_floquet
     use status, only: status_t, ERR_DECK
     use testing, only: tester_t
     use geometry, only: pendulum_t
-    use bifilar_model, only: bifilar_t, chart_accelerations, NSTATE
+    use bifilar_model, only: bifilar_t, chart_accelerations, chart_jacobian, NSTATE, &
+                             chart_invariant_gradients, chart_constraint, chart_energy, &
+                             chart_state
+    use start_pose, only: raised_angles, solve_theta5
     use lsoda, only: lsoda_t, METHOD_BDF
     use ode_system, only: ode_system_t, integrator_stats_t
     use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, torsion_period, &
                        jacobian_z, multipliers_from_monodromy, torsion_start, monodromy, &
-                       pencil_multipliers, GL_X, GL_W
+                       pencil_multipliers, trivial_residual_of, GL_X, GL_W
     use paper_claims, only: rest_frequencies
     use lapack_wrap, only: la_eig, la_lu_factor, la_lu_solve
     use deck, only: deck_t, read_deck
@@ -45,14 +48,21 @@ contains
         character(len=*), intent(in) :: exe
         if (t%want('floquet: Gauss-Legendre table')) call test_gauss_table(t)
         if (t%want('floquet: period of pure torsion')) call test_period(t)
+        if (t%want('floquet: the turning point by Newton = by the homotopy')) call test_start(t)
         if (t%want('floquet: Jacobian Z against directional differences')) call test_jacobian(t)
         if (t%want('floquet: exact Z against central differences, every column')) &
             call test_jacobian_columns(t)
+        if (t%want('floquet: Z in one pass = Z by one tangent per column')) &
+            call test_jacobian_one_pass(t)
+        if (t%want('floquet: gradients of G, G'' and E against central differences')) &
+            call test_invariant_gradients(t)
         if (t%want('floquet: structured iteration matrix = the integrator''s own')) &
             call test_structured_solve(t)
         if (t%want('floquet: small amplitude against the natural frequencies at rest')) &
             call test_small_amplitude(t)
         if (t%want('floquet: structure of the multipliers')) call test_structure(t)
+        if (t%want('floquet: six columns N U0 = the whole half-period map')) &
+            call test_six_columns(t)
         if (t%want('floquet: reciprocal partners up to modulus 1e6')) call test_pencil(t)
         if (t%want('floquet: finite differences of the nonlinear flow')) call test_flow_fd(t)
         if (t%want('floquet: half period by reversibility = whole period')) call test_half(t)
@@ -148,6 +158,45 @@ contains
         call t%check_close('tiny-amplitude t* = 4 pi sqrt(I1 l/(m g b^2))', period, &
                            4*pi*sqrt(p%inertia(1)*p%big_l), rtol=1.0e-12_dp)
     end subroutine test_period
+
+    !> torsion_start's theta_5 (Newton on eq. (2) from the raised pose) against start_pose's
+    !! homotopy (solve_theta5), the whole chart state to 1e-14: the cylinder and the tall box
+    !! with l' = l, and with l' = l (1 + 9e-7) (inside SYMMETRY_TOL, theta_5 /= 0), at 2, 45
+    !! and 120 degrees.
+    subroutine test_start(t)
+        type(tester_t), intent(inout) :: t
+        type(pendulum_t) :: p
+        type(status_t) :: st, st2
+        real(dp), parameter :: amps(3) = [2.0_dp, 45.0_dp, 120.0_dp]
+        real(dp) :: y0(NSTATE), yh(NSTATE), th(5), e, amp
+        integer :: ip, ia
+        logical :: ok, moved
+        e = 0.0_dp
+        ok = .true.
+        moved = .false.
+        do ip = 1, 4
+            p = deck_pendulum(trim(merge('input/cylinder_torsion.nml', &
+                                         'input/box_tall_floquet.nml', ip <= 2)))
+            if (mod(ip, 2) == 0) p%big_lp = p%big_l*(1.0_dp + 9.0e-7_dp)
+            do ia = 1, 3
+                amp = amps(ia)*deg
+                call torsion_start(p, amp, y0, st)
+                call raised_angles(p, amp, th, st2)
+                if (st2%code == 0) call solve_theta5(p, th, st2)
+                if (st%code /= 0 .or. st2%code /= 0) then
+                    ok = ok .and. st%code == st2%code
+                    cycle
+                end if
+                yh = chart_state(th, [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp])
+                e = max(e, maxval(abs(y0 - yh)))
+                moved = moved .or. abs(y0(5)) > 1.0e-8_dp
+            end do
+        end do
+        call t%check('torsion start: both ways succeed or fail alike; theta5 /= 0 met', &
+                     ok .and. moved)
+        call t%check_close('torsion start by Newton = by the homotopy (max norm)', e, 0.0_dp, &
+                           atol=1.0e-14_dp)
+    end subroutine test_start
 
     !> Z v against Richardson-extrapolated directional differences of the right-hand side:
     !! three general directions and each of Z's ten columns (the cable's own four take a
@@ -349,7 +398,7 @@ contains
         character(len=40), parameter :: decks(3) = [character(len=40) :: &
             'input/cylinder_torsion.nml', 'input/box_stable.nml', 'input/box_tall_floquet.nml']
         type(pendulum_t) :: p
-        type(floquet_result_t) :: r
+        type(floquet_result_t) :: r, rw
         type(status_t) :: st
         real(dp) :: worst, pr
         integer :: k, i, j
@@ -375,8 +424,11 @@ contains
                                r%trivial_residual, 0.0_dp, atol=1.0e-6_dp)
             call t%check_close(trim(decks(k))//': product of all multipliers', &
                                abs(product(r%multipliers)), 1.0_dp, atol=1.0e-6_dp)
+            call floquet_analysis(p, 45*deg, merge(1.0e-12_dp, 1.0e-10_dp, k == 3), 1, rw, st, &
+                                  whole_map=.true.)
+            call t%check(trim(decks(k))//': analysis of the whole map runs', st%code == 0)
             call t%check_close(trim(decks(k))//': det H(t*) = 1 (Liouville)', &
-                               det10(r%monodromy), 1.0_dp, atol=1.0e-6_dp)
+                               det10(rw%monodromy), 1.0_dp, atol=1.0e-6_dp)
             call t%check_close(trim(decks(k))//': orbit closes', r%orbit_closure, 0.0_dp, &
                                atol=1.0e-8_dp)
         end do
@@ -385,6 +437,77 @@ contains
         call t%check('box_tall unstable, of the paper''s order (1e3)', &
                      .not. stable_of('input/box_tall_floquet.nml') .and. r%max_modulus > 1.0e3_dp)
     end subroutine test_structure
+
+    !> The default analysis integrates six columns of the half-period map, N U0; the one of
+    !! the whole map (all ten columns, whole_map) gives the same multipliers within 1e-8
+    !! (relative to max(1, |lambda|)), at 45 deg, rtol 1e-10, for the cylinder, both boxes of
+    !! Figs. 13-16 and the tall box (modulus 2.65e3).  The trivial identities hold on both
+    !! computed maps to 1e-8; the residual measures them (a map off the subspace, N U0 with a
+    !! part along grad G at t*/2, is caught).
+    subroutine test_six_columns(t)
+        type(tester_t), intent(inout) :: t
+        character(len=40), parameter :: decks(4) = [character(len=40) :: &
+            'input/cylinder_torsion.nml', 'input/box_stable.nml', 'input/box_unstable.nml', &
+            'input/box_tall_floquet.nml']
+        type(floquet_result_t) :: r6, rw
+        type(status_t) :: st, stw
+        real(dp) :: rows(NSTATE, 3), nu(NSTATE, 6), q(NSTATE, NSTATE), e
+        integer :: k, i, j
+        do k = 1, size(decks)
+            call floquet_analysis(deck_pendulum(trim(decks(k))), 45*deg, 1.0e-10_dp, 1, r6, st)
+            call floquet_analysis(deck_pendulum(trim(decks(k))), 45*deg, 1.0e-10_dp, 1, rw, &
+                                  stw, whole_map=.true.)
+            call t%check(trim(decks(k))//': six columns and the whole map both run', &
+                         st%code == 0 .and. stw%code == 0)
+            e = 0.0_dp
+            do i = 1, 6
+                e = max(e, minval(abs(rw%multipliers(1:6) - r6%multipliers(i))) &
+                        /max(1.0_dp, abs(r6%multipliers(i))))
+                e = max(e, minval(abs(r6%multipliers(1:6) - rw%multipliers(i))) &
+                        /max(1.0_dp, abs(rw%multipliers(i))))
+            end do
+            call t%check_close(trim(decks(k))//': six columns = whole map, multipliers', &
+                               e, 0.0_dp, atol=1.0e-8_dp)
+            call t%check_close(trim(decks(k))//': six columns = whole map, largest modulus', &
+                               r6%max_modulus, rw%max_modulus, rtol=1.0e-8_dp)
+            call t%check(trim(decks(k))//': trivial identities on both maps within 1e-8', &
+                         r6%trivial_residual < 1.0e-8_dp .and. rw%trivial_residual < 1.0e-8_dp)
+            call t%check(trim(decks(k))//': the same four trivial multipliers, 1', &
+                         all(r6%trivial .eqv. rw%trivial) .and. count(r6%trivial) == 4 .and. &
+                         all(r6%multipliers(7:10) == (1.0_dp, 0.0_dp)))
+            call t%check(trim(decks(k))//': the monodromy only with the whole map', &
+                         all(r6%monodromy == 0.0_dp) .and. any(rw%monodromy /= 0.0_dp))
+        end do
+        ! the residual: columns orthogonal to the three gradients give roundoff, a part along
+        ! grad G of 1e-6 of a column gives 1e-6
+        do j = 1, NSTATE
+            do i = 1, NSTATE
+                q(i, j) = sin(1.3_dp*i + 0.7_dp*j*j)
+            end do
+        end do
+        call orthonormalise(q)
+        rows = 3.0_dp*q(:, 1:3)
+        nu = 2.0_dp*q(:, 4:9)
+        call t%check_close('trivial residual of a map on the subspace: roundoff', &
+                           trivial_residual_of(rows, nu), 0.0_dp, atol=1.0e-14_dp)
+        nu(:, 2) = nu(:, 2) + 1.0e-6_dp*norm2(nu)*q(:, 1)
+        call t%check_close('trivial residual of a map off it: its part along grad G', &
+                           trivial_residual_of(rows, nu), 1.0e-6_dp, rtol=1.0e-6_dp)
+    end subroutine test_six_columns
+
+    !> The columns of q made orthonormal, in order (modified Gram-Schmidt, twice).
+    pure subroutine orthonormalise(q)
+        real(dp), intent(inout) :: q(:, :)
+        integer :: j, i, pass
+        do j = 1, size(q, 2)
+            do pass = 1, 2
+                do i = 1, j - 1
+                    q(:, j) = q(:, j) - dot_product(q(:, i), q(:, j))*q(:, i)
+                end do
+            end do
+            q(:, j) = q(:, j)/norm2(q(:, j))
+        end do
+    end subroutine orthonormalise
 
     logical function stable_of(path)
         character(len=*), intent(in) :: path
@@ -591,6 +714,101 @@ contains
         call t%check_close('Z: every column = central differences (relative to max |Z|)', e, &
                            0.0_dp, atol=1.0e-8_dp)
     end subroutine test_jacobian_columns
+
+    !> Z in one pass (chart_jacobian's default, bifilar_model's jacobian_columns) against Z
+    !! by one kinematic tangent and eom_tangent per column (the single-direction path),
+    !! every entry to roundoff (1e-13 of max |Z|): the box, the cylinder with Baumgarte's
+    !! terms, the cylinder damped (linear and quadratic), the triangular plate with its
+    !! principal axes off ntilde, the tall box; at rest and at three generic states.
+    subroutine test_jacobian_one_pass(t)
+        type(tester_t), intent(inout) :: t
+        type(pendulum_t) :: p
+        type(status_t) :: st, st2
+        real(dp) :: y(NSTATE), z1(NSTATE, NSTATE), z2(NSTATE, NSTATE), qdd(5), e
+        integer :: ip, is
+        logical :: ok
+        e = 0.0_dp
+        ok = .true.
+        do ip = 1, 5
+            select case (ip)
+            case (1)
+                p = deck_pendulum('input/box_unstable.nml')
+            case (2)
+                p = deck_pendulum('input/cylinder_l180.nml')
+                p%stab_rate = 1.3_dp
+            case (3)
+                p = deck_pendulum('input/cylinder_l180.nml')
+                p%c_v = 0.03_dp
+                p%c_q = 0.02_dp
+            case (4)
+                p = deck_pendulum('input/triangle_plate.nml')
+            case default
+                p = deck_pendulum('input/box_tall_floquet.nml')
+            end select
+            do is = 0, 3
+                y = [0.02_dp, 0.1_dp, -0.05_dp, 0.4_dp, 0.03_dp, 0.1_dp, -0.2_dp, 0.15_dp, &
+                     0.5_dp, -0.1_dp]*is
+                y(4) = y(4) + 0.3_dp
+                call chart_jacobian(p, y, qdd, z1, st)
+                call chart_jacobian(p, y, qdd, z2, st2, tangents=.true.)
+                ok = ok .and. st%code == 0 .and. st2%code == 0
+                e = max(e, maxval(abs(z1 - z2))/maxval(abs(z2)))
+            end do
+        end do
+        call t%check('Z in one pass and by tangents: every evaluation succeeds', ok)
+        call t%check_close('Z in one pass = Z by tangents, every entry (relative to max |Z|)', &
+                           e, 0.0_dp, atol=1.0e-13_dp)
+    end subroutine test_jacobian_one_pass
+
+    !> The exact gradients of the constraint G, its rate G' and the energy E
+    !! (chart_invariant_gradients, the rows of the reduction to S) against fourth-order central
+    !! differences of chart_constraint and chart_energy (h = 1e-3 max(1, |y_j|): error about
+    !! 1e-12), every component, relative to the largest of its gradient: the box, the
+    !! cylinder, the triangular plate, the tall box, at a turning point of the torsion and at
+    !! generic states.
+    subroutine test_invariant_gradients(t)
+        type(tester_t), intent(inout) :: t
+        type(pendulum_t) :: p
+        type(status_t) :: st
+        real(dp) :: y(NSTATE), rows(NSTATE, 3), fd(NSTATE, 3), v(3, -2:2), h, e
+        integer :: ip, is, j, m
+        e = 0.0_dp
+        do ip = 1, 4
+            select case (ip)
+            case (1)
+                p = deck_pendulum('input/box_unstable.nml')
+            case (2)
+                p = deck_pendulum('input/cylinder_l180.nml')
+            case (3)
+                p = deck_pendulum('input/triangle_plate.nml')
+            case default
+                p = deck_pendulum('input/box_tall_floquet.nml')
+            end select
+            do is = 0, 3
+                if (is == 0) then
+                    call torsion_start(deck_pendulum('input/box_unstable.nml'), 45*deg, y, st)
+                else
+                    y = [0.02_dp, 0.1_dp, -0.05_dp, 0.4_dp, 0.03_dp, 0.1_dp, -0.2_dp, &
+                         0.15_dp, 0.5_dp, -0.1_dp]*is
+                end if
+                call chart_invariant_gradients(p, y, rows)
+                do j = 1, NSTATE
+                    h = 1.0e-3_dp*max(1.0_dp, abs(y(j)))
+                    do m = -2, 2
+                        if (m == 0) cycle
+                        call chart_constraint(p, y + m*h*unit10(j), v(1, m), v(2, m))
+                        v(3, m) = chart_energy(p, y + m*h*unit10(j))
+                    end do
+                    fd(j, :) = (8*(v(:, 1) - v(:, -1)) - (v(:, 2) - v(:, -2)))/(12*h)
+                end do
+                do m = 1, 3
+                    e = max(e, maxval(abs(rows(:, m) - fd(:, m)))/maxval(abs(fd(:, m))))
+                end do
+            end do
+        end do
+        call t%check_close('grad G, grad G'', grad E = central differences (relative)', e, &
+                           0.0_dp, atol=1.0e-9_dp)
+    end subroutine test_invariant_gradients
 
     pure function unit10(j) result(v)
         integer, intent(in) :: j

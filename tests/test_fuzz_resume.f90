@@ -357,11 +357,14 @@ contains
 
     ! ---------------------------------------------------------------------------------------
     !> SIGINT, SIGTERM and SIGHUP at every stage of ALL_DECK (as each sweep's first
-    !! checkpoint appears, as a staged file appears, at random moments), then the run
-    !! resumed; during a long simulation and during a record's fit.  A run that took the
-    !! signal: exit 128 + n, one stderr line naming the deck, the signal and what is kept
-    !! (which exists), nothing but checkpoints left; resumed: exit 0 and the uninterrupted
-    !! files.  A run that ended first: exit 0 and the uninterrupted files.
+    !! checkpoint appears, as a staged file appears, at random moments from 20 ms after the
+    !! start), then the run resumed; during a long simulation and during a record's fit.
+    !! (In its first milliseconds, before bifilar installs its handlers, a signal ends the
+    !! process by its default action with no line: the random moments start after that, as
+    !! those of the simulation and the fit do.)  A run that took the signal: exit 128 + n,
+    !! one stderr line naming the deck, the signal and what is kept (which exists), nothing
+    !! but checkpoints left; resumed: exit 0 and the uninterrupted files.  A run that ended
+    !! first: exit 0 and the uninterrupted files.
     subroutine test_signals(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
@@ -400,7 +403,7 @@ contains
             if (len_trim(TRIGGERS(j)) > 0) then
                 when = 'file:'//o//'/'//trim(TRIGGERS(j))
             else
-                secs = 1.2_dp*tref*rng_uniform(g)
+                secs = 0.02_dp + 1.2_dp*tref*rng_uniform(g)
                 when = fixed3(secs)
             end if
             call execute_command_line('rm -rf '//o//' && mkdir -p '//o)

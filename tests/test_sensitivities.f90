@@ -394,13 +394,14 @@ contains
                      rf%evaluations < rd%evaluations)
     end subroutine test_fit
 
-    !> The paper's parallelepipeds (box_stable, box_unstable) and the cylinder at 45 deg:
-    !! the multipliers from the orbit's forward sensitivities against those from the
-    !! variational equations integrated with the orbit, within 1e-8, with each integrator.
+    !> The paper's parallelepipeds (box_stable, box_unstable), the cylinder and the tall box
+    !! (modulus 2.65e3) at 45 deg: the multipliers from the orbit's forward sensitivities
+    !! (six columns of the half-period map) against those from the variational equations
+    !! integrated with the orbit (the whole map), within 1e-8, with each integrator.
     subroutine test_monodromy(t)
         type(tester_t), intent(inout) :: t
-        character(len=*), parameter :: decks(3) = [character(len=20) :: 'box_stable', &
-            'box_unstable', 'cylinder_torsion']
+        character(len=*), parameter :: decks(4) = [character(len=20) :: 'box_stable', &
+            'box_unstable', 'cylinder_torsion', 'box_tall_floquet']
         type(deck_t) :: d
         type(status_t) :: st, st2
         type(pendulum_t) :: p

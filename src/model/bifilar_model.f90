@@ -19,8 +19,10 @@
 !! The 5 x 5 system is factored by lapack_wrap's written-out LU (la_small_factor).  The
 !! Jacobian Z of the chart right-hand side (eq. (51)) is exact: the derivatives of the
 !! kinematics (chart_kinematics_tangent) carried through Kane's equations and the constraint
-!! (eom_tangent), solved with the same factors (chart_jacobian); the damping torque's
-!! derivative is in it.  The damping torque about the vertical (&damping, pendulum_t c_v,
+!! (eom_tangent), solved with the same factors (chart_jacobian); its ten columns in one
+!! pass (jacobian_columns); the damping torque's derivative is in it.  The gradients of the
+!! constraint, its rate and the energy are exact the same way (chart_invariant_gradients).
+!! The damping torque about the vertical (&damping, pendulum_t c_v,
 !! c_q) enters eq. (38) as an active torque through the partial angular velocities
 !! (damping_torque).
 !!
@@ -146,12 +148,14 @@ module bifilar_model
 
     public :: chart_state, paper_angles, chart_accelerations, paper_accelerations, evaluate
     public :: chart_positions, chart_energy, chart_constraint, chart_jacobian, step_tensions
+    public :: chart_invariant_gradients
     public :: vertical_rate, vertical_rate_gradient
 
-    !> A point costs about this many tangents' worth for the whole of Z (five of its columns
-    !! change the angles, five only the rates): sens_jv takes Z once the columns asked at a
-    !! point exceed it.
-    integer, parameter :: Z_COST = 7
+    !> A point costs about this many tangents' worth for the whole of Z (jacobian_columns'
+    !! one pass, about 5 600 instructions, against 2 100 for one general direction through
+    !! chart_kinematics_tangent and eom_tangent): sens_jv takes Z once the columns asked at
+    !! a point exceed it.
+    integer, parameter :: Z_COST = 3
 
 contains
 
@@ -583,25 +587,34 @@ contains
 
     !> The accelerations and their Jacobian Z = d f / d y of the chart right-hand side
     !! f = (qdot, qddot) (eq. (51)), exact.  Each column of the lower half is the derivative of
-    !! the accelerations along a unit change of y: the derivatives of the kinematics
-    !! (chart_kinematics_tangent) carried through Kane's equations and the constraint
-    !! (eom_tangent) and solved with the factors of eq. (38); the damping torque's derivative
-    !! included.
-    subroutine chart_jacobian(p, y, qdd, z, stat)
+    !! the accelerations along a unit change of y: the derivatives of the kinematics carried
+    !! through Kane's equations and the constraint and solved with the factors of eq. (38),
+    !! the damping torque's derivative included; all ten in one pass (jacobian_columns), or
+    !! with `tangents` one chart_kinematics_tangent and eom_tangent per column (the
+    !! single-direction path of sens_jv, which the tests compare).
+    subroutine chart_jacobian(p, y, qdd, z, stat, tangents)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         real(dp), intent(in) :: y(NSTATE)       !! chart state
         real(dp), intent(out) :: qdd(5)         !! accelerations at y
         real(dp), intent(out) :: z(NSTATE, NSTATE)  !! df_i/dy_j
         type(status_t), intent(out) :: stat     !! as chart_accelerations
+        logical, intent(in), optional :: tangents   !! .true.: one tangent per column
         type(chart_kin_t) :: k
         type(eom_t) :: eo
         real(dp) :: a(3), tq(3), mu
+        logical :: each
         z = 0.0_dp
         call chart_solve(p, y, k, eo, stat)
         qdd = eo%qdd
         if (stat%code /= 0) return
         call tangent_setup(p, k, eo, a, tq, mu)
-        call jacobian_columns(p, y, k, eo, a, tq, mu, z)
+        each = .false.
+        if (present(tangents)) each = tangents
+        if (each) then
+            call jacobian_by_tangents(p, y, k, eo, a, tq, mu, z)
+        else
+            call jacobian_columns(p, y, k, eo, a, tq, mu, z)
+        end if
     end subroutine chart_jacobian
 
     !> What the tangents of eq. (38) need at a solved point: R*'s acceleration a, the torque
@@ -628,9 +641,10 @@ contains
         end do
     end subroutine tangent_setup
 
-    !> Z of a solved point (tangent_setup done): the upper half (0 I), the lower half one
-    !! tangent per column.
-    pure subroutine jacobian_columns(p, y, k, eo, a, tq, mu, z)
+    !> Z of a solved point (tangent_setup done), each column one tangent of its own
+    !! (chart_kinematics_tangent, eom_tangent along a unit change of the state): the
+    !! reference the one-pass jacobian_columns is tested against.
+    pure subroutine jacobian_by_tangents(p, y, k, eo, a, tq, mu, z)
         type(pendulum_t), intent(in) :: p
         real(dp), intent(in) :: y(NSTATE)
         type(chart_kin_t), intent(in) :: k
@@ -650,7 +664,246 @@ contains
             call chart_kinematics_tangent(p, y, k, dy, dk)
             call eom_tangent(p, y, k, eo, a, tq, mu, dy, dk, z(6:10, j))
         end do
+    end subroutine jacobian_by_tangents
+
+    !> Z of a solved point (tangent_setup done) in one pass: the upper half (0 I), the lower
+    !! half the change of the accelerations along each unit change of the state.  Each column
+    !! is what chart_kinematics_tangent and eom_tangent give for its unit direction, but what
+    !! a unit direction leaves unchanged is never formed, and what the directions share is
+    !! formed once:
+    !! * the cable's position sigma_j (columns 2, 3) moves C along de = (e_j, sigma_j/zeta)
+    !!   and changes only the vertical components of the cable's partial velocities and
+    !!   convective acceleration;
+    !! * the cable's rates (7, 8) change only that convective acceleration;
+    !! * the body's rates (6, 9, 10) change omega by Omega_j and the convective terms
+    !!   (omega_conv's derivative), the kinematics' positions and partials not at all;
+    !! * the body's angles (1, 4, 5) turn the body by dTheta = Omega_j: a body vector u by
+    !!   dTheta x u (rho, D - C, the principal axes), with omega_partials' and omega_conv's
+    !!   derivatives.
+    !! The ten right-hand sides of the differentiated eq. (38) (see eom_tangent) are then
+    !! solved together with its factor (constrained_solve's algorithm).  The damping torque's
+    !! and Baumgarte's terms are included.
+    pure subroutine jacobian_columns(p, y, k, eo, a, tq, mu, z)
+        type(pendulum_t), intent(in) :: p
+        real(dp), intent(in) :: y(NSTATE)
+        type(chart_kin_t), intent(in) :: k
+        type(eom_t), intent(in) :: eo
+        real(dp), intent(in) :: a(3), tq(3), mu
+        real(dp), intent(out) :: z(NSTATE, NSTATE)
+        integer, parameter :: BODY(3) = [1, 4, 5]   ! the body's coordinates theta_1, 4, 5
+        real(dp) :: e(5, NSTATE), c(NSTATE), dgradg(5), fg(3), iw(3), u(3), wr(3), wu(3)
+        real(dp) :: dd(3), dvd(3), dcv(3), dcd(3), dcw(3), dw(3), dth(3), drho(3), du(3)
+        real(dp) :: djw1(3), djw5(3), djv1(3), djv4(3), djv5(3), djd4(3), djd5(3), db(3, 3)
+        real(dp) :: dwb4(3), dwb5(3), domb(3), dcwb(3), da(3), dtq(3), e1(5)
+        real(dp) :: dcw_rate(3, 3), dcw_pos(3, 3)
+        real(dp) :: iz, sdsd, ssd, dz, dj(2), decv, dgconv, sr, wv, dm0, dm1, d1, d4, d5
+        real(dp) :: d14, d15, d45
+        integer :: m, j, ib, bj, i
+        logical :: damped
+        associate (qdd => eo%qdd, s4 => k%ps%s4, c4 => k%ps%c4, s5 => k%ps%s5, &
+                   c5 => k%ps%c5, in => p%inertia, ll => p%big_l)
+            z(1:5, :) = 0.0_dp
+            do j = 1, 5
+                z(j, j + 5) = 1.0_dp
+            end do
+            sr = p%stab_rate
+            fg = -a
+            fg(3) = fg(3) - 1.0_dp                  ! the force on R*: -(a + g n3)
+            iw = in*k%omb
+            u = -k%n(3, :)                          ! D - C
+            wr = cross(k%omega, k%rho)
+            wu = cross(k%omega, u)
+            damped = p%c_v /= 0.0_dp .or. p%c_q /= 0.0_dp
+            wv = k%omega(3)
+            dm0 = p%c_v*wv + p%c_q*abs(wv)*wv       ! the damping torque's magnitude
+            dm1 = p%c_v + 2.0_dp*p%c_q*abs(wv)      ! its derivative in W
+            ! --- the cable: sigma_m (column m + 1) and its rate (column m + 6)
+            iz = 1.0_dp/k%zeta
+            sdsd = y(7)*y(7) + y(8)*y(8)
+            ssd = y(2)*y(7) + y(3)*y(8)
+            do m = 1, 2
+                ! position: dzeta = -sigma_m/zeta, de = (e_m, sigma_m/zeta), dC = L de
+                j = m + 1
+                dz = -y(j)*iz
+                dd = 0.0_dp
+                dd(m) = ll
+                dd(3) = ll*y(j)*iz
+                ! the vertical components of the cable's partial velocities (columns 2, 3)
+                ! and of its convective acceleration
+                dj = [-y(2), -y(3)]*dz*iz**2
+                dj(m) = dj(m) + iz
+                dj = ll*dj
+                decv = ll*(-sdsd*dz*iz**2 + 2.0_dp*ssd*y(j + 5)*iz**3 - 3.0_dp*ssd**2*dz*iz**4)
+                da(3) = dj(1)*qdd(2) + dj(2)*qdd(3) + decv
+                e(:, j) = -k%jv(3, :)*da(3)
+                e(2, j) = e(2, j) + dj(1)*fg(3)
+                e(3, j) = e(3, j) + dj(2)*fg(3)
+                dgradg(1) = 0.0_dp
+                do i = 2, 5
+                    dgradg(i) = 2.0_dp*dot3(dd, k%jd(:, i))
+                end do
+                dgradg(2) = dgradg(2) + 2.0_dp*k%d(3)*dj(1)
+                dgradg(3) = dgradg(3) + 2.0_dp*k%d(3)*dj(2)
+                dvd(3) = dj(1)*y(7) + dj(2)*y(8)
+                dgconv = 2.0_dp*(2.0_dp*eo%vd(3)*dvd(3) + dot3(dd, k%cd) + k%d(3)*decv)
+                if (sr > 0.0_dp) dgconv = dgconv + 4.0_dp*sr*(dot3(dd, eo%vd) + k%d(3)*dvd(3)) &
+                                          + 2.0_dp*sr**2*dot3(k%d, dd)
+                e(:, j) = e(:, j) - mu*dgradg
+                c(j) = -(dgconv + dot5(dgradg, qdd))
+                ! rate: only e'' changes
+                j = m + 6
+                decv = ll*(2.0_dp*y(j)*iz + 2.0_dp*ssd*y(m + 1)*iz**3)
+                e(:, j) = -k%jv(3, :)*decv
+                dvd = k%jd(:, m + 1)
+                dgconv = 2.0_dp*(2.0_dp*dot3(eo%vd, dvd) + k%d(3)*decv)
+                if (sr > 0.0_dp) dgconv = dgconv + 4.0_dp*sr*dot3(k%d, dvd)
+                c(j) = -dgconv
+            end do
+            ! --- the body: derivatives of omega_conv in its rates and angles (theta_1: none)
+            d1 = y(6)
+            d4 = y(9)
+            d5 = y(10)
+            dcw_rate(:, 1) = [-c4*c5*d4 + s4*s5*d5, s4*c5*d4 + c4*s5*d5, -c5*d5]
+            dcw_rate(:, 2) = [-c4*c5*d1 - s4*d5, s4*c5*d1 - c4*d5, 0.0_dp]
+            dcw_rate(:, 3) = [s4*s5*d1 - s4*d4, c4*s5*d1 - c4*d4, -c5*d1]
+            d14 = d1*d4
+            d15 = d1*d5
+            d45 = d4*d5
+            dcw_pos(:, 1) = 0.0_dp
+            dcw_pos(:, 2) = [s4*c5*d14 + c4*s5*d15 - c4*d45, c4*c5*d14 - s4*s5*d15 + s4*d45, &
+                             0.0_dp]
+            dcw_pos(:, 3) = [c4*s5*d14 + s4*c5*d15, -s4*s5*d14 + c4*c5*d15, s5*d15]
+            do ib = 1, 3
+                bj = BODY(ib)
+                ! rate of theta_bj (column bj + 5): domega = Omega_bj, the convective terms
+                j = bj + 5
+                dw = k%jw(:, bj)
+                dcw = dcw_rate(:, ib)
+                dcv = cross(dcw, k%rho) + cross(dw, wr) + cross(k%omega, cross(dw, k%rho))
+                dcd = cross(dcw, u) + cross(dw, wu) + cross(k%omega, cross(dw, u))
+                dcwb = (k%b(:, 1)*dcw(1) + k%b(:, 2)*dcw(2)) + k%b(:, 3)*dcw(3)
+                domb = k%wb(:, bj)
+                dtq = -in*dcwb - cross(domb, iw) - cross(k%omb, in*domb)
+                if (damped) dtq = dtq - dm1*dw(3)*k%b(:, 3)
+                call project(5, k%jv, k%wb, -dcv, dtq, e(:, j))
+                dvd = k%jd(:, bj)
+                dgconv = 2.0_dp*(2.0_dp*dot3(eo%vd, dvd) + dot3(k%d, dcd))
+                if (sr > 0.0_dp) dgconv = dgconv + 4.0_dp*sr*dot3(k%d, dvd)
+                c(j) = -dgconv
+                ! angle theta_bj (column bj): the body turns by dTheta = Omega_bj; its points
+                ! move by du = dTheta x u, their partial velocities Omega_j x u and
+                ! convective accelerations cw x u + omega x (omega x u) change with u ...
+                j = bj
+                dth = k%jw(:, bj)
+                drho = cross(dth, k%rho)
+                du = cross(dth, u)
+                djv1 = cross(k%jw(:, 1), drho)
+                djv4 = [drho(2), -drho(1), 0.0_dp]      ! Omega_4 = -n3
+                djv5 = cross(k%jw(:, 5), drho)
+                djd4 = [du(2), -du(1), 0.0_dp]
+                djd5 = cross(k%jw(:, 5), du)
+                dcv = cross(k%cw, drho) + cross(k%omega, cross(k%omega, drho))
+                dcd = cross(k%cw, du) + cross(k%omega, cross(k%omega, du))
+                do i = 1, 3
+                    db(i, :) = cross(dth, k%b(i, :))
+                end do
+                dcwb = (db(:, 1)*k%cw(1) + db(:, 2)*k%cw(2)) + db(:, 3)*k%cw(3)
+                dw = 0.0_dp
+                if (bj /= 1) then
+                    ! ... and theta_4, theta_5 turn Omega_1 and Omega_5 (omega_partials'
+                    ! derivative), hence omega and omega_conv (theta_1 turns neither)
+                    if (bj == 4) then
+                        djw1 = [-c4*c5, s4*c5, 0.0_dp]
+                        djw5 = [-s4, -c4, 0.0_dp]
+                        djv5 = djv5 + cross(djw5, k%rho)
+                        djd5 = djd5 + cross(djw5, u)
+                    else
+                        djw1 = [s4*s5, c4*s5, -c5]
+                        djw5 = 0.0_dp
+                    end if
+                    djv1 = djv1 + cross(djw1, k%rho)
+                    dw = djw1*y(6) + djw5*y(10)
+                    dcw = dcw_pos(:, ib)
+                    dcv = dcv + (cross(dcw, k%rho) + cross(dw, wr) &
+                                 + cross(k%omega, cross(dw, k%rho)))
+                    dcd = dcd + (cross(dcw, u) + cross(dw, wu) + cross(k%omega, cross(dw, u)))
+                    dcwb = dcwb + ((k%b(:, 1)*dcw(1) + k%b(:, 2)*dcw(2)) + k%b(:, 3)*dcw(3))
+                end if
+                dwb4 = -db(:, 3)
+                dwb5 = c4*db(:, 1) - s4*db(:, 2)
+                if (bj == 4) dwb5 = dwb5 - (s4*k%b(:, 1) + c4*k%b(:, 2))
+                domb = dwb4*y(9) + dwb5*y(10)
+                da = (djv1*qdd(1) + djv4*qdd(4) + djv5*qdd(5)) + dcv
+                dtq = -in*((dwb4*qdd(4) + dwb5*qdd(5)) + dcwb) - cross(domb, iw) &
+                      - cross(k%omb, in*domb)
+                if (damped) dtq = dtq - dm1*dw(3)*k%b(:, 3) - dm0*db(:, 3)
+                call project(5, k%jv, k%wb, -da, dtq, e(:, j))
+                e1 = [dot3(djv1, fg), 0.0_dp, 0.0_dp, dot3(djv4, fg) + dot3(dwb4, tq), &
+                      dot3(djv5, fg) + dot3(dwb5, tq)]
+                dgradg = [0.0_dp, 2.0_dp*dot3(du, k%jd(:, 2)), 2.0_dp*dot3(du, k%jd(:, 3)), &
+                          2.0_dp*(dot3(du, k%jd(:, 4)) + dot3(k%d, djd4)), &
+                          2.0_dp*(dot3(du, k%jd(:, 5)) + dot3(k%d, djd5))]
+                dvd = djd4*y(9) + djd5*y(10)
+                dgconv = 2.0_dp*(2.0_dp*dot3(eo%vd, dvd) + dot3(du, k%cd) + dot3(k%d, dcd))
+                if (sr > 0.0_dp) dgconv = dgconv + 4.0_dp*sr*(dot3(du, eo%vd) + dot3(k%d, dvd)) &
+                                          + 2.0_dp*sr**2*dot3(k%d, du)
+                e(:, j) = e(:, j) + e1 - mu*dgradg
+                c(j) = -(dgconv + dot5(dgradg, qdd))
+            end do
+            call constrained_solve_many(eo, e, c, z(6:10, :))
+        end associate
     end subroutine jacobian_columns
+
+    !> constrained_solve for several right-hand sides (e(:, j), c(j)) at once: x(:, j), the
+    !! Cholesky factor's forward and back substitution (DPOTRS's) written out for its 4 x 4.
+    pure subroutine constrained_solve_many(eo, e, c, x)
+        type(eom_t), intent(in) :: eo           !! factored system (solve_eq38), eo%mk set
+        real(dp), intent(in) :: e(:, :), c(:)   !! (5, m), (m)
+        real(dp), intent(out) :: x(:, :)        !! (5, m)
+        real(dp) :: u1, u2, u3, u4, t0, mt(4), gi(4), l(4, 4)
+        integer :: a, j, ind(4), kk
+        kk = eo%k
+        ind = eo%ind
+        l = eo%chol
+        do a = 1, 4
+            gi(a) = eo%gam(ind(a))
+            mt(a) = eo%mk(ind(a)) + gi(a)*eo%mk(kk)
+        end do
+        do j = 1, size(c)
+            t0 = c(j)/eo%gradg(kk)
+            u1 = (e(ind(1), j) + gi(1)*e(kk, j)) - t0*mt(1)
+            u2 = (e(ind(2), j) + gi(2)*e(kk, j)) - t0*mt(2)
+            u3 = (e(ind(3), j) + gi(3)*e(kk, j)) - t0*mt(3)
+            u4 = (e(ind(4), j) + gi(4)*e(kk, j)) - t0*mt(4)
+            ! L y = b
+            u1 = u1/l(1, 1)
+            u2 = (u2 - l(2, 1)*u1)/l(2, 2)
+            u3 = ((u3 - l(3, 1)*u1) - l(3, 2)*u2)/l(3, 3)
+            u4 = (((u4 - l(4, 1)*u1) - l(4, 2)*u2) - l(4, 3)*u3)/l(4, 4)
+            ! L^T x = y
+            u4 = u4/l(4, 4)
+            u3 = (u3 - l(4, 3)*u4)/l(3, 3)
+            u2 = ((u2 - l(3, 2)*u3) - l(4, 2)*u4)/l(2, 2)
+            u1 = (((u1 - l(2, 1)*u2) - l(3, 1)*u3) - l(4, 1)*u4)/l(1, 1)
+            x(ind(1), j) = u1
+            x(ind(2), j) = u2
+            x(ind(3), j) = u3
+            x(ind(4), j) = u4
+            x(kk, j) = (((t0 + gi(1)*u1) + gi(2)*u2) + gi(3)*u3) + gi(4)*u4
+        end do
+    end subroutine constrained_solve_many
+
+    !> a . b of two 3-vectors, in the order the model's sums use.
+    pure real(dp) function dot3(a, b)
+        real(dp), intent(in) :: a(3), b(3)
+        dot3 = (a(1)*b(1) + a(2)*b(2)) + a(3)*b(3)
+    end function dot3
+
+    !> a . b of two 5-vectors.
+    pure real(dp) function dot5(a, b)
+        real(dp), intent(in) :: a(5), b(5)
+        dot5 = (((a(1)*b(1) + a(2)*b(2)) + a(3)*b(3)) + a(4)*b(4)) + a(5)*b(5)
+    end function dot5
 
     !> The sensitivity terms at (t, y) (ode_system's sens_point): eq. (38) solved and made
     !! ready for the tangents of sens_jv, and df/dp of each direction of sys%dirs (0 for the
@@ -776,16 +1029,16 @@ contains
         integer :: c, m
         stat%code = 0
         m = size(v, 2)
-        jv(1:5, :) = v(6:10, :)
         if (.not. sys%sp_have_z .and. sys%sp_cols + m > Z_COST) then
             call jacobian_columns(sys%p, sys%sp_y, sys%sp_k, sys%sp_eo, sys%sp_a, sys%sp_tq, &
                                   sys%sp_mu, sys%sp_z)
             sys%sp_have_z = .true.
         end if
         if (sys%sp_have_z) then
-            jv(6:10, :) = matmul(sys%sp_z(6:10, :), v)
+            call z_products(m, sys%sp_z, v, jv)
             return
         end if
+        jv(1:5, :) = v(6:10, :)
         do c = 1, m
             call chart_kinematics_tangent(sys%p, sys%sp_y, sys%sp_k, v(:, c), dk)
             call eom_tangent(sys%p, sys%sp_y, sys%sp_k, sys%sp_eo, sys%sp_a, sys%sp_tq, &
@@ -793,6 +1046,24 @@ contains
         end do
         sys%sp_cols = sys%sp_cols + m
     end subroutine bifilar_sens_jv
+
+    !> jv = Z v for m columns (explicit shapes: contiguous columns the compiler can see),
+    !! Z's upper half (0 I) taken as the copy of the rates.
+    pure subroutine z_products(m, z, v, jv)
+        integer, intent(in) :: m                !! columns
+        real(dp), intent(in) :: z(NSTATE, NSTATE), v(NSTATE, m)
+        real(dp), intent(out) :: jv(NSTATE, m)
+        real(dp) :: acc(5)
+        integer :: c, j
+        do c = 1, m
+            jv(1:5, c) = v(6:10, c)
+            acc = z(6:10, 1)*v(1, c)
+            do j = 2, NSTATE
+                acc = acc + z(6:10, j)*v(j, c)
+            end do
+            jv(6:10, c) = acc
+        end do
+    end subroutine z_products
 
     !> W = omega . n3, the body's rate about the vertical (per unit tau), of a chart state:
     !! -sin(theta5) theta1' - theta4' (eq. (14)).
@@ -990,6 +1261,38 @@ contains
         g = dot_product(k%d, k%d) - p%big_lp**2
         gdot = 2.0_dp*dot_product(k%d, matmul(k%jd, y(6:10)))
     end subroutine chart_constraint
+
+    !> The gradients in the chart state y of the constraint G = |AD|^2 - L'^2, its rate
+    !! G' = dG/dtau and the energy E (chart_constraint, chart_energy), exact: along the rates
+    !! from the partial velocities (dG'/dqdot_j = dG/dq_j = 2 D . Jd_j, dE/dqdot_j = v . Jv_j
+    !! + omega . I Wb_j, the generalized momentum), along the coordinates from the
+    !! kinematics' tangents (chart_kinematics_tangent: dG'/dq_j = 2 (dD . vD + D . dJd qdot),
+    !! dE/dq_j = v . dJv qdot + omega . I domega + dR*_3).
+    pure subroutine chart_invariant_gradients(p, y, rows)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters
+        real(dp), intent(in) :: y(NSTATE)       !! chart state (regular: |sigma| < 1)
+        real(dp), intent(out) :: rows(NSTATE, 3)    !! columns grad G, grad G', grad E
+        type(chart_kin_t) :: k, dk
+        real(dp) :: dy(NSTATE), v(3), vd(3), iw(3), gj
+        integer :: j
+        call chart_kinematics(p, y, k)
+        v = matmul(k%jv, y(6:10))
+        vd = matmul(k%jd, y(6:10))
+        iw = p%inertia*k%omb
+        do j = 1, 5
+            gj = 2.0_dp*dot_product(k%d, k%jd(:, j))
+            rows(j, 1) = gj
+            rows(j + 5, 1) = 0.0_dp
+            rows(j + 5, 2) = gj
+            rows(j + 5, 3) = dot_product(v, k%jv(:, j)) + dot_product(iw, k%wb(:, j))
+            dy = 0.0_dp
+            dy(j) = 1.0_dp
+            call chart_kinematics_tangent(p, y, k, dy, dk)
+            rows(j, 2) = 2.0_dp*(dot_product(dk%d, vd) + dot_product(k%d, matmul(dk%jd, y(6:10))))
+            rows(j, 3) = dot_product(v, matmul(dk%jv, y(6:10))) + dot_product(iw, dk%omb) &
+                         + (dk%c(3) + dk%rho(3))
+        end do
+    end subroutine chart_invariant_gradients
 
     !> The motion reported at one instant: angles in the paper's terms, and as `parts` asks
     !! (default: all) the accelerations with the cable tensions from Newton's law for the

@@ -7,26 +7,30 @@
 !! with z(q) the height of the body as it turns by q and I_v its vertical moment of inertia,
 !! evaluated by Gauss-Legendre quadrature after q = A sin(phi), which removes the endpoint
 !! singularity.  The variational equations (51), dH/dt = Z H, are integrated along the orbit
-!! in the regular chart of bifilar_model (the orbit lies on theta2 = 0, where the paper's
-!! coordinates are singular) over `nseg` shooting segments; the multipliers are the
-!! eigenvalues of the product of the segment matrices (LAPACK DGEEV).  Z is the exact
-!! Jacobian of the chart right-hand side (see jacobian_z).
+!! over half a period in the regular chart of bifilar_model (the orbit lies on theta2 = 0,
+!! where the paper's coordinates are singular), in `nseg` shooting segments; reversibility
+!! gives the other half, and the six non-trivial multipliers are the generalized eigenvalues
+!! of a 6 x 6 pencil of the half-period map N = H(t*/2) reduced to the subspace S of the
+!! non-trivial motions (reversible_multipliers, LAPACK DGGEV).  Z is the exact Jacobian of
+!! the chart right-hand side (see jacobian_z).
 !!
-!! By default (SENS_FORWARD) H is the orbit's forward sensitivity to its initial state,
-!! the integrator's staggered direct method (ode_system's sens_init): at each step's
-!! converged point Z, computed once, solves the step's formula for H, and H takes part in
-!! the error control (the orbit alone would set steps too long for the motions about it).
-!! With SENS_DIFFERENCES (&integration sensitivities = 'differences') the orbit and H are
-!! one system of 110 equations under the error control, Z evaluated at every right-hand
-!! side (variational_t), as before.
+!! By default (SENS_FORWARD) the multipliers need N only on S: the six columns N U0 (U0 a
+!! basis of S at the start) are the orbit's forward sensitivities to its initial state
+!! along U0, the integrator's staggered direct method (ode_system's sens_init): at each
+!! step's converged point Z, computed once, solves the step's formula for them, and they
+!! take part in the error control (the orbit alone would set steps too long for the motions
+!! about it).  floquet_analysis' whole_map integrates all ten columns of N that way (the
+!! monodromy H(t*) then in the result).  With SENS_DIFFERENCES (&integration sensitivities
+!! = 'differences') the orbit and the whole N are one system of 110 equations under the
+!! error control, Z evaluated at every right-hand side (variational_t), as before.
 module floquet
     use kinds, only: dp, pi, deg
     use finite, only: finite_bits
     use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC, ERR_MODEL
     use ode_system, only: ode_system_t, integrator_t, integrator_stats_t
-    use geometry, only: pendulum_t
+    use geometry, only: pendulum_t, constraint_g, beta_coeffs
     use start_pose, only: raised_angles, solve_theta5
-    use bifilar_model, only: chart_accelerations, chart_state, chart_energy, chart_constraint, &
+    use bifilar_model, only: chart_accelerations, chart_state, chart_invariant_gradients, &
                              chart_jacobian, NSTATE, bifilar_t
     use text, only: sci
     use integrators, only: new_integrator, SOLVER_LSODA, SENS_FORWARD, SENS_DIFFERENCES
@@ -62,8 +66,13 @@ module floquet
         complex(dp) :: multipliers(NSTATE) = (0.0_dp, 0.0_dp)  !! non-trivial first, by modulus
         logical :: trivial(NSTATE) = .false.    !! the four multipliers that are 1 by structure
         real(dp) :: orbit_closure = 0.0_dp      !! |y(t*) - y(0)|, max norm
-        real(dp) :: trivial_residual = 0.0_dp   !! largest relative residual, trivial identities
-        real(dp) :: monodromy(NSTATE, NSTATE) = 0.0_dp  !! H(t*) of the chart form
+        !> largest relative residual of the trivial identities on the computed map (see
+        !! floquet_analysis)
+        real(dp) :: trivial_residual = 0.0_dp
+        !> H(t*) of the chart form, when the whole 10 x 10 map was integrated (floquet_analysis
+        !! with whole_map or sensitivities = SENS_DIFFERENCES; multipliers_from_monodromy);
+        !! else 0
+        real(dp) :: monodromy(NSTATE, NSTATE) = 0.0_dp
         integer :: steps = 0, rhs_evaluations = 0
     end type floquet_result_t
 
@@ -127,13 +136,13 @@ module floquet
     !! most 640 at rtol 1e-10): a hopeless point (a body turning fast about a principal axis
     !! of tiny inertia) fails in about a second instead of running for minutes.
     integer, parameter, public :: FLOQUET_MAX_STEPS = 20000
-    !> The monodromy's absolute tolerance (forward sensitivities) over the orbit's, rtol/100:
-    !! H's entries are measured against rtol itself (H = I at the start).
+    !> The forward sensitivities' absolute tolerance over the orbit's, rtol/100: their
+    !! entries are measured against rtol itself (unit columns at the start: I or U0).
     real(dp), parameter :: H_ATOL_SCALE = 100.0_dp
 
     public :: check_torsion_scene, torsion_period, jacobian_z, monodromy, floquet_analysis
     public :: multipliers_from_monodromy, torsion_start, pencil_multipliers, floquet_point
-    public :: point_values_valid
+    public :: point_values_valid, trivial_residual_of
 
     !> Sentinel written for chart points where no analysis is possible (not a torsion scene,
     !! cables cannot reach, impossible inertia): never NaN.
@@ -424,19 +433,81 @@ contains
         yend = y0 + [(0.0_dp, j=1, 5), y(NSTATE/2 + 1:NSTATE)]
     end subroutine monodromy
 
+    !> The orbit's forward sensitivities to its start along the columns s0 over half a
+    !! period: x = N s0, N = H(t*/2), with y(t*/2), in `nseg` segments (the columns carried
+    !! from one segment to the next; each segment at most FLOQUET_MAX_STEPS steps).  The
+    !! columns are in the integrator's error control (see monodromy), with absolute tolerance
+    !! rtol (H_ATOL_SCALE).
+    subroutine half_period_columns(p, y0, period, nseg, rtol, s0, x, yh, nsteps, nrhs, stat, &
+                                   method)
+        type(pendulum_t), intent(in) :: p       !! scaled parameters
+        real(dp), intent(in) :: y0(NSTATE)      !! start of the orbit: a turning point, at rest
+        real(dp), intent(in) :: period          !! t*
+        integer, intent(in) :: nseg             !! shooting segments (>= 1)
+        real(dp), intent(in) :: rtol            !! integrator tolerance
+        real(dp), intent(in) :: s0(:, :)        !! (NSTATE, m) the columns at t = 0
+        real(dp), intent(out) :: x(:, :)        !! (NSTATE, m) N s0
+        real(dp), intent(out) :: yh(NSTATE)     !! y(t*/2)
+        integer, intent(out) :: nsteps, nrhs    !! integrator work
+        type(status_t), intent(out) :: stat
+        integer, intent(in), optional :: method  !! SOLVER_LSODA (default) or SOLVER_RADAU
+        type(bifilar_t) :: orbit
+        class(integrator_t), allocatable :: s
+        type(integrator_stats_t) :: st
+        real(dp) :: t0, t1, tend
+        integer :: k, j
+        if (present(method)) then
+            call new_integrator(method, s)
+        else
+            call new_integrator(SOLVER_LSODA, s)
+        end if
+        tend = 0.5_dp*period
+        orbit%p = p
+        yh = y0
+        x = s0
+        nsteps = 0
+        nrhs = 0
+        do k = 1, nseg
+            t0 = tend*(k - 1)/nseg
+            t1 = tend*k/nseg
+            call s%init(orbit, t0, yh, rtol, [rtol*1.0e-2_dp], stat, tcrit=t1, &
+                        max_steps=FLOQUET_MAX_STEPS)
+            if (stat%code /= 0) return
+            call s%sens_init(orbit, x, stat, error_control=.true., &
+                             scale=[(H_ATOL_SCALE, j = 1, size(x, 2))])
+            if (stat%code /= 0) return
+            call s%integrate(orbit, t1, yh, stat)
+            st = s%stats()
+            nsteps = nsteps + st%steps
+            nrhs = nrhs + st%rhs_evals
+            if (stat%code /= 0) return
+            call s%sens_dense(t1, 0, x, stat)
+            if (stat%code /= 0) return
+        end do
+    end subroutine half_period_columns
+
     !> The whole analysis at torsion amplitude `amp` (rad).
     !!
     !! The 10 x 10 monodromy H of the chart form has four multipliers that are 1 by structure,
     !! in two Jordan blocks: the time shift (eigenvector f(y0)) with the energy, and the
     !! constraint with its rate.  A Jordan block spreads its computed eigenvalues by the square
     !! root of the integration error, so the six others are taken from H reduced to the
-    !! subspace S = {dG = dG' = dE = 0, orthogonal to f(y0)}: M6 = U^T P H U (U an
-    !! orthonormal basis of S, P the projection along f).  The four trivial multipliers are
-    !! reported as 1 and checked through their exact identities
-    !! H f = f,  grad(E)^T H = grad(E)^T (on the constraint's tangent space, where energy is
-    !! conserved),  grad(G')^T H = grad(G')^T,  grad(G)^T H = grad(G)^T + t* grad(G')^T
-    !! (largest residual, relative to the vector and to max(1, |H|_F), in res%trivial_residual).
-    subroutine floquet_analysis(p_in, amp, rtol, nseg, res, stat, method, sensitivities)
+    !! subspace S = {dG = dG' = dE = 0, orthogonal to f(y0)} (U0 an orthonormal basis of it,
+    !! see reversible_multipliers).  They need the half-period map N = H(t*/2) only on S, as
+    !! N U0: by default (forward sensitivities) only these six columns are integrated, the
+    !! orbit's sensitivities to its start along U0.  With `whole_map` (or sensitivities =
+    !! SENS_DIFFERENCES, whose variational system holds all of it) the whole N is integrated
+    !! (monodromy) and N U0 taken from it; res%monodromy is then H(t*).
+    !!
+    !! The four trivial multipliers are reported as 1.  Their exact identities
+    !! grad(G)^T N = grad(G)^T + t*/2 grad(G')^T, grad(G')^T N = grad(G')^T and
+    !! grad(E)^T N = grad(E)^T on the constraint's tangent space (gradients at t*/2 on the
+    !! left, at 0 on the right), on the computed columns: grad(X)(y(t*/2))^T N U0 = 0 for
+    !! X = G, G', E, the map stays on the subspace the reduction assumes.  The largest
+    !! residual, each relative to its gradient and to max(1, |N U0|_F), is
+    !! res%trivial_residual.
+    subroutine floquet_analysis(p_in, amp, rtol, nseg, res, stat, method, sensitivities, &
+                                whole_map)
         type(pendulum_t), intent(in) :: p_in    !! scaled parameters (a torsion scene)
         real(dp), intent(in) :: amp             !! amplitude of theta4 (rad)
         real(dp), intent(in) :: rtol            !! integrator tolerance
@@ -447,10 +518,14 @@ contains
         integer, intent(in), optional :: method !! SOLVER_LSODA (default) or SOLVER_RADAU
         integer, intent(in), optional :: sensitivities  !! SENS_FORWARD (default) or
                                                         !! SENS_DIFFERENCES (monodromy)
+        !> .true.: the whole 10 x 10 half-period map (forward sensitivities of all ten
+        !! columns), H(t*) in res%monodromy (default .false.: the six columns N U0)
+        logical, intent(in), optional :: whole_map
         type(pendulum_t) :: p
         real(dp) :: y0(NSTATE), yend(NSTATE), h(NSTATE, NSTATE), hh(NSTATE, NSTATE)
-        real(dp) :: yh(NSTATE)
+        real(dp) :: yh(NSTATE), r0w(NSTATE, 3), f0(NSTATE), u0(NSTATE, 6), nu(NSTATE, 6)
         integer :: ivert
+        logical :: whole
         p = p_in
         p%stab_rate = 0.0_dp      ! the variational equations of the model itself
         call check_torsion_scene(p, ivert, stat)
@@ -467,28 +542,65 @@ contains
                 'holds; lower the amplitude or lengthen the cables')
             return
         end if
-        call monodromy(p, y0, res%period, nseg, rtol, h, yend, res%steps, &
-                       res%rhs_evaluations, stat, half=hh, yhalf=yh, method=method, &
-                       sensitivities=sensitivities)
+        ! S at the start: the complement of grad G, grad G', grad E and the flow
+        call structure_rows(p, y0, r0w, f0, stat)
         if (stat%code /= 0) return
-        res%orbit_closure = maxval(abs(yend - y0))
-        call multipliers_from_monodromy(p, y0, res%period, h, res, stat)
-        if (stat%code /= 0) return
-        call reversible_multipliers(p, y0, yh, hh, res, stat)
+        call complement_basis(reshape([r0w(:, 1), r0w(:, 2), r0w(:, 3), f0], [NSTATE, 4]), u0)
+        whole = .false.
+        if (present(whole_map)) whole = whole_map
+        if (present(sensitivities)) whole = whole .or. sensitivities == SENS_DIFFERENCES
+        if (whole) then
+            call monodromy(p, y0, res%period, nseg, rtol, h, yend, res%steps, &
+                           res%rhs_evaluations, stat, half=hh, yhalf=yh, method=method, &
+                           sensitivities=sensitivities)
+            if (stat%code /= 0) return
+            nu = matmul(hh, u0)
+            res%monodromy = h
+        else
+            call half_period_columns(p, y0, res%period, nseg, rtol, u0, nu, yh, res%steps, &
+                                     res%rhs_evaluations, stat, method)
+            if (stat%code /= 0) return
+        end if
+        ! by reversibility the orbit closes exactly when y(t*/2) is at rest (see monodromy):
+        ! its rates are the closure error
+        res%orbit_closure = maxval(abs(yh(6:10)))
+        call reversible_multipliers(p, u0, yh, nu, res, stat)
     end subroutine floquet_analysis
 
-    !> The chart state of pure torsion at its turning point theta4 = amp (at rest).
+    !> The chart state of pure torsion at its turning point theta4 = amp (at rest): the
+    !! paper's raised pose (raised_angles) with theta_5 from the constraint eq. (2).  In a
+    !! torsion scene the raised pose, CD horizontal (theta_5 = 0), satisfies eq. (2) up to
+    !! l' - l (at most SYMMETRY_TOL l): Newton's method on G(theta_5) from 0 converges at
+    !! once.  Only where it does not is the homotopy of start_pose's solve_theta5 used.
     subroutine torsion_start(p, amp, y0, stat)
         type(pendulum_t), intent(in) :: p       !! scaled parameters (a torsion scene)
         real(dp), intent(in) :: amp             !! amplitude (rad)
         real(dp), intent(out) :: y0(NSTATE)
         type(status_t), intent(out) :: stat
-        real(dp) :: th(5)
+        real(dp) :: th(5), g, dg, b(5)
+        integer :: it
+        logical :: solved
         y0 = 0.0_dp
         call raised_angles(p, amp, th, stat)
         if (stat%code /= 0) return
-        call solve_theta5(p, th, stat)
-        if (stat%code /= 0) return
+        solved = .false.
+        do it = 1, 8
+            g = constraint_g(p, th)
+            b = beta_coeffs(p, th)
+            dg = -2.0_dp*b(5)                   ! dG/dtheta_5, eq. (4)
+            if (.not. (abs(dg) > 1.0e-12_dp)) exit
+            th(5) = th(5) - g/dg
+            if (abs(g) < 1.0e-15_dp) then
+                solved = abs(th(5)) < 0.5_dp*pi
+                exit
+            end if
+        end do
+        if (solved) solved = abs(constraint_g(p, th)) < 1.0e-12_dp
+        if (.not. solved) then
+            th(5) = 0.0_dp
+            call solve_theta5(p, th, stat)
+            if (stat%code /= 0) return
+        end if
         y0 = chart_state(th, [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp])
     end subroutine torsion_start
 
@@ -513,46 +625,69 @@ contains
         lam = lam(by_modulus(lam))
     end subroutine pencil_multipliers
 
-    !> The six non-trivial multipliers from the half-period matrix N = H(t*/2) without forming
+    !> The six non-trivial multipliers from the half-period map on S, N U0, without forming
     !! the product: with R = diag(I, -I), H(t*) = R N^-1 R N; reduced to S (as in
     !! multipliers_from_monodromy) at both turning points y0 and y(t*/2), both at rest and so
-    !! R-invariant, M6 = R0 N6^-1 Rh N6, whose eigenvalues are those of the pencil
+    !! R-invariant, M6 = R0 N6^-1 Rh N6 with N6 = Uh^T P N U0 (Uh the basis of S at t*/2, P
+    !! the projection along the flow there), whose eigenvalues are those of the pencil
     !! (Rh N6, N6 R0), computed by QZ (LAPACK DGGEV).  The pencil is exchanged with its
     !! R-conjugate by lambda -> 1/lambda, so small and large multipliers are computed alike:
     !! the reciprocal partner of a multiplier of modulus 1e6 keeps its accuracy, where the
-    !! eigenvalues of the explicit product lose it.
-    subroutine reversible_multipliers(p, y0, yh, n, res, stat)
+    !! eigenvalues of the explicit product lose it.  Fills res%multipliers (the four trivial
+    !! ones 1), trivial, max_modulus, stable and trivial_residual (see floquet_analysis).
+    subroutine reversible_multipliers(p, u0, yh, nu, res, stat)
         type(pendulum_t), intent(in) :: p       !! scaled parameters (stab_rate 0)
-        real(dp), intent(in) :: y0(NSTATE)      !! turning point at t = 0
+        real(dp), intent(in) :: u0(NSTATE, 6)   !! orthonormal basis of S at y(0)
         real(dp), intent(in) :: yh(NSTATE)      !! turning point at t*/2
-        real(dp), intent(in) :: n(NSTATE, NSTATE)  !! H(t*/2)
+        real(dp), intent(in) :: nu(NSTATE, 6)   !! N U0, N = H(t*/2)
         type(floquet_result_t), intent(inout) :: res
         type(status_t), intent(out) :: stat
-        real(dp) :: r0w(NSTATE, 3), rhw(NSTATE, 3), f0(NSTATE), fh(NSTATE)
-        real(dp) :: u0(NSTATE, 6), uh(NSTATE, 6), rr(NSTATE)
+        real(dp) :: rhw(NSTATE, 3), fh(NSTATE)
+        real(dp) :: uh(NSTATE, 6), rr(NSTATE)
         real(dp) :: n6(6, 6), r0(6, 6), rh(6, 6)
         complex(dp) :: lam(6)
         integer :: k
-        call structure_rows(p, y0, r0w, f0, stat)
-        if (stat%code /= 0) return
         call structure_rows(p, yh, rhw, fh, stat)
         if (stat%code /= 0) return
-        call complement_basis(reshape([r0w(:, 1), r0w(:, 2), r0w(:, 3), f0], [NSTATE, 4]), u0)
         call complement_basis(reshape([rhw(:, 1), rhw(:, 2), rhw(:, 3), fh], [NSTATE, 4]), uh)
-        n6 = matmul(transpose(uh), matmul(projector_along(fh), matmul(n, u0)))
+        res%trivial_residual = trivial_residual_of(rhw, nu)
+        n6 = matmul(transpose(uh), matmul(projector_along(fh), nu))
         rr = [(1.0_dp, k=1, 5), (-1.0_dp, k=1, 5)]
         r0 = matmul(transpose(u0), spread(rr, 2, 6)*u0)
         rh = matmul(transpose(uh), spread(rr, 2, 6)*uh)
         call pencil_multipliers(n6, r0, rh, lam, stat)
         if (stat%code /= 0) return
         res%multipliers(1:6) = lam
+        res%trivial(1:6) = .false.
+        res%multipliers(7:10) = (1.0_dp, 0.0_dp)
+        res%trivial(7:10) = .true.
         res%max_modulus = maxval(abs(res%multipliers(1:6)))
         res%stable = res%max_modulus <= 1.0_dp + STABILITY_MARGIN
     end subroutine reversible_multipliers
 
-    !> The multipliers of a monodromy matrix h of the chart form over the orbit through y0
-    !! with period t* (see floquet_analysis): fills res%multipliers, trivial, max_modulus,
-    !! stable, trivial_residual and monodromy.
+    !> The trivial identities on computed columns of the half-period map: the largest of
+    !! |grad(X)^T N U0| / |grad(X)| over X = G, G', E (gradients at t*/2, the rows of
+    !! structure_rows), over max(1, |N U0|_F).  Each is exactly 0 (see floquet_analysis).
+    pure real(dp) function trivial_residual_of(rows, nu) result(r)
+        real(dp), intent(in) :: rows(:, :)      !! (n, 3) grad G, grad G', grad E at t*/2
+        real(dp), intent(in) :: nu(:, :)        !! (n, m) N U0
+        integer :: i
+        r = 0.0_dp
+        do i = 1, size(rows, 2)
+            r = max(r, norm2(matmul(rows(:, i), nu))/norm2(rows(:, i)))
+        end do
+        r = r/max(1.0_dp, norm2(nu))
+    end function trivial_residual_of
+
+    !> The multipliers of a whole monodromy matrix h of the chart form over the orbit
+    !! through y0 with period t* (e.g. one from differences of the nonlinear flow): the six
+    !! non-trivial ones the eigenvalues of h reduced to S, M6 = U^T P h U (U an orthonormal
+    !! basis of S at y0, P the projection along f(y0); see floquet_analysis), the four
+    !! trivial ones 1 and checked through their identities on the whole of h: h f = f,
+    !! grad(E)^T h = grad(E)^T on the constraint's tangent space, grad(G')^T h = grad(G')^T,
+    !! grad(G)^T h = grad(G)^T + t* grad(G')^T (largest residual, relative to the vector and
+    !! to max(1, |h|_F)).  Fills res%multipliers, trivial, max_modulus, stable,
+    !! trivial_residual and monodromy.
     subroutine multipliers_from_monodromy(p, y0, period, h, res, stat)
         type(pendulum_t), intent(in) :: p       !! scaled parameters (stab_rate 0)
         real(dp), intent(in) :: y0(NSTATE)      !! point of the orbit where h starts
@@ -590,7 +725,8 @@ contains
         res%monodromy = h
     end subroutine multipliers_from_monodromy
 
-    !> Indices that order lam by decreasing modulus (insertion sort; ties keep their order).
+    !> Indices that order lam by decreasing modulus (insertion sort), of equal moduli (a
+    !! complex conjugate pair) the larger imaginary part first; other ties keep their order.
     pure function by_modulus(lam) result(idx)
         complex(dp), intent(in) :: lam(:)
         integer :: idx(size(lam))
@@ -599,7 +735,9 @@ contains
         do k = 2, size(lam)
             i = k
             do while (i > 1)
-                if (abs(lam(idx(i))) <= abs(lam(idx(i - 1)))) exit
+                if (abs(lam(idx(i))) < abs(lam(idx(i - 1)))) exit
+                if (abs(lam(idx(i))) == abs(lam(idx(i - 1))) .and. &
+                    aimag(lam(idx(i))) <= aimag(lam(idx(i - 1)))) exit
                 idx([i - 1, i]) = idx([i, i - 1])
                 i = i - 1
             end do
@@ -617,20 +755,15 @@ contains
         end do
     end function projector_along
 
-    !> Gradients at y of the constraint G, its rate G' and the energy E (columns 1-3, by the
-    !! fourth-order central stencil, h = 1e-3 max(1, |y_j|): error ~ 1e-13), and the flow f(y).
-    !! The steps in the cable's chart coordinates y(2), y(3) (sigma, |sigma| < 1) stay within
-    !! a quarter of the distance to |sigma| = 1 (near the horizontal a step of 1e-3
-    !! took |sigma| past 1, and the multipliers were computed through NaN); a state whose
-    !! cable BC is near the horizontal (|sin theta2| > SIN2_LIMIT) is ERR_MODEL.
+    !> Gradients at y of the constraint G, its rate G' and the energy E (columns 1-3, exact:
+    !! bifilar_model's chart_invariant_gradients), and the flow f(y).  A state whose cable BC
+    !! is near the horizontal (|sin theta2| > SIN2_LIMIT) is ERR_MODEL.
     subroutine structure_rows(p, y, rows, f, stat)
         type(pendulum_t), intent(in) :: p
         real(dp), intent(in) :: y(NSTATE)
         real(dp), intent(out) :: rows(NSTATE, 3), f(NSTATE)
         type(status_t), intent(out) :: stat
-        real(dp) :: yp(NSTATE), h, v(3, 4), a(5), room
-        real(dp), parameter :: off(4) = [1.0_dp, -1.0_dp, 2.0_dp, -2.0_dp]
-        integer :: j, k
+        real(dp) :: a(5)
         rows = 0.0_dp
         f = 0.0_dp
         if (.not. (y(2)**2 + y(3)**2 < SIN2_LIMIT**2)) then
@@ -640,24 +773,7 @@ contains
                 'the cables')
             return
         end if
-        do j = 1, NSTATE
-            h = 1.0e-3_dp*max(1.0_dp, abs(y(j)))
-            if (j == 2) then
-                ! room to |sigma| = 1 along y(2), y(3)
-                room = sqrt(max(0.0_dp, 1.0_dp - y(3)**2)) - abs(y(2))
-                h = min(h, 0.125_dp*room)
-            else if (j == 3) then
-                room = sqrt(max(0.0_dp, 1.0_dp - y(2)**2)) - abs(y(3))
-                h = min(h, 0.125_dp*room)
-            end if
-            do k = 1, 4
-                yp = y
-                yp(j) = y(j) + off(k)*h
-                call chart_constraint(p, yp, v(1, k), v(2, k))
-                v(3, k) = chart_energy(p, yp)
-            end do
-            rows(j, :) = (8*(v(:, 1) - v(:, 2)) - (v(:, 3) - v(:, 4)))/(12*h)
-        end do
+        call chart_invariant_gradients(p, y, rows)
         call chart_accelerations(p, y, a, stat)
         f = [y(6:10), a]
     end subroutine structure_rows
