@@ -4,7 +4,8 @@
 !! the anchors, shared/reference/integrator/anchors.md):
 !! rober (Robertson), vdp (Van der Pol, parameter mu), arenstorf, hires, pendulum
 !! (theta'' = -sin theta), linear (3x3 stiff, eigenvalues -1, -1e3, -1e6), plus a harmonic
-!! oscillator and exponential decay with exact solutions.  None counts anything: the
+!! oscillator and exponential decay with exact solutions; lapack_wrap's small inverse, which
+!! the sensitivities' corrector uses.  None counts anything: the
 !! solver's stats() do.
 module test_lsoda
     use kinds, only: dp, pi
@@ -14,6 +15,7 @@ module test_lsoda
     use status, only: LSODA_ERR_MAX_STEPS, LSODA_ERR_TOO_MUCH_ACCURACY, LSODA_ERR_ERROR_TEST, &
         LSODA_ERR_CONVERGENCE, LSODA_ERR_ILLEGAL_INPUT, LSODA_ERR_SINGULAR
     use testing, only: tester_t
+    use lapack_wrap, only: la_small_inverse, la_lu_factor, la_lu_solve_many
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -535,7 +537,64 @@ contains
         if (t%want('lsoda_interleave')) call test_interleave(t)
         if (t%want('lsoda_dense_tcrit')) call test_dense_tcrit(t)
         if (t%want('lsoda_method_options')) call test_method_options(t)
+        if (t%want('lsoda_small_inverse')) call test_small_inverse(t)
     end subroutine run_lsoda_tests
+
+    !> lapack_wrap's written-out la_small_inverse (the sensitivities' matrix of an Adams
+    !! step): A A^-1 = I to 1e-13 for I - h J of orders 1, 2, 5 and 10 with entries of all
+    !! signs, for a matrix whose first pivot is 0 (an interchange of every row), and equal
+    !! to LAPACK's LU solves of the identity to 1e-13; an exactly singular matrix refused
+    !! (ERR_NUMERIC naming the column).
+    subroutine test_small_inverse(t)
+        type(tester_t), intent(inout) :: t
+        integer, parameter :: orders(4) = [1, 2, 5, 10]
+        real(dp), allocatable :: a(:, :), ai(:, :), lu(:, :), x(:, :), eye(:, :)
+        integer, allocatable :: ipiv(:)
+        type(status_t) :: st, st2
+        integer :: k, n, i, j, kind
+        character(len=40) :: label
+        do kind = 1, 2
+            do k = 1, size(orders)
+                n = orders(k)
+                allocate (a(n, n), ai(n, n), lu(n, n), x(n, n), eye(n, n), ipiv(n))
+                eye = 0.0_dp
+                do i = 1, n
+                    eye(i, i) = 1.0_dp
+                end do
+                do j = 1, n
+                    do i = 1, n
+                        a(i, j) = 0.3_dp*sin(1.7_dp*i + 0.9_dp*j*j)
+                    end do
+                end do
+                if (kind == 1) then
+                    a = eye - a
+                else
+                    ! the first pivot 0, the rows in another order
+                    a(1, 1) = 0.0_dp
+                    a = a(n:1:-1, :) + 0.5_dp*eye
+                end if
+                write (label, '(a,i0,a)') 'small inverse, order ', n, &
+                    trim(merge('             ', ', rows turned', kind == 1))
+                call la_small_inverse(n, a, ai, st)
+                call t%check(trim(label)//': computed', st%code == STATUS_OK)
+                call t%check_close(trim(label)//': A A^-1 = I', &
+                                   1.0_dp + maxval(abs(matmul(a, ai) - eye)), 1.0_dp, 1.0e-13_dp)
+                lu = a
+                call la_lu_factor(lu, ipiv, st2)
+                x = eye
+                if (st2%code == STATUS_OK) call la_lu_solve_many(lu, ipiv, x, st2)
+                call t%check_close(trim(label)//': = LAPACK''s LU solves', &
+                                   1.0_dp + maxval(abs(ai - x))/maxval(abs(x)), 1.0_dp, 1.0e-13_dp)
+                deallocate (a, ai, lu, x, eye, ipiv)
+            end do
+        end do
+        allocate (a(3, 3), ai(3, 3))
+        a = reshape([1.0_dp, 2.0_dp, 3.0_dp, 2.0_dp, 4.0_dp, 6.0_dp, 0.0_dp, 1.0_dp, 1.0_dp], &
+                    [3, 3])
+        call la_small_inverse(3, a, ai, st)
+        call t%check('small inverse: a singular matrix is refused, naming the column', &
+                     st%code /= STATUS_OK .and. index(st%msg, 'column 2') > 0)
+    end subroutine test_small_inverse
 
     !> start_bdf and nonstiff_only on the stiff linear problem (eigenvalues -1, -1e3, -1e6)
     !! over t = 0 ... 0.01: with start_bdf the first step is BDF; with nonstiff_only the

@@ -48,7 +48,7 @@ module lsoda
         LSODA_ERR_ILLEGAL_INPUT, LSODA_ERR_SINGULAR
     use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, sens_init_args, &
         METHOD_ADAMS, METHOD_BDF
-    use lapack_wrap, only: la_lu_factor, la_lu_solve, la_lu_solve_many, la_small_lu_solve
+    use lapack_wrap, only: la_lu_factor, la_lu_solve, la_small_lu_solve, la_small_inverse
     implicit none
     private
 
@@ -127,8 +127,7 @@ module lsoda
         ! right-hand side b, change d, products J v
         real(dp), allocatable :: sb(:), sd(:), sjv(:)
         real(dp), allocatable :: seye(:, :)    ! the identity of n, for J = J I
-        real(dp), allocatable :: sjm(:, :)     ! the sensitivities' own matrix I - h l0 J, LU
-        integer, allocatable :: spiv(:)
+        real(dp), allocatable :: sjm(:, :)     ! the sensitivities' own matrix I - h l0 J
         real(dp), allocatable :: sinv(:, :)    ! its inverse (the solves of all columns at once)
         real(dp) :: shl0 = 0.0_dp              ! its h l0
         integer :: snslp = 0                   ! the step it was formed at
@@ -613,8 +612,8 @@ contains
         call realloc_vec(s%sb, s%nsn)
         call realloc_vec(s%sd, s%nsn)
         call realloc_vec(s%sjv, s%nsn)
-        if (allocated(s%sdfdp)) deallocate (s%sdfdp, s%sjm, s%spiv, s%seye, s%sinv)
-        allocate (s%sdfdp(n, ns), s%sjm(n, n), s%spiv(n), s%seye(n, n), s%sinv(n, n))
+        if (allocated(s%sdfdp)) deallocate (s%sdfdp, s%sjm, s%seye, s%sinv)
+        allocate (s%sdfdp(n, ns), s%sjm(n, n), s%seye(n, n), s%sinv(n, n))
         s%seye = 0.0_dp
         do i = 1, n
             s%seye(i, i) = 1.0_dp
@@ -1781,11 +1780,11 @@ contains
     end subroutine sens_fixed_point
 
     !> The sensitivities' own iteration matrix I - hl0 J at the point of the last
-    !! sens_point, factored (sjm, spiv) and inverted (sinv), with its h l0 and step (shl0,
-    !! snslp).  The inverse solves every column with one product (a 10 x 10 LU solve a
-    !! column cost about ten times that); the matrix is near I here (an Adams step, or one
-    !! whose iteration failed to contract), so the inverse costs no accuracy worth the
-    !! name, and the iteration's residuals use the exact J.
+    !! sens_point (sjm) and its inverse (sinv, lapack_wrap's written-out Gauss-Jordan), with
+    !! its h l0 and step (shl0, snslp).  The inverse solves every column with one product (a
+    !! 10 x 10 LU solve a column cost about ten times that); the matrix is near I here (an
+    !! Adams step, or one whose iteration failed to contract), so the inverse costs no
+    !! accuracy worth the name, and the iteration's residuals use the exact J.
     subroutine sens_matrix(s, sys, hl0, stat)
         type(lsoda_t), intent(inout) :: s
         class(ode_system_t), intent(inout) :: sys
@@ -1799,11 +1798,7 @@ contains
         s%shl0 = hl0
         s%snslp = s%nst
         s%shave = .true.
-        call la_lu_factor(s%sjm, s%spiv, lst)
-        if (lst%code == STATUS_OK) then
-            s%sinv = s%seye
-            call la_lu_solve_many(s%sjm, s%spiv, s%sinv, lst)
-        end if
+        call la_small_inverse(s%n, s%sjm, s%sinv, lst)
         if (lst%code /= STATUS_OK) then
             call set_error(stat, LSODA_ERR_SINGULAR, 'lsoda: the sensitivities'' iteration '// &
                 'matrix I - h l0 J is singular')
@@ -1811,17 +1806,37 @@ contains
     end subroutine sens_matrix
 
     !> w = p v for the columns of v (n x ns): the solves of sens_correct by the inverse.
+    !! (The paper's model has n = 10: a column's sum then stays in registers.)
     pure subroutine inverse_times(n, ns, p, v, w)
         integer, intent(in) :: n, ns
         real(dp), intent(in) :: p(n, n), v(n, ns)
         real(dp), intent(out) :: w(n, ns)
         integer :: j, k
+        if (n == 10) then
+            call times10(ns, p, v, w)
+            return
+        end if
         do k = 1, ns
             w(:, k) = p(:, 1)*v(1, k)
             do j = 2, n
                 w(:, k) = w(:, k) + p(:, j)*v(j, k)
             end do
         end do
+    contains
+        pure subroutine times10(m, a, x, y)
+            integer, intent(in) :: m
+            real(dp), intent(in) :: a(10, 10), x(10, m)
+            real(dp), intent(out) :: y(10, m)
+            real(dp) :: acc(10)
+            integer :: jj, kk
+            do kk = 1, m
+                acc = a(:, 1)*x(1, kk)
+                do jj = 2, 10
+                    acc = acc + a(:, jj)*x(jj, kk)
+                end do
+                y(:, kk) = acc
+            end do
+        end subroutine times10
     end subroutine inverse_times
 
     !> k-th derivative at t of the polynomial held in a Nordsieck array yh of m rows (the

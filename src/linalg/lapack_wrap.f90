@@ -25,7 +25,7 @@ module lapack_wrap
     private
 
     public :: la_solve, la_lu_factor, la_lu_solve, la_lu_solve_many, la_eig, la_geig
-    public :: la_small_chol, la_small_chol_solve, la_small_lu_solve
+    public :: la_small_chol, la_small_chol_solve, la_small_lu_solve, la_small_inverse
     public :: la_zlu_factor, la_zlu_solve
     public :: la_lstsq, la_svd
     public :: la_syev, la_eigv, la_chol, la_tri_solve
@@ -313,6 +313,64 @@ contains
             if (t /= 0.0_dp) b(1:j - 1) = b(1:j - 1) - t*lu(1:j - 1, j)
         end do
     end subroutine la_small_lu_solve
+
+    !> The inverse of a small square matrix, written out (for orders where LAPACK's DGETRF
+    !! and DGETRS cost more in calls than in arithmetic): Gauss-Jordan elimination in place
+    !! with partial pivoting by rows, each elimination a rank-one update by columns; the
+    !! row interchanges undone at the end as interchanges of columns.
+    !!
+    !! n    [in]  integer:       order, >= 1.
+    !! a    [in]  real(dp)(n,n): the matrix.
+    !! ainv [out] real(dp)(n,n): its inverse.
+    !! stat [out]: ERR_NUMERIC when a pivot is exactly 0 (A singular), naming the column.
+    pure subroutine la_small_inverse(n, a, ainv, stat)
+        integer, intent(in) :: n
+        real(dp), intent(in) :: a(n, n)
+        real(dp), intent(out) :: ainv(n, n)
+        type(status_t), intent(out) :: stat
+        real(dp) :: f(n), t, d
+        integer :: piv(n), i, j, k, ip
+        character(len=80) :: buf
+        stat%code = 0
+        ainv = a
+        do k = 1, n
+            ip = k - 1 + maxloc(abs(ainv(k:n, k)), 1)
+            piv(k) = ip
+            if (.not. (abs(ainv(ip, k)) > 0.0_dp)) then
+                write (buf, '(a,i0)') 'la_small_inverse: singular matrix, pivot 0 in column ', k
+                call set_error(stat, ERR_NUMERIC, trim(buf))
+                return
+            end if
+            if (ip /= k) then
+                do j = 1, n
+                    t = ainv(k, j)
+                    ainv(k, j) = ainv(ip, j)
+                    ainv(ip, j) = t
+                end do
+            end if
+            d = 1.0_dp/ainv(k, k)
+            f = ainv(:, k)
+            f(k) = 0.0_dp
+            ainv(:, k) = 0.0_dp
+            ainv(k, k) = 1.0_dp
+            do j = 1, n
+                ainv(k, j) = ainv(k, j)*d
+            end do
+            do j = 1, n
+                t = ainv(k, j)
+                do i = 1, n
+                    ainv(i, j) = ainv(i, j) - f(i)*t
+                end do
+            end do
+        end do
+        do k = n - 1, 1, -1
+            ip = piv(k)
+            if (ip == k) cycle
+            f = ainv(:, k)
+            ainv(:, k) = ainv(:, ip)
+            ainv(:, ip) = f
+        end do
+    end subroutine la_small_inverse
 
     !> Solve A X = B for several right-hand sides with the factors from la_lu_factor
     !! (LAPACK DGETRS, no transpose, one call).
