@@ -121,6 +121,9 @@ module record_fit
         real(dp), allocatable :: vals(:)        !! theta4 (rad) or W (rad per unit tau)
         integer :: ns = 0                       !! forward sensitivities carried (0: none)
         real(dp), allocatable :: dvals(:, :)    !! (0:, ns) the value's change along each
+        logical :: shift = .false.              !! the value's rate is asked too
+        real(dp), allocatable :: slope(:)       !! (0:) its rate, d value/d tau
+        real(dp), allocatable :: sv(:, :)       !! (NSTATE, ns) the sensitivities at a sample
     contains
         procedure :: take => record_take
     end type record_sink_t
@@ -200,10 +203,12 @@ contains
 
     !> The model run of record_model and record_model_sens.  With quantities, column c of the
     !! run's sensitivities follows names(c): its pendulum direction and initial condition by
-    !! central differences of make_pendulum and start_state; a last column f(y), started
-    !! from f(y0), follows the motion itself when a quantity moves the time scale s =
-    !! sqrt(g/b') or the release: a sample at t is the model at tau = (t - t0) s, so
-    !! dv/dx = (dv/dy) (s_x + f (t - t0) ds/dx - f s dt0/dx) (times s, plus v ds/dx, for W).
+    !! central differences of make_pendulum and start_state.  A quantity that moves the time
+    !! scale s = sqrt(g/b') or the release moves the samples along the motion: a sample at
+    !! t is the model at tau = (t - t0) s, so dv/dx = (dv/dy) (s_x + f (t - t0) ds/dx -
+    !! f s dt0/dx) (times s, plus v ds/dx, for W), f = dy/dtau from the integrator's dense
+    !! output (the system is autonomous: f(y(tau)) is the sensitivity to a shift of time,
+    !! which needs no column of its own).
     subroutine model_run(rg, st, acc, t, t0, rate, names, xs, vals, dvals, stat)
         type(rig_t), intent(in) :: rg
         type(start_t), intent(in) :: st
@@ -221,9 +226,8 @@ contains
         type(rig_t) :: rp, rm
         type(start_t) :: sp, sm
         type(sens_dir_t), allocatable :: dirs(:)
-        type(bifilar_t) :: sys
         real(dp) :: y0(NSTATE), th0(5), s, v0, yp(NSTATE), ym(NSTATE), th(5), h
-        real(dp) :: f0(NSTATE), g0(NSTATE), sfac, dtau
+        real(dp) :: g0(NSTATE), sfac, dtau
         real(dp), allocatable :: taus(:), s0(:, :), scale(:), ds(:), dt0(:)
         integer :: n, i0, i, nq, ns, c
         logical :: shift
@@ -238,7 +242,7 @@ contains
         s = sqrt(rg%g/rg%b_prime)               ! tau per second
         sfac = merge(s, 1.0_dp, rate)
         ! the quantities' directions, initial conditions, changes of s and of t0
-        allocate (dirs(nq), ds(nq), dt0(nq), s0(NSTATE, nq + 1), scale(nq + 1))
+        allocate (dirs(nq), ds(nq), dt0(nq), s0(NSTATE, nq), scale(nq))
         s0 = 0.0_dp
         scale = 1.0_dp
         ds = 0.0_dp
@@ -274,16 +278,10 @@ contains
         end do
         shift = any(ds /= 0.0_dp) .or. any(dt0 /= 0.0_dp)
         ns = nq
-        if (shift) then
-            ! the motion's own direction: its sensitivity from f(y0) is f(y(tau))
-            ns = nq + 1
-            sys%p = p
-            call sys%rhs(0.0_dp, y0, f0, stat)
-            if (stat%code /= 0) return
-            s0(:, ns) = f0
-        end if
         sink%rate = rate
         sink%ns = ns
+        sink%shift = shift
+        allocate (sink%sv(NSTATE, ns))
         v0 = output_value(rate, y0)
         g0 = output_gradient(rate, y0)
         i0 = n + 1
@@ -300,7 +298,8 @@ contains
             if (rate) dvals(1:i0 - 1, c) = dvals(1:i0 - 1, c) + v0*ds(c)
         end do
         if (i0 > n) return
-        allocate (taus(0:n - i0), sink%vals(0:n - i0), sink%dvals(0:n - i0, ns))
+        allocate (taus(0:n - i0), sink%vals(0:n - i0), sink%dvals(0:n - i0, ns), &
+                  sink%slope(0:n - i0))
         taus = (t(i0:n) - t0)*s
         if (taus(n - i0) <= 0.0_dp) then
             vals(i0:n) = v0*sfac
@@ -332,7 +331,7 @@ contains
             do i = i0, n
                 dtau = (t(i) - t0)*ds(c) - s*dt0(c)
                 if (shift) then
-                    dvals(i, c) = (sink%dvals(i - i0, c) + sink%dvals(i - i0, ns)*dtau)*sfac
+                    dvals(i, c) = (sink%dvals(i - i0, c) + sink%slope(i - i0)*dtau)*sfac
                 else
                     dvals(i, c) = sink%dvals(i - i0, c)*sfac
                 end if
@@ -393,20 +392,27 @@ contains
         real(dp), intent(in) :: t               !! its tau
         real(dp), intent(in) :: y(:)            !! chart state there
         type(status_t), intent(out) :: stat
-        real(dp) :: sv(NSTATE, sink%ns), g(NSTATE)
+        real(dp) :: g(NSTATE), f(NSTATE)
+        integer :: c
         stat%code = 0
         sink%vals(k) = output_value(sink%rate, y(1:NSTATE))
-        if (sink%ns == 0) return
+        if (sink%ns == 0 .and. .not. sink%shift) return
+        g = output_gradient(sink%rate, y(1:NSTATE))
         select type (m)
         type is (kane_run_t)
-            call m%sens_at(t, sv, stat)
+            if (sink%ns > 0) call m%sens_at(t, sink%sv, stat)
+            if (stat%code == 0 .and. sink%shift) then
+                call m%slope_at(t, f, stat)
+                sink%slope(k) = dot_product(g, f)
+            end if
         end select
         if (stat%code /= 0) then
             stat%msg = stat%msg//' at tau = '//sci(t)
             return
         end if
-        g = output_gradient(sink%rate, y(1:NSTATE))
-        sink%dvals(k, :) = matmul(g, sv)
+        do c = 1, sink%ns
+            sink%dvals(k, c) = dot_product(g, sink%sv(:, c))
+        end do
     end subroutine record_take
 
     !> The rig and start with the parameters p of the fit set (I1, c_v, c_q, amplitude), t0

@@ -33,6 +33,7 @@ module kane_run
         procedure :: advance => kane_advance
         procedure :: dense => kane_dense
         procedure :: sens_at => kane_sens_at
+        procedure :: slope_at => kane_slope_at
     end type kane_run_t
 
     public :: kane_run_start, model_checks, tighter_rtol, angle_difference, sway_of, global_rtol
@@ -120,6 +121,21 @@ contains
             call m%solver%sens_dense(min(t, m%t_cur), 0, s, stat)
         end if
     end subroutine kane_sens_at
+
+    !> The state's derivative f(y) at t (the right-hand side at the start before any step,
+    !! the derivative of the integrator's dense output within the last step).
+    subroutine kane_slope_at(m, t, f, stat)
+        class(kane_run_t), intent(inout) :: m
+        real(dp), intent(in) :: t
+        real(dp), intent(out) :: f(:)           !! (NSTATE)
+        type(status_t), intent(out) :: stat
+        stat%code = 0
+        if (m%nsteps == 0) then
+            call m%sys%rhs(0.0_dp, m%y0, f, stat)
+        else
+            call m%solver%dense(min(t, m%t_cur), 1, f, stat)
+        end if
+    end subroutine kane_slope_at
 
     !> One step of the paper's model: an integrator failure explained (singular coordinates
     !! named, too much accuracy asked), the model checked at the step's end.
