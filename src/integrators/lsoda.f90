@@ -145,6 +145,7 @@ module lsoda
         procedure :: set_options => lsoda_set_options
         procedure :: sens_init => lsoda_sens_init
         procedure :: sens_dense => lsoda_sens_dense
+        procedure :: sens_dense_dot => lsoda_sens_dense_dot
     end type lsoda_t
 
 contains
@@ -663,6 +664,63 @@ contains
         end if
         call interpolate(s, s%zh, s%nsn, t, k, ds, stat)     ! ds as a vector of n ns
     end subroutine lsoda_sens_dense
+
+    !> v(k) = g . s_k(t) for each sensitivity column at t within the last step, from the
+    !! rows of the Nordsieck array where g is not 0 (Horner's scheme on each, the same
+    !! operations as sens_dense's on that row): a record's samples ask for one component
+    !! or a few of the state, not for all n of every column.
+    !!
+    !! g    [in]  (n).
+    !! v    [out] (ns).
+    !! stat [out] STATUS_OK or LSODA_ERR_ILLEGAL_INPUT (no sensitivities, t outside the
+    !!            step, a bad shape).
+    subroutine lsoda_sens_dense_dot(s, t, g, v, stat)
+        class(lsoda_t), intent(in) :: s
+        real(dp), intent(in) :: t
+        real(dp), intent(in) :: g(:)
+        real(dp), intent(out) :: v(:)
+        type(status_t), intent(out) :: stat
+        real(dp) :: tol, tp, sc, acc, x
+        integer :: nz(s%n), nnz, i, j, k, r
+        character(len=200) :: buf
+        v = 0.0_dp
+        stat%code = STATUS_OK
+        if (.not. s%ready .or. s%ns == 0 .or. size(g) /= s%n .or. size(v) /= s%ns) then
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda sens_dense_dot: no '// &
+                'sensitivities, or g is not of n or v not of ns')
+            return
+        end if
+        tol = 100.0_dp*UROUND*(abs(s%tn) + abs(s%hu))
+        tp = s%tn - s%hu
+        if (min(tp, s%tn) - tol > t .or. t > max(tp, s%tn) + tol) then
+            write (buf, '(a,es15.7e3,a,es15.7e3,a,es15.7e3,a)') 'lsoda sens_dense_dot: t = ', &
+                t, ' is outside the last step [', min(tp, s%tn), ', ', max(tp, s%tn), ']'
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
+            return
+        end if
+        nnz = 0
+        do i = 1, s%n
+            if (g(i) /= 0.0_dp) then
+                nnz = nnz + 1
+                nz(nnz) = i
+            end if
+        end do
+        sc = 0.0_dp
+        if (s%h /= 0.0_dp) sc = (t - s%tn)/s%h
+        ! each row g needs, by Horner's scheme (as horner's), then its share of g . s_k
+        do k = 1, s%ns
+            acc = 0.0_dp
+            do i = 1, nnz
+                r = (k - 1)*s%n + nz(i)
+                x = s%zh(r, s%nq + 1)
+                do j = s%nq, 1, -1
+                    x = s%zh(r, j) + sc*x
+                end do
+                acc = acc + g(nz(i))*x
+            end do
+            v(k) = acc
+        end do
+    end subroutine lsoda_sens_dense_dot
 
     ! ------------------------------------------------------------------------------------
     ! Driver level

@@ -30,7 +30,8 @@
 !! - name(): 'lsoda' or 'radau';
 !! - sens_init(sys, s0, stat [, scale, error_control]): forward sensitivities from s0 (n x ns)
 !!   along with the state (below); sens_dense(t, k, ds, stat): them (k = 0) or their
-!!   derivative (k = 1) at t inside the last step.
+!!   derivative (k = 1) at t inside the last step; sens_dense_dot(t, g, v, stat): g . s_k
+!!   for each column at t, when a linear function of the state is all a caller needs.
 !! Failures come back in status_t with the integrator's codes of status's STATUS_TABLE.
 !!
 !! Forward sensitivities.  After init and before the first step, sens_init starts ns
@@ -120,6 +121,7 @@ module ode_system
         procedure(name_i), deferred :: name
         procedure(sens_init_i), deferred :: sens_init
         procedure(sens_dense_i), deferred :: sens_dense
+        procedure :: sens_dense_dot => default_sens_dense_dot
     end type integrator_t
 
     abstract interface
@@ -208,9 +210,29 @@ module ode_system
         end subroutine sens_dense_i
     end interface
 
-    public :: too_much_accuracy, default_sens_point, sens_init_args
+    public :: too_much_accuracy, default_sens_point, sens_init_args, default_sens_dense_dot
 
 contains
+
+    !> v(k) = g . s_k(t), the projection of each sensitivity on g at t inside the last step
+    !! (default: from sens_dense; an integrator may form it from its own representation).
+    !!
+    !! g    [in]  (n) the vector.
+    !! v    [out] (ns) the projections.
+    !! stat [out] as sens_dense.
+    subroutine default_sens_dense_dot(s, t, g, v, stat)
+        class(integrator_t), intent(in) :: s
+        real(dp), intent(in) :: t
+        real(dp), intent(in) :: g(:)
+        real(dp), intent(out) :: v(:)
+        type(status_t), intent(out) :: stat
+        real(dp) :: ds(size(g), size(v))
+        integer :: k
+        call s%sens_dense(t, 0, ds, stat)
+        do k = 1, size(v)
+            v(k) = dot_product(g, ds(:, k))
+        end do
+    end subroutine default_sens_dense_dot
 
     !> The checks every integrator's sens_init makes of its arguments: called after init
     !! and before the first step (ready, not started), s0 of n rows and ns >= 1 columns,

@@ -120,10 +120,9 @@ module record_fit
         logical :: rate = .false.
         real(dp), allocatable :: vals(:)        !! theta4 (rad) or W (rad per unit tau)
         integer :: ns = 0                       !! forward sensitivities carried (0: none)
-        real(dp), allocatable :: dvals(:, :)    !! (0:, ns) the value's change along each
+        real(dp), allocatable :: dvals(:, :)    !! (ns, 0:) the value's change along each
         logical :: shift = .false.              !! the value's rate is asked too
         real(dp), allocatable :: slope(:)       !! (0:) its rate, d value/d tau
-        real(dp), allocatable :: sv(:, :)       !! (NSTATE, ns) the sensitivities at a sample
     contains
         procedure :: take => record_take
     end type record_sink_t
@@ -281,7 +280,6 @@ contains
         sink%rate = rate
         sink%ns = ns
         sink%shift = shift
-        allocate (sink%sv(NSTATE, ns))
         v0 = output_value(rate, y0)
         g0 = output_gradient(rate, y0)
         i0 = n + 1
@@ -298,7 +296,7 @@ contains
             if (rate) dvals(1:i0 - 1, c) = dvals(1:i0 - 1, c) + v0*ds(c)
         end do
         if (i0 > n) return
-        allocate (taus(0:n - i0), sink%vals(0:n - i0), sink%dvals(0:n - i0, ns), &
+        allocate (taus(0:n - i0), sink%vals(0:n - i0), sink%dvals(ns, 0:n - i0), &
                   sink%slope(0:n - i0))
         taus = (t(i0:n) - t0)*s
         if (taus(n - i0) <= 0.0_dp) then
@@ -331,9 +329,9 @@ contains
             do i = i0, n
                 dtau = (t(i) - t0)*ds(c) - s*dt0(c)
                 if (shift) then
-                    dvals(i, c) = (sink%dvals(i - i0, c) + sink%slope(i - i0)*dtau)*sfac
+                    dvals(i, c) = (sink%dvals(c, i - i0) + sink%slope(i - i0)*dtau)*sfac
                 else
-                    dvals(i, c) = sink%dvals(i - i0, c)*sfac
+                    dvals(i, c) = sink%dvals(c, i - i0)*sfac
                 end if
                 if (rate) dvals(i, c) = dvals(i, c) + sink%vals(i - i0)*ds(c)
             end do
@@ -393,26 +391,19 @@ contains
         real(dp), intent(in) :: y(:)            !! chart state there
         type(status_t), intent(out) :: stat
         real(dp) :: g(NSTATE), f(NSTATE)
-        integer :: c
         stat%code = 0
         sink%vals(k) = output_value(sink%rate, y(1:NSTATE))
         if (sink%ns == 0 .and. .not. sink%shift) return
         g = output_gradient(sink%rate, y(1:NSTATE))
         select type (m)
         type is (kane_run_t)
-            if (sink%ns > 0) call m%sens_at(t, sink%sv, stat)
+            if (sink%ns > 0) call m%sens_dot_at(t, g, sink%dvals(:, k), stat)
             if (stat%code == 0 .and. sink%shift) then
                 call m%slope_at(t, f, stat)
                 sink%slope(k) = dot_product(g, f)
             end if
         end select
-        if (stat%code /= 0) then
-            stat%msg = stat%msg//' at tau = '//sci(t)
-            return
-        end if
-        do c = 1, sink%ns
-            sink%dvals(k, c) = dot_product(g, sink%sv(:, c))
-        end do
+        if (stat%code /= 0) stat%msg = stat%msg//' at tau = '//sci(t)
     end subroutine record_take
 
     !> The rig and start with the parameters p of the fit set (I1, c_v, c_q, amplitude), t0

@@ -151,11 +151,10 @@ module bifilar_model
     public :: chart_invariant_gradients
     public :: vertical_rate, vertical_rate_gradient
 
-    !> A point costs about this many tangents' worth for the whole of Z (jacobian_columns'
-    !! one pass, about 5 600 instructions, against 2 100 for one general direction through
-    !! chart_kinematics_tangent and eom_tangent): sens_jv takes Z once the columns asked at
-    !! a point exceed it.
-    integer, parameter :: Z_COST = 3
+    !> The whole of Z (jacobian_columns' one pass, about 5 600 instructions) costs about 2.7
+    !! tangents (2 100 each for one general direction through chart_kinematics_tangent and
+    !! eom_tangent): sens_jv takes Z once the columns asked at a point exceed Z_COST.
+    integer, parameter :: Z_COST = 2
 
 contains
 
@@ -420,7 +419,8 @@ contains
     !! gradg . qddot + gconv = 0.  k = `dependent`, or the largest |gradg| when absent.  The
     !! system is solved through its structure (constrained_solve); the factor stays in eo
     !! (for the Jacobian).
-    subroutine solve_eq38(jv, cv, wb, cwb, omb, inertia, gradg, gconv, eo, stat, dependent)
+    subroutine solve_eq38(jv, cv, wb, cwb, omb, inertia, gradg, gconv, eo, stat, dependent, &
+                          active)
         real(dp), intent(in) :: jv(3, 5), cv(3)         !! R*: partial velocities, a at qddot = 0
         real(dp), intent(in) :: wb(3, 5), cwb(3), omb(3)    !! the same for the rotation, and
                                                             !! omega, in principal axes
@@ -429,6 +429,8 @@ contains
         type(eom_t), intent(inout) :: eo
         type(status_t), intent(out) :: stat
         integer, intent(in), optional :: dependent
+        real(dp), intent(in), optional :: active(3)     !! an active torque on the body (the
+                                                        !! damping; principal axes)
         real(dp) :: jvi(3, 4), wbi(3, 4), u(4), force(3), torque(3), t0
         integer :: k, r, a, ia
         eo%qdd = 0.0_dp
@@ -466,6 +468,7 @@ contains
         force = -(cv + t0*jv(:, k))
         force(3) = force(3) - 1.0_dp            ! g = 1
         torque = inertia_torque(inertia, cwb + t0*wb(:, k), omb)
+        if (present(active)) torque = torque + active
         call project(4, jvi, wbi, force, torque, u)
         call generalized_inertia(4, jvi, wbi, inertia, eo%chol)
         call la_small_chol(4, eo%chol, stat)
@@ -534,36 +537,13 @@ contains
         end if
         call chart_kinematics(p, y, k, sc_lambda)
         call constraint_terms(p, y, k, eo%gradg, eo%vd, gconv)
-        call solve_eq38(k%jv, k%cv, k%wb, k%cwb, k%omb, p%inertia, eo%gradg, gconv, eo, stat)
         if (p%c_v /= 0.0_dp .or. p%c_q /= 0.0_dp) then
-            if (stat%code == 0) call add_torque(eo, k%wb, damping_torque(p, k%omega, k%b))
+            call solve_eq38(k%jv, k%cv, k%wb, k%cwb, k%omb, p%inertia, eo%gradg, gconv, eo, &
+                            stat, active=damping_torque(p, k%omega, k%b))
+        else
+            call solve_eq38(k%jv, k%cv, k%wb, k%cwb, k%omb, p%inertia, eo%gradg, gconv, eo, stat)
         end if
     end subroutine chart_solve
-
-    !> Add to the solution of eq. (38) in eo the accelerations an active torque on the body
-    !! causes (its generalized forces Wb(:,r) . torque through the partial angular
-    !! velocities of the independent speeds, eq. (31), solved with the same factor): eq. (38)
-    !! is linear in its right-hand side, and the torque does not depend on the accelerations.
-    pure subroutine add_torque(eo, wb, torque)
-        type(eom_t), intent(inout) :: eo       !! solved system (solve_eq38)
-        real(dp), intent(in) :: wb(3, 5)        !! partial angular velocities (principal axes)
-        real(dp), intent(in) :: torque(3)       !! the torque (principal axes, over m g b')
-        real(dp) :: e(5), u(4)
-        integer :: a, ia
-        do a = 1, 5
-            e(a) = dot_product(wb(:, a), torque)
-        end do
-        do a = 1, 4
-            ia = eo%ind(a)
-            u(a) = e(ia) + eo%gam(ia)*e(eo%k)
-        end do
-        call la_small_chol_solve(4, eo%chol, u)
-        do a = 1, 4
-            ia = eo%ind(a)
-            eo%qdd(ia) = eo%qdd(ia) + u(a)
-            eo%qdd(eo%k) = eo%qdd(eo%k) + eo%gam(ia)*u(a)
-        end do
-    end subroutine add_torque
 
     !> The damping torque on the body about the vertical (&damping), along the principal
     !! axes, over m g b': M = -(c_v W + c_q |W| W) n3 with W = omega . n3 per unit tau, so
@@ -1173,8 +1153,7 @@ contains
         vd = matmul(jd, thd)
         gconv = 2.0_dp*(dot_product(vd, vd) + dot_product(d, cd))
         call solve_eq38(jv, cv, matmul(b, jw), matmul(b, cw), matmul(b, omega), p%inertia, &
-                        gradg, gconv, eo, stat, dependent=5)
-        if (stat%code == 0) call add_torque(eo, matmul(b, jw), damping_torque(p, omega, b))
+                        gradg, gconv, eo, stat, dependent=5, active=damping_torque(p, omega, b))
         thdd = eo%qdd
     end subroutine paper_accelerations
 
@@ -1318,10 +1297,9 @@ contains
         call chart_kinematics(p, y, k)
         if (want%accelerations) then
             call constraint_terms(p, y, k, eo%gradg, eo%vd, gconv)
-            call solve_eq38(k%jv, k%cv, k%wb, k%cwb, k%omb, p%inertia, eo%gradg, gconv, eo, stat)
+            call solve_eq38(k%jv, k%cv, k%wb, k%cwb, k%omb, p%inertia, eo%gradg, gconv, eo, &
+                            stat, active=damping_torque(p, k%omega, k%b))
             if (stat%code /= 0) return
-            if (p%c_v /= 0.0_dp .or. p%c_q /= 0.0_dp) &
-                call add_torque(eo, k%wb, damping_torque(p, k%omega, k%b))
             mo%qdd = eo%qdd
             mo%astar = matmul(k%jv, mo%qdd) + k%cv
             mo%alpha = matmul(k%jw, mo%qdd) + k%cw

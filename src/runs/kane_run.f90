@@ -34,6 +34,7 @@ module kane_run
         procedure :: dense => kane_dense
         procedure :: sens_at => kane_sens_at
         procedure :: slope_at => kane_slope_at
+        procedure :: sens_dot_at => kane_sens_dot_at
     end type kane_run_t
 
     public :: kane_run_start, model_checks, tighter_rtol, angle_difference, sway_of, global_rtol
@@ -121,6 +122,24 @@ contains
             call m%solver%sens_dense(min(t, m%t_cur), 0, s, stat)
         end if
     end subroutine kane_sens_at
+
+    !> g . s_k(t) for each forward sensitivity s_k at t (as sens_at).
+    subroutine kane_sens_dot_at(m, t, g, v, stat)
+        class(kane_run_t), intent(in) :: m
+        real(dp), intent(in) :: t
+        real(dp), intent(in) :: g(:)            !! (NSTATE)
+        real(dp), intent(out) :: v(:)           !! (ns)
+        type(status_t), intent(out) :: stat
+        integer :: k
+        stat%code = 0
+        if (m%nsteps == 0) then
+            do k = 1, size(v)
+                v(k) = dot_product(g, m%s0(:, k))
+            end do
+        else
+            call m%solver%sens_dense_dot(min(t, m%t_cur), g, v, stat)
+        end if
+    end subroutine kane_sens_dot_at
 
     !> The state's derivative f(y) at t (the right-hand side at the start before any step,
     !! the derivative of the integrator's dense output within the last step).
