@@ -896,40 +896,51 @@ contains
         real(dp), intent(in) :: y(:)            !! chart state
         real(dp), intent(out) :: dfdp(:, :)     !! (NSTATE, ns)
         type(status_t), intent(out) :: stat
-        type(sens_dir_t) :: d
-        real(dp) :: dtq(3), e(5), dq(5), w
-        integer :: j
+        real(dp) :: dtq(3), e(5), alpha(3), w
+        integer :: j, r
+        logical :: geometry
         if (.false.) dfdp(1, 1) = t
-        dfdp = 0.0_dp
         call refresh_lambda(sys)
         sys%sp_y = y(1:NSTATE)
         sys%sp_have_z = .false.
         sys%sp_cols = 0
+        dfdp(1:5, :) = 0.0_dp
         call chart_solve(sys%p, y, sys%sp_k, sys%sp_eo, stat, sys%sc_lambda)
-        if (stat%code /= 0) return
+        if (stat%code /= 0) then
+            dfdp(6:10, :) = 0.0_dp
+            return
+        end if
         call tangent_setup(sys%p, sys%sp_k, sys%sp_eo, sys%sp_a, sys%sp_tq, sys%sp_mu)
-        if (.not. allocated(sys%dirs)) return
         associate (k => sys%sp_k, eo => sys%sp_eo, p => sys%p)
             w = k%omega(3)
-            do j = 1, min(size(dfdp, 2), size(sys%dirs))
-                d = sys%dirs(j)
-                if (any([d%big_l, d%big_lp, d%big_b, d%r, d%lambda] /= 0.0_dp)) then
-                    call param_tangent(p, y, k, eo, sys%sp_a, sys%sp_mu, d, &
-                                       dfdp(6:10, j))
+            alpha = matmul(k%wb, eo%qdd) + k%cwb
+            do j = 1, size(dfdp, 2)
+                if (.not. allocated(sys%dirs)) then
+                    dfdp(6:10, j) = 0.0_dp
+                    cycle
+                else if (j > size(sys%dirs)) then
+                    dfdp(6:10, j) = 0.0_dp
                     cycle
                 end if
-                ! the moments and the damping alone: the forces change, the kinematics not
-                dtq = 0.0_dp
-                if (any(d%inertia /= 0.0_dp)) dtq = dtq - d%inertia*(matmul(k%wb, eo%qdd) &
-                    + k%cwb) - cross(k%omb, d%inertia*k%omb)
-                if (d%c_v /= 0.0_dp .or. d%c_q /= 0.0_dp) dtq = dtq - (d%c_v*w + &
-                    d%c_q*abs(w)*w)*k%b(:, 3)
-                dq = 0.0_dp
-                if (any(dtq /= 0.0_dp)) then
-                    call project(5, k%jv, k%wb, [0.0_dp, 0.0_dp, 0.0_dp], dtq, e)
-                    call constrained_solve(eo, e, 0.0_dp, dq)
-                end if
-                dfdp(6:10, j) = dq
+                associate (d => sys%dirs(j))
+                    geometry = d%big_l /= 0.0_dp .or. d%big_lp /= 0.0_dp .or. &
+                               d%big_b /= 0.0_dp .or. d%r /= 0.0_dp .or. d%lambda /= 0.0_dp
+                    if (geometry) then
+                        call param_tangent(p, y, k, eo, sys%sp_a, sys%sp_mu, d, dfdp(6:10, j))
+                        cycle
+                    end if
+                    ! the moments and the damping alone: the forces change, the kinematics not
+                    dtq = -d%inertia*alpha - cross(k%omb, d%inertia*k%omb) &
+                          - (d%c_v*w + d%c_q*abs(w)*w)*k%b(:, 3)
+                    if (all(dtq == 0.0_dp)) then
+                        dfdp(6:10, j) = 0.0_dp
+                        cycle
+                    end if
+                    do r = 1, 5
+                        e(r) = (k%wb(1, r)*dtq(1) + k%wb(2, r)*dtq(2)) + k%wb(3, r)*dtq(3)
+                    end do
+                    call constrained_solve(eo, e, 0.0_dp, dfdp(6:10, j))
+                end associate
             end do
         end associate
     end subroutine bifilar_sens_point
