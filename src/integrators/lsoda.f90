@@ -1849,7 +1849,7 @@ contains
         real(dp), intent(in) :: hl0
         type(status_t), intent(inout) :: stat
         type(status_t) :: lst
-        call sys%sens_jv(s%seye, s%sjm, stat)
+        call sys%sens_jacobian(s%sjm, stat)
         if (stat%code /= STATUS_OK) return
         s%sjm = s%seye - hl0*s%sjm
         s%nsdir = s%nsdir + 1

@@ -44,8 +44,9 @@
 !! state's steps are not changed by them: the sensitivities take no part in the error
 !! control unless sens_init asks for it (error_control = .true.).  The system gives the
 !! terms through sens_point (df/dp at a point; default 0, sensitivities of the initial
-!! conditions only) and sens_jv (products J v at that point; default from the analytic
-!! Jacobian, else forward differences of the right-hand side).
+!! conditions only), sens_jv (products J v at that point; default from the analytic
+!! Jacobian, else forward differences of the right-hand side) and sens_jacobian (J itself
+!! there; default the products with the columns of I).
 module ode_system
     use kinds, only: dp
     use status, only: status_t, set_error, ERR_NUMERIC, LSODA_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_TOO_MUCH_ACCURACY, &
@@ -65,6 +66,7 @@ module ode_system
         procedure :: solve_iteration => no_solve_iteration
         procedure :: sens_point => default_sens_point
         procedure :: sens_jv => default_sens_jv
+        procedure :: sens_jacobian => default_sens_jacobian
     end type ode_system_t
 
     abstract interface
@@ -371,6 +373,20 @@ contains
         end if
         jv = matmul(sys%sens_jac, v)
     end subroutine default_sens_jv
+
+    !> Default J at the point of the last sens_point: the products with I's columns.
+    subroutine default_sens_jacobian(sys, jac, stat)
+        class(ode_system_t), intent(inout) :: sys
+        real(dp), intent(out) :: jac(:, :)       !! (n, n)
+        type(status_t), intent(out) :: stat
+        real(dp) :: eye(size(jac, 1), size(jac, 1))
+        integer :: i
+        eye = 0.0_dp
+        do i = 1, size(jac, 1)
+            eye(i, i) = 1.0_dp
+        end do
+        call sys%sens_jv(eye, jac, stat)
+    end subroutine default_sens_jacobian
 
     !> True when stat is an integrator's refusal of a tolerance below what the machine
     !! precision allows (LSODA), or a step size that fell below the roundoff of t (Radau).

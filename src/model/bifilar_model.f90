@@ -144,6 +144,7 @@ module bifilar_model
         procedure :: last_evaluation
         procedure :: sens_point => bifilar_sens_point
         procedure :: sens_jv => bifilar_sens_jv
+        procedure :: sens_jacobian => bifilar_sens_jacobian
     end type bifilar_t
 
     public :: chart_state, paper_angles, chart_accelerations, paper_accelerations, evaluate
@@ -1055,6 +1056,21 @@ contains
             jv(6:10, c) = acc
         end do
     end subroutine z_products
+
+    !> Z itself at the point of the last sens_point (ode_system's sens_jacobian), formed
+    !! there once (jacobian_columns).
+    subroutine bifilar_sens_jacobian(sys, jac, stat)
+        class(bifilar_t), intent(inout) :: sys
+        real(dp), intent(out) :: jac(:, :)      !! (NSTATE, NSTATE)
+        type(status_t), intent(out) :: stat
+        stat%code = 0
+        if (.not. sys%sp_have_z) then
+            call jacobian_columns(sys%p, sys%sp_y, sys%sp_k, sys%sp_eo, sys%sp_a, sys%sp_tq, &
+                                  sys%sp_mu, sys%sp_z)
+            sys%sp_have_z = .true.
+        end if
+        jac = sys%sp_z
+    end subroutine bifilar_sens_jacobian
 
     !> W = omega . n3, the body's rate about the vertical (per unit tau), of a chart state:
     !! -sin(theta5) theta1' - theta4' (eq. (14)).
