@@ -23,7 +23,7 @@ submodule (identify) identify_impl
     use stats, only: coverage_factor, welch_satterthwaite, NU_INFINITE
     use record_fit, only: record_fit_t, record_mc_task_t, fit_problem, fit_record, covariance, &
         input_sensitivities, record_mc_task, explain_fit_failure, huber_weights, &
-        correlation_time, PARAM_NAMES, P_BIAS
+        correlation_time, fresh_jacobian, PARAM_NAMES, P_BIAS
     use period_inversion, only: period_fit_t, invert_periods, period_budget, &
                                 period_monte_carlo, linear_inertia, is_torsion_rig, &
                                 period_mc_task, period_mc_task_t, rig_period_s, &
@@ -689,6 +689,12 @@ contains
         ! differences), the covariance
         allocate (jac(m, np))
         if (prob%has_jacobian()) then
+            ! the fit's last Jacobian, at the estimate (computed there once more when the
+            ! fit ended on one taken again from an earlier point)
+            if (.not. prob%jac_fresh) then
+                call fresh_jacobian(prob, fit%p, fit%r, fit%jac, stat)
+                r%evaluations = r%evaluations + 1
+            end if
             jac = fit%jac
         else
             call lsq_jacobian(prob, fit%p, fit%r, h, jac, stat, central=.true.)

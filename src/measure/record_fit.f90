@@ -94,6 +94,13 @@ module record_fit
         !> The Gauss-Newton gain at the last whole-record Jacobian (record_residual_jacobian):
         !! the square of the step still to go, in standard errors
         real(dp) :: whole_gain = huge(1.0_dp)
+        !> The model's derivatives (the fit's columns) at the last whole-record point where
+        !! they were computed, and the Gauss-Newton gain there: the Jacobian a next point
+        !! within REUSE_GAIN of it takes again (model_values)
+        real(dp), allocatable :: jac_dv(:, :)
+        real(dp) :: jac_gain = huge(1.0_dp)
+        !> The last residual_jacobian's Jacobian was computed at its point (not taken again)
+        logical :: jac_fresh = .true.
         !> The last run of the model (model_cache_t): an evaluation of the same model (the
         !! same rig, start and release) within its samples takes it instead of a run
         type(model_cache_t) :: cache
@@ -148,7 +155,7 @@ module record_fit
     public :: record_model, record_model_sens, fit_problem, fit_record, covariance
     public :: input_sensitivity, input_sensitivities
     public :: record_mc_task, explain_fit_failure, make_record, find_release
-    public :: huber_weights, correlation_time, apply_parameters
+    public :: huber_weights, correlation_time, apply_parameters, fresh_jacobian
 
     real(dp), parameter, public :: H_REL = 1.0e-5_dp        !! relative difference step of the model
     real(dp), parameter :: DAMP_REF = 1.0e-3_dp     !! scale of c_v, c_q (model's units)
@@ -157,6 +164,11 @@ module record_fit
     !> A whole-record run after one whose Gauss-Newton gain is at most this carries the
     !! budget's inputs (model_values)
     real(dp), parameter :: CARRY_GAIN = 1.0_dp
+    !> A whole-record evaluation that does not carry the budget takes the Jacobian of the
+    !! last whole-record point again when that point's Gauss-Newton gain was at most this
+    !! (the step to it within 100 standard errors: over so short a step the model's
+    !! derivatives change in their fourth digit or later); see model_values
+    real(dp), parameter :: REUSE_GAIN = 1.0e4_dp
     !> The contraction rate a Monte Carlo refit's first step is taken to have (the rates
     !! measured on the example records are 0.005 ... 0.1)
     real(dp), parameter :: MC_RATE = 0.25_dp
@@ -481,9 +493,11 @@ contains
         real(dp) :: bias
         real(dp), allocatable :: vals(:), dv(:, :)
         integer :: i0, i1, j, c
+        logical :: fresh
         r = 0.0_dp
         jac = 0.0_dp
-        call model_values(prob, p, .true., vals, dv, bias, stat)
+        call model_values(prob, p, .true., vals, dv, bias, stat, fresh)
+        prob%jac_fresh = fresh
         if (stat%code /= 0) return
         i0 = prob%ifirst
         i1 = prob%nuse
@@ -501,8 +515,27 @@ contains
             call set_error(stat, ERR_NUMERIC, 'non-finite model values')
             return
         end if
-        if (i1 == size(prob%rec%t)) prob%whole_gain = gauss_newton_gain(r, jac)
+        if (i1 == size(prob%rec%t)) then
+            prob%whole_gain = gauss_newton_gain(r, jac)
+            if (fresh) then
+                prob%jac_gain = prob%whole_gain
+                prob%jac_dv = dv
+            end if
+        end if
     end subroutine record_residual_jacobian
+
+    !> The residuals and the Jacobian at p computed there (carrying the budget's inputs):
+    !! for a fit that ended on a Jacobian taken again from an earlier point (jac_fresh
+    !! false), whose covariance and budget need it at the estimate.
+    subroutine fresh_jacobian(prob, p, r, jac, stat)
+        type(record_fit_t), intent(inout) :: prob
+        real(dp), intent(in) :: p(:)
+        real(dp), intent(out) :: r(:), jac(:, :)
+        type(status_t), intent(out) :: stat
+        prob%whole_gain = 0.0_dp
+        prob%cache%valid = .false.
+        call record_residual_jacobian(prob, p, r, jac, stat)
+    end subroutine fresh_jacobian
 
     !> What the Gauss-Newton step of (r, jac) could still lower the sum of squares S by,
     !! over s^2 = S / (m - n): the square of that step in standard errors (huge when it
@@ -527,13 +560,14 @@ contains
     !! was within CARRY_GAIN (one standard error: the fit converges at the next point, as a
     !! rule) carries the budget's inputs' too (prob%x with u > 0), unless the sensitivities
     !! are in the error control (there a column changes the steps of the others).
-    subroutine model_values(prob, p, derivs, vals, dv, bias, stat)
+    subroutine model_values(prob, p, derivs, vals, dv, bias, stat, fresh)
         type(record_fit_t), intent(inout) :: prob
         real(dp), intent(in) :: p(:)
         logical, intent(in) :: derivs
         real(dp), allocatable, intent(out) :: vals(:), dv(:, :)
         real(dp), intent(out) :: bias
         type(status_t), intent(out) :: stat
+        logical, intent(out), optional :: fresh     !! dv computed at p (not taken again)
         type(rig_t) :: rg
         type(start_t) :: st
         real(dp) :: t0
@@ -541,8 +575,9 @@ contains
         character(len=16), allocatable :: names(:)
         integer(int8), allocatable :: key(:)
         integer :: i0, i1, j, m, nfit, nx
-        logical :: whole
+        logical :: whole, reuse
         stat%code = 0
+        if (present(fresh)) fresh = .true.
         call apply_parameters(prob, p, rg, st, t0, bias)
         i0 = prob%ifirst
         i1 = prob%nuse
@@ -575,10 +610,26 @@ contains
         end associate
         whole = i1 == size(prob%rec%t)
         nx = 0
-        if (derivs .and. whole .and. prob%whole_gain <= CARRY_GAIN .and. .not. &
-            prob%acc%sens_error_control .and. allocated(prob%x)) then
-            call budget_columns(prob, prob%x, names, xs)
-            nx = size(names) - nfit
+        reuse = .false.
+        if (derivs .and. whole .and. .not. prob%acc%sens_error_control) then
+            if (prob%whole_gain <= CARRY_GAIN .and. allocated(prob%x)) then
+                call budget_columns(prob, prob%x, names, xs)
+                nx = size(names) - nfit
+            else if (allocated(prob%jac_dv) .and. prob%jac_gain <= REUSE_GAIN) then
+                reuse = size(prob%jac_dv, 1) == m .and. size(prob%jac_dv, 2) == nfit
+            end if
+        end if
+        if (reuse) then
+            ! the model alone; its derivatives those of the last whole-record point
+            allocate (vals(m), dall(m, 0))
+            call record_model_sens(rg, st, prob%acc, prob%rec%t(i0:i1), t0, prob%rate, &
+                                   names(1:0), xs(1:0), vals, dall, stat)
+            prob%cache%valid = .false.
+            if (stat%code /= 0) return
+            dv = prob%jac_dv
+            if (present(fresh)) fresh = .false.
+            prob%cache = model_cache_t(.true., key, i1, 0, 0, vals, dall)
+            return
         end if
         allocate (vals(m), dall(m, size(names)))
         call record_model_sens(rg, st, prob%acc, prob%rec%t(i0:i1), t0, prob%rate, names, xs, &
