@@ -312,20 +312,31 @@ contains
     end subroutine periods_runs
 
     !> The model runs over a whole record a fit of np parameters asks for: the fit on
-    !! growing windows (about twice the whole record's runs), Huber's refits, the Jacobian
-    !! and the inputs' sensitivities, the Monte Carlo's refits over the threads.  what: the
-    !! work in words, for a run of `one` seconds over `span` s of `periods` periods.
+    !! growing windows, Huber's refits, the Jacobian and the inputs' sensitivities, the
+    !! Monte Carlo's refits over the threads.  With differences of whole runs (&integration
+    !! sensitivities = 'differences') an evaluation of the fit is np + 1 runs and the
+    !! windows about twice the whole record's; with forward sensitivities one run carrying
+    !! np columns (each about 0.4 of a plain run's work), the budget's columns ride on the
+    !! fit's last run, and a Monte Carlo refit takes about two plain runs.  what: the work in
+    !! words, for a run of `one` seconds over `span` s of `periods` periods.
     subroutine record_runs(d, np, span, periods, one, runs, what)
         type(deck_t), intent(in) :: d
         integer, intent(in) :: np
         real(dp), intent(in) :: span, periods, one
         real(dp), intent(out) :: runs
         character(len=:), allocatable, intent(out) :: what
+        real(dp), parameter :: COLUMN = 0.4_dp
         integer :: nu
         nu = inputs_with_u(deck_inputs(d, .true.), .false.)
-        runs = 2.0_dp*ITER_FIT*(np + 1) + 2*np + 2*nu
-        if (trim(d%loss) == 'huber') runs = runs + 3.0_dp*ITER_FIT*(np + 1)
-        runs = runs + real(d%monte_carlo, dp)*2*ITER_REFIT/max(1, omp_get_max_threads())
+        if (trim(d%sensitivities) == 'differences') then
+            runs = 2.0_dp*ITER_FIT*(np + 1) + 2*np + 2*nu
+            if (trim(d%loss) == 'huber') runs = runs + 3.0_dp*ITER_FIT*(np + 1)
+            runs = runs + real(d%monte_carlo, dp)*2*ITER_REFIT/max(1, omp_get_max_threads())
+        else
+            runs = ITER_FIT*(1.0_dp + COLUMN*np) + COLUMN*nu
+            if (trim(d%loss) == 'huber') runs = runs + 3.0_dp*2.0_dp*(1.0_dp + COLUMN*np)
+            runs = runs + real(d%monte_carlo, dp)*2.0_dp/max(1, omp_get_max_threads())
+        end if
         what = 'the model over the record''s '//sci(span, 3)//' s (about '// &
             itoa(nint(min(periods, 1.0e9_dp)))//' periods; '//sci(one, 1)//' s a run), '// &
             'about '//sci(runs, 1)//' times (the fit of '//itoa(np)//' parameter'// &
