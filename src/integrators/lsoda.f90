@@ -32,8 +32,9 @@
 !!       (I - h l0 J) a = h (J z_pred + df/dp) - z'_pred h,   s_n = z_pred + l0 a,
 !!   with the exact products J v and df/dp of the system (ode_system's sens_point, sens_jv).
 !!   A BDF step solves it with its own Newton matrix (the chord iteration, residuals with the
-!!   exact J); an Adams step by its own functional iteration.  An iteration that does not
-!!   contract fast enough ends in a direct solve with I - h l0 J factored anew.  The
+!!   exact J); an Adams step by a chord iteration with the inverse of the sensitivities' own
+!!   I - h l0 J (every column in one product).  An iteration that does not contract fast
+!!   enough ends in a direct solve with I - h l0 J formed and inverted anew.  The
 !!   sensitivities do not change the state's steps unless they are asked into the error test
 !!   (error_control): then the step's error norm and the order selection include theirs.
 !!
@@ -1669,14 +1670,15 @@ contains
     !!     (I - h l0 J) sacor = h (J zh1 + df/dp) - zh2
     !! (zh predicted; J and df/dp exact at (tn, y)), solved by a chord iteration whose
     !! residuals use the exact J: a BDF step's iteration matrix is its Newton matrix, an Adams
-    !! step's the sensitivities' own I - h l0 J (kept by the Newton matrix's rules: a new one
-    !! every MSBP steps or when h l0 changed by more than CCMAX).  The iteration stops, as
-    !! the state's corrector, when a correction times min(1, 1.5 rate) (the iteration's rate,
-    !! measured and kept from step to step) is below SENS_CONV times the state's
-    !! convergence test, in the sensitivities' weights; one that contracts too slowly ends in
-    !! a direct solve with I - h l0 J factored at the point.  In the error control an Adams
-    !! step uses its own functional iteration instead (to SENS_CONV_EC of the state's test):
-    !! there the columns are many, and Z at the point, which the products use, is at hand.  The sensitivities are thus the solution of the
+    !! step's the inverse of the sensitivities' own I - h l0 J (sens_matrix; kept by the
+    !! Newton matrix's rules: a new one every MSBP steps or when h l0 changed by more than
+    !! CCMAX).  The iteration stops, as the state's corrector, when a correction times
+    !! min(1, 1.5 rate) (the iteration's rate, measured and kept from step to step) is below
+    !! SENS_CONV times the state's convergence test, in the sensitivities' weights; one that
+    !! contracts too slowly ends in a direct solve with I - h l0 J formed at the point.  In
+    !! the error control an Adams step uses its own functional iteration instead (to
+    !! SENS_CONV_EC of the state's test): there the columns are many, and Z at the point,
+    !! which the products use, is at hand.  The sensitivities are thus the solution of the
     !! step's formula to that tolerance whether or not they take part in the error test.
     subroutine sens_correct(s, sys, stat)
         type(lsoda_t), intent(inout) :: s

@@ -19,9 +19,17 @@
 !! moves the scaled pendulum (its direction, sens_dir_t, from central differences of
 !! make_pendulum, which is algebraic), the start (central differences of start_state: the
 !! initial condition of its sensitivity), the time scale sqrt(g/b') and the release time t0;
-!! the last two through the motion's own direction f(y), itself a sensitivity started from
-!! f(y0).  With 'differences' the Jacobian and the inputs' sensitivities are differences of
-!! whole runs, as before.
+!! the last two move the samples along the motion, f(y) from the integrator's dense output.
+!! With 'differences' the Jacobian and the inputs' sensitivities are differences of whole
+!! runs, as before.
+!!
+!! The runs a fit makes (model_values): the model is a function of the rig, the start and
+!! the release, so the last run is kept and an evaluation of the same model reuses it; the
+!! fit's run of the whole record after one within a standard error of its minimum carries
+!! the budget's inputs too (the fit ends there as a rule, and the budget then needs no run
+!! of its own); a whole-record run that does not carry them takes the Jacobian of the last
+!! whole-record point again when the step from it was short (within 100 standard errors:
+!! the model alone is run), and the Jacobian at the estimate is always computed there.
 module record_fit
     use, intrinsic :: iso_fortran_env, only: int8, int64
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
