@@ -9,8 +9,8 @@
 #                   installs OpenMPI when run as root, else prints the command and stops
 #   make run        run every deck in input/, write output/, draw plots/*.png
 #   make report     output/report.md (paper's claims against ours)
-#   make bench      integrator, scene, work-precision, elastic-cable, speed, design and MPI
-#                   benchmarks
+#   make bench      integrator, scene, work-precision, elastic-cable, speed, design, record
+#                   Monte Carlo and MPI benchmarks
 #                   (output/bench_*.dat, plots/work_precision_elastic.png; the speed figures
 #                   count instructions with valgrind --tool=callgrind; the MPI figures need
 #                   OpenMPI: make mpi)
@@ -210,6 +210,8 @@ bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench
 	$(BIN)/bifilar tests/bench/chart_cylinder.nml --out build/bench 2>/dev/null
 	@echo "60 x 6 rig design (input/box_design.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}: under 20 s on 2 cores):"
 	$(BIN)/bifilar input/box_design.nml --out build/bench 2>/dev/null
+	@echo "a record fit with 200 Monte Carlo refits (input/more/identify_record_mc.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}: the refits' wall time, under 1 s on 2 cores):"
+	$(BIN)/bifilar input/more/identify_record_mc.nml --out build/bench 2>/dev/null
 	@if command -v mpif90 >/dev/null 2>&1; then \
 	  $(MAKE) --no-print-directory MPI=1 $(BIN)/bifilar_mpi $(BIN)/sweep_probe_mpi; fi
 	@echo "MPI: strong scaling of the 60 x 45 chart and of identify's Monte Carlo, the cost of the chart's points, the model of 1000 x 1000:"

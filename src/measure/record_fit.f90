@@ -180,6 +180,10 @@ module record_fit
     !> The contraction rate a Monte Carlo refit's first step is taken to have (the rates
     !! measured on the example records are 0.005 ... 0.1)
     real(dp), parameter :: MC_RATE = 0.25_dp
+    !> A Monte Carlo refit ends when its error is below this part of each parameter's u: an
+    !! error e of each sample adds e^2 to the samples' variance, 1e-4 of u^2, where 200
+    !! samples know their variance to 10 %
+    real(dp), parameter :: MC_TOL = 1.0e-2_dp
 
 contains
 
@@ -1207,8 +1211,8 @@ contains
     !! of the seed, then the refit by Gauss-Newton with the estimate's Jacobian, from the
     !! sample's first-order estimate (forward sensitivities: the estimate moved by the
     !! parameters' sensitivities to the inputs drawn and by J^+ of the values' noise) or from
-    !! the estimate itself, until the error left is below 1e-3 u of each parameter (the last
-    !! step, times the iteration's contraction); est: the sample's parameters (I1 first).
+    !! the estimate itself, until the error left is below MC_TOL u of each parameter (the
+    !! last step, times the iteration's contraction); est: the sample's parameters (I1 first).
     !! A failed refit: ERR_NUMERIC naming the sample.
     subroutine record_mc_point(self, k, est, stat)
         class(record_mc_task_t), intent(in) :: self
@@ -1249,7 +1253,7 @@ contains
                           q%hw(i0:i1), dp_, stat)
             if (stat%code == 0) p = p + dp_ + matmul(self%dpdx, dx)
         end if
-        ! each step measured against its tolerance, 1e-3 u of its parameter; the iteration
+        ! each step measured against its tolerance, MC_TOL u of its parameter; the iteration
         ! contracts (the Jacobian is the estimate's, not the sample's): the error left after
         ! a step of size d is below rate/(1 - rate) d, rate measured from the last two steps
         ! (MC_RATE before there are two)
@@ -1261,7 +1265,7 @@ contains
             call la_lstsq(self%jac, -r, dp_, stat)
             if (stat%code /= 0) exit
             p = p + dp_
-            d = maxval(abs(dp_)/(1.0e-3_dp*self%u_p + 1.0e-14_dp*abs(p) + tiny(1.0_dp)))
+            d = maxval(abs(dp_)/(MC_TOL*self%u_p + 1.0e-14_dp*abs(p) + tiny(1.0_dp)))
             rate = MC_RATE
             if (it > 1) rate = d/max(dprev, tiny(1.0_dp))
             if (d <= 1.0_dp .or. (rate < 0.5_dp .and. rate/(1.0_dp - rate)*d <= 1.0_dp)) then
