@@ -172,6 +172,19 @@ contains
                 err = maxval(abs(sv - ex))/maxval(abs(ex))
                 call t%check_close('sensitivities: dense output, '//trim(label), &
                                    1.0_dp + err, 1.0_dp, 1.0e-5_dp)
+                ! the projections g . s_k (sens_dense_dot: LSODA's own, Radau's by default)
+                block
+                    real(dp) :: g(3), v(2), v2(2)
+                    g = [0.7_dp, 0.0_dp, -1.3_dp]
+                    call s%sens_dense_dot(tm, g, v, st)
+                    v2 = matmul(g, sv)
+                    call t%check_close('sensitivities: g . s_k inside the step = g . the '// &
+                                       'dense output, '//trim(label), 1.0_dp + &
+                                       maxval(abs(v - v2))/maxval(abs(v2)), 1.0_dp, 1.0e-14_dp)
+                    call s%sens_dense_dot(stt%t_current + 2.0_dp*abs(stt%h_last), g, v, st)
+                    call t%check('sensitivities: g . s_k beyond the step refused, '// &
+                                 trim(label), st%code /= 0)
+                end block
                 ! out of place: a wrong shape is refused
                 block
                     real(dp) :: bad(3, 3)

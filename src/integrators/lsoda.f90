@@ -681,9 +681,8 @@ contains
         real(dp), intent(in) :: g(:)
         real(dp), intent(out) :: v(:)
         type(status_t), intent(out) :: stat
-        real(dp) :: tol, tp, sc, acc, x
+        real(dp) :: sc, acc, x
         integer :: nz(s%n), nnz, i, j, k, r
-        character(len=200) :: buf
         v = 0.0_dp
         stat%code = STATUS_OK
         if (.not. s%ready .or. s%ns == 0 .or. size(g) /= s%n .or. size(v) /= s%ns) then
@@ -691,14 +690,8 @@ contains
                 'sensitivities, or g is not of n or v not of ns')
             return
         end if
-        tol = 100.0_dp*UROUND*(abs(s%tn) + abs(s%hu))
-        tp = s%tn - s%hu
-        if (min(tp, s%tn) - tol > t .or. t > max(tp, s%tn) + tol) then
-            write (buf, '(a,es15.7e3,a,es15.7e3,a,es15.7e3,a)') 'lsoda sens_dense_dot: t = ', &
-                t, ' is outside the last step [', min(tp, s%tn), ', ', max(tp, s%tn), ']'
-            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
-            return
-        end if
+        call check_in_step(s, t, 'lsoda sens_dense_dot', stat)
+        if (stat%code /= STATUS_OK) return
         nnz = 0
         do i = 1, s%n
             if (g(i) /= 0.0_dp) then
@@ -1909,7 +1902,7 @@ contains
         integer, intent(in) :: k
         real(dp), intent(out) :: dky(m)
         type(status_t), intent(out) :: stat
-        real(dp) :: tp, tol, sc
+        real(dp) :: sc
         character(len=200) :: buf
         if (k < 0 .or. k > s%nq) then
             dky = 0.0_dp
@@ -1918,19 +1911,34 @@ contains
             call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
             return
         end if
-        tol = 100.0_dp*UROUND*(abs(s%tn) + abs(s%hu))
-        tp = s%tn - s%hu
-        if (min(tp, s%tn) - tol > t .or. t > max(tp, s%tn) + tol) then
+        call check_in_step(s, t, 'lsoda dense', stat)
+        if (stat%code /= STATUS_OK) then
             dky = yh(:, 1)
-            write (buf, '(a,es15.7e3,a,es15.7e3,a,es15.7e3,a)') 'lsoda dense: t = ', t, &
-                ' is outside the last step [', min(tp, s%tn), ', ', max(tp, s%tn), ']'
-            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
             return
         end if
         sc = 0.0_dp
         if (s%h /= 0.0_dp) sc = (t - s%tn)/s%h
         call horner(yh, m, s%nq, s%h, sc, k, dky)
     end subroutine interpolate
+
+    !> LSODA_ERR_ILLEGAL_INPUT, '<who>: t = ... is outside the last step [...]', when t is
+    !! not within the last step (up to roundoff), else STATUS_OK.
+    subroutine check_in_step(s, t, who, stat)
+        type(lsoda_t), intent(in) :: s
+        real(dp), intent(in) :: t
+        character(len=*), intent(in) :: who
+        type(status_t), intent(out) :: stat
+        real(dp) :: tp, tol
+        character(len=200) :: buf
+        stat%code = STATUS_OK
+        tol = 100.0_dp*UROUND*(abs(s%tn) + abs(s%hu))
+        tp = s%tn - s%hu
+        if (min(tp, s%tn) - tol > t .or. t > max(tp, s%tn) + tol) then
+            write (buf, '(a,es15.7e3,a,es15.7e3,a,es15.7e3,a)') ': t = ', t, &
+                ' is outside the last step [', min(tp, s%tn), ', ', max(tp, s%tn), ']'
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, who//trim(buf))
+        end if
+    end subroutine check_in_step
 
     !> The k-th derivative of the polynomial of a Nordsieck array yh (order nq, step h) at
     !! the point sc h from the step's end.
