@@ -17,7 +17,8 @@ module test_sensitivities
     use deck, only: deck_t, read_deck
     use rig, only: rig_t, start_t, accuracy_t, rig_of, start_of, accuracy_of, make_pendulum
     use inputs, only: set_input, input_value
-    use record_fit, only: record_model, record_model_sens
+    use record_fit, only: record_model, record_model_sens, record_fit_t, fit_problem, &
+        fresh_jacobian
     use records, only: record_t, read_record
     use identify, only: identify_result_t, identify_record
     use geometry, only: pendulum_t
@@ -56,6 +57,8 @@ contains
             call test_record_model(t)
         if (t%want('sensitivities: a record fit and its budget, forward = differences')) &
             call test_fit(t)
+        if (t%want('sensitivities: the record fit takes its Jacobian again on short steps')) &
+            call test_jacobian_reuse(t)
         if (t%want('sensitivities: monodromy, forward = variational system')) &
             call test_monodromy(t)
         if (t%want('sensitivities: global error within 10 rtol')) call test_global_error(t)
@@ -613,6 +616,57 @@ contains
             q%c_q = p%c_q + h*dd%c_q
         end function moved
     end subroutine test_dfdp
+
+    !> The record fit's Jacobian taken again: on the whole record (the first 10 s of
+    !! input/identify_record_swing.dat), an evaluation a short step from the last (no budget
+    !! carried) returns that point's Jacobian (jac_fresh false) with its own, new residuals;
+    !! fresh_jacobian then gives the Jacobian computed at the new point (jac_fresh true),
+    !! the one a problem that never saw the first point computes there, with the same
+    !! residuals.
+    subroutine test_jacobian_reuse(t)
+        type(tester_t), intent(inout) :: t
+        type(deck_t) :: d
+        type(record_t) :: rec, part
+        type(status_t) :: st
+        type(record_fit_t) :: prob, other
+        real(dp), allocatable :: p0(:), h(:), p(:), r1(:), r2(:), r3(:), r4(:)
+        real(dp), allocatable :: j1(:, :), j2(:, :), j3(:, :), j4(:, :)
+        integer :: n, m
+        call read_deck('input/identify_record.nml', d, st)
+        if (st%code == 0) call read_record(d, rec, st)
+        call t%check('sensitivities: reuse: the deck and record'//msg_of(st), st%code == 0)
+        if (st%code /= 0) return
+        d%estimate = 'I1 c_v c_q'
+        n = count(rec%t <= rec%t(1) + 10.0_dp)
+        part = rec
+        part%t = rec%t(1:n)
+        part%v = rec%v(1:n)
+        if (rec%has_u) part%u = rec%u(1:n)
+        call fit_problem(d, part, prob, p0, h)
+        prob%nuse = n
+        other = prob
+        m = prob%nres()
+        allocate (r1(m), r2(m), r3(m), r4(m), j1(m, 3), j2(m, 3), j3(m, 3), j4(m, 3))
+        p = [0.0512_dp, 2.0e-4_dp, 5.0e-4_dp]
+        call prob%residual_jacobian(p, r1, j1, st)
+        call t%check('sensitivities: reuse: the first point, its Jacobian computed'// &
+                     msg_of(st), st%code == 0 .and. prob%jac_fresh)
+        p(1) = p(1)*(1.0_dp + 1.0e-5_dp)
+        call prob%residual_jacobian(p, r2, j2, st)
+        call t%check('sensitivities: reuse: a short step on takes the Jacobian again'// &
+                     msg_of(st), st%code == 0 .and. .not. prob%jac_fresh .and. all(j2 == j1))
+        call t%check('sensitivities: reuse: ... with residuals of its own', &
+                     maxval(abs(r2 - r1)) > 0.0_dp)
+        call fresh_jacobian(prob, p, r3, j3, st)
+        call t%check('sensitivities: reuse: fresh_jacobian computes it at the point'// &
+                     msg_of(st), st%code == 0 .and. prob%jac_fresh .and. &
+                     maxval(abs(j3 - j1)) > 0.0_dp)
+        call other%residual_jacobian(p, r4, j4, st)
+        call t%check_close('sensitivities: reuse: = the Jacobian a new problem computes there', &
+                           1.0_dp + maxval(abs(j3 - j4))/maxval(abs(j4)), 1.0_dp, 1.0e-12_dp)
+        call t%check('sensitivities: reuse: the same residuals', all(r3 == r2) .and. &
+                     all(r4 == r2))
+    end subroutine test_jacobian_reuse
 
     !> The largest distance from a multiplier of a to the nearest of b, relative to
     !! max(1, |b|) (the sets, whatever the order of a conjugate pair or of equal moduli).

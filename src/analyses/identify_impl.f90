@@ -23,7 +23,7 @@ submodule (identify) identify_impl
     use stats, only: coverage_factor, welch_satterthwaite, NU_INFINITE
     use record_fit, only: record_fit_t, record_mc_task_t, fit_problem, fit_record, covariance, &
         input_sensitivities, record_mc_task, explain_fit_failure, huber_weights, &
-        correlation_time, fresh_jacobian, PARAM_NAMES, P_BIAS
+        correlation_time, fresh_jacobian, gauss_newton_gain, PARAM_NAMES, P_BIAS
     use period_inversion, only: period_fit_t, invert_periods, period_budget, &
                                 period_monte_carlo, linear_inertia, is_torsion_rig, &
                                 period_mc_task, period_mc_task_t, rig_period_s, &
@@ -650,6 +650,7 @@ contains
         real(dp), allocatable :: nu_rows(:)
         type(budget_row_t), allocatable :: rows(:)
         type(record_format_t) :: fmt
+        type(lsq_options_t) :: opts0       ! the fit's default tolerances
         real(dp) :: s2, se, emean
         integer :: m, np, j, ih, i0
         r%from_record = .true.
@@ -689,12 +690,20 @@ contains
         ! differences), the covariance
         allocate (jac(m, np))
         if (prob%has_jacobian()) then
-            ! the fit's last Jacobian, at the estimate (computed there once more when the
-            ! fit ended on one taken again from an earlier point)
-            if (.not. prob%jac_fresh) then
+            ! the fit's last Jacobian, at the estimate; when the fit ended on one taken again
+            ! from an earlier point, computed there, and the fit goes on from the estimate
+            ! while that Jacobian's Gauss-Newton step is not within the fit's tolerance
+            do ih = 1, 3
+                if (prob%jac_fresh .or. stat%code /= 0) exit
                 call fresh_jacobian(prob, fit%p, fit%r, fit%jac, stat)
                 r%evaluations = r%evaluations + 1
-            end if
+                if (stat%code /= 0) exit
+                if (gauss_newton_gain(fit%r, fit%jac) <= opts0%chi2_tol) exit
+                p0 = fit%p
+                call lm_fit(prob, p0, h, prob%nres(), lsq_options_t(), fit, stat)
+                r%iterations = r%iterations + fit%iterations
+                r%evaluations = r%evaluations + fit%evaluations
+            end do
             jac = fit%jac
         else
             call lsq_jacobian(prob, fit%p, fit%r, h, jac, stat, central=.true.)

@@ -163,7 +163,7 @@ module record_fit
     public :: record_model, record_model_sens, fit_problem, fit_record, covariance
     public :: input_sensitivity, input_sensitivities
     public :: record_mc_task, explain_fit_failure, make_record, find_release
-    public :: huber_weights, correlation_time, apply_parameters, fresh_jacobian
+    public :: huber_weights, correlation_time, apply_parameters, fresh_jacobian, gauss_newton_gain
 
     real(dp), parameter, public :: H_REL = 1.0e-5_dp        !! relative difference step of the model
     real(dp), parameter :: DAMP_REF = 1.0e-3_dp     !! scale of c_v, c_q (model's units)
@@ -546,6 +546,7 @@ contains
         type(status_t), intent(out) :: stat
         prob%whole_gain = 0.0_dp
         prob%cache%valid = .false.
+        if (allocated(prob%jac_dv)) deallocate (prob%jac_dv)
         call record_residual_jacobian(prob, p, r, jac, stat)
     end subroutine fresh_jacobian
 
