@@ -571,8 +571,11 @@ contains
     !! reached nuse (with the derivatives when asked), else from a run, which becomes the
     !! cache.  A run of the whole record with derivatives after one whose Gauss-Newton step
     !! was within CARRY_GAIN (one standard error: the fit converges at the next point, as a
-    !! rule) carries the budget's inputs' too (prob%x with u > 0), unless the sensitivities
-    !! are in the error control (there a column changes the steps of the others).
+    !! rule) carries the budget's inputs' too (prob%x with u > 0); one that does not runs
+    !! the model alone and takes the derivatives of the last whole-record point where they
+    !! were computed, when that point's Gauss-Newton gain was within REUSE_GAIN (fresh
+    !! .false.).  Neither with the sensitivities in the error control (there a column
+    !! changes the steps of the others, and a run without them other steps).
     subroutine model_values(prob, p, derivs, vals, dv, bias, stat, fresh)
         type(record_fit_t), intent(inout) :: prob
         real(dp), intent(in) :: p(:)
