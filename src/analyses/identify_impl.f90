@@ -13,7 +13,7 @@ submodule (identify) identify_impl
     use bifilar_model, only: NSTATE
     use rig, only: rig_t, start_t, accuracy_t, rig_of, start_of, accuracy_of, make_pendulum, &
         start_state
-    use least_squares, only: lsq_result_t, lsq_jacobian, lm_fit, lsq_options_t
+    use least_squares, only: lsq_result_t, lsq_jacobian, lm_fit, lsq_options_t, gauss_newton_gain
     use budget, only: input_u_t
     use records, only: read_record_file, record_format_t, record_format_of, record_file, &
         mean_period
@@ -23,7 +23,7 @@ submodule (identify) identify_impl
     use stats, only: coverage_factor, welch_satterthwaite, NU_INFINITE
     use record_fit, only: record_fit_t, record_mc_task_t, fit_problem, fit_record, covariance, &
         input_sensitivities, record_mc_task, explain_fit_failure, huber_weights, &
-        correlation_time, fresh_jacobian, gauss_newton_gain, PARAM_NAMES, P_BIAS
+        correlation_time, fresh_jacobian, PARAM_NAMES, P_BIAS
     use period_inversion, only: period_fit_t, invert_periods, period_budget, &
                                 period_monte_carlo, linear_inertia, is_torsion_rig, &
                                 period_mc_task, period_mc_task_t, rig_period_s, &

@@ -92,7 +92,7 @@ module least_squares
         logical :: converged = .false.
     end type lsq_result_t
 
-    public :: lm_fit, lsq_jacobian, problem_jacobian
+    public :: lm_fit, lsq_jacobian, problem_jacobian, gauss_newton_gain
 
     !> Fall of S (from its start) that makes an exact fit, to roundoff.
     real(dp), parameter :: EXACT_FIT = 1.0e-20_dp
@@ -137,7 +137,7 @@ contains
         cost0 = res%cost
         dvec = 0.0_dp
         call scale_columns()
-        call gauss_newton_gain()
+        gain = gauss_newton_gain(res%r, res%jac)
         res%converged = gain <= opts%chi2_tol
         if (res%converged) return
         lambda = opts%lambda0
@@ -200,7 +200,7 @@ contains
                     end if
                 end if
                 call scale_columns()
-                call gauss_newton_gain()
+                gain = gauss_newton_gain(res%r, res%jac)
                 res%converged = gain <= opts%chi2_tol .or. (small_step .and. gain <= 1.0_dp) &
                                 .or. res%cost <= EXACT_FIT*cost0
                 if (res%converged) return
@@ -231,20 +231,6 @@ contains
                 'is rank deficient: the data do not determine every estimated parameter)')
         end if
     contains
-        !> gain: what the Gauss-Newton step of the current Jacobian could still lower S by,
-        !! over s^2 = S / (m - n) (huge when J is rank deficient: no verdict then).
-        subroutine gauss_newton_gain()
-            real(dp) :: dgn(n)
-            type(status_t) :: st2
-            gain = huge(1.0_dp)
-            call la_lstsq(res%jac, -res%r, dgn, st2)
-            if (st2%code /= 0) return
-            if (res%cost > 0.0_dp) then
-                gain = (res%cost - sum((res%r + matmul(res%jac, dgn))**2))*max(1, m - n)/res%cost
-            else
-                gain = 0.0_dp
-            end if
-        end subroutine gauss_newton_gain
         !> Moré's scaling: D_j = the largest column norm of J seen so far (never 0).
         subroutine scale_columns()
             integer :: jj
@@ -254,6 +240,27 @@ contains
             end do
         end subroutine scale_columns
     end subroutine lm_fit
+
+    !> What the Gauss-Newton step of the Jacobian jac could still lower S = ||r||^2 by, over
+    !! S / (m - n) (at least one degree of freedom): the square of that step in standard
+    !! errors, lm_fit's measure of convergence (see the module header); 0 at S = 0, huge
+    !! when the step cannot be had (jac rank deficient: no verdict then).
+    function gauss_newton_gain(r, jac) result(gain)
+        real(dp), intent(in) :: r(:)            !! residuals (m)
+        real(dp), intent(in) :: jac(:, :)       !! their Jacobian (m, n)
+        real(dp) :: gain
+        real(dp) :: dgn(size(jac, 2)), cost
+        type(status_t) :: st2
+        gain = huge(1.0_dp)
+        call la_lstsq(jac, -r, dgn, st2)
+        if (st2%code /= 0) return
+        cost = sum(r**2)
+        if (cost > 0.0_dp) then
+            gain = (cost - sum((r + matmul(jac, dgn))**2))*max(1, size(r) - size(jac, 2))/cost
+        else
+            gain = 0.0_dp
+        end if
+    end function gauss_newton_gain
 
     !> Default: the problem gives no Jacobian of its own (lm_fit takes differences).
     logical function no_jacobian_given(prob)

@@ -46,7 +46,8 @@ module record_fit
     use kane_run, only: kane_run_start, kane_run_t
     use run_loop, only: stepped_model_t, row_sink_t, drive
     use integrators, only: SENS_FORWARD
-    use least_squares, only: lsq_problem_t, lsq_options_t, lsq_result_t, lm_fit
+    use least_squares, only: lsq_problem_t, lsq_options_t, lsq_result_t, lm_fit, &
+        gauss_newton_gain
     use lapack_wrap, only: la_lstsq, la_svd
     use random, only: rng_t, rng_stream, rng_normal
     use records, only: record_t, mean_period
@@ -163,7 +164,7 @@ module record_fit
     public :: record_model, record_model_sens, fit_problem, fit_record, covariance
     public :: input_sensitivity, input_sensitivities
     public :: record_mc_task, explain_fit_failure, make_record, find_release
-    public :: huber_weights, correlation_time, apply_parameters, fresh_jacobian, gauss_newton_gain
+    public :: huber_weights, correlation_time, apply_parameters, fresh_jacobian
 
     real(dp), parameter, public :: H_REL = 1.0e-5_dp        !! relative difference step of the model
     real(dp), parameter :: DAMP_REF = 1.0e-3_dp     !! scale of c_v, c_q (model's units)
@@ -550,21 +551,6 @@ contains
         call record_residual_jacobian(prob, p, r, jac, stat)
     end subroutine fresh_jacobian
 
-    !> What the Gauss-Newton step of (r, jac) could still lower the sum of squares S by,
-    !! over s^2 = S / (m - n): the square of that step in standard errors (huge when it
-    !! cannot be had), as least_squares judges convergence.
-    real(dp) function gauss_newton_gain(r, jac) result(g)
-        real(dp), intent(in) :: r(:), jac(:, :)
-        real(dp) :: d(size(jac, 2)), s
-        type(status_t) :: st
-        g = huge(1.0_dp)
-        s = sum(r**2)
-        if (.not. (s > 0.0_dp) .or. size(r) <= size(jac, 2)) return
-        call la_lstsq(jac, -r, d, st)
-        if (st%code /= 0) return
-        g = (s - sum((r + matmul(jac, d))**2))*(size(r) - size(jac, 2))/s
-    end function gauss_newton_gain
-
     !> The model at the parameters p over the samples ifirst .. nuse (vals), with its
     !! derivatives along the estimated parameters but the bias when `derivs` (dv, a column
     !! each), and the bias; from the problem's cache when its run was of the same model and
@@ -605,7 +591,7 @@ contains
             call set_error(stat, ERR_NUMERIC, 'parameters out of the model''s range')
             return
         end if
-        key = [transfer(rg, [0_int8]), transfer(st, [0_int8]), transfer(t0, [0_int8])]
+        key = model_key(rg, st, t0)
         allocate (names(0), xs(0))
         if (derivs) then
             do j = 1, prob%np
@@ -655,6 +641,16 @@ contains
         dv = dall(:, 1:nfit)
         prob%cache = model_cache_t(.true., key, i1, nfit, nx, vals, dall)
     end subroutine model_values
+
+    !> The bytes of the rig, the start and the release time: what a run of the record
+    !! model depends on (model_cache_t's key).
+    pure function model_key(rg, st, t0) result(key)
+        type(rig_t), intent(in) :: rg
+        type(start_t), intent(in) :: st
+        real(dp), intent(in) :: t0
+        integer(int8), allocatable :: key(:)
+        key = [transfer(rg, [0_int8]), transfer(st, [0_int8]), transfer(t0, [0_int8])]
+    end function model_key
 
     !> The names and sizes of the budget's inputs with u > 0 (x), appended to names and xs.
     pure subroutine budget_columns(prob, x, names, xs)
@@ -1165,8 +1161,7 @@ contains
                     if (prob%x(k)%name /= x(k)%name .or. prob%x(k)%value /= x(k)%value .or. &
                         (prob%x(k)%u > 0.0_dp .neqv. x(k)%u > 0.0_dp)) return
                 end do
-                carried = all(cc%key == [transfer(rg, [0_int8]), transfer(st, [0_int8]), &
-                                         transfer(t0, [0_int8])])
+                carried = all(cc%key == model_key(rg, st, t0))
             end associate
         end function carried
     end subroutine input_sensitivities
