@@ -897,7 +897,7 @@ contains
         real(dp), intent(in) :: y(:)            !! chart state
         real(dp), intent(out) :: dfdp(:, :)     !! (NSTATE, ns)
         type(status_t), intent(out) :: stat
-        real(dp) :: dtq(3), e(5), alpha(3), w
+        real(dp) :: dtq(3), e(5), alpha(3)
         integer :: j, r
         logical :: geometry
         if (.false.) dfdp(1, 1) = t
@@ -913,7 +913,6 @@ contains
         end if
         call tangent_setup(sys%p, sys%sp_k, sys%sp_eo, sys%sp_a, sys%sp_tq, sys%sp_mu)
         associate (k => sys%sp_k, eo => sys%sp_eo, p => sys%p)
-            w = k%omega(3)
             alpha = matmul(k%wb, eo%qdd) + k%cwb
             do j = 1, size(dfdp, 2)
                 if (.not. allocated(sys%dirs)) then
@@ -927,12 +926,12 @@ contains
                     geometry = d%big_l /= 0.0_dp .or. d%big_lp /= 0.0_dp .or. &
                                d%big_b /= 0.0_dp .or. d%r /= 0.0_dp .or. d%lambda /= 0.0_dp
                     if (geometry) then
-                        call param_tangent(p, y, k, eo, sys%sp_a, sys%sp_mu, d, dfdp(6:10, j))
+                        call param_tangent(p, y, k, eo, sys%sp_a, alpha, sys%sp_mu, d, &
+                                           dfdp(6:10, j))
                         cycle
                     end if
                     ! the moments and the damping alone: the forces change, the kinematics not
-                    dtq = -d%inertia*alpha - cross(k%omb, d%inertia*k%omb) &
-                          - (d%c_v*w + d%c_q*abs(w)*w)*k%b(:, 3)
+                    dtq = direction_torque(k, alpha, d)
                     if (all(dtq == 0.0_dp)) then
                         dfdp(6:10, j) = 0.0_dp
                         cycle
@@ -946,6 +945,20 @@ contains
         end associate
     end subroutine bifilar_sens_point
 
+    !> The change of the torque on the body (principal axes) along a direction d of the
+    !! moments and the damping at fixed motion: the inertia torque's, -dI alpha - omega x
+    !! (dI omega), and the damping torque's about the vertical.
+    pure function direction_torque(k, alpha, d) result(dtq)
+        type(chart_kin_t), intent(in) :: k      !! the kinematics at the point
+        real(dp), intent(in) :: alpha(3)        !! the body's angular acceleration there
+        type(sens_dir_t), intent(in) :: d       !! the direction in the parameters
+        real(dp) :: dtq(3)
+        real(dp) :: w
+        w = k%omega(3)
+        dtq = -d%inertia*alpha - cross(k%omb, d%inertia*k%omb) &
+              - (d%c_v*w + d%c_q*abs(w)*w)*k%b(:, 3)
+    end function direction_torque
+
     !> The change of the accelerations along a direction d of the pendulum's scaled
     !! parameters at a fixed state (df/dp of a sensitivity), exact: eq. (38) with the
     !! constraint's multiplier mu differentiated as in eom_tangent, M dqddot - gradg dmu =
@@ -954,19 +967,21 @@ contains
     !! it, the cable's partial velocities with L), R*'s offset rho = r (s_lam ntilde1 -
     !! c_lam ntilde3) with r and lambda (its partial velocities Omega_j x rho and
     !! convective acceleration); the inertia torque with the moments, the damping torque
-    !! with c_v, c_q; L' enters only Baumgarte's term of the constraint.  (k, eo, a, mu:
-    !! the solved point, tangent_setup.)
-    pure subroutine param_tangent(p, y, k, eo, a, mu, d, dqdd)
+    !! with c_v, c_q; L' enters only Baumgarte's term of the constraint.  (k, eo, a, alpha,
+    !! mu: the solved point, tangent_setup.)
+    pure subroutine param_tangent(p, y, k, eo, a, alpha, mu, d, dqdd)
         type(pendulum_t), intent(in) :: p       !! scaled parameters
         real(dp), intent(in) :: y(:)            !! chart state
         type(chart_kin_t), intent(in) :: k      !! its kinematics
         type(eom_t), intent(in) :: eo           !! eq. (38) solved there (mk set)
         real(dp), intent(in) :: a(3)            !! R*'s acceleration
+        real(dp), intent(in) :: alpha(3)        !! the body's angular acceleration (principal
+                                                !! axes)
         real(dp), intent(in) :: mu              !! the constraint's multiplier
         type(sens_dir_t), intent(in) :: d       !! the direction in the parameters
         real(dp), intent(out) :: dqdd(5)
         real(dp) :: dc(3), drho(3), djv(3, 5), dcv(3), djd(3, 5), dcd(3), da(3), dtq(3)
-        real(dp) :: e1(5), e2(5), dgradg(5), dvd(3), dgconv, w, iz
+        real(dp) :: e1(5), e2(5), dgradg(5), dvd(3), dgconv, iz
         integer :: j
         associate (qdd => eo%qdd, sl => k%ps%s_lambda, cl => k%ps%c_lambda)
             ! the kinematics at the fixed state
@@ -984,9 +999,7 @@ contains
             dcd = d%big_l*k%econv
             ! Kane's equations at fixed accelerations: R = Jv^T (-(a + g n3)) + Wb^T T
             da = matmul(djv, qdd) + dcv
-            dtq = -d%inertia*(matmul(k%wb, qdd) + k%cwb) - cross(k%omb, d%inertia*k%omb)
-            w = k%omega(3)
-            dtq = dtq - (d%c_v*w + d%c_q*abs(w)*w)*k%b(:, 3)
+            dtq = direction_torque(k, alpha, d)
             call project(5, k%jv, k%wb, -da, dtq, e2)
             do j = 1, 5
                 e1(j) = -dot_product(djv(:, j), a + [0.0_dp, 0.0_dp, 1.0_dp])
@@ -1021,11 +1034,7 @@ contains
         integer :: c, m
         stat%code = 0
         m = size(v, 2)
-        if (.not. sys%sp_have_z .and. sys%sp_cols + m > Z_COST) then
-            call jacobian_columns(sys%p, sys%sp_y, sys%sp_k, sys%sp_eo, sys%sp_a, sys%sp_tq, &
-                                  sys%sp_mu, sys%sp_z)
-            sys%sp_have_z = .true.
-        end if
+        if (sys%sp_cols + m > Z_COST) call point_z(sys)
         if (sys%sp_have_z) then
             call z_products(m, sys%sp_z, v, jv)
             return
@@ -1064,13 +1073,18 @@ contains
         real(dp), intent(out) :: jac(:, :)      !! (NSTATE, NSTATE)
         type(status_t), intent(out) :: stat
         stat%code = 0
-        if (.not. sys%sp_have_z) then
-            call jacobian_columns(sys%p, sys%sp_y, sys%sp_k, sys%sp_eo, sys%sp_a, sys%sp_tq, &
-                                  sys%sp_mu, sys%sp_z)
-            sys%sp_have_z = .true.
-        end if
+        call point_z(sys)
         jac = sys%sp_z
     end subroutine bifilar_sens_jacobian
+
+    !> Z at the point of the last sens_point (sp_z), formed there once (jacobian_columns).
+    pure subroutine point_z(sys)
+        class(bifilar_t), intent(inout) :: sys
+        if (sys%sp_have_z) return
+        call jacobian_columns(sys%p, sys%sp_y, sys%sp_k, sys%sp_eo, sys%sp_a, sys%sp_tq, &
+                              sys%sp_mu, sys%sp_z)
+        sys%sp_have_z = .true.
+    end subroutine point_z
 
     !> W = omega . n3, the body's rate about the vertical (per unit tau), of a chart state:
     !! -sin(theta5) theta1' - theta4' (eq. (14)).
