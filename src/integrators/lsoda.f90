@@ -127,7 +127,6 @@ module lsoda
         ! sens_correct's work vectors of n ns (the n x ns columns one after another, as zh's):
         ! right-hand side b, change d, products J v
         real(dp), allocatable :: sb(:), sd(:), sjv(:)
-        real(dp), allocatable :: seye(:, :)    ! the identity of n, for J = J I
         real(dp), allocatable :: sjm(:, :)     ! the sensitivities' own matrix I - h l0 J
         real(dp), allocatable :: sinv(:, :)    ! its inverse (the solves of all columns at once)
         real(dp) :: shl0 = 0.0_dp              ! its h l0
@@ -614,12 +613,8 @@ contains
         call realloc_vec(s%sb, s%nsn)
         call realloc_vec(s%sd, s%nsn)
         call realloc_vec(s%sjv, s%nsn)
-        if (allocated(s%sdfdp)) deallocate (s%sdfdp, s%sjm, s%seye, s%sinv)
-        allocate (s%sdfdp(n, ns), s%sjm(n, n), s%seye(n, n), s%sinv(n, n))
-        s%seye = 0.0_dp
-        do i = 1, n
-            s%seye(i, i) = 1.0_dp
-        end do
+        if (allocated(s%sdfdp)) deallocate (s%sdfdp, s%sjm, s%sinv)
+        allocate (s%sdfdp(n, ns), s%sjm(n, n), s%sinv(n, n))
         s%shl0 = 0.0_dp
         s%snslp = 0
         s%shave = .false.
@@ -1844,9 +1839,13 @@ contains
         real(dp), intent(in) :: hl0
         type(status_t), intent(inout) :: stat
         type(status_t) :: lst
+        integer :: i
         call sys%sens_jacobian(s%sjm, stat)
         if (stat%code /= STATUS_OK) return
-        s%sjm = s%seye - hl0*s%sjm
+        s%sjm = -hl0*s%sjm
+        do i = 1, s%n
+            s%sjm(i, i) = s%sjm(i, i) + 1.0_dp
+        end do
         s%nsdir = s%nsdir + 1
         s%shl0 = hl0
         s%snslp = s%nst

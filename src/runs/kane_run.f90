@@ -32,7 +32,6 @@ module kane_run
     contains
         procedure :: advance => kane_advance
         procedure :: dense => kane_dense
-        procedure :: sens_at => kane_sens_at
         procedure :: slope_at => kane_slope_at
         procedure :: sens_dot_at => kane_sens_dot_at
     end type kane_run_t
@@ -59,8 +58,8 @@ contains
     !! The validity of the model is checked at the end of every step (check_validity).
     !! With s0 the run carries forward sensitivities (the integrator's sens_init): column k
     !! starts at s0(:, k) and follows the parameter direction dirs(k) (sens_dir_t; IC only
-    !! beyond size(dirs)), scale(k) its size against the state's; sens_at gives them;
-    !! with sens_error_control they take part in the error test.
+    !! beyond size(dirs)), scale(k) its size against the state's; sens_dot_at gives their
+    !! projections; with sens_error_control they take part in the error test.
     !! With `global` (simulate's runs) the local error is held to rtol/GLOBAL_SHARE (not
     !! below 3e-14), atol likewise, so that the global error follows rtol (within 10 rtol:
     !! tests/bench/bench_global_error.f90); messages quote the rtol and atol given.
@@ -108,22 +107,8 @@ contains
         call m%solver%sens_init(m%sys, s0, stat, scale=scale, error_control=sens_error_control)
     end subroutine kane_run_start
 
-    !> The forward sensitivities at t (as state_at: the start before any step, the step's
-    !! end at or after it, the dense output inside the last step).
-    subroutine kane_sens_at(m, t, s, stat)
-        class(kane_run_t), intent(in) :: m
-        real(dp), intent(in) :: t
-        real(dp), intent(out) :: s(:, :)        !! (NSTATE, ns)
-        type(status_t), intent(out) :: stat
-        stat%code = 0
-        if (m%nsteps == 0) then
-            s = m%s0
-        else
-            call m%solver%sens_dense(min(t, m%t_cur), 0, s, stat)
-        end if
-    end subroutine kane_sens_at
-
-    !> g . s_k(t) for each forward sensitivity s_k at t (as sens_at).
+    !> g . s_k(t) for each forward sensitivity s_k at t: the start before any step, the
+    !! integrator's dense output within the last step (or at its end, for a t beyond it).
     subroutine kane_sens_dot_at(m, t, g, v, stat)
         class(kane_run_t), intent(in) :: m
         real(dp), intent(in) :: t
