@@ -379,18 +379,9 @@ contains
                 ! error control: the orbit is smoother than the motions about it that H
                 ! follows, and its steps alone leave H a hundred times less accurate; H's
                 ! absolute tolerance is rtol (H_ATOL_SCALE)
-                call s%init(orbit, t0, y(1:NSTATE), rtol, [rtol*1.0e-2_dp], stat, tcrit=t1, &
-                            max_steps=FLOQUET_MAX_STEPS)
-                if (stat%code /= 0) return
-                call s%sens_init(orbit, eye, stat, error_control=.true., &
-                                 scale=[(H_ATOL_SCALE, j = 1, NSTATE)])
-                if (stat%code /= 0) return
-                call s%integrate(orbit, t1, y(1:NSTATE), stat)
-                st = s%stats()
-                nsteps = nsteps + st%steps
-                nrhs = nrhs + st%rhs_evals
-                if (stat%code /= 0) return
-                call s%sens_dense(t1, 0, seg, stat)
+                seg = eye
+                call forward_segment(s, orbit, t0, t1, rtol, y(1:NSTATE), seg, nsteps, nrhs, &
+                                     stat)
                 if (stat%code /= 0) return
             else
                 y(NSTATE + 1:NV) = reshape(eye, [NSTATE*NSTATE])
@@ -453,9 +444,8 @@ contains
         integer, intent(in), optional :: method  !! SOLVER_LSODA (default) or SOLVER_RADAU
         type(bifilar_t) :: orbit
         class(integrator_t), allocatable :: s
-        type(integrator_stats_t) :: st
         real(dp) :: t0, t1, tend
-        integer :: k, j
+        integer :: k
         if (present(method)) then
             call new_integrator(method, s)
         else
@@ -470,21 +460,39 @@ contains
         do k = 1, nseg
             t0 = tend*(k - 1)/nseg
             t1 = tend*k/nseg
-            call s%init(orbit, t0, yh, rtol, [rtol*1.0e-2_dp], stat, tcrit=t1, &
-                        max_steps=FLOQUET_MAX_STEPS)
-            if (stat%code /= 0) return
-            call s%sens_init(orbit, x, stat, error_control=.true., &
-                             scale=[(H_ATOL_SCALE, j = 1, size(x, 2))])
-            if (stat%code /= 0) return
-            call s%integrate(orbit, t1, yh, stat)
-            st = s%stats()
-            nsteps = nsteps + st%steps
-            nrhs = nrhs + st%rhs_evals
-            if (stat%code /= 0) return
-            call s%sens_dense(t1, 0, x, stat)
+            call forward_segment(s, orbit, t0, t1, rtol, yh, x, nsteps, nrhs, stat)
             if (stat%code /= 0) return
         end do
     end subroutine half_period_columns
+
+    !> One segment of the orbit from t0 to t1 with its forward sensitivities x (in: at t0,
+    !! out: at t1) in the integrator's error control, their absolute tolerance rtol
+    !! (H_ATOL_SCALE over the orbit's rtol/100); y the orbit's state (in: at t0, out: at
+    !! t1); the segment's steps and right-hand sides added to nsteps, nrhs (also when it
+    !! fails; at most FLOQUET_MAX_STEPS steps).
+    subroutine forward_segment(s, orbit, t0, t1, rtol, y, x, nsteps, nrhs, stat)
+        class(integrator_t), intent(inout) :: s
+        type(bifilar_t), intent(inout) :: orbit
+        real(dp), intent(in) :: t0, t1, rtol
+        real(dp), intent(inout) :: y(NSTATE)
+        real(dp), intent(inout) :: x(:, :)      !! (NSTATE, m)
+        integer, intent(inout) :: nsteps, nrhs
+        type(status_t), intent(out) :: stat
+        type(integrator_stats_t) :: st
+        integer :: j
+        call s%init(orbit, t0, y, rtol, [rtol*1.0e-2_dp], stat, tcrit=t1, &
+                    max_steps=FLOQUET_MAX_STEPS)
+        if (stat%code /= 0) return
+        call s%sens_init(orbit, x, stat, error_control=.true., &
+                         scale=[(H_ATOL_SCALE, j = 1, size(x, 2))])
+        if (stat%code /= 0) return
+        call s%integrate(orbit, t1, y, stat)
+        st = s%stats()
+        nsteps = nsteps + st%steps
+        nrhs = nrhs + st%rhs_evals
+        if (stat%code /= 0) return
+        call s%sens_dense(t1, 0, x, stat)
+    end subroutine forward_segment
 
     !> The whole analysis at torsion amplitude `amp` (rad).
     !!
