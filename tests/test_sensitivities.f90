@@ -353,22 +353,15 @@ contains
     subroutine test_fit(t)
         type(tester_t), intent(inout) :: t
         type(deck_t) :: d
-        type(record_t) :: rec, part
+        type(record_t) :: part
         type(status_t) :: st
         type(identify_result_t) :: rf, rd, rc, rd2
         real(dp) :: scatter
-        integer :: n, i
-        call read_deck('input/identify_record.nml', d, st)
-        if (st%code == 0) call read_record(d, rec, st)
-        call t%check('sensitivities: fit: the deck and record'//msg_of(st), st%code == 0)
-        if (st%code /= 0) return
-        d%estimate = 'I1 c_v c_q'
+        integer :: i
+        logical :: ok
+        call first_ten_seconds(t, 'fit', d, part, ok)
+        if (.not. ok) return
         d%monte_carlo = 0
-        n = count(rec%t <= rec%t(1) + 10.0_dp)
-        part = rec
-        part%t = rec%t(1:n)
-        part%v = rec%v(1:n)
-        if (rec%has_u) part%u = rec%u(1:n)
         d%sensitivities = 'forward'
         call identify_record(d, part, rf, st)
         call t%check('sensitivities: fit forward'//msg_of(st), st%code == 0)
@@ -626,24 +619,17 @@ contains
     subroutine test_jacobian_reuse(t)
         type(tester_t), intent(inout) :: t
         type(deck_t) :: d
-        type(record_t) :: rec, part
+        type(record_t) :: part
         type(status_t) :: st
         type(record_fit_t) :: prob, other
         real(dp), allocatable :: p0(:), h(:), p(:), r1(:), r2(:), r3(:), r4(:)
         real(dp), allocatable :: j1(:, :), j2(:, :), j3(:, :), j4(:, :)
-        integer :: n, m
-        call read_deck('input/identify_record.nml', d, st)
-        if (st%code == 0) call read_record(d, rec, st)
-        call t%check('sensitivities: reuse: the deck and record'//msg_of(st), st%code == 0)
-        if (st%code /= 0) return
-        d%estimate = 'I1 c_v c_q'
-        n = count(rec%t <= rec%t(1) + 10.0_dp)
-        part = rec
-        part%t = rec%t(1:n)
-        part%v = rec%v(1:n)
-        if (rec%has_u) part%u = rec%u(1:n)
+        integer :: m
+        logical :: ok
+        call first_ten_seconds(t, 'reuse', d, part, ok)
+        if (.not. ok) return
         call fit_problem(d, part, prob, p0, h)
-        prob%nuse = n
+        prob%nuse = size(part%t)
         other = prob
         m = prob%nres()
         allocate (r1(m), r2(m), r3(m), r4(m), j1(m, 3), j2(m, 3), j3(m, 3), j4(m, 3))
@@ -667,6 +653,30 @@ contains
         call t%check('sensitivities: reuse: the same residuals', all(r3 == r2) .and. &
                      all(r4 == r2))
     end subroutine test_jacobian_reuse
+
+    !> input/identify_record.nml estimating I1, c_v and c_q, and the first 10 s of its record
+    !! (ok: both read; the check is labelled with `what`).
+    subroutine first_ten_seconds(t, what, d, part, ok)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: what
+        type(deck_t), intent(out) :: d
+        type(record_t), intent(out) :: part
+        logical, intent(out) :: ok
+        type(record_t) :: rec
+        type(status_t) :: st
+        integer :: n
+        call read_deck('input/identify_record.nml', d, st)
+        if (st%code == 0) call read_record(d, rec, st)
+        ok = st%code == 0
+        call t%check('sensitivities: '//what//': the deck and record'//msg_of(st), ok)
+        if (.not. ok) return
+        d%estimate = 'I1 c_v c_q'
+        n = count(rec%t <= rec%t(1) + 10.0_dp)
+        part = rec
+        part%t = rec%t(1:n)
+        part%v = rec%v(1:n)
+        if (rec%has_u) part%u = rec%u(1:n)
+    end subroutine first_ten_seconds
 
     !> The largest distance from a multiplier of a to the nearest of b, relative to
     !! max(1, |b|) (the sets, whatever the order of a conjugate pair or of equal moduli).
