@@ -57,8 +57,8 @@ contains
         if (st%code == 0) call run_simulation(d, SCRATCH, sm_all, st)
         call t%check('full run', st%code == 0)
         call read_deck(SCRATCH//'/sub.nml', d, st)
-        call t%check('subset deck reads, columns in the file''s order: '//trim(d%columns), &
-                     st%code == 0 .and. trim(d%columns) == 'tau theta4 Q')
+        call t%check('subset deck reads, columns in the file''s order: '//trim(d%output%columns), &
+                     st%code == 0 .and. trim(d%output%columns) == 'tau theta4 Q')
         if (st%code == 0) call run_simulation(d, SCRATCH, sm_sub, st)
         call t%check('subset run', st%code == 0)
         call read_dat(SCRATCH//'/all.dat', hdr_all, rows_all)
@@ -97,11 +97,11 @@ contains
         integer :: k
         call write_text(SCRATCH//'/plain.nml', SCENE//NL)
         call read_deck(SCRATCH//'/plain.nml', d, st)
-        call t%check('no &output: every column', st%code == 0 .and. d%columns == OUTPUT_COLUMNS)
+        call t%check('no &output: every column', st%code == 0 .and. d%output%columns == OUTPUT_COLUMNS)
         do k = 1, size(decks)
             call read_deck('input/'//trim(decks(k))//'.nml', d, st)
             call t%check(trim(decks(k))//' writes every column', &
-                         st%code == 0 .and. d%columns == OUTPUT_COLUMNS)
+                         st%code == 0 .and. d%output%columns == OUTPUT_COLUMNS)
         end do
     end subroutine test_default
 

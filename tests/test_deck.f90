@@ -86,51 +86,51 @@ contains
         if (stat%code /= STATUS_OK) return
         call t%check('complete: path', d%path == path)
         call t%check('complete: name', d%name == 'complete')
-        call t%check('complete: title', trim(d%title) == 'Plate, l = l'' = 2b')
-        call t%check('complete: model default', trim(d%model) == 'kane')
+        call t%check('complete: title', trim(d%scene%title) == 'Plate, l = l'' = 2b')
+        call t%check('complete: model default', trim(d%scene%model) == 'kane')
         call t%check('complete: simulate requested', analysis_requested(d, 'simulate'))
         call t%check('complete: floquet requested (case)', analysis_requested(d, 'floquet'))
         call t%check('complete: chart requested', analysis_requested(d, 'chart'))
         call t%check('complete: work_precision not requested', &
                      .not. analysis_requested(d, 'work_precision'))
         call t%check('complete: partial word not requested', .not. analysis_requested(d, 'sim'))
-        call t%check_close('complete: b', d%b, 1.5_dp)
-        call t%check_close('complete: b_prime', d%b_prime, 1.25_dp)
-        call t%check_close('complete: l', d%l, 2.5_dp)
-        call t%check_close('complete: l_prime', d%l_prime, 1.75_dp)
-        call t%check_close('complete: g', d%g, 9.81_dp)
-        call t%check_close('complete: mass', d%mass, 2.0_dp)
-        call t%check('complete: inertia', all(d%inertia == [0.0625_dp, 0.1875_dp, 0.25_dp]))
-        call t%check_close('complete: r', d%r, 0.5_dp)
-        call t%check_close('complete: lambda', d%lambda, 0.25_dp)
-        call t%check('complete: btilde row 1', all(d%btilde(1, :) == [-s, 0.0_dp, -s]))
-        call t%check('complete: btilde row 2', all(d%btilde(2, :) == [-s, 0.0_dp, s]))
-        call t%check('complete: btilde row 3', all(d%btilde(3, :) == [0.0_dp, 1.0_dp, 0.0_dp]))
-        call t%check_close('complete: sway_depth', d%sway_depth, 0.75_dp)
-        call t%check('complete: mode lower case', trim(d%mode) == 'angles')
-        call t%check_close('complete: amplitude', d%amplitude, 30.0_dp)
-        call t%check_close('complete: tilt', d%tilt, 0.1_dp)
-        call t%check('complete: theta', all(d%theta == [0.1_dp, 0.2_dp, 0.3_dp, 0.4_dp]))
-        call t%check('complete: theta_dot', all(d%theta_dot == [-1.0_dp, -2.0_dp, -3.0_dp, &
+        call t%check_close('complete: b', d%suspension%b, 1.5_dp)
+        call t%check_close('complete: b_prime', d%suspension%b_prime, 1.25_dp)
+        call t%check_close('complete: l', d%suspension%l, 2.5_dp)
+        call t%check_close('complete: l_prime', d%suspension%l_prime, 1.75_dp)
+        call t%check_close('complete: g', d%suspension%g, 9.81_dp)
+        call t%check_close('complete: mass', d%body%mass, 2.0_dp)
+        call t%check('complete: inertia', all(d%body%inertia == [0.0625_dp, 0.1875_dp, 0.25_dp]))
+        call t%check_close('complete: r', d%body%r, 0.5_dp)
+        call t%check_close('complete: lambda', d%body%lambda, 0.25_dp)
+        call t%check('complete: btilde row 1', all(d%body%btilde(1, :) == [-s, 0.0_dp, -s]))
+        call t%check('complete: btilde row 2', all(d%body%btilde(2, :) == [-s, 0.0_dp, s]))
+        call t%check('complete: btilde row 3', all(d%body%btilde(3, :) == [0.0_dp, 1.0_dp, 0.0_dp]))
+        call t%check_close('complete: sway_depth', d%body%sway_depth, 0.75_dp)
+        call t%check('complete: mode lower case', trim(d%start%mode) == 'angles')
+        call t%check_close('complete: amplitude', d%start%amplitude, 30.0_dp)
+        call t%check_close('complete: tilt', d%start%tilt, 0.1_dp)
+        call t%check('complete: theta', all(d%start%theta == [0.1_dp, 0.2_dp, 0.3_dp, 0.4_dp]))
+        call t%check('complete: theta_dot', all(d%start%theta_dot == [-1.0_dp, -2.0_dp, -3.0_dp, &
                                                                 -4.0_dp]))
-        call t%check_close('complete: tau_end', d%tau_end, 10.0_dp)
-        call t%check_close('complete: dtau_out', d%dtau_out, 0.5_dp)
-        call t%check_close('complete: rtol', d%rtol, 1.0e-9_dp)
-        call t%check_close('complete: atol', d%atol, 1.0e-11_dp)
-        call t%check('complete: error_estimate', d%error_estimate)
-        call t%check('complete: sensitivity_error_control', d%sensitivity_error_control)
+        call t%check_close('complete: tau_end', d%integration%tau_end, 10.0_dp)
+        call t%check_close('complete: dtau_out', d%integration%dtau_out, 0.5_dp)
+        call t%check_close('complete: rtol', d%integration%rtol, 1.0e-9_dp)
+        call t%check_close('complete: atol', d%integration%atol, 1.0e-11_dp)
+        call t%check('complete: error_estimate', d%integration%error_estimate)
+        call t%check('complete: sensitivity_error_control', d%integration%sensitivity_error_control)
 
         ! the decks shipped in input/ are valid
         call read_deck('input/cylinder_l180.nml', d, stat)
         call t%check('input/cylinder_l180.nml reads ('//msg_of(stat)//')', &
                      stat%code == STATUS_OK)
         call t%check('input/cylinder_l180.nml: name', d%name == 'cylinder_l180')
-        call t%check_close('input/cylinder_l180.nml: l_prime', d%l_prime, 1.8_dp)
+        call t%check_close('input/cylinder_l180.nml: l_prime', d%suspension%l_prime, 1.8_dp)
         call read_deck('input/triangle_plate.nml', d, stat)
         call t%check('input/triangle_plate.nml reads ('//msg_of(stat)//')', &
                      stat%code == STATUS_OK)
         call t%check('input/triangle_plate.nml: btilde(3,:)', &
-                     all(d%btilde(3, :) == [0.0_dp, 1.0_dp, 0.0_dp]))
+                     all(d%body%btilde(3, :) == [0.0_dp, 1.0_dp, 0.0_dp]))
     end subroutine test_complete
 
     subroutine test_defaults(t, dir)
@@ -145,22 +145,22 @@ contains
         call t%check('defaults: name without .nml', d%name == 'minimal')
         call t%check('defaults: analyses', analysis_requested(d, 'simulate') .and. &
                      .not. analysis_requested(d, 'floquet'))
-        call t%check('defaults: title', len_trim(d%title) == 0)
-        call t%check('defaults: mode', trim(d%mode) == 'raised')
-        call t%check('defaults: l_prime', d%l_prime == ref%l_prime)
-        call t%check('defaults: inertia', all(d%inertia == ref%inertia))
-        call t%check('defaults: btilde identity', all(d%btilde == reshape([1.0_dp, 0.0_dp, &
+        call t%check('defaults: title', len_trim(d%scene%title) == 0)
+        call t%check('defaults: mode', trim(d%start%mode) == 'raised')
+        call t%check('defaults: l_prime', d%suspension%l_prime == ref%suspension%l_prime)
+        call t%check('defaults: inertia', all(d%body%inertia == ref%body%inertia))
+        call t%check('defaults: btilde identity', all(d%body%btilde == reshape([1.0_dp, 0.0_dp, &
                      0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [3, 3])))
-        call t%check('defaults: amplitude', d%amplitude == 45.0_dp)
-        call t%check('defaults: integration', d%tau_end == 60.0_dp .and. &
-                     d%dtau_out == 0.05_dp .and. d%rtol == 1.0e-10_dp .and. &
-                     d%atol == 1.0e-12_dp .and. .not. d%error_estimate)
+        call t%check('defaults: amplitude', d%start%amplitude == 45.0_dp)
+        call t%check('defaults: integration', d%integration%tau_end == 60.0_dp .and. &
+                     d%integration%dtau_out == 0.05_dp .and. d%integration%rtol == 1.0e-10_dp .and. &
+                     d%integration%atol == 1.0e-12_dp .and. .not. d%integration%error_estimate)
         ! a second read into the same variable starts from the defaults again
         call write_text(dir//'/minimal2.nml', '&suspension l = 3.0 /'//NL// &
                         '&body mass = 1.0 /'//NL)
         call read_deck(dir//'/minimal2.nml', d, stat)
         call t%check('defaults: reread ok', stat%code == STATUS_OK)
-        call t%check('defaults: reread b', d%b == 1.0_dp .and. d%l == 3.0_dp)
+        call t%check('defaults: reread b', d%suspension%b == 1.0_dp .and. d%suspension%l == 3.0_dp)
         call t%check('defaults: name strips directory', d%name == 'minimal2')
         ! values at the limits are valid and do not overflow inside the checks
         call write_text(dir//'/huge.nml', MIN_SUSP//NL// &
@@ -173,7 +173,7 @@ contains
         call write_text(dir//'/no_newline.nml', MIN_SUSP//NL//'&body mass = 3.0 /')
         call read_deck(dir//'/no_newline.nml', d, stat)
         call t%check('defaults: last line without newline ('//msg_of(stat)//')', &
-                     stat%code == STATUS_OK .and. d%mass == 3.0_dp)
+                     stat%code == STATUS_OK .and. d%body%mass == 3.0_dp)
     end subroutine test_defaults
 
     ! ---------------------------------------------------------------------------------------
@@ -249,9 +249,9 @@ contains
         do k = 1, 4
             r = real(x(k) - TWO_PI_Q*anint(real(x(k), qp)/TWO_PI_Q), dp)
             call t%check_close('limits: theta('//itoa(k)//') reduced modulo 2 pi (quad '// &
-                               'precision reference)', d%theta(k), r, atol=1.0e-15_dp)
+                               'precision reference)', d%start%theta(k), r, atol=1.0e-15_dp)
         end do
-        call t%check_close('limits: tilt reduced modulo 2 pi', d%tilt, &
+        call t%check_close('limits: tilt reduced modulo 2 pi', d%start%tilt, &
                            real(7.0_qp - TWO_PI_Q, dp), atol=1.0e-15_dp)
         ! tau_end and the row limit
         call bad('tau_end_huge', SB//'&integration tau_end = 1e7, dtau_out = 1000 /', &
@@ -443,19 +443,19 @@ contains
         call write_text(dir//'/echo_back.nml', text(1:index(text, NL//'x = ')))
         call read_deck(dir//'/echo_back.nml', e, stat)
         call t%check('echo: reads back ('//msg_of(stat)//')', stat%code == STATUS_OK)
-        call t%check('echo: same title', d%title == e%title)
-        call t%check('echo: same analyses', d%analyses == e%analyses)
-        call t%check('echo: same reals', d%b == e%b .and. d%b_prime == e%b_prime .and. &
-                     d%l == e%l .and. d%l_prime == e%l_prime .and. d%g == e%g .and. &
-                     d%mass == e%mass .and. all(d%inertia == e%inertia) .and. d%r == e%r &
-                     .and. d%lambda == e%lambda .and. all(d%btilde == e%btilde) .and. &
-                     d%sway_depth == e%sway_depth .and. d%amplitude == e%amplitude .and. &
-                     d%tilt == e%tilt .and. all(d%theta == e%theta) .and. &
-                     all(d%theta_dot == e%theta_dot) .and. d%tau_end == e%tau_end .and. &
-                     d%dtau_out == e%dtau_out .and. d%rtol == e%rtol .and. d%atol == e%atol)
-        call t%check('echo: same mode and flags', d%mode == e%mode .and. &
-                     (d%error_estimate .eqv. e%error_estimate) .and. &
-                     (d%sensitivity_error_control .eqv. e%sensitivity_error_control))
+        call t%check('echo: same title', d%scene%title == e%scene%title)
+        call t%check('echo: same analyses', d%scene%analyses == e%scene%analyses)
+        call t%check('echo: same reals', d%suspension%b == e%suspension%b .and. d%suspension%b_prime == e%suspension%b_prime .and. &
+                     d%suspension%l == e%suspension%l .and. d%suspension%l_prime == e%suspension%l_prime .and. d%suspension%g == e%suspension%g .and. &
+                     d%body%mass == e%body%mass .and. all(d%body%inertia == e%body%inertia) .and. d%body%r == e%body%r &
+                     .and. d%body%lambda == e%body%lambda .and. all(d%body%btilde == e%body%btilde) .and. &
+                     d%body%sway_depth == e%body%sway_depth .and. d%start%amplitude == e%start%amplitude .and. &
+                     d%start%tilt == e%start%tilt .and. all(d%start%theta == e%start%theta) .and. &
+                     all(d%start%theta_dot == e%start%theta_dot) .and. d%integration%tau_end == e%integration%tau_end .and. &
+                     d%integration%dtau_out == e%integration%dtau_out .and. d%integration%rtol == e%integration%rtol .and. d%integration%atol == e%integration%atol)
+        call t%check('echo: same mode and flags', d%start%mode == e%start%mode .and. &
+                     (d%integration%error_estimate .eqv. e%integration%error_estimate) .and. &
+                     (d%integration%sensitivity_error_control .eqv. e%integration%sensitivity_error_control))
         call t%check('all_finite: finite', all_finite([1.0_dp, -2.0_dp, huge(1.0_dp)]))
         call t%check('all_finite: empty', all_finite([real(dp) ::]))
     end subroutine test_echo
@@ -626,18 +626,18 @@ contains
         call read_deck(dir//'/fc.nml', d, stat)
         call t%check('floquet/chart: status ok ('//msg_of(stat)//')', stat%code == STATUS_OK)
         if (stat%code /= STATUS_OK) return
-        call t%check_close('floquet: amplitude', d%floquet_amplitude, 30.0_dp)
-        call t%check('floquet: segments', d%floquet_segments == 8)
-        call t%check_close('floquet: rtol', d%floquet_rtol, 1.0e-9_dp)
-        call t%check_close('floquet: &start amplitude separate', d%amplitude, 20.0_dp)
-        call t%check_close('floquet: &integration rtol separate', d%rtol, 1.0e-8_dp)
-        call t%check('chart: x lower case', trim(d%chart_x) == 'lambda')
-        call t%check('chart: y lower case', trim(d%chart_y) == 'inertia_ratio')
-        call t%check_close('chart: x_min', d%chart_x_min, -1.0_dp)
-        call t%check_close('chart: x_max', d%chart_x_max, 1.25_dp)
-        call t%check_close('chart: y_min', d%chart_y_min, 0.5_dp)
-        call t%check_close('chart: y_max', d%chart_y_max, 2.0_dp)
-        call t%check('chart: nx, ny', d%chart_nx == 50 .and. d%chart_ny == 60)
+        call t%check_close('floquet: amplitude', d%floquet%amplitude, 30.0_dp)
+        call t%check('floquet: segments', d%floquet%segments == 8)
+        call t%check_close('floquet: rtol', d%floquet%rtol, 1.0e-9_dp)
+        call t%check_close('floquet: &start amplitude separate', d%start%amplitude, 20.0_dp)
+        call t%check_close('floquet: &integration rtol separate', d%integration%rtol, 1.0e-8_dp)
+        call t%check('chart: x lower case', trim(d%chart%x) == 'lambda')
+        call t%check('chart: y lower case', trim(d%chart%y) == 'inertia_ratio')
+        call t%check_close('chart: x_min', d%chart%x_min, -1.0_dp)
+        call t%check_close('chart: x_max', d%chart%x_max, 1.25_dp)
+        call t%check_close('chart: y_min', d%chart%y_min, 0.5_dp)
+        call t%check_close('chart: y_max', d%chart%y_max, 2.0_dp)
+        call t%check('chart: nx, ny', d%chart%nx == 50 .and. d%chart%ny == 60)
 
         ! the echo carries both groups and reads back the same values
         open (newunit=u, file=dir//'/fc_echo.txt', status='replace', action='write')
@@ -659,28 +659,28 @@ contains
         call t%check('floquet/chart: echo reads back ('//msg_of(stat)//')', &
                      stat%code == STATUS_OK)
         call t%check('floquet/chart: echo same &floquet', &
-                     d%floquet_amplitude == e%floquet_amplitude .and. &
-                     d%floquet_segments == e%floquet_segments .and. &
-                     d%floquet_rtol == e%floquet_rtol)
-        call t%check('floquet/chart: echo same &chart', d%chart_x == e%chart_x .and. &
-                     d%chart_y == e%chart_y .and. d%chart_x_min == e%chart_x_min .and. &
-                     d%chart_x_max == e%chart_x_max .and. d%chart_y_min == e%chart_y_min .and. &
-                     d%chart_y_max == e%chart_y_max .and. d%chart_nx == e%chart_nx .and. &
-                     d%chart_ny == e%chart_ny)
+                     d%floquet%amplitude == e%floquet%amplitude .and. &
+                     d%floquet%segments == e%floquet%segments .and. &
+                     d%floquet%rtol == e%floquet%rtol)
+        call t%check('floquet/chart: echo same &chart', d%chart%x == e%chart%x .and. &
+                     d%chart%y == e%chart%y .and. d%chart%x_min == e%chart%x_min .and. &
+                     d%chart%x_max == e%chart%x_max .and. d%chart%y_min == e%chart%y_min .and. &
+                     d%chart%y_max == e%chart%y_max .and. d%chart%nx == e%chart%nx .and. &
+                     d%chart%ny == e%chart%ny)
 
         ! defaults when absent; no echo lines when the analyses are not requested
         call write_text(dir//'/fc_absent.nml', SB)
         call read_deck(dir//'/fc_absent.nml', d, stat)
         call t%check('floquet/chart defaults: status ok ('//msg_of(stat)//')', &
                      stat%code == STATUS_OK)
-        call t%check('floquet defaults', d%floquet_amplitude == 45.0_dp .and. &
-                     d%floquet_segments == 1 .and. d%floquet_rtol == 1.0e-10_dp .and. &
-                     d%floquet_amplitude == ref%floquet_amplitude)
-        call t%check('chart defaults', trim(d%chart_x) == 'l' .and. &
-                     trim(d%chart_y) == 'amplitude' .and. d%chart_x_min == 0.5_dp .and. &
-                     d%chart_x_max == 4.0_dp .and. d%chart_y_min == 5.0_dp .and. &
-                     d%chart_y_max == 90.0_dp .and. d%chart_nx == ref%chart_nx .and. &
-                     d%chart_ny == ref%chart_ny)
+        call t%check('floquet defaults', d%floquet%amplitude == 45.0_dp .and. &
+                     d%floquet%segments == 1 .and. d%floquet%rtol == 1.0e-10_dp .and. &
+                     d%floquet%amplitude == ref%floquet%amplitude)
+        call t%check('chart defaults', trim(d%chart%x) == 'l' .and. &
+                     trim(d%chart%y) == 'amplitude' .and. d%chart%x_min == 0.5_dp .and. &
+                     d%chart%x_max == 4.0_dp .and. d%chart%y_min == 5.0_dp .and. &
+                     d%chart%y_max == 90.0_dp .and. d%chart%nx == ref%chart%nx .and. &
+                     d%chart%ny == ref%chart%ny)
         open (newunit=u, file=dir//'/fc_echo2.txt', status='replace', action='write')
         ios = 0
         call deck_echo(d, u, ios)
@@ -700,9 +700,9 @@ contains
                         '&floquet segments = 3 /'//NL)
         call read_deck(dir//'/fc_partial.nml', d, stat)
         call t%check('floquet/chart partial: ok ('//msg_of(stat)//')', &
-                     stat%code == STATUS_OK .and. d%chart_ny == 7 .and. &
-                     d%chart_nx == ref%chart_nx .and. d%floquet_segments == 3 .and. &
-                     d%floquet_rtol == ref%floquet_rtol)
+                     stat%code == STATUS_OK .and. d%chart%ny == 7 .and. &
+                     d%chart%nx == ref%chart%nx .and. d%floquet%segments == 3 .and. &
+                     d%floquet%rtol == ref%floquet%rtol)
 
         ! valid edges of the ranges
         call good('lambda_full', SB//"&chart x = 'lambda', x_min = -1.5707963267948966, " // &
@@ -816,9 +816,9 @@ contains
         call read_deck(dir//'/cab.nml', d, stat)
         call t%check('cables: status ok ('//msg_of(stat)//')', stat%code == STATUS_OK)
         if (stat%code /= STATUS_OK) return
-        call t%check('cables: model lower case', trim(d%model) == 'elastic')
-        call t%check_close('cables: stiffness', d%cable_stiffness, 2.5e7_dp)
-        call t%check_close('cables: damping', d%cable_damping, 0.3_dp)
+        call t%check('cables: model lower case', trim(d%scene%model) == 'elastic')
+        call t%check_close('cables: stiffness', d%cables%stiffness, 2.5e7_dp)
+        call t%check_close('cables: damping', d%cables%damping, 0.3_dp)
         ! the echo carries &cables for the elastic model
         open (newunit=u, file=dir//'/cab_echo.txt', status='replace', action='write')
         ios = 0
@@ -837,9 +837,9 @@ contains
         call write_text(dir//'/cab_def.nml', SB)
         call read_deck(dir//'/cab_def.nml', d, stat)
         call t%check('cables: defaults ok ('//msg_of(stat)//')', stat%code == STATUS_OK)
-        call t%check('cables: default model kane', trim(d%model) == 'kane')
-        call t%check_close('cables: default stiffness 1e6', d%cable_stiffness, 1.0e6_dp)
-        call t%check_close('cables: default damping 0.05', d%cable_damping, 0.05_dp)
+        call t%check('cables: default model kane', trim(d%scene%model) == 'kane')
+        call t%check_close('cables: default stiffness 1e6', d%cables%stiffness, 1.0e6_dp)
+        call t%check_close('cables: default damping 0.05', d%cables%damping, 0.05_dp)
         call write_text(dir//'/cab_kane.nml', "&scene model = 'kane' /"//NL//SB)
         call read_deck(dir//'/cab_kane.nml', d, stat)
         call t%check('cables: model = ''kane'' ok ('//msg_of(stat)//')', stat%code == STATUS_OK)

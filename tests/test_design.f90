@@ -105,20 +105,20 @@ contains
         call t%check('recommendation: the smallest u(I1)/I1 among the qualifying', best)
         ! independently: rtol / 100, twice the amplitudes
         call make_pendulum(candidate_rig(rig_of(d), l, b, res%bps(res%ib)), p, st)
-        n2 = 2*d%design_n_amplitudes
+        n2 = 2*d%design%n_amplitudes
         ok = st%code == 0
         worst = 0.0_dp
         do j = 1, n2
-            amp = d%design_amplitude_max*j/n2
-            call floquet_analysis(p, amp*deg, d%floquet_rtol/100.0_dp, d%floquet_segments, &
+            amp = d%design%amplitude_max*j/n2
+            call floquet_analysis(p, amp*deg, d%floquet%rtol/100.0_dp, d%floquet%segments, &
                                   fr, st)
             ok = ok .and. st%code == 0
             if (st%code == 0) worst = max(worst, fr%max_modulus)
         end do
         write (*, '(a)') '   recommendation: l = '//sci(l)//', largest multiplier at '// &
-            itoa(n2)//' amplitudes, rtol '//sci(d%floquet_rtol/100.0_dp, 0)//': '//sci(worst, 9)
+            itoa(n2)//' amplitudes, rtol '//sci(d%floquet%rtol/100.0_dp, 0)//': '//sci(worst, 9)
         call t%check('recommendation (l = '//sci(l)//'): at rtol '// &
-                     sci(d%floquet_rtol/100.0_dp, 0)//' and '//itoa(n2)// &
+                     sci(d%floquet%rtol/100.0_dp, 0)//' and '//itoa(n2)// &
                      ' amplitudes every analysis succeeds', ok)
         call t%check('recommendation: stable at all '//itoa(n2)//' amplitudes (largest '// &
                      'multiplier '//sci(worst, 9)//')', ok .and. worst <= 1.0_dp + DESIGN_TOLERANCE)
@@ -149,17 +149,17 @@ contains
         call scratch_dir(dir)
         c = d
         c%name = 'edges'
-        c%analyses = 'chart'
-        c%chart_x = 'l'
-        c%chart_y = 'amplitude'
-        nx = 4*(d%design_nl - 1) + 1
-        ny = d%design_n_amplitudes
-        c%chart_nx = nx
-        c%chart_ny = ny
-        c%chart_x_min = d%design_l_min/d%b_prime
-        c%chart_x_max = d%design_l_max/d%b_prime
-        c%chart_y_min = d%design_amplitude_max/ny
-        c%chart_y_max = d%design_amplitude_max
+        c%scene%analyses = 'chart'
+        c%chart%x = 'l'
+        c%chart%y = 'amplitude'
+        nx = 4*(d%design%nl - 1) + 1
+        ny = d%design%n_amplitudes
+        c%chart%nx = nx
+        c%chart%ny = ny
+        c%chart%x_min = d%design%l_min/d%suspension%b_prime
+        c%chart%x_max = d%design%l_max/d%suspension%b_prime
+        c%chart%y_min = d%design%amplitude_max/ny
+        c%chart%y_max = d%design%amplitude_max
         call run_chart(c, dir, nstable, secs, st)
         call t%check('edges: the chart runs', st%code == 0)
         if (st%code /= 0) return
@@ -176,7 +176,7 @@ contains
             row = row + 1
             i = (row - 1)/ny + 1
             j = mod(row - 1, ny) + 1
-            x(i) = v(1)*d%b_prime
+            x(i) = v(1)*d%suspension%b_prime
             mods(i, j) = v(3)
             if (abs(v(2) - res%amps(j)) > 1.0e-12_dp*res%amps(j)) same_amps = .false.
         end do
@@ -251,19 +251,19 @@ contains
         call read_deck(SCR//'/classic.nml', d, st)
         call t%check('classical: the deck reads', st%code == 0)
         if (st%code /= 0) return
-        l = 1000.0_dp*d%b_prime
+        l = 1000.0_dp*d%suspension%b_prime
         u = input_u_t(mass=1.0e-3_dp, l=1.0e-3_dp, l_prime=1.0e-3_dp, b=5.0e-4_dp, &
                       b_prime=5.0e-4_dp, g=0.0_dp, period=1.0e-4_dp, amplitude=0.0_dp)
-        call candidate_precision(design_rig_of(d), l, d%b, d%b_prime, 0.5_dp, u, period, urel, &
+        call candidate_precision(design_rig_of(d), l, d%suspension%b, d%suspension%b_prime, 0.5_dp, u, period, urel, &
                                  lin, st)
         call t%check('classical: precision computed', st%code == 0)
-        expect = sqrt((u%mass/d%mass)**2 + (u%b/d%b)**2 + (u%b_prime/d%b_prime)**2 + &
+        expect = sqrt((u%mass/d%body%mass)**2 + (u%b/d%suspension%b)**2 + (u%b_prime/d%suspension%b_prime)**2 + &
                       0.5_dp*(u%l/l)**2 + (2.0_dp*u%period/period)**2)
         call t%check_close('classical: u(I1)/I1 = the linear propagation at 0.5 deg', urel, &
                            expect, rtol=1.0e-4_dp)
         call t%check_close('classical: linear error at 0.5 deg ~ A^2/8', lin, &
                            (0.5_dp*deg)**2/8.0_dp, rtol=2.0e-2_dp)
-        call candidate_precision(design_rig_of(d), l, d%b, d%b_prime, 25.0_dp, u, period, urel, &
+        call candidate_precision(design_rig_of(d), l, d%suspension%b, d%suspension%b_prime, 25.0_dp, u, period, urel, &
                                  lin, st)
         k = sin(0.5_dp*25.0_dp*deg)
         a = 1.0_dp
@@ -427,9 +427,9 @@ contains
         call design_sweep(d, res, '')
         call t%check('b_prime: 4 x 3 candidates, b'' 0.16, 0.20, 0.24 with the deck''s b', &
                      size(res%ls)*size(res%bs) == 12 .and. all(abs(res%bps - &
-                     [0.16_dp, 0.2_dp, 0.24_dp]) < 1.0e-15_dp) .and. all(res%bs == d%b))
-        u = input_u_t(mass=d%design_u_mass, l=d%design_u_l, l_prime=d%design_u_l, &
-                      b=d%design_u_b, b_prime=d%design_u_b, period=d%design_u_period)
+                     [0.16_dp, 0.2_dp, 0.24_dp]) < 1.0e-15_dp) .and. all(res%bs == d%suspension%b))
+        u = input_u_t(mass=d%design%u_mass, l=d%design%u_l, l_prime=d%design%u_l, &
+                      b=d%design%u_b, b_prime=d%design%u_b, period=d%design%u_period)
         call candidate_precision(design_rig_of(d), res%ls(2), res%bs(3), res%bps(3), 20.0_dp, &
                                  u, period, urel, lin, st)
         call t%check_close('b_prime: a pair''s precision is candidate_precision''s', &
@@ -447,10 +447,10 @@ contains
         call write_text(SCR//'/bprime3.nml', BOX//'&design amplitude_max = 40 /'//NL)
         call read_deck(SCR//'/bprime3.nml', d, st)
         m = 0
-        if (d%design_amplitude_measure == 25.0_dp) m = 1
+        if (d%design%amplitude_measure == 25.0_dp) m = 1
         call write_text(SCR//'/bprime3.nml', BOX//'&design amplitude_max = 20 /'//NL)
         call read_deck(SCR//'/bprime3.nml', d, st)
-        if (d%design_amplitude_measure == 20.0_dp) m = m + 1
+        if (d%design%amplitude_measure == 20.0_dp) m = m + 1
         call t%check('b_prime: amplitude_measure defaults to min(25, amplitude_max)', m == 2)
     end subroutine test_b_prime
 

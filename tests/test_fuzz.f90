@@ -466,8 +466,8 @@ contains
         character(len=4096) :: line
         character(len=:), allocatable :: model, analyses
         integer :: u, v, ios, n, g, i1, i2
-        d%record = 'input/identify_record_swing.dat'
-        d%record_path = trim(d%record)
+        d%measurement%record = 'input/identify_record_swing.dat'
+        d%measurement%record_path = trim(d%measurement%record)
         call read_record(d, full, st)
         if (st%code /= 0) return
         n = count(full%t <= FUZZ_RECORD_SPAN)
@@ -486,30 +486,30 @@ contains
             if (ios /= 0) exit
             call read_deck(trim(path), d, st)
             if (st%code /= 0) cycle
-            model = trim(d%model)
+            model = trim(d%scene%model)
             analyses = ''
             i2 = 0
             do
-                i1 = i2 + verify(d%analyses(i2 + 1:), ' ')
-                if (i1 == i2 .or. i1 > len_trim(d%analyses)) exit
-                i2 = i1 + index(d%analyses(i1:)//' ', ' ') - 2
-                if (d%analyses(i1:i2) /= 'work_precision') analyses = analyses//' '// &
-                    d%analyses(i1:i2)
+                i1 = i2 + verify(d%scene%analyses(i2 + 1:), ' ')
+                if (i1 == i2 .or. i1 > len_trim(d%scene%analyses)) exit
+                i2 = i1 + index(d%scene%analyses(i1:)//' ', ' ') - 2
+                if (d%scene%analyses(i1:i2) /= 'work_precision') analyses = analyses//' '// &
+                    d%scene%analyses(i1:i2)
             end do
             if (len(analyses) == 0) analyses = ' simulate'
-            d%tau_end = min(d%tau_end, 2.0_dp)
-            d%dtau_out = max(d%tau_end/40.0_dp, min(d%dtau_out, d%tau_end))
-            d%chart_nx = min(d%chart_nx, 2)
-            d%chart_ny = min(d%chart_ny, 2)
-            d%floquet_rtol = max(d%floquet_rtol, 1.0e-8_dp)
-            d%design_nl = min(d%design_nl, 3)
-            d%design_nb = min(d%design_nb, 2)
-            d%design_n_amplitudes = min(d%design_n_amplitudes, 2)
-            d%monte_carlo = min(d%monte_carlo, FUZZ_MC_MAX)
-            if (len_trim(d%record) > 0) d%record = FUZZ_RECORD
+            d%integration%tau_end = min(d%integration%tau_end, 2.0_dp)
+            d%integration%dtau_out = max(d%integration%tau_end/40.0_dp, min(d%integration%dtau_out, d%integration%tau_end))
+            d%chart%nx = min(d%chart%nx, 2)
+            d%chart%ny = min(d%chart%ny, 2)
+            d%floquet%rtol = max(d%floquet%rtol, 1.0e-8_dp)
+            d%design%nl = min(d%design%nl, 3)
+            d%design%nb = min(d%design%nb, 2)
+            d%design%n_amplitudes = min(d%design%n_amplitudes, 2)
+            d%measurement%monte_carlo = min(d%measurement%monte_carlo, FUZZ_MC_MAX)
+            if (len_trim(d%measurement%record) > 0) d%measurement%record = FUZZ_RECORD
             ! every group in the echo: elastic shows &cables, the analyses theirs
-            d%model = 'elastic'
-            d%analyses = 'floquet chart design identify'
+            d%scene%model = 'elastic'
+            d%scene%analyses = 'floquet chart design identify'
             open (newunit=v, file=dir//'/echo.txt', status='replace', action='write')
             ios = 0
             call deck_echo(d, v, ios)

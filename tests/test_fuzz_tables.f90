@@ -96,8 +96,8 @@ contains
         path = SCRATCH//'/rec.dat'
         do k = 1, N_RECORDS
             d = d0
-            d%record = 'rec.dat'
-            d%record_path = path
+            d%measurement%record = 'rec.dat'
+            d%measurement%record_path = path
             tt = full%t(1:n)
             vv = full%v(1:n)
             must_refuse = .false.
@@ -135,7 +135,7 @@ contains
             case (5)
                 ! deg/s, said so
                 vv = vv*57.29577951308232_dp
-                d%record_units = 'deg/s'
+                d%measurement%record_units = 'deg/s'
                 same_as = .true.
                 scale = 1.0_dp
                 what = 'deg/s said'
@@ -262,8 +262,8 @@ contains
         first_bad = ''
         do k = 1, N_TRIALS
             d = d0
-            d%trials = 'trials.csv'
-            d%trials_path = path
+            d%measurement%trials = 'trials.csv'
+            d%measurement%trials_path = path
             must_refuse = .false.
             valid = .false.
             kind = int(9*rnd(state))
@@ -368,8 +368,8 @@ contains
         first_bad = ''
         do k = 1, N_HANGS
             d = d0
-            d%tensor_hangs = 'hangs.csv'
-            d%tensor_hangs_path = path
+            d%tensor%hangs = 'hangs.csv'
+            d%tensor%hangs_path = path
             valid = .false.
             must_refuse = .false.
             kind = int(10*rnd(state))
@@ -565,7 +565,7 @@ contains
         call read_deck('input/identify_periods.nml', d, st)
         call t%check('fuzz_tables: input/identify_periods.nml read', st%code == STATUS_OK)
         if (st%code /= STATUS_OK) return
-        d%monte_carlo = 0
+        d%measurement%monte_carlo = 0
         do k = 1, 2
             call periods_runs(d, N, N, k == 1, 1.0e-3_dp, runs(k), what)
         end do

@@ -89,27 +89,27 @@ contains
         d = test_rig()
         d%path = SCR//'/asym.nml'
         d%name = 'asym'
-        d%title = 'asymmetric test rig'
-        d%l_prime = 1.18_dp
-        d%inertia = [I1_TRUE, 0.063_dp, 0.0304_dp]
-        d%r = 0.25_dp
-        d%lambda = 0.64_dp
-        d%sway_depth = 0.3_dp
-        d%amplitude = 30.0_dp
-        d%rtol = 1.0e-10_dp
-        d%atol = 1.0e-12_dp
-        d%c_v = CV_TRUE
-        d%c_q = CQ_TRUE
+        d%scene%title = 'asymmetric test rig'
+        d%suspension%l_prime = 1.18_dp
+        d%body%inertia = [I1_TRUE, 0.063_dp, 0.0304_dp]
+        d%body%r = 0.25_dp
+        d%body%lambda = 0.64_dp
+        d%body%sway_depth = 0.3_dp
+        d%start%amplitude = 30.0_dp
+        d%integration%rtol = 1.0e-10_dp
+        d%integration%atol = 1.0e-12_dp
+        d%damping%c_v = CV_TRUE
+        d%damping%c_q = CQ_TRUE
     end function asym_rig
 
     !> The same rig with equal cables and the mass centre below the midpoint of CD.
     function sym_rig() result(d)
         type(deck_t) :: d
         d = asym_rig()
-        d%l_prime = d%l
-        d%lambda = atan2(0.15_dp, 0.2_dp)
-        d%c_v = 0.0_dp
-        d%c_q = 0.0_dp
+        d%suspension%l_prime = d%suspension%l
+        d%body%lambda = atan2(0.15_dp, 0.2_dp)
+        d%damping%c_v = 0.0_dp
+        d%damping%c_q = 0.0_dp
     end function sym_rig
 
     !> A record of the rig d made here: samples every 1/rate_hz s for duration s, normal
@@ -125,8 +125,8 @@ contains
         type(rng_t) :: g
         integer :: n, i
         dt = d
-        dt%rtol = 1.0e-12_dp
-        dt%atol = 1.0e-14_dp
+        dt%integration%rtol = 1.0e-12_dp
+        dt%integration%atol = 1.0e-14_dp
         n = nint(duration*rate_hz) + 1
         allocate (rec%t(n), rec%v(n), rec%u(n))
         do i = 1, n
@@ -220,12 +220,12 @@ contains
         real(dp) :: jw(3, 5), w, pw(0:2), work, err, emax
         integer :: n, k, j
         d = asym_rig()
-        d%c_v = 20.0_dp*CV_TRUE                 ! enough to dissipate a good part
-        d%c_q = 20.0_dp*CQ_TRUE
-        d%tau_end = 40.0_dp
-        d%dtau_out = 0.005_dp
-        d%rtol = 1.0e-12_dp
-        d%atol = 1.0e-14_dp
+        d%damping%c_v = 20.0_dp*CV_TRUE                 ! enough to dissipate a good part
+        d%damping%c_q = 20.0_dp*CQ_TRUE
+        d%integration%tau_end = 40.0_dp
+        d%integration%dtau_out = 0.005_dp
+        d%integration%rtol = 1.0e-12_dp
+        d%integration%atol = 1.0e-14_dp
         call make_pendulum(rig_of(d), p, st)
         call run_simulation(d, SCR, sm, st)
         call t%check('energy: damped simulation runs', st%code == 0)
@@ -292,10 +292,10 @@ contains
         d = sym_rig()
         d%name = 'decay'
         d%path = SCR//'/decay.nml'
-        d%amplitude = 1.0_dp
-        d%c_v = 2.0e-3_dp
-        d%tau_end = 80.0_dp
-        d%dtau_out = 0.01_dp
+        d%start%amplitude = 1.0_dp
+        d%damping%c_v = 2.0e-3_dp
+        d%integration%tau_end = 80.0_dp
+        d%integration%dtau_out = 0.01_dp
         call make_pendulum(rig_of(d), p, st)
         call run_simulation(d, SCR, sm, st)
         call t%check('decay: runs', st%code == 0)
@@ -343,8 +343,8 @@ contains
         integer :: k
         real(dp), parameter :: amps(3) = [10.0_dp, 40.0_dp, 90.0_dp]
         d = sym_rig()
-        d%rtol = 1.0e-12_dp
-        d%atol = 1.0e-14_dp
+        d%integration%rtol = 1.0e-12_dp
+        d%integration%atol = 1.0e-14_dp
         do k = 1, 3
             call torsion_period_s(rig_of(d), I1_TRUE, amps(k), te, st)
             call simulated_period_s(rig_of(d), accuracy_of(d), I1_TRUE, amps(k), ts, s2)
@@ -370,13 +370,13 @@ contains
             call simulated_period_s(rig_of(d), accuracy_of(d), I1_TRUE, amps(k), per(k), st)
         end do
         call t%check('asymmetric: periods simulated', st%code == 0)
-        d%inertia(1) = 0.7_dp*I1_TRUE
+        d%body%inertia(1) = 0.7_dp*I1_TRUE
         u%period = 1.0e-4_dp
         call invert_periods(rig_of(d), accuracy_of(d), per, amps, u, f, st)
         call t%check('asymmetric: inversion converges', st%code == 0)
         call t%check_close('asymmetric: I1 back to 1e-8 from 30% low', f%i1, I1_TRUE, &
                            rtol=1.0e-8_dp)
-        d%inertia(1) = 1.3_dp*I1_TRUE
+        d%body%inertia(1) = 1.3_dp*I1_TRUE
         call invert_periods(rig_of(d), accuracy_of(d), per(2:2), amps(2:2), u, f, st)
         call t%check_close('asymmetric: I1 from one period, 30% high', f%i1, I1_TRUE, &
                            rtol=1.0e-8_dp)
@@ -396,10 +396,10 @@ contains
         integer :: k, j
         real(dp), parameter :: amps(3) = [2.0_dp, 1.0_dp, 0.5_dp], dls(2) = [0.02_dp, 0.01_dp]
         d = sym_rig()
-        d%rtol = 1.0e-12_dp
-        d%atol = 1.0e-14_dp
+        d%integration%rtol = 1.0e-12_dp
+        d%integration%atol = 1.0e-14_dp
         do j = 1, 2
-            d%l_prime = d%l - dls(j)
+            d%suspension%l_prime = d%suspension%l - dls(j)
             do k = 1, 3
                 call simulated_period_s(rig_of(d), accuracy_of(d), I1_TRUE, amps(k), tp(k), st)
             end do
@@ -414,7 +414,7 @@ contains
                            ratio(2), 4.0_dp, rtol=0.01_dp)
         call t%check_close('small amplitude: the classical formula''s miss falls as dl^2', &
                            err(1)/err(2), 4.0_dp, rtol=0.05_dp)
-        order = d%mass*(0.15_dp*dls(1)/d%b_prime)**2/I1_TRUE
+        order = d%body%mass*(0.15_dp*dls(1)/d%suspension%b_prime)**2/I1_TRUE
         call t%check('small amplitude: ... and is of the order m (h dl/b'')^2/I1', &
                      err(1) > 0.3_dp*order .and. err(1) < 1.5_dp*order)
     end subroutine test_asym_small
@@ -448,7 +448,7 @@ contains
         call t%check('budget (asymmetric): computed', st%code == 0)
         if (st%code /= 0) return
         ss = 0.0_dp
-        xs = [d%mass, d%l, d%l_prime, d%b, d%b_prime, d%g]
+        xs = [d%body%mass, d%suspension%l, d%suspension%l_prime, d%suspension%b, d%suspension%b_prime, d%suspension%g]
         us = [u%mass, u%l, u%l_prime, u%b, u%b_prime, u%g]
         do j = 1, 6
             call setup(3.0e-4_dp*xs(j))
@@ -509,10 +509,10 @@ contains
         type(status_t) :: st
         d = asym_rig()
         rec = synthetic(d, 12.0_dp, 50.0_dp, 1.0e-3_dp, 3, .false.)
-        d%inertia(1) = 0.7_dp*I1_TRUE
-        d%c_v = 0.0_dp
-        d%c_q = 0.0_dp
-        d%estimate = 'I1 c_v c_q'
+        d%body%inertia(1) = 0.7_dp*I1_TRUE
+        d%damping%c_v = 0.0_dp
+        d%damping%c_q = 0.0_dp
+        d%measurement%estimate = 'I1 c_v c_q'
         call identify_record(d, rec, res, st)
         call t%check('record fit: converges from 30% off', st%code == 0)
         if (st%code /= 0) then
@@ -557,8 +557,8 @@ contains
                 rec%has_u = .true.
                 rec%u = 2.0e-3_dp
             end if
-            d%inertia(1) = 0.95_dp*I1_TRUE
-            d%estimate = 'I1 c_v c_q'
+            d%body%inertia(1) = 0.95_dp*I1_TRUE
+            d%measurement%estimate = 'I1 c_v c_q'
             call identify_record(d, rec, res, st)
             if (st%code /= 0) then
                 write (*, '(a)') '   seed '//itoa(100 + k)//': '//st%msg
@@ -636,15 +636,15 @@ contains
         call read_deck(SCR//'/g1.nml', d, st)
         call t%check('groups: read', st%code == 0)
         if (st%code /= 0) return
-        call t%check_close('groups: c_v', d%c_v, 1.0e-4_dp)
-        call t%check_close('groups: c_q', d%c_q, 2.0e-4_dp)
-        call t%check('groups: two periods', d%n_periods == 2)
-        call t%check_close('groups: amplitudes(2)', d%amplitudes(2), 40.0_dp)
+        call t%check_close('groups: c_v', d%damping%c_v, 1.0e-4_dp)
+        call t%check_close('groups: c_q', d%damping%c_q, 2.0e-4_dp)
+        call t%check('groups: two periods', d%measurement%n_periods == 2)
+        call t%check_close('groups: amplitudes(2)', d%measurement%amplitudes(2), 40.0_dp)
         call t%check('groups: record relative to the deck''s folder', &
-                     d%record_path == SCR//'/r.dat')
-        call t%check('groups: quantity in lower case', trim(d%quantity) == 'rate')
-        call t%check('groups: monte_carlo, seed, u_mass', d%monte_carlo == 50 .and. &
-                     d%seed == 9 .and. d%u_mass == 0.002_dp)
+                     d%measurement%record_path == SCR//'/r.dat')
+        call t%check('groups: quantity in lower case', trim(d%measurement%quantity) == 'rate')
+        call t%check('groups: monte_carlo, seed, u_mass', d%measurement%monte_carlo == 50 .and. &
+                     d%measurement%seed == 9 .and. d%measurement%u_mass == 0.002_dp)
         call refused('&damping c_v = -1e-4 /', 'must not be negative', '&damping c_v')
         call refused("&measurement periods(1) = 1.4, periods(3) = 1.5, amplitudes = 10, 20 /", &
                      'a gap in periods', 'periods(3)')
@@ -711,7 +711,7 @@ contains
         g = rng_stream(7, 0)
         same = dp_%n_periods == 3
         do k = 1, min(3, dp_%n_periods)
-            call torsion_period_s(rig_of(dt), dt%inertia(1), dp_%amplitudes(k), tp, st)
+            call torsion_period_s(rig_of(dt), dt%body%inertia(1), dp_%amplitudes(k), tp, st)
             tp = anint((tp + 1.0e-4_dp*rng_normal(g))*1.0e5_dp)/1.0e5_dp
             same = same .and. abs(tp - dp_%periods(k)) < 1.0e-9_dp
         end do
@@ -754,7 +754,7 @@ contains
         integer :: ex1, ex2, ex
         logical :: has
         d = asym_rig()
-        d%title = 'mc'
+        d%scene%title = 'mc'
         call make_record(d, 4.0_dp, 50.0_dp, 2.0e-3_dp, 5, 'angle', SCR//'/mc_rec.dat', st)
         call write_text(SCR//'/mc.nml', "&scene analyses = 'identify' /"//NL// &
             '&suspension b = 0.4, b_prime = 0.4, l = 1.2, l_prime = 1.18, g = 9.80665 /'//NL// &

@@ -41,15 +41,15 @@ contains
         type(deck_t) :: d
         d%path = 'test_rig.nml'
         d%name = 'test_rig'
-        d%b = 0.4_dp
-        d%b_prime = 0.4_dp
-        d%l = 1.2_dp
-        d%l_prime = 1.2_dp
-        d%g = 9.80665_dp
-        d%mass = 3.1_dp
-        d%inertia = [0.05_dp, 0.06_dp, 0.03_dp]
-        d%r = sqrt(0.2_dp**2 + 0.15_dp**2)
-        d%lambda = atan2(0.15_dp, 0.2_dp)
+        d%suspension%b = 0.4_dp
+        d%suspension%b_prime = 0.4_dp
+        d%suspension%l = 1.2_dp
+        d%suspension%l_prime = 1.2_dp
+        d%suspension%g = 9.80665_dp
+        d%body%mass = 3.1_dp
+        d%body%inertia = [0.05_dp, 0.06_dp, 0.03_dp]
+        d%body%r = sqrt(0.2_dp**2 + 0.15_dp**2)
+        d%body%lambda = atan2(0.15_dp, 0.2_dp)
     end function test_rig
 
     !> splitmix64 and xoshiro256** against the sequences of their published definitions
@@ -137,14 +137,14 @@ contains
         call t%check('exact: periods of the test rig', st%code == 0)
         call t%check('exact: the period grows with the amplitude', &
             periods(1) < periods(2) .and. periods(2) < periods(3))
-        d%inertia(1) = 0.065_dp
+        d%body%inertia(1) = 0.065_dp
         u%period = 1.0e-4_dp
         call invert_periods(rig_of(d), accuracy_of(d), periods, amps, u, f, st)
         call t%check('exact: inversion succeeds', st%code == 0)
         call t%check_close('exact: I1 from three exact periods', f%i1, 0.05_dp, rtol=1.0e-8_dp)
         call t%check('exact: residual below 1e-12 s', f%residual_rms < 1.0e-12_dp)
         call t%check('exact: few Gauss-Newton iterations', f%iterations <= 12)
-        d%inertia(1) = 0.035_dp
+        d%body%inertia(1) = 0.035_dp
         call invert_periods(rig_of(d), accuracy_of(d), periods(3:3), amps(3:3), u, f, st)
         call t%check_close('exact: I1 from one period at 60 deg, start 30% low', f%i1, &
             0.05_dp, rtol=1.0e-8_dp)
@@ -191,26 +191,26 @@ contains
         if (st%code /= 0) return
         i1 = f%i1
         call t%check('budget: 8 rows for one period', size(f%budget) == 8)
-        call t%check_close('budget: c_mass = I1/m (exact)', f%budget(1)%sensitivity, i1/d%mass, &
+        call t%check_close('budget: c_mass = I1/m (exact)', f%budget(1)%sensitivity, i1/d%body%mass, &
             rtol=1.0e-6_dp)
         ! I1 ~ g only up to the body's vertical kinetic energy (z'^2 next to I1 in J of the
         ! energy integral), 1e-5 of I1 at 0.5 deg
-        call t%check_close('budget: c_g = I1/g', f%budget(6)%sensitivity, i1/d%g, &
+        call t%check_close('budget: c_g = I1/g', f%budget(6)%sensitivity, i1/d%suspension%g, &
             rtol=2.0e-5_dp)
         call t%check_close('budget: c_l = -I1/(2l)', f%budget(2)%sensitivity, &
-            -i1/(2*d%l), rtol=2.0e-3_dp)
+            -i1/(2*d%suspension%l), rtol=2.0e-3_dp)
         call t%check_close('budget: c_l_prime = c_l', f%budget(3)%sensitivity, &
             f%budget(2)%sensitivity, rtol=1.0e-9_dp)
-        call t%check_close('budget: c_b = I1/b', f%budget(4)%sensitivity, i1/d%b, rtol=2.0e-3_dp)
+        call t%check_close('budget: c_b = I1/b', f%budget(4)%sensitivity, i1/d%suspension%b, rtol=2.0e-3_dp)
         call t%check_close('budget: c_b_prime = I1/b''', f%budget(5)%sensitivity, &
-            i1/d%b_prime, rtol=2.0e-3_dp)
+            i1/d%suspension%b_prime, rtol=2.0e-3_dp)
         call t%check_close('budget: c_T = 2 I1/T', f%budget(7)%sensitivity, 2*i1/tp(1), &
             rtol=1.0e-4_dp)
         call t%check('budget: amplitude matters little at 0.5 deg', &
             abs(f%budget(8)%sensitivity)*1.0_dp < 1.0e-4_dp*i1)
-        uu = sqrt((i1/d%mass*u%mass)**2 + 2*(i1/(2*d%l)*u%l)**2 + (i1/d%b*u%b)**2 + &
-                  (i1/d%b_prime*u%b_prime)**2 + (2*i1/tp(1)*u%period)**2 + &
-                  (i1/d%g*u%g)**2)
+        uu = sqrt((i1/d%body%mass*u%mass)**2 + 2*(i1/(2*d%suspension%l)*u%l)**2 + (i1/d%suspension%b*u%b)**2 + &
+                  (i1/d%suspension%b_prime*u%b_prime)**2 + (2*i1/tp(1)*u%period)**2 + &
+                  (i1/d%suspension%g*u%g)**2)
         call t%check_close('budget: u(I1) = the root sum of squares of the laws', f%u_i1, uu, &
             rtol=3.0e-3_dp)
         call t%check('budget: contributions are |c| u', &
@@ -264,7 +264,7 @@ contains
         ! b1 horizontal at rest (btilde's rows a cyclic permutation): torsion turns the
         ! body about b3, its period does not depend on I1
         d = test_rig()
-        d%btilde = reshape([0.0_dp, 0.0_dp, 1.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, &
+        d%body%btilde = reshape([0.0_dp, 0.0_dp, 1.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, &
                             0.0_dp], [3, 3])
         call invert_periods(rig_of(d), accuracy_of(d), [1.5_dp], [20.0_dp], u, f, st)
         call t%check('refusal: b1 not vertical at rest is ERR_DECK', st%code == ERR_DECK)

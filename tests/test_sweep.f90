@@ -631,13 +631,13 @@ contains
         call fresh_dir(d)
         call write_text(d//'/bad.nml', BADMC)
         call read_deck(d//'/bad.nml', dk, st)
-        u = input_u_t(period=dk%u_period)
-        call invert_periods(rig_of(dk), accuracy_of(dk), dk%periods(1:1), dk%amplitudes(1:1), u, &
+        u = input_u_t(period=dk%measurement%u_period)
+        call invert_periods(rig_of(dk), accuracy_of(dk), dk%measurement%periods(1:1), dk%measurement%amplitudes(1:1), u, &
                             f, st)
         kfail = 0
-        do k = 1, dk%monte_carlo
-            call period_mc_sample(rig_of(dk), accuracy_of(dk), dk%periods(1:1), &
-                                  dk%amplitudes(1:1), u, f%i1, dk%seed, k, i1, st)
+        do k = 1, dk%measurement%monte_carlo
+            call period_mc_sample(rig_of(dk), accuracy_of(dk), dk%measurement%periods(1:1), &
+                                  dk%measurement%amplitudes(1:1), u, f%i1, dk%measurement%seed, k, i1, st)
             if (st%code /= STATUS_OK) then
                 kfail = k
                 exit

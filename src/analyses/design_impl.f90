@@ -7,7 +7,8 @@ submodule (design) design_impl
     use text, only: itoa, sci, fixed
     use deck, only: deck_t, deck_echo
     use geometry, only: pendulum_t
-    use rig, only: rig_t, rig_of, accuracy_t, accuracy_of, make_pendulum, move_b_prime
+    use rig, only: rig_t, accuracy_t, make_pendulum, move_b_prime
+    use deck_runs, only: rig_of, accuracy_of
     use floquet, only: check_torsion_scene, STABILITY_MARGIN, floquet_point, CHART_INVALID, &
                        CHART_FAILED, point_values_valid
     use sweep_engine, only: sweep_task_t, sweep_run, sweep_options_t, sweep_report_t, &
@@ -58,8 +59,8 @@ contains
     module procedure design_rig_of
         dr%rg = rig_of(d)
         dr%acc = accuracy_of(d)
-        dr%fq_rtol = d%floquet_rtol
-        dr%fq_segments = d%floquet_segments
+        dr%fq_rtol = d%floquet%rtol
+        dr%fq_segments = d%floquet%segments
     end procedure design_rig_of
 
     !> The rig with the candidate's cables l = l', support spacing b and body spacing b'.
@@ -76,14 +77,14 @@ contains
     module procedure design_grid
         integer :: i, j
         real(dp), allocatable :: b1(:), bp1(:)
-        allocate (ls(d%design_nl), amps(d%design_n_amplitudes))
-        do i = 1, d%design_nl
-            ls(i) = d%design_l_min + (d%design_l_max - d%design_l_min)*(i - 1)/(d%design_nl - 1)
+        allocate (ls(d%design%nl), amps(d%design%n_amplitudes))
+        do i = 1, d%design%nl
+            ls(i) = d%design%l_min + (d%design%l_max - d%design%l_min)*(i - 1)/(d%design%nl - 1)
         end do
-        ls(d%design_nl) = d%design_l_max
-        b1 = spacings(d%design_b_min, d%design_b_max, d%design_nb, d%b)
-        bp1 = spacings(d%design_b_prime_min, d%design_b_prime_max, d%design_nb_prime, &
-                       d%b_prime)
+        ls(d%design%nl) = d%design%l_max
+        b1 = spacings(d%design%b_min, d%design%b_max, d%design%nb, d%suspension%b)
+        bp1 = spacings(d%design%b_prime_min, d%design%b_prime_max, d%design%nb_prime, &
+                       d%suspension%b_prime)
         allocate (bs(size(b1)*size(bp1)), bps(size(b1)*size(bp1)))
         do j = 1, size(bp1)
             do i = 1, size(b1)
@@ -91,10 +92,10 @@ contains
                 bps(i + size(b1)*(j - 1)) = bp1(j)
             end do
         end do
-        do i = 1, d%design_n_amplitudes
-            amps(i) = d%design_amplitude_max*i/d%design_n_amplitudes
+        do i = 1, d%design%n_amplitudes
+            amps(i) = d%design%amplitude_max*i/d%design%n_amplitudes
         end do
-        amps(d%design_n_amplitudes) = d%design_amplitude_max
+        amps(d%design%n_amplitudes) = d%design%amplitude_max
     contains
         !> n spacings from lo to hi; with n = 1, lo (the deck's value when lo = 0).
         pure function spacings(lo, hi, n, deck_value) result(v)
@@ -146,7 +147,7 @@ contains
         do m = 1, size(bs)
             do i = 1, size(ls)
                 call torsion_period_s(candidate_rig(rg, ls(i), bs(m), bps(m)), rg%inertia(1), &
-                                      d%design_amplitude_measure, t, st)
+                                      d%design%amplitude_measure, t, st)
                 if (st%code /= STATUS_OK) cycle
                 if (t < tmin) then
                     tmin = t
@@ -155,8 +156,8 @@ contains
                 end if
             end do
         end do
-        if (tmin < huge(1.0_dp) .and. d%design_u_period >= tmin) call set_error(stat, ERR_DECK, &
-            '&design u_period = '//num(d%design_u_period)//' s: not below the shortest '// &
+        if (tmin < huge(1.0_dp) .and. d%design%u_period >= tmin) call set_error(stat, ERR_DECK, &
+            '&design u_period = '//num(d%design%u_period)//' s: not below the shortest '// &
             'period of the candidates ('//num(tmin)//' s at l = '//num(lmin)//', b = '// &
             num(bmin)//'); allowed: 0 <= u_period < '//num(tmin)//' s')
     end procedure design_ready
@@ -478,7 +479,7 @@ contains
         type is (precision_work_t)
             task%dr = design_rig_of(d)
             call design_grid(d, task%ls, task%bs, task%bps, amps)
-            task%amp = d%design_amplitude_measure
+            task%amp = d%design%amplitude_measure
             task%u = design_uncertainties(d)
         end select
     end subroutine fill_task
@@ -496,13 +497,13 @@ contains
     pure function design_uncertainties(d) result(u)
         type(deck_t), intent(in) :: d
         type(input_u_t) :: u
-        u%mass = d%design_u_mass
-        u%l = d%design_u_l
-        u%l_prime = d%design_u_l
-        u%b = d%design_u_b
-        u%b_prime = d%design_u_b
+        u%mass = d%design%u_mass
+        u%l = d%design%u_l
+        u%l_prime = d%design%u_l
+        u%b = d%design%u_b
+        u%b_prime = d%design%u_b
         u%g = 0.0_dp
-        u%period = d%design_u_period
+        u%period = d%design%u_period
         u%amplitude = 0.0_dp
     end function design_uncertainties
 
@@ -621,7 +622,7 @@ contains
             msg = msg//', b_prime = '//num(res%bps(1))
         end if
         msg = msg//'), '//itoa(res%n_stable)//' are stable at every amplitude up to '// &
-            num(d%design_amplitude_max)//' deg (largest multiplier <= 1 + '// &
+            num(d%design%amplitude_max)//' deg (largest multiplier <= 1 + '// &
             num(DESIGN_TOLERANCE)//')'
         if (res%n_stable > 0) then
             msg = msg//' but none lies '//itoa(nint(100*MARGIN_FRACTION))//'% of its l '// &
@@ -681,13 +682,13 @@ contains
         !! within the deck's limit 1e3 b'.
         real(dp) function wider_top(l0)
             real(dp), intent(in) :: l0
-            wider_top = min(max(lmax + span, 2.0_dp*lmax), 1.0e3_dp*d%b_prime)
+            wider_top = min(max(lmax + span, 2.0_dp*lmax), 1.0e3_dp*d%suspension%b_prime)
             if (wider_top <= l0) wider_top = 2.0_dp*l0
         end function wider_top
 
         !> The bottom of a range below l_min: half l_min, at least 1e-3 b'.
         real(dp) function wider_bottom()
-            wider_bottom = max(0.5_dp*lmin, 1.0e-3_dp*d%b_prime)
+            wider_bottom = max(0.5_dp*lmin, 1.0e-3_dp*d%suspension%b_prime)
         end function wider_bottom
 
         !> The worst multiplier over the amplitudes and b at l index i (sentinels: huge).
@@ -729,7 +730,7 @@ contains
         if (stat%code /= STATUS_OK) return
         i = res%il
         m = res%ib
-        write (u, '(a)', iostat=ios) '# bifilar rig design: '//trim(d%title)
+        write (u, '(a)', iostat=ios) '# bifilar rig design: '//trim(d%scene%title)
         call put('# candidates: l = l'' and b in deck units; Floquet stability of pure '// &
             'torsion at the amplitudes j amplitude_max/n_amplitudes (deg), stable where the '// &
             'largest multiplier is <= 1 + tolerance at every amplitude; band edges bisected '// &
@@ -750,13 +751,13 @@ contains
         call write_kv(u, 'stable_margin_l', res%margin(i, m), ios)
         call write_kv(u, 'max_modulus', res%max_modulus(i, m), ios)
         call write_kv(u, 'linear_error', res%linear_error(i, m), ios)
-        call write_kv(u, 'period_amplitude_deg', d%design_amplitude_measure, ios)
-        call write_kv(u, 'amplitude_max', d%design_amplitude_max, ios)
+        call write_kv(u, 'period_amplitude_deg', d%design%amplitude_measure, ios)
+        call write_kv(u, 'amplitude_max', d%design%amplitude_max, ios)
         call write_kv(u, 'n_amplitudes', na, ios)
         call write_kv(u, 'tolerance', DESIGN_TOLERANCE, ios)
         call write_kv(u, 'margin_fraction', MARGIN_FRACTION, ios)
         call write_kv(u, 'edge_rtol', EDGE_RTOL, ios)
-        call write_kv(u, 'floquet_rtol', d%floquet_rtol, ios)
+        call write_kv(u, 'floquet_rtol', d%floquet%rtol, ios)
         call write_kv(u, 'candidates', size(res%ls)*size(res%bs), ios)
         call write_kv(u, 'stable_candidates', res%n_stable, ios)
         call write_kv(u, 'qualified_candidates', res%n_qualified, ios)

@@ -6,19 +6,19 @@ submodule (identify) identify_impl
     use kinds, only: pi
     use status, only: set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC, ERR_MODEL
     use text, only: itoa, sci, fixed, count_words, quoted
-    use deck, only: deck_echo, estimated, deck_gave, TAU_END_MAX
+    use deck, only: deck_echo, TAU_END_MAX
     use output_io, only: write_kv, all_finite
     use fast_format, only: es_field
     use geometry, only: pendulum_t
     use bifilar_model, only: NSTATE
-    use rig, only: rig_t, start_t, accuracy_t, rig_of, start_of, accuracy_of, make_pendulum, &
-        start_state
+    use rig, only: rig_t, start_t, accuracy_t, make_pendulum, start_state
+    use deck_runs, only: rig_of, start_of, accuracy_of, deck_inputs, record_format_of, &
+        record_file, read_trials
     use least_squares, only: lsq_result_t, lsq_jacobian, lm_fit, lsq_options_t, gauss_newton_gain
     use budget, only: input_u_t
-    use records, only: read_record_file, record_format_t, record_format_of, record_file, &
-        mean_period
-    use trials, only: trial_set_t, trial_t, read_trials, RIG_COLUMNS
-    use inputs, only: input_t, deck_inputs, set_input
+    use records, only: read_record_file, record_format_t, mean_period
+    use trials, only: trial_set_t, trial_t, RIG_COLUMNS
+    use inputs, only: input_t, set_input
     use pooling, only: pooled_t, pool_releases
     use stats, only: coverage_factor, welch_satterthwaite, NU_INFINITE
     use record_fit, only: record_fit_t, record_mc_task_t, fit_problem, fit_record, covariance, &
@@ -96,12 +96,14 @@ contains
         character(len=:), allocatable :: bytes, what, first_what
         integer :: i, nsrc, nrec, nup, j
         stat%code = 0
-        if (trim(d%model) /= 'kane') then
+        if (trim(d%scene%model) /= 'kane') then
             call set_error(stat, ERR_DECK, 'analyses = ''identify'': &scene model = '''// &
-                trim(d%model)//''': identify fits the paper''s model; allowed: model = ''kane''')
+                trim(d%scene%model)//''': identify fits the paper''s model; allowed: '// &
+                'model = ''kane''')
             return
         end if
-        nsrc = count([d%n_periods > 0, len_trim(d%record) > 0, len_trim(d%trials) > 0])
+        nsrc = count([d%measurement%n_periods > 0, len_trim(d%measurement%record) > 0, &
+                      len_trim(d%measurement%trials) > 0])
         if (nsrc /= 1) then
             call set_error(stat, ERR_DECK, 'analyses = ''identify'': &measurement needs '// &
                 'one of periods (with amplitudes), record or trials; allowed: periods = '// &
@@ -111,26 +113,26 @@ contains
         end if
         call make_pendulum(rig_of(d), p, stat)
         if (stat%code /= 0) return
-        if (.not. estimated(d, 'I1')) then
-            call set_error(stat, ERR_DECK, '&measurement estimate = '''//trim(d%estimate)// &
-                ''': I1 is what identify estimates; allowed: ''I1'' followed by any of '// &
-                'c_v, c_q, amplitude, t0, bias (with a record)')
+        if (.not. d%measurement%estimated('I1')) then
+            call set_error(stat, ERR_DECK, '&measurement estimate = '''// &
+                trim(d%measurement%estimate)//''': I1 is what identify estimates; allowed: '// &
+                '''I1'' followed by any of c_v, c_q, amplitude, t0, bias (with a record)')
             return
         end if
-        if (len_trim(d%trials) > 0 .and. d%monte_carlo > 0) then
+        if (len_trim(d%measurement%trials) > 0 .and. d%measurement%monte_carlo > 0) then
             call set_error(stat, ERR_DECK, '&measurement monte_carlo = '// &
-                itoa(d%monte_carlo)//' with trials: the Monte Carlo draws one release; '// &
-                'allowed: monte_carlo = 0 with trials (the releases'' scatter is their '// &
-                'Type A part), or periods or a record with monte_carlo')
+                itoa(d%measurement%monte_carlo)//' with trials: the Monte Carlo draws one '// &
+                'release; allowed: monte_carlo = 0 with trials (the releases'' scatter is '// &
+                'their Type A part), or periods or a record with monte_carlo')
             return
         end if
         call read_trials(d, ts, stat)
         if (stat%code /= 0) return
         if (any([(len(ts%t(i)%record) > 0, i=1, size(ts%t))]) .and. &
             any([(len(ts%t(i)%record) == 0, i=1, size(ts%t))])) then
-            call set_error(stat, ERR_DECK, '&measurement trials = '//quoted(d%trials)// &
-                ': releases of periods and releases of records in one table; allowed: '// &
-                'one kind of release per table (a deck per kind)')
+            call set_error(stat, ERR_DECK, '&measurement trials = '// &
+                quoted(d%measurement%trials)//': releases of periods and releases of '// &
+                'records in one table; allowed: one kind of release per table (a deck per kind)')
             return
         end if
         nrec = count([(len(ts%t(i)%record) > 0, i=1, size(ts%t))])
@@ -141,9 +143,9 @@ contains
         do i = 1, size(ts%t)
             rg = trial_rig(d, ts%t(i))
             if (len(ts%t(i)%record) == 0) then
-                if (count_words(d%estimate) /= 1) then
+                if (count_words(d%measurement%estimate) /= 1) then
                     call set_error(stat, ERR_DECK, '&measurement estimate = '''// &
-                        trim(d%estimate)//''': with periods only I1 is estimated; '// &
+                        trim(d%measurement%estimate)//''': with periods only I1 is estimated; '// &
                         'allowed: ''I1'' (c_v, c_q, amplitude, t0, bias need a record)')
                     return
                 end if
@@ -153,7 +155,7 @@ contains
                     return
                 end if
                 ! periods no rig gives, a classical I1 beyond the triangle: refused now
-                call check_timings(d, rg, ts%t(i)%periods/ts%t(i)%cycles, ts%t(i)%amps, &
+                call check_timings(d%body, rg, ts%t(i)%periods/ts%t(i)%cycles, ts%t(i)%amps, &
                                    .not. ts%from_table, stat)
                 if (stat%code /= 0) then
                     call in_trial(ts, i, stat)
@@ -192,7 +194,8 @@ contains
                     return
                 end if
                 ! a swing no rig gives (times in ms), too coarse, a long gap, degrees
-                call check_record_times(d, rg, inp%recs(j), record_name(d, ts, i), stat)
+                call check_record_times(d%body, d%measurement, d%start, rg, inp%recs(j), &
+                                        record_name(d, ts, i), stat)
                 if (stat%code /= 0) return
                 call record_work(d, inp%recs(j), secs, what)
             end if
@@ -201,7 +204,7 @@ contains
         end do
         if (size(ts%t) > 1) first_what = itoa(size(ts%t))//' releases, the first: '// &
             first_what
-        call work_note(d, total, first_what)
+        call work_note(d%path, total, first_what)
         if (present(input)) then
             input%ready = .true.
             call move_alloc(ts%t, input%ts%t)
@@ -245,7 +248,8 @@ contains
         end do
         call system_clock(c1)
         one = real(c1 - c0, dp)/real(rate, dp)/reps
-        call periods_runs(d, size(per), nup, sym, one, runs, what)
+        call periods_runs(deck_inputs(d, .false.), d%measurement, size(per), nup, sym, one, runs, &
+                          what)
         seconds = runs*one
     end subroutine periods_work
 
@@ -267,25 +271,27 @@ contains
         what = ''
         n = size(rec%t)
         if (n < 3) return
-        call fit_problem(d, rec, prob, p0, h)
+        call fit_problem(rig_of(d), start_of(d), accuracy_of(d), d%measurement, rec, prob, p0, &
+                         h)
         span = rec%t(n) - rec%t(prob%ifirst)
-        if (.not. estimated(d, 't0')) span = rec%t(n)
+        if (.not. d%measurement%estimated('t0')) span = rec%t(n)
         tsw = record_swing_period(rec)
         if (.not. (tsw > 0.0_dp)) then
-            call reference_periods(d, prob%rg, ta, tg)
+            call reference_periods(d%body, prob%rg, ta, tg)
             tsw = max(ta, tg)
         end if
         prob%nuse = max(prob%ifirst + 1, min(n, count(rec%t <= rec%t(prob%ifirst) + &
                                                       5.0_dp*tsw)))
         part = rec%t(prob%nuse) - rec%t(prob%ifirst)
-        if (.not. estimated(d, 't0')) part = rec%t(prob%nuse)
+        if (.not. d%measurement%estimated('t0')) part = rec%t(prob%nuse)
         allocate (r(prob%nres()))
         call system_clock(c0, rate)
         call prob%residual(p0, r, st)
         call system_clock(c1)
         one = real(c1 - c0, dp)/real(rate, dp)
         if (part > 0.0_dp) one = one*max(1.0_dp, span/part)
-        call record_runs(d, prob%np, span, span/max(tsw, tiny(1.0_dp)), one, runs, what)
+        call record_runs(deck_inputs(d, .true.), d%measurement, d%integration, prob%np, span, &
+                         span/max(tsw, tiny(1.0_dp)), one, runs, what)
         seconds = runs*one
     end subroutine record_work
 
@@ -306,7 +312,7 @@ contains
         ! from the release unless t0 is estimated
         t_max = TAU_END_MAX/sqrt(rg%g/rg%b_prime)
         span = rec%t(n)
-        if (estimated(d, 't0')) span = rec%t(n) - rec%t(1)
+        if (d%measurement%estimated('t0')) span = rec%t(n) - rec%t(1)
         if (span > t_max) then
             call set_error(stat, ERR_DECK, name//': it spans '//sci(span)//' s from the '// &
                 'release, beyond what the model runs; allowed: up to '//sci(t_max)// &
@@ -322,12 +328,13 @@ contains
                 'spanning at least '//sci(1.0e-3_dp*t_max/TAU_END_MAX)//' s (tau >= 1e-3)')
             return
         end if
-        if (estimated(d, 'amplitude') .and. trim(d%mode) /= 'raised') then
-            call set_error(stat, ERR_DECK, '&measurement estimate = '''//trim(d%estimate)// &
-                ''': amplitude is the raised start''s; allowed with &start mode = ''raised''')
+        if (d%measurement%estimated('amplitude') .and. trim(d%start%mode) /= 'raised') then
+            call set_error(stat, ERR_DECK, '&measurement estimate = '''// &
+                trim(d%measurement%estimate)//''': amplitude is the raised start''s; '// &
+                'allowed with &start mode = ''raised''')
             return
         end if
-        np = count_words(d%estimate)
+        np = count_words(d%measurement%estimate)
         if (n <= np) then
             call set_error(stat, ERR_DECK, name//': '//itoa(n)//' samples for '//itoa(np)// &
                 ' parameters; allowed: more samples than parameters')
@@ -342,11 +349,11 @@ contains
         integer, intent(in) :: i
         character(len=:), allocatable :: s
         if (ts%from_table) then
-            s = '&measurement trials = '//quoted(d%trials)//', trial '// &
+            s = '&measurement trials = '//quoted(d%measurement%trials)//', trial '// &
                 quoted(ts%t(i)%label)//' (line '//itoa(ts%t(i)%line)//'), record '// &
                 quoted(ts%t(i)%record)
         else
-            s = '&measurement record = '//quoted(d%record)
+            s = '&measurement record = '//quoted(d%measurement%record)
         end if
     end function record_name
 
@@ -370,10 +377,11 @@ contains
         integer :: k
         rg = rig_of(d)
         st = start_of(d)
-        deckv = [d%l, d%l_prime, d%b, d%b_prime, d%mass]
+        deckv = [d%suspension%l, d%suspension%l_prime, d%suspension%b, d%suspension%b_prime, &
+                 d%body%mass]
         do k = 1, 5
             if (tr%rig(k) == deckv(k)) cycle
-            if (d%cables > 2 .and. k <= 2) then
+            if (d%suspension%cables > 2 .and. k <= 2) then
                 ! a platform: one length for every cable (the column l; l_prime follows it)
                 if (k == 1) call set_input(rg, st, 'length', tr%rig(1))
             else
@@ -422,8 +430,10 @@ contains
     pure function input_u(d) result(u)
         type(deck_t), intent(in) :: d
         type(input_u_t) :: u
-        u = input_u_t(mass=d%u_mass, l=d%u_l, l_prime=d%u_l_prime, b=d%u_b, &
-                      b_prime=d%u_b_prime, g=d%u_g, period=d%u_period, amplitude=d%u_amplitude)
+        associate (m => d%measurement)
+            u = input_u_t(mass=m%u_mass, l=m%u_l, l_prime=m%u_l_prime, b=m%u_b, &
+                          b_prime=m%u_b_prime, g=m%u_g, period=m%u_period, amplitude=m%u_amplitude)
+        end associate
     end function input_u
 
     !> Every release of the deck analysed alone, then pooled (combine); the Monte Carlo of
@@ -471,16 +481,20 @@ contains
         end associate
         call combine(d, rels, x, inp%ts, res, stat)
         if (stat%code /= 0) return
-        if (d%monte_carlo > 0) then
+        if (d%measurement%monte_carlo > 0) then
             if (res%from_record) then
                 call record_monte_carlo(d, rels(1), res, stat, outdir, options, report, files)
             else
                 associate (r => rels(1))
-                    call period_monte_carlo(d, r%per, r%amps, mc_u(d, r), r%i1, &
-                                            d%monte_carlo, d%seed, mean, sdev, stat, outdir, &
-                                            options, report, files, r%cycles)
+                    call period_monte_carlo(d, rig_of(d), accuracy_of(d), &
+                                            deck_inputs(d, .false.), &
+                                            r%per, r%amps, mc_u(d, r), r%i1, &
+                                            d%measurement%monte_carlo, d%measurement%seed, &
+                                            mean, sdev, stat, outdir, options, report, files, &
+                                            r%cycles)
                 end associate
-                res%u_i1_mc = sqrt(sdev**2 + d%u_tare_i1**2 + d%u_added_inertia**2)
+                res%u_i1_mc = sqrt(sdev**2 + d%measurement%u_tare_i1**2 + &
+                                   d%measurement%u_added_inertia**2)
                 res%mc_mean = mean - (res%i1_total - res%i1)
             end if
         end if
@@ -511,8 +525,8 @@ contains
         if (stat%code /= 0) return
         call combine(d, rels, x, ts, res, stat)
         if (stat%code /= 0) return
-        if (d%monte_carlo > 0) call record_monte_carlo(d, rels(1), res, stat, outdir, options, &
-                                                       report, files)
+        if (d%measurement%monte_carlo > 0) call record_monte_carlo(d, rels(1), res, stat, outdir, &
+                                                                   options, report, files)
     end procedure identify_record
 
     !> Is budget row `name` a part of the release's own u (measured anew for it) rather
@@ -656,7 +670,8 @@ contains
         r%from_record = .true.
         r%rg = rg
         r%rec = rec
-        call fit_problem(d, rec, prob, p0, h)
+        call fit_problem(rig_of(d), start_of(d), accuracy_of(d), d%measurement, rec, prob, p0, &
+                         h)
         prob%rg = rg
         ! the budget's inputs ride along the fit's last runs (record_fit's model_values)
         prob%x = x
@@ -664,7 +679,7 @@ contains
         call fit_record(prob, p0, h, fit, stat)
         r%iterations = fit%iterations
         r%evaluations = fit%evaluations
-        if (stat%code == 0 .and. trim(d%loss) == 'huber') then
+        if (stat%code == 0 .and. trim(d%measurement%loss) == 'huber') then
             ! iteratively reweighted: Huber's weights from the residuals, then the whole
             ! record refitted from the last estimate (already in its basin: no windows)
             do ih = 1, 3
@@ -766,7 +781,7 @@ contains
         r%model = e + rec%v(i0:prob%nuse)
         allocate (r%warnings(0))
         fmt = record_format_of(d)
-        if (.not. estimated(d, 'bias')) then
+        if (.not. d%measurement%estimated('bias')) then
             ! an offset the fit does not model shows as a mean of the residuals
             emean = sum(e)/m
             se = r%residual_rms*sqrt(r%tau/m)
@@ -779,8 +794,8 @@ contains
         end if
         r%period_linear = mean_period(rec, i0)
         if (r%period_linear > 0.0_dp) r%i1_linear = linear_inertia(rg, r%period_linear)
-        r%amp_max = d%amplitude
-        if (estimated(d, 'amplitude')) r%amp_max = r%p(findloc(prob%which(1:np), 4, 1))
+        r%amp_max = d%start%amplitude
+        if (d%measurement%estimated('amplitude')) r%amp_max = r%p(findloc(prob%which(1:np), 4, 1))
     end subroutine release_record
 
     !> The releases pooled (module pooling), the common inputs' budget once (their
@@ -829,16 +844,18 @@ contains
         res%i1_total = pool%mean
         u_total = sqrt(sum(uc**2))
         res%u_i1_total = u_total
-        res%i1 = pool%mean - d%tare_i1 - d%added_inertia
-        if (d%tare_i1 > 0.0_dp .or. d%u_tare_i1 > 0.0_dp) then
-            rows = [rows, budget_row_t('tare_I1', d%tare_i1, d%u_tare_i1, -1.0_dp, d%u_tare_i1)]
-            uc = [uc, d%u_tare_i1]
+        res%i1 = pool%mean - d%measurement%tare_i1 - d%measurement%added_inertia
+        if (d%measurement%tare_i1 > 0.0_dp .or. d%measurement%u_tare_i1 > 0.0_dp) then
+            rows = [rows, budget_row_t('tare_I1', d%measurement%tare_i1, d%measurement%u_tare_i1, &
+                                       -1.0_dp, d%measurement%u_tare_i1)]
+            uc = [uc, d%measurement%u_tare_i1]
             nuc = [nuc, NU_INFINITE]
         end if
-        if (d%added_inertia > 0.0_dp .or. d%u_added_inertia > 0.0_dp) then
-            rows = [rows, budget_row_t('added_inertia', d%added_inertia, d%u_added_inertia, &
-                                       -1.0_dp, d%u_added_inertia)]
-            uc = [uc, d%u_added_inertia]
+        if (d%measurement%added_inertia > 0.0_dp .or. d%measurement%u_added_inertia > 0.0_dp) then
+            rows = [rows, budget_row_t('added_inertia', d%measurement%added_inertia, &
+                                       d%measurement%u_added_inertia, -1.0_dp, &
+                                       d%measurement%u_added_inertia)]
+            uc = [uc, d%measurement%u_added_inertia]
             nuc = [nuc, NU_INFINITE]
         end if
         res%u_i1 = sqrt(sum(uc**2))
@@ -933,9 +950,9 @@ contains
                 return
             end if
         end if
-        if (.not. deck_gave(d, 'inertia')) return
-        s23 = d%inertia(2) + d%inertia(3)
-        d23 = abs(d%inertia(2) - d%inertia(3))
+        if (.not. d%body%gave('inertia')) return
+        s23 = d%body%inertia(2) + d%body%inertia(3)
+        d23 = abs(d%body%inertia(2) - d%body%inertia(3))
         if (i1 > TRIANGLE_MARGIN*s23) then
             call set_error(stat, ERR_MODEL, 'identify: I1 = '//sci(i1, 4)//' is '// &
                 fixed(i1/s23, 2)//' times I2 + I3 = '//sci(s23, 4)//' (&body inertia): no '// &
@@ -990,13 +1007,15 @@ contains
         payload = [crc_parts(r%crc), r%sigma*sqrt(r%tau), real(np, dp), r%p(1:np), &
                    r%u_p(1:np), reshape(r%jac, [size(r%jac)]), r%hw, &
                    reshape(r%dpdx, [size(r%dpdx)]), record_payload(r%rec)]
-        call record_mc_task(d, r%rec, deck_inputs(d, .true.), payload, task)
+        call record_mc_task(rig_of(d), start_of(d), accuracy_of(d), d%measurement, r%rec, &
+                            deck_inputs(d, .true.), payload, task)
         allocate (mean(np), sdev(np))
-        call monte_carlo_run(task, d, d%monte_carlo, payload, mean, sdev, stat, outdir, &
-                             options, report, files)
+        call monte_carlo_run(task, d, d%measurement%monte_carlo, payload, mean, sdev, stat, &
+                             outdir, options, report, files)
         if (stat%code /= 0) return
         res%mc_mean = mean(1) - (res%i1_total - res%i1)
-        res%u_i1_mc = sqrt(sdev(1)**2 + d%u_tare_i1**2 + d%u_added_inertia**2)
+        res%u_i1_mc = sqrt(sdev(1)**2 + d%measurement%u_tare_i1**2 + &
+                           d%measurement%u_added_inertia**2)
     end subroutine record_monte_carlo
 
     !> A record as reals, last in a Monte Carlo's payload: t(n), v(n), u(n), has_u, rate,
@@ -1039,25 +1058,27 @@ contains
         type(record_t) :: rec
         logical :: ok
         stat%code = 0
-        if (d%n_periods > 0) then
+        if (d%measurement%n_periods > 0) then
             allocate (period_mc_task_t :: task)
             select type (task)
             type is (period_mc_task_t)
-                call period_mc_task(d, payload, task)
+                call period_mc_task(rig_of(d), accuracy_of(d), deck_inputs(d, .false.), payload, &
+                                    task)
             end select
             return
         end if
         call record_from_payload(payload, rec, ok)
         if (.not. ok) then
-            call set_error(stat, ERR_DECK, '&measurement record = '''//trim(d%record)// &
-                ''': the Monte Carlo''s message from rank 0 holds no record; allowed: the '// &
-                'same bin/bifilar_mpi on every rank')
+            call set_error(stat, ERR_DECK, '&measurement record = '''// &
+                trim(d%measurement%record)//''': the Monte Carlo''s message from rank 0 '// &
+                'holds no record; allowed: the same bin/bifilar_mpi on every rank')
             return
         end if
         allocate (record_mc_task_t :: task)
         select type (task)
         type is (record_mc_task_t)
-            call record_mc_task(d, rec, deck_inputs(d, .true.), payload, task)
+            call record_mc_task(rig_of(d), start_of(d), accuracy_of(d), d%measurement, rec, &
+                                deck_inputs(d, .true.), payload, task)
         end select
     end procedure identify_mc_task
 
@@ -1081,7 +1102,7 @@ contains
         call files%open(outdir//'/'//d%name//'.identify', u, stat)
         if (stat%code /= 0) return
         ios = 0
-        write (u, '(a)', iostat=ios) '# bifilar identify: '//trim(d%title)
+        write (u, '(a)', iostat=ios) '# bifilar identify: '//trim(d%scene%title)
         if (ios == 0) write (u, '(a)', iostat=ios) '# I1 and its standard uncertainties in the '// &
             'deck''s units (mass x length^2); c_v, c_q in torque per rate (squared), '// &
             'amplitude in degrees, t0 in s, bias in rad or rad/s'
@@ -1102,13 +1123,14 @@ contains
         else
             call write_kv(u, 'dof_eff', res%dof_eff, ios)
         end if
-        if (d%tare_i1 > 0.0_dp .or. d%added_inertia > 0.0_dp .or. d%u_tare_i1 > 0.0_dp .or. &
-            d%u_added_inertia > 0.0_dp) then
+        if (d%measurement%tare_i1 > 0.0_dp .or. d%measurement%added_inertia > 0.0_dp .or. &
+            d%measurement%u_tare_i1 > 0.0_dp .or. d%measurement%u_added_inertia > 0.0_dp) then
             call write_kv(u, 'I1_total', res%i1_total, ios)
             call write_kv(u, 'u_I1_total', res%u_i1_total, ios)
         end if
-        if (d%tare_mass > 0.0_dp) call write_kv(u, 'mass_body', d%mass - d%tare_mass, ios)
-        if (d%monte_carlo > 0) call write_kv(u, 'u_I1_monte_carlo', res%u_i1_mc, ios)
+        if (d%measurement%tare_mass > 0.0_dp) &
+            call write_kv(u, 'mass_body', d%body%mass - d%measurement%tare_mass, ios)
+        if (d%measurement%monte_carlo > 0) call write_kv(u, 'u_I1_monte_carlo', res%u_i1_mc, ios)
         call write_kv(u, 'I1_linear', res%i1_linear, ios)
         call write_kv(u, 'linear_error', res%linear_error, ios)
         do j = 2, res%np
@@ -1130,7 +1152,7 @@ contains
             call write_kv(u, 'mode', 'record', ios)
             if (res%n_trials == 1 .and. size(res%record_crc) == 1) &
                 call write_kv(u, 'record_crc64', hex16(res%record_crc(1)), ios)
-            call write_kv(u, 'quantity', trim(d%quantity), ios)
+            call write_kv(u, 'quantity', trim(d%measurement%quantity), ios)
             call write_kv(u, 'samples', res%samples, ios)
             if (res%n_trials == 1) then
                 call write_kv(u, 'sigma', res%sigma, ios)
@@ -1162,9 +1184,9 @@ contains
                     'record_crc64('//itoa(j)//')', hex16(res%record_crc(j)), ios)
             end do
         end if
-        if (d%monte_carlo > 0) then
-            call write_kv(u, 'monte_carlo_samples', d%monte_carlo, ios)
-            call write_kv(u, 'monte_carlo_seed', d%seed, ios)
+        if (d%measurement%monte_carlo > 0) then
+            call write_kv(u, 'monte_carlo_samples', d%measurement%monte_carlo, ios)
+            call write_kv(u, 'monte_carlo_seed', d%measurement%seed, ios)
             call write_kv(u, 'I1_monte_carlo_mean', res%mc_mean, ios)
         end if
         call write_kv(u, 'warnings', size(res%warnings), ios)
@@ -1198,10 +1220,10 @@ contains
         fmt = record_format_of(d)
         call files%open(outdir//'/'//d%name//'.fit.dat', u, stat)
         if (stat%code /= 0) return
-        unit_name = trim(merge('theta4', 'W     ', trim(d%quantity) == 'angle'))//' ('// &
-            trim(fmt%units)//')'
+        unit_name = trim(merge('theta4', 'W     ', trim(d%measurement%quantity) == 'angle'))// &
+            ' ('//trim(fmt%units)//')'
         ios = 0
-        write (u, '(a)', iostat=ios) '# bifilar identify fit: '//trim(d%title)
+        write (u, '(a)', iostat=ios) '# bifilar identify fit: '//trim(d%scene%title)
         if (ios == 0) write (u, '(a)', iostat=ios) '# t in s as recorded; measured, model '// &
             'and residual (measured - model) are '//unit_name//'; one block per release'
         if (ios == 0) write (u, '(a)', iostat=ios) '# quantity: '//unit_name
@@ -1277,7 +1299,7 @@ contains
         call files%open(outdir//'/'//d%name//'.periods.dat', u, stat)
         if (stat%code /= 0) return
         ios = 0
-        write (u, '(a)', iostat=ios) '# bifilar identify periods: '//trim(d%title)
+        write (u, '(a)', iostat=ios) '# bifilar identify periods: '//trim(d%scene%title)
         if (ios == 0) write (u, '(a)', iostat=ios) '# block 0: release amplitude(deg) '// &
             'period(s, per cycle) u_period model_period; then one block per rig: '// &
             'amplitude(deg) model_period classical_period (the model at I1_total = '// &

@@ -7,7 +7,8 @@ submodule (simulate) simulate_impl
     use bifilar_model, only: motion_t, motion_parts_t, evaluate, step_tensions, NSTATE
     use ode_system, only: integrator_t, integrator_stats_t
     use integrators, only: new_integrator, SOLVER_RADAU
-    use rig, only: rig_t, rig_of, start_of, method_of, make_pendulum, start_state, output_times
+    use rig, only: rig_t, make_pendulum, start_state
+    use deck_runs, only: rig_of, start_of, method_of, output_times
     use kane_run, only: kane_run_t, kane_run_start, model_checks, tighter_rtol, &
                         angle_difference, sway_of
     use elastic_model, only: elastic_t, elastic_cables_t, elastic_start, elastic_evaluate, &
@@ -83,16 +84,16 @@ contains
         call make_pendulum(rig_of(d), el%p, stat)
         if (stat%code /= 0) return
         call start_state(start_of(d), el%p, yc, th0, stat)
-        if (stat%code /= 0 .or. trim(d%model) /= 'elastic') return
-        if (d%c_v /= 0.0_dp .or. d%c_q /= 0.0_dp) then
-            call set_error(stat, ERR_DECK, '&damping c_v = '//sci(d%c_v)//', c_q = '// &
-                sci(d%c_q)//': the damping about the vertical is a torque of the paper''s '// &
-                'model; allowed: c_v = c_q = 0 with model = ''elastic'' (its cables have '// &
-                '&cables damping), or model = ''kane''')
+        if (stat%code /= 0 .or. trim(d%scene%model) /= 'elastic') return
+        if (d%damping%c_v /= 0.0_dp .or. d%damping%c_q /= 0.0_dp) then
+            call set_error(stat, ERR_DECK, '&damping c_v = '//sci(d%damping%c_v)//', c_q = '// &
+                sci(d%damping%c_q)//': the damping about the vertical is a torque of the '// &
+                'paper''s model; allowed: c_v = c_q = 0 with model = ''elastic'' (its cables '// &
+                'have &cables damping), or model = ''kane''')
             return
         end if
-        el%stiffness = d%cable_stiffness
-        el%damping = d%cable_damping
+        el%stiffness = d%cables%stiffness
+        el%damping = d%cables%damping
         call elastic_start(el, yc, y, stat)
         if (stat%code /= 0) stat%msg = 'elastic start: '//stat%msg
     end procedure simulation_ready
@@ -106,7 +107,7 @@ contains
         type(out_files_t), pointer :: fs
         fs => own
         if (present(files)) fs => files
-        if (trim(d%model) == 'elastic') then
+        if (trim(d%scene%model) == 'elastic') then
             call run_elastic(d, outdir, fs, sm, stat)
         else
             call simulate_kane(d, outdir, fs, sm, stat)
@@ -155,15 +156,17 @@ contains
         call cpu_time(t_cpu0)
         ! tcrit = tau_end: no step goes past the end, so every step end checked lies in the run
         sink%sm%method = merge('radau', 'lsoda', method_of(d) == SOLVER_RADAU)
-        call kane_run_start(m, p, y, th0(3), d%rtol, d%atol, method_of(d), d%tau_end, &
+        call kane_run_start(m, p, y, th0(3), d%integration%rtol, d%integration%atol, &
+                            method_of(d), d%integration%tau_end, &
                             'raise rtol/atol or shorten tau_end', stat, global=.true.)
         if (stat%code /= 0) return
-        if (d%error_estimate) then
+        if (d%integration%error_estimate) then
             ! the same run at a tolerance 100 times tighter, in step with the rows
-            rt2 = tighter_rtol(d%rtol)
+            rt2 = tighter_rtol(d%integration%rtol)
             call new_integrator(method_of(d), sink%solver2)
-            call sink%solver2%init(m%sys, 0.0_dp, y, rt2, [d%atol*rt2/d%rtol], stat, &
-                                   tcrit=d%tau_end)
+            call sink%solver2%init(m%sys, 0.0_dp, y, rt2, &
+                                   [d%integration%atol*rt2/d%integration%rtol], stat, &
+                                   tcrit=d%integration%tau_end)
             if (stat%code /= 0) return
             sink%error_estimate = .true.
             sink%sm%error_estimate_rtol = rt2
@@ -171,7 +174,8 @@ contains
             sink%sm%error_estimate_q = 0.0_dp
         end if
         call output_times(d, times)
-        call pace%start('bifilar: note: '//d%path//': simulate', 0.0_dp, d%tau_end, 'tau')
+        call pace%start('bifilar: note: '//d%path//': simulate', 0.0_dp, d%integration%tau_end, &
+                        'tau')
         call drive(m, times, sink, stat, pace)
         if (stat%code == 0) call flush_rows(sink%rb, stat)
         sm = sink%sm
@@ -245,12 +249,12 @@ contains
         sumpath = outdir//'/'//d%name//'.summary'
         call fs%open(outdir//'/'//d%name//'.dat', u, stat)
         if (stat%code /= 0) return
-        write (u, '(a)', iostat=ios) '# bifilar: '//trim(d%title)
+        write (u, '(a)', iostat=ios) '# bifilar: '//trim(d%scene%title)
         if (ios == 0) write (u, '(a)', iostat=ios) '# time tau = sqrt(g/b'') t; lengths over '// &
             'b''; tensions over m g; energy over m g b''; angles in rad'
         if (ios == 0 .and. len(note) > 0) write (u, '(a)', iostat=ios) note
         if (ios == 0) call deck_echo(d, u, ios)
-        if (ios == 0) write (u, '(a)', iostat=ios) '# '//trim(d%columns)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# '//trim(d%output%columns)
         if (ios /= 0) call set_error(stat, ERR_IO, 'cannot write '//outdir//'/'//d%name// &
                                      '.dat (iostat '//sci(real(ios, dp), 0)//')')
     end subroutine open_dat
@@ -319,7 +323,7 @@ contains
         i1 = 1
         do j = 1, NCOL
             i2 = index(OUTPUT_COLUMNS(i1:)//' ', ' ') + i1 - 2     ! the j-th name: i1:i2
-            want(j) = index(' '//trim(d%columns)//' ', ' '//OUTPUT_COLUMNS(i1:i2)//' ') > 0
+            want(j) = index(' '//trim(d%output%columns)//' ', ' '//OUTPUT_COLUMNS(i1:i2)//' ') > 0
             i1 = i2 + 2
         end do
     end subroutine column_mask
@@ -405,7 +409,7 @@ contains
         integer :: u, ios
         call fs%open(sumpath, u, stat)
         if (stat%code /= 0) return
-        write (u, '(a)', iostat=ios) '# bifilar summary: '//trim(d%title)
+        write (u, '(a)', iostat=ios) '# bifilar summary: '//trim(d%scene%title)
         call write_kv(u, 'deck', d%path, ios)
         call write_kv(u, 'cpu_seconds', sm%cpu_seconds, ios)
         call write_kv(u, 'steps', sm%steps, ios)
@@ -426,7 +430,7 @@ contains
                                             sm%max_abs_constraint_residual, ios)
         call write_kv(u, 'min_tension', sm%min_tension, ios)
         call write_kv(u, 'method', trim(sm%method), ios)
-        if (d%error_estimate) then
+        if (d%integration%error_estimate) then
             call write_kv(u, 'error_estimate_rtol', sm%error_estimate_rtol, ios)
             call write_kv(u, 'error_estimate_theta', sm%error_estimate_theta, ios)
             call write_kv(u, 'error_estimate_Q', sm%error_estimate_q, ios)
@@ -457,7 +461,7 @@ contains
         path = outdir//'/'//d%name//'.slack'
         call fs%open(path, u, stat)
         if (stat%code /= 0) return
-        write (u, '(a)', iostat=ios) '# bifilar slack intervals: '//trim(d%title)
+        write (u, '(a)', iostat=ios) '# bifilar slack intervals: '//trim(d%scene%title)
         if (ios == 0) write (u, '(a)', iostat=ios) '# cable (1 = BC, 2 = AD), tau_start, '// &
             'tau_end, duration, open (1: still slack at the end of the run)'
         do i = 1, size(list)
@@ -503,14 +507,14 @@ contains
         if (stat%code /= 0) return
         call start_state(start_of(d), m%sys%p, yc, th0, stat)
         if (stat%code /= 0) return
-        m%sys%stiffness = d%cable_stiffness
-        m%sys%damping = d%cable_damping
+        m%sys%stiffness = d%cables%stiffness
+        m%sys%damping = d%cables%damping
         call elastic_start(m%sys, yc, y, stat)
         if (stat%code /= 0) then
             stat%msg = 'elastic start: '//stat%msg
             return
         end if
-        atol = elastic_atol(m%sys, d%atol, d%rtol)
+        atol = elastic_atol(m%sys, d%integration%atol, d%integration%rtol)
 
         call open_dat(d, outdir, '# model elastic: T_BC, T_AD from the springs (0 when '// &
             'slack); energy_error includes the springs'' energy; constraint_residual = '// &
@@ -520,15 +524,15 @@ contains
 
         call cpu_time(t_cpu0)
         sink%sm%method = merge('radau', 'lsoda', method_of(d) == SOLVER_RADAU)
-        call m%solver%init(m%sys, 0.0_dp, y, d%rtol, atol, stat, tcrit=d%tau_end, &
-                           method=method_of(d))
+        call m%solver%init(m%sys, 0.0_dp, y, d%integration%rtol, atol, stat, &
+                           tcrit=d%integration%tau_end, method=method_of(d))
         if (stat%code /= 0) return
-        if (d%error_estimate) then
-            rt2 = tighter_rtol(d%rtol)
+        if (d%integration%error_estimate) then
+            rt2 = tighter_rtol(d%integration%rtol)
             sink%sys2 = m%sys                    ! its own cable modes
             call sink%solver2%init(sink%sys2, 0.0_dp, y, rt2, elastic_atol(sink%sys2, &
-                                   d%atol*rt2/d%rtol, rt2), stat, tcrit=d%tau_end, &
-                                   method=method_of(d))
+                                   d%integration%atol*rt2/d%integration%rtol, rt2), stat, &
+                                   tcrit=d%integration%tau_end, method=method_of(d))
             if (stat%code /= 0) return
             sink%error_estimate = .true.
             sink%sm%error_estimate_rtol = rt2
@@ -537,7 +541,7 @@ contains
         end if
         m%y0 = y
         m%ystep = y
-        m%t_end = d%tau_end
+        m%t_end = d%integration%tau_end
         m%remedy = 'raise rtol/atol, shorten tau_end, or add &cables damping'
         sink%th_row = th0
         m%th_step = th0
@@ -545,7 +549,7 @@ contains
         if (stat%code /= 0) return
         call output_times(d, times)
         call pace%start('bifilar: note: '//d%path//': simulate (elastic cables, stiffness '// &
-                        sci(d%cable_stiffness, 2)//')', 0.0_dp, d%tau_end, 'tau')
+                        sci(d%cables%stiffness, 2)//')', 0.0_dp, d%integration%tau_end, 'tau')
         call drive(m, times, sink, stat, pace)
         sm = sink%sm
         sm%slack_time = m%solver%slack_time()

@@ -5,7 +5,8 @@ submodule (stability) stability_impl
     use status, only: status_t, set_error, ERR_NUMERIC, ERR_DECK, ERR_MODEL, LSODA_ERR_MAX_STEPS
     use geometry, only: pendulum_t
     use deck, only: deck_t, deck_echo
-    use rig, only: rig_of, make_pendulum, method_of
+    use rig, only: make_pendulum
+    use deck_runs, only: rig_of, method_of
     use integrators, only: sensitivities_for
     use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, floquet_point, &
                        CHART_FAILED, point_values_valid, &
@@ -49,8 +50,9 @@ contains
         call make_pendulum(rig_of(d), p, stat)
         if (stat%code /= 0) return
         call cpu_time(t0)
-        call floquet_analysis(p, d%floquet_amplitude*deg, d%floquet_rtol, d%floquet_segments, &
-                              res, stat, method_of(d), sensitivities_for(d%sensitivities))
+        call floquet_analysis(p, d%floquet%amplitude*deg, d%floquet%rtol, d%floquet%segments, &
+                              res, stat, method_of(d), &
+                              sensitivities_for(d%integration%sensitivities))
         call cpu_time(t1)
         if (stat%code /= 0) then
             call explain_budget(stat)
@@ -60,16 +62,17 @@ contains
         path = outdir//'/'//d%name//'.floquet'
         call fs%open(path, u, stat)
         if (stat%code /= 0) return
-        write (u, '(a)', iostat=ios) '# bifilar Floquet analysis of pure torsion: '//trim(d%title)
+        write (u, '(a)', iostat=ios) '# bifilar Floquet analysis of pure torsion: '// &
+            trim(d%scene%title)
         if (ios == 0) write (u, '(a)', iostat=ios) '# period in units of tau = sqrt(g/b'') t; '// &
             'multipliers of the monodromy matrix H(t*) of eq. (51)'
         call deck_echo(d, u, ios)
         call write_kv(u, 'period', res%period, ios)
         call write_kv(u, 'max_modulus', res%max_modulus, ios)
         call write_kv(u, 'stable', res%stable, ios)
-        call write_kv(u, 'amplitude_deg', d%floquet_amplitude, ios)
-        call write_kv(u, 'segments', d%floquet_segments, ios)
-        call write_kv(u, 'rtol', d%floquet_rtol, ios)
+        call write_kv(u, 'amplitude_deg', d%floquet%amplitude, ios)
+        call write_kv(u, 'segments', d%floquet%segments, ios)
+        call write_kv(u, 'rtol', d%floquet%rtol, ios)
         call write_kv(u, 'orbit_closure', res%orbit_closure, ios)
         call write_kv(u, 'trivial_residual', res%trivial_residual, ios)
         call write_kv(u, 'cpu_seconds', t1 - t0, ios)
@@ -124,20 +127,20 @@ contains
         integer :: i, j
         call make_pendulum(rig_of(d), task%p0, stat)
         if (stat%code /= 0) return
-        allocate (task%xs(d%chart_nx), task%ys(d%chart_ny))
-        do i = 1, d%chart_nx
-            task%xs(i) = d%chart_x_min + (d%chart_x_max - d%chart_x_min)*(i - 1)/(d%chart_nx - 1)
+        allocate (task%xs(d%chart%nx), task%ys(d%chart%ny))
+        do i = 1, d%chart%nx
+            task%xs(i) = d%chart%x_min + (d%chart%x_max - d%chart%x_min)*(i - 1)/(d%chart%nx - 1)
         end do
-        do j = 1, d%chart_ny
-            task%ys(j) = d%chart_y_min + (d%chart_y_max - d%chart_y_min)*(j - 1)/(d%chart_ny - 1)
+        do j = 1, d%chart%ny
+            task%ys(j) = d%chart%y_min + (d%chart%y_max - d%chart%y_min)*(j - 1)/(d%chart%ny - 1)
         end do
-        task%x = trim(d%chart_x)
-        task%y = trim(d%chart_y)
-        task%amplitude = d%floquet_amplitude
-        task%rtol = d%floquet_rtol
-        task%segments = d%floquet_segments
+        task%x = trim(d%chart%x)
+        task%y = trim(d%chart%y)
+        task%amplitude = d%floquet%amplitude
+        task%rtol = d%floquet%rtol
+        task%segments = d%floquet%segments
         task%method = method_of(d)
-        task%sensitivities = sensitivities_for(d%sensitivities)
+        task%sensitivities = sensitivities_for(d%integration%sensitivities)
     end procedure chart_task
 
     !> Chart point k: values = [max_modulus, period] (sentinels, see floquet_point).  Never
@@ -187,30 +190,31 @@ contains
         call chart_task(d, task, stat)
         if (stat%code /= 0) return
         call sweep_run(task, 'chart', d%path, checkpoint_path(outdir, d%name, 'chart'), &
-                       d%name//': chart', d%chart_nx*d%chart_ny, 2, vals, stat, options, rep, &
+                       d%name//': chart', d%chart%nx*d%chart%ny, 2, vals, stat, options, rep, &
                        deck_text=d%text)
         if (present(report)) report = rep
         if (stat%code /= 0) return
         wall_seconds = rep%wall_seconds
-        mods = reshape(vals(1, :), [d%chart_nx, d%chart_ny])
-        pers = reshape(vals(2, :), [d%chart_nx, d%chart_ny])
+        mods = reshape(vals(1, :), [d%chart%nx, d%chart%ny])
+        pers = reshape(vals(2, :), [d%chart%nx, d%chart%ny])
         nstable = count(mods >= 0.0_dp .and. mods <= 1.0_dp + 1.0e-6_dp)
         if (present(nfailed)) nfailed = count(mods == CHART_FAILED)
 
         path = outdir//'/'//d%name//'.chart.dat'
         call fs%open(path, u, stat)
         if (stat%code /= 0) return
-        write (u, '(a)', iostat=ios) '# bifilar stability chart of pure torsion: '//trim(d%title)
-        if (ios == 0) write (u, '(a)', iostat=ios) '# x = '//trim(d%chart_x)//', y = '// &
-            trim(d%chart_y)//' (l, b, r over b''; amplitude in degrees; lambda in rad; '// &
+        write (u, '(a)', iostat=ios) '# bifilar stability chart of pure torsion: '// &
+            trim(d%scene%title)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# x = '//trim(d%chart%x)//', y = '// &
+            trim(d%chart%y)//' (l, b, r over b''; amplitude in degrees; lambda in rad; '// &
             'inertia_ratio = I3/I1)'
         if (ios == 0) write (u, '(a)', iostat=ios) '# max_modulus and period = -1 where pure '// &
             'torsion is not possible (not a torsion scene, cables cannot reach), -2 where '// &
             'the analysis failed (e.g. more than '//itoa(FLOQUET_MAX_STEPS)//' steps)'
         call deck_echo(d, u, ios)
         if (ios == 0) write (u, '(a)', iostat=ios) '# x y max_modulus period'
-        do i = 1, d%chart_nx
-            do j = 1, d%chart_ny
+        do i = 1, d%chart%nx
+            do j = 1, d%chart%ny
                 if (ios == 0) write (u, '(4es24.15e3)', iostat=ios) task%xs(i), task%ys(j), &
                     mods(i, j), pers(i, j)
             end do

@@ -10,6 +10,7 @@ submodule (tensor) tensor_impl
     use output_io, only: write_kv, all_finite
     use fast_format, only: es_field
     use rig, only: rig_t
+    use deck_runs, only: accuracy_of
     use monte_carlo, only: monte_carlo_run, MC_TENSOR
     use hang_table, only: hang_t, hang_set_t, read_hangs, hang_defaults, table_name
     use hang_model, only: tensor_entries, hang_rig, torsion_mode, torsion_mode_t
@@ -29,7 +30,7 @@ contains
     pure function deck_tensor(d) result(x)
         type(deck_t), intent(in) :: d
         real(dp) :: x(6)
-        x = [d%inertia(1), d%inertia(2), d%inertia(3), 0.0_dp, 0.0_dp, 0.0_dp]
+        x = [d%body%inertia(1), d%body%inertia(2), d%body%inertia(3), 0.0_dp, 0.0_dp, 0.0_dp]
     end function deck_tensor
 
     !> The preconditions of analyses = 'tensor' (see the interface).
@@ -42,21 +43,22 @@ contains
         logical :: have_cg
         integer :: h
         stat%code = STATUS_OK
-        if (trim(d%model) /= 'kane') then
+        if (trim(d%scene%model) /= 'kane') then
             call set_error(stat, ERR_DECK, 'analyses = ''tensor'': &scene model = '''// &
-                trim(d%model)//''': tensor fits the paper''s model; allowed: model = ''kane''')
+                trim(d%scene%model)//''': tensor fits the paper''s model; allowed: '// &
+                'model = ''kane''')
             return
         end if
-        if (len_trim(d%tensor_hangs) > 0) then
-            call read_hangs(d, set, stat)
+        if (len_trim(d%tensor%hangs) > 0) then
+            call read_hangs(d%tensor, d%suspension, d%body, set, stat)
             if (stat%code /= STATUS_OK) return
-            call check_directions(set%hangs, table_name(d), cond, stat)
+            call check_directions(set%hangs, table_name(d%tensor), cond, stat)
             if (stat%code /= STATUS_OK) return
             do h = 1, size(set%hangs)
-                call hang_rig(d%mass, d%g, set%hangs(h), deck_tensor(d), rg, stat)
+                call hang_rig(d%body%mass, d%suspension%g, set%hangs(h), deck_tensor(d), rg, stat)
                 if (stat%code == STATUS_OK) call torsion_mode(rg, md, stat)
                 if (stat%code /= STATUS_OK) then
-                    stat%msg = table_name(d)//': hang '//itoa(set%hangs(h)%id)//' (line '// &
+                    stat%msg = table_name(d%tensor)//': hang '//itoa(set%hangs(h)%id)//' (line '// &
                         itoa(set%hangs(h)%line)//'): '//stat%msg
                     return
                 end if
@@ -64,9 +66,9 @@ contains
                 if (stat%code /= STATUS_OK) return
             end do
         end if
-        if (d%tensor_plan > 0) then
-            call hang_defaults(d, h0, have_cg)
-            if (len_trim(d%tensor_hangs) > 0 .and. .not. have_cg) then
+        if (d%tensor%plan > 0) then
+            call hang_defaults(d%suspension, d%body, h0, have_cg)
+            if (len_trim(d%tensor%hangs) > 0 .and. .not. have_cg) then
                 h0 = set%hangs(1)
                 have_cg = .true.
             end if
@@ -78,10 +80,10 @@ contains
                     'planned hangs (&tensor plan)')
                 return
             end if
-            call hang_rig(d%mass, d%g, h0, deck_tensor(d), rg, stat)
+            call hang_rig(d%body%mass, d%suspension%g, h0, deck_tensor(d), rg, stat)
             if (stat%code == STATUS_OK) call torsion_mode(rg, md, stat)
             if (stat%code /= STATUS_OK) then
-                stat%msg = '&tensor plan = '//itoa(d%tensor_plan)//': the deck''s rig: '// &
+                stat%msg = '&tensor plan = '//itoa(d%tensor%plan)//': the deck''s rig: '// &
                     stat%msg
                 return
             end if
@@ -101,7 +103,7 @@ contains
             do i = 1, size(set%rows)
                 if (set%rows(i)%hang /= h) cycle
                 if (set%rows(i)%period > GYRATION_MAX*ta) then
-                    call set_error(st, ERR_MODEL, table_name(d)//': line '// &
+                    call set_error(st, ERR_MODEL, table_name(d%tensor)//': line '// &
                         itoa(set%rows(i)%line)//': hang '//itoa(set%hangs(h)%id)// &
                         ': a period of '//sci(set%rows(i)%period, 4)//' s (per cycle) is '// &
                         itoa(nint(set%rows(i)%period/ta))//' times that of this hang''s '// &
@@ -139,12 +141,12 @@ contains
         res%warning = ''
         res%plan_file = ''
         stat%code = STATUS_OK
-        if (len_trim(d%tensor_hangs) > 0) then
-            call read_hangs(d, set, stat)
+        if (len_trim(d%tensor%hangs) > 0) then
+            call read_hangs(d%tensor, d%suspension, d%body, set, stat)
             if (stat%code /= STATUS_OK) return
-            call check_directions(set%hangs, table_name(d), cond, stat)
+            call check_directions(set%hangs, table_name(d%tensor), cond, stat)
             if (stat%code /= STATUS_OK) return
-            call problem_of(d, set, prob)
+            call problem_of(d%tensor, d%suspension, d%body, accuracy_of(d), set, prob)
             call projection(prob, x_proj, stat)
             if (stat%code /= STATUS_OK) return
             call fit_tensor(prob, x_proj, fit, stat)
@@ -157,7 +159,7 @@ contains
             do i = 1, size(prob%rows)
                 if (drift(i) > DRIFT_MAX) then
                     h = prob%rows(i)%hang
-                    call set_error(stat, ERR_DECK, table_name(d)//': line '// &
+                    call set_error(stat, ERR_DECK, table_name(d%tensor)//': line '// &
                         itoa(prob%rows(i)%line)//': hang '//itoa(prob%hangs(h)%id)// &
                         ' at amplitude = '//rshort(prob%rows(i)%amplitude)//' deg: its '// &
                         'period is not defined well enough: theta4''s maxima drift by '// &
@@ -186,14 +188,15 @@ contains
             res%projection_difference = fit%projection_difference
             res%hangs = size(prob%hangs)
             res%rows = size(prob%rows)
-            if (d%tensor_monte_carlo > 0) then
-                payload = tensor_mc_payload(prob, fit, d%tensor_seed)
-                call tensor_mc_task(d, payload, task, stat)
+            if (d%tensor%monte_carlo > 0) then
+                payload = tensor_mc_payload(prob, fit, d%tensor%seed)
+                call tensor_mc_task(d%tensor, d%suspension, d%body, accuracy_of(d), payload, task, &
+                                stat)
                 if (stat%code /= STATUS_OK) return
-                call monte_carlo_run(task, d, d%tensor_monte_carlo, payload, mean, sdev, stat, &
+                call monte_carlo_run(task, d, d%tensor%monte_carlo, payload, mean, sdev, stat, &
                                      outdir, options, rep, files, MC_TENSOR)
                 if (stat%code /= STATUS_OK) return
-                res%mc_samples = d%tensor_monte_carlo
+                res%mc_samples = d%tensor%monte_carlo
                 u_x_mc = sdev(1:6)
                 u_moments_mc = sdev(7:9)
                 u_axes_mc = [norm2(sdev(10:11)), norm2(sdev(12:13)), norm2(sdev(14:15))]/deg
@@ -209,16 +212,16 @@ contains
                     ': check its timing, orientation and rig'
             end if
         end if
-        if (d%tensor_plan > 0) then
-            call hang_defaults(d, h0, have_cg)
+        if (d%tensor%plan > 0) then
+            call hang_defaults(d%suspension, d%body, h0, have_cg)
             if (res%fitted) then
                 if (.not. have_cg) h0 = prob%hangs(1)
                 x = fit%x
             else
-                call problem_of(d, set_empty(), prob)
+                call problem_of(d%tensor, d%suspension, d%body, accuracy_of(d), set_empty(), prob)
                 x = deck_tensor(d)
             end if
-            call plan_hangs(prob, h0, d%tensor_u(7), x, d%tensor_plan, plan, stat)
+            call plan_hangs(prob, h0, d%tensor%u(7), x, d%tensor%plan, plan, stat)
             if (stat%code /= STATUS_OK) return
             res%plan = plan%n
             res%plan_file = outdir//'/'//d%name//'.plan.csv'
@@ -256,7 +259,8 @@ contains
         allocate (tensor_mc_task_t :: task)
         select type (task)
         type is (tensor_mc_task_t)
-            call tensor_mc_task(d, payload, task, stat)
+            call tensor_mc_task(d%tensor, d%suspension, d%body, accuracy_of(d), payload, task, &
+                                stat)
         end select
     end procedure tensor_sweep_task
 
@@ -312,7 +316,7 @@ contains
         call files%open(outdir//'/'//d%name//'.tensor', u, stat)
         if (stat%code /= STATUS_OK) return
         ios = 0
-        write (u, '(a)', iostat=ios) '# bifilar tensor: '//trim(d%title)
+        write (u, '(a)', iostat=ios) '# bifilar tensor: '//trim(d%scene%title)
         if (ios == 0) write (u, '(a)', iostat=ios) '# the inertia tensor about the mass '// &
             'centre in the body frame (deck units: mass x length^2; J_xy = -int x y dm), '// &
             'standard uncertainties u_, periods in s, angles in degrees'
@@ -367,7 +371,7 @@ contains
             end do
             if (res%mc_samples > 0) then
                 call write_kv(u, 'monte_carlo_samples', res%mc_samples, ios)
-                call write_kv(u, 'monte_carlo_seed', d%tensor_seed, ios)
+                call write_kv(u, 'monte_carlo_seed', d%tensor%seed, ios)
                 do k = 1, 6
                     call write_kv(u, 'u_'//ENTRY_NAMES(k)//'_monte_carlo', u_x_mc(k), ios)
                 end do
@@ -415,7 +419,7 @@ contains
         call files%open(outdir//'/'//d%name//'.tensor.dat', u, stat)
         if (stat%code /= STATUS_OK) return
         ios = 0
-        write (u, '(a)', iostat=ios) '# '//trim(d%title)
+        write (u, '(a)', iostat=ios) '# '//trim(d%scene%title)
         if (ios == 0) write (u, '(a)', iostat=ios) '# bifilar tensor, per hang (deck units): '// &
             'hang I_fitted (u . J u of the fit) I_measured (what its periods give) '// &
             'u_I_measured residual (normalised)'
@@ -444,7 +448,7 @@ contains
         call files%open(path, u, stat)
         if (stat%code /= STATUS_OK) return
         ios = 0
-        write (u, '(a)', iostat=ios) '# bifilar tensor plan: '//trim(d%title)
+        write (u, '(a)', iostat=ios) '# bifilar tensor plan: '//trim(d%scene%title)
         if (ios == 0) write (u, '(a)', iostat=ios) '# '//itoa(plan%n)//' hangs among the '// &
             'face, edge and corner directions of the body frame that minimise the trace of '// &
             'the covariance of the tensor, '//sci(plan%trace, 3)//' (deck units squared), '// &

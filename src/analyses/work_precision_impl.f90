@@ -12,7 +12,8 @@ submodule (work_precision) work_precision_impl
     use ode_system, only: integrator_t, integrator_stats_t
     use integrators, only: new_integrator, SOLVER_LSODA, SOLVER_RADAU
     use deck, only: deck_t, deck_echo
-    use rig, only: rig_of, start_of, make_pendulum, start_state, output_times
+    use rig, only: make_pendulum, start_state
+    use deck_runs, only: rig_of, start_of, output_times
     use kane_run, only: angle_difference, sway_of
     use output_io, only: out_files_t, all_finite
     use text, only: sci
@@ -170,12 +171,12 @@ contains
         res%nout = n
         ! the system: the paper's, or the elastic model (same start, per-state atol, and RK4
         ! from its explicit stability bound h <= 1/omega_s up)
-        elastic = trim(d%model) == 'elastic'
+        elastic = trim(d%scene%model) == 'elastic'
         m_rk0 = 1
         if (elastic) then
             el%p = p
-            el%stiffness = d%cable_stiffness
-            el%damping = d%cable_damping
+            el%stiffness = d%cables%stiffness
+            el%damping = d%cables%damping
             ns = ELASTIC_NSTATE
             allocate (y0s(ns))
             call elastic_start(el, y0, y0s, stat)
@@ -183,7 +184,8 @@ contains
                 stat%msg = 'elastic start: '//stat%msg
                 return
             end if
-            do while (d%dtau_out/m_rk0*stretch_frequency(el) > 1.0_dp .and. m_rk0 < 2**20)
+            do while (d%integration%dtau_out/m_rk0*stretch_frequency(el) > 1.0_dp .and. &
+                      m_rk0 < 2**20)
                 m_rk0 = 2*m_rk0
             end do
         else
@@ -192,7 +194,7 @@ contains
             y0s = y0
         end if
         allocate (yref(ns, 0:n), ys(ns, 0:n), yh1(ns, 0:n), yh2(ns, 0:n))
-        ratio = d%atol/d%rtol
+        ratio = d%integration%atol/d%integration%rtol
 
         ! reference and its independent confirmation (elastic model: Radau, confirmed by LSODA)
         if (elastic) then
@@ -216,7 +218,7 @@ contains
             end if
         end if
         m = max(WP_REF_SUBSTEPS, 4*m_rk0)
-        res%ref_h = d%dtau_out/m
+        res%ref_h = d%integration%dtau_out/m
         ! elastic model: the RK4 check is left out when it would take too many steps
         ref_check = 2*m <= REF_MAX_SUBSTEPS .and. real(2*m, dp)*n <= RK4_MAX_STEPS
         if (ref_check) then
@@ -254,7 +256,7 @@ contains
         end do
         do i = 1, WP_NRK4
             m = m_rk0*2**(i - 1)
-            res%rk4(i)%h = d%dtau_out/m
+            res%rk4(i)%h = d%integration%dtau_out/m
             call pr%tick()
             if (real(m, dp)*n > RK4_MAX_STEPS) cycle
             call measure(res%rk4(i), m, SOLVER_LSODA)
@@ -403,7 +405,7 @@ contains
             integer, intent(in) :: unit
             character(len=*), intent(in) :: what
             if (ios == 0) write (unit, '(a)', iostat=ios) '# bifilar work-precision: '// &
-                trim(d%title)
+                trim(d%scene%title)
             if (ios == 0) write (unit, '(a)', iostat=ios) '# '//what//'; errors at the '// &
                 'output times against the reference (angles in rad, Q over b'', energy over '// &
                 'm g b'')'

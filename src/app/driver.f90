@@ -137,7 +137,7 @@ contains
                                options=options, report=rep)
                 call add_warning(rep)
                 if (stat%code /= STATUS_OK) exit run
-                chart_part = ' chart '//itoa(d%chart_nx*d%chart_ny)//' points, '// &
+                chart_part = ' chart '//itoa(d%chart%nx*d%chart%ny)//' points, '// &
                     itoa(nstable)//' stable, '//fixed(secs, 2)//' s'//ranks_note(rep)
                 if (nfailed > 0) chart_part = chart_part//', '//itoa(nfailed)// &
                     ' failed (-2 in the file)'
@@ -163,7 +163,8 @@ contains
                 call run_work_precision(d, outdir, wp, stat, quiet=.true., files=files)
                 if (stat%code /= STATUS_OK) exit run
                 line = line//' work_precision '//itoa(count(wp%lsoda%ok))//' LSODA, '
-                if (trim(d%model) == 'elastic') line = line//itoa(count(wp%radau%ok))//' Radau, '
+                if (trim(d%scene%model) == 'elastic') &
+                    line = line//itoa(count(wp%radau%ok))//' Radau, '
                 line = line//itoa(count(wp%rk4%ok))//' RK4 points, reference confirmed to '// &
                     sci(wp%ref_agreement_theta, 1)//' rad;'
             end if
@@ -197,8 +198,8 @@ contains
                 line = line//', period model '//trim(idr%period_model)
                 if (idr%u_i1_mc >= 0.0_dp) then
                     line = line//' (Monte Carlo u '//sci(idr%u_i1_mc, 2)//' from '// &
-                        itoa(d%monte_carlo)//' samples, '//fixed(rep%wall_seconds, 2)//' s'// &
-                        ranks_note(rep)//resume_note(rep)//')'
+                        itoa(d%measurement%monte_carlo)//' samples, '// &
+                        fixed(rep%wall_seconds, 2)//' s'//ranks_note(rep)//resume_note(rep)//')'
                 end if
                 if (idr%i1_linear > 0.0_dp) then
                     line = line//', linear formula '//sci(idr%i1_linear, 5)//' ('// &
@@ -378,11 +379,11 @@ contains
     subroutine undamped_ready(d, stat)
         type(deck_t), intent(in) :: d               !! the deck
         type(status_t), intent(inout) :: stat       !! ERR_DECK
-        if (d%c_v == 0.0_dp .and. d%c_q == 0.0_dp) return
+        if (d%damping%c_v == 0.0_dp .and. d%damping%c_q == 0.0_dp) return
         stat%code = ERR_DECK
-        stat%msg = '&damping c_v = '//sci(d%c_v)//', c_q = '//sci(d%c_q)//': floquet, '// &
-            'chart and design analyse the periodic torsion of the undamped model (a damped '// &
-            'torsion is not periodic); allowed: c_v = c_q = 0 with floquet, chart or design'
+        stat%msg = '&damping c_v = '//sci(d%damping%c_v)//', c_q = '//sci(d%damping%c_q)// &
+            ': floquet, chart and design analyse the periodic torsion of the undamped model (a '// &
+            'damped torsion is not periodic); allowed: c_v = c_q = 0 with floquet, chart or design'
     end subroutine undamped_ready
 
     !> ' on N ranks' for a sweep of an MPI run ('' on one rank).
@@ -412,7 +413,7 @@ contains
         type(deck_t), intent(in) :: d               !! the deck
         type(status_t), intent(out) :: stat         !! ERR_DECK
         type(pendulum_t) :: p
-        call make_pendulum(rig_of(d), p, stat)
+        call make_pendulum(rig_of(d%suspension, d%body, d%damping, d%cables), p, stat)
         if (stat%code /= STATUS_OK) stat%msg = 'analyses = ''chart'': '//stat%msg
     end subroutine chart_ready
 

@@ -35,7 +35,7 @@ program make_record_main
     use deck, only: deck_t, read_deck
     use record_fit, only: make_record
     use period_inversion, only: rig_period_s
-    use rig, only: rig_of, accuracy_of
+    use deck_runs, only: rig_of, start_of, accuracy_of
     use random, only: rng_t, rng_stream, rng_normal
     use text, only: fixed, itoa, rshort
     use output_io, only: out_files_t
@@ -77,7 +77,8 @@ program make_record_main
         if (trim(arg) /= 'angle' .and. trim(arg) /= 'rate') call usage()
         mode = arg
         call get_command_argument(8, arg)
-        call make_record(d, duration, rate, sigma, seed, trim(mode), trim(arg), st)
+        call make_record(rig_of(d), start_of(d), accuracy_of(d), d%scene%title, d%path, duration, &
+                         rate, sigma, seed, trim(mode), trim(arg), st)
         if (st%code /= 0) call fail(st%msg)
     case ('periods')
         sigma = real_arg(3)
@@ -89,7 +90,7 @@ program make_record_main
         line2 = '             amplitudes ='
         do k = 1, na
             a = real_arg(4 + k)
-            call rig_period_s(rig_of(d), accuracy_of(d), d%inertia(1), a, tp, st)
+            call rig_period_s(rig_of(d), accuracy_of(d), d%body%inertia(1), a, tp, st)
             if (st%code /= 0) call fail(st%msg)
             tp = anint((tp + sigma*rng_normal(g))*1.0e5_dp)/1.0e5_dp
             line1 = line1//' '//fixed(tp, 5)//','
@@ -112,16 +113,16 @@ program make_record_main
         call files%open(out, u, st)
         if (st%code /= 0) call fail(st%msg)
         ios = 0
-        write (u, '(a)', iostat=ios) '# bifilar make_record trials: '//trim(d%title)
+        write (u, '(a)', iostat=ios) '# bifilar make_record trials: '//trim(d%scene%title)
         if (ios == 0) write (u, '(a)', iostat=ios) '# each release''s I1 scattered by '// &
             fixed(100*scatter, 2)//' %, timings +- '//fixed(sigma, 3)//' s, seed '//itoa(seed)
         if (ios == 0) write (u, '(a)', iostat=ios) 'trial,l,l_prime,period,cycles,amplitude'
         do k = 11, command_argument_count()
             len_k = real_arg(k)
-            d%l = len_k
-            d%l_prime = len_k
+            d%suspension%l = len_k
+            d%suspension%l_prime = len_k
             do r = 1, nrel
-                i1r = d%inertia(1)*(1.0_dp + scatter*rng_normal(g))
+                i1r = d%body%inertia(1)*(1.0_dp + scatter*rng_normal(g))
                 call rig_period_s(rig_of(d), accuracy_of(d), i1r, a, tp, st)
                 if (st%code /= 0) call fail(st%msg)
                 do j = 1, ntime
@@ -154,14 +155,15 @@ contains
         real(dp) :: x(6), jt(3, 3), tp
         integer :: i, k, u, c_per
         character(len=:), allocatable :: row
-        call read_hangs(d, set, st)
+        call read_hangs(d%tensor, d%suspension, d%body, set, st)
         if (st%code /= 0) call fail(st%msg)
-        call read_table(d%tensor_hangs_path, tab, st)
+        call read_table(d%tensor%hangs_path, tab, st)
         if (st%code /= 0) call fail(st%msg)
         ! J = sum_i I_i b_i b_i^T, b_i the rows of btilde (body frame)
         jt = 0.0_dp
         do k = 1, 3
-            jt = jt + d%inertia(k)*spread(d%btilde(k, :), 2, 3)*spread(d%btilde(k, :), 1, 3)
+            jt = jt + d%body%inertia(k)*spread(d%body%btilde(k, :), 2, 3)* &
+                spread(d%body%btilde(k, :), 1, 3)
         end do
         x = tensor_entries(jt)
         c_per = tab%column('period')
@@ -179,7 +181,7 @@ contains
         write (u, '(a)') row
         do i = 1, tab%nrow
             associate (r => set%rows(i))
-                call hang_rig(d%mass, d%g, set%hangs(r%hang), x, rg, st)
+                call hang_rig(d%body%mass, d%suspension%g, set%hangs(r%hang), x, rg, st)
                 if (st%code == 0) call hang_period(rg, accuracy_of(d), r%amplitude, tp, st)
                 if (st%code /= 0) call fail('line '//itoa(r%line)//': '//st%msg)
                 tp = r%cycles*tp + sigma*rng_normal(g)

@@ -1,6 +1,6 @@
 !> Records of a swing as instruments write them: time and a measured value (and, when
 !! given, each sample's standard uncertainty), read and checked whole before any computing
-!! (read_record), with the record's mean period from its crossings (mean_period).
+!! (read_record_file), with the record's mean period from its crossings (mean_period).
 !!
 !! A record is a table (module tables: blanks, tabs, commas or semicolons between fields,
 !! CR LF line ends, a UTF-8 byte order mark, header lines before the numbers, '#'
@@ -14,7 +14,6 @@ module records
     use kinds, only: dp, deg
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
     use text, only: itoa, sci
-    use deck, only: deck_t
     use tables, only: table_t, read_table
     implicit none
     private
@@ -38,7 +37,7 @@ module records
         real(dp) :: rate_scale = 1.0_dp         !! sqrt(g/b'): rad/s per rad per unit tau
     end type record_format_t
 
-    public :: read_record, read_record_file, record_format_of, record_file, mean_period
+    public :: read_record_file, record_format, mean_period
 
     integer, parameter, public :: MIN_SAMPLES = 20          !! shortest record
     integer, parameter, public :: MAX_SAMPLES = 2000000     !! longest record
@@ -49,32 +48,24 @@ module records
 
 contains
 
-    !> How the deck's records are to be read (&measurement record_columns, record_units or
+    !> How a deck's records are to be read (&measurement record_columns, record_units or
     !! quantity; the rig's sqrt(g/b') for the range of a rate).
-    pure function record_format_of(d) result(f)
-        type(deck_t), intent(in) :: d           !! the deck
+    pure function record_format(columns, quantity, record_units, g, b_prime) result(f)
+        integer, intent(in) :: columns(3)               !! &measurement record_columns
+        character(len=*), intent(in) :: quantity        !! 'angle' or 'rate'
+        character(len=*), intent(in) :: record_units    !! RECORD_UNITS_ALLOWED or ''
+        real(dp), intent(in) :: g, b_prime              !! the rig's
         type(record_format_t) :: f
-        f%columns = d%record_columns
-        f%rate = trim(d%quantity) == 'rate'
+        f%columns = columns
+        f%rate = trim(quantity) == 'rate'
         f%units = trim(merge('rad/s', 'rad  ', f%rate))
         f%to_rad = 1.0_dp
-        if (len_trim(d%record_units) > 0) then
-            f%units = trim(d%record_units)
-            if (index(d%record_units, 'deg') == 1) f%to_rad = deg
+        if (len_trim(record_units) > 0) then
+            f%units = trim(record_units)
+            if (index(record_units, 'deg') == 1) f%to_rad = deg
         end if
-        f%rate_scale = sqrt(d%g/d%b_prime)
-    end function record_format_of
-
-    !> Read and check the record of a deck (&measurement record, relative to the deck's
-    !! folder): read_record_file with the deck's format.  ERR_DECK naming the record.
-    subroutine read_record(d, rec, stat)
-        type(deck_t), intent(in) :: d           !! the deck (record, record_path, format)
-        type(record_t), intent(out) :: rec
-        type(status_t), intent(out) :: stat     !! ERR_DECK
-        call read_record_file(record_file(d), record_format_of(d), rec, stat)
-        if (stat%code /= STATUS_OK) stat%msg = '&measurement record = '''//trim(d%record)// &
-            ''': '//stat%msg
-    end subroutine read_record
+        f%rate_scale = sqrt(g/b_prime)
+    end function record_format
 
     !> Read and check a record file: its table (module tables), the columns of the format;
     !! time (s) strictly increasing; the value within VALUE_MAX rad (or VALUE_MAX sqrt(g/b')
@@ -174,15 +165,6 @@ contains
         if (f%to_rad == 1.0_dp) s = '; a record in degrees needs record_units = '''// &
             trim(merge('deg/s', 'deg  ', f%rate))//''''
     end function unit_hint
-
-    !> The record file of a deck: &measurement record relative to the deck's folder
-    !! (d%record_path), or as given.
-    pure function record_file(d) result(path)
-        type(deck_t), intent(in) :: d
-        character(len=:), allocatable :: path
-        path = trim(d%record)
-        if (allocated(d%record_path)) path = d%record_path
-    end function record_file
 
     !> The record's mean period (s): twice the mean spacing of the crossings of its mean
     !! value, up and down (linear interpolation between samples; a crossing counts only

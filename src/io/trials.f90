@@ -1,5 +1,6 @@
-!> The releases of a measurement: the deck's one release (its periods or its record), or a
-!! table of releases (&measurement trials), read and checked whole (read_trials).
+!> The releases of a measurement: the deck's one release (its periods or its record:
+!! one_release), or a table of releases (&measurement trials), read and checked whole
+!! (read_trial_table).
 !!
 !! A table of releases is a table (module tables: blanks, tabs, commas or semicolons, CR LF,
 !! a byte order mark) whose first line names its columns, from TRIAL_COLUMNS:
@@ -21,7 +22,7 @@ module trials
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
     use text, only: itoa, rshort, quoted
-    use deck, only: deck_t, record_in_folder
+    use deck_base, only: record_in_folder
     use tables, only: table_t, read_table
     implicit none
     private
@@ -55,15 +56,19 @@ module trials
         logical :: from_table = .false.         !! &measurement trials (else the deck's)
     end type trial_set_t
 
-    public :: read_trials, deck_trials
+    public :: read_trial_table, one_release
 
 contains
 
-    !> The releases of a deck: the table of &measurement trials when given, else the deck's
-    !! one release (its periods, with cycles, or its record).  ERR_DECK naming the table,
-    !! its line and column.
-    subroutine read_trials(d, ts, stat)
-        type(deck_t), intent(in) :: d           !! the deck
+    !> The releases of a table (&measurement trials), read and checked whole: a column
+    !! absent takes the deck's value.  ERR_DECK naming the table, its line and column.
+    subroutine read_trial_table(table, path, rig, cycles, amplitude, u_period, ts, stat)
+        character(len=*), intent(in) :: table   !! &measurement trials as given
+        character(len=*), intent(in) :: path    !! the table's file (relative to the deck)
+        real(dp), intent(in) :: rig(5)          !! the deck's l, l_prime, b, b_prime, mass
+        real(dp), intent(in) :: cycles          !! &measurement cycles(1) (<= 0: 1)
+        real(dp), intent(in) :: amplitude       !! &start amplitude (degrees)
+        real(dp), intent(in) :: u_period        !! &measurement u_period (s)
         type(trial_set_t), intent(out) :: ts
         type(status_t), intent(out) :: stat     !! ERR_DECK
         type(table_t) :: tab
@@ -74,12 +79,8 @@ contains
         real(dp) :: rigv(5), per, cyc, amp, up
         integer, allocatable :: of_row(:)
         stat%code = STATUS_OK
-        if (len_trim(d%trials) == 0) then
-            call deck_trials(d, ts)
-            return
-        end if
         ts%from_table = .true.
-        call read_table(d%trials_path, tab, stat, MAX_ROWS, ['trial ', 'record'])
+        call read_table(path, tab, stat, MAX_ROWS, ['trial ', 'record'])
         if (stat%code /= STATUS_OK) then
             call fail(stat%msg)
             return
@@ -144,7 +145,7 @@ contains
         do i = 1, tab%nrow
             it = of_row(i)
             ! the rig of the row: a column or the deck
-            rigv = [d%l, d%l_prime, d%b, d%b_prime, d%mass]
+            rigv = rig
             do k = 1, 5
                 if (col(k + 1) == 0) cycle
                 rigv(k) = tab%v(i, col(k + 1))
@@ -172,7 +173,7 @@ contains
                                  'with periods (trial '//quoted(ts%t(it)%label)//')')
                     return
                 end if
-                ts%t(it)%record = record_in_folder(d%trials_path, trim(rec))
+                ts%t(it)%record = record_in_folder(path, trim(rec))
                 cycle
             end if
             if (col(7) == 0) then
@@ -193,20 +194,20 @@ contains
                 return
             end if
             cyc = 1.0_dp
-            if (d%cycles(1) > 0.0_dp) cyc = d%cycles(1)
+            if (cycles > 0.0_dp) cyc = cycles
             if (col(8) > 0) cyc = tab%v(i, col(8))
             if (.not. (cyc >= 0.5_dp .and. cyc <= 1.0e6_dp)) then
                 call fail_at(i, 'cycles', rshort(cyc), '0.5 <= cycles <= 1e6')
                 return
             end if
-            amp = d%amplitude
+            amp = amplitude
             if (col(9) > 0) amp = tab%v(i, col(9))
             if (.not. (amp > 0.0_dp .and. amp < 180.0_dp)) then
                 call fail_at(i, 'amplitude', rshort(amp), '0 < amplitude < 180 (degrees of '// &
                              'theta4, the mean peak over the cycles timed)')
                 return
             end if
-            up = d%u_period
+            up = u_period
             if (col(10) > 0) up = tab%v(i, col(10))
             if (.not. (up >= 0.0_dp .and. up < per)) then
                 call fail_at(i, 'u_period', rshort(up), '0 <= u_period < period (s)')
@@ -220,7 +221,7 @@ contains
     contains
         subroutine fail(what)
             character(len=*), intent(in) :: what
-            call set_error(stat, ERR_DECK, '&measurement trials = '//quoted(d%trials)//': '// &
+            call set_error(stat, ERR_DECK, '&measurement trials = '//quoted(table)//': '// &
                            what)
         end subroutine fail
         subroutine fail_at(row, name, value, allowed)
@@ -229,30 +230,32 @@ contains
             call fail('line '//itoa(tab%line(row))//', column '//trim(name)//' = '// &
                       trim(value)//'; allowed: '//allowed)
         end subroutine fail_at
-    end subroutine read_trials
+    end subroutine read_trial_table
 
     !> The deck's one release: its periods (each the total of cycles(i) cycles, with
-    !! u_period each) or its record.
-    pure subroutine deck_trials(d, ts)
-        type(deck_t), intent(in) :: d
+    !! u_period each) or, without periods, its record.
+    pure subroutine one_release(rig, periods, cycles, amps, u_period, record, ts)
+        real(dp), intent(in) :: rig(5)          !! l, l_prime, b, b_prime, mass
+        real(dp), intent(in) :: periods(:), cycles(:), amps(:)  !! s, cycles, degrees
+        real(dp), intent(in) :: u_period        !! s, of each period
+        character(len=*), intent(in) :: record  !! the record file ('' : none)
         type(trial_set_t), intent(out) :: ts
         integer :: n
         allocate (ts%t(1))
-        n = d%n_periods
+        n = size(periods)
         associate (t => ts%t(1))
             t%label = '1'
             t%line = 0
-            t%rig = [d%l, d%l_prime, d%b, d%b_prime, d%mass]
-            t%periods = d%periods(1:n)
-            t%cycles = d%cycles(1:n)
-            t%amps = d%amplitudes(1:n)
+            t%rig = rig
+            t%periods = periods
+            t%cycles = cycles
+            t%amps = amps
             allocate (t%u_period(n))
-            t%u_period = d%u_period
+            t%u_period = u_period
             t%record = ''
-            if (n == 0) t%record = trim(d%record)
-            if (n == 0 .and. allocated(d%record_path)) t%record = d%record_path
+            if (n == 0) t%record = record
         end associate
-    end subroutine deck_trials
+    end subroutine one_release
 
     !> The allowed column names, quoted and separated by commas.
     pure function names_list() result(s)

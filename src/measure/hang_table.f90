@@ -28,7 +28,8 @@ module hang_table
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
     use text, only: itoa, rshort, rlist_short, quoted, next_word, commas, clip
-    use deck, only: deck_t, deck_gave
+    use rig_groups, only: suspension_group_t, body_group_t
+    use measure_groups, only: tensor_group_t
     use tables, only: table_t, read_table
     implicit none
     private
@@ -86,33 +87,36 @@ module hang_table
 contains
 
     !> '&tensor hangs = 'FILE'': the head of every message about the table.
-    function table_name(d) result(s)
-        type(deck_t), intent(in) :: d           !! the deck
+    function table_name(ten) result(s)
+        type(tensor_group_t), intent(in) :: ten     !! the deck's &tensor
         character(len=:), allocatable :: s
-        s = '&tensor hangs = '//quoted(trim(d%tensor_hangs))
+        s = '&tensor hangs = '//quoted(trim(ten%hangs))
     end function table_name
 
     !> A hang with the deck's rig (l, l_prime, b, b_prime and the mass centre of &body:
     !! cg_depth, cg_offset, or r, lambda); have_cg = .false. when the deck gave no mass
     !! centre.
-    pure subroutine hang_defaults(d, h, have_cg)
-        type(deck_t), intent(in) :: d           !! the deck
+    pure subroutine hang_defaults(sus, bod, h, have_cg)
+        type(suspension_group_t), intent(in) :: sus     !! the deck's, normalised
+        type(body_group_t), intent(in) :: bod           !! the deck's, normalised
         type(hang_t), intent(out) :: h
         logical, intent(out) :: have_cg
-        h%l = d%l
-        h%l_prime = d%l_prime
-        h%b = d%b
-        h%b_prime = d%b_prime
-        have_cg = deck_gave(d, 'cg_depth') .or. deck_gave(d, 'cg_offset') .or. &
-                  (deck_gave(d, 'r') .and. deck_gave(d, 'lambda'))
-        h%cg_depth = d%r*sin(d%lambda)
-        h%cg_offset = d%r*cos(d%lambda) - 0.5_dp*d%b_prime
+        h%l = sus%l
+        h%l_prime = sus%l_prime
+        h%b = sus%b
+        h%b_prime = sus%b_prime
+        have_cg = bod%gave('cg_depth') .or. bod%gave('cg_offset') .or. &
+                  (bod%gave('r') .and. bod%gave('lambda'))
+        h%cg_depth = bod%r*sin(bod%lambda)
+        h%cg_offset = bod%r*cos(bod%lambda) - 0.5_dp*sus%b_prime
     end subroutine hang_defaults
 
-    !> Read the deck's table of hangs (d%tensor_hangs_path) and check it: the columns, each
+    !> Read the deck's table of hangs (&tensor hangs_path) and check it: the columns, each
     !! row's values, rows of one hang with one geometry.
-    subroutine read_hangs(d, set, stat)
-        type(deck_t), intent(in) :: d           !! the deck (&tensor, the rig's defaults)
+    subroutine read_hangs(ten, sus, bod, set, stat)
+        type(tensor_group_t), intent(in) :: ten         !! the deck's &tensor
+        type(suspension_group_t), intent(in) :: sus     !! the rig's defaults (normalised)
+        type(body_group_t), intent(in) :: bod
         type(hang_set_t), intent(out) :: set
         type(status_t), intent(out) :: stat     !! ERR_DECK naming the table and the line
         type(table_t) :: tab
@@ -122,8 +126,8 @@ contains
         integer :: c_rig(4), c_depth, c_off, i, k, n, nh, j
         logical :: have_cg, form_up, form_pts
         integer, allocatable :: ids(:)
-        head = table_name(d)//': '
-        call read_table(d%tensor_hangs_path, tab, stat, MAX_HANG_ROWS)
+        head = table_name(ten)//': '
+        call read_table(ten%hangs_path, tab, stat, MAX_HANG_ROWS)
         if (stat%code /= STATUS_OK) then
             stat%msg = head//stat%msg
             return
@@ -185,7 +189,7 @@ contains
             call need3(c_c, 'c_x c_y c_z')
             call need3(c_d, 'd_x d_y d_z')
             if (stat%code /= STATUS_OK) return
-            if (.not. d%tensor_cg_given) then
+            if (.not. ten%cg_given) then
                 call set_error(stat, ERR_DECK, head//'hangs given by the attachment points C '// &
                     'and D need the mass centre in the body frame; allowed: &tensor cg = x, '// &
                     'y, z with the c_x ... d_z columns')
@@ -205,14 +209,14 @@ contains
                 '''period'' (the time of ''cycles'' cycles, s)')
             return
         end if
-        if (form_up .and. d%tensor_cg_given) then
-            call set_error(stat, ERR_DECK, '&tensor cg = '//rlist_short(d%tensor_cg)// &
+        if (form_up .and. ten%cg_given) then
+            call set_error(stat, ERR_DECK, '&tensor cg = '//rlist_short(ten%cg)// &
                 ': the mass centre in the body frame is used with hangs given by their '// &
                 'attachment points; allowed: cg with the c_x ... d_z columns, or cg_depth, '// &
                 'cg_offset (&body or columns) with up/along')
             return
         end if
-        call hang_defaults(d, h0, have_cg)
+        call hang_defaults(sus, bod, h0, have_cg)
         ! without a mass centre in the deck, a cg_depth column with the offset 0 by default
         if (.not. have_cg) h0%cg_offset = 0.0_dp
         if (form_up .and. .not. have_cg .and. c_depth == 0) then
@@ -220,7 +224,7 @@ contains
                 'cg_offset, or r and lambda); a deck with analyses = ''tensor'' gives every '// &
                 'physical input itself (the defaults are the paper''s dimensionless scene); '// &
                 'allowed: &body cg_depth, cg_offset for every hang, or columns cg_depth (and '// &
-                'cg_offset) in '//table_name(d)//', or c_x ... d_z with &tensor cg')
+                'cg_offset) in '//table_name(ten)//', or c_x ... d_z with &tensor cg')
             return
         end if
         ! the rows
@@ -254,7 +258,7 @@ contains
             if (form_up) then
                 call orientation(i, tab%v(i, c_up), tab%v(i, c_al), h)
             else
-                call from_points(i, tab%v(i, c_c), tab%v(i, c_d), d%tensor_cg, h)
+                call from_points(i, tab%v(i, c_c), tab%v(i, c_d), ten%cg, h)
             end if
             if (stat%code /= STATUS_OK) return
             call check_rig(i, h)
@@ -282,7 +286,7 @@ contains
                     'of theta4; 0: small amplitude)')
                 return
             end if
-            set%rows(i)%u_period = d%tensor_u(7)
+            set%rows(i)%u_period = ten%u(7)
             if (c_u > 0) set%rows(i)%u_period = tab%v(i, c_u)
             if (.not. (set%rows(i)%u_period >= 0.0_dp .and. &
                        set%rows(i)%u_period < tab%v(i, c_per))) then

@@ -13,7 +13,8 @@
 !! sensitivities are 0 by symmetry (no_effect_on_torsion).
 module inputs
     use kinds, only: dp, deg
-    use deck, only: deck_t, deck_gave, estimated
+    use rig_groups, only: suspension_group_t, body_group_t, start_group_t
+    use measure_groups, only: measurement_group_t
     use rig, only: rig_t, start_t, move_b_prime
     implicit none
     private
@@ -27,35 +28,45 @@ module inputs
 
     public :: deck_inputs, set_input, input_value, no_effect_on_torsion
 
+    !> The inputs of a deck's budget: from the groups (module deck_runs adds
+    !! deck_inputs(deck, with_amplitude)).
+    interface deck_inputs
+        module procedure inputs_of_groups
+    end interface deck_inputs
+
 contains
 
     !> The inputs of the deck's budget, in a fixed order: mass, l, l_prime, b, b_prime, g,
     !! I2, I3, the mass centre (cg_depth, cg_offset or r, lambda), and the release amplitude
     !! when `with_amplitude` (a record fit that holds it).
-    pure function deck_inputs(d, with_amplitude) result(x)
-        type(deck_t), intent(in) :: d           !! the deck
+    pure function inputs_of_groups(sus, bod, mea, sta, with_amplitude) result(x)
+        type(suspension_group_t), intent(in) :: sus     !! the deck's, normalised
+        type(body_group_t), intent(in) :: bod
+        type(measurement_group_t), intent(in) :: mea
+        type(start_group_t), intent(in) :: sta
         logical, intent(in) :: with_amplitude   !! add the release amplitude
         type(input_t), allocatable :: x(:)
-        if (d%cables > 2) then
+        if (sus%cables > 2) then
             ! a platform: every cable of one length, measured as one
-            x = [input_t('mass', d%mass, d%u_mass), input_t('length', d%l, d%u_l)]
+            x = [input_t('mass', bod%mass, mea%u_mass), input_t('length', sus%l, mea%u_l)]
         else
-            x = [input_t('mass', d%mass, d%u_mass), input_t('l', d%l, d%u_l), &
-                 input_t('l_prime', d%l_prime, d%u_l_prime)]
+            x = [input_t('mass', bod%mass, mea%u_mass), input_t('l', sus%l, mea%u_l), &
+                 input_t('l_prime', sus%l_prime, mea%u_l_prime)]
         end if
-        x = [x, input_t('b', d%b, d%u_b), &
-             input_t('b_prime', d%b_prime, d%u_b_prime), input_t('g', d%g, d%u_g), &
-             input_t('I2', d%inertia(2), d%u_inertia(1)), &
-             input_t('I3', d%inertia(3), d%u_inertia(2))]
-        if (deck_gave(d, 'cg_depth') .or. deck_gave(d, 'cg_offset') .or. d%cables > 2) then
-            x = [x, input_t('cg_depth', d%cg_depth, d%u_cg_depth), &
-                 input_t('cg_offset', d%cg_offset, d%u_cg_offset)]
+        x = [x, input_t('b', sus%b, mea%u_b), &
+             input_t('b_prime', sus%b_prime, mea%u_b_prime), input_t('g', sus%g, mea%u_g), &
+             input_t('I2', bod%inertia(2), mea%u_inertia(1)), &
+             input_t('I3', bod%inertia(3), mea%u_inertia(2))]
+        if (bod%centre_measured(sus)) then
+            x = [x, input_t('cg_depth', bod%cg_depth, mea%u_cg_depth), &
+                 input_t('cg_offset', bod%cg_offset, mea%u_cg_offset)]
         else
-            x = [x, input_t('r', d%r, d%u_r), input_t('lambda', d%lambda, d%u_lambda)]
+            x = [x, input_t('r', bod%r, mea%u_r), input_t('lambda', bod%lambda, mea%u_lambda)]
         end if
-        if (with_amplitude .and. .not. estimated(d, 'amplitude') .and. &
-            trim(d%mode) == 'raised') x = [x, input_t('amplitude', d%amplitude, d%u_amplitude)]
-    end function deck_inputs
+        if (with_amplitude .and. .not. mea%estimated('amplitude') .and. &
+            trim(sta%mode) == 'raised') x = [x, input_t('amplitude', sta%amplitude, &
+                                                        mea%u_amplitude)]
+    end function inputs_of_groups
 
     !> Set the input `name` of rig rg (or start st) to v.
     pure subroutine set_input(rg, st, name, v)

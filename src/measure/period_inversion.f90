@@ -55,9 +55,9 @@ module period_inversion
     use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC
     use text, only: itoa, fixed, sci
     use geometry, only: pendulum_t
-    use deck, only: deck_t
-    use rig, only: rig_t, start_t, accuracy_t, rig_of, accuracy_of, make_pendulum, &
-        start_state, raised_start, move_b_prime
+    use deck_base, only: deck_source_t
+    use rig, only: rig_t, start_t, accuracy_t, make_pendulum, start_state, raised_start, &
+        move_b_prime
     use kane_run, only: kane_run_start, kane_run_t
     use floquet, only: check_torsion_scene, torsion_period
     use random, only: rng_t, rng_stream, rng_normal
@@ -65,7 +65,7 @@ module period_inversion
     use run_loop, only: stepped_model_t, row_sink_t, drive, falling_zero
     use output_io, only: out_files_t
     use budget, only: input_u_t, budget_row_t
-    use inputs, only: input_t, set_input, no_effect_on_torsion, deck_inputs
+    use inputs, only: input_t, set_input, no_effect_on_torsion
     use sweep_engine, only: sweep_options_t, sweep_report_t
     use monte_carlo, only: mc_task_t, monte_carlo_run
     implicit none
@@ -686,9 +686,12 @@ contains
     !! With `outdir` the sweep is checkpointed there (OUTDIR/NAME.identify_mc.partial;
     !! options: --resume, the interval; report: how the sweep went; files: the run's staged
     !! files, removed on a signal).
-    subroutine period_monte_carlo(d, periods, amps, u, i1_start, n, seed, mean, sdev, stat, &
-                                  outdir, options, report, files, cycles)
-        type(deck_t), intent(in) :: d           !! the deck (its rig, accuracy, name)
+    subroutine period_monte_carlo(d, rg, acc, x, periods, amps, u, i1_start, n, seed, mean, &
+                                  sdev, stat, outdir, options, report, files, cycles)
+        class(deck_source_t), intent(in) :: d   !! the deck's source (its path, name, text)
+        type(rig_t), intent(in) :: rg           !! the deck's rig
+        type(accuracy_t), intent(in) :: acc     !! its runs' accuracy
+        type(input_t), intent(in) :: x(:)       !! its inputs (deck_inputs, .false.)
         real(dp), intent(in) :: periods(:), amps(:)   !! measurements (s, degrees)
         type(input_u_t), intent(in) :: u        !! standard uncertainties
         real(dp), intent(in) :: i1_start        !! start of each inversion
@@ -716,7 +719,7 @@ contains
         cyc = 1.0_dp
         if (present(cycles)) cyc = cycles
         payload = period_mc_payload(periods, amps, u, i1_start, seed, cyc)
-        call period_mc_task(d, payload, task)
+        call period_mc_task(rg, acc, x, payload, task)
         call monte_carlo_run(task, d, n, payload, m, s, stat, outdir, options, report, files)
         mean = m(1)
         sdev = s(1)
@@ -738,13 +741,15 @@ contains
 
     !> The samples of a periods Monte Carlo of the deck's rig from their payload
     !! (period_mc_payload): the task rank 0 runs and the other ranks of an MPI run build.
-    pure subroutine period_mc_task(d, payload, task)
-        type(deck_t), intent(in) :: d           !! the deck (its rig and accuracy)
+    pure subroutine period_mc_task(rg, acc, x, payload, task)
+        type(rig_t), intent(in) :: rg           !! the deck's rig
+        type(accuracy_t), intent(in) :: acc     !! its runs' accuracy
+        type(input_t), intent(in) :: x(:)       !! its inputs (deck_inputs, .false.)
         real(dp), intent(in) :: payload(:)      !! period_mc_payload
         type(period_mc_task_t), intent(out) :: task
         integer :: np
-        task%rg = rig_of(d)
-        task%acc = accuracy_of(d)
+        task%rg = rg
+        task%acc = acc
         task%seed = nint(payload(1))
         task%i1_start = payload(2)
         task%u = input_u_t(mass=payload(3), l=payload(4), l_prime=payload(5), b=payload(6), &
@@ -754,7 +759,7 @@ contains
         task%periods = payload(12:11 + np)
         task%amps = payload(12 + np:11 + 2*np)
         task%cycles = payload(12 + 2*np:11 + 3*np)
-        task%x = deck_inputs(d, .false.)
+        task%x = x
         task%nest = 1
     end subroutine period_mc_task
 

@@ -36,13 +36,12 @@ module record_fit
     use kinds, only: dp, pi, deg
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC
     use text, only: itoa, sci
-    use deck, only: deck_t, estimated
+    use measure_groups, only: measurement_group_t
     use output_io, only: out_files_t, all_finite
     use geometry, only: pendulum_t
     use bifilar_model, only: NSTATE, bifilar_t, sens_dir_t, vertical_rate, &
         vertical_rate_gradient
-    use rig, only: rig_t, start_t, accuracy_t, rig_of, start_of, accuracy_of, make_pendulum, &
-        start_state
+    use rig, only: rig_t, start_t, accuracy_t, make_pendulum, start_state
     use kane_run, only: kane_run_start, kane_run_t
     use run_loop, only: stepped_model_t, row_sink_t, drive
     use integrators, only: SENS_FORWARD
@@ -811,8 +810,11 @@ contains
     !! difference steps) from the deck and the record.  With t0 estimated, the release is
     !! found in the record (find_release) and gives the start values of t0, the bias and,
     !! when estimated, the amplitude, and the sign; else the times count from the release.
-    subroutine fit_problem(d, rec, prob, p0, h, rl)
-        type(deck_t), intent(in) :: d
+    subroutine fit_problem(rg, st, acc, mea, rec, prob, p0, h, rl)
+        type(rig_t), intent(in) :: rg           !! the deck's rig
+        type(start_t), intent(in) :: st         !! its start
+        type(accuracy_t), intent(in) :: acc     !! its runs' accuracy
+        type(measurement_group_t), intent(in) :: mea    !! (seed, quantity, estimate)
         type(record_t), intent(in) :: rec
         type(record_fit_t), intent(out) :: prob
         real(dp), allocatable, intent(out) :: p0(:), h(:)
@@ -821,12 +823,12 @@ contains
         real(dp) :: tp, vscale
         integer :: j, k, n
         n = size(rec%t)
-        prob%rg = rig_of(d)
-        prob%st = start_of(d)
-        prob%acc = accuracy_of(d)
-        prob%seed = d%seed
+        prob%rg = rg
+        prob%st = st
+        prob%acc = acc
+        prob%seed = mea%seed
         prob%rec = rec
-        prob%rate = trim(d%quantity) == 'rate'
+        prob%rate = trim(mea%quantity) == 'rate'
         prob%t0 = 0.0_dp
         prob%bias = 0.0_dp
         prob%sign = 1.0_dp
@@ -837,12 +839,12 @@ contains
         prob%hw = 1.0_dp
         prob%np = 0
         do k = 1, NPARAM
-            if (estimated(d, PARAM_NAMES(k))) then
+            if (mea%estimated(PARAM_NAMES(k))) then
                 prob%np = prob%np + 1
                 prob%which(prob%np) = k
             end if
         end do
-        if (estimated(d, 't0')) then
+        if (mea%estimated('t0')) then
             call find_release(rec, prob%rate, rel)
             prob%sign = rel%sign
             prob%ifirst = rel%ifirst
@@ -856,25 +858,25 @@ contains
         do j = 1, prob%np
             select case (prob%which(j))
             case (P_I1)
-                p0(j) = d%inertia(1)
-                h(j) = H_REL*d%inertia(1)
+                p0(j) = rg%inertia(1)
+                h(j) = H_REL*rg%inertia(1)
             case (P_CV)
-                p0(j) = d%c_v
-                h(j) = H_REL*max(d%c_v, DAMP_REF*d%mass*d%b_prime*sqrt(d%g*d%b_prime))
+                p0(j) = rg%c_v
+                h(j) = H_REL*max(rg%c_v, DAMP_REF*rg%mass*rg%b_prime*sqrt(rg%g*rg%b_prime))
             case (P_CQ)
-                p0(j) = d%c_q
-                h(j) = H_REL*max(d%c_q, DAMP_REF*d%mass*d%b_prime**2)
+                p0(j) = rg%c_q
+                h(j) = H_REL*max(rg%c_q, DAMP_REF*rg%mass*rg%b_prime**2)
             case (P_AMP)
-                p0(j) = d%amplitude
-                if (estimated(d, 't0')) p0(j) = rel%amplitude
+                p0(j) = st%amplitude
+                if (mea%estimated('t0')) p0(j) = rel%amplitude
                 h(j) = H_REL*max(p0(j), 1.0_dp)
             case (P_T0)
                 p0(j) = rel%t0
                 h(j) = H_REL*tp
             case default
                 p0(j) = 0.0_dp
-                if (estimated(d, 't0')) p0(j) = rel%level
-                if (prob%rate .and. estimated(d, 't0') .and. .not. rel%held) p0(j) = 0.0_dp
+                if (mea%estimated('t0')) p0(j) = rel%level
+                if (prob%rate .and. mea%estimated('t0') .and. .not. rel%held) p0(j) = 0.0_dp
                 h(j) = H_REL*vscale
             end select
             prob%xs(j) = h(j)/H_REL
@@ -1179,8 +1181,11 @@ contains
     !> The samples of a record fit's Monte Carlo from the deck, its record, its inputs and
     !! the payload of the record's Monte Carlo (the task rank 0 runs and the other ranks
     !! build).
-    subroutine record_mc_task(d, rec, x, payload, task)
-        type(deck_t), intent(in) :: d
+    subroutine record_mc_task(rg, st, acc, mea, rec, x, payload, task)
+        type(rig_t), intent(in) :: rg           !! the deck's rig
+        type(start_t), intent(in) :: st         !! its start
+        type(accuracy_t), intent(in) :: acc     !! its runs' accuracy
+        type(measurement_group_t), intent(in) :: mea    !! (seed, quantity, estimate)
         type(record_t), intent(in) :: rec
         type(input_t), intent(in) :: x(:)       !! the inputs drawn
         !> crc (2), sigma, np, phat, u_p, jac, the robust weights' roots (1 .. n) and the
@@ -1189,7 +1194,7 @@ contains
         type(record_mc_task_t), intent(out) :: task
         real(dp), allocatable :: p0(:), h(:)
         integer :: np, m, k
-        call fit_problem(d, rec, task%prob, p0, h)
+        call fit_problem(rg, st, acc, mea, rec, task%prob, p0, h)
         task%x = x
         m = task%prob%nres()
         task%sigma = payload(3)
@@ -1332,8 +1337,13 @@ contains
     !! 'angle', rad) or W (quantity 'rate', rad/s) with seeded normal noise of standard
     !! deviation sigma (stream 0 of seed), written to path (t with 6 decimals, the value with
     !! 10 significant digits: the noise is far above both, and the text repeats exactly).
-    subroutine make_record(d, duration, rate_hz, sigma, seed, quantity, path, stat)
-        type(deck_t), intent(in) :: d           !! the true rig (simulate deck)
+    subroutine make_record(rg, st, acc, title, deck_path, duration, rate_hz, sigma, seed, &
+                           quantity, path, stat)
+        type(rig_t), intent(in) :: rg           !! the true rig (of a simulate deck)
+        type(start_t), intent(in) :: st         !! its start
+        type(accuracy_t), intent(in) :: acc     !! its runs' accuracy
+        character(len=*), intent(in) :: title   !! the deck's &scene title
+        character(len=*), intent(in) :: deck_path   !! the deck as given
         real(dp), intent(in) :: duration, rate_hz, sigma   !! s, Hz, record units
         integer, intent(in) :: seed
         character(len=*), intent(in) :: quantity    !! 'angle' or 'rate'
@@ -1349,7 +1359,7 @@ contains
         do i = 0, n
             t(i) = i/rate_hz
         end do
-        call record_model(rig_of(d), start_of(d), accuracy_of(d), t, 0.0_dp, quantity == 'rate', &
+        call record_model(rg, st, acc, t, 0.0_dp, quantity == 'rate', &
                           v, stat)
         if (stat%code /= 0) return
         g = rng_stream(seed, 0)
@@ -1359,10 +1369,10 @@ contains
         call files%open(path, u, stat)
         if (stat%code /= 0) return
         ios = 0
-        write (u, '(a)', iostat=ios) '# bifilar make_record: '//trim(d%title)
-        if (ios == 0) write (u, '(a)', iostat=ios) '# simulated from '//d%path// &
-            ' (&damping c_v = '//sci(d%c_v, 6)//', c_q = '//sci(d%c_q, 6)//', I1 = '// &
-            sci(d%inertia(1), 6)//'), noise sigma = '//sci(sigma, 3)//', seed '//itoa(seed)
+        write (u, '(a)', iostat=ios) '# bifilar make_record: '//trim(title)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# simulated from '//deck_path// &
+            ' (&damping c_v = '//sci(rg%c_v, 6)//', c_q = '//sci(rg%c_q, 6)//', I1 = '// &
+            sci(rg%inertia(1), 6)//'), noise sigma = '//sci(sigma, 3)//', seed '//itoa(seed)
         if (ios == 0) write (u, '(a)', iostat=ios) '# t (s from release)  '// &
             trim(merge('theta4 (rad)', 'W (rad/s)   ', quantity == 'angle'))
         do i = 0, n

@@ -74,8 +74,9 @@ module tensor_fit
     use kinds, only: dp, pi, deg
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC
     use text, only: itoa, sci, fixed, rshort, rlist_short
-    use deck, only: deck_t
-    use rig, only: rig_t, accuracy_t, accuracy_of
+    use rig_groups, only: suspension_group_t, body_group_t
+    use measure_groups, only: tensor_group_t
+    use rig, only: rig_t, accuracy_t
     use lapack_wrap, only: la_lstsq, la_svd, la_syev, la_chol, la_tri_solve
     use random, only: rng_t, rng_stream, rng_normal, rng_uniform
     use stats, only: chi2_sf, coverage_factor, welch_satterthwaite, NU_INFINITE
@@ -209,20 +210,23 @@ contains
 
     !> The problem of a deck and its table of hangs: mass, g, accuracy and uncertainties
     !! from the deck (&tensor), the cases (hang, amplitude) of the rows.
-    subroutine problem_of(d, set, prob)
-        type(deck_t), intent(in) :: d           !! the deck
+    subroutine problem_of(ten, sus, bod, acc, set, prob)
+        type(tensor_group_t), intent(in) :: ten         !! the deck's &tensor
+        type(suspension_group_t), intent(in) :: sus     !! (g)
+        type(body_group_t), intent(in) :: bod           !! (mass)
+        type(accuracy_t), intent(in) :: acc             !! the deck's accuracy
         type(hang_set_t), intent(in) :: set     !! its hangs
         type(tensor_problem_t), intent(out) :: prob
-        prob%mass = d%mass
-        prob%g = d%g
+        prob%mass = bod%mass
+        prob%g = sus%g
         prob%hangs = set%hangs
         prob%rows = set%rows
-        prob%acc = accuracy_of(d)
-        prob%u%mass = d%tensor_u(1)
-        prob%u%rig = d%tensor_u(2:5)
-        prob%u%g = d%tensor_u(6)
-        prob%u%amplitude = d%tensor_u(8)
-        prob%u%direction = d%tensor_u_direction*deg
+        prob%acc = acc
+        prob%u%mass = ten%u(1)
+        prob%u%rig = ten%u(2:5)
+        prob%u%g = ten%u(6)
+        prob%u%amplitude = ten%u(8)
+        prob%u%direction = ten%u_direction*deg
         call set_cases(prob)
     end subroutine problem_of
 
@@ -1479,8 +1483,11 @@ contains
 
     !> The Monte Carlo task of a deck from its payload (tensor_mc_payload): the task rank 0
     !! runs and the other ranks of an MPI run build.  ERR_DECK when the payload is not one.
-    subroutine tensor_mc_task(d, payload, task, stat)
-        type(deck_t), intent(in) :: d           !! the deck (mass, g, &tensor, accuracy)
+    subroutine tensor_mc_task(ten, sus, bod, acc, payload, task, stat)
+        type(tensor_group_t), intent(in) :: ten         !! the deck's &tensor
+        type(suspension_group_t), intent(in) :: sus     !! (g)
+        type(body_group_t), intent(in) :: bod           !! (mass)
+        type(accuracy_t), intent(in) :: acc             !! the deck's accuracy
         real(dp), intent(in) :: payload(:)
         type(tensor_mc_task_t), intent(out) :: task
         type(status_t), intent(out) :: stat
@@ -1532,7 +1539,7 @@ contains
             end associate
             j = j + 7
         end do
-        call problem_of(d, set, task%prob)
+        call problem_of(ten, sus, bod, acc, set, task%prob)
         task%prob%u_def = payload(3 + 15*nh + 7:3 + 15*nh + 7*n:7)
         task%x = payload(j + 1:j + 6)
         task%axes = reshape(payload(j + 7:j + 15), [3, 3])

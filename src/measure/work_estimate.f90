@@ -33,10 +33,11 @@ module work_estimate
     use kinds, only: dp, pi, deg
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_MODEL
     use text, only: itoa, itoa_text, sci, fixed
-    use deck, only: deck_t, deck_gave, estimated
+    use rig_groups, only: body_group_t, start_group_t, integration_group_t
+    use measure_groups, only: measurement_group_t
     use rig, only: rig_t, accuracy_t, accuracy_of
     use records, only: record_t
-    use inputs, only: input_t, deck_inputs, no_effect_on_torsion
+    use inputs, only: input_t, no_effect_on_torsion
     use progress, only: note_after, say_note, duration
     use omp_lib, only: omp_get_max_threads
     implicit none
@@ -72,23 +73,23 @@ contains
     !> The rig's reference periods (s): t_attach (the classical period with the body's mass
     !! at its cable attachments) and t_guess (the classical period at &body inertia(1); -1
     !! when the deck gives no inertia).
-    subroutine reference_periods(d, rg, t_attach, t_guess)
-        type(deck_t), intent(in) :: d           !! the deck (inertia given?)
+    subroutine reference_periods(bod, rg, t_attach, t_guess)
+        type(body_group_t), intent(in) :: bod   !! the deck's &body (inertia given?)
         type(rig_t), intent(in) :: rg           !! the rig
         real(dp), intent(out) :: t_attach, t_guess
         real(dp) :: lbar
         lbar = 0.5_dp*(rg%l + rg%l_prime)
         t_attach = 2.0_dp*pi*sqrt(lbar*rg%b_prime/(rg%g*rg%b))
         t_guess = -1.0_dp
-        if (deck_gave(d, 'inertia') .and. rg%inertia(1) > 0.0_dp) &
+        if (bod%gave('inertia') .and. rg%inertia(1) > 0.0_dp) &
             t_guess = 4.0_dp*pi*sqrt(rg%inertia(1)*lbar/(rg%mass*rg%g*rg%b*rg%b_prime))
     end subroutine reference_periods
 
     !> The timed periods of a release (per cycle, s, at amplitudes amps in degrees) against
     !! what a rig can give (see the module header): ERR_MODEL naming the likely mistake.
     !! single: the deck's one release (the triangle check on the classical I1 applies).
-    subroutine check_timings(d, rg, per, amps, single, stat)
-        type(deck_t), intent(in) :: d
+    subroutine check_timings(bod, rg, per, amps, single, stat)
+        type(body_group_t), intent(in) :: bod   !! the deck's &body
         type(rig_t), intent(in) :: rg
         real(dp), intent(in) :: per(:), amps(:)
         logical, intent(in) :: single
@@ -97,7 +98,7 @@ contains
         integer :: i
         logical, allocatable :: sel(:)
         stat%code = STATUS_OK
-        call reference_periods(d, rg, ta, tg)
+        call reference_periods(bod, rg, ta, tg)
         do i = 1, size(per)
             ratio = per(i)/ta
             if (ratio > GYRATION_MAX) then
@@ -110,7 +111,7 @@ contains
                 return
             end if
         end do
-        if (.not. single .or. .not. deck_gave(d, 'inertia') .or. maxval(amps) > 90.0_dp) return
+        if (.not. single .or. .not. bod%gave('inertia') .or. maxval(amps) > 90.0_dp) return
         ! the classical I1 as combine computes it: the mean period at the smallest amplitude
         amin = minval(amps)
         sel = amps <= amin*(1.0_dp + 1.0e-9_dp)
@@ -130,8 +131,10 @@ contains
     !> A record's times against the rig (see the module header): ERR_MODEL for a swing no
     !! rig gives (times in ms), ERR_DECK for sampling too coarse, a gap too long, or values
     !! in degrees read as radians.  name: how the record is named in messages.
-    subroutine check_record_times(d, rg, rec, name, stat)
-        type(deck_t), intent(in) :: d
+    subroutine check_record_times(bod, mea, sta, rg, rec, name, stat)
+        type(body_group_t), intent(in) :: bod           !! the deck's (inertia given?)
+        type(measurement_group_t), intent(in) :: mea    !! (record_units)
+        type(start_group_t), intent(in) :: sta          !! (the release), normalised
         type(rig_t), intent(in) :: rg
         type(record_t), intent(in) :: rec
         character(len=*), intent(in) :: name
@@ -141,7 +144,7 @@ contains
         stat%code = STATUS_OK
         n = size(rec%t)
         if (n < 3) return
-        call reference_periods(d, rg, ta, tg)
+        call reference_periods(bod, rg, ta, tg)
         tr = record_swing_period(rec)
         if (tr > GYRATION_MAX*ta) then
             call set_error(stat, ERR_MODEL, name//': it swings with a period of '// &
@@ -176,9 +179,9 @@ contains
             return
         end if
         ! degrees read as radians: values 57 times what the start gives
-        if (len_trim(d%record_units) > 0 .or. trim(d%mode) /= 'raised') return
+        if (len_trim(mea%record_units) > 0 .or. trim(sta%mode) /= 'raised') return
         ! (the start's amplitude, also when it is a start value of the fit)
-        a = d%amplitude*deg
+        a = sta%amplitude*deg
         if (.not. (a > 0.0_dp)) return
         expect = a
         if (rec%rate) then
@@ -189,7 +192,7 @@ contains
         if (peak > 20.0_dp*expect .and. peak/57.29577951308232_dp < 3.0_dp*expect) then
             call set_error(stat, ERR_DECK, name//': its values reach '//sci(peak, 3)//' '// &
                 trim(merge('rad/s', 'rad  ', rec%rate))//', '//itoa(nint(peak/expect))// &
-                ' times what a release at '//fixed(d%amplitude, 1)//' deg gives on this '// &
+                ' times what a release at '//fixed(sta%amplitude, 1)//' deg gives on this '// &
                 'rig (about '//sci(expect, 3)//' '//trim(merge('rad/s', 'rad  ', rec%rate))// &
                 '): they look like '//trim(merge('deg/s', 'deg  ', rec%rate))//'; allowed: '// &
                 'record_units = '''//trim(merge('deg/s', 'deg  ', rec%rate))//''' for a '// &
@@ -288,8 +291,9 @@ contains
     !! (simulated): the inversion, the budget (two whole inversions for each input, period
     !! and amplitude with a u: period_budget, on every rig), the Monte Carlo over the
     !! threads, the figure's curve.  what: the work in words, for one period of `one` seconds.
-    subroutine periods_runs(d, n, nup, sym, one, runs, what)
-        type(deck_t), intent(in) :: d
+    subroutine periods_runs(x, mea, n, nup, sym, one, runs, what)
+        type(input_t), intent(in) :: x(:)       !! the budget's inputs (deck_inputs, .false.)
+        type(measurement_group_t), intent(in) :: mea
         integer, intent(in) :: n, nup
         logical, intent(in) :: sym
         real(dp), intent(in) :: one             !! wall seconds of one model period
@@ -297,18 +301,18 @@ contains
         character(len=:), allocatable, intent(out) :: what
         real(dp) :: inv, refit
         integer :: nu
-        nu = inputs_with_u(deck_inputs(d, .false.), sym)
+        nu = inputs_with_u(x, sym)
         inv = real(ITER_FIT*2*n + 2*n, dp)
         refit = real(ITER_REFIT*2*n, dp)
         runs = inv + nu*2*refit + n + 41
         ! the budget inverts all n periods twice for each period with a u and for each
         ! amplitude when u_amplitude > 0 (period_budget), whatever the rig
-        runs = runs + (nup + merge(n, 0, d%u_amplitude > 0.0_dp))*2*refit
-        runs = runs + real(d%monte_carlo, dp)*inv/max(1, omp_get_max_threads())
+        runs = runs + (nup + merge(n, 0, mea%u_amplitude > 0.0_dp))*2*refit
+        runs = runs + real(mea%monte_carlo, dp)*inv/max(1, omp_get_max_threads())
         what = itoa(n)//' period'//trim(merge('s', ' ', n > 1))//' of '// &
             trim(merge('pure torsion        ', 'the full model      ', sym))//' (about '// &
             sci(one, 1)//' s each), about '//sci(runs, 1)//' times (the inversion, the '// &
-            'budget'//mc_words(d%monte_carlo)//', the figure)'
+            'budget'//mc_words(mea%monte_carlo)//', the figure)'
     end subroutine periods_runs
 
     !> The model runs over a whole record a fit of np parameters asks for: the fit on
@@ -319,28 +323,30 @@ contains
     !! np columns (each about 0.4 of a plain run's work), the budget's columns ride on the
     !! fit's last run, and a Monte Carlo refit takes about two plain runs.  what: the work in
     !! words, for a run of `one` seconds over `span` s of `periods` periods.
-    subroutine record_runs(d, np, span, periods, one, runs, what)
-        type(deck_t), intent(in) :: d
+    subroutine record_runs(x, mea, integ, np, span, periods, one, runs, what)
+        type(input_t), intent(in) :: x(:)       !! the budget's inputs (deck_inputs, .true.)
+        type(measurement_group_t), intent(in) :: mea
+        type(integration_group_t), intent(in) :: integ   !! (sensitivities), normalised
         integer, intent(in) :: np
         real(dp), intent(in) :: span, periods, one
         real(dp), intent(out) :: runs
         character(len=:), allocatable, intent(out) :: what
         real(dp), parameter :: COLUMN = 0.4_dp
         integer :: nu
-        nu = inputs_with_u(deck_inputs(d, .true.), .false.)
-        if (trim(d%sensitivities) == 'differences') then
+        nu = inputs_with_u(x, .false.)
+        if (trim(integ%sensitivities) == 'differences') then
             runs = 2.0_dp*ITER_FIT*(np + 1) + 2*np + 2*nu
-            if (trim(d%loss) == 'huber') runs = runs + 3.0_dp*ITER_FIT*(np + 1)
-            runs = runs + real(d%monte_carlo, dp)*2*ITER_REFIT/max(1, omp_get_max_threads())
+            if (trim(mea%loss) == 'huber') runs = runs + 3.0_dp*ITER_FIT*(np + 1)
+            runs = runs + real(mea%monte_carlo, dp)*2*ITER_REFIT/max(1, omp_get_max_threads())
         else
             runs = ITER_FIT*(1.0_dp + COLUMN*np) + COLUMN*nu
-            if (trim(d%loss) == 'huber') runs = runs + 3.0_dp*2.0_dp*(1.0_dp + COLUMN*np)
-            runs = runs + real(d%monte_carlo, dp)*2.0_dp/max(1, omp_get_max_threads())
+            if (trim(mea%loss) == 'huber') runs = runs + 3.0_dp*2.0_dp*(1.0_dp + COLUMN*np)
+            runs = runs + real(mea%monte_carlo, dp)*2.0_dp/max(1, omp_get_max_threads())
         end if
         what = 'the model over the record''s '//sci(span, 3)//' s (about '// &
             itoa(nint(min(periods, 1.0e9_dp)))//' periods; '//sci(one, 1)//' s a run), '// &
             'about '//sci(runs, 1)//' times (the fit of '//itoa(np)//' parameter'// &
-            trim(merge('s', ' ', np > 1))//', the budget'//mc_words(d%monte_carlo)//')'
+            trim(merge('s', ' ', np > 1))//', the budget'//mc_words(mea%monte_carlo)//')'
     end subroutine record_runs
 
     !> The inputs of a budget with a u (on a symmetric rig, of those that enter torsion).
@@ -364,12 +370,12 @@ contains
 
     !> One line on standard error when the work estimated exceeds note_after() seconds:
     !! 'bifilar: note: DECK: identify: about 2 min (estimated): WHAT'.
-    subroutine work_note(d, seconds, what)
-        type(deck_t), intent(in) :: d
+    subroutine work_note(deck_path, seconds, what)
+        character(len=*), intent(in) :: deck_path   !! the deck as given
         real(dp), intent(in) :: seconds
         character(len=*), intent(in) :: what
         if (.not. (seconds > note_after())) return
-        call say_note(d%path, 'identify: about '//duration(seconds)//' of work (estimated '// &
+        call say_note(deck_path, 'identify: about '//duration(seconds)//' of work (estimated '// &
                       'now): '//what)
     end subroutine work_note
 

@@ -21,7 +21,7 @@ module monte_carlo
     use finite, only: finite_bits
     use status, only: status_t, set_error, STATUS_OK
     use text, only: itoa
-    use deck, only: deck_t
+    use deck_base, only: deck_source_t
     use output_io, only: out_files_t, remove_file
     use sweep_engine, only: sweep_task_t, sweep_run, sweep_options_t, sweep_report_t, &
         checkpoint_path
@@ -95,7 +95,7 @@ contains
     subroutine monte_carlo_run(task, d, n, payload, mean, sdev, stat, outdir, options, &
                                report, files, analysis)
         class(mc_task_t), intent(in) :: task    !! the samples
-        type(deck_t), intent(in) :: d           !! the deck (its path and name)
+        class(deck_source_t), intent(in) :: d   !! the deck's source (its path, name, text)
         integer, intent(in) :: n                !! samples (>= 2)
         real(dp), intent(in) :: payload(:)      !! for the other ranks (may be empty)
         real(dp), intent(out) :: mean(:), sdev(:)   !! of each estimate (nest)

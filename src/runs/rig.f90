@@ -1,16 +1,22 @@
 !> The rig layer: a physical rig (suspension, body, damping, cables) and how it starts to
-!! move, in the deck's units, between the deck and the analyses.
+!! move, in the deck's units, between the deck's groups and the analyses.
 !!
-!! An analysis builds its rig once from the deck (rig_of, start_of) and varies the rig_t,
-!! never a copy of the deck: a trial I1 of a fit, a candidate suspension of a design, an
-!! input of an uncertainty budget are changes of a rig_t.  The model sees the rig scaled
-!! (make_pendulum: lengths over b', moments over m b'^2, time tau = sqrt(g/b') t) and starts
-!! from start_state.
+!! An analysis builds its rig once from the deck's groups (rig_of, start_of: module
+!! rig_groups) and varies the rig_t, never a copy of the deck: a trial I1 of a fit, a
+!! candidate suspension of a design, an input of an uncertainty budget are changes of a
+!! rig_t.  The model sees the rig scaled (make_pendulum: lengths over b', moments over
+!! m b'^2, time tau = sqrt(g/b') t) and starts from start_state.
 module rig
     use kinds, only: dp, deg
     use status, only: status_t, set_error, ERR_DECK
     use text, only: sci
-    use deck, only: deck_t
+    use rig_groups, only: suspension_group_t, body_group_t, damping_group_t, &
+        cables_group_t, start_group_t, integration_group_t, DEFAULT_B, DEFAULT_B_PRIME, &
+        DEFAULT_L, DEFAULT_L_PRIME, DEFAULT_G, DEFAULT_MASS, DEFAULT_INERTIA, DEFAULT_R, &
+        DEFAULT_LAMBDA, DEFAULT_BTILDE, DEFAULT_SWAY_DEPTH, DEFAULT_C_V, DEFAULT_C_Q, &
+        DEFAULT_STIFFNESS, DEFAULT_CABLE_DAMPING, DEFAULT_MODE, DEFAULT_AMPLITUDE, &
+        DEFAULT_TILT, DEFAULT_THETA, DEFAULT_THETA_DOT, DEFAULT_RTOL, DEFAULT_ATOL, &
+        DEFAULT_SENS_ERROR_CONTROL
     use geometry, only: pendulum_t, beta_coeffs
     use start_pose, only: raised_angles, solve_theta5
     use bifilar_model, only: chart_state, NSTATE
@@ -18,84 +24,108 @@ module rig
     implicit none
     private
 
-    !> The rig, in the deck's units (any one consistent system; time in seconds).
+    !> The rig, in the deck's units (any one consistent system; time in seconds); by default
+    !! the deck's defaults (module rig_groups).
     type, public :: rig_t
         ! the suspension: spacing of the cables on the support (b) and on the body (b_prime),
         ! cable lengths BC (l) and AD (l_prime), gravity
-        real(dp) :: b = 1.0_dp, b_prime = 1.0_dp, l = 2.0_dp, l_prime = 2.0_dp, g = 1.0_dp
+        real(dp) :: b = DEFAULT_B, b_prime = DEFAULT_B_PRIME
+        real(dp) :: l = DEFAULT_L, l_prime = DEFAULT_L_PRIME, g = DEFAULT_G
         ! the body: mass, principal moments about its mass centre, the mass centre's place
         ! from C (r, lambda, eq. (21)), the principal axes (btilde, rows in ntilde), the
         ! depth of the point E of the side-sway Q below the midpoint of CD
-        real(dp) :: mass = 1.0_dp
-        real(dp) :: inertia(3) = [0.125_dp, 0.1458333333333333_dp, 0.1458333333333333_dp]
-        real(dp) :: r = 0.7071067811865476_dp, lambda = 0.7853981633974483_dp
-        real(dp) :: btilde(3, 3) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, &
-                                            0.0_dp, 0.0_dp, 1.0_dp], [3, 3])
-        real(dp) :: sway_depth = 1.0_dp
+        real(dp) :: mass = DEFAULT_MASS
+        real(dp) :: inertia(3) = DEFAULT_INERTIA
+        real(dp) :: r = DEFAULT_R, lambda = DEFAULT_LAMBDA
+        real(dp) :: btilde(3, 3) = DEFAULT_BTILDE
+        real(dp) :: sway_depth = DEFAULT_SWAY_DEPTH
         ! the damping torque about the vertical, M = -(c_v W + c_q |W| W) n3
-        real(dp) :: c_v = 0.0_dp, c_q = 0.0_dp
+        real(dp) :: c_v = DEFAULT_C_V, c_q = DEFAULT_C_Q
         ! elastic cables (model 'elastic'): EA/(m g) and the damping ratio of each cable
-        real(dp) :: cable_stiffness = 1.0e6_dp, cable_damping = 0.05_dp
+        real(dp) :: cable_stiffness = DEFAULT_STIFFNESS, cable_damping = DEFAULT_CABLE_DAMPING
     end type rig_t
 
     !> How the rig starts: mode 'raised' (the paper's recipe: turned by `amplitude` degrees
     !! about the vertical through O, tilt added to theta_1) or 'angles' (theta_1..4 and their
     !! rates given); theta_5 and its rate follow from the constraint.
     type, public :: start_t
-        character(len=16) :: mode = 'raised'
-        real(dp) :: amplitude = 45.0_dp         !! degrees (mode 'raised')
-        real(dp) :: tilt = 0.0_dp               !! rad, added to theta_1 (mode 'raised')
-        real(dp) :: theta(4) = 0.0_dp           !! rad (mode 'angles')
-        real(dp) :: theta_dot(4) = 0.0_dp       !! rad per unit tau (mode 'angles')
+        character(len=16) :: mode = DEFAULT_MODE
+        real(dp) :: amplitude = DEFAULT_AMPLITUDE   !! degrees (mode 'raised')
+        real(dp) :: tilt = DEFAULT_TILT             !! rad, added to theta_1 (mode 'raised')
+        real(dp) :: theta(4) = DEFAULT_THETA        !! rad (mode 'angles')
+        real(dp) :: theta_dot(4) = DEFAULT_THETA_DOT    !! rad per unit tau (mode 'angles')
     end type start_t
 
     !> How accurately a rig's runs are integrated: &integration rtol, atol, the integrator
     !! and how derivatives of runs are taken (module integrators).
     type, public :: accuracy_t
-        real(dp) :: rtol = 1.0e-10_dp, atol = 1.0e-12_dp
+        real(dp) :: rtol = DEFAULT_RTOL, atol = DEFAULT_ATOL
         integer :: method = SOLVER_LSODA
         integer :: sensitivities = SENS_FORWARD     !! SENS_FORWARD or SENS_DIFFERENCES
         !> forward sensitivities in the integrator's error test (&integration
         !! sensitivity_error_control)
-        logical :: sens_error_control = .false.
+        logical :: sens_error_control = DEFAULT_SENS_ERROR_CONTROL
     end type accuracy_t
+
+    !> The rig of the deck's &suspension, &body, &damping and &cables (module deck_runs adds
+    !! rig_of(deck)); likewise start_of (&start), method_of and accuracy_of (&integration
+    !! with &scene model), output_times (&integration).
+    interface rig_of
+        module procedure rig_of_groups
+    end interface rig_of
+    interface start_of
+        module procedure start_of_group
+    end interface start_of
+    interface method_of
+        module procedure method_of_group
+    end interface method_of
+    interface accuracy_of
+        module procedure accuracy_of_group
+    end interface accuracy_of
+    interface output_times
+        module procedure output_times_group
+    end interface output_times
 
     public :: rig_of, start_of, raised_start, method_of, accuracy_of, make_pendulum
     public :: start_state, move_b_prime, output_times
 
 contains
 
-    !> The rig of a deck (&suspension, &body, &damping, &cables).
-    pure function rig_of(d) result(rg)
-        type(deck_t), intent(in) :: d           !! the deck
+    !> The rig of the deck's groups (&suspension and &body normalised: a platform's
+    !! equivalent pair, the mass centre as r, lambda).
+    pure function rig_of_groups(sus, bod, dmp, cab) result(rg)
+        type(suspension_group_t), intent(in) :: sus
+        type(body_group_t), intent(in) :: bod
+        type(damping_group_t), intent(in) :: dmp
+        type(cables_group_t), intent(in) :: cab
         type(rig_t) :: rg
-        rg%b = d%b
-        rg%b_prime = d%b_prime
-        rg%l = d%l
-        rg%l_prime = d%l_prime
-        rg%g = d%g
-        rg%mass = d%mass
-        rg%inertia = d%inertia
-        rg%r = d%r
-        rg%lambda = d%lambda
-        rg%btilde = d%btilde
-        rg%sway_depth = d%sway_depth
-        rg%c_v = d%c_v
-        rg%c_q = d%c_q
-        rg%cable_stiffness = d%cable_stiffness
-        rg%cable_damping = d%cable_damping
-    end function rig_of
+        rg%b = sus%b
+        rg%b_prime = sus%b_prime
+        rg%l = sus%l
+        rg%l_prime = sus%l_prime
+        rg%g = sus%g
+        rg%mass = bod%mass
+        rg%inertia = bod%inertia
+        rg%r = bod%r
+        rg%lambda = bod%lambda
+        rg%btilde = bod%btilde
+        rg%sway_depth = bod%sway_depth
+        rg%c_v = dmp%c_v
+        rg%c_q = dmp%c_q
+        rg%cable_stiffness = cab%stiffness
+        rg%cable_damping = cab%damping
+    end function rig_of_groups
 
-    !> The start of a deck (&start).
-    pure function start_of(d) result(st)
-        type(deck_t), intent(in) :: d           !! the deck
+    !> The start of &start (normalised).
+    pure function start_of_group(sta) result(st)
+        type(start_group_t), intent(in) :: sta
         type(start_t) :: st
-        st%mode = trim(d%mode)
-        st%amplitude = d%amplitude
-        st%tilt = d%tilt
-        st%theta = d%theta
-        st%theta_dot = d%theta_dot
-    end function start_of
+        st%mode = trim(sta%mode)
+        st%amplitude = sta%amplitude
+        st%tilt = sta%tilt
+        st%theta = sta%theta
+        st%theta_dot = sta%theta_dot
+    end function start_of_group
 
     !> The paper's raised start at `amplitude` degrees, no tilt: a release at rest.
     pure function raised_start(amplitude) result(st)
@@ -107,21 +137,24 @@ contains
 
     !> The integrator of a deck's runs (module integrators: &integration method, &scene
     !! model).
-    pure integer function method_of(d)
-        type(deck_t), intent(in) :: d           !! the deck
-        method_of = integrator_for(d%method, d%model)
-    end function method_of
+    pure integer function method_of_group(integ, model)
+        type(integration_group_t), intent(in) :: integ
+        character(len=*), intent(in) :: model   !! &scene model ('kane', 'elastic')
+        method_of_group = integrator_for(integ%method, model)
+    end function method_of_group
 
-    !> The accuracy of a deck's runs (&integration rtol, atol, method, sensitivities).
-    pure function accuracy_of(d) result(acc)
-        type(deck_t), intent(in) :: d           !! the deck
+    !> The accuracy of a deck's runs (&integration rtol, atol, method, sensitivities, with
+    !! &scene model).
+    pure function accuracy_of_group(integ, model) result(acc)
+        type(integration_group_t), intent(in) :: integ
+        character(len=*), intent(in) :: model   !! &scene model ('kane', 'elastic')
         type(accuracy_t) :: acc
-        acc%rtol = d%rtol
-        acc%atol = d%atol
-        acc%method = method_of(d)
-        acc%sensitivities = sensitivities_for(d%sensitivities)
-        acc%sens_error_control = d%sensitivity_error_control
-    end function accuracy_of
+        acc%rtol = integ%rtol
+        acc%atol = integ%atol
+        acc%method = method_of_group(integ, model)
+        acc%sensitivities = sensitivities_for(integ%sensitivities)
+        acc%sens_error_control = integ%sensitivity_error_control
+    end function accuracy_of_group
 
     !> Scaled pendulum parameters of a rig (lengths over b', inertia over m b'^2, damping in
     !! the model's units), with the geometric check a deck reader cannot make: the cables
@@ -208,16 +241,16 @@ contains
 
     !> The uniform output grid of a deck's run: tau_k = min(k dtau_out, tau_end),
     !! k = 0 .. nout (&integration).
-    pure subroutine output_times(d, times)
-        type(deck_t), intent(in) :: d           !! the deck
+    pure subroutine output_times_group(integ, times)
+        type(integration_group_t), intent(in) :: integ
         real(dp), allocatable, intent(out) :: times(:)  !! (0:nout)
         integer :: nout, k
-        nout = nint(d%tau_end/d%dtau_out)
-        if (nout*d%dtau_out < d%tau_end*(1.0_dp - 1.0e-12_dp)) nout = nout + 1
+        nout = nint(integ%tau_end/integ%dtau_out)
+        if (nout*integ%dtau_out < integ%tau_end*(1.0_dp - 1.0e-12_dp)) nout = nout + 1
         allocate (times(0:nout))
         do k = 0, nout
-            times(k) = min(k*d%dtau_out, d%tau_end)
+            times(k) = min(k*integ%dtau_out, integ%tau_end)
         end do
-    end subroutine output_times
+    end subroutine output_times_group
 
 end module rig

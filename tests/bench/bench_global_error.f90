@@ -73,7 +73,7 @@ program bench_global_error
             rg%b = 1.3_dp*rg%b_prime
             s0%amplitude = 80.0_dp
         end select
-        call scene(rg, s0, d%tau_end, d%dtau_out, ratio)
+        call scene(rg, s0, d%integration%tau_end, d%integration%dtau_out, ratio)
         worst = max(worst, maxval(ratio))
         write (*, '(a24,6f9.2)') trim(name), ratio
         write (u, '(a,6es12.4)') trim(name), ratio

@@ -46,22 +46,22 @@ program bench_identify
         call read_deck('input/identify_periods.nml', d, st)
         call need(st, 'bench_identify')
         if (trim(mode) == 'periods_asym') then
-            d%l_prime = 1.18_dp
-            d%lambda = 0.64_dp
+            d%suspension%l_prime = 1.18_dp
+            d%body%lambda = 0.64_dp
         end if
-        u = input_u_t(period=d%u_period, amplitude=d%u_amplitude, mass=d%u_mass, l=d%u_l, &
-                      l_prime=d%u_l_prime, b=d%u_b, b_prime=d%u_b_prime, g=d%u_g)
+        u = input_u_t(period=d%measurement%u_period, amplitude=d%measurement%u_amplitude, mass=d%measurement%u_mass, l=d%measurement%u_l, &
+                      l_prime=d%measurement%u_l_prime, b=d%measurement%u_b, b_prime=d%measurement%u_b_prime, g=d%measurement%u_g)
         call cpu_time(t0)
         if (trim(mode) == 'mc') then
             if (n >= 2) then
-                call period_monte_carlo(d, d%periods(1:3), d%amplitudes(1:3), u, 0.0512_dp, n, &
-                                        d%seed, mean, sdev, st)
+                call period_monte_carlo(d, d%measurement%periods(1:3), d%measurement%amplitudes(1:3), u, 0.0512_dp, n, &
+                                        d%measurement%seed, mean, sdev, st)
                 call need(st, 'bench_identify')
                 sumck = sdev
             end if
         else
             do k = 1, n
-                call invert_periods(rig_of(d), accuracy_of(d), d%periods(1:3), d%amplitudes(1:3), u, f, st)
+                call invert_periods(rig_of(d), accuracy_of(d), d%measurement%periods(1:3), d%measurement%amplitudes(1:3), u, f, st)
                 call need(st, 'bench_identify')
                 sumck = sumck + f%i1
             end do
@@ -70,9 +70,9 @@ program bench_identify
     case ('record', 'record_differences')
         call read_deck('input/identify_record.nml', d, st)
         call need(st, 'bench_identify')
-        if (trim(mode) == 'record_differences') d%sensitivities = 'differences'
-        d%estimate = 'I1 c_v c_q'
-        d%monte_carlo = 0
+        if (trim(mode) == 'record_differences') d%integration%sensitivities = 'differences'
+        d%measurement%estimate = 'I1 c_v c_q'
+        d%measurement%monte_carlo = 0
         call read_record(d, rec, st)
         call need(st, 'bench_identify')
         call cpu_time(t0)

@@ -90,7 +90,7 @@ program bench_speed
             do j = 1, 5
                 do i = 1, 6
                     call make_pendulum(rig_of(d), p, st)
-                    amp = d%floquet_amplitude
+                    amp = d%floquet%amplitude
                     call set_chart_variable('l', 0.5_dp + 1.5_dp*(i - 1), p, amp)
                     call set_chart_variable('amplitude', 2.0_dp + 22.0_dp*(j - 1), p, amp)
                     call floquet_analysis(p, amp*deg, 1.0e-8_dp, 1, fr, st, &

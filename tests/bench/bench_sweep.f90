@@ -62,7 +62,7 @@ program bench_sweep
     if (st%code /= 0) error stop 'bench_sweep: cannot read the deck'
     call chart_task(d, task, st)
     if (st%code /= 0) error stop 'bench_sweep: cannot make the chart'
-    n = d%chart_nx*d%chart_ny
+    n = d%chart%nx*d%chart%ny
     allocate (cost(n))
     do k = 1, n
         call system_clock(c0, rate)
@@ -75,8 +75,8 @@ program bench_sweep
         ' on one thread'
     write (u, '(a)') '# k x y seconds'
     do k = 1, n
-        ix = mod(k - 1, d%chart_nx) + 1
-        iy = (k - 1)/d%chart_nx + 1
+        ix = mod(k - 1, d%chart%nx) + 1
+        iy = (k - 1)/d%chart%nx + 1
         write (u, '(i0,2(1x,es14.6),1x,es12.4)') k, task%xs(ix), task%ys(iy), cost(k)
     end do
     close (u)

@@ -52,7 +52,7 @@ program bench_tensor
     end if
     jt = 0.0_dp
     do k = 1, 3
-        jt = jt + d%inertia(k)*spread(d%btilde(k, :), 2, 3)*spread(d%btilde(k, :), 1, 3)
+        jt = jt + d%body%inertia(k)*spread(d%body%btilde(k, :), 2, 3)*spread(d%body%btilde(k, :), 1, 3)
     end do
     x = tensor_entries(jt)
     call problem_of(d, set, prob)
@@ -66,10 +66,10 @@ program bench_tensor
     end do
     write (*, '(a)') '  limit(deg)'
     do h = 1, size(set%hangs)
-        call hang_rig(d%mass, d%g, set%hangs(h), x, rg, st)
+        call hang_rig(d%body%mass, d%suspension%g, set%hangs(h), x, rg, st)
         call torsion_mode(rg, md, st)
         write (*, '(i5,3f6.2,f6.1,2f7.3)', advance='no') set%hangs(h)%id, set%hangs(h)%up, &
-            acos(min(1.0_dp, maxval(abs(matmul(set%hangs(h)%up, transpose(d%btilde))))))/deg, &
+            acos(min(1.0_dp, maxval(abs(matmul(set%hangs(h)%up, transpose(d%body%btilde))))))/deg, &
             md%share, md%next_share
         do k = 1, na
             call maxima_drift(rg, prob%acc, amps(k), DRIFT_CYCLES, dr, ad, st)

@@ -1,20 +1,39 @@
-!> The deck's lines and the explanation of a namelist read error (submodule of deck): the
-!! group names that start somewhere, each group's text found as the run-time library finds
-!! it, what the run-time library cannot be trusted with (an open subscript, an overlong
-!! value), and, when its read fails, the first item whose name is unknown, whose value has
-!! the wrong form or which has too many values (its own small tokenizer).
-submodule (deck) deck_diagnose
-    use text, only: is_ident
+!> The text of a namelist file and the explanation of a namelist read error, for any file
+!! of namelist groups (the deck): the group names that start somewhere, each group's text
+!! found as the run-time library finds it, what the run-time library cannot be trusted with
+!! (an open subscript, an overlong value), and, when its read fails, the first item whose
+!! name is unknown, whose value has the wrong form or which has too many values (its own
+!! small tokenizer).
+!!
+!! A group's variables are described by a spec: blank-separated 'name:KN' words, K the kind
+!! (r real, i integer, c character, l logical) and N the number of elements, e.g.
+!! 'b:r1 inertia:r3 title:c1'.
+module namelist_text
+    use status, only: status_t, set_error, ERR_DECK
+    use text, only: itoa, lower, next_word, commas, clip, is_ident
     implicit none
+    private
+
+    !> One line of a file in memory (tabs and carriage returns as blanks).
+    type, public :: text_line_t
+        character(len=:), allocatable :: s
+    end type text_line_t
+
+    !> Longest value of a group (characters, quoted or not): a title or a word holds 256.
+    integer, parameter, public :: MAX_TEXT = 256
+
+    public :: check_group_names, scan_group, long_text, subscript_problem, explain, with_allowed
 
 contains
-
-
 
     !> Every '&name' that starts a group (outside comments) must be a known group; '&end'
     !! closes a group.  `seen` lists the groups that start somewhere (' name name ... ',
     !! lower case).
-    module procedure check_group_names
+    subroutine check_group_names(lines, allowed, stat, seen)
+        type(text_line_t), intent(in) :: lines(:)   !! the file's lines
+        character(len=*), intent(in) :: allowed     !! the group names allowed, blank-separated
+        type(status_t), intent(inout) :: stat       !! ERR_DECK on an unknown group
+        character(len=:), allocatable, intent(out) :: seen   !! ' name name ... '
         character(len=:), allocatable :: line, word
         integer :: i, j, k
         seen = ' '
@@ -35,16 +54,16 @@ contains
                 if (j == i + 1) cycle
                 word = lower(line(i + 1:j - 1))
                 if (word == 'end') cycle
-                if (index(' '//GROUPS_ALLOWED//' ', ' '//word//' ') == 0) then
+                if (index(' '//allowed//' ', ' '//word//' ') == 0) then
                     call set_error(stat, ERR_DECK, 'unknown namelist group &'// &
                                    clip(line(i + 1:j - 1))//'; allowed: &'// &
-                                   commas(GROUPS_ALLOWED, ', &'))
+                                   commas(allowed, ', &'))
                     return
                 end if
                 if (index(seen, ' '//word//' ') == 0) seen = seen//word//' '
             end do
         end do
-    end procedure check_group_names
+    end subroutine check_group_names
 
     !> Find the first '&grp' outside comments and collect its text up to the closing '/' or
     !! '&end' (outside quotes), comments removed, lines joined by blanks (`text`, for the
@@ -52,7 +71,14 @@ contains
     !! as one record for the namelist reader (`rec`: '&grp', the items, ' /'; a line that
     !! ends inside a quoted value is joined without a blank, as the run-time library reads
     !! a value continued on the next record).  Linear in the deck's size.
-    module procedure scan_group
+    subroutine scan_group(lines, grp, found, complete, text, breaks, rec)
+        type(text_line_t), intent(in) :: lines(:)   !! the file's lines
+        character(len=*), intent(in) :: grp         !! group name, lower case
+        logical, intent(out) :: found               !! a line starts the group
+        logical, intent(out) :: complete            !! the group is closed
+        character(len=:), allocatable, intent(out) :: text   !! its items, for the diagnosis
+        character(len=:), allocatable, intent(out) :: rec    !! the group as one record
+        integer, allocatable, intent(out) :: breaks(:)       !! where lines ended in text
         character(len=:), allocatable :: buf, rbuf
         integer, allocatable :: brk(:)
         character :: q
@@ -150,12 +176,14 @@ contains
             nr = nr + len(s)
         end subroutine append_rec
 
-    end procedure scan_group
+    end subroutine scan_group
 
     !> A value longer than MAX_TEXT characters, quoted or not ('' when none): the run-time
     !! library would cut it to its variable's length (and the checking build prints a
     !! warning); no number needs as many digits.
-    module procedure long_text
+    function long_text(text) result(why)
+        character(len=*), intent(in) :: text        !! a group's items (scan_group)
+        character(len=:), allocatable :: why
         character :: q
         integer :: k, k0, n
         why = ''
@@ -186,13 +214,16 @@ contains
                 return
             end if
         end do
-    end procedure long_text
+    end function long_text
 
     !> The first parenthesis of a group's text that the run-time library cannot be trusted
     !! with (gfortran 12 takes SIGSEGV on a subscript left open at the end of a line): every
     !! '(' outside quotes must follow a variable name, close on the same line, and hold only
     !! digits, blanks, '+', '-', ':' and ','.  Empty when all are well formed.
-    module procedure subscript_problem
+    function subscript_problem(text, breaks) result(why)
+        character(len=*), intent(in) :: text        !! a group's items (scan_group)
+        integer, intent(in) :: breaks(:)            !! where its lines ended
+        character(len=:), allocatable :: why
         character :: q
         integer :: k, j, b, e, nextb
         why = ''
@@ -275,12 +306,16 @@ contains
             s = trim(adjustl(text(i1:i2)))
         end function item_at
 
-    end procedure subscript_problem
+    end function subscript_problem
 
     !> Explain why the run-time library could not read a group: the first item whose name is
     !! unknown, whose value has the wrong form, or which has too many values.  Empty when no
     !! explanation is found.
-    module procedure explain
+    function explain(text, grp, spec) result(why)
+        character(len=*), intent(in) :: text        !! a group's items (scan_group)
+        character(len=*), intent(in) :: grp         !! its name
+        character(len=*), intent(in) :: spec        !! its variables (see the module header)
+        character(len=:), allocatable :: why
         integer :: neq, k, j, depth, p1, v1, v2, t1, t2, nval, cnt, star, ios
         integer, allocatable :: eqs(:), nstart(:), nend(:)
         logical :: subscripted
@@ -427,7 +462,7 @@ contains
                 return
             end if
         end do
-    end procedure explain
+    end function explain
 
     !> Next token of s after position p (blanks and commas separate; quotes kept whole).
     subroutine next_token(s, p, t1, t2)
@@ -525,7 +560,11 @@ contains
         is_real = verify(s(i:), '0123456789') == 0
     end function is_real
 
-    module procedure with_allowed
+    function with_allowed(what, note, spec) result(m)
+        character(len=*), intent(in) :: what        !! the problem ('...; allowed: ...' or not)
+        character(len=*), intent(in) :: note        !! put before the allowed part
+        character(len=*), intent(in) :: spec        !! the group's variables
+        character(len=:), allocatable :: m
         integer :: i
         i = index(what, '; allowed')
         if (i > 0) then
@@ -534,7 +573,7 @@ contains
             m = what//note//'; allowed: name = value items of the group''s variables ('// &
                 spec_names(spec)//'), values of their kind, closed by ''/'''
         end if
-    end procedure with_allowed
+    end function with_allowed
 
     !> Blank-separated names of a spec, as 'a, b, c'.
     function spec_names(spec) result(s)
@@ -574,4 +613,4 @@ contains
         end do
     end subroutine spec_lookup
 
-end submodule deck_diagnose
+end module namelist_text

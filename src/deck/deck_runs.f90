@@ -1,0 +1,140 @@
+!> What the runs take from a deck, for the analyses: the rig (rig_of), its start
+!! (start_of), the accuracy and integrator of its runs (accuracy_of, method_of), the output
+!! grid (output_times), the inputs of a budget (deck_inputs), the record and the releases
+!! of a measurement (read_record, record_format_of, record_file, read_trials).  Each hands
+!! the deck's groups to the procedure of the layer below that takes them (the generic
+!! names rig_of, start_of, method_of, accuracy_of, output_times and deck_inputs also take
+!! the groups themselves).
+module deck_runs
+    use kinds, only: dp
+    use status, only: status_t, STATUS_OK
+    use deck, only: deck_t
+    use rig, only: rig_t, start_t, accuracy_t, rig_of, start_of, method_of, accuracy_of, &
+        output_times
+    use inputs, only: input_t, deck_inputs
+    use records, only: record_t, record_format_t, record_format, read_record_file
+    use trials, only: trial_set_t, read_trial_table, one_release
+    implicit none
+    private
+
+    public :: rig_of, start_of, method_of, accuracy_of, output_times, deck_inputs
+    public :: read_record, record_format_of, record_file, read_trials
+
+    interface rig_of
+        module procedure deck_rig
+    end interface rig_of
+    interface start_of
+        module procedure deck_start
+    end interface start_of
+    interface method_of
+        module procedure deck_method
+    end interface method_of
+    interface accuracy_of
+        module procedure deck_accuracy
+    end interface accuracy_of
+    interface output_times
+        module procedure deck_output_times
+    end interface output_times
+    interface deck_inputs
+        module procedure deck_budget_inputs
+    end interface deck_inputs
+
+contains
+
+    !> The rig of a deck (&suspension, &body, &damping, &cables).
+    pure function deck_rig(d) result(rg)
+        type(deck_t), intent(in) :: d
+        type(rig_t) :: rg
+        rg = rig_of(d%suspension, d%body, d%damping, d%cables)
+    end function deck_rig
+
+    !> The start of a deck (&start).
+    pure function deck_start(d) result(st)
+        type(deck_t), intent(in) :: d
+        type(start_t) :: st
+        st = start_of(d%start)
+    end function deck_start
+
+    !> The integrator of a deck's runs (&integration method, &scene model).
+    pure integer function deck_method(d)
+        type(deck_t), intent(in) :: d
+        deck_method = method_of(d%integration, d%scene%model)
+    end function deck_method
+
+    !> The accuracy of a deck's runs (&integration, &scene model).
+    pure function deck_accuracy(d) result(acc)
+        type(deck_t), intent(in) :: d
+        type(accuracy_t) :: acc
+        acc = accuracy_of(d%integration, d%scene%model)
+    end function deck_accuracy
+
+    !> The output grid of a deck's run (&integration tau_end, dtau_out).
+    pure subroutine deck_output_times(d, times)
+        type(deck_t), intent(in) :: d
+        real(dp), allocatable, intent(out) :: times(:)  !! (0:nout)
+        call output_times(d%integration, times)
+    end subroutine deck_output_times
+
+    !> The inputs of a deck's budget (module inputs), with the release amplitude when
+    !! `with_amplitude` (a record fit that holds it).
+    pure function deck_budget_inputs(d, with_amplitude) result(x)
+        type(deck_t), intent(in) :: d
+        logical, intent(in) :: with_amplitude
+        type(input_t), allocatable :: x(:)
+        x = deck_inputs(d%suspension, d%body, d%measurement, d%start, with_amplitude)
+    end function deck_budget_inputs
+
+    !> How the deck's records are to be read (&measurement record_columns, record_units or
+    !! quantity; the rig's sqrt(g/b') for the range of a rate).
+    pure function record_format_of(d) result(f)
+        type(deck_t), intent(in) :: d
+        type(record_format_t) :: f
+        f = record_format(d%measurement%record_columns, d%measurement%quantity, &
+                          d%measurement%record_units, d%suspension%g, d%suspension%b_prime)
+    end function record_format_of
+
+    !> The record file of a deck: &measurement record relative to the deck's folder
+    !! (record_path), or as given.
+    pure function record_file(d) result(path)
+        type(deck_t), intent(in) :: d
+        character(len=:), allocatable :: path
+        path = trim(d%measurement%record)
+        if (allocated(d%measurement%record_path)) path = d%measurement%record_path
+    end function record_file
+
+    !> Read and check the record of a deck (&measurement record, relative to the deck's
+    !! folder): read_record_file with the deck's format.  ERR_DECK naming the record.
+    subroutine read_record(d, rec, stat)
+        type(deck_t), intent(in) :: d           !! the deck (record, record_path, format)
+        type(record_t), intent(out) :: rec
+        type(status_t), intent(out) :: stat     !! ERR_DECK
+        call read_record_file(record_file(d), record_format_of(d), rec, stat)
+        if (stat%code /= STATUS_OK) stat%msg = '&measurement record = '''// &
+            trim(d%measurement%record)//''': '//stat%msg
+    end subroutine read_record
+
+    !> The releases of a deck: the table of &measurement trials when given (a column absent:
+    !! the deck's rig, cycles(1), &start amplitude, u_period), else the deck's one release
+    !! (its periods, with cycles, or its record).  ERR_DECK naming the table, its line and
+    !! column.
+    subroutine read_trials(d, ts, stat)
+        type(deck_t), intent(in) :: d
+        type(trial_set_t), intent(out) :: ts
+        type(status_t), intent(out) :: stat     !! ERR_DECK
+        real(dp) :: rigv(5)
+        integer :: n
+        stat%code = STATUS_OK
+        associate (s => d%suspension, m => d%measurement)
+            rigv = [s%l, s%l_prime, s%b, s%b_prime, d%body%mass]
+            if (len_trim(m%trials) == 0) then
+                n = m%n_periods
+                call one_release(rigv, m%periods(1:n), m%cycles(1:n), m%amplitudes(1:n), &
+                                 m%u_period, record_file(d), ts)
+            else
+                call read_trial_table(m%trials, m%trials_path, rigv, m%cycles(1), &
+                                      d%start%amplitude, m%u_period, ts, stat)
+            end if
+        end associate
+    end subroutine read_trials
+
+end module deck_runs

@@ -1,0 +1,389 @@
+!> The deck's groups of the measurements: &measurement (analysis identify: measured periods,
+!! a recorded swing or a table of releases, and the standard uncertainties of the inputs)
+!! and &tensor (analysis tensor: the table of hangs and the uncertainties of its inputs).
+!! Each is a type extending deck_group_t with its keys and their defaults, its name and
+!! spec, its read from the group's text, its echo, its check (submodule measure_checks:
+!! intent(in), against the rig's groups) and its normalisation (normalise: words in lower
+!! case, the cycles of every period, the quantity implied by record_units, one u_inertia
+!! for I2 and I3, the files relative to the deck's folder).
+module measure_groups
+    use kinds, only: dp
+    use status, only: status_t
+    use text, only: itoa, rshort, rlist_short, lower, quoted
+    use deck_base, only: deck_group_t, NOT_GIVEN, record_in_folder
+    use rig_groups, only: suspension_group_t, body_group_t, start_group_t
+    implicit none
+    private
+
+    !> Most periods in &measurement periods (and amplitudes).
+    integer, parameter, public :: MAX_PERIODS = 100
+    !> The value of an element of periods, amplitudes, cycles, u_inertia the deck did not
+    !! give.
+    real(dp), parameter, public :: PERIOD_UNSET = -huge(1.0_dp)
+    !> Words allowed in &measurement estimate: the parameters a record fit can estimate.
+    character(len=*), parameter, public :: ESTIMATES_ALLOWED = 'I1 c_v c_q amplitude t0 bias'
+    !> Words allowed in &measurement record_units (each implies the quantity).
+    character(len=*), parameter, public :: RECORD_UNITS_ALLOWED = 'rad deg rad/s deg/s'
+    !> Words allowed in &measurement loss.
+    character(len=*), parameter, public :: LOSSES_ALLOWED = 'squares huber'
+    !> Words allowed in &measurement quantity: column 2 of a record.
+    character(len=*), parameter, public :: QUANTITIES_ALLOWED = 'angle rate'
+    !> Most Monte Carlo samples of &measurement and &tensor monte_carlo.
+    integer, parameter :: MAX_MONTE_CARLO = 1000000
+
+    !> &measurement (analysis identify): measured periods or a recorded swing.  Tracked
+    !! (gave): quantity, record_columns.
+    type, extends(deck_group_t), public :: measurement_group_t
+        integer :: n_periods = 0                  !! periods given (periods(1:n_periods))
+        real(dp) :: periods(MAX_PERIODS) = PERIOD_UNSET     !! full periods (s)
+        real(dp) :: amplitudes(MAX_PERIODS) = PERIOD_UNSET  !! their peak theta4 (degrees)
+        character(len=256) :: record = ''         !! record file as given ('' for none)
+        character(len=:), allocatable :: record_path  !! the record relative to the deck's folder
+        character(len=256) :: quantity = 'angle'  !! QUANTITIES_ALLOWED: column 2 of the record
+        character(len=256) :: estimate = 'I1'     !! ESTIMATES_ALLOWED: the parameters fitted
+        !> standard uncertainties (deck units; period in s, amplitude in degrees), >= 0
+        real(dp) :: u_mass = 0.0_dp, u_l = 0.0_dp, u_l_prime = 0.0_dp, u_b = 0.0_dp
+        real(dp) :: u_b_prime = 0.0_dp, u_g = 0.0_dp, u_period = 0.0_dp, u_amplitude = 0.0_dp
+        integer :: monte_carlo = 0                !! Monte Carlo samples (0: first order only)
+        integer :: seed = 1                       !! seed of the Monte Carlo streams
+        !> each period is the total time of cycles(i) cycles (PERIOD_UNSET: not given, then
+        !! 1); one value serves every period (normalise)
+        real(dp) :: cycles(MAX_PERIODS) = PERIOD_UNSET
+        character(len=256) :: trials = ''         !! a table of releases ('' for none)
+        character(len=:), allocatable :: trials_path  !! relative to the deck's folder
+        !> the record's columns: time, value and (0: none) each sample's u; -1 in the third:
+        !! not given, then column 3 when the record has exactly three columns (else none)
+        integer :: record_columns(3) = [1, 2, -1]
+        character(len=256) :: record_units = ''   !! RECORD_UNITS_ALLOWED ('' : by quantity)
+        character(len=256) :: loss = 'squares'    !! LOSSES_ALLOWED: the record fit's loss
+        !> standard uncertainties of I2 and I3 (PERIOD_UNSET: not given, then 0; one value
+        !! serves both: normalise), of the mass centre (as measured: cg_depth, cg_offset; or
+        !! r (length) and lambda (rad))
+        real(dp) :: u_inertia(2) = PERIOD_UNSET
+        real(dp) :: u_cg_depth = 0.0_dp, u_cg_offset = 0.0_dp, u_r = 0.0_dp, u_lambda = 0.0_dp
+        !> a fixture measured alone and subtracted (its I1 about the same axis, u, its mass),
+        !! and a known added inertia (e.g. entrained air) subtracted
+        real(dp) :: tare_i1 = 0.0_dp, u_tare_i1 = 0.0_dp, tare_mass = 0.0_dp
+        real(dp) :: added_inertia = 0.0_dp, u_added_inertia = 0.0_dp
+    contains
+        procedure, nopass :: name => measurement_name
+        procedure, nopass :: spec => measurement_spec
+        procedure :: read_text => read_measurement
+        procedure :: echo => echo_measurement
+        procedure :: check => check_measurement
+        procedure :: normalise => normalise_measurement
+        procedure :: estimated
+        procedure :: u_inertia_of
+    end type measurement_group_t
+
+    !> &tensor (analysis tensor): the table of hangs and the uncertainties of its inputs.
+    type, extends(deck_group_t), public :: tensor_group_t
+        character(len=256) :: hangs = ''          !! the hangs table as given ('' for none)
+        character(len=:), allocatable :: hangs_path     !! relative to the deck's folder
+        !> standard uncertainties of mass, l, l_prime, b, b_prime, g, period (s), amplitude
+        !! (degrees), deck units
+        real(dp) :: u(8) = 0.0_dp
+        real(dp) :: u_direction = 0.0_dp          !! of how the body was set in a hang (deg)
+        integer :: monte_carlo = 0, seed = 1
+        real(dp) :: cg(3) = 0.0_dp                !! the mass centre in the body frame
+        logical :: cg_given = .false.
+        integer :: plan = 0                       !! hangs to plan (0: none)
+    contains
+        procedure, nopass :: name => tensor_name
+        procedure, nopass :: spec => tensor_spec
+        procedure :: read_text => read_tensor
+        procedure :: echo => echo_tensor
+        procedure :: check => check_tensor
+        procedure :: normalise => normalise_tensor
+    end type tensor_group_t
+
+    ! ---- submodule measure_checks
+    interface
+        !> &measurement: periods, amplitudes, record, uncertainties (each inside its input's
+        !! domain), Monte Carlo.
+        module subroutine check_measurement(self, sus, bod, sta, stat)
+            class(measurement_group_t), intent(in) :: self
+            type(suspension_group_t), intent(in) :: sus     !! the suspension, normalised
+            type(body_group_t), intent(in) :: bod           !! the body as given
+            type(start_group_t), intent(in) :: sta          !! the start, normalised
+            type(status_t), intent(inout) :: stat
+        end subroutine check_measurement
+        !> &tensor: the uncertainties, Monte Carlo, the plan, a table of hangs when the
+        !! analysis is asked for.
+        module subroutine check_tensor(self, sus, bod, requested, stat)
+            class(tensor_group_t), intent(in) :: self
+            type(suspension_group_t), intent(in) :: sus     !! the suspension, normalised
+            type(body_group_t), intent(in) :: bod
+            logical, intent(in) :: requested                !! analyses = '... tensor ...'
+            type(status_t), intent(inout) :: stat
+        end subroutine check_tensor
+    end interface
+
+contains
+
+    ! ------------------------------------------------------------------ &measurement
+
+    function measurement_name() result(s)
+        character(len=:), allocatable :: s
+        s = 'measurement'
+    end function measurement_name
+
+    function measurement_spec() result(s)
+        character(len=:), allocatable :: s
+        s = 'periods:r100 amplitudes:r100 record:c1 quantity:c1 estimate:c1 u_mass:r1 '// &
+            'u_l:r1 u_l_prime:r1 u_b:r1 u_b_prime:r1 u_g:r1 u_period:r1 u_amplitude:r1 '// &
+            'monte_carlo:i1 seed:i1 cycles:r100 trials:c1 record_columns:i3 record_units:c1 '// &
+            'loss:c1 u_inertia:r2 u_cg_depth:r1 u_cg_offset:r1 u_r:r1 u_lambda:r1 tare_i1:r1 '// &
+            'u_tare_i1:r1 tare_mass:r1 added_inertia:r1 u_added_inertia:r1'
+    end function measurement_spec
+
+    !> &measurement; n_periods counts the leading periods given (check refuses gaps).
+    subroutine read_measurement(self, rec, ios, msg)
+        class(measurement_group_t), intent(inout) :: self   !! defaults in, values read out
+        character(len=*), intent(in) :: rec         !! the group as one record
+        integer, intent(out) :: ios                 !! iostat of the namelist read
+        character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
+        real(dp) :: periods(MAX_PERIODS), amplitudes(MAX_PERIODS), cycles(MAX_PERIODS)
+        character(len=256) :: record, quantity, estimate, trials, record_units, loss
+        real(dp) :: u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude
+        real(dp) :: u_inertia(2), u_cg_depth, u_cg_offset, u_r, u_lambda
+        real(dp) :: tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia
+        integer :: monte_carlo, seed, record_columns(3)
+        namelist /measurement/ periods, amplitudes, cycles, record, quantity, estimate, u_mass, &
+            u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude, monte_carlo, seed, &
+            trials, record_columns, record_units, loss, u_inertia, u_cg_depth, u_cg_offset, &
+            u_r, u_lambda, tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia
+        periods = self%periods
+        amplitudes = self%amplitudes
+        cycles = self%cycles
+        record = self%record
+        quantity = ''
+        estimate = self%estimate
+        u_mass = self%u_mass
+        u_l = self%u_l
+        u_l_prime = self%u_l_prime
+        u_b = self%u_b
+        u_b_prime = self%u_b_prime
+        u_g = self%u_g
+        u_period = self%u_period
+        u_amplitude = self%u_amplitude
+        monte_carlo = self%monte_carlo
+        seed = self%seed
+        trials = self%trials
+        record_columns = -1
+        record_units = self%record_units
+        loss = self%loss
+        u_inertia = self%u_inertia
+        u_cg_depth = self%u_cg_depth
+        u_cg_offset = self%u_cg_offset
+        u_r = self%u_r
+        u_lambda = self%u_lambda
+        tare_i1 = self%tare_i1
+        u_tare_i1 = self%u_tare_i1
+        tare_mass = self%tare_mass
+        added_inertia = self%added_inertia
+        u_added_inertia = self%u_added_inertia
+        read (rec, nml=measurement, iostat=ios, iomsg=msg)
+        self%periods = periods
+        self%amplitudes = amplitudes
+        self%cycles = cycles
+        self%record = record
+        if (len_trim(quantity) > 0) then
+            self%quantity = quantity
+            call self%note_given('quantity')
+        end if
+        self%estimate = estimate
+        self%u_mass = u_mass
+        self%u_l = u_l
+        self%u_l_prime = u_l_prime
+        self%u_b = u_b
+        self%u_b_prime = u_b_prime
+        self%u_g = u_g
+        self%u_period = u_period
+        self%u_amplitude = u_amplitude
+        self%monte_carlo = monte_carlo
+        self%seed = seed
+        self%trials = trials
+        if (any(record_columns(1:2) /= -1)) then
+            self%record_columns = max(0, record_columns)
+            call self%note_given('record_columns')
+        end if
+        self%record_units = record_units
+        self%loss = loss
+        self%u_inertia = u_inertia
+        self%u_cg_depth = u_cg_depth
+        self%u_cg_offset = u_cg_offset
+        self%u_r = u_r
+        self%u_lambda = u_lambda
+        self%tare_i1 = tare_i1
+        self%u_tare_i1 = u_tare_i1
+        self%tare_mass = tare_mass
+        self%added_inertia = added_inertia
+        self%u_added_inertia = u_added_inertia
+        self%n_periods = 0
+        do while (self%n_periods < MAX_PERIODS)
+            if (self%periods(self%n_periods + 1) == PERIOD_UNSET) exit
+            self%n_periods = self%n_periods + 1
+        end do
+    end subroutine read_measurement
+
+    function echo_measurement(self) result(line)
+        class(measurement_group_t), intent(in) :: self
+        character(len=:), allocatable :: line
+        line = '# &measurement'
+        if (self%n_periods > 0) line = line//' periods = '// &
+            rlist_short(self%periods(1:self%n_periods))//', amplitudes = '// &
+            rlist_short(self%amplitudes(1:self%n_periods))//','
+        if (len_trim(self%record) > 0) line = line//' record = '//quoted(self%record)// &
+            ', quantity = '//quoted(self%quantity)//','
+        if (self%n_periods > 0) then
+            if (any(self%cycles(1:self%n_periods) /= 1.0_dp)) line = line//' cycles = '// &
+                rlist_short(self%cycles(1:self%n_periods))//','
+        end if
+        if (len_trim(self%trials) > 0) line = line//' trials = '//quoted(self%trials)//','
+        if (self%gave('record_columns')) line = line//' record_columns = '// &
+            itoa(self%record_columns(1))//', '//itoa(self%record_columns(2))//', '// &
+            itoa(self%record_columns(3))//','
+        if (len_trim(self%record_units) > 0) line = line//' record_units = '// &
+            quoted(self%record_units)//','
+        if (trim(self%loss) /= 'squares') line = line//' loss = '//quoted(self%loss)//','
+        line = line//' estimate = '//quoted(self%estimate)//', u_mass = '// &
+            rshort(self%u_mass)//', u_l = '//rshort(self%u_l)//', u_l_prime = '// &
+            rshort(self%u_l_prime)//', u_b = '//rshort(self%u_b)//', u_b_prime = '// &
+            rshort(self%u_b_prime)//', u_g = '//rshort(self%u_g)//', u_period = '// &
+            rshort(self%u_period)//', u_amplitude = '//rshort(self%u_amplitude)
+        if (any(self%u_inertia > 0.0_dp)) line = line//', u_inertia = '// &
+            rlist_short(self%u_inertia)
+        if (self%u_cg_depth > 0.0_dp .or. self%u_cg_offset > 0.0_dp) line = line// &
+            ', u_cg_depth = '//rshort(self%u_cg_depth)//', u_cg_offset = '// &
+            rshort(self%u_cg_offset)
+        if (self%u_r > 0.0_dp .or. self%u_lambda > 0.0_dp) line = line//', u_r = '// &
+            rshort(self%u_r)//', u_lambda = '//rshort(self%u_lambda)
+        if (self%tare_i1 > 0.0_dp .or. self%tare_mass > 0.0_dp .or. self%u_tare_i1 > 0.0_dp) &
+            line = line//', tare_i1 = '//rshort(self%tare_i1)//', u_tare_i1 = '// &
+            rshort(self%u_tare_i1)//', tare_mass = '//rshort(self%tare_mass)
+        if (self%added_inertia > 0.0_dp .or. self%u_added_inertia > 0.0_dp) &
+            line = line//', added_inertia = '//rshort(self%added_inertia)// &
+            ', u_added_inertia = '//rshort(self%u_added_inertia)
+        line = line//', monte_carlo = '//itoa(self%monte_carlo)//', seed = '// &
+            itoa(self%seed)//' /'
+    end function echo_measurement
+
+    !> True when the blank-separated word `word` (e.g. 'c_q') is in estimate.
+    pure logical function estimated(self, word)
+        class(measurement_group_t), intent(in) :: self
+        character(len=*), intent(in) :: word        !! one of ESTIMATES_ALLOWED
+        estimated = index(' '//lower(self%estimate)//' ', ' '//lower(trim(word))//' ') > 0
+    end function estimated
+
+    !> The standard uncertainties of I2 and I3 the run takes: 0 when not given; a value for
+    !! u_inertia(1) alone serves both.
+    pure function u_inertia_of(self) result(u)
+        class(measurement_group_t), intent(in) :: self
+        real(dp) :: u(2)
+        u = 0.0_dp
+        if (self%u_inertia(1) /= PERIOD_UNSET) u = self%u_inertia(1)
+        if (self%u_inertia(2) /= PERIOD_UNSET) u(2) = self%u_inertia(2)
+    end function u_inertia_of
+
+    !> quantity, record_units and loss in lower case, the quantity from record_units when
+    !! given; the cycles of every period (one value serves all, 1 when not given); one
+    !! u_inertia for I2 and I3 (u_inertia_of); record and trials relative to the deck's
+    !! folder.
+    pure subroutine normalise_measurement(self, deck_path)
+        class(measurement_group_t), intent(inout) :: self
+        character(len=*), intent(in) :: deck_path   !! the deck as given
+        integer :: nc
+        self%quantity = lower(adjustl(self%quantity))
+        nc = count(self%cycles /= PERIOD_UNSET)
+        if (nc == 1) self%cycles(2:max(1, self%n_periods)) = self%cycles(1)
+        where (self%cycles == PERIOD_UNSET) self%cycles = 1.0_dp
+        if (len_trim(self%record_units) > 0) then
+            self%record_units = lower(adjustl(self%record_units))
+            self%quantity = merge('rate ', 'angle', index(self%record_units, '/s') > 0)
+        end if
+        self%loss = lower(adjustl(self%loss))
+        self%u_inertia = self%u_inertia_of()
+        self%record_path = ''
+        if (len_trim(self%record) > 0) self%record_path = record_in_folder(deck_path, &
+                                                                           self%record)
+        self%trials_path = ''
+        if (len_trim(self%trials) > 0) self%trials_path = record_in_folder(deck_path, &
+                                                                           self%trials)
+    end subroutine normalise_measurement
+
+    ! ------------------------------------------------------------------ &tensor
+
+    function tensor_name() result(s)
+        character(len=:), allocatable :: s
+        s = 'tensor'
+    end function tensor_name
+
+    function tensor_spec() result(s)
+        character(len=:), allocatable :: s
+        s = 'hangs:c1 u_mass:r1 u_l:r1 u_l_prime:r1 u_b:r1 u_b_prime:r1 u_g:r1 u_period:r1 '// &
+            'u_amplitude:r1 u_direction:r1 monte_carlo:i1 seed:i1 cg:r3 plan:i1'
+    end function tensor_spec
+
+    !> &tensor hangs, the standard uncertainties of the hangs' inputs, monte_carlo, seed, cg,
+    !! plan.
+    subroutine read_tensor(self, rec, ios, msg)
+        class(tensor_group_t), intent(inout) :: self    !! defaults in, values read out
+        character(len=*), intent(in) :: rec         !! the group as one record
+        integer, intent(out) :: ios                 !! iostat of the namelist read
+        character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
+        character(len=256) :: hangs
+        real(dp) :: u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude
+        real(dp) :: u_direction, cg(3)
+        integer :: monte_carlo, seed, plan
+        namelist /tensor/ hangs, u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, &
+            u_amplitude, u_direction, monte_carlo, seed, cg, plan
+        hangs = self%hangs
+        u_mass = self%u(1)
+        u_l = self%u(2)
+        u_l_prime = self%u(3)
+        u_b = self%u(4)
+        u_b_prime = self%u(5)
+        u_g = self%u(6)
+        u_period = self%u(7)
+        u_amplitude = self%u(8)
+        u_direction = self%u_direction
+        monte_carlo = self%monte_carlo
+        seed = self%seed
+        plan = self%plan
+        cg = NOT_GIVEN
+        read (rec, nml=tensor, iostat=ios, iomsg=msg)
+        self%hangs = hangs
+        self%u = [u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude]
+        self%u_direction = u_direction
+        self%monte_carlo = monte_carlo
+        self%seed = seed
+        self%plan = plan
+        self%cg_given = any(cg /= NOT_GIVEN)
+        if (self%cg_given) self%cg = merge(cg, 0.0_dp, cg /= NOT_GIVEN)
+    end subroutine read_tensor
+
+    function echo_tensor(self) result(line)
+        class(tensor_group_t), intent(in) :: self
+        character(len=:), allocatable :: line
+        line = '# &tensor hangs = '//quoted(self%hangs)//', u_mass = '// &
+            rshort(self%u(1))//', u_l = '//rshort(self%u(2))//', u_l_prime = '// &
+            rshort(self%u(3))//', u_b = '//rshort(self%u(4))//', u_b_prime = '// &
+            rshort(self%u(5))//', u_g = '//rshort(self%u(6))//', u_period = '// &
+            rshort(self%u(7))//', u_amplitude = '//rshort(self%u(8))// &
+            ', u_direction = '//rshort(self%u_direction)//', monte_carlo = '// &
+            itoa(self%monte_carlo)//', seed = '//itoa(self%seed)
+        if (self%cg_given) line = line//', cg = '//rlist_short(self%cg)
+        if (self%plan > 0) line = line//', plan = '//itoa(self%plan)
+        line = line//' /'
+    end function echo_tensor
+
+    !> The table of hangs relative to the deck's folder.
+    pure subroutine normalise_tensor(self, deck_path)
+        class(tensor_group_t), intent(inout) :: self
+        character(len=*), intent(in) :: deck_path   !! the deck as given
+        self%hangs_path = ''
+        if (len_trim(self%hangs) > 0) self%hangs_path = record_in_folder(deck_path, self%hangs)
+    end subroutine normalise_tensor
+
+end module measure_groups
