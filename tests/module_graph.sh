@@ -10,10 +10,14 @@
 # The folders under SRC are layers, listed below from the bottom up; the one rule is that a
 # unit uses only units of its own folder or of folders below it.  With --check the script
 # also fails (exit 1, one line per fault) when a unit uses one of a higher folder, when a
-# unit of analyses/ uses another analysis (its own parent module excepted), or when the graph
-# has more than MAX_FLOORS floors.
+# unit of analyses/ uses another analysis (its own parent module excepted), when a unit
+# outside analyses/, app/ and deck/ uses the deck (module deck or any unit of deck/,
+# wherever it lies: the layers below take the deck's group types), or when the graph has
+# more than MAX_FLOORS floors.
 set -u
-LAYERS="core linalg integrators model io parallel runs measure analyses app"
+LAYERS="core linalg integrators model io parallel runs measure deck analyses app"
+# The folders that may use the deck.
+DECK_USERS="deck analyses app"
 MAX_FLOORS=8
 check=0
 if [ "${1:-}" = "--check" ]; then check=1; shift; fi
@@ -39,8 +43,9 @@ for f in $(find "$src" -name '*.f90' | sort); do
             for (u in uses) printf " %s", u
             printf "\n"
         }' "$f"
-done | awk -v layers="$LAYERS" -v check="$check" -v maxf="$MAX_FLOORS" '
-    BEGIN { n = split(layers, L, " "); for (i = 1; i <= n; i++) rank[L[i]] = i }
+done | awk -v layers="$LAYERS" -v check="$check" -v maxf="$MAX_FLOORS" -v deckusers="$DECK_USERS" '
+    BEGIN { n = split(layers, L, " "); for (i = 1; i <= n; i++) rank[L[i]] = i
+            n = split(deckusers, D, " "); for (i = 1; i <= n; i++) may_use_deck[D[i]] = 1 }
     {
         u = $1; if (u in folder && $3 == "module(mpi)") next    # the MPI twin of a module
         folder[u] = $2; kind[u] = $3; parent[u] = $4; nu[u] = 0
@@ -72,6 +77,8 @@ done | awk -v layers="$LAYERS" -v check="$check" -v maxf="$MAX_FLOORS" '
                 else if (folder[u] == "analyses" && folder[v] == "analyses" && v != parent[u] && \
                          parent[v] != u)
                     fault[++bad] = u " uses " v ": an analysis uses another analysis"
+                if ((v == "deck" || folder[v] == "deck") && !(folder[u] in may_use_deck))
+                    fault[++bad] = u " (" folder[u] ") uses " v ": only analyses/ and app/ use the deck"
             }
         }
         # print sorted by floor, then name

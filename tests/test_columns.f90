@@ -97,7 +97,8 @@ contains
         integer :: k
         call write_text(SCRATCH//'/plain.nml', SCENE//NL)
         call read_deck(SCRATCH//'/plain.nml', d, st)
-        call t%check('no &output: every column', st%code == 0 .and. d%output%columns == OUTPUT_COLUMNS)
+        call t%check('no &output: every column', st%code == 0 .and. &
+                     d%output%columns == OUTPUT_COLUMNS)
         do k = 1, size(decks)
             call read_deck('input/'//trim(decks(k))//'.nml', d, st)
             call t%check(trim(decks(k))//' writes every column', &

@@ -153,8 +153,9 @@ contains
                      0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [3, 3])))
         call t%check('defaults: amplitude', d%start%amplitude == 45.0_dp)
         call t%check('defaults: integration', d%integration%tau_end == 60.0_dp .and. &
-                     d%integration%dtau_out == 0.05_dp .and. d%integration%rtol == 1.0e-10_dp .and. &
-                     d%integration%atol == 1.0e-12_dp .and. .not. d%integration%error_estimate)
+                     d%integration%dtau_out == 0.05_dp .and. &
+                     d%integration%rtol == 1.0e-10_dp .and. d%integration%atol == 1.0e-12_dp &
+                     .and. .not. d%integration%error_estimate)
         ! a second read into the same variable starts from the defaults again
         call write_text(dir//'/minimal2.nml', '&suspension l = 3.0 /'//NL// &
                         '&body mass = 1.0 /'//NL)
@@ -445,17 +446,25 @@ contains
         call t%check('echo: reads back ('//msg_of(stat)//')', stat%code == STATUS_OK)
         call t%check('echo: same title', d%scene%title == e%scene%title)
         call t%check('echo: same analyses', d%scene%analyses == e%scene%analyses)
-        call t%check('echo: same reals', d%suspension%b == e%suspension%b .and. d%suspension%b_prime == e%suspension%b_prime .and. &
-                     d%suspension%l == e%suspension%l .and. d%suspension%l_prime == e%suspension%l_prime .and. d%suspension%g == e%suspension%g .and. &
-                     d%body%mass == e%body%mass .and. all(d%body%inertia == e%body%inertia) .and. d%body%r == e%body%r &
-                     .and. d%body%lambda == e%body%lambda .and. all(d%body%btilde == e%body%btilde) .and. &
-                     d%body%sway_depth == e%body%sway_depth .and. d%start%amplitude == e%start%amplitude .and. &
+        call t%check('echo: same reals', d%suspension%b == e%suspension%b .and. &
+                     d%suspension%b_prime == e%suspension%b_prime .and. &
+                     d%suspension%l == e%suspension%l .and. &
+                     d%suspension%l_prime == e%suspension%l_prime .and. &
+                     d%suspension%g == e%suspension%g .and. d%body%mass == e%body%mass .and. &
+                     all(d%body%inertia == e%body%inertia) .and. d%body%r == e%body%r .and. &
+                     d%body%lambda == e%body%lambda .and. all(d%body%btilde == e%body%btilde) &
+                     .and. d%body%sway_depth == e%body%sway_depth .and. &
+                     d%start%amplitude == e%start%amplitude .and. &
                      d%start%tilt == e%start%tilt .and. all(d%start%theta == e%start%theta) .and. &
-                     all(d%start%theta_dot == e%start%theta_dot) .and. d%integration%tau_end == e%integration%tau_end .and. &
-                     d%integration%dtau_out == e%integration%dtau_out .and. d%integration%rtol == e%integration%rtol .and. d%integration%atol == e%integration%atol)
+                     all(d%start%theta_dot == e%start%theta_dot) .and. &
+                     d%integration%tau_end == e%integration%tau_end .and. &
+                     d%integration%dtau_out == e%integration%dtau_out .and. &
+                     d%integration%rtol == e%integration%rtol .and. &
+                     d%integration%atol == e%integration%atol)
         call t%check('echo: same mode and flags', d%start%mode == e%start%mode .and. &
                      (d%integration%error_estimate .eqv. e%integration%error_estimate) .and. &
-                     (d%integration%sensitivity_error_control .eqv. e%integration%sensitivity_error_control))
+                     (d%integration%sensitivity_error_control .eqv. &
+                      e%integration%sensitivity_error_control))
         call t%check('all_finite: finite', all_finite([1.0_dp, -2.0_dp, huge(1.0_dp)]))
         call t%check('all_finite: empty', all_finite([real(dp) ::]))
     end subroutine test_echo

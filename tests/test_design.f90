@@ -10,8 +10,9 @@ module test_design
     use testing, only: tester_t, write_text, file_has, count_lines, run, shell_count, &
                        scratch_dir, fresh_dir, empty_dir, no_nan
     use deck, only: deck_t, read_deck
+    use deck_runs, only: rig_of
     use geometry, only: pendulum_t
-    use rig, only: rig_of, make_pendulum
+    use rig, only: make_pendulum
     use floquet, only: floquet_result_t, floquet_analysis
     use stability, only: run_chart
     use design, only: design_result_t, design_sweep, candidate_precision, candidate_rig, &
@@ -254,17 +255,18 @@ contains
         l = 1000.0_dp*d%suspension%b_prime
         u = input_u_t(mass=1.0e-3_dp, l=1.0e-3_dp, l_prime=1.0e-3_dp, b=5.0e-4_dp, &
                       b_prime=5.0e-4_dp, g=0.0_dp, period=1.0e-4_dp, amplitude=0.0_dp)
-        call candidate_precision(design_rig_of(d), l, d%suspension%b, d%suspension%b_prime, 0.5_dp, u, period, urel, &
-                                 lin, st)
+        call candidate_precision(design_rig_of(d), l, d%suspension%b, d%suspension%b_prime, &
+                                 0.5_dp, u, period, urel, lin, st)
         call t%check('classical: precision computed', st%code == 0)
-        expect = sqrt((u%mass/d%body%mass)**2 + (u%b/d%suspension%b)**2 + (u%b_prime/d%suspension%b_prime)**2 + &
-                      0.5_dp*(u%l/l)**2 + (2.0_dp*u%period/period)**2)
+        expect = sqrt((u%mass/d%body%mass)**2 + (u%b/d%suspension%b)**2 + &
+                      (u%b_prime/d%suspension%b_prime)**2 + 0.5_dp*(u%l/l)**2 + &
+                      (2.0_dp*u%period/period)**2)
         call t%check_close('classical: u(I1)/I1 = the linear propagation at 0.5 deg', urel, &
                            expect, rtol=1.0e-4_dp)
         call t%check_close('classical: linear error at 0.5 deg ~ A^2/8', lin, &
                            (0.5_dp*deg)**2/8.0_dp, rtol=2.0e-2_dp)
-        call candidate_precision(design_rig_of(d), l, d%suspension%b, d%suspension%b_prime, 25.0_dp, u, period, urel, &
-                                 lin, st)
+        call candidate_precision(design_rig_of(d), l, d%suspension%b, d%suspension%b_prime, &
+                                 25.0_dp, u, period, urel, lin, st)
         k = sin(0.5_dp*25.0_dp*deg)
         a = 1.0_dp
         g = sqrt(1.0_dp - k*k)

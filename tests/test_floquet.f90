@@ -16,8 +16,9 @@ module test_floquet
     use paper_claims, only: rest_frequencies
     use lapack_wrap, only: la_eig, la_lu_factor, la_lu_solve
     use deck, only: deck_t, read_deck
+    use deck_runs, only: rig_of
     use test_model, only: torsion_1dof_t
-    use rig, only: rig_of, make_pendulum
+    use rig, only: make_pendulum
     implicit none
     private
 

@@ -12,7 +12,8 @@ module test_fuzz
     use monte_carlo, only: MC_ANALYSIS
     use design, only: DESIGN_STAGES
     use deck, only: deck_t, read_deck, deck_echo, OUTPUT_COLUMNS
-    use records, only: record_t, read_record
+    use deck_runs, only: read_record
+    use records, only: record_t
     use test_fuzz_tables, only: scale_column, insert_bytes, file_text
     implicit none
     private
@@ -498,7 +499,8 @@ contains
             end do
             if (len(analyses) == 0) analyses = ' simulate'
             d%integration%tau_end = min(d%integration%tau_end, 2.0_dp)
-            d%integration%dtau_out = max(d%integration%tau_end/40.0_dp, min(d%integration%dtau_out, d%integration%tau_end))
+            d%integration%dtau_out = max(d%integration%tau_end/40.0_dp, &
+                                         min(d%integration%dtau_out, d%integration%tau_end))
             d%chart%nx = min(d%chart%nx, 2)
             d%chart%ny = min(d%chart%ny, 2)
             d%floquet%rtol = max(d%floquet%rtol, 1.0e-8_dp)

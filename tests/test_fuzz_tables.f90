@@ -16,9 +16,10 @@ module test_fuzz_tables
     use testing, only: tester_t, write_text, fresh_dir
     use text, only: itoa
     use deck, only: deck_t, read_deck
-    use rig, only: rig_t, rig_of
-    use records, only: record_t, read_record, MIN_SAMPLES
-    use trials, only: trial_set_t, read_trials
+    use deck_runs, only: rig_of, read_record, read_trials, deck_inputs
+    use rig, only: rig_t
+    use records, only: record_t, MIN_SAMPLES
+    use trials, only: trial_set_t
     use hang_table, only: hang_set_t, read_hangs
     use work_estimate, only: check_record_times, check_timings, periods_runs
     use checkpoint, only: checkpoint_write, checkpoint_read
@@ -201,7 +202,7 @@ contains
             else if (negated) then
                 if (.not. close_to(rec%v, -full%v(1:n))) call bad(4, what)
             end if
-            call check_record_times(d, rg, rec, 'rec.dat', sc)
+            call check_record_times(d%body, d%measurement, d%start, rg, rec, 'rec.dat', sc)
             if (sc%code /= STATUS_OK) then
                 counts(2) = counts(2) + 1
                 msg = sc%msg
@@ -309,7 +310,7 @@ contains
                 end do
                 if (.not. all(ieee_is_finite(ts%t(i)%rig) .and. ts%t(i)%rig > 0.0_dp)) &
                     call bad(2, what)
-                if (sc%code == STATUS_OK) call check_timings(d, rg, ts%t(i)%periods/ &
+                if (sc%code == STATUS_OK) call check_timings(d%body, rg, ts%t(i)%periods/ &
                     ts%t(i)%cycles, ts%t(i)%amps, size(ts%t) == 1, sc)
             end do
             if (sc%code /= STATUS_OK) then
@@ -398,7 +399,7 @@ contains
                 call table_mutation(base, kind - 4, state, text, valid, what)
             end select
             call write_text(path, text)
-            call read_hangs(d, set, st)
+            call read_hangs(d%tensor, d%suspension, d%body, set, st)
             ncase = ncase + 1
             if (st%code /= STATUS_OK) then
                 counts(1) = counts(1) + 1
@@ -567,7 +568,8 @@ contains
         if (st%code /= STATUS_OK) return
         d%measurement%monte_carlo = 0
         do k = 1, 2
-            call periods_runs(d, N, N, k == 1, 1.0e-3_dp, runs(k), what)
+            call periods_runs(deck_inputs(d, .false.), d%measurement, N, N, k == 1, 1.0e-3_dp, &
+                              runs(k), what)
         end do
         call t%check('fuzz_tables: the work of 100 periods counts the budget''s inversions '// &
                      '(asymmetric rig '//itoa(nint(runs(2)))//', symmetric '// &

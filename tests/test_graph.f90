@@ -1,7 +1,7 @@
 !> The house: the module graph and the status table.  The graph of the sources (module_graph.sh
 !! --check) keeps its rules: a unit uses only units of its own folder or of folders below,
-!! no analysis uses another, at most 8 floors; and the script finds a break of each rule in
-!! a small tree made here.  The status table holds every code once, each with an exit
+!! no analysis uses another, only analyses/ and app/ use the deck, at most 8 floors; and the
+!! script finds a break of each rule in a small tree made here.  The status table holds every code once, each with an exit
 !! status the program can give.
 module test_graph
     use testing, only: tester_t, write_text, file_has, run, fresh_dir, first_line
@@ -26,6 +26,8 @@ contains
             call test_sources(t)
         if (t%want('graph: the check finds a use of a higher folder, an analysis using '// &
                    'another, too many floors')) call test_breaks(t)
+        if (t%want('graph: the check finds the deck used below analyses/ and app/')) &
+            call test_deck_users(t)
         if (t%want('graph: the status table, one row per code')) call test_status(t)
         if (t%want('graph: no source, test or manual page speaks of issues or commits')) &
             call test_no_history(t)
@@ -97,6 +99,42 @@ contains
         call t%check('graph breaks: 9 floors fail the check, named', all([ex == 1, &
                      file_has(d//'/stderr', 'the graph has 9 floors; allowed: at most 8')]))
     end subroutine test_breaks
+
+    !> A tree where the deck lies in io/ (below measure/, so no use of it breaks the layers):
+    !! a unit of measure/ that uses it is named; the analysis and the program that use it,
+    !! and the deck's own folder, are not.
+    subroutine test_deck_users(t)
+        type(tester_t), intent(inout) :: t
+        character(len=:), allocatable :: d, s
+        integer :: ex
+        d = 'build/test_graph/deck_users'
+        call fresh_dir(d)
+        s = d//'/src'
+        call execute_command_line('mkdir -p '//s//'/io '//s//'/measure '//s//'/analyses '// &
+                                  s//'/app')
+        call write_text(s//'/io/deck.f90', 'module deck'//NL()//'end module deck'//NL())
+        call write_text(s//'/measure/fit.f90', 'module fit'//NL()//'    use deck, only: x'// &
+                        NL()//'end module fit'//NL())
+        call write_text(s//'/analyses/one.f90', 'module one'//NL()//'    use deck'//NL()// &
+                        '    use fit'//NL()//'end module one'//NL())
+        call write_text(s//'/app/main.f90', 'program main'//NL()//'    use deck'//NL()// &
+                        '    use one'//NL()//'end program main'//NL())
+        ex = run(SCRIPT//' --check '//s, d)
+        call t%check('graph deck: --check exits 1', ex == 1)
+        call t%check('graph deck: a unit of measure/ using the deck is named', &
+                     file_has(d//'/stderr', 'fit (measure) uses deck: only analyses/ and app/ '// &
+                     'use the deck'))
+        call t%check('graph deck: the analysis using it is not named', &
+                     .not. file_has(d//'/stderr', 'one (analyses) uses deck'))
+        call t%check('graph deck: the program using it is not named', &
+                     .not. file_has(d//'/stderr', 'main (app) uses deck'))
+        call t%check('graph deck: no other fault (the layers hold)', .not. &
+                     file_has(d//'/stderr', 'higher folder'))
+        ! without the faulty use, the same tree passes
+        call write_text(s//'/measure/fit.f90', 'module fit'//NL()//'end module fit'//NL())
+        ex = run(SCRIPT//' --check '//s, d)
+        call t%check('graph deck: without that use the check passes', ex == 0)
+    end subroutine test_deck_users
 
     subroutine test_status(t)
         type(tester_t), intent(inout) :: t

@@ -11,10 +11,11 @@ module test_identify
     use testing, only: tester_t, write_text, exists, file_has, count_lines, scratch_dir, &
                        empty_dir
     use deck, only: deck_t, read_deck
+    use deck_runs, only: rig_of, start_of, accuracy_of, read_record
     use geometry, only: pendulum_t, pose_of
     use kinematics, only: omega_partials
     use simulate, only: run_simulation, run_summary_t
-    use rig, only: rig_t, start_t, rig_of, start_of, accuracy_of, make_pendulum
+    use rig, only: rig_t, start_t, make_pendulum
     use driver, only: run_deck
     use random, only: rng_t, rng_stream, rng_normal
     use lapack_wrap, only: la_lstsq, la_svd
@@ -22,7 +23,7 @@ module test_identify
     use period_inversion, only: input_u_t, period_fit_t, invert_periods, period_budget, &
                                 torsion_period_s, simulated_period_s, linear_inertia
     use identify, only: identify_result_t, identify_record
-    use records, only: record_t, read_record
+    use records, only: record_t
     use record_fit, only: record_model, make_record
     use inputs, only: set_input
     use test_period, only: test_rig
@@ -448,7 +449,8 @@ contains
         call t%check('budget (asymmetric): computed', st%code == 0)
         if (st%code /= 0) return
         ss = 0.0_dp
-        xs = [d%body%mass, d%suspension%l, d%suspension%l_prime, d%suspension%b, d%suspension%b_prime, d%suspension%g]
+        xs = [d%body%mass, d%suspension%l, d%suspension%l_prime, d%suspension%b, &
+              d%suspension%b_prime, d%suspension%g]
         us = [u%mass, u%l, u%l_prime, u%b, u%b_prime, u%g]
         do j = 1, 6
             call setup(3.0e-4_dp*xs(j))
@@ -701,7 +703,8 @@ contains
         integer :: k, ex
         logical :: found, same
         call read_deck('input/truth/identify_record_truth.nml', dt, st)
-        call make_record(dt, 30.0_dp, 100.0_dp, 0.002_dp, 10, 'rate', SCR//'/swing.dat', st)
+        call make_record(rig_of(dt), start_of(dt), accuracy_of(dt), dt%scene%title, dt%path, &
+                         30.0_dp, 100.0_dp, 0.002_dp, 10, 'rate', SCR//'/swing.dat', st)
         call t%check('examples: record remade', st%code == 0)
         call execute_command_line('cmp -s '//SCR//'/swing.dat input/identify_record_swing.dat', &
                                   exitstat=ex)
@@ -709,11 +712,12 @@ contains
         call read_deck('input/truth/identify_periods_truth.nml', dt, st)
         call read_deck('input/identify_periods.nml', dp_, st)
         g = rng_stream(7, 0)
-        same = dp_%n_periods == 3
-        do k = 1, min(3, dp_%n_periods)
-            call torsion_period_s(rig_of(dt), dt%body%inertia(1), dp_%amplitudes(k), tp, st)
+        same = dp_%measurement%n_periods == 3
+        do k = 1, min(3, dp_%measurement%n_periods)
+            call torsion_period_s(rig_of(dt), dt%body%inertia(1), dp_%measurement%amplitudes(k), &
+                                  tp, st)
             tp = anint((tp + 1.0e-4_dp*rng_normal(g))*1.0e5_dp)/1.0e5_dp
-            same = same .and. abs(tp - dp_%periods(k)) < 1.0e-9_dp
+            same = same .and. abs(tp - dp_%measurement%periods(k)) < 1.0e-9_dp
         end do
         call t%check('examples: the periods deck holds the periods remade here', same)
         call execute_command_line('rm -rf '//SCR//'/ex && mkdir -p '//SCR//'/ex && '//exe// &
@@ -755,7 +759,8 @@ contains
         logical :: has
         d = asym_rig()
         d%scene%title = 'mc'
-        call make_record(d, 4.0_dp, 50.0_dp, 2.0e-3_dp, 5, 'angle', SCR//'/mc_rec.dat', st)
+        call make_record(rig_of(d), start_of(d), accuracy_of(d), d%scene%title, d%path, 4.0_dp, &
+                         50.0_dp, 2.0e-3_dp, 5, 'angle', SCR//'/mc_rec.dat', st)
         call write_text(SCR//'/mc.nml', "&scene analyses = 'identify' /"//NL// &
             '&suspension b = 0.4, b_prime = 0.4, l = 1.2, l_prime = 1.18, g = 9.80665 /'//NL// &
             '&body mass = 3.1, inertia = 0.05, 0.063, 0.0304, r = 0.25, lambda = 0.64 /'//NL// &

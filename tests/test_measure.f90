@@ -12,7 +12,7 @@ module test_measure
     use testing, only: tester_t, write_text, file_has, count_lines, run, fresh_dir, &
         read_kv_text
     use deck, only: deck_t, read_deck_text
-    use rig, only: rig_of, start_of, accuracy_of
+    use deck_runs, only: rig_of, start_of, accuracy_of
     use driver, only: run_deck
     use identify, only: warning_t
     use random, only: rng_t, rng_stream, rng_normal

@@ -13,8 +13,9 @@ module test_model
                              paper_accelerations, evaluate, chart_positions, step_tensions, NSTATE
     use lsoda, only: lsoda_t
     use deck, only: deck_t, read_deck
+    use deck_runs, only: rig_of, start_of
     use simulate, only: run_simulation, run_summary_t
-    use rig, only: rig_of, start_of, make_pendulum, start_state
+    use rig, only: make_pendulum, start_state
     use paper_claims, only: claim_t, evaluate_claims, write_report, NCLAIMS
     use floquet, only: check_torsion_scene, torsion_period
     implicit none
@@ -291,11 +292,11 @@ contains
             if (st%code /= 0) cycle
             call run_simulation(d, SCRATCH, sm, st)
             call t%check(trim(scenes(k))//': runs to tau_end', st%code == 0 .and. &
-                         abs(sm%tau_reached - d%tau_end) < 1.0e-9_dp)
+                         abs(sm%tau_reached - d%integration%tau_end) < 1.0e-9_dp)
             call t%check_close(trim(scenes(k))//': max |energy error| <= 10 rtol', &
-                               sm%max_abs_energy_error, 0.0_dp, atol=10*d%rtol)
+                               sm%max_abs_energy_error, 0.0_dp, atol=10*d%integration%rtol)
             call t%check_close(trim(scenes(k))//': max |constraint residual| <= 10 rtol', &
-                               sm%max_abs_constraint_residual, 0.0_dp, atol=10*d%rtol)
+                               sm%max_abs_constraint_residual, 0.0_dp, atol=10*d%integration%rtol)
             call t%check(trim(scenes(k))//': cables stay taut', sm%min_tension > 0.1_dp)
             inquire (file=SCRATCH//'/'//trim(scenes(k))//'.summary', exist=there)
             call t%check(trim(scenes(k))//': summary written', there)

@@ -7,9 +7,9 @@ module test_period
     use status, only: status_t, ERR_DECK
     use testing, only: tester_t
     use deck, only: deck_t
+    use deck_runs, only: rig_of, accuracy_of, deck_inputs
     use random, only: rng_t, rng_stream, rng_from_word, rng_next, rng_uniform, rng_normal, &
                       splitmix64
-    use rig, only: rig_of, accuracy_of
     use period_inversion, only: input_u_t, period_fit_t, torsion_period_s, invert_periods, &
                                 period_budget, period_monte_carlo, period_mc_sample, &
                                 linear_inertia
@@ -191,8 +191,8 @@ contains
         if (st%code /= 0) return
         i1 = f%i1
         call t%check('budget: 8 rows for one period', size(f%budget) == 8)
-        call t%check_close('budget: c_mass = I1/m (exact)', f%budget(1)%sensitivity, i1/d%body%mass, &
-            rtol=1.0e-6_dp)
+        call t%check_close('budget: c_mass = I1/m (exact)', f%budget(1)%sensitivity, &
+            i1/d%body%mass, rtol=1.0e-6_dp)
         ! I1 ~ g only up to the body's vertical kinetic energy (z'^2 next to I1 in J of the
         ! energy integral), 1e-5 of I1 at 0.5 deg
         call t%check_close('budget: c_g = I1/g', f%budget(6)%sensitivity, i1/d%suspension%g, &
@@ -201,14 +201,16 @@ contains
             -i1/(2*d%suspension%l), rtol=2.0e-3_dp)
         call t%check_close('budget: c_l_prime = c_l', f%budget(3)%sensitivity, &
             f%budget(2)%sensitivity, rtol=1.0e-9_dp)
-        call t%check_close('budget: c_b = I1/b', f%budget(4)%sensitivity, i1/d%suspension%b, rtol=2.0e-3_dp)
+        call t%check_close('budget: c_b = I1/b', f%budget(4)%sensitivity, i1/d%suspension%b, &
+            rtol=2.0e-3_dp)
         call t%check_close('budget: c_b_prime = I1/b''', f%budget(5)%sensitivity, &
             i1/d%suspension%b_prime, rtol=2.0e-3_dp)
         call t%check_close('budget: c_T = 2 I1/T', f%budget(7)%sensitivity, 2*i1/tp(1), &
             rtol=1.0e-4_dp)
         call t%check('budget: amplitude matters little at 0.5 deg', &
             abs(f%budget(8)%sensitivity)*1.0_dp < 1.0e-4_dp*i1)
-        uu = sqrt((i1/d%body%mass*u%mass)**2 + 2*(i1/(2*d%suspension%l)*u%l)**2 + (i1/d%suspension%b*u%b)**2 + &
+        uu = sqrt((i1/d%body%mass*u%mass)**2 + 2*(i1/(2*d%suspension%l)*u%l)**2 + &
+                  (i1/d%suspension%b*u%b)**2 + &
                   (i1/d%suspension%b_prime*u%b_prime)**2 + (2*i1/tp(1)*u%period)**2 + &
                   (i1/d%suspension%g*u%g)**2)
         call t%check_close('budget: u(I1) = the root sum of squares of the laws', f%u_i1, uu, &
@@ -236,7 +238,8 @@ contains
                       b_prime=0.0005_dp, g=0.0_dp, period=1.0e-4_dp, amplitude=0.5_dp)
         call invert_periods(rig_of(d), accuracy_of(d), tp, a, u, f, st)
         call period_budget(rig_of(d), accuracy_of(d), tp, a, u, f, st)
-        call period_monte_carlo(d, tp, a, u, f%i1, n, 2026, mean, sdev, st)
+        call period_monte_carlo(d, rig_of(d), accuracy_of(d), deck_inputs(d, .false.), tp, a, u, &
+                                f%i1, n, 2026, mean, sdev, st)
         call t%check('monte carlo: runs', st%code == 0)
         call t%check_close('monte carlo: u agrees with first order', sdev, f%u_i1, &
             rtol=3.0_dp*sqrt(2.0_dp/n))

@@ -15,11 +15,12 @@ module test_sensitivities
     use integrators, only: new_integrator, SOLVER_LSODA, SOLVER_RADAU, SENS_FORWARD, &
                            SENS_DIFFERENCES
     use deck, only: deck_t, read_deck
-    use rig, only: rig_t, start_t, accuracy_t, rig_of, start_of, accuracy_of, make_pendulum
+    use deck_runs, only: rig_of, start_of, accuracy_of, read_record
+    use rig, only: rig_t, start_t, accuracy_t, make_pendulum
     use inputs, only: set_input, input_value
     use record_fit, only: record_model, record_model_sens, record_fit_t, fit_problem, &
         fresh_jacobian
-    use records, only: record_t, read_record
+    use records, only: record_t
     use identify, only: identify_result_t, identify_record
     use geometry, only: pendulum_t
     use floquet, only: floquet_result_t, floquet_analysis
@@ -361,24 +362,24 @@ contains
         logical :: ok
         call first_ten_seconds(t, 'fit', d, part, ok)
         if (.not. ok) return
-        d%monte_carlo = 0
-        d%sensitivities = 'forward'
+        d%measurement%monte_carlo = 0
+        d%integration%sensitivities = 'forward'
         call identify_record(d, part, rf, st)
         call t%check('sensitivities: fit forward'//msg_of(st), st%code == 0)
         if (st%code /= 0) return
-        d%sensitivity_error_control = .true.
+        d%integration%sensitivity_error_control = .true.
         call identify_record(d, part, rc, st)
         call t%check('sensitivities: fit forward in the error control'//msg_of(st), st%code == 0)
         if (st%code /= 0) return
-        d%sensitivity_error_control = .false.
-        d%sensitivities = 'differences'
-        d%rtol = 1.0e-12_dp
-        d%atol = 1.0e-14_dp
+        d%integration%sensitivity_error_control = .false.
+        d%integration%sensitivities = 'differences'
+        d%integration%rtol = 1.0e-12_dp
+        d%integration%atol = 1.0e-14_dp
         call identify_record(d, part, rd, st)
         call t%check('sensitivities: fit differences'//msg_of(st), st%code == 0)
         if (st%code /= 0) return
-        d%rtol = 3.0e-13_dp
-        d%atol = 3.0e-15_dp
+        d%integration%rtol = 3.0e-13_dp
+        d%integration%atol = 3.0e-15_dp
         call identify_record(d, part, rd2, st)
         call t%check('sensitivities: fit differences, rtol 3e-13'//msg_of(st), st%code == 0 &
                      .and. size(rd2%budget) == size(rd%budget))
@@ -475,10 +476,10 @@ contains
         call read_deck('input/cylinder_l180.nml', d, st)
         call t%check('sensitivities: global error deck'//msg_of(st), st%code == 0)
         if (st%code /= 0) return
-        n = nint(d%tau_end/d%dtau_out)
+        n = nint(d%integration%tau_end/d%integration%dtau_out)
         allocate (times(0:n), ys(NSTATE, 0:n), yref(NSTATE, 0:n))
         do i = 0, n
-            times(i) = d%dtau_out*i
+            times(i) = d%integration%dtau_out*i
         end do
         do k = 1, 2
             rg = rig_of(d)
@@ -628,7 +629,7 @@ contains
         logical :: ok
         call first_ten_seconds(t, 'reuse', d, part, ok)
         if (.not. ok) return
-        call fit_problem(d, part, prob, p0, h)
+        call fit_problem(rig_of(d), start_of(d), accuracy_of(d), d%measurement, part, prob, p0, h)
         prob%nuse = size(part%t)
         other = prob
         m = prob%nres()
@@ -670,7 +671,7 @@ contains
         ok = st%code == 0
         call t%check('sensitivities: '//what//': the deck and record'//msg_of(st), ok)
         if (.not. ok) return
-        d%estimate = 'I1 c_v c_q'
+        d%measurement%estimate = 'I1 c_v c_q'
         n = count(rec%t <= rec%t(1) + 10.0_dp)
         part = rec
         part%t = rec%t(1:n)

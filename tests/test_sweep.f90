@@ -15,7 +15,7 @@ module test_sweep
     use crc64, only: crc64_of
     use probe_task, only: probe_task_t, special_value
     use deck, only: deck_t, read_deck
-    use rig, only: rig_of, accuracy_of
+    use deck_runs, only: rig_of, start_of, accuracy_of
     use period_inversion, only: input_u_t, period_fit_t, invert_periods, period_mc_sample
     use record_fit, only: make_record
     !$ use omp_lib, only: omp_get_max_threads, omp_set_num_threads
@@ -632,12 +632,13 @@ contains
         call write_text(d//'/bad.nml', BADMC)
         call read_deck(d//'/bad.nml', dk, st)
         u = input_u_t(period=dk%measurement%u_period)
-        call invert_periods(rig_of(dk), accuracy_of(dk), dk%measurement%periods(1:1), dk%measurement%amplitudes(1:1), u, &
-                            f, st)
+        call invert_periods(rig_of(dk), accuracy_of(dk), dk%measurement%periods(1:1), &
+                            dk%measurement%amplitudes(1:1), u, f, st)
         kfail = 0
         do k = 1, dk%measurement%monte_carlo
             call period_mc_sample(rig_of(dk), accuracy_of(dk), dk%measurement%periods(1:1), &
-                                  dk%measurement%amplitudes(1:1), u, f%i1, dk%measurement%seed, k, i1, st)
+                                  dk%measurement%amplitudes(1:1), u, f%i1, &
+                                  dk%measurement%seed, k, i1, st)
             if (st%code /= STATUS_OK) then
                 kfail = k
                 exit
@@ -753,8 +754,9 @@ contains
             '&body mass = 3.1, inertia = 0.0512, 0.063, 0.0304, r = 0.25, lambda = 0.64 /'//NL)
         call read_deck(d//'/truth.nml', truth, st)
         do k = 0, 1
-            call make_record(truth, 3.0_dp, 50.0_dp, 2.0e-3_dp, 5 + k, 'angle', &
-                             d//'/w'//itoa(k)//'/rec.dat', st)
+            call make_record(rig_of(truth), start_of(truth), accuracy_of(truth), &
+                             truth%scene%title, truth%path, 3.0_dp, 50.0_dp, 2.0e-3_dp, &
+                             5 + k, 'angle', d//'/w'//itoa(k)//'/rec.dat', st)
             call write_text(d//'/w'//itoa(k)//'/rec.nml', "&scene analyses = 'identify' /"// &
                 NL//RIG_REC//'&body mass = 3.1, inertia = 0.05, 0.063, 0.0304, r = 0.25, '// &
                 'lambda = 0.64 /'//NL//"&measurement record = 'rec.dat', estimate = 'I1', "// &

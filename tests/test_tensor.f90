@@ -13,6 +13,7 @@ module test_tensor
                        empty_dir, msg_of
     use text, only: itoa, sci
     use deck, only: deck_t, read_deck
+    use deck_runs, only: accuracy_of
     use geometry, only: pendulum_t
     use rig, only: rig_t, accuracy_t, make_pendulum
     use floquet, only: torsion_period, check_torsion_scene
@@ -116,16 +117,16 @@ contains
     function test_deck(u_t, u_dir, u_rig, u_mass) result(d)
         real(dp), intent(in) :: u_t, u_dir, u_rig, u_mass
         type(deck_t) :: d
-        d%mass = MASS
-        d%g = G0
-        d%b = 0.5_dp
-        d%b_prime = 0.4_dp
-        d%l = 1.2_dp
-        d%l_prime = 1.2_dp
-        d%rtol = 1.0e-12_dp
-        d%atol = 1.0e-14_dp
-        d%tensor_u = [u_mass, u_rig, u_rig, 0.5_dp*u_rig, 0.5_dp*u_rig, 0.0_dp, u_t, 0.0_dp]
-        d%tensor_u_direction = u_dir
+        d%body%mass = MASS
+        d%suspension%g = G0
+        d%suspension%b = 0.5_dp
+        d%suspension%b_prime = 0.4_dp
+        d%suspension%l = 1.2_dp
+        d%suspension%l_prime = 1.2_dp
+        d%integration%rtol = 1.0e-12_dp
+        d%integration%atol = 1.0e-14_dp
+        d%tensor%u = [u_mass, u_rig, u_rig, 0.5_dp*u_rig, 0.5_dp*u_rig, 0.0_dp, u_t, 0.0_dp]
+        d%tensor%u_direction = u_dir
     end function test_deck
 
     !> The unit up directions of n = 6, 9 or 12 hangs: faces, edges, corners.
@@ -172,9 +173,9 @@ contains
             set%rows(k)%hang = k
             set%rows(k)%line = k + 1
             set%rows(k)%amplitude = amp
-            set%rows(k)%u_period = d%tensor_u(7)
+            set%rows(k)%u_period = d%tensor%u(7)
         end do
-        call problem_of(d, set, prob)
+        call problem_of(d%tensor, d%suspension, d%body, accuracy_of(d), set, prob)
     end subroutine make_problem
 
     function acc12() result(acc)
@@ -365,7 +366,7 @@ contains
             g = rng_stream(seed, 0)
             mt = MASS + U_MASS*rng_normal(g)
             do j = 1, 4
-                dl(j) = d%tensor_u(1 + j)*rng_normal(g)
+                dl(j) = d%tensor%u(1 + j)*rng_normal(g)
             end do
             do k = 1, n
                 truth(k) = rig_hang(u(:, k), along_for(u(:, k)), k)
@@ -517,8 +518,8 @@ contains
         call read_deck(SCR//'/pts_cd.nml', d2, st)
         call t%check('points: the C, D deck without &body cg_depth: '//msg_of(st), &
                      st%code == STATUS_OK)
-        call read_hangs(d1, s1, st)
-        call read_hangs(d2, s2, st)
+        call read_hangs(d1%tensor, d1%suspension, d1%body, s1, st)
+        call read_hangs(d2%tensor, d2%suspension, d2%body, s2, st)
         call t%check('points: read: '//msg_of(st), st%code == STATUS_OK)
         if (st%code /= STATUS_OK) return
         do k = 1, 9
@@ -529,8 +530,8 @@ contains
                          abs(s2%hangs(k)%cg_depth - 0.1_dp) < 1.0e-12_dp .and. &
                          abs(s2%hangs(k)%cg_offset) < 1.0e-12_dp)
         end do
-        call problem_of(d1, s1, p1)
-        call problem_of(d2, s2, p2)
+        call problem_of(d1%tensor, d1%suspension, d1%body, accuracy_of(d1), s1, p1)
+        call problem_of(d2%tensor, d2%suspension, d2%body, accuracy_of(d2), s2, p2)
         call projection(p1, xp, st)
         call fit_tensor(p1, xp, f1, st)
         call projection(p2, xp, st)
@@ -605,8 +606,8 @@ contains
         call t%check('example: the truth deck', st%code == STATUS_OK)
         jt = 0.0_dp
         do k = 1, 3
-            jt = jt + truth%inertia(k)*spread(truth%btilde(k, :), 2, 3)* &
-                 spread(truth%btilde(k, :), 1, 3)
+            jt = jt + truth%body%inertia(k)*spread(truth%body%btilde(k, :), 2, 3)* &
+                 spread(truth%body%btilde(k, :), 1, 3)
         end do
         xt = tensor_entries(jt)
         call principal_axes(xt, w, vv, st)

@@ -6,8 +6,9 @@ program bench_bifilar
     use kinds, only: dp, deg
     use status, only: status_t
     use deck, only: deck_t, read_deck
+    use deck_runs, only: rig_of
     use simulate, only: run_simulation, run_summary_t
-    use rig, only: rig_of, make_pendulum
+    use rig, only: make_pendulum
     use geometry, only: pendulum_t
     use floquet, only: floquet_result_t, floquet_analysis
     use output_io, only: atomic_open, atomic_commit

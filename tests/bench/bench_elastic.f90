@@ -22,7 +22,8 @@ program bench_elastic
     use kinds, only: dp, pi
     use status, only: status_t
     use deck, only: deck_t, read_deck
-    use rig, only: rig_of, start_of, make_pendulum, start_state
+    use deck_runs, only: rig_of, start_of
+    use rig, only: make_pendulum, start_state
     use bifilar_model, only: NSTATE
     use elastic_model, only: elastic_t, elastic_start, elastic_atol, elastic_energy, &
                              stretch_frequency, ELASTIC_NSTATE, CABLE_AUTO

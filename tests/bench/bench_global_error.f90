@@ -11,8 +11,9 @@ program bench_global_error
     use kinds, only: dp, deg
     use status, only: status_t
     use deck, only: deck_t, read_deck
+    use deck_runs, only: rig_of, start_of
     use geometry, only: pendulum_t
-    use rig, only: rig_t, start_t, rig_of, start_of, make_pendulum, start_state
+    use rig, only: rig_t, start_t, make_pendulum, start_state
     use bifilar_model, only: NSTATE
     use work_precision, only: trajectory_errors
     use kane_run, only: kane_run_t, kane_run_start

@@ -23,10 +23,10 @@ program bench_identify
     use status, only: status_t
     use bench_args, only: int_arg, need
     use deck, only: deck_t, read_deck
-    use rig, only: rig_of, accuracy_of
+    use deck_runs, only: rig_of, accuracy_of, read_record, deck_inputs
     use period_inversion, only: input_u_t, period_fit_t, invert_periods, period_monte_carlo
     use identify, only: identify_result_t, identify_record
-    use records, only: record_t, read_record
+    use records, only: record_t
     implicit none
     character(len=256) :: mode
     type(deck_t) :: d
@@ -49,19 +49,24 @@ program bench_identify
             d%suspension%l_prime = 1.18_dp
             d%body%lambda = 0.64_dp
         end if
-        u = input_u_t(period=d%measurement%u_period, amplitude=d%measurement%u_amplitude, mass=d%measurement%u_mass, l=d%measurement%u_l, &
-                      l_prime=d%measurement%u_l_prime, b=d%measurement%u_b, b_prime=d%measurement%u_b_prime, g=d%measurement%u_g)
+        associate (m => d%measurement)
+            u = input_u_t(period=m%u_period, amplitude=m%u_amplitude, mass=m%u_mass, l=m%u_l, &
+                          l_prime=m%u_l_prime, b=m%u_b, b_prime=m%u_b_prime, g=m%u_g)
+        end associate
         call cpu_time(t0)
         if (trim(mode) == 'mc') then
             if (n >= 2) then
-                call period_monte_carlo(d, d%measurement%periods(1:3), d%measurement%amplitudes(1:3), u, 0.0512_dp, n, &
+                call period_monte_carlo(d, rig_of(d), accuracy_of(d), deck_inputs(d, .false.), &
+                                        d%measurement%periods(1:3), &
+                                        d%measurement%amplitudes(1:3), u, 0.0512_dp, n, &
                                         d%measurement%seed, mean, sdev, st)
                 call need(st, 'bench_identify')
                 sumck = sdev
             end if
         else
             do k = 1, n
-                call invert_periods(rig_of(d), accuracy_of(d), d%measurement%periods(1:3), d%measurement%amplitudes(1:3), u, f, st)
+                call invert_periods(rig_of(d), accuracy_of(d), d%measurement%periods(1:3), &
+                                    d%measurement%amplitudes(1:3), u, f, st)
                 call need(st, 'bench_identify')
                 sumck = sumck + f%i1
             end do

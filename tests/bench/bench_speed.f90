@@ -21,8 +21,9 @@ program bench_speed
     use status, only: status_t
     use bench_args, only: int_arg, need
     use deck, only: deck_t, read_deck
+    use deck_runs, only: rig_of, start_of
     use geometry, only: pendulum_t
-    use rig, only: rig_of, start_of, make_pendulum, start_state
+    use rig, only: make_pendulum, start_state
     use bifilar_model, only: bifilar_t, NSTATE
     use floquet, only: floquet_result_t, floquet_analysis
     use stability, only: set_chart_variable

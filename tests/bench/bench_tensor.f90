@@ -12,6 +12,7 @@ program bench_tensor
     use kinds, only: dp, deg
     use status, only: status_t
     use deck, only: deck_t, read_deck
+    use deck_runs, only: accuracy_of
     use hang_table, only: hang_set_t, read_hangs
     use hang_model, only: tensor_entries, hang_rig, torsion_mode, torsion_mode_t, maxima_drift
     use tensor_fit, only: tensor_problem_t, problem_of, amplitude_limits, DRIFT_MAX, DRIFT_CYCLES
@@ -45,17 +46,18 @@ program bench_tensor
         read (arg, *, iostat=ios) amps(k)
         if (ios /= 0) error stop 1
     end do
-    call read_hangs(d, set, st)
+    call read_hangs(d%tensor, d%suspension, d%body, set, st)
     if (st%code /= 0) then
         write (*, '(a)') st%msg
         error stop 1
     end if
     jt = 0.0_dp
     do k = 1, 3
-        jt = jt + d%body%inertia(k)*spread(d%body%btilde(k, :), 2, 3)*spread(d%body%btilde(k, :), 1, 3)
+        jt = jt + d%body%inertia(k)*spread(d%body%btilde(k, :), 2, 3)* &
+            spread(d%body%btilde(k, :), 1, 3)
     end do
     x = tensor_entries(jt)
-    call problem_of(d, set, prob)
+    call problem_of(d%tensor, d%suspension, d%body, accuracy_of(d), set, prob)
     allocate (drift(size(prob%rows)), limit(size(prob%hangs)))
     call amplitude_limits(prob, x, drift, limit, st)
     write (*, '(a,es8.1,a,i0,a)') '# drift of theta4''s maxima (over ', DRIFT_MAX, &
