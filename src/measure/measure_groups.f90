@@ -17,8 +17,7 @@ module measure_groups
 
     !> Most periods in &measurement periods (and amplitudes).
     integer, parameter, public :: MAX_PERIODS = 100
-    !> The value of an element of periods, amplitudes, cycles, u_inertia the deck did not
-    !! give.
+    !> The value of an element of periods, amplitudes, cycles the deck did not give.
     real(dp), parameter, public :: PERIOD_UNSET = -huge(1.0_dp)
     !> Words allowed in &measurement estimate: the parameters a record fit can estimate.
     character(len=*), parameter, public :: ESTIMATES_ALLOWED = 'I1 c_v c_q amplitude t0 bias'
@@ -32,7 +31,7 @@ module measure_groups
     integer, parameter :: MAX_MONTE_CARLO = 1000000
 
     !> &measurement (analysis identify): measured periods or a recorded swing.  Tracked
-    !! (gave): quantity, record_columns.
+    !! (gave): quantity, record_columns, u_inertia (its first element), u_inertia(2).
     type, extends(deck_group_t), public :: measurement_group_t
         integer :: n_periods = 0                  !! periods given (periods(1:n_periods))
         real(dp) :: periods(MAX_PERIODS) = PERIOD_UNSET     !! full periods (s)
@@ -56,10 +55,10 @@ module measure_groups
         integer :: record_columns(3) = [1, 2, -1]
         character(len=256) :: record_units = ''   !! RECORD_UNITS_ALLOWED ('' : by quantity)
         character(len=256) :: loss = 'squares'    !! LOSSES_ALLOWED: the record fit's loss
-        !> standard uncertainties of I2 and I3 (PERIOD_UNSET: not given, then 0; one value
-        !! serves both: normalise), of the mass centre (as measured: cg_depth, cg_offset; or
-        !! r (length) and lambda (rad))
-        real(dp) :: u_inertia(2) = PERIOD_UNSET
+        !> standard uncertainties of I2 and I3 (u_inertia(1) alone serves both: normalise),
+        !! of the mass centre (as measured: cg_depth, cg_offset; or r (length) and lambda
+        !! (rad))
+        real(dp) :: u_inertia(2) = 0.0_dp
         real(dp) :: u_cg_depth = 0.0_dp, u_cg_offset = 0.0_dp, u_r = 0.0_dp, u_lambda = 0.0_dp
         !> a fixture measured alone and subtracted (its I1 about the same axis, u, its mass),
         !! and a known added inertia (e.g. entrained air) subtracted
@@ -173,7 +172,7 @@ contains
         record_columns = -1
         record_units = self%record_units
         loss = self%loss
-        u_inertia = self%u_inertia
+        u_inertia = PERIOD_UNSET
         u_cg_depth = self%u_cg_depth
         u_cg_offset = self%u_cg_offset
         u_r = self%u_r
@@ -210,7 +209,14 @@ contains
         end if
         self%record_units = record_units
         self%loss = loss
-        self%u_inertia = u_inertia
+        if (u_inertia(1) /= PERIOD_UNSET) then
+            self%u_inertia(1) = u_inertia(1)
+            call self%note_given('u_inertia')
+        end if
+        if (u_inertia(2) /= PERIOD_UNSET) then
+            self%u_inertia(2) = u_inertia(2)
+            call self%note_given('u_inertia(2)')
+        end if
         self%u_cg_depth = u_cg_depth
         self%u_cg_offset = u_cg_offset
         self%u_r = u_r
@@ -276,14 +282,13 @@ contains
         estimated = index(' '//lower(self%estimate)//' ', ' '//lower(trim(word))//' ') > 0
     end function estimated
 
-    !> The standard uncertainties of I2 and I3 the run takes: 0 when not given; a value for
-    !! u_inertia(1) alone serves both.
+    !> The standard uncertainties of I2 and I3 the run takes: a value given for u_inertia(1)
+    !! alone serves both.
     pure function u_inertia_of(self) result(u)
         class(measurement_group_t), intent(in) :: self
         real(dp) :: u(2)
-        u = 0.0_dp
-        if (self%u_inertia(1) /= PERIOD_UNSET) u = self%u_inertia(1)
-        if (self%u_inertia(2) /= PERIOD_UNSET) u(2) = self%u_inertia(2)
+        u = self%u_inertia
+        if (self%gave('u_inertia') .and. .not. self%gave('u_inertia(2)')) u(2) = u(1)
     end function u_inertia_of
 
     !> quantity, record_units and loss in lower case, the quantity from record_units when
