@@ -56,8 +56,8 @@ module lsoda
     use status, only: status_t, set_error, STATUS_OK, LSODA_ERR_MAX_STEPS, &
         LSODA_ERR_TOO_MUCH_ACCURACY, LSODA_ERR_ERROR_TEST, LSODA_ERR_CONVERGENCE, &
         LSODA_ERR_ILLEGAL_INPUT, LSODA_ERR_SINGULAR
-    use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, integrator_codes_t, &
-        METHOD_ADAMS, METHOD_BDF
+    use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, integrator_id_t, &
+        common_stats, METHOD_ADAMS, METHOD_BDF
     use lapack_wrap, only: la_lu_factor, la_lu_solve, la_small_lu_solve, la_small_inverse
     implicit none
     private
@@ -183,18 +183,17 @@ module lsoda
         real(dp) :: scrate = 0.7_dp            !! their iteration's rate of convergence
     contains
         procedure :: init => lsoda_init
-        procedure :: dense => lsoda_dense
+        procedure :: dense_at => lsoda_dense_at
         procedure :: stats => lsoda_get_stats
-        procedure :: name => lsoda_name
         procedure :: set_options => lsoda_set_options
         procedure :: sens_init => lsoda_sens_init
-        procedure :: sens_dense => lsoda_sens_dense
+        procedure :: sens_dense_at => lsoda_sens_dense_at
         procedure :: sens_dense_dot => lsoda_sens_dense_dot
         procedure :: start => lsoda_start
         procedure :: one_step => lsoda_one_step
         procedure :: solution => lsoda_solution
         procedure :: at_tcrit => lsoda_at_tcrit
-        procedure :: codes => lsoda_codes
+        procedure :: identity => lsoda_identity
     end type lsoda_t
 
 contains
@@ -304,42 +303,33 @@ contains
 
         s%yh(:, 1) = y0
         s%y = y0
-        call sys%rhs(t0, s%y, s%savf, stat)
-        s%nfe = 1
-        if (stat%code /= STATUS_OK) then
-            call s%prefix_time(stat, t0)
-            return
-        end if
+        call s%start_rhs(sys, s%y, s%savf, stat)
+        if (stat%code /= STATUS_OK) return
         s%yh(:, 2) = s%savf     ! f(t0,y0); scaled by h0 when the first step size is known
         s%ready = .true.
     end subroutine lsoda_init
 
-    !> k-th derivative of the interpolating polynomial at t, within the last step.
+    !> k-th derivative of the interpolating polynomial at t, within the last step (dense of
+    !! integrator_t checks the integration and dky first).
     !!
     !! t    [in]  time in [t_current - h_last, t_current] (roundoff tolerated).
     !! k    [in]  derivative order, 0 <= k <= current order (order_next).
     !! dky  [out] size n: d^k y / dt^k at t (units of y per time**k).
-    !! stat [out] STATUS_OK or LSODA_ERR_ILLEGAL_INPUT (t outside the step, bad k or size).
-    subroutine lsoda_dense(s, t, k, dky, stat)
+    !! stat [out] STATUS_OK or LSODA_ERR_ILLEGAL_INPUT (t outside the step, bad k).
+    subroutine lsoda_dense_at(s, t, k, dky, stat)
         class(lsoda_t), intent(in) :: s
         real(dp), intent(in) :: t
         integer, intent(in) :: k
         real(dp), intent(out) :: dky(:)
         type(status_t), intent(out) :: stat
-        if (.not. s%ready .or. size(dky) /= s%n) then
-            dky = 0.0_dp
-            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, &
-                'lsoda dense: solver not initialised or size(dky) /= n')
-            return
-        end if
         call interpolate(s, s%yh, s%n, t, k, dky, stat)
-    end subroutine lsoda_dense
+    end subroutine lsoda_dense_at
 
     !> Counters and method state (see integrator_stats_t).
     pure function lsoda_get_stats(s) result(st)
         class(lsoda_t), intent(in) :: s
         type(integrator_stats_t) :: st
-        st = s%common_stats()
+        st = common_stats(s)
         st%method_switches = s%nswitch
         st%method_last = s%mused
         st%order_last = s%nqu
@@ -373,22 +363,13 @@ contains
         if (present(nonstiff_only)) s%opt_adams_only = nonstiff_only
     end subroutine lsoda_set_options
 
-    !> The integrator's name in output files.
-    pure function lsoda_name(s) result(nm)
+    !> LSODA's name and status codes for the procedures of integrator_t.
+    pure function lsoda_identity(s) result(id)
         class(lsoda_t), intent(in) :: s
-        character(len=:), allocatable :: nm
-        nm = 'lsoda'
-        if (.false.) nm = merge('lsoda', 'lsoda', s%ready)   ! keep s referenced
-    end function lsoda_name
-
-    !> LSODA's status codes for the procedures of integrator_t.
-    pure function lsoda_codes(s) result(c)
-        class(lsoda_t), intent(in) :: s
-        type(integrator_codes_t) :: c
-        c%illegal_input = LSODA_ERR_ILLEGAL_INPUT
-        c%max_steps = LSODA_ERR_MAX_STEPS
-        if (.false.) c%max_steps = merge(1, 1, s%ready)         ! keep s referenced
-    end function lsoda_codes
+        type(integrator_id_t) :: id
+        id = integrator_id_t('lsoda', LSODA_ERR_ILLEGAL_INPUT, LSODA_ERR_MAX_STEPS)
+        if (.false.) id%name = merge('lsoda', 'lsoda', s%ready)     ! keep s referenced
+    end function lsoda_identity
 
     !> The solution at t: the Nordsieck array's first column.
     pure subroutine lsoda_solution(s, y)
@@ -452,25 +433,18 @@ contains
 
 
     !> The sensitivities (k = 0) or their k-th derivative at t within the last step (as
-    !! dense for the state).
+    !! dense for the state; sens_dense of integrator_t checks ds first).
     !!
     !! ds   [out] (n, ns).
-    !! stat [out] STATUS_OK or LSODA_ERR_ILLEGAL_INPUT (no sensitivities, t outside the
-    !!            step, a bad k or shape).
-    subroutine lsoda_sens_dense(s, t, k, ds, stat)
+    !! stat [out] STATUS_OK or LSODA_ERR_ILLEGAL_INPUT (t outside the step, a bad k).
+    subroutine lsoda_sens_dense_at(s, t, k, ds, stat)
         class(lsoda_t), intent(in) :: s
         real(dp), intent(in) :: t
         integer, intent(in) :: k
         real(dp), intent(out) :: ds(:, :)
         type(status_t), intent(out) :: stat
-        if (.not. s%ready .or. s%ns == 0 .or. size(ds, 1) /= s%n .or. size(ds, 2) /= s%ns) then
-            ds = 0.0_dp
-            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda sens_dense: no '// &
-                'sensitivities, or ds is not n x ns')
-            return
-        end if
         call interpolate(s, s%zh, s%nsn, t, k, ds, stat)     ! ds as a vector of n ns
-    end subroutine lsoda_sens_dense
+    end subroutine lsoda_sens_dense_at
 
     !> v(k) = g . s_k(t) for each sensitivity column at t within the last step, from the
     !! rows of the Nordsieck array where g is not 0 (Horner's scheme on each, the same
@@ -540,10 +514,6 @@ contains
         if (.false.) call sys%rhs(tout, s%y, s%savf, stat)     ! keep sys referenced
         call update_weights(s, stat)
         if (stat%code /= STATUS_OK) return
-        if (UROUND*vmnorm(s%n, s%yh(:, 1), s%rewt) > 0.01_dp) then
-            call too_much_accuracy(s, stat)
-            return
-        end if
         if (s%h0_user > 0.0_dp) then
             h0 = s%h0_user
         else
@@ -612,10 +582,6 @@ contains
         if (s%nst > 0) then
             call update_weights(s, stat)
             if (stat%code /= STATUS_OK) return
-            if (UROUND*vmnorm(s%n, s%yh(:, 1), s%rewt) > 0.01_dp) then
-                call too_much_accuracy(s, stat)
-                return
-            end if
         end if
         if (s%have_tcrit .and. s%jstart /= JS_FIRST) then
             tnext = s%t + s%h*(1.0_dp + 4.0_dp*UROUND)
@@ -659,7 +625,9 @@ contains
         end select
     end subroutine lsoda_one_step
 
-    !> Error weights from the current solution: rewt = 1/(rtol*|y| + atol).
+    !> Error weights from the current solution: rewt = 1/(rtol*|y| + atol) (and the
+    !! sensitivities'); then LSODA_ERR_TOO_MUCH_ACCURACY when the accuracy asked for is
+    !! beyond the machine's (u ||y|| > 0.01 in these weights).
     subroutine update_weights(s, stat)
         type(lsoda_t), intent(inout) :: s
         type(status_t), intent(inout) :: stat
@@ -673,6 +641,7 @@ contains
             return
         end if
         if (s%ns > 0) call sens_weights(s%nsn, s%rtol, s%zh(:, 1), s%satol, s%srewt)
+        if (UROUND*vmnorm(s%n, s%yh(:, 1), s%rewt) > 0.01_dp) call too_much_accuracy(s, stat)
     end subroutine update_weights
 
     !> rewt = 1/(rtol |y| + atol), component by component up to the first whose weight is
@@ -703,6 +672,7 @@ contains
         srewt = 1.0_dp/(rtol*abs(z) + satol)
     end subroutine sens_weights
 
+    !> LSODA_ERR_TOO_MUCH_ACCURACY at t, with the factor by which the tolerances must grow.
     subroutine too_much_accuracy(s, stat)
         type(lsoda_t), intent(in) :: s
         type(status_t), intent(inout) :: stat
@@ -876,10 +846,8 @@ contains
             rate = 0.0_dp
             del = 0.0_dp
             call copy_vec(s%n, s%yh(:, 1), s%y)
-            call sys%rhs(s%t, s%y, s%savf, stat)
-            s%nfe = s%nfe + 1
+            call corrector_rhs(s, sys, stat)
             if (stat%code /= STATUS_OK) then
-                call fail_fatal(s, stat)
                 outcome = CORR_FATAL
                 return
             end if
@@ -931,10 +899,8 @@ contains
                 if (m == MAXCOR) exit iterate
                 if (m >= 2 .and. del > 2.0_dp*delp) exit iterate
                 delp = del
-                call sys%rhs(s%t, s%y, s%savf, stat)
-                s%nfe = s%nfe + 1
+                call corrector_rhs(s, sys, stat)
                 if (stat%code /= STATUS_OK) then
-                    call fail_fatal(s, stat)
                     outcome = CORR_FATAL
                     return
                 end if
@@ -944,6 +910,17 @@ contains
             s%ipup = .true.
         end do corrector
     end subroutine correct
+
+    !> f at the corrector's iterate y (savf), counted; on a failure the step is undone
+    !! (fail_fatal) and stat says why.
+    subroutine corrector_rhs(s, sys, stat)
+        type(lsoda_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        type(status_t), intent(inout) :: stat
+        call sys%rhs(s%t, s%y, s%savf, stat)
+        s%nfe = s%nfe + 1
+        if (stat%code /= STATUS_OK) call fail_fatal(s, stat)
+    end subroutine corrector_rhs
 
     !> One update of the corrector's iterate y from f at it (savf): the functional
     !! iteration (Adams) or a chord Newton step with P (BDF); acor the correction so far,
@@ -1129,7 +1106,7 @@ contains
         logical, intent(inout) :: switched
         real(dp), intent(inout) :: rh
         real(dp) :: exsm, rh1, rh1it, rh2, pdh, dm, exm
-        integer :: nqm, lm
+        integer :: nqm
         if (s%nq > 5 .or. s%adams_only) return
         rh2 = 1.0_dp
         nqm = 1
@@ -1140,17 +1117,7 @@ contains
             pdh = s%pdlast*abs(s%h)
             if (pdh*rh1 > 1.0e-5_dp) rh1it = SM1(s%nq)/pdh
             rh1 = min(rh1, rh1it)
-            if (s%nq > s%mxords) then
-                nqm = s%mxords
-                lm = nqm + 1
-                exm = 1.0_dp/lm
-                dm = vmnorm(s%n, s%yh(:, lm + 1), s%rewt)/s%cm2(nqm)
-                rh2 = 1.0_dp/(1.2_dp*dm**exm + 1.2e-6_dp)
-            else
-                dm = dsm*(s%cm1(s%nq)/s%cm2(s%nq))
-                rh2 = 1.0_dp/(1.2_dp*dm**exsm + 1.2e-6_dp)
-                nqm = s%nq
-            end if
+            call other_method_step(s, dsm, s%mxords, s%cm1, s%cm2, nqm, dm, exm, rh2)
             if (rh2 >= SWITCH_RATIO*rh1) switched = .true.
         else if (s%irflag /= 0) then
             ! step limited by stability yet error tiny: go stiff
@@ -1174,20 +1141,9 @@ contains
         logical, intent(inout) :: switched
         real(dp), intent(inout) :: rh
         real(dp) :: exsm, rh1, rh1it, rh2, pdh, dm, exm, alpha
-        integer :: nqm, lm
+        integer :: nqm
         exsm = 1.0_dp/s%l
-        if (s%mxordn < s%nq) then
-            nqm = s%mxordn
-            lm = nqm + 1
-            exm = 1.0_dp/lm
-            dm = vmnorm(s%n, s%yh(:, lm + 1), s%rewt)/s%cm1(nqm)
-            rh1 = 1.0_dp/(1.2_dp*dm**exm + 1.2e-6_dp)
-        else
-            dm = dsm*(s%cm2(s%nq)/s%cm1(s%nq))
-            rh1 = 1.0_dp/(1.2_dp*dm**exsm + 1.2e-6_dp)
-            nqm = s%nq
-            exm = exsm
-        end if
+        call other_method_step(s, dsm, s%mxordn, s%cm2, s%cm1, nqm, dm, exm, rh1)
         rh1it = 2.0_dp*rh1
         pdh = s%pdnorm*abs(s%h)
         if (pdh*rh1 > 1.0e-5_dp) rh1it = SM1(nqm)/pdh
@@ -1204,6 +1160,32 @@ contains
             end if
         end if
     end subroutine test_switch_to_adams
+
+    !> The step the other method could take at the same accuracy, rh h (the switching
+    !! tests): at order nqm = min(nq, its highest order), from this step's error norm dsm
+    !! scaled by the two methods' error constants, or, above its highest order, from yh's
+    !! column nqm + 2 (dm the error estimate, exm = 1/(nqm + 1)).
+    subroutine other_method_step(s, dsm, mxord_other, cm_this, cm_other, nqm, dm, exm, rh)
+        type(lsoda_t), intent(in) :: s
+        real(dp), intent(in) :: dsm                 !! this step's error norm
+        integer, intent(in) :: mxord_other          !! the other method's highest order
+        real(dp), intent(in) :: cm_this(:), cm_other(:)     !! their constants (cm1, cm2)
+        integer, intent(out) :: nqm
+        real(dp), intent(out) :: dm, exm, rh
+        integer :: lm
+        if (s%nq > mxord_other) then
+            nqm = mxord_other
+            lm = nqm + 1
+            exm = 1.0_dp/lm
+            dm = vmnorm(s%n, s%yh(:, lm + 1), s%rewt)/cm_other(nqm)
+            rh = 1.0_dp/(1.2_dp*dm**exm + 1.2e-6_dp)
+        else
+            exm = 1.0_dp/s%l
+            dm = dsm*(cm_this(s%nq)/cm_other(s%nq))
+            rh = 1.0_dp/(1.2_dp*dm**exm + 1.2e-6_dp)
+            nqm = s%nq
+        end if
+    end subroutine other_method_step
 
     !> The order and h of the step after an accepted one without a switch: every ialth
     !! steps choose_order's, with yh rescaled to the new h; on the step before that,
@@ -1249,7 +1231,7 @@ contains
         s%hold = s%h
     end subroutine fail_fatal
 
-    !> Smallest |h| worth trying at tn (a few units of roundoff of t).
+    !> Smallest |h| worth trying at t (a few units of roundoff of t).
     pure real(dp) function hfloor(s)
         type(lsoda_t), intent(in) :: s
         hfloor = 4.0_dp*UROUND*abs(s%t)
@@ -1520,7 +1502,7 @@ contains
 
     !> P = I - h*l0*J (J analytic or by finite differences), its LU factors, and the
     !! weighted norm of J used by the stiff -> non-stiff test.  On entry y = predicted
-    !! solution and savf = f(tn, y).
+    !! solution and savf = f(t, y).
     subroutine build_iteration_matrix(s, sys, stat, singular)
         type(lsoda_t), intent(inout) :: s
         class(ode_system_t), intent(inout) :: sys
@@ -1605,9 +1587,9 @@ contains
         call sens_sum(s%nsn, s%sjv, s%sdfdp, s%zh(:, 2))
     end subroutine sens_slope
 
-    !> The sensitivities' corrector at the step's converged point (tn, y): sacor with
+    !> The sensitivities' corrector at the step's converged point (t, y): sacor with
     !!     (I - h l0 J) sacor = h (J zh1 + df/dp) - zh2
-    !! (zh predicted; J and df/dp exact at (tn, y)), solved by a chord iteration whose
+    !! (zh predicted; J and df/dp exact at (t, y)), solved by a chord iteration whose
     !! residuals use the exact J: a BDF step's iteration matrix is its Newton matrix, an Adams
     !! step's the inverse of the sensitivities' own I - h l0 J (sens_matrix; kept by the
     !! Newton matrix's rules: a new one every MSBP steps or when h l0 changed by more than
@@ -1877,7 +1859,7 @@ contains
         integer, intent(in) :: m                        !! rows
         real(dp), intent(in) :: yh(m, LMAX_ALL)         !! Nordsieck array
         integer, intent(in) :: nq, k                    !! order, derivative
-        real(dp), intent(in) :: h, sc                   !! step, (t - tn)/h
+        real(dp), intent(in) :: h, sc                   !! step, (t - t_n)/h (t_n the step's end)
         real(dp), intent(out) :: dky(m)
         real(dp) :: c, t(2)
         integer :: i, j, jj, ic

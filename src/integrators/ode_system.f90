@@ -1,9 +1,9 @@
 !> The two abstract types every integration in bifilar goes through: the right-hand side
 !! (ode_system_t) and the integrator (integrator_t, with one statistics type).
 !!
-!! The right-hand side.  A problem extends ode_system with its own data (lengths, masses, counters) and
-!! implements rhs; it may also override jacobian and has_jacobian to give an analytic
-!! Jacobian.  The integrator (module lsoda) sees only this type.
+!! The right-hand side.  A problem extends ode_system_t with its own data (lengths, masses,
+!! counters) and implements rhs; it may also override jacobian and has_jacobian to give an
+!! analytic Jacobian.  The integrators (modules lsoda and radau) see only this type.
 !!
 !! A problem whose Jacobian has a structure (e.g. block diagonal with identical blocks, as
 !! the variational equations of module floquet) may also solve the stiff method's linear
@@ -13,9 +13,9 @@
 !! (Jacobian evaluations, factorisations) are kept as for the dense path.
 !!
 !! The integrator.  An abstract type that the project's integrators extend (LSODA, module
-!! lsoda; Radau IIA, module radau), with one statistics type.  A driver holds a `class(integrator_t), allocatable` made by module
-!! integrators (new_integrator) and never asks which integrator it is, except for the name
-!! it writes into its output.
+!! lsoda; Radau IIA, module radau), with one statistics type.  A driver holds a
+!! `class(integrator_t), allocatable` made by module integrators (new_integrator) and never
+!! asks which integrator it is, except for the name it writes into its output.
 !!
 !! The calls:
 !! - init(sys, t0, y0, rtol, atol, stat [, tcrit, h0, hmax, max_steps]): start at (t0, y0);
@@ -32,6 +32,17 @@
 !!   along with the state (below); sens_dense(t, k, ds, stat): them (k = 0) or their
 !!   derivative (k = 1) at t inside the last step; sens_dense_dot(t, g, v, stat): g . s_k
 !!   for each column at t, when a linear function of the state is all a caller needs.
+!!
+!! What integrator_t holds for every integrator (as SciPy's OdeSolver holds t and the
+!! counters, and each method writes its step): the state and counters they all keep (n, the
+!! tolerances, t, h, the last step hu, tcrit, the counters, the sensitivities' number and
+!! tolerances), the checks of the arguments they all take (init_common, sens_init_common,
+!! check_in_step, and those of integrate, step, dense, sens_dense and set_tcrit), and
+!! integrate and step themselves, which drive the integrator's own parts: identity (its
+!! name and status codes), start (the first step size), one_step (one accepted step),
+!! solution (the solution at t), at_tcrit, dense_at and sens_dense_at (its dense output).
+!! The components are public, for the extensions in other modules: only the integrators'
+!! procedures write them; a driver reads an integration through stats() and dense().
 !! Failures come back in status_t with the integrator's codes of status's STATUS_TABLE.
 !!
 !! Forward sensitivities.  After init and before the first step, sens_init starts ns
@@ -49,8 +60,8 @@
 !! there; default the products with the columns of I).
 module ode_system
     use kinds, only: dp
-    use status, only: status_t, set_error, STATUS_OK, ERR_NUMERIC, LSODA_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_TOO_MUCH_ACCURACY, &
-        RADAU_ERR_STEP_TOO_SMALL
+    use status, only: status_t, set_error, STATUS_OK, ERR_NUMERIC, &
+        LSODA_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_STEP_TOO_SMALL
     implicit none
     private
 
@@ -114,12 +125,13 @@ module ode_system
     !> The most steps one call of integrate takes unless init is told otherwise.
     integer, parameter, public :: DEFAULT_MAX_STEPS = 500000
 
-    !> The status codes with which an integrator answers from the procedures of
-    !! integrator_t (its own codes of status's STATUS_TABLE).
-    type, public :: integrator_codes_t
-        integer :: illegal_input = 0    !! a bad argument, or a call out of order
-        integer :: max_steps = 0        !! max_steps steps in one call of integrate
-    end type integrator_codes_t
+    !> What an integrator is to the procedures of integrator_t: its name and the status codes
+    !! with which it answers (its own of status's STATUS_TABLE).
+    type, public :: integrator_id_t
+        character(len=8) :: name = ''   !! as written in output files: 'lsoda' or 'radau'
+        integer :: illegal_input = 0    !! code of a bad argument, or a call out of order
+        integer :: max_steps = 0        !! code of max_steps steps in one call of integrate
+    end type integrator_id_t
 
     !> One integration by one of the project's integrators: the state, the counters and the
     !! checks of the arguments that every integrator has, and integrate and step, which
@@ -167,24 +179,26 @@ module ode_system
         procedure(init_i), deferred :: init
         procedure :: integrate => integrator_integrate
         procedure :: step => integrator_step
-        procedure(dense_i), deferred :: dense
+        procedure :: dense => integrator_dense
         procedure(stats_i), deferred :: stats
         procedure :: set_tcrit => integrator_set_tcrit
-        procedure(name_i), deferred :: name
+        procedure :: name => integrator_name
         procedure(sens_init_i), deferred :: sens_init
-        procedure(sens_dense_i), deferred :: sens_dense
+        procedure :: sens_dense => integrator_sens_dense
         procedure :: sens_dense_dot => default_sens_dense_dot
-        ! what an integrator gives integrate and step
+        ! what an integrator gives the procedures above
+        procedure(identity_i), deferred :: identity
         procedure(start_i), deferred :: start
         procedure(one_step_i), deferred :: one_step
         procedure(solution_i), deferred :: solution
         procedure(at_tcrit_i), deferred :: at_tcrit
-        procedure(codes_i), deferred :: codes
+        procedure(dense_i), deferred :: dense_at
+        procedure(sens_dense_i), deferred :: sens_dense_at
         ! what the integrators share
         procedure :: init_common
+        procedure :: start_rhs
         procedure :: sens_init_common
         procedure :: check_in_step
-        procedure :: common_stats
         procedure :: refuse
         procedure :: prefix_time
     end type integrator_t
@@ -205,7 +219,8 @@ module ode_system
             real(dp), intent(in), optional :: hmax      !! largest |h| (> 0)
             integer, intent(in), optional :: max_steps  !! most steps in one call of integrate
         end subroutine init_i
-        !> The solution (k = 0) or its derivative (k = 1) at t in the last step.
+        !> The solution (k = 0) or its derivative (k = 1) at t in the last step (dense_at:
+        !! the integrator's, once dense has checked the integration and the size of dky).
         subroutine dense_i(s, t, k, dky, stat)
             import :: integrator_t, dp, status_t
             class(integrator_t), intent(in) :: s
@@ -220,12 +235,6 @@ module ode_system
             class(integrator_t), intent(in) :: s
             type(integrator_stats_t) :: st
         end function stats_i
-        !> The integrator's name as written in output files: 'lsoda' or 'radau'.
-        pure function name_i(s) result(nm)
-            import :: integrator_t
-            class(integrator_t), intent(in) :: s
-            character(len=:), allocatable :: nm
-        end function name_i
     end interface
 
     abstract interface
@@ -240,7 +249,9 @@ module ode_system
                                                         !! against the state's (atol x scale)
             logical, intent(in), optional :: error_control  !! in the error test (default no)
         end subroutine sens_init_i
-        !> The sensitivities (k = 0) or their derivative (k = 1) at t in the last step.
+        !> The sensitivities (k = 0) or their derivative (k = 1) at t in the last step
+        !! (sens_dense_at: the integrator's, once sens_dense has checked that there are
+        !! sensitivities and the shape of ds).
         subroutine sens_dense_i(s, t, k, ds, stat)
             import :: integrator_t, dp, status_t
             class(integrator_t), intent(in) :: s
@@ -252,6 +263,12 @@ module ode_system
     end interface
 
     abstract interface
+        !> The integrator's name and status codes.
+        pure function identity_i(s) result(id)
+            import :: integrator_t, integrator_id_t
+            class(integrator_t), intent(in) :: s
+            type(integrator_id_t) :: id
+        end function identity_i
         !> The first step size, once the direction is known (integrate and step call it
         !! before the first step).
         subroutine start_i(s, sys, tout, have_tout, stat)
@@ -280,15 +297,9 @@ module ode_system
             import :: integrator_t
             class(integrator_t), intent(in) :: s
         end function at_tcrit_i
-        !> The integrator's status codes for the procedures of integrator_t.
-        pure function codes_i(s) result(c)
-            import :: integrator_t, integrator_codes_t
-            class(integrator_t), intent(in) :: s
-            type(integrator_codes_t) :: c
-        end function codes_i
     end interface
 
-    public :: too_much_accuracy, default_sens_point
+    public :: too_much_accuracy, default_sens_point, common_stats
 
 contains
 
@@ -311,7 +322,7 @@ contains
         real(dp), intent(in) :: tout
         real(dp), intent(out) :: y(:)
         type(status_t), intent(out) :: stat
-        type(integrator_codes_t) :: c
+        type(integrator_id_t) :: id
         character(len=200) :: buf
         stat%code = STATUS_OK
         if (.not. s%ready .or. size(y) /= s%n) then
@@ -347,7 +358,7 @@ contains
         s%steps_call = 0
         do
             if ((s%t - tout)*s%dir >= 0.0_dp) then
-                call s%dense(tout, 0, y, stat)
+                call s%dense_at(tout, 0, y, stat)
                 if (stat%code /= STATUS_OK) then
                     call s%solution(y)
                     return
@@ -363,11 +374,11 @@ contains
                 end if
             end if
             if (s%steps_call >= s%max_steps) then
-                c = s%codes()
+                id = s%identity()
                 write (buf, '(a,i0,a,es15.7e3,a,es15.7e3)') ': ', s%max_steps, &
                     ' steps taken in this call without reaching tout = ', tout, &
                     '; t reached = ', s%t
-                call set_error(stat, c%max_steps, s%name()//trim(buf))
+                call set_error(stat, id%max_steps, trim(id%name)//trim(buf))
                 call s%solution(y)
                 return
             end if
@@ -462,6 +473,59 @@ contains
         s%tcrit = tcrit
         s%have_tcrit = .true.
     end subroutine integrator_set_tcrit
+
+    !> The solution (k = 0) or its k-th derivative at t within the last step: the
+    !! integrator's dense output (dense_at) once the integration and dky are checked.
+    !!
+    !! t    [in]  time in [t_current - h_last, t_current] (roundoff tolerated).
+    !! k    [in]  derivative order: 0 or 1 for every integrator (LSODA: up to its order).
+    !! dky  [out] (n) d^k y/dt^k at t (units of y per unit of t^k).
+    !! stat [out] STATUS_OK or the integrator's illegal-input code (no init, size(dky) /= n,
+    !!            t outside the step, a bad k).
+    subroutine integrator_dense(s, t, k, dky, stat)
+        class(integrator_t), intent(in) :: s
+        real(dp), intent(in) :: t
+        integer, intent(in) :: k
+        real(dp), intent(out) :: dky(:)
+        type(status_t), intent(out) :: stat
+        if (.not. s%ready .or. size(dky) /= s%n) then
+            dky = 0.0_dp
+            stat%code = STATUS_OK
+            call s%refuse('dense: not initialised, or size(dky) /= n', stat)
+            return
+        end if
+        call s%dense_at(t, k, dky, stat)
+    end subroutine integrator_dense
+
+    !> The sensitivities (k = 0) or their k-th derivative at t within the last step: the
+    !! integrator's (sens_dense_at) once there are sensitivities and ds fits them.
+    !!
+    !! ds   [out] (n, ns).
+    !! stat [out] STATUS_OK or the integrator's illegal-input code (no sensitivities, ds not
+    !!            n x ns, t outside the step, a bad k).
+    subroutine integrator_sens_dense(s, t, k, ds, stat)
+        class(integrator_t), intent(in) :: s
+        real(dp), intent(in) :: t
+        integer, intent(in) :: k
+        real(dp), intent(out) :: ds(:, :)
+        type(status_t), intent(out) :: stat
+        if (.not. s%ready .or. s%ns == 0 .or. size(ds, 1) /= s%n .or. size(ds, 2) /= s%ns) then
+            ds = 0.0_dp
+            stat%code = STATUS_OK
+            call s%refuse('sens_dense: no sensitivities, or ds is not n x ns', stat)
+            return
+        end if
+        call s%sens_dense_at(t, k, ds, stat)
+    end subroutine integrator_sens_dense
+
+    !> The integrator's name as written in output files: 'lsoda' or 'radau'.
+    pure function integrator_name(s) result(nm)
+        class(integrator_t), intent(in) :: s
+        character(len=:), allocatable :: nm
+        type(integrator_id_t) :: id
+        id = s%identity()
+        nm = trim(id%name)
+    end function integrator_name
 
     !> v(k) = g . s_k(t), the projection of each sensitivity on g at t inside the last step
     !! (default: from sens_dense; an integrator may form it from its own representation).
@@ -565,6 +629,19 @@ contains
         s%nsdir = 0
     end subroutine init_common
 
+    !> f(t0, y0) for init: the first evaluation of the right-hand side (nfe = 1); a failure's
+    !! message prefixed with the integrator's name and t0.
+    subroutine start_rhs(s, sys, y0, f0, stat)
+        class(integrator_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        real(dp), intent(in) :: y0(:)               !! (n) the state at t0
+        real(dp), intent(out) :: f0(:)              !! (n) f(t0, y0)
+        type(status_t), intent(out) :: stat
+        call sys%rhs(s%t, y0, f0, stat)
+        s%nfe = 1
+        if (stat%code /= STATUS_OK) call s%prefix_time(stat, s%t)
+    end subroutine start_rhs
+
     !> What every integrator's sens_init does besides its method: the checks (after init
     !! and before the first step; s0 of n rows and ns >= 1 columns; scale, when given, of
     !! ns entries each > 0), error_control, and the sensitivities' absolute tolerances
@@ -638,7 +715,7 @@ contains
     end subroutine check_in_step
 
     !> The counters and step sizes every integrator keeps, in integrator_stats_t (the
-    !! integrator's stats adds its own).
+    !! integrator's stats adds its own; a plain procedure, so that it calls it directly).
     pure function common_stats(s) result(st)
         class(integrator_t), intent(in) :: s
         type(integrator_stats_t) :: st
@@ -661,9 +738,9 @@ contains
         class(integrator_t), intent(in) :: s
         character(len=*), intent(in) :: what        !! the call and what is wrong with it
         type(status_t), intent(inout) :: stat
-        type(integrator_codes_t) :: c
-        c = s%codes()
-        call set_error(stat, c%illegal_input, s%name()//' '//what)
+        type(integrator_id_t) :: id
+        id = s%identity()
+        call set_error(stat, id%illegal_input, trim(id%name)//' '//what)
     end subroutine refuse
 
     !> A failure's message prefixed with the integrator's name and the time reached,

@@ -62,8 +62,8 @@ module radau
     use status, only: status_t, set_error, STATUS_OK, RADAU_ERR_MAX_STEPS, &
         RADAU_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_STEP_TOO_SMALL, RADAU_ERR_ILLEGAL_INPUT, &
         RADAU_ERR_SINGULAR
-    use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, integrator_codes_t, &
-        METHOD_RADAU
+    use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, integrator_id_t, &
+        common_stats, METHOD_RADAU
     use lapack_wrap, only: la_lu_factor, la_lu_solve, la_zlu_factor, la_zlu_solve
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
@@ -145,16 +145,15 @@ module radau
                                                 !! estimate, in the error control)
     contains
         procedure :: init => radau_init
-        procedure :: dense => radau_dense
+        procedure :: dense_at => radau_dense_at
         procedure :: stats => radau_get_stats
-        procedure :: name => radau_name
         procedure :: sens_init => radau_sens_init
-        procedure :: sens_dense => radau_sens_dense
+        procedure :: sens_dense_at => radau_sens_dense_at
         procedure :: start => radau_start
         procedure :: one_step => radau_one_step
         procedure :: solution => radau_solution
         procedure :: at_tcrit => radau_at_tcrit
-        procedure :: codes => radau_codes
+        procedure :: identity => radau_identity
     end type radau_t
 
     public :: radau_coefficients
@@ -356,12 +355,8 @@ contains
         s%h_acc = 0.0_dp
         s%err_acc = 1.0e-2_dp
         s%nit = 0
-        call sys%rhs(t0, s%y, s%f0, stat)
-        s%nfe = 1
-        if (stat%code /= STATUS_OK) then
-            call s%prefix_time(stat, t0)
-            return
-        end if
+        call s%start_rhs(sys, s%y, s%f0, stat)
+        if (stat%code /= STATUS_OK) return
         s%ready = .true.
     end subroutine radau_init
 
@@ -379,32 +374,31 @@ contains
         s%jac = 0.0_dp
     end subroutine alloc_work
 
-    !> k-th derivative (k = 0 or 1) of the last step's collocation polynomial at t.
+    !> k-th derivative (k = 0 or 1) of the last step's collocation polynomial at t (dense of
+    !! integrator_t checks the integration and dky first).
     !!
     !! t    [in]  time in [t_current - h_last, t_current] (roundoff tolerated); before the
-    !!            first step only t = t0 (k = 0).
+    !!            first step only t = t0.
     !! dky  [out] size n: d^k y/dt^k at t.
-    !! stat [out] STATUS_OK or RADAU_ERR_ILLEGAL_INPUT (t outside the step, bad k or size).
-    subroutine radau_dense(s, t, k, dky, stat)
+    !! stat [out] STATUS_OK or RADAU_ERR_ILLEGAL_INPUT (t outside the step, bad k).
+    subroutine radau_dense_at(s, t, k, dky, stat)
         class(radau_t), intent(in) :: s
         real(dp), intent(in) :: t
         integer, intent(in) :: k
         real(dp), intent(out) :: dky(:)
         type(status_t), intent(out) :: stat
-        if (.not. s%ready .or. size(dky) /= s%n) then
-            dky = 0.0_dp
-            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, &
-                'radau dense: solver not initialised or size(dky) /= n')
-            return
-        end if
-        call interpolate(s, t, k, dky, stat)
-    end subroutine radau_dense
+        real(dp) :: x
+        dky = 0.0_dp
+        call dense_position(s, t, k, 'dense', x, stat)
+        if (stat%code /= STATUS_OK) return
+        call collocation(s, x, k, s%n, s%y, s%f0, s%y_old, s%z_old, dky)
+    end subroutine radau_dense_at
 
     !> Counters and step sizes (see integrator_stats_t).
     pure function radau_get_stats(s) result(st)
         class(radau_t), intent(in) :: s
         type(integrator_stats_t) :: st
-        st = s%common_stats()
+        st = common_stats(s)
         st%newton_iterations = s%nit
         st%method_switches = 0
         st%method_last = METHOD_RADAU
@@ -413,22 +407,13 @@ contains
         st%order_next = 5
     end function radau_get_stats
 
-    !> The integrator's name in output files.
-    pure function radau_name(s) result(nm)
+    !> Radau's name and status codes for the procedures of integrator_t.
+    pure function radau_identity(s) result(id)
         class(radau_t), intent(in) :: s
-        character(len=:), allocatable :: nm
-        nm = 'radau'
-        if (.false.) nm = merge('radau', 'radau', s%ready)   ! keep s referenced
-    end function radau_name
-
-    !> Radau's status codes for the procedures of integrator_t.
-    pure function radau_codes(s) result(c)
-        class(radau_t), intent(in) :: s
-        type(integrator_codes_t) :: c
-        c%illegal_input = RADAU_ERR_ILLEGAL_INPUT
-        c%max_steps = RADAU_ERR_MAX_STEPS
-        if (.false.) c%max_steps = merge(1, 1, s%ready)         ! keep s referenced
-    end function radau_codes
+        type(integrator_id_t) :: id
+        id = integrator_id_t('radau', RADAU_ERR_ILLEGAL_INPUT, RADAU_ERR_MAX_STEPS)
+        if (.false.) id%name = merge('radau', 'radau', s%ready)     ! keep s referenced
+    end function radau_identity
 
     !> The solution at t.
     pure subroutine radau_solution(s, y)
@@ -480,42 +465,23 @@ contains
     end subroutine radau_sens_init
 
 
-    !> The sensitivities (k = 0) or their derivative (k = 1) at t within the last step.
+    !> The sensitivities (k = 0) or their derivative (k = 1) at t within the last step
+    !! (sens_dense of integrator_t checks ds first).
     !!
     !! ds   [out] (n, ns).
-    !! stat [out] STATUS_OK or RADAU_ERR_ILLEGAL_INPUT (no sensitivities, t outside the step,
-    !!            a bad k or shape).
-    subroutine radau_sens_dense(s, t, k, ds, stat)
+    !! stat [out] STATUS_OK or RADAU_ERR_ILLEGAL_INPUT (t outside the step, a bad k).
+    subroutine radau_sens_dense_at(s, t, k, ds, stat)
         class(radau_t), intent(in) :: s
         real(dp), intent(in) :: t
         integer, intent(in) :: k
         real(dp), intent(out) :: ds(:, :)
         type(status_t), intent(out) :: stat
-        real(dp) :: x, l(3)
-        integer :: j
+        real(dp) :: x
         ds = 0.0_dp
-        if (.not. s%ready .or. s%ns == 0 .or. size(ds, 1) /= s%n .or. size(ds, 2) /= s%ns) then
-            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, 'radau sens_dense: no '// &
-                'sensitivities, or ds is not n x ns')
-            return
-        end if
         call dense_position(s, t, k, 'sens_dense', x, stat)
         if (stat%code /= STATUS_OK) return
-        if (.not. s%have_step) then
-            if (k == 0) ds = s%sy
-            if (k == 1) ds = s%sf0
-            return
-        end if
-        if (k == 0) then
-            l = lagrange(s%cf, x)
-            ds = s%sy_old
-        else
-            l = lagrange_d(s%cf, x)/s%hu
-        end if
-        do j = 1, 3
-            ds = ds + l(j)*s%zs_old(:, :, j)
-        end do
-    end subroutine radau_sens_dense
+        call collocation(s, x, k, s%n*s%ns, s%sy, s%sf0, s%sy_old, s%zs_old, ds)
+    end subroutine radau_sens_dense_at
 
     ! ------------------------------------------------------------------------------------
     ! The step
@@ -1123,33 +1089,35 @@ contains
         l(3) = ((x - cf%c(1))*(x - cf%c(2)) + x*(x - cf%c(2)) + x*(x - cf%c(1)))*cf%lag(3)
     end function lagrange_d
 
-    !> The collocation polynomial of the last step (or y at t before any step).
-    subroutine interpolate(s, t, k, dky, stat)
+    !> The collocation polynomial of the last step at x (dense_position), k = 0, or its
+    !! derivative, k = 1, for m values at once (the state's, or the sensitivities' n ns):
+    !! v_old + sum_j L_j(x) z_j, or sum_j L_j'(x) z_j/hu; before the first step the values
+    !! at t (k = 0) or their slope (k = 1).
+    pure subroutine collocation(s, x, k, m, v_now, f_now, v_old, z, v)
         type(radau_t), intent(in) :: s
-        real(dp), intent(in) :: t
-        integer, intent(in) :: k
-        real(dp), intent(out) :: dky(:)
-        type(status_t), intent(out) :: stat
-        real(dp) :: x, l(3)
+        real(dp), intent(in) :: x                   !! (t - t_old)/hu
+        integer, intent(in) :: k, m                 !! derivative (0 or 1), values
+        real(dp), intent(in) :: v_now(m), f_now(m)  !! the values at t and their slope
+        real(dp), intent(in) :: v_old(m)            !! the values at the last step's start
+        real(dp), intent(in) :: z(m, 3)             !! its stage increments
+        real(dp), intent(inout) :: v(m)             !! 0 on entry; the result
+        real(dp) :: l(3)
         integer :: j
-        dky = 0.0_dp
-        call dense_position(s, t, k, 'dense', x, stat)
-        if (stat%code /= STATUS_OK) return
         if (.not. s%have_step) then
-            if (k == 0) dky = s%y
-            if (k == 1) dky = s%f0
+            if (k == 0) v = v_now
+            if (k == 1) v = f_now
             return
         end if
         if (k == 0) then
             l = lagrange(s%cf, x)
-            dky = s%y_old
+            v = v_old
         else
             l = lagrange_d(s%cf, x)/s%hu
         end if
         do j = 1, 3
-            dky = dky + l(j)*s%z_old(:, j)
+            v = v + l(j)*z(:, j)
         end do
-    end subroutine interpolate
+    end subroutine collocation
 
     !> Where t lies in the last step, x = (t - t_old)/hu (0 before the first step, where
     !! only t = t0 is allowed), and the checks of dense output (k = 0 or 1, t in the step).
