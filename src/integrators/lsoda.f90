@@ -113,21 +113,17 @@ module lsoda
         logical :: opt_start_bdf = .false.          !! the first step by BDF
         logical :: opt_adams_only = .false.         !! Adams throughout, never BDF
         ! the Nordsieck array and the vectors of a step
-        real(dp), allocatable :: yh(:, :)   !! (n, LMAX_ALL) Nordsieck array: yh(:, j + 1) =
-                                            !! h^j y^(j)/j! at t (units of y)
+        real(dp), allocatable :: yh(:, :)   !! (n, 13) Nordsieck array: column j+1 is h^j y^(j)/j! at t
         real(dp), allocatable :: rewt(:)    !! (n) reciprocal error weights 1/(rtol |y| + atol)
         real(dp), allocatable :: y(:)       !! (n) the corrector's iterate at t (units of y)
         real(dp), allocatable :: savf(:)    !! (n) f at y (units of y per unit of t); scratch
-        real(dp), allocatable :: acor(:)    !! (n) the step's correction (units of y); after
-                                            !! an accepted step its local error estimate
+        real(dp), allocatable :: acor(:)    !! (n) the step's correction, then error estimate
         real(dp), allocatable :: ftem(:)    !! (n) f at a perturbed y (difference Jacobian)
-        real(dp), allocatable :: wm(:, :)   !! (n, n) P = I - h l0 J, then its LU factors
-                                            !! (1 x 1, unused, when the system solves with P)
+        real(dp), allocatable :: wm(:, :)   !! (n, n) or (1, 1): P = I - h l0 J, then LU factors
         integer, allocatable :: ipiv(:)     !! (n) the pivots of wm's factors
         ! the coefficients of the methods (set_coefficients) and of the current one
         real(dp) :: elco(LMAX_ALL, MAXORD_ADAMS, 2) = 0.0_dp  !! l_j (j, order, method)
-        real(dp) :: tesco(3, MAXORD_ADAMS, 2) = 0.0_dp    !! error-test divisors at orders
-                                                          !! q - 1, q, q + 1 (order, method)
+        real(dp) :: tesco(3, MAXORD_ADAMS, 2) = 0.0_dp    !! error divisors, orders q-1, q, q+1
         real(dp) :: cm1(MAXORD_ADAMS) = 0.0_dp  !! Adams l_(q+1) tesco(2, q) (switching test)
         real(dp) :: cm2(MAXORD_BDF) = 0.0_dp    !! BDF l_(q+1) tesco(2, q) (switching test)
         real(dp) :: el(LMAX_ALL) = 0.0_dp       !! l_j of the current method and order
@@ -141,8 +137,7 @@ module lsoda
         real(dp) :: conit = 0.0_dp      !! 0.5/(nq + 2): the corrector's test, per tesco(2)
         real(dp) :: rmax = 1.0e4_dp     !! largest factor of the next change of h
         ! the methods and their switching
-        real(dp) :: pdest = 0.0_dp      !! Lipschitz estimate of f from the Adams corrector's
-                                        !! rate on this step (per unit of t)
+        real(dp) :: pdest = 0.0_dp      !! Lipschitz estimate of f from the Adams corrector (1/t)
         real(dp) :: pdlast = 0.0_dp     !! the last nonzero pdest
         real(dp) :: pdnorm = 0.0_dp     !! weighted norm of J at the last P (per unit of t)
         integer :: nq = 1               !! order of the current step
@@ -158,8 +153,7 @@ module lsoda
         logical :: structured = .false. !! the system solves with P (has_iteration_solver)
         integer :: ialth = 2            !! steps until a change of order and h is considered
         integer :: icount = SWITCH_WAIT !! steps until the next test of a switch of method
-        integer :: irflag = 0           !! 1: the last change of h was held to Adams'
-                                        !! stability region
+        integer :: irflag = 0           !! 1: the last change of h was held by Adams' stability
         integer :: nslp = 0             !! nst when P was last formed
         integer :: jstart = JS_FIRST    !! what the next step is (JS_*)
         integer :: kflag = KF_OK        !! outcome of the last take_step (KF_*)

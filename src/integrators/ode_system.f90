@@ -142,15 +142,12 @@ module ode_system
         logical :: ready = .false.          !! init succeeded
         logical :: started = .false.        !! the direction and the first step size chosen
         integer :: n = 0                    !! size of the state
-        real(dp) :: rtol = 0.0_dp           !! relative tolerance of the error test (radau:
-                                            !! the transformed one, see its header)
+        real(dp) :: rtol = 0.0_dp           !! relative tolerance of the error test
         real(dp), allocatable :: atol(:)    !! (n) absolute tolerances of the error test
-                                            !! (units of y; radau: transformed)
         real(dp) :: t = 0.0_dp              !! time reached: the end of the last step
         real(dp) :: dir = 1.0_dp            !! direction of the integration, +1 or -1
         real(dp) :: h = 0.0_dp              !! step size to try next (signed, units of t)
-        real(dp) :: hu = 0.0_dp             !! size of the last step taken (signed; 0 before
-                                            !! the first): the last step is [t - hu, t]
+        real(dp) :: hu = 0.0_dp             !! the last step, [t - hu, t] (signed; 0 before)
         real(dp) :: h0_user = 0.0_dp        !! |h0| of init; 0: the integrator chooses it
         real(dp) :: hmax = huge(1.0_dp)     !! largest |h| (units of t)
         real(dp) :: tlast = 0.0_dp          !! time of integrate's last output
@@ -159,19 +156,15 @@ module ode_system
         integer :: max_steps = DEFAULT_MAX_STEPS    !! most steps in one call of integrate
         integer :: steps_call = 0           !! steps taken in this call of integrate or step
         integer :: nst = 0                  !! accepted steps since init
-        integer :: nfe = 0                  !! calls of sys%rhs (finite-difference Jacobians
-                                            !! included)
+        integer :: nfe = 0                  !! calls of sys%rhs (difference Jacobians included)
         integer :: nje = 0                  !! Jacobian evaluations
         integer :: nlu = 0                  !! LU factorisations of the iteration matrix
-        integer :: ncfn = 0                 !! step attempts rejected: the corrector did not
-                                            !! converge (or its matrix was singular)
+        integer :: ncfn = 0                 !! step attempts rejected: corrector not converged
         integer :: netf = 0                 !! step attempts rejected by the local error test
         integer :: ns = 0                   !! forward sensitivities: their number (0: none)
         logical :: sens_errcon = .false.    !! they take part in the error test
-        real(dp), allocatable :: satol(:, :)    !! (n, ns) their absolute tolerances (units
-                                                !! of y per unit of the parameter)
-        integer :: nsp = 0                  !! points where their terms were taken
-                                            !! (sens_point)
+        real(dp), allocatable :: satol(:, :)    !! (n, ns) their absolute tolerances
+        integer :: nsp = 0                  !! points where their terms were taken (sens_point)
         integer :: nsit = 0                 !! iterations of their corrector
         integer :: nsdir = 0                !! their direct solves (a new matrix factored)
     contains

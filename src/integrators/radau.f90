@@ -109,15 +109,13 @@ module radau
     type, extends(integrator_t), public :: radau_t
         private
         type(radau_coeffs_t) :: cf              !! the method's coefficients
-        real(dp) :: fnewt = 0.0_dp              !! the Newton iteration's threshold (in the
-                                                !! scaled norm)
+        real(dp) :: fnewt = 0.0_dp              !! the Newton iteration's threshold (scaled norm)
         real(dp), allocatable :: y(:)           !! (n) the solution at t (units of y)
         real(dp), allocatable :: f0(:)          !! (n) f(t, y) (units of y per unit of t)
         ! the last accepted step [t_old, t] (its size is hu)
         real(dp) :: t_old = 0.0_dp              !! its start
         real(dp), allocatable :: y_old(:)       !! (n) the solution at its start
         real(dp), allocatable :: z_old(:, :)    !! (n, 3) its stage increments Y_i - y_old
-                                                !! (dense output, the next starting values)
         logical :: have_step = .false.          !! a step has been accepted since init
         ! the Jacobian and the factors
         real(dp), allocatable :: jac(:, :)      !! (n, n) J (per unit of t)
@@ -141,8 +139,7 @@ module radau
         real(dp), allocatable :: sy(:, :)       !! (n, ns) the sensitivities at t
         real(dp), allocatable :: sy_old(:, :)   !! (n, ns) at the last step's start
         real(dp), allocatable :: zs_old(:, :, :)    !! (n, ns, 3) its stage increments
-        real(dp), allocatable :: sf0(:, :)      !! (n, ns) their slope at t (the error
-                                                !! estimate, in the error control)
+        real(dp), allocatable :: sf0(:, :)      !! (n, ns) their slope at t (error control only)
     contains
         procedure :: init => radau_init
         procedure :: dense_at => radau_dense_at
