@@ -113,7 +113,7 @@ module lsoda
         logical :: opt_start_bdf = .false.          !! the first step by BDF
         logical :: opt_adams_only = .false.         !! Adams throughout, never BDF
         ! the Nordsieck array and the vectors of a step
-        real(dp), allocatable :: yh(:, :)   !! (n, 13) Nordsieck array: column j+1 is h^j y^(j)/j! at t
+        real(dp), allocatable :: yh(:, :)   !! (n, 13) Nordsieck array: column j+1 h^j y^(j)/j! at t
         real(dp), allocatable :: rewt(:)    !! (n) reciprocal error weights 1/(rtol |y| + atol)
         real(dp), allocatable :: y(:)       !! (n) the corrector's iterate at t (units of y)
         real(dp), allocatable :: savf(:)    !! (n) f at y (units of y per unit of t); scratch

@@ -53,7 +53,13 @@
 !!   polynomial their dense output.  They take part in the error estimate only when asked
 !!   (error_control), through the same embedded formula.
 !!
-!! All state lives in a `radau_t` object, so independent integrations can be interleaved.
+!! The code: integrate and step are integrator_t's (module ode_system); this module gives
+!! them the first step size (radau_start) and one accepted step (radau_one_step: the
+!! Jacobian and the factors, the stage equations by newton, the error estimate, then the
+!! step accepted or retried), and the dense output of the collocation polynomial.
+!!
+!! All state lives in a `radau_t` object (with what every integrator keeps, its
+!! integrator_t part), so independent integrations can be interleaved.
 !! No routine stops the program: every failure is returned in a status_t with one of the
 !! RADAU_ERR_* codes (or the code the right-hand side returned) and a message naming the
 !! cause and the time reached; the solution up to the failure is kept.
