@@ -88,8 +88,8 @@ contains
                     'paper''s model, slack', run_elastic_tests), &
             suite_t('elastic_jac', 'the elastic model''s analytic Jacobian against '// &
                     'central differences', run_elastic_jac_tests), &
-            suite_t('radau', 'Radau IIA: coefficients, a cubic, the standard problems, '// &
-                    'failures', run_radau_tests), &
+            suite_t('radau', 'Radau IIA: coefficients, a cubic, standard problems, '// &
+                    'failures; shared checks', run_radau_tests), &
             suite_t('elastic_radau', 'elastic cables in generalized coordinates by '// &
                     'Radau IIA, against CVODE', run_elastic_radau_tests), &
             suite_t('robust', 'daily use through the executable: several decks, --out, '// &

@@ -1,13 +1,17 @@
 !> Tests of module radau (Radau IIA of order 5): its coefficients against the published
 !! values, exactness of the collocation polynomial, the seven standard problems of the
 !! anchors (shared/reference/integrator), a lightly damped stiff oscillation beside a slow
-!! forced mode, and the failure paths.
+!! forced mode, and the failure paths; the argument checks integrator_t makes for both
+!! integrators, LSODA's and Radau's alike.
 module test_radau
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK
-    use ode_system, only: ode_system_t, integrator_stats_t
+    use ode_system, only: ode_system_t, integrator_t, integrator_stats_t
     use radau, only: radau_t, radau_coeffs_t, radau_coefficients
-    use status, only: RADAU_ERR_ILLEGAL_INPUT, RADAU_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_MAX_STEPS
+    use integrators, only: new_integrator, SOLVER_LSODA, SOLVER_RADAU
+    use status, only: RADAU_ERR_ILLEGAL_INPUT, RADAU_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_MAX_STEPS, &
+        LSODA_ERR_ILLEGAL_INPUT, LSODA_ERR_MAX_STEPS
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
     use test_lsoda, only: bench_problem, scaled_error, NBENCH, BENCH_NAMES
     use testing, only: tester_t
     implicit none
@@ -66,6 +70,8 @@ contains
         if (t%want('radau: lightly damped stiff oscillation beside a slow forced mode')) &
             call test_stiff_oscillation(t)
         if (t%want('radau: failures and input checks')) call test_failures(t)
+        if (t%want('radau: integrator_t''s checks, the same for LSODA and Radau')) &
+            call test_shared_checks(t)
     end subroutine run_radau_tests
 
     ! ---------------------------------------------------------------------------------------
@@ -408,5 +414,95 @@ contains
                            0.5_dp*(cos(1.0_dp) + sin(1.0_dp)) + 0.5_dp*exp(-1.0_dp), &
                            rtol=1.0e-7_dp)
     end subroutine test_failures
+
+    !> The checks integrator_t makes for every integrator, through class(integrator_t) as a
+    !! driver holds it: each refusal with the integrator's own code and a message that
+    !! starts with its name, the same for LSODA and Radau.
+    subroutine test_shared_checks(t)
+        type(tester_t), intent(inout) :: t
+        class(integrator_t), allocatable :: s
+        type(guard_t) :: g
+        type(status_t) :: stat
+        type(integrator_stats_t) :: st
+        real(dp) :: y(1), y2(2), ds(1, 1), inf
+        integer :: m, bad, too_many
+        character(len=5) :: nm
+        inf = ieee_value(1.0_dp, ieee_positive_inf)
+        do m = 1, 2
+            if (m == 1) then
+                call new_integrator(SOLVER_LSODA, s)
+                nm = 'lsoda'
+                bad = LSODA_ERR_ILLEGAL_INPUT
+                too_many = LSODA_ERR_MAX_STEPS
+            else
+                call new_integrator(SOLVER_RADAU, s)
+                nm = 'radau'
+                bad = RADAU_ERR_ILLEGAL_INPUT
+                too_many = RADAU_ERR_MAX_STEPS
+            end if
+            call t%check(nm//': name', s%name() == nm)
+            y = 7.0_dp
+            call s%integrate(g, 1.0_dp, y, stat)
+            call t%check(nm//': integrate before init refused, y = 0', stat%code == bad .and. &
+                         y(1) == 0.0_dp .and. index(stat%msg, nm//' integrate') == 1)
+            call s%step(g, stat)
+            call t%check(nm//': step before init refused', stat%code == bad)
+            call s%init(g, 0.0_dp, [real(dp) ::], 1.0e-6_dp, [1.0e-8_dp], stat)
+            call t%check(nm//': an empty state refused', stat%code == bad .and. &
+                         index(stat%msg, nm//' init') == 1)
+            call s%init(g, 0.0_dp, [1.0_dp], 1.0e-6_dp, [1.0e-8_dp, 1.0e-8_dp], stat)
+            call t%check(nm//': atol of the wrong size refused', stat%code == bad)
+            call s%init(g, 0.0_dp, [1.0_dp], 1.0e-6_dp, [-1.0e-8_dp], stat)
+            call t%check(nm//': a negative atol refused', stat%code == bad)
+            call s%init(g, 0.0_dp, [1.0_dp], 1.0e-6_dp, [inf], stat)
+            call t%check(nm//': an infinite atol refused', stat%code == bad)
+            call s%init(g, 0.0_dp, [1.0_dp], 1.0e-6_dp, [1.0e-8_dp], stat, hmax=0.0_dp)
+            call t%check(nm//': hmax = 0 refused', stat%code == bad)
+            call s%init(g, 0.0_dp, [1.0_dp], 1.0e-6_dp, [1.0e-8_dp], stat, max_steps=0)
+            call t%check(nm//': max_steps = 0 refused', stat%code == bad)
+            ! a good start, then calls out of order or of the wrong shape
+            call s%init(g, 0.0_dp, [1.0_dp], 1.0e-8_dp, [1.0e-10_dp], stat)
+            call t%check(nm//': init', stat%code == STATUS_OK)
+            call s%dense(0.0_dp, 0, y2, stat)
+            call t%check(nm//': dense with the wrong size refused', stat%code == bad)
+            call s%sens_dense(0.0_dp, 0, ds, stat)
+            call t%check(nm//': sens_dense without sensitivities refused', stat%code == bad)
+            call s%integrate(g, 1.0_dp, y, stat)
+            call t%check_close(nm//': y(1) of y'' = -y + cos t', y(1), &
+                               0.5_dp*(cos(1.0_dp) + sin(1.0_dp)) + 0.5_dp*exp(-1.0_dp), &
+                               rtol=1.0e-6_dp)
+            call s%sens_init(g, reshape([1.0_dp], [1, 1]), stat)
+            call t%check(nm//': sens_init after the start refused', stat%code == bad .and. &
+                         index(stat%msg, nm//' sens_init') == 1)
+            call s%integrate(g, 0.5_dp, y, stat)
+            call t%check(nm//': tout behind the last output refused', stat%code == bad)
+            st = s%stats()
+            call s%dense(st%t_current + 10.0_dp*abs(st%h_last), 0, y, stat)
+            call t%check(nm//': dense outside the last step refused', stat%code == bad)
+            call s%set_tcrit(0.5_dp, stat)
+            call t%check(nm//': tcrit behind the time reached refused', stat%code == bad)
+            call s%integrate(g, 2.0_dp, y, stat)
+            call t%check(nm//': ... and the old setting (none) kept', stat%code == STATUS_OK)
+            ! max_steps, and a step from tcrit
+            call s%init(g, 0.0_dp, [1.0_dp], 1.0e-8_dp, [1.0e-10_dp], stat, max_steps=3, &
+                        hmax=0.01_dp)
+            call s%integrate(g, 1.0_dp, y, stat)
+            st = s%stats()
+            call t%check(nm//': max_steps stops integrate after max_steps steps', &
+                         stat%code == too_many .and. st%steps == 3 .and. &
+                         index(stat%msg, nm//':') == 1)
+            call s%init(g, 0.0_dp, [1.0_dp], 1.0e-8_dp, [1.0e-10_dp], stat, tcrit=0.0_dp)
+            call s%step(g, stat)
+            call t%check(nm//': a first step from tcrit refused', stat%code == bad)
+            call s%init(g, 0.0_dp, [1.0_dp], 1.0e-8_dp, [1.0e-10_dp], stat, tcrit=0.25_dp)
+            call s%integrate(g, 0.25_dp, y, stat)
+            st = s%stats()
+            call t%check(nm//': integrate to tcrit reaches it', stat%code == STATUS_OK .and. &
+                         st%t_current == 0.25_dp)
+            call s%step(g, stat)
+            call t%check(nm//': a step from tcrit refused', stat%code == bad)
+            deallocate (s)
+        end do
+    end subroutine test_shared_checks
 
 end module test_radau

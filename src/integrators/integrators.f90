@@ -1,6 +1,6 @@
 !> The choice of integrator: which one a run uses, and making it.  Every integration of the
 !! program is made here (new_integrator) and driven through the interface of module
-!! integrator, so every analysis honours &integration method the same way.
+!! ode_system (integrator_t), so every analysis honours &integration method the same way.
 module integrators
     use ode_system, only: integrator_t
     use lsoda, only: lsoda_t

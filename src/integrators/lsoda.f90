@@ -38,7 +38,16 @@
 !!   sensitivities do not change the state's steps unless they are asked into the error test
 !!   (error_control): then the step's error norm and the order selection include theirs.
 !!
-!! All state lives in a `lsoda_t` object, so independent integrations can be interleaved.
+!! The code: a step (take_step) is its named parts: begin_step (the step's start after the
+!! first step, a switch of method or a change of h by the driver), predict, correct (the
+!! corrector), error_estimate (the local error test), accept or a retry
+!! (retry_after_convergence_failure, retry_after_error_test), consider_switch (the switch
+!! of method) and choose_next with choose_order (the order and h of the next step).
+!! integrate and step are integrator_t's (module ode_system): this module gives them the
+!! first step size (lsoda_start) and one accepted step with its checks (lsoda_one_step).
+!!
+!! All state lives in a `lsoda_t` object (with what every integrator keeps, its
+!! integrator_t part), so independent integrations can be interleaved.
 !! No routine stops the program: every failure is returned in a status_t with one of the
 !! LSODA_ERR_* codes (or the code the right-hand side returned) and a message naming the
 !! cause and the time reached; the solution up to the failure is kept.
@@ -47,8 +56,8 @@ module lsoda
     use status, only: status_t, set_error, STATUS_OK, LSODA_ERR_MAX_STEPS, &
         LSODA_ERR_TOO_MUCH_ACCURACY, LSODA_ERR_ERROR_TEST, LSODA_ERR_CONVERGENCE, &
         LSODA_ERR_ILLEGAL_INPUT, LSODA_ERR_SINGULAR
-    use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, sens_init_args, &
-        METHOD_ADAMS, METHOD_BDF
+    use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, integrator_id_t, &
+        common_stats, METHOD_ADAMS, METHOD_BDF
     use lapack_wrap, only: la_lu_factor, la_lu_solve, la_small_lu_solve, la_small_inverse
     implicit none
     private
@@ -70,88 +79,121 @@ module lsoda
     integer, parameter :: MXNEF = 10               !! error-test failures per step
     integer, parameter :: SWITCH_WAIT = 20         !! steps after a switch before the next test
     real(dp), parameter :: SWITCH_RATIO = 5.0_dp   !! cost ratio of a BDF to an Adams step
-    integer, parameter :: DEFAULT_MAX_STEPS = 500000
+    real(dp), parameter :: HMIN = 0.0_dp           !! smallest |h| (LSODA's HMIN; none here)
     integer, parameter :: SENS_MAXIT = 4           !! sensitivity corrector iterations
     real(dp), parameter :: SENS_CONV = 0.5_dp      !! their test: this part of the state's
     real(dp), parameter :: SENS_CONV_EC = 0.1_dp   !! the same in the error control (Adams)
 
-    ! internal outcome of one call of take_step
+    ! outcome of one call of take_step (kflag); below KF_OK while retrying, the number of
+    ! error-test failures of the step so far, negated
     integer, parameter :: KF_OK = 0, KF_ERRTEST = -1, KF_CONV = -2, KF_SINGULAR = -3, &
         KF_FATAL = -4
+    ! what the jstart of a step says (LSODA's JSTART)
+    integer, parameter :: JS_FIRST = 0            !! the first step: order 1, new coefficients
+    integer, parameter :: JS_GOING = 1            !! a step after an accepted one
+    integer, parameter :: JS_SWITCHED = -1        !! the method switched on the last step
+    integer, parameter :: JS_NEW_H = -2           !! h changed by the driver (tcrit)
+    ! outcome of the corrector (correct)
+    integer, parameter :: CORR_CONVERGED = 0      !! the iteration converged
+    integer, parameter :: CORR_DIVERGED = 1       !! it did not, in MAXCOR iterations
+    integer, parameter :: CORR_SINGULAR = 2       !! P is singular
+    integer, parameter :: CORR_UNSOLVED = 3       !! the solve with P failed
+    integer, parameter :: CORR_FATAL = 4          !! f or J failed (the step is undone)
 
-
-    !> One integration: the Nordsieck array, method state, work arrays and counters.
+    !> One integration by LSODA: its options, the Nordsieck arrays of the state and of the
+    !! sensitivities, the methods' coefficients, the step's and the method's state, the
+    !! iteration matrices and the work vectors (what every integrator keeps, as t, h, the
+    !! tolerances and the counters, is integrator_t's).  Where ODEPACK's LSODA has a name
+    !! for a quantity, it is kept.
     type, extends(integrator_t), public :: lsoda_t
         private
-        ! options of the next init (set_options)
-        integer :: opt_order_adams = MAXORD_ADAMS, opt_order_bdf = MAXORD_BDF
-        logical :: opt_start_bdf = .false., opt_adams_only = .false.
-        logical :: ready = .false.      ! init succeeded
-        logical :: started = .false.    ! initial step size chosen
-        integer :: n = 0
-        real(dp) :: rtol = 0.0_dp
-        real(dp), allocatable :: atol(:)
-        real(dp), allocatable :: yh(:, :)      ! Nordsieck array: yh(:,j+1) = h**j y^(j)/j!
-        real(dp), allocatable :: rewt(:)       ! reciprocal error weights 1/(rtol|y|+atol)
-        real(dp), allocatable :: y(:), savf(:), acor(:), ftem(:)
-        real(dp), allocatable :: wm(:, :)      ! iteration matrix / its LU factors
-        integer, allocatable :: ipiv(:)
-        real(dp) :: elco(LMAX_ALL, MAXORD_ADAMS, 2) = 0.0_dp
-        real(dp) :: tesco(3, MAXORD_ADAMS, 2) = 0.0_dp
-        real(dp) :: cm1(MAXORD_ADAMS) = 0.0_dp, cm2(MAXORD_BDF) = 0.0_dp
-        real(dp) :: el(LMAX_ALL) = 0.0_dp
-        real(dp) :: tn = 0.0_dp, told = 0.0_dp, tlast = 0.0_dp, dir = 1.0_dp
-        real(dp) :: h = 0.0_dp, hold = 0.0_dp, hu = 0.0_dp, h0_user = 0.0_dp
-        real(dp) :: hmin = 0.0_dp, hmxi = 0.0_dp
-        real(dp) :: tcrit = 0.0_dp
-        logical :: have_tcrit = .false.
-        real(dp) :: rc = 0.0_dp, el0 = 1.0_dp, crate = 0.7_dp, conit = 0.0_dp, rmax = 1.0e4_dp
-        real(dp) :: pdest = 0.0_dp, pdlast = 0.0_dp, pdnorm = 0.0_dp, tsw = 0.0_dp
-        integer :: nq = 1, l = 2, lmax = 13, meth = METHOD_ADAMS, mused = 0, nqu = 0
-        integer :: meth0 = METHOD_ADAMS        ! method of the first step
-        logical :: adams_only = .false.        ! never switch to BDF
-        logical :: structured = .false.        ! the system solves with P (has_iteration_solver)
-        integer :: ialth = 2, icount = SWITCH_WAIT, irflag = 0, nslp = 0, jstart = 0
-        integer :: kflag = 0
-        logical :: ipup = .false., jcur = .false.
-        integer :: mxordn = MAXORD_ADAMS, mxords = MAXORD_BDF
-        integer :: max_steps = DEFAULT_MAX_STEPS
-        integer :: nst = 0, nfe = 0, nje = 0, nlu = 0, nswitch = 0, steps_call = 0
-        integer :: ncfn = 0, netf = 0
+        ! the options of the next init (set_options)
+        integer :: opt_order_adams = MAXORD_ADAMS   !! highest Adams order asked for
+        integer :: opt_order_bdf = MAXORD_BDF       !! highest BDF order asked for
+        logical :: opt_start_bdf = .false.          !! the first step by BDF
+        logical :: opt_adams_only = .false.         !! Adams throughout, never BDF
+        ! the Nordsieck array and the vectors of a step
+        real(dp), allocatable :: yh(:, :)   !! (n, 13) Nordsieck array: column j+1 h^j y^(j)/j! at t
+        real(dp), allocatable :: rewt(:)    !! (n) reciprocal error weights 1/(rtol |y| + atol)
+        real(dp), allocatable :: y(:)       !! (n) the corrector's iterate at t (units of y)
+        real(dp), allocatable :: savf(:)    !! (n) f at y (units of y per unit of t); scratch
+        real(dp), allocatable :: acor(:)    !! (n) the step's correction, then error estimate
+        real(dp), allocatable :: ftem(:)    !! (n) f at a perturbed y (difference Jacobian)
+        real(dp), allocatable :: wm(:, :)   !! (n, n) or (1, 1): P = I - h l0 J, then LU factors
+        integer, allocatable :: ipiv(:)     !! (n) the pivots of wm's factors
+        ! the coefficients of the methods (set_coefficients) and of the current one
+        real(dp) :: elco(LMAX_ALL, MAXORD_ADAMS, 2) = 0.0_dp  !! l_j (j, order, method)
+        real(dp) :: tesco(3, MAXORD_ADAMS, 2) = 0.0_dp    !! error divisors, orders q-1, q, q+1
+        real(dp) :: cm1(MAXORD_ADAMS) = 0.0_dp  !! Adams l_(q+1) tesco(2, q) (switching test)
+        real(dp) :: cm2(MAXORD_BDF) = 0.0_dp    !! BDF l_(q+1) tesco(2, q) (switching test)
+        real(dp) :: el(LMAX_ALL) = 0.0_dp       !! l_j of the current method and order
+        ! the step
+        real(dp) :: told = 0.0_dp       !! t at the start of the step (restored on a retry)
+        real(dp) :: hold = 0.0_dp       !! the h yh is scaled to (units of t)
+        real(dp) :: hmxi = 0.0_dp       !! 1/hmax, 0 without hmax (per unit of t)
+        real(dp) :: rc = 0.0_dp         !! h l0 over the h l0 of P (P rebuilt beyond 1 +- CCMAX)
+        real(dp) :: el0 = 1.0_dp        !! l0 when rc was last brought up to date
+        real(dp) :: crate = 0.7_dp      !! the corrector's estimated rate of convergence
+        real(dp) :: conit = 0.0_dp      !! 0.5/(nq + 2): the corrector's test, per tesco(2)
+        real(dp) :: rmax = 1.0e4_dp     !! largest factor of the next change of h
+        ! the methods and their switching
+        real(dp) :: pdest = 0.0_dp      !! Lipschitz estimate of f from the Adams corrector (1/t)
+        real(dp) :: pdlast = 0.0_dp     !! the last nonzero pdest
+        real(dp) :: pdnorm = 0.0_dp     !! weighted norm of J at the last P (per unit of t)
+        integer :: nq = 1               !! order of the current step
+        integer :: l = 2                !! nq + 1: the columns of yh in use
+        integer :: lmax = 13            !! highest order of the current method + 1
+        integer :: meth = METHOD_ADAMS  !! method of the current step (METHOD_ADAMS, _BDF)
+        integer :: mused = 0            !! method of the last accepted step (0 before it)
+        integer :: nqu = 0              !! order of the last accepted step (0 before it)
+        integer :: meth0 = METHOD_ADAMS !! method of the first step
+        integer :: mxordn = MAXORD_ADAMS    !! highest Adams order of this integration
+        integer :: mxords = MAXORD_BDF      !! highest BDF order of this integration
+        logical :: adams_only = .false. !! never switch to BDF
+        logical :: structured = .false. !! the system solves with P (has_iteration_solver)
+        integer :: ialth = 2            !! steps until a change of order and h is considered
+        integer :: icount = SWITCH_WAIT !! steps until the next test of a switch of method
+        integer :: irflag = 0           !! 1: the last change of h was held by Adams' stability
+        integer :: nslp = 0             !! nst when P was last formed
+        integer :: jstart = JS_FIRST    !! what the next step is (JS_*)
+        integer :: kflag = KF_OK        !! outcome of the last take_step (KF_*)
+        logical :: ipup = .false.       !! P is to be formed anew before the corrector
+        logical :: jcur = .false.       !! J was formed at this step's predicted point
+        integer :: nswitch = 0          !! switches of method since init
         ! forward sensitivities (sens_init): ns columns of n, one vector of n ns
-        integer :: ns = 0, nsn = 0
-        logical :: sens_errcon = .false.       ! in the error test
-        real(dp), allocatable :: zh(:, :)      ! their Nordsieck array (nsn, LMAX_ALL)
-        real(dp), allocatable :: satol(:), srewt(:), sacor(:)
-        real(dp), allocatable :: sdfdp(:, :)   ! df/dp at the step's point (n, ns)
-        ! sens_correct's work vectors of n ns (the n x ns columns one after another, as zh's):
-        ! right-hand side b, change d, products J v
-        real(dp), allocatable :: sb(:), sd(:), sjv(:)
-        real(dp), allocatable :: sjm(:, :)     ! the sensitivities' own matrix I - h l0 J
-        real(dp), allocatable :: sinv(:, :)    ! its inverse (the solves of all columns at once)
-        real(dp) :: shl0 = 0.0_dp              ! its h l0
-        integer :: snslp = 0                   ! the step it was formed at
-        logical :: shave = .false.             ! it is formed
-        integer :: nsp = 0, nsit = 0, nsdir = 0
-        real(dp) :: scrate = 0.7_dp            ! their iteration's convergence rate
+        integer :: nsn = 0                     !! n ns
+        real(dp), allocatable :: zh(:, :)      !! (nsn, LMAX_ALL) their Nordsieck array
+        real(dp), allocatable :: srewt(:)      !! (nsn) their reciprocal error weights
+        real(dp), allocatable :: sacor(:)      !! (nsn) their correction (as acor)
+        real(dp), allocatable :: sdfdp(:, :)   !! (n, ns) df/dp at the step's point
+        real(dp), allocatable :: sb(:)         !! (nsn) sens_correct's right-hand side
+        real(dp), allocatable :: sd(:)         !! (nsn) sens_correct's change of the iterate
+        real(dp), allocatable :: sjv(:)        !! (nsn) products J v
+        real(dp), allocatable :: sjm(:, :)     !! (n, n) their own matrix I - h l0 J
+        real(dp), allocatable :: sinv(:, :)    !! (n, n) its inverse (all columns at once)
+        real(dp) :: shl0 = 0.0_dp              !! the h l0 of sjm (units of t)
+        integer :: snslp = 0                   !! nst when sjm was formed
+        logical :: shave = .false.             !! sjm is formed
+        real(dp) :: scrate = 0.7_dp            !! their iteration's rate of convergence
     contains
         procedure :: init => lsoda_init
-        procedure :: integrate => lsoda_integrate
-        procedure :: step => lsoda_step
-        procedure :: dense => lsoda_dense
+        procedure :: dense_at => lsoda_dense_at
         procedure :: stats => lsoda_get_stats
-        procedure :: set_tcrit => lsoda_set_tcrit
-        procedure :: name => lsoda_name
         procedure :: set_options => lsoda_set_options
         procedure :: sens_init => lsoda_sens_init
-        procedure :: sens_dense => lsoda_sens_dense
+        procedure :: sens_dense_at => lsoda_sens_dense_at
         procedure :: sens_dense_dot => lsoda_sens_dense_dot
+        procedure :: start => lsoda_start
+        procedure :: one_step => lsoda_one_step
+        procedure :: solution => lsoda_solution
+        procedure :: at_tcrit => lsoda_at_tcrit
+        procedure :: identity => lsoda_identity
     end type lsoda_t
 
 contains
 
     ! ------------------------------------------------------------------------------------
-    ! Public routines
+    ! Public routines (integrate, step and set_tcrit are integrator_t's)
     ! ------------------------------------------------------------------------------------
 
     !> Start an integration at (t0, y0).
@@ -160,8 +202,8 @@ contains
     !! t0        [in]  initial time (units of the problem's independent variable).
     !! y0        [in]  initial state, size n >= 1.
     !! rtol      [in]  relative tolerance, >= 0.
-    !! atol      [in]  absolute tolerance, size 1 (same for all components) or n, each >= 0.
-    !!                 Error weights w_i = rtol*|y_i| + atol_i must stay > 0.
+    !! atol      [in]  absolute tolerance, size 1 (same for all components) or n, each >= 0
+    !!                 and finite.  Error weights w_i = rtol*|y_i| + atol_i must stay > 0.
     !! stat      [out] STATUS_OK; LSODA_ERR_ILLEGAL_INPUT for bad arguments; or the code
     !!                 the right-hand side returned.
     !! tcrit     [in, optional] time the integration must never step past.
@@ -185,26 +227,12 @@ contains
         integer :: n, nwm
         character(len=120) :: buf
 
-        s%ready = .false.
-        s%started = .false.
         n = size(y0)
-        if (n < 1) then
-            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda init: empty state vector')
-            return
-        end if
+        call s%init_common(t0, n, atol, stat, tcrit, h0, hmax, max_steps)
+        if (stat%code /= STATUS_OK) return
         if (.not. (rtol >= 0.0_dp)) then
             write (buf, '(a,es11.3e3,a)') 'lsoda init: rtol = ', rtol, ' is negative'
             call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
-            return
-        end if
-        if (size(atol) /= 1 .and. size(atol) /= n) then
-            write (buf, '(a,i0,a,i0)') 'lsoda init: size(atol) = ', size(atol), &
-                ' must be 1 or n = ', n
-            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
-            return
-        end if
-        if (.not. all(atol >= 0.0_dp)) then
-            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda init: atol has a negative entry')
             return
         end if
         s%mxordn = s%opt_order_adams
@@ -215,35 +243,17 @@ contains
                 'be in 1..12 and max_order_bdf in 1..5')
             return
         end if
-        s%hmxi = 0.0_dp
-        if (present(hmax)) then
-            if (.not. (hmax > 0.0_dp)) then
-                call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda init: hmax must be > 0')
-                return
-            end if
-            s%hmxi = 1.0_dp/hmax
+        s%meth0 = merge(METHOD_BDF, METHOD_ADAMS, s%opt_start_bdf)
+        s%adams_only = s%opt_adams_only
+        if (s%adams_only .and. s%meth0 == METHOD_BDF) then
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda init: start_bdf and '// &
+                'nonstiff_only exclude each other')
+            return
         end if
-        s%max_steps = DEFAULT_MAX_STEPS
-        if (present(max_steps)) then
-            if (max_steps < 1) then
-                call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda init: max_steps must be >= 1')
-                return
-            end if
-            s%max_steps = max_steps
-        end if
-        s%h0_user = 0.0_dp
-        if (present(h0)) s%h0_user = abs(h0)
-        s%have_tcrit = present(tcrit)
-        if (present(tcrit)) s%tcrit = tcrit
-
-        s%n = n
         s%rtol = rtol
-        call realloc_vec(s%atol, n)
-        if (size(atol) == 1) then
-            s%atol = atol(1)
-        else
-            s%atol = atol
-        end if
+        s%hmxi = 0.0_dp
+        if (present(hmax)) s%hmxi = 1.0_dp/hmax
+
         if (allocated(s%yh)) then
             if (size(s%yh, 1) /= n) deallocate (s%yh)
         end if
@@ -272,243 +282,53 @@ contains
 
         call set_coefficients(s%elco, s%tesco, s%cm1, s%cm2)
 
-        s%tn = t0
         s%told = t0
-        s%tlast = t0
-        s%dir = 1.0_dp
-        s%h = 0.0_dp
         s%hold = 0.0_dp
-        s%hu = 0.0_dp
-        s%hmin = 0.0_dp
         s%nq = 1
         s%l = 2
-        s%meth0 = merge(METHOD_BDF, METHOD_ADAMS, s%opt_start_bdf)
-        s%adams_only = s%opt_adams_only
-        if (s%adams_only .and. s%meth0 == METHOD_BDF) then
-            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda init: start_bdf and '// &
-                'nonstiff_only exclude each other')
-            return
-        end if
         s%meth = s%meth0
         s%mused = 0
         s%nqu = 0
-        s%jstart = 0
-        s%kflag = 0
-        s%nst = 0
-        s%nfe = 0
-        s%nje = 0
-        s%nlu = 0
-        s%ncfn = 0
-        s%netf = 0
+        s%jstart = JS_FIRST
+        s%kflag = KF_OK
         s%nswitch = 0
-        s%steps_call = 0
-        s%tsw = t0
         s%pdnorm = 0.0_dp
-        s%ns = 0
         s%nsn = 0
-        s%nsp = 0
-        s%nsit = 0
-        s%nsdir = 0
 
         s%yh(:, 1) = y0
         s%y = y0
-        call sys%rhs(t0, s%y, s%savf, stat)
-        s%nfe = 1
-        if (stat%code /= STATUS_OK) then
-            call prefix_time(stat, t0)
-            return
-        end if
+        call s%start_rhs(sys, s%y, s%savf, stat)
+        if (stat%code /= STATUS_OK) return
         s%yh(:, 2) = s%savf     ! f(t0,y0); scaled by h0 when the first step size is known
         s%ready = .true.
     end subroutine lsoda_init
 
-    !> Advance the solution to tout and return y(tout).
-    !!
-    !! Steps past tout (never past tcrit) and interpolates back.  tout may lie anywhere
-    !! ahead of the last output time in the direction of integration (the direction is
-    !! fixed by the first call).
-    !!
-    !! sys  [in,out] the right-hand side.
-    !! tout [in]  output time.
-    !! y    [out] size n: the solution at tout; on failure the solution at the time reached
-    !!            (stats()%t_current).
-    !! stat [out] STATUS_OK; LSODA_ERR_MAX_STEPS (max_steps steps in this call),
-    !!            LSODA_ERR_TOO_MUCH_ACCURACY, LSODA_ERR_ERROR_TEST, LSODA_ERR_CONVERGENCE,
-    !!            LSODA_ERR_SINGULAR, LSODA_ERR_ILLEGAL_INPUT (no init, size(y) /= n, tout
-    !!            behind the last output, tcrit behind tout), or the right-hand side's own
-    !!            code with its message prefixed by the time reached.
-    subroutine lsoda_integrate(s, sys, tout, y, stat)
-        class(lsoda_t), intent(inout) :: s
-        class(ode_system_t), intent(inout) :: sys
-        real(dp), intent(in) :: tout
-        real(dp), intent(out) :: y(:)
-        type(status_t), intent(out) :: stat
-        type(status_t) :: dst
-        character(len=160) :: buf
-
-        if (.not. s%ready) then
-            y = 0.0_dp
-            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda integrate: solver not initialised')
-            return
-        end if
-        if (size(y) /= s%n) then
-            y = 0.0_dp
-            write (buf, '(a,i0,a,i0)') 'lsoda integrate: size(y) = ', size(y), ' but n = ', s%n
-            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
-            return
-        end if
-        y = s%yh(:, 1)
-        if (.not. s%started) then
-            if (tout == s%tn) then
-                s%tlast = tout
-                return
-            end if
-            s%dir = sign(1.0_dp, tout - s%tn)
-        else if ((tout - s%tlast)*s%dir < 0.0_dp) then
-            write (buf, '(a,es13.5e3,a,es13.5e3,a)') 'lsoda integrate: tout = ', tout, &
-                ' is behind the last output time ', s%tlast, ' in the direction of integration'
-            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
-            return
-        end if
-        if (s%have_tcrit) then
-            if ((s%tcrit - tout)*s%dir < 0.0_dp) then
-                write (buf, '(a,es13.5e3,a,es13.5e3)') 'lsoda integrate: tcrit = ', s%tcrit, &
-                    ' is behind tout = ', tout
-                call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
-                return
-            end if
-        end if
-        if (.not. s%started) then
-            call start_integration(s, tout, .true., stat)
-            if (stat%code /= STATUS_OK) return
-        end if
-
-        s%steps_call = 0
-        do
-            if ((s%tn - tout)*s%dir >= 0.0_dp) then
-                call interpolate(s, s%yh, s%n, tout, 0, y, dst)
-                if (dst%code /= STATUS_OK) then
-                    stat = dst
-                    y = s%yh(:, 1)
-                    return
-                end if
-                s%tlast = tout
-                return
-            end if
-            if (s%have_tcrit) then
-                if (at_tcrit(s)) then
-                    y = s%yh(:, 1)
-                    s%tlast = tout
-                    return
-                end if
-            end if
-            call one_step(s, sys, stat)
-            if (stat%code /= STATUS_OK) then
-                y = s%yh(:, 1)
-                return
-            end if
-        end do
-    end subroutine lsoda_integrate
-
-    !> Take exactly one internal step (never past tcrit).  After it, dense() gives the
-    !! solution anywhere in [t_current - h_last, t_current].
-    !!
-    !! sys  [in,out] the right-hand side.
-    !! stat [out] as for integrate; LSODA_ERR_ILLEGAL_INPUT also when the integration
-    !!            already stands at tcrit.
-    !! tout [in, optional] only used before the first step: a time the caller wants to
-    !!            reach (fixes the direction and scales the first step size); without it
-    !!            the direction is towards tcrit if set, else forward.
-    subroutine lsoda_step(s, sys, stat, tout)
-        class(lsoda_t), intent(inout) :: s
-        class(ode_system_t), intent(inout) :: sys
-        type(status_t), intent(out) :: stat
-        real(dp), intent(in), optional :: tout
-        real(dp) :: th
-        logical :: have
-
-        if (.not. s%ready) then
-            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda step: solver not initialised')
-            return
-        end if
-        if (.not. s%started) then
-            have = .false.
-            th = s%tn
-            if (present(tout)) then
-                if (tout /= s%tn) then
-                    have = .true.
-                    th = tout
-                end if
-            end if
-            if (.not. have .and. s%have_tcrit) then
-                if (s%tcrit /= s%tn) then
-                    have = .true.
-                    th = s%tcrit
-                end if
-            end if
-            if (have) s%dir = sign(1.0_dp, th - s%tn)
-            if (s%have_tcrit) then
-                if ((s%tcrit - s%tn)*s%dir <= 0.0_dp) then
-                    call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, &
-                        'lsoda step: the integration already stands at tcrit')
-                    return
-                end if
-            end if
-            call start_integration(s, th, have, stat)
-            if (stat%code /= STATUS_OK) return
-        else if (s%have_tcrit) then
-            if (at_tcrit(s)) then
-                call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, &
-                    'lsoda step: the integration already stands at tcrit')
-                return
-            end if
-        end if
-        s%steps_call = 0
-        call one_step(s, sys, stat)
-    end subroutine lsoda_step
-
-    !> k-th derivative of the interpolating polynomial at t, within the last step.
+    !> k-th derivative of the interpolating polynomial at t, within the last step (dense of
+    !! integrator_t checks the integration and dky first).
     !!
     !! t    [in]  time in [t_current - h_last, t_current] (roundoff tolerated).
     !! k    [in]  derivative order, 0 <= k <= current order (order_next).
     !! dky  [out] size n: d^k y / dt^k at t (units of y per time**k).
-    !! stat [out] STATUS_OK or LSODA_ERR_ILLEGAL_INPUT (t outside the step, bad k or size).
-    subroutine lsoda_dense(s, t, k, dky, stat)
+    !! stat [out] STATUS_OK or LSODA_ERR_ILLEGAL_INPUT (t outside the step, bad k).
+    subroutine lsoda_dense_at(s, t, k, dky, stat)
         class(lsoda_t), intent(in) :: s
         real(dp), intent(in) :: t
         integer, intent(in) :: k
         real(dp), intent(out) :: dky(:)
         type(status_t), intent(out) :: stat
-        if (.not. s%ready .or. size(dky) /= s%n) then
-            dky = 0.0_dp
-            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, &
-                'lsoda dense: solver not initialised or size(dky) /= n')
-            return
-        end if
         call interpolate(s, s%yh, s%n, t, k, dky, stat)
-    end subroutine lsoda_dense
+    end subroutine lsoda_dense_at
 
     !> Counters and method state (see integrator_stats_t).
-    function lsoda_get_stats(s) result(st)
+    pure function lsoda_get_stats(s) result(st)
         class(lsoda_t), intent(in) :: s
         type(integrator_stats_t) :: st
-        st%steps = s%nst
-        st%rhs_evals = s%nfe
-        st%jac_evals = s%nje
-        st%lu_decomps = s%nlu
-        st%conv_failures = s%ncfn
-        st%error_test_failures = s%netf
+        st = common_stats(s)
         st%method_switches = s%nswitch
         st%method_last = s%mused
         st%order_last = s%nqu
         st%method_next = s%meth
         st%order_next = s%nq
-        st%h_last = s%hu
-        st%h_next = s%h
-        st%t_current = s%tn
-        st%sens_points = s%nsp
-        st%sens_iterations = s%nsit
-        st%sens_direct = s%nsdir
     end function lsoda_get_stats
 
     !> LSODA's own options, for the next init and those after it until set again (an
@@ -537,40 +357,20 @@ contains
         if (present(nonstiff_only)) s%opt_adams_only = nonstiff_only
     end subroutine lsoda_set_options
 
-    !> The integrator's name in output files.
-    pure function lsoda_name(s) result(nm)
+    !> LSODA's name and status codes for the procedures of integrator_t.
+    pure function lsoda_identity(s) result(id)
         class(lsoda_t), intent(in) :: s
-        character(len=:), allocatable :: nm
-        nm = 'lsoda'
-        if (.false.) nm = merge('lsoda', 'lsoda', s%ready)   ! keep s referenced
-    end function lsoda_name
+        type(integrator_id_t) :: id
+        id = integrator_id_t('lsoda', LSODA_ERR_ILLEGAL_INPUT, LSODA_ERR_MAX_STEPS)
+        if (.false.) id%name = merge('lsoda', 'lsoda', s%ready)     ! keep s referenced
+    end function lsoda_identity
 
-    !> Set (tcrit present) or remove (absent) the hard stop time.
-    !!
-    !! tcrit [in, optional] new stop time; it must not lie behind the time already reached
-    !!       (then stat = LSODA_ERR_ILLEGAL_INPUT and the old setting stays).
-    !! stat  [out, optional] STATUS_OK or LSODA_ERR_ILLEGAL_INPUT.
-    subroutine lsoda_set_tcrit(s, tcrit, stat)
-        class(lsoda_t), intent(inout) :: s
-        real(dp), intent(in), optional :: tcrit
-        type(status_t), intent(out), optional :: stat
-        character(len=120) :: buf
-        if (present(stat)) stat%code = STATUS_OK
-        if (.not. present(tcrit)) then
-            s%have_tcrit = .false.
-            return
-        end if
-        if (s%started .and. (tcrit - s%tn)*s%dir < 0.0_dp) then
-            if (present(stat)) then
-                write (buf, '(a,es13.5e3,a,es13.5e3)') 'lsoda set_tcrit: tcrit = ', tcrit, &
-                    ' is behind the time reached ', s%tn
-                call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
-            end if
-            return
-        end if
-        s%tcrit = tcrit
-        s%have_tcrit = .true.
-    end subroutine lsoda_set_tcrit
+    !> The solution at t: the Nordsieck array's first column.
+    pure subroutine lsoda_solution(s, y)
+        class(lsoda_t), intent(in) :: s
+        real(dp), intent(out) :: y(:)       !! (n)
+        y = s%yh(:, 1)
+    end subroutine lsoda_solution
 
     !> Start forward sensitivities (see the module header): after init, before the first
     !! step.
@@ -580,7 +380,8 @@ contains
     !! stat  [out] STATUS_OK; LSODA_ERR_ILLEGAL_INPUT (no init, the integration has
     !!             started, a bad shape or scale); or the system's code from its terms.
     !! scale [in, optional] (ns) the size of sensitivity k against the state's: its absolute
-    !!             tolerance is atol scale(k) (default 1), > 0.
+    !!             tolerance is atol scale(k) (default 1), > 0; an atol of 0 counts as
+    !!             max(rtol, the unit roundoff).
     !! error_control [in, optional] .true.: the sensitivities take part in the error test
     !!             and the order selection (default .false.: the state's steps alone).
     subroutine lsoda_sens_init(s, sys, s0, stat, scale, error_control)
@@ -590,24 +391,17 @@ contains
         type(status_t), intent(out) :: stat
         real(dp), intent(in), optional :: scale(:)
         logical, intent(in), optional :: error_control
-        real(dp) :: sc(size(s0, 2)), w
-        integer :: ns, n, k, i
-        stat%code = STATUS_OK
-        s%ns = 0
+        integer :: ns, n
         s%nsn = 0
-        n = s%n
-        ns = size(s0, 2)
-        call sens_init_args('lsoda sens_init', LSODA_ERR_ILLEGAL_INPUT, s%ready, &
-                            s%started, n, s0, sc, stat, scale)
+        call s%sens_init_common(s0, max(s%rtol, UROUND), stat, scale, error_control)
         if (stat%code /= STATUS_OK) return
-        s%sens_errcon = .false.
-        if (present(error_control)) s%sens_errcon = error_control
+        n = s%n
+        ns = s%ns
         s%nsn = n*ns
         if (allocated(s%zh)) then
             if (size(s%zh, 1) /= s%nsn) deallocate (s%zh)
         end if
         if (.not. allocated(s%zh)) allocate (s%zh(s%nsn, LMAX_ALL))
-        call realloc_vec(s%satol, s%nsn)
         call realloc_vec(s%srewt, s%nsn)
         call realloc_vec(s%sacor, s%nsn)
         call realloc_vec(s%sb, s%nsn)
@@ -621,45 +415,30 @@ contains
         s%scrate = 0.7_dp
         s%zh = 0.0_dp
         s%sacor = 0.0_dp
-        do k = 1, ns
-            do i = 1, n
-                ! atol = 0 (a relative test only) would make a weight infinite where s = 0
-                w = s%atol(i)
-                if (.not. (w > 0.0_dp)) w = max(s%rtol, UROUND)
-                s%satol(i + (k - 1)*n) = w*sc(k)
-            end do
-        end do
         s%zh(:, 1) = reshape(s0, [s%nsn])
-        s%ns = ns
-        ! the slope at t0 (scaled by the first step in start_integration)
-        call sens_slope(s, sys, s%tn, s%yh(:, 1), stat)
+        ! the slope at t0 (scaled by the first step in lsoda_start)
+        call sens_slope(s, sys, s%t, s%yh(:, 1), stat)
         if (stat%code /= STATUS_OK) then
-            call prefix_time(stat, s%tn)
+            call s%prefix_time(stat, s%t)
             s%ns = 0
             s%nsn = 0
         end if
     end subroutine lsoda_sens_init
 
+
     !> The sensitivities (k = 0) or their k-th derivative at t within the last step (as
-    !! dense for the state).
+    !! dense for the state; sens_dense of integrator_t checks ds first).
     !!
     !! ds   [out] (n, ns).
-    !! stat [out] STATUS_OK or LSODA_ERR_ILLEGAL_INPUT (no sensitivities, t outside the
-    !!            step, a bad k or shape).
-    subroutine lsoda_sens_dense(s, t, k, ds, stat)
+    !! stat [out] STATUS_OK or LSODA_ERR_ILLEGAL_INPUT (t outside the step, a bad k).
+    subroutine lsoda_sens_dense_at(s, t, k, ds, stat)
         class(lsoda_t), intent(in) :: s
         real(dp), intent(in) :: t
         integer, intent(in) :: k
         real(dp), intent(out) :: ds(:, :)
         type(status_t), intent(out) :: stat
-        if (.not. s%ready .or. s%ns == 0 .or. size(ds, 1) /= s%n .or. size(ds, 2) /= s%ns) then
-            ds = 0.0_dp
-            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda sens_dense: no '// &
-                'sensitivities, or ds is not n x ns')
-            return
-        end if
         call interpolate(s, s%zh, s%nsn, t, k, ds, stat)     ! ds as a vector of n ns
-    end subroutine lsoda_sens_dense
+    end subroutine lsoda_sens_dense_at
 
     !> v(k) = g . s_k(t) for each sensitivity column at t within the last step, from the
     !! rows of the Nordsieck array where g is not 0 (Horner's scheme on each, the same
@@ -685,7 +464,7 @@ contains
                 'sensitivities, or g is not of n or v not of ns')
             return
         end if
-        call check_in_step(s, t, 'lsoda sens_dense_dot', stat)
+        call s%check_in_step(t, 'sens_dense_dot', stat)
         if (stat%code /= STATUS_OK) return
         nnz = 0
         do i = 1, s%n
@@ -695,7 +474,7 @@ contains
             end if
         end do
         sc = 0.0_dp
-        if (s%h /= 0.0_dp) sc = (t - s%tn)/s%h
+        if (s%h /= 0.0_dp) sc = (t - s%t)/s%h
         ! each row g needs, by Horner's scheme (as horner's), then its share of g . s_k
         do k = 1, s%ns
             acc = 0.0_dp
@@ -710,14 +489,14 @@ contains
             v(k) = acc
         end do
     end subroutine lsoda_sens_dense_dot
-
     ! ------------------------------------------------------------------------------------
-    ! Driver level
+    ! What integrate and step call (integrator_t's start, one_step, at_tcrit)
     ! ------------------------------------------------------------------------------------
 
     !> Choose the first step size (LSODE/LSODA rule) and scale yh(:,2) = h0*f0.
-    subroutine start_integration(s, tout, have_tout, stat)
-        type(lsoda_t), intent(inout) :: s
+    subroutine lsoda_start(s, sys, tout, have_tout, stat)
+        class(lsoda_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
         real(dp), intent(in) :: tout
         logical, intent(in) :: have_tout
         type(status_t), intent(out) :: stat
@@ -725,27 +504,25 @@ contains
         integer :: i
         character(len=160) :: buf
 
+        stat%code = STATUS_OK
+        if (.false.) call sys%rhs(tout, s%y, s%savf, stat)     ! keep sys referenced
         call update_weights(s, stat)
         if (stat%code /= STATUS_OK) return
-        if (UROUND*vmnorm(s%n, s%yh(:, 1), s%rewt) > 0.01_dp) then
-            call too_much_accuracy(s, stat)
-            return
-        end if
         if (s%h0_user > 0.0_dp) then
             h0 = s%h0_user
         else
             if (have_tout) then
-                tdist = abs(tout - s%tn)
-                w0 = max(abs(s%tn), abs(tout))
+                tdist = abs(tout - s%t)
+                w0 = max(abs(s%t), abs(tout))
                 if (tdist < 2.0_dp*UROUND*w0) then
-                    write (buf, '(a,es13.5e3,a)') 'lsoda: tout is too close to t0 = ', s%tn, &
+                    write (buf, '(a,es13.5e3,a)') 'lsoda: tout is too close to t0 = ', s%t, &
                         ' to start the integration'
                     call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
                     return
                 end if
             else
                 tdist = huge(1.0_dp)
-                w0 = max(abs(s%tn), 1.0_dp)
+                w0 = max(abs(s%t), 1.0_dp)
             end if
             tol = s%rtol
             if (tol <= 0.0_dp) then
@@ -770,48 +547,41 @@ contains
         if (rh > 1.0_dp) h0 = h0/rh
         h0 = sign(h0, s%dir)
         if (s%have_tcrit) then
-            if ((s%tn + h0 - s%tcrit)*h0 > 0.0_dp) h0 = (s%tcrit - s%tn)*(1.0_dp - 4.0_dp*UROUND)
+            if ((s%t + h0 - s%tcrit)*h0 > 0.0_dp) h0 = (s%tcrit - s%t)*(1.0_dp - 4.0_dp*UROUND)
         end if
         s%h = h0
         s%yh(:, 2) = h0*s%yh(:, 2)
         if (s%ns > 0) s%zh(:, 2) = h0*s%zh(:, 2)
-        s%jstart = 0
+        s%jstart = JS_FIRST
         s%started = .true.
-    end subroutine start_integration
+    end subroutine lsoda_start
 
-    !> True when tn is at tcrit up to roundoff.
-    logical function at_tcrit(s)
-        type(lsoda_t), intent(in) :: s
-        at_tcrit = abs(s%tn - s%tcrit) <= 100.0_dp*UROUND*(abs(s%tn) + abs(s%h))
-    end function at_tcrit
+    !> True when t is at tcrit up to roundoff.
+    pure logical function lsoda_at_tcrit(s) result(at)
+        class(lsoda_t), intent(in) :: s
+        at = abs(s%t - s%tcrit) <= 100.0_dp*UROUND*(abs(s%t) + abs(s%h))
+    end function lsoda_at_tcrit
 
-    !> Checks before a step, the step itself, and the bookkeeping after it.
-    subroutine one_step(s, sys, stat)
-        type(lsoda_t), intent(inout) :: s
+    !> One accepted step: the checks before it (error weights, the accuracy asked, a step
+    !! cut to end at tcrit), the step (take_step), and the bookkeeping after it; a failure
+    !! explained in stat.
+    subroutine lsoda_one_step(s, sys, stat)
+        class(lsoda_t), intent(inout) :: s
         class(ode_system_t), intent(inout) :: sys
-        type(status_t), intent(inout) :: stat
+        type(status_t), intent(out) :: stat
         real(dp) :: tnext
         character(len=200) :: buf
 
-        if (s%steps_call >= s%max_steps) then
-            write (buf, '(a,i0,a,es15.7e3)') 'lsoda: ', s%max_steps, &
-                ' steps taken in this call without reaching tout; t reached = ', s%tn
-            call set_error(stat, LSODA_ERR_MAX_STEPS, trim(buf))
-            return
-        end if
+        stat%code = STATUS_OK
         if (s%nst > 0) then
             call update_weights(s, stat)
             if (stat%code /= STATUS_OK) return
-            if (UROUND*vmnorm(s%n, s%yh(:, 1), s%rewt) > 0.01_dp) then
-                call too_much_accuracy(s, stat)
-                return
-            end if
         end if
-        if (s%have_tcrit .and. s%jstart /= 0) then
-            tnext = s%tn + s%h*(1.0_dp + 4.0_dp*UROUND)
+        if (s%have_tcrit .and. s%jstart /= JS_FIRST) then
+            tnext = s%t + s%h*(1.0_dp + 4.0_dp*UROUND)
             if ((tnext - s%tcrit)*s%h > 0.0_dp) then
-                s%h = (s%tcrit - s%tn)*(1.0_dp - 4.0_dp*UROUND)
-                if (s%jstart > 0) s%jstart = -2
+                s%h = (s%tcrit - s%t)*(1.0_dp - 4.0_dp*UROUND)
+                if (s%jstart > 0) s%jstart = JS_NEW_H
             end if
         end if
 
@@ -819,39 +589,39 @@ contains
 
         select case (s%kflag)
         case (KF_OK)
-            s%steps_call = s%steps_call + 1
             if (s%meth /= s%mused) then
-                s%tsw = s%tn
                 s%nswitch = s%nswitch + 1
-                s%jstart = -1
+                s%jstart = JS_SWITCHED
             end if
             ! A step cut short to end at tcrit lands there only up to roundoff (it is cut
-            ! to (tcrit - tn)*(1 - 4 u) so as never to pass it): it has reached tcrit, and
+            ! to (tcrit - t)*(1 - 4 u) so as never to pass it): it has reached tcrit, and
             ! says so, or a caller stepping until t_current >= tcrit would ask for a step
             ! that no longer fits (a body at rest takes one step straight to tcrit).
             if (s%have_tcrit) then
-                if (at_tcrit(s)) s%tn = s%tcrit
+                if (lsoda_at_tcrit(s)) s%t = s%tcrit
             end if
         case (KF_ERRTEST)
             write (buf, '(a,es15.7e3,a,es11.3e3)') 'lsoda: error test failed repeatedly at t = ', &
-                s%tn, ' with |h| = ', abs(s%h)
+                s%t, ' with |h| = ', abs(s%h)
             call set_error(stat, LSODA_ERR_ERROR_TEST, trim(buf)//' (discontinuity or '// &
                 'singularity of f?)')
         case (KF_CONV)
             write (buf, '(a,es15.7e3,a,es11.3e3)') 'lsoda: corrector failed to converge '// &
-                'repeatedly at t = ', s%tn, ' with |h| = ', abs(s%h)
+                'repeatedly at t = ', s%t, ' with |h| = ', abs(s%h)
             call set_error(stat, LSODA_ERR_CONVERGENCE, trim(buf))
         case (KF_SINGULAR)
             write (buf, '(a,es15.7e3,a,es11.3e3)') 'lsoda: iteration matrix I - h*l0*J '// &
-                'singular repeatedly at t = ', s%tn, ' with |h| = ', abs(s%h)
+                'singular repeatedly at t = ', s%t, ' with |h| = ', abs(s%h)
             call set_error(stat, LSODA_ERR_SINGULAR, trim(buf))
         case default
             ! KF_FATAL: stat already set (rhs/jacobian failure, prefixed with the time)
             continue
         end select
-    end subroutine one_step
+    end subroutine lsoda_one_step
 
-    !> Error weights from the current solution: rewt = 1/(rtol*|y| + atol).
+    !> Error weights from the current solution: rewt = 1/(rtol*|y| + atol) (and the
+    !! sensitivities'); then LSODA_ERR_TOO_MUCH_ACCURACY when the accuracy asked for is
+    !! beyond the machine's (u ||y|| > 0.01 in these weights).
     subroutine update_weights(s, stat)
         type(lsoda_t), intent(inout) :: s
         type(status_t), intent(inout) :: stat
@@ -860,11 +630,12 @@ contains
         call weights(s%n, s%rtol, s%yh(:, 1), s%atol, s%rewt, i)
         if (i > 0) then
             write (buf, '(a,i0,a,es15.7e3,a)') 'lsoda: error weight of component ', i, &
-                ' became zero at t = ', s%tn, ' (atol(i) = 0 and y(i) = 0)'
+                ' became zero at t = ', s%t, ' (atol(i) = 0 and y(i) = 0)'
             call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
             return
         end if
         if (s%ns > 0) call sens_weights(s%nsn, s%rtol, s%zh(:, 1), s%satol, s%srewt)
+        if (UROUND*vmnorm(s%n, s%yh(:, 1), s%rewt) > 0.01_dp) call too_much_accuracy(s, stat)
     end subroutine update_weights
 
     !> rewt = 1/(rtol |y| + atol), component by component up to the first whose weight is
@@ -895,45 +666,90 @@ contains
         srewt = 1.0_dp/(rtol*abs(z) + satol)
     end subroutine sens_weights
 
+    !> LSODA_ERR_TOO_MUCH_ACCURACY at t, with the factor by which the tolerances must grow.
     subroutine too_much_accuracy(s, stat)
         type(lsoda_t), intent(in) :: s
         type(status_t), intent(inout) :: stat
         character(len=200) :: buf
         write (buf, '(a,es15.7e3,a,es11.3e3)') 'lsoda: too much accuracy requested for the '// &
-            'machine precision at t = ', s%tn, '; scale the tolerances up by at least ', &
+            'machine precision at t = ', s%t, '; scale the tolerances up by at least ', &
             200.0_dp*UROUND*vmnorm(s%n, s%yh(:, 1), s%rewt)
         call set_error(stat, LSODA_ERR_TOO_MUCH_ACCURACY, trim(buf))
     end subroutine too_much_accuracy
 
     ! ------------------------------------------------------------------------------------
-    ! The step (one successful step, with retries)
+    ! The step: take_step and its parts
     ! ------------------------------------------------------------------------------------
 
-    !> One step of the current method, retrying with smaller h / other order after
-    !! error-test or convergence failures, choosing order, step and method for the next
-    !! step on success.  Sets s%kflag (KF_*).  On failure tn and yh are as before the call.
+    !> One step of the current method, in named parts: the step's start by jstart
+    !! (begin_step), then attempts until one passes or the step fails.  An attempt is the
+    !! prediction (predict), the corrector (correct) and the local error test
+    !! (error_estimate, with the sensitivities' corrector, sens_correct); a pass is accepted
+    !! (accept: the step's bookkeeping, a switch of method considered, consider_switch, else
+    !! the order and step size of the next step, choose_next), a failure retried
+    !! (retry_after_convergence_failure, retry_after_error_test: a smaller h, a lower
+    !! order, or the end of the step with kflag).  Sets s%kflag (KF_*).  On failure t and yh
+    !! are as before the call.
     subroutine take_step(s, sys, stat)
         type(lsoda_t), intent(inout) :: s
         class(ode_system_t), intent(inout) :: sys
         type(status_t), intent(inout) :: stat
-        integer :: ncf, m, newq, nqm, lm
-        logical :: newton, converged, singular, fatal, switched
-        real(dp) :: del, delp, dsm, rate, rm, dcon, pnorm, rh, rh1, rh2, rh1it, pdh, exsm
-        real(dp) :: dm, exm, alpha
+        integer :: ncf, m, outcome
+        real(dp) :: del, dsm, pnorm, rm
+        logical :: done
 
         s%kflag = KF_OK
-        s%told = s%tn
+        s%told = s%t
         ncf = 0
         s%jcur = .false.
-        del = 0.0_dp
-        delp = 0.0_dp
-        dsm = 0.0_dp
-        rh = 1.0_dp
-        rh2 = 1.0_dp
-        nqm = 1
+        call begin_step(s)
+        attempt: do
+            call predict(s, pnorm)
+            call correct(s, sys, pnorm, outcome, m, del, stat)
+            if (outcome == CORR_FATAL) return       ! f or J failed (fail_fatal undid the step)
+            if (outcome /= CORR_CONVERGED) then
+                call retry_after_convergence_failure(s, outcome, ncf, done)
+                if (done) exit attempt
+                cycle attempt
+            end if
+            s%jcur = .false.
+            dsm = error_estimate(s, m, del)
+            ! the sensitivities at the converged point: after the error test, or before it
+            ! when they take part in it
+            if (s%ns > 0 .and. (s%sens_errcon .or. dsm <= 1.0_dp)) then
+                call sens_correct(s, sys, stat)
+                if (stat%code /= STATUS_OK) then
+                    call fail_fatal(s, stat)
+                    return
+                end if
+                if (s%sens_errcon) dsm = max(dsm, vmnorm(s%nsn, s%sacor, s%srewt)/ &
+                                                  s%tesco(2, s%nq, s%meth))
+            end if
+            if (dsm <= 1.0_dp) then
+                call accept(s, dsm, pnorm)
+                exit attempt
+            end if
+            call retry_after_error_test(s, sys, dsm, done, stat)
+            if (done) exit attempt
+        end do attempt
 
+        if (s%kflag == KF_OK) then
+            rm = 1.0_dp/s%tesco(2, s%nqu, s%mused)
+            call scale_vec(s%n, rm, s%acor)
+        end if
+        s%hold = s%h
+        s%jstart = JS_GOING
+    end subroutine take_step
+
+    !> The start of a step by jstart: on the first step order 1 and the method's
+    !! coefficients, with the counters of the method's state anew; after a switch of method
+    !! the new method's coefficients and a new P; and yh rescaled to an h changed since the
+    !! last step (after a switch, or by the driver for tcrit).
+    subroutine begin_step(s)
+        type(lsoda_t), intent(inout) :: s
+        real(dp) :: rh
         select case (s%jstart)
-        case (0)
+        case (JS_FIRST)
             s%meth = s%meth0
             s%lmax = s%mxordn + 1
             if (s%meth == METHOD_BDF) s%lmax = s%mxords + 1
@@ -952,8 +768,7 @@ contains
             s%pdest = 0.0_dp
             s%pdlast = 0.0_dp
             call load_el(s)
-        case (-1)
-            ! method switched on the previous step
+        case (JS_SWITCHED)
             s%ipup = s%meth == METHOD_BDF
             if (s%meth == METHOD_BDF) then
                 s%lmax = s%mxords + 1
@@ -970,8 +785,7 @@ contains
                 s%h = s%hold
                 call rescale(s, rh, .false.)
             end if
-        case (-2)
-            ! h changed by the driver (tcrit)
+        case (JS_NEW_H)
             if (s%h /= s%hold) then
                 rh = s%h/s%hold
                 s%h = s%hold
@@ -980,321 +794,441 @@ contains
         case default
             continue
         end select
+    end subroutine begin_step
 
-        attempt: do
-            newton = s%meth == METHOD_BDF
-            if (abs(s%rc - 1.0_dp) > CCMAX) s%ipup = newton
-            if (s%nst >= s%nslp + MSBP) s%ipup = newton
-            s%tn = s%tn + s%h
-            call predict(s)
-            pnorm = vmnorm(s%n, s%yh(:, 1), s%rewt)
+    !> The prediction: t advanced by h, the Nordsieck arrays (the state's and the
+    !! sensitivities') times the Pascal triangle (the Taylor predictor to t + h), and
+    !! pnorm, the weighted norm of the predicted solution.
+    subroutine predict(s, pnorm)
+        type(lsoda_t), intent(inout) :: s
+        real(dp), intent(out) :: pnorm
+        s%t = s%t + s%h
+        call pascal(s%yh, s%n, s%nq)
+        if (s%ns > 0) call pascal(s%zh, s%nsn, s%nq)
+        pnorm = vmnorm(s%n, s%yh(:, 1), s%rewt)
+    end subroutine predict
 
-            singular = .false.
-            fatal = .false.
-            converged = .false.
-            corrector: do
-                m = 0
-                rate = 0.0_dp
-                del = 0.0_dp
-                call copy_vec(s%n, s%yh(:, 1), s%y)
-                call sys%rhs(s%tn, s%y, s%savf, stat)
-                s%nfe = s%nfe + 1
+    !> The corrector at the predicted point: up to MAXCOR iterations (Adams: functional;
+    !! BDF: chord Newton with P, formed anew when it is old, h l0 has drifted by more than
+    !! CCMAX, or a failed iteration ran on an old one) until the estimated error of the
+    !! iterate passes the convergence test.  Keeps the Lipschitz estimate pdest of the
+    !! Adams iteration.
+    !!
+    !! pnorm   [in]  weighted norm of the predicted solution.
+    !! outcome [out] CORR_CONVERGED (y, savf, acor the converged point), CORR_DIVERGED,
+    !!               CORR_SINGULAR (P singular), CORR_UNSOLVED (the solve with P failed) or
+    !!               CORR_FATAL (f or J failed: stat says why, and the step is undone).
+    !! m       [out] the iterations after the first.
+    !! del     [out] the weighted norm of the last change of the iterate.
+    subroutine correct(s, sys, pnorm, outcome, m, del, stat)
+        type(lsoda_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        real(dp), intent(in) :: pnorm
+        integer, intent(out) :: outcome, m
+        real(dp), intent(out) :: del
+        type(status_t), intent(inout) :: stat
+        real(dp) :: delp, rate, rm, dcon
+        logical :: newton, singular
+
+        newton = s%meth == METHOD_BDF
+        if (abs(s%rc - 1.0_dp) > CCMAX) s%ipup = newton
+        if (s%nst >= s%nslp + MSBP) s%ipup = newton
+        outcome = CORR_DIVERGED
+        delp = 0.0_dp
+        corrector: do
+            m = 0
+            rate = 0.0_dp
+            del = 0.0_dp
+            call copy_vec(s%n, s%yh(:, 1), s%y)
+            call corrector_rhs(s, sys, stat)
+            if (stat%code /= STATUS_OK) then
+                outcome = CORR_FATAL
+                return
+            end if
+            if (s%ipup) then
+                call build_iteration_matrix(s, sys, stat, singular)
                 if (stat%code /= STATUS_OK) then
                     call fail_fatal(s, stat)
+                    outcome = CORR_FATAL
                     return
                 end if
-                if (s%ipup) then
-                    call build_iteration_matrix(s, sys, stat, singular)
-                    if (stat%code /= STATUS_OK) then
-                        call fail_fatal(s, stat)
-                        return
-                    end if
-                    s%ipup = .false.
-                    s%rc = 1.0_dp
-                    s%nslp = s%nst
-                    s%crate = 0.7_dp
-                    if (singular) exit corrector
-                end if
-                s%acor = 0.0_dp
-                iterate: do
-                    if (.not. newton) then
-                        call functional_update(s%n, s%h, s%el(1), s%yh(:, 1), s%yh(:, 2), &
-                                               s%rewt, s%savf, s%acor, s%y, del)
-                    else
-                        ! chord Newton iteration
-                        call newton_residual(s%n, s%h, s%savf, s%yh(:, 2), s%acor, s%y)
-                        if (s%structured) then
-                            call sys%solve_iteration(s%y, stat)
-                        else
-                            call la_lu_solve(s%wm, s%ipiv, s%y, stat)
-                        end if
-                        if (stat%code /= STATUS_OK) then
-                            fatal = .true.     ! cannot happen with consistent shapes
-                            exit corrector
-                        end if
-                        call newton_update(s%n, s%el(1), s%yh(:, 1), s%rewt, s%acor, s%y, del)
-                    end if
-                    ! convergence test; at least two iterations for Adams (Lipschitz estimate)
-                    if (del <= 100.0_dp*pnorm*UROUND) then
-                        converged = .true.
-                        exit corrector
-                    end if
-                    if (m > 0 .or. newton) then
-                        if (m > 0) then
-                            rm = 1024.0_dp
-                            if (del <= 1024.0_dp*delp) rm = del/delp
-                            rate = max(rate, rm)
-                            s%crate = max(0.2_dp*s%crate, rm)
-                        end if
-                        dcon = del*min(1.0_dp, 1.5_dp*s%crate)/ &
-                            (s%tesco(2, s%nq, s%meth)*s%conit)
-                        if (dcon <= 1.0_dp) then
-                            s%pdest = max(s%pdest, rate/abs(s%h*s%el(1)))
-                            if (s%pdest /= 0.0_dp) s%pdlast = s%pdest
-                            converged = .true.
-                            exit corrector
-                        end if
-                    end if
-                    m = m + 1
-                    if (m == MAXCOR) exit iterate
-                    if (m >= 2 .and. del > 2.0_dp*delp) exit iterate
-                    delp = del
-                    call sys%rhs(s%tn, s%y, s%savf, stat)
-                    s%nfe = s%nfe + 1
-                    if (stat%code /= STATUS_OK) then
-                        call fail_fatal(s, stat)
-                        return
-                    end if
-                end do iterate
-                ! the iteration failed: retry once with a fresh matrix if it was old
-                if (.not. newton .or. s%jcur) exit corrector
-                s%ipup = .true.
-            end do corrector
-
-            if (.not. converged) then
-                ! convergence failure (or singular matrix)
-                ncf = ncf + 1
-                s%ncfn = s%ncfn + 1
-                s%rmax = 2.0_dp
-                s%tn = s%told
-                call unpredict(s)
-                if (fatal) then
-                    s%kflag = KF_SINGULAR
-                    exit attempt
-                end if
-                if (abs(s%h) <= max(s%hmin*1.00001_dp, hfloor(s)) .or. ncf == MXNCF) then
-                    s%kflag = KF_CONV
-                    if (singular) s%kflag = KF_SINGULAR
-                    exit attempt
-                end if
-                s%ipup = newton
-                call rescale(s, 0.25_dp, .true.)
-                cycle attempt
-            end if
-
-            ! converged: local error test
-            s%jcur = .false.
-            if (m == 0) then
-                dsm = del/s%tesco(2, s%nq, s%meth)
-            else
-                dsm = vmnorm(s%n, s%acor, s%rewt)/s%tesco(2, s%nq, s%meth)
-            end if
-            ! the sensitivities at the converged point: after the error test, or before it
-            ! when they take part in it
-            if (s%ns > 0 .and. (s%sens_errcon .or. dsm <= 1.0_dp)) then
-                call sens_correct(s, sys, stat)
-                if (stat%code /= STATUS_OK) then
-                    call fail_fatal(s, stat)
+                s%ipup = .false.
+                s%rc = 1.0_dp
+                s%nslp = s%nst
+                s%crate = 0.7_dp
+                if (singular) then
+                    outcome = CORR_SINGULAR
                     return
                 end if
-                if (s%sens_errcon) dsm = max(dsm, vmnorm(s%nsn, s%sacor, s%srewt)/ &
-                                                  s%tesco(2, s%nq, s%meth))
             end if
-
-            if (dsm <= 1.0_dp) then
-                ! ---- successful step
-                s%kflag = KF_OK
-                s%nst = s%nst + 1
-                s%hu = s%h
-                s%nqu = s%nq
-                s%mused = s%meth
-                call add_correction(s%yh, s%n, s%el, s%acor, s%l)
-                if (s%ns > 0) call add_correction(s%zh, s%nsn, s%el, s%sacor, s%l)
-                switched = .false.
-                s%icount = s%icount - 1
-                if (s%icount < 0) then
-                    if (s%meth == METHOD_ADAMS) then
-                        ! would BDF allow a much larger step?
-                        if (s%nq <= 5 .and. .not. s%adams_only) then
-                            if (dsm > 100.0_dp*pnorm*UROUND .and. s%pdest /= 0.0_dp) then
-                                exsm = 1.0_dp/s%l
-                                rh1 = 1.0_dp/(1.2_dp*dsm**exsm + 1.2e-6_dp)
-                                rh1it = 2.0_dp*rh1
-                                pdh = s%pdlast*abs(s%h)
-                                if (pdh*rh1 > 1.0e-5_dp) rh1it = SM1(s%nq)/pdh
-                                rh1 = min(rh1, rh1it)
-                                if (s%nq > s%mxords) then
-                                    nqm = s%mxords
-                                    lm = nqm + 1
-                                    exm = 1.0_dp/lm
-                                    dm = vmnorm(s%n, s%yh(:, lm + 1), s%rewt)/s%cm2(nqm)
-                                    rh2 = 1.0_dp/(1.2_dp*dm**exm + 1.2e-6_dp)
-                                else
-                                    dm = dsm*(s%cm1(s%nq)/s%cm2(s%nq))
-                                    rh2 = 1.0_dp/(1.2_dp*dm**exsm + 1.2e-6_dp)
-                                    nqm = s%nq
-                                end if
-                                if (rh2 >= SWITCH_RATIO*rh1) switched = .true.
-                            else if (s%irflag /= 0) then
-                                ! step limited by stability yet error tiny: go stiff
-                                rh2 = 2.0_dp
-                                nqm = min(s%nq, s%mxords)
-                                switched = .true.
-                            end if
-                            if (switched) then
-                                rh = rh2
-                                s%meth = METHOD_BDF
-                                s%nq = nqm
-                            end if
-                        end if
-                    else
-                        ! would Adams allow a step not smaller than BDF's?
-                        exsm = 1.0_dp/s%l
-                        if (s%mxordn < s%nq) then
-                            nqm = s%mxordn
-                            lm = nqm + 1
-                            exm = 1.0_dp/lm
-                            dm = vmnorm(s%n, s%yh(:, lm + 1), s%rewt)/s%cm1(nqm)
-                            rh1 = 1.0_dp/(1.2_dp*dm**exm + 1.2e-6_dp)
-                        else
-                            dm = dsm*(s%cm2(s%nq)/s%cm1(s%nq))
-                            rh1 = 1.0_dp/(1.2_dp*dm**exsm + 1.2e-6_dp)
-                            nqm = s%nq
-                            exm = exsm
-                        end if
-                        rh1it = 2.0_dp*rh1
-                        pdh = s%pdnorm*abs(s%h)
-                        if (pdh*rh1 > 1.0e-5_dp) rh1it = SM1(nqm)/pdh
-                        rh1 = min(rh1, rh1it)
-                        rh2 = 1.0_dp/(1.2_dp*dsm**exsm + 1.2e-6_dp)
-                        if (rh1*SWITCH_RATIO >= 5.0_dp*rh2) then
-                            alpha = max(0.001_dp, rh1)
-                            dm = alpha**exm*dm
-                            if (dm > 1000.0_dp*UROUND*pnorm) then
-                                switched = .true.
-                                rh = rh1
-                                s%meth = METHOD_ADAMS
-                                s%nq = nqm
-                            end if
-                        end if
-                    end if
-                end if
-                if (switched) then
-                    s%icount = SWITCH_WAIT
-                    s%pdlast = 0.0_dp
-                    s%l = s%nq + 1
-                    call rescale(s, rh, .true.)
-                    s%rmax = 10.0_dp
-                    exit attempt
-                end if
-
-                s%ialth = s%ialth - 1
-                if (s%ialth == 0) then
-                    call choose_order(s, dsm, .true., newq, rh)
-                    if (newq < 0) exit attempt        ! keep order and step
-                    if (newq /= s%nq) then
-                        s%nq = newq
-                        s%l = newq + 1
-                        call load_el(s)
-                    end if
-                    call rescale(s, rh, .true.)
-                    s%rmax = 10.0_dp
-                    exit attempt
-                end if
-                if (s%ialth == 1 .and. s%l /= s%lmax) then
-                    s%yh(:, s%lmax) = s%acor          ! kept for the order-increase test
-                    if (s%ns > 0) s%zh(:, s%lmax) = s%sacor
-                end if
-                exit attempt
-            end if
-
-            ! ---- error test failed
-            s%netf = s%netf + 1
-            s%kflag = s%kflag - 1
-            s%tn = s%told
-            call unpredict(s)
-            s%rmax = 2.0_dp
-            if (abs(s%h) <= max(s%hmin*1.00001_dp, hfloor(s))) then
-                s%kflag = KF_ERRTEST
-                exit attempt
-            end if
-            if (s%kflag <= -3) then
-                if (s%kflag <= -MXNEF) then
-                    s%kflag = KF_ERRTEST
-                    exit attempt
-                end if
-                ! repeated failures: restart at order 1 from a fresh derivative, h/10
-                rh = max(s%hmin/abs(s%h), 0.1_dp)
-                s%h = s%h*rh
-                s%y = s%yh(:, 1)
-                call sys%rhs(s%tn, s%y, s%savf, stat)
-                s%nfe = s%nfe + 1
+            s%acor = 0.0_dp
+            iterate: do
+                call corrector_update(s, sys, newton, del, stat)
                 if (stat%code /= STATUS_OK) then
-                    call prefix_time(stat, s%tn)
-                    s%kflag = KF_FATAL
-                    exit attempt
+                    outcome = CORR_UNSOLVED        ! cannot happen with consistent shapes
+                    return
                 end if
-                s%yh(:, 2) = s%h*s%savf
-                if (s%ns > 0) then
-                    call sens_slope(s, sys, s%tn, s%y, stat)
-                    if (stat%code /= STATUS_OK) then
-                        call prefix_time(stat, s%tn)
-                        s%kflag = KF_FATAL
-                        exit attempt
+                ! convergence test; at least two iterations for Adams (Lipschitz estimate)
+                if (del <= 100.0_dp*pnorm*UROUND) then
+                    outcome = CORR_CONVERGED
+                    return
+                end if
+                if (m > 0 .or. newton) then
+                    if (m > 0) then
+                        rm = 1024.0_dp
+                        if (del <= 1024.0_dp*delp) rm = del/delp
+                        rate = max(rate, rm)
+                        s%crate = max(0.2_dp*s%crate, rm)
                     end if
-                    s%zh(:, 2) = s%h*s%zh(:, 2)
+                    dcon = del*min(1.0_dp, 1.5_dp*s%crate)/ &
+                        (s%tesco(2, s%nq, s%meth)*s%conit)
+                    if (dcon <= 1.0_dp) then
+                        s%pdest = max(s%pdest, rate/abs(s%h*s%el(1)))
+                        if (s%pdest /= 0.0_dp) s%pdlast = s%pdest
+                        outcome = CORR_CONVERGED
+                        return
+                    end if
                 end if
-                s%ipup = s%meth == METHOD_BDF
-                s%ialth = 5
-                if (s%nq /= 1) then
-                    s%nq = 1
-                    s%l = 2
-                    call load_el(s)
+                m = m + 1
+                if (m == MAXCOR) exit iterate
+                if (m >= 2 .and. del > 2.0_dp*delp) exit iterate
+                delp = del
+                call corrector_rhs(s, sys, stat)
+                if (stat%code /= STATUS_OK) then
+                    outcome = CORR_FATAL
+                    return
                 end if
-                cycle attempt
-            end if
-            call choose_order(s, dsm, .false., newq, rh)
-            if (newq /= s%nq) then
-                s%nq = newq
-                s%l = newq + 1
-                call load_el(s)
-            end if
-            call rescale(s, rh, .true.)
-        end do attempt
+            end do iterate
+            ! the iteration failed: retry once with a fresh matrix if it was old
+            if (.not. newton .or. s%jcur) return
+            s%ipup = .true.
+        end do corrector
+    end subroutine correct
 
-        if (s%kflag == KF_OK) then
-            rm = 1.0_dp/s%tesco(2, s%nqu, s%mused)
-            call scale_vec(s%n, rm, s%acor)
+    !> f at the corrector's iterate y (savf), counted; on a failure the step is undone
+    !! (fail_fatal) and stat says why.
+    subroutine corrector_rhs(s, sys, stat)
+        type(lsoda_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        type(status_t), intent(inout) :: stat
+        call sys%rhs(s%t, s%y, s%savf, stat)
+        s%nfe = s%nfe + 1
+        if (stat%code /= STATUS_OK) call fail_fatal(s, stat)
+    end subroutine corrector_rhs
+
+    !> One update of the corrector's iterate y from f at it (savf): the functional
+    !! iteration (Adams) or a chord Newton step with P (BDF); acor the correction so far,
+    !! del the weighted norm of this update.  stat: a failure of the solve with P.
+    subroutine corrector_update(s, sys, newton, del, stat)
+        type(lsoda_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        logical, intent(in) :: newton               !! BDF: chord Newton
+        real(dp), intent(out) :: del
+        type(status_t), intent(inout) :: stat
+        if (.not. newton) then
+            call functional_update(s%n, s%h, s%el(1), s%yh(:, 1), s%yh(:, 2), &
+                                   s%rewt, s%savf, s%acor, s%y, del)
+            return
         end if
-        s%hold = s%h
-        s%jstart = 1
-    end subroutine take_step
+        del = 0.0_dp
+        call newton_residual(s%n, s%h, s%savf, s%yh(:, 2), s%acor, s%y)
+        if (s%structured) then
+            call sys%solve_iteration(s%y, stat)
+        else
+            call la_lu_solve(s%wm, s%ipiv, s%y, stat)
+        end if
+        if (stat%code /= STATUS_OK) return
+        call newton_update(s%n, s%el(1), s%yh(:, 1), s%rewt, s%acor, s%y, del)
+    end subroutine corrector_update
+
+    !> The local error test's norm of the converged step's error estimate: the weighted
+    !! norm of acor (del when the first iteration converged) over the method's divisor.
+    pure real(dp) function error_estimate(s, m, del) result(dsm)
+        type(lsoda_t), intent(in) :: s
+        integer, intent(in) :: m                    !! the corrector's iterations after the first
+        real(dp), intent(in) :: del                 !! the norm of its last change
+        if (m == 0) then
+            dsm = del/s%tesco(2, s%nq, s%meth)
+        else
+            dsm = vmnorm(s%n, s%acor, s%rewt)/s%tesco(2, s%nq, s%meth)
+        end if
+    end function error_estimate
+
+    !> After a corrector that did not converge: undo the prediction and retry with h/4 and a
+    !! new P, or end the step (done, kflag KF_CONV or KF_SINGULAR) when h is at its floor,
+    !! after MXNCF such failures, or when the solve with P failed.
+    subroutine retry_after_convergence_failure(s, outcome, ncf, done)
+        type(lsoda_t), intent(inout) :: s
+        integer, intent(in) :: outcome              !! correct's (not CORR_CONVERGED)
+        integer, intent(inout) :: ncf               !! convergence failures of this step
+        logical, intent(out) :: done                !! the step ends (kflag set)
+        ncf = ncf + 1
+        s%ncfn = s%ncfn + 1
+        s%rmax = 2.0_dp
+        s%t = s%told
+        call unpredict(s)
+        done = .true.
+        if (outcome == CORR_UNSOLVED) then
+            s%kflag = KF_SINGULAR
+            return
+        end if
+        if (abs(s%h) <= max(HMIN*1.00001_dp, hfloor(s)) .or. ncf == MXNCF) then
+            s%kflag = KF_CONV
+            if (outcome == CORR_SINGULAR) s%kflag = KF_SINGULAR
+            return
+        end if
+        done = .false.
+        s%ipup = s%meth == METHOD_BDF
+        call rescale(s, 0.25_dp, .true.)
+    end subroutine retry_after_convergence_failure
+
+    !> After a failed local error test (dsm > 1): undo the prediction and retry at the order
+    !! and h choose_order gives, after the third failure of the step at order 1 with h/10
+    !! from f anew, or end the step (done, kflag KF_ERRTEST) when h is at its floor or after
+    !! MXNEF failures (KF_FATAL when f failed: stat says why).
+    subroutine retry_after_error_test(s, sys, dsm, done, stat)
+        type(lsoda_t), intent(inout) :: s
+        class(ode_system_t), intent(inout) :: sys
+        real(dp), intent(in) :: dsm                 !! the error test's norm
+        logical, intent(out) :: done                !! the step ends (kflag set)
+        type(status_t), intent(inout) :: stat
+        real(dp) :: rh
+        integer :: newq
+        s%netf = s%netf + 1
+        s%kflag = s%kflag - 1
+        s%t = s%told
+        call unpredict(s)
+        s%rmax = 2.0_dp
+        done = .true.
+        if (abs(s%h) <= max(HMIN*1.00001_dp, hfloor(s))) then
+            s%kflag = KF_ERRTEST
+            return
+        end if
+        if (s%kflag <= -3) then
+            if (s%kflag <= -MXNEF) then
+                s%kflag = KF_ERRTEST
+                return
+            end if
+            ! repeated failures: restart at order 1 from a fresh derivative, h/10
+            rh = max(HMIN/abs(s%h), 0.1_dp)
+            s%h = s%h*rh
+            s%y = s%yh(:, 1)
+            call sys%rhs(s%t, s%y, s%savf, stat)
+            s%nfe = s%nfe + 1
+            if (stat%code /= STATUS_OK) then
+                call s%prefix_time(stat, s%t)
+                s%kflag = KF_FATAL
+                return
+            end if
+            s%yh(:, 2) = s%h*s%savf
+            if (s%ns > 0) then
+                call sens_slope(s, sys, s%t, s%y, stat)
+                if (stat%code /= STATUS_OK) then
+                    call s%prefix_time(stat, s%t)
+                    s%kflag = KF_FATAL
+                    return
+                end if
+                s%zh(:, 2) = s%h*s%zh(:, 2)
+            end if
+            s%ipup = s%meth == METHOD_BDF
+            s%ialth = 5
+            call set_order(s, 1)
+            done = .false.
+            return
+        end if
+        call choose_order(s, dsm, .false., newq, rh)
+        call set_order(s, newq)
+        call rescale(s, rh, .true.)
+        done = .false.
+    end subroutine retry_after_error_test
+
+    !> The accepted step: the counters, the correction added to the Nordsieck arrays, then a
+    !! switch of method considered (consider_switch: h and the order of the new method),
+    !! else the order and h of the next step (choose_next).
+    subroutine accept(s, dsm, pnorm)
+        type(lsoda_t), intent(inout) :: s
+        real(dp), intent(in) :: dsm                 !! the error test's norm (<= 1)
+        real(dp), intent(in) :: pnorm               !! the predicted solution's norm
+        real(dp) :: rh
+        logical :: switched
+        s%kflag = KF_OK
+        s%nst = s%nst + 1
+        s%hu = s%h
+        s%nqu = s%nq
+        s%mused = s%meth
+        call add_correction(s%yh, s%n, s%el, s%acor, s%l)
+        if (s%ns > 0) call add_correction(s%zh, s%nsn, s%el, s%sacor, s%l)
+        call consider_switch(s, dsm, pnorm, switched, rh)
+        if (switched) then
+            s%icount = SWITCH_WAIT
+            s%pdlast = 0.0_dp
+            s%l = s%nq + 1
+            call rescale(s, rh, .true.)
+            s%rmax = 10.0_dp
+            return
+        end if
+        call choose_next(s, dsm)
+    end subroutine accept
+
+    !> Every SWITCH_WAIT steps after the last switch, on every accepted step: would the
+    !! other method take a step enough larger (Adams -> BDF: 5 times, within Adams'
+    !! stability region; BDF -> Adams: not smaller) at the same accuracy?  If so, switched,
+    !! meth and nq are the new method and order and rh the ratio of its step to h.
+    subroutine consider_switch(s, dsm, pnorm, switched, rh)
+        type(lsoda_t), intent(inout) :: s
+        real(dp), intent(in) :: dsm, pnorm          !! the error test's norm, the prediction's
+        logical, intent(out) :: switched
+        real(dp), intent(out) :: rh
+        switched = .false.
+        rh = 1.0_dp
+        s%icount = s%icount - 1
+        if (s%icount >= 0) return
+        if (s%meth == METHOD_ADAMS) then
+            call test_switch_to_bdf(s, dsm, pnorm, switched, rh)
+        else
+            call test_switch_to_adams(s, dsm, pnorm, switched, rh)
+        end if
+    end subroutine consider_switch
+
+    !> Adams -> BDF: the step BDF could take at the same accuracy, rh2 h, against Adams'
+    !! rh1 h (held to its stability region by the Lipschitz estimate pdlast); a switch when
+    !! rh2 >= SWITCH_RATIO rh1, or when the step is held by stability while its error is
+    !! negligible.  Never with adams_only, nor above order 5.
+    subroutine test_switch_to_bdf(s, dsm, pnorm, switched, rh)
+        type(lsoda_t), intent(inout) :: s
+        real(dp), intent(in) :: dsm, pnorm
+        logical, intent(inout) :: switched
+        real(dp), intent(inout) :: rh
+        real(dp) :: exsm, rh1, rh1it, rh2, pdh, dm, exm
+        integer :: nqm
+        if (s%nq > 5 .or. s%adams_only) return
+        rh2 = 1.0_dp
+        nqm = 1
+        if (dsm > 100.0_dp*pnorm*UROUND .and. s%pdest /= 0.0_dp) then
+            exsm = 1.0_dp/s%l
+            rh1 = 1.0_dp/(1.2_dp*dsm**exsm + 1.2e-6_dp)
+            rh1it = 2.0_dp*rh1
+            pdh = s%pdlast*abs(s%h)
+            if (pdh*rh1 > 1.0e-5_dp) rh1it = SM1(s%nq)/pdh
+            rh1 = min(rh1, rh1it)
+            call other_method_step(s, dsm, s%mxords, s%cm1, s%cm2, nqm, dm, exm, rh2)
+            if (rh2 >= SWITCH_RATIO*rh1) switched = .true.
+        else if (s%irflag /= 0) then
+            ! step limited by stability yet error tiny: go stiff
+            rh2 = 2.0_dp
+            nqm = min(s%nq, s%mxords)
+            switched = .true.
+        end if
+        if (switched) then
+            rh = rh2
+            s%meth = METHOD_BDF
+            s%nq = nqm
+        end if
+    end subroutine test_switch_to_bdf
+
+    !> BDF -> Adams: the step Adams could take at the same accuracy, within its stability
+    !! region (pdnorm, the norm of J), rh1 h, against BDF's rh2 h; a switch when Adams' is
+    !! not smaller and its error estimate is not lost in roundoff.
+    subroutine test_switch_to_adams(s, dsm, pnorm, switched, rh)
+        type(lsoda_t), intent(inout) :: s
+        real(dp), intent(in) :: dsm, pnorm
+        logical, intent(inout) :: switched
+        real(dp), intent(inout) :: rh
+        real(dp) :: exsm, rh1, rh1it, rh2, pdh, dm, exm, alpha
+        integer :: nqm
+        exsm = 1.0_dp/s%l
+        call other_method_step(s, dsm, s%mxordn, s%cm2, s%cm1, nqm, dm, exm, rh1)
+        rh1it = 2.0_dp*rh1
+        pdh = s%pdnorm*abs(s%h)
+        if (pdh*rh1 > 1.0e-5_dp) rh1it = SM1(nqm)/pdh
+        rh1 = min(rh1, rh1it)
+        rh2 = 1.0_dp/(1.2_dp*dsm**exsm + 1.2e-6_dp)
+        if (rh1*SWITCH_RATIO >= 5.0_dp*rh2) then
+            alpha = max(0.001_dp, rh1)
+            dm = alpha**exm*dm
+            if (dm > 1000.0_dp*UROUND*pnorm) then
+                switched = .true.
+                rh = rh1
+                s%meth = METHOD_ADAMS
+                s%nq = nqm
+            end if
+        end if
+    end subroutine test_switch_to_adams
+
+    !> The step the other method could take at the same accuracy, rh h (the switching
+    !! tests): at order nqm = min(nq, its highest order), from this step's error norm dsm
+    !! scaled by the two methods' error constants, or, above its highest order, from yh's
+    !! column nqm + 2 (dm the error estimate, exm = 1/(nqm + 1)).
+    subroutine other_method_step(s, dsm, mxord_other, cm_this, cm_other, nqm, dm, exm, rh)
+        type(lsoda_t), intent(in) :: s
+        real(dp), intent(in) :: dsm                 !! this step's error norm
+        integer, intent(in) :: mxord_other          !! the other method's highest order
+        real(dp), intent(in) :: cm_this(:), cm_other(:)     !! their constants (cm1, cm2)
+        integer, intent(out) :: nqm
+        real(dp), intent(out) :: dm, exm, rh
+        integer :: lm
+        if (s%nq > mxord_other) then
+            nqm = mxord_other
+            lm = nqm + 1
+            exm = 1.0_dp/lm
+            dm = vmnorm(s%n, s%yh(:, lm + 1), s%rewt)/cm_other(nqm)
+            rh = 1.0_dp/(1.2_dp*dm**exm + 1.2e-6_dp)
+        else
+            exm = 1.0_dp/s%l
+            dm = dsm*(cm_this(s%nq)/cm_other(s%nq))
+            rh = 1.0_dp/(1.2_dp*dm**exm + 1.2e-6_dp)
+            nqm = s%nq
+        end if
+    end subroutine other_method_step
+
+    !> The order and h of the step after an accepted one without a switch: every ialth
+    !! steps choose_order's, with yh rescaled to the new h; on the step before that,
+    !! acor kept in yh's last column for its test of the order above.
+    subroutine choose_next(s, dsm)
+        type(lsoda_t), intent(inout) :: s
+        real(dp), intent(in) :: dsm                 !! the error test's norm
+        real(dp) :: rh
+        integer :: newq
+        s%ialth = s%ialth - 1
+        if (s%ialth == 0) then
+            call choose_order(s, dsm, .true., newq, rh)
+            if (newq < 0) return                    ! keep order and step
+            call set_order(s, newq)
+            call rescale(s, rh, .true.)
+            s%rmax = 10.0_dp
+            return
+        end if
+        if (s%ialth == 1 .and. s%l /= s%lmax) then
+            s%yh(:, s%lmax) = s%acor                ! kept for the order-increase test
+            if (s%ns > 0) s%zh(:, s%lmax) = s%sacor
+        end if
+    end subroutine choose_next
+
+    !> The order nq (l = nq + 1) and its coefficients, when it changes.
+    subroutine set_order(s, newq)
+        type(lsoda_t), intent(inout) :: s
+        integer, intent(in) :: newq
+        if (newq == s%nq) return
+        s%nq = newq
+        s%l = newq + 1
+        call load_el(s)
+    end subroutine set_order
 
     !> Undo the prediction after a right-hand-side failure and mark the step fatal.
     subroutine fail_fatal(s, stat)
         type(lsoda_t), intent(inout) :: s
         type(status_t), intent(inout) :: stat
-        s%tn = s%told
+        s%t = s%told
         call unpredict(s)
-        call prefix_time(stat, s%tn)
+        call s%prefix_time(stat, s%t)
         s%kflag = KF_FATAL
         s%hold = s%h
     end subroutine fail_fatal
 
-    !> Smallest |h| worth trying at tn (a few units of roundoff of t).
+    !> Smallest |h| worth trying at t (a few units of roundoff of t).
     pure real(dp) function hfloor(s)
         type(lsoda_t), intent(in) :: s
-        hfloor = 4.0_dp*UROUND*abs(s%tn)
+        hfloor = 4.0_dp*UROUND*abs(s%t)
     end function hfloor
 
     !> Order and step-size ratio for the next step (after a success: orders nq-1, nq,
@@ -1393,7 +1327,7 @@ contains
         logical, intent(in) :: use_hmin
         real(dp) :: rh, pdh
         rh = rh_in
-        if (use_hmin) rh = max(rh, s%hmin/abs(s%h))
+        if (use_hmin) rh = max(rh, HMIN/abs(s%h))
         rh = min(rh, s%rmax)
         rh = rh/max(1.0_dp, abs(s%h)*s%hmxi*rh)
         if (s%meth == METHOD_ADAMS) then
@@ -1410,13 +1344,6 @@ contains
         s%rc = s%rc*rh
         s%ialth = s%l
     end subroutine rescale
-
-    !> yh <- yh * Pascal triangle (Taylor predictor to tn + h).
-    subroutine predict(s)
-        type(lsoda_t), intent(inout) :: s
-        call pascal(s%yh, s%n, s%nq)
-        if (s%ns > 0) call pascal(s%zh, s%nsn, s%nq)
-    end subroutine predict
 
     !> yh <- yh times the Pascal triangle on columns 1 ... nq + 1, rows 1:nrow (the Taylor
     !! predictor): for k = 1 ... nq and j = nq down to k, yh(:, j) = yh(:, j) + yh(:, j + 1),
@@ -1569,7 +1496,7 @@ contains
 
     !> P = I - h*l0*J (J analytic or by finite differences), its LU factors, and the
     !! weighted norm of J used by the stiff -> non-stiff test.  On entry y = predicted
-    !! solution and savf = f(tn, y).
+    !! solution and savf = f(t, y).
     subroutine build_iteration_matrix(s, sys, stat, singular)
         type(lsoda_t), intent(inout) :: s
         class(ode_system_t), intent(inout) :: sys
@@ -1586,14 +1513,14 @@ contains
         hl0 = s%h*s%el0
         if (s%structured) then
             ! the system forms and factors P itself (ode_system's has_iteration_solver)
-            call sys%factor_iteration(s%tn, s%y, hl0, s%rewt, pn, singular, stat)
+            call sys%factor_iteration(s%t, s%y, hl0, s%rewt, pn, singular, stat)
             if (stat%code /= STATUS_OK) return
             s%pdnorm = pn
             s%nlu = s%nlu + 1
             return
         end if
         if (sys%has_jacobian()) then
-            call sys%jacobian(s%tn, s%y, s%wm, stat)
+            call sys%jacobian(s%t, s%y, s%wm, stat)
             if (stat%code /= STATUS_OK) return
             do j = 1, n
                 do i = 1, n
@@ -1613,7 +1540,7 @@ contains
                 r = max(srur*abs(yj), r0/s%rewt(j))
                 s%y(j) = yj + r
                 fac = -hl0/r
-                call sys%rhs(s%tn, s%y, s%ftem, stat)
+                call sys%rhs(s%t, s%y, s%ftem, stat)
                 s%nfe = s%nfe + 1
                 s%y(j) = yj
                 if (stat%code /= STATUS_OK) return
@@ -1654,9 +1581,9 @@ contains
         call sens_sum(s%nsn, s%sjv, s%sdfdp, s%zh(:, 2))
     end subroutine sens_slope
 
-    !> The sensitivities' corrector at the step's converged point (tn, y): sacor with
+    !> The sensitivities' corrector at the step's converged point (t, y): sacor with
     !!     (I - h l0 J) sacor = h (J zh1 + df/dp) - zh2
-    !! (zh predicted; J and df/dp exact at (tn, y)), solved by a chord iteration whose
+    !! (zh predicted; J and df/dp exact at (t, y)), solved by a chord iteration whose
     !! residuals use the exact J: a BDF step's iteration matrix is its Newton matrix, an Adams
     !! step's the inverse of the sensitivities' own I - h l0 J (sens_matrix; kept by the
     !! Newton matrix's rules: a new one every MSBP steps or when h l0 changed by more than
@@ -1679,7 +1606,7 @@ contains
         ! n ns, the columns one after another, as zh's)
         n = s%n
         hl0 = s%h*s%el(1)
-        call sys%sens_point(s%tn, s%y, s%sdfdp, stat)
+        call sys%sens_point(s%t, s%y, s%sdfdp, stat)
         s%nsp = s%nsp + 1
         if (stat%code /= STATUS_OK) return
         if (s%meth == METHOD_ADAMS .and. .not. s%sens_errcon) then
@@ -1910,34 +1837,15 @@ contains
             call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, trim(buf))
             return
         end if
-        call check_in_step(s, t, 'lsoda dense', stat)
+        call s%check_in_step(t, 'dense', stat)
         if (stat%code /= STATUS_OK) then
             dky = yh(:, 1)
             return
         end if
         sc = 0.0_dp
-        if (s%h /= 0.0_dp) sc = (t - s%tn)/s%h
+        if (s%h /= 0.0_dp) sc = (t - s%t)/s%h
         call horner(yh, m, s%nq, s%h, sc, k, dky)
     end subroutine interpolate
-
-    !> LSODA_ERR_ILLEGAL_INPUT, '<who>: t = ... is outside the last step [...]', when t is
-    !! not within the last step (up to roundoff), else STATUS_OK.
-    subroutine check_in_step(s, t, who, stat)
-        type(lsoda_t), intent(in) :: s
-        real(dp), intent(in) :: t
-        character(len=*), intent(in) :: who
-        type(status_t), intent(out) :: stat
-        real(dp) :: tp, tol
-        character(len=200) :: buf
-        stat%code = STATUS_OK
-        tol = 100.0_dp*UROUND*(abs(s%tn) + abs(s%hu))
-        tp = s%tn - s%hu
-        if (min(tp, s%tn) - tol > t .or. t > max(tp, s%tn) + tol) then
-            write (buf, '(a,es15.7e3,a,es15.7e3,a,es15.7e3,a)') ': t = ', t, &
-                ' is outside the last step [', min(tp, s%tn), ', ', max(tp, s%tn), ']'
-            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, who//trim(buf))
-        end if
-    end subroutine check_in_step
 
     !> The k-th derivative of the polynomial of a Nordsieck array yh (order nq, step h) at
     !! the point sc h from the step's end.
@@ -1945,7 +1853,7 @@ contains
         integer, intent(in) :: m                        !! rows
         real(dp), intent(in) :: yh(m, LMAX_ALL)         !! Nordsieck array
         integer, intent(in) :: nq, k                    !! order, derivative
-        real(dp), intent(in) :: h, sc                   !! step, (t - tn)/h
+        real(dp), intent(in) :: h, sc                   !! step, (t - t_n)/h (t_n the step's end)
         real(dp), intent(out) :: dky(m)
         real(dp) :: c, t(2)
         integer :: i, j, jj, ic
@@ -2086,19 +1994,6 @@ contains
             y(i) = yh1(i) + el1*acor(i)
         end do
     end subroutine newton_update
-
-    !> Prefix a message with the time reached.
-    subroutine prefix_time(stat, t)
-        type(status_t), intent(inout) :: stat
-        real(dp), intent(in) :: t
-        character(len=40) :: buf
-        write (buf, '(a,es15.7e3,a)') 'at t = ', t, ': '
-        if (allocated(stat%msg)) then
-            stat%msg = trim(buf)//' '//stat%msg
-        else
-            stat%msg = trim(buf)//' (no message)'
-        end if
-    end subroutine prefix_time
 
     subroutine realloc_vec(v, n)
         real(dp), allocatable, intent(inout) :: v(:)

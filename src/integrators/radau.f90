@@ -53,7 +53,13 @@
 !!   polynomial their dense output.  They take part in the error estimate only when asked
 !!   (error_control), through the same embedded formula.
 !!
-!! All state lives in a `radau_t` object, so independent integrations can be interleaved.
+!! The code: integrate and step are integrator_t's (module ode_system); this module gives
+!! them the first step size (radau_start) and one accepted step (radau_one_step: the
+!! Jacobian and the factors, the stage equations by newton, the error estimate, then the
+!! step accepted or retried), and the dense output of the collocation polynomial.
+!!
+!! All state lives in a `radau_t` object (with what every integrator keeps, its
+!! integrator_t part), so independent integrations can be interleaved.
 !! No routine stops the program: every failure is returned in a status_t with one of the
 !! RADAU_ERR_* codes (or the code the right-hand side returned) and a message naming the
 !! cause and the time reached; the solution up to the failure is kept.
@@ -62,14 +68,14 @@ module radau
     use status, only: status_t, set_error, STATUS_OK, RADAU_ERR_MAX_STEPS, &
         RADAU_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_STEP_TOO_SMALL, RADAU_ERR_ILLEGAL_INPUT, &
         RADAU_ERR_SINGULAR
-    use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, sens_init_args, &
-        METHOD_RADAU
+    use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, integrator_id_t, &
+        common_stats, METHOD_RADAU
     use lapack_wrap, only: la_lu_factor, la_lu_solve, la_zlu_factor, la_zlu_solve
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
 
-    !> Method code of this integrator in integrator_stats_t (module integrator).
+    !> Method code of this integrator in integrator_stats_t (module ode_system).
     public :: METHOD_RADAU
 
     real(dp), parameter :: UROUND = epsilon(1.0_dp)
@@ -80,7 +86,6 @@ module radau
     real(dp), parameter :: THETA_JAC = 1.0e-3_dp  !! recompute J after a slower contraction
     real(dp), parameter :: H_KEEP_LO = 1.0_dp, H_KEEP_HI = 1.2_dp  !! keep h and the factors
     integer, parameter :: MAX_FAILS = 50          !! consecutive failed attempts of one step
-    integer, parameter :: DEFAULT_MAX_STEPS = 500000
     integer, parameter :: SENS_MAXIT = 10          !! sensitivity iterations before a direct solve
     real(dp), parameter :: SENS_CONV = 0.1_dp      !! their test: this part of the state's
     !> The local error estimate is held to TOL_FACTOR rtol (at most TOL_MAX): see the header.
@@ -102,59 +107,56 @@ module radau
     end type radau_coeffs_t
 
 
-    !> One integration.
+    !> One integration by Radau IIA: the method's coefficients, the solution and the last
+    !! step (dense output, starting values), the Jacobian and the factored iteration
+    !! matrices, the step-size control's history and the sensitivities' (what every
+    !! integrator keeps, as t, h, the tolerances and the counters, is integrator_t's; its
+    !! rtol and atol are the transformed tolerances, see the header).
     type, extends(integrator_t), public :: radau_t
         private
-        logical :: ready = .false.              ! init succeeded
-        logical :: started = .false.            ! direction and first step size chosen
-        integer :: n = 0
-        type(radau_coeffs_t) :: cf
-        real(dp) :: rtol = 0.0_dp               ! transformed tolerances
-        real(dp), allocatable :: atol(:)
-        real(dp) :: fnewt = 0.0_dp              ! Newton stopping threshold (scaled norm)
-        real(dp) :: t = 0.0_dp, dir = 1.0_dp
-        real(dp), allocatable :: y(:), f0(:)    ! solution at t and f(t, y)
-        real(dp) :: h = 0.0_dp                  ! next step to try (signed)
-        real(dp) :: h0_user = 0.0_dp, hmax = 0.0_dp, tlast = 0.0_dp
-        real(dp) :: tcrit = 0.0_dp
-        logical :: have_tcrit = .false.
-        ! the last accepted step: [t_old, t], its stage increments (dense output, starting
-        ! values of the next step's Newton iteration)
-        real(dp) :: t_old = 0.0_dp, h_old = 0.0_dp
-        real(dp), allocatable :: y_old(:), z_old(:, :)
-        logical :: have_step = .false.
-        ! Jacobian and factors
-        real(dp), allocatable :: jac(:, :), e1(:, :)
-        complex(dp), allocatable :: e2(:, :)
-        integer, allocatable :: ip1(:), ip2(:)
-        logical :: jac_current = .false.        ! jac evaluated at (t, y)
-        logical :: need_jac = .true., need_lu = .true.
-        real(dp) :: h_lu = 0.0_dp               ! h of the factors
-        ! control history
-        logical :: first = .true., rejected = .false.
-        real(dp) :: eta = 1.0_dp                ! Newton: theta/(1 - theta) of the last step
-        real(dp) :: theta = 0.0_dp              ! Newton contraction of the last attempt
-        real(dp) :: h_acc = 0.0_dp, err_acc = 1.0e-2_dp  ! Gustafsson: last accepted h, err
-        integer :: max_steps = DEFAULT_MAX_STEPS
-        ! counters
-        integer :: nst = 0, nfe = 0, nje = 0, nlu = 0, nit = 0, nncf = 0, nrej = 0
-        ! forward sensitivities (sens_init): at t, at the last step's start, its stage
-        ! increments, their slope at t (for the error estimate), absolute tolerances
-        integer :: ns = 0
-        logical :: sens_errcon = .false.
-        real(dp), allocatable :: sy(:, :), sy_old(:, :), zs_old(:, :, :), sf0(:, :), satol(:, :)
-        integer :: nsp = 0, nsit = 0, nsdir = 0
-        real(dp) :: hu = 0.0_dp
+        type(radau_coeffs_t) :: cf              !! the method's coefficients
+        real(dp) :: fnewt = 0.0_dp              !! the Newton iteration's threshold (scaled norm)
+        real(dp), allocatable :: y(:)           !! (n) the solution at t (units of y)
+        real(dp), allocatable :: f0(:)          !! (n) f(t, y) (units of y per unit of t)
+        ! the last accepted step [t_old, t] (its size is hu)
+        real(dp) :: t_old = 0.0_dp              !! its start
+        real(dp), allocatable :: y_old(:)       !! (n) the solution at its start
+        real(dp), allocatable :: z_old(:, :)    !! (n, 3) its stage increments Y_i - y_old
+        logical :: have_step = .false.          !! a step has been accepted since init
+        ! the Jacobian and the factors
+        real(dp), allocatable :: jac(:, :)      !! (n, n) J (per unit of t)
+        real(dp), allocatable :: e1(:, :)       !! (n, n) gam/h I - J, then its LU factors
+        complex(dp), allocatable :: e2(:, :)    !! (n, n) (alpha + i beta)/h I - J, factored
+        integer, allocatable :: ip1(:)          !! (n) the pivots of e1
+        integer, allocatable :: ip2(:)          !! (n) the pivots of e2
+        logical :: jac_current = .false.        !! jac was evaluated at (t, y)
+        logical :: need_jac = .true.            !! J is to be evaluated before the next attempt
+        logical :: need_lu = .true.             !! e1, e2 are to be factored anew
+        real(dp) :: h_lu = 0.0_dp               !! the h of the factors (units of t)
+        ! the history of the control
+        logical :: first = .true.               !! no step accepted yet
+        logical :: rejected = .false.           !! the last attempt was rejected
+        real(dp) :: eta = 1.0_dp                !! Newton: theta/(1 - theta) of the last step
+        real(dp) :: theta = 0.0_dp              !! Newton: contraction of the last attempt
+        real(dp) :: h_acc = 0.0_dp              !! Gustafsson: the last accepted h
+        real(dp) :: err_acc = 1.0e-2_dp         !! Gustafsson: its error (at least 1e-2)
+        integer :: nit = 0                      !! simplified Newton iterations since init
+        ! forward sensitivities (sens_init)
+        real(dp), allocatable :: sy(:, :)       !! (n, ns) the sensitivities at t
+        real(dp), allocatable :: sy_old(:, :)   !! (n, ns) at the last step's start
+        real(dp), allocatable :: zs_old(:, :, :)    !! (n, ns, 3) its stage increments
+        real(dp), allocatable :: sf0(:, :)      !! (n, ns) their slope at t (error control only)
     contains
         procedure :: init => radau_init
-        procedure :: integrate => radau_integrate
-        procedure :: step => radau_step
-        procedure :: dense => radau_dense
+        procedure :: dense_at => radau_dense_at
         procedure :: stats => radau_get_stats
-        procedure :: set_tcrit => radau_set_tcrit
-        procedure :: name => radau_name
         procedure :: sens_init => radau_sens_init
-        procedure :: sens_dense => radau_sens_dense
+        procedure :: sens_dense_at => radau_sens_dense_at
+        procedure :: start => radau_start
+        procedure :: one_step => radau_one_step
+        procedure :: solution => radau_solution
+        procedure :: at_tcrit => radau_at_tcrit
+        procedure :: identity => radau_identity
     end type radau_t
 
     public :: radau_coefficients
@@ -291,7 +293,7 @@ contains
     end function best_ccross
 
     ! ------------------------------------------------------------------------------------
-    ! Public routines
+    ! Public routines (integrate, step and set_tcrit are integrator_t's)
     ! ------------------------------------------------------------------------------------
 
     !> Start an integration at (t0, y0).
@@ -300,7 +302,7 @@ contains
     !! t0        [in]  initial time.
     !! y0        [in]  initial state, size n >= 1.
     !! rtol      [in]  relative tolerance, > 0 (transformed internally, see the header).
-    !! atol      [in]  absolute tolerance, size 1 or n, each >= 0.
+    !! atol      [in]  absolute tolerance, size 1 or n, each >= 0 and finite.
     !! stat      [out] STATUS_OK; RADAU_ERR_ILLEGAL_INPUT for bad arguments;
     !!                 RADAU_ERR_TOO_MUCH_ACCURACY for rtol below 1e-14 (the transformed
     !!                 tolerance would drown in roundoff); or the right-hand side's code.
@@ -320,13 +322,9 @@ contains
         real(dp) :: quot
         character(len=120) :: buf
 
-        s%ready = .false.
-        s%started = .false.
         n = size(y0)
-        if (n < 1) then
-            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, 'radau init: empty state vector')
-            return
-        end if
+        call s%init_common(t0, n, atol, stat, tcrit, h0, hmax, max_steps)
+        if (stat%code /= STATUS_OK) return
         if (.not. (rtol > 0.0_dp .and. rtol < 1.0_dp)) then
             write (buf, '(a,es10.3,a)') 'radau init: rtol = ', rtol, ' must lie in (0, 1)'
             call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, trim(buf))
@@ -338,59 +336,16 @@ contains
             call set_error(stat, RADAU_ERR_TOO_MUCH_ACCURACY, trim(buf))
             return
         end if
-        if (size(atol) /= 1 .and. size(atol) /= n) then
-            write (buf, '(a,i0,a,i0)') 'radau init: size(atol) = ', size(atol), &
-                ' must be 1 or n = ', n
-            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, trim(buf))
-            return
-        end if
-        if (.not. all(atol >= 0.0_dp .and. atol < huge(1.0_dp))) then
-            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, 'radau init: atol has a negative or '// &
-                'non-finite entry')
-            return
-        end if
-        s%hmax = huge(1.0_dp)
-        if (present(hmax)) then
-            if (.not. (hmax > 0.0_dp)) then
-                call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, 'radau init: hmax must be > 0')
-                return
-            end if
-            s%hmax = hmax
-        end if
-        s%max_steps = DEFAULT_MAX_STEPS
-        if (present(max_steps)) then
-            if (max_steps < 1) then
-                call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, 'radau init: max_steps must be >= 1')
-                return
-            end if
-            s%max_steps = max_steps
-        end if
-        s%h0_user = 0.0_dp
-        if (present(h0)) s%h0_user = abs(h0)
-        s%have_tcrit = present(tcrit)
-        if (present(tcrit)) s%tcrit = tcrit
 
-        s%n = n
         s%cf = radau_coefficients()
         ! transformed tolerances (see the header)
         s%rtol = min(TOL_FACTOR*rtol, TOL_MAX)
         quot = s%rtol/rtol
-        if (allocated(s%atol)) deallocate (s%atol)
-        allocate (s%atol(n))
-        if (size(atol) == 1) then
-            s%atol = atol(1)*quot
-        else
-            s%atol = atol*quot
-        end if
+        s%atol = s%atol*quot
         s%fnewt = max(10.0_dp*UROUND/s%rtol, min(0.03_dp, sqrt(s%rtol)))
         call alloc_work(s, n)
 
-        s%t = t0
-        s%tlast = t0
-        s%dir = 1.0_dp
         s%y = y0
-        s%h = 0.0_dp
-        s%hu = 0.0_dp
         s%have_step = .false.
         s%jac_current = .false.
         s%need_jac = .true.
@@ -402,23 +357,9 @@ contains
         s%theta = 0.0_dp
         s%h_acc = 0.0_dp
         s%err_acc = 1.0e-2_dp
-        s%nst = 0
-        s%nfe = 0
-        s%nje = 0
-        s%nlu = 0
         s%nit = 0
-        s%nncf = 0
-        s%nrej = 0
-        s%ns = 0
-        s%nsp = 0
-        s%nsit = 0
-        s%nsdir = 0
-        call sys%rhs(t0, s%y, s%f0, stat)
-        s%nfe = 1
-        if (stat%code /= STATUS_OK) then
-            call prefix_time(stat, t0)
-            return
-        end if
+        call s%start_rhs(sys, s%y, s%f0, stat)
+        if (stat%code /= STATUS_OK) return
         s%ready = .true.
     end subroutine radau_init
 
@@ -436,195 +377,53 @@ contains
         s%jac = 0.0_dp
     end subroutine alloc_work
 
-    !> Advance the solution to tout and return y(tout) (steps past tout, never past tcrit,
-    !! and interpolates back).  Direction fixed by the first call.
-    !!
-    !! y    [out] size n: the solution at tout; on failure the solution at the time reached.
-    !! stat [out] STATUS_OK; RADAU_ERR_MAX_STEPS, RADAU_ERR_STEP_TOO_SMALL,
-    !!            RADAU_ERR_SINGULAR, RADAU_ERR_ILLEGAL_INPUT (no init, size(y) /= n, tout
-    !!            behind the last output or beyond tcrit), or the right-hand side's code.
-    subroutine radau_integrate(s, sys, tout, y, stat)
-        class(radau_t), intent(inout) :: s
-        class(ode_system_t), intent(inout) :: sys
-        real(dp), intent(in) :: tout
-        real(dp), intent(out) :: y(:)
-        type(status_t), intent(out) :: stat
-        integer :: nsteps
-        character(len=160) :: buf
-        stat%code = STATUS_OK
-        if (.not. s%ready .or. size(y) /= s%n) then
-            y = 0.0_dp
-            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, &
-                'radau integrate: solver not initialised or size(y) /= n')
-            return
-        end if
-        y = s%y
-        if (.not. s%started) then
-            if (tout == s%t) then
-                s%tlast = tout
-                return
-            end if
-            s%dir = sign(1.0_dp, tout - s%t)
-        else if ((tout - s%tlast)*s%dir < 0.0_dp) then
-            write (buf, '(a,es12.5,a,es12.5)') 'radau integrate: tout = ', tout, &
-                ' is behind the last output time ', s%tlast
-            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, trim(buf))
-            return
-        end if
-        if (s%have_tcrit) then
-            if ((s%tcrit - tout)*s%dir < 0.0_dp) then
-                write (buf, '(a,es12.5,a,es12.5)') 'radau integrate: tcrit = ', s%tcrit, &
-                    ' is behind tout = ', tout
-                call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, trim(buf))
-                return
-            end if
-        end if
-        if (.not. s%started) then
-            call start_integration(s, sys, tout, stat)
-            if (stat%code /= STATUS_OK) return
-        end if
-        nsteps = 0
-        do
-            if ((s%t - tout)*s%dir >= 0.0_dp) then
-                call interpolate(s, tout, 0, y, stat)
-                if (stat%code /= STATUS_OK) y = s%y
-                s%tlast = tout
-                return
-            end if
-            if (nsteps >= s%max_steps) then
-                write (buf, '(i0,a,es12.5,a,es12.5)') s%max_steps, ' steps taken on the way '// &
-                    'to t = ', tout, ': stopped at t = ', s%t
-                call set_error(stat, RADAU_ERR_MAX_STEPS, 'radau: '//trim(buf))
-                y = s%y
-                return
-            end if
-            call one_step(s, sys, stat)
-            if (stat%code /= STATUS_OK) then
-                y = s%y
-                return
-            end if
-            nsteps = nsteps + 1
-        end do
-    end subroutine radau_integrate
-
-    !> Take exactly one step (never past tcrit).  After it, dense() gives the solution
-    !! anywhere in [t_current - h_last, t_current].
-    !!
-    !! stat [out] as for integrate; RADAU_ERR_ILLEGAL_INPUT also when the integration
-    !!            already stands at tcrit.
-    !! tout [in, optional] only used before the first step: a time the caller wants to reach
-    !!            (fixes the direction and scales the first step); without it towards tcrit
-    !!            if set, else forward.
-    subroutine radau_step(s, sys, stat, tout)
-        class(radau_t), intent(inout) :: s
-        class(ode_system_t), intent(inout) :: sys
-        type(status_t), intent(out) :: stat
-        real(dp), intent(in), optional :: tout
-        real(dp) :: th
-        stat%code = STATUS_OK
-        if (.not. s%ready) then
-            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, 'radau step: solver not initialised')
-            return
-        end if
-        if (.not. s%started) then
-            th = s%t + 1.0_dp
-            if (s%have_tcrit) then
-                if (s%tcrit /= s%t) th = s%tcrit
-            end if
-            if (present(tout)) then
-                if (tout /= s%t) th = tout
-            end if
-            s%dir = sign(1.0_dp, th - s%t)
-            call start_integration(s, sys, th, stat)
-            if (stat%code /= STATUS_OK) return
-        end if
-        if (s%have_tcrit) then
-            if (abs(s%tcrit - s%t) <= 4.0_dp*UROUND*max(1.0_dp, abs(s%t)) .or. &
-                (s%tcrit - s%t)*s%dir < 0.0_dp) then
-                call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, &
-                    'radau step: the integration already stands at tcrit')
-                return
-            end if
-        end if
-        call one_step(s, sys, stat)
-    end subroutine radau_step
-
-    !> k-th derivative (k = 0 or 1) of the last step's collocation polynomial at t.
+    !> k-th derivative (k = 0 or 1) of the last step's collocation polynomial at t (dense of
+    !! integrator_t checks the integration and dky first).
     !!
     !! t    [in]  time in [t_current - h_last, t_current] (roundoff tolerated); before the
-    !!            first step only t = t0 (k = 0).
+    !!            first step only t = t0.
     !! dky  [out] size n: d^k y/dt^k at t.
-    !! stat [out] STATUS_OK or RADAU_ERR_ILLEGAL_INPUT (t outside the step, bad k or size).
-    subroutine radau_dense(s, t, k, dky, stat)
+    !! stat [out] STATUS_OK or RADAU_ERR_ILLEGAL_INPUT (t outside the step, bad k).
+    subroutine radau_dense_at(s, t, k, dky, stat)
         class(radau_t), intent(in) :: s
         real(dp), intent(in) :: t
         integer, intent(in) :: k
         real(dp), intent(out) :: dky(:)
         type(status_t), intent(out) :: stat
-        if (.not. s%ready .or. size(dky) /= s%n) then
-            dky = 0.0_dp
-            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, &
-                'radau dense: solver not initialised or size(dky) /= n')
-            return
-        end if
-        call interpolate(s, t, k, dky, stat)
-    end subroutine radau_dense
+        real(dp) :: x
+        dky = 0.0_dp
+        call dense_position(s, t, k, 'dense', x, stat)
+        if (stat%code /= STATUS_OK) return
+        call collocation(s, x, k, s%n, s%y, s%f0, s%y_old, s%z_old, dky)
+    end subroutine radau_dense_at
 
     !> Counters and step sizes (see integrator_stats_t).
-    function radau_get_stats(s) result(st)
+    pure function radau_get_stats(s) result(st)
         class(radau_t), intent(in) :: s
         type(integrator_stats_t) :: st
-        st%steps = s%nst
-        st%rhs_evals = s%nfe
-        st%jac_evals = s%nje
-        st%lu_decomps = s%nlu
+        st = common_stats(s)
         st%newton_iterations = s%nit
-        st%conv_failures = s%nncf
-        st%error_test_failures = s%nrej
         st%method_switches = 0
         st%method_last = METHOD_RADAU
         st%order_last = 5
         st%method_next = METHOD_RADAU
         st%order_next = 5
-        st%h_last = s%hu
-        st%h_next = s%h
-        st%t_current = s%t
-        st%sens_points = s%nsp
-        st%sens_iterations = s%nsit
-        st%sens_direct = s%nsdir
     end function radau_get_stats
 
-    !> The integrator's name in output files.
-    pure function radau_name(s) result(nm)
+    !> Radau's name and status codes for the procedures of integrator_t.
+    pure function radau_identity(s) result(id)
         class(radau_t), intent(in) :: s
-        character(len=:), allocatable :: nm
-        nm = 'radau'
-        if (.false.) nm = merge('radau', 'radau', s%ready)   ! keep s referenced
-    end function radau_name
+        type(integrator_id_t) :: id
+        id = integrator_id_t('radau', RADAU_ERR_ILLEGAL_INPUT, RADAU_ERR_MAX_STEPS)
+        if (.false.) id%name = merge('radau', 'radau', s%ready)     ! keep s referenced
+    end function radau_identity
 
-    !> Set (tcrit present) or remove (absent) the hard stop time; it must not lie behind the
-    !! time reached (then RADAU_ERR_ILLEGAL_INPUT and the old setting stays).
-    subroutine radau_set_tcrit(s, tcrit, stat)
-        class(radau_t), intent(inout) :: s
-        real(dp), intent(in), optional :: tcrit
-        type(status_t), intent(out), optional :: stat
-        character(len=120) :: buf
-        if (present(stat)) stat%code = STATUS_OK
-        if (.not. present(tcrit)) then
-            s%have_tcrit = .false.
-            return
-        end if
-        if (s%started .and. (tcrit - s%t)*s%dir < 0.0_dp) then
-            if (present(stat)) then
-                write (buf, '(a,es12.5,a,es12.5)') 'radau set_tcrit: tcrit = ', tcrit, &
-                    ' is behind the time reached ', s%t
-                call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, trim(buf))
-            end if
-            return
-        end if
-        s%tcrit = tcrit
-        s%have_tcrit = .true.
-    end subroutine radau_set_tcrit
+    !> The solution at t.
+    pure subroutine radau_solution(s, y)
+        class(radau_t), intent(in) :: s
+        real(dp), intent(out) :: y(:)       !! (n)
+        y = s%y
+    end subroutine radau_solution
 
     !> Start forward sensitivities (see the module header): after init, before the first
     !! step.
@@ -633,7 +432,8 @@ contains
     !! stat  [out] STATUS_OK; RADAU_ERR_ILLEGAL_INPUT (no init, the integration has started,
     !!             a bad shape or scale); or the system's code from its terms.
     !! scale [in, optional] (ns) the size of sensitivity k against the state's: its absolute
-    !!             tolerance is atol scale(k) (default 1), > 0.
+    !!             tolerance is atol scale(k) (default 1), > 0; the transformed atol, and
+    !!             for an atol of 0 the transformed rtol.
     !! error_control [in, optional] .true.: the sensitivities take part in the error
     !!             estimate (default .false.: the state's steps alone).
     subroutine radau_sens_init(s, sys, s0, stat, scale, error_control)
@@ -643,33 +443,17 @@ contains
         type(status_t), intent(out) :: stat
         real(dp), intent(in), optional :: scale(:)
         logical, intent(in), optional :: error_control
-        real(dp) :: sc(size(s0, 2)), w
-        integer :: n, ns, k, i
-        stat%code = STATUS_OK
-        s%ns = 0
-        n = s%n
-        ns = size(s0, 2)
-        call sens_init_args('radau sens_init', RADAU_ERR_ILLEGAL_INPUT, s%ready, &
-                            s%started, n, s0, sc, stat, scale)
+        integer :: n, ns
+        call s%sens_init_common(s0, s%rtol, stat, scale, error_control)
         if (stat%code /= STATUS_OK) return
-        s%sens_errcon = .false.
-        if (present(error_control)) s%sens_errcon = error_control
-        if (allocated(s%sy)) deallocate (s%sy, s%sy_old, s%zs_old, s%sf0, s%satol)
-        allocate (s%sy(n, ns), s%sy_old(n, ns), s%zs_old(n, ns, 3), s%sf0(n, ns), &
-                  s%satol(n, ns))
+        n = s%n
+        ns = s%ns
+        if (allocated(s%sy)) deallocate (s%sy, s%sy_old, s%zs_old, s%sf0)
+        allocate (s%sy(n, ns), s%sy_old(n, ns), s%zs_old(n, ns, 3), s%sf0(n, ns))
         s%sy = s0
         s%sy_old = s0
         s%zs_old = 0.0_dp
         s%sf0 = 0.0_dp
-        do k = 1, ns
-            do i = 1, n
-                ! the transformed atol; 0 would make a weight infinite where s = 0
-                w = s%atol(i)
-                if (.not. (w > 0.0_dp)) w = s%rtol
-                s%satol(i, k) = w*sc(k)
-            end do
-        end do
-        s%ns = ns
         if (s%sens_errcon) then
             block
                 real(dp) :: jm(n, n), pk(n, ns)
@@ -683,42 +467,24 @@ contains
         end if
     end subroutine radau_sens_init
 
-    !> The sensitivities (k = 0) or their derivative (k = 1) at t within the last step.
+
+    !> The sensitivities (k = 0) or their derivative (k = 1) at t within the last step
+    !! (sens_dense of integrator_t checks ds first).
     !!
     !! ds   [out] (n, ns).
-    !! stat [out] STATUS_OK or RADAU_ERR_ILLEGAL_INPUT (no sensitivities, t outside the step,
-    !!            a bad k or shape).
-    subroutine radau_sens_dense(s, t, k, ds, stat)
+    !! stat [out] STATUS_OK or RADAU_ERR_ILLEGAL_INPUT (t outside the step, a bad k).
+    subroutine radau_sens_dense_at(s, t, k, ds, stat)
         class(radau_t), intent(in) :: s
         real(dp), intent(in) :: t
         integer, intent(in) :: k
         real(dp), intent(out) :: ds(:, :)
         type(status_t), intent(out) :: stat
-        real(dp) :: x, l(3)
-        integer :: j
+        real(dp) :: x
         ds = 0.0_dp
-        if (.not. s%ready .or. s%ns == 0 .or. size(ds, 1) /= s%n .or. size(ds, 2) /= s%ns) then
-            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, 'radau sens_dense: no '// &
-                'sensitivities, or ds is not n x ns')
-            return
-        end if
-        call dense_position(s, t, k, x, stat)
+        call dense_position(s, t, k, 'sens_dense', x, stat)
         if (stat%code /= STATUS_OK) return
-        if (.not. s%have_step) then
-            if (k == 0) ds = s%sy
-            if (k == 1) ds = s%sf0
-            return
-        end if
-        if (k == 0) then
-            l = lagrange(s%cf, x)
-            ds = s%sy_old
-        else
-            l = lagrange_d(s%cf, x)/s%h_old
-        end if
-        do j = 1, 3
-            ds = ds + l(j)*s%zs_old(:, :, j)
-        end do
-    end subroutine radau_sens_dense
+        call collocation(s, x, k, s%n*s%ns, s%sy, s%sf0, s%sy_old, s%zs_old, ds)
+    end subroutine radau_sens_dense_at
 
     ! ------------------------------------------------------------------------------------
     ! The step
@@ -728,14 +494,17 @@ contains
     !! Norsett & Wanner I, sec. II.4): h = min(100 h_a, h_b) with h_a = 0.01 ||y0||/||f0||
     !! and h_b = (0.01/max(||f0||, ||f'||))^(1/4), f' estimated by the Euler step of size
     !! h_a, the norms in the error weights; limited by |tout - t0|, hmax and tcrit.
-    subroutine start_integration(s, sys, tout, stat)
-        type(radau_t), intent(inout) :: s
+    subroutine radau_start(s, sys, tout, have_tout, stat)
+        class(radau_t), intent(inout) :: s
         class(ode_system_t), intent(inout) :: sys
-        real(dp), intent(in) :: tout
+        real(dp), intent(in) :: tout                !! a time the caller wants to reach
+        logical, intent(in) :: have_tout            !! tout is given (else t + 1 stands for it)
         type(status_t), intent(out) :: stat
-        real(dp) :: d0, d1, d2, ha, hb, h, w(s%n), y1(s%n), f1(s%n), span
+        real(dp) :: d0, d1, d2, ha, hb, h, w(s%n), y1(s%n), f1(s%n), span, th
         stat%code = STATUS_OK
-        span = abs(tout - s%t)
+        th = tout
+        if (.not. have_tout) th = s%t + 1.0_dp
+        span = abs(th - s%t)
         if (s%have_tcrit) then
             if (s%tcrit /= s%t) span = min(span, abs(s%tcrit - s%t))
         end if
@@ -755,7 +524,7 @@ contains
             call sys%rhs(s%t + s%dir*ha, y1, f1, stat)
             s%nfe = s%nfe + 1
             if (stat%code /= STATUS_OK) then
-                call prefix_time(stat, s%t)
+                call s%prefix_time(stat, s%t)
                 return
             end if
             d2 = rms((f1 - s%f0)/w)/ha
@@ -771,13 +540,19 @@ contains
         h = max(h, 16.0_dp*UROUND*max(1.0_dp, abs(s%t)))
         s%h = s%dir*h
         s%started = .true.
-    end subroutine start_integration
+    end subroutine radau_start
+
+    !> True when t is at tcrit up to roundoff.
+    pure logical function radau_at_tcrit(s) result(at)
+        class(radau_t), intent(in) :: s
+        at = abs(s%tcrit - s%t) <= 4.0_dp*UROUND*max(1.0_dp, abs(s%t))
+    end function radau_at_tcrit
 
     !> One accepted step: attempts until the Newton iteration converges and the error test
     !! passes (the step size reduced in between), then the new solution, f at it, the
     !! collocation polynomial for dense output, and the next step size.
-    subroutine one_step(s, sys, stat)
-        type(radau_t), intent(inout) :: s
+    subroutine radau_one_step(s, sys, stat)
+        class(radau_t), intent(inout) :: s
         class(ode_system_t), intent(inout) :: sys
         type(status_t), intent(out) :: stat
         real(dp) :: z(s%n, 3), sc(s%n), err, fac, quot, hnew, facgus, hh, ynew(s%n)
@@ -812,11 +587,11 @@ contains
                 if (stat%code /= STATUS_OK) then
                     ! singular iteration matrix: a smaller step moves it away from J
                     nfail = nfail + 1
-                    s%nncf = s%nncf + 1
+                    s%ncfn = s%ncfn + 1
                     if (nfail >= MAX_FAILS) then
                         call set_error(stat, RADAU_ERR_SINGULAR, 'radau: iteration matrix '// &
                             'singular at every step size tried: '//stat%msg)
-                        call prefix_time(stat, s%t)
+                        call s%prefix_time(stat, s%t)
                         return
                     end if
                     s%h = 0.5_dp*s%h
@@ -831,7 +606,7 @@ contains
             if (stat%code /= STATUS_OK) return
             if (.not. conv) then
                 nfail = nfail + 1
-                s%nncf = s%nncf + 1
+                s%ncfn = s%ncfn + 1
                 s%h = hnew
                 s%rejected = .true.
                 s%need_jac = .true.          ! a fresh J unless this one is current
@@ -867,7 +642,7 @@ contains
                 s%h_acc = s%h
                 s%err_acc = max(1.0e-2_dp, err)
                 s%t_old = s%t
-                s%h_old = s%h
+                s%hu = s%h
                 s%y_old = s%y
                 s%z_old = z
                 if (s%ns > 0) then
@@ -886,12 +661,11 @@ contains
                 call sys%rhs(s%t, s%y, f1, stat)
                 s%nfe = s%nfe + 1
                 if (stat%code /= STATUS_OK) then
-                    call prefix_time(stat, s%t)
+                    call s%prefix_time(stat, s%t)
                     return
                 end if
                 s%f0 = f1
                 s%nst = s%nst + 1
-                s%hu = s%h
                 s%jac_current = .false.
                 if (s%rejected) hnew = s%dir*min(abs(hnew), abs(s%h))
                 s%first = .false.
@@ -911,7 +685,7 @@ contains
             end if
             ! rejected
             nfail = nfail + 1
-            s%nrej = s%nrej + 1
+            s%netf = s%netf + 1
             if (s%first) then
                 s%h = 0.1_dp*s%h
             else
@@ -921,7 +695,7 @@ contains
             s%need_jac = .true.              ! a fresh J unless this one is current
             s%need_lu = .true.
         end do
-    end subroutine one_step
+    end subroutine radau_one_step
 
     !> The Jacobian at (t, y): the system's analytic one, or forward differences with
     !! increments sqrt(uround) max(|y_j|, atol_j/rtol) (the scale of the error weights).
@@ -935,7 +709,7 @@ contains
         if (sys%has_jacobian()) then
             call sys%jacobian(s%t, s%y, s%jac, stat)
             if (stat%code /= STATUS_OK) then
-                call prefix_time(stat, s%t)
+                call s%prefix_time(stat, s%t)
                 return
             end if
         else
@@ -947,7 +721,7 @@ contains
                 call sys%rhs(s%t, yj, fj, stat)
                 s%nfe = s%nfe + 1
                 if (stat%code /= STATUS_OK) then
-                    call prefix_time(stat, s%t)
+                    call s%prefix_time(stat, s%t)
                     return
                 end if
                 s%jac(:, j) = (fj - s%f0)/del
@@ -956,7 +730,7 @@ contains
         end if
         if (.not. all(ieee_is_finite(s%jac))) then
             call set_error(stat, RADAU_ERR_SINGULAR, 'radau: non-finite Jacobian')
-            call prefix_time(stat, s%t)
+            call s%prefix_time(stat, s%t)
             return
         end if
         s%jac_current = .true.
@@ -982,7 +756,7 @@ contains
             end do
             call sys%sens_jv(eye, jm, stat)
         end if
-        if (stat%code /= STATUS_OK) call prefix_time(stat, t)
+        if (stat%code /= STATUS_OK) call s%prefix_time(stat, t)
     end subroutine stage_terms
 
     !> The sensitivities' stage increments zs of the step from (t, y) whose state has the
@@ -1012,7 +786,7 @@ contains
         p3 = pk(:, :, 3)
         if (s%have_step) then
             do i = 1, 3
-                sn = 1.0_dp + s%cf%c(i)*s%h/s%h_old
+                sn = 1.0_dp + s%cf%c(i)*s%h/s%hu
                 l = lagrange(s%cf, sn)
                 do j = 1, 3
                     zs(:, :, i) = zs(:, :, i) + l(j)*s%zs_old(:, :, j)
@@ -1096,7 +870,7 @@ contains
             if (lst%code /= STATUS_OK) then
                 call set_error(stat, RADAU_ERR_SINGULAR, 'radau: the sensitivities'' '// &
                     'collocation system is singular')
-                call prefix_time(stat, s%t)
+                call s%prefix_time(stat, s%t)
                 return
             end if
             do k = 1, s%ns
@@ -1168,7 +942,7 @@ contains
         z = 0.0_dp
         if (s%first .or. s%rejected .or. .not. s%have_step) return
         do i = 1, 3
-            sn = 1.0_dp + s%cf%c(i)*s%h/s%h_old
+            sn = 1.0_dp + s%cf%c(i)*s%h/s%hu
             l = lagrange(s%cf, sn)
             do j = 1, 3
                 z(:, i) = z(:, i) + l(j)*s%z_old(:, j)
@@ -1210,7 +984,7 @@ contains
             do i = 1, 3
                 call sys%rhs(s%t + s%cf%c(i)*s%h, s%y + z(:, i), f(:, i), stat)
                 if (stat%code /= STATUS_OK) then
-                    call prefix_time(stat, s%t)
+                    call s%prefix_time(stat, s%t)
                     return
                 end if
             end do
@@ -1282,7 +1056,7 @@ contains
             call sys%rhs(s%t, s%y + v, fe, stat)
             s%nfe = s%nfe + 1
             if (stat%code /= STATUS_OK) then
-                call prefix_time(stat, s%t)
+                call s%prefix_time(stat, s%t)
                 return
             end if
             v = fe + ez
@@ -1318,64 +1092,54 @@ contains
         l(3) = ((x - cf%c(1))*(x - cf%c(2)) + x*(x - cf%c(2)) + x*(x - cf%c(1)))*cf%lag(3)
     end function lagrange_d
 
-    !> The collocation polynomial of the last step (or y at t before any step).
-    subroutine interpolate(s, t, k, dky, stat)
+    !> The collocation polynomial of the last step at x (dense_position), k = 0, or its
+    !! derivative, k = 1, for m values at once (the state's, or the sensitivities' n ns):
+    !! v_old + sum_j L_j(x) z_j, or sum_j L_j'(x) z_j/hu; before the first step the values
+    !! at t (k = 0) or their slope (k = 1).
+    pure subroutine collocation(s, x, k, m, v_now, f_now, v_old, z, v)
         type(radau_t), intent(in) :: s
-        real(dp), intent(in) :: t
-        integer, intent(in) :: k
-        real(dp), intent(out) :: dky(:)
-        type(status_t), intent(out) :: stat
-        real(dp) :: x, l(3)
+        real(dp), intent(in) :: x                   !! (t - t_old)/hu
+        integer, intent(in) :: k, m                 !! derivative (0 or 1), values
+        real(dp), intent(in) :: v_now(m), f_now(m)  !! the values at t and their slope
+        real(dp), intent(in) :: v_old(m)            !! the values at the last step's start
+        real(dp), intent(in) :: z(m, 3)             !! its stage increments
+        real(dp), intent(inout) :: v(m)             !! 0 on entry; the result
+        real(dp) :: l(3)
         integer :: j
-        dky = 0.0_dp
-        call dense_position(s, t, k, x, stat)
-        if (stat%code /= STATUS_OK) return
         if (.not. s%have_step) then
-            if (k == 0) dky = s%y
-            if (k == 1) dky = s%f0
+            if (k == 0) v = v_now
+            if (k == 1) v = f_now
             return
         end if
         if (k == 0) then
             l = lagrange(s%cf, x)
-            dky = s%y_old
+            v = v_old
         else
-            l = lagrange_d(s%cf, x)/s%h_old
+            l = lagrange_d(s%cf, x)/s%hu
         end if
         do j = 1, 3
-            dky = dky + l(j)*s%z_old(:, j)
+            v = v + l(j)*z(:, j)
         end do
-    end subroutine interpolate
+    end subroutine collocation
 
-    !> Where t lies in the last step, x = (t - t_old)/h_old (0 before the first step, where
+    !> Where t lies in the last step, x = (t - t_old)/hu (0 before the first step, where
     !! only t = t0 is allowed), and the checks of dense output (k = 0 or 1, t in the step).
-    subroutine dense_position(s, t, k, x, stat)
+    subroutine dense_position(s, t, k, what, x, stat)
         type(radau_t), intent(in) :: s
         real(dp), intent(in) :: t
         integer, intent(in) :: k
+        character(len=*), intent(in) :: what        !! the procedure asked: 'dense', ...
         real(dp), intent(out) :: x
         type(status_t), intent(out) :: stat
-        real(dp) :: tol
-        character(len=160) :: buf
         stat%code = STATUS_OK
         x = 0.0_dp
         if (k < 0 .or. k > 1) then
-            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, 'radau dense: k must be 0 or 1')
+            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, 'radau '//what//': k must be 0 or 1')
             return
         end if
-        tol = 100.0_dp*UROUND*max(abs(s%t), abs(s%t_old), 1.0e-300_dp)
-        if (.not. s%have_step) then
-            if (abs(t - s%t) <= tol) return
-            write (buf, '(a,es12.5,a)') 'radau dense: t = ', t, ' before the first step'
-            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, trim(buf))
-            return
-        end if
-        if ((t - s%t_old)*s%dir < -tol .or. (t - s%t)*s%dir > tol) then
-            write (buf, '(a,es12.5,a,es12.5,a,es12.5,a)') 'radau dense: t = ', t, &
-                ' outside the last step [', min(s%t_old, s%t), ', ', max(s%t_old, s%t), ']'
-            call set_error(stat, RADAU_ERR_ILLEGAL_INPUT, trim(buf))
-            return
-        end if
-        x = (t - s%t_old)/s%h_old
+        call s%check_in_step(t, what, stat)
+        if (stat%code /= STATUS_OK .or. .not. s%have_step) return
+        x = (t - s%t_old)/s%hu
     end subroutine dense_position
 
     ! ------------------------------------------------------------------------------------
@@ -1386,18 +1150,5 @@ contains
         real(dp), intent(in) :: v(:)
         rms = sqrt(sum(v**2)/size(v))
     end function rms
-
-    !> Prefix a failure's message with the time reached.
-    subroutine prefix_time(stat, t)
-        type(status_t), intent(inout) :: stat
-        real(dp), intent(in) :: t
-        character(len=40) :: buf
-        write (buf, '(a,es12.5,a)') 'radau at t = ', t, ': '
-        if (allocated(stat%msg)) then
-            stat%msg = trim(buf)//' '//stat%msg
-        else
-            stat%msg = trim(buf)
-        end if
-    end subroutine prefix_time
 
 end module radau
