@@ -174,8 +174,9 @@ module estimator
 
     public :: estimate, lsq_jacobian, gauss_newton_gain, lsq_covariance
 
-    !> Largest condition number of J with its columns scaled to unit norm (covariance).
-    real(dp), parameter :: COND_MAX = 1.0e10_dp
+    !> Largest condition number of J with its columns scaled to unit norm: the covariance's,
+    !! and an undamped step's (DAMP_HALVING; beyond it the step has no digit left).
+    real(dp), parameter :: COND_MAX = 1.0e10_dp, STEP_COND_MAX = 1.0e14_dp
 
 contains
 
@@ -261,11 +262,14 @@ contains
         real(dp), allocatable :: a(:, :), b(:), ru(:), rt(:), rtu(:), jt(:, :), jd(:), h(:)
         real(dp) :: dvec(size(p0)), dstep(size(p0)), dgn(size(p0)), dgn_t(size(p0))
         real(dp) :: pt(size(p0)), lambda, nu, st, pred, rho, cost0, red, red_t, gain_t
-        logical :: analytic, weighted, small, last_small, inside, accepted, halving
+        logical :: analytic, weighted, small, last_small, inside, accepted, halving, deficient
         type(status_t) :: s2
         integer :: n, m, j, ne
         n = size(p0)
         m = size(hw)
+        red_t = 0.0_dp
+        gain_t = huge(1.0_dp)
+        dgn_t = 0.0_dp
         halving = opts%damping == DAMP_HALVING
         weighted = any(hw /= 1.0_dp)
         allocate (res%p(n), res%r(m), res%jac(m, n), ru(m), rt(m), rtu(m), jd(m))
@@ -322,11 +326,16 @@ contains
             end if
             ! the step
             if (halving) then
-                if (.not. (res%gain < huge(1.0_dp))) then
-                    call set_error(stat, ERR_NUMERIC, 'the Gauss-Newton step: the Jacobian '// &
-                        'is rank deficient: '//inseparable(res%jac, opts%names))
-                    res%ended = FAIL_STEP
-                    return
+                if (lambda == 0.0_dp) then
+                    ! a new Jacobian: its Gauss-Newton step must have digits
+                    deficient = .not. (res%gain < huge(1.0_dp))
+                    if (.not. deficient) deficient = condition(res%jac) > STEP_COND_MAX
+                    if (deficient) then
+                        call set_error(stat, ERR_NUMERIC, 'the Gauss-Newton step: the '// &
+                            'Jacobian is rank deficient: '//inseparable(res%jac, opts%names))
+                        res%ended = FAIL_STEP
+                        return
+                    end if
                 end if
                 dstep = dgn*(1.0_dp/(1.0_dp + lambda))
             else
@@ -475,10 +484,11 @@ contains
             call linearise(res%r, res%jac, dgn, red, res%gain)
             call prob%note_gain(res%gain)
         end subroutine new_jacobian
-        !> Moré's scaling: D_j = the largest column norm of J seen so far (never 0).
+        !> Moré's scaling: D_j = the largest column norm of J seen so far (never 0); the
+        !! damping's (DAMP_MARQUARDT) and the scaled step test's.
         subroutine scale_columns()
             integer :: jj
-            if (halving) return
+            if (halving .and. opts%step_norm /= STEP_SCALED) return
             do jj = 1, n
                 dvec(jj) = max(dvec(jj), norm2(res%jac(:, jj)))
                 if (.not. (dvec(jj) > 0.0_dp)) dvec(jj) = 1.0_dp
@@ -565,6 +575,12 @@ contains
                 return
             end if
             red = cost - sum((r + matmul(jac, dgn))**2)
+            if (.not. (red >= -1.0e-8_dp*cost) .or. .not. all(abs(dgn) < huge(1.0_dp))) then
+                ! a reduction below 0 beyond roundoff: the step of a rank-deficient J
+                dgn = 0.0_dp
+                red = 0.0_dp
+                return
+            end if
         end if
         if (cost > 0.0_dp) then
             gain = red*max(1, size(r) - size(jac, 2))/cost
@@ -687,6 +703,28 @@ contains
             end do
         end do
     end subroutine lsq_covariance
+
+    !> The condition number of J with its columns scaled to unit norm (huge with a zero
+    !! column; 1 for one column).
+    function condition(jac) result(c)
+        real(dp), intent(in) :: jac(:, :)
+        real(dp) :: c
+        real(dp) :: js(size(jac, 1), size(jac, 2)), sv(size(jac, 2)), vt(size(jac, 2), size(jac, 2))
+        real(dp) :: cn
+        type(status_t) :: st
+        integer :: j
+        c = 1.0_dp
+        if (size(jac, 2) < 2) return
+        c = huge(1.0_dp)
+        do j = 1, size(jac, 2)
+            cn = norm2(jac(:, j))
+            if (.not. (cn > 0.0_dp)) return
+            js(:, j) = jac(:, j)/cn
+        end do
+        call la_svd(js, sv, vt, st)
+        if (st%code /= 0) return
+        if (sv(size(sv)) > 0.0_dp) c = sv(1)/sv(size(sv))
+    end function condition
 
     !> What a rank-deficient J cannot determine, in words: 'the data do not depend on X' or
     !! 'the data do not tell X and Y apart'.

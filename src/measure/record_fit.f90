@@ -301,8 +301,8 @@ contains
         type(rig_t) :: rg
         type(start_t) :: st
         type(accuracy_t) :: acc
-        character(len=16), allocatable :: names(:)
-        real(dp), allocatable :: xs(:)
+        character(len=16) :: names(size(cols%names))
+        real(dp) :: xs(size(cols%names))
         real(dp) :: t0
         integer :: n, i0, i, nq, ns, c
         logical :: shift, rate
