@@ -10,11 +10,13 @@
 !! * Inversion: several periods T_i measured at peak amplitudes A_i (degrees of theta4) are
 !!   combined by weighted least squares, min sum w_i (T_i(I1) - T_i^meas)^2, with
 !!   w_i = 1/(u_T^2 + (dT_i/dA u_A)^2) (equal weights when no uncertainty is given), solved
-!!   by Gauss-Newton in the one unknown, safeguarded to stay at I1 > 0, until the step is
-!!   below 1e-14 of I1 or the weighted residuals are orthogonal to the slopes to 1e-7 (the
-!!   step left below 1e-7 standard errors: the periods' roundoff, about 1e-11 of a period,
-!!   is reached first when they scatter); a step no halving makes lower the sum of squares
-!!   is convergence when one of those tests holds.  T(I1) increases
+!!   by Gauss-Newton in the one unknown (the estimator, module estimator: the residuals
+!!   (T_i(I1) - T_i) w_i^(1/2), the step halved), safeguarded to stay at I1 > 0, until the
+!!   step is below 1e-14 of I1 or the weighted residuals are orthogonal to the slopes to
+!!   1e-7 (the step left below 1e-7 standard errors: the periods' roundoff, about 1e-11 of
+!!   a period, is reached first when they scatter); a step no halving makes lower the sum
+!!   of squares is convergence when the undamped step is below 1e-11 of I1 (the periods'
+!!   roundoff) or the orthogonality test holds.  T(I1) increases
 !!   strictly with I1 and tends to a positive limit T_min as I1 -> 0 (the body still rises
 !!   as it turns), so a period below T_min is refused: no positive I1 gives it.
 !! * First-order uncertainty (GUM, JCGM 100:2008, section 5.1): u(I1)^2 = sum_j (c_j u_j)^2

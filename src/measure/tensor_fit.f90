@@ -17,8 +17,9 @@
 !!   u . J u = m g b b' T^2 / (16 pi^2 l) (l the mean cable length), then least squares of
 !!   a(u) . x on those moments (LAPACK dgels).
 !! * The fit (fit_tensor): generalised least squares, min r^T V^-1 r, r = T(x) - T_meas,
-!!   by Gauss-Newton from the projection solution (the Jacobian by forward differences of
-!!   the model; a step that fails or raises the sum is halved), whitened by the Cholesky
+!!   by Gauss-Newton from the projection solution (the estimator, module estimator; the
+!!   Jacobian by forward differences of the model; a step that fails or raises the sum is
+!!   halved), whitened by the Cholesky
 !!   factor of V (LAPACK dpotrf, dtrtrs) and solved by dgels.  V holds what scatters the
 !!   rows independently of the tensor: each row's timing (u_period over cycles), its
 !!   amplitude (u_amplitude times dT/dA), the definition of its period (u_def, below), and
