@@ -273,7 +273,8 @@ contains
         halving = opts%damping == DAMP_HALVING
         weighted = any(hw /= 1.0_dp)
         allocate (res%p(n), res%r(m), res%jac(m, n), ru(m), rt(m), rtu(m), jd(m))
-        if (.not. halving) allocate (a(m + n, n), b(m + n))
+        ! the stacked least-squares problem of a damped step (DAMP_MARQUARDT)
+        allocate (a(merge(m + n, 0, .not. halving), n), b(merge(m + n, 0, .not. halving)))
         if (allocated(opts%h)) then
             h = opts%h
         else
