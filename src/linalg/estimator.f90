@@ -28,7 +28,9 @@
 !!     step is accepted when S(p + d) <= S(p) (1 + rise).  For fits whose Gauss-Newton
 !!     steps are good from the start and whose domain is kept by shortening them.
 !!   A step outside the domain (options lower, upper: strict bounds) is rejected without
-!!   an evaluation.
+!!   an evaluation.  DAMP_HALVING refuses a Jacobian whose columns, scaled to unit norm,
+!!   have a condition number beyond 1e14 (its undamped step has no digit left), naming the
+!!   parameters it cannot separate.
 !! * Convergence (each test off with a tolerance of 0):
 !!   - the gradient test: the gain g the undamped (Gauss-Newton) step of the current
 !!     Jacobian could still make, g = (S - min ||J d + r||^2) (m - n) / S, the fall of
@@ -59,6 +61,12 @@
 !!   s = 1.4826 median |r_i|, the robust scale, from the residuals without weights), the
 !!   residuals and the rows of J are multiplied by the weights' roots, and the fit is
 !!   repeated from its estimate, reweightings times.
+!! * The gain g is computed once at each point that has a Jacobian (with a problem's own
+!!   Jacobian: every point tried) and told the problem (note_gain; the record fit's
+!!   evaluator decides from it what its next run carries).
+!! * Counts: iterations (steps tried, accepted or not), jacobians (the start's and one at
+!!   each accepted point that the step test did not end), evaluations (of the residuals;
+!!   a difference Jacobian counts its own).
 !! * The result: p, r, J (the last Jacobian: at p, but after a final step that the step
 !!   test ended alone, at the point before it), chi^2 = S, dof = m - n, the Birge ratio
 !!   (chi^2/dof)^(1/2), and with options%covariance the p-value of chi^2 (module stats) and

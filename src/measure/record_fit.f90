@@ -50,7 +50,8 @@ module record_fit
     use deck, only: deck_t, estimated
     use output_io, only: out_files_t, all_finite
     use geometry, only: pendulum_t
-    use bifilar_model, only: NSTATE, sens_dir_t, vertical_rate, vertical_rate_gradient
+    use bifilar_model, only: NSTATE, bifilar_t, sens_dir_t, vertical_rate, &
+        vertical_rate_gradient
     use rig, only: rig_t, start_t, accuracy_t, rig_of, start_of, accuracy_of, make_pendulum, &
         start_state, same_rig, same_start
     use kane_run, only: kane_run_start, kane_run_t
@@ -145,7 +146,7 @@ module record_fit
         real(dp), allocatable :: w(:)           !! 1/u_i (1 without u)
         real(dp), allocatable :: hw(:)          !! the roots of the robust weights (1: squares)
         real(dp) :: xs(NPARAM) = 1.0_dp         !! the size of each estimated parameter
-        !> The evaluator of the model (module record_runs): the last run kept, the budget's
+        !> The evaluator of the model (record_runs_t): the last run kept, the budget's
         !! inputs (carry_inputs) that a run of the whole record near the minimum carries
         !! beside the fit's derivatives, so that the budget at the estimate
         !! (input_sensitivities) takes them from the fit's last run; the Jacobian taken
@@ -488,7 +489,6 @@ contains
         end select
         if (stat%code /= 0) stat%msg = stat%msg//' at tau = '//sci(t)
     end subroutine record_take
-
 
     !> The model at the point pt over the samples t (a fit's window), with its derivatives
     !! along the quantities fit (the fit's parameters but the bias; none: the values alone):
