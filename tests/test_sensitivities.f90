@@ -19,7 +19,6 @@ module test_sensitivities
     use inputs, only: set_input, input_value
     use record_fit, only: record_model, record_model_sens, record_fit_t, fit_problem, &
         fresh_jacobian
-    use estimator, only: gauss_newton_gain
     use records, only: record_t, read_record
     use identify, only: identify_result_t, identify_record
     use geometry, only: pendulum_t
@@ -30,6 +29,7 @@ module test_sensitivities
     use run_loop, only: drive
     use keep_sink, only: keep_t
     use work_precision, only: trajectory_errors
+    use estimator, only: gauss_newton_gain
     implicit none
     private
 

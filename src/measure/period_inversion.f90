@@ -66,12 +66,13 @@ module period_inversion
     use bifilar_model, only: NSTATE
     use run_loop, only: stepped_model_t, row_sink_t, drive, falling_zero
     use output_io, only: out_files_t
-    use budget, only: input_u_t, budget_row_t, ROW_INPUT, ROW_TIMING, ROW_AMPLITUDE
+    use budget, only: input_u_t, budget_row_t
     use inputs, only: input_t, set_input, no_effect_on_torsion, deck_inputs
     use sweep_engine, only: sweep_options_t, sweep_report_t
     use monte_carlo, only: mc_task_t, monte_carlo_run
     use estimator, only: lsq_problem_t, lsq_options_t, lsq_result_t, estimate, DAMP_HALVING, &
         STEP_LARGEST, FAIL_START, FAIL_EVALUATION, FAIL_JACOBIAN
+    use budget, only: ROW_INPUT, ROW_TIMING, ROW_AMPLITUDE
     implicit none
     private
 

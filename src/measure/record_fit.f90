@@ -53,12 +53,13 @@ module record_fit
     use bifilar_model, only: NSTATE, bifilar_t, sens_dir_t, vertical_rate, &
         vertical_rate_gradient
     use rig, only: rig_t, start_t, accuracy_t, rig_of, start_of, accuracy_of, make_pendulum, &
-        start_state, same_rig, same_start
+        start_state
     use kane_run, only: kane_run_start, kane_run_t
     use run_loop, only: stepped_model_t, row_sink_t, drive
     use integrators, only: SENS_FORWARD
     use estimator, only: lsq_problem_t, lsq_options_t, lsq_result_t, estimate, &
         gauss_newton_gain, lsq_covariance, LOSS_SQUARES
+    use rig, only: same_rig, same_start
     use lapack_wrap, only: la_lstsq
     use random, only: rng_t, rng_stream, rng_normal
     use records, only: record_t, mean_period
