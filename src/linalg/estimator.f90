@@ -162,7 +162,7 @@ module estimator
         real(dp), allocatable :: p(:)           !! parameters (the last accepted)
         real(dp), allocatable :: r(:)           !! residuals there (times the robust roots)
         real(dp), allocatable :: jac(:, :)      !! the last Jacobian (see the module header)
-        real(dp), allocatable :: robust(:)      !! the robust weights' roots (1: squares)
+        real(dp), allocatable :: robust(:)      !! LOSS_HUBER: the robust weights' roots
         real(dp) :: cost = 0.0_dp               !! S = ||r||^2 = chi^2
         real(dp) :: gain = huge(1.0_dp)         !! g at the last Jacobian
         integer :: dof = 0                      !! m - n
@@ -216,7 +216,7 @@ contains
                 if (stat%code /= 0) exit
             end do
         end if
-        res%robust = hw
+        if (opts%loss == LOSS_HUBER) call move_alloc(hw, res%robust)
         if (stat%code == 0) call statistics(res, opts)
     end subroutine estimate
 
