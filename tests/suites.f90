@@ -30,6 +30,7 @@ module suites
     use test_identify, only: run_identify_tests
     use test_graph, only: run_graph_tests
     use test_stats, only: run_stats_tests
+    use test_estimator, only: run_estimator_tests
     use test_measure, only: run_measure_tests
     use test_sensitivities, only: run_sensitivities_tests
     use test_tensor, only: run_tensor_tests
@@ -112,6 +113,8 @@ contains
                     'runs, fits, monodromies', run_sensitivities_tests), &
             suite_t('stats', 'Student''s t, chi-square tails, Welch-Satterthwaite, weighted '// &
                     'means', run_stats_tests), &
+            suite_t('estimator', 'least squares: known answers, rank deficiency, Huber, '// &
+                    'chi-square, roundoff', run_estimator_tests), &
             suite_t('tensor', 'the inertia tensor from several hangs: exact fit, projection, '// &
                     'u, plan, refusals', run_tensor_tests), &
             suite_t('graph', 'the module graph (layers, analyses apart, at most 8 floors); '// &

@@ -19,7 +19,7 @@ module test_identify
     use driver, only: run_deck
     use random, only: rng_t, rng_stream, rng_normal
     use lapack_wrap, only: la_lstsq, la_svd
-    use least_squares, only: lsq_problem_t, lsq_options_t, lsq_result_t, lm_fit
+    use estimator, only: lsq_problem_t, lsq_options_t, lsq_result_t, estimate
     use period_inversion, only: input_u_t, period_fit_t, invert_periods, period_budget, &
                                 torsion_period_s, simulated_period_s, linear_inertia
     use identify, only: identify_result_t, identify_record
@@ -43,12 +43,14 @@ module test_identify
         real(dp), allocatable :: t(:), y(:)
     contains
         procedure :: residual => expfit_residual
+        procedure :: nres => expfit_nres
     end type expfit_t
 
     !> Rosenbrock's function as least squares: r = (10 (x2 - x1^2), 1 - x1).
     type, extends(lsq_problem_t) :: rosenbrock_t
     contains
         procedure :: residual => rosenbrock_residual
+        procedure :: nres => rosenbrock_nres
     end type rosenbrock_t
 
 contains
@@ -152,6 +154,7 @@ contains
         type(expfit_t) :: e
         type(rosenbrock_t) :: rb
         type(lsq_result_t) :: res
+        type(lsq_options_t) :: opts
         type(status_t) :: st
         real(dp) :: a(4, 2), x(2), s(2), vt(2, 2), q(4, 2)
         integer :: i
@@ -160,12 +163,13 @@ contains
             e%t(i) = 0.1_dp*i
             e%y(i) = 2.0_dp*exp(-0.7_dp*e%t(i)) + 0.3_dp
         end do
-        call lm_fit(e, [1.0_dp, 2.0_dp, -1.0_dp], [1.0e-7_dp, 1.0e-7_dp, 1.0e-7_dp], 40, &
-                    lsq_options_t(), res, st)
+        opts%h = [1.0e-7_dp, 1.0e-7_dp, 1.0e-7_dp]
+        call estimate(e, [1.0_dp, 2.0_dp, -1.0_dp], opts, res, st)
         call t%check('lm: exponential decay converges', st%code == 0 .and. res%converged)
         call t%check('lm: exponential decay parameters to 1e-7', &
                      all(abs(res%p - [2.0_dp, 0.7_dp, 0.3_dp]) < 1.0e-7_dp))
-        call lm_fit(rb, [-1.2_dp, 1.0_dp], [1.0e-8_dp, 1.0e-8_dp], 2, lsq_options_t(), res, st)
+        opts%h = [1.0e-8_dp, 1.0e-8_dp]
+        call estimate(rb, [-1.2_dp, 1.0_dp], opts, res, st)
         call t%check('lm: Rosenbrock converges', st%code == 0 .and. res%converged)
         call t%check('lm: Rosenbrock minimum (1, 1) to 1e-6', all(abs(res%p - 1.0_dp) < 1.0e-6_dp))
         call t%check('lm: Rosenbrock in few steps', res%iterations < 40)
@@ -195,6 +199,17 @@ contains
         stat%code = 0
         r = p(1)*exp(-p(2)*prob%t) + p(3) - prob%y
     end subroutine expfit_residual
+
+    integer function expfit_nres(prob) result(n)
+        class(expfit_t), intent(in) :: prob
+        n = size(prob%t)
+    end function expfit_nres
+
+    integer function rosenbrock_nres(prob) result(n)
+        class(rosenbrock_t), intent(in) :: prob
+        n = 2
+        if (.false.) n = merge(2, 2, same_type_as(prob, prob))
+    end function rosenbrock_nres
 
     subroutine rosenbrock_residual(prob, p, r, stat)
         class(rosenbrock_t), intent(inout) :: prob

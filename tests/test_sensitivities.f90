@@ -30,6 +30,7 @@ module test_sensitivities
     use run_loop, only: drive
     use keep_sink, only: keep_t
     use work_precision, only: trajectory_errors
+    use estimator, only: gauss_newton_gain
     implicit none
     private
 
@@ -637,16 +638,18 @@ contains
         p = [0.0512_dp, 2.0e-4_dp, 5.0e-4_dp]
         call prob%residual_jacobian(p, r1, j1, st)
         call t%check('sensitivities: reuse: the first point, its Jacobian computed'// &
-                     msg_of(st), st%code == 0 .and. prob%jac_fresh)
+                     msg_of(st), st%code == 0 .and. prob%runs%jac_fresh)
+        ! what the estimator does after each evaluation: tell the problem its gain
+        call prob%note_gain(gauss_newton_gain(r1, j1))
         p(1) = p(1)*(1.0_dp + 1.0e-5_dp)
         call prob%residual_jacobian(p, r2, j2, st)
         call t%check('sensitivities: reuse: a short step on takes the Jacobian again'// &
-                     msg_of(st), st%code == 0 .and. .not. prob%jac_fresh .and. all(j2 == j1))
+                     msg_of(st), st%code == 0 .and. .not. prob%runs%jac_fresh .and. all(j2 == j1))
         call t%check('sensitivities: reuse: ... with residuals of its own', &
                      maxval(abs(r2 - r1)) > 0.0_dp)
         call fresh_jacobian(prob, p, r3, j3, st)
         call t%check('sensitivities: reuse: fresh_jacobian computes it at the point'// &
-                     msg_of(st), st%code == 0 .and. prob%jac_fresh .and. &
+                     msg_of(st), st%code == 0 .and. prob%runs%jac_fresh .and. &
                      maxval(abs(j3 - j1)) > 0.0_dp)
         call other%residual_jacobian(p, r4, j4, st)
         call t%check_close('sensitivities: reuse: = the Jacobian a new problem computes there', &

@@ -17,7 +17,7 @@
 !!   to the record's last sample; its value at the sample times is compared with the
 !!   record.  The parameters of &measurement estimate (I1 and any of c_v, c_q, amplitude,
 !!   t0) minimise sum ((model - measured)/u_i)^2 (u_i = 1 without column 3) by
-!!   Levenberg-Marquardt (module least_squares), with forward differences of the model.
+!!   the estimator (module estimator: Levenberg-Marquardt), with forward differences of the model.
 !!   An oscillation's phase makes the misfit many-valued in I1 over a long record, so the
 !!   fit runs first on about two periods of the record (its mean period from the zero
 !!   crossings), then on windows twice as long, each from the last estimate, up to the

@@ -14,15 +14,17 @@ submodule (identify) identify_impl
     use rig, only: rig_t, start_t, accuracy_t, make_pendulum, start_state
     use deck_runs, only: rig_of, start_of, accuracy_of, deck_inputs, record_format_of, &
         record_file, read_trials
-    use least_squares, only: lsq_result_t, lsq_jacobian, lm_fit, lsq_options_t, gauss_newton_gain
-    use budget, only: input_u_t
+    use estimator, only: lsq_result_t, lsq_jacobian, estimate, lsq_options_t, lsq_covariance, &
+        LOSS_SQUARES, LOSS_HUBER
+    use budget, only: input_u_t, ROW_INPUT, ROW_TIMING, ROW_AMPLITUDE, ROW_FIT, ROW_RELEASE, &
+        ROW_TARE, ROW_ADDED
     use records, only: read_record_file, record_format_t, mean_period
     use trials, only: trial_set_t, trial_t, RIG_COLUMNS
     use inputs, only: input_t, set_input
     use pooling, only: pooled_t, pool_releases
     use stats, only: coverage_factor, welch_satterthwaite, NU_INFINITE
-    use record_fit, only: record_fit_t, record_mc_task_t, fit_problem, fit_record, covariance, &
-        input_sensitivities, record_mc_task, explain_fit_failure, huber_weights, &
+    use record_fit, only: record_fit_t, record_mc_task_t, fit_problem, fit_record, carry_inputs, &
+        input_sensitivities, record_mc_task, explain_fit_failure, estimated_names, &
         correlation_time, fresh_jacobian, PARAM_NAMES, P_BIAS
     use period_inversion, only: period_fit_t, invert_periods, period_budget, &
                                 period_monte_carlo, linear_inertia, is_torsion_rig, &
@@ -529,19 +531,50 @@ contains
                                                                    options, report, files)
     end procedure identify_record
 
-    !> Is budget row `name` a part of the release's own u (measured anew for it) rather
-    !! than common to every release?
-    pure logical function own_row(name, per_trial)
+    !> Is budget row `row` a part of the release's own u (measured anew for it) rather than
+    !! common to every release?  Its timings, its amplitudes, its record's fit, and the rig
+    !! inputs the table of releases gives per release (per_trial).
+    pure logical function own_row(row, per_trial)
+        type(budget_row_t), intent(in) :: row
+        logical, intent(in) :: per_trial(5)
+        select case (row%kind)
+        case (ROW_TIMING, ROW_AMPLITUDE, ROW_FIT)
+            own_row = .true.
+        case (ROW_INPUT)
+            own_row = per_trial_input(row%input, per_trial)
+        case default
+            own_row = .false.
+        end select
+    end function own_row
+
+    !> Is input x a part of the release's own u (own_row of its row)?
+    pure logical function own_input(x, per_trial)
+        type(input_t), intent(in) :: x
+        logical, intent(in) :: per_trial(5)
+        own_input = input_kind(x) == ROW_AMPLITUDE
+        if (.not. own_input) own_input = per_trial_input(x%name, per_trial)
+    end function own_input
+
+    !> Does the table of releases give the rig input `name` per release (per_trial: its
+    !! columns l, l_prime, b, b_prime, mass; a platform's one length is column l)?
+    pure logical function per_trial_input(name, per_trial)
         character(len=*), intent(in) :: name
         logical, intent(in) :: per_trial(5)
         integer :: k
-        own_row = index(name, 'period(') == 1 .or. index(name, 'amplitude') == 1 .or. &
-                  trim(name) == 'record'
+        per_trial_input = .false.
         do k = 1, 5
-            if (per_trial(k) .and. trim(name) == trim(RIG_COLUMNS(k))) own_row = .true.
+            if (per_trial(k) .and. trim(name) == trim(RIG_COLUMNS(k))) per_trial_input = .true.
         end do
-        if (per_trial(1) .and. trim(name) == 'length') own_row = .true.
-    end function own_row
+        if (per_trial(1) .and. trim(name) == 'length') per_trial_input = .true.
+    end function per_trial_input
+
+    !> The kind of the budget row of input x: the release's amplitude (a reading of the
+    !! release, ROW_AMPLITUDE), else an input of the rig or body (ROW_INPUT).
+    pure integer function input_kind(x) result(kind)
+        type(input_t), intent(in) :: x
+        kind = ROW_INPUT
+        if (trim(x%name) == 'amplitude') kind = ROW_AMPLITUDE
+    end function input_kind
 
     !> A release's budget rows split: its own rows (with their degrees of freedom) and the
     !! sensitivities to the common inputs x.
@@ -555,7 +588,7 @@ contains
         allocate (r%c(size(x)), r%own(0), r%nu_row(0))
         r%c = 0.0_dp
         do i = 1, size(rows)
-            if (own_row(rows(i)%input, per_trial)) then
+            if (own_row(rows(i), per_trial)) then
                 r%own = [r%own, rows(i)]
                 r%nu_row = [r%nu_row, nu_rows(i)]
             else
@@ -624,13 +657,13 @@ contains
         allocate (nu_rows(size(f%budget)))
         nu_rows = NU_INFINITE
         do j = 1, size(f%budget)
-            if (index(f%budget(j)%input, 'period(') == 1) nu_rows(j) = nu_per
+            if (f%budget(j)%kind == ROW_TIMING) nu_rows(j) = nu_per
         end do
         call split_rows(f%budget, nu_rows, x, per_trial, r)
         if (nu_per < NU_INFINITE .and. size(r%own) > 0) then
             ! the period rows share one variance estimate (the scatter, n - 1 dof): one
             ! component for Welch-Satterthwaite
-            up = sqrt(sum(r%own%contribution**2, mask=index(r%own%input, 'period(') == 1))
+            up = sqrt(sum(r%own%contribution**2, mask=r%own%kind == ROW_TIMING))
             r%nu_own = welch_satterthwaite([up, sqrt(max(0.0_dp, r%u_own**2 - up**2))], &
                                            [nu_per, NU_INFINITE])
         end if
@@ -645,8 +678,8 @@ contains
         r%p(1) = r%i1
     end subroutine release_periods
 
-    !> One release recorded: the fit (Levenberg-Marquardt on growing windows; with
-    !! loss = 'huber', reweighted three times), the covariance C = s^2 tau (J^T W J)^-1 (s^2
+    !> One release recorded: the fit (the estimator on growing windows; with loss = 'huber',
+    !! its robust loss: reweighted three times), the covariance C = s^2 tau (J^T W J)^-1 (s^2
     !! the residuals' mean square, not below 1 when the record states each sample's u; tau
     !! their correlation time in samples: n/tau independent samples), the inputs'
     !! sensitivities by the implicit-function form.
@@ -664,8 +697,8 @@ contains
         real(dp), allocatable :: nu_rows(:)
         type(budget_row_t), allocatable :: rows(:)
         type(record_format_t) :: fmt
-        type(lsq_options_t) :: opts0       ! the fit's default tolerances
-        real(dp) :: s2, se, emean
+        type(lsq_options_t) :: opts        ! the fit's default tolerances
+        real(dp) :: s2, se, emean, gain
         integer :: m, np, j, ih, i0
         r%from_record = .true.
         r%rg = rg
@@ -673,25 +706,16 @@ contains
         call fit_problem(rig_of(d), start_of(d), accuracy_of(d), d%measurement, rec, prob, p0, &
                          h)
         prob%rg = rg
-        ! the budget's inputs ride along the fit's last runs (record_fit's model_values)
-        prob%x = x
+        ! the budget's inputs ride along the fit's last runs (record_fit's evaluator)
+        call carry_inputs(prob, x)
         np = prob%np
-        call fit_record(prob, p0, h, fit, stat)
+        ! with loss = 'huber' the whole record refitted with Huber's weights (the estimator's
+        ! robust loss), which stay the problem's (prob%hw) for its covariance and budget
+        call fit_record(prob, p0, h, fit, stat, merge(LOSS_HUBER, LOSS_SQUARES, &
+                                                     trim(d%measurement%loss) == 'huber'))
         r%iterations = fit%iterations
         r%evaluations = fit%evaluations
-        if (stat%code == 0 .and. trim(d%measurement%loss) == 'huber') then
-            ! iteratively reweighted: Huber's weights from the residuals, then the whole
-            ! record refitted from the last estimate (already in its basin: no windows)
-            do ih = 1, 3
-                i0 = prob%ifirst
-                call huber_weights(prob, fit%r/prob%hw(i0:prob%nuse))
-                p0 = fit%p
-                call lm_fit(prob, p0, h, prob%nres(), lsq_options_t(), fit, stat)
-                r%iterations = r%iterations + fit%iterations
-                r%evaluations = r%evaluations + fit%evaluations
-                if (stat%code /= 0) exit
-            end do
-        end if
+        if (allocated(fit%robust)) prob%hw(prob%ifirst:prob%nuse) = fit%robust
         if (stat%code == ERR_NUMERIC) then
             call explain_fit_failure(stat, prob, fit)
             return
@@ -708,14 +732,16 @@ contains
             ! the fit's last Jacobian, at the estimate; when the fit ended on one taken again
             ! from an earlier point, computed there, and the fit goes on from the estimate
             ! while that Jacobian's Gauss-Newton step is not within the fit's tolerance
+            opts%h = h
+            opts%names = estimated_names(prob)
             do ih = 1, 3
-                if (prob%jac_fresh .or. stat%code /= 0) exit
-                call fresh_jacobian(prob, fit%p, fit%r, fit%jac, stat)
+                if (prob%runs%jac_fresh .or. stat%code /= 0) exit
+                call fresh_jacobian(prob, fit%p, fit%r, fit%jac, stat, gain)
                 r%evaluations = r%evaluations + 1
                 if (stat%code /= 0) exit
-                if (gauss_newton_gain(fit%r, fit%jac) <= opts0%chi2_tol) exit
+                if (gain <= opts%gtol) exit
                 p0 = fit%p
-                call lm_fit(prob, p0, h, prob%nres(), lsq_options_t(), fit, stat)
+                call estimate(prob, p0, opts, fit, stat)
                 r%iterations = r%iterations + fit%iterations
                 r%evaluations = r%evaluations + fit%evaluations
             end do
@@ -736,8 +762,10 @@ contains
         end if
         r%tau = correlation_time(fit%r)
         r%n_eff = m/r%tau
-        call covariance(jac, s2*r%tau, cov, stat)
+        call lsq_covariance(jac, s2*r%tau, cov, stat, estimated_names(prob))
         if (stat%code /= 0) then
+            stat%msg = 'identify: the record: '//stat%msg//'; estimate fewer parameters or '// &
+                'use a longer record'
             call explain_fit_failure(stat, prob, fit)
             return
         end if
@@ -760,19 +788,19 @@ contains
             r%p(j) = fit%p(j)
             r%u_p(j) = sqrt(cov(j, j) + sum((dpdx(j, :)*x%u)**2))
             r%u_p_own(j) = sqrt(cov(j, j) + sum((dpdx(j, :)*x%u)**2, &
-                                               mask=[(own_row(x(ih)%name, per_trial), &
+                                               mask=[(own_input(x(ih), per_trial), &
                                                       ih=1, size(x))]))
         end do
         r%i1 = r%p(1)
         r%u_fit = sqrt(cov(1, 1))
         allocate (rows(0), nu_rows(0))
         rows = [rows, budget_row_t('record', r%sigma, r%sigma*sqrt(r%tau), &
-                                   r%u_fit/(r%sigma*sqrt(r%tau)), r%u_fit)]
+                                   r%u_fit/(r%sigma*sqrt(r%tau)), r%u_fit, ROW_FIT)]
         nu_rows = [nu_rows, max(1.0_dp, r%n_eff - np)]
         do j = 1, size(x)
             if (.not. (x(j)%u > 0.0_dp)) cycle
             rows = [rows, budget_row_t(x(j)%name, x(j)%value, x(j)%u, dpdx(1, j), &
-                                       abs(dpdx(1, j))*x(j)%u)]
+                                       abs(dpdx(1, j))*x(j)%u, input_kind(x(j)))]
             nu_rows = [nu_rows, NU_INFINITE]
         end do
         call split_rows(rows, nu_rows, x, per_trial, r)
@@ -827,17 +855,19 @@ contains
         if (n == 1) then
             rows = rels(1)%own
         else
-            rows = [budget_row_t('releases', pool%mean, pool%u_random, 1.0_dp, pool%u_random)]
+            rows = [budget_row_t('releases', pool%mean, pool%u_random, 1.0_dp, pool%u_random, &
+                                 ROW_RELEASE)]
         end if
         uc = [pool%u_random]
         nuc = [pool%nu_random]
         do j = 1, size(x)
-            if (.not. (x(j)%u > 0.0_dp) .or. own_row(x(j)%name, ts%per_trial)) cycle
+            if (.not. (x(j)%u > 0.0_dp) .or. own_input(x(j), ts%per_trial)) cycle
             cbar = 0.0_dp
             do r = 1, n
                 cbar = cbar + pool%weight(r)*rels(r)%c(j)
             end do
-            rows = [rows, budget_row_t(x(j)%name, x(j)%value, x(j)%u, cbar, abs(cbar)*x(j)%u)]
+            rows = [rows, budget_row_t(x(j)%name, x(j)%value, x(j)%u, cbar, abs(cbar)*x(j)%u, &
+                                       input_kind(x(j)))]
             uc = [uc, abs(cbar)*x(j)%u]
             nuc = [nuc, NU_INFINITE]
         end do
@@ -846,15 +876,16 @@ contains
         res%u_i1_total = u_total
         res%i1 = pool%mean - d%measurement%tare_i1 - d%measurement%added_inertia
         if (d%measurement%tare_i1 > 0.0_dp .or. d%measurement%u_tare_i1 > 0.0_dp) then
-            rows = [rows, budget_row_t('tare_I1', d%measurement%tare_i1, d%measurement%u_tare_i1, &
-                                       -1.0_dp, d%measurement%u_tare_i1)]
+            rows = [rows, budget_row_t('tare_I1', d%measurement%tare_i1, &
+                                       d%measurement%u_tare_i1, -1.0_dp, &
+                                       d%measurement%u_tare_i1, ROW_TARE)]
             uc = [uc, d%measurement%u_tare_i1]
             nuc = [nuc, NU_INFINITE]
         end if
         if (d%measurement%added_inertia > 0.0_dp .or. d%measurement%u_added_inertia > 0.0_dp) then
             rows = [rows, budget_row_t('added_inertia', d%measurement%added_inertia, &
                                        d%measurement%u_added_inertia, -1.0_dp, &
-                                       d%measurement%u_added_inertia)]
+                                       d%measurement%u_added_inertia, ROW_ADDED)]
             uc = [uc, d%measurement%u_added_inertia]
             nuc = [nuc, NU_INFINITE]
         end if

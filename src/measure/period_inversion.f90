@@ -10,11 +10,13 @@
 !! * Inversion: several periods T_i measured at peak amplitudes A_i (degrees of theta4) are
 !!   combined by weighted least squares, min sum w_i (T_i(I1) - T_i^meas)^2, with
 !!   w_i = 1/(u_T^2 + (dT_i/dA u_A)^2) (equal weights when no uncertainty is given), solved
-!!   by Gauss-Newton in the one unknown, safeguarded to stay at I1 > 0, until the step is
-!!   below 1e-14 of I1 or the weighted residuals are orthogonal to the slopes to 1e-7 (the
-!!   step left below 1e-7 standard errors: the periods' roundoff, about 1e-11 of a period,
-!!   is reached first when they scatter); a step no halving makes lower the sum of squares
-!!   is convergence when one of those tests holds.  T(I1) increases
+!!   by Gauss-Newton in the one unknown (the estimator, module estimator: the residuals
+!!   (T_i(I1) - T_i) w_i^(1/2), the step halved), safeguarded to stay at I1 > 0, until the
+!!   step is below 1e-14 of I1 or the weighted residuals are orthogonal to the slopes to
+!!   1e-7 (the step left below 1e-7 standard errors: the periods' roundoff, about 1e-11 of
+!!   a period, is reached first when they scatter); a step no halving makes lower the sum
+!!   of squares is convergence when the undamped step is below 1e-11 of I1 (the periods'
+!!   roundoff) or the orthogonality test holds.  T(I1) increases
 !!   strictly with I1 and tends to a positive limit T_min as I1 -> 0 (the body still rises
 !!   as it turns), so a period below T_min is refused: no positive I1 gives it.
 !! * First-order uncertainty (GUM, JCGM 100:2008, section 5.1): u(I1)^2 = sum_j (c_j u_j)^2
@@ -68,6 +70,9 @@ module period_inversion
     use inputs, only: input_t, set_input, no_effect_on_torsion
     use sweep_engine, only: sweep_options_t, sweep_report_t
     use monte_carlo, only: mc_task_t, monte_carlo_run
+    use estimator, only: lsq_problem_t, lsq_options_t, lsq_result_t, estimate, DAMP_HALVING, &
+        STEP_LARGEST, FAIL_START, FAIL_EVALUATION, FAIL_JACOBIAN
+    use budget, only: ROW_INPUT, ROW_TIMING, ROW_AMPLITUDE
     implicit none
     private
 
@@ -112,7 +117,24 @@ module period_inversion
         procedure :: after_step => period_after_step
     end type period_sink_t
 
-    integer, parameter :: MAX_ITER = 60         !! Gauss-Newton iterations
+    !> The inversion of periods as a least-squares problem of the estimator: the weighted
+    !! residuals of the one parameter I1 (period_residual), the slope by a forward
+    !! difference (period_jacobian).
+    type, extends(lsq_problem_t) :: period_problem_t
+        type(rig_t) :: rg                       !! the rig
+        type(accuracy_t) :: acc                 !! simulated periods' accuracy
+        logical :: sym = .true.                 !! exact torsion (else simulated periods)
+        real(dp), allocatable :: periods(:), amps(:)    !! measured (s, degrees)
+        real(dp), allocatable :: sw(:)          !! the weights' roots (1/u)
+        real(dp), allocatable :: tm(:)          !! the model's periods at I1 = i1_last
+        real(dp) :: i1_last = -huge(1.0_dp)
+    contains
+        procedure :: residual => period_residual
+        procedure :: nres => period_nres
+        procedure :: jacobian => period_jacobian
+    end type period_problem_t
+
+    integer, parameter :: MAX_ITER = 60         !! Gauss-Newton iterations (Jacobians)
     !> Gauss-Newton has converged when the weighted residuals are orthogonal to the slopes
     !! to this (the cosine of their angle): the step left is below GRAD_TOL standard errors.
     real(dp), parameter :: GRAD_TOL = 1.0e-7_dp
@@ -301,11 +323,12 @@ contains
         type(period_fit_t), intent(out) :: fit
         type(status_t), intent(out) :: stat
         real(dp), intent(in), optional :: u_each(:) !! each period's u (s), else u%period
-        real(dp) :: w(size(periods)), tm(size(periods)), g(size(periods)), r(size(periods))
-        real(dp) :: up(size(periods))
-        real(dp) :: scale, i1, di, s0, s1, ilo, tmin, ta, tb, h, di_full, dtda
-        real(dp) :: r_acc(size(periods))
-        integer :: i, it, half
+        type(period_problem_t) :: prob
+        type(lsq_options_t) :: opts
+        type(lsq_result_t) :: res
+        real(dp) :: w(size(periods)), up(size(periods))
+        real(dp) :: scale, i1, ilo, tmin, ta, tb, h, dtda
+        integer :: i
         character(len=300) :: buf
         logical :: sym
         stat%code = 0
@@ -323,7 +346,7 @@ contains
         ! from the amplitudes' effect
         do i = 1, size(periods)
             if (.not. sym) exit
-            call period_of(ilo, amps(i), tmin, stat)
+            call model_period(rg, acc, sym, ilo, amps(i), tmin, stat)
             if (stat%code /= 0) return
             if (.not. (periods(i) > tmin)) then
                 call set_error(stat, ERR_DECK, '&measurement periods('//itoa(i)//') = '// &
@@ -347,8 +370,8 @@ contains
                     ! past 180 gave a NaN period and a weight of 1/tiny)
                     h = 1.0e-4_dp*max(1.0_dp, amps(i))
                     h = min(h, 0.5_dp*amps(i), 0.5_dp*(180.0_dp - amps(i)))
-                    call period_of(i1, amps(i) + h, ta, stat)
-                    if (stat%code == 0) call period_of(i1, amps(i) - h, tb, stat)
+                    call model_period(rg, acc, sym, i1, amps(i) + h, ta, stat)
+                    if (stat%code == 0) call model_period(rg, acc, sym, i1, amps(i) - h, tb, stat)
                     if (stat%code /= 0) return
                     dtda = (ta - tb)/(2*h)
                 end if
@@ -359,117 +382,140 @@ contains
             ! overflow in w g^2 would (a period with no u beside others with)
             if (maxval(w) > 1.0e100_dp) w = w/maxval(w)
         end if
-        call residuals(i1, tm, r, s0, stat)
-        if (stat%code /= 0) return
-        r_acc = r
-        do it = 1, MAX_ITER
-            fit%iterations = it
-            call slopes(i1, tm, g, stat)
-            if (stat%code /= 0) then
-                ! an asymmetric rig near the smallest I1 it can swing with: judged below
-                if (sym) return
-                exit
-            end if
-            di = -sum(w*g*r)/sum(w*g*g)
-            di_full = di
-            if (abs(sum(w*g*r)) <= GRAD_TOL*sqrt(sum(w*g*g)*sum(w*r*r)) .and. &
-                any(r /= 0.0_dp)) then
-                ! the residuals are orthogonal to the slopes to GRAD_TOL: the remaining step
-                ! is below GRAD_TOL times I1's statistical uncertainty (the periods' own
-                ! roundoff, about 1e-11 of a period, keeps it from I_TOL)
-                fit%i1 = i1
-                fit%model_periods = tm
-                fit%residual_rms = sqrt(sum((tm - periods)**2)/size(periods))
-                return
-            end if
-            ! keep I1 positive and make the weighted sum of squares fall (step halving); a
-            ! simulated period the model cannot give (e.g. a cable slack at release when
-            ! I1 is very small) is a failed step too
-            do half = 0, 60
-                if (i1 + di > ilo) then
-                    call residuals(i1 + di, tm, r, s1, stat)
-                    if (stat%code /= 0 .and. sym) return
-                    if (stat%code == 0) then
-                        if (s1 <= s0) exit
-                    end if
-                end if
-                di = 0.5_dp*di
-            end do
-            stat%code = 0
-            if (half > 60) then
-                ! no step lowers the sum of squares: converged when that is roundoff, i.e.
-                ! the residuals are orthogonal to the slopes (the gradient test) or the step
-                ! is at the level of the periods' own error (simulated: the integration's)
-                call residuals(i1, tm, r, s1, stat)
-                if (stat%code /= 0) return
-                if (.not. (abs(sum(w*g*r)) <= GRAD_TOL*sqrt(sum(w*g*g)*sum(w*r*r)) .or. &
-                           abs(di_full) <= merge(1.0e3_dp*I_TOL, 100.0_dp*I_TOL_SIM, sym)*i1)) &
-                    exit
-                di = 0.0_dp
-            end if
-            i1 = i1 + di
-            s0 = s1
-            r_acc = r
-            if (abs(di) <= merge(I_TOL, I_TOL_SIM, sym)*i1) then
-                fit%i1 = i1
-                fit%model_periods = tm
-                fit%residual_rms = sqrt(sum((tm - periods)**2)/size(periods))
-                return
-            end if
-        end do
-        if (.not. sym .and. all(r_acc > 0.0_dp)) then
+        prob%rg = rg
+        prob%acc = acc
+        prob%sym = sym
+        prob%periods = periods
+        prob%amps = amps
+        prob%sw = sqrt(w)
+        allocate (prob%tm(size(periods)))
+        ! Gauss-Newton in I1 (the estimator), the step halved to keep I1 > ilo and to lower
+        ! the weighted sum of squares (a simulated period the model cannot give, e.g. a
+        ! cable slack at release when I1 is very small, is a failed step too); converged
+        ! when the step is below I_TOL of I1, or the weighted residuals are orthogonal to
+        ! the slopes to GRAD_TOL (the step left below GRAD_TOL standard errors: the periods'
+        ! own roundoff, about 1e-11 of a period, keeps it from I_TOL), or, when no halving
+        ! lowers the sum, when the undamped step is at the level of the periods' own error
+        ! (simulated: the integration's)
+        opts%damping = DAMP_HALVING
+        opts%lambda_max = 2.0e18_dp             ! 61 tries: the step down to 2^-60 of itself
+        opts%max_iter = huge(1)
+        opts%max_jacobians = MAX_ITER
+        opts%gtol = 0.0_dp
+        opts%otol = GRAD_TOL
+        opts%xtol = merge(I_TOL, I_TOL_SIM, sym)
+        opts%step_norm = STEP_LARGEST
+        opts%ftol = 0.0_dp
+        opts%small_gain = huge(1.0_dp)
+        opts%floor_gain = 0.0_dp
+        opts%exact = 0.0_dp
+        opts%floor_xtol = merge(1.0e3_dp*I_TOL, 100.0_dp*I_TOL_SIM, sym)
+        opts%fail_on_error = sym
+        opts%lower = [ilo]
+        opts%names = [character(len=16) :: 'I1']
+        call estimate(prob, [i1], opts, res, stat)
+        fit%iterations = res%jacobians
+        if (res%converged) then
+            fit%i1 = res%p(1)
+            ! the model's periods at the estimate (the last evaluation may be a step refused)
+            if (.not. (prob%i1_last == fit%i1)) call prob%residual(res%p, w, stat)
+            if (stat%code /= 0) return
+            fit%model_periods = prob%tm
+            fit%residual_rms = sqrt(sum((prob%tm - periods)**2)/size(periods))
+            return
+        end if
+        select case (res%ended)
+        case (FAIL_START, FAIL_EVALUATION)
+            return
+        case (FAIL_JACOBIAN)
+            if (sym) return
+        end select
+        i1 = res%p(1)
+        if (.not. sym .and. all(res%r > 0.0_dp)) then
             ! the model's periods are all still longer at the smallest I1 the model could
             ! swing with (a cable goes slack below it): no I1 gives them
             call set_error(stat, ERR_DECK, '&measurement periods: shorter than the '// &
                 'periods of this rig (simulated) down to I1 = '//sci(i1, 5)//' ('// &
-                sci(r_acc(1) + periods(1), 5)//' s for periods(1)), below which a cable '// &
-                'goes slack; no positive I1 gives them: check the units (s), the amplitudes '// &
-                'and the suspension lengths; allowed: periods the rig gives for some I1 > 0')
+                sci(res%r(1)/prob%sw(1) + periods(1), 5)//' s for periods(1)), below which a '// &
+                'cable goes slack; no positive I1 gives them: check the units (s), the '// &
+                'amplitudes and the suspension lengths; allowed: periods the rig gives for '// &
+                'some I1 > 0')
             return
         end if
         write (buf, '(a,i0,a,es12.5)') 'period inversion: Gauss-Newton did not converge in ', &
             fit%iterations, ' iterations (I1 = ', i1
         call set_error(stat, ERR_NUMERIC, trim(buf)//'); check that the periods agree with '// &
             'each other and with the rig')
-    contains
-        subroutine residuals(ii, tmod, rr, ss, st)
-            real(dp), intent(in) :: ii
-            real(dp), intent(out) :: tmod(:), rr(:), ss
-            type(status_t), intent(out) :: st
-            integer :: k
-            do k = 1, size(periods)
-                call period_of(ii, amps(k), tmod(k), st)
-                if (st%code /= 0) return
-            end do
-            rr = tmod - periods
-            ss = sum(w*rr*rr)
-        end subroutine residuals
-        subroutine slopes(ii, tmod, gg, st)
-            real(dp), intent(in) :: ii, tmod(:)
-            real(dp), intent(out) :: gg(:)
-            type(status_t), intent(out) :: st
-            real(dp) :: tp, hh
-            integer :: k
-            ! forward difference: only the direction of the step depends on it
-            hh = merge(1.0e-7_dp, SLOPE_REL_SIM, sym)*ii
-            do k = 1, size(periods)
-                call period_of(ii + hh, amps(k), tp, st)
-                if (st%code /= 0) return
-                gg(k) = (tp - tmod(k))/hh
-            end do
-        end subroutine slopes
-        !> The period of the rig: exact torsion, or simulated for an asymmetric rig.
-        subroutine period_of(ii, a, tp, st)
-            real(dp), intent(in) :: ii, a
-            real(dp), intent(out) :: tp
-            type(status_t), intent(out) :: st
-            if (sym) then
-                call torsion_period_s(rg, ii, a, tp, st)
-            else
-                call simulated_period_s(rg, acc, ii, a, tp, st)
-            end if
-        end subroutine period_of
     end subroutine invert_periods
+
+    !> The period of the rig with I1 = i1 at amplitude a (degrees): exact torsion (sym), or
+    !! simulated for an asymmetric rig.
+    subroutine model_period(rg, acc, sym, i1, a, tp, st)
+        type(rig_t), intent(in) :: rg
+        type(accuracy_t), intent(in) :: acc
+        logical, intent(in) :: sym
+        real(dp), intent(in) :: i1, a
+        real(dp), intent(out) :: tp
+        type(status_t), intent(out) :: st
+        if (sym) then
+            call torsion_period_s(rg, i1, a, tp, st)
+        else
+            call simulated_period_s(rg, acc, i1, a, tp, st)
+        end if
+    end subroutine model_period
+
+    !> The residuals (T_i(I1) - T_i measured) w_i^(1/2) (w_i: each period's weight, the
+    !! inverse of its variance); the model's periods kept (tm at i1_last).
+    subroutine period_residual(prob, p, r, stat)
+        class(period_problem_t), intent(inout) :: prob
+        real(dp), intent(in) :: p(:)            !! I1
+        real(dp), intent(out) :: r(:)
+        type(status_t), intent(out) :: stat
+        integer :: k
+        r = 0.0_dp
+        prob%i1_last = -huge(1.0_dp)
+        do k = 1, size(prob%periods)
+            call model_period(prob%rg, prob%acc, prob%sym, p(1), prob%amps(k), prob%tm(k), stat)
+            if (stat%code /= 0) return
+        end do
+        r = prob%sw*(prob%tm - prob%periods)
+        prob%i1_last = p(1)
+    end subroutine period_residual
+
+    !> The number of periods.
+    pure integer function period_nres(prob) result(n)
+        class(period_problem_t), intent(in) :: prob
+        n = size(prob%periods)
+    end function period_nres
+
+    !> dr/dI1 by a forward difference from the model's periods at p (relative step 1e-7;
+    !! SLOPE_REL_SIM for simulated periods: only the direction of the step depends on it).
+    subroutine period_jacobian(prob, p, r, h, jac, evaluations, stat)
+        class(period_problem_t), intent(inout) :: prob
+        real(dp), intent(in) :: p(:)            !! I1
+        real(dp), intent(in) :: r(:)            !! r(p)
+        real(dp), intent(in) :: h(:)            !! (not used: the step is relative to I1)
+        real(dp), intent(out) :: jac(:, :)
+        integer, intent(out) :: evaluations
+        type(status_t), intent(out) :: stat
+        real(dp) :: tp, hh, rr(size(r))
+        integer :: k
+        jac = 0.0_dp
+        evaluations = 0
+        if (.not. (prob%i1_last == p(1))) then
+            call prob%residual(p, rr, stat)
+            evaluations = 1
+            if (stat%code /= 0) return
+        end if
+        hh = merge(1.0e-7_dp, SLOPE_REL_SIM, prob%sym)*p(1)
+        if (.false.) hh = hh + h(1)
+        do k = 1, size(prob%periods)
+            call model_period(prob%rg, prob%acc, prob%sym, p(1) + hh, prob%amps(k), tp, stat)
+            if (stat%code /= 0) return
+            jac(k, 1) = prob%sw(k)*((tp - prob%tm(k))/hh)
+        end do
+        evaluations = evaluations + 1
+    end subroutine period_jacobian
 
     !> First-order (GUM) budget of an inversion: fills fit%budget and fit%u_i1.  Rows: the
     !! rig's inputs (x when given, with their names of module inputs; else mass, l, l_prime,
@@ -516,7 +562,8 @@ contains
         do k = 1, size(xs)
             if (.not. (xs(k)%u > 0.0_dp)) cycle
             if (sym .and. no_effect_on_torsion(xs(k)%name)) then
-                rows = [rows, budget_row_t(xs(k)%name, xs(k)%value, xs(k)%u, 0.0_dp, 0.0_dp)]
+                rows = [rows, budget_row_t(xs(k)%name, xs(k)%value, xs(k)%u, 0.0_dp, 0.0_dp, &
+                                           ROW_INPUT)]
                 cycle
             end if
             hx = hrel*abs(xs(k)%value)
@@ -529,7 +576,8 @@ contains
                 return
             end if
             c = (ip - im)/(2*hx)
-            rows = [rows, budget_row_t(xs(k)%name, xs(k)%value, xs(k)%u, c, abs(c)*xs(k)%u)]
+            rows = [rows, budget_row_t(xs(k)%name, xs(k)%value, xs(k)%u, c, abs(c)*xs(k)%u, &
+                                       ROW_INPUT)]
         end do
         do i = 1, n
             if (.not. (up(i) > 0.0_dp)) cycle
@@ -542,7 +590,7 @@ contains
                 return
             end if
             c = (ip - im)/(2*hx)
-            rows = [rows, budget_row_t(nm, periods(i), up(i), c, abs(c)*up(i))]
+            rows = [rows, budget_row_t(nm, periods(i), up(i), c, abs(c)*up(i), ROW_TIMING)]
         end do
         do i = 1, n
             if (.not. (u%amplitude > 0.0_dp)) cycle
@@ -562,7 +610,8 @@ contains
                 stat%msg = 'uncertainty budget, input '//trim(nm)//': '//stat%msg
                 return
             end if
-            rows = [rows, budget_row_t(nm, amps(i), u%amplitude, c, abs(c)*u%amplitude)]
+            rows = [rows, budget_row_t(nm, amps(i), u%amplitude, c, abs(c)*u%amplitude, &
+                                       ROW_AMPLITUDE)]
         end do
         fit%budget = rows
         fit%u_i1 = 0.0_dp

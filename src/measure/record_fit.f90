@@ -1,11 +1,12 @@
-!> The fit of the paper's model to a record (the record analysis of identify): the model at
-!! the record's sample times (record_model), the least-squares problem of the estimated
-!! parameters (record_fit_t: I1 and any of c_v, c_q, the release amplitude, t0, a bias of
-!! the recorded quantity), the release found in the record (find_release), the fit on
-!! growing windows (fit_record), robust weights (huber_weights), the covariance and the
-!! inputs' sensitivities (the first-order budget), the residuals' correlation time, the
-!! Monte Carlo's samples (record_mc_task_t), and records made by the program itself
-!! (make_record).  See module identify for the method.
+!> The fit of the paper's model to a record (the record analysis of identify): the
+!! least-squares problem of the estimated parameters for the estimator (record_fit_t: I1
+!! and any of c_v, c_q, the release amplitude, t0, a bias of the recorded quantity), the
+!! release found in the record (find_release), the fit on growing windows (fit_record,
+!! with Huber's loss when asked), the inputs' sensitivities (the first-order budget), the
+!! residuals' correlation time, the Monte Carlo's samples (record_mc_task_t), and records
+!! made by the program itself (make_record); the model at the record's sample times
+!! (record_model, record_model_sens) and the evaluator that keeps its runs
+!! (record_runs_t).  See module identify for the method.
 !!
 !! The model of a sample: sign (model(t; I1, damping, amplitude, t0)) + bias, where sign is
 !! -1 for a body released the other way (found from the record's first swing) and the
@@ -23,15 +24,25 @@
 !! With 'differences' the Jacobian and the inputs' sensitivities are differences of whole
 !! runs, as before.
 !!
-!! The runs a fit makes (model_values): the model is a function of the rig, the start and
-!! the release, so the last run is kept and an evaluation of the same model reuses it; the
-!! fit's run of the whole record after one within a standard error of its minimum carries
-!! the budget's inputs too (the fit ends there as a rule, and the budget then needs no run
-!! of its own); a whole-record run that does not carry them takes the Jacobian of the last
-!! whole-record point again when the step from it was short (within 100 standard errors:
-!! the model alone is run), and the Jacobian at the estimate is always computed there.
+!! The runs a fit makes go through its evaluator (record_runs_t, an object of the problem):
+!! the model is a function of the rig, the start and the release only (a run_point_t; the
+!! weights, the bias and the sign of a fit act on its values), so the last run is kept,
+!! keyed by that point compared by value, and an evaluation of the same point whose
+!! samples it reached takes it instead of a run.  The estimator tells the evaluator the
+!! Gauss-Newton gain of each point it evaluates with derivatives (note_gain); from that:
+!! * a whole-record run after one within a standard error of the minimum (gain <=
+!!   CARRY_GAIN) carries the budget's inputs beside the fit's parameters (the fit ends
+!!   there as a rule, and the budget then needs no run of its own: carried);
+!! * a whole-record run that does not carry them takes the derivatives of the last
+!!   whole-record point where they were computed again when that point's gain was within
+!!   REUSE_GAIN (the step from it within 100 standard errors: over so short a step the
+!!   derivatives change in their fourth digit or later) and runs the model alone
+!!   (runs%jac_fresh .false.); the Jacobian at the estimate is always computed there
+!!   (fresh_jacobian);
+!! * neither with the sensitivities in the error control (there a column changes the steps
+!!   of the others, and a run without them other steps).
 module record_fit
-    use, intrinsic :: iso_fortran_env, only: int8, int64
+    use, intrinsic :: iso_fortran_env, only: int64
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use kinds, only: dp, pi, deg
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC
@@ -45,9 +56,10 @@ module record_fit
     use kane_run, only: kane_run_start, kane_run_t
     use run_loop, only: stepped_model_t, row_sink_t, drive
     use integrators, only: SENS_FORWARD
-    use least_squares, only: lsq_problem_t, lsq_options_t, lsq_result_t, lm_fit, &
-        gauss_newton_gain
-    use lapack_wrap, only: la_lstsq, la_svd
+    use estimator, only: lsq_problem_t, lsq_options_t, lsq_result_t, estimate, &
+        gauss_newton_gain, lsq_covariance, LOSS_SQUARES
+    use rig, only: same_rig, same_start
+    use lapack_wrap, only: la_lstsq
     use random, only: rng_t, rng_stream, rng_normal
     use records, only: record_t, mean_period
     use inputs, only: input_t, set_input, input_value
@@ -61,19 +73,58 @@ module record_fit
     character(len=9), parameter, public :: PARAM_NAMES(NPARAM) = [character(len=9) :: 'I1', &
         'c_v', 'c_q', 'amplitude', 't0', 'bias']
 
-    !> A run of the record model kept for reuse: the model is a function of the rig, the
-    !! start and the release time only (the weights, the bias and the sign act on its
-    !! values), so an evaluation whose rig, start and release are bit for bit those of the
-    !! run (key) and whose samples it reached takes its values and derivatives.
-    type, public :: model_cache_t
+    !> What a run of the record model depends on: the rig, the start and the release.
+    type, public :: run_point_t
+        type(rig_t) :: rg                       !! the rig (I1, damping as fitted)
+        type(start_t) :: st                     !! the start (amplitude as fitted)
+        real(dp) :: t0 = 0.0_dp                 !! the release (s)
+    end type run_point_t
+
+    !> The quantities whose derivatives a run carries: a fit parameter ('I1', 'c_v', 'c_q',
+    !! 'amplitude', 't0') or an input of module inputs, and the size of each (deck units;
+    !! its difference steps are 1e-5 of it).
+    type, public :: run_columns_t
+        character(len=16), allocatable :: names(:)
+        real(dp), allocatable :: xs(:)
+    end type run_columns_t
+
+    !> The evaluator of the record model: its runs, the last one kept, and the carry and
+    !! reuse of derivatives (see the module header).
+    type, public :: record_runs_t
+        type(accuracy_t) :: acc                 !! the runs' accuracy (rtol, atol, integrator)
+        logical :: rate = .false.               !! W instead of theta4
+        !> The budget's inputs (set_carry) and the columns of those with u > 0, which a
+        !! whole-record run near the minimum carries
+        type(input_t), allocatable :: x(:)
+        type(run_columns_t) :: carry
+        ! the last run
         logical :: valid = .false.
-        integer(int8), allocatable :: key(:)    !! the rig, start and release of the run
-        integer :: n = 0                        !! the last sample it reached (from ifirst)
+        type(run_point_t) :: key                !! its point
+        integer :: n = 0                        !! the samples it reached
         integer :: nfit = 0                     !! its columns of the fit's parameters
         integer :: nx = 0                       !! its columns of the budget's inputs
-        real(dp), allocatable :: v(:)           !! the model at samples ifirst .. n
+        real(dp), allocatable :: v(:)           !! the model at those samples
         real(dp), allocatable :: dv(:, :)       !! its derivatives: the fit's, the inputs'
-    end type model_cache_t
+        !> The gain the estimator noted at the last whole-record point
+        real(dp) :: whole_gain = huge(1.0_dp)
+        !> The derivatives (the fit's columns) of the last whole-record point where they were
+        !! computed, and the gain there: what a next point within REUSE_GAIN takes again
+        real(dp), allocatable :: jac_dv(:, :)
+        real(dp) :: jac_gain = huge(1.0_dp)
+        !> The last evaluation's derivatives were computed at its point (not taken again)
+        logical :: jac_fresh = .true.
+        !> The last evaluation with derivatives was of the whole record; fresh_dv: its
+        !! derivatives when computed there (kept as jac_dv once its gain is noted)
+        logical :: last_whole = .false.
+        real(dp), allocatable :: fresh_dv(:, :)
+    contains
+        procedure :: run
+        procedure :: values
+        procedure :: note_gain
+        procedure :: carried
+        procedure :: forget
+        procedure :: set_carry
+    end type record_runs_t
 
     !> The record fit as a least-squares problem: residuals
     !! (sign model + bias - measured)/u_i, times the robust weights' roots, over the samples
@@ -95,28 +146,18 @@ module record_fit
         real(dp), allocatable :: w(:)           !! 1/u_i (1 without u)
         real(dp), allocatable :: hw(:)          !! the roots of the robust weights (1: squares)
         real(dp) :: xs(NPARAM) = 1.0_dp         !! the size of each estimated parameter
-        !> The budget's inputs (release_record sets them): a run of the whole record after
-        !! its first carries their forward sensitivities beside the fit's, so that the
-        !! budget at the estimate (input_sensitivities) takes them from the fit's last run
-        type(input_t), allocatable :: x(:)
-        !> The Gauss-Newton gain at the last whole-record Jacobian (record_residual_jacobian):
-        !! the square of the step still to go, in standard errors
-        real(dp) :: whole_gain = huge(1.0_dp)
-        !> The model's derivatives (the fit's columns) at the last whole-record point where
-        !! they were computed, and the Gauss-Newton gain there: the Jacobian a next point
-        !! within REUSE_GAIN of it takes again (model_values)
-        real(dp), allocatable :: jac_dv(:, :)
-        real(dp) :: jac_gain = huge(1.0_dp)
-        !> The last residual_jacobian's Jacobian was computed at its point (not taken again)
-        logical :: jac_fresh = .true.
-        !> The last run of the model (model_cache_t): an evaluation of the same model (the
-        !! same rig, start and release) within its samples takes it instead of a run
-        type(model_cache_t) :: cache
+        !> The evaluator of the model (record_runs_t): the last run kept, the budget's
+        !! inputs (carry_inputs) that a run of the whole record near the minimum carries
+        !! beside the fit's derivatives, so that the budget at the estimate
+        !! (input_sensitivities) takes them from the fit's last run; the Jacobian taken
+        !! again (runs%jac_fresh .false. after an evaluation that did)
+        type(record_runs_t) :: runs
     contains
         procedure :: residual => record_residual
         procedure :: nres => record_nres
         procedure :: has_jacobian => record_has_jacobian
         procedure :: residual_jacobian => record_residual_jacobian
+        procedure :: note_gain => record_note_gain
     end type record_fit_t
 
     !> Where the release is in a record, as find_release sees it.
@@ -160,23 +201,13 @@ module record_fit
         procedure :: sample => record_mc_point
     end type record_mc_task_t
 
-    public :: record_model, record_model_sens, fit_problem, fit_record, covariance
+    public :: record_model, record_model_sens, fit_problem, fit_record, carry_inputs
     public :: input_sensitivity, input_sensitivities
     public :: record_mc_task, explain_fit_failure, make_record, find_release
-    public :: huber_weights, correlation_time, apply_parameters, fresh_jacobian
+    public :: correlation_time, apply_parameters, fresh_jacobian, estimated_names
 
     real(dp), parameter, public :: H_REL = 1.0e-5_dp        !! relative difference step of the model
     real(dp), parameter :: DAMP_REF = 1.0e-3_dp     !! scale of c_v, c_q (model's units)
-    real(dp), parameter :: COND_MAX = 1.0e10_dp     !! largest condition number of J (scaled)
-    real(dp), parameter :: HUBER_C = 1.345_dp       !! Huber's constant (95 % efficiency)
-    !> A whole-record run after one whose Gauss-Newton gain is at most this carries the
-    !! budget's inputs (model_values)
-    real(dp), parameter :: CARRY_GAIN = 1.0_dp
-    !> A whole-record evaluation that does not carry the budget takes the Jacobian of the
-    !! last whole-record point again when that point's Gauss-Newton gain was at most this
-    !! (the step to it within 100 standard errors: over so short a step the model's
-    !! derivatives change in their fourth digit or later); see model_values
-    real(dp), parameter :: REUSE_GAIN = 1.0e4_dp
     !> The contraction rate a Monte Carlo refit's first step is taken to have (the rates
     !! measured on the example records are 0.005 ... 0.1)
     real(dp), parameter :: MC_RATE = 0.25_dp
@@ -184,6 +215,12 @@ module record_fit
     !! error e of each sample adds e^2 to the samples' variance, 1e-4 of u^2, where 200
     !! samples know their variance to 10 %
     real(dp), parameter :: MC_TOL = 1.0e-2_dp
+    !> A whole-record run after one whose Gauss-Newton gain is at most this carries the
+    !! budget's inputs (values)
+    real(dp), parameter :: CARRY_GAIN = 1.0_dp
+    !> A whole-record evaluation that does not carry the budget takes the derivatives of the
+    !! last whole-record point again when that point's Gauss-Newton gain was at most this
+    real(dp), parameter :: REUSE_GAIN = 1.0e4_dp
 
 contains
 
@@ -200,9 +237,13 @@ contains
         logical, intent(in) :: rate             !! W instead of theta4
         real(dp), intent(out) :: vals(:)        !! the model at t(1:size(vals))
         type(status_t), intent(out) :: stat     !! the start's or the run's failure
-        character(len=16) :: none(0)
-        real(dp) :: dv(size(vals), 0), xs(0)
-        call model_run(rg, st, acc, t, t0, rate, none, xs, vals, dv, stat)
+        type(record_runs_t) :: ev
+        type(run_columns_t) :: none
+        real(dp) :: dv(size(vals), 0)
+        ev%acc = acc
+        ev%rate = rate
+        allocate (none%names(0), none%xs(0))
+        call ev%run(run_point_t(rg, st, t0), t, none, vals, dv, stat)
     end subroutine record_model
 
     !> record_model and its derivatives dvals(:, c) with respect to the quantities names(c)
@@ -221,27 +262,33 @@ contains
         real(dp), intent(out) :: vals(:)        !! the model at t(1:size(vals))
         real(dp), intent(out) :: dvals(:, :)    !! (size(vals), size(names))
         type(status_t), intent(out) :: stat     !! the start's or the run's failure
-        call model_run(rg, st, acc, t, t0, rate, names, xs, vals, dvals, stat)
+        type(record_runs_t) :: ev
+        type(run_columns_t) :: cols
+        ev%acc = acc
+        ev%rate = rate
+        allocate (cols%names(size(names)))
+        cols%names = names
+        cols%xs = xs
+        call ev%run(run_point_t(rg, st, t0), t, cols, vals, dvals, stat)
     end subroutine record_model_sens
 
-    !> The model run of record_model and record_model_sens.  With quantities, column c of the
-    !! run's sensitivities follows names(c): its pendulum direction and initial condition by
-    !! central differences of make_pendulum and start_state.  A quantity that moves the time
-    !! scale s = sqrt(g/b') or the release moves the samples along the motion: a sample at
-    !! t is the model at tau = (t - t0) s, so dv/dx = (dv/dy) (s_x + f (t - t0) ds/dx -
-    !! f s dt0/dx) (times s, plus v ds/dx, for W), f = dy/dtau from the integrator's dense
-    !! output (the system is autonomous: f(y(tau)) is the sensitivity to a shift of time,
-    !! which needs no column of its own).
-    subroutine model_run(rg, st, acc, t, t0, rate, names, xs, vals, dvals, stat)
-        type(rig_t), intent(in) :: rg
-        type(start_t), intent(in) :: st
-        type(accuracy_t), intent(in) :: acc
-        real(dp), intent(in) :: t(:), t0
-        logical, intent(in) :: rate
-        character(len=*), intent(in) :: names(:)
-        real(dp), intent(in) :: xs(:)
-        real(dp), intent(out) :: vals(:), dvals(:, :)
-        type(status_t), intent(out) :: stat
+    !> One run of the model over the samples t(1:size(vals)) at the point pt (rig, start,
+    !! release), with the derivatives of the quantities cols (none: the values alone).
+    !! Column c of the run's sensitivities follows cols%names(c): its pendulum direction and
+    !! initial condition by central differences of make_pendulum and start_state.  A
+    !! quantity that moves the time scale s = sqrt(g/b') or the release moves the samples
+    !! along the motion: a sample at t is the model at tau = (t - t0) s, so dv/dx = (dv/dy)
+    !! (s_x + f (t - t0) ds/dx - f s dt0/dx) (times s, plus v ds/dx, for W), f = dy/dtau
+    !! from the integrator's dense output (the system is autonomous: f(y(tau)) is the
+    !! sensitivity to a shift of time, which needs no column of its own).
+    subroutine run(self, pt, t, cols, vals, dvals, stat)
+        class(record_runs_t), intent(in) :: self
+        type(run_point_t), intent(in) :: pt     !! rig, start, release
+        real(dp), intent(in) :: t(:)            !! sample times (s), increasing
+        type(run_columns_t), intent(in) :: cols !! the quantities differentiated
+        real(dp), intent(out) :: vals(:)        !! the model at t(1:size(vals))
+        real(dp), intent(out) :: dvals(:, :)    !! (size(vals), size(cols%names))
+        type(status_t), intent(out) :: stat     !! the start's or the run's failure
         real(dp), parameter :: FD_REL = 1.0e-5_dp
         type(pendulum_t) :: p, pp, pm
         type(kane_run_t) :: m
@@ -252,8 +299,21 @@ contains
         real(dp) :: y0(NSTATE), th0(5), s, v0, yp(NSTATE), ym(NSTATE), th(5), h
         real(dp) :: g0(NSTATE), sfac, dtau
         real(dp), allocatable :: taus(:), s0(:, :), scale(:), ds(:), dt0(:)
+        type(rig_t) :: rg
+        type(start_t) :: st
+        type(accuracy_t) :: acc
+        character(len=16) :: names(size(cols%names))
+        real(dp) :: xs(size(cols%names))
+        real(dp) :: t0
         integer :: n, i0, i, nq, ns, c
-        logical :: shift
+        logical :: shift, rate
+        rg = pt%rg
+        st = pt%st
+        t0 = pt%t0
+        acc = self%acc
+        rate = self%rate
+        names = cols%names
+        xs = cols%xs
         n = size(vals)
         nq = size(names)
         vals = 0.0_dp
@@ -380,7 +440,7 @@ contains
                 call set_input(r2, s2, name, input_value(rg, st, name) + dx)
             end select
         end subroutine moved
-    end subroutine model_run
+    end subroutine run
 
     !> theta4 (rad) or W = omega . n3 (rad per unit tau) of a chart state.
     pure real(dp) function output_value(rate, y) result(v)
@@ -430,6 +490,160 @@ contains
         if (stat%code /= 0) stat%msg = stat%msg//' at tau = '//sci(t)
     end subroutine record_take
 
+    !> The model at the point pt over the samples t (a fit's window), with its derivatives
+    !! along the quantities fit (the fit's parameters but the bias; none: the values alone):
+    !! from the last run when it was of the same point and reached those samples (with the
+    !! derivatives when asked), else from a run, which is kept.  A run of the whole record
+    !! with derivatives after a point whose gain was within CARRY_GAIN carries the budget's
+    !! inputs too; one that does not runs the model alone and takes the derivatives of the
+    !! last whole-record point where they were computed, when that point's gain was within
+    !! REUSE_GAIN (fresh .false.).  Neither with the sensitivities in the error control.
+    subroutine values(self, pt, t, whole, fit, vals, dv, stat, fresh)
+        class(record_runs_t), intent(inout) :: self
+        type(run_point_t), intent(in) :: pt     !! rig, start, release
+        real(dp), intent(in) :: t(:)            !! the window's sample times (s)
+        logical, intent(in) :: whole            !! the window is the whole record
+        type(run_columns_t), intent(in) :: fit  !! the fit's parameters differentiated
+        real(dp), allocatable, intent(out) :: vals(:), dv(:, :)
+        type(status_t), intent(out) :: stat
+        logical, intent(out), optional :: fresh     !! dv computed at pt (not taken again)
+        type(run_columns_t) :: cols, none
+        real(dp), allocatable :: dall(:, :)
+        integer :: m, nfit, nx
+        logical :: derivs, reuse
+        stat%code = 0
+        if (present(fresh)) fresh = .true.
+        m = size(t)
+        nfit = size(fit%names)
+        derivs = nfit > 0
+        if (derivs) then
+            self%jac_fresh = .true.
+            self%last_whole = whole
+            if (allocated(self%fresh_dv)) deallocate (self%fresh_dv)
+        else
+            self%last_whole = .false.
+        end if
+        if (self%valid .and. self%n >= m .and. (self%nfit == nfit .or. .not. derivs)) then
+            if (same_point(self%key, pt)) then
+                vals = self%v(1:m)
+                dv = self%dv(1:m, 1:nfit)
+                if (derivs .and. whole) self%fresh_dv = dv
+                return
+            end if
+        end if
+        nx = 0
+        reuse = .false.
+        cols = fit
+        if (derivs .and. whole .and. .not. self%acc%sens_error_control) then
+            if (self%whole_gain <= CARRY_GAIN .and. allocated(self%x)) then
+                cols%names = [character(len=16) :: fit%names, self%carry%names]
+                cols%xs = [fit%xs, self%carry%xs]
+                nx = size(self%carry%names)
+            else if (allocated(self%jac_dv) .and. self%jac_gain <= REUSE_GAIN) then
+                reuse = size(self%jac_dv, 1) == m .and. size(self%jac_dv, 2) == nfit
+            end if
+        end if
+        if (reuse) then
+            ! the model alone; its derivatives those of the last whole-record point
+            allocate (vals(m), dall(m, 0), none%names(0), none%xs(0))
+            call self%run(pt, t, none, vals, dall, stat)
+            self%valid = .false.
+            if (stat%code /= 0) return
+            dv = self%jac_dv
+            if (present(fresh)) fresh = .false.
+            self%jac_fresh = .false.
+            call keep(self, pt, m, 0, 0, vals, dall)
+            return
+        end if
+        allocate (vals(m), dall(m, size(cols%names)))
+        call self%run(pt, t, cols, vals, dall, stat)
+        self%valid = .false.
+        if (stat%code /= 0) return
+        dv = dall(:, 1:nfit)
+        if (derivs .and. whole) self%fresh_dv = dv
+        call keep(self, pt, m, nfit, nx, vals, dall)
+    end subroutine values
+
+    !> The run kept: its point, samples, columns, values and derivatives.
+    subroutine keep(self, pt, n, nfit, nx, v, dv)
+        type(record_runs_t), intent(inout) :: self
+        type(run_point_t), intent(in) :: pt
+        integer, intent(in) :: n, nfit, nx
+        real(dp), intent(in) :: v(:), dv(:, :)
+        self%valid = .true.
+        self%key = pt
+        self%n = n
+        self%nfit = nfit
+        self%nx = nx
+        self%v = v
+        self%dv = dv
+    end subroutine keep
+
+    !> The estimator's Gauss-Newton gain at the point just evaluated with derivatives: kept
+    !! for a whole-record point (whole_gain), and with its derivatives when they were
+    !! computed there (jac_gain, jac_dv).
+    subroutine note_gain(self, gain)
+        class(record_runs_t), intent(inout) :: self
+        real(dp), intent(in) :: gain
+        if (.not. self%last_whole) return
+        self%last_whole = .false.
+        self%whole_gain = gain
+        if (allocated(self%fresh_dv)) then
+            self%jac_gain = gain
+            call move_alloc(self%fresh_dv, self%jac_dv)
+        end if
+    end subroutine note_gain
+
+    !> The derivatives along the budget's inputs x (ncols of them with u > 0) of the last
+    !! run, when it was of the point pt, over at least m samples, and carried these inputs
+    !! (the same names, the same values); ok .false. otherwise.
+    subroutine carried(self, pt, m, x, ncols, dv, ok)
+        class(record_runs_t), intent(in) :: self
+        type(run_point_t), intent(in) :: pt
+        integer, intent(in) :: m, ncols
+        type(input_t), intent(in) :: x(:)
+        real(dp), allocatable, intent(out) :: dv(:, :)
+        logical, intent(out) :: ok
+        integer :: k
+        ok = .false.
+        if (.not. self%valid .or. self%n < m .or. self%nx /= ncols) return
+        if (.not. allocated(self%x)) return
+        if (size(self%x) /= size(x)) return
+        do k = 1, size(x)
+            if (self%x(k)%name /= x(k)%name .or. self%x(k)%value /= x(k)%value .or. &
+                (self%x(k)%u > 0.0_dp .neqv. x(k)%u > 0.0_dp)) return
+        end do
+        ok = same_point(self%key, pt)
+        if (ok) dv = self%dv(1:m, self%nfit + 1:)
+    end subroutine carried
+
+    !> The kept run and the derivatives to take again dropped, the gain set to 0: the next
+    !! whole-record evaluation with derivatives computes them there and carries the budget.
+    subroutine forget(self)
+        class(record_runs_t), intent(inout) :: self
+        self%whole_gain = 0.0_dp
+        self%valid = .false.
+        if (allocated(self%jac_dv)) deallocate (self%jac_dv)
+    end subroutine forget
+
+    !> The budget's inputs x and the columns (names, sizes xs) of those with u > 0.
+    subroutine set_carry(self, x, cols)
+        class(record_runs_t), intent(inout) :: self
+        type(input_t), intent(in) :: x(:)
+        type(run_columns_t), intent(in) :: cols
+        self%x = x
+        self%carry = cols
+    end subroutine set_carry
+
+    !> Two points of the record model are the same: the same rig, start and release (by
+    !! value).
+    pure logical function same_point(a, b)
+        type(run_point_t), intent(in) :: a, b
+        same_point = a%t0 == b%t0
+        if (same_point) same_point = same_rig(a%rg, b%rg)
+        if (same_point) same_point = same_start(a%st, b%st)
+    end function same_point
+
     !> The rig and start with the parameters p of the fit set (I1, c_v, c_q, amplitude), t0
     !! and bias.
     subroutine apply_parameters(prob, p, rg, st, t0, bias)
@@ -460,6 +674,16 @@ contains
             end select
         end do
     end subroutine apply_parameters
+
+    !> The names of the estimated parameters (for the estimator's messages).
+    pure function estimated_names(prob) result(names)
+        type(record_fit_t), intent(in) :: prob
+        character(len=16) :: names(prob%np)
+        integer :: j
+        do j = 1, prob%np
+            names(j) = PARAM_NAMES(prob%which(j))
+        end do
+    end function estimated_names
 
     !> The number of residuals of the problem: the samples ifirst .. nuse.
     pure integer function record_nres(prob) result(n)
@@ -505,11 +729,9 @@ contains
         real(dp) :: bias
         real(dp), allocatable :: vals(:), dv(:, :)
         integer :: i0, i1, j, c
-        logical :: fresh
         r = 0.0_dp
         jac = 0.0_dp
-        call model_values(prob, p, .true., vals, dv, bias, stat, fresh)
-        prob%jac_fresh = fresh
+        call model_values(prob, p, .true., vals, dv, bias, stat)
         if (stat%code /= 0) return
         i0 = prob%ifirst
         i1 = prob%nuse
@@ -527,40 +749,52 @@ contains
             call set_error(stat, ERR_NUMERIC, 'non-finite model values')
             return
         end if
-        if (i1 == size(prob%rec%t)) then
-            prob%whole_gain = gauss_newton_gain(r, jac)
-            if (fresh) then
-                prob%jac_gain = prob%whole_gain
-                prob%jac_dv = dv
-            end if
-        end if
     end subroutine record_residual_jacobian
 
-    !> The residuals and the Jacobian at p computed there (carrying the budget's inputs):
-    !! for a fit that ended on a Jacobian taken again from an earlier point (jac_fresh
-    !! false), whose covariance and budget need it at the estimate.
-    subroutine fresh_jacobian(prob, p, r, jac, stat)
+    !> The estimator's Gauss-Newton gain at the point just evaluated: to the evaluator
+    !! (whether the next whole-record run carries the budget, or takes this Jacobian again).
+    subroutine record_note_gain(prob, gain)
+        class(record_fit_t), intent(inout) :: prob
+        real(dp), intent(in) :: gain
+        call prob%runs%note_gain(gain)
+    end subroutine record_note_gain
+
+    !> The residuals and the Jacobian at p computed there (carrying the budget's inputs),
+    !! and its Gauss-Newton gain (told the evaluator): for a fit that ended on a Jacobian
+    !! taken again from an earlier point (runs%jac_fresh false), whose covariance and
+    !! budget need it at the estimate.
+    subroutine fresh_jacobian(prob, p, r, jac, stat, gain)
         type(record_fit_t), intent(inout) :: prob
         real(dp), intent(in) :: p(:)
         real(dp), intent(out) :: r(:), jac(:, :)
         type(status_t), intent(out) :: stat
-        prob%whole_gain = 0.0_dp
-        prob%cache%valid = .false.
-        if (allocated(prob%jac_dv)) deallocate (prob%jac_dv)
+        real(dp), intent(out), optional :: gain !! its Gauss-Newton gain
+        real(dp) :: g
+        call prob%runs%forget()
         call record_residual_jacobian(prob, p, r, jac, stat)
+        if (stat%code /= 0) return
+        g = gauss_newton_gain(r, jac)
+        call prob%note_gain(g)
+        if (present(gain)) gain = g
     end subroutine fresh_jacobian
+
+    !> The budget's inputs x: a run of the whole record near the minimum carries the
+    !! derivatives of those with u > 0 beside the fit's (set after the problem's rig).
+    subroutine carry_inputs(prob, x)
+        type(record_fit_t), intent(inout) :: prob
+        type(input_t), intent(in) :: x(:)
+        type(run_columns_t) :: cols
+        allocate (cols%names(0), cols%xs(0))
+        call budget_columns(prob, x, cols%names, cols%xs)
+        call prob%runs%set_carry(x, cols)
+    end subroutine carry_inputs
 
     !> The model at the parameters p over the samples ifirst .. nuse (vals), with its
     !! derivatives along the estimated parameters but the bias when `derivs` (dv, a column
-    !! each), and the bias; from the problem's cache when its run was of the same model and
-    !! reached nuse (with the derivatives when asked), else from a run, which becomes the
-    !! cache.  A run of the whole record with derivatives after one whose Gauss-Newton step
-    !! was within CARRY_GAIN (one standard error: the fit converges at the next point, as a
-    !! rule) carries the budget's inputs' too (prob%x with u > 0); one that does not runs
-    !! the model alone and takes the derivatives of the last whole-record point where they
-    !! were computed, when that point's Gauss-Newton gain was within REUSE_GAIN (fresh
-    !! .false.).  Neither with the sensitivities in the error control (there a column
-    !! changes the steps of the others, and a run without them other steps).
+    !! each), and the bias; through the problem's evaluator (record_runs_t%values: the last
+    !! run reused, the budget carried, derivatives taken again; fresh .false. when they
+    !! were).  A parameter set the model cannot take (I1 <= 0, an amplitude outside 0 .. 180
+    !! degrees) is a failed evaluation.
     subroutine model_values(prob, p, derivs, vals, dv, bias, stat, fresh)
         type(record_fit_t), intent(inout) :: prob
         real(dp), intent(in) :: p(:)
@@ -569,88 +803,36 @@ contains
         real(dp), intent(out) :: bias
         type(status_t), intent(out) :: stat
         logical, intent(out), optional :: fresh     !! dv computed at p (not taken again)
-        type(rig_t) :: rg
-        type(start_t) :: st
-        real(dp) :: t0
-        real(dp), allocatable :: xs(:), dall(:, :)
-        character(len=16), allocatable :: names(:)
-        integer(int8), allocatable :: key(:)
-        integer :: i0, i1, j, m, nfit, nx
-        logical :: whole, reuse
+        type(run_point_t) :: pt
+        type(run_columns_t) :: fit
+        integer :: i0, i1, j, m
         stat%code = 0
         if (present(fresh)) fresh = .true.
-        call apply_parameters(prob, p, rg, st, t0, bias)
+        call apply_parameters(prob, p, pt%rg, pt%st, pt%t0, bias)
         i0 = prob%ifirst
         i1 = prob%nuse
         m = i1 - i0 + 1
-        if (.not. (rg%inertia(1) > 0.0_dp) .or. .not. (st%amplitude > 0.0_dp .and. &
-            st%amplitude < 180.0_dp)) then
+        if (.not. (pt%rg%inertia(1) > 0.0_dp) .or. .not. (pt%st%amplitude > 0.0_dp .and. &
+            pt%st%amplitude < 180.0_dp)) then
             allocate (vals(m), dv(m, 0))
             vals = 0.0_dp
             call set_error(stat, ERR_NUMERIC, 'parameters out of the model''s range')
             return
         end if
-        key = model_key(rg, st, t0)
-        allocate (names(0), xs(0))
+        allocate (fit%names(0), fit%xs(0))
         if (derivs) then
             do j = 1, prob%np
                 if (prob%which(j) == P_BIAS) cycle
-                names = [character(len=16) :: names, PARAM_NAMES(prob%which(j))]
-                xs = [xs, prob%xs(j)]
+                fit%names = [character(len=16) :: fit%names, PARAM_NAMES(prob%which(j))]
+                fit%xs = [fit%xs, prob%xs(j)]
             end do
         end if
-        nfit = size(names)
-        associate (c => prob%cache)
-            if (c%valid .and. c%n >= i1 .and. (c%nfit == nfit .or. .not. derivs)) then
-                if (all(c%key == key)) then
-                    vals = c%v(1:m)
-                    dv = c%dv(1:m, 1:merge(nfit, 0, derivs))
-                    return
-                end if
-            end if
-        end associate
-        whole = i1 == size(prob%rec%t)
-        nx = 0
-        reuse = .false.
-        if (derivs .and. whole .and. .not. prob%acc%sens_error_control) then
-            if (prob%whole_gain <= CARRY_GAIN .and. allocated(prob%x)) then
-                call budget_columns(prob, prob%x, names, xs)
-                nx = size(names) - nfit
-            else if (allocated(prob%jac_dv) .and. prob%jac_gain <= REUSE_GAIN) then
-                reuse = size(prob%jac_dv, 1) == m .and. size(prob%jac_dv, 2) == nfit
-            end if
-        end if
-        if (reuse) then
-            ! the model alone; its derivatives those of the last whole-record point
-            allocate (vals(m), dall(m, 0))
-            call record_model_sens(rg, st, prob%acc, prob%rec%t(i0:i1), t0, prob%rate, &
-                                   names(1:0), xs(1:0), vals, dall, stat)
-            prob%cache%valid = .false.
-            if (stat%code /= 0) return
-            dv = prob%jac_dv
-            if (present(fresh)) fresh = .false.
-            prob%cache = model_cache_t(.true., key, i1, 0, 0, vals, dall)
-            return
-        end if
-        allocate (vals(m), dall(m, size(names)))
-        call record_model_sens(rg, st, prob%acc, prob%rec%t(i0:i1), t0, prob%rate, names, xs, &
-                               vals, dall, stat)
-        prob%cache%valid = .false.
-        if (stat%code /= 0) return
-        dv = dall(:, 1:nfit)
-        prob%cache = model_cache_t(.true., key, i1, nfit, nx, vals, dall)
+        ! the evaluator runs the problem's model: its accuracy and its quantity
+        prob%runs%acc = prob%acc
+        prob%runs%rate = prob%rate
+        call prob%runs%values(pt, prob%rec%t(i0:i1), i1 == size(prob%rec%t), fit, vals, dv, &
+                              stat, fresh)
     end subroutine model_values
-
-    !> The bytes of the rig, the start and the release time: what a run of the record
-    !! model depends on (model_cache_t's key).
-    pure function model_key(rg, st, t0) result(key)
-        type(rig_t), intent(in) :: rg
-        type(start_t), intent(in) :: st
-        real(dp), intent(in) :: t0
-        integer(int8), allocatable :: key(:)
-        key = [transfer(rg, [0_int8]), transfer(st, [0_int8]), transfer(t0, [0_int8])]
-    end function model_key
-
     !> The names and sizes of the budget's inputs with u > 0 (x), appended to names and xs.
     pure subroutine budget_columns(prob, x, names, xs)
         type(record_fit_t), intent(in) :: prob
@@ -883,19 +1065,21 @@ contains
         end do
     end subroutine fit_problem
 
-    !> Fit the record by Levenberg-Marquardt on growing windows, each from the last
-    !! estimate and with its last damping lambda (a window in the basin of the last takes
-    !! Gauss-Newton steps at once), then the whole record.  The first window is about two
-    !! mean periods of the record; each next one as long as the last window's estimate
-    !! predicts the model well enough to stay in the fit's basin there (window_growth), and
-    !! at least twice as long.  res: the last fit (whole record); iterations summed over
-    !! windows.
-    subroutine fit_record(prob, p0, h, res, stat)
+    !> Fit the record by the estimator (Levenberg-Marquardt) on growing windows, each from
+    !! the last estimate and with its last damping lambda (a window in the basin of the last
+    !! takes Gauss-Newton steps at once), then the whole record, with the loss asked
+    !! (LOSS_HUBER: then refitted with Huber's weights, res%robust their roots).  The first
+    !! window is about two mean periods of the record; each next one as long as the last
+    !! window's estimate predicts the model well enough to stay in the fit's basin there
+    !! (window_growth), and at least twice as long.  res: the last fit (whole record);
+    !! iterations summed over windows.
+    subroutine fit_record(prob, p0, h, res, stat, loss)
         type(record_fit_t), intent(inout) :: prob
         real(dp), intent(in) :: p0(:), h(:)
         type(lsq_result_t), intent(out) :: res
         type(status_t), intent(out) :: stat
-        type(lsq_options_t) :: opts
+        integer, intent(in), optional :: loss   !! LOSS_SQUARES (the default) or LOSS_HUBER
+        type(lsq_options_t) :: opts, defaults
         type(lsq_result_t) :: part
         real(dp) :: tp, span, win, tstart, lambda
         real(dp), allocatable :: p(:)
@@ -908,6 +1092,8 @@ contains
         iters = 0
         evals = 0
         opts = lsq_options_t()
+        opts%h = h
+        opts%names = estimated_names(prob)
         lambda = opts%lambda0
         win = 2.0_dp*tp
         if (.not. (tp > 0.0_dp)) win = 2.0_dp*span
@@ -920,9 +1106,9 @@ contains
             prob%nuse = window_end(win)
             if (prob%nuse >= n) exit
             opts%xtol = 1.0e-6_dp
-            opts%chi2_tol = 1.0_dp
+            opts%gtol = 1.0_dp
             opts%lambda0 = lambda
-            call lm_fit(prob, p, h, prob%nres(), opts, part, stat)
+            call estimate(prob, p, opts, part, stat)
             lambda = part%lambda
             iters = iters + part%iterations
             evals = evals + part%evaluations
@@ -937,9 +1123,12 @@ contains
             win = win*window_growth(prob, part, tp)
         end do
         prob%nuse = n
-        opts = lsq_options_t()
+        opts%xtol = defaults%xtol
+        opts%gtol = defaults%gtol
         opts%lambda0 = lambda
-        call lm_fit(prob, p, h, prob%nres(), opts, res, stat)
+        opts%loss = LOSS_SQUARES
+        if (present(loss)) opts%loss = loss
+        call estimate(prob, p, opts, res, stat)
         res%iterations = res%iterations + iters
         res%evaluations = res%evaluations + evals
     contains
@@ -975,7 +1164,7 @@ contains
         m = size(part%r)
         if (m <= prob%np .or. prob%np == 0 .or. .not. allocated(part%jac)) return
         s2 = part%cost/(m - prob%np)
-        call covariance(part%jac, s2, cov, st)
+        call lsq_covariance(part%jac, s2, cov, st)
         if (st%code /= 0) return
         tend = prob%rec%t(prob%nuse)
         sigw = 0.0_dp
@@ -996,23 +1185,6 @@ contains
         if (sigw > 1.0e-12_dp*(vmax - vmin)) g = min(GROWTH_MAX, max(2.0_dp, &
             sqrt(WINDOW_PHASE*0.5_dp*(vmax - vmin)/(WINDOW_SIGMAS*sigw))))
     end function window_growth
-
-    !> Huber's weights from the residuals r of the samples ifirst .. nuse (weighted by
-    !! 1/u, before any robust weight): each sample's weight min(1, c s/|r_i|) with
-    !! c = HUBER_C and s = 1.4826 median(|r_i|), the robust scale; hw gets their roots.
-    subroutine huber_weights(prob, r)
-        type(record_fit_t), intent(inout) :: prob
-        real(dp), intent(in) :: r(:)            !! (nres) residuals without robust weights
-        real(dp) :: s, c
-        integer :: i, i0
-        s = 1.4826_dp*median(abs(r))
-        if (.not. (s > 0.0_dp)) return
-        c = HUBER_C*s
-        i0 = prob%ifirst
-        do i = 1, size(r)
-            prob%hw(i0 + i - 1) = sqrt(min(1.0_dp, c/max(abs(r(i)), tiny(1.0_dp))))
-        end do
-    end subroutine huber_weights
 
     !> The integrated correlation time of a sequence of residuals, in samples:
     !! 1 + 2 sum_k rho_k over the lags k = 1, 2, ... while the autocorrelation rho_k stays
@@ -1106,6 +1278,7 @@ contains
         character(len=16), allocatable :: names(:)
         integer, allocatable :: idx(:)
         integer :: i0, i1, j, c, m
+        logical :: ok
         dpdx = 0.0_dp
         runs = 0
         stat%code = 0
@@ -1131,9 +1304,8 @@ contains
         i0 = prob%ifirst
         i1 = prob%nuse
         m = i1 - i0 + 1
-        if (carried()) then
-            dv = prob%cache%dv(1:m, prob%cache%nfit + 1:)
-        else
+        call prob%runs%carried(run_point_t(rg, st, t0), m, x, size(names), dv, ok)
+        if (.not. ok) then
             allocate (vals(m), dv(m, size(names)))
             call record_model_sens(rg, st, prob%acc, prob%rec%t(i0:i1), t0, prob%rate, &
                                    names, xs, vals, dv, stat)
@@ -1149,23 +1321,6 @@ contains
             if (stat%code /= 0) return
             dpdx(:, idx(c)) = -dpdx(:, idx(c))
         end do
-    contains
-        !> The fit's last run was of this model, over these samples, and carried these
-        !! inputs (the same names, the same values).
-        logical function carried()
-            integer :: k
-            carried = .false.
-            associate (cc => prob%cache)
-                if (.not. cc%valid .or. cc%n < i1 .or. cc%nx /= size(names)) return
-                if (.not. allocated(prob%x)) return
-                if (size(prob%x) /= size(x)) return
-                do k = 1, size(x)
-                    if (prob%x(k)%name /= x(k)%name .or. prob%x(k)%value /= x(k)%value .or. &
-                        (prob%x(k)%u > 0.0_dp .neqv. x(k)%u > 0.0_dp)) return
-                end do
-                carried = all(cc%key == model_key(rg, st, t0))
-            end associate
-        end function carried
     end subroutine input_sensitivities
 
     !> The size of an input for its difference step: |value|, b' for an input of value 0,
@@ -1226,6 +1381,7 @@ contains
         type(record_fit_t) :: q
         type(rng_t) :: g
         type(lsq_result_t) :: fit
+        type(lsq_options_t) :: opts
         real(dp) :: p(size(self%phat)), dp_(size(self%phat)), r(size(self%jac, 1))
         real(dp) :: h(size(self%phat)), dx(size(self%x)), d, dprev, rate
         integer :: j, it, i0, i1
@@ -1282,7 +1438,8 @@ contains
             do j = 1, size(p)
                 h(j) = H_REL*max(abs(self%phat(j)), self%u_p(j))
             end do
-            call lm_fit(q, self%phat, h, size(r), lsq_options_t(), fit, stat)
+            opts%h = h
+            call estimate(q, self%phat, opts, fit, stat)
             if (stat%code /= 0) then
                 stat%code = ERR_NUMERIC
                 stat%msg = 'Monte Carlo sample '//itoa(k)//': '//stat%msg
@@ -1293,44 +1450,6 @@ contains
         stat%code = 0
         est = p
     end subroutine record_mc_point
-
-    !> C = s^2 (J^T J)^-1 from the singular values of J with its columns scaled to unit norm
-    !! (ERR_NUMERIC naming the parameters when J is rank deficient: the record does not
-    !! determine them together).
-    subroutine covariance(jac, s2, cov, stat)
-        real(dp), intent(in) :: jac(:, :)
-        real(dp), intent(in) :: s2
-        real(dp), allocatable, intent(out) :: cov(:, :)
-        type(status_t), intent(out) :: stat
-        real(dp) :: cn(size(jac, 2)), js(size(jac, 1), size(jac, 2)), sv(size(jac, 2))
-        real(dp) :: vt(size(jac, 2), size(jac, 2))
-        integer :: n, i, j
-        n = size(jac, 2)
-        allocate (cov(n, n))
-        cov = 0.0_dp
-        do j = 1, n
-            cn(j) = norm2(jac(:, j))
-            if (.not. (cn(j) > 0.0_dp)) then
-                call set_error(stat, ERR_NUMERIC, 'identify: the record does not depend on '// &
-                    'parameter '//itoa(j)//' of &measurement estimate; estimate fewer parameters')
-                return
-            end if
-            js(:, j) = jac(:, j)/cn(j)
-        end do
-        call la_svd(js, sv, vt, stat)
-        if (stat%code /= 0) return
-        if (sv(n) < sv(1)/COND_MAX) then
-            call set_error(stat, ERR_NUMERIC, 'identify: the record does not determine the '// &
-                'estimated parameters together (condition number '//sci(sv(1)/sv(n), 1)// &
-                '); estimate fewer parameters or use a longer record')
-            return
-        end if
-        do j = 1, n
-            do i = 1, n
-                cov(i, j) = s2*sum(vt(:, i)*vt(:, j)/sv**2)/(cn(i)*cn(j))
-            end do
-        end do
-    end subroutine covariance
 
     !> A record made by the program itself: the deck's rig (with its &damping) released
     !! from &start, sampled every 1/rate_hz s from 0 to duration (s), theta4 (quantity

@@ -17,8 +17,9 @@
 !!   u . J u = m g b b' T^2 / (16 pi^2 l) (l the mean cable length), then least squares of
 !!   a(u) . x on those moments (LAPACK dgels).
 !! * The fit (fit_tensor): generalised least squares, min r^T V^-1 r, r = T(x) - T_meas,
-!!   by Gauss-Newton from the projection solution (the Jacobian by forward differences of
-!!   the model; a step that fails or raises the sum is halved), whitened by the Cholesky
+!!   by Gauss-Newton from the projection solution (the estimator, module estimator; the
+!!   Jacobian by forward differences of the model; a step that fails or raises the sum is
+!!   halved), whitened by the Cholesky
 !!   factor of V (LAPACK dpotrf, dtrtrs) and solved by dgels.  V holds what scatters the
 !!   rows independently of the tensor: each row's timing (u_period over cycles), its
 !!   amplitude (u_amplitude times dT/dA), the definition of its period (u_def, below), and
@@ -80,6 +81,9 @@ module tensor_fit
     use lapack_wrap, only: la_lstsq, la_svd, la_syev, la_chol, la_tri_solve
     use random, only: rng_t, rng_stream, rng_normal, rng_uniform
     use stats, only: chi2_sf, coverage_factor, welch_satterthwaite, NU_INFINITE
+    use budget, only: ROW_INPUT, ROW_TIMING, ROW_AMPLITUDE, ROW_DEFINITION, ROW_DIRECTION
+    use estimator, only: lsq_problem_t, lsq_options_t, lsq_result_t, estimate, DAMP_HALVING, &
+        STEP_LARGEST, FAIL_FLOOR, FAIL_ITERATIONS
     use monte_carlo, only: mc_task_t
     use hang_table, only: hang_t, hang_row_t, hang_set_t, RIG_NAMES
     use hang_model, only: tensor_entries, principal_axes, hang_rig, hang_period, &
@@ -116,6 +120,7 @@ module tensor_fit
         character(len=24) :: input = ''
         real(dp) :: u = 0.0_dp                  !! the input's u (direction in degrees)
         real(dp) :: contribution(6) = 0.0_dp    !! to J_xx ... J_yz
+        integer :: kind = ROW_INPUT             !! ROW_* of module budget: what the input is
     end type tensor_budget_row_t
 
     !> The fit and its uncertainty.
@@ -149,6 +154,19 @@ module tensor_fit
         integer, allocatable :: rows(:)         !! the hang's rows
         real(dp), allocatable :: l(:, :)        !! V of those rows, then L with V = L L^T
     end type block_t
+
+    !> The tensor's fit as a least-squares problem of the estimator (gauss_newton): the
+    !! rows' whitened residuals of the six entries.
+    type, extends(lsq_problem_t) :: tensor_lsq_t
+        type(tensor_problem_t) :: tp            !! the problem
+        type(block_t), allocatable :: blocks(:) !! the rows' covariance, factored
+        real(dp), allocatable :: tc(:)          !! the model's periods of the cases at x_last
+        real(dp) :: x_last(6) = huge(1.0_dp)
+    contains
+        procedure :: residual => tensor_residual
+        procedure :: nres => tensor_nres
+        procedure :: jacobian => tensor_jacobian
+    end type tensor_lsq_t
 
     !> A plan of hangs.
     type, public :: tensor_plan_t
@@ -692,8 +710,13 @@ contains
         end do
     end subroutine whiten
 
-    !> Gauss-Newton on the whitened residuals from x (see the module header); x is the
-    !! solution on return, tc its periods, s its sum of squares.
+    !> Gauss-Newton on the whitened residuals from x (see the module header), by the
+    !! estimator with the step halved while it fails or raises the sum (by more than 1e-12
+    !! of it), at most MAX_ITER Jacobians; converged when the step is below tol of the
+    !! largest entry, or the sum falls by at most 1e-10 of itself, or, when no halving
+    !! lowers the sum, the undamped step is below 1e3 tol (the model's resolution).  x is
+    !! the solution on return, tc its periods, s its sum of squares; iters counts the
+    !! Jacobians.
     subroutine gauss_newton(prob, blocks, x, tc, s, iters, evals, stat)
         type(tensor_problem_t), intent(in) :: prob
         type(block_t), intent(in) :: blocks(:)
@@ -701,72 +724,103 @@ contains
         real(dp), intent(out) :: tc(:), s
         integer, intent(inout) :: iters, evals
         type(status_t), intent(out) :: stat
-        real(dp), allocatable :: a(:, :), aw(:, :), rw(:, :), tt(:)
-        real(dp) :: dx(6), xt(6), st, lam, tol, gain
-        integer :: n, it, half
-        type(status_t) :: s2
-        n = size(prob%rows)
-        allocate (a(size(tc), 6), aw(n, 6), rw(n, 1), tt(size(tc)))
+        type(tensor_lsq_t) :: lsq
+        type(lsq_options_t) :: opts
+        type(lsq_result_t) :: res
+        real(dp) :: tol, rr(size(prob%rows))
+        s = huge(1.0_dp)
+        tc = 0.0_dp
         tol = X_TOL
         if (any(prob%case_amp > 0.0_dp)) tol = max(X_TOL, 10.0_dp*prob%acc%rtol)
-        call residuals(x, tc, rw, s, stat)
-        if (stat%code /= STATUS_OK) return
-        do it = 1, MAX_ITER
-            iters = iters + 1
-            call case_jacobian(prob, x, tc, a, stat)
-            evals = evals + 6
-            if (stat%code /= STATUS_OK) return
-            aw = a(prob%row_case, :)
-            call whiten(blocks, aw, stat)
-            if (stat%code /= STATUS_OK) return
-            call la_lstsq(aw, -rw(:, 1), dx, stat)
-            if (stat%code /= STATUS_OK) then
-                stat%msg = 'the Gauss-Newton step: '//stat%msg
-                return
-            end if
-            lam = 1.0_dp
-            do half = 1, 40
-                xt = x + lam*dx
-                call residuals(xt, tt, rw, st, s2)
-                if (s2%code == STATUS_OK .and. st <= s*(1.0_dp + 1.0e-12_dp)) exit
-                lam = 0.5_dp*lam
-            end do
-            if (s2%code /= STATUS_OK .or. .not. (st <= s*(1.0_dp + 1.0e-12_dp))) then
-                ! no step lowers the sum: converged at the model's resolution, or stuck
-                call residuals(x, tc, rw, s, stat)
-                if (maxval(abs(dx)) <= 1.0e3_dp*tol*maxval(x(1:3))) return
-                call set_error(stat, ERR_NUMERIC, 'the fit of the tensor: no Gauss-Newton step '// &
-                    'lowers the misfit (at the entries '//rlist_short(x)//'); check that the '// &
-                    'periods agree with each other and with the rig')
-                return
-            end if
-            x = xt
-            tc = tt
-            gain = s - st
-            s = st
-            if (maxval(abs(lam*dx)) <= tol*maxval(x(1:3))) return
-            ! nothing left to gain at the model's resolution
-            if (gain <= 1.0e-10_dp*(s + gain) .and. &
-                maxval(abs(lam*dx)) <= 1.0e3_dp*tol*maxval(x(1:3))) return
-        end do
-        call set_error(stat, ERR_NUMERIC, 'the fit of the tensor did not converge in '// &
-            itoa(MAX_ITER)//' Gauss-Newton iterations (entries '//rlist_short(x)//'); check '// &
-            'that the periods agree with each other and with the rig')
-    contains
-        subroutine residuals(xx, tcc, rr, ss, sta)
-            real(dp), intent(in) :: xx(6)
-            real(dp), intent(out) :: tcc(:), rr(:, :), ss
-            type(status_t), intent(out) :: sta
-            evals = evals + 1
-            ss = huge(1.0_dp)
-            call model_periods(prob, xx, tcc, sta)
-            if (sta%code /= STATUS_OK) return
-            rr(:, 1) = tcc(prob%row_case) - prob%rows%period
-            call whiten(blocks, rr, sta)
-            if (sta%code /= STATUS_OK) return
-            ss = sum(rr**2)
-        end subroutine residuals
+        lsq%tp = prob
+        lsq%blocks = blocks
+        allocate (lsq%tc(size(tc)))
+        opts%damping = DAMP_HALVING
+        opts%lambda_max = 1.0e12_dp             ! 40 tries: the step down to 2^-39 of itself
+        opts%rise = 1.0e-12_dp
+        opts%max_iter = huge(1)
+        opts%max_jacobians = MAX_ITER
+        opts%gtol = 0.0_dp
+        opts%xtol = tol
+        opts%step_norm = STEP_LARGEST
+        opts%ftol = 1.0e-10_dp
+        opts%small_gain = huge(1.0_dp)
+        opts%floor_gain = 0.0_dp
+        opts%exact = 0.0_dp
+        opts%floor_xtol = 1.0e3_dp*tol
+        call estimate(lsq, x, opts, res, stat)
+        iters = iters + res%jacobians
+        evals = evals + res%evaluations
+        if (res%converged) then
+            x = res%p
+            s = res%cost
+            ! the model's periods at the solution (the last evaluation may be a step refused)
+            if (.not. all(lsq%x_last == x)) call lsq%residual(x, rr, stat)
+            tc = lsq%tc
+            return
+        end if
+        select case (res%ended)
+        case (FAIL_FLOOR)
+            call set_error(stat, ERR_NUMERIC, 'the fit of the tensor: no Gauss-Newton step '// &
+                'lowers the misfit (at the entries '//rlist_short(res%p)//'); check that the '// &
+                'periods agree with each other and with the rig')
+        case (FAIL_ITERATIONS)
+            call set_error(stat, ERR_NUMERIC, 'the fit of the tensor did not converge in '// &
+                itoa(MAX_ITER)//' Gauss-Newton iterations (entries '//rlist_short(res%p)// &
+                '); check that the periods agree with each other and with the rig')
+        end select
     end subroutine gauss_newton
+
+    !> The whitened residuals L^-1 (T(x) - T measured) of the rows (the model's periods of
+    !! the cases kept: tc at x_last).
+    subroutine tensor_residual(prob, p, r, stat)
+        class(tensor_lsq_t), intent(inout) :: prob
+        real(dp), intent(in) :: p(:)            !! the six entries
+        real(dp), intent(out) :: r(:)
+        type(status_t), intent(out) :: stat
+        real(dp) :: rr(size(r), 1)
+        r = 0.0_dp
+        prob%x_last = huge(1.0_dp)
+        call model_periods(prob%tp, p, prob%tc, stat)
+        if (stat%code /= STATUS_OK) return
+        rr(:, 1) = prob%tc(prob%tp%row_case) - prob%tp%rows%period
+        call whiten(prob%blocks, rr, stat)
+        if (stat%code /= STATUS_OK) return
+        r = rr(:, 1)
+        prob%x_last = p
+    end subroutine tensor_residual
+
+    !> The number of rows.
+    pure integer function tensor_nres(prob) result(n)
+        class(tensor_lsq_t), intent(in) :: prob
+        n = size(prob%tp%rows)
+    end function tensor_nres
+
+    !> The whitened Jacobian L^-1 dT/dx of the rows (case_jacobian: forward differences of
+    !! the model from its periods at p).
+    subroutine tensor_jacobian(prob, p, r, h, jac, evaluations, stat)
+        class(tensor_lsq_t), intent(inout) :: prob
+        real(dp), intent(in) :: p(:)            !! the six entries
+        real(dp), intent(in) :: r(:)            !! r(p)
+        real(dp), intent(in) :: h(:)            !! (not used: case_jacobian's own steps)
+        real(dp), intent(out) :: jac(:, :)
+        integer, intent(out) :: evaluations
+        type(status_t), intent(out) :: stat
+        real(dp) :: a(size(prob%tc), 6), rr(size(r))
+        evaluations = 0
+        jac = 0.0_dp
+        if (.false.) rr = h(1)
+        if (.not. all(prob%x_last == p)) then
+            call prob%residual(p, rr, stat)
+            evaluations = 1
+            if (stat%code /= STATUS_OK) return
+        end if
+        call case_jacobian(prob%tp, p, prob%tc, a, stat)
+        evaluations = evaluations + 6
+        if (stat%code /= STATUS_OK) return
+        jac = a(prob%tp%row_case, :)
+        call whiten(prob%blocks, jac, stat)
+    end subroutine tensor_jacobian
 
     !> The fit of the tensor from x0 with its first-order uncertainty (see the module
     !! header).
@@ -946,7 +1000,8 @@ contains
                 col(i, 1) = -1.0_dp
                 call add_input(col(:, 1), u_t(i), cgrp)
             end do
-            call push('period('//itoa(prob%hangs(h)%id)//')', u_t(first_row(h)), cgrp)
+            call push('period('//itoa(prob%hangs(h)%id)//')', u_t(first_row(h)), cgrp, &
+                      ROW_TIMING)
             ! amplitudes
             if (prob%u%amplitude > 0.0_dp .and. any(prob%case_amp(pack(prob%row_case, &
                 prob%rows%hang == h)) > 0.0_dp)) then
@@ -957,7 +1012,8 @@ contains
                     col(i, 1) = s_amp(prob%row_case(i))
                     call add_input(col(:, 1), prob%u%amplitude, cgrp)
                 end do
-                call push('amplitude('//itoa(prob%hangs(h)%id)//')', prob%u%amplitude, cgrp)
+                call push('amplitude('//itoa(prob%hangs(h)%id)//')', prob%u%amplitude, cgrp, &
+                          ROW_AMPLITUDE)
             end if
             ! the period's definition (the drift of the maxima)
             if (any(prob%u_def(pack([(i, i=1, n)], prob%rows%hang == h)) > 0.0_dp)) then
@@ -969,7 +1025,8 @@ contains
                     call add_input(col(:, 1), prob%u_def(i), cgrp)
                 end do
                 call push('definition('//itoa(prob%hangs(h)%id)//')', &
-                          maxval(prob%u_def(pack([(i, i=1, n)], prob%rows%hang == h))), cgrp)
+                          maxval(prob%u_def(pack([(i, i=1, n)], prob%rows%hang == h))), cgrp, &
+                          ROW_DEFINITION)
             end if
             ! the direction: three rotations shared by its rows
             if (prob%u%direction > 0.0_dp) then
@@ -981,7 +1038,8 @@ contains
                     end do
                     call add_input(col(:, 1), prob%u%direction, cgrp)
                 end do
-                call push('direction('//itoa(prob%hangs(h)%id)//')', prob%u%direction/deg, cgrp)
+                call push('direction('//itoa(prob%hangs(h)%id)//')', prob%u%direction/deg, cgrp, &
+                          ROW_DIRECTION)
             end if
             ! its own rig
             do k = 1, 4
@@ -993,7 +1051,7 @@ contains
                 end do
                 call add_input(col(:, 1), prob%u%rig(k), cgrp)
                 call push(trim(RIG_NAMES(k))//'('//itoa(prob%hangs(h)%id)//')', &
-                          prob%u%rig(k), cgrp)
+                          prob%u%rig(k), cgrp, ROW_INPUT)
             end do
         end do
         fit%u_x = sqrt(max(0.0_dp, [(fit%cov(k, k), k=1, 6)]))
@@ -1020,7 +1078,7 @@ contains
             fit%nu_eff(k) = NU_INFINITE
             if (fit%scatter .and. fit%dof > 0) then
                 fit%nu_eff(k) = welch_satterthwaite(cmoment(k, :), &
-                    [(merge(real(fit%dof, dp), 0.0_dp, is_timing(fit%budget(j)%input)), &
+                    [(merge(real(fit%dof, dp), 0.0_dp, fit%budget(j)%kind == ROW_TIMING), &
                       j=1, size(fit%budget))])
             end if
             fit%k95(k) = coverage_factor(fit%nu_eff(k), 0.95_dp)
@@ -1033,7 +1091,7 @@ contains
             real(dp) :: cg(6, 6)
             cg = 0.0_dp
             call add_input(dr, u, cg)
-            call push(name, u, cg)
+            call push(name, u, cg, ROW_INPUT)
         end subroutine group
         !> S = -G L^-1 dr: its covariance S S^T u^2 added to cg and to fit%cov.
         subroutine add_input(dr, u, cg)
@@ -1046,13 +1104,15 @@ contains
             fit%cov = fit%cov + outer(sk, sk)*u**2
         end subroutine add_input
         !> One budget line from a group's covariance.
-        subroutine push(name, u, cg)
+        subroutine push(name, u, cg, kind)
             character(len=*), intent(in) :: name
             real(dp), intent(in) :: u, cg(6, 6)
+            integer, intent(in) :: kind         !! ROW_* of module budget
             type(tensor_budget_row_t) :: row
             real(dp) :: cm(3, 1), gg(6)
             integer :: m
             row%input = name
+            row%kind = kind
             row%u = u
             row%contribution = sqrt(max(0.0_dp, [(cg(m, m), m=1, 6)]))
             fit%budget = [fit%budget, row]
@@ -1062,10 +1122,6 @@ contains
             end do
             cmoment = reshape([cmoment, cm], [3, size(cmoment, 2) + 1])
         end subroutine push
-        pure logical function is_timing(name)
-            character(len=*), intent(in) :: name
-            is_timing = index(name, 'period(') == 1
-        end function is_timing
         pure integer function first_row(hh)
             integer, intent(in) :: hh
             first_row = findloc(prob%rows%hang, hh, 1)

@@ -88,6 +88,7 @@ module rig
 
     public :: rig_of, start_of, raised_start, method_of, accuracy_of, make_pendulum
     public :: start_state, move_b_prime, output_times
+    public :: same_rig, same_start
 
 contains
 
@@ -224,6 +225,25 @@ contains
         thd(5) = sum(beta(1:4)*thd(1:4))/beta(5)
         y0 = chart_state(th0, thd)
     end subroutine start_state
+
+    !> Two rigs are the same, value for value (every component of rig_t: keep in step).
+    pure logical function same_rig(a, b)
+        type(rig_t), intent(in) :: a, b
+        same_rig = a%b == b%b .and. a%b_prime == b%b_prime .and. a%l == b%l .and. &
+                   a%l_prime == b%l_prime .and. a%g == b%g .and. a%mass == b%mass .and. &
+                   all(a%inertia == b%inertia) .and. a%r == b%r .and. a%lambda == b%lambda .and. &
+                   all(a%btilde == b%btilde) .and. a%sway_depth == b%sway_depth .and. &
+                   a%c_v == b%c_v .and. a%c_q == b%c_q .and. &
+                   a%cable_stiffness == b%cable_stiffness .and. a%cable_damping == b%cable_damping
+    end function same_rig
+
+    !> Two starts are the same, value for value (every component of start_t: keep in step).
+    pure logical function same_start(a, b)
+        type(start_t), intent(in) :: a, b
+        same_start = a%mode == b%mode .and. a%amplitude == b%amplitude .and. &
+                     a%tilt == b%tilt .and. all(a%theta == b%theta) .and. &
+                     all(a%theta_dot == b%theta_dot)
+    end function same_start
 
     !> The rig with the body's spacing b' changed to bp: the two body attachment points move
     !! symmetrically, so the mass centre keeps its depth below, and its offset along, the
