@@ -224,7 +224,8 @@ contains
         ydot(7:12) = f
     end subroutine accelerations
 
-    !> The cables' switching functions g_i (taut where > 0) at state y.
+    !> The cables' switching functions g_i (taut where > 0) at state y: a master cable's from
+    !! its stretch state and rate alone, the others' from the pose.
     pure subroutine pe_switch(el, y, g, stat)
         type(platform_elastic_t), intent(in) :: el
         real(dp), intent(in) :: y(:)
@@ -233,13 +234,22 @@ contains
         type(platform_kin_t) :: k
         real(dp), dimension(PLATFORM_NMAX) :: l, e, ld, tn
         real(dp) :: l0(el%pl%n)
-        integer :: i, n
+        integer :: i, j, n, nf
         n = el%pl%n
+        nf = el%pl%nf
         g = 0.0_dp
-        call pe_pose(el, y, k, stat)
-        if (stat%code /= 0) return
-        call cable_state(el, y, k, l(1:n), e(1:n), ld(1:n), tn(1:n))
+        stat%code = 0
         l0 = pe_natural_lengths(el)
+        if (n > el%pl%nd) then
+            call pe_pose(el, y, k, stat)
+            if (stat%code /= 0) return
+            call cable_state(el, y, k, l(1:n), e(1:n), ld(1:n), tn(1:n))
+        end if
+        do j = 1, el%pl%nd
+            i = el%pl%master(j)
+            e(i) = y(nf + j)
+            ld(i) = y(6 + nf + j)
+        end do
         do i = 1, n
             g(i) = switch_of(el, e(i), ld(i), l0(i))
         end do
@@ -516,7 +526,8 @@ contains
 
     !> The start of an elastic run from the rest pose q_rest (pe_rest_pose): the body turned
     !! by `amplitude` about the vertical through its mass centre (or `centre`) and moved by
-    !! `sway`, the masters' stretches kept, released at rest.
+    !! `sway`, the masters' stretches those at which their accelerations vanish (the cables
+    !! carry what the body's motion asks of them), released at rest.
     subroutine pe_start(el, q_rest, amplitude, y0, stat, sway, centre)
         type(platform_elastic_t), intent(in) :: el
         real(dp), intent(in) :: q_rest(6)
@@ -524,9 +535,10 @@ contains
         real(dp), intent(out) :: y0(12)
         type(status_t), intent(out) :: stat
         real(dp), intent(in), optional :: sway(2), centre(2)
-        real(dp) :: q(6), r(3, 3), c(2), u(2), ca, sa, qf(6)
+        real(dp) :: q(6), r(3, 3), c(2), u(2), ca, sa, qf(6), ds(3), yd(12), yp(12), &
+                    ydp(12), jac(3, 3), h
         type(platform_kin_t) :: k
-        integer :: nf
+        integer :: nf, nd, j, it
         nf = el%pl%nf
         y0 = 0.0_dp
         q = el%pl%q_ref
@@ -540,7 +552,33 @@ contains
         q(QPSI) = q(QPSI) + amplitude
         if (present(sway)) q(1:2) = q(1:2) + sway
         qf = q_rest
-        qf(1:nf) = q(el%pl%free(1:nf))
+        do j = 1, nf
+            qf(j) = q(el%pl%free(j))
+        end do
+        ! the stretches where the stretches' accelerations vanish (Newton, the Jacobian by
+        ! differences): the start lies on the slow motion, the cables carry what the body's
+        ! motion asks of them, and no stretching oscillation is excited beyond O(1/k^2)
+        nd = 6 - nf
+        y0 = 0.0_dp
+        y0(1:6) = qf
+        do it = 1, 8
+            call accelerations(el, y0, yd, stat)
+            if (stat%code /= 0) exit
+            h = 1.0e-3_dp*el%pl%lscale/max(1.0_dp, el%stiffness)
+            do j = 1, nd
+                yp = y0
+                yp(nf + j) = y0(nf + j) + h
+                call accelerations(el, yp, ydp, stat)
+                if (stat%code /= 0) exit
+                jac(1:nd, j) = (ydp(6 + nf + 1:12) - yd(6 + nf + 1:12))/h
+            end do
+            if (stat%code /= 0) exit
+            ds(1:nd) = -yd(6 + nf + 1:12)
+            call solve_lu(nd, jac(1:nd, 1:nd), ds(1:nd))
+            y0(nf + 1:6) = y0(nf + 1:6) + ds(1:nd)
+            if (all(abs(ds(1:nd)) <= 1.0e-15_dp*el%pl%lscale)) exit
+        end do
+        qf = y0(1:6)
         y0(1:6) = qf
         call pe_pose(el, y0, k, stat)
         if (stat%code /= 0) then
@@ -548,6 +586,35 @@ contains
             stat%msg = 'platform start: the cables cannot hold the body there; lower the '// &
                        'amplitude or the sway'
         end if
+    contains
+        !> x = a^-1 x (order m <= 3, LU with partial pivoting).
+        pure subroutine solve_lu(m, a, x)
+            integer, intent(in) :: m
+            real(dp), intent(in) :: a(m, m)
+            real(dp), intent(inout) :: x(m)
+            real(dp) :: lu(m, m), row(m), f
+            integer :: i, jj, p
+            lu = a
+            do jj = 1, m
+                p = jj - 1 + maxloc(abs(lu(jj:m, jj)), 1)
+                if (lu(p, jj) == 0.0_dp) then
+                    x = 0.0_dp
+                    return
+                end if
+                if (p /= jj) then
+                    row = lu(jj, :); lu(jj, :) = lu(p, :); lu(p, :) = row
+                    f = x(jj); x(jj) = x(p); x(p) = f
+                end if
+                do i = jj + 1, m
+                    f = lu(i, jj)/lu(jj, jj)
+                    lu(i, jj:m) = lu(i, jj:m) - f*lu(jj, jj:m)
+                    x(i) = x(i) - f*x(jj)
+                end do
+            end do
+            do i = m, 1, -1
+                x(i) = (x(i) - dot_product(lu(i, i + 1:m), x(i + 1:m)))/lu(i, i)
+            end do
+        end subroutine solve_lu
     end subroutine pe_start
 
     !> The small oscillations about the rest pose q_rest: K = d2V/dQ2 (taut cables), M the

@@ -425,24 +425,37 @@ contains
         end if
     end function sym3_eigenvalues
 
-    !> The level pose below the supports: psi = theta = phi = 0, the centroid of the body
-    !! points under that of the support points, and z where the cables reach on average.
-    !! ERR_DECK when a cable cannot reach its support with the body there.
+    !> The level pose below the supports: theta = phi = 0, the body turned by psi and moved
+    !! so that its points lie under the support points as nearly as a turn and a shift can
+    !! put them (least squares in the horizontal plane), and z where the cables reach on
+    !! average.  ERR_DECK when a cable cannot reach its support with the body there.
     subroutine level_pose(pl, q, stat)
         type(platform_t), intent(in) :: pl
         real(dp), intent(out) :: q(6)
         type(status_t), intent(out) :: stat
-        real(dp) :: h2, zsum
+        real(dp) :: h2, zsum, sbar(2), pbar(2), sxy, sdot, u(2), w(2), c, s, pr(2)
         integer :: i, n
         stat%code = 0
         n = pl%n
         q = 0.0_dp
-        q(1) = (sum(pl%support(1, 1:n)) - sum(pl%body(1, 1:n)))/n
-        q(2) = (sum(pl%support(2, 1:n)) - sum(pl%body(2, 1:n)))/n
+        sbar = [sum(pl%support(1, 1:n)), sum(pl%support(2, 1:n))]/n
+        pbar = [sum(pl%body(1, 1:n)), sum(pl%body(2, 1:n))]/n
+        sxy = 0.0_dp
+        sdot = 0.0_dp
+        do i = 1, n
+            u = pl%body(1:2, i) - pbar
+            w = pl%support(1:2, i) - sbar
+            sxy = sxy + u(1)*w(2) - u(2)*w(1)
+            sdot = sdot + u(1)*w(1) + u(2)*w(2)
+        end do
+        if (abs(sxy) > 1.0e-12_dp*abs(sdot)) q(QPSI) = atan2(sxy, sdot)
+        c = cos(q(QPSI))
+        s = sin(q(QPSI))
+        q(1:2) = sbar - [c*pbar(1) - s*pbar(2), s*pbar(1) + c*pbar(2)]
         zsum = 0.0_dp
         do i = 1, n
-            h2 = (q(1) + pl%body(1, i) - pl%support(1, i))**2 + &
-                 (q(2) + pl%body(2, i) - pl%support(2, i))**2
+            pr = [c*pl%body(1, i) - s*pl%body(2, i), s*pl%body(1, i) + c*pl%body(2, i)]
+            h2 = (q(1) + pr(1) - pl%support(1, i))**2 + (q(2) + pr(2) - pl%support(2, i))**2
             if (.not. (h2 < pl%length(i)**2)) then
                 call set_error(stat, ERR_DECK, 'platform lengths('//itoa(i)//') = '// &
                                sci(pl%length(i))//': shorter than the horizontal distance '// &
@@ -692,7 +705,7 @@ contains
         real(dp), intent(inout) :: q(6), t(6)
         logical, intent(out) :: converged
         integer, intent(out) :: nit
-        real(dp) :: r(3, 3), ad(3, 3), ainv(3, 3), g(3), d(3), lim
+        real(dp) :: r(3, 3), ad(3, 3), ainv(3, 3), g(3), d(3), lim, dzmax
         logical :: regular
         integer :: k, j
         converged = .false.
@@ -700,7 +713,7 @@ contains
         lim = 1.0e6_dp*max(1.0_dp, pl%lscale)
         do k = 1, NEWTON_MAX
             call rot_trig(t(1), t(2), t(3), t(4), t(5), t(6), r)
-            call master_rows(pl, q, r, [-t(1), t(2), 0.0_dp], lm, ad, g)
+            call master_rows(pl, q, r, [-t(1), t(2), 0.0_dp], lm, ad, g, dzmax)
             call small_inverse_fast(pl%nd, ad, ainv, regular)
             if (.not. regular) return
             d = matmul(ainv, g)
@@ -721,7 +734,8 @@ contains
                        abs(q(QPHI)) < lim)) return
             if (abs(d(1)) <= 1.0e-9_dp*pl%lscale .and. abs(d(2)) <= 1.0e-9_dp .and. &
                 abs(d(3)) <= 1.0e-9_dp) then
-                converged = .true.
+                ! the hanging branch only: every master's body point below its support
+                converged = dzmax < 0.0_dp
                 return
             end if
         end do
@@ -748,15 +762,18 @@ contains
         c = c*cd + s0*sd
     end subroutine turn
 
-    !> A_D (rows of the master cables) and the residuals g at pose q with rotation r.
-    pure subroutine master_rows(pl, q, r, a2, lm, ad, g)
+    !> A_D (rows of the master cables) and the residuals g at pose q with rotation r; dzmax
+    !! the highest of the masters' body points over its support.
+    pure subroutine master_rows(pl, q, r, a2, lm, ad, g, dzmax)
         type(platform_t), intent(in) :: pl
         real(dp), intent(in) :: q(6), r(3, 3), a2(3), lm(:)
         real(dp), intent(out) :: ad(3, 3), g(3)
+        real(dp), intent(out), optional :: dzmax
         real(dp) :: rho(3), d(3), p(3)
         integer :: j, i
         ad = 0.0_dp
         g = 0.0_dp
+        if (present(dzmax)) dzmax = -huge(1.0_dp)
         do j = 1, pl%nd
             i = pl%master(j)
             p = pl%body(:, i)
@@ -764,6 +781,7 @@ contains
             d = q(1:3) + rho - pl%support(:, i)
             call constraint_row(pl, rho, d, r(:, 1), a2, ad(j, :), g(j))
             g(j) = g(j) - 0.5_dp*lm(j)**2
+            if (present(dzmax)) dzmax = max(dzmax, d(3))
         end do
     end subroutine master_rows
 
@@ -939,7 +957,7 @@ contains
             den = norm2(ad(1, :))*norm2(ad(2, :))*norm2(ad(3, :))
         end if
         k%quality = 0.0_dp
-        if (.not. k%singular) k%quality = 1.0_dp/(abs(det_of_inverse(nd, k%adinv))*den)
+        if (.not. k%singular) k%quality = abs(det_of_inverse(nd, k%adinv))/den
         if (k%singular) then
             call set_error(stat, ERR_MODEL, 'platform: the chart is singular here: a cable '// &
                            'horizontal or the attachments collinear as the cables see them')

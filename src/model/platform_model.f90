@@ -411,6 +411,12 @@ contains
                 exit
             end if
             gnorm = norm2(g(1:nf)*sc(1:nf))
+            ! the gradient at roundoff: done (also where K is nearly singular, at the
+            ! tipping height, and its steps would only follow the roundoff)
+            if (gnorm <= 1.0e-14_dp*pl%mass*pl%gravity*pl%lscale) then
+                done = .true.
+                exit
+            end if
             a = 1.0_dp
             do half = 1, 30
                 call potential_gradient(pl, qf(1:nf) + a*dq(1:nf), gn(1:nf), v, st)
