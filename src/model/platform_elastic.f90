@@ -34,7 +34,7 @@ module platform_elastic
     use lapack_wrap, only: la_small_chol, la_small_chol_solve, la_syev
     use platform_geometry, only: platform_t, platform_kin_t, platform_prepare, solve_pose, &
                                  platform_kinematics, rotation, PLATFORM_NMAX, QPSI, &
-                                 set_reference
+                                 set_reference, pose_guess_t, guess_pose, keep_guess
     use platform_model, only: kane_terms, platform_motion_t, platform_evaluate, rest_pose
     implicit none
     private
@@ -50,6 +50,7 @@ module platform_elastic
         real(dp) :: damping = 0.0_dp            !! zeta of every cable
         real(dp) :: l0(PLATFORM_NMAX) = -1.0_dp !! natural lengths; <= 0: pl%length
         integer :: mode(PLATFORM_NMAX) = CABLE_AUTO
+        type(pose_guess_t), private :: guess    !! the last pose (Newton's first guess)
     contains
         procedure :: rhs => pe_rhs
     end type platform_elastic_t
@@ -120,20 +121,28 @@ contains
         g = min(kc*e, kc*e + cc*ld)
     end function switch_of
 
-    !> The pose and kinematics of state y (Q, Q').
-    pure subroutine pe_pose(el, y, k, stat)
+    !> The pose and kinematics of state y (Q, Q'): q_D solved from the reference pose, or
+    !! from the first-order guess of a nearby solved pose (g, updated).
+    pure subroutine pe_pose(el, y, k, stat, g)
         type(platform_elastic_t), intent(in) :: el
         real(dp), intent(in) :: y(:)
         type(platform_kin_t), intent(out) :: k
         type(status_t), intent(out) :: stat
+        type(pose_guess_t), intent(inout), optional :: g
         real(dp) :: q(6), lm(3), tr(6), l0
         integer :: nf, nd, j, i
+        logical :: guessed
         nf = el%pl%nf
         nd = el%pl%nd
-        q = el%pl%q_ref
-        do j = 1, nf
-            q(el%pl%free(j)) = y(j)
-        end do
+        guessed = .false.
+        if (present(g)) then
+            call guess_pose(el%pl, g, y(1:6), q, guessed)
+        else
+            q = el%pl%q_ref
+            do j = 1, nf
+                q(el%pl%free(j)) = y(j)
+            end do
+        end if
         lm = 0.0_dp
         do j = 1, nd
             i = el%pl%master(j)
@@ -141,9 +150,10 @@ contains
             if (el%l0(i) > 0.0_dp) l0 = el%l0(i)
             lm(j) = l0 + y(nf + j)
         end do
-        call solve_pose(el%pl, q, lm, stat, from_ref=.true., tr=tr)
+        call solve_pose(el%pl, q, lm, stat, from_ref=.not. guessed, tr=tr)
         if (stat%code /= 0) return
         call platform_kinematics(el%pl, q, y(7:6 + nf), lm, k, stat, sd=y(7 + nf:12), tr=tr)
+        if (present(g) .and. stat%code == 0) call keep_guess(g, k, y(1:6))
     end subroutine pe_pose
 
     !> Every cable's length, stretch, length rate and tension in the cables' modes (modes:
@@ -183,16 +193,17 @@ contains
         real(dp), intent(out) :: ydot(:)
         type(status_t), intent(out) :: stat
         if (.false.) ydot(1) = t
-        call accelerations(sys, y, ydot, stat)
+        call accelerations(sys, y, ydot, stat, g=sys%guess)
     end subroutine pe_rhs
 
-    !> y' of state y in the cables' modes.
-    pure subroutine accelerations(el, y, ydot, stat, modes)
+    !> y' of state y in the cables' modes (g: the guess of the pose, updated).
+    pure subroutine accelerations(el, y, ydot, stat, modes, g)
         type(platform_elastic_t), intent(in) :: el
         real(dp), intent(in) :: y(:)
         real(dp), intent(out) :: ydot(:)
         type(status_t), intent(out) :: stat
         integer, intent(in), optional :: modes(:)
+        type(pose_guess_t), intent(inout), optional :: g
         type(platform_kin_t) :: k
         real(dp) :: mm(6, 6), f(6), u(3)
         real(dp), dimension(PLATFORM_NMAX) :: l, e, ld, tn
@@ -200,7 +211,7 @@ contains
         nf = el%pl%nf
         n = el%pl%n
         ydot = 0.0_dp
-        call pe_pose(el, y, k, stat)
+        call pe_pose(el, y, k, stat, g)
         if (stat%code /= 0) return
         call kane_terms(el%pl, k, mm, f)
         call cable_state(el, y, k, l(1:n), e(1:n), ld(1:n), tn(1:n), modes)

@@ -91,7 +91,6 @@ module platform_geometry
         real(dp) :: rhoc(3)                     !! R c (mass centre from the origin)
         real(dp) :: vr(3), omega(3)             !! origin's velocity, angular velocity
         real(dp) :: adinv(3, 3)                 !! A_D^-1 (nd x nd, zeros beyond)
-        real(dp) :: quality                     !! regularity of A_D (chart_quality)
         logical :: singular                     !! A_D singular (the rest is not set)
         integer :: ns                           !! generalized speeds
         real(dp) :: gam(3, 6)                   !! q_D' = Gamma Qdot
@@ -752,7 +751,8 @@ contains
             sd = d*(1.0_dp - d2/6.0_dp*(1.0_dp - d2/20.0_dp*(1.0_dp - d2/42.0_dp* &
                                                              (1.0_dp - d2/72.0_dp))))
             cd = 1.0_dp - d2/2.0_dp*(1.0_dp - d2/12.0_dp*(1.0_dp - d2/30.0_dp* &
-                                                          (1.0_dp - d2/56.0_dp*(1.0_dp - d2/90.0_dp))))
+                                                          (1.0_dp - d2/56.0_dp* &
+                                                           (1.0_dp - d2/90.0_dp))))
         else
             sd = sin(d)
             cd = cos(d)
@@ -915,7 +915,7 @@ contains
         real(dp), intent(in), optional :: sd(:) !! (nd) the master cables' length rates
         real(dp), intent(in), optional :: tr(6) !! sin, cos of psi, theta, phi
         real(dp) :: t(6), ad(3, 3), af(3, 4), m(3), b(3), cd(3), ae(3), w(3), p(3), &
-                    qcol(6), den
+                    qcol(6)
         integer :: i, j, c, nd, nf
         stat%code = 0
         nd = pl%nd
@@ -951,13 +951,6 @@ contains
         end do
         call small_inverse_fast(nd, ad, k%adinv, regular=k%singular)
         k%singular = .not. k%singular
-        if (nd == 2) then
-            den = norm2(ad(1, 1:2))*norm2(ad(2, 1:2))
-        else
-            den = norm2(ad(1, :))*norm2(ad(2, :))*norm2(ad(3, :))
-        end if
-        k%quality = 0.0_dp
-        if (.not. k%singular) k%quality = abs(det_of_inverse(nd, k%adinv))/den
         if (k%singular) then
             call set_error(stat, ERR_MODEL, 'platform: the chart is singular here: a cable '// &
                            'horizontal or the attachments collinear as the cables see them')
@@ -1037,16 +1030,5 @@ contains
             end select
         end do
     end subroutine platform_kinematics
-
-    !> det(a) from a's inverse: 1/det(a^-1) (order nd = 2 or 3).
-    pure real(dp) function det_of_inverse(nd, ainv) result(d)
-        integer, intent(in) :: nd
-        real(dp), intent(in) :: ainv(3, 3)
-        if (nd == 2) then
-            d = 1.0_dp/(ainv(1, 1)*ainv(2, 2) - ainv(1, 2)*ainv(2, 1))
-        else
-            d = 1.0_dp/det3(ainv)
-        end if
-    end function det_of_inverse
 
 end module platform_geometry

@@ -30,7 +30,8 @@ module platform_model
     use lapack_wrap, only: la_small_chol, la_small_chol_solve, la_syev
     use platform_geometry, only: platform_t, platform_kin_t, platform_prepare, solve_pose, &
                                  platform_kinematics, rotation, QZ, QTHETA, QPHI, QPSI, &
-                                 set_reference, pose_guess_t, guess_pose, keep_guess
+                                 set_reference, pose_guess_t, guess_pose, keep_guess, &
+                                 chart_quality
     implicit none
     private
 
@@ -296,7 +297,7 @@ contains
         do i = 1, pl%n
             mo%residual = max(mo%residual, abs(norm2(k%d(:, i)) - pl%length(i)))
         end do
-        mo%quality = k%quality
+        mo%quality = chart_quality(pl, k%q)
     end subroutine platform_evaluate
 
     !> Kinetic + potential energy of state y (m g z_c, 0 at z_c = 0).
