@@ -326,6 +326,19 @@ contains
             call solve_pose(pl, q, lm, st, from_ref=.true.)
             call t%check('platform: the pose of a 150 degree turn is solved', st%code == 0 &
                          .and. maxval(abs(master_residual(pl, q, lm))) < 1.0e-14_dp)
+            ! the homotopy: Newton allowed one iteration, from the reference pose, fails;
+            ! the homotopy then reaches the same pose
+            block
+                real(dp) :: qh(6)
+                integer :: its
+                qh = pl%q_ref
+                qh(QPSI) = 150.0_dp*deg
+                call solve_pose(pl, qh, lm, st, from_ref=.true., newton_limit=1, &
+                                iterations=its)
+                call t%check('platform: the homotopy finds the pose Newton finds', &
+                             st%code == 0 .and. its > 100 .and. &
+                             maxval(abs(qh - q)) < 1.0e-13_dp)
+            end block
             ! from a guess above the supports Newton fails over to the reference pose
             q(3) = 5.0_dp
             q(5:6) = [1.2_dp, -1.3_dp]

@@ -606,7 +606,7 @@ contains
     !! solution is found.  tr returns the sines and cosines of the pose's angles (for
     !! platform_kinematics): Newton updates them by the addition formulas, so that an
     !! evaluation calls sin and cos for psi alone.
-    pure subroutine solve_pose(pl, q, lm, stat, from_ref, iterations, tr)
+    pure subroutine solve_pose(pl, q, lm, stat, from_ref, iterations, tr, newton_limit)
         type(platform_t), intent(in) :: pl
         real(dp), intent(inout) :: q(6)         !! in: q(free) and a guess of q(dep); out: pose
         real(dp), intent(in) :: lm(:)           !! (nd) the master cables' lengths
@@ -614,10 +614,14 @@ contains
         logical, intent(in), optional :: from_ref   !! start from the reference pose
         integer, intent(out), optional :: iterations    !! Newton iterations taken
         real(dp), intent(out), optional :: tr(6)    !! sin, cos of psi, theta, phi at q
+        integer, intent(in), optional :: newton_limit   !! Newton's most iterations before
+                                                        !! the homotopy (default 16; tests)
         real(dp) :: q0(6), g0(3), t(6), k1(3), k2(3), k3(3), k4(3), h
-        integer :: it, i, j
+        integer :: it, i, j, lim
         logical :: conv, ref
         stat%code = 0
+        lim = NEWTON_MAX
+        if (present(newton_limit)) lim = max(1, min(NEWTON_MAX, newton_limit))
         ref = .false.
         if (present(from_ref)) ref = from_ref
         t(1) = sin(q(QPSI))
@@ -626,7 +630,7 @@ contains
         if (.not. ref) then
             ! from the guess given in q(dep)
             t(3:6) = [sin(q(QTHETA)), cos(q(QTHETA)), sin(q(QPHI)), cos(q(QPHI))]
-            call newton(pl, lm, q, t, conv, it)
+            call newton(pl, lm, q, t, conv, it, lim)
             if (present(iterations)) iterations = it
             if (present(tr)) tr = t
             if (conv) return
@@ -647,7 +651,7 @@ contains
         end if
         call reach_height(pl, q, lm, t)
         q0 = q
-        call newton(pl, lm, q, t, conv, it)
+        call newton(pl, lm, q, t, conv, it, lim)
         if (present(iterations)) iterations = iterations + it
         if (present(tr)) tr = t
         if (conv) return
@@ -665,7 +669,7 @@ contains
             if (.not. all(abs(q) < huge(1.0_dp))) exit
         end do
         t = [sin(q(4)), cos(q(4)), sin(q(5)), cos(q(5)), sin(q(6)), cos(q(6))]
-        call newton(pl, lm, q, t, conv, it)
+        call newton(pl, lm, q, t, conv, it, NEWTON_MAX)
         if (present(iterations)) iterations = iterations + it + 4*HOMOTOPY_STEPS
         if (present(tr)) tr = t
         if (.not. conv) call set_error(stat, ERR_MODEL, 'platform: no pose of the body '// &
@@ -698,19 +702,20 @@ contains
     !> Newton's method on the master cables' constraints for q(dep), t the sines and
     !! cosines of q's angles (updated with them).  Converged when a correction is below
     !! 1e-9 (of the length scale for z): the error left is then of the order of its square.
-    pure subroutine newton(pl, lm, q, t, converged, nit)
+    pure subroutine newton(pl, lm, q, t, converged, nit, maxit)
         type(platform_t), intent(in) :: pl
         real(dp), intent(in) :: lm(:)
         real(dp), intent(inout) :: q(6), t(6)
         logical, intent(out) :: converged
         integer, intent(out) :: nit
+        integer, intent(in) :: maxit            !! most iterations
         real(dp) :: r(3, 3), ad(3, 3), ainv(3, 3), g(3), d(3), lim, dzmax
         logical :: regular
         integer :: k, j
         converged = .false.
         nit = 0
         lim = 1.0e6_dp*max(1.0_dp, pl%lscale)
-        do k = 1, NEWTON_MAX
+        do k = 1, maxit
             call rot_trig(t(1), t(2), t(3), t(4), t(5), t(6), r)
             call master_rows(pl, q, r, [-t(1), t(2), 0.0_dp], lm, ad, g, dzmax)
             call small_inverse_fast(pl%nd, ad, ainv, regular)
@@ -733,8 +738,13 @@ contains
                        abs(q(QPHI)) < lim)) return
             if (abs(d(1)) <= 1.0e-9_dp*pl%lscale .and. abs(d(2)) <= 1.0e-9_dp .and. &
                 abs(d(3)) <= 1.0e-9_dp) then
-                ! the hanging branch only: every master's body point below its support
+                ! the hanging branch only: every master's body point below its support, the
+                ! dependent tilts within the chart (|theta|, |phi| < 90 degrees)
                 converged = dzmax < 0.0_dp
+                do j = 1, pl%nd
+                    if (pl%dep(j) /= QZ) converged = converged .and. &
+                                                     abs(q(pl%dep(j))) < 0.5_dp*pi
+                end do
                 return
             end if
         end do

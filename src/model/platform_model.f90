@@ -45,6 +45,7 @@ module platform_model
         type(pose_guess_t), private :: guess     !! the last pose (Newton's first guess)
         real(dp), private :: last_y(8) = 0.0_dp
         real(dp), private :: last_t(3) = 0.0_dp
+        real(dp), private :: last_q(6) = 0.0_dp
     contains
         procedure :: rhs => platform_rhs
         procedure :: last_tensions
@@ -173,6 +174,7 @@ contains
         ydot(nf + 1:2*nf) = f(1:nf)
         if (sys%keep_tensions) then
             sys%last_y(1:2*nf) = y(1:2*nf)
+            sys%last_q = k%q
             sys%last_t(1:sys%pl%nd) = tensions_of(sys%pl, k, f(1:nf))
             sys%have_last = .true.
         end if
@@ -221,15 +223,18 @@ contains
         f(1) = (y1 - l21*f(2) - l31*f(3))/l11
     end subroutine spd_solve
 
-    !> The state of the last right-hand side and the cable tensions there (keep_tensions).
-    subroutine last_tensions(sys, y, tension, found)
+    !> The state of the last right-hand side, the cable tensions and the pose there
+    !! (keep_tensions); found = .false. when none was kept.
+    subroutine last_tensions(sys, y, tension, found, q)
         class(platform_sys_t), intent(in) :: sys
         real(dp), intent(out) :: y(:)
         real(dp), intent(out) :: tension(:)
         logical, intent(out) :: found
+        real(dp), intent(out), optional :: q(6)
         found = sys%have_last
         y = sys%last_y(1:size(y))
         tension = sys%last_t(1:size(tension))
+        if (present(q)) q = sys%last_q
     end subroutine last_tensions
 
     !> The tensions of the master cables (all of them, n <= 3) from the accelerations udot.

@@ -6,7 +6,7 @@
 !!
 !! Inextensible.  After every step the cable tensions (those of the step's last right-hand
 !! side when it was evaluated at the step's end to 1e-6, else from the state there) must be
-!! > 0 and the chart regular; when not, the time where it first fails is located in the
+!! > 0 and the chart regular (quality >= RUN_MIN_QUALITY); when not, the time where it first fails is located in the
 !! step by bisection on the dense output, and the run stops with ERR_MODEL: a slack cable
 !! is the end of the inextensible model's validity.
 !!
@@ -24,7 +24,7 @@ module platform_run
     use ode_system, only: integrator_t, integrator_stats_t, too_much_accuracy
     use integrators, only: new_integrator, SOLVER_LSODA, SOLVER_RADAU
     use run_loop, only: stepped_model_t
-    use platform_geometry, only: platform_t, PLATFORM_NMAX
+    use platform_geometry, only: platform_t, PLATFORM_NMAX, chart_quality
     use platform_model, only: platform_sys_t, platform_motion_t, platform_evaluate
     use platform_elastic, only: platform_elastic_t, pe_switch, PE_NSTATE, CABLE_TAUT, &
                                 CABLE_SLACK
@@ -178,17 +178,18 @@ contains
     subroutine check_inextensible(m, stat)
         type(platform_run_t), intent(inout) :: m
         type(status_t), intent(out) :: stat
-        real(dp) :: ylast(8), tn(3), a, b, c, y(8)
+        real(dp) :: ylast(8), tn(3), a, b, c, y(8), qlast(6)
         logical :: found, ok
         integer :: it, nst
         type(status_t) :: s2
         nst = size(m%ystep)
         stat%code = 0
-        call m%sys%last_tensions(ylast(1:nst), tn(1:m%sys%pl%nd), found)
+        call m%sys%last_tensions(ylast(1:nst), tn(1:m%sys%pl%nd), found, qlast)
         if (found) found = maxval(abs(ylast(1:nst) - m%ystep)) <= &
                            1.0e-6_dp*(1.0_dp + maxval(abs(m%ystep)))
         if (found) then
-            ok = minval(tn(1:m%sys%pl%nd)) > 0.0_dp
+            ok = minval(tn(1:m%sys%pl%nd)) > 0.0_dp .and. &
+                 chart_quality(m%sys%pl, qlast) >= RUN_MIN_QUALITY
             if (ok) return
         end if
         call valid_at(m%ystep, ok, stat)
