@@ -115,8 +115,8 @@ contains
                     'means', run_stats_tests), &
             suite_t('tensor', 'the inertia tensor from several hangs: exact fit, projection, '// &
                     'u, plan, refusals', run_tensor_tests), &
-            suite_t('platform', 'n cables: kinematics, the paper''s model, torsion, '// &
-                    'frequencies, limits, test mass', run_platform_tests), &
+            suite_t('platform', 'a body on n cables: the paper''s model, torsion, modes, '// &
+                    'limits, test mass', run_platform_tests), &
             suite_t('graph', 'the module graph (layers, analyses apart, at most 8 floors); '// &
                     'the status table', run_graph_tests), &
             suite_t('runner', 'this runner: --list, --help, a filter that selects '// &

@@ -15,7 +15,15 @@
 !! damping torque about the vertical (platform_t c_v, c_q).  The state of the ODE is
 !! y = (q_F, q_F') (platform_nstate: 6 for n = 3, 8 for n = 2); q_D is solved from the
 !! constraints at every evaluation (solve_pose), so the constraints hold to roundoff and
-!! no drift needs correcting.
+!! no drift needs correcting.  The right-hand side starts Newton from the pose of its last
+!! evaluation moved to first order (pose_guess_t): two iterations where the reference pose
+!! would take three or four.  The Jacobian is the integrators' differences.
+!!
+!! The API: check_platform (the inputs, the chart, the rest pose, its stability, one line
+!! when refused), rest_pose, platform_start (turned by an amplitude about the vertical,
+!! moved, swung), platform_sys_t (the ODE system), platform_evaluate (pose, rates,
+!! accelerations, tensions, energy, residual, the chart's quality), platform_energy,
+!! linearise (K, M, omega^2, the mode shapes), tipping_depth.
 !!
 !! The tensions are the constraints' multipliers: with w the force and the moment about the
 !! body's origin that the cables must supply (Newton-Euler: m (a_c + g n3), and
