@@ -191,7 +191,7 @@ check:
 
 bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench_elastic \
        $(BIN)/bench_radau $(BIN)/bench_speed $(BIN)/bench_identify $(BIN)/bifilar \
-       $(BIN)/bench_sweep $(BIN)/bench_global_error
+       $(BIN)/bench_sweep $(BIN)/bench_global_error $(BIN)/bench_platform
 	mkdir -p output build/bench
 	$(BIN)/bench_integrator output/bench_integrator.dat
 	$(BIN)/bench_radau output/bench_radau.dat

@@ -34,6 +34,7 @@ module suites
     use test_measure, only: run_measure_tests
     use test_sensitivities, only: run_sensitivities_tests
     use test_tensor, only: run_tensor_tests
+    use test_platform, only: run_platform_tests
     implicit none
     private
 
@@ -117,6 +118,8 @@ contains
                     'chi-square, roundoff', run_estimator_tests), &
             suite_t('tensor', 'the inertia tensor from several hangs: exact fit, projection, '// &
                     'u, plan, refusals', run_tensor_tests), &
+            suite_t('platform', 'a body on n cables: the paper''s model, torsion, modes, '// &
+                    'limits, test mass', run_platform_tests), &
             suite_t('graph', 'the module graph (layers, analyses apart, at most 8 floors); '// &
                     'the status table', run_graph_tests), &
             suite_t('runner', 'this runner: --list, --help, a filter that selects '// &

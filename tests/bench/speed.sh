@@ -2,8 +2,10 @@
 # Speed figures of make bench: instructions (valgrind --tool=callgrind, exact and repeatable)
 # and CPU time of one right-hand side, one Floquet analysis, one chart point, the start of
 # the process, the whole cylinder_l180 deck, the 60 x 6 rig design (input/box_design.nml,
-# one thread) and identify's units.  Usage: tests/bench/speed.sh BINDIR OUTFILE
-# (BINDIR holds bifilar, bench_speed, bench_identify).  One unit's instructions are the
+# one thread), identify's units and the multifilar platform's (a right-hand side, an
+# LSODA step beside the paper model's, a Radau step of elastic cables).  Usage:
+# tests/bench/speed.sh BINDIR OUTFILE (BINDIR holds bifilar, bench_speed, bench_identify,
+# bench_platform).  One unit's instructions are the
 # difference of a run with N units and one with 0, over N; its CPU time is from a run with
 # more units.
 set -euo pipefail
@@ -74,6 +76,17 @@ $(cpu_unit "$bin/bench_identify" record 3)"
 $(cpu_unit "$bin/bench_identify" record_differences 3)"
     echo "identify_mc_2000 $(( $(OMP_NUM_THREADS=1 per_unit 200 "$bin/bench_identify" mc) * 2000 )) \
 $(OMP_NUM_THREADS=1 cpu_unit "$bin/bench_identify" mc 2000 | awk '{printf "%.5e", $1 * 2000}')"
+    # the multifilar platform (bench_platform): a right-hand side of the trifilar, an LSODA
+    # step of it at 45 degrees beside one of the paper's model on cylinder_l180 (rtol 1e-10
+    # both), a Radau step of the quadrifilar with elastic cables (k = 1e6)
+    echo "platform_rhs $(per_unit 2000 "$bin/bench_platform" rhs) \
+$(cpu_unit "$bin/bench_platform" rhs 200000)"
+    echo "bifilar_step $(per_unit 500 "$bin/bench_platform" bifilar_step) \
+$(cpu_unit "$bin/bench_platform" bifilar_step 20000)"
+    echo "platform_step $(per_unit 500 "$bin/bench_platform" step) \
+$(cpu_unit "$bin/bench_platform" step 20000)"
+    echo "platform_elastic_step $(per_unit 200 "$bin/bench_platform" elastic_step) \
+$(cpu_unit "$bin/bench_platform" elastic_step 2000)"
 } > "$out.tmp"
 mv "$out.tmp" "$out"
 awk 'NR == 1 {next} {printf "%-28s %14.0f instructions %12.3e s cpu\n", $1, $2, $3}' "$out"
