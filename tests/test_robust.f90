@@ -532,7 +532,7 @@ contains
         ex = run(exe//' '//d//'/chart.nml --out '//o, d)
         call t%check('progress: stderr a file: exit 0, nothing on stderr', all([ex == 0, &
                      count_lines(d//'/stderr') == 0]))
-        call execute_command_line('command -v script > /dev/null', exitstat=ex)
+        call execute_command_line('command -v script > /dev/null || exit 1', exitstat=ex)
         if (ex /= 0) then
             write (*, '(a)') '   progress on a terminal: skipped (script(1) not installed)'
             return
