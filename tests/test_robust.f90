@@ -153,6 +153,13 @@ contains
         ex = run(exe//' '//d//'/robust_out_empty_test.nml --out '//d//'/a_file', d)
         call t%check('--out: a file in the way is exit 5 with one stderr line', all([ex == 5, &
                      count_lines(d//'/stderr') == 1, file_has(d//'/stderr', 'output folder')]))
+        call t%check('--out: the line names the deck and why (a regular file, not a folder)', &
+                     all([file_has(d//'/stderr', 'robust_out_empty_test.nml: --out'), &
+                     file_has(d//'/stderr', 'a_file is a regular file, not a folder')]))
+        ex = run(exe//' '//d//'/robust_out_empty_test.nml --out '//d//'/a_file/sub', d)
+        call t%check('--out: a file on the way to the folder is named', all([ex == 5, &
+                     count_lines(d//'/stderr') == 1, &
+                     file_has(d//'/stderr', 'a_file is a regular file, not a folder')]))
     end subroutine test_out
 
     ! ---------------------------------------------------------------------------------------
