@@ -7,7 +7,7 @@
 !! sweep belongs to two analyses.  The status table holds every code once, each with an
 !! exit status the program can give.
 module test_graph
-    use testing, only: tester_t, write_text, file_has, run, fresh_dir, first_line
+    use testing, only: tester_t, write_text, file_has, run, fresh_dir, first_line, shell_count
     use status, only: STATUS_TABLE, exit_status_of, status_meaning, STATUS_OK, ERR_DECK, &
         ERR_NUMERIC, ERR_MODEL, ERR_IO, LSODA_ERR_MAX_STEPS, RADAU_ERR_SINGULAR, GEN_ERR_CHART
     use text, only: next_word
@@ -39,6 +39,8 @@ contains
             call test_shared_base(t)
         if (t%want('graph: the registry holds every word of &scene analyses once, no file '// &
                    'or sweep in two analyses')) call test_registry(t)
+        if (t%want('graph: module state only where src/README.md says, one idiom for an '// &
+                   'unused argument')) call test_state_and_idiom(t)
         if (t%want('graph: the status table, one row per code')) call test_status(t)
         if (t%want('graph: no source, test or manual page speaks of issues or commits')) &
             call test_no_history(t)
@@ -230,6 +232,32 @@ contains
                      ')', twice == '')
         call t%check('registry: an analysis that runs first has a sweep', first_ok)
     end subroutine test_registry
+
+    !> `save` (module state, a saved local) only in the three places src/README.md names;
+    !! no unused argument silenced otherwise than by `call unused(x)` (no `if (.false.)`, no
+    !! `associate (unused => x)`) in src/ or tests/.
+    subroutine test_state_and_idiom(t)
+        type(tester_t), intent(inout) :: t
+        character(len=:), allocatable :: d
+        integer :: ex, n
+        d = 'build/test_graph/state'
+        call fresh_dir(d)
+        ! code lines (not comments) with the word save, outside the three places
+        ex = run('grep -rnIiE "^[^!]*\bsave\b" src --include=*.f90 | grep -v '// &
+                 '-e "^src/core/signals.f90:" -e "^src/parallel/sweep_engine.f90:" '// &
+                 '-e "^src/parallel/parallel_mpi.f90:"', d)
+        call t%check('state: save only in signals, sweep_engine, parallel_mpi (first other: '// &
+                     first_line(d//'/stdout')//')', ex == 1)
+        n = shell_count('grep -lIiE "^[^!]*\bsave\b" src/core/signals.f90 '// &
+                        'src/parallel/sweep_engine.f90 src/parallel/parallel_mpi.f90 | wc -l', d)
+        call t%check('state: the three places keep their state with save (the check sees it)', &
+                     n == 3)
+        ex = run('grep -rnIiE "^[^!]*(if *\(\.false\.\)|associate *\(unused)" src tests '// &
+                 '--include=*.f90', d)
+        call t%check('idiom: call unused(x) is the one idiom for an unused argument (first '// &
+                     'other: '// &
+                     first_line(d//'/stdout')//')', ex == 1)
+    end subroutine test_state_and_idiom
 
     subroutine test_status(t)
         type(tester_t), intent(inout) :: t

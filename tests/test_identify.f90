@@ -29,6 +29,7 @@ module test_identify
     use test_period, only: test_rig
     use output_io, only: read_kv
     use text, only: itoa
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -201,9 +202,9 @@ contains
         real(dp), intent(in) :: p(:)
         real(dp), intent(out) :: r(:)
         type(status_t), intent(out) :: stat
+        call unused(prob)
         stat%code = 0
         r = [10.0_dp*(p(2) - p(1)**2), 1.0_dp - p(1)]
-        if (.false.) stat%code = merge(1, 0, same_type_as(prob, prob))
     end subroutine rosenbrock_residual
 
     ! ------------------------------------------------------------------------------------

@@ -50,6 +50,7 @@ module lsoda
     use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, sens_init_args, &
         METHOD_ADAMS, METHOD_BDF
     use lapack_wrap, only: la_lu_factor, la_lu_solve, la_small_lu_solve, la_small_inverse
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -541,8 +542,8 @@ contains
     pure function lsoda_name(s) result(nm)
         class(lsoda_t), intent(in) :: s
         character(len=:), allocatable :: nm
+        call unused(s)
         nm = 'lsoda'
-        if (.false.) nm = merge('lsoda', 'lsoda', s%ready)   ! keep s referenced
     end function lsoda_name
 
     !> Set (tcrit present) or remove (absent) the hard stop time.

@@ -65,6 +65,7 @@ module radau
     use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, sens_init_args, &
         METHOD_RADAU
     use lapack_wrap, only: la_lu_factor, la_lu_solve, la_zlu_factor, la_zlu_solve
+    use unused_arg, only: unused
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -598,8 +599,8 @@ contains
     pure function radau_name(s) result(nm)
         class(radau_t), intent(in) :: s
         character(len=:), allocatable :: nm
+        call unused(s)
         nm = 'radau'
-        if (.false.) nm = merge('radau', 'radau', s%ready)   ! keep s referenced
     end function radau_name
 
     !> Set (tcrit present) or remove (absent) the hard stop time; it must not lie behind the

@@ -68,6 +68,7 @@ module period_inversion
     use inputs, only: input_t, set_input, no_effect_on_torsion
     use sweep_engine, only: sweep_options_t, sweep_report_t
     use monte_carlo, only: mc_task_t, monte_carlo_run
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -232,8 +233,12 @@ contains
         real(dp), intent(in) :: t
         real(dp), intent(in) :: y(:)
         type(status_t), intent(out) :: stat
+        call unused(sink)
+        call unused(m)
+        call unused(k)
+        call unused(t)
+        call unused(y)
         stat%code = 0
-        if (.false.) sink%done = same_type_as(m, m) .and. k + t + y(1) > 0.0_dp
     end subroutine period_take
 
     !> After a step [t0, t1]: note theta4 below 0; after that, a theta4' going from + to -
