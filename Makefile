@@ -249,6 +249,10 @@ report: $(BIN)/bifilar
 	$(BIN)/bifilar $(patsubst %,input/%.nml,cylinder_l180 cylinder_l195 triangle_plate cylinder_torsion)
 	$(BIN)/bifilar --report output
 
+.PHONY: certificate-check
+certificate-check:
+	tests/tools/certificate_check.sh
+
 .PHONY: plots
 plots:
 	@set -e; for s in plots/*.gp; do gnuplot -c $$s || exit 1; done
@@ -264,4 +268,4 @@ deps:
 
 clean:
 	rm -rf build build-check build-mpi build-check-mpi bin output/*.dat output/*.summary \
-	  output/*.md output/*.design output/*.identify output/*.tmp.* output/*.partial plots/*.png
+	  output/*.md output/*.design output/*.identify output/*.certificate.html output/*.calibration output/*.tmp.* output/*.partial plots/*.png

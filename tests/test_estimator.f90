@@ -14,6 +14,7 @@ module test_estimator
         gauss_newton_gain, lsq_covariance, DAMP_HALVING, STEP_LARGEST, &
         LOSS_HUBER, CONV_FLOOR, FAIL_EVALUATION
     use unused_arg, only: unused
+    use text, only: itoa
     implicit none
     private
 
@@ -88,6 +89,8 @@ contains
             call test_rank(t)
         if (t%want('estimator: Huber''s loss on a line with outliers')) call test_huber(t)
         if (t%want('estimator: chi-square against a known noise level')) call test_chi2(t)
+        if (t%want('estimator: the fit checks itself against its stated u')) &
+            call test_self_check(t)
         if (t%want('estimator: convergence at roundoff ends in success')) call test_roundoff(t)
         if (t%want('estimator: the domain and failed evaluations')) call test_domain(t)
     end subroutine run_estimator_tests
@@ -347,6 +350,93 @@ contains
         call t%check_close('chi2: sqrt(C_jj) covers 68 %', cover/(3*nok), 0.6827_dp, &
                            atol=3.0_dp*sqrt(0.6827_dp*0.3173_dp/(3*nok)))
     end subroutine test_chi2
+
+    ! ------------------------------------------------------------------------------------
+    !> The self-check.  200 decays with noise of the stated sigma: about 5 % are marked
+    !! inconsistent (binomial bounds), and those that are not keep cov.  200 decays whose
+    !! noise is 3 times the stated sigma: nearly all are marked, sqrt(cov) covers far below
+    !! 68 % and sqrt(cov_fit) (cov times the Birge ratio squared) covers 68 %.  One residual
+    !! of 20 sigma: marked, worst names it.  u not stated: cov_fit is cov_scaled.
+    subroutine test_self_check(t)
+        type(tester_t), intent(inout) :: t
+        integer, parameter :: NS = 200
+        type(decay_t) :: dc
+        type(lsq_options_t) :: opts
+        type(lsq_result_t) :: res
+        type(status_t) :: st
+        type(rng_t) :: g
+        real(dp), parameter :: TRUTH(3) = [2.0_dp, 0.7_dp, 0.3_dp]
+        real(dp) :: cover_cov, cover_fit, noise
+        integer :: i, k, ns_ok, marked, marked3, kept_cov
+        allocate (dc%t(40), dc%y(40))
+        dc%sigma = 0.05_dp
+        do i = 1, 40
+            dc%t(i) = 0.1_dp*i
+        end do
+        opts%covariance = .true.
+        marked = 0
+        marked3 = 0
+        kept_cov = 0
+        ns_ok = 0
+        cover_cov = 0.0_dp
+        cover_fit = 0.0_dp
+        do k = 1, 2*NS
+            noise = merge(1.0_dp, 3.0_dp, k <= NS)*dc%sigma
+            g = rng_stream(77, k)
+            do i = 1, 40
+                dc%y(i) = TRUTH(1)*exp(-TRUTH(2)*dc%t(i)) + TRUTH(3) + noise*rng_normal(g)
+            end do
+            call estimate(dc, [1.0_dp, 1.0_dp, 0.0_dp], opts, res, st)
+            if (st%code /= 0 .or. .not. allocated(res%cov_fit)) cycle
+            ns_ok = ns_ok + 1
+            if (k <= NS) then
+                if (.not. res%consistent) marked = marked + 1
+                if (res%consistent .and. maxval(abs(res%cov_fit - res%cov)) == 0.0_dp) &
+                    kept_cov = kept_cov + 1
+            else
+                if (.not. res%consistent) marked3 = marked3 + 1
+                do i = 1, 3
+                    if (abs(res%p(i) - TRUTH(i)) <= sqrt(res%cov(i, i))) &
+                        cover_cov = cover_cov + 1.0_dp
+                    if (abs(res%p(i) - TRUTH(i)) <= sqrt(res%cov_fit(i, i))) &
+                        cover_fit = cover_fit + 1.0_dp
+                end do
+            end if
+        end do
+        call t%check('self-check: every fit has its covariance', ns_ok == 2*NS)
+        ! 5 % of 200: 10, sd 3.1
+        call t%check('self-check: about 5 % of fits at the stated noise are marked ('// &
+                     itoa(marked)//')', marked >= 1 .and. marked <= 20)
+        call t%check('self-check: a consistent fit keeps cov', kept_cov == NS - marked)
+        call t%check('self-check: noise 3 times its u: nearly all marked ('// &
+                     itoa(marked3)//')', marked3 >= NS - 2)
+        call t%check('self-check: noise 3 times its u: sqrt(cov) covers far below 68 %', &
+                     cover_cov/(3*NS) < 0.4_dp)
+        call t%check_close('self-check: noise 3 times its u: sqrt(cov_fit) covers 68 %', &
+                           cover_fit/(3*NS), 0.6827_dp, &
+                           atol=4.0_dp*sqrt(0.6827_dp*0.3173_dp/(3*NS)))
+        ! one outlier of 20 sigma at point 17
+        g = rng_stream(78, 1)
+        do i = 1, 40
+            dc%y(i) = TRUTH(1)*exp(-TRUTH(2)*dc%t(i)) + TRUTH(3) + dc%sigma*rng_normal(g)
+        end do
+        dc%y(17) = dc%y(17) + 20.0_dp*dc%sigma
+        call estimate(dc, [1.0_dp, 1.0_dp, 0.0_dp], opts, res, st)
+        call t%check('self-check: an outlier of 20 sigma is marked and named', &
+                     st%code == 0 .and. .not. res%consistent .and. res%worst == 17)
+        if (st%code == 0 .and. allocated(res%cov_fit)) &
+            call t%check_close('self-check: cov_fit = cov times the Birge ratio squared', &
+                               res%cov_fit(2, 2), res%cov(2, 2)*res%birge**2, rtol=1.0e-12_dp)
+        opts%u_stated = .false.
+        call estimate(dc, [1.0_dp, 1.0_dp, 0.0_dp], opts, res, st)
+        if (st%code == 0 .and. allocated(res%cov_fit)) then
+            call t%check('self-check: u from the scatter: cov_fit is cov_scaled', &
+                         maxval(abs(res%cov_fit - res%cov_scaled)) == 0.0_dp .and. &
+                         res%consistent)
+        else
+            call t%check('self-check: u from the scatter: the fit converges', .false.)
+        end if
+    end subroutine test_self_check
 
     !> A line whose residuals carry a noise of 1e-12 that changes with the parameter at
     !! every digit: with the gradient, step, reduction and exact-fit tests off, no step lowers

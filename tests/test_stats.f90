@@ -6,7 +6,8 @@ module test_stats
     use kinds, only: dp
     use testing, only: tester_t
     use stats, only: t_cdf, t_quantile, coverage_factor, normal_quantile, chi2_sf, &
-        welch_satterthwaite, incomplete_beta, weighted_mean, NU_INFINITE
+        welch_satterthwaite, incomplete_beta, weighted_mean, NU_INFINITE, autocorrelation, &
+        rms_about_mean
     use unused_arg, only: unused
     implicit none
     private
@@ -24,6 +25,7 @@ contains
             call test_quantiles(t)
         if (t%want('stats: chi-square tails, incomplete beta, Welch-Satterthwaite, '// &
                    'weighted mean')) call test_others(t)
+        if (t%want('stats: autocorrelation and rms about the mean')) call test_autocorrelation(t)
     end subroutine run_stats_tests
 
     subroutine test_quantiles(t)
@@ -83,6 +85,28 @@ contains
         call t%check_close('its chi2 = 2, Birge ratio = sqrt(2)', birge, sqrt(2.0_dp), &
                            rtol=1.0e-15_dp)
     end subroutine test_others
+
+    !> A sine of 40 samples a period over 400 samples: its autocorrelation at one period is
+    !! (n - lag)/n = 0.9, at half a period -0.9 (sum over a whole number of periods), and
+    !! its rms about the mean 1/sqrt(2); a constant has 0; a lag beyond the series, 0.
+    subroutine test_autocorrelation(t)
+        type(tester_t), intent(inout) :: t
+        real(dp) :: x(400)
+        integer :: i
+        real(dp), parameter :: TWO_PI = 6.283185307179586_dp
+        do i = 1, 400
+            x(i) = 3.0_dp + sin(TWO_PI*i/40.0_dp)
+        end do
+        call t%check_close('autocorrelation of a sine at one period', autocorrelation(x, 40), &
+                           0.9_dp, rtol=1.0e-12_dp)
+        call t%check_close('autocorrelation of a sine at half a period', &
+                           autocorrelation(x, 20), -0.95_dp, rtol=1.0e-12_dp)
+        call t%check_close('rms of a sine about its mean', rms_about_mean(x), sqrt(0.5_dp), &
+                           rtol=1.0e-12_dp)
+        x = 2.0_dp
+        call t%check('autocorrelation of a constant is 0', autocorrelation(x, 3) == 0.0_dp)
+        call t%check('a lag beyond the series gives 0', autocorrelation(x(1:5), 5) == 0.0_dp)
+    end subroutine test_autocorrelation
 
     pure function num(x) result(s)
         real(dp), intent(in) :: x

@@ -26,6 +26,7 @@ module stats
 
     public :: t_cdf, t_quantile, coverage_factor, normal_cdf, normal_quantile
     public :: chi2_sf, welch_satterthwaite, incomplete_beta, gamma_q, weighted_mean
+    public :: autocorrelation, rms_about_mean
 
     !> Degrees of freedom counted as infinite (a coverage factor of the normal distribution).
     real(dp), parameter, public :: NU_INFINITE = 1.0e7_dp
@@ -270,5 +271,30 @@ contains
         birge = 1.0_dp
         if (size(x) > 1) birge = sqrt(chi2/(size(x) - 1))
     end subroutine weighted_mean
+
+    !> The sample autocorrelation of x at a lag of `lag` samples,
+    !! sum (x_i - m)(x_(i+lag) - m) / sum (x_i - m)^2 (m the mean); 0 for a constant x or a
+    !! lag outside 1 .. n - 1.
+    pure real(dp) function autocorrelation(x, lag) result(rho)
+        real(dp), intent(in) :: x(:)
+        integer, intent(in) :: lag
+        real(dp) :: d(size(x)), s0
+        integer :: n
+        n = size(x)
+        rho = 0.0_dp
+        if (lag < 1 .or. lag >= n) return
+        d = x - sum(x)/n
+        s0 = sum(d**2)
+        if (s0 <= 0.0_dp) return
+        rho = sum(d(1:n - lag)*d(1 + lag:n))/s0
+    end function autocorrelation
+
+    !> The root mean square of x about its mean (0 for no x).
+    pure real(dp) function rms_about_mean(x) result(r)
+        real(dp), intent(in) :: x(:)
+        r = 0.0_dp
+        if (size(x) == 0) return
+        r = sqrt(sum((x - sum(x)/size(x))**2)/size(x))
+    end function rms_about_mean
 
 end module stats

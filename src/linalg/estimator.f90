@@ -74,6 +74,12 @@
 !!   u are not stated (lsq_covariance: singular values of J with its columns scaled to unit
 !!   norm); for a rank-deficient J, which parameters the data cannot tell apart (named
 !!   from options%names).
+!! * The self-check (with options%covariance): when the residuals are divided by stated u
+!!   (options%u_stated), chi^2 with dof tests them: p < consistency_level (0.05) marks the
+!!   fit inconsistent and inflates its covariance by the Birge ratio squared (cov_fit), so
+!!   that no u is below what the residuals imply (R. T. Birge, Phys. Rev. 40, 1932); the
+!!   residual with the largest normalised size is named (worst) for the caller's warning.
+!!   With u from the scatter, cov_fit is cov_scaled.
 !!
 !! No routine stops; failures come back in status_t.
 module estimator
@@ -155,6 +161,10 @@ module estimator
         integer :: reweightings = 3             !! LOSS_HUBER: refits with new weights
         real(dp) :: huber_c = 1.345_dp          !! LOSS_HUBER: c, in robust standard deviations
         logical :: covariance = .false.         !! compute the covariance and the p-value
+        !> The residuals are divided by stated standard uncertainties, so chi^2 tests them
+        !! (the self-check below); .false.: the scatter sets u (cov_scaled is the covariance)
+        logical :: u_stated = .true.
+        real(dp) :: consistency_level = 0.05_dp !! p below this: the residuals exceed their u
         character(len=16), allocatable :: names(:)  !! the parameters' names, for messages
     end type lsq_options_t
 
@@ -173,6 +183,15 @@ module estimator
         !! when J has full rank, else `note` names the parameters the data cannot separate)
         real(dp), allocatable :: cov(:, :), cov_scaled(:, :)
         character(len=:), allocatable :: note
+        !> The self-check (options%covariance): consistent is .false. when the u are stated
+        !! and p_value < consistency_level; inflation = max(1, Birge ratio) then, else 1;
+        !! cov_fit = cov inflation^2 (u stated) or cov_scaled (u from the scatter): the
+        !! covariance to report, never below what the residuals imply.  worst: the residual
+        !! with the largest |r_i| (in units of its u).
+        logical :: consistent = .true.
+        real(dp) :: inflation = 1.0_dp
+        integer :: worst = 0
+        real(dp), allocatable :: cov_fit(:, :)
         real(dp) :: lambda = 0.0_dp             !! the damping at the end
         integer :: iterations = 0               !! steps tried (accepted or not)
         integer :: jacobians = 0                !! Jacobians (the start's included)
@@ -242,7 +261,27 @@ contains
         end if
         res%cov = cov
         res%cov_scaled = cov*(res%cost/max(1, res%dof))
+        call self_check(res, opts)
     end subroutine statistics
+
+    !> The fit checks itself against the u of its residuals (module header: the result).
+    subroutine self_check(res, opts)
+        type(lsq_result_t), intent(inout) :: res
+        type(lsq_options_t), intent(in) :: opts
+        res%worst = 0
+        if (size(res%r) > 0) res%worst = maxloc(abs(res%r), 1)
+        res%consistent = .true.
+        res%inflation = 1.0_dp
+        if (.not. opts%u_stated) then
+            res%cov_fit = res%cov_scaled
+            return
+        end if
+        if (res%dof > 0 .and. res%p_value < opts%consistency_level) then
+            res%consistent = .false.
+            res%inflation = max(1.0_dp, res%birge)
+        end if
+        res%cov_fit = res%cov*res%inflation**2
+    end subroutine self_check
 
     !> res = part (the allocations moved).
     subroutine move_result(part, res)
