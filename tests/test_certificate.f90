@@ -5,7 +5,7 @@ module test_certificate
     use kinds, only: dp
     use status, only: status_t
     use text, only: itoa
-    use testing, only: tester_t, fresh_dir, exists
+    use testing, only: tester_t, fresh_dir, exists, run, read_kv_text
     use svg_plot, only: svg_plot_t, svg_new, svg_add, svg_render, nice_ticks, tick_text
     use certificate, only: certificate_t, cert_new, cert_section, cert_text, cert_table, &
         cert_row, cert_figure, cert_html, cert_write, html_escaped, cert_note, CELL
@@ -23,9 +23,10 @@ contains
     subroutine run_certificate_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
-        call unused(exe)
         if (t%want('certificate: round ticks, SVG figures')) call test_svg(t)
         if (t%want('certificate: the page')) call test_page(t)
+        if (t%want('certificate: an identify run''s page holds every field')) &
+            call test_identify_page(t, exe)
     end subroutine run_certificate_tests
 
     subroutine test_svg(t)
@@ -43,6 +44,8 @@ contains
                      itoa(size(tk))//')', ok)
         call t%check('certificate: a tick of step 0.01 reads 0.05, not 0.05000000001', &
                      tick_text(5*0.01_dp, [0.0_dp, 0.01_dp]) == '0.05')
+        call t%check('certificate: a whole tick is written without its point', &
+                     tick_text(10.0_dp, [0.0_dp, 5.0_dp, 10.0_dp]) == '10')
         call t%check('certificate: a tick in E format for large values', &
                      index(tick_text(2.0e6_dp, [0.0_dp, 1.0e6_dp, 2.0e6_dp]), 'E') > 0)
         allocate (x(5000), y(5000))
@@ -111,6 +114,82 @@ contains
         close (u)
         call t%check('certificate: the file ends the page', n == 1)
     end subroutine test_page
+
+    !> identify on the periods deck and on the record deck: each writes
+    !! NAME.certificate.html beside NAME.identify, balanced, without a script, holding each
+    !! section (result, body and rig, method, budget, checks, figures), I1 and U as in
+    !! NAME.identify, every budget row, the figure, the version, the deck's CRC-64 and the date.
+    subroutine test_identify_page(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=*), parameter :: DECKS(2) = [character(len=16) :: 'identify_periods', &
+                                                  'identify_record']
+        character(len=:), allocatable :: page, path
+        character(len=64) :: val
+        character(len=*), parameter :: SECTIONS(6) = [character(len=28) :: '1. Result', &
+            '2. Body and rig as measured', '3. Method and model', &
+            '4. Uncertainty budget of I1', '5. Checks', '6. Figures']
+        integer :: k, j, ex
+        logical :: ok
+        do k = 1, size(DECKS)
+            call fresh_dir(SCR//'/id')
+            ex = run(exe//' input/'//trim(DECKS(k))//'.nml --out '//SCR//'/id', SCR)
+            path = SCR//'/id/'//trim(DECKS(k))//'.certificate.html'
+            ok = exists(path)
+            call t%check('certificate: '//trim(DECKS(k))//' ends 0 and writes its page', &
+                         ex == 0 .and. ok)
+            if (.not. ok) cycle
+            page = whole(path)
+            call t%check('certificate: '//trim(DECKS(k))//': balanced, no script', &
+                         balanced(page) .and. index(page, '<script') == 0)
+            ok = .true.
+            do j = 1, size(SECTIONS)
+                if (index(page, trim(SECTIONS(j))) == 0) then
+                    ok = .false.
+                    write (*, '(a)') '   no section '//trim(SECTIONS(j))
+                end if
+            end do
+            call t%check('certificate: '//trim(DECKS(k))//': every section', ok)
+            call read_kv_text(SCR//'/id/'//trim(DECKS(k))//'.identify', 'I1', val)
+            call t%check('certificate: '//trim(DECKS(k))//': I1 as in the .identify file', &
+                         len_trim(val) > 0 .and. index(page, 'I1 = '//trim(sci6(val))) > 0)
+            call t%check('certificate: '//trim(DECKS(k))//': every budget row, the figure', &
+                         index(page, '>b_prime<') > 0 .and. index(page, '>mass<') > 0 .and. &
+                         index(page, '<svg') > 0 .and. index(page, 'share of u^2') > 0)
+            call t%check('certificate: '//trim(DECKS(k))//': version, CRC-64 and date', &
+                         index(page, 'bifilar 1.1') > 0 .and. index(page, 'CRC-64') > 0 .and. &
+                         index(page, ' 20') > 0)
+        end do
+    contains
+        !> 5.12077E-02 from 5.1207746E-02 (as the page rounds I1 to 6 digits)
+        function sci6(v) result(s)
+            character(len=*), intent(in) :: v
+            character(len=:), allocatable :: s
+            real(dp) :: x
+            character(len=20) :: buf
+            integer :: ios
+            read (v, *, iostat=ios) x
+            s = '?'
+            if (ios /= 0) return
+            write (buf, '(es11.5)') x
+            s = trim(adjustl(buf))
+        end function sci6
+    end subroutine test_identify_page
+
+    !> A whole text file as one string, lines joined by new lines.
+    function whole(path) result(s)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: s
+        character(len=65536) :: line
+        integer :: u, ios
+        s = ''
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        do while (ios == 0)
+            read (u, '(a)', iostat=ios) line
+            if (ios == 0) s = s//trim(line)//achar(10)
+        end do
+        if (ios > 0 .or. ios == -1) close (u)
+    end function whole
 
     !> Each element that must be closed (html, body, table, tr, svg, figure, p, h1, h2) is
     !! opened as often as closed, and never closed before it is opened.

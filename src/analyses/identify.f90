@@ -127,6 +127,18 @@ module identify
         real(dp) :: cpu_seconds = 0.0_dp
     end type identify_result_t
 
+    !> The figure's data, as the analysis has it when it writes its data files: the timed
+    !! periods (amplitude in degrees, period per cycle and its u, in s) with the model's
+    !! curve; or a record (t, measured, model in the record's units).
+    type :: cert_figure_data_t
+        logical :: periods = .false., record = .false.
+        real(dp), allocatable :: amp(:), per(:), u_per(:)       !! timed periods
+        real(dp), allocatable :: curve_amp(:), curve_per(:)     !! the model at I1_total
+        real(dp) :: classical = 0.0_dp                          !! the classical period
+        real(dp), allocatable :: t(:), measured(:), model(:)    !! a record
+        character(len=:), allocatable :: units                  !! the record's units
+    end type cert_figure_data_t
+
     !> Analysis `identify` (module analysis_base): OUTDIR/NAME.identify with NAME.fit.dat (a
     !! record) or NAME.periods.dat (periods); its Monte Carlo the sweep MC_ANALYSIS
     !! (checkpoint OUTDIR/NAME.identify_mc.partial); its part of the summary line: I1 with
@@ -149,6 +161,16 @@ module identify
     public :: identify_ready, run_identify, identify_record, identify_mc_task
 
     interface
+        !> OUTDIR/NAME.certificate.html (submodule identify_certificate): the page an
+        !! engineer attaches to a test report, into the run's files.
+        module subroutine write_identify_certificate(d, outdir, res, fig, files, stat)
+            type(deck_t), intent(in) :: d
+            character(len=*), intent(in) :: outdir
+            type(identify_result_t), intent(in) :: res
+            type(cert_figure_data_t), intent(in) :: fig
+            type(out_files_t), intent(inout) :: files
+            type(status_t), intent(out) :: stat
+        end subroutine write_identify_certificate
         !> The preconditions of analyses = 'identify', checked before any computing; the
         !! releases and records read once into `input` for run_identify; the work estimated
         !! (a note on stderr when it is long).
@@ -237,10 +259,12 @@ contains
         w = 'identify'
     end function identify_word
 
-    !> The files it writes: NAME.identify, NAME.fit.dat, NAME.periods.dat.
+    !> The files it writes: NAME.identify, NAME.fit.dat, NAME.periods.dat,
+    !! NAME.certificate.html.
     subroutine identify_owned(names)
         character(len=WORD_LEN), allocatable, intent(out) :: names(:)
-        names = [character(len=WORD_LEN) :: '.identify', '.fit.dat', '.periods.dat']
+        names = [character(len=WORD_LEN) :: '.identify', '.fit.dat', '.periods.dat', &
+                 '.certificate.html']
     end subroutine identify_owned
 
     !> Its sweep: the Monte Carlo (MC_ANALYSIS).

@@ -401,6 +401,7 @@ contains
     !! sweep went, ranks 1 without Monte Carlo).
     module procedure run_identify
         real(dp) :: c0, c1
+        type(cert_figure_data_t) :: fig
         type(sweep_report_t) :: rep
         type(release_t), allocatable :: rels(:)
         type(identify_input_t) :: own
@@ -424,10 +425,12 @@ contains
         call write_identify(d, outdir, res, files, stat)
         if (stat%code /= 0) return
         if (res%from_record) then
-            call write_fit(d, outdir, rels, files, stat)
+            call write_fit(d, outdir, rels, files, stat, fig)
         else
-            call write_periods(d, outdir, rels, res, files, stat)
+            call write_periods(d, outdir, rels, res, files, stat, fig)
         end if
+        if (stat%code /= 0) return
+        call write_identify_certificate(d, outdir, res, fig, files, stat)
     end procedure run_identify
 
     !> The standard uncertainties of a deck's inputs.
@@ -1239,12 +1242,13 @@ contains
 
     !> OUTDIR/NAME.fit.dat: t measured model residual in the record's units, one block
     !! (two blank lines between) per release, from its first sample fitted.
-    subroutine write_fit(d, outdir, rels, files, stat)
+    subroutine write_fit(d, outdir, rels, files, stat, fig)
         type(deck_t), intent(in) :: d
         character(len=*), intent(in) :: outdir
         type(release_t), intent(in) :: rels(:)
         type(out_files_t), intent(inout) :: files
         type(status_t), intent(out) :: stat
+        type(cert_figure_data_t), intent(inout) :: fig     !! the certificate's: release 1
         integer :: u, ios, i, r, i0
         character(len=96) :: row
         character(len=:), allocatable :: unit_name
@@ -1275,6 +1279,13 @@ contains
             end do
         end do
         call files%close(u, ios, stat)
+        s = 1.0_dp/rels(1)%rec%to_rad
+        i0 = rels(1)%ifirst
+        fig%record = .true.
+        fig%units = unit_name
+        fig%t = rels(1)%rec%t(i0:i0 + size(rels(1)%model) - 1)
+        fig%measured = s*rels(1)%rec%v(i0:i0 + size(rels(1)%model) - 1)
+        fig%model = s*rels(1)%model
     end subroutine write_fit
 
     !> OUTDIR/NAME.periods.dat, the figure of periods against amplitude.  Block 0, the
@@ -1282,13 +1293,15 @@ contains
     !! period at I1_total.  Then one block per rig: amplitude, the model's period at
     !! I1_total, the classical formula's (independent of amplitude), 41 amplitudes from 0 to
     !! 1.1 times the largest timed (at most 179 deg).  Computed whole before the file opens.
-    subroutine write_periods(d, outdir, rels, res, files, stat)
+    subroutine write_periods(d, outdir, rels, res, files, stat, fig)
         type(deck_t), intent(in) :: d
         character(len=*), intent(in) :: outdir
         type(release_t), intent(in) :: rels(:)
         type(identify_result_t), intent(in) :: res
         type(out_files_t), intent(inout) :: files
         type(status_t), intent(out) :: stat
+        !> the certificate's: every timed period, the curve of the first release's rig
+        type(cert_figure_data_t), intent(inout) :: fig
         integer, parameter :: NA = 41
         integer :: u, ios, i, r, q, k
         character(len=104) :: row
@@ -1359,6 +1372,16 @@ contains
             end do
         end do
         call files%close(u, ios, stat)
+        fig%periods = .true.
+        allocate (fig%amp(0), fig%per(0), fig%u_per(0))
+        do r = 1, size(rels)
+            fig%amp = [fig%amp, rels(r)%amps]
+            fig%per = [fig%per, rels(r)%per]
+            fig%u_per = [fig%u_per, rels(r)%u_each]
+        end do
+        fig%curve_amp = curve(:, 1, 1)
+        fig%curve_per = curve(:, 2, 1)
+        fig%classical = tcl(1)
     contains
         pure logical function same_rig(a1, a2)
             type(rig_t), intent(in) :: a1, a2

@@ -29,13 +29,14 @@ module driver
     use sweep_engine, only: sweep_options_t, sweep_job_t, sweep_task_t, sweep_next_job, &
         sweep_serve
     use analysis_base, only: analysis_slot_t, warning_t, WORD_LEN
+    use version, only: BIFILAR_VERSION
     implicit none
     private
 
     public :: run_deck, exit_status, error_line, serve_sweeps, analysis_registry
 
     !> The program's version (bifilar --version).
-    character(len=*), parameter, public :: BIFILAR_VERSION = '1.1'
+    public :: BIFILAR_VERSION                   ! (of module version)
 
     interface
         !> Every analysis of the program, one fresh object each, in the order of the summary

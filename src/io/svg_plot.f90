@@ -274,6 +274,10 @@ contains
             write (buf, '(f25.'//itoa(nd)//')') v
         end if
         s = trim(adjustl(buf))
+        ! f25.0 writes '10.': a whole number is written without its point
+        if (len(s) > 1) then
+            if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
+        end if
     end function tick_text
 
     !> The series as drawn: at most MAX_POINTS points (see the header).
