@@ -74,6 +74,7 @@ module period_inversion
     use estimator, only: lsq_problem_t, lsq_options_t, lsq_result_t, estimate, DAMP_HALVING, &
         STEP_LARGEST, FAIL_START, FAIL_EVALUATION, FAIL_JACOBIAN
     use budget, only: ROW_INPUT, ROW_TIMING, ROW_AMPLITUDE
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -470,7 +471,7 @@ contains
             if (stat%code /= 0) return
         end if
         hh = merge(1.0e-7_dp, SLOPE_REL_SIM, prob%sym)*p(1)
-        if (.false.) hh = hh + h(1)
+        call unused(h)
         do k = 1, size(prob%periods)
             call model_period(prob%rg, prob%acc, prob%sym, p(1) + hh, prob%amps(k), tp, stat)
             if (stat%code /= 0) return

@@ -13,6 +13,7 @@ module theta4_maxima
     use status, only: status_t
     use bifilar_model, only: NSTATE
     use run_loop, only: stepped_model_t, row_sink_t, falling_zero
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -38,8 +39,12 @@ contains
         real(dp), intent(in) :: t
         real(dp), intent(in) :: y(:)
         type(status_t), intent(out) :: stat
+        call unused(sink)
+        call unused(m)
+        call unused(k)
+        call unused(t)
+        call unused(y)
         stat%code = 0
-        if (.false.) sink%done = same_type_as(m, m) .and. k + t + y(1) > 0.0_dp
     end subroutine maxima_take
 
     !> After a step [t0, t1]: note theta4 below 0; after that, a theta4' going from + to -
