@@ -556,7 +556,7 @@ contains
         type(rng_t) :: g
         real(dp), parameter :: CV = 2.0e-3_dp
         real(dp), allocatable :: tt(:), th(:)
-        character(len=:), allocatable :: dd, rigtext, tab, s1, s2
+        character(len=:), allocatable :: dd, rigtext, tab, s1
         character(len=64) :: row
         character(len=32) :: val
         integer :: i, n, k, ex
@@ -627,8 +627,8 @@ contains
                      file_has(dd//'/stderr', 'trial ''bad'' (line 4)'), &
                      file_has(dd//'/stderr', 'on_failure')]))
         call t%check('model: ... n_trials = 2, n_trials_skipped = 1', &
-                     nint(kvp(dd//'/skip.identify', 'n_trials')) == 2 .and. &
-                     nint(kvp(dd//'/skip.identify', 'n_trials_skipped')) == 1)
+                     all(nint([kvp(dd//'/skip.identify', 'n_trials'), &
+                               kvp(dd//'/skip.identify', 'n_trials_skipped')]) == [2, 1]))
         call read_kv_text(dd//'/skip.identify', 'trial_skipped(1)', val)
         call t%check('model: ... trial_skipped(1) names it: '//trim(val), &
                      index(val, 'trial ''bad'' (line 4)') > 0)

@@ -691,7 +691,8 @@ contains
 
     !> Refusals through the executable: one line on stderr naming the deck and what is
     !! wrong, exit 2, no file: 5 directions, 6 coplanar directions, up = 0, a missing column,
-    !! an unknown column, along parallel to up, C/D points without &tensor cg.
+    !! an unknown column, along parallel to up, C/D points without &tensor cg, a tare or an
+    !! added moment (the tensor's fit takes none).
     subroutine test_refusals(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
@@ -712,16 +713,27 @@ contains
         call one('parallel', HEAD//ROWS5//'6 0 1 1 0 2 2 1.5'//NL, 'is 0 or parallel to up')
         call one('nocg', 'hang c_x c_y c_z d_x d_y d_z period'//NL//'1 0 0 0 1 0 0 1.5'//NL, &
                  'need the mass centre in the body frame')
+        ! a tare would be silently left out of the tensor's fit: refused, as is a known
+        ! moment added
+        call one('tare', HEAD//ROWS5//'6 -1 0 1 0 1 0 1.5'//NL, &
+                 'the tensor''s fit takes none', '&measurement tare_I1 = 0.01, u_tare_i1 = 1e-4 /')
+        call one('added', HEAD//ROWS5//'6 -1 0 1 0 1 0 1.5'//NL, &
+                 'added_inertia = 0.02', '&measurement added_inertia = 0.02 /')
     contains
-        subroutine one(label, table, word)
+        !> The deck of `table` (with the deck line `extra`) refused: exit 2, one line on
+        !! stderr naming the deck and holding `word`, no file.
+        subroutine one(label, table, word, extra)
             character(len=*), intent(in) :: label, table, word
-            character(len=:), allocatable :: dir
+            character(len=*), intent(in), optional :: extra
+            character(len=:), allocatable :: dir, more
             integer :: ex
             logical :: l1, l2, l3
+            more = ''
+            if (present(extra)) more = extra//NL
             dir = SCR//'/ref_'//label
             call write_text(dir//'.txt', table)
             call write_text(dir//'.nml', "&scene analyses = 'tensor' /"//NL//RIG_LINES// &
-                            "&tensor hangs = 'ref_"//label//".txt' /"//NL)
+                            "&tensor hangs = 'ref_"//label//".txt' /"//NL//more)
             call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//' && '//exe//' '// &
                 dir//'.nml --out '//dir//' > '//dir//'.stdout 2> '//dir//'.stderr', exitstat=ex)
             call t%check('refusal '//label//': exit 2', ex == 2)

@@ -52,6 +52,20 @@ contains
                 'model = ''kane''')
             return
         end if
+        associate (m => d%measurement)
+            if (any([m%tare_i1, m%u_tare_i1, m%tare_mass, m%added_inertia, &
+                     m%u_added_inertia] /= 0.0_dp)) then
+                call set_error(stat, ERR_DECK, 'analyses = ''tensor'': &measurement tare_i1 = '// &
+                    rshort(m%tare_i1)//', u_tare_i1 = '//rshort(m%u_tare_i1)//', tare_mass = '// &
+                    rshort(m%tare_mass)//', added_inertia = '//rshort(m%added_inertia)// &
+                    ', u_added_inertia = '//rshort(m%u_added_inertia)//': a tare is a moment '// &
+                    'about the one axis of identify; the tensor''s fit takes none (the '// &
+                    'fixture''s tensor is not known); allowed: all 0 with tensor (fit the '// &
+                    'fixture''s own hangs and subtract its tensor), or the tare in a deck of '// &
+                    'analyses = ''identify''')
+                return
+            end if
+        end associate
         if (len_trim(d%tensor%hangs) > 0) then
             call read_hangs(d%tensor, d%suspension, d%body, set, stat)
             if (stat%code /= STATUS_OK) return
