@@ -4,7 +4,7 @@
 !! * The body: the inertia tensor J about the mass centre in the user's body frame, six
 !!   entries x = (J_xx, J_yy, J_zz, J_xy, J_xz, J_yz) with J_xy = -int x y dm (the matrix
 !!   entries themselves), so that the moment about a unit direction u is u . J u.
-!! * The hang (module hang_table): the body turned so that `up` points up at rest and
+!! * The hang (module measurement's hang_t): the body turned so that `up` points up at rest and
 !!   `along` from C toward D.  In the model's terms ntilde_1 = -up (down at rest), ntilde_3
 !!   = -along (from D to C), ntilde_2 = ntilde_3 x ntilde_1; the principal axes of J
 !!   (eigenvectors, LAPACK dsyev) expressed in that frame are the rows of btilde, the

@@ -4,7 +4,7 @@
 !!
 !! * The problem: the six entries x = (J_xx, J_yy, J_zz, J_xy, J_xz, J_yz) of the tensor
 !!   about the mass centre in the body frame; each row of the table of hangs (module
-!!   hang_table) a measured period T_i of hang h(i) at amplitude A_i; the model period
+!!   measurement_read) a measured period T_i of hang h(i) at amplitude A_i; the model period
 !!   T(x; hang, A) of module hang_model (the torsion mode of the linearised full model at
 !!   A = 0, the full model's time from release to the next maximum of theta_4 at A > 0).
 !!   Rows of one hang at one amplitude share one model period (a case).
