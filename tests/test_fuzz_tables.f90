@@ -2,8 +2,8 @@
 !! and sweep checkpoints, mutated in their values and units (times in ms, from the epoch,
 !! with gaps; values in degrees, deg/s, with their sign flipped; random bytes, a BOM,
 !! tokens that are no number, rows cut or doubled) and read through the library's own
-!! readers and checks (read_record and check_record_times, read_trials and check_timings,
-!! read_hangs, checkpoint_read), not the executable: cheap, so they are many.  Every case
+!! readers and checks (read_record and check_record_times, read_releases and
+!! check_timings, read_hangs, checkpoint_read), not the executable: cheap, so they are many.  Every case
 !! asserts: a refusal is one line naming the file; what is taken is finite and within
 !! its range; the unit mistakes the audit named (ms, a 1000 s gap, deg/s read as rad/s,
 !! periods in ms) are refused before any computing; a checkpoint gives back only values
@@ -16,11 +16,11 @@ module test_fuzz_tables
     use testing, only: tester_t, write_text, fresh_dir
     use text, only: itoa
     use deck, only: deck_t, read_deck
-    use deck_runs, only: rig_of, read_record, read_trials, deck_inputs
+    use deck_runs, only: rig_of, start_of, read_record, deck_inputs
     use rig, only: rig_t
     use records, only: record_t, MIN_SAMPLES
-    use trials, only: trial_set_t
-    use hang_table, only: hang_set_t, read_hangs
+    use measurement, only: measurement_t
+    use measurement_read, only: read_releases, read_hangs
     use work_estimate, only: check_record_times, check_timings, periods_runs
     use checkpoint, only: checkpoint_write, checkpoint_read
     use tensor, only: tensor_ready
@@ -235,14 +235,14 @@ contains
     end subroutine fuzz_records
 
     ! ---------------------------------------------------------------------------------------
-    !> Tables of releases: input/identify_trials.csv mutated, read by read_trials and each
-    !! release's periods weighed by check_timings.
+    !> Tables of releases: input/identify_trials.csv mutated, read by read_releases (the
+    !! measurement's model) and each release's periods weighed by check_timings.
     subroutine fuzz_trials(t, state, ncase)
         type(tester_t), intent(inout) :: t
         integer(8), intent(inout) :: state
         integer, intent(inout) :: ncase
         type(deck_t) :: d0, d
-        type(trial_set_t) :: ts
+        type(measurement_t) :: ts
         type(rig_t) :: rg
         type(status_t) :: st, sc
         character(len=:), allocatable :: base, text, path, what
@@ -287,7 +287,8 @@ contains
                 call table_mutation(base, kind - 3, state, text, valid, what)
             end select
             call write_text(path, text)
-            call read_trials(d, ts, st)
+            call read_releases(d%measurement, rig_of(d), start_of(d), d%suspension%cables, &
+                               deck_inputs(d, .true.), ts, st)
             ncase = ncase + 1
             if (st%code /= STATUS_OK) then
                 counts(1) = counts(1) + 1
@@ -296,22 +297,21 @@ contains
                 cycle
             end if
             sc%code = STATUS_OK
-            do i = 1, size(ts%t)
-                if (.not. allocated(ts%t(i)%periods)) then
-                    call bad(2, what)
-                    cycle
-                end if
-                do j = 1, size(ts%t(i)%periods)
-                    if (.not. (ieee_is_finite(ts%t(i)%periods(j)) .and. &
-                               ts%t(i)%periods(j) > 0.0_dp .and. ts%t(i)%cycles(j) > 0.0_dp &
-                               .and. ieee_is_finite(ts%t(i)%cycles(j)) .and. &
-                               ts%t(i)%amps(j) >= 0.0_dp .and. ts%t(i)%amps(j) < 180.0_dp)) &
+            do i = 1, size(ts%releases)
+                associate (per => ts%periods_of(i), cyc => ts%cycles_of(i), &
+                           amps => ts%amplitudes_of(i), g => ts%releases(i)%rig)
+                    do j = 1, size(per)
+                        if (.not. (ieee_is_finite(per(j)) .and. per(j) > 0.0_dp .and. &
+                                   cyc(j) > 0.0_dp .and. ieee_is_finite(cyc(j)) .and. &
+                                   amps(j) >= 0.0_dp .and. amps(j) < 180.0_dp)) &
+                            call bad(2, what)
+                    end do
+                    if (.not. all(ieee_is_finite([g%l, g%l_prime, g%b, g%b_prime, g%mass]) .and. &
+                                  [g%l, g%l_prime, g%b, g%b_prime, g%mass] > 0.0_dp)) &
                         call bad(2, what)
-                end do
-                if (.not. all(ieee_is_finite(ts%t(i)%rig) .and. ts%t(i)%rig > 0.0_dp)) &
-                    call bad(2, what)
-                if (sc%code == STATUS_OK) call check_timings(d%body, rg, ts%t(i)%periods/ &
-                    ts%t(i)%cycles, ts%t(i)%amps, size(ts%t) == 1, sc)
+                    if (sc%code == STATUS_OK) call check_timings(d%body, rg, per, amps, &
+                        size(ts%releases) == 1, sc)
+                end associate
             end do
             if (sc%code /= STATUS_OK) then
                 counts(2) = counts(2) + 1
@@ -350,7 +350,7 @@ contains
         integer(8), intent(inout) :: state
         integer, intent(inout) :: ncase
         type(deck_t) :: d0, d
-        type(hang_set_t) :: set
+        type(measurement_t) :: set
         type(status_t) :: st
         character(len=:), allocatable :: base, text, path, what
         integer :: k, i, kind, nbad(3), counts(3)
@@ -417,17 +417,19 @@ contains
                 counts(3) = counts(3) + 1
                 if (must_refuse) call bad(3, what)
             end if
-            do i = 1, size(set%rows)
-                if (.not. (ieee_is_finite(set%rows(i)%period) .and. set%rows(i)%period > 0.0_dp &
-                           .and. ieee_is_finite(set%rows(i)%cycles) .and. &
-                           set%rows(i)%cycles > 0.0_dp .and. set%rows(i)%amplitude >= 0.0_dp &
-                           .and. set%rows(i)%amplitude < 180.0_dp)) call bad(2, what)
+            do i = 1, size(set%obs)
+                if (.not. (ieee_is_finite(set%obs(i)%period) .and. set%obs(i)%period > 0.0_dp &
+                           .and. ieee_is_finite(set%obs(i)%cycles) .and. &
+                           set%obs(i)%cycles > 0.0_dp .and. set%obs(i)%amplitude >= 0.0_dp &
+                           .and. set%obs(i)%amplitude < 180.0_dp)) call bad(2, what)
             end do
-            do i = 1, size(set%hangs)
-                if (.not. (abs(norm2(set%hangs(i)%up) - 1.0_dp) < 1.0e-9_dp .and. &
-                           abs(norm2(set%hangs(i)%along) - 1.0_dp) < 1.0e-9_dp .and. &
-                           abs(dot_product(set%hangs(i)%up, set%hangs(i)%along)) < 1.0e-6_dp)) &
-                    call bad(2, what//' hang '//itoa(i))
+            do i = 1, size(set%releases)
+                associate (h => set%releases(i)%hang)
+                    if (.not. (abs(norm2(h%up) - 1.0_dp) < 1.0e-9_dp .and. &
+                               abs(norm2(h%along) - 1.0_dp) < 1.0e-9_dp .and. &
+                               abs(dot_product(h%up, h%along)) < 1.0e-6_dp)) &
+                        call bad(2, what//' hang '//itoa(i))
+                end associate
             end do
         end do
         write (*, '(a,4(i0,a))') '   fuzz_tables: ', N_HANGS, ' tables of hangs: ', &

@@ -3,8 +3,9 @@
 !! (exit 2 or 4, one line), a phone's gyro CSV (header, five columns, deg/s, a bias, the
 !! release 1.4 s in), timed totals of several cycles, the mass centre as measured (cg_depth)
 !! against r and lambda, a trifilar platform against an independent quadrature of its
-!! torsion, a tare, trials that disagree, and the 95 % interval's coverage over releases
-!! that scatter more than their own uncertainty says.  Truths are made here: periods by the
+!! torsion, a tare, trials that disagree, the 95 % interval's coverage over releases that
+!! scatter more than their own uncertainty says, and the one measurement model (a release's
+!! own estimate, on_failure, sessions, one table reader).  Truths are made here: periods by the
 !! exact torsion period (or the quadrature), records by the model with noise drawn here.
 module test_measure
     use kinds, only: dp, pi, deg
@@ -12,7 +13,9 @@ module test_measure
     use testing, only: tester_t, write_text, file_has, count_lines, run, fresh_dir, &
         read_kv_text
     use deck, only: deck_t, read_deck_text
-    use deck_runs, only: rig_of, start_of, accuracy_of
+    use deck_runs, only: rig_of, start_of, accuracy_of, deck_inputs
+    use measurement, only: measurement_t
+    use measurement_read, only: read_releases, read_hangs
     use driver, only: run_deck
     use identify, only: warning_t
     use random, only: rng_t, rng_stream, rng_normal
@@ -53,6 +56,8 @@ contains
         if (t%want('measure: trifilar against its own quadrature')) call test_trifilar(t)
         if (t%want('measure: phone gyro CSV, bias, release 1.4 s in')) call test_phone(t, exe)
         if (t%want('measure: trials, consistent and not')) call test_trials(t, exe)
+        if (t%want('measure: one model: per-release estimate, on_failure, sessions, one '// &
+                   'table reader')) call test_model(t, exe)
         if (t%want('measure: coverage over releases that scatter')) call test_coverage(t)
         if (t%want('measure: correlated residuals')) call test_correlated(t)
         if (t%want('measure: video track from mid-swing, glitches, huber')) call test_video(t)
@@ -533,6 +538,159 @@ contains
                      all([ex == 2, count_lines(dd//'/stderr') == 1, &
                           file_has(dd//'/stderr', 'line 3, column l = ')]))
     end subroutine test_trials
+
+    ! ---------------------------------------------------------------------------------------
+    !> The one measurement model: a table of record releases where one release estimates
+    !! fewer parameters (its column estimate) runs with each release's own; a release that
+    !! fails stops the run (exit 4, named with its row), or with on_failure = 'skip' is left
+    !! out, named on one warning line, counted in n_trials_skipped; a column session is
+    !! carried into NAME.identify, and &measurement session for the deck's one release; the
+    !! one table reader gives the same message for the same fault in a table of releases and
+    !! in a table of hangs (a column twice, an unknown column, a value out of range).
+    subroutine test_model(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        type(deck_t) :: d
+        type(status_t) :: st
+        type(measurement_t) :: m
+        type(rng_t) :: g
+        real(dp), parameter :: CV = 2.0e-3_dp
+        real(dp), allocatable :: tt(:), th(:)
+        character(len=:), allocatable :: dd, rigtext, tab, s1
+        character(len=64) :: row
+        character(len=32) :: val
+        integer :: i, n, k, ex
+        dd = SCR//'/model'
+        call fresh_dir(dd)
+        ! --- a release that estimates fewer parameters: its own estimate
+        rigtext = HEAD//SUSP//BODY//"&start mode = 'raised', amplitude = 20 /"//NL
+        n = 401
+        allocate (tt(n), th(n))
+        do i = 1, n
+            tt(i) = (i - 1)*0.02_dp
+        end do
+        g = rng_stream(31, 0)
+        do k = 1, 2
+            call read_deck_text(dd//'/truth.nml', rigtext//'&damping c_v = '// &
+                                num(merge(CV, 0.0_dp, k == 1))//' /'//NL// &
+                                '&integration rtol = 1e-12, atol = 1e-14 /'//NL, d, st)
+            if (st%code == 0) call record_model(rig_of(d), start_of(d), accuracy_of(d), tt, &
+                                                0.0_dp, .false., th, st)
+            call t%check('model: truth record '//itoa(k), st%code == 0)
+            if (st%code /= 0) return
+            tab = '# t theta4'//NL
+            do i = 1, n
+                write (row, '(f0.3,1x,es16.8)') tt(i), th(i) + 1.0e-4_dp*rng_normal(g)
+                tab = tab//trim(row)//NL
+            end do
+            call write_text(dd//'/'//achar(iachar('a') + k - 1)//'.dat', tab)
+        end do
+        call write_text(dd//'/rec.csv', 'trial,record,estimate'//NL//'A,a.dat,'//NL// &
+                        'B,b.dat,I1'//NL)
+        call write_text(dd//'/rec.nml', rigtext//"&measurement trials = 'rec.csv', "// &
+                        "estimate = 'I1 c_v' /"//NL)
+        call read_deck_text(dd//'/rec.nml', rigtext//"&measurement trials = 'rec.csv', "// &
+                            "estimate = 'I1 c_v' /"//NL, d, st)
+        if (st%code == 0) call read_releases(d%measurement, rig_of(d), start_of(d), &
+                                             d%suspension%cables, deck_inputs(d, .true.), m, st)
+        call t%check('model: per-release estimate read (A the deck''s, B its own)', &
+                     st%code == 0 .and. size(m%releases) == 2)
+        if (st%code /= 0) return
+        call t%check('model: ... A estimates I1 c_v, B I1 alone', &
+                     m%releases(1)%estimate == 'I1 c_v' .and. m%releases(2)%estimate == 'I1')
+        ex = run(exe//' '//dd//'/rec.nml --out '//dd, dd)
+        call t%check('model: a table with one release that needs fewer parameters runs '// &
+                     '(exit 0)', ex == 0)
+        call t%check('model: ... two releases pooled, I1 within 0.5 %', &
+                     all([nint(kvp(dd//'/rec.identify', 'n_trials')) == 2, &
+                          abs(kvp(dd//'/rec.identify', 'I1')/I1_TRUE - 1.0_dp) < 5.0e-3_dp]))
+        call t%check('model: ... c_v from the release that estimates it, within 3 u', &
+                     abs(kvp(dd//'/rec.identify', 'c_v') - CV) <= &
+                     3*kvp(dd//'/rec.identify', 'u_c_v'))
+        ! --- a release that fails: stop (the default), or left out with on_failure = 'skip'
+        tab = 'trial,period,cycles,amplitude,u_period'//NL
+        do k = 1, 2
+            tab = tab//'r'//itoa(k)//','//num(10*period_of(I1_TRUE, 10.0_dp))//',10,10,0.001'//NL
+        end do
+        tab = tab//'bad,'//num(1.0e4_dp*period_of(I1_TRUE, 10.0_dp))//',10,10,0.001'//NL
+        call write_text(dd//'/skip.csv', tab)
+        call write_text(dd//'/stop.nml', HEAD//SUSP//BODY//"&measurement trials = 'skip.csv' /"//NL)
+        ex = run(exe//' '//dd//'/stop.nml --out '//dd, dd)
+        call t%check('model: a release that fails stops the run (exit 4), one line naming '// &
+                     'its row', all([ex == 4, count_lines(dd//'/stderr') == 1, &
+                     file_has(dd//'/stderr', 'trial ''bad'' (line 4)')]))
+        call write_text(dd//'/skip.nml', HEAD//SUSP//BODY//"&measurement trials = 'skip.csv', "// &
+                        "on_failure = 'skip' /"//NL)
+        ex = run(exe//' '//dd//'/skip.nml --out '//dd, dd)
+        call t%check('model: on_failure = ''skip'': exit 0, one warning naming the release '// &
+                     'and its row', all([ex == 0, count_lines(dd//'/stderr', 'warning') == 1, &
+                     file_has(dd//'/stderr', 'trial ''bad'' (line 4)'), &
+                     file_has(dd//'/stderr', 'on_failure')]))
+        call t%check('model: ... n_trials = 2, n_trials_skipped = 1', &
+                     all(nint([kvp(dd//'/skip.identify', 'n_trials'), &
+                               kvp(dd//'/skip.identify', 'n_trials_skipped')]) == [2, 1]))
+        call read_kv_text(dd//'/skip.identify', 'trial_skipped(1)', val)
+        call t%check('model: ... trial_skipped(1) names it: '//trim(val), &
+                     index(val, 'trial ''bad'' (line 4)') > 0)
+        ! --- sessions: a column session, and the deck's one release's
+        tab = 'trial,session,period,cycles,amplitude,u_period'//NL
+        do k = 1, 3
+            tab = tab//'r'//itoa(k)//','//trim(merge('mon', 'tue', k < 3))//','// &
+                num(10*period_of(I1_TRUE, 10.0_dp) + 1.0e-3_dp*k)//',10,10,0.002'//NL
+        end do
+        call write_text(dd//'/sess.csv', tab)
+        call write_text(dd//'/sess.nml', HEAD//SUSP//BODY//"&measurement trials = 'sess.csv' /"//NL)
+        ex = run(exe//' '//dd//'/sess.nml --out '//dd, dd)
+        call read_kv_text(dd//'/sess.identify', 'session(1)', val)
+        s1 = trim(val)
+        call read_kv_text(dd//'/sess.identify', 'session(3)', val)
+        call t%check('model: a column session carried to NAME.identify (session(1) = mon, '// &
+                     'session(3) = tue)', ex == 0 .and. s1 == 'mon' .and. trim(val) == 'tue')
+        call write_text(dd//'/one.nml', HEAD//SUSP//BODY//'&measurement periods = '// &
+                        num(period_of(I1_TRUE, 10.0_dp))//", amplitudes = 10, u_period = 1e-4, "// &
+                        "session = 'lab 3' /"//NL)
+        ex = run(exe//' '//dd//'/one.nml --out '//dd, dd)
+        call read_kv_text(dd//'/one.identify', 'session', val)
+        call t%check('model: &measurement session of the deck''s release written', &
+                     ex == 0 .and. trim(val) == 'lab 3')
+        ! --- the one table reader: the same messages in both tables
+        call write_text(dd//'/rt_twice.csv', 'trial,period,period'//NL//'1,1.5,1.5'//NL)
+        call write_text(dd//'/ht_twice.csv', 'hang up_x up_y up_z along_x along_y along_z '// &
+                        'period period'//NL//'1 1 0 0 0 1 0 1.5 1.5'//NL)
+        call both('twice', 'column ''period'' appears twice; allowed: each column once')
+        call write_text(dd//'/rt_unknown.csv', 'trial,perod'//NL//'1,1.5'//NL)
+        call write_text(dd//'/ht_unknown.csv', 'hang up_x up_y up_z along_x along_y along_z '// &
+                        'perod'//NL//'1 1 0 0 0 1 0 1.5'//NL)
+        call both('unknown', 'unknown column ''perod'' (column ')
+        call write_text(dd//'/rt_value.csv', 'trial,period,cycles'//NL//'1,1.5,0.1'//NL)
+        call write_text(dd//'/ht_value.csv', 'hang up_x up_y up_z along_x along_y along_z '// &
+                        'period cycles'//NL//'1 1 0 0 0 1 0 1.5 0.1'//NL)
+        call both('value', 'line 2, column cycles = 0.1; allowed: ')
+    contains
+        !> The fault `what` in a table of releases and in a table of hangs: both refused, each
+        !! message one line naming its table and holding `word`.
+        subroutine both(what, word)
+            character(len=*), intent(in) :: what, word
+            type(deck_t) :: dr, dh
+            type(status_t) :: sr, sh
+            type(measurement_t) :: mr, mh
+            call read_deck_text(dd//'/rt.nml', HEAD//SUSP//BODY//"&measurement trials = "// &
+                                "'rt_"//what//".csv' /"//NL, dr, sr)
+            if (sr%code == 0) call read_releases(dr%measurement, rig_of(dr), start_of(dr), &
+                dr%suspension%cables, deck_inputs(dr, .true.), mr, sr)
+            call read_deck_text(dd//'/ht.nml', "&scene analyses = 'tensor' /"//NL//SUSP// &
+                                '&body mass = 3.1, inertia = 0.05, 0.06, 0.07, cg_depth = '// &
+                                '0.1, cg_offset = 0 /'//NL//"&tensor hangs = 'ht_"//what// &
+                                ".csv' /"//NL, dh, sh)
+            if (sh%code == 0) call read_hangs(dh%tensor, dh%suspension, dh%body, mh, sh)
+            call t%check('model: one reader, '//what//': the table of releases: '//sr%msg, &
+                         sr%code == 2 .and. index(sr%msg, word) > 0 .and. &
+                         index(sr%msg, '&measurement trials = ''rt_'//what//'.csv'': ') == 1)
+            call t%check('model: one reader, '//what//': the table of hangs: '//sh%msg, &
+                         sh%code == 2 .and. index(sh%msg, word) > 0 .and. &
+                         index(sh%msg, '&tensor hangs = ''ht_'//what//'.csv'': ') == 1)
+        end subroutine both
+    end subroutine test_model
 
     real(dp) function kvp(path, key) result(v)
         character(len=*), intent(in) :: path, key

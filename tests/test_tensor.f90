@@ -19,7 +19,8 @@ module test_tensor
     use floquet, only: torsion_period, check_torsion_scene
     use random, only: rng_t, rng_stream, rng_normal
     use output_io, only: read_kv
-    use hang_table, only: hang_t, hang_set_t, read_hangs
+    use measurement, only: measurement_t, hang_t, OBS_HANG
+    use measurement_read, only: read_hangs
     use hang_model, only: tensor_entries, principal_axes, hang_rig, hang_period, &
         torsion_mode, torsion_mode_t, maxima_drift, turned_hang, rest_pose
     use bifilar_model, only: NSTATE, chart_positions
@@ -153,27 +154,28 @@ contains
         type(status_t), intent(out) :: st
         type(hang_t), intent(in), optional :: truth(:)
         real(dp), intent(in), optional :: mass_t, noise(:)
-        type(hang_set_t) :: set
+        type(measurement_t) :: set
         type(hang_t) :: h
         type(rig_t) :: rg
         real(dp) :: m
         integer :: k, n
         n = size(u, 2)
-        allocate (set%hangs(n), set%rows(n))
+        allocate (set%releases(n), set%obs(n))
         m = MASS
         if (present(mass_t)) m = mass_t
         do k = 1, n
-            set%hangs(k) = rig_hang(u(:, k), along_for(u(:, k)), k)
-            h = set%hangs(k)
+            set%releases(k)%hang = rig_hang(u(:, k), along_for(u(:, k)), k)
+            h = set%releases(k)%hang
             if (present(truth)) h = truth(k)
             call hang_rig(m, G0, h, x, rg, st)
-            if (st%code == STATUS_OK) call hang_period(rg, acc12(), amp, set%rows(k)%period, st)
+            if (st%code == STATUS_OK) call hang_period(rg, acc12(), amp, set%obs(k)%period, st)
             if (st%code /= STATUS_OK) return
-            if (present(noise)) set%rows(k)%period = set%rows(k)%period + noise(k)
-            set%rows(k)%hang = k
-            set%rows(k)%line = k + 1
-            set%rows(k)%amplitude = amp
-            set%rows(k)%u_period = d%tensor%u(7)
+            if (present(noise)) set%obs(k)%period = set%obs(k)%period + noise(k)
+            set%obs(k)%kind = OBS_HANG
+            set%obs(k)%release = k
+            set%obs(k)%line = k + 1
+            set%obs(k)%amplitude = amp
+            set%obs(k)%u_period = d%tensor%u(7)
         end do
         call problem_of(d%tensor, d%suspension, d%body, accuracy_of(d), set, prob)
     end subroutine make_problem
@@ -478,7 +480,7 @@ contains
     subroutine test_points(t)
         type(tester_t), intent(inout) :: t
         type(deck_t) :: d1, d2
-        type(hang_set_t) :: s1, s2
+        type(measurement_t) :: s1, s2
         type(tensor_problem_t) :: p1, p2
         type(tensor_fit_t) :: f1, f2
         type(status_t) :: st
@@ -523,12 +525,14 @@ contains
         call t%check('points: read: '//msg_of(st), st%code == STATUS_OK)
         if (st%code /= STATUS_OK) return
         do k = 1, 9
-            call t%check('points: hang '//itoa(k)//' has the same up, along, b_prime, cg', &
-                         maxval(abs(s1%hangs(k)%up - s2%hangs(k)%up)) < 1.0e-12_dp .and. &
-                         maxval(abs(s1%hangs(k)%along - s2%hangs(k)%along)) < 1.0e-12_dp .and. &
-                         abs(s2%hangs(k)%b_prime - 0.4_dp) < 1.0e-12_dp .and. &
-                         abs(s2%hangs(k)%cg_depth - 0.1_dp) < 1.0e-12_dp .and. &
-                         abs(s2%hangs(k)%cg_offset) < 1.0e-12_dp)
+            associate (h1 => s1%releases(k)%hang, h2 => s2%releases(k)%hang)
+                call t%check('points: hang '//itoa(k)//' has the same up, along, b_prime, cg', &
+                             maxval(abs(h1%up - h2%up)) < 1.0e-12_dp .and. &
+                             maxval(abs(h1%along - h2%along)) < 1.0e-12_dp .and. &
+                             abs(h2%b_prime - 0.4_dp) < 1.0e-12_dp .and. &
+                             abs(h2%cg_depth - 0.1_dp) < 1.0e-12_dp .and. &
+                             abs(h2%cg_offset) < 1.0e-12_dp)
+            end associate
         end do
         call problem_of(d1%tensor, d1%suspension, d1%body, accuracy_of(d1), s1, p1)
         call problem_of(d2%tensor, d2%suspension, d2%body, accuracy_of(d2), s2, p2)
@@ -687,7 +691,8 @@ contains
 
     !> Refusals through the executable: one line on stderr naming the deck and what is
     !! wrong, exit 2, no file: 5 directions, 6 coplanar directions, up = 0, a missing column,
-    !! an unknown column, along parallel to up, C/D points without &tensor cg.
+    !! an unknown column, along parallel to up, C/D points without &tensor cg, a tare or an
+    !! added moment (the tensor's fit takes none).
     subroutine test_refusals(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
@@ -708,16 +713,27 @@ contains
         call one('parallel', HEAD//ROWS5//'6 0 1 1 0 2 2 1.5'//NL, 'is 0 or parallel to up')
         call one('nocg', 'hang c_x c_y c_z d_x d_y d_z period'//NL//'1 0 0 0 1 0 0 1.5'//NL, &
                  'need the mass centre in the body frame')
+        ! a tare would be silently left out of the tensor's fit: refused, as is a known
+        ! moment added
+        call one('tare', HEAD//ROWS5//'6 -1 0 1 0 1 0 1.5'//NL, &
+                 'the tensor''s fit takes none', '&measurement tare_I1 = 0.01, u_tare_i1 = 1e-4 /')
+        call one('added', HEAD//ROWS5//'6 -1 0 1 0 1 0 1.5'//NL, &
+                 'added_inertia = 0.02', '&measurement added_inertia = 0.02 /')
     contains
-        subroutine one(label, table, word)
+        !> The deck of `table` (with the deck line `extra`) refused: exit 2, one line on
+        !! stderr naming the deck and holding `word`, no file.
+        subroutine one(label, table, word, extra)
             character(len=*), intent(in) :: label, table, word
-            character(len=:), allocatable :: dir
+            character(len=*), intent(in), optional :: extra
+            character(len=:), allocatable :: dir, more
             integer :: ex
             logical :: l1, l2, l3
+            more = ''
+            if (present(extra)) more = extra//NL
             dir = SCR//'/ref_'//label
             call write_text(dir//'.txt', table)
             call write_text(dir//'.nml', "&scene analyses = 'tensor' /"//NL//RIG_LINES// &
-                            "&tensor hangs = 'ref_"//label//".txt' /"//NL)
+                            "&tensor hangs = 'ref_"//label//".txt' /"//NL//more)
             call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//' && '//exe//' '// &
                 dir//'.nml --out '//dir//' > '//dir//'.stdout 2> '//dir//'.stderr', exitstat=ex)
             call t%check('refusal '//label//': exit 2', ex == 2)

@@ -7,7 +7,7 @@ submodule (design) design_impl
     use text, only: itoa, sci, fixed
     use deck, only: deck_t, deck_echo
     use geometry, only: pendulum_t
-    use rig, only: rig_t, accuracy_t, make_pendulum, move_b_prime
+    use rig, only: make_pendulum, move_b_prime
     use deck_runs, only: rig_of, accuracy_of, undamped_ready
     use floquet, only: check_torsion_scene, STABILITY_MARGIN, floquet_point, CHART_INVALID, &
                        CHART_FAILED, point_values_valid

@@ -60,7 +60,7 @@ module identify
     use budget, only: budget_row_t
     use, intrinsic :: iso_fortran_env, only: int64
     use records, only: record_t
-    use trials, only: trial_set_t
+    use measurement, only: measurement_t
     use sweep_engine, only: sweep_task_t, sweep_options_t, sweep_report_t
     use monte_carlo, only: MC_ANALYSIS
     use analysis_base, only: analysis_t, warning_t, WORD_LEN
@@ -71,13 +71,13 @@ module identify
 
     !> What identify_ready read, kept for the run (a record read twice could be
     !! replaced in between, a logger still writing, and its second reading went unchecked):
-    !! the releases (the deck's one or a table's) and each release's record, read and
-    !! checked once, with the CRC-64 of the record file's bytes as read.
+    !! the measurement (module measurement: the deck's one release or a table's, their
+    !! timings or records, the common inputs, the tares), each record read and checked once,
+    !! with the CRC-64 of the record file's bytes as read; the releases that failed, where
+    !! &measurement on_failure = 'skip', marked skipped.
     type, public :: identify_input_t
         logical :: ready = .false.              !! filled by identify_ready
-        type(trial_set_t) :: ts                 !! the releases
-        type(record_t), allocatable :: recs(:)  !! each release's record (records only)
-        integer(int64), allocatable :: crc(:)   !! each record file's CRC-64 (CRC-64/XZ)
+        type(measurement_t) :: m                !! the measurement
     end type identify_input_t
 
     !> What identify found (deck units; the record's units for residuals).
@@ -99,6 +99,7 @@ module identify
         real(dp) :: u_i1_reproducibility = 0.0_dp   !! what their scatter added to it
         real(dp) :: birge_ratio = -1.0_dp, p_value = -1.0_dp    !! -1: not tested
         integer :: n_trials = 1                 !! releases pooled
+        integer :: n_trials_skipped = 0         !! releases left out (on_failure = 'skip')
         character(len=14) :: consistency = 'single release'
         real(dp) :: u_i1_mc = -1.0_dp, mc_mean = 0.0_dp     !! Monte Carlo (when asked)
         real(dp) :: i1_linear = 0.0_dp, linear_error = 0.0_dp
@@ -119,6 +120,9 @@ module identify
         character(len=16) :: period_model = ''  !! 'exact torsion', 'simulated', 'record'
         logical :: periods_exact = .true.       !! periods of pure torsion (else simulated)
         character(len=64), allocatable :: trial_label(:)    !! each release's label
+        character(len=64), allocatable :: trial_session(:)  !! its session ('' : none)
+        !> the releases left out: each named with its row ("trial 'A' (line 3)")
+        type(warning_t), allocatable :: skipped(:)
         real(dp), allocatable :: trial_i1(:), trial_u(:)    !! each release's I1 and own u
         type(budget_row_t), allocatable :: budget(:)
         real(dp), allocatable :: model(:)       !! the model at the record's times

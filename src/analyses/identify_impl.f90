@@ -13,13 +13,15 @@ submodule (identify) identify_impl
     use bifilar_model, only: NSTATE
     use rig, only: rig_t, start_t, accuracy_t, make_pendulum, start_state
     use deck_runs, only: rig_of, start_of, accuracy_of, deck_inputs, record_format_of, &
-        record_file, read_trials
+        record_file
     use estimator, only: lsq_result_t, lsq_jacobian, estimate, lsq_options_t, lsq_covariance, &
         LOSS_SQUARES, LOSS_HUBER
     use budget, only: input_u_t, ROW_INPUT, ROW_TIMING, ROW_AMPLITUDE, ROW_FIT, ROW_RELEASE, &
         ROW_TARE, ROW_ADDED
     use records, only: read_record_file, record_format_t, mean_period
-    use trials, only: trial_set_t, trial_t, RIG_COLUMNS
+    use measure_groups, only: measurement_group_t
+    use measurement, only: release_t, observation_t, OBS_RECORD, OBS_TIMING, RIG_COLUMNS
+    use measurement_read, only: read_releases, release_inputs
     use inputs, only: input_t, set_input
     use pooling, only: pooled_t, pool_releases
     use stats, only: coverage_factor, welch_satterthwaite, NU_INFINITE
@@ -39,8 +41,9 @@ submodule (identify) identify_impl
     use analysis_base, only: ranks_note, resume_note
     implicit none
 
-    !> One release analysed alone.
-    type :: release_t
+    !> One release analysed alone (module measurement's release_t is the release; this is
+    !! what its fit found).
+    type :: release_fit_t
         real(dp) :: i1 = 0.0_dp                 !! its I1 (all that hung)
         real(dp) :: u_own = 0.0_dp              !! the u only this release has
         real(dp) :: nu_own = NU_INFINITE        !! its degrees of freedom
@@ -71,7 +74,7 @@ submodule (identify) identify_impl
         integer :: iterations = 0, evaluations = 0, samples = 0
         integer(int64) :: crc = 0               !! its record file's CRC-64
         type(warning_t), allocatable :: warnings(:)
-    end type release_t
+    end type release_fit_t
 
     ! TRIANGLE_MARGIN: an I1 more than this factor above I2 + I3 (or below |I2 - I3| over
     ! it) is refused; LINEAR_GAP_MAX: at amplitudes up to 90 degrees, an I1 further than this
@@ -83,22 +86,24 @@ contains
 
     !> The preconditions of analyses = 'identify', checked before any computing: the
     !! paper's model; one of periods, a record or a table of releases; I1 estimated (and
-    !! only I1 from periods); every release readable (its periods possible on a symmetric
-    !! rig, its record sound and long enough), and what no rig gives refused at once
-    !! (module work_estimate: periods or a record's swing far beyond the rig's, the
+    !! only I1 from periods); the measurement read into its model (module measurement_read:
+    !! the deck's release or the table's, each period divided by its cycles once); every
+    !! release readable (its record sound and long enough), and what no rig gives refused at
+    !! once (module work_estimate: periods or a record's swing far beyond the rig's, the
     !! classical I1 beyond the triangle inequality, a record sampled too coarsely, with a
     !! long gap, in degrees without record_units); Monte Carlo only for the deck's own
-    !! release.  The releases and their records are read once, into `input`, with each
-    !! record's CRC-64.  The work is estimated; when it is long, one note line says so.
+    !! release.  Each record is read once, into its observation, with its CRC-64.  A release
+    !! that fails stops the run, or with &measurement on_failure = 'skip' is left out (named
+    !! with its row).  The work is estimated; when it is long, one note line says so.  A
+    !! period no positive I1 gives is refused by the fit itself (module period_inversion),
+    !! before any file is written.
     module procedure identify_ready
-        type(identify_input_t) :: inp
-        type(trial_set_t) :: ts
-        type(period_fit_t) :: f
+        type(measurement_t) :: m
         type(pendulum_t) :: p
-        type(rig_t) :: rg
-        real(dp) :: y0(NSTATE), th0(5), secs, total
-        character(len=:), allocatable :: bytes, what, first_what
-        integer :: i, nsrc, nrec, nup, j
+        real(dp) :: secs, total
+        character(len=:), allocatable :: what, first_what
+        type(status_t) :: first_failure
+        integer :: i, nsrc, nfirst
         stat%code = 0
         if (trim(d%scene%model) /= 'kane') then
             call set_error(stat, ERR_DECK, 'analyses = ''identify'': &scene model = '''// &
@@ -130,94 +135,154 @@ contains
                 'their Type A part), or periods or a record with monte_carlo')
             return
         end if
-        call read_trials(d, ts, stat)
+        call read_releases(d%measurement, rig_of(d), start_of(d), d%suspension%cables, &
+                           deck_inputs(d, .true.), m, stat)
         if (stat%code /= 0) return
-        if (any([(len(ts%t(i)%record) > 0, i=1, size(ts%t))]) .and. &
-            any([(len(ts%t(i)%record) == 0, i=1, size(ts%t))])) then
-            call set_error(stat, ERR_DECK, '&measurement trials = '// &
-                quoted(d%measurement%trials)//': releases of periods and releases of '// &
-                'records in one table; allowed: one kind of release per table (a deck per kind)')
-            return
-        end if
-        nrec = count([(len(ts%t(i)%record) > 0, i=1, size(ts%t))])
-        allocate (inp%recs(nrec), inp%crc(nrec))
         total = 0.0_dp
         first_what = ''
-        j = 0
-        do i = 1, size(ts%t)
-            rg = trial_rig(d, ts%t(i))
-            if (len(ts%t(i)%record) == 0) then
-                if (count_words(d%measurement%estimate) /= 1) then
-                    call set_error(stat, ERR_DECK, '&measurement estimate = '''// &
-                        trim(d%measurement%estimate)//''': with periods only I1 is estimated; '// &
-                        'allowed: ''I1'' (c_v, c_q, amplitude, t0, bias need a record)')
-                    return
-                end if
-                call make_pendulum(rg, p, stat)
+        nfirst = 0
+        first_failure%code = 0
+        do i = 1, size(m%releases)
+            call ready_release(d, m, i, secs, what, stat)
+            if (stat%code /= 0) then
+                if (trim(d%measurement%on_failure) /= 'skip') return
+                if (first_failure%code == 0) first_failure = stat
+                call skip_release(m, i, stat)
+                cycle
+            end if
+            total = total + secs
+            if (nfirst == 0) then
+                first_what = what
+                nfirst = i
+            end if
+        end do
+        if (nfirst == 0) then
+            ! every release failed: the first failure
+            stat = first_failure
+            return
+        end if
+        if (size(m%releases) > 1) first_what = itoa(size(m%releases))//' releases, the '// &
+            'first: '//first_what
+        call work_note(d%path, total, first_what)
+        if (present(input)) then
+            input%ready = .true.
+            call move_alloc(m%releases, input%m%releases)
+            call move_alloc(m%obs, input%m%obs)
+            call move_alloc(m%inputs, input%m%inputs)
+            call move_alloc(m%tares, input%m%tares)
+            input%m%source = m%source
+            input%m%from_table = m%from_table
+        end if
+    end procedure identify_ready
+
+    !> Release i of a measurement against what identify needs (see identify_ready): its
+    !! timings against its rig, or its record read (once, with its CRC-64) and checked; the
+    !! work it asks for (seconds, in words).  A failure names the release.
+    subroutine ready_release(d, m, i, secs, what, stat)
+        type(deck_t), intent(in) :: d
+        type(measurement_t), intent(inout) :: m
+        integer, intent(in) :: i
+        real(dp), intent(out) :: secs
+        character(len=:), allocatable, intent(out) :: what
+        type(status_t), intent(out) :: stat
+        type(pendulum_t) :: p
+        type(measurement_group_t) :: mea
+        real(dp) :: y0(NSTATE), th0(5)
+        character(len=:), allocatable :: bytes, name
+        integer :: k, nup, n
+        stat%code = 0
+        secs = 0.0_dp
+        what = ''
+        mea = mea_of(d, m%releases(i))
+        associate (rg => m%releases(i)%rig)
+        k = m%record_of(i)
+        if (k == 0) then
+            if (count_words(mea%estimate) /= 1) then
+                call set_error(stat, ERR_DECK, estimate_name(d, m, i)//' = '''// &
+                    trim(mea%estimate)//''': with periods only I1 is estimated; '// &
+                    'allowed: ''I1'' (c_v, c_q, amplitude, t0, bias need a record)')
+                return
+            end if
+            call make_pendulum(rg, p, stat)
+            if (stat%code /= 0) then
+                call in_trial(m, i, stat)
+                return
+            end if
+            ! periods no rig gives, a classical I1 beyond the triangle: refused now
+            call check_timings(d%body, rg, m%periods_of(i), m%amplitudes_of(i), &
+                               .not. m%from_table, stat)
+            if (stat%code /= 0) then
+                call in_trial(m, i, stat)
+                return
+            end if
+            n = size(m%of_release(i))
+            nup = count(m%u_totals_of(i) > 0.0_dp)
+            if (nup == 0 .and. n >= 2) nup = n
+            call periods_work(d, rg, m%periods_of(i), m%amplitudes_of(i), nup, secs, what)
+        else
+            name = record_name(d, m, i)
+            associate (o => m%obs(k))
+                call read_record_file(o%file, record_format_of(d), o%rec, stat, bytes)
                 if (stat%code /= 0) then
-                    call in_trial(ts, i, stat)
+                    stat%msg = name//': '//stat%msg
                     return
                 end if
-                ! periods no rig gives, a classical I1 beyond the triangle: refused now
-                call check_timings(d%body, rg, ts%t(i)%periods/ts%t(i)%cycles, ts%t(i)%amps, &
-                                   .not. ts%from_table, stat)
-                if (stat%code /= 0) then
-                    call in_trial(ts, i, stat)
-                    return
-                end if
-                if (is_torsion_rig(rg)) then
-                    ! a period no positive I1 gives: refused now (cheap on a symmetric rig)
-                    call invert_periods(rg, accuracy_of(d), ts%t(i)%periods/ts%t(i)%cycles, &
-                                        ts%t(i)%amps, input_u(d), f, stat)
-                    if (stat%code == ERR_DECK) then
-                        call in_trial(ts, i, stat)
-                        return
-                    end if
-                    stat%code = 0
-                end if
-                nup = count(ts%t(i)%u_period > 0.0_dp)
-                if (nup == 0 .and. size(ts%t(i)%periods) >= 2) nup = size(ts%t(i)%periods)
-                call periods_work(d, rg, ts%t(i)%periods/ts%t(i)%cycles, ts%t(i)%amps, nup, &
-                                  secs, what)
-            else
-                j = j + 1
-                call read_record_file(ts%t(i)%record, record_format_of(d), inp%recs(j), &
-                                      stat, bytes)
-                if (stat%code /= 0) then
-                    stat%msg = record_name(d, ts, i)//': '//stat%msg
-                    return
-                end if
-                inp%crc(j) = crc64_of(bytes)
+                o%crc = crc64_of(bytes)
+                o%have_record = .true.
                 deallocate (bytes)
-                call check_record(d, rg, inp%recs(j), record_name(d, ts, i), stat)
+                call check_record(d, mea, rg, o%rec, name, stat)
                 if (stat%code /= 0) return
                 call make_pendulum(rg, p, stat)
                 if (stat%code == 0) call start_state(start_of(d), p, y0, th0, stat)
                 if (stat%code /= 0) then
-                    call in_trial(ts, i, stat)
+                    call in_trial(m, i, stat)
                     return
                 end if
                 ! a swing no rig gives (times in ms), too coarse, a long gap, degrees
-                call check_record_times(d%body, d%measurement, d%start, rg, inp%recs(j), &
-                                        record_name(d, ts, i), stat)
+                call check_record_times(d%body, d%measurement, d%start, rg, o%rec, name, stat)
                 if (stat%code /= 0) return
-                call record_work(d, inp%recs(j), secs, what)
-            end if
-            total = total + secs
-            if (i == 1) first_what = what
-        end do
-        if (size(ts%t) > 1) first_what = itoa(size(ts%t))//' releases, the first: '// &
-            first_what
-        call work_note(d%path, total, first_what)
-        if (present(input)) then
-            input%ready = .true.
-            call move_alloc(ts%t, input%ts%t)
-            input%ts%per_trial = ts%per_trial
-            input%ts%from_table = ts%from_table
-            call move_alloc(inp%recs, input%recs)
-            call move_alloc(inp%crc, input%crc)
+                call record_work(d, mea, o%rec, secs, what)
+            end associate
         end if
-    end procedure identify_ready
+        end associate
+    end subroutine ready_release
+
+    !> Release i left out (&measurement on_failure = 'skip'): marked, with its failure
+    !! (stat, which names the release and its row), and stat cleared.
+    subroutine skip_release(m, i, stat)
+        type(measurement_t), intent(inout) :: m
+        integer, intent(in) :: i
+        type(status_t), intent(inout) :: stat
+        m%releases(i)%skipped = .true.
+        m%releases(i)%failure = stat%msg
+        if (index(stat%msg, m%named(i)) == 0) m%releases(i)%failure = m%named(i)//': '// &
+            stat%msg
+        stat%code = 0
+        stat%msg = ''
+    end subroutine skip_release
+
+    !> The &measurement group as release r's fit takes it: the deck's, with the release's
+    !! own estimate (a column estimate of the table of releases).
+    pure function mea_of(d, r) result(mea)
+        type(deck_t), intent(in) :: d
+        type(release_t), intent(in) :: r
+        type(measurement_group_t) :: mea
+        mea = d%measurement
+        if (allocated(r%estimate)) mea%estimate = r%estimate
+    end function mea_of
+
+    !> How release i's estimate is named in messages: the deck's key, or the table's
+    !! column for a release with an estimate of its own.
+    function estimate_name(d, m, i) result(s)
+        type(deck_t), intent(in) :: d
+        type(measurement_t), intent(in) :: m
+        integer, intent(in) :: i
+        character(len=:), allocatable :: s
+        s = '&measurement estimate'
+        if (.not. allocated(m%releases(i)%estimate)) return
+        if (trim(m%releases(i)%estimate) /= trim(d%measurement%estimate)) &
+            s = m%source//', '//m%named(i)//', estimate'
+    end function estimate_name
 
     !> The work of a release of timed periods (per cycle, at amps degrees; nup of them with
     !! a u), in wall seconds (module work_estimate's count of model periods times one period
@@ -260,8 +325,9 @@ contains
     !> The work of a record fit, in wall seconds (module work_estimate's count of runs over
     !! the whole record times one run timed now over its first five periods, scaled to its
     !! span) and in words.
-    subroutine record_work(d, rec, seconds, what)
+    subroutine record_work(d, mea, rec, seconds, what)
         type(deck_t), intent(in) :: d
+        type(measurement_group_t), intent(in) :: mea    !! the release's (its estimate)
         type(record_t), intent(in) :: rec
         real(dp), intent(out) :: seconds
         character(len=:), allocatable, intent(out) :: what
@@ -275,10 +341,9 @@ contains
         what = ''
         n = size(rec%t)
         if (n < 3) return
-        call fit_problem(rig_of(d), start_of(d), accuracy_of(d), d%measurement, rec, prob, p0, &
-                         h)
+        call fit_problem(rig_of(d), start_of(d), accuracy_of(d), mea, rec, prob, p0, h)
         span = rec%t(n) - rec%t(prob%ifirst)
-        if (.not. d%measurement%estimated('t0')) span = rec%t(n)
+        if (.not. mea%estimated('t0')) span = rec%t(n)
         tsw = record_swing_period(rec)
         if (.not. (tsw > 0.0_dp)) then
             call reference_periods(d%body, prob%rg, ta, tg)
@@ -287,22 +352,24 @@ contains
         prob%nuse = max(prob%ifirst + 1, min(n, count(rec%t <= rec%t(prob%ifirst) + &
                                                       5.0_dp*tsw)))
         part = rec%t(prob%nuse) - rec%t(prob%ifirst)
-        if (.not. d%measurement%estimated('t0')) part = rec%t(prob%nuse)
+        if (.not. mea%estimated('t0')) part = rec%t(prob%nuse)
         allocate (r(prob%nres()))
         call system_clock(c0, rate)
         call prob%residual(p0, r, st)
         call system_clock(c1)
         one = real(c1 - c0, dp)/real(rate, dp)
         if (part > 0.0_dp) one = one*max(1.0_dp, span/part)
-        call record_runs(deck_inputs(d, .true.), d%measurement, d%integration, prob%np, span, &
-                         span/max(tsw, tiny(1.0_dp)), one, runs, what)
+        call record_runs(deck_inputs(d%suspension, d%body, mea, d%start, .true.), mea, &
+                         d%integration, prob%np, span, span/max(tsw, tiny(1.0_dp)), one, runs, &
+                         what)
         seconds = runs*one
     end subroutine record_work
 
     !> A record's checks beyond its file: times the model can run, long enough to show a
     !! swing, more samples than parameters, 'amplitude' only with a raised start.
-    subroutine check_record(d, rg, rec, name, stat)
+    subroutine check_record(d, mea, rg, rec, name, stat)
         type(deck_t), intent(in) :: d
+        type(measurement_group_t), intent(in) :: mea    !! the release's (its estimate)
         type(rig_t), intent(in) :: rg
         type(record_t), intent(in) :: rec
         character(len=*), intent(in) :: name    !! for messages
@@ -316,7 +383,7 @@ contains
         ! from the release unless t0 is estimated
         t_max = TAU_END_MAX/sqrt(rg%g/rg%b_prime)
         span = rec%t(n)
-        if (d%measurement%estimated('t0')) span = rec%t(n) - rec%t(1)
+        if (mea%estimated('t0')) span = rec%t(n) - rec%t(1)
         if (span > t_max) then
             call set_error(stat, ERR_DECK, name//': it spans '//sci(span)//' s from the '// &
                 'release, beyond what the model runs; allowed: up to '//sci(t_max)// &
@@ -332,13 +399,13 @@ contains
                 'spanning at least '//sci(1.0e-3_dp*t_max/TAU_END_MAX)//' s (tau >= 1e-3)')
             return
         end if
-        if (d%measurement%estimated('amplitude') .and. trim(d%start%mode) /= 'raised') then
+        if (mea%estimated('amplitude') .and. trim(d%start%mode) /= 'raised') then
             call set_error(stat, ERR_DECK, '&measurement estimate = '''// &
-                trim(d%measurement%estimate)//''': amplitude is the raised start''s; '// &
+                trim(mea%estimate)//''': amplitude is the raised start''s; '// &
                 'allowed with &start mode = ''raised''')
             return
         end if
-        np = count_words(d%measurement%estimate)
+        np = count_words(mea%estimate)
         if (n <= np) then
             call set_error(stat, ERR_DECK, name//': '//itoa(n)//' samples for '//itoa(np)// &
                 ' parameters; allowed: more samples than parameters')
@@ -346,53 +413,26 @@ contains
         end if
     end subroutine check_record
 
-    !> How a release's record is named in messages.
-    function record_name(d, ts, i) result(s)
+    !> How release i's record is named in messages.
+    function record_name(d, m, i) result(s)
         type(deck_t), intent(in) :: d
-        type(trial_set_t), intent(in) :: ts
+        type(measurement_t), intent(in) :: m
         integer, intent(in) :: i
         character(len=:), allocatable :: s
-        if (ts%from_table) then
-            s = '&measurement trials = '//quoted(d%measurement%trials)//', trial '// &
-                quoted(ts%t(i)%label)//' (line '//itoa(ts%t(i)%line)//'), record '// &
-                quoted(ts%t(i)%record)
+        if (m%from_table) then
+            s = m%source//', '//m%named(i)//', record '//quoted(m%obs(m%record_of(i))%file)
         else
             s = '&measurement record = '//quoted(d%measurement%record)
         end if
     end function record_name
 
     !> A failure of release i of a table: the message names it.
-    subroutine in_trial(ts, i, stat)
-        type(trial_set_t), intent(in) :: ts
+    subroutine in_trial(m, i, stat)
+        type(measurement_t), intent(in) :: m
         integer, intent(in) :: i
         type(status_t), intent(inout) :: stat
-        if (ts%from_table) stat%msg = 'trial '//quoted(ts%t(i)%label)//' (line '// &
-            itoa(ts%t(i)%line)//'): '//stat%msg
+        if (m%from_table) stat%msg = m%named(i)//': '//stat%msg
     end subroutine in_trial
-
-    !> The rig of a release: the deck's, with the table's values of l, l_prime, b, b_prime,
-    !! mass (a changed b_prime keeps the mass centre's depth below, and offset along, CD).
-    function trial_rig(d, tr) result(rg)
-        type(deck_t), intent(in) :: d
-        type(trial_t), intent(in) :: tr
-        type(rig_t) :: rg
-        type(start_t) :: st
-        real(dp) :: deckv(5)
-        integer :: k
-        rg = rig_of(d)
-        st = start_of(d)
-        deckv = [d%suspension%l, d%suspension%l_prime, d%suspension%b, d%suspension%b_prime, &
-                 d%body%mass]
-        do k = 1, 5
-            if (tr%rig(k) == deckv(k)) cycle
-            if (d%suspension%cables > 2 .and. k <= 2) then
-                ! a platform: one length for every cable (the column l; l_prime follows it)
-                if (k == 1) call set_input(rg, st, 'length', tr%rig(1))
-            else
-                call set_input(rg, st, RIG_COLUMNS(k), tr%rig(k))
-            end if
-        end do
-    end function trial_rig
 
     !> Run analyses = 'identify' for a deck and write OUTDIR/NAME.identify and the figure's
     !! data (NAME.fit.dat for records, NAME.periods.dat for periods) into `files`.  The
@@ -403,7 +443,7 @@ contains
         real(dp) :: c0, c1
         type(cert_figure_data_t) :: fig
         type(sweep_report_t) :: rep
-        type(release_t), allocatable :: rels(:)
+        type(release_fit_t), allocatable :: rels(:)
         type(identify_input_t) :: own
         logical :: have
         call cpu_time(c0)
@@ -411,11 +451,11 @@ contains
         have = .false.
         if (present(input)) have = input%ready
         if (have) then
-            call identify_releases(d, input, res, rels, stat, outdir, options, rep, files)
+            call identify_releases(d, input%m, res, rels, stat, outdir, options, rep, files)
         else
             ! read (once) and checked here: the driver's identify_ready kept nothing
             call identify_ready(d, stat, own)
-            if (stat%code == 0) call identify_releases(d, own, res, rels, stat, outdir, &
+            if (stat%code == 0) call identify_releases(d, own%m, res, rels, stat, outdir, &
                                                        options, rep, files)
         end if
         if (present(report)) report = rep
@@ -443,50 +483,60 @@ contains
         end associate
     end function input_u
 
-    !> Every release of the deck analysed alone, then pooled (combine); the Monte Carlo of
+    !> Every release of the measurement analysed alone (those identify_ready left out
+    !! skipped; a release whose analysis fails is left out too with &measurement
+    !! on_failure = 'skip', else the run stops), then pooled (combine); the Monte Carlo of
     !! the deck's one release when asked.
-    subroutine identify_releases(d, inp, res, rels, stat, outdir, options, report, files)
+    subroutine identify_releases(d, m, res, rels, stat, outdir, options, report, files)
         type(deck_t), intent(in) :: d
-        type(identify_input_t), intent(in) :: inp   !! the releases and records, read once
+        type(measurement_t), intent(in) :: m        !! the measurement, its records read once
         type(identify_result_t), intent(out) :: res
-        type(release_t), allocatable, intent(out) :: rels(:)
+        type(release_fit_t), allocatable, intent(out) :: rels(:)
         type(status_t), intent(out) :: stat
         character(len=*), intent(in), optional :: outdir
         type(sweep_options_t), intent(in), optional :: options
         type(sweep_report_t), intent(inout), optional :: report
         type(out_files_t), intent(in), optional :: files
-        type(input_t), allocatable :: x(:), xr(:)
+        type(measurement_t) :: mk
+        type(release_fit_t), allocatable :: all(:)
+        type(measurement_group_t) :: mea
+        type(status_t) :: first_failure
         real(dp) :: mean, sdev
-        integer :: i, k, j, jr
+        integer :: i, k
+        logical, allocatable :: ok(:)
         stat%code = 0
-        x = deck_inputs(d, .true.)
-        allocate (rels(size(inp%ts%t)), xr(size(x)))
-        jr = 0
-        associate (ts => inp%ts)
-        do i = 1, size(ts%t)
-            xr(:) = x
-            do k = 1, 5
-                do j = 1, size(xr)
-                    if (xr(j)%name == RIG_COLUMNS(k) .or. (k == 1 .and. xr(j)%name == &
-                        'length')) xr(j)%value = ts%t(i)%rig(k)
-                end do
-            end do
-            if (len(ts%t(i)%record) == 0) then
-                call release_periods(d, trial_rig(d, ts%t(i)), ts%t(i), xr, ts%per_trial, &
-                                     rels(i), stat)
+        mk = m
+        allocate (all(size(mk%releases)), ok(size(mk%releases)))
+        ok = .not. mk%releases%skipped
+        first_failure%code = 0
+        do i = 1, size(mk%releases)
+            if (.not. ok(i)) cycle
+            mea = mea_of(d, mk%releases(i))
+            k = mk%record_of(i)
+            if (k == 0) then
+                call release_periods(d, mk, i, release_inputs(mk%inputs, &
+                                     mk%releases(i)%rig), all(i), stat)
             else
-                jr = jr + 1
-                call release_record(d, trial_rig(d, ts%t(i)), inp%recs(jr), xr, &
-                                    ts%per_trial, rels(i), stat)
-                rels(i)%crc = inp%crc(jr)
+                call release_record(d, mea, mk%releases(i)%rig, mk%obs(k)%rec, &
+                                    release_inputs(deck_inputs(d%suspension, d%body, mea, &
+                                    d%start, .true.), mk%releases(i)%rig), mk%inputs, &
+                                    mk%releases(i)%own, all(i), stat)
+                all(i)%crc = mk%obs(k)%crc
             end if
             if (stat%code /= 0) then
-                call in_trial(ts, i, stat)
-                return
+                call in_trial(mk, i, stat)
+                if (trim(d%measurement%on_failure) /= 'skip') return
+                if (first_failure%code == 0) first_failure = stat
+                call skip_release(mk, i, stat)
+                ok(i) = .false.
             end if
         end do
-        end associate
-        call combine(d, rels, x, inp%ts, res, stat)
+        if (.not. any(ok)) then
+            stat = first_failure
+            return
+        end if
+        rels = pack(all, ok)
+        call combine(d, mk, pack([(i, i=1, size(ok))], ok), rels, res, stat)
         if (stat%code /= 0) return
         if (d%measurement%monte_carlo > 0) then
             if (res%from_record) then
@@ -500,8 +550,11 @@ contains
                                             mean, sdev, stat, outdir, options, report, files, &
                                             r%cycles)
                 end associate
-                res%u_i1_mc = sqrt(sdev**2 + d%measurement%u_tare_i1**2 + &
-                                   d%measurement%u_added_inertia**2)
+                res%u_i1_mc = sdev**2
+                do k = 1, size(mk%tares)
+                    res%u_i1_mc = res%u_i1_mc + mk%tares(k)%u**2
+                end do
+                res%u_i1_mc = sqrt(res%u_i1_mc)
                 res%mc_mean = mean - (res%i1_total - res%i1)
             end if
         end if
@@ -511,7 +564,7 @@ contains
     !! scatter for u_period when that is what the release used.
     pure function mc_u(d, r) result(u)
         type(deck_t), intent(in) :: d
-        type(release_t), intent(in) :: r
+        type(release_fit_t), intent(in) :: r
         type(input_u_t) :: u
         u = input_u(d)
         if (r%u_scatter >= 0.0_dp) u%period = r%u_scatter
@@ -521,16 +574,16 @@ contains
     !! the first-order budget, Monte Carlo when asked (its sweep checkpointed in outdir
     !! when given, see run_identify).
     module procedure identify_record
-        type(release_t) :: rels(1)
-        type(trial_set_t) :: ts
-        type(input_t), allocatable :: x(:)
-        x = deck_inputs(d, .true.)
-        allocate (ts%t(1))
-        ts%t(1)%label = '1'
-        ts%t(1)%record = record_file(d)
-        call release_record(d, rig_of(d), rec, x, ts%per_trial, rels(1), stat)
+        type(release_fit_t) :: rels(1)
+        type(measurement_t) :: m
+        stat%code = 0
+        call read_releases(d%measurement, rig_of(d), start_of(d), d%suspension%cables, &
+                           deck_inputs(d, .true.), m, stat)
         if (stat%code /= 0) return
-        call combine(d, rels, x, ts, res, stat)
+        call release_record(d, d%measurement, rig_of(d), rec, m%inputs, m%inputs, &
+                            m%releases(1)%own, rels(1), stat)
+        if (stat%code /= 0) return
+        call combine(d, m, [1], rels, res, stat)
         if (stat%code /= 0) return
         if (d%measurement%monte_carlo > 0) call record_monte_carlo(d, rels(1), res, stat, outdir, &
                                                                    options, report, files)
@@ -538,40 +591,40 @@ contains
 
     !> Is budget row `row` a part of the release's own u (measured anew for it) rather than
     !! common to every release?  Its timings, its amplitudes, its record's fit, and the rig
-    !! inputs the table of releases gives per release (per_trial).
-    pure logical function own_row(row, per_trial)
+    !! inputs the table of releases gives per release (rig_own).
+    pure logical function own_row(row, rig_own)
         type(budget_row_t), intent(in) :: row
-        logical, intent(in) :: per_trial(5)
+        logical, intent(in) :: rig_own(5)
         select case (row%kind)
         case (ROW_TIMING, ROW_AMPLITUDE, ROW_FIT)
             own_row = .true.
         case (ROW_INPUT)
-            own_row = per_trial_input(row%input, per_trial)
+            own_row = own_rig_input(row%input, rig_own)
         case default
             own_row = .false.
         end select
     end function own_row
 
     !> Is input x a part of the release's own u (own_row of its row)?
-    pure logical function own_input(x, per_trial)
+    pure logical function own_input(x, rig_own)
         type(input_t), intent(in) :: x
-        logical, intent(in) :: per_trial(5)
+        logical, intent(in) :: rig_own(5)
         own_input = input_kind(x) == ROW_AMPLITUDE
-        if (.not. own_input) own_input = per_trial_input(x%name, per_trial)
+        if (.not. own_input) own_input = own_rig_input(x%name, rig_own)
     end function own_input
 
-    !> Does the table of releases give the rig input `name` per release (per_trial: its
-    !! columns l, l_prime, b, b_prime, mass; a platform's one length is column l)?
-    pure logical function per_trial_input(name, per_trial)
+    !> Did the release give the rig input `name` itself (rig_own: RIG_COLUMNS, its columns
+    !! l, l_prime, b, b_prime, mass of the table; a platform's one length is column l)?
+    pure logical function own_rig_input(name, rig_own)
         character(len=*), intent(in) :: name
-        logical, intent(in) :: per_trial(5)
+        logical, intent(in) :: rig_own(5)
         integer :: k
-        per_trial_input = .false.
+        own_rig_input = .false.
         do k = 1, 5
-            if (per_trial(k) .and. trim(name) == trim(RIG_COLUMNS(k))) per_trial_input = .true.
+            if (rig_own(k) .and. trim(name) == trim(RIG_COLUMNS(k))) own_rig_input = .true.
         end do
-        if (per_trial(1) .and. trim(name) == 'length') per_trial_input = .true.
-    end function per_trial_input
+        if (rig_own(1) .and. trim(name) == 'length') own_rig_input = .true.
+    end function own_rig_input
 
     !> The kind of the budget row of input x: the release's amplitude (a reading of the
     !! release, ROW_AMPLITUDE), else an input of the rig or body (ROW_INPUT).
@@ -582,18 +635,18 @@ contains
     end function input_kind
 
     !> A release's budget rows split: its own rows (with their degrees of freedom) and the
-    !! sensitivities to the common inputs x.
-    subroutine split_rows(rows, nu_rows, x, per_trial, r)
+    !! sensitivities to the common inputs x (of the measurement, by name).
+    subroutine split_rows(rows, nu_rows, x, rig_own, r)
         type(budget_row_t), intent(in) :: rows(:)
         real(dp), intent(in) :: nu_rows(:)
         type(input_t), intent(in) :: x(:)
-        logical, intent(in) :: per_trial(5)
-        type(release_t), intent(inout) :: r
+        logical, intent(in) :: rig_own(5)
+        type(release_fit_t), intent(inout) :: r
         integer :: i, j
         allocate (r%c(size(x)), r%own(0), r%nu_row(0))
         r%c = 0.0_dp
         do i = 1, size(rows)
-            if (own_row(rows(i), per_trial)) then
+            if (own_row(rows(i), rig_own)) then
                 r%own = [r%own, rows(i)]
                 r%nu_row = [r%nu_row, nu_rows(i)]
             else
@@ -610,18 +663,19 @@ contains
         end if
     end subroutine split_rows
 
-    !> One release of timed periods: each total over its cycles, inverted to I1 (module
-    !! period_inversion), with its budget.  Without u_period, two timings or more give it as
-    !! the scatter of the timed totals about the model (s^2 = sum over n - 1 of
-    !! ((T_i,model - T_i) cycles_i)^2: a stopwatch's error is per timing, not per cycle),
-    !! on n - 1 degrees of freedom.
-    subroutine release_periods(d, rg, tr, x, per_trial, r, stat)
+    !> Release i of timed periods: its periods per cycle (each its timed total over its
+    !! cycles, divided once when read), inverted to I1 once (module period_inversion), with
+    !! its budget.  Without u_period, two timings or more give it as the scatter of the timed
+    !! totals about the model (s^2 = sum over n - 1 of ((T_i,model - T_i) cycles_i)^2: a
+    !! stopwatch's error is per timing, not per cycle), on n - 1 degrees of freedom: the
+    !! inversion then weighs each period by its cycles squared (the timings' u known to that
+    !! common factor s), and the budget's inversions take u = s/cycles with u_amplitude.
+    subroutine release_periods(d, m, i, x, r, stat)
         type(deck_t), intent(in) :: d
-        type(rig_t), intent(in) :: rg
-        type(trial_t), intent(in) :: tr
-        type(input_t), intent(in) :: x(:)
-        logical, intent(in) :: per_trial(5)
-        type(release_t), intent(out) :: r
+        type(measurement_t), intent(in) :: m
+        integer, intent(in) :: i                !! the release
+        type(input_t), intent(in) :: x(:)       !! its inputs (its own values)
+        type(release_fit_t), intent(out) :: r
         type(status_t), intent(out) :: stat
         type(period_fit_t) :: f
         type(input_u_t) :: u
@@ -631,29 +685,32 @@ contains
         real(dp) :: nu_per, amin, up
         integer :: n, j
         logical, allocatable :: sel(:)
-        n = size(tr%periods)
+        logical :: scatter
         u = input_u(d)
         acc = accuracy_of(d)
-        r%rg = rg
-        r%per = tr%periods/tr%cycles
-        r%cycles = tr%cycles
-        r%amps = tr%amps
-        r%u_each = tr%u_period/tr%cycles
-        r%exact = is_torsion_rig(rg)
+        r%rg = m%releases(i)%rig
+        r%per = m%periods_of(i)
+        r%cycles = m%cycles_of(i)
+        r%amps = m%amplitudes_of(i)
+        r%u_each = m%u_periods_of(i)
+        n = size(r%per)
+        r%exact = is_torsion_rig(r%rg)
         r%samples = n
         xp = pack(x, x%name /= 'amplitude')
-        call invert_periods(rg, acc, r%per, r%amps, u, f, stat, r%u_each)
-        if (stat%code /= 0) return
         nu_per = NU_INFINITE
-        if (all(tr%u_period == 0.0_dp) .and. n >= 2) then
-            r%u_scatter = sqrt(sum(((f%model_periods - r%per)*tr%cycles)**2)/(n - 1))
-            r%u_each = r%u_scatter/tr%cycles
+        scatter = all(m%u_totals_of(i) == 0.0_dp) .and. n >= 2
+        if (scatter) then
+            ! the timings' u, known to a common factor: each timed total's the same
+            call invert_periods(r%rg, acc, r%per, r%amps, u, f, stat, 1.0_dp/r%cycles, .true.)
+            if (stat%code /= 0) return
+            r%u_scatter = sqrt(sum(((f%model_periods - r%per)*r%cycles)**2)/(n - 1))
+            r%u_each = r%u_scatter/r%cycles
             nu_per = n - 1
-            if (r%u_scatter > 0.0_dp) call invert_periods(rg, acc, r%per, r%amps, u, f, stat, &
-                                                          r%u_each)
+        else
+            call invert_periods(r%rg, acc, r%per, r%amps, u, f, stat, r%u_each)
             if (stat%code /= 0) return
         end if
-        call period_budget(rg, acc, r%per, r%amps, u, f, stat, xp, r%u_each)
+        call period_budget(r%rg, acc, r%per, r%amps, u, f, stat, xp, r%u_each)
         if (stat%code /= 0) return
         r%i1 = f%i1
         r%iterations = f%iterations
@@ -664,7 +721,7 @@ contains
         do j = 1, size(f%budget)
             if (f%budget(j)%kind == ROW_TIMING) nu_rows(j) = nu_per
         end do
-        call split_rows(f%budget, nu_rows, x, per_trial, r)
+        call split_rows(f%budget, nu_rows, m%inputs, m%releases(i)%own, r)
         if (nu_per < NU_INFINITE .and. size(r%own) > 0) then
             ! the period rows share one variance estimate (the scatter, n - 1 dof): one
             ! component for Welch-Satterthwaite
@@ -676,7 +733,7 @@ contains
         amin = minval(r%amps)
         sel = r%amps <= amin*(1.0_dp + 1.0e-9_dp)
         r%period_linear = sum(r%per, sel)/count(sel)
-        r%i1_linear = linear_inertia(rg, r%period_linear)
+        r%i1_linear = linear_inertia(r%rg, r%period_linear)
         r%amp_max = maxval(r%amps)
         r%np = 1
         r%names(1) = 'I1'
@@ -688,13 +745,15 @@ contains
     !! the residuals' mean square, not below 1 when the record states each sample's u; tau
     !! their correlation time in samples: n/tau independent samples), the inputs'
     !! sensitivities by the implicit-function form.
-    subroutine release_record(d, rg, rec, x, per_trial, r, stat)
+    subroutine release_record(d, mea, rg, rec, x, xc, rig_own, r, stat)
         type(deck_t), intent(in) :: d
+        type(measurement_group_t), intent(in) :: mea    !! the release's (its estimate)
         type(rig_t), intent(in) :: rg
         type(record_t), intent(in) :: rec
-        type(input_t), intent(in) :: x(:)
-        logical, intent(in) :: per_trial(5)
-        type(release_t), intent(out) :: r
+        type(input_t), intent(in) :: x(:)       !! the release's inputs (its own values)
+        type(input_t), intent(in) :: xc(:)      !! the measurement's common inputs
+        logical, intent(in) :: rig_own(5)
+        type(release_fit_t), intent(out) :: r
         type(status_t), intent(out) :: stat
         type(record_fit_t) :: prob
         type(lsq_result_t) :: fit
@@ -708,8 +767,7 @@ contains
         r%from_record = .true.
         r%rg = rg
         r%rec = rec
-        call fit_problem(rig_of(d), start_of(d), accuracy_of(d), d%measurement, rec, prob, p0, &
-                         h)
+        call fit_problem(rig_of(d), start_of(d), accuracy_of(d), mea, rec, prob, p0, h)
         prob%rg = rg
         ! the budget's inputs ride along the fit's last runs (record_fit's evaluator)
         call carry_inputs(prob, x)
@@ -717,7 +775,7 @@ contains
         ! with loss = 'huber' the whole record refitted with Huber's weights (the estimator's
         ! robust loss), which stay the problem's (prob%hw) for its covariance and budget
         call fit_record(prob, p0, h, fit, stat, merge(LOSS_HUBER, LOSS_SQUARES, &
-                                                     trim(d%measurement%loss) == 'huber'))
+                                                     trim(mea%loss) == 'huber'))
         r%iterations = fit%iterations
         r%evaluations = fit%evaluations
         if (allocated(fit%robust)) prob%hw(prob%ifirst:prob%nuse) = fit%robust
@@ -793,7 +851,7 @@ contains
             r%p(j) = fit%p(j)
             r%u_p(j) = sqrt(cov(j, j) + sum((dpdx(j, :)*x%u)**2))
             r%u_p_own(j) = sqrt(cov(j, j) + sum((dpdx(j, :)*x%u)**2, &
-                                               mask=[(own_input(x(ih), per_trial), &
+                                               mask=[(own_input(x(ih), rig_own), &
                                                       ih=1, size(x))]))
         end do
         r%i1 = r%p(1)
@@ -808,13 +866,13 @@ contains
                                        abs(dpdx(1, j))*x(j)%u, input_kind(x(j)))]
             nu_rows = [nu_rows, NU_INFINITE]
         end do
-        call split_rows(rows, nu_rows, x, per_trial, r)
+        call split_rows(rows, nu_rows, xc, rig_own, r)
         e = fit%r/(prob%w(i0:prob%nuse)*prob%hw(i0:prob%nuse))
         r%residual_rms = sqrt(sum(e**2)/m)
         r%model = e + rec%v(i0:prob%nuse)
         allocate (r%warnings(0))
         fmt = record_format_of(d)
-        if (.not. d%measurement%estimated('bias')) then
+        if (.not. mea%estimated('bias')) then
             ! an offset the fit does not model shows as a mean of the residuals
             emean = sum(e)/m
             se = r%residual_rms*sqrt(r%tau/m)
@@ -828,27 +886,30 @@ contains
         r%period_linear = mean_period(rec, i0)
         if (r%period_linear > 0.0_dp) r%i1_linear = linear_inertia(rg, r%period_linear)
         r%amp_max = d%start%amplitude
-        if (d%measurement%estimated('amplitude')) r%amp_max = r%p(findloc(prob%which(1:np), 4, 1))
+        if (mea%estimated('amplitude')) r%amp_max = r%p(findloc(prob%which(1:np), 4, 1))
     end subroutine release_record
 
     !> The releases pooled (module pooling), the common inputs' budget once (their
     !! sensitivities averaged with the pool's weights), the tare and added inertia
     !! subtracted, Welch-Satterthwaite's degrees of freedom and the coverage factor of 95 %;
     !! then the checks of what no body or rig gives (ERR_MODEL).
-    subroutine combine(d, rels, x, ts, res, stat)
+    subroutine combine(d, m, kept, rels, res, stat)
         type(deck_t), intent(in) :: d
-        type(release_t), intent(in) :: rels(:)
-        type(input_t), intent(in) :: x(:)
-        type(trial_set_t), intent(in) :: ts
+        type(measurement_t), intent(in) :: m    !! the measurement
+        integer, intent(in) :: kept(:)          !! the releases pooled (not skipped)
+        type(release_fit_t), intent(in) :: rels(:)  !! their fits, in that order
         type(identify_result_t), intent(out) :: res
         type(status_t), intent(out) :: stat
         type(pooled_t) :: pool, pj
         type(budget_row_t), allocatable :: rows(:)
         real(dp), allocatable :: uc(:), nuc(:)
         real(dp) :: cbar, u_total
-        integer :: n, j, r
+        integer :: n, j, r, k, q, nw
+        integer, allocatable :: jr(:)
+        character(len=9) :: word
         stat%code = 0
         n = size(rels)
+        associate (x => m%inputs)
         call pool_releases(rels%i1, rels%u_own, rels%nu_own, pool)
         res%n_trials = n
         res%from_record = all(rels%from_record)
@@ -866,7 +927,7 @@ contains
         uc = [pool%u_random]
         nuc = [pool%nu_random]
         do j = 1, size(x)
-            if (.not. (x(j)%u > 0.0_dp) .or. own_input(x(j), ts%per_trial)) cycle
+            if (.not. (x(j)%u > 0.0_dp) .or. own_input(x(j), m%releases(kept(1))%own)) cycle
             cbar = 0.0_dp
             do r = 1, n
                 cbar = cbar + pool%weight(r)*rels(r)%c(j)
@@ -879,21 +940,17 @@ contains
         res%i1_total = pool%mean
         u_total = sqrt(sum(uc**2))
         res%u_i1_total = u_total
-        res%i1 = pool%mean - d%measurement%tare_i1 - d%measurement%added_inertia
-        if (d%measurement%tare_i1 > 0.0_dp .or. d%measurement%u_tare_i1 > 0.0_dp) then
-            rows = [rows, budget_row_t('tare_I1', d%measurement%tare_i1, &
-                                       d%measurement%u_tare_i1, -1.0_dp, &
-                                       d%measurement%u_tare_i1, ROW_TARE)]
-            uc = [uc, d%measurement%u_tare_i1]
-            nuc = [nuc, NU_INFINITE]
-        end if
-        if (d%measurement%added_inertia > 0.0_dp .or. d%measurement%u_added_inertia > 0.0_dp) then
-            rows = [rows, budget_row_t('added_inertia', d%measurement%added_inertia, &
-                                       d%measurement%u_added_inertia, -1.0_dp, &
-                                       d%measurement%u_added_inertia, ROW_ADDED)]
-            uc = [uc, d%measurement%u_added_inertia]
-            nuc = [nuc, NU_INFINITE]
-        end if
+        ! the tares: each subtracted, with its u
+        res%i1 = pool%mean
+        do k = 1, size(m%tares)
+            associate (t => m%tares(k))
+                res%i1 = res%i1 - t%value
+                rows = [rows, budget_row_t(t%name, t%value, t%u, -1.0_dp, t%u, &
+                                           merge(ROW_ADDED, ROW_TARE, t%added))]
+                uc = [uc, t%u]
+                nuc = [nuc, NU_INFINITE]
+            end associate
+        end do
         res%u_i1 = sqrt(sum(uc**2))
         res%budget = rows
         ! no u of any input, no scatter, no record: u_I1 = 0 means nothing was given
@@ -903,9 +960,17 @@ contains
         res%dof_eff = welch_satterthwaite(uc, nuc)
         res%k = coverage_factor(res%dof_eff, 0.95_dp)
         res%u_i1_expanded = res%k*res%u_i1
-        allocate (res%trial_label(n))
+        allocate (res%trial_label(n), res%trial_session(n), res%skipped(0))
         do r = 1, n
-            res%trial_label(r) = ts%t(r)%label
+            res%trial_label(r) = m%releases(kept(r))%label
+            res%trial_session(r) = ''
+            if (allocated(m%releases(kept(r))%session)) &
+                res%trial_session(r) = m%releases(kept(r))%session
+        end do
+        res%n_trials_skipped = m%n_skipped()
+        do r = 1, size(m%releases)
+            if (.not. m%releases(r)%skipped) cycle
+            call add_warning(res%skipped, m%named(r))
         end do
         res%trial_i1 = rels%i1
         res%trial_u = rels%u_own
@@ -914,22 +979,38 @@ contains
         res%linear_error = 0.0_dp
         if (res%i1_linear > 0.0_dp) res%linear_error = res%i1_linear/res%i1_total - 1.0_dp
         res%period_linear = rels(1)%period_linear
-        ! the parameters: I1, then (records) those estimated with it, pooled alike
-        res%np = rels(1)%np
-        res%names = rels(1)%names
+        ! the parameters: I1, then (records) those estimated with it, in PARAM_NAMES'
+        ! order, each pooled alike over the releases that estimate it (a release may
+        ! estimate fewer: its own estimate)
+        res%np = 1
+        res%names = ''
+        res%names(1) = 'I1'
         res%p(1) = res%i1
         res%u_p(1) = res%u_i1
-        do j = 2, res%np
-            if (n == 1) then
-                res%p(j) = rels(1)%p(j)
-                res%u_p(j) = rels(1)%u_p(j)
+        allocate (jr(n))
+        do q = 2, size(PARAM_NAMES)
+            word = PARAM_NAMES(q)
+            do r = 1, n
+                jr(r) = findloc(rels(r)%names(1:rels(r)%np), word, 1)
+            end do
+            nw = count(jr > 0)
+            if (nw == 0) cycle
+            res%np = res%np + 1
+            j = res%np
+            res%names(j) = word
+            if (nw == 1) then
+                r = findloc(jr > 0, .true., 1)
+                res%p(j) = rels(r)%p(jr(r))
+                res%u_p(j) = rels(r)%u_p(jr(r))
             else
-                call pool_releases([(rels(r)%p(j), r=1, n)], [(rels(r)%u_p_own(j), r=1, n)], &
-                                   [(rels(r)%nu_own, r=1, n)], pj)
+                call pool_releases(pack([(rels(r)%p(max(1, jr(r))), r=1, n)], jr > 0), &
+                                   pack([(rels(r)%u_p_own(max(1, jr(r))), r=1, n)], jr > 0), &
+                                   pack(rels%nu_own, jr > 0), pj)
                 res%p(j) = pj%mean
                 ! the common inputs' part, the same in every release: averaged, not reduced
-                res%u_p(j) = sqrt(pj%u_random**2 + sum(pj%weight*[(max(0.0_dp, &
-                    rels(r)%u_p(j)**2 - rels(r)%u_p_own(j)**2), r=1, n)]))
+                res%u_p(j) = sqrt(pj%u_random**2 + sum(pj%weight*pack([(max(0.0_dp, &
+                    rels(r)%u_p(max(1, jr(r)))**2 - rels(r)%u_p_own(max(1, jr(r)))**2), &
+                    r=1, n)], jr > 0)))
             end if
         end do
         res%iterations = sum(rels%iterations)
@@ -952,6 +1033,11 @@ contains
             res%period_model = trim(merge('exact torsion', 'simulated    ', res%periods_exact))
         end if
         allocate (res%warnings(0))
+        do r = 1, size(m%releases)
+            ! a release left out: named with its row, and why (on_failure = 'skip')
+            if (m%releases(r)%skipped) call add_warning(res%warnings, 'identify: left out '// &
+                '(&measurement on_failure = ''skip''): '//m%releases(r)%failure)
+        end do
         do r = 1, n
             if (allocated(rels(r)%warnings)) res%warnings = [res%warnings, rels(r)%warnings]
         end do
@@ -961,6 +1047,7 @@ contains
             fixed(pool%birge, 2)//'): their scatter is in u_I1 (u_I1_reproducibility = '// &
             sci(pool%u_reproducibility, 2)//'); find what changed between releases')
         call check_physical(d, rels, res, stat)
+        end associate
     end subroutine combine
 
     !> What no rigid body or rig can give, refused (ERR_MODEL, exit 4) with the likely
@@ -970,7 +1057,7 @@ contains
     !! triangle inequality (a lamina has I1 = I2 + I3): a warning.
     subroutine check_physical(d, rels, res, stat)
         type(deck_t), intent(in) :: d
-        type(release_t), intent(in) :: rels(:)
+        type(release_fit_t), intent(in) :: rels(:)
         type(identify_result_t), intent(inout) :: res
         type(status_t), intent(inout) :: stat
         real(dp) :: s23, d23, i1
@@ -1029,7 +1116,7 @@ contains
     !! read the file.
     subroutine record_monte_carlo(d, r, res, stat, outdir, options, report, files)
         type(deck_t), intent(in) :: d
-        type(release_t), intent(in) :: r
+        type(release_fit_t), intent(in) :: r
         type(identify_result_t), intent(inout) :: res
         type(status_t), intent(out) :: stat
         character(len=*), intent(in), optional :: outdir
@@ -1174,6 +1261,14 @@ contains
             call write_kv(u, 'u_'//trim(res%names(j)), res%u_p(j), ios)
         end do
         call write_kv(u, 'n_trials', res%n_trials, ios)
+        if (trim(d%measurement%on_failure) == 'skip') then
+            call write_kv(u, 'n_trials_skipped', res%n_trials_skipped, ios)
+            do j = 1, size(res%skipped)
+                call write_kv(u, 'trial_skipped('//itoa(j)//')', res%skipped(j)%s, ios)
+            end do
+        end if
+        if (res%n_trials == 1 .and. any(res%trial_session /= '')) &
+            call write_kv(u, 'session', trim(res%trial_session(1)), ios)
         call write_kv(u, 'consistency', trim(res%consistency), ios)
         call write_kv(u, 'u_I1_reproducibility', res%u_i1_reproducibility, ios)
         if (res%birge_ratio >= 0.0_dp) then
@@ -1214,6 +1309,8 @@ contains
         if (res%n_trials > 1) then
             do j = 1, res%n_trials
                 call write_kv(u, 'trial('//itoa(j)//')', trim(res%trial_label(j)), ios)
+                if (any(res%trial_session /= '')) call write_kv(u, 'session('//itoa(j)//')', &
+                    trim(res%trial_session(j)), ios)
                 call write_kv(u, 'I1_trial('//itoa(j)//')', res%trial_i1(j), ios)
                 call write_kv(u, 'u_I1_trial('//itoa(j)//')', res%trial_u(j), ios)
                 if (res%from_record .and. size(res%record_crc) >= j) call write_kv(u, &
@@ -1245,7 +1342,7 @@ contains
     subroutine write_fit(d, outdir, rels, files, stat, fig)
         type(deck_t), intent(in) :: d
         character(len=*), intent(in) :: outdir
-        type(release_t), intent(in) :: rels(:)
+        type(release_fit_t), intent(in) :: rels(:)
         type(out_files_t), intent(inout) :: files
         type(status_t), intent(out) :: stat
         type(cert_figure_data_t), intent(inout) :: fig     !! the certificate's: release 1
@@ -1296,7 +1393,7 @@ contains
     subroutine write_periods(d, outdir, rels, res, files, stat, fig)
         type(deck_t), intent(in) :: d
         character(len=*), intent(in) :: outdir
-        type(release_t), intent(in) :: rels(:)
+        type(release_fit_t), intent(in) :: rels(:)
         type(identify_result_t), intent(in) :: res
         type(out_files_t), intent(inout) :: files
         type(status_t), intent(out) :: stat
@@ -1307,7 +1404,7 @@ contains
         character(len=104) :: row
         real(dp) :: amax, tcl(size(rels)), curve(NA, 2, size(rels))
         logical :: first(size(rels))
-        type(release_t), allocatable :: tm(:)
+        type(release_fit_t), allocatable :: tm(:)
         amax = 0.0_dp
         do r = 1, size(rels)
             amax = max(amax, maxval(rels(r)%amps))

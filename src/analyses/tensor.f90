@@ -1,8 +1,8 @@
 !> The whole inertia tensor from several hangs (analysis tensor).
 !!
 !! A bifilar hang measures one number, the moment of inertia about the vertical through the
-!! mass centre.  Hung in six or more orientations (&tensor hangs: a table of hangs, module
-!! hang_table), the body gives the six entries of its tensor about the mass centre in the
+!! mass centre.  Hung in six or more orientations (&tensor hangs: a table of hangs, read
+!! into the measurement's model by module measurement_read), the body gives the six entries of its tensor about the mass centre in the
 !! user's body frame.  Each hang's period comes from the paper's full model of that hang
 !! (module hang_model: the torsion mode of the linearised model at small amplitude, the
 !! full model's period at the timed amplitude), so the coupling of torsion with tilting and

@@ -12,7 +12,8 @@ submodule (tensor) tensor_impl
     use rig, only: rig_t
     use deck_runs, only: accuracy_of
     use monte_carlo, only: monte_carlo_run, MC_TENSOR
-    use hang_table, only: hang_t, hang_set_t, read_hangs, hang_defaults, table_name
+    use measurement, only: measurement_t, hang_t
+    use measurement_read, only: read_hangs, hang_defaults, table_name
     use hang_model, only: tensor_entries, hang_rig, torsion_mode, torsion_mode_t
     use tensor_fit, only: tensor_problem_t, tensor_fit_t, tensor_plan_t, tensor_mc_task_t, &
         problem_of, check_directions, projection, fit_tensor, amplitude_limits, plan_hangs, &
@@ -37,7 +38,7 @@ contains
 
     !> The preconditions of analyses = 'tensor' (see the interface).
     module procedure tensor_ready
-        type(hang_set_t) :: set
+        type(measurement_t) :: set
         type(hang_t) :: h0
         type(rig_t) :: rg
         type(torsion_mode_t) :: md
@@ -51,17 +52,32 @@ contains
                 'model = ''kane''')
             return
         end if
+        associate (m => d%measurement)
+            if (any([m%tare_i1, m%u_tare_i1, m%tare_mass, m%added_inertia, &
+                     m%u_added_inertia] /= 0.0_dp)) then
+                call set_error(stat, ERR_DECK, 'analyses = ''tensor'': &measurement tare_i1 = '// &
+                    rshort(m%tare_i1)//', u_tare_i1 = '//rshort(m%u_tare_i1)//', tare_mass = '// &
+                    rshort(m%tare_mass)//', added_inertia = '//rshort(m%added_inertia)// &
+                    ', u_added_inertia = '//rshort(m%u_added_inertia)//': a tare is a moment '// &
+                    'about the one axis of identify; the tensor''s fit takes none (the '// &
+                    'fixture''s tensor is not known); allowed: all 0 with tensor (fit the '// &
+                    'fixture''s own hangs and subtract its tensor), or the tare in a deck of '// &
+                    'analyses = ''identify''')
+                return
+            end if
+        end associate
         if (len_trim(d%tensor%hangs) > 0) then
             call read_hangs(d%tensor, d%suspension, d%body, set, stat)
             if (stat%code /= STATUS_OK) return
-            call check_directions(set%hangs, table_name(d%tensor), cond, stat)
+            call check_directions(set%releases%hang, table_name(d%tensor), cond, stat)
             if (stat%code /= STATUS_OK) return
-            do h = 1, size(set%hangs)
-                call hang_rig(d%body%mass, d%suspension%g, set%hangs(h), deck_tensor(d), rg, stat)
+            do h = 1, size(set%releases)
+                call hang_rig(d%body%mass, d%suspension%g, set%releases(h)%hang, &
+                              deck_tensor(d), rg, stat)
                 if (stat%code == STATUS_OK) call torsion_mode(rg, md, stat)
                 if (stat%code /= STATUS_OK) then
-                    stat%msg = table_name(d%tensor)//': hang '//itoa(set%hangs(h)%id)//' (line '// &
-                        itoa(set%hangs(h)%line)//'): '//stat%msg
+                    stat%msg = table_name(d%tensor)//': hang '//itoa(set%releases(h)%id)//' (line '// &
+                        itoa(set%releases(h)%line)//'): '//stat%msg
                     return
                 end if
                 call period_in_reach(h, rg, stat)
@@ -71,7 +87,7 @@ contains
         if (d%tensor%plan > 0) then
             call hang_defaults(d%suspension, d%body, h0, have_cg)
             if (len_trim(d%tensor%hangs) > 0 .and. .not. have_cg) then
-                h0 = set%hangs(1)
+                h0 = set%releases(1)%hang
                 have_cg = .true.
             end if
             if (.not. have_cg) then
@@ -102,13 +118,13 @@ contains
             real(dp) :: ta
             integer :: i
             ta = 2.0_dp*pi*sqrt(0.5_dp*(rg%l + rg%l_prime)*rg%b_prime/(rg%g*rg%b))
-            do i = 1, size(set%rows)
-                if (set%rows(i)%hang /= h) cycle
-                if (set%rows(i)%period > GYRATION_MAX*ta) then
+            do i = 1, size(set%obs)
+                if (set%obs(i)%release /= h) cycle
+                if (set%obs(i)%period > GYRATION_MAX*ta) then
                     call set_error(st, ERR_MODEL, table_name(d%tensor)//': line '// &
-                        itoa(set%rows(i)%line)//': hang '//itoa(set%hangs(h)%id)// &
-                        ': a period of '//sci(set%rows(i)%period, 4)//' s (per cycle) is '// &
-                        itoa(nint(set%rows(i)%period/ta))//' times that of this hang''s '// &
+                        itoa(set%obs(i)%line)//': hang '//itoa(set%releases(h)%id)// &
+                        ': a period of '//sci(set%obs(i)%period, 4)//' s (per cycle) is '// &
+                        itoa(nint(set%obs(i)%period/ta))//' times that of this hang''s '// &
                         'rig with the body''s mass at its cable attachments (2 pi (l '// &
                         'b_prime/(g b))^(1/2) = '//sci(ta, 4)//' s), beyond the '// &
                         itoa(nint(GYRATION_MAX))//' times any bifilar body gives; likely: '// &
@@ -123,7 +139,7 @@ contains
 
     !> Run analyses = 'tensor' (see the interface).
     module procedure run_tensor
-        type(hang_set_t) :: set
+        type(measurement_t) :: set
         type(tensor_problem_t) :: prob
         type(tensor_fit_t) :: fit
         type(tensor_plan_t) :: plan
@@ -146,7 +162,7 @@ contains
         if (len_trim(d%tensor%hangs) > 0) then
             call read_hangs(d%tensor, d%suspension, d%body, set, stat)
             if (stat%code /= STATUS_OK) return
-            call check_directions(set%hangs, table_name(d%tensor), cond, stat)
+            call check_directions(set%releases%hang, table_name(d%tensor), cond, stat)
             if (stat%code /= STATUS_OK) return
             call problem_of(d%tensor, d%suspension, d%body, accuracy_of(d), set, prob)
             call projection(prob, x_proj, stat)
@@ -160,7 +176,7 @@ contains
             if (stat%code /= STATUS_OK) return
             do i = 1, size(prob%rows)
                 if (drift(i) > DRIFT_MAX) then
-                    h = prob%rows(i)%hang
+                    h = prob%rows(i)%release
                     call set_error(stat, ERR_DECK, table_name(d%tensor)//': line '// &
                         itoa(prob%rows(i)%line)//': hang '//itoa(prob%hangs(h)%id)// &
                         ' at amplitude = '//rshort(prob%rows(i)%amplitude)//' deg: its '// &
@@ -252,8 +268,8 @@ contains
 
     !> A set of no hangs (a plan without a table).
     function set_empty() result(set)
-        type(hang_set_t) :: set
-        allocate (set%hangs(0), set%rows(0))
+        type(measurement_t) :: set
+        allocate (set%releases(0), set%obs(0))
     end function set_empty
 
     !> The task of tensor's Monte Carlo (see the interface).

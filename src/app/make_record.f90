@@ -40,7 +40,8 @@ program make_record_main
     use text, only: fixed, itoa, rshort
     use output_io, only: out_files_t
     use tables, only: table_t, read_table
-    use hang_table, only: hang_set_t, read_hangs
+    use measurement, only: measurement_t
+    use measurement_read, only: read_hangs
     use hang_model, only: hang_rig, hang_period, tensor_entries
     use rig, only: rig_t
     implicit none
@@ -150,7 +151,7 @@ contains
     subroutine make_hangs(out)
         character(len=*), intent(in) :: out
         type(table_t) :: tab
-        type(hang_set_t) :: set
+        type(measurement_t) :: set
         type(rig_t) :: rg
         real(dp) :: x(6), jt(3, 3), tp
         integer :: i, k, u, c_per
@@ -180,8 +181,9 @@ contains
         end do
         write (u, '(a)') row
         do i = 1, tab%nrow
-            associate (r => set%rows(i))
-                call hang_rig(d%body%mass, d%suspension%g, set%hangs(r%hang), x, rg, st)
+            associate (r => set%obs(i))
+                call hang_rig(d%body%mass, d%suspension%g, set%releases(r%release)%hang, x, rg, &
+                              st)
                 if (st%code == 0) call hang_period(rg, accuracy_of(d), r%amplitude, tp, st)
                 if (st%code /= 0) call fail('line '//itoa(r%line)//': '//st%msg)
                 tp = r%cycles*tp + sigma*rng_normal(g)

@@ -1,9 +1,10 @@
 !> What the runs take from a deck, for the analyses: the rig (rig_of), its start
 !! (start_of), the accuracy and integrator of its runs (accuracy_of, method_of), the output
-!! grid (output_times), the inputs of a budget (deck_inputs), the record and the releases
-!! of a measurement (read_record, record_format_of, record_file, read_trials), and the
-!! preconditions several analyses share: the deck's scene can be run (scene_ready: simulate,
-!! work_precision), its torsion is undamped (undamped_ready: floquet, chart, design).  Each
+!! grid (output_times), the inputs of a budget (deck_inputs), the record of a measurement
+!! (read_record, record_format_of, record_file; its releases are read into the measurement's
+!! model by module measurement_read), and the preconditions several analyses share: the
+!! deck's scene can be run (scene_ready: simulate, work_precision), its torsion is undamped
+!! (undamped_ready: floquet, chart, design).  Each
 !! hands the deck's groups to the procedure of the layer below that takes them (the generic
 !! names rig_of, start_of, method_of, accuracy_of, output_times and deck_inputs also take
 !! the groups themselves).
@@ -18,12 +19,11 @@ module deck_runs
     use elastic_model, only: elastic_t, elastic_start, ELASTIC_NSTATE
     use inputs, only: input_t, deck_inputs
     use records, only: record_t, record_format_t, record_format, read_record_file
-    use trials, only: trial_set_t, read_trial_table, one_release
     implicit none
     private
 
     public :: rig_of, start_of, method_of, accuracy_of, output_times, deck_inputs
-    public :: read_record, record_format_of, record_file, read_trials
+    public :: read_record, record_format_of, record_file
     public :: scene_ready, undamped_ready
 
     interface rig_of
@@ -118,30 +118,6 @@ contains
         if (stat%code /= STATUS_OK) stat%msg = '&measurement record = '''// &
             trim(d%measurement%record)//''': '//stat%msg
     end subroutine read_record
-
-    !> The releases of a deck: the table of &measurement trials when given (a column absent:
-    !! the deck's rig, cycles(1), &start amplitude, u_period), else the deck's one release
-    !! (its periods, with cycles, or its record).  ERR_DECK naming the table, its line and
-    !! column.
-    subroutine read_trials(d, ts, stat)
-        type(deck_t), intent(in) :: d
-        type(trial_set_t), intent(out) :: ts
-        type(status_t), intent(out) :: stat     !! ERR_DECK
-        real(dp) :: rigv(5)
-        integer :: n
-        stat%code = STATUS_OK
-        associate (s => d%suspension, m => d%measurement)
-            rigv = [s%l, s%l_prime, s%b, s%b_prime, d%body%mass]
-            if (len_trim(m%trials) == 0) then
-                n = m%n_periods
-                call one_release(rigv, m%periods(1:n), m%cycles(1:n), m%amplitudes(1:n), &
-                                 m%u_period, record_file(d), ts)
-            else
-                call read_trial_table(m%trials, m%trials_path, rigv, m%cycles(1), &
-                                      d%start%amplitude, m%u_period, ts, stat)
-            end if
-        end associate
-    end subroutine read_trials
 
     !> The preconditions of analyses = 'simulate' and 'work_precision', checked before any
     !! computing: the cables reach (make_pendulum), the start exists (start_state) and, for

@@ -36,6 +36,14 @@ module budget
         'input', 'timing', 'amplitude', 'amplitude_scale', 'definition', 'direction', 'fit', &
         'release', 'session', 'tare', 'added', 'calibration']
 
+    !> One input of a budget: a quantity of the rig, the body or the start with its value
+    !! and standard uncertainty (module inputs: which quantities, how each is set on a rig).
+    type, public :: input_t
+        character(len=16) :: name = ''          !! mass, l, ..., cg_depth, amplitude
+        real(dp) :: value = 0.0_dp              !! deck units (amplitude: degrees)
+        real(dp) :: u = 0.0_dp                  !! its standard uncertainty
+    end type input_t
+
     !> One line of an uncertainty budget.
     type, public :: budget_row_t
         character(len=24) :: input = ''         !! e.g. mass, l, period(2)

@@ -4,7 +4,7 @@
 !! * The body: the inertia tensor J about the mass centre in the user's body frame, six
 !!   entries x = (J_xx, J_yy, J_zz, J_xy, J_xz, J_yz) with J_xy = -int x y dm (the matrix
 !!   entries themselves), so that the moment about a unit direction u is u . J u.
-!! * The hang (module hang_table): the body turned so that `up` points up at rest and
+!! * The hang (module measurement's hang_t): the body turned so that `up` points up at rest and
 !!   `along` from C toward D.  In the model's terms ntilde_1 = -up (down at rest), ntilde_3
 !!   = -along (from D to C), ntilde_2 = ntilde_3 x ntilde_1; the principal axes of J
 !!   (eigenvectors, LAPACK dsyev) expressed in that frame are the rows of btilde, the
@@ -50,10 +50,10 @@ module hang_model
         paper_angles
     use rig, only: rig_t, accuracy_t, make_pendulum
     use kane_run, only: kane_run_t, kane_run_start
-    use run_loop, only: stepped_model_t, row_sink_t, drive, falling_zero
+    use run_loop, only: drive
+    use theta4_maxima, only: maxima_sink_t
     use lapack_wrap, only: la_syev, la_eigv
-    use hang_table, only: hang_t
-    use unused_arg, only: unused
+    use measurement, only: hang_t
     implicit none
     private
 
@@ -71,17 +71,6 @@ module hang_model
     public :: hang_rig, rest_pose, torsion_mode, hang_period, maxima_drift, vertical_moment
     public :: moment_direction
 
-    !> Finds maxima of theta_4 in the run loop: each the first zero of theta_4' from + to -
-    !! after theta_4 has been below its rest value (0), located in the step.
-    type, extends(row_sink_t) :: maxima_sink_t
-        integer :: want = 1                     !! maxima to find
-        integer :: found = 0
-        logical :: below = .false.
-        real(dp), allocatable :: t(:), a(:)     !! their times (tau) and theta_4 (rad)
-    contains
-        procedure :: take => maxima_take
-        procedure :: after_step => maxima_after_step
-    end type maxima_sink_t
 
     !> Newton's method on the rest pose: iterations, and the relative change that ends it.
     integer, parameter :: REST_ITER = 60
@@ -470,46 +459,5 @@ contains
                 'cables cannot both be taut there; allowed: a smaller amplitude')
         end if
     end subroutine mode_start
-
-    !> maxima_sink_t takes no rows.
-    subroutine maxima_take(sink, m, k, t, y, stat)
-        class(maxima_sink_t), intent(inout) :: sink
-        class(stepped_model_t), intent(inout) :: m
-        integer, intent(in) :: k
-        real(dp), intent(in) :: t
-        real(dp), intent(in) :: y(:)
-        type(status_t), intent(out) :: stat
-        call unused(sink)
-        call unused(m)
-        call unused(k)
-        call unused(t)
-        call unused(y)
-        stat%code = 0
-    end subroutine maxima_take
-
-    !> After a step [t0, t1]: note theta_4 below 0; after that, a theta_4' going from + to -
-    !! within the step is a maximum, located by the Illinois variant of regula falsi on the
-    !! dense output to roundoff.
-    subroutine maxima_after_step(sink, m, t0, t1, stat)
-        class(maxima_sink_t), intent(inout) :: sink
-        class(stepped_model_t), intent(inout) :: m
-        real(dp), intent(in) :: t0, t1          !! the step
-        type(status_t), intent(out) :: stat
-        real(dp) :: y(NSTATE), c
-        logical :: found
-        if (.not. sink%below) then
-            call m%state_at(t1, y, stat)
-            if (stat%code /= 0) return
-            sink%below = y(4) < 0.0_dp
-            return
-        end if
-        call falling_zero(m, t0, t1, 9, found, c, y, stat)
-        if (stat%code /= 0 .or. .not. found) return
-        sink%found = sink%found + 1
-        sink%t(sink%found) = c
-        sink%a(sink%found) = y(4)
-        sink%below = .false.
-        sink%done = sink%found >= sink%want
-    end subroutine maxima_after_step
 
 end module hang_model

@@ -16,15 +16,12 @@ module inputs
     use rig_groups, only: suspension_group_t, body_group_t, start_group_t
     use measure_groups, only: measurement_group_t
     use rig, only: rig_t, start_t, move_b_prime
+    use budget, only: input_t
     implicit none
     private
 
-    !> One input of a budget.
-    type, public :: input_t
-        character(len=16) :: name = ''          !! mass, l, ..., cg_depth, amplitude
-        real(dp) :: value = 0.0_dp              !! deck units (amplitude: degrees)
-        real(dp) :: u = 0.0_dp                  !! its standard uncertainty
-    end type input_t
+    !> One input of a budget (module budget's type).
+    public :: input_t
 
     public :: deck_inputs, set_input, input_value, no_effect_on_torsion
 

@@ -136,6 +136,13 @@ contains
         end if
         call check_word(stat, 'measurement', 'loss', self%loss, LOSSES_ALLOWED)
         if (stat%code /= STATUS_OK) return
+        call check_word(stat, 'measurement', 'on_failure', self%on_failure, ON_FAILURE_ALLOWED)
+        if (stat%code /= STATUS_OK) return
+        if (len_trim(self%session) > 64) then
+            call bad(stat, 'measurement', 'session', quoted(clip(self%session)), &
+                     'longer than 64 characters', 'a label of 1 to 64 characters')
+            return
+        end if
         if (self%n_periods > 0 .and. len_trim(self%trials) > 0) then
             call bad(stat, 'measurement', 'trials', quoted(self%trials), 'given with periods', &
                      'periods (one release) or trials = ''FILE'' (a table of releases), not '// &
@@ -231,19 +238,21 @@ contains
         end subroutine uncertainty
     end procedure check_measurement
 
-    !> &measurement estimate: blank-separated words from ESTIMATES_ALLOWED (I1 in any case,
-    !! the others in lower case too), at least one, none twice.
-    subroutine check_estimate(stat, estimate)
-        type(status_t), intent(inout) :: stat       !! ERR_DECK on a problem
-        character(len=*), intent(in) :: estimate    !! value read
+    !> &measurement estimate (or a release's): blank-separated words from ESTIMATES_ALLOWED
+    !! (I1 in any case, the others in lower case too), at least one, none twice.
+    module procedure check_estimate
         character(len=len(estimate)) :: list
         integer :: i1, i2, n
-        character(len=:), allocatable :: head, allowed, seen
+        character(len=:), allocatable :: hd, allowed, seen
         list = lower(estimate)
         do i1 = 1, len(list)
             if (list(i1:i1) == achar(9)) list(i1:i1) = ' '
         end do
-        head = '&measurement estimate = '''//clip(trim(adjustl(estimate)))//''': '
+        if (present(head)) then
+            hd = head
+        else
+            hd = '&measurement estimate = '''//clip(trim(adjustl(estimate)))//''': '
+        end if
         allowed = 'allowed: blank-separated words from: '//commas(ESTIMATES_ALLOWED)
         seen = ' '
         n = 0
@@ -253,19 +262,19 @@ contains
             if (i1 == 0) exit
             n = n + 1
             if (index(' '//lower(ESTIMATES_ALLOWED)//' ', ' '//list(i1:i2)//' ') == 0) then
-                call set_error(stat, ERR_DECK, head//'unknown word '''//clip(list(i1:i2))// &
+                call set_error(stat, ERR_DECK, hd//'unknown word '''//clip(list(i1:i2))// &
                                '''; '//allowed)
                 return
             end if
             if (index(seen, ' '//list(i1:i2)//' ') > 0) then
-                call set_error(stat, ERR_DECK, head//''''//list(i1:i2)//''' given twice; '// &
+                call set_error(stat, ERR_DECK, hd//''''//list(i1:i2)//''' given twice; '// &
                                allowed)
                 return
             end if
             seen = seen//list(i1:i2)//' '
         end do
-        if (n == 0) call set_error(stat, ERR_DECK, head//'no parameter given; '//allowed)
-    end subroutine check_estimate
+        if (n == 0) call set_error(stat, ERR_DECK, hd//'no parameter given; '//allowed)
+    end procedure check_estimate
 
 
 

@@ -25,8 +25,11 @@ module measure_groups
     character(len=*), parameter, public :: RECORD_UNITS_ALLOWED = 'rad deg rad/s deg/s'
     !> Words allowed in &measurement loss.
     character(len=*), parameter, public :: LOSSES_ALLOWED = 'squares huber'
+    !> Words allowed in &measurement on_failure: what a release that fails does to the run.
+    character(len=*), parameter, public :: ON_FAILURE_ALLOWED = 'stop skip'
     !> Words allowed in &measurement quantity: column 2 of a record.
     character(len=*), parameter, public :: QUANTITIES_ALLOWED = 'angle rate'
+    public :: check_estimate
     !> Most Monte Carlo samples of &measurement and &tensor monte_carlo.
     integer, parameter :: MAX_MONTE_CARLO = 1000000
 
@@ -64,6 +67,11 @@ module measure_groups
         !! and a known added inertia (e.g. entrained air) subtracted
         real(dp) :: tare_i1 = 0.0_dp, u_tare_i1 = 0.0_dp, tare_mass = 0.0_dp
         real(dp) :: added_inertia = 0.0_dp, u_added_inertia = 0.0_dp
+        !> ON_FAILURE_ALLOWED: a release that fails stops the run, or is left out (skip)
+        character(len=256) :: on_failure = 'stop'
+        !> the session of the deck's release (a label; a table's releases without a column
+        !! session take it)
+        character(len=256) :: session = ''
     contains
         procedure, nopass :: name => measurement_name
         procedure, nopass :: spec => measurement_spec
@@ -109,6 +117,14 @@ module measure_groups
         end subroutine check_measurement
         !> &tensor: the uncertainties, Monte Carlo, the plan, a table of hangs when the
         !! analysis is asked for.
+        !> Words of an estimate (&measurement estimate, or a release's column estimate):
+        !! from ESTIMATES_ALLOWED, at least one, none twice.  head: the start of the message
+        !! ("&measurement estimate = 'WORDS': " when absent).
+        module subroutine check_estimate(stat, estimate, head)
+            type(status_t), intent(inout) :: stat       !! ERR_DECK on a problem
+            character(len=*), intent(in) :: estimate    !! value read
+            character(len=*), intent(in), optional :: head
+        end subroutine check_estimate
         module subroutine check_tensor(self, sus, bod, requested, stat)
             class(tensor_group_t), intent(in) :: self
             type(suspension_group_t), intent(in) :: sus     !! the suspension, normalised
@@ -133,7 +149,8 @@ contains
             'u_l:r1 u_l_prime:r1 u_b:r1 u_b_prime:r1 u_g:r1 u_period:r1 u_amplitude:r1 '// &
             'monte_carlo:i1 seed:i1 cycles:r100 trials:c1 record_columns:i3 record_units:c1 '// &
             'loss:c1 u_inertia:r2 u_cg_depth:r1 u_cg_offset:r1 u_r:r1 u_lambda:r1 tare_i1:r1 '// &
-            'u_tare_i1:r1 tare_mass:r1 added_inertia:r1 u_added_inertia:r1'
+            'u_tare_i1:r1 tare_mass:r1 added_inertia:r1 u_added_inertia:r1 '// &
+            'on_failure:c1 session:c1'
     end function measurement_spec
 
     !> &measurement; n_periods counts the leading periods given (check refuses gaps).
@@ -144,6 +161,7 @@ contains
         character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
         real(dp) :: periods(MAX_PERIODS), amplitudes(MAX_PERIODS), cycles(MAX_PERIODS)
         character(len=256) :: record, quantity, estimate, trials, record_units, loss
+        character(len=256) :: on_failure, session
         real(dp) :: u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude
         real(dp) :: u_inertia(2), u_cg_depth, u_cg_offset, u_r, u_lambda
         real(dp) :: tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia
@@ -151,7 +169,8 @@ contains
         namelist /measurement/ periods, amplitudes, cycles, record, quantity, estimate, u_mass, &
             u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude, monte_carlo, seed, &
             trials, record_columns, record_units, loss, u_inertia, u_cg_depth, u_cg_offset, &
-            u_r, u_lambda, tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia
+            u_r, u_lambda, tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia, &
+            on_failure, session
         periods = self%periods
         amplitudes = self%amplitudes
         cycles = self%cycles
@@ -182,6 +201,8 @@ contains
         tare_mass = self%tare_mass
         added_inertia = self%added_inertia
         u_added_inertia = self%u_added_inertia
+        on_failure = self%on_failure
+        session = self%session
         read (rec, nml=measurement, iostat=ios, iomsg=msg)
         self%periods = periods
         self%amplitudes = amplitudes
@@ -226,6 +247,8 @@ contains
         self%tare_mass = tare_mass
         self%added_inertia = added_inertia
         self%u_added_inertia = u_added_inertia
+        self%on_failure = on_failure
+        self%session = session
         self%n_periods = 0
         do while (self%n_periods < MAX_PERIODS)
             if (self%periods(self%n_periods + 1) == PERIOD_UNSET) exit
@@ -271,6 +294,9 @@ contains
         if (self%added_inertia > 0.0_dp .or. self%u_added_inertia > 0.0_dp) &
             line = line//', added_inertia = '//rshort(self%added_inertia)// &
             ', u_added_inertia = '//rshort(self%u_added_inertia)
+        if (lower(adjustl(self%on_failure)) /= 'stop') line = line//', on_failure = '// &
+            quoted(self%on_failure)
+        if (len_trim(self%session) > 0) line = line//', session = '//quoted(self%session)
         line = line//', monte_carlo = '//itoa(self%monte_carlo)//', seed = '// &
             itoa(self%seed)//' /'
     end function echo_measurement
@@ -308,6 +334,7 @@ contains
             self%quantity = merge('rate ', 'angle', index(self%record_units, '/s') > 0)
         end if
         self%loss = lower(adjustl(self%loss))
+        self%on_failure = lower(adjustl(self%on_failure))
         self%u_inertia = self%u_inertia_of()
         self%record_path = ''
         if (len_trim(self%record) > 0) self%record_path = record_in_folder(deck_path, &

@@ -64,7 +64,8 @@ module period_inversion
     use floquet, only: check_torsion_scene, torsion_period
     use random, only: rng_t, rng_stream, rng_normal
     use bifilar_model, only: NSTATE
-    use run_loop, only: stepped_model_t, row_sink_t, drive, falling_zero
+    use run_loop, only: drive
+    use theta4_maxima, only: maxima_sink_t
     use output_io, only: out_files_t
     use budget, only: input_u_t, budget_row_t
     use inputs, only: input_t, set_input, no_effect_on_torsion
@@ -107,16 +108,6 @@ module period_inversion
     contains
         procedure :: sample => period_mc_point
     end type period_mc_task_t
-
-    !> Finds the period of an asymmetric rig in the run loop: the first maximum of theta4
-    !! after theta4 has swung below 0 (a zero of theta4' from + to -, located in the step).
-    type, extends(row_sink_t) :: period_sink_t
-        logical :: below = .false.              !! theta4 has been below 0
-        real(dp) :: t_max = -1.0_dp             !! tau of the maximum, once found
-    contains
-        procedure :: take => period_take
-        procedure :: after_step => period_after_step
-    end type period_sink_t
 
     !> The inversion of periods as a least-squares problem of the estimator: the weighted
     !! residuals of the one parameter I1 (period_residual), the slope by a forward
@@ -214,7 +205,7 @@ contains
         type(rig_t) :: rr
         type(pendulum_t) :: p
         type(kane_run_t) :: m
-        type(period_sink_t) :: sink
+        type(maxima_sink_t) :: sink
         real(dp) :: y0(NSTATE), th0(5), t_end, jz
         t = 0.0_dp
         rr = rg
@@ -238,52 +229,14 @@ contains
             stat%msg = 'the period at '//fixed(amp_deg, 3)//' deg (simulated): '//stat%msg
             return
         end if
-        if (.not. (sink%t_max > 0.0_dp)) then
+        if (sink%found < 1) then
             call set_error(stat, ERR_NUMERIC, 'the period at '//fixed(amp_deg, 3)//' deg '// &
                 '(simulated): theta4 reached no maximum after its first swing within '// &
                 'tau = '//fixed(t_end, 3)//'; the rig does not swing in torsion')
             return
         end if
-        t = sink%t_max*sqrt(rg%b_prime/rg%g)
+        t = sink%t(1)*sqrt(rg%b_prime/rg%g)
     end subroutine simulated_period_s
-
-    !> period_sink_t takes no rows.
-    subroutine period_take(sink, m, k, t, y, stat)
-        class(period_sink_t), intent(inout) :: sink
-        class(stepped_model_t), intent(inout) :: m
-        integer, intent(in) :: k
-        real(dp), intent(in) :: t
-        real(dp), intent(in) :: y(:)
-        type(status_t), intent(out) :: stat
-        call unused(sink)
-        call unused(m)
-        call unused(k)
-        call unused(t)
-        call unused(y)
-        stat%code = 0
-    end subroutine period_take
-
-    !> After a step [t0, t1]: note theta4 below 0; after that, a theta4' going from + to -
-    !! within the step is the maximum, located by the Illinois variant of regula falsi on
-    !! the dense output to roundoff.
-    subroutine period_after_step(sink, m, t0, t1, stat)
-        class(period_sink_t), intent(inout) :: sink
-        class(stepped_model_t), intent(inout) :: m
-        real(dp), intent(in) :: t0, t1          !! the step
-        type(status_t), intent(out) :: stat
-        real(dp) :: y(NSTATE), c
-        logical :: found
-        if (.not. sink%below) then
-            call m%state_at(t1, y, stat)
-            if (stat%code /= 0) return
-            sink%below = y(4) < 0.0_dp
-            return
-        end if
-        call falling_zero(m, t0, t1, 9, found, c, y, stat)
-        if (stat%code /= 0 .or. .not. found) return
-        sink%t_max = c
-        sink%done = .true.
-    end subroutine period_after_step
 
     !> Scaled parameters of the rig with I1 = i1, checked to be a torsion scene with b1
     !! vertical at rest.
@@ -318,8 +271,10 @@ contains
 
     !> I1 by weighted least squares from periods (s) measured at peak amplitudes (degrees).
     !! Starts from rg%inertia(1).  ERR_DECK for a period no positive I1 can give (or not a
-    !! torsion scene); ERR_NUMERIC when Gauss-Newton does not converge.
-    subroutine invert_periods(rg, acc, periods, amps, u, fit, stat, u_each)
+    !! torsion scene); ERR_NUMERIC when Gauss-Newton does not converge.  timing_weights:
+    !! the weights from the timings' u alone (u_each, known to a common factor: timings whose
+    !! u is their scatter, found after the fit), not from the amplitudes'.
+    subroutine invert_periods(rg, acc, periods, amps, u, fit, stat, u_each, timing_weights)
         type(rig_t), intent(in) :: rg           !! the rig; inertia(1) is the start guess
         type(accuracy_t), intent(in) :: acc     !! accuracy of simulated periods
         real(dp), intent(in) :: periods(:)      !! measured full periods (s)
@@ -328,6 +283,7 @@ contains
         type(period_fit_t), intent(out) :: fit
         type(status_t), intent(out) :: stat
         real(dp), intent(in), optional :: u_each(:) !! each period's u (s), else u%period
+        logical, intent(in), optional :: timing_weights !! weights from u_each alone
         type(period_problem_t) :: prob
         type(lsq_options_t) :: opts
         type(lsq_result_t) :: res
@@ -335,7 +291,7 @@ contains
         real(dp) :: scale, i1, ilo, tmin, ta, tb, h, dtda
         integer :: i
         character(len=300) :: buf
-        logical :: sym
+        logical :: sym, amp_w
         stat%code = 0
         allocate (fit%model_periods(size(periods)))
         fit%model_periods = 0.0_dp
@@ -367,10 +323,12 @@ contains
         w = 1.0_dp
         up = u%period
         if (present(u_each)) up = u_each
-        if (any(up > 0.0_dp) .or. u%amplitude > 0.0_dp) then
+        amp_w = u%amplitude > 0.0_dp
+        if (present(timing_weights)) amp_w = amp_w .and. .not. timing_weights
+        if (any(up > 0.0_dp) .or. amp_w) then
             do i = 1, size(periods)
                 dtda = 0.0_dp
-                if (u%amplitude > 0.0_dp) then
+                if (amp_w) then
                     ! dT/dA by a difference that stays inside 0 < A < 180 degrees (a step
                     ! past 180 gave a NaN period and a weight of 1/tiny)
                     h = 1.0e-4_dp*max(1.0_dp, amps(i))

@@ -160,8 +160,9 @@ module record_fit
         procedure :: note_gain => record_note_gain
     end type record_fit_t
 
-    !> Where the release is in a record, as find_release sees it.
-    type, public :: release_t
+    !> Where the swing starts in a record, as find_release sees it: the start values of a
+    !! fit of the release (module measurement's release_t is the release itself).
+    type, public :: record_start_t
         logical :: held = .false.               !! the record starts with the body held still
         real(dp) :: t0 = 0.0_dp                 !! the release (or first turning point), s
         integer :: ifirst = 1                   !! first sample to fit
@@ -169,7 +170,7 @@ module record_fit
         real(dp) :: sign = 1.0_dp               !! the first swing's direction
         real(dp) :: level = 0.0_dp              !! the held level or the swing's centre
         real(dp) :: period = 0.0_dp             !! the mean period after the release (s)
-    end type release_t
+    end type record_start_t
 
     !> The model's value at the record's sample times (a sink of the run loop).
     type, extends(row_sink_t) :: record_sink_t
@@ -862,7 +863,7 @@ contains
     subroutine find_release(rec, rate, rl)
         type(record_t), intent(in) :: rec
         logical, intent(in) :: rate             !! W (rad/s), else theta4 (rad)
-        type(release_t), intent(out) :: rl
+        type(record_start_t), intent(out) :: rl
         real(dp) :: v(size(rec%v))
         real(dp) :: level, noise, vmax, thr, centre, peak, tp
         integer :: n, k, idep, i, ic, ie, j
@@ -1000,8 +1001,8 @@ contains
         type(record_t), intent(in) :: rec
         type(record_fit_t), intent(out) :: prob
         real(dp), allocatable, intent(out) :: p0(:), h(:)
-        type(release_t), intent(out), optional :: rl    !! what find_release found
-        type(release_t) :: rel
+        type(record_start_t), intent(out), optional :: rl  !! what find_release found
+        type(record_start_t) :: rel
         real(dp) :: tp, vscale
         integer :: j, k, n
         n = size(rec%t)

@@ -4,7 +4,7 @@
 !!
 !! * The problem: the six entries x = (J_xx, J_yy, J_zz, J_xy, J_xz, J_yz) of the tensor
 !!   about the mass centre in the body frame; each row of the table of hangs (module
-!!   hang_table) a measured period T_i of hang h(i) at amplitude A_i; the model period
+!!   measurement_read) a measured period T_i of hang h(i) at amplitude A_i; the model period
 !!   T(x; hang, A) of module hang_model (the torsion mode of the linearised full model at
 !!   A = 0, the full model's time from release to the next maximum of theta_4 at A > 0).
 !!   Rows of one hang at one amplitude share one model period (a case).
@@ -85,7 +85,7 @@ module tensor_fit
     use estimator, only: lsq_problem_t, lsq_options_t, lsq_result_t, estimate, DAMP_HALVING, &
         STEP_LARGEST, FAIL_FLOOR, FAIL_ITERATIONS
     use monte_carlo, only: mc_task_t
-    use hang_table, only: hang_t, hang_row_t, hang_set_t, RIG_NAMES
+    use measurement, only: measurement_t, observation_t, hang_t, OBS_HANG, RIG_COLUMNS
     use hang_model, only: tensor_entries, principal_axes, hang_rig, hang_period, &
         maxima_drift, vertical_moment, moment_direction, turned_hang
     use unused_arg, only: unused
@@ -106,7 +106,7 @@ module tensor_fit
     type, public :: tensor_problem_t
         real(dp) :: mass = 1.0_dp, g = 1.0_dp
         type(hang_t), allocatable :: hangs(:)
-        type(hang_row_t), allocatable :: rows(:)
+        type(observation_t), allocatable :: rows(:)     !! the timings (OBS_HANG), by hang
         type(accuracy_t) :: acc
         type(tensor_u_t) :: u
         real(dp), allocatable :: u_def(:)       !! per row: the period's definition (s)
@@ -229,17 +229,17 @@ contains
 
     !> The problem of a deck and its table of hangs: mass, g, accuracy and uncertainties
     !! from the deck (&tensor), the cases (hang, amplitude) of the rows.
-    subroutine problem_of(ten, sus, bod, acc, set, prob)
+    subroutine problem_of(ten, sus, bod, acc, m, prob)
         type(tensor_group_t), intent(in) :: ten         !! the deck's &tensor
         type(suspension_group_t), intent(in) :: sus     !! (g)
         type(body_group_t), intent(in) :: bod           !! (mass)
         type(accuracy_t), intent(in) :: acc             !! the deck's accuracy
-        type(hang_set_t), intent(in) :: set     !! its hangs
+        type(measurement_t), intent(in) :: m    !! its hangs (releases) and their timings
         type(tensor_problem_t), intent(out) :: prob
         prob%mass = bod%mass
         prob%g = sus%g
-        prob%hangs = set%hangs
-        prob%rows = set%rows
+        prob%hangs = m%releases%hang
+        prob%rows = m%obs
         prob%acc = acc
         prob%u%mass = ten%u(1)
         prob%u%rig = ten%u(2:5)
@@ -263,7 +263,7 @@ contains
         do i = 1, n
             prob%row_case(i) = 0
             do j = 1, nc
-                if (prob%case_hang(j) == prob%rows(i)%hang .and. &
+                if (prob%case_hang(j) == prob%rows(i)%release .and. &
                     prob%case_amp(j) == prob%rows(i)%amplitude) then
                     prob%row_case(i) = j
                     exit
@@ -271,7 +271,7 @@ contains
             end do
             if (prob%row_case(i) == 0) then
                 nc = nc + 1
-                prob%case_hang(nc) = prob%rows(i)%hang
+                prob%case_hang(nc) = prob%rows(i)%release
                 prob%case_amp(nc) = prob%rows(i)%amplitude
                 prob%row_case(i) = nc
             end if
@@ -478,7 +478,7 @@ contains
         n = size(prob%rows)
         allocate (a(n, 6), b(n))
         do i = 1, n
-            associate (h => prob%hangs(prob%rows(i)%hang))
+            associate (h => prob%hangs(prob%rows(i)%release))
                 a(i, :) = moment_direction(h%up)
                 b(i) = prob%mass*prob%g*h%b*h%b_prime*prob%rows(i)%period**2/ &
                        (16.0_dp*pi**2*0.5_dp*(h%l + h%l_prime))
@@ -655,7 +655,7 @@ contains
         allocate (blocks(size(prob%hangs)))
         none = .true.
         do h = 1, size(prob%hangs)
-            idx = pack([(i, i=1, size(prob%rows))], prob%rows%hang == h)
+            idx = pack([(i, i=1, size(prob%rows))], prob%rows%release == h)
             m = size(idx)
             blocks(h)%rows = idx
             allocate (blocks(h)%l(m, m))
@@ -986,17 +986,17 @@ contains
         do k = 1, 4
             col(:, 1) = 0.0_dp
             do i = 1, n
-                if (.not. prob%hangs(prob%rows(i)%hang)%own(k)) &
+                if (.not. prob%hangs(prob%rows(i)%release)%own(k)) &
                     col(i, 1) = s_rig(prob%row_case(i), k)
             end do
-            if (any(col(:, 1) /= 0.0_dp)) call group(trim(RIG_NAMES(k)), prob%u%rig(k), &
+            if (any(col(:, 1) /= 0.0_dp)) call group(trim(RIG_COLUMNS(k)), prob%u%rig(k), &
                                                      col(:, 1))
         end do
         do h = 1, size(prob%hangs)
             ! the timings of its rows
             cgrp = 0.0_dp
             do i = 1, n
-                if (prob%rows(i)%hang /= h) cycle
+                if (prob%rows(i)%release /= h) cycle
                 col(:, 1) = 0.0_dp
                 col(i, 1) = -1.0_dp
                 call add_input(col(:, 1), u_t(i), cgrp)
@@ -1005,10 +1005,10 @@ contains
                       ROW_TIMING)
             ! amplitudes
             if (prob%u%amplitude > 0.0_dp .and. any(prob%case_amp(pack(prob%row_case, &
-                prob%rows%hang == h)) > 0.0_dp)) then
+                prob%rows%release == h)) > 0.0_dp)) then
                 cgrp = 0.0_dp
                 do i = 1, n
-                    if (prob%rows(i)%hang /= h) cycle
+                    if (prob%rows(i)%release /= h) cycle
                     col(:, 1) = 0.0_dp
                     col(i, 1) = s_amp(prob%row_case(i))
                     call add_input(col(:, 1), prob%u%amplitude, cgrp)
@@ -1017,16 +1017,16 @@ contains
                           ROW_AMPLITUDE)
             end if
             ! the period's definition (the drift of the maxima)
-            if (any(prob%u_def(pack([(i, i=1, n)], prob%rows%hang == h)) > 0.0_dp)) then
+            if (any(prob%u_def(pack([(i, i=1, n)], prob%rows%release == h)) > 0.0_dp)) then
                 cgrp = 0.0_dp
                 do i = 1, n
-                    if (prob%rows(i)%hang /= h) cycle
+                    if (prob%rows(i)%release /= h) cycle
                     col(:, 1) = 0.0_dp
                     col(i, 1) = -1.0_dp
                     call add_input(col(:, 1), prob%u_def(i), cgrp)
                 end do
                 call push('definition('//itoa(prob%hangs(h)%id)//')', &
-                          maxval(prob%u_def(pack([(i, i=1, n)], prob%rows%hang == h))), cgrp, &
+                          maxval(prob%u_def(pack([(i, i=1, n)], prob%rows%release == h))), cgrp, &
                           ROW_DEFINITION)
             end if
             ! the direction: three rotations shared by its rows
@@ -1035,7 +1035,7 @@ contains
                 do k = 1, 3
                     col(:, 1) = 0.0_dp
                     do i = 1, n
-                        if (prob%rows(i)%hang == h) col(i, 1) = s_dir(prob%row_case(i), k)
+                        if (prob%rows(i)%release == h) col(i, 1) = s_dir(prob%row_case(i), k)
                     end do
                     call add_input(col(:, 1), prob%u%direction, cgrp)
                 end do
@@ -1048,10 +1048,10 @@ contains
                 cgrp = 0.0_dp
                 col(:, 1) = 0.0_dp
                 do i = 1, n
-                    if (prob%rows(i)%hang == h) col(i, 1) = s_rig(prob%row_case(i), k)
+                    if (prob%rows(i)%release == h) col(i, 1) = s_rig(prob%row_case(i), k)
                 end do
                 call add_input(col(:, 1), prob%u%rig(k), cgrp)
-                call push(trim(RIG_NAMES(k))//'('//itoa(prob%hangs(h)%id)//')', &
+                call push(trim(RIG_COLUMNS(k))//'('//itoa(prob%hangs(h)%id)//')', &
                           prob%u%rig(k), cgrp, ROW_INPUT)
             end do
         end do
@@ -1125,7 +1125,7 @@ contains
         end subroutine push
         pure integer function first_row(hh)
             integer, intent(in) :: hh
-            first_row = findloc(prob%rows%hang, hh, 1)
+            first_row = findloc(prob%rows%release, hh, 1)
         end function first_row
     end subroutine covariance_and_budget
 
@@ -1531,7 +1531,7 @@ contains
         end do
         do i = 1, size(prob%rows)
             associate (r => prob%rows(i))
-                p = [p, real(r%hang, dp), real(r%line, dp), r%period, r%cycles, r%amplitude, &
+                p = [p, real(r%release, dp), real(r%line, dp), r%period, r%cycles, r%amplitude, &
                      fit%u_row(i), prob%u_def(i)]
             end associate
         end do
@@ -1548,7 +1548,7 @@ contains
         real(dp), intent(in) :: payload(:)
         type(tensor_mc_task_t), intent(out) :: task
         type(status_t), intent(out) :: stat
-        type(hang_set_t) :: set
+        type(measurement_t) :: set
         integer :: nh, n, h, i, j, k, own
         stat%code = STATUS_OK
         if (size(payload) < 3) then
@@ -1563,10 +1563,10 @@ contains
                 'its counts')
             return
         end if
-        allocate (set%hangs(nh), set%rows(n))
+        allocate (set%releases(nh), set%obs(n))
         j = 3
         do h = 1, nh
-            associate (hh => set%hangs(h), q => payload(j + 1:j + 15))
+            associate (hh => set%releases(h)%hang, q => payload(j + 1:j + 15))
                 hh%id = nint(q(1))
                 hh%line = nint(q(2))
                 hh%up = q(3:5)
@@ -1586,8 +1586,9 @@ contains
         end do
         allocate (task%u_row(n))
         do i = 1, n
-            associate (r => set%rows(i), q => payload(j + 1:j + 7))
-                r%hang = nint(q(1))
+            associate (r => set%obs(i), q => payload(j + 1:j + 7))
+                r%kind = OBS_HANG
+                r%release = nint(q(1))
                 r%line = nint(q(2))
                 r%period = q(3)
                 r%cycles = q(4)

@@ -11,50 +11,19 @@ module rig
     use status, only: status_t, set_error, ERR_DECK
     use text, only: sci
     use rig_groups, only: suspension_group_t, body_group_t, damping_group_t, &
-        cables_group_t, start_group_t, integration_group_t, DEFAULT_B, DEFAULT_B_PRIME, &
-        DEFAULT_L, DEFAULT_L_PRIME, DEFAULT_G, DEFAULT_MASS, DEFAULT_INERTIA, DEFAULT_R, &
-        DEFAULT_LAMBDA, DEFAULT_BTILDE, DEFAULT_SWAY_DEPTH, DEFAULT_C_V, DEFAULT_C_Q, &
-        DEFAULT_STIFFNESS, DEFAULT_CABLE_DAMPING, DEFAULT_MODE, DEFAULT_AMPLITUDE, &
-        DEFAULT_TILT, DEFAULT_THETA, DEFAULT_THETA_DOT, DEFAULT_RTOL, DEFAULT_ATOL, &
+        cables_group_t, start_group_t, integration_group_t, DEFAULT_RTOL, DEFAULT_ATOL, &
         DEFAULT_SENS_ERROR_CONTROL
     use geometry, only: pendulum_t, beta_coeffs
     use start_pose, only: raised_angles, solve_theta5
     use bifilar_model, only: chart_state, NSTATE
     use integrators, only: integrator_for, SOLVER_LSODA, SENS_FORWARD, sensitivities_for
+    use rig_type, only: rig_t, start_t
     implicit none
     private
 
-    !> The rig, in the deck's units (any one consistent system; time in seconds); by default
-    !! the deck's defaults (module rig_groups).
-    type, public :: rig_t
-        ! the suspension: spacing of the cables on the support (b) and on the body (b_prime),
-        ! cable lengths BC (l) and AD (l_prime), gravity
-        real(dp) :: b = DEFAULT_B, b_prime = DEFAULT_B_PRIME
-        real(dp) :: l = DEFAULT_L, l_prime = DEFAULT_L_PRIME, g = DEFAULT_G
-        ! the body: mass, principal moments about its mass centre, the mass centre's place
-        ! from C (r, lambda, eq. (21)), the principal axes (btilde, rows in ntilde), the
-        ! depth of the point E of the side-sway Q below the midpoint of CD
-        real(dp) :: mass = DEFAULT_MASS
-        real(dp) :: inertia(3) = DEFAULT_INERTIA
-        real(dp) :: r = DEFAULT_R, lambda = DEFAULT_LAMBDA
-        real(dp) :: btilde(3, 3) = DEFAULT_BTILDE
-        real(dp) :: sway_depth = DEFAULT_SWAY_DEPTH
-        ! the damping torque about the vertical, M = -(c_v W + c_q |W| W) n3
-        real(dp) :: c_v = DEFAULT_C_V, c_q = DEFAULT_C_Q
-        ! elastic cables (model 'elastic'): EA/(m g) and the damping ratio of each cable
-        real(dp) :: cable_stiffness = DEFAULT_STIFFNESS, cable_damping = DEFAULT_CABLE_DAMPING
-    end type rig_t
-
-    !> How the rig starts: mode 'raised' (the paper's recipe: turned by `amplitude` degrees
-    !! about the vertical through O, tilt added to theta_1) or 'angles' (theta_1..4 and their
-    !! rates given); theta_5 and its rate follow from the constraint.
-    type, public :: start_t
-        character(len=16) :: mode = DEFAULT_MODE
-        real(dp) :: amplitude = DEFAULT_AMPLITUDE   !! degrees (mode 'raised')
-        real(dp) :: tilt = DEFAULT_TILT             !! rad, added to theta_1 (mode 'raised')
-        real(dp) :: theta(4) = DEFAULT_THETA        !! rad (mode 'angles')
-        real(dp) :: theta_dot(4) = DEFAULT_THETA_DOT    !! rad per unit tau (mode 'angles')
-    end type start_t
+    !> The rig and its start (module rig_type's types, which the measurement's model
+    !! holds below this layer's runs).
+    public :: rig_t, start_t
 
     !> How accurately a rig's runs are integrated: &integration rtol, atol, the integrator
     !! and how derivatives of runs are taken (module integrators).

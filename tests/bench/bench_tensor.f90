@@ -13,7 +13,8 @@ program bench_tensor
     use status, only: status_t
     use deck, only: deck_t, read_deck
     use deck_runs, only: accuracy_of
-    use hang_table, only: hang_set_t, read_hangs
+    use measurement, only: measurement_t
+    use measurement_read, only: read_hangs
     use hang_model, only: tensor_entries, hang_rig, torsion_mode, torsion_mode_t, maxima_drift
     use tensor_fit, only: tensor_problem_t, problem_of, amplitude_limits, DRIFT_MAX, DRIFT_CYCLES
     use rig, only: rig_t
@@ -21,7 +22,7 @@ program bench_tensor
     character(len=256) :: mode, arg
     type(deck_t) :: d
     type(status_t) :: st
-    type(hang_set_t) :: set
+    type(measurement_t) :: set
     type(tensor_problem_t) :: prob
     type(rig_t) :: rg
     type(torsion_mode_t) :: md
@@ -67,12 +68,14 @@ program bench_tensor
         write (*, '(a,f5.1,a)', advance='no') '  A=', amps(k), '  '
     end do
     write (*, '(a)') '  limit(deg)'
-    do h = 1, size(set%hangs)
-        call hang_rig(d%body%mass, d%suspension%g, set%hangs(h), x, rg, st)
+    do h = 1, size(set%releases)
+        call hang_rig(d%body%mass, d%suspension%g, set%releases(h)%hang, x, rg, st)
         call torsion_mode(rg, md, st)
-        write (*, '(i5,3f6.2,f6.1,2f7.3)', advance='no') set%hangs(h)%id, set%hangs(h)%up, &
-            acos(min(1.0_dp, maxval(abs(matmul(set%hangs(h)%up, transpose(d%body%btilde))))))/deg, &
-            md%share, md%next_share
+        associate (hh => set%releases(h)%hang)
+            write (*, '(i5,3f6.2,f6.1,2f7.3)', advance='no') hh%id, hh%up, &
+                acos(min(1.0_dp, maxval(abs(matmul(hh%up, transpose(d%body%btilde))))))/deg, &
+                md%share, md%next_share
+        end associate
         do k = 1, na
             call maxima_drift(rg, prob%acc, amps(k), DRIFT_CYCLES, dr, ad, st)
             if (st%code /= 0) dr = -1.0_dp
