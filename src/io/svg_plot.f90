@@ -39,6 +39,8 @@ module svg_plot
     integer, parameter :: BINS = 666
     !> Margins of the plotting area (px): left, right, top, bottom.
     integer, parameter :: ML = 72, MR = 16, MT = 30, MB = 44
+    !> The widest coordinate px writes (characters).
+    integer, parameter :: PX_LEN = 12
 
 contains
 
@@ -89,10 +91,11 @@ contains
         character(len=:), allocatable :: s
         real(dp) :: xlo, xhi, ylo, yhi, pw, ph
         real(dp), allocatable :: xt(:), yt(:)
-        integer :: k, j, ly
+        integer :: k, j, ly, np
         character(len=:), allocatable :: path
         logical :: pen
         real(dp), allocatable :: xs(:), ys(:), es(:)
+        path = ''
         call data_range(p, .true., xlo, xhi)
         call data_range(p, .false., ylo, yhi)
         xt = nice_ticks(xlo, xhi)
@@ -146,17 +149,20 @@ contains
                         '" r="2.5" fill="'//trim(p%series(k)%color)//'"/>'
                 end do
             else
-                path = ''
+                ! the path's text in a buffer of its largest size (no copy per point)
+                deallocate (path)
+                allocate (character(len=size(xs)*(2*PX_LEN + 3)) :: path)
+                np = 0
                 pen = .false.
                 do j = 1, size(xs)
                     if (.not. (ieee_is_finite(xs(j)) .and. ieee_is_finite(ys(j)))) then
                         pen = .false.
                         cycle
                     end if
-                    path = path//merge('L', 'M', pen)//px(sx(xs(j)))//' '//px(sy(ys(j)))//' '
+                    call put(merge('L', 'M', pen)//px(sx(xs(j)))//' '//px(sy(ys(j)))//' ')
                     pen = .true.
                 end do
-                if (len(path) > 0) s = s//'<path d="'//path//'" fill="none" stroke="'// &
+                if (np > 0) s = s//'<path d="'//path(1:np)//'" fill="none" stroke="'// &
                     trim(p%series(k)%color)//'" stroke-width="1.2"/>'
             end if
             if (len(p%series(k)%label) > 0) then
@@ -183,6 +189,13 @@ contains
                                    (yhi - ylo))
         end function sy
 
+    contains
+        !> Append t to the path's buffer (px writes at most PX_LEN characters).
+        subroutine put(t)
+            character(len=*), intent(in) :: t
+            path(np + 1:np + len(t)) = t
+            np = np + len(t)
+        end subroutine put
     end function svg_render
 
     !> The range of x (or y, with its error bars) over every finite point, widened when empty
@@ -343,7 +356,7 @@ contains
         real(dp), intent(in) :: v
         character(len=:), allocatable :: s
         character(len=24) :: buf
-        write (buf, '(f12.1)') v
+        write (buf, '(f'//itoa(PX_LEN)//'.1)') v
         s = trim(adjustl(buf))
     end function px
 
