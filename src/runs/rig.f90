@@ -43,6 +43,9 @@ module rig
         real(dp) :: c_v = DEFAULT_C_V, c_q = DEFAULT_C_Q
         ! elastic cables (model 'elastic'): EA/(m g) and the damping ratio of each cable
         real(dp) :: cable_stiffness = DEFAULT_STIFFNESS, cable_damping = DEFAULT_CABLE_DAMPING
+        ! cables > 2: a regular platform of that many cables, b = 2 radius, b_prime = 2
+        ! radius_prime, l every cable's length (module platform_rig: platform_of_rig)
+        integer :: cables = 2
     end type rig_t
 
     !> How the rig starts: mode 'raised' (the paper's recipe: turned by `amplitude` degrees
@@ -115,6 +118,7 @@ contains
         rg%c_q = dmp%c_q
         rg%cable_stiffness = cab%stiffness
         rg%cable_damping = cab%damping
+        rg%cables = sus%cables
     end function rig_of_groups
 
     !> The start of &start (normalised).
@@ -234,7 +238,8 @@ contains
                    all(a%inertia == b%inertia) .and. a%r == b%r .and. a%lambda == b%lambda .and. &
                    all(a%btilde == b%btilde) .and. a%sway_depth == b%sway_depth .and. &
                    a%c_v == b%c_v .and. a%c_q == b%c_q .and. &
-                   a%cable_stiffness == b%cable_stiffness .and. a%cable_damping == b%cable_damping
+                   a%cable_stiffness == b%cable_stiffness .and. &
+                   a%cable_damping == b%cable_damping .and. a%cables == b%cables
     end function same_rig
 
     !> Two starts are the same, value for value (every component of start_t: keep in step).
