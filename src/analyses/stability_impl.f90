@@ -6,7 +6,7 @@ submodule (stability) stability_impl
     use geometry, only: pendulum_t
     use deck, only: deck_t, deck_echo
     use rig, only: make_pendulum
-    use deck_runs, only: rig_of, method_of
+    use deck_runs, only: rig_of, method_of, undamped_ready
     use integrators, only: sensitivities_for
     use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, floquet_point, &
                        CHART_FAILED, point_values_valid, CHART_INVALID, &
@@ -14,7 +14,9 @@ submodule (stability) stability_impl
     use output_io, only: out_files_t, write_kv
     use sweep_engine, only: sweep_task_t, sweep_run, sweep_options_t, sweep_report_t, &
         checkpoint_path
-    use text, only: itoa, sci
+    use text, only: itoa, sci, fixed
+    use unused_arg, only: unused
+    use analysis_base, only: ranks_note, resume_note
     use kinds, only: pi
     use rig_groups, only: suspension_group_t, body_group_t, damping_group_t
     use platform_geometry, only: platform_t
@@ -42,6 +44,86 @@ submodule (stability) stability_impl
 
 
 contains
+
+    !> The preconditions of floquet: floquet_ready, and no &damping (undamped_ready).
+    module procedure floquet_analysis_ready
+        call unused(self)
+        call floquet_ready(d, stat)
+        if (stat%code == 0) call undamped_ready(d, stat)
+    end procedure floquet_analysis_ready
+
+    !> The run (run_floquet into the run's files).
+    module procedure floquet_analysis_run
+        call unused(options)
+        call run_floquet(d, outdir, self%res, stat, files=files)
+    end procedure floquet_analysis_run
+
+    !> ' floquet period P, max modulus M, stable yes|no;'
+    module procedure floquet_summary
+        call unused(d)
+        s = ' floquet period '//fixed(self%res%period, 6)//', max modulus '// &
+            sci(self%res%max_modulus, 5)//', stable '// &
+            trim(merge('yes', 'no ', self%res%stable))//';'
+    end procedure floquet_summary
+
+    !> The preconditions of chart: the deck's own scene has a reachable geometry (each
+    !! point of the grid is checked when it is computed), and no &damping.
+    module procedure chart_analysis_ready
+        type(pendulum_t) :: p
+        type(platform_case_t) :: pc
+        call unused(self)
+        if (d%suspension%cables > 2) then
+            ! a platform: the deck's own platform checked (platform_case)
+            call platform_case(platform_of(d%suspension, d%body, d%damping), .false., &
+                               d%cables%stiffness, d%cables%damping, pc, stat)
+            if (stat%code /= 0) then
+                stat%msg = 'analyses = ''chart'': '//stat%msg
+                return
+            end if
+            call undamped_ready(d, stat)
+            return
+        end if
+        call make_pendulum(rig_of(d), p, stat)
+        if (stat%code /= 0) then
+            stat%msg = 'analyses = ''chart'': '//stat%msg
+            return
+        end if
+        call undamped_ready(d, stat)
+    end procedure chart_analysis_ready
+
+    !> The run (run_chart into the run's files; its sweep's warning kept).
+    module procedure chart_analysis_run
+        call run_chart(d, outdir, self%nstable, self%wall_seconds, stat, files=files, &
+                       nfailed=self%nfailed, options=options, report=self%rep)
+        call self%add_report_warning(self%rep)
+    end procedure chart_analysis_run
+
+    !> ' chart N points, N stable, T s[ on N ranks][, N failed (-2 in the file)][resume];'
+    module procedure chart_summary
+        s = ' chart '//itoa(d%chart%nx*d%chart%ny)//' points, '//itoa(self%nstable)// &
+            ' stable, '//fixed(self%wall_seconds, 2)//' s'//ranks_note(self%rep)
+        if (self%nfailed > 0) s = s//', '//itoa(self%nfailed)//' failed (-2 in the file)'
+        s = s//resume_note(self%rep)//';'
+    end procedure chart_summary
+
+    !> The task of sweep 'chart' on the other ranks of an MPI run (chart_task).
+    module procedure chart_sweep_task
+        type(chart_task_t), allocatable :: chart
+        type(platform_chart_task_t), allocatable :: pchart
+        call unused(self)
+        call unused(sweep)
+        call unused(payload)
+        if (d%suspension%cables > 2) then
+            allocate (pchart)
+            call platform_chart_task(d, pchart)
+            stat%code = 0
+            call move_alloc(pchart, task)
+            return
+        end if
+        allocate (chart)
+        call chart_task(d, chart, stat)
+        call move_alloc(chart, task)
+    end procedure chart_sweep_task
 
     !> The preconditions of analyses = 'floquet', checked before any computing: the cables
     !! can reach and pure torsion is an exact motion of the scene (ERR_DECK otherwise).
@@ -224,12 +306,12 @@ contains
         nstable = 0
         if (present(nfailed)) nfailed = 0
         if (d%suspension%cables > 2) then
-            ! a platform's chart: its own sweep ('platform_chart'), the checkpoint NAME.chart.partial
+            ! a platform's chart: its own task (platform_chart_task_t), the same sweep
             call platform_chart_task(d, ptask)
             allocate (task%xs(size(ptask%xs)), task%ys(size(ptask%ys)))
             task%xs = ptask%xs
             task%ys = ptask%ys
-            call sweep_run(ptask, 'platform_chart', d%path, checkpoint_path(outdir, d%name, &
+            call sweep_run(ptask, 'chart', d%path, checkpoint_path(outdir, d%name, &
                            'chart'), d%name//': chart', d%chart%nx*d%chart%ny, 2, vals, stat, &
                            options, rep, deck_text=d%text)
         else

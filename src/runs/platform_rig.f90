@@ -71,24 +71,22 @@ contains
         real(dp) :: jb(3, 3)
         real(dp) :: je(3, 3)
         integer, parameter :: perm(3) = [2, 3, 1]     ! x, y, z are e2, e3, e1
-        integer :: a, b
-        je = matmul(transpose(btilde), matmul(diag(inertia), btilde))
+        integer :: a, b, k
+        ! J_E = btilde^T diag(inertia) btilde, term by term
+        do b = 1, 3
+            do a = 1, 3
+                je(a, b) = 0.0_dp
+                do k = 1, 3
+                    je(a, b) = je(a, b) + btilde(k, a)*inertia(k)*btilde(k, b)
+                end do
+            end do
+        end do
         do b = 1, 3
             do a = 1, 3
                 jb(a, b) = je(perm(a), perm(b))
             end do
         end do
         jb = 0.5_dp*(jb + transpose(jb))
-    contains
-        pure function diag(v) result(m)
-            real(dp), intent(in) :: v(3)
-            real(dp) :: m(3, 3)
-            integer :: k
-            m = 0.0_dp
-            do k = 1, 3
-                m(k, k) = v(k)
-            end do
-        end function diag
     end function platform_inertia
 
     !> The platform of the deck's groups (checked: cables >= 3), in deck units; not yet
