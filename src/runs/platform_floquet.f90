@@ -260,7 +260,10 @@ contains
                 ok = .true.
                 return
             end if
-            if (it == SHOOT_MAX .or. .not. (rn < 10.0_dp*rprev)) return
+            if (it == SHOOT_MAX) return
+            if (it > 0) then
+                if (.not. (rn < 10.0_dp*rprev)) return     ! diverging
+            end if
             rprev = rn
             call flow(pl, yh, f, stat)
             if (stat%code /= STATUS_OK) return
