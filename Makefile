@@ -208,6 +208,8 @@ bench: $(BIN)/bench_integrator $(BIN)/bench_bifilar $(BIN)/bench_wp $(BIN)/bench
 	tests/bench/speed.sh $(BIN) output/bench_speed.dat
 	@echo "100 x 100 stability chart (tests/bench/chart_cylinder.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}):"
 	$(BIN)/bifilar tests/bench/chart_cylinder.nml --out build/bench 2>/dev/null
+	@echo "100 x 100 stability chart of a trifilar platform (tests/bench/chart_platform.nml):"
+	$(BIN)/bifilar tests/bench/chart_platform.nml --out build/bench 2>/dev/null
 	@echo "60 x 6 rig design (input/box_design.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}: under 20 s on 2 cores):"
 	$(BIN)/bifilar input/box_design.nml --out build/bench 2>/dev/null
 	@echo "a record fit with 200 Monte Carlo refits (input/more/identify_record_mc.nml, OMP_NUM_THREADS=$${OMP_NUM_THREADS:-all cores}: the refits' wall time, under 1 s on 2 cores):"

@@ -209,10 +209,10 @@ contains
                  'l_prime = 1.2, g = 9.80665 /'//NL//BODY//per, 4, 'half the spacing')
         call one('mm', HEAD//SUSP//BODY//'&measurement periods = '//num(1000*t1)//', '// &
                  num(1000*t2)//', amplitudes = 10, 20 /'//NL, 4, 'units')
-        call one('tri_sim', "&scene title = 'measure test', analyses = 'simulate' /"//NL// &
-                 '&suspension cables = 3, radius = 0.2, radius_prime = 0.15, l = 1.0, '// &
+        call one('tri_sim', "&scene title = 'measure test', analyses = 'work_precision' /"// &
+                 NL//'&suspension cables = 3, radius = 0.2, radius_prime = 0.15, l = 1.0, '// &
                  'g = 9.80665 /'//NL//'&body mass = 2.0, inertia = 0.04, 0.03, 0.03 /'//NL, 2, &
-                 'cables >= 3 with analyses = ''identify'' alone')
+                 'not a platform of 3 cables')
         ! I1 5 % above I2 + I3: a warning, the number stands
         call fresh_dir(SCR//'/trap_lamina')
         t1 = period_of(1.05_dp*(0.063_dp + 0.0304_dp), 10.0_dp)

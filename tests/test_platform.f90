@@ -34,6 +34,7 @@ module test_platform
     use platform_reference, only: ref_body_t, ref_rotation, ref_constraints, ref_energy, &
                                   ref_tensions, ref_quat_of_yaw_tilt, REF_NSTATE
     use unused_arg, only: unused
+    use test_platform_analyses, only: run_platform_analysis_tests
     implicit none
     private
 
@@ -54,7 +55,6 @@ contains
     subroutine run_platform_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe     !! path of the bifilar executable
-        call unused(exe)
         if (t%want('platform: kinematics against finite differences, Kane against '// &
                    'Newton-Euler')) call test_kinematics(t)
         if (t%want('platform: two cables against the paper''s model')) call test_bifilar(t)
@@ -72,6 +72,7 @@ contains
         if (t%want('platform: rest pose, tipping height, bad platforms')) call test_rest(t)
         if (t%want('platform: slack ends the inextensible model, not the elastic one')) &
             call test_slack(t)
+        call run_platform_analysis_tests(t, exe)
     end subroutine run_platform_tests
 
     ! ---------------------------------------------------------------------------------------

@@ -12,6 +12,7 @@ module test_robust
                        read_kv_text, run, shell_count, scratch_dir, fresh_dir, empty_dir, &
                        abs_path, no_nan
     use text, only: itoa
+    use test_platform_analyses, only: run_platform_refusal_tests
     implicit none
     private
 
@@ -57,6 +58,7 @@ contains
             call test_audit_long(t, exe)
         if (t%want('robust: progress on a terminal only')) call test_progress(t, exe)
         if (t%want('robust: the report shows every figure')) call test_report(t, exe)
+        call run_platform_refusal_tests(t, exe)
     end subroutine run_robust_tests
 
     ! ---------------------------------------------------------------------------------------

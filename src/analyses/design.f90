@@ -60,6 +60,7 @@ module design
     use output_io, only: out_files_t
     use sweep_engine, only: sweep_task_t, sweep_options_t, sweep_report_t
     use analysis_base, only: analysis_t, WORD_LEN
+    use rig_groups, only: suspension_group_t, body_group_t, damping_group_t
     implicit none
     private
 
@@ -121,6 +122,13 @@ module design
         type(accuracy_t) :: acc
         real(dp) :: fq_rtol = 1.0e-10_dp
         integer :: fq_segments = 1
+        !> a platform (&suspension cables = 3): its groups, each candidate's platform made
+        !! from them with radius = b/2, radius_prime = b'/2 and l (its torsion's stability
+        !! from the platform's model; its period, centred, is that of the pair b, b')
+        logical :: platform = .false.
+        type(suspension_group_t) :: sus
+        type(body_group_t) :: bod
+        type(damping_group_t) :: dmp
     end type design_rig_t
 
     !> Analysis `design` (module analysis_base): OUTDIR/NAME.design from the three sweeps

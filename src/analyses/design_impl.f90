@@ -18,6 +18,9 @@ submodule (design) design_impl
     use output_io, only: out_files_t, write_kv, remove_file
     use unused_arg, only: unused
     use analysis_base, only: ranks_note, resume_note
+    use rig_groups, only: suspension_group_t
+    use platform_rig, only: platform_of
+    use platform_floquet, only: platform_floquet_point
     implicit none
 
     !> Sweep 1: Floquet point k = (amplitude j, l i, b m), amplitude fastest; value: the
@@ -63,6 +66,10 @@ contains
         dr%acc = accuracy_of(d)
         dr%fq_rtol = d%floquet%rtol
         dr%fq_segments = d%floquet%segments
+        dr%platform = d%suspension%cables > 2
+        dr%sus = d%suspension
+        dr%bod = d%body
+        dr%dmp = d%damping
     end procedure design_rig_of
 
     !> The rig with the candidate's cables l = l', support spacing b and body spacing b'.
@@ -84,6 +91,18 @@ contains
             ls(i) = d%design%l_min + (d%design%l_max - d%design%l_min)*(i - 1)/(d%design%nl - 1)
         end do
         ls(d%design%nl) = d%design%l_max
+        if (d%suspension%cables > 2) then
+            ! a platform: the radii (b = 2 radius), the body's in the deck's ratio
+            b1 = 2.0_dp*spacings(d%design%radius_min, d%design%radius_max, d%design%nradius, &
+                                 d%suspension%radius)
+            bs = b1
+            bps = b1*(d%suspension%radius_prime/d%suspension%radius)
+            do i = 1, d%design%n_amplitudes
+                amps(i) = d%design%amplitude_max*i/d%design%n_amplitudes
+            end do
+            amps(d%design%n_amplitudes) = d%design%amplitude_max
+            return
+        end if
         b1 = spacings(d%design%b_min, d%design%b_max, d%design%nb, d%suspension%b)
         bp1 = spacings(d%design%b_prime_min, d%design%b_prime_max, d%design%nb_prime, &
                        d%suspension%b_prime)
@@ -168,9 +187,22 @@ contains
     !! with the deck's &floquet rtol and segments (CHART_INVALID, CHART_FAILED as in a chart).
     module procedure candidate_modulus
         type(pendulum_t) :: p
+        type(suspension_group_t) :: sus
         type(status_t) :: st
         real(dp) :: period
         modulus = CHART_INVALID
+        if (dr%platform) then
+            sus = dr%sus
+            sus%radius = 0.5_dp*b
+            sus%radius_prime = 0.5_dp*bp
+            sus%l = l
+            sus%b = b
+            sus%b_prime = bp
+            sus%l_prime = l
+            call platform_floquet_point(platform_of(sus, dr%bod, dr%dmp), amp_deg, dr%fq_rtol, &
+                                        dr%acc%method, modulus, period)
+            return
+        end if
         call make_pendulum(candidate_rig(dr%rg, l, b, bp), p, st)
         if (st%code /= STATUS_OK) return
         call floquet_point(p, amp_deg, dr%fq_rtol, dr%fq_segments, modulus, period, &
@@ -744,8 +776,16 @@ contains
         call put('# recommended: the smallest predicted u(I1)/I1 among candidates stable at '// &
             'every amplitude with stable_margin_l >= margin_fraction l (stable_margin_l: '// &
             'distance to the nearest unstable band or end of the swept range)')
+        if (d%suspension%cables > 2) call put('# a platform of '//itoa(d%suspension%cables)// &
+            ' cables: b = 2 radius, b'' = 2 radius_prime (the body''s radius in the deck''s '// &
+            'ratio); stability from the platform''s model (its torsion, tilt and sway), the '// &
+            'period of the centred torsion that of the pair b, b''')
         call deck_echo(d, u, ios)
         call write_kv(u, 'recommended_l', res%ls(i), ios)
+        if (d%suspension%cables > 2) then
+            call write_kv(u, 'recommended_radius', 0.5_dp*res%bs(m), ios)
+            call write_kv(u, 'recommended_radius_prime', 0.5_dp*res%bps(m), ios)
+        end if
         call write_kv(u, 'recommended_b', res%bs(m), ios)
         call write_kv(u, 'recommended_b_prime', res%bps(m), ios)
         call write_kv(u, 'predicted_u_I1_rel', res%u_rel(i, m), ios)

@@ -21,6 +21,11 @@ submodule (simulate) simulate_impl
     use fast_format, only: es_field, f_field
     use run_loop, only: stepped_model_t, row_sink_t, drive, check_row_budget
     use progress, only: pace_t
+    use analysis_groups, only: platform_columns
+    use platform_rig, only: platform_case_t, platform_case, platform_case_start, platform_of, &
+                            uses_elastic
+    use platform_sim, only: platform_simulate, platform_sim_summary_t, platform_ncol
+    use platform_run, only: slack_span_t
     implicit none
 
     !> The .dat columns (deck OUTPUT_COLUMNS, in that order) and the positions of those that
@@ -76,9 +81,15 @@ contains
 
 
 
-    !> The preconditions (deck_runs's scene_ready).
+    !> The preconditions (deck_runs's scene_ready; a platform's: platform_ready).
     module procedure simulate_ready
+        type(platform_case_t) :: pc
+        real(dp), allocatable :: yp(:)
         call unused(self)
+        if (d%suspension%cables > 2) then
+            call platform_ready(d, pc, yp, stat)
+            return
+        end if
         call scene_ready(d, stat)
     end procedure simulate_ready
 
@@ -106,7 +117,9 @@ contains
         type(out_files_t), pointer :: fs
         fs => own
         if (present(files)) fs => files
-        if (trim(d%scene%model) == 'elastic') then
+        if (d%suspension%cables > 2) then
+            call simulate_platform(d, outdir, fs, sm, stat)
+        else if (trim(d%scene%model) == 'elastic') then
             call run_elastic(d, outdir, fs, sm, stat)
         else
             call simulate_kane(d, outdir, fs, sm, stat)
@@ -605,14 +618,135 @@ contains
         end select
     end subroutine elastic_dat_take
 
+    ! ------------------------------------------------------------------ a platform
 
+    !> The platform of a deck (&suspension cables >= 3) ready to run and its start: the rig
+    !! prepared, the rest pose found and stable (module platform_rig: ERR_DECK for a bad
+    !! rig or start, ERR_MODEL naming the tipping height when the body tips over).
+    subroutine platform_ready(d, pc, y0, stat)
+        type(deck_t), intent(in) :: d
+        type(platform_case_t), intent(out) :: pc
+        real(dp), allocatable, intent(out) :: y0(:)
+        type(status_t), intent(out) :: stat
+        call platform_case(platform_of(d%suspension, d%body, d%damping), &
+                           uses_elastic(d%suspension%cables, d%scene%model), &
+                           d%cables%stiffness, d%cables%damping, pc, stat)
+        if (stat%code /= 0) return
+        call platform_case_start(pc, d%start%amplitude, y0, stat)
+    end subroutine platform_ready
 
-
-
-
-
-
-
-
+    !> run_simulation for a platform (&suspension cables >= 3): the platform model
+    !! (inextensible cables for n = 3 with model = 'kane', else elastic cables) through the
+    !! run loop (module platform_sim), OUTDIR/NAME.dat with the platform's columns,
+    !! OUTDIR/NAME.summary and, with elastic cables, OUTDIR/NAME.slack.  Times and every
+    !! quantity in the deck's units.
+    subroutine simulate_platform(d, outdir, fs, sm, stat)
+        type(deck_t), intent(in) :: d
+        character(len=*), intent(in) :: outdir
+        type(out_files_t), intent(inout) :: fs
+        type(run_summary_t), intent(out) :: sm
+        type(status_t), intent(out) :: stat
+        type(platform_case_t) :: pc
+        type(platform_sim_summary_t) :: ps
+        type(slack_span_t), allocatable :: spans(:)
+        type(integrator_stats_t) :: st
+        type(pace_t) :: pace
+        real(dp), allocatable :: y0(:), times(:)
+        logical, allocatable :: want(:)
+        character(len=:), allocatable :: sumpath, model, cols
+        real(dp) :: t_cpu0, t_cpu1
+        integer :: u, n, method, ios, j, i1, i2
+        call platform_ready(d, pc, y0, stat)
+        if (stat%code /= 0) return
+        n = pc%pl%n
+        model = trim(merge('elastic     ', 'inextensible', pc%elastic))
+        method = method_of(d%integration, trim(merge('elastic', 'kane   ', pc%elastic)))
+        ! the columns asked for, over platform_columns(n)
+        cols = platform_columns(n)
+        allocate (want(platform_ncol(n)))
+        i1 = 1
+        do j = 1, size(want)
+            i2 = index(cols(i1:)//' ', ' ') + i1 - 2
+            want(j) = index(' '//trim(d%output%columns)//' ', ' '//cols(i1:i2)//' ') > 0
+            i1 = i2 + 2
+        end do
+        sumpath = outdir//'/'//d%name//'.summary'
+        call fs%open(outdir//'/'//d%name//'.dat', u, stat)
+        if (stat%code /= 0) return
+        write (u, '(a)', iostat=ios) '# bifilar: '//trim(d%scene%title)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# a platform of '//itoa(n)// &
+            ' cables, '//model//' cables; time t in the deck''s unit (that g implies: s in '// &
+            'SI); lengths, tensions and energy in the deck''s units; angles in rad (R = '// &
+            'Rz(yaw) Ry(pitch) Rx(roll) of the body''s frame)'
+        if (ios == 0) call deck_echo(d, u, ios)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# '//trim(d%output%columns)
+        if (ios /= 0) then
+            call set_error(stat, ERR_IO, 'cannot write '//outdir//'/'//d%name//'.dat')
+            return
+        end if
+        call output_times(d, times)
+        call pace%start('bifilar: note: '//d%path//': simulate (a platform of '//itoa(n)// &
+                        ' cables)', 0.0_dp, d%integration%tau_end, 't')
+        call cpu_time(t_cpu0)
+        call platform_simulate(pc, y0, times, d%integration%rtol, d%integration%atol, method, &
+                               want, u, ps, spans, st, stat, pace)
+        call cpu_time(t_cpu1)
+        sm%cpu_seconds = t_cpu1 - t_cpu0
+        sm%steps = ps%steps
+        sm%rhs_evaluations = ps%rhs_evaluations
+        sm%jacobian_evaluations = ps%jacobian_evaluations
+        sm%rows = ps%rows
+        sm%tau_reached = ps%t_reached
+        sm%max_abs_energy_error = ps%max_abs_energy_error
+        sm%max_abs_constraint_residual = ps%max_abs_constraint_residual
+        sm%min_tension = ps%min_tension
+        sm%elastic = pc%elastic
+        sm%method = merge('radau', 'lsoda', method == SOLVER_RADAU)
+        if (stat%code /= 0) return
+        call fs%close(u, 0, stat)
+        if (stat%code /= 0) return
+        call fs%open(sumpath, u, stat)
+        if (stat%code /= 0) return
+        write (u, '(a)', iostat=ios) '# bifilar summary: '//trim(d%scene%title)
+        call write_kv(u, 'deck', d%path, ios)
+        call write_kv(u, 'cables', n, ios)
+        call write_kv(u, 'model', model, ios)
+        call write_kv(u, 'cpu_seconds', sm%cpu_seconds, ios)
+        call write_kv(u, 'steps', ps%steps, ios)
+        call write_kv(u, 'rhs_evaluations', ps%rhs_evaluations, ios)
+        call write_kv(u, 'jacobian_evaluations', ps%jacobian_evaluations, ios)
+        call write_kv(u, 'rows', ps%rows, ios)
+        call write_kv(u, 't_end', ps%t_reached, ios)
+        call write_kv(u, 'max_abs_yaw', ps%max_abs_yaw, ios)
+        call write_kv(u, 'max_tilt', ps%max_tilt, ios)
+        call write_kv(u, 'max_sway', ps%max_sway, ios)
+        call write_kv(u, 'max_abs_energy_error', ps%max_abs_energy_error, ios)
+        call write_kv(u, 'max_abs_constraint_residual', ps%max_abs_constraint_residual, ios)
+        call write_kv(u, 'min_tension', ps%min_tension, ios)
+        call write_kv(u, 'max_tension', ps%max_tension, ios)
+        call write_kv(u, 'method', trim(sm%method), ios)
+        if (pc%elastic) then
+            do j = 1, n
+                call write_kv(u, 'slack_time_'//itoa(j), ps%slack_time(j), ios)
+            end do
+            do j = 1, n
+                call write_kv(u, 'slack_intervals_'//itoa(j), ps%slack_intervals(j), ios)
+            end do
+            call write_kv(u, 'cable_switches', ps%cable_switches, ios)
+        end if
+        call fs%close(u, ios, stat)
+        if (stat%code /= 0 .or. .not. pc%elastic) return
+        call fs%open(outdir//'/'//d%name//'.slack', u, stat)
+        if (stat%code /= 0) return
+        write (u, '(a)', iostat=ios) '# bifilar slack intervals: '//trim(d%scene%title)
+        if (ios == 0) write (u, '(a)', iostat=ios) '# cable, t_start, t_end, duration, '// &
+            'open (1: still slack at the end of the run); times in the deck''s unit'
+        do j = 1, size(spans)
+            if (ios == 0) write (u, '(i2,3es24.15e3,i3)', iostat=ios) spans(j)%cable, &
+                spans(j)%t_start, spans(j)%t_end, spans(j)%t_end - spans(j)%t_start, &
+                merge(1, 0, spans(j)%open)
+        end do
+        call fs%close(u, ios, stat)
+    end subroutine simulate_platform
 
 end submodule simulate_impl

@@ -32,10 +32,17 @@ contains
         call check_analyses(stat, analyses)
     end procedure check_scene
 
-    !> &output: the columns, blank-separated names of OUTPUT_COLUMNS (check_columns).
+    !> &output: the columns, blank-separated names of OUTPUT_COLUMNS, or of a platform's
+    !! columns (platform_columns; left as OUTPUT_COLUMNS: all of them) (check_columns).
     module procedure check_output
         if (stat%code /= STATUS_OK) return
-        call check_columns(stat, self%columns)
+        if (sus%cables > 2) then
+            if (trim(self%columns) == OUTPUT_COLUMNS) return
+            call check_columns(stat, self%columns, platform_columns(sus%cables), &
+                               ' (a platform of '//itoa(sus%cables)//' cables)')
+        else
+            call check_columns(stat, self%columns, OUTPUT_COLUMNS, '')
+        end if
     end procedure check_output
 
     !> &floquet: 0 < amplitude < 180 degrees, 1..MAX_SEGMENTS segments, rtol in range.
@@ -66,15 +73,31 @@ contains
     !! finite range inside its variable's range with 2..MAX_CHART_N points, nx*ny bounded.
     module procedure check_chart
         character(len=len(self%x)) :: x, y
+        character(len=:), allocatable :: vars
         if (stat%code /= STATUS_OK) return
-        call check_word(stat, 'chart', 'x', self%x, CHART_VARIABLES)
-        call check_word(stat, 'chart', 'y', self%y, CHART_VARIABLES)
-        if (stat%code /= STATUS_OK) return
+        vars = CHART_VARIABLES
+        if (sus%cables > 2) vars = PLATFORM_CHART_VARIABLES
+        call check_word(stat, 'chart', 'x', self%x, vars)
+        call check_word(stat, 'chart', 'y', self%y, vars)
+        if (stat%code /= STATUS_OK) then
+            if (sus%cables > 2) stat%msg = stat%msg//' (a platform of '//itoa(sus%cables)// &
+                ' cables)'
+            return
+        end if
         x = lower(adjustl(self%x))
         y = lower(adjustl(self%y))
         if (trim(x) == trim(y)) then
             call bad(stat, 'chart', 'y', quoted(y), 'the same variable as x', &
-                     'y different from x, both from: '//commas(CHART_VARIABLES))
+                     'y different from x, both from: '//commas(vars))
+            return
+        end if
+        if (sus%cables > 2 .and. sus%pointwise() .and. (any([character(len=8) :: 'l', &
+            'radius'] == x) .or. any([character(len=8) :: 'l', 'radius'] == y))) then
+            call bad(stat, 'chart', trim(merge('x', 'y', x == 'l' .or. x == 'radius')), &
+                     quoted(merge(x, y, x == 'l' .or. x == 'radius')), 'a regular '// &
+                     'polygon''s variable on a platform given point by point', &
+                     'amplitude, cg_offset, cg_depth, inertia_ratio (l and radius with the '// &
+                     'platform given by radius, radius_prime, l)')
             return
         end if
         call chart_axis('x', x, self%x_min, self%x_max, self%nx)
@@ -116,6 +139,21 @@ contains
                 desc = 'cable length l''/b'''
                 lo = RATIO_MIN
                 hi = RATIO_MAX
+                if (sus%cables > 2) then
+                    desc = 'every cable''s length, deck units'
+                    lo = RATIO_MIN*sus%b_prime
+                    hi = RATIO_MAX*sus%b_prime
+                end if
+                lo_in = .true.
+            case ('radius')
+                desc = 'the support''s radius, deck units; the body''s kept'
+                lo = RATIO_MIN*sus%b_prime
+                hi = RATIO_MAX*sus%b_prime
+                lo_in = .true.
+            case ('cg_offset', 'cg_depth')
+                desc = 'deck units'
+                lo = -RATIO_MAX*sus%b_prime
+                hi = RATIO_MAX*sus%b_prime
                 lo_in = .true.
             case ('b')
                 desc = 'b/b'''
@@ -178,6 +216,60 @@ contains
     module procedure check_design
         real(dp) :: bmin, am
         if (stat%code /= STATUS_OK) return
+        if (sus%cables > 2) then
+            ! a platform: its radius, not the bifilar's spacings
+            if (self%b_min /= 0.0_dp .or. self%b_max /= 0.0_dp .or. self%nb /= 1 .or. &
+                self%b_prime_min /= 0.0_dp .or. self%b_prime_max /= 0.0_dp .or. &
+                self%nb_prime /= 1) then
+                call bad(stat, 'design', 'b_min', rshort(self%b_min), 'a bifilar''s '// &
+                         'spacings on a platform of '//itoa(sus%cables)//' cables', &
+                         'radius_min, radius_max, nradius (the platform''s radius) with '// &
+                         'cables >= 3')
+                return
+            end if
+            call finite(stat, 'design', 'radius_min', self%radius_min)
+            call finite(stat, 'design', 'radius_max', self%radius_max)
+            if (stat%code /= STATUS_OK) return
+            if (self%nradius == 1) then
+                if (self%radius_min /= self%radius_max) then
+                    call bad(stat, 'design', 'radius_max', rshort(self%radius_max), &
+                             'differs from radius_min = '//rshort(self%radius_min)// &
+                             ' with nradius = 1', 'radius_min = radius_max = 0 with '// &
+                             'nradius = 1 (the deck''s radius), radius_min = radius_max > 0 '// &
+                             'with nradius = 1, or 0 < radius_min < radius_max with '// &
+                             'nradius >= 2')
+                    return
+                end if
+                if (self%radius_min /= 0.0_dp) call positive(stat, 'design', 'radius_min', &
+                    self%radius_min, 'radius_min = radius_max = 0 (the deck''s radius) or > 0')
+            else if (self%nradius < 1 .or. self%nradius > MAX_CHART_N) then
+                call bad(stat, 'design', 'nradius', itoa(self%nradius), 'number of radii '// &
+                         'out of range', '1 <= nradius <= '//itoa(MAX_CHART_N))
+                return
+            else
+                call positive(stat, 'design', 'radius_min', self%radius_min, &
+                              '0 < radius_min < radius_max with nradius >= 2')
+                if (stat%code /= STATUS_OK) return
+                if (self%radius_min >= self%radius_max) call bad(stat, 'design', &
+                    'radius_max', rshort(self%radius_max), 'not larger than radius_min = '// &
+                    rshort(self%radius_min)//' with nradius = '//itoa(self%nradius), &
+                    'radius_min < radius_max with nradius >= 2')
+            end if
+            if (stat%code /= STATUS_OK) return
+            if (self%radius_min > 0.0_dp) then
+                call over_b_prime(stat, 'design', 'radius_min', 2.0_dp*self%radius_min, &
+                                  sus%b_prime, RATIO_MIN)
+                call over_b_prime(stat, 'design', 'radius_max', 2.0_dp*self%radius_max, &
+                                  sus%b_prime, RATIO_MIN)
+                if (stat%code /= STATUS_OK) return
+            end if
+        else if (self%radius_min /= 0.0_dp .or. self%radius_max /= 0.0_dp .or. &
+                 self%nradius /= 1) then
+            call bad(stat, 'design', 'radius_min', rshort(self%radius_min), 'a platform''s '// &
+                     'radius on a bifilar', 'b_min, b_max, nb and b_prime_min, '// &
+                     'b_prime_max, nb_prime with cables = 2')
+            return
+        end if
         call positive(stat, 'design', 'l_min', self%l_min, '0 < l_min < l_max (deck units)')
         call positive(stat, 'design', 'l_max', self%l_max, '0 < l_min < l_max (deck units)')
         if (stat%code /= STATUS_OK) return
@@ -338,24 +430,26 @@ contains
 
     end procedure check_design
 
-    !> &output columns: blank-separated names from OUTPUT_COLUMNS (any case), at least one,
-    !! none twice (normalise puts them in OUTPUT_COLUMNS' order).
-    subroutine check_columns(stat, columns)
+    !> &output columns: blank-separated names from `cols` (any case), at least one, none
+    !! twice (normalise puts them in the order of cols).
+    subroutine check_columns(stat, columns, cols, whose)
         type(status_t), intent(inout) :: stat       !! ERR_DECK on a problem
         character(len=*), intent(in) :: columns     !! value read
+        character(len=*), intent(in) :: cols        !! the names allowed, in their order
+        character(len=*), intent(in) :: whose       !! whose columns they are ('' a bifilar's)
         character(len=len(columns)) :: list
-        character(len=len(OUTPUT_COLUMNS)) :: known
-        logical :: asked(count_words(OUTPUT_COLUMNS))
+        character(len=len(cols)) :: known
+        logical :: asked(count_words(cols))
         integer :: i1, i2, j1, j2, n
         character(len=:), allocatable :: head, allowed
         list = columns
         do i1 = 1, len(list)
             if (list(i1:i1) == achar(9)) list(i1:i1) = ' '
         end do
-        known = lower(OUTPUT_COLUMNS)
+        known = lower(cols)
         head = '&output columns = '''//trim(adjustl(list))//''': '
-        allowed = 'allowed: blank-separated names, in any order and case, from: '// &
-            commas(OUTPUT_COLUMNS)
+        allowed = 'allowed: blank-separated names, in any order and case, from'//whose//': '// &
+            commas(cols)
         asked = .false.
         i2 = 0
         do

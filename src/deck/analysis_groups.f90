@@ -23,8 +23,10 @@ module analysis_groups
         'simulate floquet chart work_precision design identify tensor'
     !> Words allowed in &scene model.
     character(len=*), parameter :: MODELS_ALLOWED = 'kane elastic'
-    !> Words allowed in &chart x and y.
+    !> Words allowed in &chart x and y: of a bifilar, and of a platform.
     character(len=*), parameter :: CHART_VARIABLES = 'l b amplitude r lambda inertia_ratio'
+    character(len=*), parameter :: PLATFORM_CHART_VARIABLES = 'l radius amplitude '// &
+        'cg_offset cg_depth inertia_ratio'
     !> Smallest torsion amplitude of a Floquet analysis (degrees; &floquet, a chart's
     !! amplitude axis, the design's smallest amplitude): the linear limit is reached long
     !! before, and below about 1e-170 degrees products in the variational analysis underflow.
@@ -50,8 +52,8 @@ module analysis_groups
         procedure :: requested
     end type scene_group_t
 
-    !> &output: the .dat columns, blank-separated names of OUTPUT_COLUMNS (normalise: in
-    !! their order).
+    !> &output: the .dat columns, blank-separated names of OUTPUT_COLUMNS, or of a platform's
+    !! (platform_columns; not given: all of them) (normalise: in their order).
     type, extends(deck_group_t), public :: output_group_t
         character(len=512) :: columns = OUTPUT_COLUMNS
     contains
@@ -76,7 +78,7 @@ module analysis_groups
         procedure :: check => check_floquet
     end type floquet_group_t
 
-    !> &chart (axis variables: see CHART_VARIABLES).
+    !> &chart (axis variables: see CHART_VARIABLES, PLATFORM_CHART_VARIABLES).
     type, extends(deck_group_t), public :: chart_group_t
         character(len=256) :: x = 'l', y = 'amplitude'
         real(dp) :: x_min = 0.5_dp, x_max = 4.0_dp
@@ -102,6 +104,10 @@ module analysis_groups
         !> the body's spacing b' (0, 0 with nb_prime = 1: the deck's b')
         real(dp) :: b_prime_min = 0.0_dp, b_prime_max = 0.0_dp
         integer  :: nb_prime = 1
+        !> a platform's radius (0, 0 with nradius = 1: the deck's): the support's circle,
+        !! the body's in the deck's ratio radius_prime/radius
+        real(dp) :: radius_min = 0.0_dp, radius_max = 0.0_dp
+        integer  :: nradius = 1
         real(dp) :: amplitude_max = 50.0_dp       !! degrees, 0 < a <= 90
         !> the amplitude (degrees) at which the precision is predicted; NOT_GIVEN: not
         !! given, then min(25, amplitude_max) (measure_amplitude, normalise)
@@ -119,6 +125,8 @@ module analysis_groups
         procedure :: measure_amplitude
     end type design_group_t
 
+    public :: platform_columns
+
     ! ---- submodule analysis_checks
     interface
         !> &scene: model and analyses known words.
@@ -126,9 +134,10 @@ module analysis_groups
             class(scene_group_t), intent(in) :: self
             type(status_t), intent(inout) :: stat
         end subroutine check_scene
-        !> &output: the .dat columns.
-        module subroutine check_output(self, stat)
+        !> &output: the .dat columns (those of a platform of sus%cables >= 3).
+        module subroutine check_output(self, sus, stat)
             class(output_group_t), intent(in) :: self
+            type(suspension_group_t), intent(in) :: sus
             type(status_t), intent(inout) :: stat
         end subroutine check_output
         !> &floquet: amplitude, segments, rtol.
@@ -136,9 +145,10 @@ module analysis_groups
             class(floquet_group_t), intent(in) :: self
             type(status_t), intent(inout) :: stat
         end subroutine check_floquet
-        !> &chart: the two axes.
-        module subroutine check_chart(self, stat)
+        !> &chart: the two axes (a platform's variables when sus%cables >= 3).
+        module subroutine check_chart(self, sus, stat)
             class(chart_group_t), intent(in) :: self
+            type(suspension_group_t), intent(in) :: sus
             type(status_t), intent(inout) :: stat
         end subroutine check_chart
         !> &design: the candidate grid and uncertainties, against the deck's rig.
@@ -249,19 +259,46 @@ contains
         line = '# &output columns = '//quoted(self%columns)//' /'
     end function echo_output
 
-    !> The columns asked for (names of OUTPUT_COLUMNS in any case, tabs as blanks; checked)
-    !! in OUTPUT_COLUMNS' order, with its spelling.
-    pure subroutine normalise_output(self)
+    !> The columns of the .dat file of a platform of n cables (&suspension cables >= 3), in
+    !! their order: time t, the pose of the body's frame (x, y, z of its origin; yaw, pitch,
+    !! roll: R = Rz(yaw) Ry(pitch) Rx(roll)), their rates, each cable's tension T1 .. Tn,
+    !! the energy error and the constraint residual.
+    pure function platform_columns(n) result(s)
+        integer, intent(in) :: n                !! cables
+        character(len=:), allocatable :: s
+        integer :: k
+        s = 't x y z yaw pitch roll x_dot y_dot z_dot yaw_dot pitch_dot roll_dot'
+        do k = 1, n
+            s = s//' T'//itoa(k)
+        end do
+        s = s//' energy_error constraint_residual'
+    end function platform_columns
+
+    !> The columns asked for (names of OUTPUT_COLUMNS, or of a platform of `cables` >= 3
+    !! cables' columns, in any case, tabs as blanks; checked) in that list's order, with its
+    !! spelling.  A platform's deck that leaves &output columns as they are (OUTPUT_COLUMNS)
+    !! has every platform column.
+    pure subroutine normalise_output(self, cables)
         class(output_group_t), intent(inout) :: self
+        integer, intent(in) :: cables           !! &suspension cables
         character(len=len(self%columns)) :: list
-        character(len=len(OUTPUT_COLUMNS)) :: known
+        character(len=:), allocatable :: known, cols
         integer :: i1, i2, j1, j2
+        if (cables > 2) then
+            cols = platform_columns(cables)
+            if (trim(self%columns) == OUTPUT_COLUMNS) then
+                self%columns = cols
+                return
+            end if
+        else
+            cols = OUTPUT_COLUMNS
+        end if
         list = self%columns
         do i1 = 1, len(list)
             if (list(i1:i1) == achar(9)) list(i1:i1) = ' '
         end do
         list = lower(list)
-        known = lower(OUTPUT_COLUMNS)
+        known = lower(cols)
         self%columns = ''
         j2 = 0
         do
@@ -272,7 +309,7 @@ contains
                 call next_word(list, i2, i1)
                 if (i1 == 0) exit
                 if (list(i1:i2) == known(j1:j2)) then
-                    self%columns = trim(self%columns)//' '//OUTPUT_COLUMNS(j1:j2)
+                    self%columns = trim(self%columns)//' '//cols(j1:j2)
                     exit
                 end if
             end do
@@ -385,21 +422,24 @@ contains
         character(len=:), allocatable :: s
         s = 'l_min:r1 l_max:r1 nl:i1 b_min:r1 b_max:r1 nb:i1 amplitude_max:r1 '// &
             'n_amplitudes:i1 u_mass:r1 u_l:r1 u_b:r1 u_period:r1 b_prime_min:r1 '// &
-            'b_prime_max:r1 nb_prime:i1 amplitude_measure:r1'
+            'b_prime_max:r1 nb_prime:i1 amplitude_measure:r1 radius_min:r1 radius_max:r1 '// &
+            'nradius:i1'
     end function design_spec
 
     !> &design l_min, l_max, nl, b_min, b_max, nb, b_prime_min, b_prime_max, nb_prime,
-    !! amplitude_max, n_amplitudes, amplitude_measure, u_mass, u_l, u_b, u_period.
+    !! radius_min, radius_max, nradius, amplitude_max, n_amplitudes, amplitude_measure,
+    !! u_mass, u_l, u_b, u_period.
     subroutine read_design(self, rec, ios, msg)
         class(design_group_t), intent(inout) :: self    !! defaults in, values read out
         character(len=*), intent(in) :: rec         !! the group as one record
         integer, intent(out) :: ios                 !! iostat of the namelist read
         character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
         real(dp) :: l_min, l_max, b_min, b_max, amplitude_max, u_mass, u_l, u_b, u_period
-        real(dp) :: b_prime_min, b_prime_max, amplitude_measure
-        integer :: nl, nb, n_amplitudes, nb_prime
+        real(dp) :: b_prime_min, b_prime_max, amplitude_measure, radius_min, radius_max
+        integer :: nl, nb, n_amplitudes, nb_prime, nradius
         namelist /design/ l_min, l_max, nl, b_min, b_max, nb, amplitude_max, n_amplitudes, &
-            u_mass, u_l, u_b, u_period, b_prime_min, b_prime_max, nb_prime, amplitude_measure
+            u_mass, u_l, u_b, u_period, b_prime_min, b_prime_max, nb_prime, amplitude_measure, &
+            radius_min, radius_max, nradius
         l_min = self%l_min
         l_max = self%l_max
         nl = self%nl
@@ -409,6 +449,9 @@ contains
         b_prime_min = self%b_prime_min
         b_prime_max = self%b_prime_max
         nb_prime = self%nb_prime
+        radius_min = self%radius_min
+        radius_max = self%radius_max
+        nradius = self%nradius
         amplitude_measure = self%amplitude_measure
         amplitude_max = self%amplitude_max
         n_amplitudes = self%n_amplitudes
@@ -426,6 +469,9 @@ contains
         self%b_prime_min = b_prime_min
         self%b_prime_max = b_prime_max
         self%nb_prime = nb_prime
+        self%radius_min = radius_min
+        self%radius_max = radius_max
+        self%nradius = nradius
         self%amplitude_measure = amplitude_measure
         self%amplitude_max = amplitude_max
         self%n_amplitudes = n_amplitudes
@@ -442,7 +488,11 @@ contains
             ', nl = '//itoa(self%nl)//', b_min = '//rshort(self%b_min)//', b_max = '// &
             rshort(self%b_max)//', nb = '//itoa(self%nb)//', b_prime_min = '// &
             rshort(self%b_prime_min)//', b_prime_max = '//rshort(self%b_prime_max)// &
-            ', nb_prime = '//itoa(self%nb_prime)//', amplitude_max = '// &
+            ', nb_prime = '//itoa(self%nb_prime)
+        if (self%nradius /= 1 .or. self%radius_min /= 0.0_dp) line = line// &
+            ', radius_min = '//rshort(self%radius_min)//', radius_max = '// &
+            rshort(self%radius_max)//', nradius = '//itoa(self%nradius)
+        line = line//', amplitude_max = '// &
             rshort(self%amplitude_max)//', n_amplitudes = '//itoa(self%n_amplitudes)// &
             ', amplitude_measure = '//rshort(self%amplitude_measure)//', u_mass = '// &
             rshort(self%u_mass)//', u_l = '//rshort(self%u_l)//', u_b = '// &

@@ -9,8 +9,8 @@
 !!   module namelist_text;
 !! - check (check_deck): each group's check in the order of the groups, each against the
 !!   groups before it as the run takes them, then the checks across groups (a measuring
-!!   deck gives every physical input itself; a platform only with identify).  No check
-!!   changes a value;
+!!   deck gives every physical input itself; a platform with the analyses that model it).
+!!   No check changes a value;
 !! - normalise (normalise_deck): the values the run takes where they differ from those
 !!   given (a platform's b = 2 radius, the mass centre from cg_depth, the cycles of every
 !!   period, words in lower case, angles modulo 2 pi, files relative to the deck's folder).
@@ -24,7 +24,7 @@ module deck
     use, intrinsic :: iso_fortran_env, only: int64
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
-    use text, only: itoa, count_words
+    use text, only: itoa, next_word, rshort
     use lines, only: read_line, LINE_MAX
     use fptraps, only: traps_off, traps_restore, NTRAPS
     use deck_base, only: deck_source_t, deck_group_t
@@ -294,18 +294,104 @@ contains
         call d%integration%check(stat)
         call d%cables%check(stat)
         call d%floquet%check(stat)
-        call d%chart%check(stat)
-        call d%output%check(stat)
+        call d%chart%check(sus, stat)
+        call d%output%check(sus, stat)
         if (scene%requested('design')) call d%design%check(sus, d%body, stat)
         call d%damping%check(sus, d%body, stat)
         call d%measurement%check(sus, d%body, sta, stat)
         call d%tensor%check(sus, d%body, scene%requested('tensor'), stat)
+        call check_platform_deck(scene, sus, d%body, sta, stat)
         call check_measuring(scene, sus, d%body, stat)
     end subroutine check_deck
 
+    !> A platform (cables >= 3) with the analyses that model it: simulate, floquet, chart,
+    !! design and identify, not tensor or work_precision; it starts turned about the vertical
+    !! (&start mode = 'raised', no tilt).  floquet, chart and design analyse the torsion of
+    !! inextensible cables: n = 3, model = 'kane'; design and identify the regular polygon
+    !! (radius, radius_prime, l), identify with the mass centre on its axis (its model is
+    !! the pure torsion of the equivalent pair b = 2 radius).
+    subroutine check_platform_deck(scene, sus, bod, sta, stat)
+        type(scene_group_t), intent(in) :: scene        !! normalised
+        type(suspension_group_t), intent(in) :: sus     !! normalised
+        type(body_group_t), intent(in) :: bod
+        type(start_group_t), intent(in) :: sta          !! normalised
+        type(status_t), intent(inout) :: stat
+        character(len=:), allocatable :: which
+        character(len=*), parameter :: TORSION = 'floquet chart design'
+        integer :: k
+        if (stat%code /= STATUS_OK .or. sus%cables <= 2) return
+        which = ''
+        if (scene%requested('tensor')) which = 'tensor'
+        if (scene%requested('work_precision')) which = 'work_precision'
+        if (len(which) > 0) then
+            call bad(stat, 'scene', 'analyses', ''''//trim(scene%analyses)//'''', &
+                     which//' models two cables, not a platform of '//itoa(sus%cables)// &
+                     ' cables', 'simulate, floquet, chart, design and identify with '// &
+                     'cables >= 3')
+            return
+        end if
+        if (trim(sta%mode) /= 'raised') then
+            call bad(stat, 'start', 'mode', ''''//trim(sta%mode)//'''', 'the paper''s '// &
+                     'angles of a bifilar on a platform of '//itoa(sus%cables)//' cables', &
+                     'mode = ''raised'': the platform released at rest turned by amplitude '// &
+                     '(degrees) about the vertical through its mass centre')
+            return
+        end if
+        if (sta%tilt /= 0.0_dp) then
+            call bad(stat, 'start', 'tilt', rshort(sta%tilt), 'the paper''s tilt of a '// &
+                     'bifilar on a platform of '//itoa(sus%cables)//' cables', 'tilt = 0: '// &
+                     'the platform released at rest turned by amplitude about the vertical')
+            return
+        end if
+        do k = 1, 3
+            which = trim(word_of(TORSION, k))
+            if (.not. scene%requested(which)) cycle
+            if (sus%cables >= 4 .or. trim(scene%model) == 'elastic') then
+                call bad(stat, 'scene', 'analyses', ''''//trim(scene%analyses)//'''', &
+                         which//' analyses the periodic torsion of inextensible cables; '// &
+                         'a platform of '//itoa(sus%cables)//' cables with model = '''// &
+                         trim(scene%model)//''' has elastic cables'//trim(merge( &
+                         ' (n >= 4: statically indeterminate when inextensible)', &
+                         '                                                     ', &
+                         sus%cables >= 4)), 'floquet, chart and design with cables = 3 '// &
+                         'and model = ''kane''; simulate for any platform')
+                return
+            end if
+        end do
+        which = ''
+        if (scene%requested('identify')) which = 'identify'
+        if (scene%requested('design')) which = 'design'
+        if (len(which) == 0) return
+        if (sus%pointwise()) then
+            call bad(stat, 'suspension', 'support_points', 'given', which//' on a platform '// &
+                     'given point by point', 'the regular polygon (radius, radius_prime, l) '// &
+                     'with analyses = '''//which//'''')
+        else if (bod%cg_offset /= 0.0_dp .or. bod%cg_offset_y /= 0.0_dp) then
+            call bad(stat, 'body', 'cg_offset', rshort(bod%cg_offset)//', '// &
+                     rshort(bod%cg_offset_y), which//' on a platform with the mass centre '// &
+                     'off its axis', 'cg_offset = 0, 0 with analyses = '''//which// &
+                     ''' (it measures the moment about the axis by the pure torsion of the '// &
+                     'centred body)')
+        end if
+    contains
+        !> The k-th blank-separated word of s.
+        function word_of(s, k) result(w)
+            character(len=*), intent(in) :: s
+            integer, intent(in) :: k
+            character(len=:), allocatable :: w
+            integer :: i1, i2, j
+            i2 = 0
+            w = ''
+            do j = 1, k
+                call next_word(s, i2, i1)
+                if (i1 == 0) return
+            end do
+            w = s(i1:i2)
+        end function word_of
+    end subroutine check_platform_deck
+
     !> A deck that measures (identify, tensor, design) gives every physical input itself
-    !! (the defaults are the paper's dimensionless scene); a platform of 3 or more cables
-    !! only with identify alone.
+    !! (the defaults are the paper's dimensionless scene).
     subroutine check_measuring(scene, sus, bod, stat)
         type(scene_group_t), intent(in) :: scene        !! normalised
         type(suspension_group_t), intent(in) :: sus     !! normalised
@@ -317,13 +403,6 @@ contains
         if (scene%requested('identify')) what = 'identify'
         if (scene%requested('tensor')) what = 'tensor'
         if (scene%requested('design')) what = 'design'
-        if (sus%cables > 2 .and. (what /= 'identify' .or. count_words(scene%analyses) > 1)) then
-            call bad(stat, 'suspension', 'cables', itoa(sus%cables), 'a platform of '// &
-                     itoa(sus%cables)//' cables with analyses = '''//trim(scene%analyses)// &
-                     '''', 'cables >= 3 with analyses = ''identify'' alone (its torsion is '// &
-                     'exact); every other analysis models two cables')
-            return
-        end if
         if (len(what) == 0) return
         missing = ''
         call need('&suspension g', sus%gave('g'))
@@ -367,7 +446,7 @@ contains
         call d%start%normalise()
         call d%integration%normalise()
         call d%chart%normalise()
-        call d%output%normalise()
+        call d%output%normalise(d%suspension%cables)
         if (d%scene%requested('design')) call d%design%normalise()
         call d%measurement%normalise(d%path)
         call d%tensor%normalise(d%path)

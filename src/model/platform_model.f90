@@ -666,8 +666,8 @@ contains
 
     !> Check a rig for the inextensible model and find its rest pose: the inputs and the
     !! chart (platform_prepare), n <= 3, a rest pose, every cable hanging down from its
-    !! support and taut there, and the rest pose stable (else the tipping height is named).
-    !! One line in stat (ERR_DECK).
+    !! support and taut there (ERR_DECK), and the rest pose stable (else ERR_MODEL, the
+    !! tipping height named: the cables cannot hold the tilt).  One line in stat.
     subroutine check_platform(pl, stat)
         type(platform_t), intent(inout) :: pl
         type(status_t), intent(out) :: stat
@@ -720,11 +720,11 @@ contains
             call tipping_depth(pl, depth, found, stat)
             if (stat%code /= 0) return
             if (found) then
-                call set_error(stat, ERR_DECK, 'platform cg_depth = '//sci(zbar - pl%cg(3))// &
+                call set_error(stat, ERR_MODEL, 'platform cg_depth = '//sci(zbar - pl%cg(3))// &
                                ': the body tips over (its rest pose is unstable) with the '// &
                                'mass centre above cg_depth = '//sci(depth)//'; lower it')
             else
-                call set_error(stat, ERR_DECK, 'platform: the rest pose is unstable')
+                call set_error(stat, ERR_MODEL, 'platform: the rest pose is unstable')
             end if
         end if
     end subroutine check_platform

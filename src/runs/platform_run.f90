@@ -41,6 +41,14 @@ module platform_run
     !! run (the tolerance does not resolve the cables' stretch).
     integer, parameter :: MAX_QUICK_SWITCHES = 100, QUICK_STEPS = 2
 
+    !> One interval in which a cable was slack (the elastic model): from t_start to t_end,
+    !! open while it lasts (t_end then the time the run reached).
+    type, public :: slack_span_t
+        integer :: cable = 0
+        real(dp) :: t_start = 0.0_dp, t_end = 0.0_dp
+        logical :: open = .true.
+    end type slack_span_t
+
     !> A run of the platform (either model) for the run loop.
     type, extends(stepped_model_t), public :: platform_run_t
         logical :: elastic = .false.            !! which model
@@ -59,6 +67,12 @@ module platform_run
         real(dp) :: first_slack(PLATFORM_NMAX) = 0.0_dp !! the length of its first slack
                                                         !! interval (0 until it ended)
         real(dp), private :: slack_since(PLATFORM_NMAX) = 0.0_dp
+        !> every slack interval, in the order they began (nspans of spans)
+        type(slack_span_t), allocatable :: spans(:)
+        integer :: nspans = 0
+        !> right-hand sides and Jacobians of the integrators replaced at the switches (the
+        !! run's totals: these plus the present integrator's stats)
+        integer :: rhs_before = 0, jac_before = 0
     contains
         procedure :: advance => pr_advance
         procedure :: dense => pr_dense
@@ -114,8 +128,10 @@ contains
         m%remedy = 'raise &integration rtol or the cables'' damping'
         call pe_switch(m%esys, y0, g(1:n), stat)
         if (stat%code /= 0) return
+        allocate (m%spans(8))
         do i = 1, n
             m%esys%mode(i) = merge(CABLE_TAUT, CABLE_SLACK, g(i) > 0.0_dp)
+            if (m%esys%mode(i) == CABLE_SLACK) call open_span(m, i, 0.0_dp)
         end do
         m%mode_next = m%esys%mode
         call new_integrator(method, m%solver)
@@ -131,6 +147,9 @@ contains
         if (m%elastic .and. m%pending) then
             ! restart at the switch in the new modes
             m%esys%mode = m%mode_next
+            st = m%solver%stats()
+            m%rhs_before = m%rhs_before + st%rhs_evals
+            m%jac_before = m%jac_before + st%jac_evals
             call new_integrator(m%method, m%solver)
             ! the first step estimated afresh: the last mode's steps (a free flight's are
             ! long) say nothing of the new one's (a cable's stretch)
@@ -299,10 +318,14 @@ contains
         if (stat%code /= 0) return
         do i = 1, n
             m%mode_next(i) = merge(CABLE_TAUT, CABLE_SLACK, g(i) > 0.0_dp)
-            if (m%mode_next(i) == CABLE_SLACK .and. m%esys%mode(i) == CABLE_TAUT) &
+            if (m%mode_next(i) == CABLE_SLACK .and. m%esys%mode(i) == CABLE_TAUT) then
                 m%slack_since(i) = tb
-            if (m%mode_next(i) == CABLE_TAUT .and. m%esys%mode(i) == CABLE_SLACK .and. &
-                m%first_slack(i) == 0.0_dp) m%first_slack(i) = tb - m%slack_since(i)
+                call open_span(m, i, tb)
+            end if
+            if (m%mode_next(i) == CABLE_TAUT .and. m%esys%mode(i) == CABLE_SLACK) then
+                if (m%first_slack(i) == 0.0_dp) m%first_slack(i) = tb - m%slack_since(i)
+                call close_span(m, i, tb)
+            end if
         end do
         call account(m%t_prev, tb)
         m%t_cur = tb
@@ -341,5 +364,36 @@ contains
             end do
         end subroutine account
     end subroutine elastic_switches
+
+    !> A slack interval of cable i begins at t.
+    subroutine open_span(m, i, t)
+        type(platform_run_t), intent(inout) :: m
+        integer, intent(in) :: i
+        real(dp), intent(in) :: t
+        type(slack_span_t), allocatable :: grown(:)
+        if (.not. allocated(m%spans)) allocate (m%spans(8))
+        if (m%nspans == size(m%spans)) then
+            allocate (grown(2*size(m%spans)))
+            grown(1:m%nspans) = m%spans(1:m%nspans)
+            call move_alloc(grown, m%spans)
+        end if
+        m%nspans = m%nspans + 1
+        m%spans(m%nspans) = slack_span_t(i, t, t, .true.)
+    end subroutine open_span
+
+    !> The open slack interval of cable i ends at t.
+    subroutine close_span(m, i, t)
+        type(platform_run_t), intent(inout) :: m
+        integer, intent(in) :: i
+        real(dp), intent(in) :: t
+        integer :: k
+        do k = m%nspans, 1, -1
+            if (m%spans(k)%cable == i .and. m%spans(k)%open) then
+                m%spans(k)%t_end = t
+                m%spans(k)%open = .false.
+                return
+            end if
+        end do
+    end subroutine close_span
 
 end module platform_run

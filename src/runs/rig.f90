@@ -84,6 +84,7 @@ contains
         rg%c_q = dmp%c_q
         rg%cable_stiffness = cab%stiffness
         rg%cable_damping = cab%damping
+        rg%cables = sus%cables
     end function rig_of_groups
 
     !> The start of &start (normalised).
@@ -203,7 +204,8 @@ contains
                    all(a%inertia == b%inertia) .and. a%r == b%r .and. a%lambda == b%lambda .and. &
                    all(a%btilde == b%btilde) .and. a%sway_depth == b%sway_depth .and. &
                    a%c_v == b%c_v .and. a%c_q == b%c_q .and. &
-                   a%cable_stiffness == b%cable_stiffness .and. a%cable_damping == b%cable_damping
+                   a%cable_stiffness == b%cable_stiffness .and. &
+                   a%cable_damping == b%cable_damping .and. a%cables == b%cables
     end function same_rig
 
     !> Two starts are the same, value for value (every component of start_t: keep in step).

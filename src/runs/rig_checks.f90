@@ -10,7 +10,8 @@ submodule (rig_groups) rig_checks
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
     use text, only: sci
     use value_checks, only: bad, finite, positive, dimensional, over_b_prime, angle, &
-        check_word, RATIO_MIN, RTOL_MIN
+        check_word, RATIO_MIN, RTOL_MIN, DIM_MAX
+    use platform_geometry, only: platform_t, general_platform, platform_prepare
     implicit none
 
     !> Largest damping coefficient in the scaled units of the model (c_v over
@@ -43,6 +44,13 @@ contains
             return
         end if
         if (self%cables == 2) then
+            if (self%pointwise()) then
+                call bad(stat, 'suspension', trim(merge('support_points', 'body_points   ', &
+                         self%gave('support_points'))), 'given', 'a platform''s points with '// &
+                         'cables = 2', 'b, b_prime, l, l_prime for a bifilar; '// &
+                         'support_points, body_points, lengths with cables >= 3')
+                return
+            end if
             if (self%gave('radius') .or. self%gave('radius_prime')) then
                 call bad(stat, 'suspension', trim(merge('radius      ', 'radius_prime', &
                          self%gave('radius'))), rshort(merge(self%radius, self%radius_prime, &
@@ -61,16 +69,24 @@ contains
                          'the body) with cables >= 3')
                 return
             end if
-            call positive(stat, 'suspension', 'radius', self%radius, 'radius > 0 with cables >= 3')
-            call positive(stat, 'suspension', 'radius_prime', self%radius_prime, &
-                          'radius_prime > 0 with cables >= 3')
-            if (stat%code /= STATUS_OK) return
-            if (self%gave('l_prime') .and. self%l_prime /= self%l) then
-                call bad(stat, 'suspension', 'l_prime', rshort(self%l_prime), 'differs '// &
-                         'from l = '//rshort(self%l)//' on a platform of '// &
-                         itoa(self%cables)//' cables', &
-                         'every cable of length l (leave l_prime out) with cables >= 3')
-                return
+            if (self%pointwise()) then
+                call check_points(self, stat)
+                if (stat%code /= STATUS_OK) return
+            else
+                call positive(stat, 'suspension', 'radius', self%radius, 'radius > 0 with '// &
+                              'cables >= 3 (or the platform point by point: support_points, '// &
+                              'body_points, lengths)')
+                call positive(stat, 'suspension', 'radius_prime', self%radius_prime, &
+                              'radius_prime > 0 with cables >= 3')
+                if (stat%code /= STATUS_OK) return
+                if (self%gave('l_prime') .and. self%l_prime /= self%l) then
+                    call bad(stat, 'suspension', 'l_prime', rshort(self%l_prime), 'differs '// &
+                             'from l = '//rshort(self%l)//' on a platform of '// &
+                             itoa(self%cables)//' cables', 'every cable of length l (leave '// &
+                             'l_prime out) with cables >= 3, or lengths(1:'// &
+                             itoa(self%cables)//') with the platform point by point')
+                    return
+                end if
             end if
         end if
         ! the lengths as the run takes them (a platform's equivalent pair: normalise)
@@ -89,7 +105,115 @@ contains
         call over_b_prime(stat, 'suspension', 'b', s%b, s%b_prime, RATIO_MIN)
         call over_b_prime(stat, 'suspension', 'l', s%l, s%b_prime, RATIO_MIN)
         call over_b_prime(stat, 'suspension', 'l_prime', s%l_prime, s%b_prime, RATIO_MIN)
+        if (stat%code /= STATUS_OK .or. self%cables <= 2 .or. self%pointwise()) return
+        ! a regular platform: the cables reach down from the support's circle to the body's
+        if (.not. (self%l > abs(self%radius - self%radius_prime))) then
+            call bad(stat, 'suspension', 'l', rshort(self%l), 'not longer than |radius - '// &
+                     'radius_prime| = '//rshort(abs(self%radius - self%radius_prime))// &
+                     ': the cables cannot reach the body below the support', &
+                     'l > |radius - radius_prime|')
+        end if
     end procedure check_suspension
+
+    !> A platform given point by point: support_points(:, 1:n), body_points(:, 1:n) and
+    !! lengths(1:n) given whole and finite, nothing beyond n, not mixed with the regular
+    !! polygon's radius, radius_prime, l; lengths > 0 in range; then the geometry as the
+    !! model takes it (platform_prepare: the points distinct, not collinear, every cable
+    !! able to reach below the supports), its message under &suspension.
+    subroutine check_points(self, stat)
+        class(suspension_group_t), intent(in) :: self
+        type(status_t), intent(inout) :: stat
+        type(platform_t) :: pl
+        type(status_t) :: st
+        real(dp) :: jb(3, 3)
+        integer :: n, i, k
+        character(len=*), parameter :: EITHER = 'a platform either as a regular polygon '// &
+            '(radius, radius_prime, l) or point by point (support_points, body_points, lengths)'
+        n = self%cables
+        if (self%gave('radius') .or. self%gave('radius_prime') .or. self%gave('l') .or. &
+            self%gave('l_prime')) then
+            call bad(stat, 'suspension', trim(merge('radius      ', 'l           ', &
+                     self%gave('radius') .or. self%gave('radius_prime'))), 'given', &
+                     'with support_points, body_points, lengths', EITHER)
+            return
+        end if
+        call whole('support_points', self%support_points)
+        call whole('body_points', self%body_points)
+        if (stat%code /= STATUS_OK) return
+        if (.not. self%gave('lengths') .or. any(self%lengths(1:n) == NOT_GIVEN)) then
+            call bad(stat, 'suspension', 'lengths', 'not given for every cable', &
+                     'the length of each of the '//itoa(n)//' cables', 'lengths(1:'// &
+                     itoa(n)//'), every one > 0')
+            return
+        end if
+        if (any(self%lengths(n + 1:) /= NOT_GIVEN)) then
+            call bad(stat, 'suspension', 'lengths', rlist_short(self%lengths(1:n + 1)), &
+                     'more lengths than cables = '//itoa(n), 'lengths(1:'//itoa(n)//')')
+            return
+        end if
+        do i = 1, n
+            call positive(stat, 'suspension', 'lengths('//itoa(i)//')', self%lengths(i), &
+                          'every length > 0')
+            call dimensional(stat, 'suspension', 'lengths('//itoa(i)//')', self%lengths(i))
+        end do
+        if (stat%code /= STATUS_OK) return
+        jb = 0.0_dp
+        do k = 1, 3
+            jb(k, k) = 1.0_dp
+        end do
+        pl = general_platform(n, self%support_points(:, 1:n), self%body_points(:, 1:n), &
+                              self%lengths(1:n), 1.0_dp, jb, [0.0_dp, 0.0_dp], 0.0_dp, 1.0_dp)
+        call platform_prepare(pl, st)
+        if (st%code == STATUS_OK) return
+        if (index(st%msg, 'platform: ') == 1) then
+            call set_error(stat, ERR_DECK, '&suspension: '//st%msg(11:))
+        else if (index(st%msg, 'platform ') == 1) then
+            call set_error(stat, ERR_DECK, '&suspension '//st%msg(10:))
+        else
+            call set_error(stat, ERR_DECK, '&suspension: '//st%msg)
+        end if
+    contains
+        !> points(:, 1:n) given and finite, within DIM_MAX; no column beyond n.
+        subroutine whole(var, pts)
+            character(len=*), intent(in) :: var
+            real(dp), intent(in) :: pts(:, :)
+            integer :: j, c
+            if (stat%code /= STATUS_OK) return
+            if (.not. self%gave(var)) then
+                call bad(stat, 'suspension', var, 'not given', 'a platform point by '// &
+                         'point needs support_points, body_points and lengths', EITHER)
+                return
+            end if
+            do j = 1, n
+                if (any(pts(:, j) == NOT_GIVEN)) then
+                    call bad(stat, 'suspension', var//'(:,'//itoa(j)//')', 'not given '// &
+                             'whole', 'each of the '//itoa(n)//' cables needs its point''s '// &
+                             'three coordinates', var//'(:, 1:'//itoa(n)//') = x, y, z of '// &
+                             'each point')
+                    return
+                end if
+                do c = 1, 3
+                    call finite(stat, 'suspension', var//'('//itoa(c)//','//itoa(j)//')', &
+                                pts(c, j))
+                end do
+                if (stat%code /= STATUS_OK) return
+                if (maxval(abs(pts(:, j))) > DIM_MAX) then
+                    call bad(stat, 'suspension', var//'(:,'//itoa(j)//')', &
+                             rlist_short(pts(:, j)), 'out of range', '|coordinate| <= '// &
+                             rshort(DIM_MAX)//' in any units')
+                    return
+                end if
+            end do
+            do j = n + 1, size(pts, 2)
+                if (any(pts(:, j) /= NOT_GIVEN)) then
+                    call bad(stat, 'suspension', var//'(:,'//itoa(j)//')', &
+                             'given', 'a point beyond cables = '//itoa(n), var// &
+                             '(:, 1:'//itoa(n)//')')
+                    return
+                end if
+            end do
+        end subroutine whole
+    end subroutine check_points
 
     !> &body: mass > 0; principal moments > 0 obeying the triangle inequalities; r >= 0;
     !! btilde a right-handed orthonormal matrix; everything finite.
@@ -150,13 +274,19 @@ contains
                      'as r, lambda (the paper''s), not both')
             return
         end if
-        if (sus%cables > 2 .and. (self%gave('r') .or. self%gave('lambda') .or. &
-                                self%cg_offset /= 0.0_dp)) then
-            call bad(stat, 'body', trim(merge('cg_offset', 'r        ', &
-                     self%cg_offset /= 0.0_dp)), rshort(merge(self%cg_offset, self%r, &
-                     self%cg_offset /= 0.0_dp)), 'a mass centre off the axis of a '// &
-                     'platform of '//itoa(sus%cables)//' cables', &
-                     'the mass centre on the platform''s axis: cg_depth (any), cg_offset = 0')
+        if (sus%cables > 2 .and. (self%gave('r') .or. self%gave('lambda'))) then
+            call bad(stat, 'body', trim(merge('r     ', 'lambda', self%gave('r'))), &
+                     rshort(merge(self%r, self%lambda, self%gave('r'))), 'the paper''s '// &
+                     'place of the mass centre on a platform of '//itoa(sus%cables)//' cables', &
+                     'the mass centre of a platform as cg_offset = x, y (in the body''s '// &
+                     'frame) and cg_depth (below the plane of the attachments)')
+            return
+        end if
+        if (sus%cables <= 2 .and. self%gave('cg_offset_y')) then
+            call bad(stat, 'body', 'cg_offset', rshort(self%cg_offset)//', '// &
+                     rshort(self%cg_offset_y), 'two values on a bifilar', 'one value on a '// &
+                     'bifilar (the offset along CD from its midpoint), two (x, y in the '// &
+                     'body''s frame) on a platform of cables >= 3')
             return
         end if
         if (self%centre_measured(sus)) then
@@ -167,6 +297,9 @@ contains
                                                            self%cg_depth, sus%b_prime, 0.0_dp)
             if (self%cg_offset /= 0.0_dp) call over_b_prime(stat, 'body', 'cg_offset', &
                                                           self%cg_offset, sus%b_prime, 0.0_dp)
+            call finite(stat, 'body', 'cg_offset(2)', self%cg_offset_y)
+            if (self%cg_offset_y /= 0.0_dp) call over_b_prime(stat, 'body', 'cg_offset(2)', &
+                                                            self%cg_offset_y, sus%b_prime, 0.0_dp)
             if (stat%code /= STATUS_OK) return
         end if
         ! r and lambda as the run takes them (from cg_depth and cg_offset: normalise)

@@ -6,6 +6,13 @@
 !! normalisation (normalise: a platform's equivalent pair b = 2 radius, the mass centre
 !! from cg_depth and cg_offset, words in lower case, angles reduced modulo 2 pi).
 !!
+!! A platform (&suspension cables >= 3) is given either as a regular polygon (radius,
+!! radius_prime, l) or point by point (support_points(3, n) in the support's frame,
+!! body_points(3, n) in the body's, lengths(n)); its body's mass centre by cg_offset(2)
+!! (x, y in the body's frame) and cg_depth; its inertia as the bifilar's (inertia(3),
+!! btilde) in the axes (vertical, x, y) of the body's frame.  Module platform_rig makes
+!! the model's platform_t of these groups.
+!!
 !! The defaults are the paper's dimensionless scene (a uniform rod, b = b' = 1, l = l' = 2,
 !! g = 1); rig_t, start_t and accuracy_t (module rig) start from the same constants.
 module rig_groups
@@ -40,8 +47,8 @@ module rig_groups
     logical, parameter, public :: DEFAULT_SENS_ERROR_CONTROL = .false.
 
     real(dp), parameter, public :: TAU_END_MAX = 1.0e6_dp   !! longest simulation (units of tau)
-    !> Most cables of a platform (&suspension cables).
-    integer, parameter :: MAX_CABLES = 12
+    !> Most cables of a platform (&suspension cables; platform_geometry's PLATFORM_NMAX).
+    integer, parameter, public :: MAX_CABLES = 12
     !> Words allowed in &integration method: 'auto' (radau for model = 'elastic', lsoda for
     !! the paper's model), 'lsoda', 'radau'.
     character(len=*), parameter :: METHODS_ALLOWED = 'auto lsoda radau'
@@ -52,15 +59,21 @@ module rig_groups
 
     !> &suspension (lengths in any one unit; b and b_prime the full distances between the two
     !! cables on the support and on the body).  Tracked (gave): b, b_prime, l, l_prime, g,
-    !! cables, radius, radius_prime.
+    !! cables, radius, radius_prime, support_points, body_points, lengths.
     type, extends(deck_group_t), public :: suspension_group_t
         real(dp) :: b = DEFAULT_B, b_prime = DEFAULT_B_PRIME
         real(dp) :: l = DEFAULT_L, l_prime = DEFAULT_L_PRIME, g = DEFAULT_G
-        !> cables >= 3: a platform of that many cables at radius on the support and
-        !! radius_prime on the body (analysis identify; its torsion is that of b = 2 radius,
-        !! b_prime = 2 radius_prime: normalise)
+        !> cables >= 3: a platform of that many cables, a regular polygon at radius on the
+        !! support and radius_prime on the body, every cable of length l (its torsion is that
+        !! of b = 2 radius, b_prime = 2 radius_prime: normalise)
         integer :: cables = 2
         real(dp) :: radius = 0.0_dp, radius_prime = 0.0_dp
+        !> or any platform point by point: support_points(:, i) the support point of cable i
+        !! in the support's frame (z up), body_points(:, i) its body point in the body's frame
+        !! (z up when the body hangs level), lengths(i) its length; NOT_GIVEN where not given
+        real(dp) :: support_points(3, MAX_CABLES) = NOT_GIVEN
+        real(dp) :: body_points(3, MAX_CABLES) = NOT_GIVEN
+        real(dp) :: lengths(MAX_CABLES) = NOT_GIVEN
     contains
         procedure, nopass :: name => suspension_name
         procedure, nopass :: spec => suspension_spec
@@ -68,6 +81,7 @@ module rig_groups
         procedure :: echo => echo_suspension
         procedure :: check => check_suspension
         procedure :: normalise => normalise_suspension
+        procedure :: pointwise
     end type suspension_group_t
 
     !> &body.  Tracked (gave): mass, inertia, r, lambda, cg_depth, cg_offset.
@@ -77,9 +91,11 @@ module rig_groups
         !> the mass centre from C (eq. (21)): r and lambda, or as measured: its depth below the
         !! line CD (cg_depth) and its offset along CD from the midpoint of CD, toward D
         !! (cg_offset); r cos(lambda) = b_prime/2 + cg_offset, r sin(lambda) = cg_depth
-        !! (normalise)
+        !! (normalise).  On a platform: cg_offset = (cg_offset, cg_offset_y), the mass
+        !! centre's x and y in the body's frame (the deck's cg_offset(1:2)), and cg_depth its
+        !! depth below the plane of the attachments (their mean height, point by point)
         real(dp) :: r = DEFAULT_R, lambda = DEFAULT_LAMBDA
-        real(dp) :: cg_depth = 0.0_dp, cg_offset = 0.0_dp
+        real(dp) :: cg_depth = 0.0_dp, cg_offset = 0.0_dp, cg_offset_y = 0.0_dp
         real(dp) :: btilde(3, 3) = DEFAULT_BTILDE
         real(dp) :: sway_depth = DEFAULT_SWAY_DEPTH
     contains
@@ -203,18 +219,27 @@ contains
 
     function suspension_spec() result(s)
         character(len=:), allocatable :: s
-        s = 'b:r1 b_prime:r1 l:r1 l_prime:r1 g:r1 cables:i1 radius:r1 radius_prime:r1'
+        s = 'b:r1 b_prime:r1 l:r1 l_prime:r1 g:r1 cables:i1 radius:r1 radius_prime:r1 '// &
+            'support_points:r'//itoa(3*MAX_CABLES)//' body_points:r'//itoa(3*MAX_CABLES)// &
+            ' lengths:r'//itoa(MAX_CABLES)
     end function suspension_spec
 
-    !> &suspension b, b_prime, l, l_prime, g, cables, radius, radius_prime.
+    !> &suspension b, b_prime, l, l_prime, g, cables, radius, radius_prime, support_points,
+    !! body_points, lengths.
     subroutine read_suspension(self, rec, ios, msg)
         class(suspension_group_t), intent(inout) :: self    !! defaults in, values read out
         character(len=*), intent(in) :: rec         !! the group as one record
         integer, intent(out) :: ios                 !! iostat of the namelist read
         character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
         real(dp) :: b, b_prime, l, l_prime, g, radius, radius_prime
+        real(dp) :: support_points(3, MAX_CABLES), body_points(3, MAX_CABLES)
+        real(dp) :: lengths(MAX_CABLES)
         integer :: cables
-        namelist /suspension/ b, b_prime, l, l_prime, g, cables, radius, radius_prime
+        namelist /suspension/ b, b_prime, l, l_prime, g, cables, radius, radius_prime, &
+            support_points, body_points, lengths
+        support_points = self%support_points
+        body_points = self%body_points
+        lengths = self%lengths
         b = NOT_GIVEN
         b_prime = NOT_GIVEN
         l = NOT_GIVEN
@@ -235,6 +260,12 @@ contains
             self%cables = cables
             call self%note_given('cables')
         end if
+        if (any(support_points /= self%support_points)) call self%note_given('support_points')
+        if (any(body_points /= self%body_points)) call self%note_given('body_points')
+        if (any(lengths /= self%lengths)) call self%note_given('lengths')
+        self%support_points = support_points
+        self%body_points = body_points
+        self%lengths = lengths
     contains
         subroutine take(name, v, x)
             character(len=*), intent(in) :: name
@@ -249,19 +280,61 @@ contains
     function echo_suspension(self) result(line)
         class(suspension_group_t), intent(in) :: self
         character(len=:), allocatable :: line
+        integer :: i, n
         line = '# &suspension b = '//rshort(self%b)//', b_prime = '//rshort(self%b_prime)// &
             ', l = '//rshort(self%l)//', l_prime = '//rshort(self%l_prime)//', g = '// &
             rshort(self%g)
-        if (self%cables /= 2) line = line//', cables = '//itoa(self%cables)//', radius = '// &
-            rshort(self%radius)//', radius_prime = '//rshort(self%radius_prime)
+        if (self%cables /= 2 .and. self%pointwise()) then
+            n = min(max(self%cables, 0), MAX_CABLES)
+            line = line//', cables = '//itoa(self%cables)
+            do i = 1, n
+                line = line//', support_points(:,'//itoa(i)//') = '// &
+                    rlist_short(self%support_points(:, i))
+            end do
+            do i = 1, n
+                line = line//', body_points(:,'//itoa(i)//') = '// &
+                    rlist_short(self%body_points(:, i))
+            end do
+            line = line//', lengths = '//rlist_short(self%lengths(1:n))
+        else if (self%cables /= 2) then
+            line = line//', cables = '//itoa(self%cables)//', radius = '// &
+                rshort(self%radius)//', radius_prime = '//rshort(self%radius_prime)
+        end if
         line = line//' /'
     end function echo_suspension
 
+    !> True when a platform is given point by point (support_points, body_points, lengths).
+    pure logical function pointwise(self)
+        class(suspension_group_t), intent(in) :: self
+        pointwise = self%gave('support_points') .or. self%gave('body_points') .or. &
+                    self%gave('lengths')
+    end function pointwise
+
     !> A platform of 3 or more cables as its equivalent pair: b = 2 radius,
-    !! b_prime = 2 radius_prime, every cable of length l.
+    !! b_prime = 2 radius_prime, every cable of length l; given point by point, b and
+    !! b_prime twice the mean distance of the support's and the body's points from their
+    !! centroids, l = l_prime the mean length (the scales the deck's checks take).
     pure subroutine normalise_suspension(self)
         class(suspension_group_t), intent(inout) :: self
+        integer :: n, i
+        real(dp) :: cs(3), cb(3), ds, db
         if (self%cables <= 2) return
+        if (self%pointwise()) then
+            n = min(self%cables, MAX_CABLES)
+            cs = [(sum(self%support_points(i, 1:n))/n, i = 1, 3)]
+            cb = [(sum(self%body_points(i, 1:n))/n, i = 1, 3)]
+            ds = 0.0_dp
+            db = 0.0_dp
+            do i = 1, n
+                ds = ds + norm2(self%support_points(:, i) - cs)
+                db = db + norm2(self%body_points(:, i) - cb)
+            end do
+            self%b = 2.0_dp*ds/n
+            self%b_prime = 2.0_dp*db/n
+            self%l = sum(self%lengths(1:n))/n
+            self%l_prime = self%l
+            return
+        end if
         self%b = 2.0_dp*self%radius
         self%b_prime = 2.0_dp*self%radius_prime
         self%l_prime = self%l
@@ -276,16 +349,18 @@ contains
 
     function body_spec() result(s)
         character(len=:), allocatable :: s
-        s = 'mass:r1 inertia:r3 r:r1 lambda:r1 cg_depth:r1 cg_offset:r1 btilde:r9 sway_depth:r1'
+        s = 'mass:r1 inertia:r3 r:r1 lambda:r1 cg_depth:r1 cg_offset:r2 btilde:r9 sway_depth:r1'
     end function body_spec
 
-    !> &body mass, inertia, r, lambda, cg_depth, cg_offset, btilde, sway_depth.
+    !> &body mass, inertia, r, lambda, cg_depth, cg_offset (one value on a bifilar, two on a
+    !! platform: its second is cg_offset_y, tracked as given apart), btilde, sway_depth.
     subroutine read_body(self, rec, ios, msg)
         class(body_group_t), intent(inout) :: self  !! defaults in, values read out
         character(len=*), intent(in) :: rec         !! the group as one record
         integer, intent(out) :: ios                 !! iostat of the namelist read
         character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
-        real(dp) :: mass, inertia(3), r, lambda, cg_depth, cg_offset, btilde(3, 3), sway_depth
+        real(dp) :: mass, inertia(3), r, lambda, cg_depth, cg_offset(2), btilde(3, 3), &
+                    sway_depth
         namelist /body/ mass, inertia, r, lambda, cg_depth, cg_offset, btilde, sway_depth
         mass = NOT_GIVEN
         inertia = NOT_GIVEN
@@ -300,7 +375,12 @@ contains
         call take('r', r, self%r)
         call take('lambda', lambda, self%lambda)
         call take('cg_depth', cg_depth, self%cg_depth)
-        call take('cg_offset', cg_offset, self%cg_offset)
+        call take('cg_offset', cg_offset(1), self%cg_offset)
+        if (cg_offset(2) /= NOT_GIVEN) then
+            self%cg_offset_y = cg_offset(2)
+            call self%note_given('cg_offset')
+            call self%note_given('cg_offset_y')
+        end if
         if (any(inertia /= NOT_GIVEN)) call self%note_given('inertia')
         where (inertia /= NOT_GIVEN) self%inertia = inertia
         self%btilde = btilde
@@ -325,6 +405,7 @@ contains
             rshort(self%lambda)
         if (self%gave('cg_depth') .or. self%gave('cg_offset')) line = line// &
             ', cg_depth = '//rshort(self%cg_depth)//', cg_offset = '//rshort(self%cg_offset)
+        if (self%gave('cg_offset_y')) line = line//', '//rshort(self%cg_offset_y)
         do i = 1, 3
             line = line//', btilde('//achar(iachar('0') + i)//',:) = '// &
                 rlist_short(self%btilde(i, :))

@@ -31,6 +31,9 @@ module rig_type
         real(dp) :: c_v = DEFAULT_C_V, c_q = DEFAULT_C_Q
         ! elastic cables (model 'elastic'): EA/(m g) and the damping ratio of each cable
         real(dp) :: cable_stiffness = DEFAULT_STIFFNESS, cable_damping = DEFAULT_CABLE_DAMPING
+        ! cables > 2: a regular platform of that many cables, b = 2 radius, b_prime = 2
+        ! radius_prime, l every cable's length (module platform_rig: platform_of_rig)
+        integer :: cables = 2
     end type rig_t
 
     !> How the rig starts: mode 'raised' (the paper's recipe: turned by `amplitude` degrees

@@ -87,6 +87,15 @@ $(cpu_unit "$bin/bench_platform" bifilar_step 20000)"
 $(cpu_unit "$bin/bench_platform" step 20000)"
     echo "platform_elastic_step $(per_unit 200 "$bin/bench_platform" elastic_step) \
 $(cpu_unit "$bin/bench_platform" elastic_step 2000)"
+    # one point of the trifilar's chart (tests/bench/chart_platform.nml's region and rtol):
+    # the instructions of a 4 x 4 chart less a 2 x 2 one, over 12, one thread
+    for k in 2 4; do
+        sed "s/nx = 100/nx = $k/; s/ny = 100/ny = $k/" tests/bench/chart_platform.nml \
+            > "$scratch/chart_platform_$k.nml"
+    done
+    i2=$(OMP_NUM_THREADS=1 cg "$bin/bifilar" "$scratch/chart_platform_2.nml" --out "$scratch")
+    i4=$(OMP_NUM_THREADS=1 cg "$bin/bifilar" "$scratch/chart_platform_4.nml" --out "$scratch")
+    echo "platform_chart_point $(( (i4 - i2) / 12 )) 0"
 } > "$out.tmp"
 mv "$out.tmp" "$out"
 awk 'NR == 1 {next} {printf "%-28s %14.0f instructions %12.3e s cpu\n", $1, $2, $3}' "$out"
