@@ -3,15 +3,16 @@
 !!
 !! The text is the one of trying the edit descriptors f48.k (k = 0, 1, ... while
 !! 1e-4 <= |x| < 1e15 or x = 0) or es48.ke3 in turn and keeping the first whose text reads
-!! back as x.  Writing and reading a number through the library costs about 15,000
-!! instructions, and a number of a deck's echo took eight to ten of them (the echo of a
-!! Floquet deck's five groups cost 3.6M instructions, a third of the whole process;
-!! doc/performance.md).  Here each text is module fast_format's, which is the library's
-!! character for character, and a text is read back by Clinger's fast path where that is
-!! exact: m digits with m <= 2^53 and a power of ten 10^q with |q| <= 22 are both exact
-!! doubles, so m 10^q (or m / 10^-q) is one correctly rounded operation, the value the
-!! library's correctly rounded reading gives.  Other texts (more than 18 digits, larger
-!! powers, near the largest real) are read by the library as before.  Test: suite deck,
+!! back as x.  Through the library's internal WRITE and READ that took 32,500 instructions
+!! a number, and the echo of a Floquet deck's groups 3.6M, a third of the whole process
+!! (doc/performance.md); here 1,760 a number.  Each text is module fast_format's, which is
+!! the library's character for character, and a text is read back by Clinger's fast path
+!! where that is exact: digits whose integer m <= 2^53 and a power of ten 10^q with
+!! |q| <= 22 are both exact doubles, so m 10^q (or m / 10^-q) is one correctly rounded
+!! operation, the value the library's correctly rounded reading gives.  Other texts (more
+!! than 18 digits, larger powers, near the largest real) are read by the library as
+!! before.  A text of f48.0 is the nearest integer, which reads back exactly when x is an
+!! integer (|x| < 1e15 in fixed notation).  Test: suite deck,
 !! "deck: shortest reals of the echo" (rshort against the digits tried in turn through the
 !! library).
 !!
