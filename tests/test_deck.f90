@@ -937,6 +937,17 @@ contains
         call one(-0.0_dp)
         call one(huge(1.0_dp))
         call one(tiny(1.0_dp))
+        ! the edges of rshort's exact reading (at most 2^53 as the digits' integer, 10^+-22)
+        do k = -3, 3
+            call one(9007199254740992.0_dp + 2*k)
+            call one(9.007199254740992e-7_dp*(1.0_dp + k*epsilon(1.0_dp)))
+            call one(1.0e22_dp*(1.0_dp + k*epsilon(1.0_dp)))
+            call one(1.0e23_dp*(1.0_dp + k*epsilon(1.0_dp)))
+            call one(1.0e-22_dp*(1.0_dp + k*epsilon(1.0_dp)))
+            call one(1.0e-23_dp*(1.0_dp + k*epsilon(1.0_dp)))
+            call one(1.234567890123456789e-5_dp*(1.0_dp + k*epsilon(1.0_dp)))
+            call one(0.1234567890123456789_dp*(1.0_dp + k*epsilon(1.0_dp)))
+        end do
         call traps_restore(halting)
         write (*, '(a,i0,a,i0)') '  rshort: ', cases, ' values, different: ', bad
         if (bad > 0) write (*, '(a)') '  first difference: '//trim(first)

@@ -63,6 +63,7 @@ contains
         if (t%want('floquet: small amplitude against the natural frequencies at rest')) &
             call test_small_amplitude(t)
         if (t%want('floquet: structure of the multipliers')) call test_structure(t)
+        if (t%want('floquet: the box P3 at rtol 1e-10 = at rtol 1e-13')) call test_box_p3(t)
         if (t%want('floquet: six columns N U0 = the whole half-period map')) &
             call test_six_columns(t)
         if (t%want('floquet: reciprocal partners up to modulus 1e6')) call test_pencil(t)
@@ -439,6 +440,57 @@ contains
         call t%check('box_tall unstable, of the paper''s order (1e3)', &
                      .not. stable_of('input/box_tall_floquet.nml') .and. r%max_modulus > 1.0e3_dp)
     end subroutine test_structure
+
+    !> The benchmark deck tests/bench/box_p3.nml (the 4 b' block hung at mid-height on
+    !! cables l = l' = b'/2; make bench's row floquet_box_p3) as it asks, 45 deg and rtol
+    !! 1e-10: each multiplier within 1e-8 max(1, |lambda|) of the nearest of an analysis at
+    !! rtol 1e-13, which agree to about 5e-10 (the largest modulus is 301); the conservative
+    !! structure on the run as asked: |det H| = 1, reciprocal pairs, the trivial identities.
+    subroutine test_box_p3(t)
+        type(tester_t), intent(inout) :: t
+        type(pendulum_t) :: p
+        type(floquet_result_t) :: r, rref
+        type(status_t) :: st
+        real(dp) :: worst, pr
+        integer :: i, j
+        p = deck_pendulum('tests/bench/box_p3.nml')
+        call floquet_analysis(p, 45*deg, 1.0e-10_dp, 1, r, st)
+        call t%check('box_p3: analysis at rtol 1e-10 runs', st%code == 0)
+        if (st%code /= 0) return
+        call floquet_analysis(p, 45*deg, 1.0e-13_dp, 1, rref, st)
+        call t%check('box_p3: analysis at rtol 1e-13 runs', st%code == 0)
+        if (st%code /= 0) return
+        worst = 0.0_dp
+        do i = 1, size(r%multipliers)
+            pr = huge(1.0_dp)
+            do j = 1, size(rref%multipliers)
+                pr = min(pr, abs(r%multipliers(i) - rref%multipliers(j)))
+            end do
+            worst = max(worst, pr/max(1.0_dp, abs(r%multipliers(i))))
+        end do
+        write (*, '(a,es10.3,a,es10.3)') '  box_p3: max modulus ', r%max_modulus, &
+            ', worst difference from rtol 1e-13 ', worst
+        call t%check('box_p3: unstable, of modulus above 100', &
+                     .not. r%stable .and. r%max_modulus > 100.0_dp)
+        call t%check_close('box_p3: multipliers at rtol 1e-10 = at rtol 1e-13', worst, &
+                           0.0_dp, atol=1.0e-8_dp)
+        call t%check_close('box_p3: max modulus at rtol 1e-10 = at rtol 1e-13', &
+                           r%max_modulus, rref%max_modulus, rtol=1.0e-8_dp)
+        call t%check_close('box_p3: |det H(t*)| = 1', abs(product(r%multipliers)), 1.0_dp, &
+                           atol=1.0e-8_dp)
+        worst = 0.0_dp
+        do i = 1, 6
+            pr = huge(1.0_dp)
+            do j = 1, 6
+                if (j /= i) pr = min(pr, abs(r%multipliers(i)*r%multipliers(j) - 1.0_dp), &
+                                     abs(r%multipliers(i)*conjg(r%multipliers(j)) - 1.0_dp))
+            end do
+            worst = max(worst, pr)
+        end do
+        call t%check_close('box_p3: reciprocal pairs', worst, 0.0_dp, atol=1.0e-8_dp)
+        call t%check_close('box_p3: trivial identities', r%trivial_residual, 0.0_dp, &
+                           atol=1.0e-8_dp)
+    end subroutine test_box_p3
 
     !> The default analysis integrates six columns of the half-period map, N U0; the one of
     !! the whole map (all ten columns, whole_map) gives the same multipliers within 1e-8

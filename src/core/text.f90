@@ -40,6 +40,15 @@ module text
         module procedure commas_default, commas_sep
     end interface commas
 
+    interface
+        !> rshort's text, left-justified (submodule text_short: the run-time library's text,
+        !! made without its formatted I/O).
+        module pure function rshort_text(x) result(s)
+            real(dp), intent(in) :: x               !! value
+            character(len=NUM_LEN) :: s
+        end function rshort_text
+    end interface
+
 contains
 
     !> An integer without blanks: 42, -7.
@@ -171,135 +180,6 @@ contains
         s = rshort_text(x)
     end function rshort
 
-    !> rshort's text, left-justified.
-    pure function rshort_text(x) result(s)
-        real(dp), intent(in) :: x                   !! value
-        character(len=NUM_LEN) :: s
-        character(len=NUM_LEN) :: buf
-        character(len=16) :: fmt
-        integer :: k, ie, n
-        logical :: fixed_form
-        if (.not. ieee_is_finite(x)) then
-            write (buf, '(g0)') x
-            s = adjustl(buf)
-            return
-        end if
-        fixed_form = .false.
-        if (x == 0.0_dp .or. (abs(x) >= 1.0e-4_dp .and. abs(x) < 1.0e15_dp)) then
-            k = fewest_digits(x, .true.)
-            fixed_form = k >= 0
-        end if
-        if (fixed_form) then
-            fmt = '(f48.'//itoa(k)//')'
-            write (buf, fmt) x
-            s = lead_zero_text(buf)
-            n = len_trim(s)
-            if (s(n:n) == '.') s(n:n) = ' '
-        else
-            k = fewest_digits(x, .false.)
-            if (k < 0) k = 16
-            fmt = '(es48.'//itoa(k)//'e3)'
-            write (buf, fmt) x
-            buf = adjustl(buf)
-            n = len_trim(buf)
-            ie = index(buf, 'E')
-            ! 1.E-015 -> 1e-15, 1.7E+308 -> 1.7e308
-            k = ie + 2
-            do while (k < n)
-                if (buf(k:k) /= '0') exit
-                k = k + 1
-            end do
-            if (buf(ie + 1:ie + 1) == '-') then
-                s = buf(1:ie - 1)//'e-'//buf(k:n)
-            else
-                s = buf(1:ie - 1)//'e'//buf(k:n)
-            end if
-            ie = index(s, '.e')
-            if (ie > 0) s = s(1:ie - 1)//s(ie + 1:)
-        end if
-    end function rshort_text
-
-    !> The fewest digits after the point, k, with which x written in fixed (f48.k, k <= 24) or
-    !! scientific notation (es48.ke3, k <= 16) reads back exactly; -1 when none does.  The
-    !! same k as trying k = 0, 1, 2, ... in turn, in about four trials instead of up to 25:
-    !! k = 0, then the candidate from x's 16-digit text (its digits without trailing zeros),
-    !! then down while a shorter text still reads back.  Where x is not a power of two the
-    !! values that read back as x lie symmetrically around it, and a text with one digit more
-    !! is never further from x, so the texts that read back are those from the fewest digits
-    !! on; powers of two (asymmetric) and surprises take the trials in turn.  A text beyond
-    !! the largest real (1.7976931348623157e308 rounded up) is not read: it cannot read
-    !! back, and reading it would overflow (a trap in the checking build).
-    pure function fewest_digits(x, fixed_form) result(k)
-        real(dp), intent(in) :: x                   !! finite value
-        logical, intent(in) :: fixed_form           !! f48.k, else es48.ke3
-        integer :: k
-        character(len=48) :: buf
-        integer :: kmax, kc, p, e10, i0, ie, j
-        kmax = merge(24, 16, fixed_form)
-        k = 0
-        if (reads_back(k)) return
-        if (abs(fraction(x)) /= 0.5_dp) then
-            write (buf, '(es48.15e3)') x
-            buf = adjustl(buf)
-            i0 = index(buf, '.')
-            ie = index(buf, 'E')
-            p = 16
-            do j = ie - 1, i0 + 1, -1
-                if (buf(j:j) /= '0') exit
-                p = p - 1
-            end do
-            e10 = 0
-            do j = ie + 2, len_trim(buf)
-                e10 = 10*e10 + (iachar(buf(j:j)) - iachar('0'))
-            end do
-            if (buf(ie + 1:ie + 1) == '-') e10 = -e10
-            kc = p - 1
-            if (fixed_form) kc = p - 1 - e10
-            kc = max(1, kc)
-            if (kc <= kmax) then
-                if (reads_back(kc)) then
-                    do while (kc > 1)
-                        if (.not. reads_back(kc - 1)) exit
-                        kc = kc - 1
-                    end do
-                    k = kc
-                    return
-                end if
-            end if
-        end if
-        do k = 1, kmax
-            if (reads_back(k)) return
-        end do
-        k = -1
-    contains
-        !> x written with kk digits after the point reads back as x.
-        pure logical function reads_back(kk)
-            integer, intent(in) :: kk
-            character(len=48) :: txt, fmt
-            real(dp) :: y, mant
-            integer :: ios, ie2
-            if (fixed_form) then
-                fmt = '(f48.'//itoa(kk)//')'
-            else
-                fmt = '(es48.'//itoa(kk)//'e3)'
-            end if
-            write (txt, fmt) x
-            reads_back = .false.
-            if (abs(x) > 1.0e308_dp) then
-                ! beyond the largest real?  Its mantissa alone cannot overflow
-                txt = adjustl(txt)
-                ie2 = index(txt, 'E')
-                if (ie2 > 1) then
-                    read (txt(1:ie2 - 1), *, iostat=ios) mant
-                    if (ios /= 0) return
-                    if (index(txt, 'E+309') > 0) return
-                    if (index(txt, 'E+308') > 0 .and. abs(mant) > 1.7976931348623157_dp) return
-                end if
-            end if
-            read (txt, *, iostat=ios) y
-            reads_back = ios == 0 .and. y == x
-        end function reads_back
-    end function fewest_digits
 
     !> rshort of each value, joined by ', '.
     pure function rlist_short(x) result(s)

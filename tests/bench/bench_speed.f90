@@ -6,6 +6,8 @@
 !!   bench_speed rhs N                one right-hand side of the paper's model (cylinder_l180
 !!                                    at tau = 0, the state moved a little on every call)
 !!   bench_speed floquet DECK N       one Floquet analysis of input/DECK.nml at 45 deg, rtol 1e-10
+!!                                    (DECK with a / in it: that file, e.g.
+!!                                    tests/bench/box_p3.nml)
 !!   bench_speed chart N              one stability-chart point: the mean over the 6 x 5 grid
 !!                                    l = 0.5 ... 8, amplitude 2 ... 90 deg of input/box_chart.nml
 !!                                    (the box hung from its top edges), rtol 1e-8, one thread
@@ -70,7 +72,11 @@ program bench_speed
     case ('floquet')
         call get_command_argument(2, arg)
         n = int_arg(3)
-        call read_deck('input/'//trim(arg)//'.nml', d, st)
+        if (index(arg, '/') > 0) then
+            call read_deck(trim(arg), d, st)
+        else
+            call read_deck('input/'//trim(arg)//'.nml', d, st)
+        end if
         call need(st, 'bench_speed')
         call make_pendulum(rig_of(d), p, st)
         call need(st, 'bench_speed')

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Speed figures of make bench: instructions (valgrind --tool=callgrind, exact and repeatable)
-# and CPU time of one right-hand side, one Floquet analysis, one chart point, the start of
+# and CPU time of one right-hand side, one Floquet analysis (the four Floquet decks of input/
+# and the box P3 of tests/bench/box_p3.nml, also as a whole process), one chart point, the start of
 # the process, the whole cylinder_l180 deck, the 60 x 6 rig design (input/box_design.nml,
 # one thread), identify's units and the multifilar platform's (a right-hand side, an
 # LSODA step beside the paper model's, a Radau step of elastic cables).  Usage:
@@ -53,6 +54,12 @@ $(cpu_unit "$bin/bench_speed" floquet $deck 20)"
         echo "floquet_${deck}_differences $(per_unit 1 "$bin/bench_speed" floquet_differences $deck) \
 $(cpu_unit "$bin/bench_speed" floquet_differences $deck 20)"
     done
+    # the paper's box P3 (tests/bench/box_p3.nml: the 4 b' block hung at mid-height on
+    # cables l = l' = b'/2, 45 degrees, rtol 1e-10): one analysis, and the deck's whole process
+    echo "floquet_box_p3 $(per_unit 1 "$bin/bench_speed" floquet tests/bench/box_p3.nml) \
+$(cpu_unit "$bin/bench_speed" floquet tests/bench/box_p3.nml 20)"
+    echo "floquet_box_p3_process $(cg "$bin/bifilar" tests/bench/box_p3.nml --out "$scratch") \
+$(cpu_process 40 "$bin/bifilar" tests/bench/box_p3.nml --out "$scratch")"
     echo "chart_point $(( $(per_unit 1 "$bin/bench_speed" chart) / 30 )) $(cpu_unit "$bin/bench_speed" chart 4)"
     echo "chart_point_differences $(( $(per_unit 1 "$bin/bench_speed" chart_differences) / 30 )) \
 $(cpu_unit "$bin/bench_speed" chart_differences 4)"
