@@ -189,7 +189,6 @@ contains
                                    (yhi - ylo))
         end function sy
 
-    contains
         !> Append t to the path's buffer (px writes at most PX_LEN characters).
         subroutine put(t)
             character(len=*), intent(in) :: t
