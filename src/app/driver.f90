@@ -15,7 +15,7 @@ module driver
     use, intrinsic :: iso_fortran_env, only: error_unit
     use kinds, only: dp
     use status, only: status_t, STATUS_OK, ERR_DECK, exit_status_of, status_meaning
-    use text, only: itoa, sci, fixed
+    use text, only: itoa, sci, fixed, quoted
     use deck, only: deck_t, read_deck, read_deck_text, analysis_requested
     use output_io, only: out_files_t, remove_file, path_fits
     use signals, only: signals_deck, signals_stage, signals_defer
@@ -196,6 +196,13 @@ contains
                 if (idr%n_trials > 1) line = line//', '//itoa(idr%n_trials)//' releases '// &
                     trim(idr%consistency)
                 line = line//', period model '//trim(idr%period_model)
+                if (allocated(idin%recs)) then
+                    ! a gyro export read without record_columns: the axis taken
+                    if (size(idin%recs) > 0) then
+                        if (idin%recs(1)%axis_chosen) line = line//', record axis '// &
+                            quoted(trim(idin%recs(1)%value_name))//' (largest swing)'
+                    end if
+                end if
                 if (idr%u_i1_mc >= 0.0_dp) then
                     line = line//' (Monte Carlo u '//sci(idr%u_i1_mc, 2)//' from '// &
                         itoa(d%measurement%monte_carlo)//' samples, '// &
