@@ -10,7 +10,9 @@
 # The folders under SRC are layers, listed below from the bottom up; the one rule is that a
 # unit uses only units of its own folder or of folders below it.  With --check the script
 # also fails (exit 1, one line per fault) when a unit uses one of a higher folder, when a
-# unit of analyses/ uses another analysis (its own parent module excepted), when a unit
+# unit of analyses/ uses another analysis (its own parent module excepted; the modules of
+# ANALYSIS_SHARED are not analyses but what every analysis shares: any unit of analyses/
+# may use them, and they use no analysis), when a unit
 # outside analyses/, app/ and deck/ uses the deck (module deck or any unit of deck/,
 # wherever it lies: the layers below take the deck's group types), or when the graph has
 # more than MAX_FLOORS floors.
@@ -18,6 +20,8 @@ set -u
 LAYERS="core linalg integrators model io parallel runs measure deck analyses app"
 # The folders that may use the deck.
 DECK_USERS="deck analyses app"
+# The modules of analyses/ that are not analyses: the base type every analysis extends.
+ANALYSIS_SHARED="analysis_base"
 MAX_FLOORS=8
 check=0
 if [ "${1:-}" = "--check" ]; then check=1; shift; fi
@@ -43,9 +47,11 @@ for f in $(find "$src" -name '*.f90' | sort); do
             for (u in uses) printf " %s", u
             printf "\n"
         }' "$f"
-done | awk -v layers="$LAYERS" -v check="$check" -v maxf="$MAX_FLOORS" -v deckusers="$DECK_USERS" '
+done | awk -v layers="$LAYERS" -v check="$check" -v maxf="$MAX_FLOORS" -v deckusers="$DECK_USERS" \
+          -v shared="$ANALYSIS_SHARED" '
     BEGIN { n = split(layers, L, " "); for (i = 1; i <= n; i++) rank[L[i]] = i
-            n = split(deckusers, D, " "); for (i = 1; i <= n; i++) may_use_deck[D[i]] = 1 }
+            n = split(deckusers, D, " "); for (i = 1; i <= n; i++) may_use_deck[D[i]] = 1
+            n = split(shared, S, " "); for (i = 1; i <= n; i++) is_shared[S[i]] = 1 }
     {
         u = $1; if (u in folder && $3 == "module(mpi)") next    # the MPI twin of a module
         folder[u] = $2; kind[u] = $3; parent[u] = $4; nu[u] = 0
@@ -75,7 +81,7 @@ done | awk -v layers="$LAYERS" -v check="$check" -v maxf="$MAX_FLOORS" -v deckus
                 if (rank[folder[v]] > rank[folder[u]])
                     fault[++bad] = u " (" folder[u] ") uses " v " of the higher folder " folder[v]
                 else if (folder[u] == "analyses" && folder[v] == "analyses" && v != parent[u] && \
-                         parent[v] != u)
+                         parent[v] != u && !(v in is_shared))
                     fault[++bad] = u " uses " v ": an analysis uses another analysis"
                 if ((v == "deck" || folder[v] == "deck") && !(folder[u] in may_use_deck))
                     fault[++bad] = u " (" folder[u] ") uses " v ": only analyses/ and app/ use the deck"

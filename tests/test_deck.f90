@@ -11,6 +11,7 @@ module test_deck
                          out_files_t, make_dir, process_id
     use text, only: itoa, rshort
     use driver, only: error_line
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -53,8 +54,7 @@ contains
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe     !! path of the bifilar executable
         character(len=*), parameter :: dir = SCRATCH    !! directory for deck files
-        associate (unused => exe)   ! every suite is given the executable; this one needs none
-        end associate
+        call unused(exe)   ! every suite is given the executable; this one needs none
         call scratch_dir(dir)
         if (t%want('deck: a complete deck reads back')) call test_complete(t, dir)
         if (t%want('deck: defaults for absent groups')) call test_defaults(t, dir)

@@ -18,6 +18,7 @@ module test_elastic
     use lsoda, only: lsoda_t, METHOD_BDF
     use lapack_wrap, only: la_eig
     use ode_system, only: integrator_stats_t
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -32,8 +33,7 @@ contains
     subroutine run_elastic_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe     !! path of the bifilar executable
-        associate (unused => exe)   ! every suite is given the executable; this one needs none
-        end associate
+        call unused(exe)   ! every suite is given the executable; this one needs none
         if (t%want('elastic: conversions and Newton-Euler against the paper''s equations')) &
             call test_conversions(t)
         if (t%want('elastic: energy conserved without damping')) call test_energy(t)

@@ -24,6 +24,7 @@ module test_elastic_radau
     use deck, only: deck_t, read_deck
     use simulate, only: run_simulation, run_summary_t
     use ode_system, only: integrator_stats_t
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -44,8 +45,7 @@ contains
     subroutine run_elastic_radau_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe     !! path of the bifilar executable
-        associate (unused => exe)   ! every suite is given the executable; this one needs none
-        end associate
+        call unused(exe)   ! every suite is given the executable; this one needs none
         if (t%want('elastic radau: generalized coordinates against the maximal ones')) &
             call test_coordinates(t)
         if (t%want('elastic radau: global error follows rtol')) call test_follows(t)

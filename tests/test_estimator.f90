@@ -13,6 +13,7 @@ module test_estimator
     use estimator, only: lsq_problem_t, lsq_options_t, lsq_result_t, estimate, &
         gauss_newton_gain, lsq_covariance, DAMP_HALVING, STEP_LARGEST, &
         LOSS_HUBER, CONV_FLOOR, FAIL_EVALUATION
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -78,8 +79,7 @@ contains
     subroutine run_estimator_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
-        associate (unused => exe)
-        end associate
+        call unused(exe)
         if (t%want('estimator: a weighted straight line against the closed form')) &
             call test_line(t)
         if (t%want('estimator: Rosenbrock''s valley and Powell''s singular function')) &
@@ -498,16 +498,14 @@ contains
         real(dp), intent(in) :: p(:)
         real(dp), intent(out) :: r(:)
         type(status_t), intent(out) :: stat
-        associate (unused => prob)
-        end associate
+        call unused(prob)
         stat%code = 0
         r = [10.0_dp*(p(2) - p(1)**2), 1.0_dp - p(1)]
     end subroutine rosenbrock_residual
 
     integer function two_residuals(prob) result(n)
         class(rosenbrock_t), intent(in) :: prob
-        associate (unused => prob)
-        end associate
+        call unused(prob)
         n = 2
     end function two_residuals
 
@@ -516,8 +514,7 @@ contains
         real(dp), intent(in) :: p(:)
         real(dp), intent(out) :: r(:)
         type(status_t), intent(out) :: stat
-        associate (unused => prob)
-        end associate
+        call unused(prob)
         stat%code = 0
         r = [p(1) + 10.0_dp*p(2), sqrt(5.0_dp)*(p(3) - p(4)), (p(2) - 2.0_dp*p(3))**2, &
              sqrt(10.0_dp)*(p(1) - p(4))**2]
@@ -525,8 +522,7 @@ contains
 
     integer function four_residuals(prob) result(n)
         class(powell_t), intent(in) :: prob
-        associate (unused => prob)
-        end associate
+        call unused(prob)
         n = 4
     end function four_residuals
 
@@ -546,8 +542,7 @@ contains
 
     logical function decay_has_jacobian(prob)
         class(decay_t), intent(in) :: prob
-        associate (unused => prob)
-        end associate
+        call unused(prob)
         decay_has_jacobian = .true.
     end function decay_has_jacobian
 
@@ -594,8 +589,7 @@ contains
 
     integer function one_residual(prob) result(n)
         class(fragile_t), intent(in) :: prob
-        associate (unused => prob)
-        end associate
+        call unused(prob)
         n = 1
     end function one_residual
 

@@ -8,6 +8,7 @@ module test_fast_format
     use testing, only: tester_t
     use fast_format, only: es_field, f_field
     use text, only: itoa, sci, fixed, lead_zero
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -26,8 +27,7 @@ contains
     subroutine run_fast_format_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe     !! path of the bifilar executable
-        associate (unused => exe)   ! every suite is given the executable; this one needs none
-        end associate
+        call unused(exe)   ! every suite is given the executable; this one needs none
         if (t%want('fast_format: ES24.15E3 against the library')) call test_es(t)
         if (t%want('fast_format: F14.6 against the library')) call test_f(t)
         if (t%want('fast_format: other widths and digits')) call test_other(t)

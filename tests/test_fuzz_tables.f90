@@ -24,6 +24,7 @@ module test_fuzz_tables
     use work_estimate, only: check_record_times, check_timings, periods_runs
     use checkpoint, only: checkpoint_write, checkpoint_read
     use tensor, only: tensor_ready
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -45,8 +46,7 @@ contains
         character(len=*), intent(in) :: exe     !! (not run: the cases are in process)
         integer :: ncase
         integer(8) :: state
-        associate (unused => exe)
-        end associate
+        call unused(exe)
         if (.not. t%want('fuzz_tables: records, periods, hangs and checkpoints mutated, '// &
                          'read in process')) return
         call fresh_dir(SCRATCH)

@@ -1,12 +1,20 @@
-!> The house: the module graph and the status table.  The graph of the sources (module_graph.sh
-!! --check) keeps its rules: a unit uses only units of its own folder or of folders below,
-!! no analysis uses another, only analyses/ and app/ use the deck, at most 8 floors; and the
-!! script finds a break of each rule in a small tree made here.  The status table holds every code once, each with an exit
-!! status the program can give.
+!> The house: the module graph, the registry of analyses and the status table.  The graph
+!! of the sources (module_graph.sh --check) keeps its rules: a unit uses only units of its
+!! own folder or of folders below, no analysis uses another (the shared base analysis_base
+!! is not an analysis), only analyses/ and app/ use the deck, at most 8 floors; and the
+!! script finds a break of each rule in a small tree made here.  The registry (driver's
+!! analysis_registry) holds every word of &scene analyses once and no other, and no file or
+!! sweep belongs to two analyses.  The status table holds every code once, each with an
+!! exit status the program can give.
 module test_graph
-    use testing, only: tester_t, write_text, file_has, run, fresh_dir, first_line
+    use testing, only: tester_t, write_text, file_has, run, fresh_dir, first_line, shell_count
     use status, only: STATUS_TABLE, exit_status_of, status_meaning, STATUS_OK, ERR_DECK, &
         ERR_NUMERIC, ERR_MODEL, ERR_IO, LSODA_ERR_MAX_STEPS, RADAU_ERR_SINGULAR, GEN_ERR_CHART
+    use text, only: next_word
+    use unused_arg, only: unused
+    use analysis_groups, only: ANALYSES_ALLOWED
+    use analysis_base, only: analysis_slot_t, WORD_LEN
+    use driver, only: analysis_registry
     implicit none
     private
 
@@ -20,14 +28,19 @@ contains
     subroutine run_graph_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
-        associate (unused => exe)
-        end associate
+        call unused(exe)
         if (t%want('graph: the sources keep the layers, no analysis uses another, 8 floors')) &
             call test_sources(t)
         if (t%want('graph: the check finds a use of a higher folder, an analysis using '// &
                    'another, too many floors')) call test_breaks(t)
         if (t%want('graph: the check finds the deck used below analyses/ and app/')) &
             call test_deck_users(t)
+        if (t%want('graph: every analysis may use the shared base, the base uses none')) &
+            call test_shared_base(t)
+        if (t%want('graph: the registry holds every word of &scene analyses once, no file '// &
+                   'or sweep in two analyses')) call test_registry(t)
+        if (t%want('graph: module state only where src/README.md says, one idiom for an '// &
+                   'unused argument')) call test_state_and_idiom(t)
         if (t%want('graph: the status table, one row per code')) call test_status(t)
         if (t%want('graph: no source, test or manual page speaks of issues or commits')) &
             call test_no_history(t)
@@ -135,6 +148,116 @@ contains
         ex = run(SCRIPT//' --check '//s, d)
         call t%check('graph deck: without that use the check passes', ex == 0)
     end subroutine test_deck_users
+
+    !> A tree of analyses/ with the shared base: the analyses that use it pass; the base that
+    !! uses an analysis is named.
+    subroutine test_shared_base(t)
+        type(tester_t), intent(inout) :: t
+        character(len=:), allocatable :: d, s
+        integer :: ex
+        d = 'build/test_graph/shared_base'
+        call fresh_dir(d)
+        s = d//'/src'
+        call execute_command_line('mkdir -p '//s//'/analyses')
+        call write_text(s//'/analyses/analysis_base.f90', 'module analysis_base'//NL()// &
+                        'end module analysis_base'//NL())
+        call write_text(s//'/analyses/one.f90', 'module one'//NL()//'    use analysis_base'// &
+                        NL()//'end module one'//NL())
+        call write_text(s//'/analyses/two.f90', 'module two'//NL()//'    use analysis_base'// &
+                        NL()//'end module two'//NL())
+        ex = run(SCRIPT//' --check '//s, d)
+        call t%check('graph shared base: analyses that use analysis_base pass', ex == 0)
+        call write_text(s//'/analyses/analysis_base.f90', 'module analysis_base'//NL()// &
+                        '    use one'//NL()//'end module analysis_base'//NL())
+        call write_text(s//'/analyses/one.f90', 'module one'//NL()//'end module one'//NL())
+        ex = run(SCRIPT//' --check '//s, d)
+        call t%check('graph shared base: the base using an analysis is named', all([ex == 1, &
+                     file_has(d//'/stderr', 'analysis_base uses one: an analysis uses another '// &
+                     'analysis')]))
+    end subroutine test_shared_base
+
+    !> The registry against &scene analyses: each word of ANALYSES_ALLOWED has one analysis
+    !! and each analysis one word of it; each file extension and each sweep belongs to one
+    !! analysis; an analysis that runs first has a sweep (what puts it first).
+    subroutine test_registry(t)
+        type(tester_t), intent(inout) :: t
+        type(analysis_slot_t), allocatable :: reg(:)
+        character(len=WORD_LEN), allocatable :: words(:), exts(:), sweeps(:), w(:)
+        character(len=WORD_LEN) :: missing, stray, twice
+        integer :: k, j, i1, i2
+        logical :: first_ok
+        call analysis_registry(reg)
+        allocate (words(0), exts(0), sweeps(0))
+        first_ok = .true.
+        do k = 1, size(reg)
+            words = [character(len=WORD_LEN) :: words, reg(k)%a%word()]
+            call reg(k)%a%owned_extensions(w)
+            exts = [character(len=WORD_LEN) :: exts, w]
+            call reg(k)%a%sweeps(w)
+            sweeps = [character(len=WORD_LEN) :: sweeps, w]
+            if (reg(k)%a%runs_first() .and. size(w) == 0) first_ok = .false.
+        end do
+        ! every allowed word in the registry once
+        missing = ''
+        i2 = 0
+        do
+            call next_word(ANALYSES_ALLOWED, i2, i1)
+            if (i1 == 0) exit
+            if (count(words == ANALYSES_ALLOWED(i1:i2)) /= 1) missing = ANALYSES_ALLOWED(i1:i2)
+        end do
+        call t%check('registry: every word of ANALYSES_ALLOWED has one analysis (not: '// &
+                     trim(missing)//')', missing == '')
+        stray = ''
+        do k = 1, size(words)
+            if (index(' '//ANALYSES_ALLOWED//' ', ' '//trim(words(k))//' ') == 0) &
+                stray = words(k)
+        end do
+        call t%check('registry: every analysis has a word of ANALYSES_ALLOWED (not: '// &
+                     trim(stray)//')', stray == '' .and. size(words) > 0)
+        twice = ''
+        do k = 1, size(exts)
+            if (count(exts == exts(k)) /= 1 .or. exts(k)(1:1) /= '.') twice = exts(k)
+        end do
+        call t%check('registry: each owned file extension .EXT belongs to one analysis '// &
+                     '(not: '//trim(twice)//')', twice == '' .and. size(exts) >= size(words))
+        twice = ''
+        do k = 1, size(sweeps)
+            if (count(sweeps == sweeps(k)) /= 1) twice = sweeps(k)
+            do j = 1, size(exts)
+                ! a checkpoint NAME.SWEEP.partial is no analysis's file
+                if (trim(exts(j)) == '.'//trim(sweeps(k))//'.partial') twice = sweeps(k)
+            end do
+        end do
+        call t%check('registry: each sweep belongs to one analysis (not: '//trim(twice)// &
+                     ')', twice == '')
+        call t%check('registry: an analysis that runs first has a sweep', first_ok)
+    end subroutine test_registry
+
+    !> `save` (module state, a saved local) only in the three places src/README.md names;
+    !! no unused argument silenced otherwise than by `call unused(x)` (no `if (.false.)`, no
+    !! `associate (unused => x)`) in src/ or tests/.
+    subroutine test_state_and_idiom(t)
+        type(tester_t), intent(inout) :: t
+        character(len=:), allocatable :: d
+        integer :: ex, n
+        d = 'build/test_graph/state'
+        call fresh_dir(d)
+        ! code lines (not comments) with the word save, outside the three places
+        ex = run('grep -rnIiE "^[^!]*\bsave\b" src --include=*.f90 | grep -v '// &
+                 '-e "^src/core/signals.f90:" -e "^src/parallel/sweep_engine.f90:" '// &
+                 '-e "^src/parallel/parallel_mpi.f90:"', d)
+        call t%check('state: save only in signals, sweep_engine, parallel_mpi (first other: '// &
+                     first_line(d//'/stdout')//')', ex == 1)
+        n = shell_count('grep -lIiE "^[^!]*\bsave\b" src/core/signals.f90 '// &
+                        'src/parallel/sweep_engine.f90 src/parallel/parallel_mpi.f90 | wc -l', d)
+        call t%check('state: the three places keep their state with save (the check sees it)', &
+                     n == 3)
+        ex = run('grep -rnIiE "^[^!]*(if *\(\.false\.\)|associate *\(unused)" src tests '// &
+                 '--include=*.f90', d)
+        call t%check('idiom: call unused(x) is the one idiom for an unused argument (first '// &
+                     'other: '// &
+                     first_line(d//'/stdout')//')', ex == 1)
+    end subroutine test_state_and_idiom
 
     subroutine test_status(t)
         type(tester_t), intent(inout) :: t

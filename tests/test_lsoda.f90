@@ -16,6 +16,7 @@ module test_lsoda
         LSODA_ERR_CONVERGENCE, LSODA_ERR_ILLEGAL_INPUT, LSODA_ERR_SINGULAR
     use testing, only: tester_t
     use lapack_wrap, only: la_small_inverse, la_lu_factor, la_lu_solve_many
+    use unused_arg, only: unused
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -164,6 +165,8 @@ contains
         real(dp), intent(out) :: ydot(:)
         type(status_t), intent(out) :: stat
         real(dp) :: a, b, c
+        call unused(sys)
+        call unused(t)
         a = RK1*y(1)
         b = RK3*y(2)*y(3)
         c = RK2*y(2)*y(2)
@@ -171,7 +174,6 @@ contains
         ydot(2) = a - b - c
         ydot(3) = c
         stat%code = STATUS_OK
-        if (.false.) ydot(1) = t + merge(1.0_dp, 0.0_dp, sys%use_jac)
     end subroutine rober_rhs
 
     subroutine rober_jac(sys, t, y, dfdy, stat)
@@ -180,11 +182,12 @@ contains
         real(dp), intent(in) :: y(:)
         real(dp), intent(out) :: dfdy(:, :)
         type(status_t), intent(out) :: stat
+        call unused(sys)
+        call unused(t)
         dfdy(1, :) = [-RK1, RK3*y(3), RK3*y(2)]
         dfdy(2, :) = [RK1, -RK3*y(3) - 2.0_dp*RK2*y(2), -RK3*y(2)]
         dfdy(3, :) = [0.0_dp, 2.0_dp*RK2*y(2), 0.0_dp]
         stat%code = STATUS_OK
-        if (.false.) dfdy(1, 1) = t + merge(1.0_dp, 0.0_dp, sys%use_jac)
     end subroutine rober_jac
 
     logical function rober_has_jac(sys)
@@ -198,10 +201,10 @@ contains
         real(dp), intent(in) :: y(:)
         real(dp), intent(out) :: ydot(:)
         type(status_t), intent(out) :: stat
+        call unused(t)
         ydot(1) = y(2)
         ydot(2) = sys%mu*(1.0_dp - y(1)*y(1))*y(2) - y(1)
         stat%code = STATUS_OK
-        if (.false.) ydot(1) = t
     end subroutine vdp_rhs
 
     subroutine arenstorf_rhs(sys, t, y, ydot, stat)
@@ -211,6 +214,8 @@ contains
         real(dp), intent(out) :: ydot(:)
         type(status_t), intent(out) :: stat
         real(dp) :: d1, d2
+        call unused(sys)
+        call unused(t)
         d1 = ((y(1) + AM)**2 + y(2)**2)**1.5_dp
         d2 = ((y(1) - AMP)**2 + y(2)**2)**1.5_dp
         ydot(1) = y(3)
@@ -218,7 +223,6 @@ contains
         ydot(3) = y(1) + 2.0_dp*y(4) - AMP*(y(1) + AM)/d1 - AM*(y(1) - AMP)/d2
         ydot(4) = y(2) - 2.0_dp*y(3) - AMP*y(2)/d1 - AM*y(2)/d2
         stat%code = STATUS_OK
-        if (.false.) ydot(1) = t + merge(1.0_dp, 0.0_dp, same_type_as(sys, sys))
     end subroutine arenstorf_rhs
 
     subroutine hires_rhs(sys, t, y, ydot, stat)
@@ -228,6 +232,8 @@ contains
         real(dp), intent(out) :: ydot(:)
         type(status_t), intent(out) :: stat
         real(dp) :: p
+        call unused(sys)
+        call unused(t)
         p = 280.0_dp*y(6)*y(8)
         ydot(1) = -1.71_dp*y(1) + 0.43_dp*y(2) + 8.32_dp*y(3) + 0.0007_dp
         ydot(2) = 1.71_dp*y(1) - 8.75_dp*y(2)
@@ -238,7 +244,6 @@ contains
         ydot(7) = p - 1.81_dp*y(7)
         ydot(8) = -p + 1.81_dp*y(7)
         stat%code = STATUS_OK
-        if (.false.) ydot(1) = t + merge(1.0_dp, 0.0_dp, same_type_as(sys, sys))
     end subroutine hires_rhs
 
     subroutine pendulum_rhs(sys, t, y, ydot, stat)
@@ -247,10 +252,11 @@ contains
         real(dp), intent(in) :: y(:)
         real(dp), intent(out) :: ydot(:)
         type(status_t), intent(out) :: stat
+        call unused(sys)
+        call unused(t)
         ydot(1) = y(2)
         ydot(2) = -sin(y(1))
         stat%code = STATUS_OK
-        if (.false.) ydot(1) = t + merge(1.0_dp, 0.0_dp, same_type_as(sys, sys))
     end subroutine pendulum_rhs
 
     subroutine linear_rhs(sys, t, y, ydot, stat)
@@ -259,11 +265,12 @@ contains
         real(dp), intent(in) :: y(:)
         real(dp), intent(out) :: ydot(:)
         type(status_t), intent(out) :: stat
+        call unused(sys)
+        call unused(t)
         ydot(1) = LIN_A(1, 1)*y(1) + LIN_A(1, 2)*y(2) + LIN_A(1, 3)*y(3)
         ydot(2) = LIN_A(2, 1)*y(1) + LIN_A(2, 2)*y(2) + LIN_A(2, 3)*y(3)
         ydot(3) = LIN_A(3, 1)*y(1) + LIN_A(3, 2)*y(2) + LIN_A(3, 3)*y(3)
         stat%code = STATUS_OK
-        if (.false.) ydot(1) = t + merge(1.0_dp, 0.0_dp, sys%use_jac)
     end subroutine linear_rhs
 
     subroutine linear_jac(sys, t, y, dfdy, stat)
@@ -272,9 +279,11 @@ contains
         real(dp), intent(in) :: y(:)
         real(dp), intent(out) :: dfdy(:, :)
         type(status_t), intent(out) :: stat
+        call unused(sys)
+        call unused(t)
+        call unused(y)
         dfdy = LIN_A
         stat%code = STATUS_OK
-        if (.false.) dfdy(1, 1) = t + y(1) + merge(1.0_dp, 0.0_dp, sys%use_jac)
     end subroutine linear_jac
 
     logical function linear_has_jac(sys)
@@ -288,10 +297,10 @@ contains
         real(dp), intent(in) :: y(:)
         real(dp), intent(out) :: ydot(:)
         type(status_t), intent(out) :: stat
+        call unused(t)
         ydot(1) = sys%omega*y(2)
         ydot(2) = -sys%omega*y(1)
         stat%code = STATUS_OK
-        if (.false.) ydot(1) = t
     end subroutine harmonic_rhs
 
     subroutine decay_rhs(sys, t, y, ydot, stat)
@@ -300,9 +309,9 @@ contains
         real(dp), intent(in) :: y(:)
         real(dp), intent(out) :: ydot(:)
         type(status_t), intent(out) :: stat
+        call unused(t)
         ydot = -sys%k*y
         stat%code = STATUS_OK
-        if (.false.) ydot(1) = t
     end subroutine decay_rhs
 
     subroutine jump_rhs(sys, t, y, ydot, stat)
@@ -339,9 +348,9 @@ contains
         real(dp), intent(in) :: y(:)
         real(dp), intent(out) :: ydot(:)
         type(status_t), intent(out) :: stat
+        call unused(sys)
         ydot = -1.0e4_dp*(y - cos(t))
         stat%code = STATUS_OK
-        if (.false.) ydot(1) = sys%t_bad
     end subroutine singular_rhs
 
     subroutine singular_jac(sys, t, y, dfdy, stat)
@@ -350,6 +359,7 @@ contains
         real(dp), intent(in) :: y(:)
         real(dp), intent(out) :: dfdy(:, :)
         type(status_t), intent(out) :: stat
+        call unused(y)
         if (t <= sys%t_bad) then
             dfdy = 0.0_dp
             dfdy(1, 1) = -1.0e4_dp
@@ -359,13 +369,12 @@ contains
             dfdy = 1.0e200_dp
         end if
         stat%code = STATUS_OK
-        if (.false.) dfdy(1, 1) = y(1)
     end subroutine singular_jac
 
     logical function singular_has_jac(sys)
         class(singular_t), intent(in) :: sys
+        call unused(sys)
         singular_has_jac = .true.
-        if (.false.) singular_has_jac = sys%t_bad > 0.0_dp
     end function singular_has_jac
 
     subroutine failing_rhs(sys, t, y, ydot, stat)
@@ -528,8 +537,7 @@ contains
     subroutine run_lsoda_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe     !! path of the bifilar executable
-        associate (unused => exe)   ! every suite is given the executable; this one needs none
-        end associate
+        call unused(exe)   ! every suite is given the executable; this one needs none
         if (t%want('lsoda_exact')) call test_exact(t)
         if (t%want('lsoda_problems')) call test_problems(t)
         if (t%want('lsoda_tolerance')) call test_tolerance(t)

@@ -13,6 +13,7 @@ module test_period
     use period_inversion, only: input_u_t, period_fit_t, torsion_period_s, invert_periods, &
                                 period_budget, period_monte_carlo, period_mc_sample, &
                                 linear_inertia
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -23,8 +24,7 @@ contains
     subroutine run_period_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe     !! path of the bifilar executable
-        associate (unused => exe)   ! every suite is given the executable; this one needs none
-        end associate
+        call unused(exe)   ! every suite is given the executable; this one needs none
         if (t%want('random: published sequences, moments, streams')) call test_random(t)
         if (t%want('period inversion: I1 back from the exact periods')) call test_exact(t)
         if (t%want('period inversion: the classical formula at small amplitude')) &

@@ -33,6 +33,7 @@ module test_platform
     use lapack_wrap, only: la_solve
     use platform_reference, only: ref_body_t, ref_rotation, ref_constraints, ref_energy, &
                                   ref_tensions, ref_quat_of_yaw_tilt, REF_NSTATE
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -53,8 +54,7 @@ contains
     subroutine run_platform_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe     !! path of the bifilar executable
-        associate (unused => exe)   ! every suite is given the executable; this one needs none
-        end associate
+        call unused(exe)
         if (t%want('platform: kinematics against finite differences, Kane against '// &
                    'Newton-Euler')) call test_kinematics(t)
         if (t%want('platform: two cables against the paper''s model')) call test_bifilar(t)
@@ -177,7 +177,8 @@ contains
         stat%code = 0
         if (.not. allocated(sink%y)) allocate (sink%y(size(y), 0:1000))
         if (k <= ubound(sink%y, 2)) sink%y(:, k) = y
-        if (.false.) sink%done = same_type_as(m, m) .and. t > 0.0_dp
+        call unused(m)
+        call unused(t)
     end subroutine keep_take
 
     !> The angles' rates (psi', theta', phi') of angular velocity w at pose q.
@@ -213,7 +214,7 @@ contains
         yr(4:6) = mo%vc
         yr(7:10) = quat_of(r)
         yr(11:13) = matmul(transpose(r), mo%omega)
-        if (.false.) yr(1) = pl%mass
+        call unused(pl)
     end function to_reference
 
     !> The unit quaternion of a rotation matrix (Shepperd's choice of the largest term).

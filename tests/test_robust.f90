@@ -153,6 +153,13 @@ contains
         ex = run(exe//' '//d//'/robust_out_empty_test.nml --out '//d//'/a_file', d)
         call t%check('--out: a file in the way is exit 5 with one stderr line', all([ex == 5, &
                      count_lines(d//'/stderr') == 1, file_has(d//'/stderr', 'output folder')]))
+        call t%check('--out: the line names the deck and why (a regular file, not a folder)', &
+                     all([file_has(d//'/stderr', 'robust_out_empty_test.nml: --out'), &
+                     file_has(d//'/stderr', 'a_file is a regular file, not a folder')]))
+        ex = run(exe//' '//d//'/robust_out_empty_test.nml --out '//d//'/a_file/sub', d)
+        call t%check('--out: a file on the way to the folder is named', all([ex == 5, &
+                     count_lines(d//'/stderr') == 1, &
+                     file_has(d//'/stderr', 'a_file is a regular file, not a folder')]))
     end subroutine test_out
 
     ! ---------------------------------------------------------------------------------------
@@ -532,7 +539,7 @@ contains
         ex = run(exe//' '//d//'/chart.nml --out '//o, d)
         call t%check('progress: stderr a file: exit 0, nothing on stderr', all([ex == 0, &
                      count_lines(d//'/stderr') == 0]))
-        call execute_command_line('command -v script > /dev/null', exitstat=ex)
+        call execute_command_line('command -v script > /dev/null || exit 1', exitstat=ex)
         if (ex /= 0) then
             write (*, '(a)') '   progress on a terminal: skipped (script(1) not installed)'
             return

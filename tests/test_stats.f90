@@ -7,6 +7,7 @@ module test_stats
     use testing, only: tester_t
     use stats, only: t_cdf, t_quantile, coverage_factor, normal_quantile, chi2_sf, &
         welch_satterthwaite, incomplete_beta, weighted_mean, NU_INFINITE
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -18,8 +19,7 @@ contains
     subroutine run_stats_tests(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
-        associate (unused => exe)
-        end associate
+        call unused(exe)
         if (t%want('stats: Student''s t and the normal quantiles against tables')) &
             call test_quantiles(t)
         if (t%want('stats: chi-square tails, incomplete beta, Welch-Satterthwaite, '// &

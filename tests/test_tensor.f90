@@ -841,7 +841,7 @@ contains
         ! MPI (when OpenMPI and bin/bifilar_mpi are there): 2 ranks, and 2 ranks of which
         ! rank 0 only hands out work (every sample from the task rank 1 built from the deck
         ! and the payload)
-        call execute_command_line('command -v mpirun > /dev/null', exitstat=ex)
+        call execute_command_line('command -v mpirun > /dev/null || exit 1', exitstat=ex)
         l1 = exists(exe//'_mpi')
         if (ex /= 0 .or. .not. l1) then
             write (*, '(a)') 'note: no mpirun or '//exe//'_mpi: the MPI runs of tensor''s '// &

@@ -46,6 +46,10 @@
 !! edges' sweep also from its payload, the list of edges).
 !!
 !! Output: OUTDIR/NAME.design (keys, the candidate table, the stable and unstable bands).
+!!
+!! The analysis for the driver: design_analysis_t (module analysis_base); it needs an
+!! undamped torsion (deck_runs's undamped_ready) and runs before the analyses without a
+!! sweep of their own (runs_first).
 module design
     use kinds, only: dp
     use status, only: status_t
@@ -55,6 +59,7 @@ module design
     use budget, only: input_u_t
     use output_io, only: out_files_t
     use sweep_engine, only: sweep_task_t, sweep_options_t, sweep_report_t
+    use analysis_base, only: analysis_t, WORD_LEN
     implicit none
     private
 
@@ -117,6 +122,23 @@ module design
         real(dp) :: fq_rtol = 1.0e-10_dp
         integer :: fq_segments = 1
     end type design_rig_t
+
+    !> Analysis `design` (module analysis_base): OUTDIR/NAME.design from the three sweeps
+    !! DESIGN_STAGES (checkpoints OUTDIR/NAME.STAGE.partial), run before the others; its part
+    !! of the summary line: the candidates, the stable ones, the recommendation, the time.
+    type, extends(analysis_t), public :: design_analysis_t
+        type(design_result_t) :: res            !! what the design computed
+        type(sweep_report_t) :: rep             !! how its sweeps went
+    contains
+        procedure, nopass :: word => design_word
+        procedure, nopass :: owned_extensions => design_owned
+        procedure, nopass :: sweeps => design_sweeps
+        procedure, nopass :: runs_first => design_first
+        procedure :: ready => design_analysis_ready
+        procedure :: run => design_analysis_run
+        procedure :: summary => design_summary
+        procedure :: sweep_task => design_sweep_task
+    end type design_analysis_t
 
     public :: run_design, design_ready, design_grid, design_sweep, candidate_modulus
     public :: candidate_precision, candidate_rig, design_task, design_rig_of
@@ -219,6 +241,67 @@ module design
             type(deck_t), intent(in) :: d           !! the deck
             type(design_rig_t) :: dr
         end function design_rig_of
+
+        !> The preconditions of design: design_ready, and no &damping (undamped_ready).
+        module subroutine design_analysis_ready(self, d, stat)
+            class(design_analysis_t), intent(inout) :: self
+            type(deck_t), intent(in) :: d           !! the deck
+            type(status_t), intent(out) :: stat     !! ERR_DECK
+        end subroutine design_analysis_ready
+
+        !> The run (run_design into the run's files; its sweeps' warning kept).
+        module subroutine design_analysis_run(self, d, outdir, files, stat, options)
+            class(design_analysis_t), intent(inout) :: self
+            type(deck_t), intent(in) :: d           !! the deck
+            character(len=*), intent(in) :: outdir  !! output directory
+            type(out_files_t), intent(inout) :: files   !! the run's files
+            type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_MODEL (no candidate), ERR_IO
+            type(sweep_options_t), intent(in), optional :: options  !! --resume, the interval
+        end subroutine design_analysis_run
+
+        !> ' design N candidates x N amplitudes, N stable, recommended l = ..., b = ...,
+        !! b_prime = ..., u(I1)/I1 = ..., T s[ on N ranks][, N failed points][resume];'
+        module function design_summary(self, d) result(s)
+            class(design_analysis_t), intent(in) :: self
+            type(deck_t), intent(in) :: d           !! the deck
+            character(len=:), allocatable :: s
+        end function design_summary
+
+        !> The task of one of its sweeps on the other ranks of an MPI run (design_task).
+        module subroutine design_sweep_task(self, sweep, d, payload, task, stat)
+            class(design_analysis_t), intent(in) :: self
+            character(len=*), intent(in) :: sweep   !! one of DESIGN_STAGES
+            type(deck_t), intent(in) :: d           !! the deck
+            real(dp), intent(in) :: payload(:)      !! the sweep's payload (the edges')
+            class(sweep_task_t), allocatable, intent(out) :: task
+            type(status_t), intent(out) :: stat     !! ERR_DECK: no such stage
+        end subroutine design_sweep_task
     end interface
+
+contains
+
+    !> The word of &scene analyses.
+    function design_word() result(w)
+        character(len=:), allocatable :: w
+        w = 'design'
+    end function design_word
+
+    !> The file it writes: NAME.design.
+    subroutine design_owned(names)
+        character(len=WORD_LEN), allocatable, intent(out) :: names(:)
+        names = [character(len=WORD_LEN) :: '.design']
+    end subroutine design_owned
+
+    !> Its sweeps: DESIGN_STAGES.
+    subroutine design_sweeps(names)
+        character(len=WORD_LEN), allocatable, intent(out) :: names(:)
+        names = [character(len=WORD_LEN) :: DESIGN_STAGES]
+    end subroutine design_sweeps
+
+    !> The design runs before the analyses without it (no file of the deck staged meanwhile,
+    !! but a chart's).
+    logical function design_first()
+        design_first = .true.
+    end function design_first
 
 end module design

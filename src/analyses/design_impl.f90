@@ -8,7 +8,7 @@ submodule (design) design_impl
     use deck, only: deck_t, deck_echo
     use geometry, only: pendulum_t
     use rig, only: rig_t, accuracy_t, make_pendulum, move_b_prime
-    use deck_runs, only: rig_of, accuracy_of
+    use deck_runs, only: rig_of, accuracy_of, undamped_ready
     use floquet, only: check_torsion_scene, STABILITY_MARGIN, floquet_point, CHART_INVALID, &
                        CHART_FAILED, point_values_valid
     use sweep_engine, only: sweep_task_t, sweep_run, sweep_options_t, sweep_report_t, &
@@ -16,6 +16,8 @@ submodule (design) design_impl
     use period_inversion, only: period_fit_t, torsion_period_s, invert_periods, &
                                 period_budget, linear_inertia
     use output_io, only: out_files_t, write_kv, remove_file
+    use unused_arg, only: unused
+    use analysis_base, only: ranks_note, resume_note
     implicit none
 
     !> Sweep 1: Floquet point k = (amplitude j, l i, b m), amplitude fastest; value: the
@@ -869,5 +871,41 @@ contains
         s = fixed(x, nd)
         if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
     end function short_number
+
+    !> The preconditions of design: design_ready, and no &damping (undamped_ready).
+    module procedure design_analysis_ready
+        call unused(self)
+        call design_ready(d, stat)
+        if (stat%code == STATUS_OK) call undamped_ready(d, stat)
+    end procedure design_analysis_ready
+
+    !> The run (run_design into the run's files; its sweeps' warning kept).
+    module procedure design_analysis_run
+        call run_design(d, outdir, self%res, stat, files=files, options=options, &
+                        report=self%rep)
+        call self%add_report_warning(self%rep)
+    end procedure design_analysis_run
+
+    !> ' design N candidates x N amplitudes, N stable, recommended l = ..., b = ...,
+    !! b_prime = ..., u(I1)/I1 = ..., T s[ on N ranks][, N failed points][resume];'
+    module procedure design_summary
+        call unused(d)
+        associate (dr => self%res)
+            s = ' design '//itoa(size(dr%ls)*size(dr%bs))//' candidates x '// &
+                itoa(size(dr%amps))//' amplitudes, '//itoa(dr%n_stable)//' stable, '// &
+                'recommended l = '//sci(dr%ls(dr%il), 4)//', b = '//sci(dr%bs(dr%ib), 4)// &
+                ', b_prime = '//sci(dr%bps(dr%ib), 4)// &
+                ', u(I1)/I1 = '//sci(dr%u_rel(dr%il, dr%ib), 2)//', '// &
+                fixed(dr%wall_seconds, 2)//' s'//ranks_note(self%rep)
+            if (dr%n_failed > 0) s = s//', '//itoa(dr%n_failed)//' failed points'
+        end associate
+        s = s//resume_note(self%rep)//';'
+    end procedure design_summary
+
+    !> The task of one of its sweeps on the other ranks of an MPI run (design_task).
+    module procedure design_sweep_task
+        call unused(self)
+        call design_task(sweep, d, payload, task, stat)
+    end procedure design_sweep_task
 
 end submodule design_impl

@@ -49,6 +49,9 @@
 !!
 !! Files: OUTDIR/NAME.identify (key = value lines, then the budget table of I1); with a
 !! record also OUTDIR/NAME.fit.dat (t, measured, model, residual).  No routine stops.
+!!
+!! The analysis for the driver: identify_analysis_t (module analysis_base), which keeps
+!! what its preconditions read (identify_input_t) for its run.
 module identify
     use kinds, only: dp
     use status, only: status_t
@@ -59,8 +62,12 @@ module identify
     use records, only: record_t
     use trials, only: trial_set_t
     use sweep_engine, only: sweep_task_t, sweep_options_t, sweep_report_t
+    use monte_carlo, only: MC_ANALYSIS
+    use analysis_base, only: analysis_t, warning_t, WORD_LEN
     implicit none
     private
+
+    public :: warning_t                         ! (of module analysis_base)
 
     !> What identify_ready read, kept for the run (a record read twice could be
     !! replaced in between, a logger still writing, and its second reading went unchecked):
@@ -72,11 +79,6 @@ module identify
         type(record_t), allocatable :: recs(:)  !! each release's record (records only)
         integer(int64), allocatable :: crc(:)   !! each record file's CRC-64 (CRC-64/XZ)
     end type identify_input_t
-
-    !> One line of warning (stderr, exit 0).
-    type, public :: warning_t
-        character(len=:), allocatable :: s
-    end type warning_t
 
     !> What identify found (deck units; the record's units for residuals).
     type, public :: identify_result_t
@@ -125,6 +127,25 @@ module identify
         real(dp) :: cpu_seconds = 0.0_dp
     end type identify_result_t
 
+    !> Analysis `identify` (module analysis_base): OUTDIR/NAME.identify with NAME.fit.dat (a
+    !! record) or NAME.periods.dat (periods); its Monte Carlo the sweep MC_ANALYSIS
+    !! (checkpoint OUTDIR/NAME.identify_mc.partial); its part of the summary line: I1 with
+    !! its expanded uncertainty, the other parameters, the releases, the period model, the
+    !! Monte Carlo, the linear formula, the iterations.
+    type, extends(analysis_t), public :: identify_analysis_t
+        type(identify_input_t) :: input         !! what its preconditions read
+        type(identify_result_t) :: res          !! what it found
+        type(sweep_report_t) :: rep             !! how its Monte Carlo's sweep went
+    contains
+        procedure, nopass :: word => identify_word
+        procedure, nopass :: owned_extensions => identify_owned
+        procedure, nopass :: sweeps => identify_sweeps
+        procedure :: ready => identify_analysis_ready
+        procedure :: run => identify_analysis_run
+        procedure :: summary => identify_summary
+        procedure :: sweep_task => identify_sweep_task
+    end type identify_analysis_t
+
     public :: identify_ready, run_identify, identify_record, identify_mc_task
 
     interface
@@ -171,6 +192,61 @@ module identify
             class(sweep_task_t), allocatable, intent(out) :: task
             type(status_t), intent(out) :: stat     !! ERR_DECK
         end subroutine identify_mc_task
+
+        !> The preconditions (identify_ready), what they read kept for the run.
+        module subroutine identify_analysis_ready(self, d, stat)
+            class(identify_analysis_t), intent(inout) :: self
+            type(deck_t), intent(in) :: d           !! the deck
+            type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_MODEL
+        end subroutine identify_analysis_ready
+
+        !> The run (run_identify into the run's files, from what ready read); the Monte
+        !! Carlo's warning and the result's warnings kept.
+        module subroutine identify_analysis_run(self, d, outdir, files, stat, options)
+            class(identify_analysis_t), intent(inout) :: self
+            type(deck_t), intent(in) :: d           !! the deck (ready passed)
+            character(len=*), intent(in) :: outdir  !! output directory
+            type(out_files_t), intent(inout) :: files   !! the run's files
+            type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_IO
+            type(sweep_options_t), intent(in), optional :: options  !! --resume, the interval
+        end subroutine identify_analysis_run
+
+        !> ' identify I1 = ... ± U (k = K, 95 %)..., N iterations;'
+        module function identify_summary(self, d) result(s)
+            class(identify_analysis_t), intent(in) :: self
+            type(deck_t), intent(in) :: d           !! the deck (&measurement monte_carlo)
+            character(len=:), allocatable :: s
+        end function identify_summary
+
+        !> The task of its Monte Carlo on the other ranks of an MPI run (identify_mc_task).
+        module subroutine identify_sweep_task(self, sweep, d, payload, task, stat)
+            class(identify_analysis_t), intent(in) :: self
+            character(len=*), intent(in) :: sweep   !! MC_ANALYSIS
+            type(deck_t), intent(in) :: d           !! the deck
+            real(dp), intent(in) :: payload(:)      !! the sweep's payload
+            class(sweep_task_t), allocatable, intent(out) :: task
+            type(status_t), intent(out) :: stat     !! ERR_DECK
+        end subroutine identify_sweep_task
     end interface
+
+contains
+
+    !> The word of &scene analyses.
+    function identify_word() result(w)
+        character(len=:), allocatable :: w
+        w = 'identify'
+    end function identify_word
+
+    !> The files it writes: NAME.identify, NAME.fit.dat, NAME.periods.dat.
+    subroutine identify_owned(names)
+        character(len=WORD_LEN), allocatable, intent(out) :: names(:)
+        names = [character(len=WORD_LEN) :: '.identify', '.fit.dat', '.periods.dat']
+    end subroutine identify_owned
+
+    !> Its sweep: the Monte Carlo (MC_ANALYSIS).
+    subroutine identify_sweeps(names)
+        character(len=WORD_LEN), allocatable, intent(out) :: names(:)
+        names = [character(len=WORD_LEN) :: MC_ANALYSIS]
+    end subroutine identify_sweeps
 
 end module identify

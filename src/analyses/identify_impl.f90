@@ -18,7 +18,7 @@ submodule (identify) identify_impl
         LOSS_SQUARES, LOSS_HUBER
     use budget, only: input_u_t, ROW_INPUT, ROW_TIMING, ROW_AMPLITUDE, ROW_FIT, ROW_RELEASE, &
         ROW_TARE, ROW_ADDED
-    use records, only: read_record_file, clean_mean_period, u_column_warning
+    use records, only: read_record_file, clean_mean_period, u_column_warning, chosen_axis_note
     use progress, only: say_note
     use trials, only: trial_set_t, trial_t, RIG_COLUMNS
     use inputs, only: input_t, set_input
@@ -36,6 +36,8 @@ submodule (identify) identify_impl
     use work_estimate, only: check_timings, check_record_times, periods_runs, record_runs, &
         work_note, reference_periods, record_swing_period, check_fitted_amplitude, &
         CAUSES_HIGH, CAUSES_LOW, TRIANGLE_MARGIN, LINEAR_GAP_MAX
+    use unused_arg, only: unused
+    use analysis_base, only: ranks_note, resume_note
     implicit none
 
     !> One release analysed alone.
@@ -1386,5 +1388,66 @@ contains
                        a1%b_prime == a2%b_prime .and. a1%mass == a2%mass
         end function same_rig
     end subroutine write_periods
+
+    ! ------------------------------------------------------------ the analysis for the driver
+
+    !> The preconditions (identify_ready), what they read kept for the run.
+    module procedure identify_analysis_ready
+        call identify_ready(d, stat, self%input)
+    end procedure identify_analysis_ready
+
+    !> The run (run_identify into the run's files, from what ready read); the Monte Carlo's
+    !! warning and the result's warnings kept.
+    module procedure identify_analysis_run
+        integer :: k
+        call run_identify(d, outdir, self%res, stat, files, options, self%rep, self%input)
+        call self%add_report_warning(self%rep)
+        if (stat%code /= 0) return
+        do k = 1, size(self%res%warnings)
+            call self%add_warning(self%res%warnings(k)%s)
+        end do
+    end procedure identify_analysis_run
+
+    !> ' identify I1 = ... ± U (k = K, 95 %)..., N iterations;'
+    module procedure identify_summary
+        integer :: k
+        associate (idr => self%res, rep => self%rep)
+            if (idr%uncertainty_given) then
+                s = ' identify I1 = '//sci(idr%i1, 5)//' ± '// &
+                    sci(idr%u_i1_expanded, 2)//' (k = '//fixed(idr%k, 1)//', 95 %)'
+            else
+                s = ' identify I1 = '//sci(idr%i1, 5)//' (no uncertainty '// &
+                    'given: every u_* of &measurement is 0)'
+            end if
+            do k = 2, idr%np
+                if (idr%names(k) == 'c_v' .or. idr%names(k) == 'c_q') s = s// &
+                    ', '//trim(idr%names(k))//' = '//sci(idr%p(k), 3)//' ± '// &
+                    sci(idr%k*idr%u_p(k), 2)
+            end do
+            if (idr%n_trials > 1) s = s//', '//itoa(idr%n_trials)//' releases '// &
+                trim(idr%consistency)
+            s = s//', period model '//trim(idr%period_model)//chosen_axis_note(self%input%recs)
+            if (idr%u_i1_mc >= 0.0_dp) then
+                s = s//' (Monte Carlo u '//sci(idr%u_i1_mc, 2)//' from '// &
+                    itoa(d%measurement%monte_carlo)//' samples, '// &
+                    fixed(rep%wall_seconds, 2)//' s'//ranks_note(rep)//resume_note(rep)//')'
+            end if
+            if (idr%i1_linear > 0.0_dp) then
+                s = s//', linear formula '//sci(idr%i1_linear, 5)//' ('// &
+                    trim(merge('+', ' ', idr%linear_error >= 0.0_dp))// &
+                    fixed(100.0_dp*idr%linear_error, 2)//' %)'
+            else
+                s = s//', no period in the record for the linear formula'
+            end if
+            s = s//', '//itoa(idr%iterations)//' iterations;'
+        end associate
+    end procedure identify_summary
+
+    !> The task of its Monte Carlo on the other ranks of an MPI run (identify_mc_task).
+    module procedure identify_sweep_task
+        call unused(self)
+        call unused(sweep)
+        call identify_mc_task(d, payload, task, stat)
+    end procedure identify_sweep_task
 
 end submodule identify_impl

@@ -7,11 +7,16 @@
 !! run_loop): kane_run_t (module kane_run) and elastic_run_t (module elastic_solver) step
 !! them and check them at every step's end; kane_dat_sink_t and elastic_dat_sink_t here
 !! write the rows.
+!!
+!! The analysis for the driver: simulate_analysis_t (module analysis_base); its
+!! preconditions are deck_runs's scene_ready.
 module simulate
     use kinds, only: dp
     use status, only: status_t
     use deck, only: deck_t
     use output_io, only: out_files_t
+    use sweep_engine, only: sweep_options_t
+    use analysis_base, only: analysis_t, WORD_LEN
     implicit none
     private
 
@@ -42,7 +47,19 @@ module simulate
         character(len=8) :: method = ''         !! the integrator used: 'lsoda' or 'radau'
     end type run_summary_t
 
-    public :: run_simulation, simulation_ready
+    !> Analysis `simulate` (module analysis_base): OUTDIR/NAME.dat, NAME.summary (and
+    !! NAME.slack, elastic cables); its part of the summary line from the run's figures.
+    type, extends(analysis_t), public :: simulate_analysis_t
+        type(run_summary_t) :: sm               !! the run's figures
+    contains
+        procedure, nopass :: word => simulate_word
+        procedure, nopass :: owned_extensions => simulate_owned
+        procedure :: ready => simulate_ready
+        procedure :: run => simulate_run
+        procedure :: summary => simulate_summary
+    end type simulate_analysis_t
+
+    public :: run_simulation
 
     interface
         !> Run the simulation of a deck and write OUTDIR/NAME.dat and OUTDIR/NAME.summary.
@@ -57,13 +74,43 @@ module simulate
             type(out_files_t), intent(inout), optional, target :: files  !! the run's files
         end subroutine run_simulation
 
-        !> The preconditions of analyses = 'simulate' and 'work_precision', checked before any
-        !! computing: the cables reach (make_pendulum), the start exists (start_state) and, for
-        !! model = 'elastic', no &damping and the elastic start.
-        module subroutine simulation_ready(d, stat)
+        !> The preconditions (deck_runs's scene_ready).
+        module subroutine simulate_ready(self, d, stat)
+            class(simulate_analysis_t), intent(inout) :: self
             type(deck_t), intent(in) :: d           !! the deck
             type(status_t), intent(out) :: stat     !! ERR_DECK, or the start's failure
-        end subroutine simulation_ready
+        end subroutine simulate_ready
+
+        !> The run (run_simulation into the run's files).
+        module subroutine simulate_run(self, d, outdir, files, stat, options)
+            class(simulate_analysis_t), intent(inout) :: self
+            type(deck_t), intent(in) :: d           !! the deck
+            character(len=*), intent(in) :: outdir  !! output directory
+            type(out_files_t), intent(inout) :: files   !! the run's files
+            type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_MODEL or ERR_IO
+            type(sweep_options_t), intent(in), optional :: options  !! (no sweep)
+        end subroutine simulate_run
+
+        !> ' simulate cpu T s, steps N, rhs N, max |dE| E, max |residual| R;'
+        module function simulate_summary(self, d) result(s)
+            class(simulate_analysis_t), intent(in) :: self
+            type(deck_t), intent(in) :: d           !! the deck
+            character(len=:), allocatable :: s
+        end function simulate_summary
     end interface
+
+contains
+
+    !> The word of &scene analyses.
+    function simulate_word() result(w)
+        character(len=:), allocatable :: w
+        w = 'simulate'
+    end function simulate_word
+
+    !> The files it writes: NAME.dat, NAME.summary, NAME.slack.
+    subroutine simulate_owned(names)
+        character(len=WORD_LEN), allocatable, intent(out) :: names(:)
+        names = [character(len=WORD_LEN) :: '.dat', '.summary', '.slack']
+    end subroutine simulate_owned
 
 end module simulate

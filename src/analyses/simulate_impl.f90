@@ -8,7 +8,7 @@ submodule (simulate) simulate_impl
     use ode_system, only: integrator_t, integrator_stats_t
     use integrators, only: new_integrator, SOLVER_RADAU
     use rig, only: rig_t, make_pendulum, start_state
-    use deck_runs, only: rig_of, start_of, method_of, output_times
+    use deck_runs, only: rig_of, start_of, method_of, output_times, scene_ready
     use kane_run, only: kane_run_t, kane_run_start, model_checks, tighter_rtol, &
                         angle_difference, sway_of
     use elastic_model, only: elastic_t, elastic_cables_t, elastic_start, elastic_evaluate, &
@@ -16,7 +16,8 @@ submodule (simulate) simulate_impl
     use elastic_solver, only: elastic_solver_t, elastic_run_t, slack_interval_t
     use deck, only: deck_t, deck_echo, OUTPUT_COLUMNS
     use output_io, only: out_files_t, write_kv, all_finite
-    use text, only: sci, fixed
+    use text, only: sci, fixed, itoa
+    use unused_arg, only: unused
     use fast_format, only: es_field, f_field
     use run_loop, only: stepped_model_t, row_sink_t, drive, check_row_budget
     use progress, only: pace_t
@@ -75,28 +76,26 @@ contains
 
 
 
-    !> The preconditions of analyses = 'simulate' and 'work_precision', checked before any
-    !! computing: the cables reach (make_pendulum), the start exists (start_state) and, for
-    !! model = 'elastic', no &damping and the elastic start.
-    module procedure simulation_ready
-        type(elastic_t) :: el
-        real(dp) :: yc(NSTATE), th0(5), y(ELASTIC_NSTATE)
-        call make_pendulum(rig_of(d), el%p, stat)
-        if (stat%code /= 0) return
-        call start_state(start_of(d), el%p, yc, th0, stat)
-        if (stat%code /= 0 .or. trim(d%scene%model) /= 'elastic') return
-        if (d%damping%c_v /= 0.0_dp .or. d%damping%c_q /= 0.0_dp) then
-            call set_error(stat, ERR_DECK, '&damping c_v = '//sci(d%damping%c_v)//', c_q = '// &
-                sci(d%damping%c_q)//': the damping about the vertical is a torque of the '// &
-                'paper''s model; allowed: c_v = c_q = 0 with model = ''elastic'' (its cables '// &
-                'have &cables damping), or model = ''kane''')
-            return
-        end if
-        el%stiffness = d%cables%stiffness
-        el%damping = d%cables%damping
-        call elastic_start(el, yc, y, stat)
-        if (stat%code /= 0) stat%msg = 'elastic start: '//stat%msg
-    end procedure simulation_ready
+    !> The preconditions (deck_runs's scene_ready).
+    module procedure simulate_ready
+        call unused(self)
+        call scene_ready(d, stat)
+    end procedure simulate_ready
+
+    !> The run (run_simulation into the run's files).
+    module procedure simulate_run
+        call unused(options)
+        call run_simulation(d, outdir, self%sm, stat, files=files)
+    end procedure simulate_run
+
+    !> ' simulate cpu T s, steps N, rhs N, max |dE| E, max |residual| R;'
+    module procedure simulate_summary
+        call unused(d)
+        s = ' simulate cpu '//fixed(self%sm%cpu_seconds, 4)//' s, steps '// &
+            itoa(self%sm%steps)//', rhs '//itoa(self%sm%rhs_evaluations)//', max |dE| '// &
+            sci(self%sm%max_abs_energy_error, 2)//', max |residual| '// &
+            sci(self%sm%max_abs_constraint_residual, 2)//';'
+    end procedure simulate_summary
 
     !> Run the simulation of a deck and write OUTDIR/NAME.dat and OUTDIR/NAME.summary.
     !! With `files` the files join the run's others there (the caller commits them all

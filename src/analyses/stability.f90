@@ -8,6 +8,10 @@
 !! to OUTDIR/NAME.chart.partial as they complete, with one line of progress on standard
 !! error when that is a terminal (module progress); floquet_point is the point shared with
 !! the rig design (module design).
+!!
+!! The analyses for the driver (module analysis_base): floquet_analysis_t and
+!! chart_analysis_t; both need an undamped torsion (deck_runs's undamped_ready), the chart
+!! runs before the analyses without a sweep of their own (runs_first).
 module stability
     use kinds, only: dp
     use status, only: status_t
@@ -16,6 +20,7 @@ module stability
     use floquet, only: floquet_result_t
     use output_io, only: out_files_t
     use sweep_engine, only: sweep_task_t, sweep_options_t, sweep_report_t
+    use analysis_base, only: analysis_t, WORD_LEN
     implicit none
     private
 
@@ -35,6 +40,38 @@ module stability
         procedure :: compute => chart_point
         procedure :: accepts => chart_accepts
     end type chart_task_t
+
+    !> Analysis `floquet` (module analysis_base): OUTDIR/NAME.floquet; its part of the
+    !! summary line: the period, the largest modulus, stable or not.
+    type, extends(analysis_t), public :: floquet_analysis_t
+        type(floquet_result_t) :: res           !! what the analysis found
+    contains
+        procedure, nopass :: word => floquet_word
+        procedure, nopass :: owned_extensions => floquet_owned
+        procedure :: ready => floquet_analysis_ready
+        procedure :: run => floquet_analysis_run
+        procedure :: summary => floquet_summary
+    end type floquet_analysis_t
+
+    !> Analysis `chart` (module analysis_base): OUTDIR/NAME.chart.dat from the sweep
+    !! 'chart' (checkpoint OUTDIR/NAME.chart.partial), run before the others; its part of
+    !! the summary line: the points, the stable ones, the time, the ranks, the failed points,
+    !! what --resume took.
+    type, extends(analysis_t), public :: chart_analysis_t
+        integer :: nstable = 0                  !! stable points
+        integer :: nfailed = 0                  !! points whose analysis failed
+        real(dp) :: wall_seconds = 0.0_dp       !! the sweep's time
+        type(sweep_report_t) :: rep             !! how the sweep went
+    contains
+        procedure, nopass :: word => chart_word
+        procedure, nopass :: owned_extensions => chart_owned
+        procedure, nopass :: sweeps => chart_sweeps
+        procedure, nopass :: runs_first => chart_first
+        procedure :: ready => chart_analysis_ready
+        procedure :: run => chart_analysis_run
+        procedure :: summary => chart_summary
+        procedure :: sweep_task => chart_sweep_task
+    end type chart_analysis_t
 
     public :: run_floquet, run_chart, set_chart_variable, floquet_ready, chart_task
 
@@ -109,6 +146,103 @@ module stability
             integer, intent(in) :: i                !! 1 .. nx*ny
             real(dp), intent(in) :: values(:)       !! max_modulus, period
         end function chart_accepts
+
+        !> The preconditions of floquet: floquet_ready, and no &damping (undamped_ready).
+        module subroutine floquet_analysis_ready(self, d, stat)
+            class(floquet_analysis_t), intent(inout) :: self
+            type(deck_t), intent(in) :: d           !! the deck
+            type(status_t), intent(out) :: stat     !! ERR_DECK
+        end subroutine floquet_analysis_ready
+
+        !> The run (run_floquet into the run's files).
+        module subroutine floquet_analysis_run(self, d, outdir, files, stat, options)
+            class(floquet_analysis_t), intent(inout) :: self
+            type(deck_t), intent(in) :: d           !! the deck
+            character(len=*), intent(in) :: outdir  !! output directory
+            type(out_files_t), intent(inout) :: files   !! the run's files
+            type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC
+            type(sweep_options_t), intent(in), optional :: options  !! (no sweep)
+        end subroutine floquet_analysis_run
+
+        !> ' floquet period P, max modulus M, stable yes|no;'
+        module function floquet_summary(self, d) result(s)
+            class(floquet_analysis_t), intent(in) :: self
+            type(deck_t), intent(in) :: d           !! the deck
+            character(len=:), allocatable :: s
+        end function floquet_summary
+
+        !> The preconditions of chart: the deck's own scene has a reachable geometry (each
+        !! point of the grid is checked when it is computed), and no &damping
+        !! (undamped_ready).
+        module subroutine chart_analysis_ready(self, d, stat)
+            class(chart_analysis_t), intent(inout) :: self
+            type(deck_t), intent(in) :: d           !! the deck
+            type(status_t), intent(out) :: stat     !! ERR_DECK
+        end subroutine chart_analysis_ready
+
+        !> The run (run_chart into the run's files).
+        module subroutine chart_analysis_run(self, d, outdir, files, stat, options)
+            class(chart_analysis_t), intent(inout) :: self
+            type(deck_t), intent(in) :: d           !! the deck
+            character(len=*), intent(in) :: outdir  !! output directory
+            type(out_files_t), intent(inout) :: files   !! the run's files
+            type(status_t), intent(out) :: stat
+            type(sweep_options_t), intent(in), optional :: options  !! --resume, the interval
+        end subroutine chart_analysis_run
+
+        !> ' chart N points, N stable, T s[ on N ranks][, N failed (-2 in the file)][resume];'
+        module function chart_summary(self, d) result(s)
+            class(chart_analysis_t), intent(in) :: self
+            type(deck_t), intent(in) :: d           !! the deck (&chart nx, ny)
+            character(len=:), allocatable :: s
+        end function chart_summary
+
+        !> The task of sweep 'chart' on the other ranks of an MPI run (chart_task).
+        module subroutine chart_sweep_task(self, sweep, d, payload, task, stat)
+            class(chart_analysis_t), intent(in) :: self
+            character(len=*), intent(in) :: sweep   !! 'chart'
+            type(deck_t), intent(in) :: d           !! the deck
+            real(dp), intent(in) :: payload(:)      !! the sweep's payload (none)
+            class(sweep_task_t), allocatable, intent(out) :: task
+            type(status_t), intent(out) :: stat     !! ERR_DECK when the scene cannot be made
+        end subroutine chart_sweep_task
     end interface
+
+contains
+
+    !> The word of &scene analyses.
+    function floquet_word() result(w)
+        character(len=:), allocatable :: w
+        w = 'floquet'
+    end function floquet_word
+
+    !> The file it writes: NAME.floquet.
+    subroutine floquet_owned(names)
+        character(len=WORD_LEN), allocatable, intent(out) :: names(:)
+        names = [character(len=WORD_LEN) :: '.floquet']
+    end subroutine floquet_owned
+
+    !> The word of &scene analyses.
+    function chart_word() result(w)
+        character(len=:), allocatable :: w
+        w = 'chart'
+    end function chart_word
+
+    !> The file it writes: NAME.chart.dat.
+    subroutine chart_owned(names)
+        character(len=WORD_LEN), allocatable, intent(out) :: names(:)
+        names = [character(len=WORD_LEN) :: '.chart.dat']
+    end subroutine chart_owned
+
+    !> Its sweep: 'chart' (checkpoint NAME.chart.partial).
+    subroutine chart_sweeps(names)
+        character(len=WORD_LEN), allocatable, intent(out) :: names(:)
+        names = [character(len=WORD_LEN) :: 'chart']
+    end subroutine chart_sweeps
+
+    !> The chart runs before the analyses without it (no file of the deck staged meanwhile).
+    logical function chart_first()
+        chart_first = .true.
+    end function chart_first
 
 end module stability

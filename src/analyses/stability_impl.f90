@@ -6,7 +6,7 @@ submodule (stability) stability_impl
     use geometry, only: pendulum_t
     use deck, only: deck_t, deck_echo
     use rig, only: make_pendulum
-    use deck_runs, only: rig_of, method_of
+    use deck_runs, only: rig_of, method_of, undamped_ready
     use integrators, only: sensitivities_for
     use floquet, only: floquet_result_t, floquet_analysis, check_torsion_scene, floquet_point, &
                        CHART_FAILED, point_values_valid, &
@@ -14,12 +14,72 @@ submodule (stability) stability_impl
     use output_io, only: out_files_t, write_kv
     use sweep_engine, only: sweep_task_t, sweep_run, sweep_options_t, sweep_report_t, &
         checkpoint_path
-    use text, only: itoa
+    use text, only: itoa, sci, fixed
+    use unused_arg, only: unused
+    use analysis_base, only: ranks_note, resume_note
     implicit none
 
-
-
 contains
+
+    !> The preconditions of floquet: floquet_ready, and no &damping (undamped_ready).
+    module procedure floquet_analysis_ready
+        call unused(self)
+        call floquet_ready(d, stat)
+        if (stat%code == 0) call undamped_ready(d, stat)
+    end procedure floquet_analysis_ready
+
+    !> The run (run_floquet into the run's files).
+    module procedure floquet_analysis_run
+        call unused(options)
+        call run_floquet(d, outdir, self%res, stat, files=files)
+    end procedure floquet_analysis_run
+
+    !> ' floquet period P, max modulus M, stable yes|no;'
+    module procedure floquet_summary
+        call unused(d)
+        s = ' floquet period '//fixed(self%res%period, 6)//', max modulus '// &
+            sci(self%res%max_modulus, 5)//', stable '// &
+            trim(merge('yes', 'no ', self%res%stable))//';'
+    end procedure floquet_summary
+
+    !> The preconditions of chart: the deck's own scene has a reachable geometry (each
+    !! point of the grid is checked when it is computed), and no &damping.
+    module procedure chart_analysis_ready
+        type(pendulum_t) :: p
+        call unused(self)
+        call make_pendulum(rig_of(d), p, stat)
+        if (stat%code /= 0) then
+            stat%msg = 'analyses = ''chart'': '//stat%msg
+            return
+        end if
+        call undamped_ready(d, stat)
+    end procedure chart_analysis_ready
+
+    !> The run (run_chart into the run's files; its sweep's warning kept).
+    module procedure chart_analysis_run
+        call run_chart(d, outdir, self%nstable, self%wall_seconds, stat, files=files, &
+                       nfailed=self%nfailed, options=options, report=self%rep)
+        call self%add_report_warning(self%rep)
+    end procedure chart_analysis_run
+
+    !> ' chart N points, N stable, T s[ on N ranks][, N failed (-2 in the file)][resume];'
+    module procedure chart_summary
+        s = ' chart '//itoa(d%chart%nx*d%chart%ny)//' points, '//itoa(self%nstable)// &
+            ' stable, '//fixed(self%wall_seconds, 2)//' s'//ranks_note(self%rep)
+        if (self%nfailed > 0) s = s//', '//itoa(self%nfailed)//' failed (-2 in the file)'
+        s = s//resume_note(self%rep)//';'
+    end procedure chart_summary
+
+    !> The task of sweep 'chart' on the other ranks of an MPI run (chart_task).
+    module procedure chart_sweep_task
+        type(chart_task_t), allocatable :: chart
+        call unused(self)
+        call unused(sweep)
+        call unused(payload)
+        allocate (chart)
+        call chart_task(d, chart, stat)
+        call move_alloc(chart, task)
+    end procedure chart_sweep_task
 
     !> The preconditions of analyses = 'floquet', checked before any computing: the cables
     !! can reach and pure torsion is an exact motion of the scene (ERR_DECK otherwise).

@@ -14,12 +14,16 @@
 !! Files: OUTDIR/NAME.tensor (key = value lines, then the budget), OUTDIR/NAME.tensor.dat
 !! (per hang the measured and the fitted vertical moment, for plots/tensor.gp), and with
 !! &tensor plan = N, OUTDIR/NAME.plan.csv (a table of hangs to copy).  No routine stops.
+!!
+!! The analysis for the driver: tensor_analysis_t (module analysis_base).
 module tensor
     use kinds, only: dp
     use status, only: status_t
     use deck, only: deck_t
     use output_io, only: out_files_t
     use sweep_engine, only: sweep_task_t, sweep_options_t, sweep_report_t
+    use monte_carlo, only: MC_TENSOR
+    use analysis_base, only: analysis_t, WORD_LEN
     implicit none
     private
 
@@ -40,6 +44,24 @@ module tensor
         character(len=:), allocatable :: warning
         real(dp) :: cpu_seconds = 0.0_dp
     end type tensor_result_t
+
+    !> Analysis `tensor` (module analysis_base): OUTDIR/NAME.tensor, NAME.tensor.dat (and
+    !! NAME.plan.csv); its Monte Carlo the sweep MC_TENSOR (checkpoint
+    !! OUTDIR/NAME.tensor_mc.partial); its part of the summary line: the principal moments
+    !! with their u, the chi-square, how far the projection solution lies, the Monte Carlo,
+    !! the plan.
+    type, extends(analysis_t), public :: tensor_analysis_t
+        type(tensor_result_t) :: res            !! what it found
+        type(sweep_report_t) :: rep             !! how its Monte Carlo's sweep went
+    contains
+        procedure, nopass :: word => tensor_word
+        procedure, nopass :: owned_extensions => tensor_owned
+        procedure, nopass :: sweeps => tensor_sweeps
+        procedure :: ready => tensor_analysis_ready
+        procedure :: run => tensor_analysis_run
+        procedure :: summary => tensor_summary
+        procedure :: sweep_task => tensor_analysis_sweep_task
+    end type tensor_analysis_t
 
     public :: tensor_ready, run_tensor, tensor_sweep_task
 
@@ -74,6 +96,62 @@ module tensor
             class(sweep_task_t), allocatable, intent(out) :: task
             type(status_t), intent(out) :: stat     !! ERR_DECK
         end subroutine tensor_sweep_task
+
+        !> The preconditions (tensor_ready).
+        module subroutine tensor_analysis_ready(self, d, stat)
+            class(tensor_analysis_t), intent(inout) :: self
+            type(deck_t), intent(in) :: d           !! the deck
+            type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_MODEL
+        end subroutine tensor_analysis_ready
+
+        !> The run (run_tensor into the run's files); the Monte Carlo's warning and the
+        !! result's warning kept.
+        module subroutine tensor_analysis_run(self, d, outdir, files, stat, options)
+            class(tensor_analysis_t), intent(inout) :: self
+            type(deck_t), intent(in) :: d           !! the deck (ready passed)
+            character(len=*), intent(in) :: outdir  !! output directory
+            type(out_files_t), intent(inout) :: files   !! the run's files
+            type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_MODEL, ERR_IO
+            type(sweep_options_t), intent(in), optional :: options  !! --resume, the interval
+        end subroutine tensor_analysis_run
+
+        !> ' tensor I_principal = ... (u ...), chi2 .../dof N, N hangs, projection off by
+        !! ...[, Monte Carlo u ...][, a plan of N hangs in FILE];'
+        module function tensor_summary(self, d) result(s)
+            class(tensor_analysis_t), intent(in) :: self
+            type(deck_t), intent(in) :: d           !! the deck
+            character(len=:), allocatable :: s
+        end function tensor_summary
+
+        !> The task of its Monte Carlo on the other ranks of an MPI run (tensor_sweep_task).
+        module subroutine tensor_analysis_sweep_task(self, sweep, d, payload, task, stat)
+            class(tensor_analysis_t), intent(in) :: self
+            character(len=*), intent(in) :: sweep   !! MC_TENSOR
+            type(deck_t), intent(in) :: d           !! the deck
+            real(dp), intent(in) :: payload(:)      !! the sweep's payload
+            class(sweep_task_t), allocatable, intent(out) :: task
+            type(status_t), intent(out) :: stat     !! ERR_DECK
+        end subroutine tensor_analysis_sweep_task
     end interface
+
+contains
+
+    !> The word of &scene analyses.
+    function tensor_word() result(w)
+        character(len=:), allocatable :: w
+        w = 'tensor'
+    end function tensor_word
+
+    !> The files it writes: NAME.tensor, NAME.tensor.dat, NAME.plan.csv.
+    subroutine tensor_owned(names)
+        character(len=WORD_LEN), allocatable, intent(out) :: names(:)
+        names = [character(len=WORD_LEN) :: '.tensor', '.tensor.dat', '.plan.csv']
+    end subroutine tensor_owned
+
+    !> Its sweep: the Monte Carlo (MC_TENSOR).
+    subroutine tensor_sweeps(names)
+        character(len=WORD_LEN), allocatable, intent(out) :: names(:)
+        names = [character(len=WORD_LEN) :: MC_TENSOR]
+    end subroutine tensor_sweeps
 
 end module tensor

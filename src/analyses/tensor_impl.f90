@@ -17,6 +17,8 @@ submodule (tensor) tensor_impl
     use tensor_fit, only: tensor_problem_t, tensor_fit_t, tensor_plan_t, tensor_mc_task_t, &
         problem_of, check_directions, projection, fit_tensor, amplitude_limits, plan_hangs, &
         tensor_mc_payload, tensor_mc_task, DRIFT_MAX, DRIFT_CYCLES, MC_ESTIMATES
+    use unused_arg, only: unused
+    use analysis_base, only: ranks_note, resume_note
     implicit none
 
     !> The names of the six entries, in their order.
@@ -483,5 +485,58 @@ contains
             s = s//')'
         end function reals_short
     end subroutine write_plan
+
+    ! ------------------------------------------------------------ the analysis for the driver
+
+    !> The preconditions (tensor_ready).
+    module procedure tensor_analysis_ready
+        call unused(self)
+        call tensor_ready(d, stat)
+    end procedure tensor_analysis_ready
+
+    !> The run (run_tensor into the run's files); the Monte Carlo's warning and the result's
+    !! warning kept.
+    module procedure tensor_analysis_run
+        call run_tensor(d, outdir, self%res, stat, files, options, self%rep)
+        call self%add_report_warning(self%rep)
+        if (stat%code /= 0) return
+        if (allocated(self%res%warning)) then
+            if (len(self%res%warning) > 0) call self%add_warning(self%res%warning)
+        end if
+    end procedure tensor_analysis_run
+
+    !> The summary line's part of analysis tensor: the principal moments with their u, the
+    !! chi-square, how far the projection solution lies, the Monte Carlo, the plan.
+    module procedure tensor_summary
+        call unused(d)
+        associate (res => self%res, rep => self%rep)
+            s = ' tensor'
+            if (res%fitted) then
+                s = s//' I_principal = '//sci(res%moments(1), 5)//', '// &
+                    sci(res%moments(2), 5)//', '//sci(res%moments(3), 5)//' (u '// &
+                    sci(res%u_moments(1), 2)//', '//sci(res%u_moments(2), 2)//', '// &
+                    sci(res%u_moments(3), 2)//'), chi2 '//fixed(res%chi2, 2)//'/dof '// &
+                    itoa(res%dof)//', '//itoa(res%hangs)//' hangs, projection off by '// &
+                    sci(res%projection_difference, 2)
+                if (res%mc_samples > 0) s = s//', Monte Carlo u '// &
+                    sci(res%u_moments_mc(1), 2)//', '//sci(res%u_moments_mc(2), 2)//', '// &
+                    sci(res%u_moments_mc(3), 2)//' from '//itoa(res%mc_samples)// &
+                    ' samples, '//fixed(rep%wall_seconds, 2)//' s'//ranks_note(rep)// &
+                    resume_note(rep)
+            end if
+            if (res%plan > 0) then
+                if (res%fitted) s = s//','
+                s = s//' a plan of '//itoa(res%plan)//' hangs in '//res%plan_file
+            end if
+        end associate
+        s = s//';'
+    end procedure tensor_summary
+
+    !> The task of its Monte Carlo on the other ranks of an MPI run (tensor_sweep_task).
+    module procedure tensor_analysis_sweep_task
+        call unused(self)
+        call unused(sweep)
+        call tensor_sweep_task(d, payload, task, stat)
+    end procedure tensor_analysis_sweep_task
 
 end submodule tensor_impl

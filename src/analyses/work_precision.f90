@@ -18,6 +18,9 @@
 !! the largest |Q error| (over b'), max_abs_energy_error = the largest |E - E(0)| (over
 !! m g b').  CPU seconds are per solve, from repeated solves until at least 0.05 s.
 !! Writes OUTDIR/NAME.wp.dat and OUTDIR/NAME.wp_rk4.dat.
+!!
+!! The analysis for the driver: work_precision_analysis_t (module analysis_base); its
+!! preconditions are deck_runs's scene_ready.
 module work_precision
     use kinds, only: dp
     use status, only: status_t
@@ -26,6 +29,8 @@ module work_precision
     use ode_system, only: ode_system_t
     use deck, only: deck_t
     use output_io, only: out_files_t
+    use sweep_engine, only: sweep_options_t
+    use analysis_base, only: analysis_t, WORD_LEN
     implicit none
     private
 
@@ -59,6 +64,18 @@ module work_precision
         real(dp) :: ref_h = 0.0_dp                 !! RK4 step of the confirmation (coarser)
         integer :: nout = 0
     end type wp_result_t
+
+    !> Analysis `work_precision` (module analysis_base): OUTDIR/NAME.wp.dat, NAME.wp_rk4.dat
+    !! (and NAME.wp_radau.dat, elastic cables); its part of the summary line from the curves.
+    type, extends(analysis_t), public :: work_precision_analysis_t
+        type(wp_result_t) :: res                !! the curves
+    contains
+        procedure, nopass :: word => work_precision_word
+        procedure, nopass :: owned_extensions => work_precision_owned
+        procedure :: ready => work_precision_ready
+        procedure :: run => work_precision_run
+        procedure :: summary => work_precision_summary
+    end type work_precision_analysis_t
 
     public :: run_work_precision, solve_lsoda, solve_rk4, solve_rk4_sys
     public :: trajectory_errors
@@ -117,6 +134,44 @@ module work_precision
             real(dp), intent(in) :: yref(:, 0:)     !! reference at the same times
             real(dp), intent(out) :: err_theta, err_q, err_energy
         end subroutine trajectory_errors
+
+        !> The preconditions (deck_runs's scene_ready).
+        module subroutine work_precision_ready(self, d, stat)
+            class(work_precision_analysis_t), intent(inout) :: self
+            type(deck_t), intent(in) :: d           !! the deck
+            type(status_t), intent(out) :: stat     !! ERR_DECK, or the start's failure
+        end subroutine work_precision_ready
+
+        !> The run (run_work_precision, quiet, into the run's files).
+        module subroutine work_precision_run(self, d, outdir, files, stat, options)
+            class(work_precision_analysis_t), intent(inout) :: self
+            type(deck_t), intent(in) :: d           !! the deck
+            character(len=*), intent(in) :: outdir  !! output directory
+            type(out_files_t), intent(inout) :: files   !! the run's files
+            type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_NUMERIC, ERR_MODEL, ERR_IO
+            type(sweep_options_t), intent(in), optional :: options  !! (no sweep)
+        end subroutine work_precision_run
+
+        !> ' work_precision N LSODA, [N Radau,] N RK4 points, reference confirmed to E rad;'
+        module function work_precision_summary(self, d) result(s)
+            class(work_precision_analysis_t), intent(in) :: self
+            type(deck_t), intent(in) :: d           !! the deck (&scene model)
+            character(len=:), allocatable :: s
+        end function work_precision_summary
     end interface
+
+contains
+
+    !> The word of &scene analyses.
+    function work_precision_word() result(w)
+        character(len=:), allocatable :: w
+        w = 'work_precision'
+    end function work_precision_word
+
+    !> The files it writes: NAME.wp.dat, NAME.wp_rk4.dat, NAME.wp_radau.dat.
+    subroutine work_precision_owned(names)
+        character(len=WORD_LEN), allocatable, intent(out) :: names(:)
+        names = [character(len=WORD_LEN) :: '.wp.dat', '.wp_rk4.dat', '.wp_radau.dat']
+    end subroutine work_precision_owned
 
 end module work_precision

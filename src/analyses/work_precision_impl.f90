@@ -13,10 +13,11 @@ submodule (work_precision) work_precision_impl
     use integrators, only: new_integrator, SOLVER_LSODA, SOLVER_RADAU
     use deck, only: deck_t, deck_echo
     use rig, only: make_pendulum, start_state
-    use deck_runs, only: rig_of, start_of, output_times
+    use deck_runs, only: rig_of, start_of, output_times, scene_ready
     use kane_run, only: angle_difference, sway_of
     use output_io, only: out_files_t, all_finite
-    use text, only: sci
+    use text, only: sci, itoa
+    use unused_arg, only: unused
     use progress, only: progress_t
     implicit none
 
@@ -427,6 +428,26 @@ contains
         end function ref_name
 
     end procedure run_work_precision
+
+    !> The preconditions (deck_runs's scene_ready).
+    module procedure work_precision_ready
+        call unused(self)
+        call scene_ready(d, stat)
+    end procedure work_precision_ready
+
+    !> The run (run_work_precision, quiet, into the run's files).
+    module procedure work_precision_run
+        call unused(options)
+        call run_work_precision(d, outdir, self%res, stat, quiet=.true., files=files)
+    end procedure work_precision_run
+
+    !> ' work_precision N LSODA, [N Radau,] N RK4 points, reference confirmed to E rad;'
+    module procedure work_precision_summary
+        s = ' work_precision '//itoa(count(self%res%lsoda%ok))//' LSODA, '
+        if (trim(d%scene%model) == 'elastic') s = s//itoa(count(self%res%radau%ok))//' Radau, '
+        s = s//itoa(count(self%res%rk4%ok))//' RK4 points, reference confirmed to '// &
+            sci(self%res%ref_agreement_theta, 1)//' rad;'
+    end procedure work_precision_summary
 
     !> trajectory_errors for the elastic model: angles from the body's pose (elastic_chart,
     !! theta1 and theta4 continued to the reference's branch), Q and the energy (springs'

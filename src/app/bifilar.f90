@@ -26,6 +26,7 @@ program bifilar
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     use kinds, only: dp
     use status, only: status_t, STATUS_OK, EXIT_OK, EXIT_USAGE
+    use text, only: itoa
     use output_io, only: make_dir
     use signals, only: signals_install, signals_worker, signals_deck, signals_stage, &
         signals_release, signals_ignore
@@ -147,7 +148,11 @@ program bifilar
     ! the output folder, before any computing
     call make_dir(outdir%s, stat)
     if (stat%code /= STATUS_OK) then
-        call say(error_unit, error_line('', stat))
+        ! the folder serves every deck: the line names the first (and how many more)
+        stat%msg = '--out: '//stat%msg
+        if (ndecks > 1) stat%msg = stat%msg//' (for this deck and '//itoa(ndecks - 1)// &
+            ' more; none was run)'
+        call say(error_unit, error_line(decks(1)%s, stat))
         call finish(exit_status(stat%code))
     end if
 

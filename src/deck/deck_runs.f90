@@ -1,16 +1,21 @@
 !> What the runs take from a deck, for the analyses: the rig (rig_of), its start
 !! (start_of), the accuracy and integrator of its runs (accuracy_of, method_of), the output
 !! grid (output_times), the inputs of a budget (deck_inputs), the record and the releases
-!! of a measurement (read_record, record_format_of, record_file, read_trials).  Each hands
-!! the deck's groups to the procedure of the layer below that takes them (the generic
+!! of a measurement (read_record, record_format_of, record_file, read_trials), and the
+!! preconditions several analyses share: the deck's scene can be run (scene_ready: simulate,
+!! work_precision), its torsion is undamped (undamped_ready: floquet, chart, design).  Each
+!! hands the deck's groups to the procedure of the layer below that takes them (the generic
 !! names rig_of, start_of, method_of, accuracy_of, output_times and deck_inputs also take
 !! the groups themselves).
 module deck_runs
     use kinds, only: dp
-    use status, only: status_t, STATUS_OK
+    use status, only: status_t, set_error, STATUS_OK, ERR_DECK
+    use text, only: sci
     use deck, only: deck_t
     use rig, only: rig_t, start_t, accuracy_t, rig_of, start_of, method_of, accuracy_of, &
-        output_times
+        output_times, make_pendulum, start_state
+    use bifilar_model, only: NSTATE
+    use elastic_model, only: elastic_t, elastic_start, ELASTIC_NSTATE
     use inputs, only: input_t, deck_inputs
     use records, only: record_t, record_format_t, record_format, read_record_file
     use trials, only: trial_set_t, read_trial_table, one_release
@@ -19,6 +24,7 @@ module deck_runs
 
     public :: rig_of, start_of, method_of, accuracy_of, output_times, deck_inputs
     public :: read_record, record_format_of, record_file, read_trials
+    public :: scene_ready, undamped_ready
 
     interface rig_of
         module procedure deck_rig
@@ -139,5 +145,43 @@ contains
             end if
         end associate
     end subroutine read_trials
+
+    !> The preconditions of analyses = 'simulate' and 'work_precision', checked before any
+    !! computing: the cables reach (make_pendulum), the start exists (start_state) and, for
+    !! model = 'elastic', no &damping and the elastic start.
+    subroutine scene_ready(d, stat)
+        type(deck_t), intent(in) :: d           !! the deck
+        type(status_t), intent(out) :: stat     !! ERR_DECK, or the start's failure
+        type(elastic_t) :: el
+        real(dp) :: yc(NSTATE), th0(5), y(ELASTIC_NSTATE)
+        call make_pendulum(rig_of(d), el%p, stat)
+        if (stat%code /= 0) return
+        call start_state(start_of(d), el%p, yc, th0, stat)
+        if (stat%code /= 0 .or. trim(d%scene%model) /= 'elastic') return
+        if (d%damping%c_v /= 0.0_dp .or. d%damping%c_q /= 0.0_dp) then
+            call set_error(stat, ERR_DECK, '&damping c_v = '//sci(d%damping%c_v)//', c_q = '// &
+                sci(d%damping%c_q)//': the damping about the vertical is a torque of the '// &
+                'paper''s model; allowed: c_v = c_q = 0 with model = ''elastic'' (its cables '// &
+                'have &cables damping), or model = ''kane''')
+            return
+        end if
+        el%stiffness = d%cables%stiffness
+        el%damping = d%cables%damping
+        call elastic_start(el, yc, y, stat)
+        if (stat%code /= 0) stat%msg = 'elastic start: '//stat%msg
+    end subroutine scene_ready
+
+    !> The preconditions of analyses = 'floquet', 'chart' and 'design': no &damping (they
+    !! analyse the periodic torsion of the undamped model; a damped torsion is not periodic).
+    subroutine undamped_ready(d, stat)
+        type(deck_t), intent(in) :: d               !! the deck
+        type(status_t), intent(out) :: stat         !! ERR_DECK
+        stat%code = STATUS_OK
+        if (d%damping%c_v == 0.0_dp .and. d%damping%c_q == 0.0_dp) return
+        stat%code = ERR_DECK
+        stat%msg = '&damping c_v = '//sci(d%damping%c_v)//', c_q = '//sci(d%damping%c_q)// &
+            ': floquet, chart and design analyse the periodic torsion of the undamped model (a '// &
+            'damped torsion is not periodic); allowed: c_v = c_q = 0 with floquet, chart or design'
+    end subroutine undamped_ready
 
 end module deck_runs

@@ -59,6 +59,7 @@ module lsoda
     use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, integrator_id_t, &
         common_stats, METHOD_ADAMS, METHOD_BDF
     use lapack_wrap, only: la_lu_factor, la_lu_solve, la_small_lu_solve, la_small_inverse
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -361,8 +362,8 @@ contains
     pure function lsoda_identity(s) result(id)
         class(lsoda_t), intent(in) :: s
         type(integrator_id_t) :: id
+        call unused(s)
         id = integrator_id_t('lsoda', LSODA_ERR_ILLEGAL_INPUT, LSODA_ERR_MAX_STEPS)
-        if (.false.) id%name = merge('lsoda', 'lsoda', s%ready)     ! keep s referenced
     end function lsoda_identity
 
     !> The solution at t: the Nordsieck array's first column.
@@ -505,7 +506,7 @@ contains
         character(len=160) :: buf
 
         stat%code = STATUS_OK
-        if (.false.) call sys%rhs(tout, s%y, s%savf, stat)     ! keep sys referenced
+        call unused(sys)
         call update_weights(s, stat)
         if (stat%code /= STATUS_OK) return
         if (s%h0_user > 0.0_dp) then

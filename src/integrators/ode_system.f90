@@ -62,6 +62,7 @@ module ode_system
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK, ERR_NUMERIC, &
         LSODA_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_TOO_MUCH_ACCURACY, RADAU_ERR_STEP_TOO_SMALL
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -758,7 +759,9 @@ contains
         real(dp), intent(in) :: y(:)         !! state
         real(dp), intent(out) :: dfdy(:, :)  !! df_i/dy_j
         type(status_t), intent(out) :: stat
-        if (.false.) call sys%rhs(t, y, dfdy(:, 1), stat)   ! keep arguments referenced
+        call unused(sys)
+        call unused(t)
+        call unused(y)
         dfdy = 0.0_dp
         stat%code = 0
     end subroutine no_jacobian
@@ -766,15 +769,15 @@ contains
     !> Default: no analytic Jacobian; the integrator uses finite differences.
     logical function no_jacobian_given(sys)
         class(ode_system_t), intent(in) :: sys
+        call unused(sys)
         no_jacobian_given = .false.
-        if (.false.) no_jacobian_given = same_type_as(sys, sys)
     end function no_jacobian_given
 
     !> Default: the integrator forms and factors the iteration matrix itself.
     logical function no_iteration_solver_given(sys)
         class(ode_system_t), intent(in) :: sys
+        call unused(sys)
         no_iteration_solver_given = .false.
-        if (.false.) no_iteration_solver_given = same_type_as(sys, sys)
     end function no_iteration_solver_given
 
     !> Form and factor P = I - hl0 J(t, y) for the chord iteration of the stiff method, and
@@ -789,10 +792,13 @@ contains
         real(dp), intent(out) :: jnorm           !! max_i w_i^-1 sum_j |J_ij| w_j
         logical, intent(out) :: singular         !! P is singular (not factored)
         type(status_t), intent(out) :: stat      !! a failure of the Jacobian's evaluation
+        call unused(sys)
+        call unused(t)
+        call unused(y)
+        call unused(hl0)
+        call unused(rewt)
         jnorm = 0.0_dp
         singular = .false.
-        if (.false.) jnorm = t + y(1) + hl0 + rewt(1)     ! keep arguments referenced
-        if (.false.) singular = same_type_as(sys, sys)
         stat%code = 0
     end subroutine no_factor_iteration
 
@@ -802,9 +808,9 @@ contains
         class(ode_system_t), intent(inout) :: sys
         real(dp), intent(inout) :: x(:)          !! right-hand side; on return the solution
         type(status_t), intent(out) :: stat
+        call unused(sys)
+        call unused(x)
         stat%code = 0
-        if (.false.) x(1) = 0.0_dp                         ! keep arguments referenced
-        if (.false.) stat%code = merge(1, 0, same_type_as(sys, sys))
     end subroutine no_solve_iteration
 
     !> Default sensitivity terms at (t, y): df/dp = 0 (the sensitivities of the initial

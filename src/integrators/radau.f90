@@ -71,6 +71,7 @@ module radau
     use ode_system, only: ode_system_t, integrator_t, integrator_stats_t, integrator_id_t, &
         common_stats, METHOD_RADAU
     use lapack_wrap, only: la_lu_factor, la_lu_solve, la_zlu_factor, la_zlu_solve
+    use unused_arg, only: unused
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -414,8 +415,8 @@ contains
     pure function radau_identity(s) result(id)
         class(radau_t), intent(in) :: s
         type(integrator_id_t) :: id
+        call unused(s)
         id = integrator_id_t('radau', RADAU_ERR_ILLEGAL_INPUT, RADAU_ERR_MAX_STEPS)
-        if (.false.) id%name = merge('radau', 'radau', s%ready)     ! keep s referenced
     end function radau_identity
 
     !> The solution at t.

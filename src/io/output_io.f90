@@ -34,6 +34,7 @@ module output_io
     use status, only: status_t, set_error, STATUS_OK, ERR_IO
     use text, only: itoa
     use signals, only: signals_track, signals_untrack, signals_created
+    use file_kind, only: kind_of_file, kind_name, FILE_FOLDER, FILE_MISSING
     implicit none
     private
 
@@ -528,7 +529,9 @@ contains
         end do
         call mk(len(dir))
         if (c_access(dir//'/.'//c_null_char, 0_c_int) /= 0) then
-            call set_error(stat, ERR_IO, 'cannot create the output folder '//dir)
+            call set_error(stat, ERR_IO, 'cannot create the output folder '//dir// &
+                           why_not_made()//'; allowed: a folder that can be written, or a '// &
+                           'name not yet taken in one')
         else if (c_access(dir//'/.'//c_null_char, W_OK + X_OK) /= 0) then
             call set_error(stat, ERR_IO, 'cannot write into the output folder '//dir)
         end if
@@ -539,6 +542,36 @@ contains
         end if
 
     contains
+
+        !> Why dir could not be made: the first part of it that exists and is no folder, or
+        !! the last folder on the way that cannot be written.
+        function why_not_made() result(w)
+            character(len=:), allocatable :: w
+            integer :: j, k, last
+            w = ''
+            last = 0
+            do j = 1, len(dir)
+                if (j < len(dir)) then
+                    if (dir(j + 1:j + 1) /= '/' .or. dir(j:j) == '/') cycle
+                end if
+                k = kind_of_file(dir(1:j))
+                if (k == FILE_FOLDER) then
+                    last = j
+                else if (k /= FILE_MISSING) then
+                    w = ': '//dir(1:j)//' is '//trim(kind_name(k))//', not a folder'
+                    return
+                else
+                    exit
+                end if
+            end do
+            if (last > 0) then
+                if (c_access(dir(1:last)//'/.'//c_null_char, W_OK + X_OK) /= 0) &
+                    w = ': the folder '//dir(1:last)//' cannot be written'
+            else if (dir(1:1) /= '/') then
+                if (c_access('.'//c_null_char, W_OK + X_OK) /= 0) &
+                    w = ': the current folder cannot be written'
+            end if
+        end function why_not_made
 
         !> mkdir of dir(1:m); remembered when made here.
         subroutine mk(m)

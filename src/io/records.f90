@@ -61,7 +61,7 @@ module records
     end type record_format_t
 
     public :: read_record_file, record_format, mean_period, column_unit, clean_mean_period, &
-              u_column_warning, median_value
+              u_column_warning, median_value, chosen_axis_note
 
     integer, parameter, public :: MIN_SAMPLES = 20          !! shortest record
     integer, parameter, public :: MAX_SAMPLES = 2000000     !! longest record
@@ -599,6 +599,18 @@ contains
             sci(rhi/max(rlo, tiny(1.0_dp)), 2)//' times: the stated u does not scatter as '// &
             'the residuals do; name two columns in record_columns to leave U out'
     end function u_column_warning
+
+    !> For a run's summary line: ', record axis 'NAME' (largest swing)' when the first
+    !! record's value is the axis a gyro export was read by (no record_columns), else ''.
+    function chosen_axis_note(recs) result(s)
+        type(record_t), intent(in), allocatable :: recs(:)
+        character(len=:), allocatable :: s
+        s = ''
+        if (.not. allocated(recs)) return
+        if (size(recs) == 0) return
+        if (recs(1)%axis_chosen) s = ', record axis '//quoted(trim(recs(1)%value_name))// &
+            ' (largest swing)'
+    end function chosen_axis_note
 
     !> The median of x (a sorted copy).
     function median_value(x) result(m)

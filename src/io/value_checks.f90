@@ -69,11 +69,24 @@ contains
         if (hi > lo) dom = rshort(lo)//' < '//xname//' < '//rshort(hi)
         call bad(stat, grp, uname, rshort(u), 'the 5-sigma range of '//xname// &
                  ' = '//rshort(x)//' +- 5 '//uname//' reaches '// &
-                 rshort(merge(x - 5.0_dp*u, x + 5.0_dp*u, .not. low_ok))//', outside '//dom// &
+                 rshort(six_digits(merge(x - 5.0_dp*u, x + 5.0_dp*u, .not. low_ok)))//', outside '//dom// &
                  ' (a Monte Carlo would draw such values, the budget step there)', &
-                 '0 <= '//uname//' < '//rshort(umax)//' for '//xname//' = '//rshort(x)// &
+                 '0 <= '//uname//' < '//rshort(six_digits(umax))//' for '//xname//' = '//rshort(x)// &
                  ' (a fifth of the distance to the edge)')
     end subroutine in_domain
+
+    !> A computed value as a reader wants it: rounded to six significant digits (a bound of
+    !! 0.02 reads 0.02, not 0.019999999999998862).
+    pure real(dp) function six_digits(v)
+        real(dp), intent(in) :: v
+        character(len=32) :: buf
+        integer :: ios
+        six_digits = v
+        if (.not. ieee_is_finite(v) .or. v == 0.0_dp) return
+        write (buf, '(es20.5e3)', iostat=ios) v
+        if (ios == 0) read (buf, *, iostat=ios) six_digits
+        if (ios /= 0) six_digits = v
+    end function six_digits
 
     !> ERR_DECK when x is NaN or infinite.
     subroutine finite(stat, grp, var, x)

@@ -82,6 +82,7 @@ module estimator
     use lapack_wrap, only: la_lstsq, la_svd
     use text, only: itoa, sci
     use stats, only: chi2_sf
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -785,7 +786,7 @@ contains
     logical function no_jacobian_given(prob)
         class(lsq_problem_t), intent(in) :: prob
         no_jacobian_given = .false.
-        if (.false.) no_jacobian_given = same_type_as(prob, prob)
+        call unused(prob)
     end function no_jacobian_given
 
     !> Default residual_jacobian: the residuals and forward differences with steps of 1e-7
@@ -818,9 +819,8 @@ contains
     subroutine ignore_gain(prob, gain)
         class(lsq_problem_t), intent(inout) :: prob
         real(dp), intent(in) :: gain            !! g at the point just evaluated
-        if (.false.) then
-            if (same_type_as(prob, prob) .and. gain > 0.0_dp) return
-        end if
+        call unused(prob)
+        call unused(gain)
     end subroutine ignore_gain
 
     !> The Jacobian dr/dp by differences with steps h: forward from (p, r) (n evaluations),

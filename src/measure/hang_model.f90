@@ -53,6 +53,7 @@ module hang_model
     use run_loop, only: stepped_model_t, row_sink_t, drive, falling_zero
     use lapack_wrap, only: la_syev, la_eigv
     use hang_table, only: hang_t
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -478,8 +479,12 @@ contains
         real(dp), intent(in) :: t
         real(dp), intent(in) :: y(:)
         type(status_t), intent(out) :: stat
+        call unused(sink)
+        call unused(m)
+        call unused(k)
+        call unused(t)
+        call unused(y)
         stat%code = 0
-        if (.false.) sink%done = same_type_as(m, m) .and. k + t + y(1) > 0.0_dp
     end subroutine maxima_take
 
     !> After a step [t0, t1]: note theta_4 below 0; after that, a theta_4' going from + to -

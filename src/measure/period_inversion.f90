@@ -73,6 +73,7 @@ module period_inversion
     use estimator, only: lsq_problem_t, lsq_options_t, lsq_result_t, estimate, DAMP_HALVING, &
         STEP_LARGEST, FAIL_START, FAIL_EVALUATION, FAIL_JACOBIAN
     use budget, only: ROW_INPUT, ROW_TIMING, ROW_AMPLITUDE
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -254,8 +255,12 @@ contains
         real(dp), intent(in) :: t
         real(dp), intent(in) :: y(:)
         type(status_t), intent(out) :: stat
+        call unused(sink)
+        call unused(m)
+        call unused(k)
+        call unused(t)
+        call unused(y)
         stat%code = 0
-        if (.false.) sink%done = same_type_as(m, m) .and. k + t + y(1) > 0.0_dp
     end subroutine period_take
 
     !> After a step [t0, t1]: note theta4 below 0; after that, a theta4' going from + to -
@@ -508,7 +513,7 @@ contains
             if (stat%code /= 0) return
         end if
         hh = merge(1.0e-7_dp, SLOPE_REL_SIM, prob%sym)*p(1)
-        if (.false.) hh = hh + h(1)
+        call unused(h)
         do k = 1, size(prob%periods)
             call model_period(prob%rg, prob%acc, prob%sym, p(1) + hh, prob%amps(k), tp, stat)
             if (stat%code /= 0) return

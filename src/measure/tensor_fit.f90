@@ -88,6 +88,7 @@ module tensor_fit
     use hang_table, only: hang_t, hang_row_t, hang_set_t, RIG_NAMES
     use hang_model, only: tensor_entries, principal_axes, hang_rig, hang_period, &
         maxima_drift, vertical_moment, moment_direction, turned_hang
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -809,7 +810,7 @@ contains
         real(dp) :: a(size(prob%tc), 6), rr(size(r))
         evaluations = 0
         jac = 0.0_dp
-        if (.false.) rr = h(1)
+        call unused(h)
         if (.not. all(prob%x_last == p)) then
             call prob%residual(p, rr, stat)
             evaluations = 1

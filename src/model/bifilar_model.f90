@@ -16,7 +16,9 @@
 !!   y = (theta1, sigma1, sigma2, theta4, theta5, and their rates), eqs. (40)-(43).
 !! Results are reported in the paper's theta_1..theta_5 (paper_angles).
 !!
-!! The 5 x 5 system is factored by lapack_wrap's written-out LU (la_small_factor).  The
+!! Eq. (38) is solved in the four independent accelerations (the constraint eliminated by
+!! eq. (31)): their 4 x 4 generalized inertia, symmetric positive definite, is factored by
+!! lapack_wrap's written-out Cholesky (la_small_chol, la_small_chol_solve).  The
 !! Jacobian Z of the chart right-hand side (eq. (51)) is exact: the derivatives of the
 !! kinematics (chart_kinematics_tangent) carried through Kane's equations and the constraint
 !! (eom_tangent), solved with the same factors (chart_jacobian); its ten columns in one
@@ -45,6 +47,7 @@ module bifilar_model
     use vectors, only: cross
     use gen_forces, only: generalized_inertia, inertia_torque, project
     use lapack_wrap, only: la_small_chol, la_small_chol_solve
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -168,7 +171,7 @@ contains
         type(status_t), intent(out) :: stat
         type(chart_kin_t) :: k
         type(eom_t) :: eo
-        if (.false.) ydot(1) = t
+        call unused(t)
         call refresh_lambda(sys)
         call chart_solve(sys%p, y, k, eo, stat, sys%sc_lambda)
         ydot(1:5) = y(6:10)
@@ -900,7 +903,7 @@ contains
         real(dp) :: dtq(3), e(5), alpha(3)
         integer :: j, r
         logical :: geometry
-        if (.false.) dfdp(1, 1) = t
+        call unused(t)
         call refresh_lambda(sys)
         sys%sp_y = y(1:NSTATE)
         sys%sp_have_z = .false.

@@ -43,6 +43,7 @@ module elastic_gen
     use vectors, only: cross
     use elastic_model, only: elastic_t, natural_lengths, matrix_to_quat, elastic_pose, &
                              elastic_rhs_stretched, ELASTIC_NSTATE
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -344,7 +345,7 @@ contains
         type(status_t), intent(out) :: stat
         real(dp) :: rs(3, 0:NJ), c(3, 0:NJ), d(3, 0:NJ), fr(3, 3, 0:NJ), vel(6), acc0(6), qual
         real(dp) :: r(3, 3), ym(ELASTIC_NSTATE), fm(ELASTIC_NSTATE), jm(6, 6), acc(6)
-        if (.false.) ydot(1) = t
+        call unused(t)
         ydot = 0.0_dp
         call pose_jets(sys%el, y(1:6), y(7:12), rs, c, d, fr, qual)
         if (.not. (qual > 0.0_dp)) then

@@ -36,6 +36,7 @@ module platform_elastic
                                  platform_kinematics, rotation, PLATFORM_NMAX, QPSI, &
                                  set_reference, pose_guess_t, guess_pose, keep_guess
     use platform_model, only: kane_terms, platform_motion_t, platform_evaluate, rest_pose
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -192,7 +193,7 @@ contains
         real(dp), intent(in) :: y(:)
         real(dp), intent(out) :: ydot(:)
         type(status_t), intent(out) :: stat
-        if (.false.) ydot(1) = t
+        call unused(t)
         call accelerations(sys, y, ydot, stat, g=sys%guess)
     end subroutine pe_rhs
 

@@ -40,6 +40,7 @@ module platform_model
                                  platform_kinematics, rotation, QZ, QTHETA, QPHI, QPSI, &
                                  set_reference, pose_guess_t, guess_pose, keep_guess, &
                                  chart_quality
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -170,7 +171,7 @@ contains
         type(platform_kin_t) :: k
         real(dp) :: mm(4, 4), f(4)
         integer :: nf
-        if (.false.) ydot(1) = t
+        call unused(t)
         nf = sys%pl%nf
         ydot = 0.0_dp
         call pose_of_state(sys%pl, y, k, stat, sys%guess)

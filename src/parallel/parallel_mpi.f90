@@ -8,6 +8,13 @@
 !! Every send is non-blocking (par_post keeps a copy of the payload until MPI has delivered
 !! it), so no rank ever waits on another inside a send; par_poll and par_recv take the
 !! messages.  MPI errors keep MPI's default handler (MPI_ERRORS_ARE_FATAL: the job ends).
+!!
+!! State (module variables, one of the three places src/README.md allows): MPI itself is
+!! state of the process (initialised once, by par_start), and so are the facts this module
+!! keeps of it: the rank and the number of ranks (`my_rank`, `nranks`, `started`), and the
+!! sends MPI has not yet delivered (`pend`, `npend`: each payload's copy must outlive the
+!! par_post that started its send, until MPI_Test or MPI_Wait says it is delivered).  The
+!! serial build (parallel.f90) keeps none.
 module parallel
     use mpi_f08, only: MPI_Init_thread, MPI_Finalize, MPI_Comm_rank, MPI_Comm_size, &
         MPI_Isend, MPI_Iprobe, MPI_Recv, MPI_Test, MPI_Wait, MPI_Get_count, &

@@ -35,6 +35,7 @@ module floquet
     use text, only: sci
     use integrators, only: new_integrator, SOLVER_LSODA, SENS_FORWARD, SENS_DIFFERENCES
     use lapack_wrap, only: la_eig, la_geig, la_lu_factor, la_lu_solve, la_lu_solve_many
+    use unused_arg, only: unused
     implicit none
     private
 
@@ -249,7 +250,7 @@ contains
         type(status_t), intent(out) :: stat
         real(dp) :: z(NSTATE, NSTATE), a(5)
         integer :: c, i0, j
-        if (.false.) ydot(1) = t
+        call unused(t)
         call chart_jacobian(sys%p, y(1:NSTATE), a, z, stat)
         if (stat%code /= 0) return
         ydot(1:5) = y(6:10)
@@ -278,7 +279,7 @@ contains
         real(dp) :: z(NSTATE, NSTATE), rowsum
         type(status_t) :: lst
         integer :: c, i, j, i0
-        if (.false.) jnorm = t
+        call unused(t)
         jnorm = 0.0_dp
         singular = .false.
         call jacobian_z(sys%p, y(1:NSTATE), z, stat)
@@ -316,7 +317,8 @@ contains
     !> The variational system solves with its iteration matrix itself.
     logical function variational_structured(sys)
         class(variational_t), intent(in) :: sys
-        variational_structured = sys%p%big_l > 0.0_dp .or. .true.
+        call unused(sys)
+        variational_structured = .true.
     end function variational_structured
 
     !> Monodromy H(t*) over one period from the chart state y0, as the product of `nseg`
