@@ -24,7 +24,7 @@
 !!   count from the release: the model starts there); values 57 times those of the start
 !!   (degrees read as radians) or, with their unit stated (record_units or the column's
 !!   name) and t0 not estimated, 1/57 of them (radians said to be degrees); after the fit,
-!!   a fitted release amplitude 57 times or 1/57 of &start amplitude
+!!   a fitted release amplitude 57 times or 1/57 of &start amplitude, t0 estimated or not
 !!   (check_fitted_amplitude).
 !! * The work: the model runs the analysis will make, counted from the deck (the
 !!   inversion, the budget, the Monte Carlo over the threads, the figure's curves:
@@ -267,10 +267,11 @@ contains
         end function units_source
     end subroutine check_record_times
 
-    !> After a record's fit with t0 not estimated (the record holds the release), its
-    !! fitted release amplitude (degrees) against &start amplitude: about 57 times it, or
-    !! 1/57 of it (within DEG_FACTOR_BAND), is a unit mistake of the record (ERR_DECK naming
-    !! record_units): the fit has taken radians for degrees or degrees for radians.
+    !> After a record's fit (t0 estimated or not: the fitted amplitude is the release's,
+    !! the decay before the record modelled), its fitted release amplitude (degrees) against
+    !! &start amplitude: about 57 times it, or 1/57 of it (within DEG_FACTOR_BAND), is a
+    !! unit mistake of the record (ERR_DECK naming record_units): the fit has taken radians
+    !! for degrees or degrees for radians.
     subroutine check_fitted_amplitude(mea, sta, rec, a_fit, name, stat)
         type(measurement_group_t), intent(in) :: mea    !! (estimate, record_units)
         type(start_group_t), intent(in) :: sta          !! (the release), normalised
@@ -280,7 +281,7 @@ contains
         type(status_t), intent(out) :: stat
         real(dp) :: ratio
         stat%code = STATUS_OK
-        if (mea%estimated('t0') .or. trim(sta%mode) /= 'raised') return
+        if (.not. mea%estimated('amplitude') .or. trim(sta%mode) /= 'raised') return
         if (.not. (sta%amplitude > 0.0_dp .and. abs(a_fit) > 0.0_dp)) return
         ratio = abs(a_fit)/sta%amplitude
         if ((ratio > DEG_RATIO/DEG_FACTOR_BAND .and. ratio < DEG_RATIO*DEG_FACTOR_BAND) .or. &
