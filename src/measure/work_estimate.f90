@@ -290,7 +290,8 @@ contains
             call set_error(stat, ERR_DECK, name//': the fit releases the body from '// &
                 sci(abs(a_fit), 3)//' deg, where &start amplitude = '//fixed(sta%amplitude, 1)// &
                 ' deg: a factor of '//trim(merge('57  ', '1/57', ratio > 1.0_dp))//', a '// &
-                'record in '//trim(merge('deg', 'rad', ratio > 1.0_dp))//' read as '// &
+                'record in '//trim(merge('deg', 'rad', ratio > 1.0_dp))// &
+                trim(merge('/s', '  ', rec%rate))//' read as '// &
                 trim(rec%units)//'; allowed: record_units (or the value column''s name) '// &
                 'saying the record''s unit: '''//trim(merge('deg  ', 'rad  ', ratio > 1.0_dp))// &
                 trim(merge('/s', '  ', rec%rate))//'''')
