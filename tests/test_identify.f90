@@ -861,7 +861,8 @@ contains
                  'line 26: a value is not a finite number')
         call one('huge', "&measurement record = 'bad_huge.dat' /", 2, &
                  'line 26: value 1.500E+221 rad is too large; allowed: |value| <= 1.000E+03 rad')
-        call one('tiny_u', "&measurement record = 'bad_tiny_u.dat' /", 2, &
+        call one('tiny_u', "&measurement record = 'bad_tiny_u.dat', record_columns = 1, "// &
+                 "2, 3 /", 2, &
                  'line 1: standard uncertainty 4.941E-324 rad is out of range; allowed: '// &
                  'from 1.000E-12 to 1.000E+03 rad')
         ! a file without line ends: read whole before (a hang, missed by the fuzz test); a

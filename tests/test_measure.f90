@@ -11,7 +11,7 @@ module test_measure
     use kinds, only: dp, pi, deg
     use status, only: status_t
     use testing, only: tester_t, write_text, file_has, count_lines, run, fresh_dir, &
-        read_kv_text
+        read_kv_text, message_lines
     use deck, only: deck_t, read_deck_text
     use deck_runs, only: rig_of, start_of, accuracy_of, deck_inputs
     use measurement, only: measurement_t
@@ -63,6 +63,10 @@ contains
         if (t%want('measure: correlated residuals')) call test_correlated(t)
         if (t%want('measure: video track from mid-swing, glitches, huber')) call test_video(t)
         if (t%want('measure: no figure script carries a deck''s title')) call test_titles(t)
+        if (t%want('measure: records by frame, by name, with text, a gyro export')) &
+            call test_reader(t, exe)
+        if (t%want('measure: record mistakes refused at once or warned')) &
+            call test_record_mistakes(t, exe)
     end subroutine run_measure_tests
 
     !> A number as deck text (full precision).
@@ -888,6 +892,260 @@ contains
         call t%check('video: least squares converges too, and no closer than huber', &
                      st%code == 0 .and. abs(i1_s - I1_TRUE) >= 0.5_dp*abs(i1_h - I1_TRUE))
     end subroutine test_video
+
+    ! ---------------------------------------------------------------------------------------
+    !> The rig of SUSP/BODY released from 20 deg, its gyro's W (rad/s) for 10 s at 50 Hz with
+    !! noise 0.002 rad/s (seed 41): times tt, values w (the model plus noise).
+    subroutine reader_record(tt, w, st)
+        real(dp), allocatable, intent(out) :: tt(:), w(:)
+        type(status_t), intent(out) :: st
+        type(deck_t) :: d
+        type(rng_t) :: g
+        integer :: i, n
+        call read_deck_text(SCR//'/reader_truth.nml', HEAD//SUSP//BODY//"&start mode = "// &
+                            "'raised', amplitude = 20 /"//NL//'&integration rtol = 1e-12, '// &
+                            'atol = 1e-14 /'//NL, d, st)
+        if (st%code /= 0) return
+        n = 501
+        allocate (tt(n), w(n))
+        do i = 1, n
+            tt(i) = (i - 1)/50.0_dp
+        end do
+        call record_model(rig_of(d), start_of(d), accuracy_of(d), tt, 0.0_dp, .true., w, st)
+        g = rng_stream(41, 0)
+        do i = 1, n
+            w(i) = w(i) + 0.002_dp*rng_normal(g)
+        end do
+    end subroutine reader_record
+
+    !> A deck of the reader's rig fitting record `rec` with the &measurement settings `more`.
+    function reader_deck(rec, more, estimate) result(s)
+        character(len=*), intent(in) :: rec, more
+        character(len=*), intent(in), optional :: estimate     !! default 'I1 amplitude'
+        character(len=:), allocatable :: s
+        character(len=:), allocatable :: est
+        est = 'I1 amplitude'
+        if (present(estimate)) est = estimate
+        s = HEAD//SUSP//BODY//"&start mode = 'raised', amplitude = 20 /"//NL// &
+            "&integration rtol = 1e-10, atol = 1e-12 /"//NL//"&measurement record = '"// &
+            rec//"', estimate = '"//est//"', u_l = 0.001, u_b = 0.0005, "//more//' /'//NL
+    end function reader_deck
+
+    !> One record written five ways, each giving the clean file's I1 and U: frame numbers
+    !! with record_frame_rate; the value alone with record_frame_rate (the row's time);
+    !! columns by their header names, the others text; a phone's export with four named
+    !! columns (x, y, z and the magnitude) and no record_columns, its axis with the largest
+    !! swing taken and named in the summary line and NAME.identify; a third column that is
+    !! no u (a temperature) left unused, with a note, and taken as u only when
+    !! record_columns names it (then a warning).
+    subroutine test_reader(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        type(status_t) :: st
+        type(rng_t) :: g
+        real(dp), allocatable :: tt(:), w(:)
+        character(len=:), allocatable :: plain, frames, named, phone, temp, line, dd
+        character(len=160) :: row
+        type(warning_t), allocatable :: wl(:)
+        real(dp) :: i1c, uc, x, y
+        integer :: i, ex
+        call reader_record(tt, w, st)
+        call t%check('reader: the truth record', st%code == 0)
+        if (st%code /= 0) return
+        g = rng_stream(42, 0)
+        plain = '# t (s)  W (rad/s)'//NL
+        frames = 'frame,W'//NL
+        named = '"Status","Time (s)","Temp (C)","Gyroscope z (rad/s)","Note"'//NL
+        phone = '"Time (s)","Gyroscope x (rad/s)","Gyroscope y (rad/s)",'// &
+                '"Gyroscope z (rad/s)","Absolute (rad/s)"'//NL
+        temp = ''
+        do i = 1, size(tt)
+            write (row, '(f0.2,1x,es17.9)') tt(i), w(i)
+            plain = plain//trim(row)//NL
+            write (row, '(i0,a,es17.9)') i - 1, ',', w(i)
+            frames = frames//trim(row)//NL
+            write (row, '(a,f0.2,a,f0.2,a,es17.9,a)') 'OK,', tt(i), ',', 21.0_dp + &
+                0.3_dp*rng_normal(g), ',', w(i), ','//trim(merge('tracking lost', &
+                'all good     ', mod(i, 9) == 0))
+            named = named//trim(row)//NL
+            x = 0.003_dp*rng_normal(g)
+            y = 0.003_dp*rng_normal(g)
+            write (row, '(f0.2,4(a,es17.9))') tt(i), ',', x, ',', y, ',', w(i), ',', &
+                sqrt(x**2 + y**2 + w(i)**2)
+            phone = phone//trim(row)//NL
+            write (row, '(f0.2,1x,es17.9,1x,f0.2)') tt(i), w(i), 21.0_dp + 0.3_dp*rng_normal(g)
+            temp = temp//trim(row)//NL
+        end do
+        call write_text(SCR//'/rd_plain.dat', plain)
+        call write_text(SCR//'/rd_frames.csv', frames)
+        call write_text(SCR//'/rd_named.csv', named)
+        call write_text(SCR//'/rd_phone.csv', phone)
+        call run_here('rd_plain', reader_deck('rd_plain.dat', "quantity = 'rate'"), st)
+        call t%check('reader: the clean record fits', st%code == 0)
+        if (st%code /= 0) then
+            write (*, '(a)') '   '//st%msg
+            return
+        end if
+        i1c = kv('rd_plain', 'I1')
+        uc = kv('rd_plain', 'U_I1')
+        call t%check_close('reader: the clean record, I1 within 0.1 %', i1c, I1_TRUE, &
+                           rtol=1.0e-3_dp)
+        call run_here('rd_frames', reader_deck('rd_frames.csv', "quantity = 'rate', "// &
+                      'record_frame_rate = 50'), st)
+        call same('frame numbers with record_frame_rate', 'rd_frames')
+        call run_here('rd_rows', reader_deck('rd_frames.csv', "quantity = 'rate', "// &
+                      'record_columns = 2, record_frame_rate = 50'), st)
+        call same('the value alone, the time from the row and record_frame_rate', 'rd_rows')
+        call run_here('rd_named', reader_deck('rd_named.csv', "record_columns = 'Time (s)', "// &
+                      "'Gyroscope z (rad/s)'"), st)
+        call same('columns by name (the unit from the name), text in the others', 'rd_named')
+        call t%check('reader: named: the quantity from the column''s unit', &
+                     file_has(SCR//'/rd_named.identify', 'quantity = rate'))
+        call write_text(SCR//'/rd_phone.nml', reader_deck('rd_phone.csv', 'u_g = 0'))
+        call run_deck(SCR//'/rd_phone.nml', SCR, line, st, warnings=wl)
+        call same('a gyro export, no record_columns: the axis with the largest swing', &
+                  'rd_phone')
+        call t%check('reader: the axis taken named in the summary line', &
+                     index(line, "record axis 'gyroscope z (rad/s)' (largest swing)") > 0)
+        call t%check('reader: the axis taken named in NAME.identify', &
+                     file_has(SCR//'/rd_phone.identify', 'record_axis = gyroscope z (rad/s) '// &
+                              '(the axis with the largest swing)'))
+        ! a third column that is no u
+        dd = SCR//'/rd_temp'
+        call fresh_dir(dd)
+        call write_text(dd//'/rd_temp.dat', temp)
+        call write_text(dd//'/rd_temp.nml', reader_deck('rd_temp.dat', "quantity = 'rate'"))
+        ex = run(exe//' '//dd//'/rd_temp.nml --out '//dd, dd)
+        call t%check('reader: a third column not named is no u: exit 0, a note', &
+                     all([ex == 0, file_has(dd//'/stderr', 'its column 3 is not used'), &
+                          message_lines(dd//'/stderr') == 0]))
+        call t%check_close('reader: a third column not named: the clean I1', &
+                           kv('rd_temp/rd_temp', 'I1'), i1c, rtol=1.0e-8_dp)
+        call t%check_close('reader: a third column not named: the clean U', &
+                           kv('rd_temp/rd_temp', 'U_I1'), uc, rtol=1.0e-6_dp)
+        call write_text(dd//'/rd_temp3.nml', reader_deck('rd_temp.dat', "quantity = 'rate', "// &
+                        'record_columns = 1, 2, 3'))
+        ex = run(exe//' '//dd//'/rd_temp3.nml --out '//dd, dd)
+        call t%check('reader: a temperature named as the u column: exit 0, one warning', &
+                     all([ex == 0, count_lines(dd//'/stderr', 'warning') == 1, &
+                          file_has(dd//'/stderr', 'not small against its swing')]))
+    contains
+        subroutine same(what, name)
+            character(len=*), intent(in) :: what, name
+            call t%check('reader: '//what//': exit 0', st%code == 0)
+            if (st%code /= 0) then
+                write (*, '(a)') '   '//st%msg
+                return
+            end if
+            call t%check_close('reader: '//what//': the clean I1', kv(name, 'I1'), i1c, &
+                               rtol=1.0e-8_dp)
+            call t%check_close('reader: '//what//': the clean U', kv(name, 'U_I1'), uc, &
+                               rtol=1.0e-6_dp)
+        end subroutine same
+    end subroutine test_reader
+
+    !> Record mistakes, each ending the same way in both builds: a unit in the column's name
+    !! against record_units (one line naming record_units); radians declared degrees (one
+    !! line naming record_units, before the fit or, t0 estimated, after it from the fitted
+    !! amplitude); a clock that does not start at the release with t0 not estimated (one
+    !! line at once, naming t0); an angle declared a rate (one line naming quantity); frame
+    !! numbers without record_frame_rate (naming it).  Dropouts and spikes: the classical
+    !! period from the samples the fit keeps (the linear formula within 0.2 % of the clean
+    !! record's).
+    subroutine test_record_mistakes(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        type(status_t) :: st
+        type(deck_t) :: d
+        real(dp), allocatable :: tt(:), w(:), th(:)
+        character(len=:), allocatable :: dd, named, shifted, frames, angle, drop, clean, line
+        character(len=80) :: row
+        real(dp) :: lin_clean
+        integer :: i
+        call reader_record(tt, w, st)
+        call t%check('mistakes: the truth record', st%code == 0)
+        if (st%code /= 0) return
+        call read_deck_text(SCR//'/angle_truth.nml', HEAD//SUSP//BODY//"&start mode = "// &
+                            "'raised', amplitude = 20 /"//NL, d, st)
+        allocate (th(size(tt)))
+        call record_model(rig_of(d), start_of(d), accuracy_of(d), tt, 0.0_dp, .false., th, st)
+        call t%check('mistakes: the truth angle record', st%code == 0)
+        if (st%code /= 0) return
+        dd = SCR//'/mistakes'
+        call fresh_dir(dd)
+        named = '"Time (s)","Gyroscope z (rad/s)"'//NL
+        shifted = ''
+        frames = 'frame,W'//NL
+        angle = ''
+        drop = ''
+        clean = ''
+        do i = 1, size(tt)
+            write (row, '(f0.2,a,es17.9)') tt(i), ',', w(i)
+            named = named//trim(row)//NL
+            write (row, '(f0.2,1x,es17.9)') tt(i) + 4.0e4_dp, w(i)
+            shifted = shifted//trim(row)//NL
+            write (row, '(i0,a,es17.9)') i - 1, ',', w(i)
+            frames = frames//trim(row)//NL
+            write (row, '(f0.2,1x,es17.9)') tt(i), th(i)
+            angle = angle//trim(row)//NL
+            write (row, '(f0.2,1x,es17.9)') tt(i), w(i)
+            clean = clean//trim(row)//NL
+            ! 26 dropouts to 0 and 5 spikes
+            write (row, '(f0.2,1x,es17.9)') tt(i), merge(0.0_dp, w(i), mod(i, 19) == 7) + &
+                merge(3.0_dp, 0.0_dp, mod(i, 97) == 50)
+            drop = drop//trim(row)//NL
+        end do
+        call write_text(dd//'/named.csv', named)
+        call write_text(dd//'/shifted.dat', shifted)
+        call write_text(dd//'/frames.csv', frames)
+        call write_text(dd//'/angle.dat', angle)
+        call write_text(dd//'/drop.dat', drop)
+        call write_text(dd//'/clean.dat', clean)
+        call refused('a unit in the name against record_units', 'conflict', &
+                     reader_deck('named.csv', "record_columns = 'time (s)', 'gyroscope z "// &
+                     "(rad/s)', record_units = 'deg/s'"), "record_units = 'deg/s'")
+        call refused('rad/s declared deg/s', 'raddeg', &
+                     reader_deck('named.csv', "record_columns = 1, 2, record_units = 'deg/s'"), &
+                     'record_units')
+        call refused('rad/s declared deg/s, t0 estimated: the fitted amplitude', 'raddeg_t0', &
+                     reader_deck('named.csv', "record_columns = 1, 2, record_units = 'deg/s'", &
+                     'I1 amplitude t0'), 'record_units')
+        call refused('a clock far from the release, t0 not estimated', 'shifted', &
+                     reader_deck('shifted.dat', "quantity = 'rate'"), 't0 in &measurement estimate')
+        call refused('frame numbers without record_frame_rate', 'frames', &
+                     reader_deck('frames.csv', "quantity = 'rate'"), 'record_frame_rate = F')
+        call refused('an angle declared a rate', 'anglerate', &
+                     reader_deck('angle.dat', "quantity = 'rate'"), "quantity = 'angle'")
+        ! dropouts and spikes: the classical value from the samples the fit keeps
+        call write_text(dd//'/clean.nml', reader_deck('clean.dat', "quantity = 'rate'"))
+        call run_deck(dd//'/clean.nml', dd, line, st)
+        lin_clean = kv('mistakes/clean', 'I1_linear')
+        call t%check('mistakes: the clean record''s classical value', st%code == 0 .and. &
+                     lin_clean > 0.0_dp)
+        call write_text(dd//'/drop.nml', reader_deck('drop.dat', "quantity = 'rate', "// &
+                        "loss = 'huber'"))
+        call run_deck(dd//'/drop.nml', dd, line, st)
+        call t%check('mistakes: dropouts and spikes, huber: exit 0', st%code == 0)
+        if (st%code /= 0) then
+            write (*, '(a)') '   '//st%msg
+            return
+        end if
+        call t%check_close('mistakes: dropouts: I1 within 0.1 %', kv('mistakes/drop', 'I1'), &
+                           I1_TRUE, rtol=1.0e-3_dp)
+        call t%check_close('mistakes: dropouts: the classical value as the clean record''s', &
+                           kv('mistakes/drop', 'I1_linear'), lin_clean, rtol=2.0e-3_dp)
+    contains
+        subroutine refused(what, name, deck_text, word)
+            character(len=*), intent(in) :: what, name, deck_text, word
+            integer :: ex
+            logical :: ok
+            call write_text(dd//'/'//name//'.nml', deck_text)
+            ex = run(exe//' '//dd//'/'//name//'.nml --out '//dd//'/o_'//name, dd)
+            ok = all([ex == 2, message_lines(dd//'/stderr') == 1, file_has(dd//'/stderr', word)])
+            call t%check('mistakes: '//what//': exit 2, one line naming '//word, ok)
+            if (.not. ok) call execute_command_line('cat '//dd//'/stderr')
+        end subroutine refused
+    end subroutine test_record_mistakes
 
     !> No figure script (plots/*.gp, *.gpi) holds the title of a deck of input/: figures take
     !! their titles from the data.

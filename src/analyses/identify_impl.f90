@@ -18,7 +18,9 @@ submodule (identify) identify_impl
         LOSS_SQUARES, LOSS_HUBER
     use budget, only: input_u_t, ROW_INPUT, ROW_TIMING, ROW_AMPLITUDE, ROW_FIT, ROW_RELEASE, &
         ROW_TARE, ROW_ADDED
-    use records, only: read_record_file, record_format_t, mean_period
+    use records, only: read_record_file, record_format_t, mean_period, clean_mean_period, &
+        u_column_warning, chosen_axis_note
+    use progress, only: say_note
     use measure_groups, only: measurement_group_t
     use measurement, only: release_t, observation_t, OBS_RECORD, OBS_TIMING, RIG_COLUMNS
     use measurement_read, only: read_releases, release_inputs
@@ -27,7 +29,7 @@ submodule (identify) identify_impl
     use stats, only: coverage_factor, welch_satterthwaite, NU_INFINITE
     use record_fit, only: record_fit_t, record_mc_task_t, fit_problem, fit_record, carry_inputs, &
         input_sensitivities, record_mc_task, explain_fit_failure, estimated_names, &
-        correlation_time, fresh_jacobian, PARAM_NAMES, P_BIAS
+        correlation_time, fresh_jacobian, check_record_kind, PARAM_NAMES, P_BIAS
     use period_inversion, only: period_fit_t, invert_periods, period_budget, &
                                 period_monte_carlo, linear_inertia, is_torsion_rig, &
                                 period_mc_task, period_mc_task_t, rig_period_s, &
@@ -35,8 +37,8 @@ submodule (identify) identify_impl
     use crc64, only: crc64_of, crc_parts, hex16
     use monte_carlo, only: monte_carlo_run
     use work_estimate, only: check_timings, check_record_times, periods_runs, record_runs, &
-        work_note, reference_periods, record_swing_period, CAUSES_HIGH, CAUSES_LOW, &
-        TRIANGLE_MARGIN, LINEAR_GAP_MAX
+        work_note, reference_periods, record_swing_period, check_fitted_amplitude, &
+        CAUSES_HIGH, CAUSES_LOW, TRIANGLE_MARGIN, LINEAR_GAP_MAX
     use unused_arg, only: unused
     use analysis_base, only: ranks_note, resume_note
     implicit none
@@ -241,6 +243,11 @@ contains
                 ! a swing no rig gives (times in ms), too coarse, a long gap, degrees
                 call check_record_times(d%body, d%measurement, d%start, rg, o%rec, name, stat)
                 if (stat%code /= 0) return
+                ! an angle declared a rate, or a rate an angle, where the release shows
+                call check_record_kind(o%rec, d%measurement, trim(d%start%mode) == 'raised', &
+                                       name, stat)
+                if (stat%code /= 0) return
+                if (len_trim(o%rec%note) > 0) call say_note(d%path, name//': '//trim(o%rec%note))
                 call record_work(d, mea, o%rec, secs, what)
             end associate
         end if
@@ -462,7 +469,7 @@ contains
         call cpu_time(c1)
         res%cpu_seconds = c1 - c0
         if (stat%code /= 0) return
-        call write_identify(d, outdir, res, files, stat)
+        call write_identify(d, outdir, res, rels, files, stat)
         if (stat%code /= 0) return
         if (res%from_record) then
             call write_fit(d, outdir, rels, files, stat, fig)
@@ -760,10 +767,10 @@ contains
         real(dp), allocatable :: p0(:), h(:), jac(:, :), cov(:, :), dpdx(:, :), e(:)
         real(dp), allocatable :: nu_rows(:)
         type(budget_row_t), allocatable :: rows(:)
-        type(record_format_t) :: fmt
         type(lsq_options_t) :: opts        ! the fit's default tolerances
         real(dp) :: s2, se, emean, gain
-        integer :: m, np, j, ih, i0
+        integer :: m, np, j, ih, i0, nout
+        character(len=:), allocatable :: umsg
         r%from_record = .true.
         r%rg = rg
         r%rec = rec
@@ -871,22 +878,35 @@ contains
         r%residual_rms = sqrt(sum(e**2)/m)
         r%model = e + rec%v(i0:prob%nuse)
         allocate (r%warnings(0))
-        fmt = record_format_of(d)
         if (.not. mea%estimated('bias')) then
             ! an offset the fit does not model shows as a mean of the residuals
             emean = sum(e)/m
             se = r%residual_rms*sqrt(r%tau/m)
             if (abs(emean) > 5.0_dp*se .and. abs(emean) > 2.0e-3_dp*maxval(abs(rec%v))) &
                 call add_warning(r%warnings, 'identify: the record''s residuals have a '// &
-                    'mean of '//sci(-emean/rec%to_rad, 2)//' '//trim(fmt%units)//' ('// &
+                    'mean of '//sci(-emean/rec%to_rad, 2)//' '//trim(rec%units)//' ('// &
                     itoa(nint(abs(emean)/se))//' standard errors): an offset of the '// &
                     'instrument (a gyro''s bias, an angle''s zero) biases I1 and the '// &
                     'damping; add bias to &measurement estimate')
         end if
-        r%period_linear = mean_period(rec, i0)
+        ! a column U that is no u of these samples
+        umsg = u_column_warning(rec, i0, e)
+        if (len(umsg) > 0) call add_warning(r%warnings, umsg)
+        ! the classical value from the samples the fit takes as the swing (no dropouts)
+        r%period_linear = clean_mean_period(rec, i0, e, nout)
         if (r%period_linear > 0.0_dp) r%i1_linear = linear_inertia(rg, r%period_linear)
+        if (.not. (r%period_linear > 0.0_dp) .and. nout > 0) call say_note(d%path, &
+            'identify: the classical value is left out: fewer than two crossings of the '// &
+            'swing''s centre remain once '//itoa(nout)//' samples far from the fitted model '// &
+            '(dropouts, spikes) are left out')
         r%amp_max = d%start%amplitude
-        if (mea%estimated('amplitude')) r%amp_max = r%p(findloc(prob%which(1:np), 4, 1))
+        if (mea%estimated('amplitude')) then
+            r%amp_max = r%p(findloc(prob%which(1:np), 4, 1))
+            ! the release 57 times (or 1/57 of) the deck's: the record's unit mistaken
+            call check_fitted_amplitude(mea, d%start, rec, r%amp_max, &
+                                        'identify: the record''s fit', stat)
+            if (stat%code /= 0) return
+        end if
     end subroutine release_record
 
     !> The releases pooled (module pooling), the common inputs' budget once (their
@@ -1206,10 +1226,11 @@ contains
     end procedure identify_mc_task
 
     !> OUTDIR/NAME.identify: key = value lines, then the budget table of I1.
-    subroutine write_identify(d, outdir, res, files, stat)
+    subroutine write_identify(d, outdir, res, rels, files, stat)
         type(deck_t), intent(in) :: d
         character(len=*), intent(in) :: outdir
         type(identify_result_t), intent(in) :: res
+        type(release_fit_t), intent(in) :: rels(:)  !! (a record's quantity and column)
         type(out_files_t), intent(inout) :: files
         type(status_t), intent(out) :: stat
         integer :: u, ios, j
@@ -1283,7 +1304,10 @@ contains
             call write_kv(u, 'mode', 'record', ios)
             if (res%n_trials == 1 .and. size(res%record_crc) == 1) &
                 call write_kv(u, 'record_crc64', hex16(res%record_crc(1)), ios)
-            call write_kv(u, 'quantity', trim(d%measurement%quantity), ios)
+            ! the record's: the deck's quantity, or the unit its column's name says
+            call write_kv(u, 'quantity', trim(merge('rate ', 'angle', rels(1)%rec%rate)), ios)
+            if (rels(1)%rec%axis_chosen) call write_kv(u, 'record_axis', &
+                trim(rels(1)%rec%value_name)//' (the axis with the largest swing)', ios)
             call write_kv(u, 'samples', res%samples, ios)
             if (res%n_trials == 1) then
                 call write_kv(u, 'sigma', res%sigma, ios)
@@ -1350,12 +1374,10 @@ contains
         character(len=96) :: row
         character(len=:), allocatable :: unit_name
         real(dp) :: s
-        type(record_format_t) :: fmt
-        fmt = record_format_of(d)
         call files%open(outdir//'/'//d%name//'.fit.dat', u, stat)
         if (stat%code /= 0) return
-        unit_name = trim(merge('theta4', 'W     ', trim(d%measurement%quantity) == 'angle'))// &
-            ' ('//trim(fmt%units)//')'
+        unit_name = trim(merge('W     ', 'theta4', rels(1)%rec%rate))//' ('// &
+            trim(rels(1)%rec%units)//')'
         ios = 0
         write (u, '(a)', iostat=ios) '# bifilar identify fit: '//trim(d%scene%title)
         if (ios == 0) write (u, '(a)', iostat=ios) '# t in s as recorded; measured, model '// &
@@ -1525,6 +1547,14 @@ contains
             if (idr%n_trials > 1) s = s//', '//itoa(idr%n_trials)//' releases '// &
                 trim(idr%consistency)
             s = s//', period model '//trim(idr%period_model)
+            if (allocated(self%input%m%obs)) then
+                ! the first record's axis, when the program chose it (a gyro export)
+                k = findloc(self%input%m%obs%kind, OBS_RECORD, 1)
+                if (k > 0) then
+                    if (self%input%m%obs(k)%have_record) &
+                        s = s//chosen_axis_note(self%input%m%obs(k)%rec)
+                end if
+            end if
             if (idr%u_i1_mc >= 0.0_dp) then
                 s = s//' (Monte Carlo u '//sci(idr%u_i1_mc, 2)//' from '// &
                     itoa(d%measurement%monte_carlo)//' samples, '// &

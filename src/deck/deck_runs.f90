@@ -90,13 +90,16 @@ contains
         x = deck_inputs(d%suspension, d%body, d%measurement, d%start, with_amplitude)
     end function deck_budget_inputs
 
-    !> How the deck's records are to be read (&measurement record_columns, record_units or
-    !! quantity; the rig's sqrt(g/b') for the range of a rate).
+    !> How the deck's records are to be read (&measurement record_columns by number or
+    !! name, record_units or quantity, record_frame_rate; the rig's sqrt(g/b') for the
+    !! range of a rate).
     pure function record_format_of(d) result(f)
         type(deck_t), intent(in) :: d
         type(record_format_t) :: f
         f = record_format(d%measurement%record_columns, d%measurement%quantity, &
-                          d%measurement%record_units, d%suspension%g, d%suspension%b_prime)
+                          d%measurement%record_units, d%suspension%g, d%suspension%b_prime, &
+                          d%measurement%record_column_names, d%measurement%record_frame_rate, &
+                          d%measurement%gave('quantity'))
     end function record_format_of
 
     !> The record file of a deck: &measurement record relative to the deck's folder

@@ -6,8 +6,8 @@
 !! small tokenizer).
 !!
 !! A group's variables are described by a spec: blank-separated 'name:KN' words, K the kind
-!! (r real, i integer, c character, l logical) and N the number of elements, e.g.
-!! 'b:r1 inertia:r3 title:c1'.
+!! (r real, i integer, c character, l logical, k a column: an integer or a quoted name) and
+!! N the number of elements, e.g. 'b:r1 inertia:r3 title:c1'.
 module namelist_text
     use status, only: status_t, set_error, ERR_DECK
     use text, only: itoa, lower, next_word, commas, clip, is_ident
@@ -449,6 +449,9 @@ contains
                     case ('c')
                         why = lhs//' = '//val//': character values '// &
                             'must be quoted, e.g. '//nm//' = ''...'''
+                    case ('k')
+                        why = lhs//' = '//val//': '''//clip(tok)// &
+                            ''' is neither a whole number nor a quoted name'
                     case default
                         why = lhs//' = '//val//': '''//clip(tok)// &
                             ''' is not a logical; allowed: .true., .false.'
@@ -511,6 +514,16 @@ contains
             token_ok = .false.
             if (len(s) >= 2) token_ok = (s(1:1) == '''' .or. s(1:1) == '"') .and. &
                 s(len(s):len(s)) == s(1:1)
+        case ('k')
+            ! a quoted name, or a whole number
+            token_ok = .false.
+            if (len(s) >= 2) token_ok = (s(1:1) == '''' .or. s(1:1) == '"') .and. &
+                s(len(s):len(s)) == s(1:1)
+            if (.not. token_ok) then
+                if (s(1:1) == '+' .or. s(1:1) == '-') s = s(2:)
+                token_ok = len(s) > 0
+                if (token_ok) token_ok = verify(s, '0123456789') == 0
+            end if
         case default
             if (s(1:1) == '.') s = s(2:)
             token_ok = .false.

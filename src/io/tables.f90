@@ -19,13 +19,22 @@
 !! * The file: a regular file (a FIFO, a device or a folder is refused before it is
 !!   opened: module file_kind), of at most MAX_TABLE_BYTES, read once whole into memory;
 !!   its bytes can go back to the caller (a record's CRC-64 in NAME.identify).
+!! * Some columns only (read_picked, a record): the file's text (load_table_file) with the
+!!   columns asked for, by number or by their name in the header (matched in lower case,
+!!   trimmed; a name without its unit matches a column whose name adds one, as 'gyroscope
+!!   z' matches 'Gyroscope z (rad/s)', when only one does); only those must be numbers, the
+!!   other columns may hold anything, text included.  The data start at the first line
+!!   whose asked columns are numbers (after the header that names them, when asked by
+!!   name); every data line has as many fields as the first.
+!! * A column's name: its unit is the text of its last parentheses or brackets ('Time (s)':
+!!   's'; name_unit), its base what stands before them ('time'; name_base).
 !! Failures are ERR_DECK statuses whose message names the line and what is wrong; the
 !! caller puts the file's name before it.
 module tables
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
-    use text, only: itoa, lower, clip
+    use text, only: itoa, lower, clip, quoted
     use, intrinsic :: iso_fortran_env, only: int64
     use lines, only: LINE_MAX
     use file_kind, only: kind_of_file, kind_name, FILE_REGULAR, FILE_MISSING
@@ -48,11 +57,14 @@ module tables
         type(column_name_t), allocatable :: text(:, :)
         character :: separator = ' '                !! ' ', ',' or ';'
         logical :: decimal_comma = .false.          !! ';' separated with a comma for a point
+        !> (read_picked) the file's column of each column of v, in the order asked
+        integer, allocatable :: pick(:)
+        integer :: header_line = 0                  !! the line that named the columns (0: none)
     contains
         procedure :: column => table_column
     end type table_t
 
-    public :: read_table
+    public :: read_table, load_table_file, read_picked, header_fields, name_unit, name_base
 
     integer, parameter :: FIELD_MAX = 64        !! longest numeric field (characters)
     !> Largest table file (bytes): 512 MiB, room for 2 000 000 samples of long numbers
@@ -208,6 +220,371 @@ contains
             z%s = '0'
         end function zero_field
     end subroutine read_table
+
+    !> The whole file at path as text (load_file: a regular file, at most MAX_TABLE_BYTES,
+    !! read once), for read_picked and header_fields; its bytes are what a checksum takes.
+    subroutine load_table_file(path, text, stat)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable, intent(out) :: text
+        type(status_t), intent(out) :: stat         !! ERR_DECK
+        stat%code = STATUS_OK
+        call load_file(path, text, stat)
+        if (.not. allocated(text)) text = ''
+    end subroutine load_table_file
+
+    !> The columns asked for of a table's text (load_table_file): tab%v(:, k) the column
+    !! pick_at(k) (1-based) or, where pick_at(k) = 0, the column named pick_names(k) (lower
+    !! case) in the header; tab%pick(k) its place in the file.  Only the columns asked for
+    !! must be numbers (finite); the others may hold anything.  The header: the line that
+    !! names every column asked by name, else the last line before the data with as many
+    !! fields as the data (tab%names, tab%header_line).  At most max_rows data rows (0: no
+    !! limit).  who: the key that asks for the columns, for messages.
+    subroutine read_picked(text, tab, stat, max_rows, pick_at, pick_names, who)
+        character(len=*), intent(in) :: text        !! the file's text
+        type(table_t), intent(out) :: tab
+        type(status_t), intent(out) :: stat         !! ERR_DECK naming the line
+        integer, intent(in) :: max_rows             !! most data rows (0: no limit)
+        integer, intent(in) :: pick_at(:)           !! columns (1-based; 0: by name)
+        character(len=*), intent(in) :: pick_names(:)   !! names (lower case) where pick_at = 0
+        character(len=*), intent(in) :: who         !! e.g. 'record_columns'
+        character(len=:), allocatable :: line
+        type(column_name_t), allocatable :: f(:), header(:), first_text(:)
+        real(dp), allocatable :: v(:, :), x(:), xa(:)
+        integer, allocatable :: ln(:), idx(:)
+        integer :: ios, nline, n, np, k, hline
+        integer(int64) :: pos
+        logical :: halting(NTRAPS), resolved, numeric, all_numeric
+        stat%code = STATUS_OK
+        np = size(pick_at)
+        idx = pick_at
+        resolved = all(idx > 0)
+        hline = 0
+        allocate (header(0), first_text(0), v(max(1, np), 1024), ln(1024))
+        n = 0
+        nline = 0
+        pos = 1
+        call traps_off(halting)
+        do
+            call next_line(text, pos, line, ios)
+            if (ios < 0) exit
+            nline = nline + 1
+            if (len(line) > LINE_MAX) then
+                call fail('line '//itoa(nline)//' is longer than '//itoa(LINE_MAX)// &
+                          ' characters; allowed: lines of at most '//itoa(LINE_MAX))
+                return
+            end if
+            if (nline == 1) call drop_bom(line)
+            call drop_comment(line)
+            if (len_trim(line) == 0) cycle
+            if (n == 0) call choose_separator(line, tab)
+            call split_fields(line, tab%separator, f)
+            if (.not. resolved) then
+                ! the header that names the columns asked by name, before any data
+                call to_numbers(f, tab%decimal_comma, xa, all_numeric)
+                if (all_numeric) then
+                    call fail('line '//itoa(nline)//' holds numbers, and no line before it '// &
+                              'names the column '//quoted(clip(first_unnamed()))// &
+                              trim(named_in(first_text))//'; allowed: '//who// &
+                              ' naming columns of the header, or their numbers (1, 2, ...)')
+                    return
+                end if
+                call resolve(f)
+                if (stat%code /= STATUS_OK) return
+                if (.not. resolved .and. size(first_text) == 0) first_text = f
+                if (resolved) then
+                    header = f
+                    hline = nline
+                end if
+                cycle
+            end if
+            call picked_numbers(f, x, numeric)
+            if (n == 0) then
+                if (.not. numeric) then
+                    if (maxval(idx) > size(f)) then
+                        call to_numbers(f, tab%decimal_comma, xa, all_numeric)
+                        if (all_numeric) then
+                            call fail(itoa(size(f))//' columns (line '//itoa(nline)//'), '// &
+                                who//' asks for column '//itoa(maxval(idx))//'; allowed: '// &
+                                who//' naming columns of the file (1 .. '//itoa(size(f))//')')
+                            return
+                        end if
+                    end if
+                    ! a line before the data: the header when no column is asked by name
+                    if (all(pick_at > 0)) then
+                        header = f
+                        hline = nline
+                    end if
+                    cycle
+                end if
+                tab%ncol = size(f)
+                if (any(pick_at == 0) .and. size(header) /= tab%ncol) then
+                    call fail('the header (line '//itoa(hline)//') names '// &
+                              itoa(size(header))//' columns, the first line of numbers (line '// &
+                              itoa(nline)//') has '//itoa(tab%ncol)//' fields; allowed: one '// &
+                              'name per column (quote names that hold the separator)')
+                    return
+                end if
+                deallocate (v)
+                allocate (v(max(1, np), 1024))
+            else if (size(f) /= tab%ncol) then
+                call fail('line '//itoa(nline)//': '//itoa(size(f))//' fields where the '// &
+                          'first data line has '//itoa(tab%ncol)//'; allowed: the same '// &
+                          'number of fields on every line')
+                return
+            else if (.not. numeric) then
+                call fail('line '//itoa(nline)//': '//picked_non_number(f)//'; allowed: '// &
+                          'numbers in the columns '//who//' asks for')
+                return
+            end if
+            if (.not. all(ieee_is_finite(x))) then
+                call fail('line '//itoa(nline)//': a value is not a finite number (NaN, '// &
+                          'Inf, or beyond 1.8e308); allowed: finite numbers')
+                return
+            end if
+            if (max_rows > 0 .and. n == max_rows) then
+                call fail('more than '//itoa(max_rows)//' rows; allowed: at most '// &
+                          itoa(max_rows))
+                return
+            end if
+            if (n == size(v, 2)) then
+                v = reshape(v, [size(v, 1), 2*n], pad=[0.0_dp])
+                ln = [ln, ln]
+            end if
+            n = n + 1
+            v(1:np, n) = x
+            ln(n) = nline
+        end do
+        call traps_restore(halting)
+        if (.not. resolved) then
+            call set_error(stat, ERR_DECK, 'no line names the column '// &
+                           quoted(clip(first_unnamed()))//trim(named_in(first_text))// &
+                           '; allowed: '//who//' naming columns of the header, or their '// &
+                           'numbers (1, 2, ...)')
+            return
+        end if
+        tab%nrow = n
+        if (n == 0) then
+            call set_error(stat, ERR_DECK, 'no line of numbers in the columns '//who// &
+                           ' asks for (a header alone, or empty); allowed: rows of numbers, '// &
+                           'after an optional header')
+            return
+        end if
+        tab%v = transpose(v(1:np, 1:n))
+        tab%line = ln(1:n)
+        tab%pick = idx
+        allocate (tab%names(tab%ncol))
+        do k = 1, tab%ncol
+            tab%names(k)%s = ''
+            if (size(header) == tab%ncol) tab%names(k)%s = lower(trim(adjustl(header(k)%s)))
+        end do
+        if (size(header) == tab%ncol) tab%header_line = hline
+    contains
+        subroutine fail(what)
+            character(len=*), intent(in) :: what
+            call traps_restore(halting)
+            call set_error(stat, ERR_DECK, what)
+        end subroutine fail
+        !> The columns asked by name found among the fields ff (resolved when all are).
+        subroutine resolve(ff)
+            type(column_name_t), intent(in) :: ff(:)
+            integer :: kk, at
+            idx = pick_at
+            do kk = 1, np
+                if (pick_at(kk) > 0) cycle
+                at = find_named(ff, pick_names(kk))
+                if (at < 0) then
+                    call fail('line '//itoa(nline)//' names the column '// &
+                              quoted(clip(trim(pick_names(kk))))//' more than once; '// &
+                              'allowed: '//who//' naming a column the header names once '// &
+                              '(or its number)')
+                    return
+                end if
+                idx(kk) = at
+            end do
+            resolved = all(idx > 0)
+            if (.not. resolved) idx = pick_at
+        end subroutine resolve
+        !> The first name asked for that the header does not name ('' when none).
+        function first_unnamed() result(s)
+            character(len=:), allocatable :: s
+            integer :: kk
+            s = ''
+            do kk = 1, np
+                if (pick_at(kk) > 0) cycle
+                if (size(first_text) > 0) then
+                    if (find_named(first_text, pick_names(kk)) > 0) cycle
+                end if
+                s = trim(pick_names(kk))
+                return
+            end do
+        end function first_unnamed
+        !> The fields of the columns asked for as numbers; numeric false when a column is
+        !! missing or one is not a number.
+        subroutine picked_numbers(ff, xx, ok)
+            type(column_name_t), intent(in) :: ff(:)
+            real(dp), allocatable, intent(out) :: xx(:)
+            logical, intent(out) :: ok
+            integer :: kk
+            allocate (xx(np))
+            xx = 0.0_dp
+            ok = maxval(idx) <= size(ff)
+            if (.not. ok) return
+            do kk = 1, np
+                ok = number(ff(idx(kk))%s, tab%decimal_comma, xx(kk))
+                if (.not. ok) return
+            end do
+        end subroutine picked_numbers
+        !> The first column asked for whose field is not a number, quoted for a message.
+        function picked_non_number(ff) result(s)
+            type(column_name_t), intent(in) :: ff(:)
+            character(len=:), allocatable :: s
+            real(dp) :: xx
+            integer :: kk
+            s = 'a field asked for is not a number'
+            do kk = 1, np
+                if (.not. number(ff(idx(kk))%s, tab%decimal_comma, xx)) then
+                    s = 'field '//itoa(idx(kk))//', '''//clip(ff(idx(kk))%s)//''', is not a number'
+                    return
+                end if
+            end do
+        end function picked_non_number
+    end subroutine read_picked
+
+    !> '; the header names: 'a', 'b', ...' (the first names, clipped), '' for no fields.
+    function named_in(ff) result(s)
+        type(column_name_t), intent(in) :: ff(:)
+        character(len=:), allocatable :: s
+        integer :: k
+        s = ''
+        if (size(ff) == 0) return
+        s = '; the header names '
+        do k = 1, min(size(ff), 12)
+            if (k > 1) s = s//', '
+            s = s//quoted(clip(lower(trim(adjustl(ff(k)%s)))))
+        end do
+        if (size(ff) > 12) s = s//', ...'
+    end function named_in
+
+    !> The field of ff named `name` (lower case): its exact name, else, when only one field
+    !! has it, the name without its unit ('gyroscope z' for 'Gyroscope z (rad/s)'); 0 when
+    !! none, -1 when two fields have the name.
+    function find_named(ff, name) result(at)
+        type(column_name_t), intent(in) :: ff(:)
+        character(len=*), intent(in) :: name
+        integer :: at
+        integer :: k, nexact, nbase, kb
+        character(len=:), allocatable :: nm
+        nm = lower(trim(adjustl(name)))
+        at = 0
+        nexact = 0
+        nbase = 0
+        kb = 0
+        if (len(nm) == 0) return
+        do k = 1, size(ff)
+            if (lower(trim(adjustl(ff(k)%s))) == nm) then
+                nexact = nexact + 1
+                at = k
+            else if (name_base(ff(k)%s) == nm) then
+                nbase = nbase + 1
+                kb = k
+            end if
+        end do
+        if (nexact > 1) at = -1
+        if (nexact == 0 .and. nbase == 1) at = kb
+        if (nexact == 0 .and. nbase > 1) at = -1
+    end function find_named
+
+    !> The fields of the first line of a table's text that holds anything ('#' comments and
+    !! blank lines skipped), lower case and trimmed; named: that line is not all numbers (a
+    !! header).  Lines of more than LINE_MAX characters are left to the reader.
+    subroutine header_fields(text, f, named)
+        character(len=*), intent(in) :: text
+        type(column_name_t), allocatable, intent(out) :: f(:)
+        logical, intent(out) :: named
+        type(table_t) :: tab
+        character(len=:), allocatable :: line
+        real(dp), allocatable :: x(:)
+        integer(int64) :: pos
+        integer :: ios, nline, k
+        logical :: halting(NTRAPS)
+        allocate (f(0))
+        named = .false.
+        pos = 1
+        nline = 0
+        call traps_off(halting)
+        do
+            call next_line(text, pos, line, ios)
+            if (ios < 0) exit
+            nline = nline + 1
+            if (len(line) > LINE_MAX) exit
+            if (nline == 1) call drop_bom(line)
+            call drop_comment(line)
+            if (len_trim(line) == 0) cycle
+            call choose_separator(line, tab)
+            call split_fields(line, tab%separator, f)
+            call to_numbers(f, tab%decimal_comma, x, named)
+            named = .not. named
+            do k = 1, size(f)
+                f(k)%s = lower(trim(adjustl(f(k)%s)))
+            end do
+            exit
+        end do
+        call traps_restore(halting)
+    end subroutine header_fields
+
+    !> A column name's unit: the text inside its last parentheses or brackets, lower case,
+    !! blanks dropped ('Gyroscope z (rad/s)': 'rad/s'); '' when it has none.
+    pure function name_unit(name) result(u)
+        character(len=*), intent(in) :: name
+        character(len=:), allocatable :: u
+        integer :: i1, i2, k
+        character(len=:), allocatable :: s
+        s = trim(name)
+        u = ''
+        call unit_span(s, i1, i2)
+        if (i1 == 0) return
+        do k = i1 + 1, i2 - 1
+            if (s(k:k) /= ' ') u = u//s(k:k)
+        end do
+        u = lower(u)
+    end function name_unit
+
+    !> A column name without its unit, lower case and trimmed ('Time (s)': 'time').
+    pure function name_base(name) result(b)
+        character(len=*), intent(in) :: name
+        character(len=:), allocatable :: b
+        integer :: i1, i2
+        character(len=:), allocatable :: s
+        s = trim(adjustl(name))
+        call unit_span(s, i1, i2)
+        if (i1 > 0) s = s(1:i1 - 1)//s(i2 + 1:)
+        b = lower(trim(adjustl(s)))
+    end function name_base
+
+    !> Where the unit of a name stands: s(i1:i2) its last '(...)' or '[...]' (i1 = 0: none).
+    pure subroutine unit_span(s, i1, i2)
+        character(len=*), intent(in) :: s
+        integer, intent(out) :: i1, i2
+        integer :: j1, j2
+        i1 = 0
+        i2 = 0
+        j2 = index(s, ')', back=.true.)
+        if (j2 > 0) then
+            j1 = index(s(1:j2), '(', back=.true.)
+            if (j1 > 0) then
+                i1 = j1
+                i2 = j2
+            end if
+        end if
+        j2 = index(s, ']', back=.true.)
+        if (j2 > i2) then
+            j1 = index(s(1:j2), '[', back=.true.)
+            if (j1 > 0) then
+                i1 = j1
+                i2 = j2
+            end if
+        end if
+    end subroutine unit_span
 
     !> The whole file at path, read once (a stream of bytes) after its kind is known
     !! (module file_kind: a FIFO, a device or a folder is refused before it is opened, so

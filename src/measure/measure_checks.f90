@@ -109,15 +109,15 @@ contains
             end do
         end if
         ! the record's columns and units
-        associate (rc => self%record_columns)
-            if (self%gave('record_columns') .and. (any(rc(1:2) < 1) .or. any(rc > 100) .or. &
-                rc(1) == rc(2) .or. (rc(3) > 0 .and. (rc(3) == rc(1) .or. rc(3) == rc(2))))) then
-                call bad(stat, 'measurement', 'record_columns', itoa(rc(1))//', '// &
-                         itoa(rc(2))//', '//itoa(rc(3)), 'not three distinct columns', &
-                         'record_columns = T, V or T, V, U: the 1-based columns of time (s), '// &
-                         'value and each sample''s standard uncertainty, distinct, at most 100')
-            end if
-        end associate
+        call finite(stat, 'measurement', 'record_frame_rate', self%record_frame_rate)
+        if (stat%code /= STATUS_OK) return
+        if (self%record_frame_rate < 0.0_dp .or. self%record_frame_rate > 1.0e6_dp) then
+            call bad(stat, 'measurement', 'record_frame_rate', rshort(self%record_frame_rate), &
+                     'out of range', '0 (times in s) or 0 < record_frame_rate <= 1e6 (frames '// &
+                     'a second: the time column holds frame numbers)')
+            return
+        end if
+        if (self%gave('record_columns')) call check_record_columns()
         if (stat%code /= STATUS_OK) return
         if (len_trim(self%record_units) > 0) then
             call check_word(stat, 'measurement', 'record_units', self%record_units, &
@@ -226,6 +226,91 @@ contains
                      'number of Monte Carlo samples out of range', '0 (first order only) '// &
                      'or 2 <= monte_carlo <= '//itoa(MAX_MONTE_CARLO))
     contains
+        !> record_columns: numbers (1 .. 100) or names of the header's columns, the value's
+        !! given, the time's too unless record_frame_rate gives the time from the row; no
+        !! column twice; a name that starts as a number does but is none refused.
+        subroutine check_record_columns()
+            integer :: k, j
+            character(len=:), allocatable :: given
+            logical :: named(3), used(3)
+            associate (rc => self%record_columns, nm => self%record_column_names)
+                named = rc == 0 .and. len_trim(nm) > 0
+                used = rc > 0 .or. named
+                given = column_list()
+                if (all(.not. named)) then
+                    ! numbers alone: as always, but the time's may be left out with a frame rate
+                    if (rc(2) < 1 .or. (rc(1) < 1 .and. .not. self%record_frame_rate > 0.0_dp) &
+                        .or. any(rc > 100) .or. (rc(1) > 0 .and. rc(1) == rc(2)) .or. &
+                        (rc(3) > 0 .and. (rc(3) == rc(1) .or. rc(3) == rc(2)))) then
+                        if (rc(1) < 1 .and. rc(2) >= 1 .and. rc(2) <= 100 .and. rc(3) /= rc(2) &
+                            .and. rc(3) <= 100) then
+                            call bad(stat, 'measurement', 'record_columns', given, 'no time '// &
+                                     'column, and no record_frame_rate', 'a time column '// &
+                                     '(record_columns = T, V), or record_frame_rate = F '// &
+                                     '(frames a second: the time of row i is (i - 1)/F)')
+                        else
+                            call bad(stat, 'measurement', 'record_columns', given, &
+                                     'not three distinct columns', 'record_columns = T, V or '// &
+                                     'T, V, U: the 1-based columns of time (s), value and '// &
+                                     'each sample''s standard uncertainty, distinct, at most '// &
+                                     '100 (or their names in the header)')
+                        end if
+                    end if
+                    return
+                end if
+                do k = 1, 3
+                    if (.not. named(k)) cycle
+                    if (scan(nm(k)(1:1), '0123456789+-.') > 0) then
+                        call bad(stat, 'measurement', 'record_columns', given, &
+                                 quoted(nm(k))//' is neither a column''s number nor a name', &
+                                 'record_columns = T, V or T, V, U: whole numbers 1 .. 100 '// &
+                                 'or names of the header''s columns, e.g. ''Time (s)'', '// &
+                                 '''Gyroscope z (rad/s)''')
+                        return
+                    end if
+                end do
+                if (.not. used(2) .or. (.not. used(1) .and. .not. self%record_frame_rate > &
+                    0.0_dp)) then
+                    call bad(stat, 'measurement', 'record_columns', given, 'no '// &
+                             trim(merge('value', 'time ', .not. used(2)))//' column', &
+                             'record_columns = T, V or T, V, U (numbers or names), or V '// &
+                             'alone with record_frame_rate = F (the time of row i is '// &
+                             '(i - 1)/F)')
+                    return
+                end if
+                do k = 1, 3
+                    if (rc(k) > 100) then
+                        call bad(stat, 'measurement', 'record_columns', given, 'column '// &
+                                 itoa(rc(k))//' beyond 100', 'columns 1 .. 100, or names')
+                        return
+                    end if
+                    do j = k + 1, 3
+                        if ((rc(k) > 0 .and. rc(k) == rc(j)) .or. (named(k) .and. named(j) &
+                            .and. nm(k) == nm(j))) then
+                            call bad(stat, 'measurement', 'record_columns', given, 'a column '// &
+                                     'given twice', 'distinct columns of time, value and '// &
+                                     'each sample''s standard uncertainty')
+                            return
+                        end if
+                    end do
+                end do
+            end associate
+        end subroutine check_record_columns
+        !> record_columns as given, for a message.
+        function column_list() result(c)
+            character(len=:), allocatable :: c
+            integer :: k
+            c = ''
+            do k = 1, 3
+                if (k > 1) c = c//', '
+                if (self%record_columns(k) == 0 .and. len_trim(self%record_column_names(k)) > 0) &
+                    then
+                    c = c//quoted(self%record_column_names(k))
+                else
+                    c = c//itoa(self%record_columns(k))
+                end if
+            end do
+        end function column_list
         subroutine uncertainty(var, x)
             character(len=*), intent(in) :: var
             real(dp), intent(in) :: x

@@ -54,8 +54,15 @@ module measure_groups
         character(len=256) :: trials = ''         !! a table of releases ('' for none)
         character(len=:), allocatable :: trials_path  !! relative to the deck's folder
         !> the record's columns: time, value and (0: none) each sample's u; -1 in the third:
-        !! not given, then column 3 when the record has exactly three columns (else none)
+        !! not given (then 1, 2, or a gyro export's axis with the largest swing; a third
+        !! column is each sample's u only when record_columns names it); 0 in the first: no
+        !! time column (the row and record_frame_rate give the time), or by name
         integer :: record_columns(3) = [1, 2, -1]
+        !> the columns given by name in the header (lower case), where record_columns is 0
+        character(len=256) :: record_column_names(3) = ''
+        !> frames a second: the time column holds frame numbers, t = frame/F, or, without
+        !! a time column, t = (row - 1)/F; 0: the time column is in s
+        real(dp) :: record_frame_rate = 0.0_dp
         character(len=256) :: record_units = ''   !! RECORD_UNITS_ALLOWED ('' : by quantity)
         character(len=256) :: loss = 'squares'    !! LOSSES_ALLOWED: the record fit's loss
         !> standard uncertainties of I2 and I3 (u_inertia(1) alone serves both: normalise),
@@ -147,13 +154,16 @@ contains
         character(len=:), allocatable :: s
         s = 'periods:r100 amplitudes:r100 record:c1 quantity:c1 estimate:c1 u_mass:r1 '// &
             'u_l:r1 u_l_prime:r1 u_b:r1 u_b_prime:r1 u_g:r1 u_period:r1 u_amplitude:r1 '// &
-            'monte_carlo:i1 seed:i1 cycles:r100 trials:c1 record_columns:i3 record_units:c1 '// &
+            'monte_carlo:i1 seed:i1 cycles:r100 trials:c1 record_columns:k3 record_units:c1 '// &
             'loss:c1 u_inertia:r2 u_cg_depth:r1 u_cg_offset:r1 u_r:r1 u_lambda:r1 tare_i1:r1 '// &
             'u_tare_i1:r1 tare_mass:r1 added_inertia:r1 u_added_inertia:r1 '// &
-            'on_failure:c1 session:c1'
+            'on_failure:c1 session:c1 record_frame_rate:r1'
     end function measurement_spec
 
     !> &measurement; n_periods counts the leading periods given (check refuses gaps).
+    !! record_columns is read as numbers (as it was always given) and, when that read fails,
+    !! again as text: numbers and names of the header's columns (column_words); one value
+    !! alone is the value's column (no time column).
     subroutine read_measurement(self, rec, ios, msg)
         class(measurement_group_t), intent(inout) :: self   !! defaults in, values read out
         character(len=*), intent(in) :: rec         !! the group as one record
@@ -165,45 +175,31 @@ contains
         real(dp) :: u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude
         real(dp) :: u_inertia(2), u_cg_depth, u_cg_offset, u_r, u_lambda
         real(dp) :: tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia
-        integer :: monte_carlo, seed, record_columns(3)
+        real(dp) :: record_frame_rate
+        integer :: monte_carlo, seed, record_columns(3), ios_words
+        character(len=256) :: words(3), msg_words
         namelist /measurement/ periods, amplitudes, cycles, record, quantity, estimate, u_mass, &
             u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude, monte_carlo, seed, &
             trials, record_columns, record_units, loss, u_inertia, u_cg_depth, u_cg_offset, &
             u_r, u_lambda, tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia, &
-            on_failure, session
-        periods = self%periods
-        amplitudes = self%amplitudes
-        cycles = self%cycles
-        record = self%record
-        quantity = ''
-        estimate = self%estimate
-        u_mass = self%u_mass
-        u_l = self%u_l
-        u_l_prime = self%u_l_prime
-        u_b = self%u_b
-        u_b_prime = self%u_b_prime
-        u_g = self%u_g
-        u_period = self%u_period
-        u_amplitude = self%u_amplitude
-        monte_carlo = self%monte_carlo
-        seed = self%seed
-        trials = self%trials
-        record_columns = -1
-        record_units = self%record_units
-        loss = self%loss
-        u_inertia = PERIOD_UNSET
-        u_cg_depth = self%u_cg_depth
-        u_cg_offset = self%u_cg_offset
-        u_r = self%u_r
-        u_lambda = self%u_lambda
-        tare_i1 = self%tare_i1
-        u_tare_i1 = self%u_tare_i1
-        tare_mass = self%tare_mass
-        added_inertia = self%added_inertia
-        u_added_inertia = self%u_added_inertia
-        on_failure = self%on_failure
-        session = self%session
+            on_failure, session, record_frame_rate
+        call defaults()
+        words = ''
         read (rec, nml=measurement, iostat=ios, iomsg=msg)
+        if (ios /= 0) then
+            ! record_columns as text (names of the header's columns)
+            call defaults()
+            msg_words = ''
+            call read_words(ios_words, msg_words)
+            if (ios_words == 0) then
+                ios = 0
+                record_columns = -1
+            else
+                call defaults()
+                words = ''
+                read (rec, nml=measurement, iostat=ios, iomsg=msg)
+            end if
+        end if
         self%periods = periods
         self%amplitudes = amplitudes
         self%cycles = cycles
@@ -224,10 +220,16 @@ contains
         self%monte_carlo = monte_carlo
         self%seed = seed
         self%trials = trials
-        if (any(record_columns(1:2) /= -1)) then
+        if (any(words /= '')) then
+            call column_words(words, self%record_columns, self%record_column_names)
+            call self%note_given('record_columns')
+        else if (any(record_columns(1:2) /= -1)) then
             self%record_columns = max(0, record_columns)
+            ! one value alone: the value's column
+            if (all(record_columns(2:3) == -1)) self%record_columns = [0, record_columns(1), 0]
             call self%note_given('record_columns')
         end if
+        self%record_frame_rate = record_frame_rate
         self%record_units = record_units
         self%loss = loss
         if (u_inertia(1) /= PERIOD_UNSET) then
@@ -254,6 +256,57 @@ contains
             if (self%periods(self%n_periods + 1) == PERIOD_UNSET) exit
             self%n_periods = self%n_periods + 1
         end do
+    contains
+        !> The namelist's variables at the group's values (the defaults, before a read).
+        subroutine defaults()
+            periods = self%periods
+            amplitudes = self%amplitudes
+            cycles = self%cycles
+            record = self%record
+            quantity = ''
+            estimate = self%estimate
+            u_mass = self%u_mass
+            u_l = self%u_l
+            u_l_prime = self%u_l_prime
+            u_b = self%u_b
+            u_b_prime = self%u_b_prime
+            u_g = self%u_g
+            u_period = self%u_period
+            u_amplitude = self%u_amplitude
+            monte_carlo = self%monte_carlo
+            seed = self%seed
+            trials = self%trials
+            record_columns = -1
+            record_units = self%record_units
+            loss = self%loss
+            u_inertia = PERIOD_UNSET
+            u_cg_depth = self%u_cg_depth
+            u_cg_offset = self%u_cg_offset
+            u_r = self%u_r
+            u_lambda = self%u_lambda
+            tare_i1 = self%tare_i1
+            u_tare_i1 = self%u_tare_i1
+            tare_mass = self%tare_mass
+            added_inertia = self%added_inertia
+            u_added_inertia = self%u_added_inertia
+            record_frame_rate = self%record_frame_rate
+            on_failure = self%on_failure
+            session = self%session
+        end subroutine defaults
+        !> The read with record_columns as text: words(1:3), the other variables the host's.
+        subroutine read_words(ios2, msg2)
+            integer, intent(out) :: ios2
+            character(len=*), intent(inout) :: msg2
+            character(len=256) :: record_columns(3)
+            namelist /measurement/ periods, amplitudes, cycles, record, quantity, estimate, &
+                u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude, &
+                monte_carlo, seed, trials, record_columns, record_units, loss, u_inertia, &
+                u_cg_depth, u_cg_offset, u_r, u_lambda, tare_i1, u_tare_i1, tare_mass, &
+                added_inertia, u_added_inertia, on_failure, session, record_frame_rate
+            record_columns = ''
+            read (rec, nml=measurement, iostat=ios2, iomsg=msg2)
+            words = record_columns
+        end subroutine read_words
     end subroutine read_measurement
 
     function echo_measurement(self) result(line)
@@ -271,8 +324,9 @@ contains
         end if
         if (len_trim(self%trials) > 0) line = line//' trials = '//quoted(self%trials)//','
         if (self%gave('record_columns')) line = line//' record_columns = '// &
-            itoa(self%record_columns(1))//', '//itoa(self%record_columns(2))//', '// &
-            itoa(self%record_columns(3))//','
+            column_text(1)//', '//column_text(2)//', '//column_text(3)//','
+        if (self%record_frame_rate > 0.0_dp) line = line//' record_frame_rate = '// &
+            rshort(self%record_frame_rate)//','
         if (len_trim(self%record_units) > 0) line = line//' record_units = '// &
             quoted(self%record_units)//','
         if (trim(self%loss) /= 'squares') line = line//' loss = '//quoted(self%loss)//','
@@ -299,7 +353,43 @@ contains
         if (len_trim(self%session) > 0) line = line//', session = '//quoted(self%session)
         line = line//', monte_carlo = '//itoa(self%monte_carlo)//', seed = '// &
             itoa(self%seed)//' /'
+    contains
+        !> record_columns(k) as given: its number, or its name quoted.
+        function column_text(k) result(c)
+            integer, intent(in) :: k
+            character(len=:), allocatable :: c
+            c = itoa(self%record_columns(k))
+            if (self%record_columns(k) == 0 .and. len_trim(self%record_column_names(k)) > 0) &
+                c = quoted(self%record_column_names(k))
+        end function column_text
     end function echo_measurement
+
+    !> record_columns read as text (words, '' where not given): each a column's number (an
+    !! integer) or its name in the header (lower case, trimmed); one word alone is the
+    !! value's column.  A word that starts as a number does but is none (1.5, -2, 1e3) is
+    !! kept as a name, for the check to refuse.
+    pure subroutine column_words(words, columns, names)
+        character(len=*), intent(in) :: words(3)
+        integer, intent(out) :: columns(3)
+        character(len=*), intent(out) :: names(3)
+        character(len=len(words)) :: w(3)
+        integer :: k, ios
+        w = words
+        if (len_trim(w(1)) > 0 .and. all(len_trim(w(2:3)) == 0)) w = [character(len=len(w)) :: &
+            '', w(1), '']
+        columns = 0
+        names = ''
+        do k = 1, 3
+            if (len_trim(w(k)) == 0) cycle
+            if (verify(trim(adjustl(w(k))), '0123456789') == 0 .and. &
+                len_trim(adjustl(w(k))) <= 6) then
+                read (w(k), *, iostat=ios) columns(k)
+                if (ios == 0) cycle
+                columns(k) = 0
+            end if
+            names(k) = lower(trim(adjustl(w(k))))
+        end do
+    end subroutine column_words
 
     !> True when the blank-separated word `word` (e.g. 'c_q') is in estimate.
     pure logical function estimated(self, word)

@@ -61,7 +61,7 @@ module record_fit
     use rig, only: same_rig, same_start
     use lapack_wrap, only: la_lstsq
     use random, only: rng_t, rng_stream, rng_normal
-    use records, only: record_t, mean_period
+    use records, only: record_t, mean_period, median_value
     use inputs, only: input_t, set_input, input_value
     use monte_carlo, only: mc_task_t
     implicit none
@@ -204,7 +204,7 @@ module record_fit
 
     public :: record_model, record_model_sens, fit_problem, fit_record, carry_inputs
     public :: input_sensitivity, input_sensitivities
-    public :: record_mc_task, explain_fit_failure, make_record, find_release
+    public :: record_mc_task, explain_fit_failure, make_record, find_release, check_record_kind
     public :: correlation_time, apply_parameters, fresh_jacobian, estimated_names
 
     real(dp), parameter, public :: H_REL = 1.0e-5_dp        !! relative difference step of the model
@@ -964,6 +964,66 @@ contains
         end function first_crossing
     end subroutine find_release
 
+    !> Whether a record is the quantity the deck says, where it shows the release from rest
+    !! (&start mode = 'raised'): an angle is there at its extreme, a rate (W = 0) at its
+    !! centre.  It shows the release when its times count from it and its first sample is
+    !! within a twentieth of its period after t = 0 (t0 not estimated), or when the body was
+    !! held still before it (find_release, t0 estimated).  A rate that stands there more
+    !! than 0.6 of its largest swing from its centre, or an angle less than 0.2, is refused
+    !! (ERR_DECK naming quantity and record_units).  name: the record, for messages.
+    subroutine check_record_kind(rec, mea, raised, name, stat)
+        type(record_t), intent(in) :: rec
+        type(measurement_group_t), intent(in) :: mea    !! (quantity, estimate)
+        logical, intent(in) :: raised           !! &start mode = 'raised'
+        character(len=*), intent(in) :: name
+        type(status_t), intent(out) :: stat
+        type(record_start_t) :: rl
+        real(dp) :: tp, level, centre, pk, off
+        integer :: n, i0
+        logical :: rate
+        character(len=:), allocatable :: where
+        stat%code = STATUS_OK
+        n = size(rec%v)
+        if (.not. raised .or. n < 3) return
+        rate = trim(mea%quantity) == 'rate' .or. rec%rate
+        if (mea%estimated('t0')) then
+            call find_release(rec, rate, rl)
+            if (.not. rl%held) return
+            i0 = count(rec%t <= rl%t0)
+            if (i0 < 1 .or. i0 > n - 3) return
+            level = median_value(rec%v(1:i0))
+            centre = sum(rec%v(i0 + 1:))/(n - i0)
+            pk = maxval(abs(rec%v(i0 + 1:) - centre))
+            off = abs(level - centre)
+            where = 'held still before the release (to t = '//sci(rl%t0, 4)//' s)'
+        else
+            tp = mean_period(rec)
+            if (.not. (tp > 0.0_dp) .or. rec%t(1) > 0.05_dp*tp) return
+            centre = median_value(rec%v)
+            pk = maxval(abs(rec%v - centre))
+            off = abs(rec%v(1) - centre)
+            where = 'at the release (its first sample, t = '//sci(rec%t(1), 4)//' s)'
+        end if
+        if (.not. (pk > 0.0_dp)) return
+        if (rate .and. off > 0.6_dp*pk) then
+            call set_error(stat, ERR_DECK, name//': '//where//' it stands '// &
+                sci(off/rec%to_rad, 3)//' '//trim(rec%units)//' from the centre of its '// &
+                'swing, '//itoa(nint(100.0_dp*off/pk))//' % of its largest excursion: a '// &
+                'rate released from rest starts at its centre (W = 0), an angle at its '// &
+                'extreme; it looks like an angle (theta4); allowed: quantity = ''angle'' '// &
+                '(or record_units = ''rad'' or ''deg'') for an angle, a rate (quantity = '// &
+                '''rate'', record_units = ''rad/s'' or ''deg/s'') for a gyro''s W')
+        else if (.not. rate .and. off < 0.2_dp*pk) then
+            call set_error(stat, ERR_DECK, name//': '//where//' it stands '// &
+                sci(off/rec%to_rad, 3)//' '//trim(rec%units)//' from the centre of its '// &
+                'swing, '//itoa(nint(100.0_dp*off/pk))//' % of its largest excursion: an '// &
+                'angle released from rest starts at its extreme, a rate (W = 0) at its '// &
+                'centre; it looks like a rate (W); allowed: quantity = ''rate'' (or '// &
+                'record_units = ''rad/s'' or ''deg/s'') for a gyro''s W, an angle '// &
+                '(quantity = ''angle'', record_units = ''rad'' or ''deg'') for theta4')
+        end if
+    end subroutine check_record_kind
+
     !> The median of x.
     function median(x) result(m)
         real(dp), intent(in) :: x(:)
@@ -1011,7 +1071,8 @@ contains
         prob%acc = acc
         prob%seed = mea%seed
         prob%rec = rec
-        prob%rate = trim(mea%quantity) == 'rate'
+        ! a rate by the deck's quantity, or by the unit the record's column names
+        prob%rate = trim(mea%quantity) == 'rate' .or. rec%rate
         prob%t0 = 0.0_dp
         prob%bias = 0.0_dp
         prob%sign = 1.0_dp

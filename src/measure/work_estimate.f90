@@ -17,9 +17,15 @@
 !!   would be long work (a short one is cheap, and the inversion says which periods no
 !!   positive I1 gives).  The likely causes are named (CAUSES_HIGH, CAUSES_UNITS).
 !! * A record (ERR_DECK, exit 2): sampled more coarsely than half the period of its swing
-!!   (the deck's guess, else the record's own); a gap between two samples longer than
-!!   GAP_PERIODS_MAX periods (the fit cannot follow the swing's phase across it); values
-!!   57 times those of the start, without record_units (degrees read as radians).
+!!   (the deck's guess, else the record's own; times that are whole numbers a unit apart
+!!   are named as frame numbers); a gap between two samples longer than GAP_PERIODS_MAX
+!!   periods (the fit cannot follow the swing's phase across it); with t0 not estimated, a
+!!   first sample more than START_PERIODS_MAX periods after t = 0 (a clock that does not
+!!   count from the release: the model starts there); values 57 times those of the start
+!!   (degrees read as radians) or, with their unit stated (record_units or the column's
+!!   name) and t0 not estimated, 1/57 of them (radians said to be degrees); after the fit,
+!!   a fitted release amplitude 57 times or 1/57 of &start amplitude, t0 estimated or not
+!!   (check_fitted_amplitude).
 !! * The work: the model runs the analysis will make, counted from the deck (the
 !!   inversion, the budget, the Monte Carlo over the threads, the figure's curves:
 !!   periods_runs, record_runs); identify times one run now (a probe: one model period, or
@@ -44,12 +50,18 @@ module work_estimate
     private
 
     public :: reference_periods, check_timings, check_record_times, record_swing_period, &
-              median_of, periods_runs, record_runs, work_note
+              median_of, periods_runs, record_runs, work_note, check_fitted_amplitude
 
     !> Largest period over T_attach (the radius of gyration over b'/2) taken for a rig.
     real(dp), parameter, public :: GYRATION_MAX = 100.0_dp
     !> Longest gap in a record, in periods of its swing.
     real(dp), parameter, public :: GAP_PERIODS_MAX = 10.0_dp
+    !> Latest first sample of a record whose times count from the release (t0 not
+    !! estimated), in periods of its swing.
+    real(dp), parameter, public :: START_PERIODS_MAX = 2.0_dp
+    !> Degrees in a radian: a record's values this many times (or 1/this) what the release
+    !! gives are in the other unit; a factor within DEG_FACTOR_BAND of it counts.
+    real(dp), parameter :: DEG_RATIO = 57.29577951308232_dp, DEG_FACTOR_BAND = 3.0_dp
     !> The margins of identify's checks after the model (check_physical).
     real(dp), parameter, public :: TRIANGLE_MARGIN = 1.1_dp, LINEAR_GAP_MAX = 0.5_dp
     !> What makes an I1 too large, too small, a period too long (for messages).
@@ -162,8 +174,8 @@ contains
         if (tx > 0.0_dp .and. dtm > 0.5_dp*tx) then
             call set_error(stat, ERR_DECK, name//': sampled every '//sci(dtm, 3)//' s '// &
                 '(median), while the rig swings in about '//sci(tx, 3)//' s: fewer than '// &
-                'two samples a period cannot show the swing; '//CAUSES_UNITS//'; allowed: '// &
-                'at least two samples a period (ten or more for a fit)')
+                'two samples a period cannot show the swing; '//frames_cause()// &
+                '; allowed: at least two samples a period (ten or more for a fit)')
             return
         end if
         if (.not. (tx > 0.0_dp)) tx = ta
@@ -178,8 +190,22 @@ contains
                 'releases of a table, each with t0 estimated)')
             return
         end if
+        ! a clock that does not count from the release, with t0 not estimated: the model
+        ! starts at the release, t = 0, and no fit follows the phase to the first sample
+        if (.not. mea%estimated('t0') .and. tx > 0.0_dp .and. &
+            rec%t(1) > START_PERIODS_MAX*tx) then
+            call set_error(stat, ERR_DECK, name//': its first sample is at t = '// &
+                sci(rec%t(1), 4)//' s, '//ratio_text(rec%t(1), tx)//' periods of the swing '// &
+                '(about '//sci(tx, 3)//' s) after t = 0, and t0 is not estimated: the '// &
+                'model starts at the release, t = 0, and no fit follows the swing''s phase '// &
+                'that far; likely: a clock that does not count from the release (a '// &
+                'logger''s own time, seconds since 1970); allowed: times from the release '// &
+                '(the first sample within '//itoa(nint(START_PERIODS_MAX))//' periods of '// &
+                't = 0), or t0 in &measurement estimate (the release found in the record)')
+            return
+        end if
         ! degrees read as radians: values 57 times what the start gives
-        if (len_trim(mea%record_units) > 0 .or. trim(sta%mode) /= 'raised') return
+        if (trim(sta%mode) /= 'raised') return
         ! (the start's amplitude, also when it is a start value of the fit)
         a = sta%amplitude*deg
         if (.not. (a > 0.0_dp)) return
@@ -189,6 +215,32 @@ contains
             expect = a*2.0_dp*pi/tx
         end if
         peak = maxval(abs(rec%v - median_of(rec%v)))
+        ! radians said to be degrees (record_units or the column's name): 1/57 of it, when
+        ! the record holds the release (t0 not estimated: no decay before the record)
+        if (rec%units_stated .and. rec%to_rad /= 1.0_dp .and. .not. mea%estimated('t0') .and. &
+            peak < expect/20.0_dp .and. peak*DEG_RATIO > expect/DEG_FACTOR_BAND) then
+            call set_error(stat, ERR_DECK, name//': its values reach '//sci(peak/deg, 3)//' '// &
+                trim(rec%units)//', 1/'//itoa(nint(expect/peak))//' of what a release at '// &
+                fixed(sta%amplitude, 1)//' deg gives on this rig (about '//sci(expect/deg, 3)// &
+                ' '//trim(rec%units)//'): they look like '//trim(merge('rad/s', 'rad  ', &
+                rec%rate))//' read as '//trim(rec%units)//' ('//trim(units_source())// &
+                '); allowed: record_units = '''//trim(merge('rad/s', 'rad  ', rec%rate))// &
+                ''' for a record in radians (or its column named so)')
+            return
+        end if
+        if (rec%units_stated .and. rec%to_rad /= 1.0_dp) return
+        if (rec%units_stated .and. peak > 20.0_dp*expect .and. peak/DEG_RATIO < &
+            DEG_FACTOR_BAND*expect) then
+            call set_error(stat, ERR_DECK, name//': its values reach '//sci(peak, 3)//' '// &
+                trim(rec%units)//', '//itoa(nint(peak/expect))//' times what a release at '// &
+                fixed(sta%amplitude, 1)//' deg gives on this rig (about '//sci(expect, 3)// &
+                ' '//trim(rec%units)//'): they look like '//trim(merge('deg/s', 'deg  ', &
+                rec%rate))//' read as '//trim(rec%units)//' ('//trim(units_source())// &
+                '); allowed: record_units = '''//trim(merge('deg/s', 'deg  ', rec%rate))// &
+                ''' for a record in degrees (or its column named so)')
+            return
+        end if
+        if (rec%units_stated) return
         if (peak > 20.0_dp*expect .and. peak/57.29577951308232_dp < 3.0_dp*expect) then
             call set_error(stat, ERR_DECK, name//': its values reach '//sci(peak, 3)//' '// &
                 trim(merge('rad/s', 'rad  ', rec%rate))//', '//itoa(nint(peak/expect))// &
@@ -198,7 +250,64 @@ contains
                 'record_units = '''//trim(merge('deg/s', 'deg  ', rec%rate))//''' for a '// &
                 'record in degrees (or rad, rad/s)')
         end if
+    contains
+        !> CAUSES_UNITS, frame numbers first when the times are whole numbers a unit apart.
+        function frames_cause() result(c)
+            character(len=:), allocatable :: c
+            c = CAUSES_UNITS
+            if (abs(dtm - 1.0_dp) < 1.0e-9_dp .and. all(rec%t == anint(rec%t))) c = &
+                'likely: frame numbers (give &measurement record_frame_rate = F, the '// &
+                'frames a second), '//CAUSES_UNITS(len('likely: ') + 1:)
+        end function frames_cause
+        !> Where the record's unit was stated.
+        function units_source() result(c)
+            character(len=:), allocatable :: c
+            c = 'record_units = '''//trim(mea%record_units)//''''
+            if (len_trim(mea%record_units) == 0) c = 'its column''s name says so'
+        end function units_source
     end subroutine check_record_times
+
+    !> After a record's fit (t0 estimated or not: the fitted amplitude is the release's,
+    !! the decay before the record modelled), its fitted release amplitude (degrees) against
+    !! &start amplitude: about 57 times it, or 1/57 of it (within DEG_FACTOR_BAND), is a
+    !! unit mistake of the record (ERR_DECK naming record_units): the fit has taken radians
+    !! for degrees or degrees for radians.
+    subroutine check_fitted_amplitude(mea, sta, rec, a_fit, name, stat)
+        type(measurement_group_t), intent(in) :: mea    !! (estimate, record_units)
+        type(start_group_t), intent(in) :: sta          !! (the release), normalised
+        type(record_t), intent(in) :: rec
+        real(dp), intent(in) :: a_fit                   !! the fitted amplitude (degrees)
+        character(len=*), intent(in) :: name
+        type(status_t), intent(out) :: stat
+        real(dp) :: ratio
+        stat%code = STATUS_OK
+        if (.not. mea%estimated('amplitude') .or. trim(sta%mode) /= 'raised') return
+        if (.not. (sta%amplitude > 0.0_dp .and. abs(a_fit) > 0.0_dp)) return
+        ratio = abs(a_fit)/sta%amplitude
+        if ((ratio > DEG_RATIO/DEG_FACTOR_BAND .and. ratio < DEG_RATIO*DEG_FACTOR_BAND) .or. &
+            (ratio < DEG_FACTOR_BAND/DEG_RATIO .and. ratio > 1.0_dp/(DEG_FACTOR_BAND*DEG_RATIO))) &
+            then
+            call set_error(stat, ERR_DECK, name//': the fit releases the body from '// &
+                sci(abs(a_fit), 3)//' deg, where &start amplitude = '//fixed(sta%amplitude, 1)// &
+                ' deg: a factor of '//trim(merge('57  ', '1/57', ratio > 1.0_dp))//', a '// &
+                'record in '//trim(merge('deg', 'rad', ratio > 1.0_dp))// &
+                trim(merge('/s', '  ', rec%rate))//' read as '// &
+                trim(rec%units)//'; allowed: record_units (or the value column''s name) '// &
+                'saying the record''s unit: '''//trim(merge('deg  ', 'rad  ', ratio > 1.0_dp))// &
+                trim(merge('/s', '  ', rec%rate))//'''')
+        end if
+    end subroutine check_fitted_amplitude
+
+    !> a/b (both > 0) as a whole number for a message ('more than 1e9' beyond).
+    pure function ratio_text(a, b) result(s)
+        real(dp), intent(in) :: a, b
+        character(len=:), allocatable :: s
+        if (a < 1.0e9_dp*b) then
+            s = itoa(nint(a/b))
+        else
+            s = 'more than 1e9'
+        end if
+    end function ratio_text
 
     !> The period a record swings with (s): twice the median spacing of its crossings of its
     !! median value, each counted after the record has been beyond a tenth of its largest
