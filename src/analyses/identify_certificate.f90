@@ -148,7 +148,7 @@ contains
                        'of the fit to each input; the coverage factor from Student''s t at the '// &
                        'Welch-Satterthwaite degrees of freedom.  The fit checks itself: chi^2 of '// &
                        'its residuals against their stated u; when improbable (p < 0.05) its '// &
-                       'covariance is inflated by the Birge ratio squared.')
+                       'covariance is scaled up by the Birge ratio squared.')
         if (d%measurement%monte_carlo > 0) call cert_text(c, 'A Monte Carlo of '// &
             itoa(d%measurement%monte_carlo)//' samples (GUM Supplement 1, seed '// &
             itoa(d%measurement%seed)//') checks the first-order u.')
@@ -286,7 +286,7 @@ contains
         real(dp), intent(in) :: nu
         character(len=24) :: s
         if (nu >= NU_INFINITE) then
-            s = 'infinite'
+            s = '∞'
         else
             s = fixed(nu, 1)
         end if
