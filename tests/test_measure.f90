@@ -59,6 +59,7 @@ contains
         if (t%want('measure: one model: per-release estimate, on_failure, sessions, one '// &
                    'table reader')) call test_model(t, exe)
         if (t%want('measure: coverage over releases that scatter')) call test_coverage(t)
+        if (t%want('measure: sessions: coverage in two levels')) call test_sessions(t)
         if (t%want('measure: correlated residuals')) call test_correlated(t)
         if (t%want('measure: video track from mid-swing, glitches, huber')) call test_video(t)
         if (t%want('measure: no figure script carries a deck''s title')) call test_titles(t)
@@ -747,6 +748,70 @@ contains
         call t%check('coverage: I1 +- U covers the truth in at least 17 of 20', inside >= 17)
         call t%check('coverage: the releases'' own u alone would not', naive < 12)
     end subroutine test_coverage
+
+    ! ---------------------------------------------------------------------------------------
+    !> Over 20 seeds: 3 sessions of 3 releases, each session's I1 off by a normal 2 % (what
+    !! a session shares: the hanging, the day), each release's by a further 0.5 %, each
+    !! release timed once over 10 cycles (timing u 0.01 s stated).  Pooled in two levels
+    !! (the column session) the 95 % interval I1 +- U covers the truth in at least 17 of 20;
+    !! the same table without the column (one level: nine releases as one population)
+    !! covers it in fewer.  Both counts are printed.  One table's budget has the row
+    !! u_I1_session, n_sessions = 3 and I1_session(i) with u.
+    subroutine test_sessions(t)
+        type(tester_t), intent(inout) :: t
+        type(status_t) :: st, st1
+        type(rng_t) :: g
+        character(len=:), allocatable :: tab, tab1, name
+        character(len=2) :: lab
+        real(dp) :: i1s, i1r, tp
+        integer :: seed, s, r, two, one, ok
+        two = 0
+        one = 0
+        ok = 0
+        do seed = 1, 20
+            g = rng_stream(2000 + seed, 0)
+            tab = 'trial,session,period,cycles,amplitude,u_period'//NL
+            tab1 = 'trial,period,cycles,amplitude,u_period'//NL
+            do s = 1, 3
+                i1s = I1_TRUE*(1.0_dp + 0.02_dp*rng_normal(g))
+                lab = 's'//itoa(s)
+                do r = 1, 3
+                    i1r = i1s*(1.0_dp + 0.005_dp*rng_normal(g))
+                    tp = 10*period_of(i1r, 10.0_dp) + 0.01_dp*rng_normal(g)
+                    tab = tab//lab//'r'//itoa(r)//','//lab//','//num(tp)//',10,10,0.01'//NL
+                    tab1 = tab1//lab//'r'//itoa(r)//','//num(tp)//',10,10,0.01'//NL
+                end do
+            end do
+            name = 'ses'//itoa(seed)
+            call write_text(SCR//'/'//name//'.csv', tab)
+            call write_text(SCR//'/'//name//'_1.csv', tab1)
+            call run_here(name, HEAD//SUSP//BODY//"&measurement trials = '"//name//".csv' /"// &
+                          NL, st)
+            call run_here(name//'_1', HEAD//SUSP//BODY//"&measurement trials = '"//name// &
+                          "_1.csv' /"//NL, st1)
+            if (st%code /= 0 .or. st1%code /= 0) then
+                write (*, '(a)') '   seed '//itoa(seed)//': '//st%msg//' '//st1%msg
+                cycle
+            end if
+            ok = ok + 1
+            if (abs(kv(name, 'I1') - I1_TRUE) <= kv(name, 'U_I1')) two = two + 1
+            if (abs(kv(name//'_1', 'I1') - I1_TRUE) <= kv(name//'_1', 'U_I1')) one = one + 1
+        end do
+        write (*, '(a)') '   sessions: two-level pooling covers the truth in '//itoa(two)// &
+            ' of 20, one-level pooling in '//itoa(one)//' of 20'
+        call t%check('sessions: 40 pooled tables run', ok == 20)
+        call t%check('sessions: two levels: I1 +- U covers the truth in at least 17 of 20', &
+                     two >= 17)
+        call t%check('sessions: one level covers it in fewer', one < two)
+        call t%check('sessions: n_sessions = 3, I1_session(3) with u, k from few dof', &
+                     all([nint(kv('ses1', 'n_sessions')) == 3, kv('ses1', 'I1_session(3)') > 0, &
+                          kv('ses1', 'u_I1_session(3)') > 0, kv('ses1', 'k') > 2.5_dp]))
+        call t%check('sessions: the budget has the row u_I1_session', &
+                     file_has(SCR//'/ses1.identify', 'u_I1_session  ') .and. &
+                     kv('ses1', 'u_I1_session') > 0)
+        call t%check('sessions: one level writes no n_sessions', &
+                     kv('ses1_1', 'n_sessions') < -1.0_dp)
+    end subroutine test_sessions
 
     ! ---------------------------------------------------------------------------------------
     !> The correlation time of AR(1) residuals, x_k = rho x_(k-1) + e_k: (1 + rho)/(1 - rho)
