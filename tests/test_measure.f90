@@ -768,6 +768,7 @@ contains
         two = 0
         one = 0
         ok = 0
+        name = ''
         do seed = 1, 20
             g = rng_stream(2000 + seed, 0)
             tab = 'trial,session,period,cycles,amplitude,u_period'//NL
