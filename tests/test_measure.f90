@@ -772,6 +772,7 @@ contains
         two = 0
         one = 0
         ok = 0
+        name = ''
         do seed = 1, 20
             g = rng_stream(2000 + seed, 0)
             tab = 'trial,session,period,cycles,amplitude,u_period'//NL
@@ -813,7 +814,8 @@ contains
         call t%check('sessions: the budget has the row u_I1_session', &
                      file_has(SCR//'/ses1.identify', 'u_I1_session  ') .and. &
                      kv('ses1', 'u_I1_session') > 0)
-        call t%check('sessions: one level writes no n_sessions', kv('ses1_1', 'n_sessions') < -1.0_dp)
+        call t%check('sessions: one level writes no n_sessions', &
+                     kv('ses1_1', 'n_sessions') < -1.0_dp)
     end subroutine test_sessions
 
     ! ---------------------------------------------------------------------------------------

@@ -101,6 +101,16 @@ module identify
         integer :: n_trials = 1                 !! releases pooled
         integer :: n_trials_skipped = 0         !! releases left out (on_failure = 'skip')
         character(len=14) :: consistency = 'single release'
+        !> sessions: how many the releases name (0: none); with two or more, the releases
+        !! pooled in two levels (module pooling): each session's label, I1 (all that hung)
+        !! and u, the sessions' Birge ratio and p (-1: not tested), their consistency, and
+        !! the sessions' part of u_I1 (the budget's row u_I1_session)
+        integer :: n_sessions = 0
+        character(len=64), allocatable :: session_label(:)
+        real(dp), allocatable :: session_i1(:), session_u(:)
+        real(dp) :: session_birge_ratio = -1.0_dp, session_p_value = -1.0_dp
+        character(len=14) :: session_consistency = ''
+        real(dp) :: u_i1_session = 0.0_dp
         real(dp) :: u_i1_mc = -1.0_dp, mc_mean = 0.0_dp     !! Monte Carlo (when asked)
         real(dp) :: i1_linear = 0.0_dp, linear_error = 0.0_dp
         real(dp) :: period_linear = 0.0_dp      !! the period the linear formula used (s)

@@ -17,7 +17,7 @@ submodule (identify) identify_impl
     use estimator, only: lsq_result_t, lsq_jacobian, estimate, lsq_options_t, lsq_covariance, &
         LOSS_SQUARES, LOSS_HUBER
     use budget, only: input_u_t, ROW_INPUT, ROW_TIMING, ROW_AMPLITUDE, ROW_FIT, ROW_RELEASE, &
-        ROW_TARE, ROW_ADDED
+        ROW_TARE, ROW_ADDED, ROW_SESSION
     use records, only: read_record_file, record_format_t, mean_period, clean_mean_period, &
         u_column_warning, chosen_axis_note
     use progress, only: say_note
@@ -25,7 +25,7 @@ submodule (identify) identify_impl
     use measurement, only: release_t, observation_t, OBS_RECORD, OBS_TIMING, RIG_COLUMNS
     use measurement_read, only: read_releases, release_inputs
     use inputs, only: input_t, set_input
-    use pooling, only: pooled_t, pool_releases
+    use pooling, only: pooled_t, pool_releases, sessions_pooled_t, pool_sessions
     use stats, only: coverage_factor, welch_satterthwaite, NU_INFINITE
     use record_fit, only: record_fit_t, record_mc_task_t, fit_problem, fit_record, carry_inputs, &
         input_sensitivities, record_mc_task, explain_fit_failure, estimated_names, &
@@ -921,6 +921,7 @@ contains
         type(identify_result_t), intent(out) :: res
         type(status_t), intent(out) :: stat
         type(pooled_t) :: pool, pj
+        type(sessions_pooled_t) :: sp
         type(budget_row_t), allocatable :: rows(:)
         real(dp), allocatable :: uc(:), nuc(:)
         real(dp) :: cbar, u_total
@@ -930,7 +931,11 @@ contains
         stat%code = 0
         n = size(rels)
         associate (x => m%inputs)
-        call pool_releases(rels%i1, rels%u_own, rels%nu_own, pool)
+        ! in one level, or in two when the releases name two sessions or more
+        call pool_sessions(rels%i1, rels%u_own, rels%nu_own, &
+                           [(session_of(m%releases(kept(r))), r=1, n)], sp)
+        pool = sp%pool
+        call session_results(sp, res)
         res%n_trials = n
         res%from_record = all(rels%from_record)
         res%consistency = pool%consistency
@@ -940,12 +945,22 @@ contains
         res%u_i1_reproducibility = pool%u_reproducibility
         if (n == 1) then
             rows = rels(1)%own
+        else if (sp%n_sessions >= 2) then
+            ! the releases within the sessions, and the sessions' scatter: rows of their own
+            rows = [budget_row_t('releases', pool%mean, sp%u_within, 1.0_dp, sp%u_within, &
+                                 ROW_RELEASE), budget_row_t('u_I1_session', pool%mean, &
+                                 sp%u_session, 1.0_dp, sp%u_session, ROW_SESSION)]
         else
             rows = [budget_row_t('releases', pool%mean, pool%u_random, 1.0_dp, pool%u_random, &
                                  ROW_RELEASE)]
         end if
-        uc = [pool%u_random]
-        nuc = [pool%nu_random]
+        if (sp%n_sessions >= 2) then
+            uc = [sp%u_within, sp%u_session]
+            nuc = [sp%nu_within, sp%nu_session]
+        else
+            uc = [pool%u_random]
+            nuc = [pool%nu_random]
+        end if
         do j = 1, size(x)
             if (.not. (x(j)%u > 0.0_dp) .or. own_input(x(j), m%releases(kept(1))%own)) cycle
             cbar = 0.0_dp
@@ -1061,14 +1076,78 @@ contains
         do r = 1, n
             if (allocated(rels(r)%warnings)) res%warnings = [res%warnings, rels(r)%warnings]
         end do
-        if (trim(pool%consistency) == 'inconsistent') call add_warning(res%warnings, &
+        if (sp%n_sessions >= 2) then
+            call session_warnings(sp, res)
+        else if (trim(pool%consistency) == 'inconsistent') then
+            call add_warning(res%warnings, &
             'identify: the '//itoa(n)//' releases disagree beyond their own '// &
             'uncertainties (chi-square p = '//sci(pool%p_value, 2)//', Birge ratio '// &
             fixed(pool%birge, 2)//'): their scatter is in u_I1 (u_I1_reproducibility = '// &
             sci(pool%u_reproducibility, 2)//'); find what changed between releases')
+        end if
         call check_physical(d, rels, res, stat)
         end associate
     end subroutine combine
+
+    !> A release's session ('' : none given).
+    pure function session_of(rel) result(s)
+        type(release_t), intent(in) :: rel
+        character(len=64) :: s
+        s = ''
+        if (allocated(rel%session)) s = rel%session
+    end function session_of
+
+    !> The sessions' results of a pooling (module pooling) into the result: their number
+    !! (0 when no release names one), and with two or more each session's I1 and u, the
+    !! sessions' Birge ratio and p, the sessions' part of u_I1.
+    pure subroutine session_results(sp, res)
+        type(sessions_pooled_t), intent(in) :: sp
+        type(identify_result_t), intent(inout) :: res
+        integer :: s
+        res%n_sessions = 0
+        if (any(sp%label /= '')) res%n_sessions = sp%n_sessions
+        allocate (res%session_label(0), res%session_i1(0), res%session_u(0))
+        if (sp%n_sessions < 2) return
+        res%session_label = sp%label
+        res%session_i1 = [(sp%within(s)%mean, s=1, sp%n_sessions)]
+        res%session_u = [(sp%within(s)%u_random, s=1, sp%n_sessions)]
+        res%session_birge_ratio = sp%between%birge
+        res%session_p_value = sp%between%p_value
+        res%session_consistency = sp%between%consistency
+        res%u_i1_session = sp%u_session
+    end subroutine session_results
+
+    !> The warnings of releases pooled in sessions: the releases within the sessions that
+    !! disagree; the sessions that disagree, naming the one furthest from the others.
+    subroutine session_warnings(sp, res)
+        type(sessions_pooled_t), intent(in) :: sp
+        type(identify_result_t), intent(inout) :: res
+        character(len=:), allocatable :: who
+        if (trim(sp%pool%consistency) == 'inconsistent') call add_warning(res%warnings, &
+            'identify: the releases within their sessions disagree beyond their own '// &
+            'uncertainties (chi-square p = '//sci(sp%pool%p_value, 2)//', Birge ratio '// &
+            fixed(sp%pool%birge, 2)//'): their scatter is in u_I1 (the budget''s row '// &
+            'releases); find what changed between releases of a session')
+        if (trim(sp%between%consistency) /= 'inconsistent') return
+        who = ''
+        if (sp%outlier > 0) then
+            associate (s => sp%outlier)
+                who = '; session '//quoted(trim(sp%label(s)))//' (I1_session = '// &
+                    sci(sp%within(s)%mean, 5)//' +- '//sci(sp%within(s)%u_random, 2)//') is '// &
+                    fixed(sp%outlier_z, 1)//' u from the others'' mean'
+                if (sp%alone) then
+                    who = who//', which agree without it: find what was different in it'
+                else
+                    who = who//', the furthest; the others disagree too'
+                end if
+            end associate
+        end if
+        call add_warning(res%warnings, 'identify: the '//itoa(sp%n_sessions)//' sessions '// &
+            'disagree beyond their releases'' scatter (chi-square p = '// &
+            sci(sp%between%p_value, 2)//', session Birge ratio '//fixed(sp%between%birge, 2)// &
+            '): their scatter is in u_I1 (u_I1_session = '//sci(sp%u_session, 2)//', '// &
+            itoa(sp%n_sessions - 1)//' degrees of freedom)'//who)
+    end subroutine session_warnings
 
     !> What no rigid body or rig can give, refused (ERR_MODEL, exit 4) with the likely
     !! cause: at amplitudes up to 90 degrees an I1 more than 50 % from the classical
@@ -1239,7 +1318,7 @@ contains
                               res%residual_rms, res%p, res%u_p, res%u_i1_mc, res%k, &
                               res%u_i1_expanded, res%dof_eff, res%i1_total, res%u_i1_total, &
                               res%trial_i1, res%trial_u, res%budget%value, res%budget%u, &
-                              res%budget%sensitivity])) then
+                              res%budget%sensitivity, res%session_i1, res%session_u])) then
             call set_error(stat, ERR_NUMERIC, 'identify: a result is not finite')
             return
         end if
@@ -1290,6 +1369,20 @@ contains
         end if
         if (res%n_trials == 1 .and. any(res%trial_session /= '')) &
             call write_kv(u, 'session', trim(res%trial_session(1)), ios)
+        if (res%n_sessions > 0) call write_kv(u, 'n_sessions', res%n_sessions, ios)
+        if (res%n_sessions >= 2) then
+            if (res%session_birge_ratio >= 0.0_dp) then
+                call write_kv(u, 'session_birge_ratio', res%session_birge_ratio, ios)
+                call write_kv(u, 'session_p_value', res%session_p_value, ios)
+            end if
+            call write_kv(u, 'session_consistency', trim(res%session_consistency), ios)
+            call write_kv(u, 'u_I1_session', res%u_i1_session, ios)
+            do j = 1, res%n_sessions
+                call write_kv(u, 'session_label('//itoa(j)//')', trim(res%session_label(j)), ios)
+                call write_kv(u, 'I1_session('//itoa(j)//')', res%session_i1(j), ios)
+                call write_kv(u, 'u_I1_session('//itoa(j)//')', res%session_u(j), ios)
+            end do
+        end if
         call write_kv(u, 'consistency', trim(res%consistency), ios)
         call write_kv(u, 'u_I1_reproducibility', res%u_i1_reproducibility, ios)
         if (res%birge_ratio >= 0.0_dp) then
