@@ -731,6 +731,9 @@ contains
                 f%budget(j)%contribution = f%budget(j)%contribution*f%inflation
             end do
             call add_warning(r%warnings, period_misfit_warning(m, i, r, f))
+            ! the Birge ratio is the periods' scatter measured on the fit's dof: the period
+            ! rows take those degrees of freedom (Welch-Satterthwaite into k)
+            nu_per = real(max(1, f%dof), dp)
         end if
         r%i1 = f%i1
         r%iterations = f%iterations
