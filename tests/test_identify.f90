@@ -1023,7 +1023,7 @@ contains
         character(len=4), parameter :: dep(2) = ['0.05', '0.2 ']
         do k = 1, 2
             call write_text(SCR//'/tips.nml', "&scene analyses = 'identify' /"//NL// &
-                '&suspension b = 0.4, b_prime = 0.4, l = 1.2, l_prime = 1.2 /'//NL// &
+                '&suspension b = 0.4, b_prime = 0.4, l = 1.2, l_prime = 1.2, g = 9.80665 /'//NL// &
                 '&body mass = 3.1, inertia = 0.05, 0.063, 0.0304, cg_depth = -'// &
                 trim(dep(k))//' /'//NL//'&measurement periods = 1.4, 1.42, amplitudes '// &
                 '= 10, 30, u_period = 1e-3 /'//NL)
