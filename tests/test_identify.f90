@@ -960,7 +960,8 @@ contains
             call t%check('self-check: a 37 s period is flagged and U covers the truth', &
                          trim(word) == 'inconsistent' .and. abs(i1 - I1_TRUE) <= bigu)
         else
-            call t%check('self-check: a 37 s period is refused as input', st%code == ERR_DECK)
+            call t%check('self-check: a 37 s period is refused', st%code == ERR_DECK .or. &
+                         st%code == ERR_MODEL)
         end if
     contains
         subroutine one(name, periods)
