@@ -7,9 +7,9 @@
 !! the example decks, repeatable Monte Carlo, and bad input through the executable.
 module test_identify
     use kinds, only: dp, pi, deg
-    use status, only: status_t, ERR_DECK, ERR_NUMERIC
+    use status, only: status_t, ERR_DECK, ERR_NUMERIC, ERR_MODEL
     use testing, only: tester_t, write_text, exists, file_has, count_lines, scratch_dir, &
-                       empty_dir
+                       empty_dir, read_kv_text
     use deck, only: deck_t, read_deck
     use deck_runs, only: rig_of, start_of, accuracy_of, read_record
     use geometry, only: pendulum_t, pose_of
@@ -81,6 +81,12 @@ contains
             call test_examples(t, exe)
         if (t%want('identify: Monte Carlo of a record repeats with 1 and 2 threads')) &
             call test_mc_threads(t, exe)
+        if (t%want('identify: every fit checks itself: an outlier, a typo, a 37 s period')) &
+            call test_self_check(t)
+        if (t%want('identify: a record the model does not follow is refused')) &
+            call test_not_following(t)
+        if (t%want('identify: a body above the cables of a bifilar is refused')) &
+            call test_tips_over(t)
         if (t%want('identify: bad input is one line and no file')) &
             call test_bad_input(t, exe)
     end subroutine run_identify_tests
@@ -903,6 +909,144 @@ contains
             call t%check('bad input '//label//': no output file', empty_dir(dir))
         end subroutine one
     end subroutine test_bad_input
+
+    !> Periods that do not agree with their stated u: the laboratory deck's three periods
+    !! (u_period = 1e-4 s) with two more, 1.43 s at 10 and 1.7 s at 30 degrees (an outlier
+    !! pair), or one typed 1.54107 for 1.44107, or a 37 s period among eight of 1.4 s with
+    !! amplitudes up to 179.9 degrees: each gives fit_consistency = inconsistent, a Birge
+    !! ratio above 1, a warning, and U_I1 that covers the truth 0.0512 (or is refused).
+    subroutine test_self_check(t)
+        type(tester_t), intent(inout) :: t
+        type(deck_t) :: d
+        type(status_t) :: st
+        character(len=:), allocatable :: line
+        character(len=64) :: word
+        real(dp) :: per(8), bigu, i1, birge, nw, ui1, ui1_clean
+        real(dp), parameter :: a8(8) = [5.0_dp, 10.0_dp, 20.0_dp, 45.0_dp, 90.0_dp, &
+                                        120.0_dp, 150.0_dp, 179.9_dp]
+        logical :: found
+        integer :: k
+        character(len=*), parameter :: RIG = "&scene analyses = 'identify' /"//NL// &
+            '&suspension b = 0.40, b_prime = 0.40, l = 1.20, l_prime = 1.20, g = 9.80665 /'// &
+            NL//'&body mass = 3.10, inertia = 0.045, 0.0630, 0.0304, r = 0.25, '// &
+            'lambda = 0.6435011087932844 /'//NL
+        character(len=*), parameter :: US = 'u_mass = 0.001, u_l = 0.001, u_l_prime = '// &
+            '0.001, u_b = 0.0005, u_b_prime = 0.0005, u_period = 1e-4, u_amplitude = 0.5 /'//NL
+        call write_text(SCR//'/clean.nml', RIG//'&measurement periods = 1.41564, 1.44107, '// &
+            '1.52913, amplitudes = 10, 30, 60, '//US)
+        call run_deck(SCR//'/clean.nml', SCR, line, st)
+        call t%check('self-check: the clean periods run', st%code == 0)
+        call read_kv_text(SCR//'/clean.identify', 'fit_consistency', word)
+        call t%check('self-check: the clean periods are consistent', trim(word) == 'consistent')
+        call read_kv(SCR//'/clean.identify', 'u_I1', ui1_clean, found)
+        call one('outlier', 'periods = 1.41564, 1.44107, 1.52913, 1.43, 1.7, '// &
+                 'amplitudes = 10, 30, 60, 10, 30, ')
+        call one('typo', 'periods = 1.41564, 1.54107, 1.52913, amplitudes = 10, 30, 60, ')
+        call t%check('self-check: the typo''s u_I1 is inflated', ui1 > 3.0_dp*ui1_clean)
+        d = sym_rig()
+        do k = 1, 8
+            call torsion_period_s(rig_of(d), I1_TRUE, a8(k), per(k), st)
+        end do
+        per(3) = 37.0_dp
+        call write_text(SCR//'/p37.nml', "&scene analyses = 'identify' /"//NL// &
+            '&suspension b = 0.4, b_prime = 0.4, l = 1.2, l_prime = 1.2, g = 9.80665 /'//NL// &
+            '&body mass = 3.1, inertia = 0.05, 0.063, 0.0304, r = 0.25, '// &
+            'lambda = 0.6435011087932844 /'//NL//'&measurement periods = '// &
+            join(per)//', amplitudes = '//join(a8)//', u_period = 1e-3 /'//NL)
+        call run_deck(SCR//'/p37.nml', SCR, line, st)
+        if (st%code == 0) then
+            call read_kv_text(SCR//'/p37.identify', 'fit_consistency', word)
+            call read_kv(SCR//'/p37.identify', 'I1', i1, found)
+            call read_kv(SCR//'/p37.identify', 'U_I1', bigu, found)
+            call t%check('self-check: a 37 s period is flagged and U covers the truth', &
+                         trim(word) == 'inconsistent' .and. abs(i1 - I1_TRUE) <= bigu)
+        else
+            call t%check('self-check: a 37 s period is refused', st%code == ERR_DECK .or. &
+                         st%code == ERR_MODEL)
+        end if
+    contains
+        subroutine one(name, periods)
+            character(len=*), intent(in) :: name, periods
+            call write_text(SCR//'/'//name//'.nml', RIG//'&measurement '//periods//US)
+            call run_deck(SCR//'/'//name//'.nml', SCR, line, st)
+            call t%check('self-check: '//name//' runs', st%code == 0)
+            if (st%code /= 0) return
+            call read_kv_text(SCR//'/'//name//'.identify', 'fit_consistency', word)
+            call t%check('self-check: '//name//' is inconsistent', trim(word) == 'inconsistent')
+            call read_kv(SCR//'/'//name//'.identify', 'fit_birge_ratio', birge, found)
+            call t%check('self-check: '//name//' has a Birge ratio above 1', found .and. &
+                         birge > 1.0_dp)
+            call read_kv(SCR//'/'//name//'.identify', 'warnings', nw, found)
+            call t%check('self-check: '//name//' warns', found .and. nw >= 1.0_dp)
+            call read_kv(SCR//'/'//name//'.identify', 'I1', i1, found)
+            call read_kv(SCR//'/'//name//'.identify', 'u_I1', ui1, found)
+            call read_kv(SCR//'/'//name//'.identify', 'U_I1', bigu, found)
+            call t%check('self-check: '//name//': U_I1 covers the truth', &
+                         abs(i1 - I1_TRUE) <= bigu)
+        end subroutine one
+    end subroutine test_self_check
+
+    !> A damped record fitted with estimate = 'I1' alone: the model does not follow the
+    !! record (its decay), and the fit is refused (ERR_NUMERIC, exit 3) naming estimate.
+    subroutine test_not_following(t)
+        type(tester_t), intent(inout) :: t
+        type(deck_t) :: d
+        type(record_t) :: rec
+        type(identify_result_t) :: res
+        type(status_t) :: st
+        d = asym_rig()
+        d%damping%c_v = 20.0_dp*CV_TRUE
+        d%damping%c_q = 20.0_dp*CQ_TRUE
+        rec = synthetic(d, 12.0_dp, 50.0_dp, 1.0e-3_dp, 3, .false.)
+        d%damping%c_v = 0.0_dp
+        d%damping%c_q = 0.0_dp
+        d%measurement%estimate = 'I1'
+        call identify_record(d, rec, res, st)
+        call t%check('not following: refused with exit 3', st%code == ERR_NUMERIC)
+        call t%check('not following: the message names estimate first', &
+                     index(st%msg, 'does not follow') > 0 .and. index(st%msg, 'estimate') > 0 &
+                     .and. index(st%msg, 'estimate') < index(st%msg, 'record_units'))
+        if (st%code /= ERR_NUMERIC) write (*, '(a)') '   '//st%msg
+        d%damping%c_v = 20.0_dp*CV_TRUE
+        d%damping%c_q = 20.0_dp*CQ_TRUE
+        d%measurement%estimate = 'I1 c_v c_q'
+        call identify_record(d, rec, res, st)
+        call t%check('not following: the same record with the damping estimated runs', &
+                     st%code == 0)
+    end subroutine test_not_following
+
+    !> A bifilar whose mass centre is 0.05 or 0.2 m above CD tips over: refused with exit 4
+    !! and one line naming the platform of three or more cables.
+    subroutine test_tips_over(t)
+        type(tester_t), intent(inout) :: t
+        type(status_t) :: st
+        character(len=:), allocatable :: line
+        integer :: k
+        character(len=4), parameter :: dep(2) = ['0.05', '0.2 ']
+        do k = 1, 2
+            call write_text(SCR//'/tips.nml', "&scene analyses = 'identify' /"//NL// &
+                '&suspension b = 0.4, b_prime = 0.4, l = 1.2, l_prime = 1.2, g = 9.80665 /'//NL// &
+                '&body mass = 3.1, inertia = 0.05, 0.063, 0.0304, cg_depth = -'// &
+                trim(dep(k))//' /'//NL//'&measurement periods = 1.4, 1.42, amplitudes '// &
+                '= 10, 30, u_period = 1e-3 /'//NL)
+            call run_deck(SCR//'/tips.nml', SCR, line, st)
+            call t%check('tips over: '//trim(dep(k))//' m above CD on two cables is refused', &
+                         st%code == ERR_MODEL .and. index(st%msg, 'tips over') > 0 .and. &
+                         index(st%msg, 'three or more cables') > 0 .and. &
+                         index(st%msg, new_line('a')) == 0)
+            call t%check('tips over: no file', .not. exists(SCR//'/tips.identify'))
+        end do
+    end subroutine test_tips_over
+
+    function join(x) result(s)
+        real(dp), intent(in) :: x(:)
+        character(len=:), allocatable :: s
+        integer :: k
+        s = num(x(1))
+        do k = 2, size(x)
+            s = s//', '//num(x(k))
+        end do
+    end function join
 
     function num(x) result(s)
         real(dp), intent(in) :: x

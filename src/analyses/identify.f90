@@ -111,6 +111,11 @@ module identify
         real(dp) :: session_birge_ratio = -1.0_dp, session_p_value = -1.0_dp
         character(len=14) :: session_consistency = ''
         real(dp) :: u_i1_session = 0.0_dp
+        !> Each fit's self-check against its stated u (module estimator): 'consistent',
+        !! 'inconsistent' (chi^2's p < 0.05 in a release) or 'not tested' (u from the
+        !! scatter or the residuals); the largest Birge ratio of the fits tested (-1: none)
+        character(len=12) :: fit_consistency = 'not tested'
+        real(dp) :: fit_birge_ratio = -1.0_dp
         real(dp) :: u_i1_mc = -1.0_dp, mc_mean = 0.0_dp     !! Monte Carlo (when asked)
         real(dp) :: i1_linear = 0.0_dp, linear_error = 0.0_dp
         real(dp) :: period_linear = 0.0_dp      !! the period the linear formula used (s)

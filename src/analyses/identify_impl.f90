@@ -27,6 +27,8 @@ submodule (identify) identify_impl
     use inputs, only: input_t, set_input
     use pooling, only: pooled_t, pool_releases, sessions_pooled_t, pool_sessions
     use stats, only: coverage_factor, welch_satterthwaite, NU_INFINITE
+    use model_follow, only: follows_record, not_following_message
+    use tip_check, only: check_not_tipping
     use record_fit, only: record_fit_t, record_mc_task_t, fit_problem, fit_record, carry_inputs, &
         input_sensitivities, record_mc_task, explain_fit_failure, estimated_names, &
         correlation_time, fresh_jacobian, check_record_kind, PARAM_NAMES, P_BIAS
@@ -76,6 +78,9 @@ submodule (identify) identify_impl
         integer :: iterations = 0, evaluations = 0, samples = 0
         integer(int64) :: crc = 0               !! its record file's CRC-64
         type(warning_t), allocatable :: warnings(:)
+        !> The fit's self-check (periods with stated u): tested, consistent, Birge ratio
+        logical :: fit_tested = .false., fit_consistent = .true.
+        real(dp) :: fit_birge = 0.0_dp
     end type release_fit_t
 
     ! TRIANGLE_MARGIN: an I1 more than this factor above I2 + I3 (or below |I2 - I3| over
@@ -123,6 +128,7 @@ contains
             return
         end if
         call make_pendulum(rig_of(d), p, stat)
+        call check_not_tipping(rig_of(d), d%suspension%cables, stat)
         if (stat%code /= 0) return
         if (.not. d%measurement%estimated('I1')) then
             call set_error(stat, ERR_DECK, '&measurement estimate = '''// &
@@ -719,6 +725,23 @@ contains
         end if
         call period_budget(r%rg, acc, r%per, r%amps, u, f, stat, xp, r%u_each)
         if (stat%code /= 0) return
+        allocate (r%warnings(0))
+        r%fit_tested = f%tested
+        r%fit_consistent = f%consistent
+        r%fit_birge = f%birge
+        if (f%tested .and. .not. f%consistent) then
+            ! the periods scatter beyond their u: the period rows inflated by the Birge
+            ! ratio, so that u_I1 is not below what the residuals imply
+            do j = 1, size(f%budget)
+                if (f%budget(j)%kind /= ROW_TIMING) cycle
+                f%budget(j)%u = f%budget(j)%u*f%inflation
+                f%budget(j)%contribution = f%budget(j)%contribution*f%inflation
+            end do
+            call add_warning(r%warnings, period_misfit_warning(m, i, r, f))
+            ! the Birge ratio is the periods' scatter measured on the fit's dof: the period
+            ! rows take those degrees of freedom (Welch-Satterthwaite into k)
+            nu_per = real(max(1, f%dof), dp)
+        end if
         r%i1 = f%i1
         r%iterations = f%iterations
         r%residual_rms = f%residual_rms
@@ -747,6 +770,37 @@ contains
         r%p(1) = r%i1
     end subroutine release_periods
 
+    !> The warning of periods that do not agree with their u: chi^2 on its dof, p, the
+    !! Birge ratio, the period with the largest normalised residual and the likely cause.
+    function period_misfit_warning(m, i, r, f) result(msg)
+        type(measurement_t), intent(in) :: m
+        integer, intent(in) :: i                !! the release
+        type(release_fit_t), intent(in) :: r
+        type(period_fit_t), intent(in) :: f
+        character(len=:), allocatable :: msg
+        character(len=:), allocatable :: cause, where
+        integer :: k
+        real(dp) :: dt
+        k = max(1, f%worst)
+        dt = r%per(k) - f%model_periods(k)
+        if (abs(dt) > 0.2_dp*f%model_periods(k)) then
+            cause = 'a period in other units or of another motion (a swing, a half period), '// &
+                'or an amplitude far from the one timed'
+        else if (abs(dt) > 1.0e-3_dp*f%model_periods(k)) then
+            cause = 'a mistyped period, a miscounted cycle or a wrong amplitude'
+        else
+            cause = 'u_period below the timing''s real scatter'
+        end if
+        where = trim(m%named(i))
+        if (len(where) > 0) where = ' of '//where
+        msg = 'identify: the periods'//where//' do not agree with their u (chi^2 = '// &
+            sci(f%chi2, 3)//' on '//itoa(f%dof)//' dof, p = '//sci(f%p_value, 2)// &
+            ', Birge ratio '//sci(f%birge, 3)//'): period('//itoa(k)//') = '// &
+            sci(r%per(k), 6)//' s at '//fixed(r%amps(k), 2)//' deg is '// &
+            sci(abs(f%z_worst), 2)//' u from the model''s '//sci(f%model_periods(k), 6)// &
+            ' s; likely '//cause//'; the period rows of u_I1 are inflated by the Birge ratio'
+    end function period_misfit_warning
+
     !> One release recorded: the fit (the estimator on growing windows; with loss = 'huber',
     !! its robust loss: reweighted three times), the covariance C = s^2 tau (J^T W J)^-1 (s^2
     !! the residuals' mean square, not below 1 when the record states each sample's u; tau
@@ -768,9 +822,10 @@ contains
         real(dp), allocatable :: nu_rows(:)
         type(budget_row_t), allocatable :: rows(:)
         type(lsq_options_t) :: opts        ! the fit's default tolerances
-        real(dp) :: s2, se, emean, gain
-        integer :: m, np, j, ih, i0, nout
-        character(len=:), allocatable :: umsg
+        real(dp) :: s2, se, emean, gain, ratio, rho
+        integer :: m, np, j, ih, i0, nout, lag
+        character(len=:), allocatable :: umsg, missing
+        logical :: follows
         r%from_record = .true.
         r%rg = rg
         r%rec = rec
@@ -877,6 +932,23 @@ contains
         e = fit%r/(prob%w(i0:prob%nuse)*prob%hw(i0:prob%nuse))
         r%residual_rms = sqrt(sum(e**2)/m)
         r%model = e + rec%v(i0:prob%nuse)
+        ! the model must follow the record (module model_follow): else refused, the
+        ! likely causes named
+        r%period_linear = mean_period(rec, i0)
+        lag = 0
+        if (r%period_linear > 0.0_dp .and. m > 1) lag = nint(r%period_linear* &
+            (m - 1)/(rec%t(prob%nuse) - rec%t(i0)))
+        call follows_record(rec%v(i0:prob%nuse), e*prob%hw(i0:prob%nuse), lag, follows, &
+                            ratio, rho)
+        if (.not. follows) then
+            missing = ''
+            do j = 2, size(PARAM_NAMES)
+                if (.not. mea%estimated(PARAM_NAMES(j))) missing = missing//' '//trim(PARAM_NAMES(j))
+            end do
+            call set_error(stat, ERR_NUMERIC, not_following_message(ratio, rho, lag, &
+                                                                    adjustl(missing)))
+            return
+        end if
         allocate (r%warnings(0))
         if (.not. mea%estimated('bias')) then
             ! an offset the fit does not model shows as a mean of the residuals
@@ -939,6 +1011,12 @@ contains
         res%n_trials = n
         res%from_record = all(rels%from_record)
         res%consistency = pool%consistency
+        if (any(rels%fit_tested)) then
+            res%fit_consistency = 'consistent'
+            if (any(rels%fit_tested .and. .not. rels%fit_consistent)) &
+                res%fit_consistency = 'inconsistent'
+            res%fit_birge_ratio = maxval(rels%fit_birge, mask=rels%fit_tested)
+        end if
         res%birge_ratio = pool%birge
         res%p_value = pool%p_value
         res%u_i1_random = pool%u_random
@@ -1389,6 +1467,9 @@ contains
             call write_kv(u, 'birge_ratio', res%birge_ratio, ios)
             call write_kv(u, 'consistency_p_value', res%p_value, ios)
         end if
+        call write_kv(u, 'fit_consistency', trim(res%fit_consistency), ios)
+        if (res%fit_birge_ratio >= 0.0_dp) call write_kv(u, 'fit_birge_ratio', &
+                                                         res%fit_birge_ratio, ios)
         call write_kv(u, 'period_model', trim(res%period_model), ios)
         call write_kv(u, 'residual_rms', res%residual_rms, ios)
         call write_kv(u, 'iterations', res%iterations, ios)

@@ -87,6 +87,14 @@ module period_inversion
         integer :: iterations = 0               !! Gauss-Newton iterations
         real(dp), allocatable :: model_periods(:)   !! T_i(I1) (s)
         type(budget_row_t), allocatable :: budget(:)
+        !> The self-check of the estimator (periods with stated u): tested (the u stated),
+        !! consistent (chi^2's p >= 0.05), chi^2, dof, p, the Birge ratio, inflation =
+        !! max(1, Birge) when inconsistent (else 1), worst: the period with the largest
+        !! normalised residual, z_worst that residual over its u.
+        logical :: tested = .false., consistent = .true.
+        real(dp) :: chi2 = 0.0_dp, p_value = 1.0_dp, birge = 0.0_dp, inflation = 1.0_dp
+        real(dp) :: z_worst = 0.0_dp
+        integer :: dof = 0, worst = 0
     end type period_fit_t
 
     public :: input_u_t, budget_row_t
@@ -376,10 +384,25 @@ contains
         opts%fail_on_error = sym
         opts%lower = [ilo]
         opts%names = [character(len=16) :: 'I1']
+        ! the self-check (the estimator's): tested when each period's u is stated
+        opts%covariance = any(up > 0.0_dp) .or. amp_w
+        opts%u_stated = .true.
+        if (present(timing_weights)) opts%u_stated = .not. timing_weights
         call estimate(prob, [i1], opts, res, stat)
         fit%iterations = res%jacobians
         if (res%converged) then
             fit%i1 = res%p(1)
+            fit%tested = opts%covariance .and. opts%u_stated .and. res%dof > 0
+            fit%dof = res%dof
+            fit%chi2 = res%cost
+            fit%birge = res%birge
+            if (fit%tested) then
+                fit%p_value = res%p_value
+                fit%consistent = res%consistent
+                fit%inflation = res%inflation
+                fit%worst = res%worst
+                if (fit%worst > 0) fit%z_worst = res%r(fit%worst)
+            end if
             ! the model's periods at the estimate (the last evaluation may be a step refused)
             if (.not. (prob%i1_last == fit%i1)) call prob%residual(res%p, w, stat)
             if (stat%code /= 0) return
