@@ -5,7 +5,7 @@ submodule (identify) identify_impl
     use, intrinsic :: iso_fortran_env, only: int64
     use kinds, only: pi
     use status, only: set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC, ERR_MODEL
-    use text, only: itoa, sci, fixed, count_words, quoted
+    use text, only: itoa, sci, fixed, count_words, quoted, rshort
     use deck, only: deck_echo, TAU_END_MAX
     use output_io, only: write_kv, all_finite
     use fast_format, only: es_field
@@ -136,7 +136,7 @@ contains
             return
         end if
         call read_releases(d%measurement, rig_of(d), start_of(d), d%suspension%cables, &
-                           deck_inputs(d, .true.), m, stat)
+                           deck_inputs(d, .true.), m, stat, d%start%gave('amplitude'))
         if (stat%code /= 0) return
         total = 0.0_dp
         first_what = ''
@@ -578,7 +578,7 @@ contains
         type(measurement_t) :: m
         stat%code = 0
         call read_releases(d%measurement, rig_of(d), start_of(d), d%suspension%cables, &
-                           deck_inputs(d, .true.), m, stat)
+                           deck_inputs(d, .true.), m, stat, d%start%gave('amplitude'))
         if (stat%code /= 0) return
         call release_record(d, d%measurement, rig_of(d), rec, m%inputs, m%inputs, &
                             m%releases(1)%own, rels(1), stat)
@@ -951,6 +951,15 @@ contains
                 nuc = [nuc, NU_INFINITE]
             end associate
         end do
+        ! a tare at or above all that hung: no body left to measure
+        if (size(m%tares) > 0 .and. .not. (res%i1 > 0.0_dp)) then
+            call set_error(stat, ERR_DECK, '&measurement '//tare_words(m)//': not below '// &
+                'I1 = '//sci(res%i1_total, 4)//', what the rig measured of all that hung '// &
+                '(the body''s I1 would be '//sci(res%i1, 4)//'); allowed: tare_I1 + '// &
+                'added_inertia < the I1 of all that hung; likely: the tare in other units '// &
+                'of mass or length than the deck''s, or measured on another rig')
+            return
+        end if
         res%u_i1 = sqrt(sum(uc**2))
         res%budget = rows
         ! no u of any input, no scatter, no record: u_I1 = 0 means nothing was given
@@ -1046,9 +1055,26 @@ contains
             'uncertainties (chi-square p = '//sci(pool%p_value, 2)//', Birge ratio '// &
             fixed(pool%birge, 2)//'): their scatter is in u_I1 (u_I1_reproducibility = '// &
             sci(pool%u_reproducibility, 2)//'); find what changed between releases')
+        if (size(m%tares) > 0 .and. res%i1 < 0.1_dp*res%i1_total) call add_warning( &
+            res%warnings, 'identify: the body''s I1 = '//sci(res%i1, 4)//' is '// &
+            fixed(100.0_dp*res%i1/res%i1_total, 1)//' % of all that hung ('// &
+            sci(res%i1_total, 4)//'), the rest the tare ('//tare_words(m)//'): its u '// &
+            'comes mostly from the tare''s and from the timings of all that hung')
         call check_physical(d, rels, res, stat)
         end associate
     end subroutine combine
+
+    !> The tares of m in words: tare_I1 = X, added_inertia = Y (those given).
+    function tare_words(m) result(s)
+        type(measurement_t), intent(in) :: m
+        character(len=:), allocatable :: s
+        integer :: k
+        s = ''
+        do k = 1, size(m%tares)
+            if (k > 1) s = s//', '
+            s = s//trim(m%tares(k)%name)//' = '//rshort(m%tares(k)%value)
+        end do
+    end function tare_words
 
     !> What no rigid body or rig can give, refused (ERR_MODEL, exit 4) with the likely
     !! cause: at amplitudes up to 90 degrees an I1 more than 50 % from the classical
