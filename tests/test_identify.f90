@@ -939,7 +939,7 @@ contains
             head = '&scene analyses = ''identify'' /'//NL//'&suspension b = '// &
                 num(rg(1, ib))//', b_prime = '//num(rg(2, ib))//', l = '//num(rg(3, ib))// &
                 ', l_prime = '//num(rg(4, ib))//', g = 9.81 /'//NL//'&body mass = '// &
-                num(rg(5, ib))//' /'//NL
+                num(rg(5, ib))//', cg_depth = 0, cg_offset = 0 /'//NL
             do ka = 1, 3
                 path = SCR//'/range_'//trim(nm(ib))//'_'//itoa(nint(amps(ka)))//'.nml'
                 call write_text(path, head)
