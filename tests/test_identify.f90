@@ -87,6 +87,8 @@ contains
             call test_not_following(t)
         if (t%want('identify: a body above the cables of a bifilar is refused')) &
             call test_tips_over(t)
+        if (t%want('identify: exact periods of bodies across the range are never refused')) &
+            call test_range(t, exe)
         if (t%want('identify: bad input is one line and no file')) &
             call test_bad_input(t, exe)
     end subroutine run_identify_tests
@@ -1047,6 +1049,71 @@ contains
             s = s//', '//num(x(k))
         end do
     end function join
+    !> Bodies across the range a deck allows, each with the exact period of the model at
+    !! its I1 (10, 45 and 80 degrees; the full model on unequal cables), without &body
+    !! inertia: identify gives I1 back (1e-5) with exit 0, never a refusal.  Compact
+    !! (radius of gyration below b_prime/2, where the classical formula is off by tens of
+    !! %), slender, flat, long and short cables, b /= b_prime, unequal cables.
+    subroutine test_range(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        integer, parameter :: NB = 8
+        character(len=12), parameter :: nm(NB) = [character(len=12) :: 'compact', &
+            'slender', 'flat', 'long_cables', 'short_cables', 'b_ne_bprime', 'unequal', &
+            'tiny_gyr']
+        ! b, b_prime, l, l_prime, mass, I1
+        real(dp), parameter :: rg(6, NB) = reshape([ &
+            0.3_dp, 0.3_dp, 0.3_dp, 0.3_dp, 1.0_dp, 0.002_dp, &
+            0.8_dp, 0.8_dp, 1.0_dp, 1.0_dp, 2.0_dp, 0.6_dp, &
+            0.4_dp, 0.4_dp, 1.5_dp, 1.5_dp, 1.5_dp, 0.05_dp, &
+            0.2_dp, 0.2_dp, 4.0_dp, 4.0_dp, 1.0_dp, 0.01_dp, &
+            0.15_dp, 0.15_dp, 0.15_dp, 0.15_dp, 1.0_dp, 0.01_dp, &
+            0.6_dp, 0.3_dp, 1.0_dp, 1.0_dp, 1.0_dp, 0.02_dp, &
+            0.4_dp, 0.4_dp, 1.2_dp, 1.0_dp, 3.1_dp, 0.0512_dp, &
+            0.5_dp, 0.5_dp, 0.5_dp, 0.5_dp, 1.0_dp, 0.0005_dp], [6, NB])
+        real(dp), parameter :: amps(3) = [10.0_dp, 45.0_dp, 80.0_dp]
+        type(deck_t) :: d
+        type(status_t) :: st
+        character(len=:), allocatable :: head, path, out
+        real(dp) :: per, i1
+        logical :: found
+        integer :: ib, ka, ex
+        out = SCR//'/range_out'
+        do ib = 1, NB
+            head = '&scene analyses = ''identify'' /'//NL//'&suspension b = '// &
+                num(rg(1, ib))//', b_prime = '//num(rg(2, ib))//', l = '//num(rg(3, ib))// &
+                ', l_prime = '//num(rg(4, ib))//', g = 9.81 /'//NL//'&body mass = '// &
+                num(rg(5, ib))//', cg_depth = 0, cg_offset = 0 /'//NL
+            do ka = 1, 3
+                path = SCR//'/range_'//trim(nm(ib))//'_'//itoa(nint(amps(ka)))//'.nml'
+                call write_text(path, head)
+                call read_deck(path, d, st)
+                if (st%code == 0) then
+                    if (rg(3, ib) == rg(4, ib)) then
+                        call torsion_period_s(rig_of(d), rg(6, ib), amps(ka), per, st)
+                    else
+                        call simulated_period_s(rig_of(d), accuracy_of(d), rg(6, ib), &
+                                                amps(ka), per, st)
+                    end if
+                end if
+                call t%check('range: '//trim(nm(ib))//' at '//itoa(nint(amps(ka)))// &
+                             ' deg: the model''s period', st%code == 0)
+                if (st%code /= 0) cycle
+                call write_text(path, head//'&measurement periods = '//num(per)// &
+                                ', amplitudes = '//num(amps(ka))//' /'//NL)
+                call execute_command_line('rm -rf '//out)
+                call execute_command_line(exe//' '//path//' --out '//out//' > '//SCR// &
+                                          '/range.stdout 2> '//SCR//'/range.stderr', &
+                                          exitstat=ex)
+                i1 = -1.0_dp
+                call read_kv(out//'/range_'//trim(nm(ib))//'_'//itoa(nint(amps(ka)))// &
+                             '.identify', 'I1', i1, found)
+                call t%check('range: '//trim(nm(ib))//' at '//itoa(nint(amps(ka)))// &
+                             ' deg: exit 0, I1 back to 1e-5 (exit '//itoa(ex)//')', &
+                             ex == 0 .and. found .and. abs(i1/rg(6, ib) - 1.0_dp) < 1.0e-5_dp)
+            end do
+        end do
+    end subroutine test_range
 
     function num(x) result(s)
         real(dp), intent(in) :: x

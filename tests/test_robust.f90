@@ -56,6 +56,8 @@ contains
             call test_slow(t, exe)
         if (t%want('robust: the audit''s long decks end, refuse at once or say so')) &
             call test_audit_long(t, exe)
+        if (t%want('robust: measurement mistakes refused with their cause, no file left')) &
+            call test_measure_mistakes(t, exe)
         if (t%want('robust: progress on a terminal only')) call test_progress(t, exe)
         if (t%want('robust: the report shows every figure')) call test_report(t, exe)
         call run_platform_refusal_tests(t, exe)
@@ -737,6 +739,48 @@ contains
                      'bifilar: note: '//d//'/p100.nml: identify: about ', .true.) == 1, &
                      file_has(d//'/stderr', '100 periods of the full model')]))
     end subroutine test_audit_long
+
+    !> Measurement mistakes that printed a wrong number with exit 0, each refused with one
+    !! line naming its cause and no file left: a tare above all that hung; a table of
+    !! periods without its column amplitude (and no &start amplitude); ten-swing totals
+    !! typed as periods without &body inertia (a classical I1 above m (l^2 + b^2)); an
+    !! amplitude of 1e-300 deg on unequal cables (it trapped the checking build).
+    subroutine test_measure_mistakes(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=:), allocatable :: d, o, x
+        d = SCR//'/mistakes'
+        o = d//'/o'
+        call fresh_dir(d)
+        x = abs_path(exe)
+        call mistake('tare', "-e 's/u_cg_depth = 0.005/u_cg_depth = 0.005, tare_I1 = 0.05/'", &
+                     'input/measure_template.nml', 2, '&measurement tare_I1 = 0.05: not below')
+        call mistake('added', "-e 's/u_cg_depth = 0.005/u_cg_depth = 0.005, added_inertia"// &
+                     " = 0.03/'", 'input/measure_template.nml', 2, 'added_inertia = 0.03')
+        call execute_command_line("awk -F, '/^#/{print;next}{NF=5;print}' OFS=, "// &
+            'input/identify_trials.csv > '//d//'/noamp.csv')
+        call mistake('noamp', "-e 's#identify_trials.csv#"//abs_path(d)//"/noamp.csv#'", &
+                     'input/identify_trials.nml', 2, 'no column amplitude')
+        call mistake('tenswing', "-e 's/, cycles = 10//' -e 's/inertia = 0.02, 0.0118, "// &
+                     "0.0121,//'", 'input/measure_template.nml', 4, 'cycles = N')
+        call mistake('amp1e-300', "-e 's/l_prime = 1.0/l_prime = 1.2/' -e 's/amplitudes = "// &
+                     "8, 8, 8/amplitudes = 1e-300, 1e-300, 1e-300/'", &
+                     'input/measure_template.nml', 2, 'amplitudes(1) = 1e-300')
+    contains
+        subroutine mistake(nm, sed, base, want, word)
+            character(len=*), intent(in) :: nm, sed, base, word
+            integer, intent(in) :: want
+            integer :: e
+            call fresh_dir(o)
+            call execute_command_line('sed '//sed//' '//base//' > '//d//'/'//nm//'.nml')
+            e = run('timeout 60 '//x//' '//d//'/'//nm//'.nml --out '//o, d)
+            call t%check('mistakes: '//nm//': exit '//itoa(e)//' (want '//itoa(want)// &
+                         '), one line saying "'//word//'", no file', all([e == want, &
+                         count_lines(d//'/stderr') == 1, file_has(d//'/stderr', word), &
+                         count_lines(d//'/stderr', 'bifilar: error (', .true.) == 1, &
+                         empty_dir(o)]))
+        end subroutine mistake
+    end subroutine test_measure_mistakes
 
     !> A deck made by sed from base: exit status want and one line holding word.
     subroutine audit_refused(t, d, o, x, nm, sed, base, want, word)

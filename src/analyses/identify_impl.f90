@@ -5,7 +5,7 @@ submodule (identify) identify_impl
     use, intrinsic :: iso_fortran_env, only: int64
     use kinds, only: pi
     use status, only: set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC, ERR_MODEL
-    use text, only: itoa, sci, fixed, count_words, quoted
+    use text, only: itoa, sci, fixed, count_words, quoted, rshort
     use deck, only: deck_echo, TAU_END_MAX
     use output_io, only: write_kv, all_finite
     use fast_format, only: es_field
@@ -40,7 +40,7 @@ submodule (identify) identify_impl
     use monte_carlo, only: monte_carlo_run
     use work_estimate, only: check_timings, check_record_times, periods_runs, record_runs, &
         work_note, reference_periods, record_swing_period, check_fitted_amplitude, &
-        CAUSES_HIGH, CAUSES_LOW, TRIANGLE_MARGIN, LINEAR_GAP_MAX
+        CAUSES_HIGH, CAUSES_LOW, TRIANGLE_MARGIN
     use unused_arg, only: unused
     use analysis_base, only: ranks_note, resume_note
     implicit none
@@ -84,10 +84,9 @@ submodule (identify) identify_impl
     end type release_fit_t
 
     ! TRIANGLE_MARGIN: an I1 more than this factor above I2 + I3 (or below |I2 - I3| over
-    ! it) is refused; LINEAR_GAP_MAX: at amplitudes up to 90 degrees, an I1 further than this
-    ! from the classical formula's is refused (the amplitude correction is 1.3 % at 30
-    ! degrees, 20 % at 90).  Both from module work_estimate, which checks them on the
-    ! classical I1 before the work.
+    ! it) is refused (module work_estimate, which checks it on the classical I1 before the
+    ! work).  The classical I1 is compared with what the model gives for the rig at the
+    ! fitted I1 (check_linear_gap).
 
 contains
 
@@ -144,7 +143,7 @@ contains
             return
         end if
         call read_releases(d%measurement, rig_of(d), start_of(d), d%suspension%cables, &
-                           deck_inputs(d, .true.), m, stat)
+                           deck_inputs(d, .true.), m, stat, d%start%gave('amplitude'))
         if (stat%code /= 0) return
         total = 0.0_dp
         first_what = ''
@@ -591,7 +590,7 @@ contains
         type(measurement_t) :: m
         stat%code = 0
         call read_releases(d%measurement, rig_of(d), start_of(d), d%suspension%cables, &
-                           deck_inputs(d, .true.), m, stat)
+                           deck_inputs(d, .true.), m, stat, d%start%gave('amplitude'))
         if (stat%code /= 0) return
         call release_record(d, d%measurement, rig_of(d), rec, m%inputs, m%inputs, &
                             m%releases(1)%own, rels(1), stat)
@@ -1064,6 +1063,15 @@ contains
                 nuc = [nuc, NU_INFINITE]
             end associate
         end do
+        ! a tare at or above all that hung: no body left to measure
+        if (size(m%tares) > 0 .and. .not. (res%i1 > 0.0_dp)) then
+            call set_error(stat, ERR_DECK, '&measurement '//tare_words(m)//': not below '// &
+                'I1 = '//sci(res%i1_total, 4)//', what the rig measured of all that hung '// &
+                '(the body''s I1 would be '//sci(res%i1, 4)//'); allowed: tare_I1 + '// &
+                'added_inertia < the I1 of all that hung; likely: the tare in other units '// &
+                'of mass or length than the deck''s, or measured on another rig')
+            return
+        end if
         res%u_i1 = sqrt(sum(uc**2))
         res%budget = rows
         ! no u of any input, no scatter, no record: u_I1 = 0 means nothing was given
@@ -1163,6 +1171,11 @@ contains
             fixed(pool%birge, 2)//'): their scatter is in u_I1 (u_I1_reproducibility = '// &
             sci(pool%u_reproducibility, 2)//'); find what changed between releases')
         end if
+        if (size(m%tares) > 0 .and. res%i1 < 0.1_dp*res%i1_total) call add_warning( &
+            res%warnings, 'identify: the body''s I1 = '//sci(res%i1, 4)//' is '// &
+            fixed(100.0_dp*res%i1/res%i1_total, 1)//' % of all that hung ('// &
+            sci(res%i1_total, 4)//'), the rest the tare ('//tare_words(m)//'): its u '// &
+            'comes mostly from the tare''s and from the timings of all that hung')
         call check_physical(d, rels, res, stat)
         end associate
     end subroutine combine
@@ -1226,10 +1239,72 @@ contains
             '): their scatter is in u_I1 (u_I1_session = '//sci(sp%u_session, 2)//', '// &
             itoa(sp%n_sessions - 1)//' degrees of freedom)'//who)
     end subroutine session_warnings
+    !> A release's classical I1 (from its mean period at its smallest amplitude) against
+    !! what the model itself gives there for this rig: the classical formula applied to the
+    !! model's periods at the fitted I1 (periods: at that amplitude; a record, whose swing
+    !! decays: from 1 degree, or less, up to its release amplitude).  Two-sided; refused
+    !! (ERR_MODEL) only beyond LINEAR_GAP_TOL plus six times the mean period's relative u
+    !! (twice, in I1), where no timing or record of this rig can be.
+    subroutine check_linear_gap(d, r, stat)
+        type(deck_t), intent(in) :: d
+        type(release_fit_t), intent(in) :: r
+        type(status_t), intent(inout) :: stat
+        real(dp), parameter :: LINEAR_GAP_TOL = 0.05_dp
+        real(dp) :: lo, hi, tol, tm, um, t1, t2, amin
+        logical, allocatable :: sel(:)
+        type(status_t) :: st
+        character(len=:), allocatable :: span
+        if (.not. (r%i1_linear > 0.0_dp) .or. .not. (r%i1 > 0.0_dp)) return
+        tol = LINEAR_GAP_TOL
+        if (.not. r%from_record) then
+            if (.not. allocated(r%model_periods) .or. .not. allocated(r%amps)) return
+            if (size(r%model_periods) /= size(r%amps)) return
+            amin = minval(r%amps)
+            sel = r%amps <= amin*(1.0_dp + 1.0e-9_dp)
+            tm = sum(r%model_periods, sel)/count(sel)
+            lo = linear_inertia(r%rg, tm)
+            hi = lo
+            if (allocated(r%u_each)) then
+                if (size(r%u_each) == size(r%amps)) then
+                    um = sqrt(sum(r%u_each**2, mask=sel))/count(sel)
+                    tol = tol + 12.0_dp*um/tm
+                end if
+            end if
+        else
+            call rig_period_s(r%rg, accuracy_of(d), r%i1, min(1.0_dp, r%amp_max), t1, st)
+            if (st%code /= 0) return
+            call rig_period_s(r%rg, accuracy_of(d), r%i1, r%amp_max, t2, st)
+            if (st%code /= 0) return
+            lo = linear_inertia(r%rg, min(t1, t2))
+            hi = linear_inertia(r%rg, max(t1, t2))
+            tol = 2.0_dp*LINEAR_GAP_TOL
+        end if
+        if (r%i1_linear >= lo*(1.0_dp - tol) .and. r%i1_linear <= hi*(1.0_dp + tol)) return
+        span = sci(lo, 4)
+        if (hi > lo) span = span//' to '//sci(hi, 4)
+        call set_error(stat, ERR_MODEL, 'identify: the classical formula gives I1 = '// &
+            sci(r%i1_linear, 4)//' (mean period '//sci(r%period_linear, 5)//' s), where '// &
+            'the model with its I1 = '//sci(r%i1, 4)//' gives it '//span// &
+            ' on this rig: the periods do not follow the model''s own amplitude correction '// &
+            'beyond '//itoa(nint(100.0_dp*tol))//' %; check the record''s units (t in s, '// &
+            'record_units), the lengths and the release (&start amplitude, amplitudes)')
+    end subroutine check_linear_gap
+
+    !> The tares of m in words: tare_I1 = X, added_inertia = Y (those given).
+    function tare_words(m) result(s)
+        type(measurement_t), intent(in) :: m
+        character(len=:), allocatable :: s
+        integer :: k
+        s = ''
+        do k = 1, size(m%tares)
+            if (k > 1) s = s//', '
+            s = s//trim(m%tares(k)%name)//' = '//rshort(m%tares(k)%value)
+        end do
+    end function tare_words
 
     !> What no rigid body or rig can give, refused (ERR_MODEL, exit 4) with the likely
-    !! cause: at amplitudes up to 90 degrees an I1 more than 50 % from the classical
-    !! formula's; an I1 of all that hung more than 10 % above I2 + I3 (the deck's), or
+    !! cause: a release's classical I1 off what the model gives for its rig (check_linear_gap);
+    !! an I1 of all that hung more than 10 % above I2 + I3 (the deck's), or
     !! 10 % below |I2 - I3|, when the deck gives inertia.  Within those margins of the
     !! triangle inequality (a lamina has I1 = I2 + I3): a warning.
     subroutine check_physical(d, rels, res, stat)
@@ -1238,18 +1313,12 @@ contains
         type(identify_result_t), intent(inout) :: res
         type(status_t), intent(inout) :: stat
         real(dp) :: s23, d23, i1
+        integer :: r
         i1 = res%i1_total
-        if (maxval(rels%amp_max) <= 90.0_dp .and. res%i1_linear > 0.0_dp) then
-            if (abs(i1/res%i1_linear - 1.0_dp) > LINEAR_GAP_MAX) then
-                call set_error(stat, ERR_MODEL, 'identify: I1 = '//sci(i1, 4)//' from the '// &
-                    'model is '//itoa(nint(100.0_dp*abs(i1/res%i1_linear - 1.0_dp)))//' % from '// &
-                    'the classical formula''s '//sci(res%i1_linear, 4)//' (period '// &
-                    sci(res%period_linear, 5)//' s), at amplitudes up to 90 deg, where they '// &
-                    'differ by 20 % at most: check the record''s units (t in s, '// &
-                    'record_units), the lengths and the release (&start)')
-                return
-            end if
-        end if
+        do r = 1, size(rels)
+            call check_linear_gap(d, rels(r), stat)
+            if (stat%code /= 0) return
+        end do
         if (.not. d%body%gave('inertia')) return
         s23 = d%body%inertia(2) + d%body%inertia(3)
         d23 = abs(d%body%inertia(2) - d%body%inertia(3))

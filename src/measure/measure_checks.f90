@@ -67,9 +67,11 @@ contains
             nm = 'amplitudes('//itoa(i)//')'
             call finite(stat, 'measurement', trim(nm), self%amplitudes(i))
             if (stat%code /= STATUS_OK) return
-            if (self%amplitudes(i) <= 0.0_dp .or. self%amplitudes(i) >= 180.0_dp) then
+            if (self%amplitudes(i) < AMPLITUDE_MIN .or. self%amplitudes(i) >= 180.0_dp) then
                 call bad(stat, 'measurement', trim(nm), rshort(self%amplitudes(i)), &
-                         'out of range', '0 < amplitude < 180 (degrees of theta4 at the peak)')
+                         'out of range', rshort(AMPLITUDE_MIN)//' <= amplitude < 180 '// &
+                         '(degrees of theta4 at the peak; smaller swings the model does '// &
+                         'not resolve)')
                 return
             end if
         end do

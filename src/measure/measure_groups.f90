@@ -19,6 +19,9 @@ module measure_groups
     integer, parameter, public :: MAX_PERIODS = 100
     !> The value of an element of periods, amplitudes, cycles the deck did not give.
     real(dp), parameter, public :: PERIOD_UNSET = -huge(1.0_dp)
+    !> The smallest amplitude (degrees) of a timed period the model resolves: below it the
+    !! swing is lost in the integration's own error (the Floquet analyses' bound).
+    real(dp), parameter, public :: AMPLITUDE_MIN = 1.0e-6_dp
     !> Words allowed in &measurement estimate: the parameters a record fit can estimate.
     character(len=*), parameter, public :: ESTIMATES_ALLOWED = 'I1 c_v c_q amplitude t0 bias'
     !> Words allowed in &measurement record_units (each implies the quantity).

@@ -48,7 +48,7 @@ module measurement_read
     use text, only: itoa, rshort, rlist_short, quoted, lower
     use deck_base, only: record_in_folder
     use rig_groups, only: suspension_group_t, body_group_t
-    use measure_groups, only: measurement_group_t, tensor_group_t, check_estimate
+    use measure_groups, only: measurement_group_t, tensor_group_t, check_estimate, AMPLITUDE_MIN
     use rig, only: rig_t, start_t
     use budget, only: input_t
     use inputs, only: set_input
@@ -89,8 +89,10 @@ contains
     !> identify's measurement: the table of releases (&measurement trials) when given, else
     !! the deck's one release (its periods, each the total of cycles(i) cycles with
     !! u_period each, or its record); the common inputs x with their u; the tares.
-    !! ERR_DECK naming the table, its line and column.
-    subroutine read_releases(mea, rg, st, cables, x, m, stat)
+    !! ERR_DECK naming the table, its line and column.  amplitude_given: the deck gives
+    !! the release amplitude (&start amplitude); without it a table of periods needs its
+    !! column amplitude (absent: .true.).
+    subroutine read_releases(mea, rg, st, cables, x, m, stat, amplitude_given)
         type(measurement_group_t), intent(in) :: mea    !! the deck's &measurement
         type(rig_t), intent(in) :: rg           !! the deck's rig
         type(start_t), intent(in) :: st         !! the deck's start
@@ -98,13 +100,17 @@ contains
         type(input_t), intent(in) :: x(:)       !! the budget's inputs (deck values, u)
         type(measurement_t), intent(out) :: m
         type(status_t), intent(out) :: stat     !! ERR_DECK
+        logical, intent(in), optional :: amplitude_given
+        logical :: amp_given
         stat%code = STATUS_OK
+        amp_given = .true.
+        if (present(amplitude_given)) amp_given = amplitude_given
         m%inputs = x
         call read_tares(mea, m)
         if (len_trim(mea%trials) == 0) then
             call one_release(mea, rg, st, m)
         else
-            call read_release_table(mea, rg, st, cables, m, stat)
+            call read_release_table(mea, rg, st, cables, amp_given, m, stat)
         end if
     end subroutine read_releases
 
@@ -190,12 +196,14 @@ contains
     end subroutine set_timing
 
     !> The releases of a table (&measurement trials), read and checked whole: a column
-    !! absent takes the deck's value.
-    subroutine read_release_table(mea, rg, st, cables, m, stat)
+    !! absent takes the deck's value; the column amplitude only when the deck gives one
+    !! (amp_given: &start amplitude), the start's default being nobody's amplitude.
+    subroutine read_release_table(mea, rg, st, cables, amp_given, m, stat)
         type(measurement_group_t), intent(in) :: mea
         type(rig_t), intent(in) :: rg
         type(start_t), intent(in) :: st
         integer, intent(in) :: cables
+        logical, intent(in) :: amp_given
         type(measurement_t), intent(inout) :: m
         type(status_t), intent(inout) :: stat
         type(column_table_t) :: ct
@@ -217,6 +225,13 @@ contains
         if (.not. ct%has('period') .and. .not. ct%has('record')) then
             call ct%fail(stat, 'neither a column period nor a column record; allowed: a '// &
                          'column period (timed totals, s) or record (a record file per release)')
+            return
+        end if
+        if (ct%has('period') .and. .not. ct%has('amplitude') .and. .not. amp_given) then
+            call ct%fail(stat, 'no column amplitude, and the deck gives none (&start '// &
+                         'amplitude); allowed: a column amplitude (degrees of theta4, the '// &
+                         'mean peak over the cycles timed) or &start amplitude = A for '// &
+                         'every release; likely: the column left out or named otherwise')
             return
         end if
         ! the releases, in the order of their first rows
@@ -324,9 +339,10 @@ contains
                                     cyc <= 1.0e6_dp, '0.5 <= cycles <= 1e6')
                 if (stat%code /= STATUS_OK) return
                 amp = ct%v(i, 'amplitude', st%amplitude)
-                call ct%check_value(stat, i, 'amplitude', amp, amp > 0.0_dp .and. &
-                    amp < 180.0_dp, '0 < amplitude < 180 (degrees of theta4, the mean peak '// &
-                    'over the cycles timed)')
+                call ct%check_value(stat, i, 'amplitude', amp, amp >= AMPLITUDE_MIN .and. &
+                    amp < 180.0_dp, rshort(AMPLITUDE_MIN)//' <= amplitude < 180 (degrees of '// &
+                    'theta4, the mean peak over the cycles timed; smaller swings the model '// &
+                    'does not resolve)')
                 if (stat%code /= STATUS_OK) return
                 up = ct%v(i, 'u_period', mea%u_period)
                 call ct%check_value(stat, i, 'u_period', up, up >= 0.0_dp .and. up < per, &

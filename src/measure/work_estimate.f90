@@ -54,6 +54,9 @@ module work_estimate
 
     !> Largest period over T_attach (the radius of gyration over b'/2) taken for a rig.
     real(dp), parameter, public :: GYRATION_MAX = 100.0_dp
+    !> A radius of gyration sqrt(I1/m) more than this many times b_prime (the spacing of
+    !! the body's own attachment points) is not a body hung by them.
+    real(dp), parameter, public :: RADIUS_SPACING_MAX = 30.0_dp
     !> Longest gap in a record, in periods of its swing.
     real(dp), parameter, public :: GAP_PERIODS_MAX = 10.0_dp
     !> Latest first sample of a record whose times count from the release (t0 not
@@ -120,6 +123,28 @@ contains
                     '(2 pi (l b_prime/(g b))^(1/2) = '//sci(ta, 4)//' s): a radius of '// &
                     'gyration of '//itoa(nint(ratio/2))//' b_prime, beyond '// &
                     itoa(nint(GYRATION_MAX/2))//' b_prime no bifilar body has; '//CAUSES_UNITS)
+                return
+            end if
+        end do
+        ! what the rig itself allows, with or without &body inertia: at amplitudes up to 90
+        ! degrees (the classical I1 at most 20 % above the model's), a classical I1 above
+        ! m (l^2 + b^2), or a radius of gyration sqrt(I1/m) beyond RADIUS_SPACING_MAX b_prime
+        do i = 1, size(per)
+            if (amps(i) > 90.0_dp) cycle
+            i1lin = rg%mass*rg%g*rg%b*rg%b_prime*per(i)**2/(16.0_dp*pi**2*(0.5_dp* &
+                    (rg%l + rg%l_prime)))
+            s23 = rg%mass*(max(rg%l, rg%l_prime)**2 + max(rg%b, rg%b_prime)**2)
+            ratio = sqrt(i1lin/rg%mass)/rg%b_prime
+            if ((1.0_dp - 0.2_dp)*i1lin > s23 .or. ratio > RADIUS_SPACING_MAX) then
+                call set_error(stat, ERR_MODEL, 'identify: periods('//itoa(i)//') = '// &
+                    sci(per(i), 4)//' s (per cycle) gives by the classical formula I1 = '// &
+                    sci(i1lin, 4)//', a radius of gyration sqrt(I1/m) = '// &
+                    sci(sqrt(i1lin/rg%mass), 3)//', '//fixed(ratio, 1)//' times b_prime; '// &
+                    'allowed: I1 at most m (l^2 + b^2) = '//sci(s23, 4)//' (the longer '// &
+                    'cable, the wider spacing) and a radius of gyration at most '// &
+                    itoa(nint(RADIUS_SPACING_MAX))//' b_prime; likely: the total of several '// &
+                    'cycles typed as one period (give &measurement cycles = N), times in '// &
+                    'other units than s, or lengths in other units than the deck''s')
                 return
             end if
         end do
