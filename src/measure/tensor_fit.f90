@@ -642,7 +642,7 @@ contains
 
     !> The covariance blocks of the rows, one per hang: V = diag(u_T^2 + u_def^2 +
     !! (dT/dA u_A)^2) + sum over the three rotations and the hang's own rig of s s^T u^2;
-    !! a zero diagonal counts U_FLOOR of its period.  none = .true. when no row has any
+    !! a row whose own diagonal part is zero adds U_FLOOR of its period.  none = .true. when no row has any
     !! stated uncertainty.
     subroutine row_covariance(prob, u_t, tc, s_amp, s_dir, s_rig, blocks, none)
         type(tensor_problem_t), intent(in) :: prob
@@ -652,6 +652,7 @@ contains
         logical, intent(out) :: none
         integer :: h, m, i, j, k, ci, cj
         integer, allocatable :: idx(:)
+        real(dp) :: own
         allocate (blocks(size(prob%hangs)))
         none = .true.
         do h = 1, size(prob%hangs)
@@ -669,11 +670,13 @@ contains
                             s_rig(ci, k)*s_rig(cj, k)*prob%u%rig(k)**2
                     end do
                 end do
-                blocks(h)%l(j, j) = blocks(h)%l(j, j) + u_t(idx(j))**2 + &
-                    prob%u_def(idx(j))**2 + (s_amp(cj)*prob%u%amplitude)**2
+                own = u_t(idx(j))**2 + prob%u_def(idx(j))**2 + (s_amp(cj)*prob%u%amplitude)**2
+                blocks(h)%l(j, j) = blocks(h)%l(j, j) + own
                 if (blocks(h)%l(j, j) > 0.0_dp) none = .false.
-                if (.not. (blocks(h)%l(j, j) > 0.0_dp)) &
-                    blocks(h)%l(j, j) = (U_FLOOR*tc(cj))**2
+                ! a row without a scatter of its own (rows of one case share the rest, and
+                ! their block would be singular) counts U_FLOOR of its period
+                if (.not. (own > 0.0_dp)) &
+                    blocks(h)%l(j, j) = blocks(h)%l(j, j) + (U_FLOOR*tc(cj))**2
             end do
         end do
     end subroutine row_covariance
