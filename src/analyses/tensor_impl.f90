@@ -16,7 +16,8 @@ submodule (tensor) tensor_impl
     use hang_model, only: tensor_entries, hang_rig, torsion_mode, torsion_mode_t
     use tensor_fit, only: tensor_problem_t, tensor_fit_t, tensor_plan_t, tensor_mc_task_t, &
         problem_of, check_directions, projection, fit_tensor, amplitude_limits, plan_hangs, &
-        tensor_mc_payload, tensor_mc_task, DRIFT_MAX, DRIFT_CYCLES, MC_ESTIMATES
+        tensor_mc_payload, tensor_mc_task, amplitude_parts, DRIFT_MAX, DRIFT_CYCLES, &
+        MC_ESTIMATES, MC_PARTS
     use tensor_checks, only: check_moments, near_parallel_hangs
     use unused_arg, only: unused
     use analysis_base, only: ranks_note, resume_note
@@ -150,7 +151,7 @@ contains
         type(tensor_mc_task_t) :: task
         type(sweep_report_t) :: rep
         type(hang_t) :: h0
-        real(dp), allocatable :: drift(:), limit(:), payload(:)
+        real(dp), allocatable :: drift(:), limit(:), payload(:), parts(:, :)
         real(dp) :: c0, c1, x_proj(6), cond, mean(MC_ESTIMATES), sdev(MC_ESTIMATES), x(6)
         real(dp) :: u_x_mc(6), u_moments_mc(3), u_axes_mc(3)
         logical :: have_cg
@@ -225,7 +226,10 @@ contains
             res%hangs = size(prob%hangs)
             res%rows = size(prob%rows)
             if (d%tensor%monte_carlo > 0) then
-                payload = tensor_mc_payload(prob, fit, d%tensor%seed)
+                allocate (parts(MC_PARTS, size(prob%case_hang)))
+                call amplitude_parts(prob, fit%x, parts, stat)
+                if (stat%code /= STATUS_OK) return
+                payload = tensor_mc_payload(prob, fit, d%tensor%seed, parts)
                 call tensor_mc_task(d%tensor, d%suspension, d%body, accuracy_of(d), payload, task, &
                                 stat)
                 if (stat%code /= STATUS_OK) return
