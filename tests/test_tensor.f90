@@ -8,7 +8,7 @@
 !! the chi-square warning, a repeatable Monte Carlo.
 module test_tensor
     use kinds, only: dp, pi, deg
-    use status, only: status_t, STATUS_OK, ERR_DECK
+    use status, only: status_t, STATUS_OK, ERR_DECK, ERR_MODEL
     use testing, only: tester_t, write_text, exists, file_has, count_lines, scratch_dir, &
                        empty_dir, msg_of
     use text, only: itoa, sci
@@ -24,6 +24,7 @@ module test_tensor
     use hang_model, only: tensor_entries, principal_axes, hang_rig, hang_period, &
         torsion_mode, torsion_mode_t, maxima_drift, turned_hang, rest_pose
     use bifilar_model, only: NSTATE, chart_positions
+    use tensor_checks, only: check_moments, TRIANGLE_MARGIN, START_FACTOR
     use tensor_fit, only: tensor_problem_t, tensor_fit_t, tensor_plan_t, problem_of, &
         check_directions, projection, fit_tensor, plan_hangs, design_trace, along_for, &
         DRIFT_MAX, DRIFT_CYCLES
@@ -72,6 +73,9 @@ contains
         if (t%want('tensor: chi-square warning')) call test_warning(t, exe)
         if (t%want('tensor: Monte Carlo: threads, kill and resume, MPI ranks')) &
             call test_mc(t, exe)
+        if (t%want('tensor: the principal moments a body can have')) call test_moments(t)
+        if (t%want('tensor: physical checks through the executable')) &
+            call test_physical(t, exe)
     end subroutine run_tensor_tests
 
     ! ------------------------------------------------------------------ the test body
@@ -876,6 +880,135 @@ contains
                          ex1 == 0 .and. ex == 0)
         end do
     end subroutine test_mc
+
+    !> check_moments: a tensor not positive definite and one beyond the triangle margin are
+    !! refused (ERR_MODEL), one within the margin warned, a lamina (I_max = I_a + I_b)
+    !! passes silently; &body size bounds the sum by m d^2/2; a trace START_FACTOR times the
+    !! start values' is refused, a smaller factor passes.
+    subroutine test_moments(t)
+        type(tester_t), intent(inout) :: t
+        type(status_t) :: st
+        character(len=:), allocatable :: w
+        real(dp), parameter :: S0(3) = [0.08_dp, 0.11_dp, 0.14_dp]
+        call check_moments([-1.0e-3_dp, 0.1_dp, 0.12_dp], 1.0_dp, 0.0_dp, S0, .false., w, st)
+        call t%check('moments: not positive definite refused (exit 4)', st%code == ERR_MODEL &
+                     .and. index(st%msg, 'not positive definite') > 0)
+        call check_moments([0.05_dp, 0.06_dp, 0.11_dp*TRIANGLE_MARGIN*1.01_dp], 1.0_dp, &
+                           0.0_dp, S0, .false., w, st)
+        call t%check('moments: beyond the triangle margin refused', st%code == ERR_MODEL &
+                     .and. index(st%msg, 'triangle') > 0)
+        call check_moments([0.05_dp, 0.06_dp, 0.11_dp*1.05_dp], 1.0_dp, 0.0_dp, S0, .false., &
+                           w, st)
+        call t%check('moments: within the triangle margin a warning', st%code == STATUS_OK &
+                     .and. index(w, 'triangle') > 0)
+        call check_moments([0.05_dp, 0.06_dp, 0.11_dp], 1.0_dp, 0.0_dp, S0, .false., w, st)
+        call t%check('moments: a lamina passes silently', st%code == STATUS_OK .and. len(w) == 0)
+        ! size: a solid ball of diameter d has 3 x m d^2/10 = 0.3 m d^2 < m d^2/2
+        call check_moments([0.1_dp, 0.1_dp, 0.1_dp], 1.0_dp, 1.0_dp, S0, .false., w, st)
+        call t%check('moments: a ball inside &body size passes', st%code == STATUS_OK)
+        call check_moments([0.1_dp, 0.2_dp, 0.25_dp], 1.0_dp, 1.0_dp, S0, .false., w, st)
+        call t%check('moments: beyond m size^2/2 refused naming size', st%code == ERR_MODEL &
+                     .and. index(st%msg, '&body size') > 0)
+        call check_moments(S0*0.9_dp*START_FACTOR, MASS, 0.0_dp, S0, .true., w, st)
+        call t%check('moments: within the start factor passes', st%code == STATUS_OK)
+        call check_moments(S0*100.0_dp, MASS, 0.0_dp, S0, .true., w, st)
+        call t%check('moments: 100 times the start values refused naming cycles', &
+                     st%code == ERR_MODEL .and. index(st%msg, 'cycles') > 0)
+        call check_moments(S0/100.0_dp, MASS, 0.0_dp, S0, .true., w, st)
+        call t%check('moments: 1/100 of the start values refused', st%code == ERR_MODEL)
+    end subroutine test_moments
+
+    !> Through the executable: 10-cycle totals typed as periods (no cycles column) are
+    !! refused with exit 4 naming the cycles (with &body inertia) and &body size (with it);
+    !! a deck with neither is refused (exit 2); a tare in a tensor deck is refused (exit 2);
+    !! a tenth hang 0.5 degrees from another gives exit 0 and one warning naming both; a
+    !! hang timed twice with u_direction and no u_period fits (exit 0).
+    subroutine test_physical(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        type(status_t) :: st
+        type(rig_t) :: rg
+        real(dp) :: x(6), per(10), u(3, 10), c, s
+        character(len=:), allocatable :: tab, tot, twice
+        character(len=*), parameter :: HEAD = 'hang up_x up_y up_z along_x along_y along_z '// &
+            'period'//NL
+        character(len=*), parameter :: RIG_SIZE = &
+            '&suspension b = 0.5, b_prime = 0.4, l = 1.2, l_prime = 1.2, g = 9.80665 /'//NL// &
+            '&body mass = 3.0, size = 0.5, cg_depth = 0.1, cg_offset = 0 /'//NL
+        character(len=*), parameter :: RIG_NONE = &
+            '&suspension b = 0.5, b_prime = 0.4, l = 1.2, l_prime = 1.2, g = 9.80665 /'//NL// &
+            '&body mass = 3.0, cg_depth = 0.1, cg_offset = 0 /'//NL
+        integer :: k, ex
+        logical :: l1, l2
+        x = true_tensor()
+        u(:, 1:9) = directions(9)
+        ! the tenth: hang 7's direction turned by 0.5 degrees
+        c = cos(0.5_dp*deg)
+        s = sin(0.5_dp*deg)
+        u(:, 10) = c*u(:, 7) + s*along_for(u(:, 7))
+        tab = HEAD
+        tot = HEAD
+        twice = HEAD
+        do k = 1, 10
+            call hang_rig(MASS, G0, rig_hang(u(:, k), along_for(u(:, k)), k), x, rg, st)
+            call hang_period(rg, acc12(), 0.0_dp, per(k), st)
+            tab = tab//itoa(k)//' '//num3(u(:, k))//' '//num3(along_for(u(:, k)))//' '// &
+                num(per(k))//NL
+            if (k > 9) cycle
+            tot = tot//itoa(k)//' '//num3(u(:, k))//' '//num3(along_for(u(:, k)))//' '// &
+                num(10.0_dp*per(k))//NL
+            twice = twice//itoa(k)//' '//num3(u(:, k))//' '//num3(along_for(u(:, k)))//' '// &
+                num(per(k))//NL
+            if (k == 2) twice = twice//itoa(k)//' '//num3(u(:, k))//' '// &
+                num3(along_for(u(:, k)))//' '//num(per(k))//NL
+        end do
+        call one('totals', tot, RIG_LINES, '', 4, 'cycles')
+        call one('totals_size', tot, RIG_SIZE, '', 4, '&body size')
+        call one('no_start', tab, RIG_NONE, '', 2, '&body inertia')
+        call one('tare', tab, RIG_LINES, '&measurement tare_i1 = 0.01 /'//NL, 2, 'tare_i1')
+        ! near-parallel: exit 0, one warning line naming hangs 7 and 10
+        call write_text(SCR//'/phys_near.txt', tab)
+        call write_text(SCR//'/phys_near.nml', "&scene analyses = 'tensor' /"//NL// &
+            RIG_LINES//"&tensor hangs = 'phys_near.txt', u_period = 1e-4 /"//NL)
+        call execute_command_line('rm -rf '//SCR//'/phys_near && mkdir -p '//SCR// &
+            '/phys_near && '//exe//' '//SCR//'/phys_near.nml --out '//SCR//'/phys_near > '// &
+            SCR//'/phys_near.stdout 2> '//SCR//'/phys_near.stderr', exitstat=ex)
+        l1 = count_lines(SCR//'/phys_near.stderr') == 1
+        l2 = file_has(SCR//'/phys_near.stderr', 'hangs 7 (line 8) and 10 (line 11), 0.50 deg')
+        call t%check('physical: hangs 0.5 deg apart: exit 0, one warning naming both', &
+                     ex == 0 .and. l1 .and. l2)
+        ! a hang timed twice, u_direction given, u_period 0: the fit runs
+        call write_text(SCR//'/phys_twice.txt', twice)
+        call write_text(SCR//'/phys_twice.nml', "&scene analyses = 'tensor' /"//NL// &
+            RIG_LINES//"&tensor hangs = 'phys_twice.txt', u_direction = 0.2 /"//NL)
+        call execute_command_line('rm -rf '//SCR//'/phys_twice && mkdir -p '//SCR// &
+            '/phys_twice && '//exe//' '//SCR//'/phys_twice.nml --out '//SCR//'/phys_twice > '// &
+            SCR//'/phys_twice.stdout 2> '//SCR//'/phys_twice.stderr', exitstat=ex)
+        l1 = exists(SCR//'/phys_twice/phys_twice.tensor')
+        call t%check('physical: a hang timed twice with u_direction and no u_period fits '// &
+                     '(exit '//itoa(ex)//')', ex == 0 .and. l1)
+    contains
+        subroutine one(label, table, rigl, extra, code, word)
+            character(len=*), intent(in) :: label, table, rigl, extra, word
+            integer, intent(in) :: code
+            character(len=:), allocatable :: dir
+            integer :: e
+            logical :: a1, a2, a3
+            dir = SCR//'/phys_'//label
+            call write_text(dir//'.txt', table)
+            call write_text(dir//'.nml', "&scene analyses = 'tensor' /"//NL//rigl//extra// &
+                            "&tensor hangs = 'phys_"//label//".txt', u_period = 1e-3 /"//NL)
+            call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//' && '//exe// &
+                ' '//dir//'.nml --out '//dir//' > '//dir//'.stdout 2> '//dir//'.stderr', &
+                exitstat=e)
+            a1 = count_lines(dir//'.stderr') == 1
+            a2 = file_has(dir//'.stderr', word)
+            a3 = empty_dir(dir)
+            call t%check('physical '//label//': exit '//itoa(code)//' (got '//itoa(e)// &
+                         '), one line naming '''//word//''', no file', &
+                         e == code .and. a1 .and. a2 .and. a3)
+        end subroutine one
+    end subroutine test_physical
 
     !> The value text of `key = a, b, c`.
     subroutine kv_list(path, key, val)

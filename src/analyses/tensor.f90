@@ -27,6 +27,11 @@ module tensor
     implicit none
     private
 
+    !> One warning line.
+    type, public :: tensor_line_t
+        character(len=:), allocatable :: s
+    end type tensor_line_t
+
     !> What the analysis found (deck units; the summary line's parts).
     type, public :: tensor_result_t
         logical :: fitted = .false.             !! a table of hangs was fitted
@@ -42,6 +47,8 @@ module tensor
         character(len=:), allocatable :: plan_file
         !> one line for standard error when the hangs disagree with the fit ('' when not)
         character(len=:), allocatable :: warning
+        !> more warning lines: hangs nearly parallel, moments near the triangle inequality
+        type(tensor_line_t), allocatable :: warnings(:)
         real(dp) :: cpu_seconds = 0.0_dp
     end type tensor_result_t
 

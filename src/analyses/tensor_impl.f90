@@ -17,7 +17,9 @@ submodule (tensor) tensor_impl
     use hang_model, only: tensor_entries, hang_rig, torsion_mode, torsion_mode_t
     use tensor_fit, only: tensor_problem_t, tensor_fit_t, tensor_plan_t, tensor_mc_task_t, &
         problem_of, check_directions, projection, fit_tensor, amplitude_limits, plan_hangs, &
-        tensor_mc_payload, tensor_mc_task, DRIFT_MAX, DRIFT_CYCLES, MC_ESTIMATES
+        tensor_mc_payload, tensor_mc_task, amplitude_parts, DRIFT_MAX, DRIFT_CYCLES, &
+        MC_ESTIMATES, MC_PARTS
+    use tensor_checks, only: check_moments, near_parallel_hangs
     use unused_arg, only: unused
     use analysis_base, only: ranks_note, resume_note
     implicit none
@@ -46,6 +48,16 @@ contains
         logical :: have_cg
         integer :: h
         stat%code = STATUS_OK
+        if (d%measurement%tare_i1 /= 0.0_dp .or. d%measurement%u_tare_i1 /= 0.0_dp .or. &
+            d%measurement%tare_mass /= 0.0_dp .or. d%measurement%added_inertia /= 0.0_dp .or. &
+            d%measurement%u_added_inertia /= 0.0_dp) then
+            call set_error(stat, ERR_DECK, 'analyses = ''tensor'': &measurement tare_i1, '// &
+                'u_tare_i1, tare_mass, added_inertia: a tare or added inertia of identify''s '// &
+                'single hang, which tensor cannot take (its periods give the tensor of all '// &
+                'that hung, in every hang); allowed: none of them in a deck with analyses = '// &
+                '''tensor'' (run identify from a deck of its own)')
+            return
+        end if
         if (trim(d%scene%model) /= 'kane') then
             call set_error(stat, ERR_DECK, 'analyses = ''tensor'': &scene model = '''// &
                 trim(d%scene%model)//''': tensor fits the paper''s model; allowed: '// &
@@ -67,6 +79,15 @@ contains
             end if
         end associate
         if (len_trim(d%tensor%hangs) > 0) then
+            if (.not. (d%body%gave('inertia') .or. d%body%gave('size'))) then
+                call set_error(stat, ERR_DECK, 'analyses = ''tensor'': not given: &body '// &
+                    'inertia (start values) or size (the diameter of a sphere that holds '// &
+                    'the body): without either a tensor N^2 times too large (totals of N '// &
+                    'cycles typed as periods) cannot be told from the right one; allowed: '// &
+                    '&body inertia = the principal moments you expect (within a factor 30), '// &
+                    'or size = d')
+                return
+            end if
             call read_hangs(d%tensor, d%suspension, d%body, set, stat)
             if (stat%code /= STATUS_OK) return
             call check_directions(set%releases%hang, table_name(d%tensor), cond, stat)
@@ -146,11 +167,12 @@ contains
         type(tensor_mc_task_t) :: task
         type(sweep_report_t) :: rep
         type(hang_t) :: h0
-        real(dp), allocatable :: drift(:), limit(:), payload(:)
+        real(dp), allocatable :: drift(:), limit(:), payload(:), parts(:, :)
         real(dp) :: c0, c1, x_proj(6), cond, mean(MC_ESTIMATES), sdev(MC_ESTIMATES), x(6)
         real(dp) :: u_x_mc(6), u_moments_mc(3), u_axes_mc(3)
         logical :: have_cg
         integer :: i, h
+        character(len=:), allocatable :: line
         call cpu_time(c0)
         u_x_mc = 0.0_dp
         u_moments_mc = 0.0_dp
@@ -158,6 +180,7 @@ contains
         rep%note = ''
         res%warning = ''
         res%plan_file = ''
+        allocate (res%warnings(0))
         stat%code = STATUS_OK
         if (len_trim(d%tensor%hangs) > 0) then
             call read_hangs(d%tensor, d%suspension, d%body, set, stat)
@@ -168,7 +191,10 @@ contains
             call projection(prob, x_proj, stat)
             if (stat%code /= STATUS_OK) return
             call fit_tensor(prob, x_proj, fit, stat)
-            if (stat%code /= STATUS_OK) return
+            if (stat%code /= STATUS_OK) then
+                call no_body(stat)
+                return
+            end if
             ! the amplitude limits at the fit: refuse a period that is not defined, carry
             ! the drift of the others as the uncertainty of their definition, fit again
             allocate (drift(size(prob%rows)), limit(size(prob%hangs)))
@@ -192,10 +218,19 @@ contains
                 prob%u_def = drift*fit%model_period/sqrt(3.0_dp)
                 x = fit%x
                 call fit_tensor(prob, x, fit, stat)
-                if (stat%code /= STATUS_OK) return
+                if (stat%code /= STATUS_OK) then
+                    call no_body(stat)
+                    return
+                end if
             end if
             fit%x_proj = x_proj
             fit%projection_difference = maxval(abs(x_proj - fit%x))/maxval(fit%moments)
+            ! what no body can have, refused; the hangs nearly parallel, said
+            call check_moments(fit%moments, d%body%mass, d%body%size, d%body%inertia, &
+                               d%body%gave('inertia'), line, stat)
+            if (stat%code /= STATUS_OK) return
+            call push_warning(line)
+            call push_warning(near_parallel_hangs(prob%hangs, table_name(d%tensor)))
             fit%condition = cond
             res%fitted = .true.
             res%moments = fit%moments
@@ -207,7 +242,10 @@ contains
             res%hangs = size(prob%hangs)
             res%rows = size(prob%rows)
             if (d%tensor%monte_carlo > 0) then
-                payload = tensor_mc_payload(prob, fit, d%tensor%seed)
+                allocate (parts(MC_PARTS, size(prob%case_hang)))
+                call amplitude_parts(prob, fit%x, parts, stat)
+                if (stat%code /= STATUS_OK) return
+                payload = tensor_mc_payload(prob, fit, d%tensor%seed, parts)
                 call tensor_mc_task(d%tensor, d%suspension, d%body, accuracy_of(d), payload, task, &
                                 stat)
                 if (stat%code /= STATUS_OK) return
@@ -253,6 +291,26 @@ contains
         if (res%fitted) call write_data(d, outdir, fit, prob, files, stat)
         if (stat%code /= STATUS_OK) return
         if (res%plan > 0) call write_plan(d, res%plan_file, plan, x, files, stat)
+    contains
+        !> A fit that went where no body is (a tensor not positive definite): ERR_MODEL
+        !! with the likely cause.
+        subroutine no_body(st)
+            type(status_t), intent(inout) :: st
+            if (index(st%msg, 'not positive definite') == 0) return
+            st%code = ERR_MODEL
+            st%msg = table_name(d%tensor)//': the fit of the tensor: '//st%msg//': the '// &
+                'periods ask for a tensor no rigid body has, they disagree with each other; '// &
+                'likely: totals of different numbers of cycles typed as periods (the cycles '// &
+                'column), a direction (up, along) mistyped; allowed: periods of one body'
+        end subroutine no_body
+        !> One more warning line ('' none).
+        subroutine push_warning(w)
+            character(len=*), intent(in) :: w
+            type(tensor_line_t) :: one
+            if (len(w) == 0) return
+            one%s = w
+            res%warnings = [res%warnings, one]
+        end subroutine push_warning
     end procedure run_tensor
 
     !> An amplitude limit as text: two significant digits.
@@ -513,9 +571,15 @@ contains
     !> The run (run_tensor into the run's files); the Monte Carlo's warning and the result's
     !! warning kept.
     module procedure tensor_analysis_run
+        integer :: i
         call run_tensor(d, outdir, self%res, stat, files, options, self%rep)
         call self%add_report_warning(self%rep)
         if (stat%code /= 0) return
+        if (allocated(self%res%warnings)) then
+            do i = 1, size(self%res%warnings)
+                call self%add_warning(self%res%warnings(i)%s)
+            end do
+        end if
         if (allocated(self%res%warning)) then
             if (len(self%res%warning) > 0) call self%add_warning(self%res%warning)
         end if

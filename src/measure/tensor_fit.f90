@@ -186,6 +186,8 @@ module tensor_fit
         real(dp), allocatable :: chord(:, :)    !! 6 x rows
         real(dp), allocatable :: u_row(:)       !! per row: timing u (s)
         real(dp) :: u_x(6) = 0.0_dp             !! the estimate's first-order u
+        !> per case: the amplitude part of its period and its derivatives (amplitude_parts)
+        real(dp), allocatable :: parts(:, :)
         integer :: seed = 1
     contains
         procedure :: sample => tensor_mc_point
@@ -194,7 +196,7 @@ module tensor_fit
     public :: problem_of, check_directions, projection, fit_tensor, amplitude_limits
     public :: plan_hangs, design_trace, candidate_directions, along_for
     public :: tensor_mc_payload, tensor_mc_task, tensor_mc_sample, model_periods
-    public :: distinct_directions
+    public :: distinct_directions, amplitude_parts
 
     !> Largest condition number of the directions' design matrix.
     real(dp), parameter, public :: COND_MAX = 1.0e8_dp
@@ -205,6 +207,8 @@ module tensor_fit
     !> Estimates of a Monte Carlo sample: x (6), principal moments (3), the turns of axis k
     !! toward the two others (6).
     integer, parameter, public :: MC_ESTIMATES = 15
+    !> Values per case of amplitude_parts: D, dD/dx (6), dD/deps (3), dD/drig (4), dD/dA.
+    integer, parameter, public :: MC_PARTS = 15
     !> Two unit directions count as one when |u . v| exceeds 1 - PARALLEL_TOL.
     real(dp), parameter :: PARALLEL_TOL = 1.0e-9_dp
     !> A period without any stated uncertainty counts this much of itself.
@@ -642,7 +646,7 @@ contains
 
     !> The covariance blocks of the rows, one per hang: V = diag(u_T^2 + u_def^2 +
     !! (dT/dA u_A)^2) + sum over the three rotations and the hang's own rig of s s^T u^2;
-    !! a zero diagonal counts U_FLOOR of its period.  none = .true. when no row has any
+    !! a row whose own diagonal part is zero adds U_FLOOR of its period.  none = .true. when no row has any
     !! stated uncertainty.
     subroutine row_covariance(prob, u_t, tc, s_amp, s_dir, s_rig, blocks, none)
         type(tensor_problem_t), intent(in) :: prob
@@ -652,6 +656,7 @@ contains
         logical, intent(out) :: none
         integer :: h, m, i, j, k, ci, cj
         integer, allocatable :: idx(:)
+        real(dp) :: own
         allocate (blocks(size(prob%hangs)))
         none = .true.
         do h = 1, size(prob%hangs)
@@ -669,11 +674,13 @@ contains
                             s_rig(ci, k)*s_rig(cj, k)*prob%u%rig(k)**2
                     end do
                 end do
-                blocks(h)%l(j, j) = blocks(h)%l(j, j) + u_t(idx(j))**2 + &
-                    prob%u_def(idx(j))**2 + (s_amp(cj)*prob%u%amplitude)**2
+                own = u_t(idx(j))**2 + prob%u_def(idx(j))**2 + (s_amp(cj)*prob%u%amplitude)**2
+                blocks(h)%l(j, j) = blocks(h)%l(j, j) + own
                 if (blocks(h)%l(j, j) > 0.0_dp) none = .false.
-                if (.not. (blocks(h)%l(j, j) > 0.0_dp)) &
-                    blocks(h)%l(j, j) = (U_FLOOR*tc(cj))**2
+                ! a row without a scatter of its own (rows of one case share the rest, and
+                ! their block would be singular) counts U_FLOOR of its period
+                if (.not. (own > 0.0_dp)) &
+                    blocks(h)%l(j, j) = blocks(h)%l(j, j) + (U_FLOOR*tc(cj))**2
             end do
         end do
     end subroutine row_covariance
@@ -1508,14 +1515,89 @@ contains
 
     ! ------------------------------------------------------------------ Monte Carlo
 
+    !> The amplitude part of each case's period and its first derivatives (the Monte
+    !! Carlo's model, see the module header): D = T(x; hang, A) - T(x; hang, 0), the full
+    !! model's period at the case's amplitude less the torsion mode's, and dD by central
+    !! differences over x (6), the three rotations of the hang (per rad), its l, l_prime,
+    !! b, b_prime (per unit) and the amplitude (per degree).  parts(:, c) = (D, dD/dx(6),
+    !! dD/deps(3), dD/drig(4), dD/dA); zero for a case at amplitude 0.
+    subroutine amplitude_parts(prob, x, parts, stat)
+        type(tensor_problem_t), intent(in) :: prob
+        real(dp), intent(in) :: x(6)
+        real(dp), intent(out) :: parts(:, :)    !! (MC_PARTS, cases)
+        type(status_t), intent(out) :: stat
+        type(hang_t) :: hp, hm
+        real(dp) :: dp_, dm_, hx, hxx, ha, eps(3), xp(6), xm(6), v
+        integer :: c, k
+        parts = 0.0_dp
+        stat%code = STATUS_OK
+        hx = HX_SIM
+        hxx = x_step(prob, x)
+        do c = 1, size(prob%case_hang)
+            associate (h => prob%hangs(prob%case_hang(c)), amp => prob%case_amp(c))
+                if (.not. (amp > 0.0_dp)) cycle
+                call part_d(h, amp, x, parts(1, c))
+                if (stat%code /= STATUS_OK) return
+                do k = 1, 6
+                    xp = x
+                    xm = x
+                    xp(k) = x(k) + hxx
+                    xm(k) = x(k) - hxx
+                    call part_d(h, amp, xp, dp_)
+                    if (stat%code == STATUS_OK) call part_d(h, amp, xm, dm_)
+                    if (stat%code /= STATUS_OK) return
+                    parts(1 + k, c) = (dp_ - dm_)/(2.0_dp*hxx)
+                end do
+                do k = 1, 3
+                    eps = 0.0_dp
+                    eps(k) = hx
+                    call part_d(turned_hang(h, eps), amp, x, dp_)
+                    if (stat%code == STATUS_OK) call part_d(turned_hang(h, -eps), amp, x, dm_)
+                    if (stat%code /= STATUS_OK) return
+                    parts(7 + k, c) = (dp_ - dm_)/(2.0_dp*hx)
+                end do
+                do k = 1, 4
+                    hp = h
+                    hm = h
+                    v = rig_value(h, k)
+                    call set_rig_value(hp, k, v*(1.0_dp + hx))
+                    call set_rig_value(hm, k, v*(1.0_dp - hx))
+                    call part_d(hp, amp, x, dp_)
+                    if (stat%code == STATUS_OK) call part_d(hm, amp, x, dm_)
+                    if (stat%code /= STATUS_OK) return
+                    parts(10 + k, c) = (dp_ - dm_)/(2.0_dp*hx*v)
+                end do
+                ha = min(0.5_dp*amp, max(1.0e-3_dp, 1.0e-2_dp*amp))
+                call part_d(h, amp + ha, x, dp_)
+                if (stat%code == STATUS_OK) call part_d(h, amp - ha, x, dm_)
+                if (stat%code /= STATUS_OK) return
+                parts(15, c) = (dp_ - dm_)/(2.0_dp*ha)
+            end associate
+        end do
+    contains
+        subroutine part_d(hh, a, xx, d)
+            type(hang_t), intent(in) :: hh
+            real(dp), intent(in) :: a, xx(6)
+            real(dp), intent(out) :: d
+            real(dp) :: ts, t0
+            d = 0.0_dp
+            call case_period(prob, hh, a, prob%mass, prob%g, xx, ts, stat)
+            if (stat%code == STATUS_OK) call case_period(prob, hh, 0.0_dp, prob%mass, &
+                                                         prob%g, xx, t0, stat)
+            if (stat%code == STATUS_OK) d = ts - t0
+        end subroutine part_d
+    end subroutine amplitude_parts
+
+
     !> What a tensor Monte Carlo needs beyond the deck, as reals (the sweep's payload): the
     !! seed, the counts, per hang its id, up, along, rig and mass centre and which rig
     !! inputs are its own, per row its hang, period, cycles, amplitude, timing u and u_def,
     !! the estimate, its axes, its first-order u, the chord matrix.
-    function tensor_mc_payload(prob, fit, seed) result(p)
+    function tensor_mc_payload(prob, fit, seed, parts) result(p)
         type(tensor_problem_t), intent(in) :: prob
         type(tensor_fit_t), intent(in) :: fit
         integer, intent(in) :: seed
+        real(dp), intent(in) :: parts(:, :)     !! (MC_PARTS, cases): amplitude_parts
         real(dp), allocatable :: p(:)
         integer :: h, i, k, own
         p = [real(seed, dp), real(size(prob%hangs), dp), real(size(prob%rows), dp)]
@@ -1536,6 +1618,7 @@ contains
             end associate
         end do
         p = [p, fit%x, reshape(fit%axes, [9]), fit%u_x, reshape(fit%chord, [size(fit%chord)])]
+        p = [p, real(size(parts, 2), dp), reshape(parts, [size(parts)])]
     end function tensor_mc_payload
 
     !> The Monte Carlo task of a deck from its payload (tensor_mc_payload): the task rank 0
@@ -1549,7 +1632,7 @@ contains
         type(tensor_mc_task_t), intent(out) :: task
         type(status_t), intent(out) :: stat
         type(measurement_t) :: set
-        integer :: nh, n, h, i, j, k, own
+        integer :: nh, n, h, i, j, k, own, nb, nc
         stat%code = STATUS_OK
         if (size(payload) < 3) then
             call set_error(stat, ERR_DECK, 'tensor Monte Carlo: a payload too short')
@@ -1558,7 +1641,10 @@ contains
         task%seed = nint(payload(1))
         nh = nint(payload(2))
         n = nint(payload(3))
-        if (nh < 1 .or. n < 1 .or. size(payload) /= 3 + 15*nh + 7*n + 21 + 6*n) then
+        nb = 3 + 15*nh + 7*n + 21 + 6*n
+        nc = -1
+        if (size(payload) > nb .and. nb > 3) nc = nint(payload(min(size(payload), nb + 1)))
+        if (nh < 1 .or. n < 1 .or. nc < 1 .or. size(payload) /= nb + 1 + MC_PARTS*nc) then
             call set_error(stat, ERR_DECK, 'tensor Monte Carlo: the payload does not match '// &
                 'its counts')
             return
@@ -1603,6 +1689,12 @@ contains
         task%axes = reshape(payload(j + 7:j + 15), [3, 3])
         task%u_x = payload(j + 16:j + 21)
         task%chord = reshape(payload(j + 22:j + 21 + 6*n), [6, n])
+        task%parts = reshape(payload(nb + 2:nb + 1 + MC_PARTS*nc), [MC_PARTS, nc])
+        if (nc /= size(task%prob%case_hang)) then
+            call set_error(stat, ERR_DECK, 'tensor Monte Carlo: the payload''s cases do not '// &
+                'match its rows')
+            return
+        end if
         task%nest = MC_ESTIMATES
     end subroutine tensor_mc_task
 
@@ -1625,52 +1717,75 @@ contains
         type(status_t), intent(out) :: stat
         type(tensor_problem_t) :: p
         type(rng_t) :: g
-        real(dp) :: eps(3), z(4), x(6), dx(6), w(3), v(3, 3), tol
-        real(dp), allocatable :: tc(:), tmeas(:)
-        integer :: h, i, j, it, m
+        real(dp) :: eps(3), z(4), x(6), dx(6), w(3), v(3, 3), tol, a_new, ddm, ddg
+        real(dp), allocatable :: tc(:), tmeas(:), t0(:), fixed(:), epsh(:, :), drig(:, :)
+        integer :: h, i, j, it, m, c, nh, n
         est = 0.0_dp
         g = rng_stream(task%seed, k)
         p = task%prob
+        nh = size(p%hangs)
+        n = size(p%rows)
+        allocate (epsh(3, nh), drig(4, nh), tmeas(n), fixed(n), t0(nh), tc(n))
+        drig = 0.0_dp
         p%mass = task%prob%mass + p%u%mass*rng_normal(g)
         p%g = task%prob%g + p%u%g*rng_normal(g)
         do j = 1, 4
             z(j) = rng_normal(g)
         end do
-        do h = 1, size(p%hangs)
+        do h = 1, nh
             do j = 1, 4
-                if (.not. p%hangs(h)%own(j)) &
-                    call set_rig_value(p%hangs(h), j, rig_value(p%hangs(h), j) + p%u%rig(j)*z(j))
+                if (p%hangs(h)%own(j)) cycle
+                call set_rig_value(p%hangs(h), j, rig_value(p%hangs(h), j) + p%u%rig(j)*z(j))
+                drig(j, h) = p%u%rig(j)*z(j)
             end do
         end do
-        do h = 1, size(p%hangs)
+        do h = 1, nh
             do j = 1, 3
                 eps(j) = p%u%direction*rng_normal(g)
             end do
             p%hangs(h) = turned_hang(p%hangs(h), eps)
+            epsh(:, h) = eps
             do j = 1, 4
                 z(j) = rng_normal(g)
-                if (p%hangs(h)%own(j)) call set_rig_value(p%hangs(h), j, &
-                    rig_value(p%hangs(h), j) + p%u%rig(j)*z(j))
+                if (.not. p%hangs(h)%own(j)) cycle
+                call set_rig_value(p%hangs(h), j, rig_value(p%hangs(h), j) + p%u%rig(j)*z(j))
+                drig(j, h) = p%u%rig(j)*z(j)
             end do
         end do
-        allocate (tmeas(size(p%rows)))
-        do i = 1, size(p%rows)
+        ! per row: the timing, the amplitude, the definition drawn; the amplitude part of
+        ! its period at the drawn inputs, to first order about the estimate's (the torsion
+        ! mode's period, below, is exact)
+        do i = 1, n
             tmeas(i) = p%rows(i)%period + task%u_row(i)*rng_normal(g)
             z(1) = rng_normal(g)
-            if (p%rows(i)%amplitude > 0.0_dp) p%rows(i)%amplitude = &
-                max(0.0_dp, p%rows(i)%amplitude + p%u%amplitude*z(1))
+            a_new = p%rows(i)%amplitude
+            if (a_new > 0.0_dp) a_new = max(0.0_dp, a_new + p%u%amplitude*z(1))
             tmeas(i) = tmeas(i) + sqrt(3.0_dp)*p%u_def(i)*(2.0_dp*rng_uniform(g) - 1.0_dp)
+            c = task%prob%row_case(i)
+            h = p%rows(i)%release
+            associate (q => task%parts(:, c))
+                ddm = -dot_product(task%x, q(2:7))/task%prob%mass
+                ddg = -0.5_dp*q(1)/task%prob%g
+                fixed(i) = q(1) + dot_product(q(8:10), epsh(:, h)) + &
+                    dot_product(q(11:14), drig(:, h)) + &
+                    q(15)*(a_new - p%rows(i)%amplitude) + ddm*(p%mass - task%prob%mass) + &
+                    ddg*(p%g - task%prob%g)
+            end associate
         end do
-        deallocate (p%row_case, p%case_hang, p%case_amp)
-        call set_cases(p)
-        allocate (tc(size(p%case_hang)))
         x = task%x
         tol = X_TOL
         if (any(p%case_amp > 0.0_dp)) tol = max(X_TOL, 10.0_dp*p%acc%rtol)
         do it = 1, MAX_ITER
-            call model_periods(p, x, tc, stat)
+            do h = 1, nh
+                call case_period(p, p%hangs(h), 0.0_dp, p%mass, p%g, x, t0(h), stat)
+                if (stat%code /= STATUS_OK) exit
+            end do
             if (stat%code /= STATUS_OK) exit
-            dx = -matmul(task%chord, tc(p%row_case) - tmeas)
+            do i = 1, n
+                tc(i) = t0(p%rows(i)%release) + fixed(i) + &
+                    dot_product(task%parts(2:7, task%prob%row_case(i)), x - task%x)
+            end do
+            dx = -matmul(task%chord, tc - tmeas)
             x = x + dx
             ! converged: at the model's resolution, or each step below 1e-3 of its u
             if (maxval(abs(dx)) <= 10.0_dp*tol*maxval(x(1:3))) exit
@@ -1680,6 +1795,13 @@ contains
             'the refit did not converge in '//itoa(MAX_ITER)//' steps')
         if (stat%code /= STATUS_OK) then
             stat%msg = 'Monte Carlo sample '//itoa(k)//': '//stat%msg
+            if (p%u%direction > 0.0_dp) then
+                stat%code = ERR_DECK
+                stat%msg = '&tensor u_direction = '//rshort(p%u%direction/deg)//' deg: '// &
+                    stat%msg//': hangs drawn this far from their directions leave the '// &
+                    'region where the fit''s linearisation holds; allowed: a smaller '// &
+                    'u_direction, or monte_carlo = 0 (the first-order u)'
+            end if
             return
         end if
         call principal_axes(x, w, v, stat)

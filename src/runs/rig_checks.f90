@@ -237,6 +237,12 @@ contains
             call dimensional(stat, 'body', 'inertia', self%inertia(i))
         end do
         if (stat%code /= STATUS_OK) return
+        if (self%gave('size')) then
+            call positive(stat, 'body', 'size', self%size, 'size > 0 (the diameter of a '// &
+                          'sphere that holds the body, deck length units)')
+            if (stat%code == STATUS_OK) call dimensional(stat, 'body', 'size', self%size)
+            if (stat%code /= STATUS_OK) return
+        end if
         ! I/(m b'^2) in logarithms: the quotient itself may overflow
         do i = 1, 3
             lr = log(self%inertia(i)) - log(self%mass) - 2.0_dp*log(sus%b_prime)

@@ -98,6 +98,9 @@ module rig_groups
         real(dp) :: cg_depth = 0.0_dp, cg_offset = 0.0_dp, cg_offset_y = 0.0_dp
         real(dp) :: btilde(3, 3) = DEFAULT_BTILDE
         real(dp) :: sway_depth = DEFAULT_SWAY_DEPTH
+        !> the diameter of a sphere that holds the body (0: not given); no moment of inertia
+        !! about the mass centre exceeds mass size^2/4 (analysis tensor checks it)
+        real(dp) :: size = 0.0_dp
     contains
         procedure, nopass :: name => body_name
         procedure, nopass :: spec => body_spec
@@ -349,20 +352,22 @@ contains
 
     function body_spec() result(s)
         character(len=:), allocatable :: s
-        s = 'mass:r1 inertia:r3 r:r1 lambda:r1 cg_depth:r1 cg_offset:r2 btilde:r9 sway_depth:r1'
+        s = 'mass:r1 inertia:r3 r:r1 lambda:r1 cg_depth:r1 cg_offset:r2 btilde:r9 sway_depth:r1 '// &
+            'size:r1'
     end function body_spec
 
     !> &body mass, inertia, r, lambda, cg_depth, cg_offset (one value on a bifilar, two on a
-    !! platform: its second is cg_offset_y, tracked as given apart), btilde, sway_depth.
+    !! platform: its second is cg_offset_y, tracked as given apart), btilde, sway_depth, size.
     subroutine read_body(self, rec, ios, msg)
         class(body_group_t), intent(inout) :: self  !! defaults in, values read out
         character(len=*), intent(in) :: rec         !! the group as one record
         integer, intent(out) :: ios                 !! iostat of the namelist read
         character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
         real(dp) :: mass, inertia(3), r, lambda, cg_depth, cg_offset(2), btilde(3, 3), &
-                    sway_depth
-        namelist /body/ mass, inertia, r, lambda, cg_depth, cg_offset, btilde, sway_depth
+                    sway_depth, size
+        namelist /body/ mass, inertia, r, lambda, cg_depth, cg_offset, btilde, sway_depth, size
         mass = NOT_GIVEN
+        size = NOT_GIVEN
         inertia = NOT_GIVEN
         r = NOT_GIVEN
         lambda = NOT_GIVEN
@@ -381,6 +386,7 @@ contains
             call self%note_given('cg_offset')
             call self%note_given('cg_offset_y')
         end if
+        call take('size', size, self%size)
         if (any(inertia /= NOT_GIVEN)) call self%note_given('inertia')
         where (inertia /= NOT_GIVEN) self%inertia = inertia
         self%btilde = btilde
@@ -410,7 +416,9 @@ contains
             line = line//', btilde('//achar(iachar('0') + i)//',:) = '// &
                 rlist_short(self%btilde(i, :))
         end do
-        line = line//', sway_depth = '//rshort(self%sway_depth)//' /'
+        line = line//', sway_depth = '//rshort(self%sway_depth)
+        if (self%gave('size')) line = line//', size = '//rshort(self%size)
+        line = line//' /'
     end function echo_body
 
     !> True when the mass centre is given as measured (cg_depth, cg_offset; always on a

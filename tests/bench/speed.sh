@@ -81,6 +81,10 @@ $(cpu_unit "$bin/bench_identify" periods_asym 10)"
 $(cpu_unit "$bin/bench_identify" record 3)"
     echo "identify_record_3par_differences $(per_unit 1 "$bin/bench_identify" record_differences) \
 $(cpu_unit "$bin/bench_identify" record_differences 3)"
+    # tensor: the CubeSat's 9 hangs (27 timings at 10-15 degrees, directions 1-3 degrees
+    # off) with 2000 Monte Carlo samples, whole process on one thread
+    echo "tensor_cubesat_mc_2000 $(OMP_NUM_THREADS=1 cg "$bin/bifilar" tests/bench/cubesat.nml \
+--out "$scratch") $(OMP_NUM_THREADS=1 cpu_process 1 "$bin/bifilar" tests/bench/cubesat.nml --out "$scratch")"
     echo "identify_mc_2000 $(( $(OMP_NUM_THREADS=1 per_unit 200 "$bin/bench_identify" mc) * 2000 )) \
 $(OMP_NUM_THREADS=1 cpu_unit "$bin/bench_identify" mc 2000 | awk '{printf "%.5e", $1 * 2000}')"
     # the multifilar platform (bench_platform): a right-hand side of the trifilar, an LSODA
