@@ -143,6 +143,12 @@ contains
         if (len_trim(d%measurement%calibration) > 0) &
             call calibrate_measurement(d%measurement, m, stat)
         if (stat%code /= 0) return
+        if (len_trim(d%measurement%tare) > 0) then
+            call set_error(stat, ERR_DECK, '&measurement tare = '// &
+                quoted(trim(d%measurement%tare))//': a tare read from its own output is not '// &
+                'available in this version; allowed: tare_I1, u_tare_I1, tare_mass')
+            return
+        end if
         total = 0.0_dp
         first_what = ''
         nfirst = 0
