@@ -36,6 +36,7 @@ module suites
     use test_tensor, only: run_tensor_tests
     use test_platform, only: run_platform_tests
     use test_certificate, only: run_certificate_tests
+    use test_calibrate, only: run_calibrate_tests
     implicit none
     private
 
@@ -111,6 +112,8 @@ contains
                     'record fits, examples', run_identify_tests), &
             suite_t('measure', 'measurement as done: instrument files, releases pooled, '// &
                     'traps, tare, trifilar', run_measure_tests), &
+            suite_t('calibrate', 'rig calibration with a reference body: a calibrated rig '// &
+                    'measures a second body', run_calibrate_tests), &
             suite_t('sensitivities', 'forward sensitivities: exact, against differences of '// &
                     'runs, fits, monodromies', run_sensitivities_tests), &
             suite_t('stats', 'Student''s t, chi-square tails, Welch-Satterthwaite, weighted '// &

@@ -24,6 +24,8 @@ submodule (identify) identify_impl
     use measure_groups, only: measurement_group_t
     use measurement, only: release_t, observation_t, OBS_RECORD, OBS_TIMING, RIG_COLUMNS
     use measurement_read, only: read_releases, release_inputs
+    use rig_calibration, only: rig_calibration_t, calibrate_measurement, calibration_row, &
+        read_calibration_file
     use inputs, only: input_t, set_input
     use pooling, only: pooled_t, pool_releases, sessions_pooled_t, pool_sessions
     use stats, only: coverage_factor, welch_satterthwaite, NU_INFINITE
@@ -145,6 +147,15 @@ contains
         call read_releases(d%measurement, rig_of(d), start_of(d), d%suspension%cables, &
                            deck_inputs(d, .true.), m, stat, d%start%gave('amplitude'))
         if (stat%code /= 0) return
+        if (len_trim(d%measurement%calibration) > 0) &
+            call calibrate_measurement(d%measurement, m, stat)
+        if (stat%code /= 0) return
+        if (len_trim(d%measurement%tare) > 0) then
+            call set_error(stat, ERR_DECK, '&measurement tare = '// &
+                quoted(trim(d%measurement%tare))//': a tare read from its own output is not '// &
+                'available in this version; allowed: tare_I1, u_tare_I1, tare_mass')
+            return
+        end if
         total = 0.0_dp
         first_what = ''
         nfirst = 0
@@ -993,6 +1004,7 @@ contains
         type(status_t), intent(out) :: stat
         type(pooled_t) :: pool, pj
         type(sessions_pooled_t) :: sp
+        type(rig_calibration_t) :: cal
         type(budget_row_t), allocatable :: rows(:)
         real(dp), allocatable :: uc(:), nuc(:)
         real(dp) :: cbar, u_total
@@ -1049,6 +1061,14 @@ contains
             uc = [uc, abs(cbar)*x(j)%u]
             nuc = [nuc, NU_INFINITE]
         end do
+        if (len_trim(d%measurement%calibration) > 0) then
+            ! the calibrated constants' covariance: one correlated row
+            call read_calibration_file(d%measurement%calibration_path, 'calibration', cal, stat)
+            if (stat%code /= 0) return
+            rows = [rows, calibration_row(cal, pool%mean, d%suspension%l + cal%delta_l)]
+            uc = [uc, rows(size(rows))%contribution]
+            nuc = [nuc, NU_INFINITE]
+        end if
         res%i1_total = pool%mean
         u_total = sqrt(sum(uc**2))
         res%u_i1_total = u_total

@@ -12,6 +12,7 @@ submodule (driver) registry
     use stability, only: floquet_analysis_t, chart_analysis_t
     use design, only: design_analysis_t
     use identify, only: identify_analysis_t
+    use calibrate, only: calibrate_analysis_t
     use tensor, only: tensor_analysis_t
     use simulate, only: simulate_analysis_t
     implicit none
@@ -25,6 +26,7 @@ contains
         call add(chart_analysis_t())
         call add(design_analysis_t())
         call add(identify_analysis_t())
+        call add(calibrate_analysis_t())
         call add(tensor_analysis_t())
         call add(simulate_analysis_t())
     contains

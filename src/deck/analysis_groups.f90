@@ -20,7 +20,7 @@ module analysis_groups
         'T_AD energy_error constraint_residual'
     !> Words allowed in &scene analyses.
     character(len=*), parameter, public :: ANALYSES_ALLOWED = &
-        'simulate floquet chart work_precision design identify tensor'
+        'simulate floquet chart work_precision design identify calibrate tensor'
     !> Words allowed in &scene model.
     character(len=*), parameter :: MODELS_ALLOWED = 'kane elastic'
     !> Words allowed in &chart x and y: of a bifilar, and of a platform.

@@ -34,6 +34,7 @@ module deck
     use rig_groups, only: suspension_group_t, body_group_t, start_group_t, &
         integration_group_t, cables_group_t, damping_group_t, TAU_END_MAX
     use measure_groups, only: measurement_group_t, tensor_group_t
+    use calibration_group, only: calibration_group_t
     use analysis_groups, only: scene_group_t, output_group_t, floquet_group_t, &
         chart_group_t, design_group_t, OUTPUT_COLUMNS
     implicit none
@@ -54,6 +55,7 @@ module deck
         type(damping_group_t) :: damping
         type(measurement_group_t) :: measurement
         type(tensor_group_t) :: tensor
+        type(calibration_group_t) :: calibration
     end type deck_t
 
     public :: read_deck, read_deck_text, analysis_requested, deck_echo
@@ -61,7 +63,8 @@ module deck
 
     !> Namelist groups a deck may contain, in the order they are read and checked.
     character(len=*), parameter :: GROUPS_ALLOWED = 'scene suspension body start '// &
-        'integration cables floquet chart output design damping measurement tensor'
+        'integration cables floquet chart output design damping measurement tensor '// &
+        'calibration'
     integer, parameter :: MAX_LINE = LINE_MAX           !! longest deck line (characters)
     integer, parameter :: MAX_DECK_BYTES = 1000000      !! largest deck (bytes)
 
@@ -210,6 +213,7 @@ contains
         call read_group(d%damping, .false.)
         call read_group(d%measurement, .false.)
         call read_group(d%tensor, .false.)
+        call read_group(d%calibration, .false.)
         call traps_restore(halting)
         if (stat%code /= STATUS_OK) return
         call check_deck(d, stat)
@@ -301,6 +305,7 @@ contains
         call d%measurement%check(sus, d%body, sta, stat)
         call d%tensor%check(sus, d%body, scene%requested('tensor'), stat)
         call check_platform_deck(scene, sus, d%body, sta, stat)
+        if (scene%requested('calibrate')) call d%calibration%check(stat)
         call check_measuring(scene, sus, d%body, stat)
     end subroutine check_deck
 
@@ -401,6 +406,7 @@ contains
         if (stat%code /= STATUS_OK) return
         what = ''
         if (scene%requested('identify')) what = 'identify'
+        if (scene%requested('calibrate')) what = 'calibrate'
         if (scene%requested('tensor')) what = 'tensor'
         if (scene%requested('design')) what = 'design'
         if (len(what) == 0) return
@@ -482,7 +488,9 @@ contains
         if (trim(d%output%columns) /= OUTPUT_COLUMNS) call put(d%output%echo())
         if (d%damping%c_v /= 0.0_dp .or. d%damping%c_q /= 0.0_dp .or. &
             analysis_requested(d, 'identify')) call put(d%damping%echo())
-        if (analysis_requested(d, 'identify')) call put(d%measurement%echo())
+        if (analysis_requested(d, 'identify') .or. analysis_requested(d, 'calibrate')) &
+            call put(d%measurement%echo())
+        if (analysis_requested(d, 'calibrate')) call put(d%calibration%echo())
         if (analysis_requested(d, 'tensor')) call put(d%tensor%echo())
 
     contains

@@ -82,6 +82,11 @@ module measure_groups
         !> the session of the deck's release (a label; a table's releases without a column
         !! session take it)
         character(len=256) :: session = ''
+        !> a rig calibration (NAME.calibration of analysis calibrate; '' for none) and a
+        !! tare measured by identify (its NAME.identify; '' for none), as given and
+        !! relative to the deck's folder
+        character(len=256) :: calibration = '', tare = ''
+        character(len=:), allocatable :: calibration_path, tare_path
     contains
         procedure, nopass :: name => measurement_name
         procedure, nopass :: spec => measurement_spec
@@ -160,7 +165,7 @@ contains
             'monte_carlo:i1 seed:i1 cycles:r100 trials:c1 record_columns:k3 record_units:c1 '// &
             'loss:c1 u_inertia:r2 u_cg_depth:r1 u_cg_offset:r1 u_r:r1 u_lambda:r1 tare_i1:r1 '// &
             'u_tare_i1:r1 tare_mass:r1 added_inertia:r1 u_added_inertia:r1 '// &
-            'on_failure:c1 session:c1 record_frame_rate:r1'
+            'on_failure:c1 session:c1 record_frame_rate:r1 calibration:c1 tare:c1'
     end function measurement_spec
 
     !> &measurement; n_periods counts the leading periods given (check refuses gaps).
@@ -174,7 +179,7 @@ contains
         character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
         real(dp) :: periods(MAX_PERIODS), amplitudes(MAX_PERIODS), cycles(MAX_PERIODS)
         character(len=256) :: record, quantity, estimate, trials, record_units, loss
-        character(len=256) :: on_failure, session
+        character(len=256) :: on_failure, session, calibration, tare
         real(dp) :: u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude
         real(dp) :: u_inertia(2), u_cg_depth, u_cg_offset, u_r, u_lambda
         real(dp) :: tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia
@@ -185,7 +190,7 @@ contains
             u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude, monte_carlo, seed, &
             trials, record_columns, record_units, loss, u_inertia, u_cg_depth, u_cg_offset, &
             u_r, u_lambda, tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia, &
-            on_failure, session, record_frame_rate
+            on_failure, session, record_frame_rate, calibration, tare
         call defaults()
         words = ''
         read (rec, nml=measurement, iostat=ios, iomsg=msg)
@@ -253,6 +258,8 @@ contains
         self%added_inertia = added_inertia
         self%u_added_inertia = u_added_inertia
         self%on_failure = on_failure
+        self%calibration = calibration
+        self%tare = tare
         self%session = session
         self%n_periods = 0
         do while (self%n_periods < MAX_PERIODS)
@@ -295,6 +302,8 @@ contains
             record_frame_rate = self%record_frame_rate
             on_failure = self%on_failure
             session = self%session
+            calibration = self%calibration
+            tare = self%tare
         end subroutine defaults
         !> The read with record_columns as text: words(1:3), the other variables the host's.
         subroutine read_words(ios2, msg2)
@@ -305,7 +314,8 @@ contains
                 u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude, &
                 monte_carlo, seed, trials, record_columns, record_units, loss, u_inertia, &
                 u_cg_depth, u_cg_offset, u_r, u_lambda, tare_i1, u_tare_i1, tare_mass, &
-                added_inertia, u_added_inertia, on_failure, session, record_frame_rate
+                added_inertia, u_added_inertia, on_failure, session, record_frame_rate, &
+                calibration, tare
             record_columns = ''
             read (rec, nml=measurement, iostat=ios2, iomsg=msg2)
             words = record_columns
@@ -326,6 +336,9 @@ contains
                 rlist_short(self%cycles(1:self%n_periods))//','
         end if
         if (len_trim(self%trials) > 0) line = line//' trials = '//quoted(self%trials)//','
+        if (len_trim(self%calibration) > 0) line = line//' calibration = '// &
+            quoted(self%calibration)//','
+        if (len_trim(self%tare) > 0) line = line//' tare = '//quoted(self%tare)//','
         if (self%gave('record_columns')) line = line//' record_columns = '// &
             column_text(1)//', '//column_text(2)//', '//column_text(3)//','
         if (self%record_frame_rate > 0.0_dp) line = line//' record_frame_rate = '// &
@@ -435,6 +448,11 @@ contains
         self%trials_path = ''
         if (len_trim(self%trials) > 0) self%trials_path = record_in_folder(deck_path, &
                                                                            self%trials)
+        self%calibration_path = ''
+        if (len_trim(self%calibration) > 0) &
+            self%calibration_path = record_in_folder(deck_path, self%calibration)
+        self%tare_path = ''
+        if (len_trim(self%tare) > 0) self%tare_path = record_in_folder(deck_path, self%tare)
     end subroutine normalise_measurement
 
     ! ------------------------------------------------------------------ &tensor
