@@ -30,6 +30,8 @@ contains
         real(dp) :: tdisc(3), tbody(3), i1, big_u, scale, i1_no, u_no
         integer :: seed, covered, ex
         logical :: ok, found
+        if (.not. t%want('calibrate: a rig calibrated with a disc, a second body within U')) &
+            return
         call fresh_dir(DIR)
         call true_periods('disc', 2.5_dp, I_DISC, tdisc, ok)
         call true_periods('body', 3.2_dp, I_BODY, tbody, ok)

@@ -865,16 +865,17 @@ contains
                   same_outputs(o, ref, d), clean(o, d), no_nan(o)])
     end function finished_ok
 
-    !> The files of a and b are the same, names and bytes, but checkpoints (*.partial) and
-    !! the cpu_seconds lines.
+    !> The files of a and b are the same, names and bytes, but checkpoints (*.partial), the
+    !! cpu_seconds lines and a certificate's foot (the date of its run).
     logical function same_outputs(a, b, d) result(same)
         character(len=*), intent(in) :: a, b, d
         integer :: ex
         ex = -1
         call execute_command_line('[ "$(ls '//a//' | grep -v ''\.partial$'')" = "$(ls '//b// &
-            ' | grep -v ''\.partial$'')" ] && for f in $(ls '//b//'); do grep -v '// &
-            '''^cpu_seconds'' '//a//'/$f > '//d//'/cmp_a; grep -v ''^cpu_seconds'' '//b// &
-            '/$f > '//d//'/cmp_b; cmp -s '//d//'/cmp_a '//d//'/cmp_b || exit 1; done', &
+            ' | grep -v ''\.partial$'')" ] && for f in $(ls '//b//'); do grep -v -e '// &
+            '''^cpu_seconds'' -e ''^<footer>'' '//a//'/$f > '//d//'/cmp_a; grep -v -e '// &
+            '''^cpu_seconds'' -e ''^<footer>'' '//b//'/$f > '//d//'/cmp_b; cmp -s '//d// &
+            '/cmp_a '//d//'/cmp_b || exit 1; done', &
             exitstat=ex)
         same = ex == 0
     end function same_outputs

@@ -536,7 +536,7 @@ contains
         call t%check('trials: periods and records in one table refused, one line', &
                      all([ex == 2, count_lines(dd//'/stderr') == 1, &
                           file_has(dd//'/stderr', 'one kind of release per table')]))
-        call write_text(dd//'/rig.csv', 'trial,l,period'//NL//'1,1.2,1.5'//NL//'1,1.3,1.5'//NL)
+        call write_text(dd//'/rig.csv', 'trial,l,period,amplitude'//NL//'1,1.2,1.5,10'//NL//'1,1.3,1.5,10'//NL)
         call write_text(dd//'/rig.nml', HEAD//SUSP//BODY//"&measurement trials = 'rig.csv' /"//NL)
         ex = run(exe//' '//dd//'/rig.nml --out '//dd, dd)
         call t%check('trials: a release whose rig changes refused (line 3, column l)', &

@@ -720,9 +720,9 @@ contains
         ! a tare would be silently left out of the tensor's fit: refused, as is a known
         ! moment added
         call one('tare', HEAD//ROWS5//'6 -1 0 1 0 1 0 1.5'//NL, &
-                 'the tensor''s fit takes none', '&measurement tare_I1 = 0.01, u_tare_i1 = 1e-4 /')
+                 'which tensor cannot take', '&measurement tare_I1 = 0.01, u_tare_i1 = 1e-4 /')
         call one('added', HEAD//ROWS5//'6 -1 0 1 0 1 0 1.5'//NL, &
-                 'added_inertia = 0.02', '&measurement added_inertia = 0.02 /')
+                 'which tensor cannot take', '&measurement added_inertia = 0.02 /')
     contains
         !> The deck of `table` (with the deck line `extra`) refused: exit 2, one line on
         !! stderr naming the deck and holding `word`, no file.

@@ -314,7 +314,7 @@ contains
         crc = '(none)'
         if (allocated(d%text)) crc = hex16(crc64_of(d%text))
         c = cert_new('Calibration of a pendulum rig with a reference', trim(d%scene%title), &
-                     'bifilar '//BIFILAR_VERSION, d%path, crc)
+                     BIFILAR_VERSION, d%path, crc)
         associate (cal => res%cal)
             call cert_section(c, 'Result')
             call cert_text(c, 'The rig''s effective constants: the cable length l + delta_l '// &

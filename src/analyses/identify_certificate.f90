@@ -27,7 +27,7 @@ contains
         crc = '(none)'
         if (allocated(d%text)) crc = hex16(crc64_of(d%text))
         c = cert_new('Moment of inertia I1 about the vertical axis', trim(d%scene%title), &
-                     'bifilar '//BIFILAR_VERSION, d%path, crc)
+                     BIFILAR_VERSION, d%path, crc)
         call result_section(c, d, res)
         call rig_section(c, d)
         call method_section(c, d, res)
