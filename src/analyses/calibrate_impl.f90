@@ -26,7 +26,7 @@ submodule (calibrate) calibrate_impl
     use crc64, only: crc64_of, hex16
     use version, only: BIFILAR_VERSION
     use certificate, only: certificate_t, cert_new, cert_section, cert_text, cert_table, &
-        cert_row, cert_write, cert_note, CELL
+        cert_row, cert_write, cert_note, cert_now, CELL
     implicit none
 
     !> Full parameter vector: delta_l, s, I0, m_t.
@@ -366,17 +366,8 @@ contains
             call cert_row(c, 'p-value'//CELL//trim(sci(res%p_value, 3)))
             call cert_row(c, 'consistent'//CELL//trim(merge('yes', 'no ', res%consistent)))
         end associate
-        call cert_write(c, outdir//'/'//d%name//'.certificate.html', stamp(), files, stat)
+        call cert_write(c, outdir//'/'//d%name//'.certificate.html', cert_now(), files, stat)
     end subroutine write_calibration_certificate
 
-    function stamp() result(s)
-        character(len=:), allocatable :: s
-        character(len=8) :: dd
-        character(len=10) :: tt
-        character(len=5) :: zz
-        call date_and_time(dd, tt, zz)
-        s = dd(1:4)//'-'//dd(5:6)//'-'//dd(7:8)//' '//tt(1:2)//':'//tt(3:4)//':'//tt(5:6)// &
-            ' '//zz(1:3)//':'//zz(4:5)
-    end function stamp
 
 end submodule calibrate_impl

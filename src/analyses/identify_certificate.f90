@@ -15,7 +15,7 @@ submodule (identify) identify_certificate
     use version, only: BIFILAR_VERSION
     use svg_plot, only: svg_plot_t, svg_new, svg_add, svg_render
     use certificate, only: certificate_t, cert_new, cert_section, cert_text, cert_table, &
-        cert_row, cert_figure, cert_write, cert_note, CELL
+        cert_row, cert_figure, cert_write, cert_note, cert_now, CELL
     implicit none
 
 contains
@@ -35,7 +35,7 @@ contains
         call checks_section(c, d, res)
         call figure_section(c, fig)
         if (res%n_trials > 1) call releases_section(c, res)
-        call cert_write(c, outdir//'/'//d%name//'.certificate.html', now_stamp(), files, stat)
+        call cert_write(c, outdir//'/'//d%name//'.certificate.html', cert_now(), files, stat)
     end procedure write_identify_certificate
 
     !> The result: I1 +- U, k, the coverage, dof_eff; the other parameters.
@@ -302,15 +302,5 @@ contains
         end if
     end function cycles_text
 
-    !> The date and time now, ISO 8601 with the offset from UTC.
-    function now_stamp() result(s)
-        character(len=:), allocatable :: s
-        character(len=8) :: dd
-        character(len=10) :: tt
-        character(len=5) :: zz
-        call date_and_time(dd, tt, zz)
-        s = dd(1:4)//'-'//dd(5:6)//'-'//dd(7:8)//' '//tt(1:2)//':'//tt(3:4)//':'//tt(5:6)// &
-            ' '//zz(1:3)//':'//zz(4:5)
-    end function now_stamp
 
 end submodule identify_certificate

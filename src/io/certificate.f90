@@ -33,7 +33,7 @@ module certificate
                           PART_ROW = 5, PART_FIGURE = 6, PART_NOTE = 7
 
     public :: cert_new, cert_section, cert_text, cert_table, cert_row, cert_figure, cert_html
-    public :: cert_write, html_escaped, cert_note
+    public :: cert_write, html_escaped, cert_note, cert_now
 
 contains
 
@@ -241,6 +241,17 @@ contains
         write (buf, '(i0)') n
         s = trim(buf)
     end function itoa_local
+
+    !> The date and time now, ISO 8601 with the offset from UTC: a page's stamp.
+    function cert_now() result(s)
+        character(len=:), allocatable :: s
+        character(len=8) :: dd
+        character(len=10) :: tt
+        character(len=5) :: zz
+        call date_and_time(dd, tt, zz)
+        s = dd(1:4)//'-'//dd(5:6)//'-'//dd(7:8)//' '//tt(1:2)//':'//tt(3:4)//':'//tt(5:6)// &
+            ' '//zz(1:3)//':'//zz(4:5)
+    end function cert_now
 
     !> Write the page as `path` into the run's files (it appears with them, whole or not at
     !! all); `stamp` is the run's date and time.
