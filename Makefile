@@ -28,6 +28,7 @@ MAKEFLAGS += --no-builtin-rules
 .DELETE_ON_ERROR:
 
 CHECK ?= 0
+LTO ?= 1
 ifeq ($(CHECK),1)
 BUILD = build-check
 BIN = build-check/bin
@@ -37,6 +38,15 @@ BIN = build-check/bin
 # dozen.  The optimised build keeps that warning; -fcheck=all checks the same at run time.
 FFLAGS = -Og -g -fcheck=all,no-array-temps -ffpe-trap=invalid,zero,overflow -fbacktrace \
          -Wno-maybe-uninitialized
+LIBS = -llapack -lblas
+DYN_LIBS = $(LIBS)
+else ifeq ($(LTO),0)
+# LTO=0: an optimised build without link-time optimisation, for iterating on one suite (a
+# change recompiles its modules and relinks in seconds, where LTO re-optimises the whole
+# program at every link).  Not for measurements: it is slower than bin/.
+BUILD = build-nolto
+BIN = build-nolto/bin
+FFLAGS = -O2 -march=x86-64-v2 -fno-backtrace
 LIBS = -llapack -lblas
 DYN_LIBS = $(LIBS)
 else
@@ -84,7 +94,7 @@ MPI ?= 0
 ifeq ($(MPI),1)
 BUILD := $(BUILD)-mpi
 FC = mpif90
-ifneq ($(CHECK),1)
+ifeq ($(CHECK)$(LTO),01)
 LIBS := $(foreach l,lapack blas,$(call static_or_shared,$(l)))
 LINK_QUIET =
 endif
@@ -269,5 +279,5 @@ deps:
 	  fi; }
 
 clean:
-	rm -rf build build-check build-mpi build-check-mpi bin output/*.dat output/*.summary \
+	rm -rf build build-check build-nolto build-nolto-mpi build-mpi build-check-mpi bin output/*.dat output/*.summary \
 	  output/*.md output/*.design output/*.identify output/*.certificate.html output/*.calibration output/*.tmp.* output/*.partial plots/*.png
