@@ -28,7 +28,7 @@ submodule (identify) identify_impl
         read_calibration_file
     use inputs, only: input_t, set_input
     use pooling, only: pooled_t, pool_releases, sessions_pooled_t, pool_sessions
-    use stats, only: coverage_factor, welch_satterthwaite, NU_INFINITE
+    use stats, only: coverage_factor, welch_satterthwaite, NU_INFINITE, chi2_sf
     use model_follow, only: follows_record, not_following_message
     use tip_check, only: check_not_tipping
     use record_fit, only: record_fit_t, record_mc_task_t, fit_problem, fit_record, carry_inputs, &
@@ -1052,6 +1052,16 @@ contains
             return
         end if
         allocate (r%warnings(0))
+        ! the self-check, with each sample's u stated (a record's column U): chi^2 of the
+        ! weighted residuals on m - np dof; the covariance above already takes s^2 = max(1,
+        ! chi^2/dof), the Birge ratio squared when the samples scatter beyond their u
+        if (rec%has_u .and. m > np) then
+            r%fit_tested = .true.
+            r%fit_birge = sqrt(fit%cost/(m - np))
+            r%fit_consistent = chi2_sf(fit%cost, real(m - np, dp)) >= 0.05_dp
+            if (.not. r%fit_consistent) call add_warning(r%warnings, &
+                record_misfit_warning(rec, i0, fit%r, fit%cost, m - np, r%fit_birge))
+        end if
         if (.not. mea%estimated('bias')) then
             ! an offset the fit does not model shows as a mean of the residuals
             emean = sum(e)/m
@@ -1065,6 +1075,9 @@ contains
         end if
         ! a column U that is no u of these samples
         umsg = u_column_warning(rec, i0, e)
+        ! (its scatter against U is the self-check's warning above when that fired)
+        if (.not. r%fit_consistent .and. index(umsg, 'not small against its swing') == 0) &
+            umsg = ''
         if (len(umsg) > 0) call add_warning(r%warnings, umsg)
         ! the classical value from the samples the fit takes as the swing (no dropouts)
         r%period_linear = clean_mean_period(rec, i0, e, nout)
@@ -1082,6 +1095,34 @@ contains
             if (stat%code /= 0) return
         end if
     end subroutine release_record
+
+    !> The warning of a record whose residuals do not agree with its samples' stated u:
+    !! chi^2 on its dof, p, the Birge ratio, the sample with the largest normalised residual
+    !! (its time and value) and the likely cause.
+    function record_misfit_warning(rec, i0, rw, chi2, dof, birge) result(msg)
+        type(record_t), intent(in) :: rec
+        integer, intent(in) :: i0               !! the first sample fitted
+        real(dp), intent(in) :: rw(:)           !! the weighted residuals, from sample i0
+        real(dp), intent(in) :: chi2, birge
+        integer, intent(in) :: dof
+        character(len=:), allocatable :: msg
+        character(len=:), allocatable :: cause
+        integer :: k, j
+        k = maxloc(abs(rw), 1)
+        j = i0 + k - 1
+        if (abs(rw(k)) > 5.0_dp*birge .and. abs(rw(k)) > 10.0_dp) then
+            cause = 'a spike, a dropout or a mistyped sample there'
+        else
+            cause = 'a column U below the instrument''s real noise, or a parameter missing '// &
+                'from &measurement estimate'
+        end if
+        msg = 'identify: the record''s residuals do not agree with its samples'' u (chi^2 = '// &
+            sci(chi2, 3)//' on '//itoa(dof)//' dof, p = '// &
+            sci(chi2_sf(chi2, real(dof, dp)), 2)//', Birge ratio '//sci(birge, 3)// &
+            '): the sample at t = '//sci(rec%t(j), 6)//' s, '//sci(rec%v(j)/rec%to_rad, 4)// &
+            ' '//trim(rec%units)//', is '//sci(abs(rw(k)), 2)//' u from the model; likely '// &
+            cause//'; u_I1_fit is inflated by the Birge ratio'
+    end function record_misfit_warning
 
     !> The releases pooled (module pooling), the common inputs' budget once (their
     !! sensitivities averaged with the pool's weights), the tare and added inertia

@@ -711,7 +711,9 @@ contains
             block
                 ! every amplitude on one scale k (1 as read): dI1/dk of the whole inversion,
                 ! one-sided when a step would pass 180 degrees
-                h2 = hrel
+                ! (a larger step than the others': the periods often tell k better than
+                ! its u, so I1 moves little with it)
+                h2 = 1.0e-3_dp
                 if (maxval(amps)*(1.0_dp + h2) < 180.0_dp) then
                     call inverted_scaled(1.0_dp + h2, ip, stat)
                     if (stat%code == 0) call inverted_scaled(1.0_dp - h2, im, stat)
