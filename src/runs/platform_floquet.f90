@@ -81,6 +81,7 @@ module platform_floquet
     end type platform_floquet_t
 
     public :: platform_floquet_analysis, platform_floquet_point, platform_point_ready
+    public :: platform_torsion_period
 
 contains
 
@@ -355,6 +356,51 @@ contains
         res%orbit_closure = maxval(abs(yh(4:5)))
         call multipliers(pl, y0, yh, n, res, stat)
     end subroutine platform_floquet_analysis
+
+    !> The period (the deck's unit of time) of the periodic torsion of amplitude amp (rad) of
+    !! platform pl (n = 3, inextensible; checked: check_platform): the orbit of
+    !! platform_floquet_analysis (the shooting from the turn about the mass centre, the
+    !! continuation in the offset where it fails), without the multipliers.  ERR_MODEL when
+    !! no periodic torsion is found, ERR_DECK for a platform that is not a trifilar.
+    subroutine platform_torsion_period(pl, amp, rtol, method, period, stat)
+        type(platform_t), intent(in) :: pl
+        real(dp), intent(in) :: amp             !! yaw amplitude (rad)
+        real(dp), intent(in) :: rtol
+        integer, intent(in) :: method
+        real(dp), intent(out) :: period
+        type(status_t), intent(out) :: stat
+        type(platform_floquet_t) :: res
+        real(dp) :: y0(NS), yh(NS), n(NS, NS), th, tol, sc(NS)
+        integer :: iters
+        logical :: ok
+        period = 0.0_dp
+        if (pl%n /= 3 .or. pl%nf /= 3) then
+            call set_error(stat, ERR_DECK, 'platform torsion: the torsion of inextensible '// &
+                           'cables, n = 3 (cables = '//itoa(pl%n)//')')
+            return
+        end if
+        sc = state_scales(pl)
+        tol = 1.0e3_dp*rtol*sc(4)*max(1.0e-3_dp, abs(amp))
+        call platform_start(pl, amp, y0, stat)
+        if (stat%code /= STATUS_OK) return
+        call shoot(pl, y0, rtol, method, tol, th, yh, n, iters, res%steps, &
+                   res%rhs_evaluations, ok, stat)
+        if (stat%code /= STATUS_OK .and. stat%code /= ERR_MODEL) return
+        if (.not. ok .and. any(pl%cg(1:2) /= 0.0_dp)) then
+            call continuation(pl, amp, rtol, method, tol, y0, th, yh, n, res, ok, stat)
+            if (stat%code /= STATUS_OK .and. stat%code /= ERR_MODEL) return
+        end if
+        if (.not. ok) then
+            call set_error(stat, ERR_MODEL, 'platform torsion: no periodic torsion found at '// &
+                           'amplitude '//sci(amp/deg)//' deg (the shooting from the turn '// &
+                           'about the mass centre and the continuation from the centred '// &
+                           'body failed): lower the amplitude or move the mass centre '// &
+                           'towards the axis')
+            return
+        end if
+        stat%code = STATUS_OK
+        period = 2.0_dp*th
+    end subroutine platform_torsion_period
 
     !> Continuation in the mass centre's offset from the centred body (whose torsion is pure:
     !! its start is known exactly): the offset s cg(1:2), s = 1/K ... 1, each step's start

@@ -114,13 +114,14 @@ contains
 
     !> The regular platform of a rig_t of cables > 2 (radius b/2, radius_prime b_prime/2,
     !! every cable of length l; the mass centre from r and lambda: its offset along x
-    !! r cos(lambda) - b_prime/2, its depth r sin(lambda)): a candidate of a design.
+    !! r cos(lambda) - b_prime/2, along y cg_offset_y, its depth r sin(lambda)): a
+    !! candidate of a design, the platform a measurement fits.
     pure function platform_of_rig(rg) result(pl)
         type(rig_t), intent(in) :: rg
         type(platform_t) :: pl
         pl = regular_platform(rg%cables, 0.5_dp*rg%b, 0.5_dp*rg%b_prime, rg%l, rg%mass, &
                               platform_inertia(rg%inertia, rg%btilde), &
-                              [rg%r*cos(rg%lambda) - 0.5_dp*rg%b_prime, 0.0_dp], &
+                              [rg%r*cos(rg%lambda) - 0.5_dp*rg%b_prime, rg%cg_offset_y], &
                               rg%r*sin(rg%lambda), rg%g)
         pl%c_v = rg%c_v
         pl%c_q = rg%c_q
