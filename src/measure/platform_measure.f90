@@ -2,9 +2,10 @@
 !! period and of a record is the platform's own (module platform_model), not the bifilar
 !! equivalent with b = 2 radius that pure torsion allows.
 !!
-!! A measurement's rig (rig_t) of cables > 2 is the regular platform of module platform_rig
-!! (platform_of_rig: radius b/2, radius_prime b_prime/2, every cable of length l, the mass
-!! centre at x = r cos(lambda) - b_prime/2, y = cg_offset_y, depth r sin(lambda)).
+!! A measurement's rig (rig_t) of cables > 2 is a regular platform (platform_of_rig: radius
+!! b/2, radius_prime b_prime/2, every cable of length l, the mass centre at
+!! x = r cos(lambda) - b_prime/2, y = cg_offset_y, depth r sin(lambda), the inertia of
+!! module platform_geometry's platform_inertia).
 !! * Centred (the mass centre on the axis): the periods are those of pure torsion, which
 !!   the paper's bifilar with b = 2 radius, b' = 2 radius_prime gives exactly (the energy
 !!   integral of module floquet) and which does not depend on the depth of the mass centre
@@ -15,7 +16,7 @@
 !!   enter the fit.  Four or more cables (no inextensible model) keep the bifilar's pure
 !!   torsion, the mass centre's depth taken positive (torsion_equivalent).
 !! * Off the axis (offaxis_platform, n = 3): a period is that of the platform's periodic
-!!   torsion at the amplitude (module platform_floquet: the brake orbit from rest at
+!!   torsion at the amplitude (module platform_orbit: the brake orbit from rest at
 !!   yaw = rest + amplitude, found by shooting).
 !! * Records of three cables (platform_records): the platform's motion released
 !!   at rest turned by the amplitude about the vertical through its mass centre (module
@@ -29,36 +30,44 @@
 !!   which the body tips (check_platform).
 module platform_measure
     use kinds, only: dp, deg
-    use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC
-    use text, only: fixed, sci
+    use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_MODEL, ERR_NUMERIC
+    use text, only: fixed, sci, itoa
     use rig, only: rig_t, start_t, accuracy_t
-    use platform_geometry, only: platform_t, QPSI
+    use ode_system, only: integrator_t, integrator_stats_t
+    use integrators, only: new_integrator
+    use platform_geometry, only: platform_t, regular_platform, platform_inertia, QPSI
     use platform_model, only: check_platform, platform_start, platform_evaluate, &
-        platform_motion_t
-    use platform_rig, only: platform_of_rig
-    use platform_floquet, only: platform_torsion_period
-    use platform_run, only: platform_run_t, platform_run_start
-    use run_loop, only: row_sink_t, stepped_model_t, drive
+        platform_motion_t, platform_sys_t
+    use platform_orbit, only: platform_torsion_period
     implicit none
     private
 
     public :: offaxis_platform, platform_records, torsion_equivalent, measured_platform
     public :: platform_hold_check
-    public :: platform_period_s, platform_record
+    public :: platform_period_s, platform_record, platform_of_rig
 
     !> A mass centre within this fraction of radius_prime of the axis is on it.
     real(dp), parameter :: ON_AXIS = 1.0e-12_dp
 
-    !> The samples of a platform's record: the yaw from rest or omega . n3.
-    type, extends(row_sink_t) :: platform_sample_sink_t
-        logical :: rate = .false.
-        real(dp) :: psi_rest = 0.0_dp
-        real(dp), allocatable :: vals(:)
-    contains
-        procedure :: take => sample_take
-    end type platform_sample_sink_t
+    !> The most integrator steps of a record's run.
+    integer, parameter :: RECORD_MAX_STEPS = 2000000
 
 contains
+
+    !> The regular platform of a rig_t of cables > 2 (radius b/2, radius_prime b_prime/2,
+    !! every cable of length l; the mass centre from r and lambda: its offset along x
+    !! r cos(lambda) - b_prime/2, along y cg_offset_y, its depth r sin(lambda)), in the
+    !! rig's units, with its damping; not yet prepared (check_platform).
+    pure function platform_of_rig(rg) result(pl)
+        type(rig_t), intent(in) :: rg
+        type(platform_t) :: pl
+        pl = regular_platform(rg%cables, 0.5_dp*rg%b, 0.5_dp*rg%b_prime, rg%l, rg%mass, &
+                              platform_inertia(rg%inertia, rg%btilde), &
+                              [rg%r*cos(rg%lambda) - 0.5_dp*rg%b_prime, rg%cg_offset_y], &
+                              rg%r*sin(rg%lambda), rg%g)
+        pl%c_v = rg%c_v
+        pl%c_q = rg%c_q
+    end function platform_of_rig
 
     !> The mass centre's offset (x, y) from the axis of the platform rg (cables > 2).
     pure function platform_offset(rg) result(e)
@@ -163,8 +172,6 @@ contains
         real(dp), intent(out) :: vals(:)
         type(status_t), intent(out) :: stat
         type(platform_t) :: pl
-        type(platform_run_t) :: m
-        type(platform_sample_sink_t) :: sink
         real(dp), allocatable :: y0(:), taus(:)
         integer :: n, i0, i
         vals = 0.0_dp
@@ -194,46 +201,84 @@ contains
             if (i0 == 1) vals = merge(0.0_dp, st%amplitude*deg, rate)
             return
         end if
-        call platform_run_start(m, pl, y0, acc%rtol, acc%atol, acc%method, &
-                                taus(size(taus)), stat)
-        if (stat%code /= STATUS_OK) return
-        sink%rate = rate
-        sink%psi_rest = pl%q_ref(QPSI)
-        allocate (sink%vals(0:size(taus) - 1))
-        call drive(m, taus, sink, stat)
-        if (stat%code /= STATUS_OK) then
-            stat%msg = 'the platform''s record: '//stat%msg
-            return
-        end if
-        vals(i0:n) = sink%vals
+        call integrate_samples(pl, y0, taus, acc, rate, vals(i0:n), stat)
+        if (stat%code /= STATUS_OK) stat%msg = 'the platform''s record: '//stat%msg
     end subroutine platform_record
 
-    !> One sample: the yaw from rest or omega . n3, checked finite.
-    subroutine sample_take(sink, m, k, t, y, stat)
-        class(platform_sample_sink_t), intent(inout) :: sink
-        class(stepped_model_t), intent(inout) :: m
-        integer, intent(in) :: k
-        real(dp), intent(in) :: t
-        real(dp), intent(in) :: y(:)
+    !> The run of pl from y0 (at rest, t = 0) sampled at the times taus (increasing, >= 0):
+    !! the yaw from rest or the rate about the downward vertical, each sample checked finite
+    !! with every cable taut (ERR_MODEL when one goes slack: the inextensible model ends).
+    subroutine integrate_samples(pl, y0, taus, acc, rate, vals, stat)
+        type(platform_t), intent(in) :: pl
+        real(dp), intent(in) :: y0(:), taus(:)
+        type(accuracy_t), intent(in) :: acc
+        logical, intent(in) :: rate
+        real(dp), intent(out) :: vals(:)
         type(status_t), intent(out) :: stat
-        type(platform_motion_t) :: mo
-        stat%code = STATUS_OK
-        select type (m)
-        type is (platform_run_t)
-            call platform_evaluate(m%sys%pl, y, mo, stat)
+        type(platform_sys_t) :: sys
+        class(integrator_t), allocatable :: s
+        type(integrator_stats_t) :: st
+        real(dp) :: y(size(y0)), t_end, tn
+        integer :: k, nt, nstep
+        vals = 0.0_dp
+        nt = size(taus)
+        sys%pl = pl
+        t_end = taus(nt)
+        k = 1
+        do while (k <= nt)
+            if (taus(k) > 0.0_dp) exit
+            call sample(y0, taus(k), vals(k))
             if (stat%code /= STATUS_OK) return
-            if (sink%rate) then
+            k = k + 1
+        end do
+        if (k > nt) return
+        call new_integrator(acc%method, s)
+        call s%init(sys, 0.0_dp, y0, acc%rtol, [acc%atol], stat, tcrit=t_end)
+        if (stat%code /= STATUS_OK) return
+        nstep = 0
+        do while (k <= nt)
+            call s%step(sys, stat, tout=t_end)
+            if (stat%code /= STATUS_OK) return
+            nstep = nstep + 1
+            st = s%stats()
+            tn = st%t_current
+            do while (k <= nt)
+                if (taus(k) > tn) exit
+                call s%dense(taus(k), 0, y, stat)
+                if (stat%code == STATUS_OK) call sample(y, taus(k), vals(k))
+                if (stat%code /= STATUS_OK) return
+                k = k + 1
+            end do
+            if (nstep >= RECORD_MAX_STEPS .and. k <= nt) then
+                call set_error(stat, ERR_NUMERIC, 'more than '//itoa(RECORD_MAX_STEPS)// &
+                               ' integrator steps before t = '//sci(taus(k))//' s; raise '// &
+                               '&integration rtol/atol')
+                return
+            end if
+        end do
+    contains
+        !> One sample of state yy at time tt.
+        subroutine sample(yy, tt, v)
+            real(dp), intent(in) :: yy(:), tt
+            real(dp), intent(out) :: v
+            type(platform_motion_t) :: mo
+            v = 0.0_dp
+            call platform_evaluate(pl, yy, mo, stat)
+            if (stat%code /= STATUS_OK) return
+            if (rate) then
                 ! the paper's W (its n3 points down): positive as the yaw from a positive
                 ! release falls back, as theta4 and W of the bifilar's record
-                sink%vals(k) = -mo%omega(3)
+                v = -mo%omega(3)
             else
-                sink%vals(k) = mo%q(QPSI) - sink%psi_rest
+                v = mo%q(QPSI) - pl%q_ref(QPSI)
             end if
-            if (.not. (abs(sink%vals(k)) < huge(1.0_dp))) call set_error(stat, ERR_NUMERIC, &
-                'the platform''s record: not finite at t = '//sci(t))
-        class default
-            call set_error(stat, ERR_NUMERIC, 'the platform''s record: not a platform run')
-        end select
-    end subroutine sample_take
+            if (.not. (abs(v) < huge(1.0_dp))) then
+                call set_error(stat, ERR_NUMERIC, 'not finite at t = '//sci(tt)//' s')
+            else if (any(mo%tension(1:pl%nd) <= 0.0_dp)) then
+                call set_error(stat, ERR_MODEL, 'a cable goes slack at t = '//sci(tt)// &
+                               ' s: the inextensible model ends; lower the amplitude')
+            end if
+        end subroutine sample
+    end subroutine integrate_samples
 
 end module platform_measure
