@@ -375,10 +375,10 @@ contains
                      all(abs(ir(2:4)/ir(1) - 1.0_dp) < 1.0e-6_dp))
         call t%check('platform identify: the record''s I1 covers the truth', &
                      abs(ir(1) - 0.0243_dp) < uu(1))
-        write (*, '(a,4es16.8)') '  platform identify, periods at cg_depth 0.05 0.2 -0.05 '// &
-            '-0.2: ', ip
-        write (*, '(a,4es16.8)') '  platform identify, record at cg_depth 0.05 0.2 -0.05 '// &
-            '-0.2: ', ir
+        write (*, '(a,3es10.2)') '  platform identify, periods at cg_depth 0.2, -0.05, -0.2 '// &
+            'over 0.05, less 1: ', ip(2:4)/ip(1) - 1.0_dp
+        write (*, '(a,3es10.2)') '  platform identify, a record at cg_depth 0.2, -0.05, -0.2 '// &
+            'over 0.05, less 1: ', ir(2:4)/ir(1) - 1.0_dp
         ! above its tipping height
         call write_text(d//'/tip.nml', "&scene analyses = 'identify' /"//NL// &
             '&suspension cables = 3, radius = 0.135, radius_prime = 0.05, l = 1.0, '// &
@@ -406,7 +406,8 @@ contains
     ! ---------------------------------------------------------------------------------------
     !> The body's mass centre 18 mm off the axis of the trifilar (along x, and as far along
     !! y): periods of the platform's periodic torsion at I1 = 0.0243 give the truth to 1e-6,
-    !! with a budget row for cg_offset (-2 e I1/(R^2 - e^2) to 2 %) and a Monte Carlo u within
+    !! with a budget row for cg_offset, and for cg_offset_y when the offset is along y
+    !! (-2 e I1/(R^2 - e^2) to 2 %), and a Monte Carlo u within
     !! 25 % of the budget's; a record of the platform's motion gives I1 within U, and with
     !! the offset ignored (cg_offset = 0) about e^2/(R^2 - e^2) = 1.8 % more.
     subroutine test_identify_offset(t, exe)
@@ -417,7 +418,7 @@ contains
         character(len=:), allocatable :: d, o, head
         type(accuracy_t) :: acc
         type(status_t) :: st
-        real(dp) :: t5, t20, ipx, ipy, u1, umc, sens, irec, urec, inai
+        real(dp) :: t5, t20, ipx, ipy, u1, umc, sens, sensy, irec, urec, inai
         integer :: exx, exy, exr, exn
         logical :: ok, okr
         d = SCR//'/ioffset'
@@ -443,9 +444,11 @@ contains
         ! the same periods with the offset along y (the trifilar's torsion at small amplitude
         ! turns about the mass centre whatever the direction; at 20 degrees nearly so)
         call write_text(d//'/py.nml', head//'cg_offset = 0, 0.018 /'//NL// &
-            '&measurement periods = '//sci(t5, 15)//', amplitudes = 5 /'//NL)
+            '&measurement periods = '//sci(t5, 15)//', amplitudes = 5, u_period = 1e-4, '// &
+            'u_cg_offset = 0.002 /'//NL)
         exy = run(exe//' '//d//'/py.nml --out '//o, d)
         ipy = kv_real(o//'/py.identify', 'I1')
+        sensy = budget_sensitivity(o//'/py.identify', 'cg_offset_y')
         call t%check('platform identify off the axis: periods made, exit 0 with the budget '// &
                      'and Monte Carlo', ok .and. exx == 0 .and. exy == 0 .and. umc > 0.0_dp)
         call t%check_close('platform identify off the axis: periods give the truth', ipx, &
@@ -454,6 +457,9 @@ contains
                            ipy, 0.0243_dp, 1.0e-4_dp, 0.0_dp)
         call t%check_close('platform identify off the axis: the budget''s cg_offset '// &
                            'sensitivity is -2 e I1/(R^2 - e^2)', sens, &
+                           -2.0_dp*e*0.0243_dp/(rr**2 - e**2), 0.02_dp, 0.0_dp)
+        call t%check_close('platform identify off the axis: along y, the budget''s '// &
+                           'cg_offset_y sensitivity is -2 e I1/(R^2 - e^2)', sensy, &
                            -2.0_dp*e*0.0243_dp/(rr**2 - e**2), 0.02_dp, 0.0_dp)
         call t%check_close('platform identify off the axis: Monte Carlo''s u is the '// &
                            'budget''s', umc, u1, 0.25_dp, 0.0_dp)

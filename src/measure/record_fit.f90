@@ -313,7 +313,7 @@ contains
         real(dp) :: t0
         integer :: n, i0, i, nq, ns, c
         logical :: shift, rate
-        rg = torsion_equivalent(pt%rg)
+        rg = pt%rg
         st = pt%st
         t0 = pt%t0
         acc = self%acc
@@ -348,6 +348,7 @@ contains
             end do
             return
         end if
+        rg = torsion_equivalent(rg)
         call make_pendulum(rg, p, stat)
         if (stat%code /= 0) return
         call start_state(st, p, y0, th0, stat)
