@@ -37,6 +37,7 @@ module suites
     use test_platform, only: run_platform_tests
     use test_certificate, only: run_certificate_tests
     use test_calibrate, only: run_calibrate_tests
+    use test_tare, only: run_tare_tests
     implicit none
     private
 
@@ -114,6 +115,8 @@ contains
                     'traps, tare, trifilar', run_measure_tests), &
             suite_t('calibrate', 'rig calibration with a reference body: a calibrated rig '// &
                     'measures a second body', run_calibrate_tests), &
+            suite_t('tare', 'a tare from its own output: the shared inputs correlated, its '// &
+                    'dof kept, refusals', run_tare_tests), &
             suite_t('sensitivities', 'forward sensitivities: exact, against differences of '// &
                     'runs, fits, monodromies', run_sensitivities_tests), &
             suite_t('stats', 'Student''s t, chi-square tails, Welch-Satterthwaite, weighted '// &
