@@ -12,8 +12,10 @@
 !! tensor_fit's.
 !!
 !! Files: OUTDIR/NAME.tensor (key = value lines, then the budget), OUTDIR/NAME.tensor.dat
-!! (per hang the measured and the fitted vertical moment, for plots/tensor.gp), and with
-!! &tensor plan = N, OUTDIR/NAME.plan.csv (a table of hangs to copy).  No routine stops.
+!! (per hang the measured and the fitted vertical moment, for plots/tensor.gp),
+!! OUTDIR/NAME.certificate.html (submodule tensor_certificate, when a table of hangs was
+!! fitted), and with &tensor plan = N, OUTDIR/NAME.plan.csv (a table of hangs to copy).
+!! No routine stops.
 !!
 !! The analysis for the driver: tensor_analysis_t (module analysis_base).
 module tensor
@@ -24,6 +26,7 @@ module tensor
     use sweep_engine, only: sweep_task_t, sweep_options_t, sweep_report_t
     use monte_carlo, only: MC_TENSOR
     use analysis_base, only: analysis_t, WORD_LEN
+    use tensor_fit, only: tensor_fit_t, tensor_problem_t
     implicit none
     private
 
@@ -103,6 +106,21 @@ module tensor
             class(sweep_task_t), allocatable, intent(out) :: task
             type(status_t), intent(out) :: stat     !! ERR_DECK
         end subroutine tensor_sweep_task
+
+        !> OUTDIR/NAME.certificate.html (submodule tensor_certificate): the page an
+        !! engineer attaches to a test report, for a deck that fitted a table of hangs.
+        module subroutine write_tensor_certificate(d, outdir, res, fit, prob, drift, limit, &
+                                                   u_x_mc, u_moments_mc, files, stat)
+            type(deck_t), intent(in) :: d           !! the deck
+            character(len=*), intent(in) :: outdir  !! output directory
+            type(tensor_result_t), intent(in) :: res
+            type(tensor_fit_t), intent(in) :: fit   !! the fit
+            type(tensor_problem_t), intent(in) :: prob  !! its hangs and timings
+            real(dp), intent(in) :: drift(:), limit(:)  !! per timing, per hang
+            real(dp), intent(in) :: u_x_mc(6), u_moments_mc(3)  !! Monte Carlo (0: none)
+            type(out_files_t), intent(inout) :: files   !! the run's files
+            type(status_t), intent(out) :: stat     !! ERR_IO
+        end subroutine write_tensor_certificate
 
         !> The preconditions (tensor_ready).
         module subroutine tensor_analysis_ready(self, d, stat)
