@@ -26,7 +26,6 @@ module tensor
     use sweep_engine, only: sweep_task_t, sweep_options_t, sweep_report_t
     use monte_carlo, only: MC_TENSOR
     use analysis_base, only: analysis_t, WORD_LEN
-    use tensor_fit, only: tensor_fit_t, tensor_problem_t
     implicit none
     private
 
@@ -114,12 +113,14 @@ module tensor
             type(deck_t), intent(in) :: d           !! the deck
             character(len=*), intent(in) :: outdir  !! output directory
             type(tensor_result_t), intent(in) :: res
-            type(tensor_fit_t), intent(in) :: fit   !! the fit
-            type(tensor_problem_t), intent(in) :: prob  !! its hangs and timings
+            !> the fit (tensor_fit_t) and its problem, the hangs and timings
+            !! (tensor_problem_t) of module tensor_fit: unlimited polymorphic here, so that
+            !! this module, which the driver uses, stays below tensor_fit's floor
+            class(*), intent(in) :: fit, prob
             real(dp), intent(in) :: drift(:), limit(:)  !! per timing, per hang
             real(dp), intent(in) :: u_x_mc(6), u_moments_mc(3)  !! Monte Carlo (0: none)
             type(out_files_t), intent(inout) :: files   !! the run's files
-            type(status_t), intent(out) :: stat     !! ERR_IO
+            type(status_t), intent(out) :: stat     !! ERR_IO; ERR_NUMERIC: not those types
         end subroutine write_tensor_certificate
 
         !> The preconditions (tensor_ready).

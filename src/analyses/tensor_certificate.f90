@@ -20,7 +20,8 @@ submodule (tensor) tensor_certificate
     use certificate, only: certificate_t, cert_new, cert_section, cert_text, cert_table, &
         cert_row, cert_figure, cert_write, cert_note, cert_now, CELL
     use tensor_checks, only: TRIANGLE_MARGIN, NEAR_PARALLEL_DEG
-    use tensor_fit, only: DRIFT_MAX
+    use tensor_fit, only: tensor_fit_t, tensor_problem_t, DRIFT_MAX
+    use status, only: set_error, ERR_NUMERIC
     implicit none
 
     !> The names of the six entries, in their order.
@@ -30,6 +31,30 @@ contains
 
     !> Write OUTDIR/NAME.certificate.html for a tensor run into the run's files.
     module procedure write_tensor_certificate
+        stat%code = 0
+        select type (fit)
+        type is (tensor_fit_t)
+            select type (prob)
+            type is (tensor_problem_t)
+                call write_page(d, outdir, res, fit, prob, drift, limit, u_x_mc, &
+                                u_moments_mc, files, stat)
+                return
+            end select
+        end select
+        call set_error(stat, ERR_NUMERIC, 'tensor: the certificate was given no fit')
+    end procedure write_tensor_certificate
+
+    !> The page of a fit and its problem.
+    subroutine write_page(d, outdir, res, fit, prob, drift, limit, u_x_mc, u_moments_mc, &
+                          files, stat)
+        type(deck_t), intent(in) :: d
+        character(len=*), intent(in) :: outdir
+        type(tensor_result_t), intent(in) :: res
+        type(tensor_fit_t), intent(in) :: fit
+        type(tensor_problem_t), intent(in) :: prob
+        real(dp), intent(in) :: drift(:), limit(:), u_x_mc(6), u_moments_mc(3)
+        type(out_files_t), intent(inout) :: files
+        type(status_t), intent(out) :: stat
         type(certificate_t) :: c
         character(len=:), allocatable :: crc
         integer :: j
@@ -50,7 +75,7 @@ contains
         call hangs_part(c, fit, prob)
         call figure_part(c, fit, prob)
         call cert_write(c, outdir//'/'//d%name//'.certificate.html', cert_now(), files, stat)
-    end procedure write_tensor_certificate
+    end subroutine write_page
 
     !> The tensor, the principal moments with U, k and the coverage, the axes.
     subroutine result_part(c, res, fit, u_x_mc, u_moments_mc)
