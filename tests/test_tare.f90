@@ -23,7 +23,8 @@ module test_tare
 
     character(len=*), parameter :: DIR = 'build/test_tare'
     real(dp), parameter :: U_T = 1.0e-4_dp, U_L = 1.0e-3_dp, U_B = 5.0e-4_dp
-    real(dp), parameter :: I_FIX_TRUE = 0.02_dp, I_ALL_TRUE = 0.08_dp, M_FIX = 1.0_dp, M_ALL = 3.2_dp
+    real(dp), parameter :: I_FIX_TRUE = 0.02_dp, I_ALL_TRUE = 0.08_dp
+    real(dp), parameter :: M_FIX = 1.0_dp, M_ALL = 3.2_dp
     real(dp), parameter :: AMPS(3) = [10.0_dp, 20.0_dp, 30.0_dp]
     character(len=8), parameter :: SHARED(4) = [character(len=8) :: 'l', 'l_prime', 'b', &
         'b_prime']
@@ -130,7 +131,51 @@ contains
         call t%check('tare: over 20 seeds the body''s U covers its truth in >= 17 ('// &
                      itoa(covered)//')', covered >= 17)
         call refusals(t, exe, tfix, tall)
+        call calibrated(t, exe, tfix, tall)
     end subroutine run_tare_tests
+
+    !> Both runs on one calibration: its row enters once, with the body's sensitivity
+    !! (I1/scale), and a tare without the loaded run's calibration is refused.
+    subroutine calibrated(t, exe, tfix, tall)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        real(dp), intent(in) :: tfix(3), tall(3)
+        real(dp), parameter :: SCALE = 1.001_dp, U_SCALE = 1.0e-3_dp
+        real(dp) :: tape(4), i_body, i_total, i_tare, ux, c
+        integer :: ex1, ex2, ex3
+        logical :: f1, f2, f3, f4, one, none
+        tape = [1.2_dp, 1.2_dp, 0.4_dp, 0.4_dp]
+        call write_text(DIR//'/cal.calibration', 'delta_l = 0'//new_line('a')//'scale = '// &
+            full(SCALE)//new_line('a')//'var_delta_l = 0'//new_line('a')//'var_scale = '// &
+            full(U_SCALE**2)//new_line('a')//'cov_delta_l_scale = 0'//new_line('a')// &
+            'delta_l_estimated = 0'//new_line('a')//'l = 1.2'//new_line('a'))
+        call write_text(DIR//'/ctare.nml', head('ctare', M_FIX, tape)//periods_text(tfix)// &
+                        ', calibration = ''cal.calibration'' /'//new_line('a'))
+        ex1 = run(exe//' '//DIR//'/ctare.nml --out '//DIR, DIR)
+        call write_text(DIR//'/cload.nml', head('cload', M_ALL, tape)//periods_text(tall)// &
+            ', calibration = ''cal.calibration'', tare = ''ctare.identify'' /'//new_line('a'))
+        ex2 = run(exe//' '//DIR//'/cload.nml --out '//DIR, DIR)
+        call read_kv(DIR//'/cload.identify', 'I1', i_body, f1)
+        call read_kv(DIR//'/cload.identify', 'I1_total', i_total, f2)
+        call read_kv(DIR//'/ctare.identify', 'I1', i_tare, f3)
+        call budget_row(DIR//'/cload.identify', 'calibration', ux, c, f4)
+        call t%check('tare: on one calibration both decks run', ex1 == 0 .and. ex2 == 0 .and. &
+                     f1 .and. f2 .and. f3 .and. f4)
+        call t%check_close('tare: on one calibration, I1 = I1_total - I1_tare', i_body, &
+                           i_total - i_tare, rtol=1.0e-9_dp)
+        call t%check_close('tare: the calibration''s row once, with the body''s sensitivity '// &
+                           'I1/scale', c, i_body/SCALE, rtol=1.0e-6_dp)
+        ! the tare without the calibration
+        call write_text(DIR//'/ctare.nml', head('ctare', M_FIX, tape)//periods_text(tfix)// &
+                        ' /'//new_line('a'))
+        ex1 = run(exe//' '//DIR//'/ctare.nml --out '//DIR, DIR)
+        call execute_command_line('rm -f '//DIR//'/cload.identify')
+        ex3 = run(exe//' '//DIR//'/cload.nml --out '//DIR, DIR)
+        one = message_lines(DIR//'/stderr') == 1
+        none = .not. exists(DIR//'/cload.identify')
+        call t%check('tare: a tare without the loaded run''s calibration refused: exit 2, one '// &
+                     'line, no output', ex1 == 0 .and. ex3 == 2 .and. one .and. none)
+    end subroutine calibrated
 
     !> The refusals: one line, exit 2, no output of the loaded deck.
     subroutine refusals(t, exe, tfix, tall)

@@ -210,8 +210,8 @@ contains
             call cert_text(c, 'No input carries an uncertainty.')
             return
         end if
-        call cert_text(c, 'Each input''s standard uncertainty (a direction in degrees) and what '// &
-            'it adds to the u of each entry; the rows sorted by their size over the six '// &
+        call cert_text(c, 'Each input''s standard uncertainty (a direction in degrees) and '// &
+            'what it adds to the u of each entry; the rows sorted by their size over the six '// &
             'entries (root sum of squares), the largest first.')
         size_of = [(norm2(fit%budget(i)%contribution), i=1, size(fit%budget))]
         order = [(i, i=1, size(fit%budget))]

@@ -86,7 +86,7 @@ contains
         do j = t%n_own + 1, size(t%rows)
             if (is_shared_input(t%rows(j)%input)) cycle
             rows = [rows, budget_row_t('tare: '//trim(t%rows(j)%input), t%rows(j)%value, &
-                    t%rows(j)%u, -t%rows(j)%sensitivity, t%rows(j)%contribution, ROW_TARE)]
+                    t%rows(j)%u, 0.0_dp - t%rows(j)%sensitivity, t%rows(j)%contribution, ROW_TARE)]
             nu = [nu, NU_INFINITE]
         end do
     end subroutine tare_own_rows
