@@ -184,6 +184,7 @@ contains
         real(dp), intent(in) :: tfix(3), tall(3)
         real(dp) :: tape(4)
         integer :: ex
+        logical :: one, none, named
         tape = [1.2_dp, 1.2_dp, 0.4_dp, 0.4_dp]
         ! the tare's output of this rig, and one of another (l 5 cm longer)
         call write_text(DIR//'/tare.nml', head('tare', M_FIX, tape)// &
@@ -197,6 +198,17 @@ contains
         call refused(t, exe, 'a tare of another rig', 'tare = ''other.identify''', tall)
         call refused(t, exe, 'tare and tare_I1', 'tare = ''tare.identify'', tare_I1 = 0.02, '// &
                      'u_tare_I1 = 1e-4', tall)
+        ! a tensor deck: its fit takes no tare of identify's one axis
+        call execute_command_line('cp input/tensor_example_hangs.csv '//DIR//'/ && sed -e '// &
+            '"s/monte_carlo = 2000/monte_carlo = 0/" input/tensor_example.nml > '//DIR// &
+            '/tens.nml && echo "&measurement tare = ''tare.identify'' /" >> '//DIR//'/tens.nml')
+        call execute_command_line('rm -f '//DIR//'/tens.tensor')
+        ex = run(exe//' '//DIR//'/tens.nml --out '//DIR, DIR)
+        one = message_lines(DIR//'/stderr') == 1
+        none = .not. exists(DIR//'/tens.tensor')
+        named = stderr_has('&measurement tare')
+        call t%check('tare: a tare''s output in a tensor deck refused: exit 2, one line, no '// &
+                     'output', ex == 2 .and. one .and. none .and. named)
     end subroutine refusals
 
     subroutine refused(t, exe, what, words, tall)
