@@ -37,6 +37,7 @@ contains
         real(dp) :: tfix(3), tall(3), tape(4)
         real(dp) :: i_file, u_file, i_all, i_tare, u_tare, i_typed, u_typed, big_u, share
         real(dp) :: cl, ct, ux, dof, dof_own, uo_tare, uo_loaded, dof_loaded, dof_hand
+        real(dp) :: u_total, u_all
         integer :: seed, covered, ex, j
         logical :: ok, found, f1, f2
         if (.not. t%want('tare: a tare from its own output, with the shared inputs correlated')) &
@@ -63,6 +64,11 @@ contains
                      ex == 0 .and. f1 .and. f2 .and. found .and. ok)
         call t%check_close('tare: I1 from the tare''s file = I1(all that hung) - I1(tare)', &
                            i_file, i_all - i_tare, rtol=1.0e-9_dp)
+        call read_kv(DIR//'/loaded.identify', 'u_I1_total', u_total, f1)
+        call read_kv(DIR//'/all.identify', 'u_I1', u_all, f2)
+        call t%check('tare: u_I1_total and u_I1 of all that hung read', f1 .and. f2)
+        call t%check_close('tare: u_I1_total is that of all that hung alone (its own '// &
+                           'sensitivities)', u_total, u_all, rtol=1.0e-9_dp)
         call write_text(DIR//'/typed.nml', head('typed', M_ALL, tape)// &
                         periods_text(noisy(tall, 1, 2))//', tare_I1 = '//full(i_tare)// &
                         ', u_tare_I1 = '//full(u_tare)//' /'//new_line('a'))

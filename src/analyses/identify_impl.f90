@@ -1060,9 +1060,10 @@ contains
         type(sessions_pooled_t) :: sp
         type(rig_calibration_t) :: cal
         type(budget_row_t), allocatable :: rows(:), trows(:)
+        type(budget_row_t) :: crow
         type(tare_file_t) :: tare
         real(dp), allocatable :: uc(:), nuc(:), tnu(:)
-        real(dp) :: cbar, u_total, ct
+        real(dp) :: cbar, u_total, ct, u_total2
         logical :: tared, found
         integer :: n, j, r, k, q, nw
         integer, allocatable :: jr(:)
@@ -1115,12 +1116,15 @@ contains
             call read_tare_file(d%measurement%tare_path, '&measurement tare', tare, stat)
             if (stat%code /= 0) return
         end if
+        ! u of all that hung (u_I1_total): the inputs with this run's sensitivities alone
+        u_total2 = sum(uc**2)
         do j = 1, size(x)
             if (.not. (x(j)%u > 0.0_dp) .or. own_input(x(j), m%releases(kept(1))%own)) cycle
             cbar = 0.0_dp
             do r = 1, n
                 cbar = cbar + pool%weight(r)*rels(r)%c(j)
             end do
+            u_total2 = u_total2 + (cbar*x(j)%u)**2
             if (tared .and. is_shared_input(x(j)%name)) then
                 ! one error in both runs: the difference of the two sensitivities
                 call shared_sensitivity(tare, x(j)%name, ct, found)
@@ -1140,9 +1144,11 @@ contains
                                           d%suspension%l + cal%delta_l)]
             uc = [uc, rows(size(rows))%contribution]
             nuc = [nuc, NU_INFINITE]
+            crow = calibration_row(cal, pool%mean, d%suspension%l + cal%delta_l)
+            u_total2 = u_total2 + crow%contribution**2
         end if
         res%i1_total = pool%mean
-        u_total = sqrt(sum(uc**2))
+        u_total = sqrt(u_total2)
         res%u_i1_total = u_total
         ! the tares: each subtracted, with its u
         res%i1 = pool%mean
