@@ -236,7 +236,13 @@ contains
                           CELL//fixed(100.0_dp*res%i1_tare_file/max(res%i1_total, &
                           tiny(1.0_dp)), 1)//' % of all that hung; same rig, shared inputs '// &
                           'correlated')
-        call cert_row(c, 'calibration'//CELL//'none'//CELL//'the rig''s constants as measured')
+        if (len_trim(d%measurement%calibration) > 0) then
+            call cert_row(c, 'calibration'//CELL//trim(d%measurement%calibration)//CELL// &
+                          'the rig''s constants from it; its covariance is the budget''s '// &
+                          'row calibration')
+        else
+            call cert_row(c, 'calibration'//CELL//'none'//CELL//'the rig''s constants as measured')
+        end if
         if (d%measurement%monte_carlo > 0 .and. res%u_i1_mc >= 0.0_dp) &
             call cert_row(c, 'Monte Carlo u / first-order u'//CELL// &
                           fixed(res%u_i1_mc/max(res%u_i1, tiny(1.0_dp)), 3)//CELL// &
