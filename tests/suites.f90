@@ -32,12 +32,12 @@ module suites
     use test_stats, only: run_stats_tests
     use test_estimator, only: run_estimator_tests
     use test_measure, only: run_measure_tests
+    use test_tare, only: run_tare_tests
     use test_sensitivities, only: run_sensitivities_tests
     use test_tensor, only: run_tensor_tests
     use test_platform, only: run_platform_tests
     use test_certificate, only: run_certificate_tests
     use test_calibrate, only: run_calibrate_tests
-    use test_tare, only: run_tare_tests
     implicit none
     private
 
