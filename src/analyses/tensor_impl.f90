@@ -291,6 +291,9 @@ contains
         if (stat%code /= STATUS_OK) return
         if (res%fitted) call write_data(d, outdir, fit, prob, files, stat)
         if (stat%code /= STATUS_OK) return
+        if (res%fitted) call write_tensor_certificate(d, outdir, res, fit, prob, drift, limit, &
+                                                      u_x_mc, u_moments_mc, files, stat)
+        if (stat%code /= STATUS_OK) return
         if (res%plan > 0) call write_plan(d, res%plan_file, plan, x, files, stat)
     contains
         !> A fit that went where no body is (a tensor not positive definite): ERR_MODEL

@@ -24,7 +24,7 @@ module deck
     use, intrinsic :: iso_fortran_env, only: int64
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
-    use text, only: itoa, next_word, rshort
+    use text, only: itoa, next_word, rshort, quoted
     use lines, only: read_line, LINE_MAX
     use fptraps, only: traps_off, traps_restore, NTRAPS
     use deck_base, only: deck_source_t, deck_group_t
@@ -304,6 +304,14 @@ contains
         call d%damping%check(sus, d%body, stat)
         call d%measurement%check(sus, d%body, sta, stat)
         call d%tensor%check(sus, d%body, scene%requested('tensor'), stat)
+        if (scene%requested('tensor') .and. stat%code == STATUS_OK .and. &
+            (len_trim(d%measurement%tare) > 0 .or. len_trim(d%measurement%calibration) > 0)) &
+            call set_error(stat, ERR_DECK, '&measurement tare = '// &
+                quoted(trim(d%measurement%tare))//', calibration = '// &
+                quoted(trim(d%measurement%calibration))//' with analyses = ''tensor'': a '// &
+                'tare''s or a calibration''s output serves identify''s one axis, and the '// &
+                'tensor''s fit takes neither; allowed: both '''' in a deck with tensor (run '// &
+                'identify from a deck of its own)')
         call check_platform_deck(scene, sus, d%body, sta, stat)
         if (scene%requested('calibrate')) call d%calibration%check(stat)
         call check_measuring(scene, sus, d%body, stat)
