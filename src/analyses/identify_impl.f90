@@ -724,16 +724,17 @@ contains
         scatter = all(m%u_totals_of(i) == 0.0_dp) .and. n >= 2
         if (scatter) then
             ! the timings' u, known to a common factor: each timed total's the same
-            call invert_periods(r%rg, acc, r%per, r%amps, u, f, stat, 1.0_dp/r%cycles, .true.)
+            call invert_periods(r%rg, acc, r%per, r%amps, u, f, stat, 1.0_dp/r%cycles, .true., &
+                                r%cycles)
             if (stat%code /= 0) return
             r%u_scatter = sqrt(sum(((f%model_periods - r%per)*r%cycles)**2)/(n - 1))
             r%u_each = r%u_scatter/r%cycles
             nu_per = n - 1
         else
-            call invert_periods(r%rg, acc, r%per, r%amps, u, f, stat, r%u_each)
+            call invert_periods(r%rg, acc, r%per, r%amps, u, f, stat, r%u_each, cycles=r%cycles)
             if (stat%code /= 0) return
         end if
-        call period_budget(r%rg, acc, r%per, r%amps, u, f, stat, xp, r%u_each)
+        call period_budget(r%rg, acc, r%per, r%amps, u, f, stat, xp, r%u_each, r%cycles)
         if (stat%code /= 0) return
         allocate (r%warnings(0))
         r%fit_tested = f%tested
@@ -1518,8 +1519,11 @@ contains
             call write_kv(u, 'I1_total', res%i1_total, ios)
             call write_kv(u, 'u_I1_total', res%u_i1_total, ios)
         end if
-        if (d%measurement%tare_mass > 0.0_dp) &
-            call write_kv(u, 'mass_body', d%body%mass - d%measurement%tare_mass, ios)
+        ! the body's mass: what hung (each release's mass, a table's column or &body mass)
+        ! less the fixture's
+        if (d%measurement%tare_mass > 0.0_dp .and. size(rels) > 0) &
+            call write_kv(u, 'mass_body', sum(rels%rg%mass)/size(rels) - &
+                          d%measurement%tare_mass, ios)
         if (d%measurement%monte_carlo > 0) call write_kv(u, 'u_I1_monte_carlo', res%u_i1_mc, ios)
         call write_kv(u, 'I1_linear', res%i1_linear, ios)
         call write_kv(u, 'linear_error', res%linear_error, ios)
@@ -1701,7 +1705,7 @@ contains
             allocate (tm(r)%per(size(rels(r)%per)))
             do i = 1, size(rels(r)%per)
                 call rig_period_s(rels(r)%rg, accuracy_of(d), res%i1_total, rels(r)%amps(i), &
-                                  tm(r)%per(i), stat)
+                                  tm(r)%per(i), stat, rels(r)%cycles(i))
                 if (stat%code /= 0) exit
             end do
             first(r) = .true.

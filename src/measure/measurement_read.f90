@@ -286,6 +286,13 @@ contains
                         '> 0 in the deck''s units')
                 end do
                 if (stat%code /= STATUS_OK) return
+                if (ct%has('mass') .and. mea%tare_mass >= ct%v(i, 'mass', deckv(5))) then
+                    ! the release's mass is all that hung: the fixture's is a part of it
+                    call ct%bad_value(stat, i, 'mass', rshort(ct%v(i, 'mass', deckv(5))), &
+                        'mass above &measurement tare_mass = '//rshort(mea%tare_mass)// &
+                        ' (the mass column is all that hung: body and fixture)')
+                    return
+                end if
                 if (r%line == 0) then
                     r%line = ct%line(i)
                     rigv(:, it) = [(ct%v(i, RIG_COLUMNS(k), deckv(k)), k=1, 5)]
@@ -314,6 +321,16 @@ contains
                     has_record(it) = .true.
                     o = observation_t(kind=OBS_RECORD, release=it, line=ct%line(i))
                     o%file = record_in_folder(mea%trials_path, trim(rec))
+                    ! one record is one release: listed twice it would count twice
+                    do k = 1, no
+                        if (obs(k)%kind /= OBS_RECORD) cycle
+                        if (obs(k)%file /= o%file) cycle
+                        call ct%fail_row(stat, i, 'column record = '//quoted(trim(rec))// &
+                            ': the same record as line '//itoa(obs(k)%line)//' (trial '// &
+                            quoted(m%releases(obs(k)%release)%label)//'): one record is one '// &
+                            'release, counted once; allowed: each record file on one row')
+                        return
+                    end do
                     no = no + 1
                     obs(no) = o
                     cycle
