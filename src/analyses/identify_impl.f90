@@ -1185,6 +1185,17 @@ contains
         end do
         if (sp%n_sessions >= 2) then
             call session_warnings(sp, res)
+        else if (trim(pool%consistency) == 'inconsistent' .and. all(rels%u_scatter >= 0.0_dp)) then
+            ! no u_period: each release's u is the scatter of its own few timings, itself
+            ! uncertain; that is the likelier cause than a change between releases
+            call add_warning(res%warnings, &
+            'identify: the '//itoa(n)//' releases disagree beyond their own '// &
+            'uncertainties (chi-square p = '//sci(pool%p_value, 2)//', Birge ratio '// &
+            fixed(pool%birge, 2)//'): their scatter is in u_I1 (u_I1_reproducibility = '// &
+            sci(pool%u_reproducibility, 2)//'); &measurement u_period is not given, so '// &
+            'each release''s u is the scatter of its own '//itoa(minval(rels%samples))// &
+            ' or more timings, itself uncertain: give u_period (the u of one timed total, '// &
+            's), then look for what changed between releases')
         else if (trim(pool%consistency) == 'inconsistent') then
             call add_warning(res%warnings, &
             'identify: the '//itoa(n)//' releases disagree beyond their own '// &

@@ -43,9 +43,9 @@
 !! Failures are ERR_DECK statuses of one line naming the table (or the deck's key), its
 !! line and column, what is wrong and what is allowed.  No routine stops.
 module measurement_read
-    use kinds, only: dp
+    use kinds, only: dp, pi
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
-    use text, only: itoa, rshort, rlist_short, quoted, lower
+    use text, only: itoa, rshort, rlist_short, quoted, lower, sci
     use deck_base, only: record_in_folder
     use rig_groups, only: suspension_group_t, body_group_t
     use measure_groups, only: measurement_group_t, tensor_group_t, check_estimate, AMPLITUDE_MIN
@@ -77,6 +77,10 @@ module measurement_read
     real(dp), parameter :: AMPLITUDE_MAX = 90.0_dp
     !> along counts as parallel to up when its part normal to up is below this fraction.
     real(dp), parameter :: PARALLEL_TOL = 1.0e-6_dp
+    !> A hang's cycle may not be shorter than this fraction of its pendulum time
+    !! 2 pi sqrt(l/g): the torsion period is 2 pi sqrt(l/g) 2 rho/sqrt(b b') for a radius of
+    !! gyration rho, and no hung body has rho below 1/2000 of sqrt(b b').
+    real(dp), parameter :: PERIOD_MIN_RIG = 1.0e-3_dp
     !> Lengths of a hang over b_prime, and the body-frame points' size: as the deck's ratios.
     real(dp), parameter :: RATIO_MIN = 1.0e-3_dp, RATIO_MAX = 1.0e3_dp
 
@@ -496,7 +500,7 @@ contains
         type(column_table_t) :: ct
         type(hang_t) :: h0, h
         type(hang_t), allocatable :: hangs(:)
-        real(dp) :: up_v(3), al_v(3), c_v(3), d_v(3), per, u_tot
+        real(dp) :: up_v(3), al_v(3), c_v(3), d_v(3), per, u_tot, t_rig
         logical :: have_cg, form_up, form_pts
         integer, allocatable :: ids(:)
         integer :: i, k, n, nh
@@ -618,6 +622,18 @@ contains
                 call ct%check_value(stat, i, 'period', per, per > 0.0_dp .and. &
                     per < 1.0e9_dp, '0 < period < 1e9 (s, the time of cycles cycles)')
                 if (stat%code /= STATUS_OK) return
+                ! a cycle far shorter than the rig's own time scale: no body swings so fast
+                ! on it (its radius of gyration would be below 1/2000 of b b'), a period in
+                ! other units than s
+                t_rig = 2.0_dp*pi*sqrt(min(h%l, h%l_prime)/sus%g)
+                if (per/o%cycles < PERIOD_MIN_RIG*t_rig) then
+                    call ct%bad_value(stat, i, 'period', rshort(per), 'a cycle (period/'// &
+                        'cycles, here '//sci(per/o%cycles, 3)//' s) of at least '// &
+                        rshort(PERIOD_MIN_RIG)//' of this hang''s pendulum time 2 pi '// &
+                        'sqrt(l/g) = '//sci(t_rig, 3)//' s: no body swings faster on it; '// &
+                        'likely: a period in ms or us, not s, or another column')
+                    return
+                end if
                 o%amplitude = ct%v(i, 'amplitude', 0.0_dp)
                 call ct%check_value(stat, i, 'amplitude', o%amplitude, o%amplitude >= &
                     0.0_dp .and. o%amplitude < AMPLITUDE_MAX, '0 <= amplitude < '// &
