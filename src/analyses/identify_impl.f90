@@ -1347,6 +1347,8 @@ contains
         real(dp) :: s23, d23, i1
         integer :: r
         i1 = res%i1_total
+        call check_determined(rels, res, stat)
+        if (stat%code /= 0) return
         do r = 1, size(rels)
             call check_linear_gap(d, rels(r), stat)
             if (stat%code /= 0) return
@@ -1374,6 +1376,66 @@ contains
                 CAUSES_LOW)
         end if
     end subroutine check_physical
+
+    !> No fit's start value, nor a value its own u swallows, is a result: refused (ERR_DECK)
+    !! when u(I1) of all that hung is not below I1 itself, naming the budget's largest row,
+    !! or when a release's inversion ended at its start value (&body inertia(1)) within one
+    !! iteration while the model's periods miss the measured ones.
+    subroutine check_determined(rels, res, stat)
+        type(release_fit_t), intent(in) :: rels(:)
+        type(identify_result_t), intent(in) :: res
+        type(status_t), intent(inout) :: stat
+        character(len=:), allocatable :: part, who
+        real(dp) :: miss
+        integer :: r, j, jmax
+        do r = 1, size(rels)
+            if (rels(r)%from_record .or. .not. allocated(rels(r)%per)) cycle
+            if (rels(r)%iterations > 1 .or. .not. (rels(r)%i1 == rels(r)%rg%inertia(1))) cycle
+            miss = max(3.0_dp*maxval(rels(r)%u_each), 1.0e-9_dp*maxval(rels(r)%per))
+            if (.not. (rels(r)%residual_rms > miss)) cycle
+            who = ''
+            if (size(rels) > 1) who = 'release '//itoa(r)//': '
+            call set_error(stat, ERR_DECK, 'identify: '//who//'the inversion ended at its '// &
+                'start value (&body inertia(1) = '// &
+                sci(rels(r)%i1, 5)//') after '//itoa(rels(r)%iterations)//' iteration(s), '// &
+                'the model''s periods off the measured ones by rms '// &
+                sci(rels(r)%residual_rms, 3)//' s: the periods do not determine I1 here; '// &
+                'likely: amplitudes below what the model resolves, or periods of another rig; '// &
+                'allowed: periods that change with I1 on this rig')
+            return
+        end do
+        if (res%u_i1_total < abs(res%i1_total)) return
+        part = ''
+        jmax = 0
+        if (allocated(res%budget)) then
+            do j = 1, size(res%budget)
+                if (jmax == 0) then
+                    jmax = j
+                else if (res%budget(j)%contribution > res%budget(jmax)%contribution) then
+                    jmax = j
+                end if
+            end do
+        end if
+        if (jmax > 0) then
+            associate (b => res%budget(jmax))
+                part = '; the largest part: '//trim(b%input)//' = '//sci(b%value, 4)// &
+                    ' with u = '//sci(b%u, 3)//' (contributing '//sci(b%contribution, 3)//')'
+                if (b%kind == ROW_AMPLITUDE) part = part//'; likely: amplitudes so small '// &
+                    'against u_amplitude that the period hardly depends on them there (the '// &
+                    'swing is below what the model resolves)'
+                if (b%kind == ROW_TIMING) part = part//'; likely: u_period near the timed '// &
+                    'totals themselves (the u of one timed total, s, not of a cycle)'
+                if (b%kind == ROW_INPUT) part = part//'; likely: amplitudes so small that '// &
+                    'the model''s periods are lost in the integration''s error (&integration '// &
+                    'atol against the swing in rad), or that input''s u far beyond what the '// &
+                    'measurement allows'
+            end associate
+        end if
+        call set_error(stat, ERR_DECK, 'identify: I1 = '//sci(res%i1_total, 5)//' with '// &
+            'standard uncertainty '//sci(res%u_i1_total, 3)//' (all that hung): the '// &
+            'measurement does not determine I1, its u is not below I1 itself'//part// &
+            '; allowed: uncertainties and amplitudes that give u(I1) < I1')
+    end subroutine check_determined
 
     !> One more warning line (built first: gfortran 12 fails to compile a structure
     !! constructor of such text inside an array constructor).

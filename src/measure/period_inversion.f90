@@ -54,7 +54,7 @@
 !! periods in s, amplitudes in degrees.  No routine stops; failures come back in status_t.
 module period_inversion
     use kinds, only: dp, pi, deg
-    use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC
+    use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC, ERR_MODEL
     use text, only: itoa, fixed, sci, rshort
     use geometry, only: pendulum_t
     use deck_base, only: deck_source_t
@@ -128,6 +128,7 @@ module period_inversion
         real(dp), allocatable :: sw(:)          !! the weights' roots (1/u)
         real(dp), allocatable :: tm(:)          !! the model's periods at I1 = i1_last
         real(dp), allocatable :: cycles(:)      !! the cycles each period's time spans
+        type(status_t) :: model_failure         !! the last trial I1 the model refused
         real(dp) :: i1_last = -huge(1.0_dp)
     contains
         procedure :: residual => period_residual
@@ -152,6 +153,9 @@ module period_inversion
     !> Most cycles a simulated period is timed over (a timed total of more cycles on a rig
     !! whose periods are simulated is refused: see invert_periods).
     integer, parameter, public :: CYCLES_SIM_MAX = 200
+    !> Over several cycles, each return of theta4 must peak above this fraction of the
+    !! release amplitude (else its cycles are not countable: simulated_period_s).
+    real(dp), parameter :: RETURN_MIN = 0.5_dp
 
 contains
 
@@ -224,7 +228,7 @@ contains
         type(kane_run_t) :: m
         type(maxima_sink_t) :: sink
         real(dp) :: y0(NSTATE), th0(5), t_end, jz
-        integer :: nc
+        integer :: nc, k
         t = 0.0_dp
         nc = 1
         if (present(cycles)) nc = max(1, min(CYCLES_SIM_MAX, nint(cycles)))
@@ -256,6 +260,22 @@ contains
                 ' maxima after its first swing within tau = '//fixed(t_end, 3)// &
                 '; the rig does not swing in torsion')
             return
+        end if
+        if (nc > 1) then
+            ! the returns a stopwatch counts: every maximum well on the release's side; a
+            ! swing that feeds tilt and sway until theta4 peaks below half the release (or
+            ! below 0) has no count of cycles a user and the model share
+            k = minloc(sink%a(1:nc), 1)
+            if (sink%a(k) < RETURN_MIN*amp_deg*deg) then
+                call set_error(stat, ERR_MODEL, 'the period at '//fixed(amp_deg, 3)// &
+                    ' deg over '//itoa(nc)//' cycles (simulated): theta4''s return '// &
+                    itoa(k)//' peaks at '//fixed(sink%a(k)/deg, 3)//' deg after a release '// &
+                    'at '//fixed(amp_deg, 3)//' deg (the torsion feeds tilt and sway on this '// &
+                    'rig): its cycles cannot be counted as a stopwatch counts them; allowed: '// &
+                    'fewer cycles per timed total, a smaller amplitude, or a record of the '// &
+                    'swing (&measurement record)')
+                return
+            end if
         end if
         t = sink%t(nc)/nc*sqrt(rg%b_prime/rg%g)
     end subroutine simulated_period_s
@@ -448,6 +468,12 @@ contains
             if (sym) return
         end select
         i1 = res%p(1)
+        if (prob%model_failure%code == ERR_MODEL) then
+            ! the steps the model refused (a swing whose cycles cannot be counted), not
+            ! periods out of reach
+            stat = prob%model_failure
+            return
+        end if
         if (.not. sym .and. all(res%r > 0.0_dp)) then
             ! the model's periods are all still longer at the smallest I1 the model could
             ! swing with (a cable goes slack below it): no I1 gives them
@@ -489,10 +515,10 @@ contains
         real(dp), intent(in) :: p(:)            !! I1
         real(dp), intent(out) :: r(:)
         type(status_t), intent(out) :: stat
-        integer :: k
         r = 0.0_dp
         prob%i1_last = -huge(1.0_dp)
         call model_periods(prob, p(1), prob%tm, stat)
+        if (stat%code == ERR_MODEL) prob%model_failure = stat
         if (stat%code /= 0) return
         r = prob%sw*(prob%tm - prob%periods)
         prob%i1_last = p(1)
