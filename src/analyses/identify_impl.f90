@@ -1420,15 +1420,10 @@ contains
             associate (b => res%budget(jmax))
                 part = '; the largest part: '//trim(b%input)//' = '//sci(b%value, 4)// &
                     ' with u = '//sci(b%u, 3)//' (contributing '//sci(b%contribution, 3)//')'
-                if (b%kind == ROW_AMPLITUDE) part = part//'; likely: amplitudes so small '// &
-                    'against u_amplitude that the period hardly depends on them there (the '// &
-                    'swing is below what the model resolves)'
-                if (b%kind == ROW_TIMING) part = part//'; likely: u_period near the timed '// &
-                    'totals themselves (the u of one timed total, s, not of a cycle)'
-                if (b%kind == ROW_INPUT) part = part//'; likely: amplitudes so small that '// &
-                    'the model''s periods are lost in the integration''s error (&integration '// &
-                    'atol against the swing in rad), or that input''s u far beyond what the '// &
-                    'measurement allows'
+                part = part//'; likely: a body so light on this rig that its periods '// &
+                    'hardly depend on I1 (near the period with I1 -> 0), that row''s u far '// &
+                    'beyond what the measurement resolves, or amplitudes below what the '// &
+                    'model resolves'
             end associate
         end if
         call set_error(stat, ERR_DECK, 'identify: I1 = '//sci(res%i1_total, 5)//' with '// &

@@ -267,10 +267,10 @@ contains
             ! below 0) has no count of cycles a user and the model share
             k = minloc(sink%a(1:nc), 1)
             if (sink%a(k) < RETURN_MIN*amp_deg*deg) then
-                call set_error(stat, ERR_MODEL, 'the period at '//fixed(amp_deg, 3)// &
+                call set_error(stat, ERR_MODEL, 'the period at '//rshort(amp_deg)// &
                     ' deg over '//itoa(nc)//' cycles (simulated): theta4''s return '// &
-                    itoa(k)//' peaks at '//fixed(sink%a(k)/deg, 3)//' deg after a release '// &
-                    'at '//fixed(amp_deg, 3)//' deg (the torsion feeds tilt and sway on this '// &
+                    itoa(k)//' peaks at '//sci(sink%a(k)/deg, 3)//' deg after a release '// &
+                    'at '//rshort(amp_deg)//' deg (the torsion feeds tilt and sway on this '// &
                     'rig): its cycles cannot be counted as a stopwatch counts them; allowed: '// &
                     'fewer cycles per timed total, a smaller amplitude, or a record of the '// &
                     'swing (&measurement record)')
