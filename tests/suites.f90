@@ -34,6 +34,7 @@ module suites
     use test_measure, only: run_measure_tests
     use test_sensitivities, only: run_sensitivities_tests
     use test_tensor, only: run_tensor_tests
+    use test_refusals, only: run_refusals_tests
     use test_platform, only: run_platform_tests
     use test_certificate, only: run_certificate_tests
     use test_calibrate, only: run_calibrate_tests
@@ -124,6 +125,8 @@ contains
                     'u, plan, refusals', run_tensor_tests), &
             suite_t('platform', 'a body on n cables: the paper''s model, torsion, modes, '// &
                     'limits, test mass', run_platform_tests), &
+            suite_t('refusals', 'measurement mistakes: wrong numbers, wrong causes; '// &
+                    'each right or refused', run_refusals_tests), &
             suite_t('certificate', 'the certificate page: SVG figures, escaping, balanced '// &
                     'elements, its fields', run_certificate_tests), &
             suite_t('graph', 'the module graph (layers, analyses apart, at most 8 floors); '// &
