@@ -785,6 +785,7 @@ contains
             'I1 c_v', 'bogus', '', 'amplitude', 'I1 t0']
         character(len=:), allocatable :: head, table, meas, sus, body, file, v
         character(len=64) :: row
+        real(dp) :: x
         integer :: kind, i, n, mut
         kind = int(4*rnd(state))
         kinds(kind + 1) = kinds(kind + 1) + 1
@@ -799,8 +800,9 @@ contains
             n = 1
             do i = 1, 8
                 ! each release's estimate on both its rows; now and then another on one
-                if (mod(i, 2) == 1) n = merge(1, 1 + int(6*rnd(state)), mut /= 0)
-                if (mut == 0 .and. rnd(state) < 0.1_dp) n = 1 + int(6*rnd(state))
+                x = rnd(state)
+                if (mod(i, 2) == 1) n = merge(1, 1 + int(6*x), mut /= 0)
+                if (mut == 0 .and. x < 0.1_dp) n = 1 + int(60*x)
                 write (row, '(a,i0,a,f0.2,a,a,a)') 'r', (i + 1)/2, ',1.2,1.2,', &
                     18.30_dp + 0.01_dp*mod(7*i, 9), ',10,10.0,s', merge('1', '2', i <= 4), ','
                 table = table//trim(row)//trim(SETTINGS(n))//NL

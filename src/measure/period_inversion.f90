@@ -21,7 +21,9 @@
 !!   as it turns), so a period below T_min is refused: no positive I1 gives it.
 !! * First-order uncertainty (GUM, JCGM 100:2008, section 5.1): u(I1)^2 = sum_j (c_j u_j)^2
 !!   over the independent inputs (mass, l, l', b, b', g, each period, each amplitude), with
-!!   the sensitivities c_j = dI1/dx_j by central differences of the whole inversion.  Pure
+!!   the sensitivities c_j = dI1/dx_j by central differences of the whole inversion for the
+!!   rig's inputs, and for each period and amplitude from the fit's linearised normal
+!!   equation (period_budget: linear in the number of periods).  Pure
 !!   torsion needs l = l'; the rig is then mirror-symmetric, T(l, l') = T(l', l), so to
 !!   first order dI1/dl = dI1/dl' = (1/2) dI1/dL with L the common length.  A change of b'
 !!   moves the two body attachment points symmetrically: the mass centre keeps its depth
@@ -38,7 +40,11 @@
 !!   rigs where pure torsion is not an exact motion) get their periods from the full model:
 !!   the period at amplitude A is the time from release at rest at theta4 = A (&start
 !!   mode 'raised' at A, no tilt, no damping) to the next maximum of theta4, the first zero
-!!   of theta4' from + to - after theta4 has swung below 0 (simulated_period_s: the run loop
+!!   of theta4' from + to - after theta4 has swung below 0; a total timed over N cycles is
+!!   compared with the time to the N-th such maximum over N, as a stopwatch counts them
+!!   (their intervals differ where the torsion feeds tilt and sway), and refused (ERR_MODEL)
+!!   when a return within them peaks below half the release amplitude (simulated_period_s:
+!!   the run loop
 !!   of module run_loop with the deck's rtol and atol, the zero located in the integrator's
 !!   dense output).  For a symmetric rig this is the exact torsion period (a test checks it
 !!   to 1e-9).  Damping does not enter: a measured period is taken as that of the undamped
@@ -583,10 +589,14 @@ contains
     !! rig's inputs (x when given, with their names of module inputs; else mass, l, l_prime,
     !! b, b_prime, g with the uncertainties of u), then period(i) and amplitude(i) for each
     !! period; an input of u = 0 is left out (nothing to propagate, and no step to take).
-    !! The sensitivities are central differences of the whole inversion (relative step
-    !! 1e-6; 1e-4 for an asymmetric rig, whose periods are simulated; an input of value 0
-    !! steps by that fraction of b'); an amplitude near 0 or 180 degrees is differenced on
-    !! the side that stays inside.  On a rig where pure torsion is exact the inputs that do
+    !! The inputs' sensitivities are central differences of the whole inversion (relative
+    !! step 1e-6; 1e-4 for an asymmetric rig, whose periods are simulated; an input of value
+    !! 0 steps by that fraction of b').  The periods' and the amplitudes' come from the fit's
+    !! linearised normal equation, dI1/dT_k = w_k T_k' / sum_j w_j T_j'^2 and dI1/dA_k =
+    !! -(dI1/dT_k) dT_k/dA_k (T' = dT/dI1 and dT/dA by central differences of the model's
+    !! periods at the estimate, each amplitude and cycles once; an amplitude near 0 or 180
+    !! degrees differenced on the side that stays inside): linear in the number of periods.
+    !! On a rig where pure torsion is exact the inputs that do
     !! not enter pure torsion (I2, I3, the mass centre) have sensitivity 0 by symmetry
     !! (module inputs), and l, l' share the effect of their common length.  u_each: the
     !! standard uncertainty of each period (e.g. u_period / cycles), else u%period.
