@@ -325,7 +325,7 @@ contains
     !! without u_period (its warning names u_period); a plan of 13 hangs (one per axis: no
     !! hang with up -u beside up u) and of 14 (refused); u_l_prime on a platform; one
     !! record on two rows of a table; a mass column with tare_mass (the body's mass from
-    !! the column, and a tare above it refused).
+    !! the column, and a tare above it refused); a bound of u_amplitude in short form.
     subroutine test_messages(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
@@ -351,15 +351,15 @@ contains
         call fresh_dir(d//'/o')
         e = run('cd '//d//' && timeout 120 '//x//' nou.nml --out o', d)
         call t%check('messages: no u_period: exit 0, the warning names u_period', &
-                     e == 0 .and. file_has(d//'/stderr', 'u_period is not given'))
+                     all([e == 0, file_has(d//'/stderr', 'u_period is not given')]))
         ! the plan: one hang per axis
         call execute_command_line('cp '//d//'/good.csv '//d//'/tensor_example_hangs.csv; '// &
             "sed 's/monte_carlo = 0/monte_carlo = 0, plan = 13/' "//d//'/t.nml > '//d// &
             '/p13.nml')
         call fresh_dir(d//'/o')
         e = run('cd '//d//' && timeout 120 '//x//' p13.nml --out o', d)
-        call t%check('messages: plan = 13: exit 0, 13 hangs, no two on one axis', e == 0 .and. &
-                     one_per_axis(d//'/o/p13.plan.csv', 13))
+        call t%check('messages: plan = 13: exit 0, 13 hangs, no two on one axis', &
+                     all([e == 0, one_per_axis(d//'/o/p13.plan.csv', 13)]))
         call execute_command_line("sed 's/monte_carlo = 0/monte_carlo = 0, plan = 14/' "// &
             d//'/t.nml > '//d//'/p14.nml')
         call refused('plan = 14', 'p14.nml', 2, 'plan = 14')
@@ -389,6 +389,10 @@ contains
         call execute_command_line("sed 's/tare_mass = 1.0/tare_mass = 8.5/' "//d//'/tm.nml > '// &
                                   d//'/tm2.nml')
         call refused('tare_mass above a release''s mass', 'tm2.nml', 2, 'column mass = 8.1')
+        ! a bound computed from the deck's numbers, in short form (not 0.019999999999998862)
+        call execute_command_line("sed 's/amplitudes = 10.0, 30.0, 60.0/amplitudes = 10.0, "// &
+            "30.0, 179.9/' input/identify_periods.nml > "//d//'/ua.nml')
+        call refused('u_amplitude bound', 'ua.nml', 2, 'u_amplitude < 0.02 for')
     contains
         subroutine refused(nm, deck_file, want, word)
             character(len=*), intent(in) :: nm, deck_file, word
@@ -463,8 +467,8 @@ contains
             call fresh_dir(d//'/o')
             e = run('cd '//d//' && timeout 120 '//x//' '//nm//'.nml --out o', d)
             if (want == 0) then
-                call t%check('undetermined: '//nm//': exit 0 (got '//itoa(e)//')', e == 0 .and. &
-                             exists(d//'/o/'//nm//'.identify'))
+                call t%check('undetermined: '//nm//': exit 0 (got '//itoa(e)//')', &
+                             all([e == 0, exists(d//'/o/'//nm//'.identify')]))
             else
                 call t%check('undetermined: '//nm//': exit '//itoa(e)//' (want '//itoa(want)// &
                              '), one line naming '//word//', no file', all([e == want, &
