@@ -162,6 +162,9 @@ module period_inversion
     !> Over several cycles, each return of theta4 must peak above this fraction of the
     !! release amplitude (else its cycles are not countable: simulated_period_s).
     real(dp), parameter :: RETURN_MIN = 0.5_dp
+    !> The words of that refusal (the inversion tells it from a failed step by them).
+    character(len=*), parameter :: UNCOUNTABLE = 'cycles cannot be counted as a stopwatch '// &
+        'counts them'
 
 contains
 
@@ -277,7 +280,7 @@ contains
                     ' deg over '//itoa(nc)//' cycles (simulated): theta4''s return '// &
                     itoa(k)//' peaks at '//sci(sink%a(k)/deg, 3)//' deg after a release '// &
                     'at '//rshort(amp_deg)//' deg (the torsion feeds tilt and sway on this '// &
-                    'rig): its cycles cannot be counted as a stopwatch counts them; allowed: '// &
+                    'rig): its '//UNCOUNTABLE//'; allowed: '// &
                     'fewer cycles per timed total, a smaller amplitude, or a record of the '// &
                     'swing (&measurement record)')
                 return
@@ -524,7 +527,10 @@ contains
         r = 0.0_dp
         prob%i1_last = -huge(1.0_dp)
         call model_periods(prob, p(1), prob%tm, stat)
-        if (stat%code == ERR_MODEL) prob%model_failure = stat
+        ! (a swing whose cycles cannot be counted: the deck's; a cable slack at a trial I1
+        ! is a failed step only)
+        if (stat%code == ERR_MODEL .and. index(stat%msg, UNCOUNTABLE) > 0) &
+            prob%model_failure = stat
         if (stat%code /= 0) return
         r = prob%sw*(prob%tm - prob%periods)
         prob%i1_last = p(1)
