@@ -35,6 +35,7 @@ module suites
     use test_tare, only: run_tare_tests
     use test_sensitivities, only: run_sensitivities_tests
     use test_tensor, only: run_tensor_tests
+    use test_refusals, only: run_refusals_tests
     use test_platform, only: run_platform_tests
     use test_certificate, only: run_certificate_tests
     use test_calibrate, only: run_calibrate_tests
@@ -128,6 +129,8 @@ contains
                     'u, plan, refusals', run_tensor_tests), &
             suite_t('platform', 'a body on n cables: the paper''s model, torsion, modes, '// &
                     'limits, test mass', run_platform_tests), &
+            suite_t('refusals', 'measurement mistakes: wrong numbers, wrong causes; '// &
+                    'each right or refused', run_refusals_tests), &
             suite_t('certificate', 'the certificate page: SVG figures, escaping, balanced '// &
                     'elements, its fields', run_certificate_tests), &
             suite_t('selfcheck', 'fits check themselves (records, tensors), amplitude '// &

@@ -1,5 +1,7 @@
-!> The fuzz test: about 2000 hostile decks (and 24 of analysis tensor with their tables of
-!! hangs mutated), each a mutation of a shipped deck made
+!> The fuzz test: about 2000 hostile decks (24 of analysis tensor with their tables of
+!! hangs mutated; 48 of the measurement inputs: tables of releases with sessions and
+!! per-release settings, calibrations, platforms, records by column name or frame rate),
+!! each a mutation of a shipped deck made
 !! small (every group, the analyses, the model, broken structure, random bytes, mutated
 !! records of analysis identify), run through the executable in batches; every deck ends in
 !! one line, a finished one with its files whole, a failed one with nothing left.
@@ -37,6 +39,10 @@ module test_fuzz
     !! table of hangs mutated), after the seeds' decks, FUZZ_TENSOR_BATCH at a time (a
     !! tensor deck takes about 0.5 s, 2 s in the checking build).
     integer, parameter :: FUZZ_TENSOR = 24, FUZZ_TENSOR_BATCH = 8
+    !> Decks of the measurement inputs (write_measure_deck: tables of releases with sessions
+    !! and per-release settings, calibrations, platforms, records with named columns or a
+    !! frame rate), after the tensor decks, FUZZ_MEASURE_BATCH at a time.
+    integer, parameter :: FUZZ_MEASURE = 48, FUZZ_MEASURE_BATCH = 8
     !> The groups of a deck, in the order the fuzz test writes them.
     integer, parameter :: NGROUPS = 12
     character(len=12), parameter :: GROUPS(NGROUPS) = [character(len=12) :: 'scene', &
@@ -97,7 +103,8 @@ contains
         type(record_t) :: rec
         integer(8) :: state
         integer :: is, k, kb, ndeck, nbad(8), counts(0:5), worst, ex, nb, j, mutated(NGROUPS)
-        integer :: ran(NRAN), kept, nslow, ntensor_mut, small_seconds
+        integer :: ran(NRAN), kept, nslow, ntensor_mut, small_seconds, nmeasure_kind(4)
+        character(len=:), allocatable :: cal_text
         logical :: ckpt
         character(len=*), parameter :: dir = SCRATCH, outdir = dir//'/out'
         character(len=64) :: names(FUZZ_BATCH)
@@ -156,6 +163,28 @@ contains
         end do
         write (*, '(a,i0,a,i0,a)') '   fuzz: ', FUZZ_TENSOR, ' of them tensor decks (', &
             ntensor_mut, ' with &tensor or the table of hangs mutated)'
+        ! the measurement inputs: tables with sessions and settings, calibrations,
+        ! platforms, records with named columns or a frame rate
+        call execute_command_line(exe//' input/calibrate_example.nml --out '//dir// &
+                                  '/calib > /dev/null 2>&1')
+        cal_text = file_text(dir//'/calib/calibrate_example.calibration')
+        nmeasure_kind = 0
+        do kb = 1, FUZZ_MEASURE, FUZZ_MEASURE_BATCH
+            nb = min(FUZZ_MEASURE_BATCH, FUZZ_MEASURE - kb + 1)
+            do j = 1, nb
+                names(j) = 'fm_'//itoa(kb + j - 1)
+                paths(j) = dir//'/'//trim(names(j))//'.nml'
+                call write_measure_deck(dir, trim(names(j)), rec, cal_text, state, &
+                                        nmeasure_kind)
+            end do
+            ndeck = ndeck + nb
+            ckpt = .false.
+            call run_batch(nb)
+        end do
+        write (*, '(a,i0,a,4(i0,a))') '   fuzz: ', FUZZ_MEASURE, ' measurement decks (', &
+            nmeasure_kind(1), ' tables with sessions, ', nmeasure_kind(2), ' calibrations, ', &
+            nmeasure_kind(3), ' platforms, ', nmeasure_kind(4), ' records by column name or '// &
+            'frame rate)'
         write (*, '(a,i0,a,i0,a)') '   fuzz: ', nslow, ' decks ran past ', &
             small_seconds, ' s alone (each must have said so on a note line)'
         write (*, '(a,i0,a,i0,a,6(i0,a))') '   fuzz: ', ndeck, ' decks from ', size(bases), &
@@ -179,6 +208,7 @@ contains
         end do
         call t%check('fuzz: at least 2000 decks', ndeck >= 2000)
         call t%check('fuzz: tensor decks mutated', ntensor_mut > 0)
+        call t%check('fuzz: every kind of measurement deck written', all(nmeasure_kind > 0))
         call t%check('fuzz: every group mutated', all(mutated > 0))
         call t%check('fuzz: every analysis finished at least once', all(ran > 0))
         call t%check('fuzz: some decks run, some are refused', counts(0) > 0 .and. counts(2) > 0)
@@ -733,6 +763,164 @@ contains
             "analyses = 'tensor' /"//NL//sus//' /'//NL//body//' /'//NL//"&tensor hangs = '"// &
             hangs//"'"//tens//' /'//NL)
     end subroutine write_tensor_deck
+
+    !> A deck NAME.nml in dir of the measurement inputs, each kind with its file written
+    !! beside it (kinds counts them): a table of releases (input/identify_trials.csv's first
+    !! rows) with columns session and estimate and &measurement on_failure; a deck timed on
+    !! the rig of input/calibrate_example.nml with &measurement calibration = 'NAME.cal'
+    !! (that deck's calibration, cal); the trifilar platform of
+    !! input/measure_platform_template.nml, or a platform by support_points, body_points
+    !! and lengths; the fuzz record with a header naming its columns (record_columns by
+    !! name, a text column beside) or as frame numbers (record_frame_rate).  Each as it is,
+    !! or with one value hostile, a row or cell changed, the file cut short, bytes inserted.
+    subroutine write_measure_deck(dir, name, rec, cal, state, kinds)
+        character(len=*), intent(in) :: dir, name, cal
+        type(record_t), intent(in) :: rec
+        integer(8), intent(inout) :: state
+        integer, intent(inout) :: kinds(4)
+        character(len=*), parameter :: NL = new_line('a')
+        character(len=16), parameter :: HOSTILE(12) = [character(len=16) :: '-1', '0', &
+            '1e100', '1e-300', 'NaN', '-0.0', '1e9', '2', '0.5', '3', '''''', '''x''']
+        character(len=16), parameter :: SETTINGS(6) = [character(len=16) :: 'I1', &
+            'I1 c_v', 'bogus', '', 'amplitude', 'I1 t0']
+        character(len=:), allocatable :: head, table, meas, sus, body, file, v
+        character(len=64) :: row
+        real(dp) :: x
+        integer :: kind, i, n, mut
+        kind = int(4*rnd(state))
+        kinds(kind + 1) = kinds(kind + 1) + 1
+        mut = int(6*rnd(state))
+        v = trim(HOSTILE(1 + int(size(HOSTILE)*rnd(state))))
+        head = "&scene title = 'fuzz measurement', analyses = 'identify' /"//NL
+        file = name//'.csv'
+        select case (kind)
+        case (0)
+            ! a table of releases in two sessions, each release's estimate its own
+            table = 'trial,l,l_prime,period,cycles,amplitude,session,estimate'//NL
+            n = 1
+            do i = 1, 8
+                ! each release's estimate on both its rows; now and then another on one
+                x = rnd(state)
+                if (mod(i, 2) == 1) n = merge(1, 1 + int(6*x), mut /= 0)
+                if (mut == 0 .and. x < 0.1_dp) n = 1 + int(60*x)
+                write (row, '(a,i0,a,f0.2,a,a,a)') 'r', (i + 1)/2, ',1.2,1.2,', &
+                    18.30_dp + 0.01_dp*mod(7*i, 9), ',10,10.0,s', merge('1', '2', i <= 4), ','
+                table = table//trim(row)//trim(SETTINGS(n))//NL
+            end do
+            sus = '&suspension b = 0.25, b_prime = 0.25, l = 1.2, l_prime = 1.2, g = 9.80665 /'
+            body = '&body mass = 8.1, inertia = 0.09, 0.0286875, 0.0624375, cg_depth = 0.025 /'
+            meas = "&measurement trials = '"//file//"', u_period = 0.05, u_mass = 0.005, "// &
+                "on_failure = '"//trim(merge('skip', 'stop', rnd(state) < 0.5_dp))//"'"
+            select case (mut)
+            case (1)
+                table = scale_column(table, 4, 10.0_dp**(int(5*rnd(state)) - 2))
+            case (2)
+                meas = meas//', on_failure = '//v
+            case (3)
+                call insert_bytes(table, state)
+            case (4)
+                table = table(1:int(len(table)*rnd(state)))
+            case (5)
+                meas = meas//', session = '//v
+            end select
+        case (1)
+            ! a calibrated rig
+            file = name//'.cal'
+            table = cal
+            sus = '&suspension b = 0.4008, b_prime = 0.4008, l = 1.20, l_prime = 1.20, '// &
+                'g = 9.80665 /'
+            body = '&body mass = 3.10, inertia = 0.045, 0.0630, 0.0304, cg_depth = 0.15, '// &
+                'cg_offset = 0.0 /'
+            meas = "&measurement periods = 1.41564, 1.44107, amplitudes = 10, 30, "// &
+                "u_period = 1e-4, u_mass = 0.001, calibration = '"//file//"'"
+            select case (mut)
+            case (1)
+                n = index(table, 'scale = ')
+                if (n > 0) table = table(1:n + 7)//trim(HOSTILE(1 + int(10*rnd(state))))// &
+                    table(index(table(n:), NL) + n - 1:)
+            case (2)
+                meas = meas//', u_l = '//v
+            case (3)
+                call insert_bytes(table, state)
+            case (4)
+                table = table(1:int(len(table)*rnd(state)))
+            case (5)
+                meas = meas//', monte_carlo = '//itoa(1 + int(3*rnd(state)))
+            end select
+        case (2)
+            ! a platform
+            table = ''
+            if (rnd(state) < 0.75_dp) then
+                sus = '&suspension cables = 3, radius = 0.135, radius_prime = 0.135, '// &
+                    'l = 1.0, g = 9.81'
+            else
+                sus = '&suspension cables = 4, support_points = 0.1, 0.1, 0, -0.1, 0.1, 0, '// &
+                    '-0.1, -0.1, 0, 0.1, -0.1, 0, body_points = 0.1, 0.1, 0, -0.1, 0.1, 0, '// &
+                    '-0.1, -0.1, 0, 0.1, -0.1, 0, lengths = 1.0, 1.0, 1.0, 1.0, g = 9.81'
+            end if
+            body = '&body mass = 2.048, inertia = 0.0243, 0.014, 0.014, cg_depth = -0.03, '// &
+                'cg_offset = 0.0, 0.0'
+            meas = '&measurement periods = 16.21, 16.17, cycles = 10, amplitudes = 8, 8, '// &
+                'u_mass = 0.005, u_l = 0.002, u_amplitude = 2'
+            select case (mut)
+            case (1)
+                sus = sus//', radius = '//v
+            case (2)
+                meas = meas//', u_l_prime = '//v
+            case (3)
+                body = body//', cg_depth = '//v
+            case (4)
+                sus = sus//', cables = '//trim(HOSTILE(1 + int(10*rnd(state))))
+            case (5)
+                meas = meas//', tare_i1 = 0.0093, tare_mass = '//v
+            end select
+            sus = sus//' /'
+            body = body//' /'
+        case default
+            ! a record by its columns' names, or as frame numbers
+            file = name//'.txt'
+            sus = '&suspension b = 0.40, b_prime = 0.40, l = 1.20, l_prime = 1.18, '// &
+                'g = 9.80665 /'
+            body = '&body mass = 3.10, inertia = 0.045, 0.0630, 0.0304, r = 0.25, '// &
+                'lambda = 0.64, sway_depth = 0.30 /'//NL//"&start mode = 'raised', "// &
+                'amplitude = 30.0 /'//NL//'&integration rtol = 1e-8, atol = 1e-10 /'
+            meas = "&measurement record = '"//file//"', quantity = 'rate', estimate = "// &
+                "'I1 amplitude', u_mass = 0.001, u_amplitude = 0.5"
+            if (rnd(state) < 0.5_dp) then
+                table = 'Time (s),Gyroscope z (rad/s),Note'//NL
+                do i = 1, size(rec%t), FUZZ_RECORD_EVERY
+                    write (row, '(f0.4,a,es16.9,a)') rec%t(i), ',', rec%v(i), ',ok'
+                    table = table//trim(row)//NL
+                end do
+                meas = meas//", record_columns = 'time', 'gyroscope z'"
+                if (mut == 5) meas = meas//', record_frame_rate = '//v
+            else
+                table = 'frame;W'//NL
+                do i = 1, size(rec%t), FUZZ_RECORD_EVERY
+                    write (row, '(i0,a,es16.9)') nint(rec%t(i)*500.0_dp), ';', rec%v(i)
+                    table = table//trim(row)//NL
+                end do
+                if (mut == 5) then
+                    meas = meas//', record_frame_rate = '//v
+                else
+                    meas = meas//', record_frame_rate = 500'
+                end if
+            end if
+            select case (mut)
+            case (1)
+                meas = meas//", record_columns = 'frame', "//v
+            case (2)
+                table = scale_column(table, 2, merge(57.29577951308232_dp, 1.0e-3_dp, &
+                                     rnd(state) < 0.5_dp))
+            case (3)
+                call insert_bytes(table, state)
+            case (4)
+                table = table(1:int(len(table)*rnd(state)))
+            end select
+        end select
+        if (len(table) > 0) call write_text(dir//'/'//file, table)
+        call write_text(dir//'/'//name//'.nml', head//sus//NL//body//NL//meas//' /'//NL)
+    end subroutine write_measure_deck
 
     !> A mutated record for deck NAME: written to dir/NAME.rec (unless it is to be missing);
     !! value: the &measurement record that names it (or another file).  From the shipped

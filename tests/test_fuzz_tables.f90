@@ -554,29 +554,33 @@ contains
 
     ! ---------------------------------------------------------------------------------------
     !> The audit's 100 periods on an asymmetric rig (its note said 5 s, the run took 75 s):
-    !! the work estimate counts the budget's two whole inversions (of every period) for
-    !! each period with a u and each amplitude, on both kinds of rig, so at least
-    !! 2 n (n + n) model periods for n periods.
+    !! the work estimate counts the budget's model periods, on both kinds of rig: the slope
+    !! of each period and of each amplitude (at least 6 n for n periods with u_amplitude),
+    !! and linear in n, as the budget is (twice the periods, about twice the work).
     subroutine estimate_many_periods(t)
         type(tester_t), intent(inout) :: t
         type(deck_t) :: d
         type(status_t) :: st
-        real(dp) :: runs(2)
+        real(dp) :: runs(2, 2)
         character(len=:), allocatable :: what
         integer, parameter :: N = 100
-        integer :: k
+        integer :: k, m
         call read_deck('input/identify_periods.nml', d, st)
         call t%check('fuzz_tables: input/identify_periods.nml read', st%code == STATUS_OK)
         if (st%code /= STATUS_OK) return
         d%measurement%monte_carlo = 0
-        do k = 1, 2
-            call periods_runs(deck_inputs(d, .false.), d%measurement, N, N, k == 1, 1.0e-3_dp, &
-                              runs(k), what)
+        do m = 1, 2
+            do k = 1, 2
+                call periods_runs(deck_inputs(d, .false.), d%measurement, m*N, m*N, k == 1, &
+                                  1.0e-3_dp, runs(k, m), what)
+            end do
         end do
-        call t%check('fuzz_tables: the work of 100 periods counts the budget''s inversions '// &
-                     '(asymmetric rig '//itoa(nint(runs(2)))//', symmetric '// &
-                     itoa(nint(runs(1)))//' model periods)', &
-                     all(runs >= 2.0_dp*N*(N + N)) .and. index(what, '100 periods') > 0)
+        call t%check('fuzz_tables: the work of 100 periods counts the budget''s slopes '// &
+                     '(asymmetric rig '//itoa(nint(runs(2, 1)))//', symmetric '// &
+                     itoa(nint(runs(1, 1)))//' model periods)', &
+                     all(runs(:, 1) >= 6.0_dp*N) .and. index(what, '200 periods') > 0)
+        call t%check('fuzz_tables: the work of the periods is linear in their number', &
+                     all(runs(:, 2)/runs(:, 1) > 1.8_dp .and. runs(:, 2)/runs(:, 1) < 2.05_dp))
     end subroutine estimate_many_periods
 
     !> A message is one line (no line end in it), not empty, and names the file.

@@ -213,10 +213,10 @@ contains
         character(len=*), intent(in) :: dir
         integer :: ex
         ! (an effective number of degrees of freedom may be infinite: dof_eff = inf, and
-        ! identify's own part's dof_own = inf)
+        ! identify's own part's dof_own = inf; a word such as 'inflated' in a warning is no Inf)
         call execute_command_line('cat '//dir//'/* 2>/dev/null | grep -v ''^#'' | '// &
-            'grep -vE ''^dof_(eff|own) = inf$'' | grep -qiE ''(^|[^a-z])[+-]?(nan|inf)''', &
-            exitstat=ex)
+            'grep -vE ''^dof_(eff|own) = inf$'' | grep -qiE ''(^|[^a-z])[+-]?(nan|inf|infinity)'// &
+            '([^a-z]|$)''', exitstat=ex)
         no_nan = ex /= 0
         call execute_command_line('cat '//dir//'/* 2>/dev/null | grep -qF ''****''', exitstat=ex)
         no_nan = no_nan .and. ex /= 0

@@ -857,18 +857,18 @@ contains
         if (scatter) then
             ! the timings' u, known to a common factor: each timed total's the same
             call invert_periods(r%rg, acc, r%per, r%amps, u, f, stat, 1.0_dp/r%cycles, .true., &
-                                fit_scale=fs)
+                                fit_scale=fs, cycles=r%cycles)
             if (stat%code /= 0) return
             nu_per = n - 1 - merge(1, 0, fs)
             r%u_scatter = sqrt(sum(((f%model_periods - r%per)*r%cycles)**2)/nu_per)
             r%u_each = r%u_scatter/r%cycles
         else
             call invert_periods(r%rg, acc, r%per, r%amps, u, f, stat, r%u_each, fit_scale=fk, &
-                                scale_prior=d%measurement%u_amplitude_scale)
+                                scale_prior=d%measurement%u_amplitude_scale, cycles=r%cycles)
             if (stat%code /= 0) return
         end if
         call period_budget(r%rg, acc, r%per, r%amps, u, f, stat, xp, r%u_each, fk, &
-                           d%measurement%u_amplitude_scale)
+                           d%measurement%u_amplitude_scale, r%cycles)
         if (stat%code /= 0) return
         allocate (r%warnings(0))
         r%fit_tested = f%tested
@@ -1412,6 +1412,17 @@ contains
         end do
         if (sp%n_sessions >= 2) then
             call session_warnings(sp, res)
+        else if (trim(pool%consistency) == 'inconsistent' .and. all(rels%u_scatter >= 0.0_dp)) then
+            ! no u_period: each release's u is the scatter of its own few timings, itself
+            ! uncertain; that is the likelier cause than a change between releases
+            call add_warning(res%warnings, &
+            'identify: the '//itoa(n)//' releases disagree beyond their own '// &
+            'uncertainties (chi-square p = '//sci(pool%p_value, 2)//', Birge ratio '// &
+            fixed(pool%birge, 2)//'): their scatter is in u_I1 (u_I1_reproducibility = '// &
+            sci(pool%u_reproducibility, 2)//'); &measurement u_period is not given, so '// &
+            'each release''s u is the scatter of its own '//itoa(minval(rels%samples))// &
+            ' or more timings, itself uncertain: give u_period (the u of one timed total, '// &
+            's), then look for what changed between releases')
         else if (trim(pool%consistency) == 'inconsistent') then
             call add_warning(res%warnings, &
             'identify: the '//itoa(n)//' releases disagree beyond their own '// &
@@ -1569,6 +1580,8 @@ contains
         real(dp) :: s23, d23, i1
         integer :: r
         i1 = res%i1_total
+        call check_determined(rels, res, stat)
+        if (stat%code /= 0) return
         do r = 1, size(rels)
             call check_linear_gap(d, rels(r), stat)
             if (stat%code /= 0) return
@@ -1596,6 +1609,61 @@ contains
                 CAUSES_LOW)
         end if
     end subroutine check_physical
+
+    !> No fit's start value, nor a value its own u swallows, is a result: refused (ERR_DECK)
+    !! when u(I1) of all that hung is not below I1 itself, naming the budget's largest row,
+    !! or when a release's inversion ended at its start value (&body inertia(1)) within one
+    !! iteration while the model's periods miss the measured ones.
+    subroutine check_determined(rels, res, stat)
+        type(release_fit_t), intent(in) :: rels(:)
+        type(identify_result_t), intent(in) :: res
+        type(status_t), intent(inout) :: stat
+        character(len=:), allocatable :: part, who
+        real(dp) :: miss
+        integer :: r, j, jmax
+        do r = 1, size(rels)
+            if (rels(r)%from_record .or. .not. allocated(rels(r)%per)) cycle
+            if (rels(r)%iterations > 1 .or. .not. (rels(r)%i1 == rels(r)%rg%inertia(1))) cycle
+            miss = max(3.0_dp*maxval(rels(r)%u_each), 1.0e-9_dp*maxval(rels(r)%per))
+            if (.not. (rels(r)%residual_rms > miss)) cycle
+            who = ''
+            if (size(rels) > 1) who = 'release '//itoa(r)//': '
+            call set_error(stat, ERR_DECK, 'identify: '//who//'the inversion ended at its '// &
+                'start value (&body inertia(1) = '// &
+                sci(rels(r)%i1, 5)//') after '//itoa(rels(r)%iterations)//' iteration(s), '// &
+                'the model''s periods off the measured ones by rms '// &
+                sci(rels(r)%residual_rms, 3)//' s: the periods do not determine I1 here; '// &
+                'likely: amplitudes below what the model resolves, or periods of another rig; '// &
+                'allowed: periods that change with I1 on this rig')
+            return
+        end do
+        if (res%u_i1_total < abs(res%i1_total)) return
+        part = ''
+        jmax = 0
+        if (allocated(res%budget)) then
+            do j = 1, size(res%budget)
+                if (jmax == 0) then
+                    jmax = j
+                else if (res%budget(j)%contribution > res%budget(jmax)%contribution) then
+                    jmax = j
+                end if
+            end do
+        end if
+        if (jmax > 0) then
+            associate (b => res%budget(jmax))
+                part = '; the largest part: '//trim(b%input)//' = '//sci(b%value, 4)// &
+                    ' with u = '//sci(b%u, 3)//' (contributing '//sci(b%contribution, 3)//')'
+                part = part//'; likely: a body so light on this rig that its periods '// &
+                    'hardly depend on I1 (near the period with I1 -> 0), that row''s u far '// &
+                    'beyond what the measurement resolves, or amplitudes below what the '// &
+                    'model resolves'
+            end associate
+        end if
+        call set_error(stat, ERR_DECK, 'identify: I1 = '//sci(res%i1_total, 5)//' with '// &
+            'standard uncertainty '//sci(res%u_i1_total, 3)//' (all that hung): the '// &
+            'measurement does not determine I1, its u is not below I1 itself'//part// &
+            '; allowed: uncertainties and amplitudes that give u(I1) < I1')
+    end subroutine check_determined
 
     !> One more warning line (built first: gfortran 12 fails to compile a structure
     !! constructor of such text inside an array constructor).
@@ -1760,8 +1828,11 @@ contains
             call write_kv(u, 'u_I1_total', res%u_i1_total, ios)
         end if
         if (len_trim(d%measurement%tare) > 0) call write_kv(u, 'I1_tare', res%i1_tare_file, ios)
-        if (d%measurement%tare_mass > 0.0_dp) &
-            call write_kv(u, 'mass_body', d%body%mass - d%measurement%tare_mass, ios)
+        ! the body's mass: what hung (each release's mass, a table's column or &body mass)
+        ! less the fixture's
+        if (d%measurement%tare_mass > 0.0_dp .and. size(rels) > 0) &
+            call write_kv(u, 'mass_body', sum(rels%rg%mass)/size(rels) - &
+                          d%measurement%tare_mass, ios)
         if (d%measurement%monte_carlo > 0) call write_kv(u, 'u_I1_monte_carlo', res%u_i1_mc, ios)
         call write_kv(u, 'I1_linear', res%i1_linear, ios)
         call write_kv(u, 'linear_error', res%linear_error, ios)
@@ -1967,7 +2038,7 @@ contains
             allocate (tm(r)%per(size(rels(r)%per)))
             do i = 1, size(rels(r)%per)
                 call rig_period_s(rels(r)%rg, accuracy_of(d), res%i1_total, rels(r)%amps(i), &
-                                  tm(r)%per(i), stat)
+                                  tm(r)%per(i), stat, rels(r)%cycles(i))
                 if (stat%code /= 0) exit
             end do
             first(r) = .true.

@@ -124,7 +124,7 @@ program make_record_main
             d%suspension%l_prime = len_k
             do r = 1, nrel
                 i1r = d%body%inertia(1)*(1.0_dp + scatter*rng_normal(g))
-                call rig_period_s(rig_of(d), accuracy_of(d), i1r, a, tp, st)
+                call rig_period_s(rig_of(d), accuracy_of(d), i1r, a, tp, st, cycles)
                 if (st%code /= 0) call fail(st%msg)
                 do j = 1, ntime
                     if (ios == 0) write (u, '(a)', iostat=ios) 'l'//fixed(len_k, 2)//'-'// &

@@ -298,7 +298,10 @@ contains
         call d%integration%check(stat)
         call d%cables%check(stat)
         call d%floquet%check(stat)
-        call d%chart%check(sus, stat)
+        ! (a platform given point by point has no l or radius to chart: the default axes
+        ! are refused only when a chart is asked for)
+        if (scene%requested('chart') .or. .not. (sus%cables > 2 .and. sus%pointwise())) &
+            call d%chart%check(sus, stat)
         call d%output%check(sus, stat)
         if (scene%requested('design')) call d%design%check(sus, d%body, stat)
         call d%damping%check(sus, d%body, stat)

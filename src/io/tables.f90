@@ -144,6 +144,16 @@ contains
                 where (is_text) f = zero_field()
             end if
             call to_numbers(f, tab%decimal_comma, x, numeric)
+            if (.not. numeric .and. n == 0 .and. .not. with_text .and. size(header) == size(f)) then
+                ! after the header, a line of numbers with an empty field is a data row
+                ! with a cell left empty, not a second header
+                if (empty_cell(f) > 0) then
+                    call fail('line '//itoa(nline)//': field '//itoa(empty_cell(f))//' ('// &
+                              clip(trim(adjustl(header(empty_cell(f))%s)))//') is empty; '// &
+                              'allowed: a number in every field after the header')
+                    return
+                end if
+            end if
             if (.not. numeric) then
                 if (n > 0 .or. with_text) then
                     call fail('line '//itoa(nline)//': '//non_number(f, tab%decimal_comma)// &
@@ -215,6 +225,21 @@ contains
             end do
         end subroutine keep_text
         !> A field that reads as 0 (a text column's place among the numbers).
+        !> The first empty field of a line whose other fields are all numbers (0: none).
+        integer function empty_cell(ff)
+            type(column_name_t), intent(in) :: ff(:)
+            real(dp) :: xx
+            integer :: j
+            empty_cell = 0
+            do j = 1, size(ff)
+                if (len_trim(ff(j)%s) == 0) then
+                    if (empty_cell == 0) empty_cell = j
+                else if (.not. number(ff(j)%s, tab%decimal_comma, xx)) then
+                    empty_cell = 0
+                    return
+                end if
+            end do
+        end function empty_cell
         elemental function zero_field() result(z)
             type(column_name_t) :: z
             z%s = '0'

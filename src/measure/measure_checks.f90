@@ -193,6 +193,14 @@ contains
                      'cg_offset; u_r, u_lambda with r, lambda')
             return
         end if
+        if (self%u_l_prime > 0.0_dp .and. sus%cables > 2) then
+            ! a platform's cables are one input, l (u_l); u_l_prime would be left out
+            call bad(stat, 'measurement', 'u_l_prime', rshort(self%u_l_prime), 'a platform of '// &
+                     itoa(sus%cables)//' cables has no second cable length l_prime (its '// &
+                     'lengths are one input, l)', 'u_l for the cables'' length on a '// &
+                     'platform; u_l_prime on a bifilar rig (cables = 2)')
+            return
+        end if
         ! a u whose 5-sigma range leaves its input's domain: the Monte Carlo would draw
         ! values no rig has (l < 0, g < 0, an amplitude beyond 180 degrees), the budget's
         ! steps would cross the edge
@@ -411,10 +419,10 @@ contains
             itoa(self%monte_carlo), 'number of Monte Carlo samples out of range', &
             '0 (first order only) or 2 <= monte_carlo <= '//itoa(MAX_MONTE_CARLO))
         if (stat%code /= STATUS_OK) return
-        if (self%plan /= 0 .and. (self%plan < 6 .or. self%plan > 26)) &
+        if (self%plan /= 0 .and. (self%plan < 6 .or. self%plan > 13)) &
             call bad(stat, 'tensor', 'plan', itoa(self%plan), 'number of hangs to plan '// &
-                     'out of range', '0 (no plan) or 6 <= plan <= 26 (the face, edge and '// &
-                     'corner directions of the body frame)')
+                     'out of range', '0 (no plan) or 6 <= plan <= 13 (the 13 face, edge and '// &
+                     'corner axes of the body frame; a hang with up -u is the hang with up u)')
         if (stat%code /= STATUS_OK) return
         if (requested .and. len_trim(self%hangs) == 0 .and. &
             self%plan == 0) call bad(stat, 'tensor', 'hangs', '''''', 'no table of hangs', &

@@ -43,9 +43,9 @@
 !! Failures are ERR_DECK statuses of one line naming the table (or the deck's key), its
 !! line and column, what is wrong and what is allowed.  No routine stops.
 module measurement_read
-    use kinds, only: dp
+    use kinds, only: dp, pi
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
-    use text, only: itoa, rshort, rlist_short, quoted, lower
+    use text, only: itoa, rshort, rlist_short, quoted, lower, sci
     use deck_base, only: record_in_folder
     use rig_groups, only: suspension_group_t, body_group_t
     use measure_groups, only: measurement_group_t, tensor_group_t, check_estimate, AMPLITUDE_MIN
@@ -77,6 +77,10 @@ module measurement_read
     real(dp), parameter :: AMPLITUDE_MAX = 90.0_dp
     !> along counts as parallel to up when its part normal to up is below this fraction.
     real(dp), parameter :: PARALLEL_TOL = 1.0e-6_dp
+    !> A hang's cycle may not be shorter than this fraction of its pendulum time
+    !! 2 pi sqrt(l/g): the torsion period is 2 pi sqrt(l/g) 2 rho/sqrt(b b') for a radius of
+    !! gyration rho, and no hung body has rho below 1/2000 of sqrt(b b').
+    real(dp), parameter :: PERIOD_MIN_RIG = 1.0e-3_dp
     !> Lengths of a hang over b_prime, and the body-frame points' size: as the deck's ratios.
     real(dp), parameter :: RATIO_MIN = 1.0e-3_dp, RATIO_MAX = 1.0e3_dp
 
@@ -286,6 +290,13 @@ contains
                         '> 0 in the deck''s units')
                 end do
                 if (stat%code /= STATUS_OK) return
+                if (ct%has('mass') .and. mea%tare_mass >= ct%v(i, 'mass', deckv(5))) then
+                    ! the release's mass is all that hung: the fixture's is a part of it
+                    call ct%bad_value(stat, i, 'mass', rshort(ct%v(i, 'mass', deckv(5))), &
+                        'mass above &measurement tare_mass = '//rshort(mea%tare_mass)// &
+                        ' (the mass column is all that hung: body and fixture)')
+                    return
+                end if
                 if (r%line == 0) then
                     r%line = ct%line(i)
                     rigv(:, it) = [(ct%v(i, RIG_COLUMNS(k), deckv(k)), k=1, 5)]
@@ -314,6 +325,16 @@ contains
                     has_record(it) = .true.
                     o = observation_t(kind=OBS_RECORD, release=it, line=ct%line(i))
                     o%file = record_in_folder(mea%trials_path, trim(rec))
+                    ! one record is one release: listed twice it would count twice
+                    do k = 1, no
+                        if (obs(k)%kind /= OBS_RECORD) cycle
+                        if (obs(k)%file /= o%file) cycle
+                        call ct%fail_row(stat, i, 'column record = '//quoted(trim(rec))// &
+                            ': the same record as line '//itoa(obs(k)%line)//' (trial '// &
+                            quoted(m%releases(obs(k)%release)%label)//'): one record is one '// &
+                            'release, counted once; allowed: each record file on one row')
+                        return
+                    end do
                     no = no + 1
                     obs(no) = o
                     cycle
@@ -479,7 +500,7 @@ contains
         type(column_table_t) :: ct
         type(hang_t) :: h0, h
         type(hang_t), allocatable :: hangs(:)
-        real(dp) :: up_v(3), al_v(3), c_v(3), d_v(3), per, u_tot
+        real(dp) :: up_v(3), al_v(3), c_v(3), d_v(3), per, u_tot, t_rig
         logical :: have_cg, form_up, form_pts
         integer, allocatable :: ids(:)
         integer :: i, k, n, nh
@@ -601,6 +622,18 @@ contains
                 call ct%check_value(stat, i, 'period', per, per > 0.0_dp .and. &
                     per < 1.0e9_dp, '0 < period < 1e9 (s, the time of cycles cycles)')
                 if (stat%code /= STATUS_OK) return
+                ! a cycle far shorter than the rig's own time scale: no body swings so fast
+                ! on it (its radius of gyration would be below 1/2000 of b b'), a period in
+                ! other units than s
+                t_rig = 2.0_dp*pi*sqrt(min(h%l, h%l_prime)/sus%g)
+                if (per/o%cycles < PERIOD_MIN_RIG*t_rig) then
+                    call ct%bad_value(stat, i, 'period', rshort(per), 'a cycle (period/'// &
+                        'cycles, here '//sci(per/o%cycles, 3)//' s) of at least '// &
+                        rshort(PERIOD_MIN_RIG)//' of this hang''s pendulum time 2 pi '// &
+                        'sqrt(l/g) = '//sci(t_rig, 3)//' s: no body swings faster on it; '// &
+                        'likely: a period in ms or us, not s, or another column')
+                    return
+                end if
                 o%amplitude = ct%v(i, 'amplitude', 0.0_dp)
                 call ct%check_value(stat, i, 'amplitude', o%amplitude, o%amplitude >= &
                     0.0_dp .and. o%amplitude < AMPLITUDE_MAX, '0 <= amplitude < '// &

@@ -21,7 +21,9 @@
 !!   as it turns), so a period below T_min is refused: no positive I1 gives it.
 !! * First-order uncertainty (GUM, JCGM 100:2008, section 5.1): u(I1)^2 = sum_j (c_j u_j)^2
 !!   over the independent inputs (mass, l, l', b, b', g, each period, each amplitude), with
-!!   the sensitivities c_j = dI1/dx_j by central differences of the whole inversion.  Pure
+!!   the sensitivities c_j = dI1/dx_j by central differences of the whole inversion for the
+!!   rig's inputs, and for each period and amplitude from the fit's linearised normal
+!!   equation (period_budget: linear in the number of periods).  Pure
 !!   torsion needs l = l'; the rig is then mirror-symmetric, T(l, l') = T(l', l), so to
 !!   first order dI1/dl = dI1/dl' = (1/2) dI1/dL with L the common length.  A change of b'
 !!   moves the two body attachment points symmetrically: the mass centre keeps its depth
@@ -42,7 +44,11 @@
 !!   rigs where pure torsion is not an exact motion) get their periods from the full model:
 !!   the period at amplitude A is the time from release at rest at theta4 = A (&start
 !!   mode 'raised' at A, no tilt, no damping) to the next maximum of theta4, the first zero
-!!   of theta4' from + to - after theta4 has swung below 0 (simulated_period_s: the run loop
+!!   of theta4' from + to - after theta4 has swung below 0; a total timed over N cycles is
+!!   compared with the time to the N-th such maximum over N, as a stopwatch counts them
+!!   (their intervals differ where the torsion feeds tilt and sway), and refused (ERR_MODEL)
+!!   when a return within them peaks below half the release amplitude (simulated_period_s:
+!!   the run loop
 !!   of module run_loop with the deck's rtol and atol, the zero located in the integrator's
 !!   dense output).  For a symmetric rig this is the exact torsion period (a test checks it
 !!   to 1e-9).  Damping does not enter: a measured period is taken as that of the undamped
@@ -70,8 +76,8 @@
 !! periods in s, amplitudes in degrees.  No routine stops; failures come back in status_t.
 module period_inversion
     use kinds, only: dp, pi, deg
-    use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC
-    use text, only: itoa, fixed, sci
+    use status, only: status_t, set_error, ERR_DECK, ERR_NUMERIC, ERR_MODEL
+    use text, only: itoa, fixed, sci, rshort
     use geometry, only: pendulum_t
     use deck_base, only: deck_source_t
     use rig, only: rig_t, start_t, accuracy_t, make_pendulum, start_state, raised_start, &
@@ -149,6 +155,8 @@ module period_inversion
         real(dp), allocatable :: periods(:), amps(:)    !! measured (s, degrees)
         real(dp), allocatable :: sw(:)          !! the weights' roots (1/u)
         real(dp), allocatable :: tm(:)          !! the model's periods at I1 = i1_last
+        real(dp), allocatable :: cycles(:)      !! the cycles each period's time spans
+        type(status_t) :: model_failure         !! the last trial I1 the model refused
         real(dp) :: i1_last = -huge(1.0_dp)
         logical :: fit_scale = .false.         !! p(2): the amplitudes' scale k
         real(dp) :: k_last = -huge(1.0_dp)      !! the k of tm
@@ -173,6 +181,15 @@ module period_inversion
     real(dp), parameter :: I_TOL_SIM = 1.0e-10_dp, SLOPE_REL_SIM = 1.0e-5_dp
     !> Most periods (of the small-amplitude estimate) a simulated period may take.
     real(dp), parameter :: PERIODS_MAX = 20.0_dp
+    !> Most cycles a simulated period is timed over (a timed total of more cycles on a rig
+    !! whose periods are simulated is refused: see invert_periods).
+    integer, parameter, public :: CYCLES_SIM_MAX = 200
+    !> Over several cycles, each return of theta4 must peak above this fraction of the
+    !! release amplitude (else its cycles are not countable: simulated_period_s).
+    real(dp), parameter :: RETURN_MIN = 0.5_dp
+    !> The words of that refusal (the inversion tells it from a failed step by them).
+    character(len=*), parameter :: UNCOUNTABLE = 'cycles cannot be counted as a stopwatch '// &
+        'counts them'
 
 contains
 
@@ -211,17 +228,19 @@ contains
     !> The period (s) of the deck's rig with I1 = i1 at peak amplitude amp_deg: the exact
     !! period of pure torsion (torsion_period_s) on a torsion scene, else the period of the
     !! full model (simulated_period_s).
-    subroutine rig_period_s(rg, acc, i1, amp_deg, t, stat)
+    subroutine rig_period_s(rg, acc, i1, amp_deg, t, stat, cycles)
         type(rig_t), intent(in) :: rg           !! the rig
         type(accuracy_t), intent(in) :: acc     !! accuracy of a simulated period
         real(dp), intent(in) :: i1              !! principal moment about b1 (deck units)
         real(dp), intent(in) :: amp_deg         !! peak amplitude of theta4 (degrees)
         real(dp), intent(out) :: t              !! period (s)
         type(status_t), intent(out) :: stat
+        !> simulated: the mean period over this many cycles from the release
+        real(dp), intent(in), optional :: cycles
         if (is_torsion_rig(rg)) then
             call torsion_period_s(rg, i1, amp_deg, t, stat)
         else
-            call simulated_period_s(rg, acc, i1, amp_deg, t, stat)
+            call simulated_period_s(rg, acc, i1, amp_deg, t, stat, cycles)
         end if
     end subroutine rig_period_s
 
@@ -229,21 +248,28 @@ contains
     !! rest at theta4 = amp_deg (&start mode 'raised' at that amplitude, no tilt, no
     !! damping) to the next maximum of theta4 (see the module header).  Integrated with the
     !! accuracy acc (the deck's rtol, atol and integrator), in memory, through the run loop.
-    subroutine simulated_period_s(rg, acc, i1, amp_deg, t, stat)
+    subroutine simulated_period_s(rg, acc, i1, amp_deg, t, stat, cycles)
         type(rig_t), intent(in) :: rg           !! the rig
         type(accuracy_t), intent(in) :: acc     !! rtol, atol, integrator
         real(dp), intent(in) :: i1              !! principal moment about b1 (deck units)
         real(dp), intent(in) :: amp_deg         !! peak amplitude of theta4 (degrees)
         real(dp), intent(out) :: t              !! period (s)
         type(status_t), intent(out) :: stat
+        !> the cycles the user timed (a stopwatch from the release to the N-th return): t is
+        !! then the time to the N-th maximum over N (N = nint(cycles), 1 to CYCLES_SIM_MAX)
+        real(dp), intent(in), optional :: cycles
         type(rig_t) :: rr
         type(pendulum_t) :: p
         type(kane_run_t) :: m
         type(maxima_sink_t) :: sink
         real(dp) :: y0(NSTATE), th0(5), t_end, jz
+        integer :: nc, k
         t = 0.0_dp
+        nc = 1
+        if (present(cycles)) nc = max(1, min(CYCLES_SIM_MAX, nint(cycles)))
         if (offaxis_platform(rg)) then
-            ! a platform's body off its axis: the platform's own periodic torsion
+            ! a platform's body off its axis: the platform's own periodic torsion (periodic:
+            ! N cycles take N periods)
             call platform_period_s(rg, acc, i1, amp_deg, t, stat)
             return
         end if
@@ -258,23 +284,41 @@ contains
         ! an end well beyond the period: PERIODS_MAX small-amplitude periods of the body
         ! turning about the vertical through its mass centre's offset from O, or about O
         jz = p%inertia(1) + p%r**2 + 0.25_dp
-        t_end = PERIODS_MAX*4.0_dp*pi*sqrt(jz*p%big_l/p%big_b)
+        t_end = (PERIODS_MAX + nc - 1)*4.0_dp*pi*sqrt(jz*p%big_l/p%big_b)
         call kane_run_start(m, p, y0, th0(3), acc%rtol, acc%atol, acc%method, t_end, &
                             'raise &integration rtol/atol', stat)
         if (stat%code /= 0) return
         sink%watch_steps = .true.
+        sink%want = nc
         call drive(m, [0.0_dp, t_end], sink, stat)
         if (stat%code /= 0) then
             stat%msg = 'the period at '//fixed(amp_deg, 3)//' deg (simulated): '//stat%msg
             return
         end if
-        if (sink%found < 1) then
+        if (sink%found < nc) then
             call set_error(stat, ERR_NUMERIC, 'the period at '//fixed(amp_deg, 3)//' deg '// &
-                '(simulated): theta4 reached no maximum after its first swing within '// &
-                'tau = '//fixed(t_end, 3)//'; the rig does not swing in torsion')
+                '(simulated): theta4 reached '//itoa(sink%found)//' of '//itoa(nc)// &
+                ' maxima after its first swing within tau = '//fixed(t_end, 3)// &
+                '; the rig does not swing in torsion')
             return
         end if
-        t = sink%t(1)*sqrt(rg%b_prime/rg%g)
+        if (nc > 1) then
+            ! the returns a stopwatch counts: every maximum well on the release's side; a
+            ! swing that feeds tilt and sway until theta4 peaks below half the release (or
+            ! below 0) has no count of cycles a user and the model share
+            k = minloc(sink%a(1:nc), 1)
+            if (sink%a(k) < RETURN_MIN*amp_deg*deg) then
+                call set_error(stat, ERR_MODEL, 'the period at '//rshort(amp_deg)// &
+                    ' deg over '//itoa(nc)//' cycles (simulated): theta4''s return '// &
+                    itoa(k)//' peaks at '//sci(sink%a(k)/deg, 3)//' deg after a release '// &
+                    'at '//rshort(amp_deg)//' deg (the torsion feeds tilt and sway on this '// &
+                    'rig): its '//UNCOUNTABLE//'; allowed: '// &
+                    'fewer cycles per timed total, a smaller amplitude, or a record of the '// &
+                    'swing (&measurement record)')
+                return
+            end if
+        end if
+        t = sink%t(nc)/nc*sqrt(rg%b_prime/rg%g)
     end subroutine simulated_period_s
 
     !> Scaled parameters of the rig with I1 = i1, checked to be a torsion scene with b1
@@ -316,7 +360,7 @@ contains
     !! amplitudes' common scale k fitted too (module header), from k_start (else 1), with
     !! scale_prior > 0 its relative u as read (one more residual).
     subroutine invert_periods(rg, acc, periods, amps, u, fit, stat, u_each, timing_weights, &
-                              fit_scale, k_start, scale_prior)
+                              fit_scale, k_start, scale_prior, cycles)
         type(rig_t), intent(in) :: rg           !! the rig; inertia(1) is the start guess
         type(accuracy_t), intent(in) :: acc     !! accuracy of simulated periods
         real(dp), intent(in) :: periods(:)      !! measured full periods (s)
@@ -329,6 +373,9 @@ contains
         logical, intent(in), optional :: fit_scale      !! fit the amplitudes' scale k too
         real(dp), intent(in), optional :: k_start       !! its start (1: as read)
         real(dp), intent(in), optional :: scale_prior   !! k's relative u (0: k free)
+        !> the cycles each period's time spans (a rig whose periods are simulated: the
+        !! model's mean period over as many cycles from the release, as they were timed)
+        real(dp), intent(in), optional :: cycles(:)
         type(period_problem_t) :: prob
         type(lsq_options_t) :: opts
         type(lsq_result_t) :: res
@@ -349,6 +396,18 @@ contains
         scale = rg%mass*rg%b_prime**2
         sym = is_torsion_rig(rg)
         ilo = merge(I_TINY, I_TINY_SIM, sym)*scale
+        allocate (prob%cycles(size(periods)))
+        prob%cycles = 1.0_dp
+        if (present(cycles)) prob%cycles = cycles
+        if (.not. sym .and. any(prob%cycles > CYCLES_SIM_MAX + 0.5_dp)) then
+            i = maxloc(prob%cycles, 1)
+            call set_error(stat, ERR_DECK, '&measurement cycles: period '//itoa(i)//' is the '// &
+                'time of '//rshort(prob%cycles(i))//' cycles on a rig that is not '// &
+                'symmetric (its periods are simulated from the release, cycle by cycle, as '// &
+                'they were timed); allowed: totals of at most '//itoa(CYCLES_SIM_MAX)// &
+                ' cycles on such a rig')
+            return
+        end if
         ! feasibility: T(I1) > T(0+) for every period (asymmetric rigs: see below); weights
         ! from the amplitudes' effect
         do i = 1, size(periods)
@@ -379,8 +438,9 @@ contains
                     ! past 180 gave a NaN period and a weight of 1/tiny)
                     h = 1.0e-4_dp*max(1.0_dp, amps(i))
                     h = min(h, 0.5_dp*amps(i), 0.5_dp*(180.0_dp - amps(i)))
-                    call model_period(rg, acc, sym, i1, amps(i) + h, ta, stat)
-                    if (stat%code == 0) call model_period(rg, acc, sym, i1, amps(i) - h, tb, stat)
+                    call model_period(rg, acc, sym, i1, amps(i) + h, ta, stat, prob%cycles(i))
+                    if (stat%code == 0) call model_period(rg, acc, sym, i1, amps(i) - h, tb, &
+                                                          stat, prob%cycles(i))
                     if (stat%code /= 0) return
                     dtda = (ta - tb)/(2*h)
                 end if
@@ -488,6 +548,12 @@ contains
             if (sym) return
         end select
         i1 = res%p(1)
+        if (prob%model_failure%code == ERR_MODEL) then
+            ! the steps the model refused (a swing whose cycles cannot be counted), not
+            ! periods out of reach
+            stat = prob%model_failure
+            return
+        end if
         if (.not. sym .and. all(res%r(1:n) > 0.0_dp)) then
             ! the model's periods are all still longer at the smallest I1 the model could
             ! swing with (a cable goes slack below it): no I1 gives them
@@ -506,18 +572,19 @@ contains
     end subroutine invert_periods
 
     !> The period of the rig with I1 = i1 at amplitude a (degrees): exact torsion (sym), or
-    !! simulated for an asymmetric rig.
-    subroutine model_period(rg, acc, sym, i1, a, tp, st)
+    !! simulated for an asymmetric rig (the mean over the cycles timed, when given).
+    subroutine model_period(rg, acc, sym, i1, a, tp, st, cycles)
         type(rig_t), intent(in) :: rg
         type(accuracy_t), intent(in) :: acc
         logical, intent(in) :: sym
         real(dp), intent(in) :: i1, a
         real(dp), intent(out) :: tp
         type(status_t), intent(out) :: st
+        real(dp), intent(in), optional :: cycles    !! the cycles timed (simulated: the mean)
         if (sym) then
             call torsion_period_s(rg, i1, a, tp, st)
         else
-            call simulated_period_s(rg, acc, i1, a, tp, st)
+            call simulated_period_s(rg, acc, i1, a, tp, st, cycles)
         end if
     end subroutine model_period
 
@@ -528,22 +595,46 @@ contains
         real(dp), intent(in) :: p(:)            !! I1
         real(dp), intent(out) :: r(:)
         type(status_t), intent(out) :: stat
-        integer :: k
         real(dp) :: ks
         r = 0.0_dp
         prob%i1_last = -huge(1.0_dp)
         ks = 1.0_dp
         if (prob%fit_scale) ks = p(2)
-        do k = 1, size(prob%periods)
-            call model_period(prob%rg, prob%acc, prob%sym, p(1), prob%amps(k)*ks, prob%tm(k), &
-                              stat)
-            if (stat%code /= 0) return
-        end do
+        call model_periods(prob, p(1), ks, prob%tm, stat)
+        ! (a swing whose cycles cannot be counted: the deck's; a cable slack at a trial I1
+        ! is a failed step only)
+        if (stat%code == ERR_MODEL .and. index(stat%msg, UNCOUNTABLE) > 0) &
+            prob%model_failure = stat
+        if (stat%code /= 0) return
         r(1:size(prob%periods)) = prob%sw*(prob%tm - prob%periods)
         if (prob%prior > 0.0_dp) r(size(r)) = (ks - 1.0_dp)/prob%prior
         prob%i1_last = p(1)
         prob%k_last = ks
     end subroutine period_residual
+
+    !> The model's periods tm(k) of every measured period at I1 = i1 and the amplitudes'
+    !! scale ks, each pair (amplitude, cycles) computed once (a release of many timings at
+    !! one amplitude: one model period).
+    subroutine model_periods(prob, i1, ks, tm, stat)
+        class(period_problem_t), intent(in) :: prob
+        real(dp), intent(in) :: i1, ks
+        real(dp), intent(out) :: tm(:)
+        type(status_t), intent(out) :: stat
+        integer :: k, j
+        stat%code = 0
+        tm = 0.0_dp
+        outer: do k = 1, size(prob%periods)
+            do j = k - 1, 1, -1
+                if (prob%amps(j) == prob%amps(k) .and. prob%cycles(j) == prob%cycles(k)) then
+                    tm(k) = tm(j)
+                    cycle outer
+                end if
+            end do
+            call model_period(prob%rg, prob%acc, prob%sym, i1, prob%amps(k)*ks, tm(k), stat, &
+                              prob%cycles(k))
+            if (stat%code /= 0) return
+        end do outer
+    end subroutine model_periods
 
     !> The number of periods (and the scale's own residual when it has a prior).
     pure integer function period_nres(prob) result(n)
@@ -562,7 +653,7 @@ contains
         real(dp), intent(out) :: jac(:, :)
         integer, intent(out) :: evaluations
         type(status_t), intent(out) :: stat
-        real(dp) :: tp, hh, rr(size(r)), ks, hk
+        real(dp) :: tp, tps(size(prob%periods)), hh, rr(size(r)), ks, hk
         integer :: k
         jac = 0.0_dp
         evaluations = 0
@@ -575,12 +666,9 @@ contains
         end if
         hh = merge(1.0e-7_dp, SLOPE_REL_SIM, prob%sym)*p(1)
         call unused(h)
-        do k = 1, size(prob%periods)
-            call model_period(prob%rg, prob%acc, prob%sym, p(1) + hh, prob%amps(k)*ks, tp, &
-                              stat)
-            if (stat%code /= 0) return
-            jac(k, 1) = prob%sw(k)*((tp - prob%tm(k))/hh)
-        end do
+        call model_periods(prob, p(1) + hh, ks, tps, stat)
+        if (stat%code /= 0) return
+        jac(1:size(prob%periods), 1) = prob%sw*((tps - prob%tm)/hh)
         evaluations = evaluations + 1
         if (.not. prob%fit_scale) return
         ! dr/dk, the step toward smaller amplitudes (inside 180 degrees); dT/dk is a small
@@ -589,7 +677,7 @@ contains
         if (prob%prior > 0.0_dp) jac(size(r), 2) = 1.0_dp/prob%prior
         do k = 1, size(prob%periods)
             call model_period(prob%rg, prob%acc, prob%sym, p(1), prob%amps(k)*(ks + hk), tp, &
-                              stat)
+                              stat, prob%cycles(k))
             if (stat%code /= 0) return
             jac(k, 2) = prob%sw(k)*((tp - prob%tm(k))/hk)
         end do
@@ -600,18 +688,23 @@ contains
     !! rig's inputs (x when given, with their names of module inputs; else mass, l, l_prime,
     !! b, b_prime, g with the uncertainties of u), then period(i) and amplitude(i) for each
     !! period; an input of u = 0 is left out (nothing to propagate, and no step to take).
-    !! The sensitivities are central differences of the whole inversion (relative step
-    !! 1e-6; 1e-4 for an asymmetric rig, whose periods are simulated; an input of value 0
-    !! steps by that fraction of b'); an amplitude near 0 or 180 degrees is differenced on
-    !! the side that stays inside.  On a rig where pure torsion is exact the inputs that do
+    !! The inputs' sensitivities are central differences of the whole inversion (relative
+    !! step 1e-6; 1e-4 for an asymmetric rig, whose periods are simulated; an input of value
+    !! 0 steps by that fraction of b').  The periods' and the amplitudes' come from the fit's
+    !! linearised normal equation, dI1/dT_k = w_k T_k' / sum_j w_j T_j'^2 and dI1/dA_k =
+    !! -(dI1/dT_k) dT_k/dA_k (T' = dT/dI1 and dT/dA by central differences of the model's
+    !! periods at the estimate, each amplitude and cycles once; an amplitude near 0 or 180
+    !! degrees differenced on the side that stays inside): linear in the number of periods.
+    !! On a rig where pure torsion is exact the inputs that do
     !! not enter pure torsion (I2, I3, the mass centre) have sensitivity 0 by symmetry
     !! (module inputs), and l, l' share the effect of their common length.  u_each: the
     !! standard uncertainty of each period (e.g. u_period / cycles), else u%period.
     !! fit_scale: the inversions fit the amplitudes' scale too (fit%scale_c: dk/dx of each
-    !! row); u_amp_scale > 0: the row amplitude_scale (module header), and with fit_scale
-    !! the inversions take it as the scale's prior.
+    !! row; the periods' and amplitudes' rows then by refits, one per row, as the scale
+    !! moves with them); u_amp_scale > 0: the row amplitude_scale (module header), and with
+    !! fit_scale the inversions take it as the scale's prior.
     subroutine period_budget(rg, acc, periods, amps, u, fit, stat, x, u_each, fit_scale, &
-                             u_amp_scale)
+                             u_amp_scale, cycles)
         type(rig_t), intent(in) :: rg           !! the rig
         type(accuracy_t), intent(in) :: acc     !! accuracy of simulated periods
         real(dp), intent(in) :: periods(:)      !! measured periods (s)
@@ -623,7 +716,9 @@ contains
         real(dp), intent(in), optional :: u_each(:)     !! each period's u (s)
         logical, intent(in), optional :: fit_scale      !! the scale fitted in each inversion
         real(dp), intent(in), optional :: u_amp_scale   !! the scale's relative u (not fitted)
+        real(dp), intent(in), optional :: cycles(:)     !! the cycles each period's time spans
         type(input_t), allocatable :: xs(:)
+        real(dp), allocatable :: ct(:), dtda(:), cyc(:)
         type(budget_row_t), allocatable :: rows(:)
         type(start_t) :: st0
         real(dp), allocatable :: kc(:)
@@ -645,6 +740,9 @@ contains
         kp = fit%scale
         km = fit%scale
         allocate (kc(0))
+        allocate (cyc(n))
+        cyc = 1.0_dp
+        if (present(cycles)) cyc = cycles
         if (present(x)) then
             xs = x
         else
@@ -677,43 +775,63 @@ contains
             rows = [rows, budget_row_t(xs(k)%name, xs(k)%value, xs(k)%u, c, abs(c)*xs(k)%u, &
                                        ROW_INPUT)]
         end do
+        ! the periods' and the amplitudes' rows by the linearised normal equation of the
+        ! fit (linear in n: a refit per period was n^2): at the estimate
+        ! sum_j w_j (T_j(I1, A_j) - T_j) T_j' = 0, so dI1/dT_k = w_k T_k' / sum_j w_j T_j'^2
+        ! and dI1/dA_k = -(dI1/dT_k) dT_k/dA_k (T' = dT/dI1; the terms of the residuals
+        ! times the second derivatives, and of the weights' change, are left out)
+        if (.not. fs .and. (any(up > 0.0_dp) .or. u%amplitude > 0.0_dp)) then
+            call timing_slopes(stat)
+            if (stat%code /= 0) return
+        end if
         do i = 1, n
             if (.not. (up(i) > 0.0_dp)) cycle
             write (nm, '(a,i0,a)') 'period(', i, ')'
-            hx = hrel*periods(i)
-            call inverted_measured(i, periods(i) + hx, amps(i), ip, stat)
-            kp = kl
-            if (stat%code == 0) call inverted_measured(i, periods(i) - hx, amps(i), im, stat)
-            km = kl
-            if (stat%code /= 0) then
-                stat%msg = 'uncertainty budget, input '//trim(nm)//': '//stat%msg
-                return
+            if (fs) then
+                hx = hrel*periods(i)
+                call inverted_measured(i, periods(i) + hx, amps(i), ip, stat)
+                kp = kl
+                if (stat%code == 0) call inverted_measured(i, periods(i) - hx, amps(i), im, stat)
+                km = kl
+                if (stat%code /= 0) then
+                    stat%msg = 'uncertainty budget, input '//trim(nm)//': '//stat%msg
+                    return
+                end if
+                c = (ip - im)/(2*hx)
+                kc = [kc, (kp - km)/(2*hx)]
+            else
+                c = ct(i)
+                kc = [kc, 0.0_dp]
             end if
-            c = (ip - im)/(2*hx)
-            kc = [kc, (kp - km)/(2*hx)]
             rows = [rows, budget_row_t(nm, periods(i), up(i), c, abs(c)*up(i), ROW_TIMING)]
         end do
         do i = 1, n
             if (.not. (u%amplitude > 0.0_dp)) cycle
             write (nm, '(a,i0,a)') 'amplitude(', i, ')'
-            hx = hrel*max(1.0_dp, amps(i))
-            if (amps(i) + hx < 180.0_dp .and. amps(i) - hx > 0.0_dp) then
-                call inverted_measured(i, periods(i), amps(i) + hx, ip, stat)
-                kp = kl
-                if (stat%code == 0) call inverted_measured(i, periods(i), amps(i) - hx, im, stat)
-                km = kl
-                c = (ip - im)/(2*hx)
-                kc = [kc, (kp - km)/(2*hx)]
+            if (fs) then
+                hx = hrel*max(1.0_dp, amps(i))
+                if (amps(i) + hx < 180.0_dp .and. amps(i) - hx > 0.0_dp) then
+                    call inverted_measured(i, periods(i), amps(i) + hx, ip, stat)
+                    kp = kl
+                    if (stat%code == 0) call inverted_measured(i, periods(i), amps(i) - hx, im, &
+                                                               stat)
+                    km = kl
+                    c = (ip - im)/(2*hx)
+                    kc = [kc, (kp - km)/(2*hx)]
+                else
+                    ! one-sided, inside 0 .. 180 degrees
+                    hx = sign(hx, 90.0_dp - amps(i))
+                    call inverted_measured(i, periods(i), amps(i) + hx, ip, stat)
+                    c = (ip - fit%i1)/hx
+                    kc = [kc, (kl - fit%scale)/hx]
+                end if
+                if (stat%code /= 0) then
+                    stat%msg = 'uncertainty budget, input '//trim(nm)//': '//stat%msg
+                    return
+                end if
             else
-                ! one-sided, inside 0 .. 180 degrees
-                hx = sign(hx, 90.0_dp - amps(i))
-                call inverted_measured(i, periods(i), amps(i) + hx, ip, stat)
-                c = (ip - fit%i1)/hx
-                kc = [kc, (kl - fit%scale)/hx]
-            end if
-            if (stat%code /= 0) then
-                stat%msg = 'uncertainty budget, input '//trim(nm)//': '//stat%msg
-                return
+                c = -ct(i)*dtda(i)
+                kc = [kc, 0.0_dp]
             end if
             rows = [rows, budget_row_t(nm, amps(i), u%amplitude, c, abs(c)*u%amplitude, &
                                        ROW_AMPLITUDE)]
@@ -747,6 +865,75 @@ contains
         fit%u_i1 = 0.0_dp
         if (size(rows) > 0) fit%u_i1 = sqrt(sum(rows%contribution**2))
     contains
+        !> ct(i) = dI1/dT_i and dtda(i) = dT_i/dA_i at the estimate, each (amplitude,
+        !! cycles) pair's model periods computed once; the weights as the inversion takes
+        !! them (w_i = 1/(u_i^2 + (dT_i/dA_i u_A)^2), the slopes at the estimate).
+        subroutine timing_slopes(st)
+            type(status_t), intent(out) :: st
+            real(dp) :: slope(n), w(n), hi, ha, tpl, tmi, den
+            integer :: j, jj
+            logical :: fresh
+            st%code = 0
+            hi = hrel*fit%i1
+            allocate (ct(n), dtda(n))
+            do j = 1, n
+                fresh = .true.
+                do jj = j - 1, 1, -1
+                    if (amps(jj) == amps(j) .and. cyc(jj) == cyc(j)) then
+                        slope(j) = slope(jj)
+                        dtda(j) = dtda(jj)
+                        fresh = .false.
+                        exit
+                    end if
+                end do
+                if (.not. fresh) cycle
+                call model_period(rg, acc, sym, fit%i1 + hi, amps(j), tpl, st, cyc(j))
+                if (st%code == 0) call model_period(rg, acc, sym, fit%i1 - hi, amps(j), tmi, &
+                                                    st, cyc(j))
+                if (st%code /= 0) then
+                    st%msg = 'uncertainty budget, input period('//itoa(j)//'): '//st%msg
+                    return
+                end if
+                slope(j) = (tpl - tmi)/(2*hi)
+                dtda(j) = 0.0_dp
+                if (u%amplitude > 0.0_dp) then
+                    ha = hrel*max(1.0_dp, amps(j))
+                    if (amps(j) + ha < 180.0_dp .and. amps(j) - ha > 0.0_dp) then
+                        call model_period(rg, acc, sym, fit%i1, amps(j) + ha, tpl, st, cyc(j))
+                        if (st%code == 0) call model_period(rg, acc, sym, fit%i1, amps(j) - ha, &
+                                                            tmi, st, cyc(j))
+                        dtda(j) = (tpl - tmi)/(2*ha)
+                    else
+                        ! one-sided, inside 0 .. 180 degrees
+                        ha = sign(ha, 90.0_dp - amps(j))
+                        call model_period(rg, acc, sym, fit%i1, amps(j) + ha, tpl, st, cyc(j))
+                        if (st%code == 0) call model_period(rg, acc, sym, fit%i1, amps(j), &
+                                                            tmi, st, cyc(j))
+                        dtda(j) = (tpl - tmi)/ha
+                    end if
+                    if (st%code /= 0) then
+                        st%msg = 'uncertainty budget, input amplitude('//itoa(j)//'): '//st%msg
+                        return
+                    end if
+                end if
+            end do
+            w = 1.0_dp
+            if (any(up > 0.0_dp) .or. u%amplitude > 0.0_dp) then
+                do j = 1, n
+                    w(j) = 1.0_dp/max(tiny(1.0_dp), up(j)**2 + (dtda(j)*u%amplitude)**2)
+                    if (.not. (w(j) < huge(1.0_dp))) w(j) = 1.0_dp
+                end do
+                w = w/maxval(w)
+            end if
+            den = sum(w*slope**2)
+            if (.not. (den > 0.0_dp)) then
+                call set_error(st, ERR_NUMERIC, 'uncertainty budget: the model''s periods do '// &
+                    'not change with I1 at I1 = '//sci(fit%i1, 5)//'; the periods do not '// &
+                    'determine I1 on this rig')
+                return
+            end if
+            ct = w*slope/den
+        end subroutine timing_slopes
         !> I1 with the rig's input xi set to v.
         subroutine inverted_input(xi, v, i1, st)
             type(input_t), intent(in) :: xi
@@ -765,7 +952,7 @@ contains
                 call set_input(dd, st0, xi%name, v)
             end if
             call invert_periods(dd, acc, periods, amps, u, f2, st, u_each, fit_scale=fs, &
-                                k_start=fit%scale, scale_prior=us)
+                                k_start=fit%scale, scale_prior=us, cycles=cyc)
             i1 = f2%i1
             kl = f2%scale
         end subroutine inverted_input
@@ -785,7 +972,7 @@ contains
             pp(i) = tp
             aa(i) = ta
             call invert_periods(dd, acc, pp, aa, u, f2, st, u_each, fit_scale=fs, &
-                                k_start=fit%scale, scale_prior=us)
+                                k_start=fit%scale, scale_prior=us, cycles=cyc)
             i1 = f2%i1
             kl = f2%scale
         end subroutine inverted_measured
@@ -799,7 +986,7 @@ contains
             dd = rg
             dd%inertia(1) = fit%i1
             call invert_periods(dd, acc, periods, amps*ks, u, f2, st, u_each, fit_scale=fs, &
-                                k_start=fit%scale/ks, scale_prior=us)
+                                k_start=fit%scale/ks, scale_prior=us, cycles=cyc)
             i1 = f2%i1
         end subroutine inverted_scaled
     end subroutine period_budget
@@ -860,7 +1047,11 @@ contains
                 end select
             end do
         end if
-        call invert_periods(dd, acc, pp, aa, u, f, stat, up)
+        if (present(cycles)) then
+            call invert_periods(dd, acc, pp, aa, u, f, stat, up, cycles=cycles)
+        else
+            call invert_periods(dd, acc, pp, aa, u, f, stat, up)
+        end if
         i1 = f%i1
         if (stat%code /= 0) then
             ! the values are the sample's draws, not the deck's: what is allowed is a u

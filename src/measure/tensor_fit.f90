@@ -60,7 +60,8 @@
 !!   timed over any of those cycles lies within drift T of the first).  Each hang's limit is
 !!   found by doubling the amplitude from 1 degree and bisecting in log A.
 !! * The plan (plan_hangs): n hangs among the 26 face, edge and corner directions of the
-!!   body frame (along: the first of them normal to up), each at small amplitude on the
+!!   body frame, at most one of u and -u (one axis, one moment about the vertical: n <= 13;
+!!   along: the first of them normal to up), each at small amplitude on the
 !!   deck's rig, that minimise the trace of C under the deck's uncertainties (the periods'
 !!   sensitivities of the linearised model at the given tensor): a well-conditioned start
 !!   (the three faces and three edges), greedy additions, then exchanges until none lowers
@@ -1437,13 +1438,14 @@ contains
     end subroutine set_covariance
 
     !> n hangs among the 26 face, edge and corner directions that minimise the trace of
-    !! the covariance of x (see the module header), on the rig h0 with timing u u_t.
+    !! the covariance of x (see the module header), on the rig h0 with timing u u_t; u and
+    !! -u are one axis (the same moment about the vertical), so at most one of each pair.
     subroutine plan_hangs(prob, h0, u_t, x, n, plan, stat)
         type(tensor_problem_t), intent(in) :: prob  !! mass, g, accuracy, uncertainties
         type(hang_t), intent(in) :: h0          !! the rig of every hang
         real(dp), intent(in) :: u_t             !! timing u of each period (s)
         real(dp), intent(in) :: x(6)            !! the tensor
-        integer, intent(in) :: n                !! hangs, 6 .. 26
+        integer, intent(in) :: n                !! hangs, 6 .. 13 (the axes)
         type(tensor_plan_t), intent(out) :: plan
         type(status_t), intent(out) :: stat
         real(dp) :: c(3, 26), t(26), a(26, 6), sdir(26, 3), srig(26, 4), smass(26), sg(26)
@@ -1473,7 +1475,7 @@ contains
             kb = 0
             best = huge(1.0_dp)
             do k = 1, 26
-                if (in_set(k)) cycle
+                if (in_set(k) .or. in_set(opposite(k))) cycle
                 tr = trace_of([set, k])
                 if (tr < best) then
                     best = tr
@@ -1490,6 +1492,8 @@ contains
             do i = 1, size(set)
                 do j = 1, 26
                     if (in_set(j)) cycle
+                    ! u and -u are one axis: one hang
+                    if (in_set(opposite(j)) .and. set(i) /= opposite(j)) cycle
                     k = set(i)
                     set(i) = j
                     tr = trace_of(set)
@@ -1523,6 +1527,11 @@ contains
             call set_covariance(prob, u_t, t, a, sdir, srig, smass, sg, s, cv)
             trace_of = sum([(cv(m, m), m=1, 6)])
         end function trace_of
+        !> The candidate of the opposite direction (candidate_directions lists v, -v).
+        pure integer function opposite(m)
+            integer, intent(in) :: m
+            opposite = merge(m + 1, m - 1, mod(m, 2) == 1)
+        end function opposite
         integer function first_of(i1, i2, i3)
             integer, intent(in) :: i1, i2, i3
             real(dp) :: v(3)

@@ -422,8 +422,9 @@ contains
 
     !> The model periods a release of n timed periods asks for (nup of them with a u, the
     !! amplitudes with u_amplitude), on a symmetric rig (sym: pure torsion) or another
-    !! (simulated): the inversion, the budget (two whole inversions for each input, period
-    !! and amplitude with a u: period_budget, on every rig), the Monte Carlo over the
+    !! (simulated): the inversion, the budget (two whole inversions for each input with a
+    !! u, two model periods for each period's slope and four for each amplitude's:
+    !! period_budget, on every rig), the Monte Carlo over the
     !! threads, the figure's curve.  what: the work in words, for one period of `one` seconds.
     subroutine periods_runs(x, mea, n, nup, sym, one, runs, what)
         type(input_t), intent(in) :: x(:)       !! the budget's inputs (deck_inputs, .false.)
@@ -439,9 +440,10 @@ contains
         inv = real(ITER_FIT*2*n + 2*n, dp)
         refit = real(ITER_REFIT*2*n, dp)
         runs = inv + nu*2*refit + n + 41
-        ! the budget inverts all n periods twice for each period with a u and for each
-        ! amplitude when u_amplitude > 0 (period_budget), whatever the rig
-        runs = runs + (nup + merge(n, 0, mea%u_amplitude > 0.0_dp))*2*refit
+        ! the budget's rows of the periods and amplitudes are linear (period_budget): the
+        ! slope dT/dI1 of each period, and dT/dA of each when u_amplitude > 0
+        runs = runs + merge(2*n, 0, nup > 0 .or. mea%u_amplitude > 0.0_dp) + &
+            merge(4*n, 0, mea%u_amplitude > 0.0_dp)
         runs = runs + real(mea%monte_carlo, dp)*inv/max(1, omp_get_max_threads())
         what = itoa(n)//' period'//trim(merge('s', ' ', n > 1))//' of '// &
             trim(merge('pure torsion        ', 'the full model      ', sym))//' (about '// &
