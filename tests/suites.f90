@@ -33,6 +33,7 @@ module suites
     use test_estimator, only: run_estimator_tests
     use test_measure, only: run_measure_tests
     use test_sensitivities, only: run_sensitivities_tests
+    use test_rates, only: run_rates_tests
     use test_tensor, only: run_tensor_tests
     use test_platform, only: run_platform_tests
     use test_certificate, only: run_certificate_tests
@@ -116,6 +117,9 @@ contains
                     'measures a second body', run_calibrate_tests), &
             suite_t('sensitivities', 'forward sensitivities: exact, against differences of '// &
                     'runs, fits, monodromies', run_sensitivities_tests), &
+            suite_t('rates', 'records of the body''s three rates: the model against its '// &
+                    'pose, I2, I3, cg_depth from a 3-axis gyro, what a record cannot give', &
+                    run_rates_tests), &
             suite_t('stats', 'Student''s t, chi-square tails, Welch-Satterthwaite, weighted '// &
                     'means', run_stats_tests), &
             suite_t('estimator', 'least squares: known answers, rank deficiency, Huber, '// &
