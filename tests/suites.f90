@@ -117,8 +117,8 @@ contains
                     'measures a second body', run_calibrate_tests), &
             suite_t('sensitivities', 'forward sensitivities: exact, against differences of '// &
                     'runs, fits, monodromies', run_sensitivities_tests), &
-            suite_t('rates', 'records of the body''s three rates: the model against its '// &
-                    'pose, I2, I3, cg_depth from a 3-axis gyro, what a record cannot give', &
+            suite_t('rates', 'records of three body rates: model vs pose, I2 I3 cg_depth, '// &
+                    'refusals', &
                     run_rates_tests), &
             suite_t('stats', 'Student''s t, chi-square tails, Welch-Satterthwaite, weighted '// &
                     'means', run_stats_tests), &

@@ -11,7 +11,7 @@ module test_rates
     use status, only: status_t
     use text, only: sci
     use testing, only: tester_t, msg_of, write_text, run_cmd => run, fresh_dir, file_has, &
-        exists
+        exists, read_kv_text
     use deck, only: deck_t, read_deck
     use deck_runs, only: rig_of, start_of, accuracy_of
     use rig, only: rig_t, start_t, accuracy_t, make_pendulum, start_state
@@ -44,6 +44,7 @@ contains
             call test_sens(t)
         if (t%want('rates: a 3-axis gyro record gives I1, I2, I3 and cg_depth')) call test_goal(t)
         if (t%want('rates: a pure-torsion record cannot give I2')) call test_refusal(t, exe)
+        if (t%want('rates: a phone''s gyro export through the program')) call test_export(t, exe)
     end subroutine run_rates_tests
 
     !> The laboratory rig of input/identify_record.nml (unequal cables, mass centre off the
@@ -248,7 +249,7 @@ contains
         acc%rtol = 1.0e-10_dp
         acc%atol = 1.0e-12_dp
         call parse_axes('aligned', axes, ok)
-        allocate (rec%t(N), rec%v(N), rec%u(N), rec%vs(N, 3))
+        allocate (rec%t(N), rec%v(N), rec%u(N), rec%vs(3*N))
         do i = 1, N
             rec%t(i) = 0.01_dp*(i - 1)
         end do
@@ -258,10 +259,10 @@ contains
         g = rng_stream(7, 0)
         do k = 1, 3
             do i = 1, N
-                rec%vs(i, k) = vals((k - 1)*N + i) + BIAS(k) + SIGMA*rng_normal(g)
+                rec%vs((k - 1)*N + i) = vals((k - 1)*N + i) + BIAS(k) + SIGMA*rng_normal(g)
             end do
         end do
-        rec%v = -rec%vs(:, 1)
+        rec%v = -rec%vs(1:N)
         rec%u = 1.0_dp
         rec%rate = .true.
         rec%units = 'rad/s'
@@ -380,5 +381,95 @@ contains
                          .not. exists(DIR//'/refuse/out/torsion.identify'))
         end do
     end subroutine test_refusal
+
+    !> A phone's gyro export (phyphox's header: time, the three axes, their magnitude; the
+    !! phone flat on the body, its z up: record_axes = 'y z -x') of the laboratory rig's
+    !! tilted and swayed release, 20 s at 100 Hz with noise and bias, through the program:
+    !! the three axes taken by their names (no record_columns), I1, I2, I3, cg_depth found,
+    !! the output says quantity 'rates' and what the record determines; the same record
+    !! with a unit conflict (record_units = 'deg/s') refused.
+    subroutine test_export(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        integer, parameter :: N = 2001
+        character(len=*), parameter :: AX = 'y z -x'
+        type(rig_t) :: rg
+        type(start_t) :: st
+        type(accuracy_t) :: acc
+        type(status_t) :: stat
+        type(rng_t) :: g
+        real(dp) :: vals(3*N), tt(N), axes(3, 3), w(3), cg
+        character(len=:), allocatable :: text, deck
+        character(len=120) :: line
+        character(len=64) :: val
+        integer :: i, k, ex
+        logical :: ok
+        call fresh_dir(DIR//'/export')
+        call lab_rig(rg, st)
+        acc%rtol = 1.0e-10_dp
+        acc%atol = 1.0e-12_dp
+        call parse_axes(AX, axes, ok)
+        do i = 1, N
+            tt(i) = 0.01_dp*(i - 1)
+        end do
+        call record_model(rg, st, acc, tt, 0.0_dp, .true., vals, stat, axes)
+        call t%check('rates: the export''s record'//msg_of(stat), stat%code == 0)
+        if (stat%code /= 0) return
+        g = rng_stream(11, 0)
+        text = '"Time (s)","Gyroscope x (rad/s)","Gyroscope y (rad/s)","Gyroscope z '// &
+            '(rad/s)","Absolute (rad/s)"'//new_line('a')
+        do i = 1, N
+            do k = 1, 3
+                w(k) = vals((k - 1)*N + i) + 0.002_dp*k + 0.003_dp*rng_normal(g)
+            end do
+            write (line, '(f0.3,4(",",es16.8))') tt(i), w, norm2(w)
+            text = text//trim(line)//new_line('a')
+        end do
+        call write_text(DIR//'/export/phone.csv', text)
+        cg = input_value(rg, st, 'cg_depth')
+        deck = '&scene title = ''phone gyro'', analyses = ''identify'' /'//new_line('a')// &
+            '&suspension b = 0.40, b_prime = 0.40, l = 1.20, l_prime = 1.18, g = 9.80665 /'// &
+            new_line('a')//'&body mass = 3.10, inertia = 0.0505, 0.066, 0.029, '// &
+            'r = 0.25, lambda = 0.64 /'//new_line('a')// &
+            '&start mode = ''raised'', amplitude = 30.0 /'//new_line('a')// &
+            '&integration rtol = 1e-10, atol = 1e-12 /'//new_line('a')// &
+            '&measurement record = ''phone.csv'', quantity = ''rates'', record_axes = '// &
+            ''''//AX//''', estimate = ''I1 I2 I3 cg_depth tilt sway bias'', u_mass = 0.001 /'// &
+            new_line('a')
+        call write_text(DIR//'/export/phone.nml', deck)
+        ex = run_cmd(exe//' '//DIR//'/export/phone.nml --out '//DIR//'/export/out', DIR//'/export')
+        call t%check('rates: the phone''s export through the program: exit 0', ex == 0)
+        if (ex /= 0) return
+        call t%check('rates: the output says quantity ''rates''', &
+                     file_has(DIR//'/export/out/phone.identify', 'quantity = rates'))
+        call t%check('rates: the output says u against the prior', &
+                     file_has(DIR//'/export/out/phone.identify', 'u_prior_I2 = none'))
+        call t%check('rates: the output says the largest correlation', &
+                     file_has(DIR//'/export/out/phone.identify', 'correlation_max = '))
+        call t%check('rates: the output says the condition', &
+                     file_has(DIR//'/export/out/phone.identify', 'condition = '))
+        call read_kv_text(DIR//'/export/out/phone.identify', 'I2', val)
+        call t%check_close('rates: the export''s I2 within 3 %', real_of(val), rg%inertia(2), &
+                           3.0e-2_dp, 0.0_dp)
+        call read_kv_text(DIR//'/export/out/phone.identify', 'cg_depth', val)
+        call t%check_close('rates: the export''s cg_depth within 2 mm', real_of(val), cg, &
+                           0.0_dp, 2.0e-3_dp)
+        ! a unit conflict between the columns' names and record_units: one line, no output
+        call write_text(DIR//'/export/conflict.nml', deck(1:index(deck, ', u_mass') - 1)// &
+                        ', record_units = ''deg/s'' /'//new_line('a'))
+        call fresh_dir(DIR//'/export/out2')
+        ex = run_cmd(exe//' '//DIR//'/export/conflict.nml --out '//DIR//'/export/out2', &
+                     DIR//'/export')
+        call t%check('rates: a unit conflict refused (exit 2)', ex == 2)
+        call t%check('rates: a unit conflict leaves no output', &
+                     .not. exists(DIR//'/export/out2/conflict.identify'))
+    contains
+        real(dp) function real_of(s)
+            character(len=*), intent(in) :: s
+            integer :: ios
+            real_of = -1.0_dp
+            read (s, *, iostat=ios) real_of
+        end function real_of
+    end subroutine test_export
 
 end module test_rates

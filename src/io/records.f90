@@ -17,7 +17,9 @@
 !! else &measurement quantity: angle (rad) or rate (rad/s).  'rad' or 'deg' (theta4),
 !! 'rad/s' or 'deg/s' (W = omega . n3).  Values in degrees are turned into radians here:
 !! a record_t is always in rad or rad/s.  Times need not count from the release (the fit
-!! finds it when t0 is estimated).
+!! finds it when t0 is estimated).  Quantity 'rates': record_columns T, X, Y, Z (or a gyro
+!! export's three axes, or columns 1 .. 4), the instrument's three rates into vs and the
+!! rate about the vertical they give into v (record_format_t's down).
 module records
     use kinds, only: dp, deg
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
@@ -31,9 +33,10 @@ module records
     !! each sample's standard uncertainty (else 1).
     type, public :: record_t
         real(dp), allocatable :: t(:), v(:), u(:)
-        !> quantity 'rates': (n, 3) the instrument's three rates (rad/s), by axis (v then
-        !! holds the rate about the vertical they give, record_fit's vertical_of_rates)
-        real(dp), allocatable :: vs(:, :)
+        !> quantity 'rates': the instrument's three rates (rad/s), three blocks of the n
+        !! samples, axis k's sample i at (k - 1) n + i (v then holds the rate about the
+        !! vertical they give, record_fit's vertical_of_rates)
+        real(dp), allocatable :: vs(:)
         logical :: has_u = .false.
         logical :: rate = .false.               !! W (rad/s), else theta4 (rad)
         real(dp) :: to_rad = 1.0_dp             !! the file's unit in rad (or rad/s)
@@ -142,7 +145,7 @@ contains
         ! the columns asked for: record_columns, else 1, 2 or the axes of a gyro export
         allocate (axes(0))
         kr = 0
-        if (f%columns(3) == -1 .or. (f%rates .and. f%columns(2) == -1)) then
+        if (f%columns(3) == -1) then
             call header_fields(text, head, named)
             if (named) call gyro_axes(head, axes)
         end if
@@ -152,12 +155,12 @@ contains
         allocate (at(0), nm(0))
         if (f%rates) then
             ! time and the instrument's x, y, z: record_columns, or a gyro export's axes
-            if (size(axes) == 3 .and. f%columns(2) == -1) then
+            if (size(axes) == 3) then
                 kt = add(time_column(head, axes), '')
                 do k = 1, 3
                     kr(k) = add(axes(k), '')
                 end do
-            else if (f%columns(2) == -1) then
+            else if (f%columns(3) == -1) then
                 kt = add(1, '')
                 do k = 1, 3
                     kr(k) = add(k + 1, '')
@@ -296,7 +299,7 @@ contains
         end if
         rec%v = tab%v(:, kv)*to_rad
         if (f%rates) then
-            allocate (rec%vs(n, 3))
+            allocate (rec%vs(3*n))
             do o = 1, 3
                 if (column_unit(column_name(kr(o))) /= vunit) then
                     call set_error(stat, ERR_DECK, 'the rate columns '//col_id(kr(1))//' and '// &
@@ -304,9 +307,10 @@ contains
                         'of one unit (rad/s or deg/s)')
                     return
                 end if
-                rec%vs(:, o) = tab%v(:, kr(o))*to_rad
+                rec%vs((o - 1)*n + 1:o*n) = tab%v(:, kr(o))*to_rad
             end do
-            rec%v = -matmul(rec%vs, f%down)
+            rec%v = -(f%down(1)*rec%vs(1:n) + f%down(2)*rec%vs(n + 1:2*n) + &
+                      f%down(3)*rec%vs(2*n + 1:3*n))
             if (f%quantity_given .and. .not. rate) then
                 call set_error(stat, ERR_DECK, 'the rate columns are in '//units//', an '// &
                     'angle, and quantity = ''rates''; allowed: rates in rad/s or deg/s')
@@ -334,6 +338,11 @@ contains
                         sci(rec%t(i - 1), 6)//' s; allowed: time strictly increasing (s)')
                     return
                 end if
+            end if
+            if (f%rates) then
+                ! the three rates (v, the vertical one they give, is within sqrt(3) of them)
+                x = maxval(abs(rec%vs([i, n + i, 2*n + i])))
+                if (x > vmax) rec%v(i) = sign(x, rec%v(i))
             end if
             if (abs(rec%v(i)) > vmax) then
                 x = rec%v(i)/to_rad

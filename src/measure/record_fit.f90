@@ -850,11 +850,12 @@ contains
     pure function stacked_values(prob) result(v)
         type(record_fit_t), intent(in) :: prob
         real(dp), allocatable :: v(:)
-        integer :: i0, i1
+        integer :: i0, i1, n
         i0 = prob%ifirst
         i1 = prob%nuse
         if (prob%rates) then
-            v = [prob%rec%vs(i0:i1, 1), prob%rec%vs(i0:i1, 2), prob%rec%vs(i0:i1, 3)]
+            n = size(prob%rec%t)
+            v = [prob%rec%vs(i0:i1), prob%rec%vs(n + i0:n + i1), prob%rec%vs(2*n + i0:2*n + i1)]
         else
             v = prob%rec%v(i0:i1)
         end if
@@ -1439,13 +1440,16 @@ contains
                                            prob%ifirst + 2*prob%np + 1)
         end function window_end
     end subroutine fit_windows
-    !> Fit the record (fit_windows).  A fit of the body's other moments or its mass centre
-    !! (I2, I3, cg_depth) goes in two stages: the other parameters first (the release's tilt
-    !! and sway among them, which its start values, 0 as a rule, leave without effect on the
-    !! others), then all from there on the whole record.  Before the stage that has them
-    !! (at the start values, or at the first stage's estimate), what the record separates is
-    !! checked (record_determines): a parameter the record does not depend on, or two it
-    !! cannot tell apart, is refused (ERR_DECK naming them) before any fit of them.
+    !> Fit the record (fit_windows).  A fit of the release's tilt or sway or of the body's
+    !! other moments or its mass centre (I2, I3, cg_depth) goes in stages: the parameters
+    !! but I2, I3, cg_depth on the first two mean periods (where the errors of their start
+    !! values have not yet turned the swings' phases; the tilt and sway found there from
+    !! their start values, 0 as a rule, at which I2, I3 and cg_depth have no effect), then
+    !! all but I2 on growing windows (with I3 or cg_depth), then all on the whole record.
+    !! What the record separates is checked (check_separable, record_determines) before
+    !! the last stage, or at the start values when neither tilt nor sway is estimated (then
+    !! they are the release's): a parameter the record does not depend on, or two it cannot
+    !! tell apart, is refused (ERR_DECK naming them).
     subroutine fit_record(prob, p0, h, res, stat, loss)
         type(record_fit_t), intent(inout) :: prob
         real(dp), intent(in) :: p0(:), h(:)
@@ -1457,9 +1461,9 @@ contains
         type(lsq_options_t) :: opts
         real(dp), allocatable :: p(:)
         logical :: later(prob%np), new_kind
-        integer :: j, iters, evals
+        real(dp) :: tp
+        integer :: j, iters, evals, stage
         integer, allocatable :: keep(:)
-        later = [(any(prob%which(j) == [P_I2, P_I3, P_CG]), j=1, prob%np)]
         new_kind = any([(any(prob%which(j) == [P_I2, P_I3, P_CG, P_TILT, P_SWAY]), &
                          j=1, prob%np)])
         if (.not. new_kind) then
@@ -1469,7 +1473,25 @@ contains
         p = p0
         iters = 0
         evals = 0
-        if (any(later) .and. .not. all(later)) then
+        if (.not. any([(any(prob%which(j) == [P_TILT, P_SWAY]), j=1, prob%np)])) then
+            ! the start values are the release's: what the record separates, at once
+            prob%nuse = size(prob%rec%t)
+            call check_separable(prob, p, stat)
+            if (stat%code /= 0) return
+        end if
+        ! the stages: without I2, I3, cg_depth on the first two periods (where their start
+        ! values' errors have not yet turned the swing's phases), then without I2 (the
+        ! moment about the axis across CD, which the swing about CD and the sway along n1
+        ! show least) on growing windows, then all on the whole record
+        do stage = 1, 2
+            if (stage == 1) then
+                later = [(any(prob%which(j) == [P_I2, P_I3, P_CG]), j=1, prob%np)]
+            else
+                later = [(prob%which(j) == P_I2, j=1, prob%np)]
+            end if
+            if (.not. any(later) .or. all(later)) cycle
+            if (stage == 2 .and. .not. any([(any(prob%which(j) == [P_I3, P_CG]), &
+                                              j=1, prob%np)])) cycle
             keep = pack([(j, j=1, prob%np)], .not. later)
             sub = prob
             sub%np = size(keep)
@@ -1477,27 +1499,34 @@ contains
             sub%which(1:sub%np) = prob%which(keep)
             sub%xs = 1.0_dp
             sub%xs(1:sub%np) = prob%xs(keep)
-            call fit_windows(sub, p0(keep), h(keep), part, stat)
+            if (stage == 1) then
+                tp = mean_period(sub%rec, sub%ifirst)
+                if (.not. (tp > 0.0_dp)) tp = sub%rec%t(size(sub%rec%t)) - sub%rec%t(1)
+                sub%nuse = max(count(sub%rec%t <= sub%rec%t(sub%ifirst) + 2.0_dp*tp), &
+                               sub%ifirst + 2*sub%np + 1)
+                sub%nuse = min(sub%nuse, size(sub%rec%t))
+                opts%h = h(keep)
+                opts%names = estimated_names(sub)
+                call estimate(sub, p(keep), opts, part, stat)
+            else
+                call fit_windows(sub, p(keep), h(keep), part, stat)
+            end if
             if (stat%code /= 0) then
                 res = part
                 return
             end if
             p(keep) = part%p
-            iters = part%iterations
-            evals = part%evaluations
-        end if
+            iters = iters + part%iterations
+            evals = evals + part%evaluations
+        end do
         prob%nuse = size(prob%rec%t)
         call check_separable(prob, p, stat)
         if (stat%code /= 0) return
-        if (.not. any(later)) then
-            call fit_windows(prob, p, h, res, stat, loss)
-        else
-            opts%h = h
-            opts%names = estimated_names(prob)
-            opts%loss = LOSS_SQUARES
-            if (present(loss)) opts%loss = loss
-            call estimate(prob, p, opts, res, stat)
-        end if
+        opts%h = h
+        opts%names = estimated_names(prob)
+        opts%loss = LOSS_SQUARES
+        if (present(loss)) opts%loss = loss
+        call estimate(prob, p, opts, res, stat)
         res%iterations = res%iterations + iters
         res%evaluations = res%evaluations + evals
     end subroutine fit_record
@@ -1644,7 +1673,7 @@ contains
                 sig = sqrt(max(0.0_dp, dot_product(gi, matmul(cov, gi))))
                 sigw = max(sigw, sig)
                 vi = prob%rec%v(i)
-                if (prob%rates) vi = prob%rec%vs(i, o)
+                if (prob%rates) vi = prob%rec%vs((o - 1)*size(prob%rec%t) + i)
                 vmin = min(vmin, vi)
                 vmax = max(vmax, vi)
             end do
@@ -1874,7 +1903,8 @@ contains
         if (q%rates) then
             do o = 1, 3
                 do j = 1, size(q%rec%t)
-                    q%rec%vs(j, o) = self%prob%rec%vs(j, o) + self%sigma*rng_normal(g)/ &
+                    q%rec%vs((o - 1)*size(q%rec%t) + j) = self%prob%rec%vs((o - 1)* &
+                        size(q%rec%t) + j) + self%sigma*rng_normal(g)/ &
                         self%prob%w(j)
                 end do
             end do
@@ -1992,8 +2022,11 @@ contains
     pure subroutine vertical_of_rates(rec, axes)
         type(record_t), intent(inout) :: rec
         real(dp), intent(in) :: axes(3, 3)      !! the instrument's axes in b_i (rows)
+        integer :: n
         if (.not. allocated(rec%vs)) return
-        rec%v = -matmul(rec%vs, axes(:, 1))
+        n = size(rec%t)
+        rec%v = -(axes(1, 1)*rec%vs(1:n) + axes(2, 1)*rec%vs(n + 1:2*n) + &
+                  axes(3, 1)*rec%vs(2*n + 1:3*n))
     end subroutine vertical_of_rates
 
 end module record_fit

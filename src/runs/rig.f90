@@ -94,6 +94,7 @@ contains
         st%mode = trim(sta%mode)
         st%amplitude = sta%amplitude
         st%tilt = sta%tilt
+        st%sway = sta%sway
         st%theta = sta%theta
         st%theta_dot = sta%theta_dot
     end function start_of_group
