@@ -548,32 +548,67 @@ contains
         w = matmul(axes, omb)
     end function body_rates
 
-    !> The gradient of body_rates with respect to the chart state, g(:, k) for axis k: the
-    !! rates are linear in theta1', theta4', theta5' (exact columns); the angles' columns
-    !! by central differences of step 1e-6 rad (their error about 1e-13 of the rates).
+    !> The gradient of body_rates with respect to the chart state, g(:, k) for axis k
+    !! (body_rates_and_gradient).
     pure function body_rates_gradient(btilde, axes, y) result(g)
         real(dp), intent(in) :: btilde(3, 3), axes(3, 3)
         real(dp), intent(in) :: y(NSTATE)
         real(dp) :: g(NSTATE, 3)
-        real(dp), parameter :: HA = 1.0e-6_dp
-        real(dp) :: yp(NSTATE), ym(NSTATE), e(NSTATE)
-        integer :: j
-        g = 0.0_dp
-        do j = 1, NSTATE
-            if (j == 2 .or. j == 3 .or. j == 7 .or. j == 8) cycle
-            if (j == 6 .or. j == 9 .or. j == 10) then
-                e = 0.0_dp
-                e(j) = 1.0_dp
-                g(j, :) = body_rates(btilde, axes, [y(1:5), e(6:10)])
-            else
-                yp = y
-                ym = y
-                yp(j) = y(j) + HA
-                ym(j) = y(j) - HA
-                g(j, :) = (body_rates(btilde, axes, yp) - body_rates(btilde, axes, ym))/(2.0_dp*HA)
-            end if
-        end do
+        real(dp) :: w(3)
+        call body_rates_and_gradient(btilde, axes, y, w, g)
     end function body_rates_gradient
+
+    !> body_rates (w) and their gradient g(:, k) with respect to the chart state: linear in
+    !! theta1', theta4', theta5'; the angles' columns from the derivatives of the direction
+    !! cosines of eq. (8) (theta1 turns the rows: n1' = n2, n2' = -n1; theta4 the columns:
+    !! n(:, 1)' = n(:, 2), n(:, 2)' = -n(:, 1); theta5 each entry's own), through b = btilde n.
+    pure subroutine body_rates_and_gradient(btilde, axes, y, w, g)
+        real(dp), intent(in) :: btilde(3, 3), axes(3, 3)
+        real(dp), intent(in) :: y(NSTATE)
+        real(dp), intent(out) :: w(3), g(NSTATE, 3)
+        real(dp) :: n(3, 3), b(3, 3), dn(3, 3), e(3), om(3)
+        real(dp) :: s1, c1, s4, c4, s5, c5
+        s1 = sin(y(1))
+        c1 = cos(y(1))
+        s4 = sin(y(4))
+        c4 = cos(y(4))
+        s5 = sin(y(5))
+        c5 = cos(y(5))
+        call frame(body_pose(y(1), y(4), y(5), 0.0_dp), n)
+        b = matmul(btilde, n)
+        e = c4*b(:, 1) - s4*b(:, 2)
+        om = btilde(:, 3)*y(6) - b(:, 3)*y(9) + e*y(10)
+        w = matmul(axes, om)
+        g = 0.0_dp
+        g(6, :) = matmul(axes, btilde(:, 3))
+        g(9, :) = -matmul(axes, b(:, 3))
+        g(10, :) = matmul(axes, e)
+        ! theta1
+        dn = 0.0_dp
+        dn(1, :) = n(2, :)
+        dn(2, :) = -n(1, :)
+        g(1, :) = angle_column(dn, 0.0_dp)
+        ! theta4
+        dn(:, 1) = n(:, 2)
+        dn(:, 2) = -n(:, 1)
+        dn(:, 3) = 0.0_dp
+        g(4, :) = angle_column(dn, 1.0_dp)
+        ! theta5
+        dn(1, :) = [c1*s4*c5, c1*c4*c5, c1*s5]
+        dn(2, :) = [-s1*s4*c5, -s1*c4*c5, -s1*s5]
+        dn(3, :) = [s4*s5, c4*s5, -c5]
+        g(5, :) = angle_column(dn, 0.0_dp)
+    contains
+        !> The rates' change along an angle that changes n by dn (and, with e4 = 1, theta4
+        !! itself in the factors c4, s4 of Omega_5).
+        pure function angle_column(dnn, e4) result(col)
+            real(dp), intent(in) :: dnn(3, 3), e4
+            real(dp) :: col(3), dbb(3, 3)
+            dbb = matmul(btilde, dnn)
+            col = matmul(axes, -dbb(:, 3)*y(9) + (c4*dbb(:, 1) - s4*dbb(:, 2) &
+                                                 - e4*(s4*b(:, 1) + c4*b(:, 2)))*y(10))
+        end function angle_column
+    end subroutine body_rates_and_gradient
 
     !> The values a sink takes from a chart state (v) and their gradients (g(:, k)): theta4
     !! or W (one), or the instrument's three rates.
@@ -582,8 +617,7 @@ contains
         real(dp), intent(in) :: y(NSTATE)
         real(dp), intent(out) :: v(:), g(:, :)
         if (sink%rates) then
-            v = body_rates(sink%btilde, sink%axes, y)
-            g = body_rates_gradient(sink%btilde, sink%axes, y)
+            call body_rates_and_gradient(sink%btilde, sink%axes, y, v, g)
         else
             v(1) = output_value(sink%rate, y)
             g(:, 1) = output_gradient(sink%rate, y)
