@@ -34,6 +34,7 @@ module suites
     use test_measure, only: run_measure_tests
     use test_tare, only: run_tare_tests
     use test_sensitivities, only: run_sensitivities_tests
+    use test_rates, only: run_rates_tests
     use test_tensor, only: run_tensor_tests
     use test_refusals, only: run_refusals_tests
     use test_platform, only: run_platform_tests
@@ -121,6 +122,9 @@ contains
                     'dof kept, refusals', run_tare_tests), &
             suite_t('sensitivities', 'forward sensitivities: exact, against differences of '// &
                     'runs, fits, monodromies', run_sensitivities_tests), &
+            suite_t('rates', 'records of three body rates: model vs pose, I2 I3 cg_depth, '// &
+                    'refusals', &
+                    run_rates_tests), &
             suite_t('stats', 'Student''s t, chi-square tails, Welch-Satterthwaite, weighted '// &
                     'means', run_stats_tests), &
             suite_t('estimator', 'least squares: known answers, rank deficiency, Huber, '// &

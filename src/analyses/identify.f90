@@ -131,8 +131,16 @@ module identify
         real(dp) :: residual_rms = 0.0_dp       !! of measured - model (s, rad or rad/s)
         integer :: iterations = 0, evaluations = 0, samples = 0
         integer :: np = 0                       !! parameters estimated
-        character(len=16) :: names(6) = ''      !! their names (I1 first)
-        real(dp) :: p(6) = 0.0_dp, u_p(6) = 0.0_dp  !! estimates and first-order u
+        character(len=16) :: names(13) = ''      !! their names (I1 first)
+        real(dp) :: p(13) = 0.0_dp, u_p(13) = 0.0_dp    !! estimates and first-order u
+        !> What one record determines, when it estimates I2, I3, cg_depth, tilt or sway
+        !! (determined): each parameter's u against its prior u (u_prior; 0: none, as for
+        !! the release's tilt and sway), the largest off-diagonal of the parameters'
+        !! correlation matrix and its pair, the condition number of J (columns scaled)
+        logical :: determined = .false.
+        real(dp) :: u_prior(13) = 0.0_dp
+        real(dp) :: correlation_max = 0.0_dp, condition = 1.0_dp
+        character(len=24) :: correlation_pair = ''
         real(dp) :: sigma = 0.0_dp              !! s of the covariance (record)
         logical :: sigma_stated = .false.       !! s = 1: the record's column 3
         real(dp) :: correlation_time = 1.0_dp   !! of the residuals, samples (record)

@@ -33,7 +33,9 @@ submodule (identify) identify_impl
     use tip_check, only: check_not_tipping
     use record_fit, only: record_fit_t, record_mc_task_t, fit_problem, fit_record, carry_inputs, &
         input_sensitivities, record_mc_task, explain_fit_failure, estimated_names, &
-        correlation_time, fresh_jacobian, check_record_kind, PARAM_NAMES, P_BIAS
+        correlation_time, fresh_jacobian, check_record_kind, PARAM_NAMES, P_BIAS, &
+        determines_t, record_determines, stacked_weights, stacked_values, P_I2, P_I3, P_CG, &
+        P_TILT, P_SWAY
     use period_inversion, only: period_fit_t, invert_periods, period_budget, &
                                 period_monte_carlo, linear_inertia, is_torsion_rig, &
                                 period_mc_task, period_mc_task_t, rig_period_s, &
@@ -74,8 +76,12 @@ submodule (identify) identify_impl
         real(dp), allocatable :: hw(:)          !! the robust weights' roots
         real(dp), allocatable :: dpdx(:, :)     !! (np, inputs) the parameters' sensitivities
         integer :: np = 1, ifirst = 1
-        character(len=16) :: names(6) = ''
-        real(dp) :: p(6) = 0.0_dp, u_p(6) = 0.0_dp, u_p_own(6) = 0.0_dp
+        character(len=16) :: names(13) = ''
+        real(dp) :: p(13) = 0.0_dp, u_p(13) = 0.0_dp, u_p_own(13) = 0.0_dp
+        !> what the record determines (I2, I3, cg_depth, tilt or sway estimated)
+        logical :: determined = .false.
+        type(determines_t) :: det
+        real(dp) :: u_prior(13) = 0.0_dp
         real(dp) :: sigma = 0.0_dp, tau = 1.0_dp, n_eff = 0.0_dp, u_fit = 0.0_dp
         logical :: sigma_stated = .false.
         real(dp) :: residual_rms = 0.0_dp
@@ -979,7 +985,9 @@ contains
         type(budget_row_t), allocatable :: rows(:)
         type(lsq_options_t) :: opts        ! the fit's default tolerances
         real(dp) :: s2, se, emean, gain, ratio, rho
-        integer :: m, np, j, ih, i0, nout, lag
+        real(dp), allocatable :: es(:)
+        real(dp) :: ui(2)
+        integer :: m, np, j, ih, i0, nout, lag, ms, k
         character(len=:), allocatable :: umsg, missing
         logical :: follows
         r%from_record = .true.
@@ -1001,7 +1009,10 @@ contains
             call explain_fit_failure(stat, prob, fit)
             return
         else if (stat%code /= 0) then
-            stat%msg = 'identify: the model at the start values: '//stat%msg
+            ! an estimate the record cannot separate (record_fit's check) is named as such
+            if (index(stat%msg, '&measurement estimate') /= 1) stat%msg = &
+                'the model at the start values: '//stat%msg
+            stat%msg = 'identify: '//stat%msg
             return
         end if
         m = prob%nres()
@@ -1085,20 +1096,53 @@ contains
             nu_rows = [nu_rows, NU_INFINITE]
         end do
         call split_rows(rows, nu_rows, xc, rig_own, r)
-        e = fit%r/(prob%w(i0:prob%nuse)*prob%hw(i0:prob%nuse))
-        r%residual_rms = sqrt(sum(e**2)/m)
-        r%model = e + rec%v(i0:prob%nuse)
+        ms = prob%nuse - i0 + 1
+        if (prob%rates) then
+            ! the instrument's three rates: e and the model those of the rate about the
+            ! vertical they give (W = -omega . b_1), which the record's v holds
+            es = fit%r/stacked_weights(prob)
+            r%residual_rms = sqrt(sum(es**2)/m)
+            allocate (e(ms))
+            e = 0.0_dp
+            do k = 1, 3
+                e = e - prob%axes(k, 1)*es((k - 1)*ms + 1:k*ms)
+            end do
+            r%determined = .true.
+        else
+            e = fit%r/(prob%w(i0:prob%nuse)*prob%hw(i0:prob%nuse))
+            r%residual_rms = sqrt(sum(e**2)/m)
+        end if
+        r%model = e + prob%rec%v(i0:prob%nuse)
+        if (any([(any(prob%which(j) == [P_I2, P_I3, P_CG, P_TILT, P_SWAY]), j=1, np)])) &
+            r%determined = .true.
+        if (r%determined) then
+            ! what the record determines: u against the prior, correlations, condition
+            call record_determines(jac, prob%xs(1:np), r%det)
+            r%u_prior = 0.0_dp
+            do j = 1, np
+                select case (prob%which(j))
+                case (P_I2)
+                    ui = mea%u_inertia_of()
+                    r%u_prior(j) = ui(1)
+                case (P_I3)
+                    ui = mea%u_inertia_of()
+                    r%u_prior(j) = ui(2)
+                case (P_CG)
+                    r%u_prior(j) = mea%u_cg_depth
+                end select
+            end do
+        end if
         ! the model must follow the record (module model_follow): else refused, the
         ! likely causes named
-        r%period_linear = mean_period(rec, i0)
+        r%period_linear = mean_period(prob%rec, i0)
         lag = 0
-        if (r%period_linear > 0.0_dp .and. m > 1) lag = nint(r%period_linear* &
-            (m - 1)/(rec%t(prob%nuse) - rec%t(i0)))
-        call follows_record(rec%v(i0:prob%nuse), e*prob%hw(i0:prob%nuse), lag, follows, &
+        if (r%period_linear > 0.0_dp .and. ms > 1) lag = nint(r%period_linear* &
+            (ms - 1)/(rec%t(prob%nuse) - rec%t(i0)))
+        call follows_record(prob%rec%v(i0:prob%nuse), e*prob%hw(i0:prob%nuse), lag, follows, &
                             ratio, rho)
         if (.not. follows) then
             missing = ''
-            do j = 2, size(PARAM_NAMES)
+            do j = 2, P_BIAS
                 if (.not. mea%estimated(PARAM_NAMES(j))) missing = missing//' '//trim(PARAM_NAMES(j))
             end do
             call set_error(stat, ERR_NUMERIC, not_following_message(ratio, rho, lag, &
@@ -1382,6 +1426,16 @@ contains
                     r=1, n)], jr > 0)))
             end if
         end do
+        if (n == 1 .and. rels(1)%determined) then
+            ! what the one record determines (its parameters in the same order)
+            res%determined = .true.
+            res%u_prior = rels(1)%u_prior
+            res%correlation_max = rels(1)%det%corr_max
+            res%condition = rels(1)%det%cond
+            if (all(rels(1)%det%pair > 0)) res%correlation_pair = &
+                trim(rels(1)%names(rels(1)%det%pair(1)))//' '// &
+                trim(rels(1)%names(rels(1)%det%pair(2)))
+        end if
         res%iterations = sum(rels%iterations)
         res%evaluations = sum(rels%evaluations)
         res%samples = sum(rels%samples)
@@ -1840,6 +1894,21 @@ contains
             call write_kv(u, trim(res%names(j)), res%p(j), ios)
             call write_kv(u, 'u_'//trim(res%names(j)), res%u_p(j), ios)
         end do
+        if (res%determined) then
+            ! what the record determines: each u against its prior u (none: no prior), the
+            ! parameters' largest correlation and the condition number of the fit
+            do j = 1, res%np
+                if (res%u_prior(j) > 0.0_dp) then
+                    call write_kv(u, 'u_prior_'//trim(res%names(j)), res%u_prior(j), ios)
+                else
+                    call write_kv(u, 'u_prior_'//trim(res%names(j)), 'none', ios)
+                end if
+            end do
+            call write_kv(u, 'correlation_max', res%correlation_max, ios)
+            if (len_trim(res%correlation_pair) > 0) &
+                call write_kv(u, 'correlation_pair', trim(res%correlation_pair), ios)
+            call write_kv(u, 'condition', res%condition, ios)
+        end if
         call write_kv(u, 'n_trials', res%n_trials, ios)
         if (trim(d%measurement%on_failure) == 'skip') then
             call write_kv(u, 'n_trials_skipped', res%n_trials_skipped, ios)
@@ -1881,7 +1950,12 @@ contains
             if (res%n_trials == 1 .and. size(res%record_crc) == 1) &
                 call write_kv(u, 'record_crc64', hex16(res%record_crc(1)), ios)
             ! the record's: the deck's quantity, or the unit its column's name says
-            call write_kv(u, 'quantity', trim(merge('rate ', 'angle', rels(1)%rec%rate)), ios)
+            if (allocated(rels(1)%rec%vs)) then
+                call write_kv(u, 'quantity', 'rates', ios)
+                call write_kv(u, 'record_axes', trim(d%measurement%record_axes), ios)
+            else
+                call write_kv(u, 'quantity', trim(merge('rate ', 'angle', rels(1)%rec%rate)), ios)
+            end if
             if (rels(1)%rec%axis_chosen) call write_kv(u, 'record_axis', &
                 trim(rels(1)%rec%value_name)//' (the axis with the largest swing)', ios)
             call write_kv(u, 'samples', res%samples, ios)

@@ -19,6 +19,7 @@ module deck_runs
     use elastic_model, only: elastic_t, elastic_start, ELASTIC_NSTATE
     use inputs, only: input_t, deck_inputs
     use records, only: record_t, record_format_t, record_format, read_record_file
+    use measure_groups, only: parse_axes
     implicit none
     private
 
@@ -96,10 +97,14 @@ contains
     pure function record_format_of(d) result(f)
         type(deck_t), intent(in) :: d
         type(record_format_t) :: f
+        real(dp) :: axes(3, 3)
+        logical :: ok
         f = record_format(d%measurement%record_columns, d%measurement%quantity, &
                           d%measurement%record_units, d%suspension%g, d%suspension%b_prime, &
                           d%measurement%record_column_names, d%measurement%record_frame_rate, &
                           d%measurement%gave('quantity'))
+        call parse_axes(d%measurement%record_axes, axes, ok)
+        f%down = axes(:, 1)
     end function record_format_of
 
     !> The record file of a deck: &measurement record relative to the deck's folder

@@ -17,7 +17,9 @@
 !! else &measurement quantity: angle (rad) or rate (rad/s).  'rad' or 'deg' (theta4),
 !! 'rad/s' or 'deg/s' (W = omega . n3).  Values in degrees are turned into radians here:
 !! a record_t is always in rad or rad/s.  Times need not count from the release (the fit
-!! finds it when t0 is estimated).
+!! finds it when t0 is estimated).  Quantity 'rates': record_columns T, X, Y, Z (or a gyro
+!! export's three axes, or columns 1 .. 4), the instrument's three rates into vs and the
+!! rate about the vertical they give into v (record_format_t's down).
 module records
     use kinds, only: dp, deg
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
@@ -31,6 +33,10 @@ module records
     !! each sample's standard uncertainty (else 1).
     type, public :: record_t
         real(dp), allocatable :: t(:), v(:), u(:)
+        !> quantity 'rates': the instrument's three rates (rad/s), three blocks of the n
+        !! samples, axis k's sample i at (k - 1) n + i (v then holds the rate about the
+        !! vertical they give, record_fit's vertical_of_rates)
+        real(dp), allocatable :: vs(:)
         logical :: has_u = .false.
         logical :: rate = .false.               !! W (rad/s), else theta4 (rad)
         real(dp) :: to_rad = 1.0_dp             !! the file's unit in rad (or rad/s)
@@ -49,8 +55,14 @@ module records
     type, public :: record_format_t
         !> time, value, u: 1-based columns; 0: none (the time: from the row and frame_rate)
         !! or by name (names); -1 in the third: record_columns not given
-        integer :: columns(3) = [1, 2, -1]
-        character(len=256) :: names(3) = ''     !! by name (lower case) where columns is 0
+        integer :: columns(4) = [1, 2, -1, -1]
+        character(len=256) :: names(4) = ''     !! by name (lower case) where columns is 0
+        !> quantity 'rates': three value columns, the instrument's x, y, z (columns 2 .. 4,
+        !! or a gyro export's three axes), read into record_t%vs
+        logical :: rates = .false.
+        !> quantity 'rates': the body's axis b_1 (down at rest) in the instrument's axes; the
+        !! record's v is the rate about the vertical they give, W = -(down . rates)
+        real(dp) :: down(3) = [1.0_dp, 0.0_dp, 0.0_dp]
         real(dp) :: frame_rate = 0.0_dp         !! frames a second (0: the time is in s)
         logical :: rate = .false.               !! a rate (W), else an angle (theta4)
         real(dp) :: to_rad = 1.0_dp             !! the value's unit in rad (deg: pi/180)
@@ -81,11 +93,11 @@ contains
     !! quantity, record_frame_rate; the rig's sqrt(g/b') for the range of a rate).
     pure function record_format(columns, quantity, record_units, g, b_prime, names, &
                                 frame_rate, quantity_given) result(f)
-        integer, intent(in) :: columns(3)               !! &measurement record_columns
+        integer, intent(in) :: columns(4)               !! &measurement record_columns
         character(len=*), intent(in) :: quantity        !! 'angle' or 'rate'
         character(len=*), intent(in) :: record_units    !! RECORD_UNITS_ALLOWED or ''
         real(dp), intent(in) :: g, b_prime              !! the rig's
-        character(len=*), intent(in), optional :: names(3)  !! record_columns by name
+        character(len=*), intent(in), optional :: names(4)  !! record_columns by name
         real(dp), intent(in), optional :: frame_rate    !! record_frame_rate
         logical, intent(in), optional :: quantity_given !! quantity given by the deck
         type(record_format_t) :: f
@@ -93,7 +105,8 @@ contains
         if (present(names)) f%names = names
         if (present(frame_rate)) f%frame_rate = frame_rate
         if (present(quantity_given)) f%quantity_given = quantity_given
-        f%rate = trim(quantity) == 'rate'
+        f%rates = trim(quantity) == 'rates'
+        f%rate = trim(quantity) == 'rate' .or. f%rates
         f%units = trim(merge('rad/s', 'rad  ', f%rate))
         f%to_rad = 1.0_dp
         if (len_trim(record_units) > 0) then
@@ -121,7 +134,7 @@ contains
         type(table_t) :: tab
         type(column_name_t), allocatable :: head(:)
         real(dp) :: vmax, x, tscale, to_rad
-        integer :: n, i, kt, kv, ku, k, np
+        integer :: n, i, kt, kv, ku, k, np, kr(3), o
         integer, allocatable :: at(:), axes(:)
         character(len=256), allocatable :: nm(:)
         character(len=:), allocatable :: per_tau, text, tname, vname, tunit, vunit, units
@@ -131,6 +144,7 @@ contains
         if (stat%code /= STATUS_OK) return
         ! the columns asked for: record_columns, else 1, 2 or the axes of a gyro export
         allocate (axes(0))
+        kr = 0
         if (f%columns(3) == -1) then
             call header_fields(text, head, named)
             if (named) call gyro_axes(head, axes)
@@ -139,7 +153,29 @@ contains
         kv = 0
         ku = 0
         allocate (at(0), nm(0))
-        if (size(axes) > 0) then
+        if (f%rates) then
+            ! time and the instrument's x, y, z: record_columns, or a gyro export's axes
+            if (size(axes) == 3) then
+                kt = add(time_column(head, axes), '')
+                do k = 1, 3
+                    kr(k) = add(axes(k), '')
+                end do
+            else if (f%columns(3) == -1) then
+                kt = add(1, '')
+                do k = 1, 3
+                    kr(k) = add(k + 1, '')
+                end do
+            else
+                if (f%columns(1) > 0 .or. len_trim(f%names(1)) > 0) kt = add(f%columns(1), &
+                                                                              f%names(1))
+                do k = 1, 3
+                    kr(k) = add(f%columns(k + 1), f%names(k + 1))
+                end do
+            end if
+            kv = kr(1)
+            deallocate (axes)
+            allocate (axes(0))
+        else if (size(axes) > 0) then
             kt = add(time_column(head, axes), '')
             do k = 1, size(axes)
                 i = add(axes(k), '')
@@ -262,6 +298,25 @@ contains
             rec%t = [(real(i - 1, dp)/f%frame_rate, i=1, n)]
         end if
         rec%v = tab%v(:, kv)*to_rad
+        if (f%rates) then
+            allocate (rec%vs(3*n))
+            do o = 1, 3
+                if (column_unit(column_name(kr(o))) /= vunit) then
+                    call set_error(stat, ERR_DECK, 'the rate columns '//col_id(kr(1))//' and '// &
+                        col_id(kr(o))//' state different units; allowed: three columns '// &
+                        'of one unit (rad/s or deg/s)')
+                    return
+                end if
+                rec%vs((o - 1)*n + 1:o*n) = tab%v(:, kr(o))*to_rad
+            end do
+            rec%v = -(f%down(1)*rec%vs(1:n) + f%down(2)*rec%vs(n + 1:2*n) + &
+                      f%down(3)*rec%vs(2*n + 1:3*n))
+            if (f%quantity_given .and. .not. rate) then
+                call set_error(stat, ERR_DECK, 'the rate columns are in '//units//', an '// &
+                    'angle, and quantity = ''rates''; allowed: rates in rad/s or deg/s')
+                return
+            end if
+        end if
         rec%has_u = ku > 0
         if (rec%has_u) then
             rec%u = tab%v(:, ku)*to_rad
@@ -283,6 +338,11 @@ contains
                         sci(rec%t(i - 1), 6)//' s; allowed: time strictly increasing (s)')
                     return
                 end if
+            end if
+            if (f%rates) then
+                ! the three rates (v, the vertical one they give, is within sqrt(3) of them)
+                x = maxval(abs(rec%vs([i, n + i, 2*n + i])))
+                if (x > vmax) rec%v(i) = sign(x, rec%v(i))
             end if
             if (abs(rec%v(i)) > vmax) then
                 x = rec%v(i)/to_rad

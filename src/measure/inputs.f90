@@ -55,7 +55,17 @@ contains
              input_t('b_prime', sus%b_prime, mea%u_b_prime), input_t('g', sus%g, mea%u_g), &
              input_t('I2', bod%inertia(2), mea%u_inertia(1)), &
              input_t('I3', bod%inertia(3), mea%u_inertia(2))]
-        if (bod%centre_measured(sus)) then
+        ! a record that estimates I2, I3 or cg_depth: no input of the budget then
+        if (mea%estimated('I2') .and. mea%estimated('I3')) then
+            x = x(1:size(x) - 2)
+        else if (mea%estimated('I3')) then
+            x = x(1:size(x) - 1)
+        else if (mea%estimated('I2')) then
+            x = [x(1:size(x) - 2), x(size(x))]
+        end if
+        if (bod%centre_measured(sus) .and. mea%estimated('cg_depth')) then
+            x = [x, input_t('cg_offset', bod%cg_offset, mea%u_cg_offset)]
+        else if (bod%centre_measured(sus)) then
             x = [x, input_t('cg_depth', bod%cg_depth, mea%u_cg_depth), &
                  input_t('cg_offset', bod%cg_offset, mea%u_cg_offset)]
             ! a platform's mass centre off its axis along y: u_cg_offset moves it too

@@ -134,7 +134,8 @@ contains
             if (stat%code /= STATUS_OK) return
             units = lower(adjustl(self%record_units))
             unit_rate = index(units, '/s') > 0
-            if (self%gave('quantity') .and. ((trim(quantity) == 'rate') .neqv. unit_rate)) then
+            if (self%gave('quantity') .and. ((trim(quantity) == 'rate' .or. &
+                                               trim(quantity) == 'rates') .neqv. unit_rate)) then
                 call bad(stat, 'measurement', 'record_units', quoted(units), &
                          'a '//trim(merge('rate ', 'angle', unit_rate))//' with quantity = '// &
                          quoted(quantity), 'rad or deg with quantity = ''angle'', rad/s or '// &
@@ -145,6 +146,19 @@ contains
         end if
         call check_word(stat, 'measurement', 'loss', self%loss, LOSSES_ALLOWED)
         if (stat%code /= STATUS_OK) return
+        ! quantity 'rates': the instrument's axes
+        block
+            real(dp) :: axes(3, 3)
+            logical :: ok
+            call parse_axes(lower(self%record_axes), axes, ok)
+            if (.not. ok) then
+                call bad(stat, 'measurement', 'record_axes', quoted(trim(self%record_axes)), &
+                         'not the instrument''s axes', '''aligned'' (its x, y, z along the '// &
+                         'body''s principal axes b_1, b_2, b_3) or three signed letters, the '// &
+                         'body axis along its x, y and z in turn, each once, e.g. ''z -y x''')
+                return
+            end if
+        end block
         call check_word(stat, 'measurement', 'on_failure', self%on_failure, ON_FAILURE_ALLOWED)
         if (stat%code /= STATUS_OK) return
         if (len_trim(self%session) > 64) then
@@ -249,11 +263,37 @@ contains
         subroutine check_record_columns()
             integer :: k, j
             character(len=:), allocatable :: given
-            logical :: named(3), used(3)
+            logical :: named(4), used(4)
             associate (rc => self%record_columns, nm => self%record_column_names)
                 named = rc == 0 .and. len_trim(nm) > 0
                 used = rc > 0 .or. named
                 given = column_list()
+                if (lower(adjustl(self%quantity)) == 'rates') then
+                    ! time (or record_frame_rate) and the instrument's x, y, z, distinct
+                    do k = 1, 4
+                        if (rc(k) > 100 .or. (named(k) .and. scan(nm(k)(1:1), &
+                                                                  '0123456789+-.') > 0)) &
+                            used(k) = .false.
+                        do j = k + 1, 4
+                            if ((rc(k) > 0 .and. rc(k) == rc(j)) .or. (named(k) .and. &
+                                named(j) .and. nm(k) == nm(j))) used(j) = .false.
+                        end do
+                    end do
+                    if (.not. all(used(2:4)) .or. (.not. used(1) .and. .not. &
+                        self%record_frame_rate > 0.0_dp)) call bad(stat, 'measurement', &
+                        'record_columns', given, 'not four distinct columns with quantity '// &
+                        '= ''rates''', 'record_columns = T, X, Y, Z: the time (s) and the '// &
+                        'instrument''s rates about its x, y, z, numbers 1 .. 100 or names '// &
+                        'of the header''s columns (the time may be left out with '// &
+                        'record_frame_rate)')
+                    return
+                end if
+                if (used(4)) then
+                    call bad(stat, 'measurement', 'record_columns', given, 'a fourth '// &
+                             'column', 'four columns (time, x, y, z) with quantity = '// &
+                             '''rates''; else record_columns = T, V or T, V, U')
+                    return
+                end if
                 if (all(.not. named)) then
                     ! numbers alone: as always, but the time's may be left out with a frame rate
                     if (rc(2) < 1 .or. (rc(1) < 1 .and. .not. self%record_frame_rate > 0.0_dp) &
@@ -318,7 +358,8 @@ contains
             character(len=:), allocatable :: c
             integer :: k
             c = ''
-            do k = 1, 3
+            do k = 1, merge(4, 3, self%record_columns(4) > 0 .or. &
+                            len_trim(self%record_column_names(4)) > 0)
                 if (k > 1) c = c//', '
                 if (self%record_columns(k) == 0 .and. len_trim(self%record_column_names(k)) > 0) &
                     then

@@ -24,8 +24,8 @@ module measure_groups
     real(dp), parameter, public :: AMPLITUDE_MIN = 1.0e-6_dp
     !> Words allowed in &measurement estimate: the parameters a record fit can estimate.
     !! amplitude_scale: the scale every timed period's amplitude is read on (periods only).
-    character(len=*), parameter, public :: ESTIMATES_ALLOWED = &
-        'I1 c_v c_q amplitude t0 bias amplitude_scale'
+    character(len=*), parameter, public :: ESTIMATES_ALLOWED = 'I1 c_v c_q amplitude t0 bias '// &
+        'amplitude_scale I2 I3 cg_depth tilt sway'
     !> Words allowed in &measurement record_units (each implies the quantity).
     character(len=*), parameter, public :: RECORD_UNITS_ALLOWED = 'rad deg rad/s deg/s'
     !> Words allowed in &measurement loss.
@@ -33,8 +33,8 @@ module measure_groups
     !> Words allowed in &measurement on_failure: what a release that fails does to the run.
     character(len=*), parameter, public :: ON_FAILURE_ALLOWED = 'stop skip'
     !> Words allowed in &measurement quantity: column 2 of a record.
-    character(len=*), parameter, public :: QUANTITIES_ALLOWED = 'angle rate'
-    public :: check_estimate
+    character(len=*), parameter, public :: QUANTITIES_ALLOWED = 'angle rate rates'
+    public :: check_estimate, parse_axes
     !> Most Monte Carlo samples of &measurement and &tensor monte_carlo.
     integer, parameter :: MAX_MONTE_CARLO = 1000000
 
@@ -66,13 +66,17 @@ module measure_groups
         !! not given (then 1, 2, or a gyro export's axis with the largest swing; a third
         !! column is each sample's u only when record_columns names it); 0 in the first: no
         !! time column (the row and record_frame_rate give the time), or by name
-        integer :: record_columns(3) = [1, 2, -1]
+        !! quantity 'rates': time and the instrument's three axes x, y, z (no u)
+        integer :: record_columns(4) = [1, 2, -1, -1]
         !> the columns given by name in the header (lower case), where record_columns is 0
-        character(len=256) :: record_column_names(3) = ''
+        character(len=256) :: record_column_names(4) = ''
         !> frames a second: the time column holds frame numbers, t = frame/F, or, without
         !! a time column, t = (row - 1)/F; 0: the time column is in s
         real(dp) :: record_frame_rate = 0.0_dp
         character(len=256) :: record_units = ''   !! RECORD_UNITS_ALLOWED ('' : by quantity)
+        !> quantity 'rates': the instrument's axes in the body's principal axes: 'aligned'
+        !! or three signed letters ('z -y x': the body axes along its x, y, z)
+        character(len=256) :: record_axes = 'aligned'
         character(len=256) :: loss = 'squares'    !! LOSSES_ALLOWED: the record fit's loss
         !> standard uncertainties of I2 and I3 (u_inertia(1) alone serves both: normalise),
         !! of the mass centre (as measured: cg_depth, cg_offset; or r (length) and lambda
@@ -168,11 +172,11 @@ contains
         character(len=:), allocatable :: s
         s = 'periods:r100 amplitudes:r100 record:c1 quantity:c1 estimate:c1 u_mass:r1 '// &
             'u_l:r1 u_l_prime:r1 u_b:r1 u_b_prime:r1 u_g:r1 u_period:r1 u_amplitude:r1 '// &
-            'monte_carlo:i1 seed:i1 cycles:r100 trials:c1 record_columns:k3 record_units:c1 '// &
+            'monte_carlo:i1 seed:i1 cycles:r100 trials:c1 record_columns:k4 record_units:c1 '// &
             'loss:c1 u_inertia:r2 u_cg_depth:r1 u_cg_offset:r1 u_r:r1 u_lambda:r1 tare_i1:r1 '// &
             'u_tare_i1:r1 tare_mass:r1 added_inertia:r1 u_added_inertia:r1 '// &
             'on_failure:c1 session:c1 record_frame_rate:r1 calibration:c1 tare:c1 '// &
-            'u_amplitude_scale:r1'
+            'u_amplitude_scale:r1 record_axes:c1'
     end function measurement_spec
 
     !> &measurement; n_periods counts the leading periods given (check refuses gaps).
@@ -186,18 +190,19 @@ contains
         character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
         real(dp) :: periods(MAX_PERIODS), amplitudes(MAX_PERIODS), cycles(MAX_PERIODS)
         character(len=256) :: record, quantity, estimate, trials, record_units, loss
-        character(len=256) :: on_failure, session, calibration, tare
+        character(len=256) :: on_failure, session, calibration, tare, record_axes
         real(dp) :: u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude
         real(dp) :: u_inertia(2), u_cg_depth, u_cg_offset, u_r, u_lambda
         real(dp) :: tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia
         real(dp) :: record_frame_rate, u_amplitude_scale
-        integer :: monte_carlo, seed, record_columns(3), ios_words
-        character(len=256) :: words(3), msg_words
+        integer :: monte_carlo, seed, record_columns(4), ios_words
+        character(len=256) :: words(4), msg_words
         namelist /measurement/ periods, amplitudes, cycles, record, quantity, estimate, u_mass, &
             u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude, monte_carlo, seed, &
             trials, record_columns, record_units, loss, u_inertia, u_cg_depth, u_cg_offset, &
             u_r, u_lambda, tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia, &
-            on_failure, session, record_frame_rate, calibration, tare, u_amplitude_scale
+            on_failure, session, record_frame_rate, calibration, tare, u_amplitude_scale, &
+            record_axes
         call defaults()
         words = ''
         read (rec, nml=measurement, iostat=ios, iomsg=msg)
@@ -242,10 +247,11 @@ contains
         else if (any(record_columns(1:2) /= -1)) then
             self%record_columns = max(0, record_columns)
             ! one value alone: the value's column
-            if (all(record_columns(2:3) == -1)) self%record_columns = [0, record_columns(1), 0]
+            if (all(record_columns(2:4) == -1)) self%record_columns = [0, record_columns(1), 0, 0]
             call self%note_given('record_columns')
         end if
         self%record_frame_rate = record_frame_rate
+        self%record_axes = record_axes
         self%record_units = record_units
         self%loss = loss
         if (u_inertia(1) /= PERIOD_UNSET) then
@@ -309,6 +315,7 @@ contains
             added_inertia = self%added_inertia
             u_added_inertia = self%u_added_inertia
             record_frame_rate = self%record_frame_rate
+            record_axes = self%record_axes
             on_failure = self%on_failure
             session = self%session
             calibration = self%calibration
@@ -318,13 +325,13 @@ contains
         subroutine read_words(ios2, msg2)
             integer, intent(out) :: ios2
             character(len=*), intent(inout) :: msg2
-            character(len=256) :: record_columns(3)
+            character(len=256) :: record_columns(4)
             namelist /measurement/ periods, amplitudes, cycles, record, quantity, estimate, &
                 u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude, &
                 monte_carlo, seed, trials, record_columns, record_units, loss, u_inertia, &
                 u_cg_depth, u_cg_offset, u_r, u_lambda, tare_i1, u_tare_i1, tare_mass, &
                 added_inertia, u_added_inertia, on_failure, session, record_frame_rate, &
-                calibration, tare, u_amplitude_scale
+                calibration, tare, u_amplitude_scale, record_axes
             record_columns = ''
             read (rec, nml=measurement, iostat=ios2, iomsg=msg2)
             words = record_columns
@@ -348,8 +355,14 @@ contains
         if (len_trim(self%calibration) > 0) line = line//' calibration = '// &
             quoted(self%calibration)//','
         if (len_trim(self%tare) > 0) line = line//' tare = '//quoted(self%tare)//','
-        if (self%gave('record_columns')) line = line//' record_columns = '// &
-            column_text(1)//', '//column_text(2)//', '//column_text(3)//','
+        if (self%gave('record_columns')) then
+            line = line//' record_columns = '//column_text(1)//', '//column_text(2)//', '// &
+                column_text(3)
+            if (trim(self%quantity) == 'rates') line = line//', '//column_text(4)
+            line = line//','
+        end if
+        if (trim(self%quantity) == 'rates') line = line//' record_axes = '// &
+            quoted(self%record_axes)//','
         if (self%record_frame_rate > 0.0_dp) line = line//' record_frame_rate = '// &
             rshort(self%record_frame_rate)//','
         if (len_trim(self%record_units) > 0) line = line//' record_units = '// &
@@ -396,17 +409,17 @@ contains
     !! value's column.  A word that starts as a number does but is none (1.5, -2, 1e3) is
     !! kept as a name, for the check to refuse.
     pure subroutine column_words(words, columns, names)
-        character(len=*), intent(in) :: words(3)
-        integer, intent(out) :: columns(3)
-        character(len=*), intent(out) :: names(3)
-        character(len=len(words)) :: w(3)
+        character(len=*), intent(in) :: words(4)
+        integer, intent(out) :: columns(4)
+        character(len=*), intent(out) :: names(4)
+        character(len=len(words)) :: w(4)
         integer :: k, ios
         w = words
-        if (len_trim(w(1)) > 0 .and. all(len_trim(w(2:3)) == 0)) w = [character(len=len(w)) :: &
-            '', w(1), '']
+        if (len_trim(w(1)) > 0 .and. all(len_trim(w(2:4)) == 0)) w = [character(len=len(w)) :: &
+            '', w(1), '', '']
         columns = 0
         names = ''
-        do k = 1, 3
+        do k = 1, 4
             if (len_trim(w(k)) == 0) cycle
             if (verify(trim(adjustl(w(k))), '0123456789') == 0 .and. &
                 len_trim(adjustl(w(k))) <= 6) then
@@ -446,9 +459,11 @@ contains
         nc = count(self%cycles /= PERIOD_UNSET)
         if (nc == 1) self%cycles(2:max(1, self%n_periods)) = self%cycles(1)
         where (self%cycles == PERIOD_UNSET) self%cycles = 1.0_dp
+        self%record_axes = lower(adjustl(self%record_axes))
         if (len_trim(self%record_units) > 0) then
             self%record_units = lower(adjustl(self%record_units))
-            self%quantity = merge('rate ', 'angle', index(self%record_units, '/s') > 0)
+            if (trim(self%quantity) /= 'rates') &
+                self%quantity = merge('rate ', 'angle', index(self%record_units, '/s') > 0)
         end if
         self%loss = lower(adjustl(self%loss))
         self%on_failure = lower(adjustl(self%on_failure))
@@ -539,5 +554,45 @@ contains
         self%hangs_path = ''
         if (len_trim(self%hangs) > 0) self%hangs_path = record_in_folder(deck_path, self%hangs)
     end subroutine normalise_tensor
+
+    !> &measurement record_axes: the instrument's axes in the body's principal axes b_1,
+    !! b_2, b_3 (called x, y, z): 'aligned' (the instrument's x, y, z along b_1, b_2, b_3),
+    !! or three signed letters, the body axis along the instrument's x, y and z in turn:
+    !! 'z -y x' (its x along b_3, its y along -b_2, its z along b_1); each body axis once.
+    !! axes(k, :): the instrument's axis k in b_i; ok .false. for any other text.
+    pure subroutine parse_axes(text, axes, ok)
+        character(len=*), intent(in) :: text
+        real(dp), intent(out) :: axes(3, 3)
+        logical, intent(out) :: ok
+        character(len=len(text)) :: rest
+        character(len=8) :: w
+        integer :: k, j, i, sgn
+        axes = 0.0_dp
+        do k = 1, 3
+            axes(k, k) = 1.0_dp
+        end do
+        ok = .true.
+        rest = adjustl(text)
+        if (len_trim(rest) == 0 .or. trim(rest) == 'aligned') return
+        ok = .false.
+        axes = 0.0_dp
+        do k = 1, 3
+            rest = adjustl(rest)
+            i = index(rest, ' ')
+            if (i <= 1) return
+            w = rest(1:i - 1)
+            rest = rest(i:)
+            sgn = 1
+            if (w(1:1) == '-' .or. w(1:1) == '+') then
+                if (w(1:1) == '-') sgn = -1
+                w = w(2:)
+            end if
+            j = index('xyz', trim(w))
+            if (len_trim(w) /= 1 .or. j == 0) return
+            if (any(axes(:, j) /= 0.0_dp)) return
+            axes(k, j) = real(sgn, dp)
+        end do
+        ok = len_trim(rest) == 0
+    end subroutine parse_axes
 
 end module measure_groups

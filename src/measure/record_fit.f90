@@ -51,9 +51,9 @@ module record_fit
     use kinds, only: dp, pi, deg
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC
     use text, only: itoa, sci
-    use measure_groups, only: measurement_group_t
+    use measure_groups, only: measurement_group_t, parse_axes
     use output_io, only: out_files_t, all_finite
-    use geometry, only: pendulum_t
+    use geometry, only: pendulum_t, body_pose, frame, body_axes
     use bifilar_model, only: NSTATE, bifilar_t, sens_dir_t, vertical_rate, &
         vertical_rate_gradient
     use rig, only: rig_t, start_t, accuracy_t, make_pendulum, start_state
@@ -61,9 +61,9 @@ module record_fit
     use run_loop, only: stepped_model_t, row_sink_t, drive
     use integrators, only: SENS_FORWARD
     use estimator, only: lsq_problem_t, lsq_options_t, lsq_result_t, estimate, &
-        gauss_newton_gain, lsq_covariance, LOSS_SQUARES
+        gauss_newton_gain, lsq_covariance, LOSS_SQUARES, lsq_jacobian
     use rig, only: same_rig, same_start
-    use lapack_wrap, only: la_lstsq
+    use lapack_wrap, only: la_lstsq, la_svd
     use random, only: rng_t, rng_stream, rng_normal
     use records, only: record_t, mean_period, median_value
     use inputs, only: input_t, set_input, input_value
@@ -72,11 +72,19 @@ module record_fit
     implicit none
     private
 
-    !> Parameters a record fit can estimate (deck ESTIMATES_ALLOWED), in this order.
+    !> Parameters a record fit can estimate (deck ESTIMATES_ALLOWED), in this order: the
+    !! first six of any record; I2, I3, cg_depth (the body's other moments and the depth of
+    !! its mass centre below CD), tilt and sway (the release's start values, &start tilt and
+    !! sway) of any record, which a record determines only when its release tilts or sways;
+    !! bias_y and bias_z, with bias (then the x axis's), the three offsets of quantity
+    !! 'rates' (estimate = 'bias' asks for all three).
     integer, parameter, public :: P_I1 = 1, P_CV = 2, P_CQ = 3, P_AMP = 4, P_T0 = 5, P_BIAS = 6
-    integer, parameter, public :: NPARAM = 6
+    integer, parameter, public :: P_I2 = 7, P_I3 = 8, P_CG = 9, P_TILT = 10, P_SWAY = 11, &
+        P_BIAS_Y = 12, P_BIAS_Z = 13
+    integer, parameter, public :: NPARAM = 13
     character(len=9), parameter, public :: PARAM_NAMES(NPARAM) = [character(len=9) :: 'I1', &
-        'c_v', 'c_q', 'amplitude', 't0', 'bias']
+        'c_v', 'c_q', 'amplitude', 't0', 'bias', 'I2', 'I3', 'cg_depth', 'tilt', 'sway', &
+        'bias_y', 'bias_z']
 
     !> What a run of the record model depends on: the rig, the start and the release.
     type, public :: run_point_t
@@ -98,6 +106,12 @@ module record_fit
     type, public :: record_runs_t
         type(accuracy_t) :: acc                 !! the runs' accuracy (rtol, atol, integrator)
         logical :: rate = .false.               !! W instead of theta4
+        !> quantity 'rates': the three rates an instrument fixed on the body reads (rad/s),
+        !! axes(k, :) its axis k in the body's principal axes b_1, b_2, b_3 (a run's values
+        !! are then three blocks of the samples, one per axis)
+        logical :: rates = .false.
+        real(dp) :: axes(3, 3) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, &
+                                          0.0_dp, 0.0_dp, 1.0_dp], [3, 3])
         !> The budget's inputs (set_carry) and the columns of those with u > 0, which a
         !! whole-record run near the minimum carries
         type(input_t), allocatable :: x(:)
@@ -143,9 +157,15 @@ module record_fit
         integer :: np = 0                       !! parameters estimated
         integer :: which(NPARAM) = 0            !! P_* of each estimated parameter
         real(dp) :: t0 = 0.0_dp                 !! release time (s), when held
-        real(dp) :: bias = 0.0_dp               !! the record's offset, when held (0)
+        real(dp) :: bias(3) = 0.0_dp            !! the record's offset (each axis), when held
         real(dp) :: sign = 1.0_dp               !! -1: the body was released the other way
-        logical :: rate = .false.               !! quantity = 'rate'
+        logical :: rate = .false.               !! quantity = 'rate' (or 'rates')
+        !> quantity 'rates': three values a sample (rec%vs), axes(k, :) the instrument's axis
+        !! k in the body's principal axes; the residuals are three blocks of the samples
+        logical :: rates = .false.
+        integer :: nout = 1                     !! values a sample: 1, or 3 ('rates')
+        real(dp) :: axes(3, 3) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, &
+                                          0.0_dp, 0.0_dp, 1.0_dp], [3, 3])
         integer :: ifirst = 1                   !! first sample fitted
         integer :: nuse = 0                     !! last sample fitted (the window)
         real(dp), allocatable :: w(:)           !! 1/u_i (1 without u)
@@ -180,14 +200,28 @@ module record_fit
     !> The model's value at the record's sample times (a sink of the run loop).
     type, extends(row_sink_t) :: record_sink_t
         logical :: rate = .false.
-        real(dp), allocatable :: vals(:)        !! theta4 (rad) or W (rad per unit tau)
+        logical :: rates = .false.              !! the instrument's three rates
+        integer :: nout = 1                     !! values a sample
+        real(dp) :: axes(3, 3) = 0.0_dp         !! the instrument's axes (rates)
+        real(dp) :: btilde(3, 3) = 0.0_dp       !! the body's principal axes (rates)
+        real(dp), allocatable :: vals(:, :)     !! (nout, 0:) theta4 (rad) or W, or the rates
+                                                !! (rad per unit tau)
         integer :: ns = 0                       !! forward sensitivities carried (0: none)
-        real(dp), allocatable :: dvals(:, :)    !! (ns, 0:) the value's change along each
+        real(dp), allocatable :: dvals(:, :, :) !! (ns, nout, 0:) the values' change along each
         logical :: shift = .false.              !! the value's rate is asked too
-        real(dp), allocatable :: slope(:)       !! (0:) its rate, d value/d tau
+        real(dp), allocatable :: slope(:, :)    !! (nout, 0:) its rate, d value/d tau
     contains
         procedure :: take => record_take
     end type record_sink_t
+
+    !> What a record determines of the parameters it estimates (record_determines).
+    type, public :: determines_t
+        integer :: np = 0                       !! parameters
+        real(dp) :: cond = 1.0_dp               !! condition number of J, columns scaled
+        real(dp) :: corr_max = 0.0_dp           !! largest |off-diagonal| of the correlations
+        integer :: pair(2) = 0                  !! its two parameters
+        integer :: flat = 0                     !! a parameter the record does not depend on
+    end type determines_t
 
     !> The samples of a record fit's Monte Carlo (record_mc_point) as a sweep: the fit
     !! problem, the estimate the samples start from, its Jacobian and first-order u, s, and
@@ -211,9 +245,17 @@ module record_fit
     public :: input_sensitivity, input_sensitivities
     public :: record_mc_task, explain_fit_failure, make_record, find_release, check_record_kind
     public :: correlation_time, apply_parameters, fresh_jacobian, estimated_names
+    public :: body_rates, body_rates_gradient, record_determines
+    public :: stacked_values, stacked_weights, vertical_of_rates
 
     real(dp), parameter, public :: H_REL = 1.0e-5_dp        !! relative difference step of the model
     real(dp), parameter :: DAMP_REF = 1.0e-3_dp     !! scale of c_v, c_q (model's units)
+    !> The size of a start's tilt or sway (rad) for their difference steps and columns
+    real(dp), parameter :: SMALL_ANGLE = 1.0e-2_dp
+    !> A parameter whose column's effect is below this part of the largest is one the
+    !! record does not depend on; two whose correlation exceeds CORR_REFUSE, or a
+    !! condition number (columns scaled to unit norm) beyond COND_REFUSE, it cannot separate
+    real(dp), parameter :: FLAT_REL = 1.0e-6_dp, CORR_REFUSE = 0.9999_dp, COND_REFUSE = 1.0e8_dp
     !> The contraction rate a Monte Carlo refit's first step is taken to have (the rates
     !! measured on the example records are 0.005 ... 0.1)
     real(dp), parameter :: MC_RATE = 0.25_dp
@@ -231,23 +273,31 @@ module record_fit
 contains
 
     !> The model at the record's first n sample times, for the rig rg started by st with
-    !! release at t0 (s): theta4 (rad) or W = omega . n3 (rad/s) when rate.  A sample before
+    !! release at t0 (s): theta4 (rad) or W = omega . n3 (rad/s) when rate; with axes, the
+    !! three rates (rad/s) of an instrument fixed on the body whose axis k is axes(k, :) in
+    !! the body's principal axes, vals three blocks of n (body_rates).  A sample before
     !! t0 sees the start.  The model runs through the run loop (accuracy acc: rtol, atol,
     !! integrator), in memory.
-    subroutine record_model(rg, st, acc, t, t0, rate, vals, stat)
+    subroutine record_model(rg, st, acc, t, t0, rate, vals, stat, axes)
         type(rig_t), intent(in) :: rg           !! the rig (I1, damping as fitted)
         type(start_t), intent(in) :: st         !! the start (amplitude as fitted)
         type(accuracy_t), intent(in) :: acc     !! rtol, atol, integrator
         real(dp), intent(in) :: t(:)            !! sample times (s), increasing
         real(dp), intent(in) :: t0              !! release (s)
         logical, intent(in) :: rate             !! W instead of theta4
-        real(dp), intent(out) :: vals(:)        !! the model at t(1:size(vals))
+        real(dp), intent(out) :: vals(:)        !! the model at t(1:size(vals)) (or 3 blocks)
         type(status_t), intent(out) :: stat     !! the start's or the run's failure
+        real(dp), intent(in), optional :: axes(3, 3)    !! quantity 'rates': the instrument's
         type(record_runs_t) :: ev
         type(run_columns_t) :: none
         real(dp) :: dv(size(vals), 0)
         ev%acc = acc
         ev%rate = rate
+        if (present(axes)) then
+            ev%rates = .true.
+            ev%rate = .true.
+            ev%axes = axes
+        end if
         allocate (none%names(0), none%xs(0))
         call ev%run(run_point_t(rg, st, t0), t, none, vals, dv, stat)
     end subroutine record_model
@@ -256,7 +306,7 @@ contains
     !! (a fit parameter, 'I1', 'c_v', 'c_q', 'amplitude', 't0', or an input of module
     !! inputs), from the forward sensitivities of one run (see the module header); xs(c) the
     !! size of quantity c (its difference steps are 1e-5 xs(c)).
-    subroutine record_model_sens(rg, st, acc, t, t0, rate, names, xs, vals, dvals, stat)
+    subroutine record_model_sens(rg, st, acc, t, t0, rate, names, xs, vals, dvals, stat, axes)
         type(rig_t), intent(in) :: rg           !! the rig
         type(start_t), intent(in) :: st         !! the start
         type(accuracy_t), intent(in) :: acc     !! rtol, atol, integrator
@@ -268,18 +318,25 @@ contains
         real(dp), intent(out) :: vals(:)        !! the model at t(1:size(vals))
         real(dp), intent(out) :: dvals(:, :)    !! (size(vals), size(names))
         type(status_t), intent(out) :: stat     !! the start's or the run's failure
+        real(dp), intent(in), optional :: axes(3, 3)    !! quantity 'rates': the instrument's
         type(record_runs_t) :: ev
         type(run_columns_t) :: cols
         ev%acc = acc
         ev%rate = rate
+        if (present(axes)) then
+            ev%rates = .true.
+            ev%rate = .true.
+            ev%axes = axes
+        end if
         allocate (cols%names(size(names)))
         cols%names = names
         cols%xs = xs
         call ev%run(run_point_t(rg, st, t0), t, cols, vals, dvals, stat)
     end subroutine record_model_sens
 
-    !> One run of the model over the samples t(1:size(vals)) at the point pt (rig, start,
-    !! release), with the derivatives of the quantities cols (none: the values alone).
+    !> One run of the model over the samples t(1:n) at the point pt (rig, start, release),
+    !! with the derivatives of the quantities cols (none: the values alone); n = size(vals)
+    !! (quantity 'rates': size(vals)/3, vals three blocks of n, one per instrument axis).
     !! Column c of the run's sensitivities follows cols%names(c): its pendulum direction and
     !! initial condition by central differences of make_pendulum and start_state.  A
     !! quantity that moves the time scale s = sqrt(g/b') or the release moves the samples
@@ -292,7 +349,7 @@ contains
         type(run_point_t), intent(in) :: pt     !! rig, start, release
         real(dp), intent(in) :: t(:)            !! sample times (s), increasing
         type(run_columns_t), intent(in) :: cols !! the quantities differentiated
-        real(dp), intent(out) :: vals(:)        !! the model at t(1:size(vals))
+        real(dp), intent(out) :: vals(:)        !! the model at t(1:n) (nout blocks)
         real(dp), intent(out) :: dvals(:, :)    !! (size(vals), size(cols%names))
         type(status_t), intent(out) :: stat     !! the start's or the run's failure
         real(dp), parameter :: FD_REL = 1.0e-5_dp
@@ -302,25 +359,26 @@ contains
         type(rig_t) :: rp, rm
         type(start_t) :: sp, sm
         type(sens_dir_t), allocatable :: dirs(:)
-        real(dp) :: y0(NSTATE), th0(5), s, v0, yp(NSTATE), ym(NSTATE), th(5), h
-        real(dp) :: g0(NSTATE), sfac, dtau
-        real(dp), allocatable :: taus(:), s0(:, :), scale(:), ds(:), dt0(:)
+        real(dp) :: y0(NSTATE), th0(5), s, yp(NSTATE), ym(NSTATE), th(5), h
+        real(dp) :: sfac, dtau
+        real(dp), allocatable :: taus(:), s0(:, :), scale(:), ds(:), dt0(:), v0(:), g0(:, :)
         type(rig_t) :: rg
         type(start_t) :: st
         type(accuracy_t) :: acc
         character(len=16) :: names(size(cols%names))
         real(dp) :: xs(size(cols%names))
         real(dp) :: t0
-        integer :: n, i0, i, nq, ns, c
+        integer :: n, i0, i, nq, ns, c, nout, k, o
         logical :: shift, rate
         rg = pt%rg
         st = pt%st
         t0 = pt%t0
         acc = self%acc
-        rate = self%rate
+        rate = self%rate .or. self%rates
         names = cols%names
         xs = cols%xs
-        n = size(vals)
+        nout = merge(3, 1, self%rates)
+        n = size(vals)/nout
         nq = size(names)
         vals = 0.0_dp
         dvals = 0.0_dp
@@ -383,7 +441,8 @@ contains
             dirs(c)%lambda = (pp%lambda - pm%lambda)/(2.0_dp*h)
             ds(c) = (sqrt(rp%g/rp%b_prime) - sqrt(rm%g/rm%b_prime))/(2.0_dp*h)
             if (any([dirs(c)%big_l, dirs(c)%big_lp, dirs(c)%big_b, dirs(c)%r, &
-                     dirs(c)%lambda] /= 0.0_dp) .or. trim(names(c)) == 'amplitude') then
+                     dirs(c)%lambda] /= 0.0_dp) .or. trim(names(c)) == 'amplitude' .or. &
+                trim(names(c)) == 'tilt' .or. trim(names(c)) == 'sway') then
                 call start_state(sp, pp, yp, th, stat)
                 if (stat%code == 0) call start_state(sm, pm, ym, th, stat)
                 if (stat%code /= 0) return
@@ -393,10 +452,14 @@ contains
         shift = any(ds /= 0.0_dp) .or. any(dt0 /= 0.0_dp)
         ns = nq
         sink%rate = rate
+        sink%rates = self%rates
+        sink%nout = nout
+        sink%axes = self%axes
+        sink%btilde = p%btilde
         sink%ns = ns
         sink%shift = shift
-        v0 = output_value(rate, y0)
-        g0 = output_gradient(rate, y0)
+        allocate (v0(nout), g0(NSTATE, nout))
+        call sink_outputs(sink, y0, v0, g0)
         i0 = n + 1
         do i = 1, n
             if (t(i) >= t0) then
@@ -404,29 +467,22 @@ contains
                 exit
             end if
         end do
-        ! the samples before the release see the start
-        vals(1:i0 - 1) = v0*sfac
-        do c = 1, nq
-            dvals(1:i0 - 1, c) = dot_product(g0, s0(:, c))*sfac
-            if (rate) dvals(1:i0 - 1, c) = dvals(1:i0 - 1, c) + v0*ds(c)
+        ! the samples before the release (or all, when the record ends at it) see the start
+        if (n > 0) then
+            if (i0 > n .or. (t(n) - t0)*s <= 0.0_dp) i0 = n + 1
+        end if
+        do o = 1, nout
+            k = (o - 1)*n
+            vals(k + 1:k + i0 - 1) = v0(o)*sfac
+            do c = 1, nq
+                dvals(k + 1:k + i0 - 1, c) = dot_product(g0(:, o), s0(:, c))*sfac
+                if (rate) dvals(k + 1:k + i0 - 1, c) = dvals(k + 1:k + i0 - 1, c) + v0(o)*ds(c)
+            end do
         end do
         if (i0 > n) return
-        allocate (taus(0:n - i0), sink%vals(0:n - i0), sink%dvals(ns, 0:n - i0), &
-                  sink%slope(0:n - i0))
+        allocate (taus(0:n - i0), sink%vals(nout, 0:n - i0), sink%dvals(ns, nout, 0:n - i0), &
+                  sink%slope(nout, 0:n - i0))
         taus = (t(i0:n) - t0)*s
-        if (taus(n - i0) <= 0.0_dp) then
-            vals(i0:n) = v0*sfac
-            do c = 1, nq
-                dvals(i0:n, c) = dvals(1, c)
-            end do
-            if (i0 == 1) then
-                do c = 1, nq
-                    dvals(:, c) = dot_product(g0, s0(:, c))*sfac
-                    if (rate) dvals(:, c) = dvals(:, c) + v0*ds(c)
-                end do
-            end if
-            return
-        end if
         if (ns > 0) then
             call kane_run_start(m, p, y0, th0(3), acc%rtol, acc%atol, acc%method, &
                                 taus(n - i0), 'raise &integration rtol/atol', stat, &
@@ -439,16 +495,20 @@ contains
         if (stat%code /= 0) return
         call drive(m, taus, sink, stat)
         if (stat%code /= 0) return
-        vals(i0:n) = sink%vals*sfac
-        do c = 1, nq
-            do i = i0, n
-                dtau = (t(i) - t0)*ds(c) - s*dt0(c)
-                if (shift) then
-                    dvals(i, c) = (sink%dvals(c, i - i0) + sink%slope(i - i0)*dtau)*sfac
-                else
-                    dvals(i, c) = sink%dvals(c, i - i0)*sfac
-                end if
-                if (rate) dvals(i, c) = dvals(i, c) + sink%vals(i - i0)*ds(c)
+        do o = 1, nout
+            k = (o - 1)*n
+            vals(k + i0:k + n) = sink%vals(o, :)*sfac
+            do c = 1, nq
+                do i = i0, n
+                    dtau = (t(i) - t0)*ds(c) - s*dt0(c)
+                    if (shift) then
+                        dvals(k + i, c) = (sink%dvals(c, o, i - i0) + &
+                                           sink%slope(o, i - i0)*dtau)*sfac
+                    else
+                        dvals(k + i, c) = sink%dvals(c, o, i - i0)*sfac
+                    end if
+                    if (rate) dvals(k + i, c) = dvals(k + i, c) + sink%vals(o, i - i0)*ds(c)
+                end do
             end do
         end do
     contains
@@ -467,6 +527,10 @@ contains
                 r2%c_v = rg%c_v + dx
             case ('c_q')
                 r2%c_q = rg%c_q + dx
+            case ('tilt')
+                s2%tilt = st%tilt + dx
+            case ('sway')
+                s2%sway = st%sway + dx
             case default
                 call set_input(r2, s2, name, input_value(rg, st, name) + dx)
             end select
@@ -497,6 +561,99 @@ contains
         end if
     end function output_gradient
 
+    !> The rates an instrument fixed on the body reads at a chart state (rad per unit tau):
+    !! w(k) = axes(k, :) . omega_b, omega_b the body's angular velocity in its principal
+    !! axes b_i (b = btilde n, eq. (11)), omega = Omega_1 theta1' - n3 theta4' + Omega_5
+    !! theta5' (eq. (14)); the cable's direction does not turn the body.
+    pure function body_rates(btilde, axes, y) result(w)
+        real(dp), intent(in) :: btilde(3, 3)    !! the principal axes in ntilde (eq. (9))
+        real(dp), intent(in) :: axes(3, 3)      !! rows: the instrument's axes in b_i
+        real(dp), intent(in) :: y(NSTATE)       !! chart state
+        real(dp) :: w(3)
+        real(dp) :: n(3, 3), b(3, 3), omb(3)
+        call frame(body_pose(y(1), y(4), y(5), 0.0_dp), n)
+        b = matmul(btilde, n)
+        ! b_i . ntilde_3 = btilde(i, 3); b_i . n_3 = b(i, 3); b_i . (c4 n1 - s4 n2)
+        omb = btilde(:, 3)*y(6) - b(:, 3)*y(9) + (cos(y(4))*b(:, 1) - sin(y(4))*b(:, 2))*y(10)
+        w = matmul(axes, omb)
+    end function body_rates
+
+    !> The gradient of body_rates with respect to the chart state, g(:, k) for axis k
+    !! (body_rates_and_gradient).
+    pure function body_rates_gradient(btilde, axes, y) result(g)
+        real(dp), intent(in) :: btilde(3, 3), axes(3, 3)
+        real(dp), intent(in) :: y(NSTATE)
+        real(dp) :: g(NSTATE, 3)
+        real(dp) :: w(3)
+        call body_rates_and_gradient(btilde, axes, y, w, g)
+    end function body_rates_gradient
+
+    !> body_rates (w) and their gradient g(:, k) with respect to the chart state: linear in
+    !! theta1', theta4', theta5'; the angles' columns from the derivatives of the direction
+    !! cosines of eq. (8) (theta1 turns the rows: n1' = n2, n2' = -n1; theta4 the columns:
+    !! n(:, 1)' = n(:, 2), n(:, 2)' = -n(:, 1); theta5 each entry's own), through b = btilde n.
+    pure subroutine body_rates_and_gradient(btilde, axes, y, w, g)
+        real(dp), intent(in) :: btilde(3, 3), axes(3, 3)
+        real(dp), intent(in) :: y(NSTATE)
+        real(dp), intent(out) :: w(3), g(NSTATE, 3)
+        real(dp) :: n(3, 3), b(3, 3), dn(3, 3), e(3), om(3)
+        real(dp) :: s1, c1, s4, c4, s5, c5
+        s1 = sin(y(1))
+        c1 = cos(y(1))
+        s4 = sin(y(4))
+        c4 = cos(y(4))
+        s5 = sin(y(5))
+        c5 = cos(y(5))
+        call frame(body_pose(y(1), y(4), y(5), 0.0_dp), n)
+        b = matmul(btilde, n)
+        e = c4*b(:, 1) - s4*b(:, 2)
+        om = btilde(:, 3)*y(6) - b(:, 3)*y(9) + e*y(10)
+        w = matmul(axes, om)
+        g = 0.0_dp
+        g(6, :) = matmul(axes, btilde(:, 3))
+        g(9, :) = -matmul(axes, b(:, 3))
+        g(10, :) = matmul(axes, e)
+        ! theta1
+        dn = 0.0_dp
+        dn(1, :) = n(2, :)
+        dn(2, :) = -n(1, :)
+        g(1, :) = angle_column(dn, 0.0_dp)
+        ! theta4
+        dn(:, 1) = n(:, 2)
+        dn(:, 2) = -n(:, 1)
+        dn(:, 3) = 0.0_dp
+        g(4, :) = angle_column(dn, 1.0_dp)
+        ! theta5
+        dn(1, :) = [c1*s4*c5, c1*c4*c5, c1*s5]
+        dn(2, :) = [-s1*s4*c5, -s1*c4*c5, -s1*s5]
+        dn(3, :) = [s4*s5, c4*s5, -c5]
+        g(5, :) = angle_column(dn, 0.0_dp)
+    contains
+        !> The rates' change along an angle that changes n by dn (and, with e4 = 1, theta4
+        !! itself in the factors c4, s4 of Omega_5).
+        pure function angle_column(dnn, e4) result(col)
+            real(dp), intent(in) :: dnn(3, 3), e4
+            real(dp) :: col(3), dbb(3, 3)
+            dbb = matmul(btilde, dnn)
+            col = matmul(axes, -dbb(:, 3)*y(9) + (c4*dbb(:, 1) - s4*dbb(:, 2) &
+                                                 - e4*(s4*b(:, 1) + c4*b(:, 2)))*y(10))
+        end function angle_column
+    end subroutine body_rates_and_gradient
+
+    !> The values a sink takes from a chart state (v) and their gradients (g(:, k)): theta4
+    !! or W (one), or the instrument's three rates.
+    pure subroutine sink_outputs(sink, y, v, g)
+        type(record_sink_t), intent(in) :: sink
+        real(dp), intent(in) :: y(NSTATE)
+        real(dp), intent(out) :: v(:), g(:, :)
+        if (sink%rates) then
+            call body_rates_and_gradient(sink%btilde, sink%axes, y, v, g)
+        else
+            v(1) = output_value(sink%rate, y)
+            g(:, 1) = output_gradient(sink%rate, y)
+        end if
+    end subroutine sink_outputs
+
     !> One sample of the model (record_sink_t), with its sensitivities when carried.
     subroutine record_take(sink, m, k, t, y, stat)
         class(record_sink_t), intent(inout) :: sink
@@ -505,17 +662,28 @@ contains
         real(dp), intent(in) :: t               !! its tau
         real(dp), intent(in) :: y(:)            !! chart state there
         type(status_t), intent(out) :: stat
-        real(dp) :: g(NSTATE), f(NSTATE)
+        real(dp) :: g(NSTATE, sink%nout), f(NSTATE), v(sink%nout)
+        integer :: o
         stat%code = 0
-        sink%vals(k) = output_value(sink%rate, y(1:NSTATE))
-        if (sink%ns == 0 .and. .not. sink%shift) return
-        g = output_gradient(sink%rate, y(1:NSTATE))
+        if (sink%ns == 0 .and. .not. sink%shift) then
+            if (sink%rates) then
+                sink%vals(:, k) = body_rates(sink%btilde, sink%axes, y(1:NSTATE))
+            else
+                sink%vals(1, k) = output_value(sink%rate, y(1:NSTATE))
+            end if
+            return
+        end if
+        call sink_outputs(sink, y(1:NSTATE), v, g)
+        sink%vals(:, k) = v
         select type (m)
         type is (kane_run_t)
-            if (sink%ns > 0) call m%sens_dot_at(t, g, sink%dvals(:, k), stat)
+            do o = 1, sink%nout
+                if (stat%code == 0 .and. sink%ns > 0) &
+                    call m%sens_dot_at(t, g(:, o), sink%dvals(:, o, k), stat)
+            end do
             if (stat%code == 0 .and. sink%shift) then
                 call m%slope_at(t, f, stat)
-                sink%slope(k) = dot_product(g, f)
+                sink%slope(:, k) = matmul(f, g)
             end if
         end select
         if (stat%code /= 0) stat%msg = stat%msg//' at tau = '//sci(t)
@@ -540,11 +708,12 @@ contains
         logical, intent(out), optional :: fresh     !! dv computed at pt (not taken again)
         type(run_columns_t) :: cols, none
         real(dp), allocatable :: dall(:, :)
-        integer :: m, nfit, nx
+        integer :: m, nfit, nx, mv
         logical :: derivs, reuse
         stat%code = 0
         if (present(fresh)) fresh = .true.
         m = size(t)
+        mv = merge(3, 1, self%rates)*m          ! the values: nout blocks of the samples
         nfit = size(fit%names)
         derivs = nfit > 0
         if (derivs) then
@@ -554,10 +723,11 @@ contains
         else
             self%last_whole = .false.
         end if
-        if (self%valid .and. self%n >= m .and. (self%nfit == nfit .or. .not. derivs)) then
+        if (self%valid .and. self%n >= m .and. (self%nfit == nfit .or. .not. derivs) .and. &
+            (.not. self%rates .or. self%n == m)) then
             if (same_point(self%key, pt)) then
-                vals = self%v(1:m)
-                dv = self%dv(1:m, 1:nfit)
+                vals = self%v(1:mv)
+                dv = self%dv(1:mv, 1:nfit)
                 if (derivs .and. whole) self%fresh_dv = dv
                 return
             end if
@@ -571,12 +741,12 @@ contains
                 cols%xs = [fit%xs, self%carry%xs]
                 nx = size(self%carry%names)
             else if (allocated(self%jac_dv) .and. self%jac_gain <= REUSE_GAIN) then
-                reuse = size(self%jac_dv, 1) == m .and. size(self%jac_dv, 2) == nfit
+                reuse = size(self%jac_dv, 1) == mv .and. size(self%jac_dv, 2) == nfit
             end if
         end if
         if (reuse) then
             ! the model alone; its derivatives those of the last whole-record point
-            allocate (vals(m), dall(m, 0), none%names(0), none%xs(0))
+            allocate (vals(mv), dall(mv, 0), none%names(0), none%xs(0))
             call self%run(pt, t, none, vals, dall, stat)
             self%valid = .false.
             if (stat%code /= 0) return
@@ -586,7 +756,7 @@ contains
             call keep(self, pt, m, 0, 0, vals, dall)
             return
         end if
-        allocate (vals(m), dall(m, size(cols%names)))
+        allocate (vals(mv), dall(mv, size(cols%names)))
         call self%run(pt, t, cols, vals, dall, stat)
         self%valid = .false.
         if (stat%code /= 0) return
@@ -638,6 +808,7 @@ contains
         integer :: k
         ok = .false.
         if (.not. self%valid .or. self%n < m .or. self%nx /= ncols) return
+        if (self%rates .and. self%n /= m) return
         if (.not. allocated(self%x)) return
         if (size(self%x) /= size(x)) return
         do k = 1, size(x)
@@ -645,7 +816,7 @@ contains
                 (self%x(k)%u > 0.0_dp .neqv. x(k)%u > 0.0_dp)) return
         end do
         ok = same_point(self%key, pt)
-        if (ok) dv = self%dv(1:m, self%nfit + 1:)
+        if (ok) dv = self%dv(1:merge(3, 1, self%rates)*m, self%nfit + 1:)
     end subroutine carried
 
     !> The kept run and the derivatives to take again dropped, the gain set to 0: the next
@@ -675,14 +846,14 @@ contains
         if (same_point) same_point = same_start(a%st, b%st)
     end function same_point
 
-    !> The rig and start with the parameters p of the fit set (I1, c_v, c_q, amplitude), t0
-    !! and bias.
+    !> The rig and start with the parameters p of the fit set (I1, c_v, c_q, amplitude, I2,
+    !! I3, cg_depth, tilt, sway), t0 and the bias of each value of a sample.
     subroutine apply_parameters(prob, p, rg, st, t0, bias)
         type(record_fit_t), intent(in) :: prob
         real(dp), intent(in) :: p(:)
         type(rig_t), intent(out) :: rg
         type(start_t), intent(out) :: st
-        real(dp), intent(out) :: t0, bias
+        real(dp), intent(out) :: t0, bias(3)
         integer :: j
         rg = prob%rg
         st = prob%st
@@ -700,8 +871,22 @@ contains
                 st%amplitude = p(j)
             case (P_T0)
                 t0 = p(j)
+            case (P_I2)
+                rg%inertia(2) = p(j)
+            case (P_I3)
+                rg%inertia(3) = p(j)
+            case (P_CG)
+                call set_input(rg, st, 'cg_depth', p(j))
+            case (P_TILT)
+                st%tilt = p(j)
+            case (P_SWAY)
+                st%sway = p(j)
+            case (P_BIAS_Y)
+                bias(2) = p(j)
+            case (P_BIAS_Z)
+                bias(3) = p(j)
             case default
-                bias = p(j)
+                bias(1) = p(j)
             end select
         end do
     end subroutine apply_parameters
@@ -713,14 +898,56 @@ contains
         integer :: j
         do j = 1, prob%np
             names(j) = PARAM_NAMES(prob%which(j))
+            if (prob%which(j) == P_BIAS .and. prob%rates) names(j) = 'bias_x'
         end do
     end function estimated_names
 
-    !> The number of residuals of the problem: the samples ifirst .. nuse.
+    !> The number of residuals of the problem: the samples ifirst .. nuse (each value of a
+    !! sample: nout blocks).
     pure integer function record_nres(prob) result(n)
         class(record_fit_t), intent(in) :: prob
-        n = prob%nuse - prob%ifirst + 1
+        n = prob%nout*(prob%nuse - prob%ifirst + 1)
     end function record_nres
+
+    !> The measured values of the samples ifirst .. nuse, stacked as the residuals are (nout
+    !! blocks, one per value of a sample).
+    pure function stacked_values(prob) result(v)
+        type(record_fit_t), intent(in) :: prob
+        real(dp), allocatable :: v(:)
+        integer :: i0, i1, n
+        i0 = prob%ifirst
+        i1 = prob%nuse
+        if (prob%rates) then
+            n = size(prob%rec%t)
+            v = [prob%rec%vs(i0:i1), prob%rec%vs(n + i0:n + i1), prob%rec%vs(2*n + i0:2*n + i1)]
+        else
+            v = prob%rec%v(i0:i1)
+        end if
+    end function stacked_values
+
+    !> The weights of the residuals (1/u_i times the robust weights' roots), stacked.
+    pure function stacked_weights(prob) result(w)
+        type(record_fit_t), intent(in) :: prob
+        real(dp), allocatable :: w(:)
+        integer :: i0, i1
+        i0 = prob%ifirst
+        i1 = prob%nuse
+        w = prob%w(i0:i1)*prob%hw(i0:i1)
+        if (prob%nout == 3) w = [w, w, w]
+    end function stacked_weights
+
+    !> The bias of each residual, stacked (bias(k) over block k).
+    pure function stacked_bias(prob, bias) result(b)
+        type(record_fit_t), intent(in) :: prob
+        real(dp), intent(in) :: bias(3)
+        real(dp), allocatable :: b(:)
+        integer :: m, k
+        m = prob%nuse - prob%ifirst + 1
+        allocate (b(prob%nout*m))
+        do k = 1, prob%nout
+            b((k - 1)*m + 1:k*m) = bias(k)
+        end do
+    end function stacked_bias
 
     !> Residuals (sign model + bias - measured)/u_i (times the robust weights' roots) over
     !! the samples ifirst .. nuse.  A parameter set the model cannot take (I1 <= 0, an
@@ -730,15 +957,12 @@ contains
         real(dp), intent(in) :: p(:)
         real(dp), intent(out) :: r(:)
         type(status_t), intent(out) :: stat
-        real(dp) :: bias
+        real(dp) :: bias(3)
         real(dp), allocatable :: vals(:), dv(:, :)
-        integer :: i0, i1
         r = 0.0_dp
         call model_values(prob, p, .false., vals, dv, bias, stat)
         if (stat%code /= 0) return
-        i0 = prob%ifirst
-        i1 = prob%nuse
-        r = (prob%sign*vals + bias - prob%rec%v(i0:i1))*prob%w(i0:i1)*prob%hw(i0:i1)
+        r = (prob%sign*vals + stacked_bias(prob, bias) - stacked_values(prob))*stacked_weights(prob)
         if (.not. all_finite(r)) call set_error(stat, ERR_NUMERIC, 'non-finite model values')
     end subroutine record_residual
 
@@ -757,23 +981,24 @@ contains
         real(dp), intent(in) :: p(:)
         real(dp), intent(out) :: r(:), jac(:, :)
         type(status_t), intent(out) :: stat
-        real(dp) :: bias
-        real(dp), allocatable :: vals(:), dv(:, :)
-        integer :: i0, i1, j, c
+        real(dp) :: bias(3)
+        real(dp), allocatable :: vals(:), dv(:, :), w(:)
+        integer :: j, c, m, k
         r = 0.0_dp
         jac = 0.0_dp
         call model_values(prob, p, .true., vals, dv, bias, stat)
         if (stat%code /= 0) return
-        i0 = prob%ifirst
-        i1 = prob%nuse
-        r = (prob%sign*vals + bias - prob%rec%v(i0:i1))*prob%w(i0:i1)*prob%hw(i0:i1)
+        w = stacked_weights(prob)
+        m = prob%nuse - prob%ifirst + 1
+        r = (prob%sign*vals + stacked_bias(prob, bias) - stacked_values(prob))*w
         c = 0
         do j = 1, prob%np
-            if (prob%which(j) == P_BIAS) then
-                jac(:, j) = prob%w(i0:i1)*prob%hw(i0:i1)
+            if (is_bias(prob%which(j))) then
+                k = bias_axis(prob%which(j))
+                jac((k - 1)*m + 1:k*m, j) = w((k - 1)*m + 1:k*m)
             else
                 c = c + 1
-                jac(:, j) = prob%sign*dv(:, c)*prob%w(i0:i1)*prob%hw(i0:i1)
+                jac(:, j) = prob%sign*dv(:, c)*w
             end if
         end do
         if (.not. all_finite(r) .or. .not. all(ieee_is_finite(jac))) then
@@ -781,6 +1006,20 @@ contains
             return
         end if
     end subroutine record_residual_jacobian
+
+    !> A bias parameter (of the value or of an instrument axis).
+    pure logical function is_bias(which)
+        integer, intent(in) :: which
+        is_bias = which == P_BIAS .or. which == P_BIAS_Y .or. which == P_BIAS_Z
+    end function is_bias
+
+    !> The value (axis) a bias parameter offsets: 1, 2, 3.
+    pure integer function bias_axis(which)
+        integer, intent(in) :: which
+        bias_axis = 1
+        if (which == P_BIAS_Y) bias_axis = 2
+        if (which == P_BIAS_Z) bias_axis = 3
+    end function bias_axis
 
     !> The estimator's Gauss-Newton gain at the point just evaluated: to the evaluator
     !! (whether the next whole-record run carries the budget, or takes this Jacobian again).
@@ -831,7 +1070,7 @@ contains
         real(dp), intent(in) :: p(:)
         logical, intent(in) :: derivs
         real(dp), allocatable, intent(out) :: vals(:), dv(:, :)
-        real(dp), intent(out) :: bias
+        real(dp), intent(out) :: bias(3)
         type(status_t), intent(out) :: stat
         logical, intent(out), optional :: fresh     !! dv computed at p (not taken again)
         type(run_point_t) :: pt
@@ -844,8 +1083,9 @@ contains
         i1 = prob%nuse
         m = i1 - i0 + 1
         if (.not. (pt%rg%inertia(1) > 0.0_dp) .or. .not. (pt%st%amplitude > 0.0_dp .and. &
-            pt%st%amplitude < 180.0_dp)) then
-            allocate (vals(m), dv(m, 0))
+            pt%st%amplitude < 180.0_dp) .or. .not. all(pt%rg%inertia > 0.0_dp) .or. &
+            .not. (abs(pt%st%tilt) < 0.5_dp*pi .and. abs(pt%st%sway) < 0.5_dp*pi)) then
+            allocate (vals(prob%nout*m), dv(prob%nout*m, 0))
             vals = 0.0_dp
             call set_error(stat, ERR_NUMERIC, 'parameters out of the model''s range')
             return
@@ -853,7 +1093,7 @@ contains
         allocate (fit%names(0), fit%xs(0))
         if (derivs) then
             do j = 1, prob%np
-                if (prob%which(j) == P_BIAS) cycle
+                if (is_bias(prob%which(j))) cycle
                 fit%names = [character(len=16) :: fit%names, PARAM_NAMES(prob%which(j))]
                 fit%xs = [fit%xs, prob%xs(j)]
             end do
@@ -861,6 +1101,8 @@ contains
         ! the evaluator runs the problem's model: its accuracy and its quantity
         prob%runs%acc = prob%acc
         prob%runs%rate = prob%rate
+        prob%runs%rates = prob%rates
+        prob%runs%axes = prob%axes
         call prob%runs%values(pt, prob%rec%t(i0:i1), i1 == size(prob%rec%t), fit, vals, dv, &
                               stat, fresh)
     end subroutine model_values
@@ -1095,6 +1337,7 @@ contains
         type(record_start_t) :: rel
         real(dp) :: tp, vscale
         integer :: j, k, n
+        logical :: ok
         n = size(rec%t)
         prob%rg = rg
         prob%st = st
@@ -1103,6 +1346,14 @@ contains
         prob%rec = rec
         ! a rate by the deck's quantity, or by the unit the record's column names
         prob%rate = trim(mea%quantity) == 'rate' .or. rec%rate
+        prob%rates = trim(mea%quantity) == 'rates' .and. allocated(rec%vs)
+        if (prob%rates) then
+            prob%rate = .true.
+            prob%nout = 3
+            call parse_axes(mea%record_axes, prob%axes, ok)
+            ! the rate about the vertical the instrument's axes give: W = -omega . b_1 at rest
+            call vertical_of_rates(prob%rec, prob%axes)
+        end if
         prob%t0 = 0.0_dp
         prob%bias = 0.0_dp
         prob%sign = 1.0_dp
@@ -1113,22 +1364,26 @@ contains
         prob%hw = 1.0_dp
         prob%np = 0
         do k = 1, NPARAM
-            if (mea%estimated(PARAM_NAMES(k))) then
+            if (mea%estimated(PARAM_NAMES(k)) .or. (prob%rates .and. mea%estimated('bias') &
+                                                    .and. (k == P_BIAS_Y .or. k == P_BIAS_Z))) then
                 prob%np = prob%np + 1
                 prob%which(prob%np) = k
             end if
         end do
         if (mea%estimated('t0')) then
-            call find_release(rec, prob%rate, rel)
+            call find_release(prob%rec, prob%rate, rel)
             prob%sign = rel%sign
             prob%ifirst = rel%ifirst
+            ! the instrument's rates: the model's own sign (a release turned the other way
+            ! is no mirror image of the horizontal rates)
+            if (prob%rates) prob%sign = 1.0_dp
         end if
         if (present(rl)) rl = rel
         allocate (p0(prob%np), h(prob%np))
         prob%xs = 1.0_dp
-        tp = mean_period(rec, prob%ifirst)
+        tp = mean_period(prob%rec, prob%ifirst)
         if (.not. (tp > 0.0_dp)) tp = rec%t(n) - rec%t(1)
-        vscale = max(maxval(abs(rec%v)), tiny(1.0_dp))
+        vscale = max(maxval(abs(prob%rec%v)), tiny(1.0_dp))
         do j = 1, prob%np
             select case (prob%which(j))
             case (P_I1)
@@ -1147,10 +1402,27 @@ contains
             case (P_T0)
                 p0(j) = rel%t0
                 h(j) = H_REL*tp
+            case (P_I2, P_I3)
+                k = prob%which(j) - P_I2 + 2
+                p0(j) = rg%inertia(k)
+                h(j) = H_REL*rg%inertia(k)
+            case (P_CG)
+                p0(j) = input_value(rg, st, 'cg_depth')
+                h(j) = H_REL*max(abs(p0(j)), 0.1_dp*rg%b_prime)
+            case (P_TILT)
+                p0(j) = st%tilt
+                h(j) = H_REL*max(abs(p0(j)), SMALL_ANGLE)
+            case (P_SWAY)
+                p0(j) = st%sway
+                h(j) = H_REL*max(abs(p0(j)), SMALL_ANGLE)
+            case (P_BIAS_Y, P_BIAS_Z)
+                p0(j) = 0.0_dp
+                h(j) = H_REL*vscale
             case default
                 p0(j) = 0.0_dp
                 if (mea%estimated('t0')) p0(j) = rel%level
                 if (prob%rate .and. mea%estimated('t0') .and. .not. rel%held) p0(j) = 0.0_dp
+                if (prob%rates) p0(j) = 0.0_dp
                 h(j) = H_REL*vscale
             end select
             prob%xs(j) = h(j)/H_REL
@@ -1165,7 +1437,7 @@ contains
     !! window's estimate predicts the model well enough to stay in the fit's basin there
     !! (window_growth), and at least twice as long.  res: the last fit (whole record);
     !! iterations summed over windows.
-    subroutine fit_record(prob, p0, h, res, stat, loss)
+    subroutine fit_windows(prob, p0, h, res, stat, loss)
         type(record_fit_t), intent(inout) :: prob
         real(dp), intent(in) :: p0(:), h(:)
         type(lsq_result_t), intent(out) :: res
@@ -1231,7 +1503,201 @@ contains
             if (w < span) window_end = max(count(prob%rec%t <= tstart + w), &
                                            prob%ifirst + 2*prob%np + 1)
         end function window_end
+    end subroutine fit_windows
+    !> Fit the record (fit_windows).  A fit of the release's tilt or sway or of the body's
+    !! other moments or its mass centre (I2, I3, cg_depth) goes in stages: the parameters
+    !! but I2, I3, cg_depth on the first two mean periods (where the errors of their start
+    !! values have not yet turned the swings' phases; the tilt and sway found there from
+    !! their start values, 0 as a rule, at which I2, I3 and cg_depth have no effect), then
+    !! all but I2 on growing windows (with I3 or cg_depth), then all on the whole record.
+    !! What the record separates is checked (check_separable, record_determines) before
+    !! the last stage, or at the start values when neither tilt nor sway is estimated (then
+    !! they are the release's): a parameter the record does not depend on, or two it cannot
+    !! tell apart, is refused (ERR_DECK naming them).
+    subroutine fit_record(prob, p0, h, res, stat, loss)
+        type(record_fit_t), intent(inout) :: prob
+        real(dp), intent(in) :: p0(:), h(:)
+        type(lsq_result_t), intent(out) :: res
+        type(status_t), intent(out) :: stat
+        integer, intent(in), optional :: loss   !! LOSS_SQUARES (the default) or LOSS_HUBER
+        type(record_fit_t) :: sub
+        type(lsq_result_t) :: part
+        type(lsq_options_t) :: opts
+        real(dp), allocatable :: p(:)
+        logical :: later(prob%np), new_kind
+        real(dp) :: tp
+        integer :: j, iters, evals, stage
+        integer, allocatable :: keep(:)
+        new_kind = any([(any(prob%which(j) == [P_I2, P_I3, P_CG, P_TILT, P_SWAY]), &
+                         j=1, prob%np)])
+        if (.not. new_kind) then
+            call fit_windows(prob, p0, h, res, stat, loss)
+            return
+        end if
+        p = p0
+        iters = 0
+        evals = 0
+        if (.not. any([(any(prob%which(j) == [P_TILT, P_SWAY]), j=1, prob%np)])) then
+            ! the start values are the release's: what the record separates, at once
+            prob%nuse = size(prob%rec%t)
+            call check_separable(prob, p, stat)
+            if (stat%code /= 0) return
+        end if
+        ! the stages: without I2, I3, cg_depth on the first two periods (where their start
+        ! values' errors have not yet turned the swing's phases), then without I2 (the
+        ! moment about the axis across CD, which the swing about CD and the sway along n1
+        ! show least) on growing windows, then all on the whole record
+        do stage = 1, 2
+            if (stage == 1) then
+                later = [(any(prob%which(j) == [P_I2, P_I3, P_CG]), j=1, prob%np)]
+            else
+                later = [(prob%which(j) == P_I2, j=1, prob%np)]
+            end if
+            if (.not. any(later) .or. all(later)) cycle
+            if (stage == 2 .and. .not. any([(any(prob%which(j) == [P_I3, P_CG]), &
+                                              j=1, prob%np)])) cycle
+            keep = pack([(j, j=1, prob%np)], .not. later)
+            sub = prob
+            sub%np = size(keep)
+            sub%which = 0
+            sub%which(1:sub%np) = prob%which(keep)
+            sub%xs = 1.0_dp
+            sub%xs(1:sub%np) = prob%xs(keep)
+            if (stage == 1) then
+                tp = mean_period(sub%rec, sub%ifirst)
+                if (.not. (tp > 0.0_dp)) tp = sub%rec%t(size(sub%rec%t)) - sub%rec%t(1)
+                sub%nuse = max(count(sub%rec%t <= sub%rec%t(sub%ifirst) + 2.0_dp*tp), &
+                               sub%ifirst + 2*sub%np + 1)
+                sub%nuse = min(sub%nuse, size(sub%rec%t))
+                opts%h = h(keep)
+                opts%names = estimated_names(sub)
+                call estimate(sub, p(keep), opts, part, stat)
+            else
+                call fit_windows(sub, p(keep), h(keep), part, stat)
+            end if
+            if (stat%code /= 0) then
+                res = part
+                return
+            end if
+            p(keep) = part%p
+            iters = iters + part%iterations
+            evals = evals + part%evaluations
+        end do
+        prob%nuse = size(prob%rec%t)
+        call check_separable(prob, p, stat)
+        if (stat%code /= 0) return
+        opts%h = h
+        opts%names = estimated_names(prob)
+        opts%loss = LOSS_SQUARES
+        if (present(loss)) opts%loss = loss
+        call estimate(prob, p, opts, res, stat)
+        res%iterations = res%iterations + iters
+        res%evaluations = res%evaluations + evals
     end subroutine fit_record
+
+    !> What a record determines of the parameters estimated, from the Jacobian J of its
+    !! residuals (columns scaled to unit norm): the condition number, the largest
+    !! off-diagonal element of the parameters' correlation matrix and its pair, and a
+    !! parameter whose column is nil against the others' (the record does not depend on
+    !! it; flat).  xs: each parameter's size (a column's effect is |J_j| xs_j).
+    subroutine record_determines(jac, xs, d)
+        real(dp), intent(in) :: jac(:, :), xs(:)
+        type(determines_t), intent(out) :: d
+        real(dp) :: cn(size(jac, 2)), js(size(jac, 1), size(jac, 2)), sv(size(jac, 2))
+        real(dp) :: vt(size(jac, 2), size(jac, 2)), cov(size(jac, 2), size(jac, 2)), c
+        type(status_t) :: st
+        integer :: n, i, j
+        n = size(jac, 2)
+        d%np = n
+        d%cond = 1.0_dp
+        d%corr_max = 0.0_dp
+        if (n == 0) return
+        do j = 1, n
+            cn(j) = norm2(jac(:, j))
+        end do
+        do j = 1, n
+            if (.not. (cn(j)*xs(j) > FLAT_REL*maxval(cn*xs))) then
+                d%flat = j
+                d%cond = huge(1.0_dp)
+                return
+            end if
+            js(:, j) = jac(:, j)/cn(j)
+        end do
+        if (n < 2) return
+        call la_svd(js, sv, vt, st)
+        if (st%code /= 0 .or. .not. (sv(n) > 0.0_dp)) then
+            d%cond = huge(1.0_dp)
+            d%corr_max = 1.0_dp
+            d%pair = [1, 2]
+            return
+        end if
+        d%cond = sv(1)/sv(n)
+        do j = 1, n
+            do i = 1, n
+                cov(i, j) = sum(vt(:, i)*vt(:, j)/sv**2)
+            end do
+        end do
+        do j = 2, n
+            do i = 1, j - 1
+                c = abs(cov(i, j))/sqrt(cov(i, i)*cov(j, j))
+                if (c > d%corr_max) then
+                    d%corr_max = c
+                    d%pair = [i, j]
+                end if
+            end do
+        end do
+    end subroutine record_determines
+
+    !> The check of what the record separates before the fit of all the parameters, at p:
+    !! refused (ERR_DECK, one line naming the parameter or the pair) when the record does
+    !! not depend on one (record_determines' flat), or when the correlation of two exceeds
+    !! CORR_REFUSE or the condition number COND_REFUSE.
+    subroutine check_separable(prob, p, stat)
+        type(record_fit_t), intent(inout) :: prob
+        real(dp), intent(in) :: p(:)
+        type(status_t), intent(out) :: stat
+        real(dp), allocatable :: r(:), jac(:, :)
+        character(len=16) :: names(prob%np)
+        type(determines_t) :: d
+        type(status_t) :: st
+        allocate (r(prob%nres()), jac(prob%nres(), prob%np))
+        stat%code = 0
+        names = estimated_names(prob)
+        if (prob%has_jacobian()) then
+            call record_residual_jacobian(prob, p, r, jac, st)
+        else
+            call prob%residual(p, r, st)
+            if (st%code == 0) call lsq_jacobian(prob, p, r, H_REL*prob%xs(1:prob%np), jac, st)
+        end if
+        if (st%code /= 0) return               ! the fit says what fails
+        call record_determines(jac, prob%xs(1:prob%np), d)
+        if (d%flat > 0) then
+            call set_error(stat, ERR_DECK, '&measurement estimate = '''// &
+                trim(join_names(names))//''': the record cannot give '// &
+                trim(names(d%flat))//': it does not depend on it (a release without tilt '// &
+                'or sway shows no swing about the horizontal axes); allowed: estimate '// &
+                'without '//trim(names(d%flat))//', or a record whose release tilts or sways '// &
+                '(quantity = ''rates'', tilt and sway estimated)')
+        else if (d%corr_max > CORR_REFUSE .or. d%cond > COND_REFUSE) then
+            call set_error(stat, ERR_DECK, '&measurement estimate = '''// &
+                trim(join_names(names))//''': the record cannot separate '// &
+                trim(names(d%pair(1)))//' and '//trim(names(d%pair(2)))//' (correlation '// &
+                sci(d%corr_max, 6)//', condition number '//sci(d%cond, 2)//'); allowed: '// &
+                'estimate one of them, or a longer record or a release that moves both')
+        end if
+    contains
+        pure function join_names(nm) result(s)
+            character(len=*), intent(in) :: nm(:)
+            character(len=:), allocatable :: s
+            integer :: k
+            s = ''
+            do k = 1, size(nm)
+                s = s//trim(nm(k))
+                if (k < size(nm)) s = s//' '
+            end do
+        end function join_names
+    end subroutine check_separable
+
 
     !> How much longer than the window just fitted (samples ifirst .. nuse, fit `part`) the
     !! next may be.  The estimate's covariance C = s^2 (J^T J)^-1 gives the model's standard
@@ -1249,9 +1715,9 @@ contains
         real(dp), intent(in) :: tp              !! the record's mean period (s)
         real(dp), parameter :: WINDOW_SIGMAS = 5.0_dp, WINDOW_PHASE = 0.2_dp, GROWTH_MAX = 1.0e6_dp
         real(dp), allocatable :: cov(:, :)
-        real(dp) :: s2, sig, sigw, vmin, vmax, tend, gi(prob%np)
+        real(dp) :: s2, sig, sigw, vmin, vmax, tend, gi(prob%np), vi
         type(status_t) :: st
-        integer :: m, i, k
+        integer :: m, i, k, o, ms
         g = 2.0_dp
         m = size(part%r)
         if (m <= prob%np .or. prob%np == 0 .or. .not. allocated(part%jac)) return
@@ -1262,14 +1728,19 @@ contains
         sigw = 0.0_dp
         vmin = huge(1.0_dp)
         vmax = -huge(1.0_dp)
-        do i = prob%ifirst, prob%nuse
-            if (prob%rec%t(i) < tend - tp) cycle
-            k = i - prob%ifirst + 1
-            gi = part%jac(k, :)/(prob%w(i)*prob%hw(i))
-            sig = sqrt(max(0.0_dp, dot_product(gi, matmul(cov, gi))))
-            sigw = max(sigw, sig)
-            vmin = min(vmin, prob%rec%v(i))
-            vmax = max(vmax, prob%rec%v(i))
+        ms = prob%nuse - prob%ifirst + 1
+        do o = 1, prob%nout
+            do i = prob%ifirst, prob%nuse
+                if (prob%rec%t(i) < tend - tp) cycle
+                k = (o - 1)*ms + i - prob%ifirst + 1
+                gi = part%jac(k, :)/(prob%w(i)*prob%hw(i))
+                sig = sqrt(max(0.0_dp, dot_product(gi, matmul(cov, gi))))
+                sigw = max(sigw, sig)
+                vi = prob%rec%v(i)
+                if (prob%rates) vi = prob%rec%vs((o - 1)*size(prob%rec%t) + i)
+                vmin = min(vmin, vi)
+                vmax = max(vmax, vi)
+            end do
         end do
         if (.not. (vmax > vmin)) return
         ! an exact fit (sigma_w 0 or at roundoff): the next window is the whole record
@@ -1365,8 +1836,8 @@ contains
         type(status_t), intent(out) :: stat
         type(rig_t) :: rg
         type(start_t) :: st
-        real(dp) :: t0, bias
-        real(dp), allocatable :: vals(:), dv(:, :), xs(:)
+        real(dp) :: t0, bias(3)
+        real(dp), allocatable :: vals(:), dv(:, :), xs(:), w(:)
         character(len=16), allocatable :: names(:)
         integer, allocatable :: idx(:)
         integer :: i0, i1, j, c, m
@@ -1398,18 +1869,23 @@ contains
         m = i1 - i0 + 1
         call prob%runs%carried(run_point_t(rg, st, t0), m, x, size(names), dv, ok)
         if (.not. ok) then
-            allocate (vals(m), dv(m, size(names)))
-            call record_model_sens(rg, st, prob%acc, prob%rec%t(i0:i1), t0, prob%rate, &
-                                   names, xs, vals, dv, stat)
+            allocate (vals(prob%nout*m), dv(prob%nout*m, size(names)))
+            if (prob%rates) then
+                call record_model_sens(rg, st, prob%acc, prob%rec%t(i0:i1), t0, prob%rate, &
+                                       names, xs, vals, dv, stat, prob%axes)
+            else
+                call record_model_sens(rg, st, prob%acc, prob%rec%t(i0:i1), t0, prob%rate, &
+                                       names, xs, vals, dv, stat)
+            end if
             runs = 1
             if (stat%code /= 0) then
                 stat%msg = 'sensitivities to the inputs: '//stat%msg
                 return
             end if
         end if
+        w = stacked_weights(prob)
         do c = 1, size(names)
-            call la_lstsq(jac, prob%sign*dv(:, c)*prob%w(i0:i1)*prob%hw(i0:i1), dpdx(:, idx(c)), &
-                          stat)
+            call la_lstsq(jac, prob%sign*dv(:, c)*w, dpdx(:, idx(c)), stat)
             if (stat%code /= 0) return
             dpdx(:, idx(c)) = -dpdx(:, idx(c))
         end do
@@ -1476,7 +1952,7 @@ contains
         type(lsq_options_t) :: opts
         real(dp) :: p(size(self%phat)), dp_(size(self%phat)), r(size(self%jac, 1))
         real(dp) :: h(size(self%phat)), dx(size(self%x)), d, dprev, rate
-        integer :: j, it, i0, i1
+        integer :: j, it, o
         logical :: done
         est = 0.0_dp
         g = rng_stream(self%prob%seed, k)
@@ -1488,7 +1964,17 @@ contains
                 call set_input(q%rg, q%st, self%x(j)%name, self%x(j)%value + dx(j))
             end if
         end do
+        if (q%rates) then
+            do o = 1, 3
+                do j = 1, size(q%rec%t)
+                    q%rec%vs((o - 1)*size(q%rec%t) + j) = self%prob%rec%vs((o - 1)* &
+                        size(q%rec%t) + j) + self%sigma*rng_normal(g)/ &
+                        self%prob%w(j)
+                end do
+            end do
+        end if
         do j = 1, size(q%rec%v)
+            if (q%rates) exit
             if (self%prob%rec%has_u) then
                 q%rec%v(j) = self%prob%rec%v(j) + self%prob%rec%u(j)*rng_normal(g)
             else
@@ -1499,10 +1985,8 @@ contains
         p = self%phat
         if (q%has_jacobian() .and. allocated(self%dpdx)) then
             ! the first-order estimate: the inputs' part, and the values' noise through J^+
-            i0 = q%ifirst
-            i1 = q%nuse
-            call la_lstsq(self%jac, (q%rec%v(i0:i1) - self%prob%rec%v(i0:i1))*q%w(i0:i1)* &
-                          q%hw(i0:i1), dp_, stat)
+            call la_lstsq(self%jac, (stacked_values(q) - stacked_values(self%prob))* &
+                          stacked_weights(q), dp_, stat)
             if (stat%code == 0) p = p + dp_ + matmul(self%dpdx, dx)
         end if
         ! each step measured against its tolerance, MC_TOL u of its parameter; the iteration
@@ -1594,5 +2078,19 @@ contains
         if (stat%code == 0) call files%commit(stat)
         if (stat%code /= 0) call files%discard()
     end subroutine make_record
+
+
+    !> A record of quantity 'rates': its value v set to the rate about the vertical the
+    !! instrument's three rates give, W = -omega . b_1 (b_1 points down at rest), for the
+    !! release, the period and the checks of a one-value record.
+    pure subroutine vertical_of_rates(rec, axes)
+        type(record_t), intent(inout) :: rec
+        real(dp), intent(in) :: axes(3, 3)      !! the instrument's axes in b_i (rows)
+        integer :: n
+        if (.not. allocated(rec%vs)) return
+        n = size(rec%t)
+        rec%v = -(axes(1, 1)*rec%vs(1:n) + axes(2, 1)*rec%vs(n + 1:2*n) + &
+                  axes(3, 1)*rec%vs(2*n + 1:3*n))
+    end subroutine vertical_of_rates
 
 end module record_fit

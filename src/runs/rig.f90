@@ -95,6 +95,7 @@ contains
         st%mode = trim(sta%mode)
         st%amplitude = sta%amplitude
         st%tilt = sta%tilt
+        st%sway = sta%sway
         st%theta = sta%theta
         st%theta_dot = sta%theta_dot
     end function start_of_group
@@ -176,6 +177,7 @@ contains
                 return
             end if
             th0(1) = th0(1) + st%tilt
+            if (st%sway /= 0.0_dp) call swayed(th0)
         else
             th0 = [st%theta, 0.0_dp]
             thd(1:4) = st%theta_dot
@@ -195,6 +197,16 @@ contains
         end if
         thd(5) = sum(beta(1:4)*thd(1:4))/beta(5)
         y0 = chart_state(th0, thd)
+    contains
+        !> theta_2, theta_3 with cable BC's horizontal direction moved by sin(sway) along n_1.
+        pure subroutine swayed(th)
+            real(dp), intent(inout) :: th(5)
+            real(dp) :: hx, hy
+            hx = sin(th(2))*cos(th(3)) + sin(st%sway)
+            hy = sin(th(2))*sin(th(3))
+            th(2) = asin(min(1.0_dp, sqrt(hx**2 + hy**2)))
+            th(3) = atan2(hy, hx)
+        end subroutine swayed
     end subroutine start_state
 
     !> Two rigs are the same, value for value (every component of rig_t: keep in step).
@@ -214,7 +226,7 @@ contains
     pure logical function same_start(a, b)
         type(start_t), intent(in) :: a, b
         same_start = a%mode == b%mode .and. a%amplitude == b%amplitude .and. &
-                     a%tilt == b%tilt .and. all(a%theta == b%theta) .and. &
+                     a%tilt == b%tilt .and. a%sway == b%sway .and. all(a%theta == b%theta) .and. &
                      all(a%theta_dot == b%theta_dot)
     end function same_start
 

@@ -394,6 +394,10 @@ contains
         mode = lower(adjustl(self%mode))
         call finite(stat, 'start', 'amplitude', self%amplitude)
         call finite(stat, 'start', 'tilt', self%tilt)
+        call finite(stat, 'start', 'sway', self%sway)
+        if (stat%code == STATUS_OK .and. abs(self%sway) > 0.5_dp) call bad(stat, 'start', &
+            'sway', rshort(self%sway), 'out of range', '|sway| <= 0.5 rad (the cables'' '// &
+            'swing out of their plane at the release: a small angle)')
         do i = 1, 4
             call finite(stat, 'start', 'theta', self%theta(i))
             call finite(stat, 'start', 'theta_dot', self%theta_dot(i))

@@ -112,11 +112,14 @@ module rig_groups
         procedure :: centre
     end type body_group_t
 
-    !> &start: mode 'raised' (the paper's recipe, amplitude in degrees, tilt in rad) or
-    !! 'angles' (theta_1..4 in rad and their rates per unit tau).
+    !> &start: mode 'raised' (the paper's recipe, amplitude in degrees, tilt and sway in
+    !! rad) or 'angles' (theta_1..4 in rad and their rates per unit tau).
     type, extends(deck_group_t), public :: start_group_t
         character(len=256) :: mode = DEFAULT_MODE
         real(dp) :: amplitude = DEFAULT_AMPLITUDE, tilt = DEFAULT_TILT     !! degrees, radians
+        !> rad: the cables swung out of their plane at the release (start_t's sway; the body
+        !! displaced by about l sway); 0: none
+        real(dp) :: sway = 0.0_dp
         real(dp) :: theta(4) = DEFAULT_THETA, theta_dot(4) = DEFAULT_THETA_DOT
     contains
         procedure, nopass :: name => start_name
@@ -462,18 +465,19 @@ contains
 
     function start_spec() result(s)
         character(len=:), allocatable :: s
-        s = 'mode:c1 amplitude:r1 tilt:r1 theta:r4 theta_dot:r4'
+        s = 'mode:c1 amplitude:r1 tilt:r1 theta:r4 theta_dot:r4 sway:r1'
     end function start_spec
 
-    !> &start mode, amplitude, tilt, theta, theta_dot.
+    !> &start mode, amplitude, tilt, theta, theta_dot, sway.
     subroutine read_start(self, rec, ios, msg)
         class(start_group_t), intent(inout) :: self !! defaults in, values read out
         character(len=*), intent(in) :: rec         !! the group as one record
         integer, intent(out) :: ios                 !! iostat of the namelist read
         character(len=*), intent(inout) :: msg      !! iomsg of the namelist read
         character(len=256) :: mode
-        real(dp) :: amplitude, tilt, theta(4), theta_dot(4)
-        namelist /start/ mode, amplitude, tilt, theta, theta_dot
+        real(dp) :: amplitude, tilt, theta(4), theta_dot(4), sway
+        namelist /start/ mode, amplitude, tilt, theta, theta_dot, sway
+        sway = self%sway
         mode = self%mode
         amplitude = self%amplitude
         tilt = self%tilt
@@ -485,6 +489,7 @@ contains
         self%tilt = tilt
         self%theta = theta
         self%theta_dot = theta_dot
+        self%sway = sway
     end subroutine read_start
 
     function echo_start(self) result(line)
@@ -492,7 +497,9 @@ contains
         character(len=:), allocatable :: line
         line = '# &start mode = '//quoted(self%mode)//', amplitude = '// &
             rshort(self%amplitude)//', tilt = '//rshort(self%tilt)//', theta = '// &
-            rlist_short(self%theta)//', theta_dot = '//rlist_short(self%theta_dot)//' /'
+            rlist_short(self%theta)//', theta_dot = '//rlist_short(self%theta_dot)
+        if (self%sway /= 0.0_dp) line = line//', sway = '//rshort(self%sway)
+        line = line//' /'
     end function echo_start
 
     !> mode in lower case; tilt and theta reduced modulo 2 pi into [-pi, pi] (the

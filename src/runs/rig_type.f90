@@ -46,6 +46,10 @@ module rig_type
         character(len=16) :: mode = DEFAULT_MODE
         real(dp) :: amplitude = DEFAULT_AMPLITUDE   !! degrees (mode 'raised')
         real(dp) :: tilt = DEFAULT_TILT             !! rad, added to theta_1 (mode 'raised')
+        !> rad (mode 'raised'): the cables' swing out of their plane at the release, the
+        !! horizontal component of cable BC's direction along n_1 raised by sin(sway) (the
+        !! body displaced by about l sway); 0: none
+        real(dp) :: sway = 0.0_dp
         real(dp) :: theta(4) = DEFAULT_THETA        !! rad (mode 'angles')
         real(dp) :: theta_dot(4) = DEFAULT_THETA_DOT    !! rad per unit tau (mode 'angles')
     end type start_t

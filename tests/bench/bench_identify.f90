@@ -13,6 +13,11 @@
 !!   bench_identify record_differences N  the same with &integration sensitivities =
 !!                                  'differences' (the Jacobian and the budget's input
 !!                                  sensitivities from differences of whole runs)
+!!   bench_identify rates N         the fit of a 3-axis gyro record (30 s, 100 Hz; made here:
+!!                                  the laboratory rig of input/identify_record.nml released
+!!                                  with 2 degrees of tilt and 1 cm of sway, noise and bias)
+!!                                  with six parameters, I1 I2 I3 cg_depth tilt sway, and the
+!!                                  three axes' biases, and its first-order budget
 !!   bench_identify mc N            N Monte Carlo samples from the periods of
 !!                                  input/identify_periods.nml (one unit = one sample; OpenMP
 !!                                  threads as set, OMP_NUM_THREADS)
@@ -27,6 +32,9 @@ program bench_identify
     use period_inversion, only: input_u_t, period_fit_t, invert_periods, period_monte_carlo
     use identify, only: identify_result_t, identify_record
     use records, only: record_t
+    use rig, only: rig_t, start_t, accuracy_t
+    use record_fit, only: record_model
+    use random, only: rng_t, rng_stream, rng_normal
     implicit none
     character(len=256) :: mode
     type(deck_t) :: d
@@ -87,10 +95,82 @@ program bench_identify
             sumck = sumck + res%i1
         end do
         call cpu_time(t1)
+    case ('rates')
+        call rates_record()
+        call read_deck('build/bench_rates.nml', d, st)
+        call need(st, 'bench_identify')
+        call cpu_time(t0)
+        do k = 1, n
+            call identify_record(d, rec, res, st)
+            call need(st, 'bench_identify')
+            sumck = sumck + res%i1
+        end do
+        call cpu_time(t1)
     case default
-        write (*, '(a)') 'usage: bench_identify periods|periods_asym|record|record_differences|mc N'
+        write (*, '(a)') 'usage: bench_identify periods|periods_asym|record|record_differences|'// &
+            'rates|mc N'
         stop 1
     end select
     write (*, '(a,1x,i0,es14.5,es24.15)') trim(mode), units, (t1 - t0)/max(1, units), sumck
+contains
+    !> The 3-axis gyro record of mode 'rates' (rec) and its deck (build/bench_rates.nml).
+    subroutine rates_record()
+        integer, parameter :: NS = 3001
+        type(rig_t) :: rg
+        type(start_t) :: st0
+        type(accuracy_t) :: acc
+        type(rng_t) :: g
+        real(dp) :: vals(3*NS), axes(3, 3)
+        integer :: i, j, io
+        rg%b = 0.40_dp
+        rg%b_prime = 0.40_dp
+        rg%l = 1.20_dp
+        rg%l_prime = 1.18_dp
+        rg%g = 9.80665_dp
+        rg%mass = 3.10_dp
+        rg%inertia = [0.0512_dp, 0.0630_dp, 0.0304_dp]
+        rg%r = 0.25_dp
+        rg%lambda = 0.64_dp
+        rg%c_v = 0.0_dp
+        rg%c_q = 0.0_dp
+        st0%mode = 'raised'
+        st0%amplitude = 30.0_dp
+        st0%tilt = 2.0_dp*3.141592653589793_dp/180.0_dp
+        st0%sway = 0.01_dp/rg%l
+        acc%rtol = 1.0e-10_dp
+        acc%atol = 1.0e-12_dp
+        axes = 0.0_dp
+        do i = 1, 3
+            axes(i, i) = 1.0_dp
+        end do
+        allocate (rec%t(NS), rec%v(NS), rec%u(NS), rec%vs(3*NS))
+        do i = 1, NS
+            rec%t(i) = 0.01_dp*(i - 1)
+        end do
+        call record_model(rg, st0, acc, rec%t, 0.0_dp, .true., vals, st, axes)
+        call need(st, 'bench_identify')
+        g = rng_stream(7, 0)
+        do j = 1, 3
+            do i = 1, NS
+                rec%vs((j - 1)*NS + i) = vals((j - 1)*NS + i) + 0.002_dp*j + &
+                    0.003_dp*rng_normal(g)
+            end do
+        end do
+        rec%v = -rec%vs(1:NS)
+        rec%u = 1.0_dp
+        rec%rate = .true.
+        rec%units = 'rad/s'
+        open (newunit=io, file='build/bench_rates.nml', status='replace', action='write')
+        write (io, '(a)') '&scene title = ''3-axis gyro'', analyses = ''identify'' /'
+        write (io, '(a)') '&suspension b = 0.40, b_prime = 0.40, l = 1.20, l_prime = 1.18, '// &
+            'g = 9.80665 /'
+        write (io, '(a)') '&body mass = 3.10, inertia = 0.0502, 0.0670, 0.0284, '// &
+            'cg_depth = 0.14, cg_offset = 0.000525 /'
+        write (io, '(a)') '&start mode = ''raised'', amplitude = 30.0 /'
+        write (io, '(a)') '&integration rtol = 1e-10, atol = 1e-12 /'
+        write (io, '(a)') '&measurement record = ''bench_rates.dat'', quantity = ''rates'', '// &
+            'estimate = ''I1 I2 I3 cg_depth tilt sway bias'' /'
+        close (io)
+    end subroutine rates_record
 
 end program bench_identify

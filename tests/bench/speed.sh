@@ -79,6 +79,8 @@ $(cpu_unit "$bin/bench_identify" periods 200)"
 $(cpu_unit "$bin/bench_identify" periods_asym 10)"
     echo "identify_record_3par $(per_unit 1 "$bin/bench_identify" record) \
 $(cpu_unit "$bin/bench_identify" record 3)"
+    echo "identify_record_rates_6par $(per_unit 1 "$bin/bench_identify" rates) \
+$(cpu_unit "$bin/bench_identify" rates 3)"
     echo "identify_record_3par_differences $(per_unit 1 "$bin/bench_identify" record_differences) \
 $(cpu_unit "$bin/bench_identify" record_differences 3)"
     # tensor: the CubeSat's 9 hangs (27 timings at 10-15 degrees, directions 1-3 degrees
