@@ -52,10 +52,25 @@ contains
             d%measurement%tare_mass /= 0.0_dp .or. d%measurement%added_inertia /= 0.0_dp .or. &
             d%measurement%u_added_inertia /= 0.0_dp) then
             call set_error(stat, ERR_DECK, 'analyses = ''tensor'': &measurement tare_i1, '// &
-                'u_tare_i1, tare_mass, added_inertia: a tare or added inertia of identify''s '// &
-                'single hang, which tensor cannot take (its periods give the tensor of all '// &
-                'that hung, in every hang); allowed: none of them in a deck with analyses = '// &
-                '''tensor'' (run identify from a deck of its own)')
+                'u_tare_i1, tare_mass, added_inertia: a tare or added inertia about '// &
+                'identify''s single axis, which tensor cannot take (what hangs with the body '// &
+                'turns with it from hang to hang); allowed: none of them in a deck with '// &
+                'analyses = ''tensor'', and the fixture as &tensor fixture_* (fixture_mass, '// &
+                'fixture_cg, fixture_inertia, their u_fixture_*, fixture_frame): it enters '// &
+                'each hang''s model')
+            return
+        end if
+        if (d%tensor%estimates_cg() .and. d%tensor%monte_carlo > 0) then
+            call set_error(stat, ERR_DECK, '&tensor estimate = ''tensor cg'' with '// &
+                'monte_carlo = '//itoa(d%tensor%monte_carlo)//': the Monte Carlo refits the '// &
+                'six entries alone; allowed: monte_carlo = 0 with estimate = ''tensor cg'' '// &
+                '(the first-order joint covariance), or estimate = ''tensor''')
+            return
+        end if
+        if (d%tensor%estimates_cg() .and. len_trim(d%tensor%hangs) == 0) then
+            call set_error(stat, ERR_DECK, '&tensor estimate = ''tensor cg'': no table of '// &
+                'hangs; allowed: hangs = ''FILE'' (the mass centre is fitted to its periods '// &
+                'and attitudes)')
             return
         end if
         if (trim(d%scene%model) /= 'kane') then
@@ -64,20 +79,6 @@ contains
                 'model = ''kane''')
             return
         end if
-        associate (m => d%measurement)
-            if (any([m%tare_i1, m%u_tare_i1, m%tare_mass, m%added_inertia, &
-                     m%u_added_inertia] /= 0.0_dp)) then
-                call set_error(stat, ERR_DECK, 'analyses = ''tensor'': &measurement tare_i1 = '// &
-                    rshort(m%tare_i1)//', u_tare_i1 = '//rshort(m%u_tare_i1)//', tare_mass = '// &
-                    rshort(m%tare_mass)//', added_inertia = '//rshort(m%added_inertia)// &
-                    ', u_added_inertia = '//rshort(m%u_added_inertia)//': a tare is a moment '// &
-                    'about the one axis of identify; the tensor''s fit takes none (the '// &
-                    'fixture''s tensor is not known); allowed: all 0 with tensor (fit the '// &
-                    'fixture''s own hangs and subtract its tensor), or the tare in a deck of '// &
-                    'analyses = ''identify''')
-                return
-            end if
-        end associate
         if (len_trim(d%tensor%hangs) > 0) then
             if (.not. (d%body%gave('inertia') .or. d%body%gave('size'))) then
                 call set_error(stat, ERR_DECK, 'analyses = ''tensor'': not given: &body '// &
@@ -417,6 +418,7 @@ contains
                 call write_kv(u, 'axis_'//itoa(k), reals_text(fit%axes(:, k)), ios)
             end do
             call write_kv(u, 'u_axis_deg', reals_text(fit%u_axes), ios)
+            if (prob%est_cg) call write_cg(u, ios)
             call write_kv(u, 'chi2', fit%chi2, ios)
             call write_kv(u, 'dof', fit%dof, ios)
             call write_kv(u, 'condition', fit%condition, ios)
@@ -478,6 +480,33 @@ contains
             end do
         end if
         call files%close(u, ios, stat)
+    contains
+        !> The mass centre fitted with the tensor: cg (body frame), its u, its shift from
+        !! where the table put it, the joint correlation of (J_xx ... J_yz, cg_x, cg_y, cg_z),
+        !! each attitude's normalised residual.
+        subroutine write_cg(un, io)
+            integer, intent(in) :: un
+            integer, intent(inout) :: io
+            real(dp) :: c9(9, 9), s9(9)
+            integer :: a, b, m
+            call write_kv(un, 'cg', reals_text(prob%origin + fit%dcg), io)
+            call write_kv(un, 'u_cg', reals_text(fit%u_dcg), io)
+            call write_kv(un, 'cg_shift', reals_text(fit%dcg), io)
+            s9 = sqrt(max(0.0_dp, [(fit%cov_all(a, a), a=1, 9)]))
+            do a = 1, 9
+                do b = 1, 9
+                    c9(a, b) = merge(1.0_dp, 0.0_dp, a == b)
+                    if (a /= b .and. s9(a) > 0.0_dp .and. s9(b) > 0.0_dp) c9(a, b) = &
+                        max(-1.0_dp, min(1.0_dp, fit%cov_all(a, b)/(s9(a)*s9(b))))
+                end do
+                call write_kv(un, 'correlation_tensor_cg('//itoa(a)//',:)', &
+                              reals_text(c9(a, :)), io)
+            end do
+            do m = 1, size(prob%att_hang)
+                call write_kv(un, 'attitude_residual('//itoa(prob%hangs(prob%att_hang(m))%id)// &
+                              ')', fit%att_resid(m), io)
+            end do
+        end subroutine write_cg
     end subroutine write_tensor
 
     !> OUTDIR/NAME.tensor.dat: per hang its id, the fitted tensor's vertical moment, the one
