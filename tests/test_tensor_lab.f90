@@ -19,7 +19,7 @@ module test_tensor_lab
     use measurement, only: measurement_t, hang_t, OBS_HANG
     use hang_model, only: tensor_entries, tensor_matrix, hang_rig, hang_period, principal_axes
     use tensor_fit, only: tensor_problem_t, tensor_fit_t, tensor_plan_t, problem_of, &
-        projection, fit_tensor, along_for, plan_hangs
+        projection, fit_tensor, along_for, plan_hangs, design_trace
     implicit none
     private
 
@@ -52,6 +52,10 @@ contains
             call test_six_attitudes(t)
         if (t%want('tensor_lab: the mass centre through the executable')) &
             call test_cg_exe(t, exe)
+        if (t%want('tensor_lab: the plan takes faces, edges and corners')) call test_plan_dirs(t)
+        if (t%want('tensor_lab: the plan''s u with the deck''s cycles and timings')) &
+            call test_plan_u(t, exe)
+        if (t%want('tensor_lab: hangs added to a table')) call test_plan_add(t, exe)
     end subroutine run_tensor_lab_tests
 
     ! ------------------------------------------------------------------ made truths
@@ -572,7 +576,238 @@ contains
         end subroutine one
     end subroutine test_cg_exe
 
+    ! ------------------------------------------------------------------ the plan
+
+    !> plan = 12 takes 12 of the 13 face, edge and corner directions, none twice (u and -u
+    !! one), corners among them; plan = 15 takes all 13, then two again.
+    subroutine test_plan_dirs(t)
+        type(tester_t), intent(inout) :: t
+        type(body_t) :: bd
+        type(deck_t) :: d
+        type(tensor_problem_t) :: prob
+        type(tensor_plan_t) :: plan
+        type(status_t) :: st
+        type(hang_t) :: h0
+        integer :: n, i, j, nc, twice, dist
+        bd%x = test_tensor()
+        d = lab_deck(bd, 1.0e-3_dp, 0.2_dp)
+        call lab_problem(d, bd, reshape([0.0_dp, 0.0_dp, 1.0_dp], [3, 1]), &
+                         reshape([1.0_dp, 0.0_dp, 0.0_dp], [3, 1]), [1.0_dp], prob)
+        h0 = prob%hangs(1)
+        do n = 12, 15, 3
+            call plan_hangs(prob, h0, 1.0e-3_dp, bd%x, n, plan, st)
+            call t%check('plan dirs: plan = '//itoa(n)//' made: '//msg_of(st), &
+                         st%code == STATUS_OK .and. plan%n == n)
+            if (st%code /= STATUS_OK) return
+            nc = 0
+            twice = 0
+            do i = 1, n
+                if (count(abs(plan%up(:, i)) > 0.1_dp) == 3) nc = nc + 1
+                do j = 1, i - 1
+                    if (abs(dot_product(plan%up(:, i), plan%up(:, j))) > 1.0_dp - 1.0e-9_dp) &
+                        twice = twice + 1
+                end do
+            end do
+            dist = n - twice
+            write (*, '(a,i0,a,i0,a,i0,a)') '   plan = ', n, ': ', dist, ' distinct directions, ', &
+                nc, ' corners'
+            call t%check('plan dirs: plan = '//itoa(n)//': '//itoa(min(n, 13))//' distinct '// &
+                         'directions, corners among them', dist == min(n, 13) .and. nc >= 3)
+        end do
+    end subroutine test_plan_dirs
+
+    !> The plan's predicted u of hangs timed 3 times over 10 cycles each (u_period 2 ms of
+    !! each total, no other u) is the fit's u of those hangs (to 2 %, first order, small
+    !! amplitude), and one timing of one cycle (what the plan assumed without the table's
+    !! timings) is 10 times off or more; through the executable (with the rig's u), plan = 9 on such a table writes a u of
+    !! the same size as the fit's and a table of 3 rows of 10 cycles per hang.
+    subroutine test_plan_u(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        type(body_t) :: bd
+        type(deck_t) :: d
+        type(tensor_problem_t) :: prob
+        type(tensor_fit_t) :: fit
+        type(status_t) :: st
+        type(measurement_t) :: set
+        type(hang_t) :: h0
+        real(dp) :: ups(3, 9), als(3, 9), per(9), gd(3), jz(3, 3), tr, ux(6), ux1(6), uf(6), up(6)
+        character(len=:), allocatable :: tab, dir
+        real(dp), parameter :: UT = 2.0e-3_dp
+        integer :: k, r, ex, i
+        logical :: l1, l2, l3
+        bd%x = test_tensor()
+        jz = 0.0_dp
+        call nine_hangs(ups, als)
+        ! the timing alone (the rig's u and the directions' would hide the factor)
+        d = lab_deck(bd, UT, 0.0_dp)
+        d%tensor%u(1:6) = 0.0_dp
+        allocate (set%releases(9), set%obs(27))
+        tab = 'hang up_x up_y up_z along_x along_y along_z period cycles'//NL
+        do k = 1, 9
+            call made_period(bd, [0.0_dp, 0.0_dp, 0.0_dp], 0.0_dp, [0.0_dp, 0.0_dp, 0.0_dp], &
+                             jz, ups(:, k), als(:, k), per(k), gd, st)
+            set%releases(k)%hang = prob_hang(k)
+            do r = 1, 3
+                i = 3*(k - 1) + r
+                set%obs(i)%kind = OBS_HANG
+                set%obs(i)%release = k
+                set%obs(i)%line = i + 1
+                set%obs(i)%cycles = 10.0_dp
+                set%obs(i)%period = per(k)
+                set%obs(i)%u_period = UT/10.0_dp
+                tab = tab//itoa(k)//' '//num3(ups(:, k))//' '//num3(als(:, k))//' '// &
+                    num(10.0_dp*per(k))//' 10'//NL
+            end do
+        end do
+        call problem_of(d%tensor, d%suspension, d%body, accuracy_of(d), set, prob)
+        call fit_of(prob, fit, st)
+        call t%check('plan u: fitted: '//msg_of(st), st%code == STATUS_OK)
+        if (st%code /= STATUS_OK) return
+        h0 = prob%hangs(1)
+        call design_trace(prob, h0, UT/10.0_dp/sqrt(3.0_dp), bd%x, ups, als, tr, st, u_x=ux)
+        call design_trace(prob, h0, UT, bd%x, ups, als, tr, st, u_x=ux1)
+        write (*, '(a,6es10.2)') '   fit''s u         ', fit%u_x
+        write (*, '(a,6es10.2)') '   predicted u     ', ux
+        write (*, '(a,6es10.2)') '   one cycle, once ', ux1
+        call t%check('plan u: the prediction with 10 cycles, 3 timings is the fit''s u to 2 %', &
+                     maxval(abs(ux/fit%u_x - 1.0_dp)) < 0.02_dp)
+        call t%check('plan u: one cycle, once is 10 times off or more', &
+                     minval(ux1/fit%u_x) > 10.0_dp)
+        ! through the executable
+        dir = SCR//'/plan_u'
+        call write_text(dir//'.txt', tab)
+        call write_text(dir//'.nml', "&scene analyses = 'tensor' /"//NL// &
+            '&suspension b = 0.5, b_prime = 0.4, l = 1.2, l_prime = 1.2, g = 9.80665 /'//NL// &
+            '&body mass = 3.0, inertia = 0.08, 0.11, 0.14, cg_depth = 0.1, cg_offset = 0 /'//NL// &
+            "&tensor hangs = 'plan_u.txt', u_mass = 1e-3, u_l = 1e-3, u_l_prime = 1e-3, "// &
+            "u_b = 5e-4, u_b_prime = 5e-4, u_period = 2e-3, u_direction = 0.05, plan = 9 /"//NL)
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//' && '//exe//' '// &
+            dir//'.nml --out '//dir//' > '//dir//'.stdout 2> '//dir//'.stderr', exitstat=ex)
+        up = kv6(dir//'/plan_u.tensor', 'plan_u')
+        uf = [kv1(dir//'/plan_u.tensor', 'u_J_xx'), kv1(dir//'/plan_u.tensor', 'u_J_yy'), &
+              kv1(dir//'/plan_u.tensor', 'u_J_zz'), kv1(dir//'/plan_u.tensor', 'u_J_xy'), &
+              kv1(dir//'/plan_u.tensor', 'u_J_xz'), kv1(dir//'/plan_u.tensor', 'u_J_yz')]
+        write (*, '(a,6es10.2)') '   exe: plan_u / fit''s u ', up/uf
+        l1 = file_has(dir//'/plan_u.plan.csv', 'each timed 3 times over 10 cycles')
+        l2 = file_has(dir//'/plan_u.plan.csv', ',10,0')
+        l3 = count_lines(dir//'/plan_u.plan.csv') == 4 + 27
+        call t%check('plan u: exe: exit 0, plan_u within a factor 2 of the fit''s u, rows of '// &
+                     '10 cycles', ex == 0 .and. all(up/uf > 0.5_dp .and. up/uf < 2.0_dp) .and. &
+                     l1 .and. l2 .and. l3)
+    contains
+        function prob_hang(k) result(h)
+            integer, intent(in) :: k
+            type(hang_t) :: h
+            h%id = k
+            h%line = 3*k - 1
+            h%up = ups(:, k)
+            h%along = als(:, k)
+            h%l = bd%l
+            h%l_prime = bd%l
+            h%b = bd%b
+            h%b_prime = bd%b_prime
+            h%cg_depth = bd%depth
+            h%cg_offset = 0.0_dp
+        end function prob_hang
+    end subroutine test_plan_u
+
+    !> plan_add = 3 on a table of six hangs (faces and edges): three directions not in the
+    !! table, and a trace of table and additions below the table's alone and below that of
+    !! the table with its own first three hangs timed again; through the executable, the
+    !! added hangs numbered after the table's.
+    subroutine test_plan_add(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        type(body_t) :: bd
+        type(deck_t) :: d
+        type(tensor_problem_t) :: prob
+        type(tensor_plan_t) :: plan
+        type(status_t) :: st
+        real(dp) :: ups(3, 9), als(3, 9), per(6), gd(3), jz(3, 3), tr6, tr9
+        real(dp), parameter :: UT = 1.0e-3_dp
+        character(len=:), allocatable :: tab, dir
+        integer :: k, j, ex
+        logical :: fresh, l1, l2, l3
+        bd%x = test_tensor()
+        jz = 0.0_dp
+        call nine_hangs(ups, als)
+        d = lab_deck(bd, UT, 0.1_dp)
+        tab = 'hang up_x up_y up_z along_x along_y along_z period'//NL
+        do k = 1, 6
+            call made_period(bd, [0.0_dp, 0.0_dp, 0.0_dp], 0.0_dp, [0.0_dp, 0.0_dp, 0.0_dp], &
+                             jz, ups(:, k), als(:, k), per(k), gd, st)
+            tab = tab//itoa(k)//' '//num3(ups(:, k))//' '//num3(als(:, k))//' '//num(per(k))//NL
+        end do
+        call lab_problem(d, bd, ups(:, 1:6), als(:, 1:6), per, prob)
+        call plan_hangs(prob, prob%hangs(1), UT, bd%x, 3, plan, st, prob%hangs, &
+                        [(UT, k=1, 6)])
+        call t%check('plan add: made: '//msg_of(st), st%code == STATUS_OK .and. plan%n == 3)
+        if (st%code /= STATUS_OK) return
+        fresh = .true.
+        do k = 1, 3
+            do j = 1, 6
+                if (abs(dot_product(plan%up(:, k), ups(:, j))) > 1.0_dp - 1.0e-9_dp) &
+                    fresh = .false.
+            end do
+        end do
+        call design_trace(prob, prob%hangs(1), UT, bd%x, ups(:, 1:6), als(:, 1:6), tr6, st)
+        call design_trace(prob, prob%hangs(1), UT, bd%x, reshape([ups(:, 1:6), ups(:, 1:3)], &
+                          [3, 9]), reshape([als(:, 1:6), als(:, 1:3)], [3, 9]), tr9, st)
+        write (*, '(a,3es11.3)') '   trace: table alone, table + 3 planned, table + its faces '// &
+            'again ', tr6, plan%trace, tr9
+        call t%check('plan add: three new directions', fresh)
+        call t%check('plan add: the trace below the table''s and below repeating its faces', &
+                     plan%trace < tr6 .and. plan%trace < tr9)
+        dir = SCR//'/plan_add'
+        call write_text(dir//'.txt', tab)
+        call write_text(dir//'.nml', "&scene analyses = 'tensor' /"//NL// &
+            '&suspension b = 0.5, b_prime = 0.4, l = 1.2, l_prime = 1.2, g = 9.80665 /'//NL// &
+            '&body mass = 3.0, inertia = 0.08, 0.11, 0.14, cg_depth = 0.1, cg_offset = 0 /'//NL// &
+            "&tensor hangs = 'plan_add.txt', u_period = 1e-3, u_direction = 0.1, plan_add = 3 /"//NL)
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//' && '//exe//' '// &
+            dir//'.nml --out '//dir//' > '//dir//'.stdout 2> '//dir//'.stderr', exitstat=ex)
+        l1 = file_has(dir//'/plan_add.plan.csv', '7,')
+        l2 = file_has(dir//'/plan_add.plan.csv', '9,')
+        l3 = count_lines(dir//'/plan_add.plan.csv') == 4 + 3
+        call t%check('plan add: exe: exit 0 (got '//itoa(ex)//'), hangs 7, 8, 9 added', &
+                     ex == 0 .and. l3)
+        call t%check('plan add: exe: numbered after the table''s', l1 .and. l2)
+    end subroutine test_plan_add
+
     ! ------------------------------------------------------------------ text
+
+    !> The real of `key = a` (huge when absent).
+    function kv1(path, key) result(v)
+        character(len=*), intent(in) :: path, key
+        real(dp) :: v
+        real(dp) :: w(6)
+        w = kv6(path, key, 1)
+        v = w(1)
+    end function kv1
+
+    !> The first n (6 by default) reals of `key = a, b, ...` (huge when absent).
+    function kv6(path, key, n) result(v)
+        character(len=*), intent(in) :: path, key
+        integer, intent(in), optional :: n
+        real(dp) :: v(6)
+        character(len=1024) :: line
+        integer :: u, ios, m
+        m = 6
+        if (present(n)) m = n
+        v = huge(1.0_dp)
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        do while (ios == 0)
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, key//' = ') == 1) then
+                read (line(len(key) + 4:), *, iostat=ios) v(1:m)
+                if (ios /= 0) v = huge(1.0_dp)
+                exit
+            end if
+        end do
+        close (u)
+    end function kv6
 
     !> The three reals of `key = a, b, c` in a key = value file (huge when absent).
     function kv3(path, key) result(v)

@@ -106,7 +106,7 @@ contains
                 if (stat%code /= STATUS_OK) return
             end do
         end if
-        if (d%tensor%plan > 0) then
+        if (d%tensor%plan > 0 .or. d%tensor%plan_add > 0) then
             call hang_defaults(d%suspension, d%body, h0, have_cg)
             if (len_trim(d%tensor%hangs) > 0 .and. .not. have_cg) then
                 h0 = set%releases(1)%hang
@@ -170,9 +170,10 @@ contains
         type(hang_t) :: h0
         real(dp), allocatable :: drift(:), limit(:), payload(:), parts(:, :)
         real(dp) :: c0, c1, x_proj(6), cond, mean(MC_ESTIMATES), sdev(MC_ESTIMATES), x(6)
-        real(dp) :: u_x_mc(6), u_moments_mc(3), u_axes_mc(3)
+        real(dp) :: u_x_mc(6), u_moments_mc(3), u_axes_mc(3), u_plan, plan_cycles
+        real(dp), allocatable :: u_hang(:)
         logical :: have_cg
-        integer :: i, h
+        integer :: i, h, plan_timings, first_id
         character(len=:), allocatable :: line
         call cpu_time(c0)
         u_x_mc = 0.0_dp
@@ -269,16 +270,28 @@ contains
                     ': check its timing, orientation and rig'
             end if
         end if
-        if (d%tensor%plan > 0) then
+        if (d%tensor%plan > 0 .or. d%tensor%plan_add > 0) then
             call hang_defaults(d%suspension, d%body, h0, have_cg)
+            plan_cycles = 1.0_dp
+            plan_timings = 1
             if (res%fitted) then
                 if (.not. have_cg) h0 = prob%hangs(1)
                 x = fit%x
+                ! the table's timings: each hang's timing u (its rows' u_period over cycles,
+                ! together), the median of them for a planned hang, the median cycles and
+                ! rows per hang
+                call table_timing(prob, fit, u_hang, u_plan, plan_cycles, plan_timings)
             else
                 call problem_of(d%tensor, d%suspension, d%body, accuracy_of(d), set_empty(), prob)
                 x = deck_tensor(d)
+                u_plan = d%tensor%u(7)
             end if
-            call plan_hangs(prob, h0, d%tensor%u(7), x, d%tensor%plan, plan, stat)
+            if (d%tensor%plan_add > 0) then
+                call plan_hangs(prob, h0, u_plan, x, d%tensor%plan_add, plan, stat, &
+                                prob%hangs, u_hang)
+            else
+                call plan_hangs(prob, h0, u_plan, x, d%tensor%plan, plan, stat)
+            end if
             if (stat%code /= STATUS_OK) return
             res%plan = plan%n
             res%plan_file = outdir//'/'//d%name//'.plan.csv'
@@ -291,7 +304,12 @@ contains
         if (stat%code /= STATUS_OK) return
         if (res%fitted) call write_data(d, outdir, fit, prob, files, stat)
         if (stat%code /= STATUS_OK) return
-        if (res%plan > 0) call write_plan(d, res%plan_file, plan, x, files, stat)
+        if (res%plan > 0) then
+            first_id = 1
+            if (d%tensor%plan_add > 0) first_id = maxval(prob%hangs%id) + 1
+            call write_plan(d, res%plan_file, plan, x, plan_cycles, plan_timings, first_id, &
+                            files, stat)
+        end if
     contains
         !> A fit that went where no body is (a tensor not positive definite): ERR_MODEL
         !! with the likely cause.
@@ -324,6 +342,50 @@ contains
             s = fixed(a, merge(1, 2, a >= 1.0_dp))
         end if
     end function degrees
+
+    !> The table's timings for a plan: per hang the timing u of its rows together
+    !! ((sum of u_row^-2)^(-1/2), 0 when its rows state none); for a planned hang the median
+    !! of them, the median cycles of a row and the median rows of a hang.
+    subroutine table_timing(prob, fit, u_hang, u_plan, cycles, timings)
+        type(tensor_problem_t), intent(in) :: prob
+        type(tensor_fit_t), intent(in) :: fit
+        real(dp), allocatable, intent(out) :: u_hang(:)
+        real(dp), intent(out) :: u_plan, cycles
+        integer, intent(out) :: timings
+        real(dp), allocatable :: w(:)
+        integer :: h, nh
+        nh = size(prob%hangs)
+        allocate (u_hang(nh), w(nh))
+        do h = 1, nh
+            associate (ur => pack(fit%u_row, prob%rows%release == h))
+                u_hang(h) = 0.0_dp
+                if (all(ur > 0.0_dp)) u_hang(h) = 1.0_dp/sqrt(sum(1.0_dp/ur**2))
+                w(h) = real(size(ur), dp)
+            end associate
+        end do
+        u_plan = median(u_hang)
+        timings = max(1, nint(median(w)))
+        cycles = median(prob%rows%cycles)
+    contains
+        pure real(dp) function median(v)
+            real(dp), intent(in) :: v(:)
+            real(dp) :: s(size(v)), tmp
+            integer :: i, j, n
+            s = v
+            n = size(s)
+            do i = 2, n
+                tmp = s(i)
+                j = i - 1
+                do while (j >= 1)
+                    if (s(j) <= tmp) exit
+                    s(j + 1) = s(j)
+                    j = j - 1
+                end do
+                s(j + 1) = tmp
+            end do
+            median = 0.5_dp*(s((n + 1)/2) + s(n/2 + 1))
+        end function median
+    end subroutine table_timing
 
     !> A set of no hangs (a plan without a table).
     function set_empty() result(set)
@@ -541,23 +603,29 @@ contains
 
     !> OUTDIR/NAME.plan.csv: the planned hangs as a table of hangs to copy (the periods the
     !! tensor x predicts at small amplitude, to be replaced by the timed ones).
-    subroutine write_plan(d, path, plan, x, files, stat)
+    subroutine write_plan(d, path, plan, x, cycles, timings, first_id, files, stat)
         type(deck_t), intent(in) :: d
         character(len=*), intent(in) :: path
         type(tensor_plan_t), intent(in) :: plan
         real(dp), intent(in) :: x(6)
+        real(dp), intent(in) :: cycles          !! cycles of each timing
+        integer, intent(in) :: timings          !! timings of each hang
+        integer, intent(in) :: first_id         !! the first planned hang's number
         type(out_files_t), intent(inout) :: files
         type(status_t), intent(out) :: stat
-        integer :: u, ios, k
+        integer :: u, ios, k, m
         real(dp) :: up(3), al(3)
         call files%open(path, u, stat)
         if (stat%code /= STATUS_OK) return
         ios = 0
         write (u, '(a)', iostat=ios) '# bifilar tensor plan: '//trim(d%scene%title)
-        if (ios == 0) write (u, '(a)', iostat=ios) '# '//itoa(plan%n)//' hangs among the '// &
-            'face, edge and corner directions of the body frame that minimise the trace of '// &
-            'the covariance of the tensor, '//sci(plan%trace, 3)//' (deck units squared), '// &
-            'under the deck''s uncertainties'
+        if (ios == 0) write (u, '(a)', iostat=ios) '# '//itoa(plan%n)//' hangs '// &
+            trim(merge('added to the table ', '                   ', d%tensor%plan_add > 0))// &
+            'among the face, edge and corner directions of the body frame that minimise the '// &
+            'trace of the covariance of the tensor, '//sci(plan%trace, 3)//' (deck units '// &
+            'squared), under the deck''s uncertainties, each timed '//itoa(timings)// &
+            ' time'//trim(merge('s', ' ', timings /= 1))//' over '//rshort(cycles)//' cycle'// &
+            trim(merge('s', ' ', cycles /= 1.0_dp))
         if (ios == 0) write (u, '(a)', iostat=ios) '# period: the period the tensor '// &
             trim(reals_short(x))//' predicts at small amplitude on the deck''s rig: replace '// &
             'it by the timed one (and cycles, amplitude by yours)'
@@ -566,8 +634,11 @@ contains
         do k = 1, plan%n
             up = plan%up(:, k)/maxval(abs(plan%up(:, k)))
             al = plan%along(:, k)/maxval(abs(plan%along(:, k)))
-            if (ios == 0) write (u, '(a)', iostat=ios) itoa(k)//','//ints(up)//','//ints(al)// &
-                ','//fixed(plan%period(k), 6)//',1,0'
+            do m = 1, timings
+                if (ios == 0) write (u, '(a)', iostat=ios) itoa(first_id + k - 1)//','// &
+                    ints(up)//','//ints(al)//','//fixed(cycles*plan%period(k), 6)//','// &
+                    rshort(cycles)//',0'
+            end do
         end do
         call files%close(u, ios, stat)
     contains

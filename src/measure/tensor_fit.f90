@@ -1658,14 +1658,22 @@ contains
             srig(k) = (tp - tm)/(2.0_dp*HX_LIN*v)
         end do
         smass = -dot_product(x, a)/prob%mass
+        if (prob%loaded) then
+            ! a fixture or a mass centre off the table's: the model does not see J/m alone
+            call case_period(prob, h, 0.0_dp, prob%mass*(1.0_dp + HX_LIN), prob%g, x, tp, stat)
+            if (stat%code /= STATUS_OK) return
+            call case_period(prob, h, 0.0_dp, prob%mass*(1.0_dp - HX_LIN), prob%g, x, tm, stat)
+            if (stat%code /= STATUS_OK) return
+            smass = (tp - tm)/(2.0_dp*HX_LIN*prob%mass)
+        end if
         sg = -0.5_dp*t/prob%g
     end subroutine candidate_row
 
     !> The trace of the covariance of x for hangs with the given ups and alongs (body frame,
-    !! unit, along normal to up) on the rig h0, at small amplitude, each timed once with the
-    !! timing u u_t (s), under prob's other uncertainties; also the periods and u of each
-    !! entry.  Without any uncertainty of the period or the direction, each period counts
-    !! 1e-4 of itself.
+    !! unit, along normal to up) on the rig h0, at small amplitude, each with the timing u
+    !! u_t (s, of its period: u_period over cycles, over the root of its timings), under
+    !! prob's other uncertainties; also the periods and u of each entry.  Without any
+    !! uncertainty of the period or the direction, each period counts 1e-4 of itself.
     subroutine design_trace(prob, h0, u_t, x, ups, alongs, trace, stat, periods, u_x)
         type(tensor_problem_t), intent(in) :: prob  !! mass, g, accuracy, uncertainties
         type(hang_t), intent(in) :: h0          !! the rig of every hang
@@ -1689,16 +1697,18 @@ contains
                                sg(k), stat)
             if (stat%code /= STATUS_OK) return
         end do
-        call set_covariance(prob, u_t, t, a, sdir, srig, smass, sg, [(k, k=1, n)], cc)
+        call set_covariance(prob, spread(u_t, 1, n), t, a, sdir, srig, smass, sg, &
+                            [(k, k=1, n)], cc)
         trace = cc(1, 1) + cc(2, 2) + cc(3, 3) + cc(4, 4) + cc(5, 5) + cc(6, 6)
         if (present(periods)) periods = t
         if (present(u_x)) u_x = sqrt(max(0.0_dp, [(cc(k, k), k=1, 6)]))
     end subroutine design_trace
 
-    !> The covariance of x from the candidate rows `set` (see design_trace).
-    subroutine set_covariance(prob, u_t, t, a, sdir, srig, smass, sg, set, cc)
+    !> The covariance of x from the candidate rows `set` (see design_trace); u_r: each
+    !! candidate row's timing u (s).
+    subroutine set_covariance(prob, u_r, t, a, sdir, srig, smass, sg, set, cc)
         type(tensor_problem_t), intent(in) :: prob
-        real(dp), intent(in) :: u_t, t(:), a(:, :), sdir(:, :), srig(:, :), smass(:), sg(:)
+        real(dp), intent(in) :: u_r(:), t(:), a(:, :), sdir(:, :), srig(:, :), smass(:), sg(:)
         integer, intent(in) :: set(:)
         real(dp), intent(out) :: cc(6, 6)
         real(dp) :: nmat(6, 6), w(6), v(6, 6), ninv(6, 6), bk(6), sk(6), uc(6)
@@ -1736,32 +1746,46 @@ contains
     contains
         pure real(dp) function row_var(ii)
             integer, intent(in) :: ii
-            row_var = u_t**2 + sum(sdir(ii, :)**2)*prob%u%direction**2
+            row_var = u_r(ii)**2 + sum(sdir(ii, :)**2)*prob%u%direction**2
             if (.not. (row_var > 0.0_dp)) row_var = (1.0e-4_dp*t(ii))**2
         end function row_var
     end subroutine set_covariance
 
-    !> n hangs among the 26 face, edge and corner directions that minimise the trace of
-    !! the covariance of x (see the module header), on the rig h0 with timing u u_t.
-    subroutine plan_hangs(prob, h0, u_t, x, n, plan, stat)
+    !> n hangs among the 13 face, edge and corner directions of the body frame (u and -u
+    !! one direction) that minimise the trace of the covariance of x (see the module
+    !! header), on the rig h0, each with the timing u u_t; no direction is planned a second
+    !! time before every one of the 13 is planned once (n > 13 takes all of them).  With `existing` (the table's hangs, each with its own timing u
+    !! u_existing), the n hangs are added to them: the trace is the table's and the
+    !! additions' together.
+    subroutine plan_hangs(prob, h0, u_t, x, n, plan, stat, existing, u_existing)
         type(tensor_problem_t), intent(in) :: prob  !! mass, g, accuracy, uncertainties
         type(hang_t), intent(in) :: h0          !! the rig of every hang
         real(dp), intent(in) :: u_t             !! timing u of each period (s)
         real(dp), intent(in) :: x(6)            !! the tensor
-        integer, intent(in) :: n                !! hangs, 6 .. 26
+        integer, intent(in) :: n                !! hangs, 1 .. 26
         type(tensor_plan_t), intent(out) :: plan
         type(status_t), intent(out) :: stat
-        real(dp) :: c(3, 26), t(26), a(26, 6), sdir(26, 3), srig(26, 4), smass(26), sg(26)
-        real(dp) :: cc(6, 6), best, tr
-        integer, allocatable :: set(:)
-        integer :: k, i, j, kb, it
-        logical :: in_set(26), improved
+        type(hang_t), intent(in), optional :: existing(:)   !! the table's hangs
+        real(dp), intent(in), optional :: u_existing(:)     !! their timing u (s)
+        integer, parameter :: NC = 13
+        real(dp) :: c26(3, 26), c(3, NC), cc(6, 6), best, tr
+        real(dp), allocatable :: t(:), a(:, :), sdir(:, :), srig(:, :), smass(:), sg(:), ur(:)
+        integer, allocatable :: set(:), base(:)
+        integer :: k, i, j, kb, it, ne
+        logical :: improved
         type(hang_t) :: h
-        c = candidate_directions()
-        do k = 1, 26
+        c26 = candidate_directions()
+        c = c26(:, 1:26:2)
+        ne = 0
+        if (present(existing)) ne = size(existing)
+        allocate (t(NC + ne), a(NC + ne, 6), sdir(NC + ne, 3), srig(NC + ne, 4), &
+                  smass(NC + ne), sg(NC + ne), ur(NC + ne))
+        do k = 1, NC + ne
             h = h0
-            h%up = c(:, k)
-            h%along = along_for(c(:, k))
+            h%up = c(:, min(k, NC))
+            h%along = along_for(c(:, min(k, NC)))
+            ur(k) = u_t
+            if (k > NC) call table_hang(k - NC)
             call candidate_row(prob, h, x, t(k), a(k, :), sdir(k, :), srig(k, :), smass(k), &
                                sg(k), stat)
             if (stat%code /= STATUS_OK) then
@@ -1769,16 +1793,20 @@ contains
                 return
             end if
         end do
-        ! start: the three faces and three edges (x, y, z, xy, xz, yz), then greedy
-        set = [1, 3, 5, first_of(1, 1, 0), first_of(1, 0, 1), first_of(0, 1, 1)]
-        set = set(1:min(n, 6))
-        in_set = .false.
-        in_set(set) = .true.
+        base = [(NC + k, k=1, ne)]
+        ! start: without a table the three faces and three edges (x, y, z, xy, xz, yz);
+        ! then greedy
+        if (ne == 0) then
+            set = [1, 2, 3, first_of(1, 1, 0), first_of(1, 0, 1), first_of(0, 1, 1)]
+            set = set(1:min(n, 6))
+        else
+            allocate (set(0))
+        end if
         do while (size(set) < n)
             kb = 0
             best = huge(1.0_dp)
-            do k = 1, 26
-                if (in_set(k)) cycle
+            do k = 1, NC
+                if (.not. balanced([set, k])) cycle
                 tr = trace_of([set, k])
                 if (tr < best) then
                     best = tr
@@ -1786,22 +1814,23 @@ contains
                 end if
             end do
             set = [set, kb]
-            in_set(kb) = .true.
         end do
         ! exchanges until none lowers the trace
         best = trace_of(set)
         do it = 1, 100
             improved = .false.
             do i = 1, size(set)
-                do j = 1, 26
-                    if (in_set(j)) cycle
+                do j = 1, NC
+                    if (j == set(i)) cycle
                     k = set(i)
                     set(i) = j
+                    if (.not. balanced(set)) then
+                        set(i) = k
+                        cycle
+                    end if
                     tr = trace_of(set)
                     if (tr < best*(1.0_dp - 1.0e-12_dp)) then
                         best = tr
-                        in_set(k) = .false.
-                        in_set(j) = .true.
                         improved = .true.
                     else
                         set(i) = k
@@ -1817,15 +1846,29 @@ contains
             plan%along(:, i) = along_for(c(:, set(i)))
             plan%period(i) = t(set(i))
         end do
-        call set_covariance(prob, u_t, t, a, sdir, srig, smass, sg, set, cc)
+        call set_covariance(prob, ur, t, a, sdir, srig, smass, sg, [base, set], cc)
         plan%trace = best
         plan%u_x = sqrt(max(0.0_dp, [(cc(k, k), k=1, 6)]))
     contains
+        !> No direction planned twice before every one of the NC is planned once (and so
+        !! on): the counts differ by at most 1.
+        logical function balanced(s)
+            integer, intent(in) :: s(:)
+            integer :: cnt(NC), m
+            cnt = [(count(s == m), m=1, NC)]
+            balanced = maxval(cnt) - minval(cnt) <= 1
+        end function balanced
+        !> Candidate NC + e is the table's hang e.
+        subroutine table_hang(e)
+            integer, intent(in) :: e
+            h = existing(e)
+            ur(NC + e) = u_existing(e)
+        end subroutine table_hang
         real(dp) function trace_of(s)
             integer, intent(in) :: s(:)
             real(dp) :: cv(6, 6)
             integer :: m
-            call set_covariance(prob, u_t, t, a, sdir, srig, smass, sg, s, cv)
+            call set_covariance(prob, ur, t, a, sdir, srig, smass, sg, [base, s], cv)
             trace_of = sum([(cv(m, m), m=1, 6)])
         end function trace_of
         integer function first_of(i1, i2, i3)
@@ -1835,7 +1878,7 @@ contains
             v = real([i1, i2, i3], dp)
             v = v/norm2(v)
             first_of = 1
-            do m = 1, 26
+            do m = 1, NC
                 if (all(abs(c(:, m) - v) < 1.0e-12_dp)) then
                     first_of = m
                     return
