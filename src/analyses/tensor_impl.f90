@@ -197,6 +197,7 @@ contains
                 call no_body(stat)
                 return
             end if
+            prob%dcg = fit%dcg
             ! the amplitude limits at the fit: refuse a period that is not defined, carry
             ! the drift of the others as the uncertainty of their definition, fit again
             allocate (drift(size(prob%rows)), limit(size(prob%hangs)))
@@ -224,6 +225,7 @@ contains
                     call no_body(stat)
                     return
                 end if
+                prob%dcg = fit%dcg
             end if
             fit%x_proj = x_proj
             fit%projection_difference = maxval(abs(x_proj - fit%x))/maxval(fit%moments)

@@ -33,6 +33,12 @@
 !!   theta_4 has swung below its rest value: the time from release to that maximum, located
 !!   in the integrator's dense output (as identify's simulated periods).  As A -> 0 it tends
 !!   to the mode's period.
+!! * What hangs (loaded_hang): the body with a fixture (fixture_t, in the body frame or the
+!!   hang's) and its mass centre where a fit puts it.  Their common mass centre G rests in
+!!   the vertical plane through C and D (hang_points: C and D in the body frame from the
+!!   table's hang), so the loaded hang's up is the normal to CD in the plane of C, D and G,
+!!   its cg_depth and cg_offset G's, its mass the sum, its tensor the parallel-axis sum
+!!   about G.
 !! * The drift of the maxima (maxima_drift): at larger amplitudes the torsion feeds the
 !!   other modes and theta_4's maxima no longer come a period apart; the drift is the
 !!   largest change of the interval between successive maxima over the first cycles, over

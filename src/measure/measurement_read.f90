@@ -36,7 +36,10 @@
 !!   theta4 at which it was timed, degrees (default 0: small amplitude); `u_period`: the
 !!   standard uncertainty of the period column's value (default &tensor u_period);
 !! * any of `l, l_prime, b, b_prime, cg_depth, cg_offset`: the hang's own rig (a column
-!!   absent takes the deck's value for every hang).
+!!   absent takes the deck's value for every hang);
+!! * with &tensor estimate = 'tensor cg', the hang's attitude at rest: `gx, gy, gz`, the
+!!   direction of gravity in the body frame, or `tilt`, the roll about CD in degrees
+!!   (gravity = -cos(tilt) up + sin(tilt) (up x along)).
 !! In the model's terms (Kane & Tseng's ntilde frame of the hang): ntilde_1 = -up points
 !! down at rest, ntilde_3 = -along points from D to C, ntilde_2 = ntilde_3 x ntilde_1.
 !!

@@ -54,12 +54,21 @@
 !!   Type B uncertainty of the period's definition, u_def = drift T/3^(1/2) (the period
 !!   timed over any of those cycles lies within drift T of the first).  Each hang's limit is
 !!   found by doubling the amplitude from 1 degree and bisecting in log A.
-!! * The plan (plan_hangs): n hangs among the 26 face, edge and corner directions of the
-!!   body frame (along: the first of them normal to up), each at small amplitude on the
-!!   deck's rig, that minimise the trace of C under the deck's uncertainties (the periods'
-!!   sensitivities of the linearised model at the given tensor): a well-conditioned start
+!! * A fixture (&tensor fixture_*) and the mass centre fitted (estimate = 'tensor cg'): the
+!!   model of every case is that of what hangs (hang_model's loaded_hang, problem_rig); the
+!!   fixture's mass, mass centre and inertia are common inputs of the budget (differences;
+!!   the inertia exactly through dT/dx), and the mass's sensitivity is by differences.  With
+!!   the mass centre the parameters are nine (x and its shift dcg) and each hang with an
+!!   attitude adds a residual, the sine of the angle between the measured gravity and the
+!!   plane of C, D and the mass centre (attitude_residual), in the hang's block of V with
+!!   u_attitude and the hang's rotations.
+!! * The plan (plan_hangs): n hangs among the 13 face, edge and corner directions of the
+!!   body frame (u and -u one; along: the first of the 26 normal to up), each at small
+!!   amplitude on the deck's rig, that minimise the trace of C under the deck's
+!!   uncertainties (the periods' sensitivities of the linearised model at the given
+!!   tensor), none planned twice before each is planned once: a well-conditioned start
 !!   (the three faces and three edges), greedy additions, then exchanges until none lowers
-!!   the trace.
+!!   the trace; or n hangs added to the table's (each with its own timing u).
 !! * Monte Carlo (GUM Supplement 1): sample k draws from stream k of the seed, in this
 !!   order, mass, g, l, l_prime, b, b_prime; per hang the three rotations and its four rig
 !!   inputs; per row its timing, amplitude (normal) and definition (uniform within
