@@ -532,7 +532,9 @@ contains
         real(dp), intent(out) :: x(6)
         type(status_t), intent(out) :: stat     !! ERR_NUMERIC from dgels
         real(dp), allocatable :: a(:, :), b(:)
-        integer :: i, n
+        real(dp) :: mc, xf(6)
+        type(hang_t) :: hc
+        integer :: i, n, k
         n = size(prob%rows)
         allocate (a(n, 6), b(n))
         do i = 1, n
@@ -540,6 +542,18 @@ contains
                 a(i, :) = moment_direction(h%up)
                 b(i) = prob%mass*prob%g*h%b*h%b_prime*prob%rows(i)%period**2/ &
                        (16.0_dp*pi**2*0.5_dp*(h%l + h%l_prime))
+                if (prob%loaded) then
+                    ! with a fixture: the whole's moment by the formula, less the fixture's
+                    ! share about the whole's vertical (the subtraction of the tool in use)
+                    call loaded_hang(h, prob%mass, [(0.0_dp, k=1, 6)], prob%fix, prob%origin, &
+                                     prob%dcg, hc, mc, xf, stat)
+                    if (stat%code == STATUS_OK) then
+                        a(i, :) = moment_direction(hc%up)
+                        b(i) = mc*prob%g*h%b*h%b_prime*prob%rows(i)%period**2/ &
+                               (16.0_dp*pi**2*0.5_dp*(h%l + h%l_prime)) - &
+                               vertical_moment(xf, hc%up)
+                    end if
+                end if
             end associate
         end do
         call la_lstsq(a, b, x, stat)
