@@ -56,6 +56,7 @@ contains
         if (t%want('tensor_lab: the plan''s u with the deck''s cycles and timings')) &
             call test_plan_u(t, exe)
         if (t%want('tensor_lab: hangs added to a table')) call test_plan_add(t, exe)
+        if (t%want('tensor_lab: the new keys refused out of range')) call test_keys(t, exe)
     end subroutine run_tensor_lab_tests
 
     ! ------------------------------------------------------------------ made truths
@@ -774,6 +775,45 @@ contains
                      ex == 0 .and. l3)
         call t%check('plan add: exe: numbered after the table''s', l1 .and. l2)
     end subroutine test_plan_add
+
+    ! ------------------------------------------------------------------ refusals
+
+    !> Each new key out of its range: one line naming it, exit 2, no file.
+    subroutine test_keys(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        call one('neg_mass', 'fixture_mass = -0.1', 'fixture_mass')
+        call one('asym', 'fixture_inertia = 1e-3, 2e-4, 0, 0, 1e-3, 0, 0, 0, 1e-3', &
+                 'fixture_inertia')
+        call one('frame', "fixture_mass = 0.1, fixture_frame = 'table'", 'fixture_frame')
+        call one('neg_u', 'fixture_mass = 0.1, u_fixture_cg = -1e-3', 'u_fixture_*')
+        call one('estimate', "estimate = 'tensor mass'", 'estimate')
+        call one('u_att', "estimate = 'tensor cg', u_attitude = 0", 'u_attitude')
+        call one('plan_add', 'plan_add = 30', 'plan_add')
+        call one('plan_both', 'plan = 9, plan_add = 3', 'plan_add')
+    contains
+        subroutine one(label, keys, word)
+            character(len=*), intent(in) :: label, keys, word
+            character(len=:), allocatable :: dir
+            integer :: ex
+            logical :: l1, l2, l3
+            dir = SCR//'/key_'//label
+            call write_text(dir//'.txt', 'hang up_x up_y up_z along_x along_y along_z '// &
+                'period'//NL//'1 1 0 0 0 1 0 1.6'//NL)
+            call write_text(dir//'.nml', "&scene analyses = 'tensor' /"//NL// &
+                '&suspension b = 0.5, b_prime = 0.4, l = 1.2, l_prime = 1.2, g = 9.80665 /'// &
+                NL//'&body mass = 3.0, inertia = 0.08, 0.11, 0.14, cg_depth = 0.1 /'//NL// &
+                "&tensor hangs = 'key_"//label//".txt', "//keys//" /"//NL)
+            call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//' && '//exe// &
+                ' '//dir//'.nml --out '//dir//' > '//dir//'.stdout 2> '//dir//'.stderr', &
+                exitstat=ex)
+            l1 = count_lines(dir//'.stderr') == 1
+            l2 = file_has(dir//'.stderr', word)
+            l3 = empty_dir(dir)
+            call t%check('keys '//label//': exit 2 (got '//itoa(ex)//'), one line naming '// &
+                         word//', no file', ex == 2 .and. l1 .and. l2 .and. l3)
+        end subroutine one
+    end subroutine test_keys
 
     ! ------------------------------------------------------------------ text
 
