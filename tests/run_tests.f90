@@ -32,8 +32,10 @@ program run_tests
     type(tester_t) :: t
     character(len=4096) :: arg
     character(len=:), allocatable :: exe, filter
-    integer :: k, npos, nselected
-    logical :: ok
+    integer :: k, npos, nselected, times_unit, ios
+    integer(kind=8) :: c0, c1, rate
+    character(len=4096) :: times_file
+    logical :: ok, timing
 
     allocate (table, source=suite_table())
     exe = 'bin/bifilar'
@@ -60,6 +62,16 @@ program run_tests
 
     ! A suite whose name contains the filter runs whole; every other suite runs the parts
     ! whose label contains it (tester_t%want counts them).
+    ! RUN_TESTS_TIMES=FILE: each suite's wall time (s) appended to FILE, to find the slow ones
+    ! (never asserted: timing is measured by make bench, not by the tests).
+    timing = .false.
+    times_unit = 0
+    call get_environment_variable('RUN_TESTS_TIMES', times_file, status=ios)
+    if (ios == 0 .and. len_trim(times_file) > 0) then
+        open (newunit=times_unit, file=trim(times_file), position='append', action='write', &
+              iostat=ios)
+        timing = ios == 0
+    end if
     nselected = 0
     do k = 1, size(table)
         if (len(filter) == 0 .or. index(trim(table(k)%name), filter) > 0) then
@@ -68,8 +80,13 @@ program run_tests
         else
             t%only = filter
         end if
+        call system_clock(c0, rate)
         call table(k)%run(t, exe)
+        call system_clock(c1)
+        if (timing) write (times_unit, '(a,1x,f9.2)') trim(table(k)%name), &
+            real(c1 - c0, kind(1.0d0))/real(rate, kind(1.0d0))
     end do
+    if (timing) close (times_unit)
     ok = t%summary()
     if (len(filter) > 0 .and. nselected == 0 .and. t%wanted == 0) then
         flush (output_unit)

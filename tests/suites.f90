@@ -38,6 +38,7 @@ module suites
     use test_platform, only: run_platform_tests
     use test_certificate, only: run_certificate_tests
     use test_calibrate, only: run_calibrate_tests
+    use test_selfcheck, only: run_selfcheck_tests
     implicit none
     private
 
@@ -129,6 +130,8 @@ contains
                     'limits, test mass', run_platform_tests), &
             suite_t('certificate', 'the certificate page: SVG figures, escaping, balanced '// &
                     'elements, its fields', run_certificate_tests), &
+            suite_t('selfcheck', 'fits check themselves (records, tensors), amplitude '// &
+                    'scale, budgets vs whole fits', run_selfcheck_tests), &
             suite_t('graph', 'the module graph (layers, analyses apart, at most 8 floors); '// &
                     'the status table', run_graph_tests), &
             suite_t('runner', 'this runner: --list, --help, a filter that selects '// &

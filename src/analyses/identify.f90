@@ -125,7 +125,7 @@ module identify
         real(dp) :: residual_rms = 0.0_dp       !! of measured - model (s, rad or rad/s)
         integer :: iterations = 0, evaluations = 0, samples = 0
         integer :: np = 0                       !! parameters estimated
-        character(len=9) :: names(6) = ''       !! their names (I1 first)
+        character(len=16) :: names(6) = ''      !! their names (I1 first)
         real(dp) :: p(6) = 0.0_dp, u_p(6) = 0.0_dp  !! estimates and first-order u
         real(dp) :: sigma = 0.0_dp              !! s of the covariance (record)
         logical :: sigma_stated = .false.       !! s = 1: the record's column 3

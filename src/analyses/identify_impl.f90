@@ -17,7 +17,7 @@ submodule (identify) identify_impl
     use estimator, only: lsq_result_t, lsq_jacobian, estimate, lsq_options_t, lsq_covariance, &
         LOSS_SQUARES, LOSS_HUBER
     use budget, only: input_u_t, ROW_INPUT, ROW_TIMING, ROW_AMPLITUDE, ROW_FIT, ROW_RELEASE, &
-        ROW_TARE, ROW_ADDED, ROW_SESSION
+        ROW_TARE, ROW_ADDED, ROW_SESSION, ROW_AMPLITUDE_SCALE
     use records, only: read_record_file, record_format_t, mean_period, clean_mean_period, &
         u_column_warning, chosen_axis_note
     use progress, only: say_note
@@ -28,7 +28,7 @@ submodule (identify) identify_impl
         read_calibration_file
     use inputs, only: input_t, set_input
     use pooling, only: pooled_t, pool_releases, sessions_pooled_t, pool_sessions
-    use stats, only: coverage_factor, welch_satterthwaite, NU_INFINITE
+    use stats, only: coverage_factor, welch_satterthwaite, NU_INFINITE, chi2_sf
     use model_follow, only: follows_record, not_following_message
     use tip_check, only: check_not_tipping
     use record_fit, only: record_fit_t, record_mc_task_t, fit_problem, fit_record, carry_inputs, &
@@ -72,7 +72,7 @@ submodule (identify) identify_impl
         real(dp), allocatable :: hw(:)          !! the robust weights' roots
         real(dp), allocatable :: dpdx(:, :)     !! (np, inputs) the parameters' sensitivities
         integer :: np = 1, ifirst = 1
-        character(len=9) :: names(6) = ''
+        character(len=16) :: names(6) = ''
         real(dp) :: p(6) = 0.0_dp, u_p(6) = 0.0_dp, u_p_own(6) = 0.0_dp
         real(dp) :: sigma = 0.0_dp, tau = 1.0_dp, n_eff = 0.0_dp, u_fit = 0.0_dp
         logical :: sigma_stated = .false.
@@ -147,6 +147,8 @@ contains
         call read_releases(d%measurement, rig_of(d), start_of(d), d%suspension%cables, &
                            deck_inputs(d, .true.), m, stat, d%start%gave('amplitude'))
         if (stat%code /= 0) return
+        call check_amplitude_scale(d, m, stat)
+        if (stat%code /= 0) return
         if (len_trim(d%measurement%calibration) > 0) &
             call calibrate_measurement(d%measurement, m, stat)
         if (stat%code /= 0) return
@@ -215,11 +217,17 @@ contains
         associate (rg => m%releases(i)%rig)
         k = m%record_of(i)
         if (k == 0) then
-            if (count_words(mea%estimate) /= 1) then
+            if (count_words(mea%estimate) /= 1 + merge(1, 0, mea%estimated('amplitude_scale'))) &
+                then
                 call set_error(stat, ERR_DECK, estimate_name(d, m, i)//' = '''// &
-                    trim(mea%estimate)//''': with periods only I1 is estimated; '// &
-                    'allowed: ''I1'' (c_v, c_q, amplitude, t0, bias need a record)')
+                    trim(mea%estimate)//''': with periods only I1 (and amplitude_scale) is '// &
+                    'estimated; allowed: ''I1'' or ''I1 amplitude_scale'' (c_v, c_q, '// &
+                    'amplitude, t0, bias need a record)')
                 return
+            end if
+            if (mea%estimated('amplitude_scale')) then
+                call check_scale_release(m, i, estimate_name(d, m, i), stat)
+                if (stat%code /= 0) return
             end if
             call make_pendulum(rg, p, stat)
             if (stat%code /= 0) then
@@ -436,6 +444,67 @@ contains
         end if
     end subroutine check_record
 
+    !> The amplitudes' common scale against what it needs (ERR_DECK): periods, not a
+    !! record (a record's amplitude is its release's, with u_amplitude or estimated);
+    !! u_amplitude_scale or estimate amplitude_scale, not both; no Monte Carlo (it draws
+    !! no scale).
+    subroutine check_amplitude_scale(d, m, stat)
+        type(deck_t), intent(in) :: d
+        type(measurement_t), intent(in) :: m
+        type(status_t), intent(out) :: stat
+        type(measurement_group_t) :: mea
+        logical :: est
+        integer :: i
+        stat%code = 0
+        est = d%measurement%estimated('amplitude_scale')
+        do i = 1, size(m%releases)
+            mea = mea_of(d, m%releases(i))
+            est = est .or. mea%estimated('amplitude_scale')
+        end do
+        if (.not. est .and. .not. d%measurement%u_amplitude_scale > 0.0_dp) return
+        if (any([(m%record_of(i) > 0, i=1, size(m%releases))])) then
+            call set_error(stat, ERR_DECK, '&measurement '//trim(merge('estimate          ', &
+                'u_amplitude_scale ', est))//': the amplitudes'' scale is one of timed '// &
+                'periods, not of a record; allowed: with a record, u_amplitude or estimate '// &
+                'amplitude (the release''s)')
+        else if (est .and. d%measurement%u_amplitude_scale > 0.0_dp) then
+            call set_error(stat, ERR_DECK, '&measurement u_amplitude_scale = '// &
+                rshort(d%measurement%u_amplitude_scale)//' with estimate amplitude_scale: '// &
+                'the scale is either known to its u or fitted; allowed: one of them')
+        else if (d%measurement%monte_carlo > 0) then
+            call set_error(stat, ERR_DECK, '&measurement monte_carlo = '// &
+                itoa(d%measurement%monte_carlo)//' with the amplitudes'' scale: the Monte '// &
+                'Carlo draws no scale; allowed: monte_carlo = 0 (the first-order budget '// &
+                'carries it)')
+        end if
+    end subroutine check_amplitude_scale
+
+    !> Release i of periods with its amplitudes' scale estimated: at least three periods,
+    !! at two amplitudes or more (the scale is read from the period-amplitude relation).
+    subroutine check_scale_release(m, i, name, stat)
+        type(measurement_t), intent(in) :: m
+        integer, intent(in) :: i
+        character(len=*), intent(in) :: name    !! the estimate's key, for the message
+        type(status_t), intent(out) :: stat
+        real(dp) :: amin, amax
+        integer :: na
+        character(len=:), allocatable :: at
+        stat%code = 0
+        na = size(m%amplitudes_of(i))
+        amin = minval(m%amplitudes_of(i))
+        amax = maxval(m%amplitudes_of(i))
+        if (na >= 3 .and. amax > amin*(1.0_dp + 1.0e-6_dp)) return
+        at = 'all at '//fixed(amin, 3)//' deg'
+        if (amax > amin*(1.0_dp + 1.0e-6_dp)) at = 'at '//fixed(amin, 3)//' to '// &
+            fixed(amax, 3)//' deg'
+        call set_error(stat, ERR_DECK, name//' = ''I1 amplitude_scale'': '// &
+            itoa(na)//' period(s) '//at// &
+            ': the scale needs the periods'' change with amplitude; allowed: at least '// &
+            'three periods at two amplitudes or more (e.g. 10 and 40 degrees), or '// &
+            'u_amplitude_scale')
+        call in_trial(m, i, stat)
+    end subroutine check_scale_release
+
     !> How release i's record is named in messages.
     function record_name(d, m, i) result(s)
         type(deck_t), intent(in) :: d
@@ -529,6 +598,9 @@ contains
         logical, allocatable :: ok(:)
         stat%code = 0
         mk = m
+        ! the amplitudes' scale: an input common to every release (its row once)
+        if (d%measurement%u_amplitude_scale > 0.0_dp) mk%inputs = [mk%inputs, &
+            input_t('amplitude_scale', 1.0_dp, d%measurement%u_amplitude_scale)]
         allocate (all(size(mk%releases)), ok(size(mk%releases)))
         ok = .not. mk%releases%skipped
         first_failure%code = 0
@@ -537,7 +609,7 @@ contains
             mea = mea_of(d, mk%releases(i))
             k = mk%record_of(i)
             if (k == 0) then
-                call release_periods(d, mk, i, release_inputs(mk%inputs, &
+                call release_periods(d, mea, mk, i, release_inputs(mk%inputs, &
                                      mk%releases(i)%rig), all(i), stat)
             else
                 call release_record(d, mea, mk%releases(i)%rig, mk%obs(k)%rec, &
@@ -655,6 +727,7 @@ contains
         type(input_t), intent(in) :: x
         kind = ROW_INPUT
         if (trim(x%name) == 'amplitude') kind = ROW_AMPLITUDE
+        if (trim(x%name) == 'amplitude_scale') kind = ROW_AMPLITUDE_SCALE
     end function input_kind
 
     !> A release's budget rows split: its own rows (with their degrees of freedom) and the
@@ -693,8 +766,9 @@ contains
     !! stopwatch's error is per timing, not per cycle), on n - 1 degrees of freedom: the
     !! inversion then weighs each period by its cycles squared (the timings' u known to that
     !! common factor s), and the budget's inversions take u = s/cycles with u_amplitude.
-    subroutine release_periods(d, m, i, x, r, stat)
+    subroutine release_periods(d, mea, m, i, x, r, stat)
         type(deck_t), intent(in) :: d
+        type(measurement_group_t), intent(in) :: mea    !! the release's (its estimate)
         type(measurement_t), intent(in) :: m
         integer, intent(in) :: i                !! the release
         type(input_t), intent(in) :: x(:)       !! its inputs (its own values)
@@ -708,8 +782,11 @@ contains
         real(dp) :: nu_per, amin, up
         integer :: n, j
         logical, allocatable :: sel(:)
-        logical :: scatter
+        logical :: scatter, fs, fk
         u = input_u(d)
+        ! the amplitudes' scale: estimated (fs), or known to u_amplitude_scale, then fitted
+        ! with it as its prior when the timings' u are stated (fk; module period_inversion)
+        fs = mea%estimated('amplitude_scale')
         acc = accuracy_of(d)
         r%rg = m%releases(i)%rig
         r%per = m%periods_of(i)
@@ -719,21 +796,25 @@ contains
         n = size(r%per)
         r%exact = is_torsion_rig(r%rg)
         r%samples = n
-        xp = pack(x, x%name /= 'amplitude')
+        xp = pack(x, x%name /= 'amplitude' .and. x%name /= 'amplitude_scale')
         nu_per = NU_INFINITE
         scatter = all(m%u_totals_of(i) == 0.0_dp) .and. n >= 2
+        fk = fs .or. (d%measurement%u_amplitude_scale > 0.0_dp .and. .not. scatter)
         if (scatter) then
             ! the timings' u, known to a common factor: each timed total's the same
-            call invert_periods(r%rg, acc, r%per, r%amps, u, f, stat, 1.0_dp/r%cycles, .true.)
+            call invert_periods(r%rg, acc, r%per, r%amps, u, f, stat, 1.0_dp/r%cycles, .true., &
+                                fit_scale=fs)
             if (stat%code /= 0) return
-            r%u_scatter = sqrt(sum(((f%model_periods - r%per)*r%cycles)**2)/(n - 1))
+            nu_per = n - 1 - merge(1, 0, fs)
+            r%u_scatter = sqrt(sum(((f%model_periods - r%per)*r%cycles)**2)/nu_per)
             r%u_each = r%u_scatter/r%cycles
-            nu_per = n - 1
         else
-            call invert_periods(r%rg, acc, r%per, r%amps, u, f, stat, r%u_each)
+            call invert_periods(r%rg, acc, r%per, r%amps, u, f, stat, r%u_each, fit_scale=fk, &
+                                scale_prior=d%measurement%u_amplitude_scale)
             if (stat%code /= 0) return
         end if
-        call period_budget(r%rg, acc, r%per, r%amps, u, f, stat, xp, r%u_each)
+        call period_budget(r%rg, acc, r%per, r%amps, u, f, stat, xp, r%u_each, fk, &
+                           d%measurement%u_amplitude_scale)
         if (stat%code /= 0) return
         allocate (r%warnings(0))
         r%fit_tested = f%tested
@@ -778,6 +859,17 @@ contains
         r%np = 1
         r%names(1) = 'I1'
         r%p(1) = r%i1
+        if (fs) then
+            ! the amplitudes' scale fitted: its u from every row of the budget (the timing
+            ! rows as inflated above), dk/dx from the budget's own inversions
+            r%amp_max = r%amp_max*f%scale
+            r%np = 2
+            r%names(2) = 'amplitude_scale'
+            r%p(2) = f%scale
+            r%u_p(2) = sqrt(sum((f%scale_c*f%budget%u)**2))
+            r%u_p_own(2) = sqrt(sum((f%scale_c*f%budget%u)**2, mask=[(own_row(f%budget(j), &
+                                    m%releases(i)%own), j=1, size(f%budget))]))
+        end if
     end subroutine release_periods
 
     !> The warning of periods that do not agree with their u: chi^2 on its dof, p, the
@@ -960,6 +1052,16 @@ contains
             return
         end if
         allocate (r%warnings(0))
+        ! the self-check, with each sample's u stated (a record's column U): chi^2 of the
+        ! weighted residuals on m - np dof; the covariance above already takes s^2 = max(1,
+        ! chi^2/dof), the Birge ratio squared when the samples scatter beyond their u
+        if (rec%has_u .and. m > np) then
+            r%fit_tested = .true.
+            r%fit_birge = sqrt(fit%cost/(m - np))
+            r%fit_consistent = chi2_sf(fit%cost, real(m - np, dp)) >= 0.05_dp
+            if (.not. r%fit_consistent) call add_warning(r%warnings, &
+                record_misfit_warning(rec, i0, fit%r, fit%cost, m - np, r%fit_birge))
+        end if
         if (.not. mea%estimated('bias')) then
             ! an offset the fit does not model shows as a mean of the residuals
             emean = sum(e)/m
@@ -973,6 +1075,9 @@ contains
         end if
         ! a column U that is no u of these samples
         umsg = u_column_warning(rec, i0, e)
+        ! (its scatter against U is the self-check's warning above when that fired)
+        if (.not. r%fit_consistent .and. index(umsg, 'not small against its swing') == 0) &
+            umsg = ''
         if (len(umsg) > 0) call add_warning(r%warnings, umsg)
         ! the classical value from the samples the fit takes as the swing (no dropouts)
         r%period_linear = clean_mean_period(rec, i0, e, nout)
@@ -990,6 +1095,34 @@ contains
             if (stat%code /= 0) return
         end if
     end subroutine release_record
+
+    !> The warning of a record whose residuals do not agree with its samples' stated u:
+    !! chi^2 on its dof, p, the Birge ratio, the sample with the largest normalised residual
+    !! (its time and value) and the likely cause.
+    function record_misfit_warning(rec, i0, rw, chi2, dof, birge) result(msg)
+        type(record_t), intent(in) :: rec
+        integer, intent(in) :: i0               !! the first sample fitted
+        real(dp), intent(in) :: rw(:)           !! the weighted residuals, from sample i0
+        real(dp), intent(in) :: chi2, birge
+        integer, intent(in) :: dof
+        character(len=:), allocatable :: msg
+        character(len=:), allocatable :: cause
+        integer :: k, j
+        k = maxloc(abs(rw), 1)
+        j = i0 + k - 1
+        if (abs(rw(k)) > 5.0_dp*birge .and. abs(rw(k)) > 10.0_dp) then
+            cause = 'a spike, a dropout or a mistyped sample there'
+        else
+            cause = 'a column U below the instrument''s real noise, or a parameter missing '// &
+                'from &measurement estimate'
+        end if
+        msg = 'identify: the record''s residuals do not agree with its samples'' u (chi^2 = '// &
+            sci(chi2, 3)//' on '//itoa(dof)//' dof, p = '// &
+            sci(chi2_sf(chi2, real(dof, dp)), 2)//', Birge ratio '//sci(birge, 3)// &
+            '): the sample at t = '//sci(rec%t(j), 6)//' s, '//sci(rec%v(j)/rec%to_rad, 4)// &
+            ' '//trim(rec%units)//', is '//sci(abs(rw(k)), 2)//' u from the model; likely '// &
+            cause//'; u_I1_fit is inflated by the Birge ratio'
+    end function record_misfit_warning
 
     !> The releases pooled (module pooling), the common inputs' budget once (their
     !! sensitivities averaged with the pool's weights), the tare and added inertia
@@ -1010,7 +1143,7 @@ contains
         real(dp) :: cbar, u_total
         integer :: n, j, r, k, q, nw
         integer, allocatable :: jr(:)
-        character(len=9) :: word
+        character(len=16) :: word
         stat%code = 0
         n = size(rels)
         associate (x => m%inputs)
@@ -1121,16 +1254,17 @@ contains
         if (res%i1_linear > 0.0_dp) res%linear_error = res%i1_linear/res%i1_total - 1.0_dp
         res%period_linear = rels(1)%period_linear
         ! the parameters: I1, then (records) those estimated with it, in PARAM_NAMES'
-        ! order, each pooled alike over the releases that estimate it (a release may
-        ! estimate fewer: its own estimate)
+        ! order, then (periods) the amplitudes' scale, each pooled alike over the releases
+        ! that estimate it (a release may estimate fewer: its own estimate)
         res%np = 1
         res%names = ''
         res%names(1) = 'I1'
         res%p(1) = res%i1
         res%u_p(1) = res%u_i1
         allocate (jr(n))
-        do q = 2, size(PARAM_NAMES)
-            word = PARAM_NAMES(q)
+        do q = 2, size(PARAM_NAMES) + 1
+            word = 'amplitude_scale'
+            if (q <= size(PARAM_NAMES)) word = PARAM_NAMES(min(q, size(PARAM_NAMES)))
             do r = 1, n
                 jr(r) = findloc(rels(r)%names(1:rels(r)%np), word, 1)
             end do
@@ -1618,7 +1752,10 @@ contains
             call es_field(res%budget(j)%u, 15, f(2))
             call es_field(res%budget(j)%sensitivity, 15, f(3))
             call es_field(res%budget(j)%contribution, 15, f(4))
-            if (ios == 0) write (u, '(a)', iostat=ios) res%budget(j)%input(1:14)//f(1)//f(2)// &
+            ! a label longer than its column (amplitude_scale) pushes the fields, whole
+            if (ios == 0) write (u, '(a)', iostat=ios) res%budget(j)%input(1:max(14, &
+                merge(len_trim(res%budget(j)%input) + 1, 0, &
+                      len_trim(res%budget(j)%input) > 14)))//f(1)//f(2)// &
                 f(3)//f(4)
         end do
         call files%close(u, ios, stat)

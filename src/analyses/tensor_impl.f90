@@ -269,7 +269,8 @@ contains
                     ' < 0.05): the hangs disagree with the fit beyond their uncertainties; '// &
                     'hang '//itoa(prob%hangs(h)%id)//' (line '//itoa(prob%hangs(h)%line)// &
                     ') has the largest normalised residual, '//fixed(fit%resid(h), 2)// &
-                    ': check its timing, orientation and rig'
+                    ': check its timing, orientation and rig; the u of each hang''s rows '// &
+                    'are inflated by the Birge ratio '//fixed(fit%birge, 2)
             end if
         end if
         if (d%tensor%plan > 0 .or. d%tensor%plan_add > 0) then
@@ -488,6 +489,14 @@ contains
             call write_kv(u, 'condition', fit%condition, ios)
             call write_kv(u, 'projection_difference', fit%projection_difference, ios)
             call write_kv(u, 'p_value', fit%p_value, ios)
+            ! the fit's self-check (module tensor_fit): its u inflated when inconsistent
+            if (fit%tested) then
+                call write_kv(u, 'fit_consistency', trim(merge('consistent  ', 'inconsistent', &
+                                                               fit%consistent)), ios)
+                call write_kv(u, 'fit_birge_ratio', fit%birge, ios)
+            else
+                call write_kv(u, 'fit_consistency', 'not tested', ios)
+            end if
             call write_kv(u, 'k95_I_principal', reals_text(fit%k95), ios)
             call write_kv(u, 'U95_I_principal', reals_text(fit%k95*fit%u_moments), ios)
             call write_kv(u, 'J_projection', reals_text(fit%x_proj), ios)

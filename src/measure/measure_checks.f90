@@ -83,7 +83,14 @@ contains
         call uncertainty('u_g', self%u_g)
         call uncertainty('u_period', self%u_period)
         call uncertainty('u_amplitude', self%u_amplitude)
+        call uncertainty('u_amplitude_scale', self%u_amplitude_scale)
         if (stat%code /= STATUS_OK) return
+        if (self%u_amplitude_scale > 0.5_dp) then
+            call bad(stat, 'measurement', 'u_amplitude_scale', rshort(self%u_amplitude_scale), &
+                     'above 0.5', 'a relative standard uncertainty of the amplitudes'' '// &
+                     'scale, 0 .. 0.5 (0.014 for 1.4 %)')
+            return
+        end if
         ! cycles: none (1 each), one value for every period, or one per period
         nc = count(self%cycles /= PERIOD_UNSET)
         if (nc > 0) then

@@ -23,7 +23,9 @@ module measure_groups
     !! swing is lost in the integration's own error (the Floquet analyses' bound).
     real(dp), parameter, public :: AMPLITUDE_MIN = 1.0e-6_dp
     !> Words allowed in &measurement estimate: the parameters a record fit can estimate.
-    character(len=*), parameter, public :: ESTIMATES_ALLOWED = 'I1 c_v c_q amplitude t0 bias'
+    !! amplitude_scale: the scale every timed period's amplitude is read on (periods only).
+    character(len=*), parameter, public :: ESTIMATES_ALLOWED = &
+        'I1 c_v c_q amplitude t0 bias amplitude_scale'
     !> Words allowed in &measurement record_units (each implies the quantity).
     character(len=*), parameter, public :: RECORD_UNITS_ALLOWED = 'rad deg rad/s deg/s'
     !> Words allowed in &measurement loss.
@@ -49,6 +51,10 @@ module measure_groups
         !> standard uncertainties (deck units; period in s, amplitude in degrees), >= 0
         real(dp) :: u_mass = 0.0_dp, u_l = 0.0_dp, u_l_prime = 0.0_dp, u_b = 0.0_dp
         real(dp) :: u_b_prime = 0.0_dp, u_g = 0.0_dp, u_period = 0.0_dp, u_amplitude = 0.0_dp
+        !> the relative standard uncertainty of the scale every amplitude is read on (one
+        !! instrument's: a protractor's, a video's): common to every period and release,
+        !! entered once, not averaged down; 0 .. 0.5
+        real(dp) :: u_amplitude_scale = 0.0_dp
         integer :: monte_carlo = 0                !! Monte Carlo samples (0: first order only)
         integer :: seed = 1                       !! seed of the Monte Carlo streams
         !> each period is the total time of cycles(i) cycles (PERIOD_UNSET: not given, then
@@ -180,7 +186,8 @@ contains
             'monte_carlo:i1 seed:i1 cycles:r100 trials:c1 record_columns:k3 record_units:c1 '// &
             'loss:c1 u_inertia:r2 u_cg_depth:r1 u_cg_offset:r1 u_r:r1 u_lambda:r1 tare_i1:r1 '// &
             'u_tare_i1:r1 tare_mass:r1 added_inertia:r1 u_added_inertia:r1 '// &
-            'on_failure:c1 session:c1 record_frame_rate:r1 calibration:c1 tare:c1'
+            'on_failure:c1 session:c1 record_frame_rate:r1 calibration:c1 tare:c1 '// &
+            'u_amplitude_scale:r1'
     end function measurement_spec
 
     !> &measurement; n_periods counts the leading periods given (check refuses gaps).
@@ -198,14 +205,14 @@ contains
         real(dp) :: u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude
         real(dp) :: u_inertia(2), u_cg_depth, u_cg_offset, u_r, u_lambda
         real(dp) :: tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia
-        real(dp) :: record_frame_rate
+        real(dp) :: record_frame_rate, u_amplitude_scale
         integer :: monte_carlo, seed, record_columns(3), ios_words
         character(len=256) :: words(3), msg_words
         namelist /measurement/ periods, amplitudes, cycles, record, quantity, estimate, u_mass, &
             u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude, monte_carlo, seed, &
             trials, record_columns, record_units, loss, u_inertia, u_cg_depth, u_cg_offset, &
             u_r, u_lambda, tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia, &
-            on_failure, session, record_frame_rate, calibration, tare
+            on_failure, session, record_frame_rate, calibration, tare, u_amplitude_scale
         call defaults()
         words = ''
         read (rec, nml=measurement, iostat=ios, iomsg=msg)
@@ -240,6 +247,7 @@ contains
         self%u_g = u_g
         self%u_period = u_period
         self%u_amplitude = u_amplitude
+        self%u_amplitude_scale = u_amplitude_scale
         self%monte_carlo = monte_carlo
         self%seed = seed
         self%trials = trials
@@ -298,6 +306,7 @@ contains
             u_g = self%u_g
             u_period = self%u_period
             u_amplitude = self%u_amplitude
+            u_amplitude_scale = self%u_amplitude_scale
             monte_carlo = self%monte_carlo
             seed = self%seed
             trials = self%trials
@@ -330,7 +339,7 @@ contains
                 monte_carlo, seed, trials, record_columns, record_units, loss, u_inertia, &
                 u_cg_depth, u_cg_offset, u_r, u_lambda, tare_i1, u_tare_i1, tare_mass, &
                 added_inertia, u_added_inertia, on_failure, session, record_frame_rate, &
-                calibration, tare
+                calibration, tare, u_amplitude_scale
             record_columns = ''
             read (rec, nml=measurement, iostat=ios2, iomsg=msg2)
             words = record_columns
@@ -366,6 +375,8 @@ contains
             rshort(self%u_l_prime)//', u_b = '//rshort(self%u_b)//', u_b_prime = '// &
             rshort(self%u_b_prime)//', u_g = '//rshort(self%u_g)//', u_period = '// &
             rshort(self%u_period)//', u_amplitude = '//rshort(self%u_amplitude)
+        if (self%u_amplitude_scale > 0.0_dp) line = line//', u_amplitude_scale = '// &
+            rshort(self%u_amplitude_scale)
         if (any(self%u_inertia > 0.0_dp)) line = line//', u_inertia = '// &
             rlist_short(self%u_inertia)
         if (self%u_cg_depth > 0.0_dp .or. self%u_cg_offset > 0.0_dp) line = line// &

@@ -50,6 +50,18 @@
 !!   with (a cable slack at release when I1 is very small) counts as a failed step; periods
 !!   shorter than the model's down to the smallest I1 it can swing with are refused.
 !!
+!! * A common amplitude scale (every amplitude read on one instrument's scale, A_i k with
+!!   k = 1 as read): with fit_scale, k is a second parameter fitted with I1 from the
+!!   period-amplitude relation (periods at several amplitudes), T_i(I1, A_i k); the budget's
+!!   inversions fit it too, so each row's sensitivity of I1 is the whole two-parameter fit's,
+!!   and dk/dx is kept per row (scale_c) for k's own u.  A scale known to a relative
+!!   standard uncertainty u_s (scale_prior = u_s) enters the same fit as one more residual,
+!!   (k - 1)/u_s: the periods' residuals are then tested against their u with the scale's
+!!   part in them (generalised least squares: the scale is common to every period), and the
+!!   budget's row amplitude_scale has dI1/dk, a central difference of the whole inversion
+!!   with every amplitude scaled by 1 +- h.  Without u stated for the timings (their
+!!   scatter sets it) the scale is not fitted: the row alone carries it.
+!!
 !! Units are the deck's (consistent units, time in seconds): I1 in mass x length^2,
 !! periods in s, amplitudes in degrees.  No routine stops; failures come back in status_t.
 module period_inversion
@@ -73,7 +85,7 @@ module period_inversion
     use monte_carlo, only: mc_task_t, monte_carlo_run
     use estimator, only: lsq_problem_t, lsq_options_t, lsq_result_t, estimate, DAMP_HALVING, &
         STEP_LARGEST, FAIL_START, FAIL_EVALUATION, FAIL_JACOBIAN
-    use budget, only: ROW_INPUT, ROW_TIMING, ROW_AMPLITUDE
+    use budget, only: ROW_INPUT, ROW_TIMING, ROW_AMPLITUDE, ROW_AMPLITUDE_SCALE
     use unused_arg, only: unused
     implicit none
     private
@@ -95,6 +107,11 @@ module period_inversion
         real(dp) :: chi2 = 0.0_dp, p_value = 1.0_dp, birge = 0.0_dp, inflation = 1.0_dp
         real(dp) :: z_worst = 0.0_dp
         integer :: dof = 0, worst = 0
+        !> with fit_scale: the amplitudes' scale k fitted (A_i k), its u from the fit alone,
+        !! and (period_budget) dk/dx of each budget row, in the rows' order
+        logical :: scaled = .false.
+        real(dp) :: scale = 1.0_dp, u_scale_fit = 0.0_dp
+        real(dp), allocatable :: scale_c(:)
     end type period_fit_t
 
     public :: input_u_t, budget_row_t
@@ -128,6 +145,9 @@ module period_inversion
         real(dp), allocatable :: sw(:)          !! the weights' roots (1/u)
         real(dp), allocatable :: tm(:)          !! the model's periods at I1 = i1_last
         real(dp) :: i1_last = -huge(1.0_dp)
+        logical :: fit_scale = .false.         !! p(2): the amplitudes' scale k
+        real(dp) :: k_last = -huge(1.0_dp)      !! the k of tm
+        real(dp) :: prior = 0.0_dp              !! > 0: k's relative u, the residual (k - 1)/prior
     contains
         procedure :: residual => period_residual
         procedure :: nres => period_nres
@@ -281,8 +301,11 @@ contains
     !! Starts from rg%inertia(1).  ERR_DECK for a period no positive I1 can give (or not a
     !! torsion scene); ERR_NUMERIC when Gauss-Newton does not converge.  timing_weights:
     !! the weights from the timings' u alone (u_each, known to a common factor: timings whose
-    !! u is their scatter, found after the fit), not from the amplitudes'.
-    subroutine invert_periods(rg, acc, periods, amps, u, fit, stat, u_each, timing_weights)
+    !! u is their scatter, found after the fit), not from the amplitudes'.  fit_scale: the
+    !! amplitudes' common scale k fitted too (module header), from k_start (else 1), with
+    !! scale_prior > 0 its relative u as read (one more residual).
+    subroutine invert_periods(rg, acc, periods, amps, u, fit, stat, u_each, timing_weights, &
+                              fit_scale, k_start, scale_prior)
         type(rig_t), intent(in) :: rg           !! the rig; inertia(1) is the start guess
         type(accuracy_t), intent(in) :: acc     !! accuracy of simulated periods
         real(dp), intent(in) :: periods(:)      !! measured full periods (s)
@@ -292,12 +315,16 @@ contains
         type(status_t), intent(out) :: stat
         real(dp), intent(in), optional :: u_each(:) !! each period's u (s), else u%period
         logical, intent(in), optional :: timing_weights !! weights from u_each alone
+        logical, intent(in), optional :: fit_scale      !! fit the amplitudes' scale k too
+        real(dp), intent(in), optional :: k_start       !! its start (1: as read)
+        real(dp), intent(in), optional :: scale_prior   !! k's relative u (0: k free)
         type(period_problem_t) :: prob
         type(lsq_options_t) :: opts
         type(lsq_result_t) :: res
         real(dp) :: w(size(periods)), up(size(periods))
-        real(dp) :: scale, i1, ilo, tmin, ta, tb, h, dtda
-        integer :: i
+        real(dp) :: scale, i1, ilo, tmin, ta, tb, h, dtda, k0
+        real(dp), allocatable :: p0(:), rr(:)
+        integer :: i, n
         character(len=300) :: buf
         logical :: sym, amp_w
         stat%code = 0
@@ -360,6 +387,13 @@ contains
         prob%amps = amps
         prob%sw = sqrt(w)
         allocate (prob%tm(size(periods)))
+        prob%fit_scale = .false.
+        if (present(fit_scale)) prob%fit_scale = fit_scale
+        k0 = 1.0_dp
+        if (present(k_start)) k0 = k_start
+        prob%prior = 0.0_dp
+        if (present(scale_prior) .and. prob%fit_scale) prob%prior = max(0.0_dp, scale_prior)
+        n = size(periods)
         ! Gauss-Newton in I1 (the estimator), the step halved to keep I1 > ilo and to lower
         ! the weighted sum of squares (a simulated period the model cannot give, e.g. a
         ! cable slack at release when I1 is very small, is a failed step too); converged
@@ -382,16 +416,38 @@ contains
         opts%exact = 0.0_dp
         opts%floor_xtol = merge(1.0e3_dp*I_TOL, 100.0_dp*I_TOL_SIM, sym)
         opts%fail_on_error = sym
-        opts%lower = [ilo]
-        opts%names = [character(len=16) :: 'I1']
+        if (prob%fit_scale) then
+            ! k inside (0, 180 deg over the largest amplitude): every swing below 180 deg
+            opts%lower = [ilo, 1.0e-3_dp]
+            opts%upper = [huge(1.0_dp), (1.0_dp - 1.0e-9_dp)*180.0_dp/maxval(amps)]
+            opts%names = [character(len=16) :: 'I1', 'amplitude_scale']
+            p0 = [i1, k0]
+        else
+            opts%lower = [ilo]
+            opts%names = [character(len=16) :: 'I1']
+            p0 = [i1]
+        end if
         ! the self-check (the estimator's): tested when each period's u is stated
-        opts%covariance = any(up > 0.0_dp) .or. amp_w
+        opts%covariance = any(up > 0.0_dp) .or. amp_w .or. prob%fit_scale
         opts%u_stated = .true.
         if (present(timing_weights)) opts%u_stated = .not. timing_weights
-        call estimate(prob, [i1], opts, res, stat)
+        call estimate(prob, p0, opts, res, stat)
         fit%iterations = res%jacobians
         if (res%converged) then
             fit%i1 = res%p(1)
+            if (prob%fit_scale) then
+                fit%scaled = .true.
+                fit%scale = res%p(2)
+                if (allocated(res%cov_fit)) fit%u_scale_fit = sqrt(max(0.0_dp, res%cov_fit(2, 2)))
+                if (.not. allocated(res%cov_fit)) then
+                    ! I1 and the scale not told apart by these periods
+                    call set_error(stat, ERR_DECK, '&measurement estimate = ''I1 '// &
+                        'amplitude_scale'': the periods do not tell the amplitudes'' scale '// &
+                        'from I1; allowed: periods timed at amplitudes far apart (e.g. 10 '// &
+                        'and 40 degrees), or u_amplitude_scale instead')
+                    return
+                end if
+            end if
             fit%tested = opts%covariance .and. opts%u_stated .and. res%dof > 0
             fit%dof = res%dof
             fit%chi2 = res%cost
@@ -400,11 +456,15 @@ contains
                 fit%p_value = res%p_value
                 fit%consistent = res%consistent
                 fit%inflation = res%inflation
-                fit%worst = res%worst
+                ! the worst period (the scale's own residual is not a period)
+                if (size(res%r) > n) fit%worst = maxloc(abs(res%r(1:n)), 1)
+                if (size(res%r) <= n) fit%worst = res%worst
                 if (fit%worst > 0) fit%z_worst = res%r(fit%worst)
             end if
             ! the model's periods at the estimate (the last evaluation may be a step refused)
-            if (.not. (prob%i1_last == fit%i1)) call prob%residual(res%p, w, stat)
+            allocate (rr(prob%nres()))
+            if (.not. (prob%i1_last == fit%i1 .and. prob%k_last == fit%scale)) &
+                call prob%residual(res%p, rr, stat)
             if (stat%code /= 0) return
             fit%model_periods = prob%tm
             fit%residual_rms = sqrt(sum((prob%tm - periods)**2)/size(periods))
@@ -417,7 +477,7 @@ contains
             if (sym) return
         end select
         i1 = res%p(1)
-        if (.not. sym .and. all(res%r > 0.0_dp)) then
+        if (.not. sym .and. all(res%r(1:n) > 0.0_dp)) then
             ! the model's periods are all still longer at the smallest I1 the model could
             ! swing with (a cable goes slack below it): no I1 gives them
             call set_error(stat, ERR_DECK, '&measurement periods: shorter than the '// &
@@ -458,24 +518,31 @@ contains
         real(dp), intent(out) :: r(:)
         type(status_t), intent(out) :: stat
         integer :: k
+        real(dp) :: ks
         r = 0.0_dp
         prob%i1_last = -huge(1.0_dp)
+        ks = 1.0_dp
+        if (prob%fit_scale) ks = p(2)
         do k = 1, size(prob%periods)
-            call model_period(prob%rg, prob%acc, prob%sym, p(1), prob%amps(k), prob%tm(k), stat)
+            call model_period(prob%rg, prob%acc, prob%sym, p(1), prob%amps(k)*ks, prob%tm(k), &
+                              stat)
             if (stat%code /= 0) return
         end do
-        r = prob%sw*(prob%tm - prob%periods)
+        r(1:size(prob%periods)) = prob%sw*(prob%tm - prob%periods)
+        if (prob%prior > 0.0_dp) r(size(r)) = (ks - 1.0_dp)/prob%prior
         prob%i1_last = p(1)
+        prob%k_last = ks
     end subroutine period_residual
 
-    !> The number of periods.
+    !> The number of periods (and the scale's own residual when it has a prior).
     pure integer function period_nres(prob) result(n)
         class(period_problem_t), intent(in) :: prob
-        n = size(prob%periods)
+        n = size(prob%periods) + merge(1, 0, prob%prior > 0.0_dp)
     end function period_nres
 
-    !> dr/dI1 by a forward difference from the model's periods at p (relative step 1e-7;
-    !! SLOPE_REL_SIM for simulated periods: only the direction of the step depends on it).
+    !> dr/dI1 (and dr/dk with fit_scale) by forward differences from the model's periods at
+    !! p (relative step 1e-7; SLOPE_REL_SIM for simulated periods: only the direction of the
+    !! step depends on it).
     subroutine period_jacobian(prob, p, r, h, jac, evaluations, stat)
         class(period_problem_t), intent(inout) :: prob
         real(dp), intent(in) :: p(:)            !! I1
@@ -484,11 +551,13 @@ contains
         real(dp), intent(out) :: jac(:, :)
         integer, intent(out) :: evaluations
         type(status_t), intent(out) :: stat
-        real(dp) :: tp, hh, rr(size(r))
+        real(dp) :: tp, hh, rr(size(r)), ks, hk
         integer :: k
         jac = 0.0_dp
         evaluations = 0
-        if (.not. (prob%i1_last == p(1))) then
+        ks = 1.0_dp
+        if (prob%fit_scale) ks = p(2)
+        if (.not. (prob%i1_last == p(1) .and. prob%k_last == ks)) then
             call prob%residual(p, rr, stat)
             evaluations = 1
             if (stat%code /= 0) return
@@ -496,9 +565,22 @@ contains
         hh = merge(1.0e-7_dp, SLOPE_REL_SIM, prob%sym)*p(1)
         call unused(h)
         do k = 1, size(prob%periods)
-            call model_period(prob%rg, prob%acc, prob%sym, p(1) + hh, prob%amps(k), tp, stat)
+            call model_period(prob%rg, prob%acc, prob%sym, p(1) + hh, prob%amps(k)*ks, tp, &
+                              stat)
             if (stat%code /= 0) return
             jac(k, 1) = prob%sw(k)*((tp - prob%tm(k))/hh)
+        end do
+        evaluations = evaluations + 1
+        if (.not. prob%fit_scale) return
+        ! dr/dk, the step toward smaller amplitudes (inside 180 degrees); dT/dk is a small
+        ! part of T (the amplitude's correction), so the step is larger than I1's
+        hk = -1.0e-5_dp*ks
+        if (prob%prior > 0.0_dp) jac(size(r), 2) = 1.0_dp/prob%prior
+        do k = 1, size(prob%periods)
+            call model_period(prob%rg, prob%acc, prob%sym, p(1), prob%amps(k)*(ks + hk), tp, &
+                              stat)
+            if (stat%code /= 0) return
+            jac(k, 2) = prob%sw(k)*((tp - prob%tm(k))/hk)
         end do
         evaluations = evaluations + 1
     end subroutine period_jacobian
@@ -514,7 +596,11 @@ contains
     !! not enter pure torsion (I2, I3, the mass centre) have sensitivity 0 by symmetry
     !! (module inputs), and l, l' share the effect of their common length.  u_each: the
     !! standard uncertainty of each period (e.g. u_period / cycles), else u%period.
-    subroutine period_budget(rg, acc, periods, amps, u, fit, stat, x, u_each)
+    !! fit_scale: the inversions fit the amplitudes' scale too (fit%scale_c: dk/dx of each
+    !! row); u_amp_scale > 0: the row amplitude_scale (module header), and with fit_scale
+    !! the inversions take it as the scale's prior.
+    subroutine period_budget(rg, acc, periods, amps, u, fit, stat, x, u_each, fit_scale, &
+                             u_amp_scale)
         type(rig_t), intent(in) :: rg           !! the rig
         type(accuracy_t), intent(in) :: acc     !! accuracy of simulated periods
         real(dp), intent(in) :: periods(:)      !! measured periods (s)
@@ -524,10 +610,14 @@ contains
         type(status_t), intent(out) :: stat
         type(input_t), intent(in), optional :: x(:)     !! the rig's inputs
         real(dp), intent(in), optional :: u_each(:)     !! each period's u (s)
+        logical, intent(in), optional :: fit_scale      !! the scale fitted in each inversion
+        real(dp), intent(in), optional :: u_amp_scale   !! the scale's relative u (not fitted)
         type(input_t), allocatable :: xs(:)
         type(budget_row_t), allocatable :: rows(:)
         type(start_t) :: st0
-        real(dp) :: up(size(periods)), c, hx, hrel, ip, im
+        real(dp), allocatable :: kc(:)
+        real(dp) :: up(size(periods)), c, hx, hrel, ip, im, kp, km, h2, kl, us
+        logical :: fs
         character(len=24) :: nm
         logical :: sym
         integer :: n, i, k
@@ -537,6 +627,13 @@ contains
         hrel = merge(FD_REL, FD_REL_SIM, sym)
         up = u%period
         if (present(u_each)) up = u_each
+        fs = .false.
+        if (present(fit_scale)) fs = fit_scale
+        us = 0.0_dp
+        if (present(u_amp_scale)) us = u_amp_scale
+        kp = fit%scale
+        km = fit%scale
+        allocate (kc(0))
         if (present(x)) then
             xs = x
         else
@@ -550,18 +647,22 @@ contains
             if (sym .and. no_effect_on_torsion(xs(k)%name)) then
                 rows = [rows, budget_row_t(xs(k)%name, xs(k)%value, xs(k)%u, 0.0_dp, 0.0_dp, &
                                            ROW_INPUT)]
+                kc = [kc, 0.0_dp]
                 cycle
             end if
             hx = hrel*abs(xs(k)%value)
             if (.not. (hx > 0.0_dp)) hx = hrel*rg%b_prime
             if (trim(xs(k)%name) == 'lambda') hx = hrel
             call inverted_input(xs(k), xs(k)%value + hx, ip, stat)
+            kp = kl
             if (stat%code == 0) call inverted_input(xs(k), xs(k)%value - hx, im, stat)
+            km = kl
             if (stat%code /= 0) then
                 stat%msg = 'uncertainty budget, input '//trim(xs(k)%name)//': '//stat%msg
                 return
             end if
             c = (ip - im)/(2*hx)
+            kc = [kc, (kp - km)/(2*hx)]
             rows = [rows, budget_row_t(xs(k)%name, xs(k)%value, xs(k)%u, c, abs(c)*xs(k)%u, &
                                        ROW_INPUT)]
         end do
@@ -570,12 +671,15 @@ contains
             write (nm, '(a,i0,a)') 'period(', i, ')'
             hx = hrel*periods(i)
             call inverted_measured(i, periods(i) + hx, amps(i), ip, stat)
+            kp = kl
             if (stat%code == 0) call inverted_measured(i, periods(i) - hx, amps(i), im, stat)
+            km = kl
             if (stat%code /= 0) then
                 stat%msg = 'uncertainty budget, input '//trim(nm)//': '//stat%msg
                 return
             end if
             c = (ip - im)/(2*hx)
+            kc = [kc, (kp - km)/(2*hx)]
             rows = [rows, budget_row_t(nm, periods(i), up(i), c, abs(c)*up(i), ROW_TIMING)]
         end do
         do i = 1, n
@@ -584,13 +688,17 @@ contains
             hx = hrel*max(1.0_dp, amps(i))
             if (amps(i) + hx < 180.0_dp .and. amps(i) - hx > 0.0_dp) then
                 call inverted_measured(i, periods(i), amps(i) + hx, ip, stat)
+                kp = kl
                 if (stat%code == 0) call inverted_measured(i, periods(i), amps(i) - hx, im, stat)
+                km = kl
                 c = (ip - im)/(2*hx)
+                kc = [kc, (kp - km)/(2*hx)]
             else
                 ! one-sided, inside 0 .. 180 degrees
                 hx = sign(hx, 90.0_dp - amps(i))
                 call inverted_measured(i, periods(i), amps(i) + hx, ip, stat)
                 c = (ip - fit%i1)/hx
+                kc = [kc, (kl - fit%scale)/hx]
             end if
             if (stat%code /= 0) then
                 stat%msg = 'uncertainty budget, input '//trim(nm)//': '//stat%msg
@@ -599,7 +707,32 @@ contains
             rows = [rows, budget_row_t(nm, amps(i), u%amplitude, c, abs(c)*u%amplitude, &
                                        ROW_AMPLITUDE)]
         end do
+        if (us > 0.0_dp) then
+            block
+                ! every amplitude on one scale k (1 as read): dI1/dk of the whole inversion,
+                ! one-sided when a step would pass 180 degrees
+                ! (a larger step than the others': the periods often tell k better than
+                ! its u, so I1 moves little with it)
+                h2 = 1.0e-3_dp
+                if (maxval(amps)*(1.0_dp + h2) < 180.0_dp) then
+                    call inverted_scaled(1.0_dp + h2, ip, stat)
+                    if (stat%code == 0) call inverted_scaled(1.0_dp - h2, im, stat)
+                    c = (ip - im)/(2*h2)
+                else
+                    call inverted_scaled(1.0_dp - h2, im, stat)
+                    c = (fit%i1 - im)/h2
+                end if
+                if (stat%code /= 0) then
+                    stat%msg = 'uncertainty budget, input amplitude_scale: '//stat%msg
+                    return
+                end if
+                rows = [rows, budget_row_t('amplitude_scale', 1.0_dp, us, c, abs(c)*us, &
+                                           ROW_AMPLITUDE_SCALE)]
+                kc = [kc, 0.0_dp]
+            end block
+        end if
         fit%budget = rows
+        if (fs) fit%scale_c = kc
         fit%u_i1 = 0.0_dp
         if (size(rows) > 0) fit%u_i1 = sqrt(sum(rows%contribution**2))
     contains
@@ -620,8 +753,10 @@ contains
             else
                 call set_input(dd, st0, xi%name, v)
             end if
-            call invert_periods(dd, acc, periods, amps, u, f2, st, u_each)
+            call invert_periods(dd, acc, periods, amps, u, f2, st, u_each, fit_scale=fs, &
+                                k_start=fit%scale, scale_prior=us)
             i1 = f2%i1
+            kl = f2%scale
         end subroutine inverted_input
         !> I1 with period i and its amplitude set to (tp, ta).
         subroutine inverted_measured(i, tp, ta, i1, st)
@@ -638,9 +773,24 @@ contains
             aa = amps
             pp(i) = tp
             aa(i) = ta
-            call invert_periods(dd, acc, pp, aa, u, f2, st, u_each)
+            call invert_periods(dd, acc, pp, aa, u, f2, st, u_each, fit_scale=fs, &
+                                k_start=fit%scale, scale_prior=us)
             i1 = f2%i1
+            kl = f2%scale
         end subroutine inverted_measured
+        !> I1 with every amplitude times ks.
+        subroutine inverted_scaled(ks, i1, st)
+            real(dp), intent(in) :: ks
+            real(dp), intent(out) :: i1
+            type(status_t), intent(out) :: st
+            type(rig_t) :: dd
+            type(period_fit_t) :: f2
+            dd = rg
+            dd%inertia(1) = fit%i1
+            call invert_periods(dd, acc, periods, amps*ks, u, f2, st, u_each, fit_scale=fs, &
+                                k_start=fit%scale/ks, scale_prior=us)
+            i1 = f2%i1
+        end subroutine inverted_scaled
     end subroutine period_budget
 
     !> Monte Carlo sample k: every input drawn from N(value, u^2) with stream k of `seed`

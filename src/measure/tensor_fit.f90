@@ -40,6 +40,11 @@
 !!   its u in degrees is the root sum of the two.  Coverage: Welch-Satterthwaite over the
 !!   inputs (a timing u from the scatter has n - 6 degrees of freedom, the others are Type B:
 !!   infinite), k from Student's t (module stats).
+!! * The self-check: with the rows' u stated (not from the scatter) and p < 0.05, the fit is
+!!   inconsistent and every per-hang source (timing, amplitude, definition, direction, own
+!!   rig: together the fit's covariance) is inflated by the Birge ratio (chi^2/dof)^(1/2),
+!!   so that no u is below what the residuals imply; those rows then carry the n - 6
+!!   degrees of freedom of that ratio into Welch-Satterthwaite.
 !! * The chi-square r_w^T r_w of the rows against the fit with n - 6 degrees of freedom;
 !!   per hang, the vertical moment its rows measure, I_v = u . J u + delta with delta the
 !!   generalised least-squares shift of u . J u alone that its rows ask for, its u from the
@@ -160,6 +165,11 @@ module tensor_fit
         real(dp) :: k95(3) = 0.0_dp             !! their coverage factors for 95 %
         real(dp) :: chi2 = 0.0_dp, p_value = 1.0_dp
         integer :: dof = 0
+        !> the self-check (module header): tested (u stated, dof > 0), consistent (p >=
+        !! 0.05), the Birge ratio (chi^2/dof)^(1/2), inflation (the Birge ratio when
+        !! inconsistent, else 1)
+        logical :: tested = .false., consistent = .true.
+        real(dp) :: birge = 0.0_dp, inflation = 1.0_dp
         real(dp) :: condition = 0.0_dp          !! of the directions' design matrix
         real(dp) :: projection_difference = 0.0_dp  !! max |x_proj - x| / moments(3)
         logical :: scatter = .false.            !! timing u from the residuals' scatter
@@ -255,6 +265,8 @@ module tensor_fit
     !! ends them too when it lowers the misfit by less than 1e-10 of itself.
     integer, parameter :: MAX_ITER = 40
     real(dp), parameter :: X_TOL = 1.0e-12_dp
+    !> p of chi^2 below this: the rows disagree with the fit beyond their u (self-check)
+    real(dp), parameter :: CONSISTENCY_LEVEL = 0.05_dp
     !> Relative steps of the differences: the Jacobian, the inputs (linearised model /
     !! simulated periods).
     real(dp), parameter :: H_LIN = 1.0e-6_dp, H_SIM = 1.0e-5_dp
@@ -1161,6 +1173,12 @@ contains
         if (fit%scatter) fit%chi2 = real(max(fit%dof, 0), dp)
         fit%p_value = 1.0_dp
         if (fit%dof > 0) fit%p_value = chi2_sf(fit%chi2, real(fit%dof, dp))
+        fit%tested = .not. fit%scatter .and. fit%dof > 0
+        if (fit%dof > 0) fit%birge = sqrt(fit%chi2/fit%dof)
+        if (fit%tested .and. fit%p_value < CONSISTENCY_LEVEL) then
+            fit%consistent = .false.
+            fit%inflation = max(1.0_dp, fit%birge)
+        end if
         aw = 0.0_dp
         aw(1:n, 1:6) = a(prob%row_case, :)
         if (prob%est_cg) call cg_columns(pr, x, tc, aw, stat)
@@ -1244,10 +1262,12 @@ contains
         real(dp), allocatable :: gmat(:, :), col(:, :), gt(:, :)
         real(dp), allocatable :: cmoment(:, :)       ! per budget row: contribution to moments
         integer :: n, i, h, k, j, np, na, ja
-        real(dp) :: cgrp(prob%np, prob%np)
+        real(dp) :: cgrp(prob%np, prob%np), fi
+        integer :: n_common
         n = size(prob%rows)
         np = prob%np
         na = size(prob%att_hang)
+        fi = fit%inflation                      ! the per-hang sources' (the self-check)
         call la_svd(aw, sv, vt, stat)
         if (stat%code /= STATUS_OK) return
         if (.not. (sv(np) > 1.0e-14_dp*sv(1))) then
@@ -1313,6 +1333,7 @@ contains
             end do
             call push('fixture_inertia', maxval(prob%u%fix_inertia), cgrp, ROW_INPUT)
         end if
+        n_common = size(fit%budget)
         do h = 1, size(prob%hangs)
             ! the timings of its rows
             cgrp = 0.0_dp
@@ -1320,9 +1341,9 @@ contains
                 if (prob%rows(i)%release /= h) cycle
                 col(:, 1) = 0.0_dp
                 col(i, 1) = -1.0_dp
-                call add_input(col(:, 1), u_t(i), cgrp)
+                call add_input(col(:, 1), fi*u_t(i), cgrp)
             end do
-            call push('period('//itoa(prob%hangs(h)%id)//')', u_t(first_row(h)), cgrp, &
+            call push('period('//itoa(prob%hangs(h)%id)//')', fi*u_t(first_row(h)), cgrp, &
                       ROW_TIMING)
             ! amplitudes
             if (prob%u%amplitude > 0.0_dp .and. any(prob%case_amp(pack(prob%row_case, &
@@ -1332,9 +1353,9 @@ contains
                     if (prob%rows(i)%release /= h) cycle
                     col(:, 1) = 0.0_dp
                     col(i, 1) = s_amp(prob%row_case(i))
-                    call add_input(col(:, 1), prob%u%amplitude, cgrp)
+                    call add_input(col(:, 1), fi*prob%u%amplitude, cgrp)
                 end do
-                call push('amplitude('//itoa(prob%hangs(h)%id)//')', prob%u%amplitude, cgrp, &
+                call push('amplitude('//itoa(prob%hangs(h)%id)//')', fi*prob%u%amplitude, cgrp, &
                           ROW_AMPLITUDE)
             end if
             ! the period's definition (the drift of the maxima)
@@ -1344,11 +1365,11 @@ contains
                     if (prob%rows(i)%release /= h) cycle
                     col(:, 1) = 0.0_dp
                     col(i, 1) = -1.0_dp
-                    call add_input(col(:, 1), prob%u_def(i), cgrp)
+                    call add_input(col(:, 1), fi*prob%u_def(i), cgrp)
                 end do
                 call push('definition('//itoa(prob%hangs(h)%id)//')', &
-                          maxval(prob%u_def(pack([(i, i=1, n)], prob%rows%release == h))), cgrp, &
-                          ROW_DEFINITION)
+                          fi*maxval(prob%u_def(pack([(i, i=1, n)], prob%rows%release == h))), &
+                          cgrp, ROW_DEFINITION)
             end if
             ! the direction: three rotations shared by its rows (and its attitude)
             ja = 0
@@ -1361,10 +1382,10 @@ contains
                         if (prob%rows(i)%release == h) col(i, 1) = s_dir(prob%row_case(i), k)
                     end do
                     if (ja > 0) col(n + ja, 1) = ex%att_dir(ja, k)
-                    call add_input(col(:, 1), prob%u%direction, cgrp)
+                    call add_input(col(:, 1), fi*prob%u%direction, cgrp)
                 end do
-                call push('direction('//itoa(prob%hangs(h)%id)//')', prob%u%direction/deg, cgrp, &
-                          ROW_DIRECTION)
+                call push('direction('//itoa(prob%hangs(h)%id)//')', fi*prob%u%direction/deg, &
+                          cgrp, ROW_DIRECTION)
             end if
             ! its own rig
             do k = 1, 4
@@ -1374,18 +1395,18 @@ contains
                 do i = 1, n
                     if (prob%rows(i)%release == h) col(i, 1) = s_rig(prob%row_case(i), k)
                 end do
-                call add_input(col(:, 1), prob%u%rig(k), cgrp)
+                call add_input(col(:, 1), fi*prob%u%rig(k), cgrp)
                 call push(trim(RIG_COLUMNS(k))//'('//itoa(prob%hangs(h)%id)//')', &
-                          prob%u%rig(k), cgrp, ROW_INPUT)
+                          fi*prob%u%rig(k), cgrp, ROW_INPUT)
             end do
             ! its attitude as measured
             if (ja > 0) then
                 cgrp = 0.0_dp
                 col(:, 1) = 0.0_dp
                 col(n + ja, 1) = -1.0_dp
-                call add_input(col(:, 1), prob%u%attitude, cgrp)
-                call push('attitude('//itoa(prob%hangs(h)%id)//')', prob%u%attitude/deg, cgrp, &
-                          ROW_INPUT)
+                call add_input(col(:, 1), fi*prob%u%attitude, cgrp)
+                call push('attitude('//itoa(prob%hangs(h)%id)//')', fi*prob%u%attitude/deg, &
+                          cgrp, ROW_INPUT)
             end if
         end do
         fit%cov = fit%cov_all(1:6, 1:6)
@@ -1416,6 +1437,11 @@ contains
                 fit%nu_eff(k) = welch_satterthwaite(cmoment(k, :), &
                     [(merge(real(fit%dof, dp), 0.0_dp, fit%budget(j)%kind == ROW_TIMING), &
                       j=1, size(fit%budget))])
+            else if (fi > 1.0_dp) then
+                ! the per-hang rows inflated by the Birge ratio: its dof (the mass, g and
+                ! the deck's rig rows, the first, are Type B)
+                fit%nu_eff(k) = welch_satterthwaite(cmoment(k, :), &
+                    [(merge(real(fit%dof, dp), 0.0_dp, j > n_common), j=1, size(fit%budget))])
             end if
             fit%k95(k) = coverage_factor(fit%nu_eff(k), 0.95_dp)
         end do
