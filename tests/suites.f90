@@ -32,6 +32,7 @@ module suites
     use test_stats, only: run_stats_tests
     use test_estimator, only: run_estimator_tests
     use test_measure, only: run_measure_tests
+    use test_tare, only: run_tare_tests
     use test_sensitivities, only: run_sensitivities_tests
     use test_tensor, only: run_tensor_tests
     use test_tensor_lab, only: run_tensor_lab_tests
@@ -116,6 +117,8 @@ contains
                     'traps, tare, trifilar', run_measure_tests), &
             suite_t('calibrate', 'rig calibration with a reference body: a calibrated rig '// &
                     'measures a second body', run_calibrate_tests), &
+            suite_t('tare', 'a tare from its own output: the shared inputs correlated, its '// &
+                    'dof kept, refusals', run_tare_tests), &
             suite_t('sensitivities', 'forward sensitivities: exact, against differences of '// &
                     'runs, fits, monodromies', run_sensitivities_tests), &
             suite_t('stats', 'Student''s t, chi-square tails, Welch-Satterthwaite, weighted '// &

@@ -1,6 +1,7 @@
 !> Suite certificate: the figures as SVG (round ticks, every value drawn or left out when
 !! not finite, thinning of long series) and the certificate page (escaping, balanced
-!! elements, the fields it must hold, written whole through the run's files).
+!! elements, the fields it must hold, written whole through the run's files), an identify
+!! run's page and a tensor run's page.
 module test_certificate
     use kinds, only: dp
     use status, only: status_t
@@ -27,6 +28,8 @@ contains
         if (t%want('certificate: the page')) call test_page(t)
         if (t%want('certificate: an identify run''s page holds every field')) &
             call test_identify_page(t, exe)
+        if (t%want('certificate: a tensor run''s page holds every field')) &
+            call test_tensor_page(t, exe)
     end subroutine run_certificate_tests
 
     subroutine test_svg(t)
@@ -175,6 +178,87 @@ contains
             s = trim(adjustl(buf))
         end function sci6
     end subroutine test_identify_page
+
+    !> tensor on the shipped example (its Monte Carlo off): NAME.certificate.html beside
+    !! NAME.tensor, balanced, without a script, holding each section (result, mass centre,
+    !! body and rig, method, budget, checks, hangs, figure), the principal moments and their
+    !! U as in NAME.tensor, the entries, the axes, the checks (positive definite, triangle,
+    !! chi^2, the smallest angle between hangs), the budget's rows, every hang, the figure,
+    !! the version, the deck's CRC-64 and the date.
+    subroutine test_tensor_page(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=*), parameter :: SECTIONS(8) = [character(len=28) :: '1. Result', &
+            '2. Mass centre', '3. Body and rig as measured', '4. Method and model', &
+            '5. Uncertainty budget', '6. Checks', '7. Hangs', '8. Figure']
+        character(len=*), parameter :: FIELDS(14) = [character(len=48) :: '>J_xx<', '>J_yz<', &
+            '>I_3<', 'U (95 %)', 'axis (x, y, z)', 'positive definite', 'triangle: I_3', &
+            'fit: chi^2 (dof)', 'smallest angle between two hangs', '>b_prime<', &
+            '>direction(1)<', 'vertical moment measured', 'model''s period', '<svg']
+        character(len=:), allocatable :: page, path, dir
+        character(len=256) :: val
+        real(dp) :: m(3), big_u(3)
+        integer :: j, ex, ios
+        logical :: ok
+        dir = SCR//'/tensor'
+        call fresh_dir(dir)
+        call execute_command_line('sed -e "s/monte_carlo = 2000/monte_carlo = 0/" '// &
+            'input/tensor_example.nml > '//dir//'/tensor_example.nml && cp '// &
+            'input/tensor_example_hangs.csv '//dir//'/')
+        ex = run(exe//' '//dir//'/tensor_example.nml --out '//dir, SCR)
+        path = dir//'/tensor_example.certificate.html'
+        ok = exists(path)
+        call t%check('certificate: tensor_example ends 0 and writes its page', ex == 0 .and. ok)
+        if (.not. ok) return
+        page = whole(path)
+        call t%check('certificate: tensor_example: balanced, no script, A4', balanced(page) &
+                     .and. index(page, '<script') == 0 .and. index(page, 'size: A4') > 0)
+        ok = .true.
+        do j = 1, size(SECTIONS)
+            if (index(page, trim(SECTIONS(j))) == 0) then
+                ok = .false.
+                write (*, '(a)') '   no section '//trim(SECTIONS(j))
+            end if
+        end do
+        call t%check('certificate: tensor_example: every section', ok)
+        ok = .true.
+        do j = 1, size(FIELDS)
+            if (index(page, trim(FIELDS(j))) == 0) then
+                ok = .false.
+                write (*, '(a)') '   no field '//trim(FIELDS(j))
+            end if
+        end do
+        call t%check('certificate: tensor_example: the entries, moments, axes, checks, '// &
+                     'budget, hangs, figure', ok)
+        call read_kv_text(dir//'/tensor_example.tensor', 'I_principal', val)
+        read (val, *, iostat=ios) m
+        call read_kv_text(dir//'/tensor_example.tensor', 'U95_I_principal', val)
+        if (ios == 0) read (val, *, iostat=ios) big_u
+        ok = ios == 0
+        do j = 1, 3
+            if (ok) ok = index(page, '>'//es(m(j), 12, 6)//'<') > 0 .and. &
+                         index(page, '>'//es(big_u(j), 8, 2)//'<') > 0
+        end do
+        call t%check('certificate: tensor_example: the principal moments and their U as in '// &
+                     'the .tensor file', ok)
+        ok = .true.
+        do j = 1, 9
+            if (index(page, '<tr><td class="n">'//itoa(j)//'</td><td>') == 0) ok = .false.
+        end do
+        call t%check('certificate: tensor_example: each of the nine hangs', ok)
+        call t%check('certificate: tensor_example: version, CRC-64 and date', &
+                     index(page, 'bifilar 1.1') > 0 .and. index(page, 'CRC-64 of the deck') > 0 &
+                     .and. index(page, ' 20') > 0)
+    contains
+        function es(x, w, d) result(s)
+            real(dp), intent(in) :: x
+            integer, intent(in) :: w, d
+            character(len=:), allocatable :: s
+            character(len=32) :: buf
+            write (buf, '(es'//itoa(w)//'.'//itoa(d)//')') x
+            s = trim(adjustl(buf))
+        end function es
+    end subroutine test_tensor_page
 
     !> A whole text file as one string, lines joined by new lines.
     function whole(path) result(s)

@@ -2,8 +2,9 @@
 !! its torsion (module platform_floquet) against the paper's reduced equation (centred) and
 !! against the turn about the mass centre, M g (R^2 - e^2)/L (off the axis); the multipliers
 !! of a conservative orbit (their product 1); the decks of floquet, chart, design and
-!! simulate through the program; and the platforms the program refuses (exit 2 or 4, one
-!! line, no file).
+!! simulate through the program; identify on a platform (periods and records, the body
+!! above or below the cables, its mass centre off the axis, the budget and Monte Carlo);
+!! and the platforms the program refuses (exit 2 or 4, one line, no file).
 module test_platform_analyses
     use kinds, only: dp, deg
     use status, only: status_t
@@ -17,6 +18,10 @@ module test_platform_analyses
     use platform_model, only: check_platform
     use platform_floquet, only: platform_floquet_t, platform_floquet_analysis, &
                                 platform_floquet_point
+    use rig, only: rig_t, start_t, accuracy_t
+    use period_inversion, only: rig_period_s
+    use platform_measure, only: platform_record
+    use random, only: rng_t, rng_stream, rng_normal
     implicit none
     private
 
@@ -37,6 +42,10 @@ contains
             call test_floquet_offset(t)
         if (t%want('platform decks: floquet, chart, design and simulate')) &
             call test_platform_decks(t, exe)
+        if (t%want('platform identify: periods and records, the body above the cables')) &
+            call test_identify_depth(t, exe)
+        if (t%want('platform identify: the mass centre off the axis, budget and Monte Carlo')) &
+            call test_identify_offset(t, exe)
     end subroutine run_platform_analysis_tests
 
     !> The body of these tests: diag(Ixx, Iyy, Izz) in the body's frame.
@@ -239,6 +248,266 @@ contains
         call t%check('platform decks: simulate''s energy error is below 1e-8 J', ios == 0 .and. &
                      abs(per) < 1.0e-8_dp)
     end subroutine test_platform_decks
+
+    !> The rig of the identify tests: a trifilar (R = R' = 0.135 m, l = 1 m), 2.048 kg,
+    !! I1 = 0.0243 kg m^2, the mass centre at cg_offset (x) and cg_depth.
+    function identify_rig(offset, depth) result(rg)
+        real(dp), intent(in) :: offset, depth
+        type(rig_t) :: rg
+        rg = rig_t()
+        rg%cables = 3
+        rg%b = 0.27_dp
+        rg%b_prime = 0.27_dp
+        rg%l = 1.0_dp
+        rg%l_prime = 1.0_dp
+        rg%g = GRAV
+        rg%mass = 2.048_dp
+        rg%inertia = [0.0243_dp, 0.014_dp, 0.014_dp]
+        rg%c_v = 0.0_dp
+        rg%c_q = 0.0_dp
+        rg%r = sqrt((0.135_dp + offset)**2 + depth**2)
+        rg%lambda = atan2(depth, 0.135_dp + offset)
+    end function identify_rig
+
+    !> A record of the platform rg released at amp degrees: omega about the vertical every
+    !! 0.02 s for `dur` s, plus normal noise of 0.002 rad/s (seed 5), written to path.
+    subroutine write_platform_record(rg, amp, dur, path, ok)
+        type(rig_t), intent(in) :: rg
+        real(dp), intent(in) :: amp, dur
+        character(len=*), intent(in) :: path
+        logical, intent(out) :: ok
+        type(start_t) :: st
+        type(accuracy_t) :: acc
+        type(status_t) :: stat
+        type(rng_t) :: g
+        real(dp), allocatable :: tt(:), v(:)
+        integer :: i, n, u
+        n = nint(dur/0.02_dp) + 1
+        allocate (tt(n), v(n))
+        do i = 1, n
+            tt(i) = 0.02_dp*(i - 1)
+        end do
+        st%mode = 'raised'
+        st%amplitude = amp
+        call platform_record(rg, st, acc, tt, 0.0_dp, .true., v, stat)
+        ok = stat%code == 0
+        g = rng_stream(5, 0)
+        open (newunit=u, file=path, status='replace', action='write')
+        write (u, '(a)') '# t (s)  W (rad/s)'
+        do i = 1, n
+            write (u, '(f10.4,es20.10)') tt(i), v(i) + 0.002_dp*rng_normal(g)
+        end do
+        close (u)
+    end subroutine write_platform_record
+
+    !> A value of a key = value file as a number (-huge when absent or unreadable).
+    real(dp) function kv_real(path, key) result(x)
+        character(len=*), intent(in) :: path, key
+        character(len=64) :: val
+        integer :: ios
+        call read_kv_text(path, key, val)
+        read (val, *, iostat=ios) x
+        if (ios /= 0) x = -huge(1.0_dp)
+    end function kv_real
+
+    ! ---------------------------------------------------------------------------------------
+    !> A centred body on a trifilar, 0.05 and 0.2 m above the cables (cg_depth < 0) and as
+    !! far below: pure torsion does not depend on the depth, so periods and a record give
+    !! the I1 of the body below within 1e-6, with the budget (u_cg_depth) and Monte Carlo;
+    !! the periods (exact torsion at I1 = 0.0243) give the truth to 1e-6.  The record is the
+    !! platform's own motion (three cables hold the tilt; the bifilar's tilt about CD, a mode
+    !! the platform does not have, is not in the fit).  A body above the height at which the
+    !! platform tips (R' = 0.05: 0.35 m) is refused with exit 4 naming that height; and a
+    !! body off the axis of four cables with exit 2.
+    subroutine test_identify_depth(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=*), parameter :: NL = new_line('a')
+        real(dp), parameter :: depths(4) = [0.05_dp, 0.2_dp, -0.05_dp, -0.2_dp]
+        character(len=:), allocatable :: d, o, rigtext, name
+        type(accuracy_t) :: acc
+        type(status_t) :: st
+        real(dp) :: t5, t20, ip(4), ir(4), uu(4), umc(4)
+        integer :: k, ex, exr(4), exq(4)
+        logical :: ok, okr
+        d = SCR//'/idepth'
+        call fresh_dir(d)
+        o = d//'/out'
+        call rig_period_s(identify_rig(0.0_dp, 0.05_dp), acc, 0.0243_dp, 5.0_dp, t5, st)
+        ok = st%code == 0
+        call rig_period_s(identify_rig(0.0_dp, 0.05_dp), acc, 0.0243_dp, 20.0_dp, t20, st)
+        ok = ok .and. st%code == 0
+        call write_platform_record(identify_rig(0.0_dp, 0.05_dp), 10.0_dp, 8.0_dp, &
+                                   d//'/rec.dat', okr)
+        do k = 1, 4
+            rigtext = "&scene analyses = 'identify' /"//NL// &
+                '&suspension cables = 3, radius = 0.135, radius_prime = 0.135, l = 1.0, '// &
+                'g = 9.81 /'//NL//'&body mass = 2.048, inertia = 0.022, 0.014, 0.014, '// &
+                'cg_depth = '//sci(depths(k))//', cg_offset = 0, 0 /'//NL
+            name = 'p'//achar(48 + k)
+            call write_text(d//'/'//name//'.nml', rigtext//'&measurement periods = '// &
+                sci(t5, 15)//', '//sci(t20, 15)//', amplitudes = 5, 20, u_period = 1e-4, '// &
+                'u_mass = 0.001, u_l = 0.001, u_cg_depth = 0.01, monte_carlo = 20 /'//NL)
+            exq(k) = run(exe//' '//d//'/'//name//'.nml --out '//o, d)
+            ip(k) = kv_real(o//'/'//name//'.identify', 'I1')
+            name = 'r'//achar(48 + k)
+            call write_text(d//'/'//name//'.nml', rigtext//"&start mode = 'raised', "// &
+                'amplitude = 10 /'//NL//"&measurement record = 'rec.dat', "// &
+                "quantity = 'rate', estimate = 'I1 amplitude', u_mass = 0.001, u_l = 0.001, "// &
+                'u_cg_depth = 0.01, monte_carlo = 10 /'//NL)
+            exr(k) = run(exe//' '//d//'/'//name//'.nml --out '//o, d)
+            ir(k) = kv_real(o//'/'//name//'.identify', 'I1')
+            uu(k) = kv_real(o//'/'//name//'.identify', 'U_I1')
+            umc(k) = kv_real(o//'/'//name//'.identify', 'u_I1_monte_carlo')
+        end do
+        call t%check('platform identify: the truth''s periods and record are made', ok .and. okr)
+        call t%check('platform identify: periods, the body above or below: exit 0', &
+                     all(exq == 0))
+        call t%check('platform identify: a record, the body above or below: exit 0 with '// &
+                     'Monte Carlo', all(exr == 0) .and. all(umc > 0.0_dp))
+        call t%check_close('platform identify: periods give the truth', ip(1), 0.0243_dp, &
+                           1.0e-6_dp, 0.0_dp)
+        call t%check('platform identify: periods of the body 0.05 and 0.2 m above give '// &
+                     'the I1 of the body below within 1e-6', &
+                     all(abs(ip(2:4)/ip(1) - 1.0_dp) < 1.0e-6_dp))
+        call t%check('platform identify: a record of the body 0.05 and 0.2 m above gives '// &
+                     'the I1 of the body below within 1e-6', &
+                     all(abs(ir(2:4)/ir(1) - 1.0_dp) < 1.0e-6_dp))
+        call t%check('platform identify: the record''s I1 covers the truth', &
+                     abs(ir(1) - 0.0243_dp) < uu(1))
+        write (*, '(a,3es10.2)') '  platform identify, periods at cg_depth 0.2, -0.05, -0.2 '// &
+            'over 0.05, less 1: ', ip(2:4)/ip(1) - 1.0_dp
+        write (*, '(a,3es10.2)') '  platform identify, a record at cg_depth 0.2, -0.05, -0.2 '// &
+            'over 0.05, less 1: ', ir(2:4)/ir(1) - 1.0_dp
+        ! above its tipping height
+        call write_text(d//'/tip.nml', "&scene analyses = 'identify' /"//NL// &
+            '&suspension cables = 3, radius = 0.135, radius_prime = 0.05, l = 1.0, '// &
+            'g = 9.81 /'//NL//'&body mass = 2.048, inertia = 0.022, 0.014, 0.014, '// &
+            'cg_depth = -1, cg_offset = 0, 0 /'//NL//'&measurement periods = 1.6, '// &
+            'amplitudes = 5 /'//NL)
+        ex = run(exe//' '//d//'/tip.nml --out '//o, d)
+        call t%check('platform identify: a body above its tipping height: exit 4, one line '// &
+                     'naming the height', all([ex == 4, message_lines(d//'/stderr') == 1, &
+                     file_has(d//'/stderr', 'tips over'), &
+                     file_has(d//'/stderr', 'above cg_depth = -3.48'), &
+                     .not. exists(o//'/tip.identify')]))
+        ! off the axis of four cables
+        call write_text(d//'/quad.nml', "&scene analyses = 'identify' /"//NL// &
+            '&suspension cables = 4, radius = 0.135, radius_prime = 0.135, l = 1.0, '// &
+            'g = 9.81 /'//NL//'&body mass = 2.048, inertia = 0.022, 0.014, 0.014, '// &
+            'cg_depth = 0.05, cg_offset = 0.01, 0 /'//NL//'&measurement periods = 1.6, '// &
+            'amplitudes = 5 /'//NL)
+        ex = run(exe//' '//d//'/quad.nml --out '//o, d)
+        call t%check('platform identify: a body off the axis of four cables: exit 2, one '// &
+                     'line', all([ex == 2, message_lines(d//'/stderr') == 1, &
+                     file_has(d//'/stderr', 'cg_offset'), .not. exists(o//'/quad.identify')]))
+    end subroutine test_identify_depth
+
+    ! ---------------------------------------------------------------------------------------
+    !> The body's mass centre 18 mm off the axis of the trifilar (along x, and as far along
+    !! y): periods of the platform's periodic torsion at I1 = 0.0243 give the truth to 1e-6,
+    !! with a budget row for cg_offset, and for cg_offset_y when the offset is along y
+    !! (-2 e I1/(R^2 - e^2) to 2 %), and a Monte Carlo u within
+    !! 25 % of the budget's; a record of the platform's motion gives I1 within U, and with
+    !! the offset ignored (cg_offset = 0) about e^2/(R^2 - e^2) = 1.8 % more.
+    subroutine test_identify_offset(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=*), parameter :: NL = new_line('a')
+        real(dp), parameter :: e = 0.018_dp, rr = 0.135_dp
+        character(len=:), allocatable :: d, o, head
+        type(accuracy_t) :: acc
+        type(status_t) :: st
+        real(dp) :: t5, t20, ipx, ipy, u1, umc, sens, sensy, irec, urec, inai
+        integer :: exx, exy, exr, exn
+        logical :: ok, okr
+        d = SCR//'/ioffset'
+        call fresh_dir(d)
+        o = d//'/out'
+        call rig_period_s(identify_rig(e, 0.05_dp), acc, 0.0243_dp, 5.0_dp, t5, st)
+        ok = st%code == 0
+        call rig_period_s(identify_rig(e, 0.05_dp), acc, 0.0243_dp, 20.0_dp, t20, st)
+        ok = ok .and. st%code == 0
+        head = "&scene analyses = 'identify' /"//NL// &
+            '&suspension cables = 3, radius = 0.135, radius_prime = 0.135, l = 1.0, '// &
+            'g = 9.81 /'//NL//'&body mass = 2.048, inertia = 0.022, 0.014, 0.014, '// &
+            'cg_depth = 0.05, '
+        call write_text(d//'/px.nml', head//'cg_offset = 0.018, 0 /'//NL// &
+            '&measurement periods = '//sci(t5, 15)//', '//sci(t20, 15)//', amplitudes = 5, '// &
+            '20, u_period = 1e-4, u_mass = 0.001, u_l = 0.001, u_cg_offset = 0.002, '// &
+            'monte_carlo = 40 /'//NL)
+        exx = run(exe//' '//d//'/px.nml --out '//o, d)
+        ipx = kv_real(o//'/px.identify', 'I1')
+        u1 = kv_real(o//'/px.identify', 'u_I1')
+        umc = kv_real(o//'/px.identify', 'u_I1_monte_carlo')
+        sens = budget_sensitivity(o//'/px.identify', 'cg_offset')
+        ! the same periods with the offset along y (the trifilar's torsion at small amplitude
+        ! turns about the mass centre whatever the direction; at 20 degrees nearly so)
+        call write_text(d//'/py.nml', head//'cg_offset = 0, 0.018 /'//NL// &
+            '&measurement periods = '//sci(t5, 15)//', amplitudes = 5, u_period = 1e-4, '// &
+            'u_cg_offset = 0.002 /'//NL)
+        exy = run(exe//' '//d//'/py.nml --out '//o, d)
+        ipy = kv_real(o//'/py.identify', 'I1')
+        sensy = budget_sensitivity(o//'/py.identify', 'cg_offset_y')
+        call t%check('platform identify off the axis: periods made, exit 0 with the budget '// &
+                     'and Monte Carlo', ok .and. exx == 0 .and. exy == 0 .and. umc > 0.0_dp)
+        call t%check_close('platform identify off the axis: periods give the truth', ipx, &
+                           0.0243_dp, 1.0e-6_dp, 0.0_dp)
+        call t%check_close('platform identify off the axis: the offset along y as along x', &
+                           ipy, 0.0243_dp, 1.0e-4_dp, 0.0_dp)
+        call t%check_close('platform identify off the axis: the budget''s cg_offset '// &
+                           'sensitivity is -2 e I1/(R^2 - e^2)', sens, &
+                           -2.0_dp*e*0.0243_dp/(rr**2 - e**2), 0.02_dp, 0.0_dp)
+        call t%check_close('platform identify off the axis: along y, the budget''s '// &
+                           'cg_offset_y sensitivity is -2 e I1/(R^2 - e^2)', sensy, &
+                           -2.0_dp*e*0.0243_dp/(rr**2 - e**2), 0.02_dp, 0.0_dp)
+        call t%check_close('platform identify off the axis: Monte Carlo''s u is the '// &
+                           'budget''s', umc, u1, 0.25_dp, 0.0_dp)
+        ! a record, with the offset and without it
+        call write_platform_record(identify_rig(e, 0.05_dp), 10.0_dp, 8.0_dp, d//'/rec.dat', &
+                                   okr)
+        call write_text(d//'/rx.nml', head//'cg_offset = 0.018, 0 /'//NL// &
+            "&start mode = 'raised', amplitude = 10 /"//NL//"&measurement record = "// &
+            "'rec.dat', quantity = 'rate', estimate = 'I1 amplitude', u_mass = 0.001, "// &
+            'u_l = 0.001, u_cg_offset = 0.001 /'//NL)
+        exr = run(exe//' '//d//'/rx.nml --out '//o, d)
+        irec = kv_real(o//'/rx.identify', 'I1')
+        urec = kv_real(o//'/rx.identify', 'U_I1')
+        call write_text(d//'/rn.nml', head//'cg_offset = 0, 0 /'//NL// &
+            "&start mode = 'raised', amplitude = 10 /"//NL//"&measurement record = "// &
+            "'rec.dat', quantity = 'rate', estimate = 'I1 amplitude' /"//NL)
+        exn = run(exe//' '//d//'/rn.nml --out '//o, d)
+        inai = kv_real(o//'/rn.identify', 'I1')
+        call t%check('platform identify off the axis: the records fit (exit 0)', &
+                     okr .and. exr == 0 .and. exn == 0)
+        call t%check('platform identify off the axis: the record''s I1 covers the truth', &
+                     abs(irec - 0.0243_dp) < urec)
+        call t%check_close('platform identify off the axis: the offset ignored, I1 is '// &
+                           'e^2/(R^2 - e^2) more', inai/irec - 1.0_dp, e**2/(rr**2 - e**2), &
+                           0.03_dp, 0.0_dp)
+        write (*, '(a,es16.8,a,es10.3,a,es10.3,a,es12.5,a,f7.3,a)') '  platform identify off '// &
+            'the axis: periods I1 ', ipx, ', u ', u1, ', Monte Carlo u ', umc, '; record I1 ', &
+            irec, ', offset ignored +', 100*(inai/irec - 1.0_dp), ' %'
+    end subroutine test_identify_offset
+
+    !> The sensitivity of the budget's row `name` in an identify file (-huge when absent).
+    real(dp) function budget_sensitivity(path, name) result(s)
+        character(len=*), intent(in) :: path, name
+        character(len=1024) :: line
+        character(len=32) :: w
+        real(dp) :: v, uu
+        integer :: u, ios
+        s = -huge(1.0_dp)
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        do while (ios == 0)
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, name//' ') /= 1) cycle
+            read (line, *, iostat=ios) w, v, uu, s
+            exit
+        end do
+        close (u)
+    end function budget_sensitivity
 
     !> Whether, at each cg_depth of a chart over (cg_offset, cg_depth), the period grows with
     !! the offset (the restoring torque M g (R^2 - e^2)/L shrinks).

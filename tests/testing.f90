@@ -212,9 +212,11 @@ contains
     logical function no_nan(dir)
         character(len=*), intent(in) :: dir
         integer :: ex
-        ! (an effective number of degrees of freedom may be infinite: dof_eff = inf)
+        ! (an effective number of degrees of freedom may be infinite: dof_eff = inf, and
+        ! identify's own part's dof_own = inf)
         call execute_command_line('cat '//dir//'/* 2>/dev/null | grep -v ''^#'' | '// &
-            'grep -v ''^dof_eff = inf$'' | grep -qiE ''(^|[^a-z])[+-]?(nan|inf)''', exitstat=ex)
+            'grep -vE ''^dof_(eff|own) = inf$'' | grep -qiE ''(^|[^a-z])[+-]?(nan|inf)''', &
+            exitstat=ex)
         no_nan = ex /= 0
         call execute_command_line('cat '//dir//'/* 2>/dev/null | grep -qF ''****''', exitstat=ex)
         no_nan = no_nan .and. ex /= 0

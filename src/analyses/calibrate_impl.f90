@@ -240,7 +240,7 @@ contains
     end procedure calibrate_run
 
     module procedure calibrate_summary
-        s = ' calibrate scale = '//trim(sci(self%res%cal%scale, 6))//' +- '// &
+        s = ' calibrate scale = '//trim(sci(self%res%cal%scale, 6))//' ± '// &
             trim(sci(sqrt(self%res%cal%cov(2, 2)), 2))
         if (self%res%cal%separable) s = s//', delta_l = '//trim(sci(self%res%cal%delta_l, 3))
         if (len(d%name) < 0) s = s//''

@@ -94,6 +94,12 @@ module identify
         real(dp) :: dof_eff = 0.0_dp            !! Welch-Satterthwaite (NU_INFINITE: inf)
         !> I1 of all that hung (before tare and added inertia) and its u
         real(dp) :: i1_total = 0.0_dp, u_i1_total = 0.0_dp
+        !> the part of u_I1 measured anew for this body (its timings, amplitudes, fits,
+        !! releases and sessions: the budget's first n_own_rows rows) and its degrees of
+        !! freedom (what a deck that takes this output as its tare needs)
+        real(dp) :: u_i1_own = 0.0_dp, dof_own = 0.0_dp
+        integer :: n_own_rows = 0
+        real(dp) :: i1_tare_file = 0.0_dp       !! a tare read from its output (0: none)
         real(dp) :: u_i1_fit = 0.0_dp           !! the fit's part of u_I1 (record)
         real(dp) :: u_i1_random = 0.0_dp        !! the releases' random part (Type A)
         real(dp) :: u_i1_reproducibility = 0.0_dp   !! what their scatter added to it

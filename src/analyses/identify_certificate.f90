@@ -55,7 +55,8 @@ contains
             'given and the data could not show one: u_I1 = 0 says nothing about the result.')
         call cert_table(c, 'quantity'//CELL//'value'//CELL//'standard u')
         call cert_row(c, 'I1 (the body)'//CELL//trim(sci(res%i1, 6))//CELL//trim(sci(res%u_i1, 3)))
-        if (d%measurement%tare_i1 > 0.0_dp .or. d%measurement%added_inertia > 0.0_dp) &
+        if (d%measurement%tare_i1 > 0.0_dp .or. d%measurement%added_inertia > 0.0_dp .or. &
+            res%i1_tare_file > 0.0_dp) &
             call cert_row(c, 'I1 of all that hung'//CELL//trim(sci(res%i1_total, 6))//CELL// &
                           trim(sci(res%u_i1_total, 3)))
         do j = 2, res%np
@@ -113,6 +114,9 @@ contains
             if (m%tare_i1 > 0.0_dp .or. m%u_tare_i1 > 0.0_dp) &
                 call cert_row(c, 'tare I1 (subtracted)'//CELL//trim(sci(m%tare_i1, 6))//CELL// &
                               trim(sci(m%u_tare_i1, 2)))
+            if (len_trim(m%tare) > 0) &
+                call cert_row(c, 'tare (subtracted): its own output '//trim(m%tare)//CELL// &
+                              'its I1'//CELL//'its budget: the shared inputs once')
             if (m%tare_mass > 0.0_dp) &
                 call cert_row(c, 'tare mass'//CELL//trim(sci(m%tare_mass, 6))//CELL//'-')
             if (m%added_inertia > 0.0_dp .or. m%u_added_inertia > 0.0_dp) &
@@ -227,7 +231,18 @@ contains
             call cert_row(c, 'tare'//CELL//trim(sci(d%measurement%tare_i1, 4))//CELL// &
                           fixed(100.0_dp*d%measurement%tare_i1/max(res%i1_total, tiny(1.0_dp)), 1)// &
                           ' % of all that hung')
-        call cert_row(c, 'calibration'//CELL//'none'//CELL//'the rig''s constants as measured')
+        if (res%i1_tare_file > 0.0_dp) &
+            call cert_row(c, 'tare (from its output)'//CELL//trim(sci(res%i1_tare_file, 4))// &
+                          CELL//fixed(100.0_dp*res%i1_tare_file/max(res%i1_total, &
+                          tiny(1.0_dp)), 1)//' % of all that hung; same rig, shared inputs '// &
+                          'correlated')
+        if (len_trim(d%measurement%calibration) > 0) then
+            call cert_row(c, 'calibration'//CELL//trim(d%measurement%calibration)//CELL// &
+                          'the rig''s constants from it; its covariance is the budget''s '// &
+                          'row calibration')
+        else
+            call cert_row(c, 'calibration'//CELL//'none'//CELL//'the rig''s constants as measured')
+        end if
         if (d%measurement%monte_carlo > 0 .and. res%u_i1_mc >= 0.0_dp) &
             call cert_row(c, 'Monte Carlo u / first-order u'//CELL// &
                           fixed(res%u_i1_mc/max(res%u_i1, tiny(1.0_dp)), 3)//CELL// &

@@ -44,6 +44,8 @@ submodule (identify) identify_impl
         work_note, reference_periods, record_swing_period, check_fitted_amplitude, &
         CAUSES_HIGH, CAUSES_LOW, TRIANGLE_MARGIN
     use unused_arg, only: unused
+    use tare_file, only: RIG_KEYS, tare_file_t, read_tare_file, check_same_rig, is_shared_input, &
+        shared_sensitivity, tare_own_rows
     use analysis_base, only: ranks_note, resume_note
     implicit none
 
@@ -152,12 +154,8 @@ contains
         if (len_trim(d%measurement%calibration) > 0) &
             call calibrate_measurement(d%measurement, m, stat)
         if (stat%code /= 0) return
-        if (len_trim(d%measurement%tare) > 0) then
-            call set_error(stat, ERR_DECK, '&measurement tare = '// &
-                quoted(trim(d%measurement%tare))//': a tare read from its own output is not '// &
-                'available in this version; allowed: tare_I1, u_tare_I1, tare_mass')
-            return
-        end if
+        if (len_trim(d%measurement%tare) > 0) call ready_tare_file(d, m, stat)
+        if (stat%code /= 0) return
         total = 0.0_dp
         first_what = ''
         nfirst = 0
@@ -194,6 +192,62 @@ contains
             input%m%from_table = m%from_table
         end if
     end procedure identify_ready
+
+    !> A tare read from its own output (&measurement tare = 'FILE', module tare_file):
+    !! refused with tare_I1 or u_tare_I1 (one tare, one way), with a Monte Carlo (the
+    !! first-order budget carries the correlation), from another rig or calibration, or when
+    !! a shared input has a u in one run and none in the other.
+    subroutine ready_tare_file(d, m, stat)
+        type(deck_t), intent(in) :: d
+        type(measurement_t), intent(in) :: m
+        type(status_t), intent(inout) :: stat
+        type(tare_file_t) :: t
+        type(rig_calibration_t) :: cal
+        character(len=:), allocatable :: key
+        real(dp) :: c
+        logical :: found, given
+        integer :: j
+        key = '&measurement tare'
+        if (d%measurement%tare_i1 /= 0.0_dp .or. d%measurement%u_tare_i1 /= 0.0_dp) then
+            call set_error(stat, ERR_DECK, key//' = '//quoted(trim(d%measurement%tare))// &
+                ' with tare_I1 = '//rshort(d%measurement%tare_i1)//', u_tare_I1 = '// &
+                rshort(d%measurement%u_tare_i1)//': two tares; allowed: tare = ''FILE'' (a '// &
+                'tare measured on this rig) or tare_I1 with its u (one measured elsewhere)')
+            return
+        end if
+        if (d%measurement%monte_carlo > 0) then
+            call set_error(stat, ERR_DECK, key//' = '//quoted(trim(d%measurement%tare))// &
+                ' with monte_carlo = '//itoa(d%measurement%monte_carlo)//': the Monte '// &
+                'Carlo draws this run alone; allowed: monte_carlo = 0 with a tare from its '// &
+                'file (the first-order budget carries the shared inputs'' correlation)')
+            return
+        end if
+        call read_tare_file(d%measurement%tare_path, key, t, stat)
+        if (stat%code /= 0) return
+        if (len_trim(d%measurement%calibration) > 0) then
+            call read_calibration_file(d%measurement%calibration_path, 'calibration', cal, stat)
+            if (stat%code /= 0) return
+        end if
+        call check_same_rig(t, key, [d%suspension%l, d%suspension%l_prime, d%suspension%b, &
+            d%suspension%b_prime, d%suspension%g], [d%measurement%u_l, &
+            d%measurement%u_l_prime, d%measurement%u_b, d%measurement%u_b_prime, &
+            d%measurement%u_g], len_trim(d%measurement%calibration) > 0, cal%delta_l, &
+            cal%scale, stat)
+        if (stat%code /= 0) return
+        do j = 1, size(m%inputs)
+            if (.not. is_shared_input(m%inputs(j)%name)) cycle
+            given = m%inputs(j)%u > 0.0_dp
+            call shared_sensitivity(t, m%inputs(j)%name, c, found)
+            if (given .eqv. found) cycle
+            call set_error(stat, ERR_DECK, key//' = '//quoted(trim(d%measurement%tare))// &
+                ': the input '//trim(m%inputs(j)%name)//' the two runs share has a u in '// &
+                trim(merge('this deck and not in the tare''s', &
+                           'the tare''s and not in this deck', given))//'; allowed: '// &
+                'the same u_'//trim(m%inputs(j)%name)//' in both decks (the same tape, '// &
+                'the same rig)')
+            return
+        end do
+    end subroutine ready_tare_file
 
     !> Release i of a measurement against what identify needs (see identify_ready): its
     !! timings against its rig, or its record read (once, with its CRC-64) and checked; the
@@ -1138,9 +1192,12 @@ contains
         type(pooled_t) :: pool, pj
         type(sessions_pooled_t) :: sp
         type(rig_calibration_t) :: cal
-        type(budget_row_t), allocatable :: rows(:)
-        real(dp), allocatable :: uc(:), nuc(:)
-        real(dp) :: cbar, u_total
+        type(budget_row_t), allocatable :: rows(:), trows(:)
+        type(budget_row_t) :: crow
+        type(tare_file_t) :: tare
+        real(dp), allocatable :: uc(:), nuc(:), tnu(:)
+        real(dp) :: cbar, u_total, ct, u_total2
+        logical :: tared, found
         integer :: n, j, r, k, q, nw
         integer, allocatable :: jr(:)
         character(len=16) :: word
@@ -1183,12 +1240,29 @@ contains
             uc = [pool%u_random]
             nuc = [pool%nu_random]
         end if
+        ! the part measured anew: what a deck taking this output as its tare keeps apart
+        res%n_own_rows = size(rows)
+        res%u_i1_own = sqrt(sum(uc**2))
+        res%dof_own = welch_satterthwaite(uc, nuc)
+        tared = len_trim(d%measurement%tare) > 0
+        if (tared) then
+            call read_tare_file(d%measurement%tare_path, '&measurement tare', tare, stat)
+            if (stat%code /= 0) return
+        end if
+        ! u of all that hung (u_I1_total): the inputs with this run's sensitivities alone
+        u_total2 = sum(uc**2)
         do j = 1, size(x)
             if (.not. (x(j)%u > 0.0_dp) .or. own_input(x(j), m%releases(kept(1))%own)) cycle
             cbar = 0.0_dp
             do r = 1, n
                 cbar = cbar + pool%weight(r)*rels(r)%c(j)
             end do
+            u_total2 = u_total2 + (cbar*x(j)%u)**2
+            if (tared .and. is_shared_input(x(j)%name)) then
+                ! one error in both runs: the difference of the two sensitivities
+                call shared_sensitivity(tare, x(j)%name, ct, found)
+                cbar = cbar - ct
+            end if
             rows = [rows, budget_row_t(x(j)%name, x(j)%value, x(j)%u, cbar, abs(cbar)*x(j)%u, &
                                        input_kind(x(j)))]
             uc = [uc, abs(cbar)*x(j)%u]
@@ -1198,12 +1272,16 @@ contains
             ! the calibrated constants' covariance: one correlated row
             call read_calibration_file(d%measurement%calibration_path, 'calibration', cal, stat)
             if (stat%code /= 0) return
-            rows = [rows, calibration_row(cal, pool%mean, d%suspension%l + cal%delta_l)]
+            ! (with a tare on the same calibration: its sensitivities those of the difference)
+            rows = [rows, calibration_row(cal, pool%mean - merge(tare%i1, 0.0_dp, tared), &
+                                          d%suspension%l + cal%delta_l)]
             uc = [uc, rows(size(rows))%contribution]
             nuc = [nuc, NU_INFINITE]
+            crow = calibration_row(cal, pool%mean, d%suspension%l + cal%delta_l)
+            u_total2 = u_total2 + crow%contribution**2
         end if
         res%i1_total = pool%mean
-        u_total = sqrt(sum(uc**2))
+        u_total = sqrt(u_total2)
         res%u_i1_total = u_total
         ! the tares: each subtracted, with its u
         res%i1 = pool%mean
@@ -1216,7 +1294,23 @@ contains
                 nuc = [nuc, NU_INFINITE]
             end associate
         end do
+        if (tared) then
+            ! the tare from its output: its own part and its body's inputs, independent
+            res%i1_tare_file = tare%i1
+            res%i1 = res%i1 - tare%i1
+            call tare_own_rows(tare, trows, tnu)
+            rows = [rows, trows]
+            uc = [uc, trows%contribution]
+            nuc = [nuc, tnu]
+        end if
         ! a tare at or above all that hung: no body left to measure
+        if (tared .and. .not. (res%i1 > 0.0_dp)) then
+            call set_error(stat, ERR_DECK, '&measurement tare = '// &
+                quoted(trim(d%measurement%tare))//': its I1 = '//sci(tare%i1, 4)// &
+                ' is not below I1 = '//sci(res%i1_total, 4)//', what the rig measured of all '// &
+                'that hung; allowed: the output of the empty rig or the fixture alone')
+            return
+        end if
         if (size(m%tares) > 0 .and. .not. (res%i1 > 0.0_dp)) then
             call set_error(stat, ERR_DECK, '&measurement '//tare_words(m)//': not below '// &
                 'I1 = '//sci(res%i1_total, 4)//', what the rig measured of all that hung '// &
@@ -1325,6 +1419,12 @@ contains
             fixed(pool%birge, 2)//'): their scatter is in u_I1 (u_I1_reproducibility = '// &
             sci(pool%u_reproducibility, 2)//'); find what changed between releases')
         end if
+        if (tared .and. res%i1 < 0.1_dp*res%i1_total) call add_warning(res%warnings, &
+            'identify: the body''s I1 = '//sci(res%i1, 4)//' is '// &
+            fixed(100.0_dp*res%i1/res%i1_total, 1)//' % of all that hung ('// &
+            sci(res%i1_total, 4)//'), the rest the tare (its output '// &
+            quoted(trim(d%measurement%tare))//'): its u comes mostly from the tare''s '// &
+            'and from the timings of all that hung')
         if (size(m%tares) > 0 .and. res%i1 < 0.1_dp*res%i1_total) call add_warning( &
             res%warnings, 'identify: the body''s I1 = '//sci(res%i1, 4)//' is '// &
             fixed(100.0_dp*res%i1/res%i1_total, 1)//' % of all that hung ('// &
@@ -1615,6 +1715,8 @@ contains
         type(status_t), intent(out) :: stat
         integer :: u, ios, j
         character(len=24) :: f(4)
+        real(dp) :: rig5(5), urig5(5)
+        type(rig_calibration_t) :: cal
         if (.not. all_finite([res%i1, res%u_i1, res%i1_linear, res%linear_error, &
                               res%residual_rms, res%p, res%u_p, res%u_i1_mc, res%k, &
                               res%u_i1_expanded, res%dof_eff, res%i1_total, res%u_i1_total, &
@@ -1622,6 +1724,10 @@ contains
                               res%budget%sensitivity, res%session_i1, res%session_u])) then
             call set_error(stat, ERR_NUMERIC, 'identify: a result is not finite')
             return
+        end if
+        if (len_trim(d%measurement%calibration) > 0) then
+            call read_calibration_file(d%measurement%calibration_path, 'calibration', cal, stat)
+            if (stat%code /= 0) return
         end if
         call files%open(outdir//'/'//d%name//'.identify', u, stat)
         if (stat%code /= 0) return
@@ -1648,10 +1754,12 @@ contains
             call write_kv(u, 'dof_eff', res%dof_eff, ios)
         end if
         if (d%measurement%tare_i1 > 0.0_dp .or. d%measurement%added_inertia > 0.0_dp .or. &
-            d%measurement%u_tare_i1 > 0.0_dp .or. d%measurement%u_added_inertia > 0.0_dp) then
+            d%measurement%u_tare_i1 > 0.0_dp .or. d%measurement%u_added_inertia > 0.0_dp .or. &
+            len_trim(d%measurement%tare) > 0) then
             call write_kv(u, 'I1_total', res%i1_total, ios)
             call write_kv(u, 'u_I1_total', res%u_i1_total, ios)
         end if
+        if (len_trim(d%measurement%tare) > 0) call write_kv(u, 'I1_tare', res%i1_tare_file, ios)
         if (d%measurement%tare_mass > 0.0_dp) &
             call write_kv(u, 'mass_body', d%body%mass - d%measurement%tare_mass, ios)
         if (d%measurement%monte_carlo > 0) call write_kv(u, 'u_I1_monte_carlo', res%u_i1_mc, ios)
@@ -1744,6 +1852,27 @@ contains
             call write_kv(u, 'I1_monte_carlo_mean', res%mc_mean, ios)
         end if
         call write_kv(u, 'warnings', size(res%warnings), ios)
+        ! what a deck that takes this output as its tare (&measurement tare) reads: the part
+        ! measured anew (the budget's first budget_own_rows rows) with its dof, the rig
+        call write_kv(u, 'u_I1_own', res%u_i1_own, ios)
+        if (res%dof_own >= NU_INFINITE) then
+            call write_kv(u, 'dof_own', 'inf', ios)
+        else
+            call write_kv(u, 'dof_own', res%dof_own, ios)
+        end if
+        call write_kv(u, 'budget_own_rows', res%n_own_rows, ios)
+        rig5 = [d%suspension%l, d%suspension%l_prime, d%suspension%b, d%suspension%b_prime, &
+                d%suspension%g]
+        urig5 = [d%measurement%u_l, d%measurement%u_l_prime, d%measurement%u_b, &
+                 d%measurement%u_b_prime, d%measurement%u_g]
+        do j = 1, 5
+            call write_kv(u, 'rig_'//trim(RIG_KEYS(j)), rig5(j), ios)
+            call write_kv(u, 'u_rig_'//trim(RIG_KEYS(j)), urig5(j), ios)
+        end do
+        if (len_trim(d%measurement%calibration) > 0) then
+            call write_kv(u, 'calibration_delta_l', cal%delta_l, ios)
+            call write_kv(u, 'calibration_scale', cal%scale, ios)
+        end if
         if (ios == 0) write (u, '(a)', iostat=ios) '# budget of I1 (first order, GUM): input '// &
             'value u sensitivity contribution (contribution = |sensitivity| u; u_I1 is '// &
             'their root sum of squares)'
@@ -1960,7 +2089,14 @@ contains
                     itoa(d%measurement%monte_carlo)//' samples, '// &
                     fixed(rep%wall_seconds, 2)//' s'//ranks_note(rep)//resume_note(rep)//')'
             end if
-            if (idr%i1_linear > 0.0_dp) then
+            if (idr%i1_linear > 0.0_dp .and. idr%i1_total /= idr%i1) then
+                ! a tare or an added inertia: the formula sees all that hung, and is
+                ! compared with what the rig measured of it, not with the body's I1
+                s = s//', linear formula of all that hung '//sci(idr%i1_linear, 5)//' ('// &
+                    trim(merge('+', ' ', idr%linear_error >= 0.0_dp))// &
+                    fixed(100.0_dp*idr%linear_error, 2)//' % against I1_total = '// &
+                    sci(idr%i1_total, 5)//')'
+            else if (idr%i1_linear > 0.0_dp) then
                 s = s//', linear formula '//sci(idr%i1_linear, 5)//' ('// &
                     trim(merge('+', ' ', idr%linear_error >= 0.0_dp))// &
                     fixed(100.0_dp*idr%linear_error, 2)//' %)'

@@ -12,8 +12,10 @@
 !! tensor_fit's.
 !!
 !! Files: OUTDIR/NAME.tensor (key = value lines, then the budget), OUTDIR/NAME.tensor.dat
-!! (per hang the measured and the fitted vertical moment, for plots/tensor.gp), and with
-!! &tensor plan = N, OUTDIR/NAME.plan.csv (a table of hangs to copy).  No routine stops.
+!! (per hang the measured and the fitted vertical moment, for plots/tensor.gp),
+!! OUTDIR/NAME.certificate.html (submodule tensor_certificate, when a table of hangs was
+!! fitted), and with &tensor plan = N, OUTDIR/NAME.plan.csv (a table of hangs to copy).
+!! No routine stops.
 !!
 !! The analysis for the driver: tensor_analysis_t (module analysis_base).
 module tensor
@@ -103,6 +105,23 @@ module tensor
             class(sweep_task_t), allocatable, intent(out) :: task
             type(status_t), intent(out) :: stat     !! ERR_DECK
         end subroutine tensor_sweep_task
+
+        !> OUTDIR/NAME.certificate.html (submodule tensor_certificate): the page an
+        !! engineer attaches to a test report, for a deck that fitted a table of hangs.
+        module subroutine write_tensor_certificate(d, outdir, res, fit, prob, drift, limit, &
+                                                   u_x_mc, u_moments_mc, files, stat)
+            type(deck_t), intent(in) :: d           !! the deck
+            character(len=*), intent(in) :: outdir  !! output directory
+            type(tensor_result_t), intent(in) :: res
+            !> the fit (tensor_fit_t) and its problem, the hangs and timings
+            !! (tensor_problem_t) of module tensor_fit: unlimited polymorphic here, so that
+            !! this module, which the driver uses, stays below tensor_fit's floor
+            class(*), intent(in) :: fit, prob
+            real(dp), intent(in) :: drift(:), limit(:)  !! per timing, per hang
+            real(dp), intent(in) :: u_x_mc(6), u_moments_mc(3)  !! Monte Carlo (0: none)
+            type(out_files_t), intent(inout) :: files   !! the run's files
+            type(status_t), intent(out) :: stat     !! ERR_IO; ERR_NUMERIC: not those types
+        end subroutine write_tensor_certificate
 
         !> The preconditions (tensor_ready).
         module subroutine tensor_analysis_ready(self, d, stat)

@@ -307,6 +307,9 @@ contains
         if (stat%code /= STATUS_OK) return
         if (res%fitted) call write_data(d, outdir, fit, prob, files, stat)
         if (stat%code /= STATUS_OK) return
+        if (res%fitted) call write_tensor_certificate(d, outdir, res, fit, prob, drift, limit, &
+                                                      u_x_mc, u_moments_mc, files, stat)
+        if (stat%code /= STATUS_OK) return
         if (res%plan > 0) then
             first_id = 1
             if (d%tensor%plan_add > 0) first_id = maxval(prob%hangs%id) + 1

@@ -24,7 +24,7 @@ module deck
     use, intrinsic :: iso_fortran_env, only: int64
     use kinds, only: dp
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
-    use text, only: itoa, next_word, rshort
+    use text, only: itoa, next_word, rshort, quoted
     use lines, only: read_line, LINE_MAX
     use fptraps, only: traps_off, traps_restore, NTRAPS
     use deck_base, only: deck_source_t, deck_group_t
@@ -304,6 +304,14 @@ contains
         call d%damping%check(sus, d%body, stat)
         call d%measurement%check(sus, d%body, sta, stat)
         call d%tensor%check(sus, d%body, scene%requested('tensor'), stat)
+        if (scene%requested('tensor') .and. stat%code == STATUS_OK .and. &
+            (len_trim(d%measurement%tare) > 0 .or. len_trim(d%measurement%calibration) > 0)) &
+            call set_error(stat, ERR_DECK, '&measurement tare = '// &
+                quoted(trim(d%measurement%tare))//', calibration = '// &
+                quoted(trim(d%measurement%calibration))//' with analyses = ''tensor'': a '// &
+                'tare''s or a calibration''s output serves identify''s one axis, and the '// &
+                'tensor''s fit takes neither; allowed: both '''' in a deck with tensor (run '// &
+                'identify from a deck of its own)')
         call check_platform_deck(scene, sus, d%body, sta, stat)
         if (scene%requested('calibrate')) call d%calibration%check(stat)
         call check_measuring(scene, sus, d%body, stat)
@@ -313,8 +321,9 @@ contains
     !! design and identify, not tensor or work_precision; it starts turned about the vertical
     !! (&start mode = 'raised', no tilt).  floquet, chart and design analyse the torsion of
     !! inextensible cables: n = 3, model = 'kane'; design and identify the regular polygon
-    !! (radius, radius_prime, l), identify with the mass centre on its axis (its model is
-    !! the pure torsion of the equivalent pair b = 2 radius).
+    !! (radius, radius_prime, l); design with the mass centre on its axis, identify too on
+    !! four or more cables (the pure torsion of the equivalent pair b = 2 radius; on three
+    !! cables identify runs the platform's model: module platform_measure).
     subroutine check_platform_deck(scene, sus, bod, sta, stat)
         type(scene_group_t), intent(in) :: scene        !! normalised
         type(suspension_group_t), intent(in) :: sus     !! normalised
@@ -371,12 +380,15 @@ contains
             call bad(stat, 'suspension', 'support_points', 'given', which//' on a platform '// &
                      'given point by point', 'the regular polygon (radius, radius_prime, l) '// &
                      'with analyses = '''//which//'''')
-        else if (bod%cg_offset /= 0.0_dp .or. bod%cg_offset_y /= 0.0_dp) then
+        else if ((bod%cg_offset /= 0.0_dp .or. bod%cg_offset_y /= 0.0_dp) .and. &
+                 (which == 'design' .or. sus%cables > 3)) then
             call bad(stat, 'body', 'cg_offset', rshort(bod%cg_offset)//', '// &
-                     rshort(bod%cg_offset_y), which//' on a platform with the mass centre '// &
-                     'off its axis', 'cg_offset = 0, 0 with analyses = '''//which// &
-                     ''' (it measures the moment about the axis by the pure torsion of the '// &
-                     'centred body)')
+                     rshort(bod%cg_offset_y), which//' on a platform of '//itoa(sus%cables)// &
+                     ' cables with the mass centre off its axis', 'cg_offset = 0, 0 with '// &
+                     'analyses = '''//which//''' (the pure torsion of the centred body)'// &
+                     trim(merge('; identify with cg_offset on a platform of 3 cables', &
+                                '                                                   ', &
+                                which == 'identify')))
         end if
     contains
         !> The k-th blank-separated word of s.

@@ -3,7 +3,8 @@
 !!
 !! The inputs: mass, l, l_prime (a platform of three or more cables: their one length,
 !! `length`, which moves every cable), b, b_prime, g; the moments I2 and I3 (u_inertia); the
-!! mass centre, as cg_depth and cg_offset when the deck gives it so, else as r and lambda;
+!! mass centre, as cg_depth and cg_offset when the deck gives it so (on a platform with the
+!! mass centre off its axis along y, cg_offset_y too, with u_cg_offset), else as r and lambda;
 !! the release amplitude where it is held (a record fit that does not estimate it).  A
 !! change of b_prime moves the two body attachment points symmetrically: the mass centre
 !! keeps its depth below, and its offset along, the midpoint of CD (rig's move_b_prime).
@@ -57,6 +58,9 @@ contains
         if (bod%centre_measured(sus)) then
             x = [x, input_t('cg_depth', bod%cg_depth, mea%u_cg_depth), &
                  input_t('cg_offset', bod%cg_offset, mea%u_cg_offset)]
+            ! a platform's mass centre off its axis along y: u_cg_offset moves it too
+            if (sus%cables > 2 .and. bod%cg_offset_y /= 0.0_dp) x = [x, &
+                input_t('cg_offset_y', bod%cg_offset_y, mea%u_cg_offset)]
         else
             x = [x, input_t('r', bod%r, mea%u_r), input_t('lambda', bod%lambda, mea%u_lambda)]
         end if
@@ -106,6 +110,8 @@ contains
             end if
             rg%r = sqrt((0.5_dp*rg%b_prime + offset)**2 + depth**2)
             rg%lambda = atan2(depth, 0.5_dp*rg%b_prime + offset)
+        case ('cg_offset_y')
+            rg%cg_offset_y = v
         case ('amplitude')
             st%amplitude = v
         end select
@@ -141,6 +147,8 @@ contains
             v = rg%r*sin(rg%lambda)
         case ('cg_offset')
             v = rg%r*cos(rg%lambda) - 0.5_dp*rg%b_prime
+        case ('cg_offset_y')
+            v = rg%cg_offset_y
         case default
             v = st%amplitude
         end select
@@ -151,7 +159,7 @@ contains
     pure logical function no_effect_on_torsion(name)
         character(len=*), intent(in) :: name
         select case (trim(name))
-        case ('I2', 'I3', 'cg_depth', 'cg_offset', 'r', 'lambda')
+        case ('I2', 'I3', 'cg_depth', 'cg_offset', 'cg_offset_y', 'r', 'lambda')
             no_effect_on_torsion = .true.
         case default
             no_effect_on_torsion = .false.

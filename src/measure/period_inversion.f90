@@ -34,6 +34,10 @@
 !!   rank gives the same numbers.  The samples are a sweep (module monte_carlo) over the
 !!   OpenMP threads and the MPI ranks, checkpointed and resumed like a chart.
 !!
+!! * A platform of three cables with the body's mass centre off its axis gets its periods
+!!   from the platform's own model: the period of its periodic torsion at the amplitude
+!!   (module platform_measure), where simulated_period_s is called; on its axis pure
+!!   torsion is exact, as on the bifilar with b = 2 radius.
 !! * Asymmetric rigs (unequal cables, a mass centre off the vertical bisector of AB: the
 !!   rigs where pure torsion is not an exact motion) get their periods from the full model:
 !!   the period at amplitude A is the time from release at rest at theta4 = A (&start
@@ -87,6 +91,7 @@ module period_inversion
         STEP_LARGEST, FAIL_START, FAIL_EVALUATION, FAIL_JACOBIAN
     use budget, only: ROW_INPUT, ROW_TIMING, ROW_AMPLITUDE, ROW_AMPLITUDE_SCALE
     use unused_arg, only: unused
+    use platform_measure, only: offaxis_platform, platform_period_s
     implicit none
     private
 
@@ -196,6 +201,7 @@ contains
         type(status_t) :: st
         integer :: ivert
         is_torsion_rig = .false.
+        if (offaxis_platform(rg)) return
         call make_pendulum(rg, p, st)
         if (st%code /= 0) return
         call check_torsion_scene(p, ivert, st)
@@ -236,6 +242,11 @@ contains
         type(maxima_sink_t) :: sink
         real(dp) :: y0(NSTATE), th0(5), t_end, jz
         t = 0.0_dp
+        if (offaxis_platform(rg)) then
+            ! a platform's body off its axis: the platform's own periodic torsion
+            call platform_period_s(rg, acc, i1, amp_deg, t, stat)
+            return
+        end if
         rr = rg
         rr%inertia(1) = i1
         rr%c_v = 0.0_dp

@@ -8,6 +8,10 @@
 !! (record_model, record_model_sens) and the evaluator that keeps its runs
 !! (record_runs_t).  See module identify for the method.
 !!
+!! A platform: of three cables the platform's own model (module platform_measure, the
+!! derivatives by central differences of whole runs); of more, the pure torsion of the
+!! equivalent bifilar with the mass centre's depth taken positive.
+!!
 !! The model of a sample: sign (model(t; I1, damping, amplitude, t0)) + bias, where sign is
 !! -1 for a body released the other way (found from the record's first swing) and the
 !! model before t0 is the held start.  A record that starts mid-swing is fitted from its
@@ -64,6 +68,7 @@ module record_fit
     use records, only: record_t, mean_period, median_value
     use inputs, only: input_t, set_input, input_value
     use monte_carlo, only: mc_task_t
+    use platform_measure, only: platform_records, torsion_equivalent, platform_record
     implicit none
     private
 
@@ -319,6 +324,31 @@ contains
         nq = size(names)
         vals = 0.0_dp
         dvals = 0.0_dp
+        if (platform_records(rg)) then
+            ! a platform of three cables: the platform's own model, the derivatives by
+            ! central differences of whole runs
+            call platform_record(rg, st, acc, t, t0, rate, vals, stat)
+            if (stat%code /= 0) return
+            allocate (s0(n, 2))
+            do c = 1, nq
+                h = FD_REL*xs(c)
+                if (trim(names(c)) == 't0') then
+                    call platform_record(rg, st, acc, t, t0 + h, rate, s0(:, 1), stat)
+                    if (stat%code == 0) call platform_record(rg, st, acc, t, t0 - h, rate, &
+                                                             s0(:, 2), stat)
+                else
+                    call moved(names(c), h, rp, sp)
+                    call moved(names(c), -h, rm, sm)
+                    call platform_record(rp, sp, acc, t, t0, rate, s0(:, 1), stat)
+                    if (stat%code == 0) call platform_record(rm, sm, acc, t, t0, rate, &
+                                                             s0(:, 2), stat)
+                end if
+                if (stat%code /= 0) return
+                dvals(:, c) = (s0(:, 1) - s0(:, 2))/(2.0_dp*h)
+            end do
+            return
+        end if
+        rg = torsion_equivalent(rg)
         call make_pendulum(rg, p, stat)
         if (stat%code /= 0) return
         call start_state(st, p, y0, th0, stat)

@@ -102,6 +102,7 @@ module platform_geometry
     end type platform_kin_t
 
     public :: regular_platform, general_platform, platform_prepare, platform_scaled
+    public :: platform_inertia
     public :: rotation, pose_points, solve_pose, platform_kinematics, chart_quality
     public :: master_residual, level_pose, inertia_ok, set_reference, guess_pose, keep_guess
 
@@ -153,6 +154,33 @@ contains
         pl = general_platform(n, sup, bod, [(l, i = 1, n)], mass, inertia, cg_offset, &
                               cg_depth, gravity)
     end function regular_platform
+
+    !> The inertia tensor about the mass centre in the body's frame (x, y, z) from the
+    !! principal moments and btilde (rows: the principal axes in (z, x, y)): the axes
+    !! (e1, e2, e3) = (z, x, y) of the body's frame, e1 vertical when the body hangs level.
+    pure function platform_inertia(inertia, btilde) result(jb)
+        real(dp), intent(in) :: inertia(3)      !! principal moments
+        real(dp), intent(in) :: btilde(3, 3)    !! row i: axis i in (z, x, y)
+        real(dp) :: jb(3, 3)
+        real(dp) :: je(3, 3)
+        integer, parameter :: perm(3) = [2, 3, 1]     ! x, y, z are e2, e3, e1
+        integer :: a, b, k
+        ! J_E = btilde^T diag(inertia) btilde, term by term
+        do b = 1, 3
+            do a = 1, 3
+                je(a, b) = 0.0_dp
+                do k = 1, 3
+                    je(a, b) = je(a, b) + btilde(k, a)*inertia(k)*btilde(k, b)
+                end do
+            end do
+        end do
+        do b = 1, 3
+            do a = 1, 3
+                jb(a, b) = je(perm(a), perm(b))
+            end do
+        end do
+        jb = 0.5_dp*(jb + transpose(jb))
+    end function platform_inertia
 
     !> Any n cables: support points (N), body points (B), lengths; the mass centre at
     !! (cg_offset, zbar - cg_depth) in B, zbar the mean height of the body points in B.

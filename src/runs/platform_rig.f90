@@ -25,9 +25,8 @@ module platform_rig
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_MODEL
     use text, only: sci
     use rig_groups, only: suspension_group_t, body_group_t, damping_group_t, cables_group_t
-    use rig, only: rig_t
     use platform_geometry, only: platform_t, regular_platform, general_platform, &
-                                 platform_prepare
+                                 platform_prepare, platform_inertia
     use platform_model, only: check_platform, platform_start
     use platform_elastic, only: platform_elastic_t, pe_rest_pose, pe_linearise, pe_start, &
                                 pe_from_inextensible, PE_NSTATE
@@ -44,7 +43,7 @@ module platform_rig
         real(dp) :: q_rest(6) = 0.0_dp          !! the elastic rest (Q; n >= 4)
     end type platform_case_t
 
-    public :: is_platform, uses_elastic, platform_inertia, platform_of, platform_of_rig
+    public :: is_platform, uses_elastic, platform_inertia, platform_of
     public :: platform_case, platform_case_start
 
 contains
@@ -62,32 +61,6 @@ contains
         character(len=*), intent(in) :: model   !! &scene model ('kane', 'elastic')
         uses_elastic = n >= 4 .or. trim(adjustl(model)) == 'elastic'
     end function uses_elastic
-
-    !> The inertia tensor about the mass centre in the body's frame (x, y, z) from the
-    !! principal moments and btilde (rows: the principal axes in (z, x, y)).
-    pure function platform_inertia(inertia, btilde) result(jb)
-        real(dp), intent(in) :: inertia(3)      !! principal moments
-        real(dp), intent(in) :: btilde(3, 3)    !! row i: axis i in (z, x, y)
-        real(dp) :: jb(3, 3)
-        real(dp) :: je(3, 3)
-        integer, parameter :: perm(3) = [2, 3, 1]     ! x, y, z are e2, e3, e1
-        integer :: a, b, k
-        ! J_E = btilde^T diag(inertia) btilde, term by term
-        do b = 1, 3
-            do a = 1, 3
-                je(a, b) = 0.0_dp
-                do k = 1, 3
-                    je(a, b) = je(a, b) + btilde(k, a)*inertia(k)*btilde(k, b)
-                end do
-            end do
-        end do
-        do b = 1, 3
-            do a = 1, 3
-                jb(a, b) = je(perm(a), perm(b))
-            end do
-        end do
-        jb = 0.5_dp*(jb + transpose(jb))
-    end function platform_inertia
 
     !> The platform of the deck's groups (checked: cables >= 3), in deck units; not yet
     !! prepared (platform_case).
@@ -111,20 +84,6 @@ contains
         pl%c_v = dmp%c_v
         pl%c_q = dmp%c_q
     end function platform_of
-
-    !> The regular platform of a rig_t of cables > 2 (radius b/2, radius_prime b_prime/2,
-    !! every cable of length l; the mass centre from r and lambda: its offset along x
-    !! r cos(lambda) - b_prime/2, its depth r sin(lambda)): a candidate of a design.
-    pure function platform_of_rig(rg) result(pl)
-        type(rig_t), intent(in) :: rg
-        type(platform_t) :: pl
-        pl = regular_platform(rg%cables, 0.5_dp*rg%b, 0.5_dp*rg%b_prime, rg%l, rg%mass, &
-                              platform_inertia(rg%inertia, rg%btilde), &
-                              [rg%r*cos(rg%lambda) - 0.5_dp*rg%b_prime, 0.0_dp], &
-                              rg%r*sin(rg%lambda), rg%g)
-        pl%c_v = rg%c_v
-        pl%c_q = rg%c_q
-    end function platform_of_rig
 
     !> A platform ready to run: prepared, its rest pose found and stable.  Inextensible
     !! (n <= 3): check_platform (ERR_DECK for a bad rig, a cable slack at rest; ERR_MODEL

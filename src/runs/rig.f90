@@ -85,6 +85,7 @@ contains
         rg%cable_stiffness = cab%stiffness
         rg%cable_damping = cab%damping
         rg%cables = sus%cables
+        if (sus%cables > 2) rg%cg_offset_y = bod%cg_offset_y
     end function rig_of_groups
 
     !> The start of &start (normalised).
@@ -205,7 +206,8 @@ contains
                    all(a%btilde == b%btilde) .and. a%sway_depth == b%sway_depth .and. &
                    a%c_v == b%c_v .and. a%c_q == b%c_q .and. &
                    a%cable_stiffness == b%cable_stiffness .and. &
-                   a%cable_damping == b%cable_damping .and. a%cables == b%cables
+                   a%cable_damping == b%cable_damping .and. a%cables == b%cables .and. &
+                   a%cg_offset_y == b%cg_offset_y
     end function same_rig
 
     !> Two starts are the same, value for value (every component of start_t: keep in step).

@@ -34,6 +34,9 @@ module rig_type
         ! cables > 2: a regular platform of that many cables, b = 2 radius, b_prime = 2
         ! radius_prime, l every cable's length (module platform_rig: platform_of_rig)
         integer :: cables = 2
+        ! a platform's mass centre: its y in the body frame (&body cg_offset(2)); its x and
+        ! its depth are r cos(lambda) - b_prime/2 and r sin(lambda), as on the bifilar
+        real(dp) :: cg_offset_y = 0.0_dp
     end type rig_t
 
     !> How the rig starts: mode 'raised' (the paper's recipe: turned by `amplitude` degrees

@@ -20,7 +20,8 @@ program bench_platform
     use status, only: status_t
     use bench_args, only: int_arg, need
     use deck, only: deck_t, read_deck
-    use rig, only: rig_of, start_of, make_pendulum, start_state
+    use rig, only: make_pendulum, start_state
+    use deck_runs, only: rig_of, start_of
     use bifilar_model, only: bifilar_t, NSTATE
     use ode_system, only: integrator_t, integrator_stats_t
     use integrators, only: new_integrator, SOLVER_LSODA, SOLVER_RADAU

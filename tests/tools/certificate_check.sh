@@ -1,7 +1,9 @@
 #!/bin/sh
-# Render every certificate page (default: output/*.certificate.html) in a headless browser
-# to a PNG of one A4 page's width (plots/NAME.certificate.png) and check that each page
-# rendered to an image of real content.  Needs Chromium (Debian: apt-get install -y
+# Render every certificate page (default: output/*.certificate.html, the pages of the
+# identify, calibrate and tensor decks that `make run` ran) in a headless browser to a PNG
+# of one A4 page's width (plots/NAME.certificate.png) and check that each page rendered to
+# an image of real content; with the default pages, that a tensor deck's page is among
+# them.  Needs Chromium (Debian: apt-get install -y
 # chromium); without it the check says so and ends with status 0 after doing nothing
 # (`make certificate-check` is not part of `make test`).
 #   tests/tools/certificate_check.sh [PAGE.html ...]
@@ -14,8 +16,15 @@ if [ -z "$browser" ]; then
     echo "certificate-check: skipped: no headless browser (install one with: apt-get install -y chromium)"
     exit 0
 fi
-if [ $# -eq 0 ]; then set -- output/*.certificate.html; fi
 n=0; bad=0
+if [ $# -eq 0 ]; then
+    set -- output/*.certificate.html
+    # the tensor decks' pages (title 'Inertia tensor of a body from bifilar hangs')
+    if ! grep -l 'Inertia tensor of a body' "$@" >/dev/null 2>&1; then
+        echo "certificate-check: no tensor deck's page in output/ (run make run first)" >&2
+        bad=$((bad + 1))
+    fi
+fi
 mkdir -p plots
 shoot() {  # shoot PAGE PNG: one A4 width (794 px = 210 mm at 96 px/in), 3000 px down
     timeout 120 "$browser" --headless --no-sandbox --disable-gpu --hide-scrollbars \
