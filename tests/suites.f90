@@ -37,6 +37,7 @@ module suites
     use test_rates, only: run_rates_tests
     use test_tensor, only: run_tensor_tests
     use test_refusals, only: run_refusals_tests
+    use test_tensor_lab, only: run_tensor_lab_tests
     use test_platform, only: run_platform_tests
     use test_certificate, only: run_certificate_tests
     use test_calibrate, only: run_calibrate_tests
@@ -131,6 +132,8 @@ contains
                     'chi-square, roundoff', run_estimator_tests), &
             suite_t('tensor', 'the inertia tensor from several hangs: exact fit, projection, '// &
                     'u, plan, refusals', run_tensor_tests), &
+            suite_t('tensor_lab', 'the tensor''s fixtures, the mass centre from the hangs, '// &
+                    'the plan', run_tensor_lab_tests), &
             suite_t('platform', 'a body on n cables: the paper''s model, torsion, modes, '// &
                     'limits, test mass', run_platform_tests), &
             suite_t('refusals', 'measurement mistakes: wrong numbers, wrong causes; '// &

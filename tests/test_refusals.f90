@@ -360,9 +360,9 @@ contains
         e = run('cd '//d//' && timeout 120 '//x//' p13.nml --out o', d)
         call t%check('messages: plan = 13: exit 0, 13 hangs, no two on one axis', &
                      all([e == 0, one_per_axis(d//'/o/p13.plan.csv', 13)]))
-        call execute_command_line("sed 's/monte_carlo = 0/monte_carlo = 0, plan = 14/' "// &
-            d//'/t.nml > '//d//'/p14.nml')
-        call refused('plan = 14', 'p14.nml', 2, 'plan = 14')
+        call execute_command_line("sed 's/monte_carlo = 0/monte_carlo = 0, plan = 27/' "// &
+            d//'/t.nml > '//d//'/p27.nml')
+        call refused('plan = 27', 'p27.nml', 2, 'plan = 27')
         ! a platform has no l_prime
         call execute_command_line("sed 's/u_l = 0.002,/u_l = 0.002, u_l_prime = 0.3,/' "// &
             'input/measure_platform_template.nml > '//d//'/plat.nml')

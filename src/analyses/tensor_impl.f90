@@ -52,10 +52,25 @@ contains
             d%measurement%tare_mass /= 0.0_dp .or. d%measurement%added_inertia /= 0.0_dp .or. &
             d%measurement%u_added_inertia /= 0.0_dp) then
             call set_error(stat, ERR_DECK, 'analyses = ''tensor'': &measurement tare_i1, '// &
-                'u_tare_i1, tare_mass, added_inertia: a tare or added inertia of identify''s '// &
-                'single hang, which tensor cannot take (its periods give the tensor of all '// &
-                'that hung, in every hang); allowed: none of them in a deck with analyses = '// &
-                '''tensor'' (run identify from a deck of its own)')
+                'u_tare_i1, tare_mass, added_inertia: a tare or added inertia about '// &
+                'identify''s single axis, which tensor cannot take (what hangs with the body '// &
+                'turns with it from hang to hang); allowed: none of them in a deck with '// &
+                'analyses = ''tensor'', and the fixture as &tensor fixture_* (fixture_mass, '// &
+                'fixture_cg, fixture_inertia, their u_fixture_*, fixture_frame): it enters '// &
+                'each hang''s model')
+            return
+        end if
+        if (d%tensor%estimates_cg() .and. d%tensor%monte_carlo > 0) then
+            call set_error(stat, ERR_DECK, '&tensor estimate = ''tensor cg'' with '// &
+                'monte_carlo = '//itoa(d%tensor%monte_carlo)//': the Monte Carlo refits the '// &
+                'six entries alone; allowed: monte_carlo = 0 with estimate = ''tensor cg'' '// &
+                '(the first-order joint covariance), or estimate = ''tensor''')
+            return
+        end if
+        if (d%tensor%estimates_cg() .and. len_trim(d%tensor%hangs) == 0) then
+            call set_error(stat, ERR_DECK, '&tensor estimate = ''tensor cg'': no table of '// &
+                'hangs; allowed: hangs = ''FILE'' (the mass centre is fitted to its periods '// &
+                'and attitudes)')
             return
         end if
         if (trim(d%scene%model) /= 'kane') then
@@ -64,20 +79,6 @@ contains
                 'model = ''kane''')
             return
         end if
-        associate (m => d%measurement)
-            if (any([m%tare_i1, m%u_tare_i1, m%tare_mass, m%added_inertia, &
-                     m%u_added_inertia] /= 0.0_dp)) then
-                call set_error(stat, ERR_DECK, 'analyses = ''tensor'': &measurement tare_i1 = '// &
-                    rshort(m%tare_i1)//', u_tare_i1 = '//rshort(m%u_tare_i1)//', tare_mass = '// &
-                    rshort(m%tare_mass)//', added_inertia = '//rshort(m%added_inertia)// &
-                    ', u_added_inertia = '//rshort(m%u_added_inertia)//': a tare is a moment '// &
-                    'about the one axis of identify; the tensor''s fit takes none (the '// &
-                    'fixture''s tensor is not known); allowed: all 0 with tensor (fit the '// &
-                    'fixture''s own hangs and subtract its tensor), or the tare in a deck of '// &
-                    'analyses = ''identify''')
-                return
-            end if
-        end associate
         if (len_trim(d%tensor%hangs) > 0) then
             if (.not. (d%body%gave('inertia') .or. d%body%gave('size'))) then
                 call set_error(stat, ERR_DECK, 'analyses = ''tensor'': not given: &body '// &
@@ -105,7 +106,7 @@ contains
                 if (stat%code /= STATUS_OK) return
             end do
         end if
-        if (d%tensor%plan > 0) then
+        if (d%tensor%plan > 0 .or. d%tensor%plan_add > 0) then
             call hang_defaults(d%suspension, d%body, h0, have_cg)
             if (len_trim(d%tensor%hangs) > 0 .and. .not. have_cg) then
                 h0 = set%releases(1)%hang
@@ -169,9 +170,10 @@ contains
         type(hang_t) :: h0
         real(dp), allocatable :: drift(:), limit(:), payload(:), parts(:, :)
         real(dp) :: c0, c1, x_proj(6), cond, mean(MC_ESTIMATES), sdev(MC_ESTIMATES), x(6)
-        real(dp) :: u_x_mc(6), u_moments_mc(3), u_axes_mc(3)
+        real(dp) :: u_x_mc(6), u_moments_mc(3), u_axes_mc(3), u_plan, plan_cycles
+        real(dp), allocatable :: u_hang(:)
         logical :: have_cg
-        integer :: i, h
+        integer :: i, h, plan_timings, first_id
         character(len=:), allocatable :: line
         call cpu_time(c0)
         u_x_mc = 0.0_dp
@@ -195,6 +197,7 @@ contains
                 call no_body(stat)
                 return
             end if
+            prob%dcg = fit%dcg
             ! the amplitude limits at the fit: refuse a period that is not defined, carry
             ! the drift of the others as the uncertainty of their definition, fit again
             allocate (drift(size(prob%rows)), limit(size(prob%hangs)))
@@ -222,6 +225,7 @@ contains
                     call no_body(stat)
                     return
                 end if
+                prob%dcg = fit%dcg
             end if
             fit%x_proj = x_proj
             fit%projection_difference = maxval(abs(x_proj - fit%x))/maxval(fit%moments)
@@ -269,16 +273,28 @@ contains
                     'are inflated by the Birge ratio '//fixed(fit%birge, 2)
             end if
         end if
-        if (d%tensor%plan > 0) then
+        if (d%tensor%plan > 0 .or. d%tensor%plan_add > 0) then
             call hang_defaults(d%suspension, d%body, h0, have_cg)
+            plan_cycles = 1.0_dp
+            plan_timings = 1
             if (res%fitted) then
                 if (.not. have_cg) h0 = prob%hangs(1)
                 x = fit%x
+                ! the table's timings: each hang's timing u (its rows' u_period over cycles,
+                ! together), the median of them for a planned hang, the median cycles and
+                ! rows per hang
+                call table_timing(prob, fit, u_hang, u_plan, plan_cycles, plan_timings)
             else
                 call problem_of(d%tensor, d%suspension, d%body, accuracy_of(d), set_empty(), prob)
                 x = deck_tensor(d)
+                u_plan = d%tensor%u(7)
             end if
-            call plan_hangs(prob, h0, d%tensor%u(7), x, d%tensor%plan, plan, stat)
+            if (d%tensor%plan_add > 0) then
+                call plan_hangs(prob, h0, u_plan, x, d%tensor%plan_add, plan, stat, &
+                                prob%hangs, u_hang)
+            else
+                call plan_hangs(prob, h0, u_plan, x, d%tensor%plan, plan, stat)
+            end if
             if (stat%code /= STATUS_OK) return
             res%plan = plan%n
             res%plan_file = outdir//'/'//d%name//'.plan.csv'
@@ -294,7 +310,12 @@ contains
         if (res%fitted) call write_tensor_certificate(d, outdir, res, fit, prob, drift, limit, &
                                                       u_x_mc, u_moments_mc, files, stat)
         if (stat%code /= STATUS_OK) return
-        if (res%plan > 0) call write_plan(d, res%plan_file, plan, x, files, stat)
+        if (res%plan > 0) then
+            first_id = 1
+            if (d%tensor%plan_add > 0) first_id = maxval(prob%hangs%id) + 1
+            call write_plan(d, res%plan_file, plan, x, plan_cycles, plan_timings, first_id, &
+                            files, stat)
+        end if
     contains
         !> A fit that went where no body is (a tensor not positive definite): ERR_MODEL
         !! with the likely cause.
@@ -327,6 +348,50 @@ contains
             s = fixed(a, merge(1, 2, a >= 1.0_dp))
         end if
     end function degrees
+
+    !> The table's timings for a plan: per hang the timing u of its rows together
+    !! ((sum of u_row^-2)^(-1/2), 0 when its rows state none); for a planned hang the median
+    !! of them, the median cycles of a row and the median rows of a hang.
+    subroutine table_timing(prob, fit, u_hang, u_plan, cycles, timings)
+        type(tensor_problem_t), intent(in) :: prob
+        type(tensor_fit_t), intent(in) :: fit
+        real(dp), allocatable, intent(out) :: u_hang(:)
+        real(dp), intent(out) :: u_plan, cycles
+        integer, intent(out) :: timings
+        real(dp), allocatable :: w(:)
+        integer :: h, nh
+        nh = size(prob%hangs)
+        allocate (u_hang(nh), w(nh))
+        do h = 1, nh
+            associate (ur => pack(fit%u_row, prob%rows%release == h))
+                u_hang(h) = 0.0_dp
+                if (all(ur > 0.0_dp)) u_hang(h) = 1.0_dp/sqrt(sum(1.0_dp/ur**2))
+                w(h) = real(size(ur), dp)
+            end associate
+        end do
+        u_plan = median(u_hang)
+        timings = max(1, nint(median(w)))
+        cycles = median(prob%rows%cycles)
+    contains
+        pure real(dp) function median(v)
+            real(dp), intent(in) :: v(:)
+            real(dp) :: s(size(v)), tmp
+            integer :: i, j, n
+            s = v
+            n = size(s)
+            do i = 2, n
+                tmp = s(i)
+                j = i - 1
+                do while (j >= 1)
+                    if (s(j) <= tmp) exit
+                    s(j + 1) = s(j)
+                    j = j - 1
+                end do
+                s(j + 1) = tmp
+            end do
+            median = 0.5_dp*(s((n + 1)/2) + s(n/2 + 1))
+        end function median
+    end subroutine table_timing
 
     !> A set of no hangs (a plan without a table).
     function set_empty() result(set)
@@ -421,6 +486,7 @@ contains
                 call write_kv(u, 'axis_'//itoa(k), reals_text(fit%axes(:, k)), ios)
             end do
             call write_kv(u, 'u_axis_deg', reals_text(fit%u_axes), ios)
+            if (prob%est_cg) call write_cg(u, ios)
             call write_kv(u, 'chi2', fit%chi2, ios)
             call write_kv(u, 'dof', fit%dof, ios)
             call write_kv(u, 'condition', fit%condition, ios)
@@ -490,6 +556,33 @@ contains
             end do
         end if
         call files%close(u, ios, stat)
+    contains
+        !> The mass centre fitted with the tensor: cg (body frame), its u, its shift from
+        !! where the table put it, the joint correlation of (J_xx ... J_yz, cg_x, cg_y, cg_z),
+        !! each attitude's normalised residual.
+        subroutine write_cg(un, io)
+            integer, intent(in) :: un
+            integer, intent(inout) :: io
+            real(dp) :: c9(9, 9), s9(9)
+            integer :: a, b, m
+            call write_kv(un, 'cg', reals_text(prob%origin + fit%dcg), io)
+            call write_kv(un, 'u_cg', reals_text(fit%u_dcg), io)
+            call write_kv(un, 'cg_shift', reals_text(fit%dcg), io)
+            s9 = sqrt(max(0.0_dp, [(fit%cov_all(a, a), a=1, 9)]))
+            do a = 1, 9
+                do b = 1, 9
+                    c9(a, b) = merge(1.0_dp, 0.0_dp, a == b)
+                    if (a /= b .and. s9(a) > 0.0_dp .and. s9(b) > 0.0_dp) c9(a, b) = &
+                        max(-1.0_dp, min(1.0_dp, fit%cov_all(a, b)/(s9(a)*s9(b))))
+                end do
+                call write_kv(un, 'correlation_tensor_cg('//itoa(a)//',:)', &
+                              reals_text(c9(a, :)), io)
+            end do
+            do m = 1, size(prob%att_hang)
+                call write_kv(un, 'attitude_residual('//itoa(prob%hangs(prob%att_hang(m))%id)// &
+                              ')', fit%att_resid(m), io)
+            end do
+        end subroutine write_cg
     end subroutine write_tensor
 
     !> OUTDIR/NAME.tensor.dat: per hang its id, the fitted tensor's vertical moment, the one
@@ -524,23 +617,29 @@ contains
 
     !> OUTDIR/NAME.plan.csv: the planned hangs as a table of hangs to copy (the periods the
     !! tensor x predicts at small amplitude, to be replaced by the timed ones).
-    subroutine write_plan(d, path, plan, x, files, stat)
+    subroutine write_plan(d, path, plan, x, cycles, timings, first_id, files, stat)
         type(deck_t), intent(in) :: d
         character(len=*), intent(in) :: path
         type(tensor_plan_t), intent(in) :: plan
         real(dp), intent(in) :: x(6)
+        real(dp), intent(in) :: cycles          !! cycles of each timing
+        integer, intent(in) :: timings          !! timings of each hang
+        integer, intent(in) :: first_id         !! the first planned hang's number
         type(out_files_t), intent(inout) :: files
         type(status_t), intent(out) :: stat
-        integer :: u, ios, k
+        integer :: u, ios, k, m
         real(dp) :: up(3), al(3)
         call files%open(path, u, stat)
         if (stat%code /= STATUS_OK) return
         ios = 0
         write (u, '(a)', iostat=ios) '# bifilar tensor plan: '//trim(d%scene%title)
-        if (ios == 0) write (u, '(a)', iostat=ios) '# '//itoa(plan%n)//' hangs among the '// &
-            'face, edge and corner directions of the body frame that minimise the trace of '// &
-            'the covariance of the tensor, '//sci(plan%trace, 3)//' (deck units squared), '// &
-            'under the deck''s uncertainties'
+        if (ios == 0) write (u, '(a)', iostat=ios) '# '//itoa(plan%n)//' hangs '// &
+            trim(merge('added to the table ', '                   ', d%tensor%plan_add > 0))// &
+            'among the face, edge and corner directions of the body frame that minimise the '// &
+            'trace of the covariance of the tensor, '//sci(plan%trace, 3)//' (deck units '// &
+            'squared), under the deck''s uncertainties, each timed '//itoa(timings)// &
+            ' time'//trim(merge('s', ' ', timings /= 1))//' over '//rshort(cycles)//' cycle'// &
+            trim(merge('s', ' ', cycles /= 1.0_dp))
         if (ios == 0) write (u, '(a)', iostat=ios) '# period: the period the tensor '// &
             trim(reals_short(x))//' predicts at small amplitude on the deck''s rig: replace '// &
             'it by the timed one (and cycles, amplitude by yours)'
@@ -549,8 +648,11 @@ contains
         do k = 1, plan%n
             up = plan%up(:, k)/maxval(abs(plan%up(:, k)))
             al = plan%along(:, k)/maxval(abs(plan%along(:, k)))
-            if (ios == 0) write (u, '(a)', iostat=ios) itoa(k)//','//ints(up)//','//ints(al)// &
-                ','//fixed(plan%period(k), 6)//',1,0'
+            do m = 1, timings
+                if (ios == 0) write (u, '(a)', iostat=ios) itoa(first_id + k - 1)//','// &
+                    ints(up)//','//ints(al)//','//fixed(cycles*plan%period(k), 6)//','// &
+                    rshort(cycles)//',0'
+            end do
         end do
         call files%close(u, ios, stat)
     contains

@@ -33,6 +33,12 @@
 !!   theta_4 has swung below its rest value: the time from release to that maximum, located
 !!   in the integrator's dense output (as identify's simulated periods).  As A -> 0 it tends
 !!   to the mode's period.
+!! * What hangs (loaded_hang): the body with a fixture (fixture_t, in the body frame or the
+!!   hang's) and its mass centre where a fit puts it.  Their common mass centre G rests in
+!!   the vertical plane through C and D (hang_points: C and D in the body frame from the
+!!   table's hang), so the loaded hang's up is the normal to CD in the plane of C, D and G,
+!!   its cg_depth and cg_offset G's, its mass the sum, its tensor the parallel-axis sum
+!!   about G.
 !! * The drift of the maxima (maxima_drift): at larger amplitudes the torsion feeds the
 !!   other modes and theta_4's maxima no longer come a period apart; the drift is the
 !!   largest change of the interval between successive maxima over the first cycles, over
@@ -67,9 +73,21 @@ module hang_model
         real(dp) :: next_share = 0.0_dp         !! the largest share among the other modes
     end type torsion_mode_t
 
+    !> A fixture that hangs with the body in every hang: its mass, its mass centre and its
+    !! inertia about its mass centre (J_xy = -int x y dm), in the body frame of the table
+    !! (hang_frame = .false.: it turns with the body) or in the frame of the hang
+    !! (hang_frame = .true.: it stays with the hang; axes along CD from C to D, across =
+    !! up x along, up; origin the midpoint of CD).
+    type, public :: fixture_t
+        real(dp) :: mass = 0.0_dp
+        real(dp) :: cg(3) = 0.0_dp
+        real(dp) :: inertia(3, 3) = 0.0_dp
+        logical :: hang_frame = .false.
+    end type fixture_t
+
     public :: tensor_matrix, tensor_entries, principal_axes, hang_frame, turned_hang
     public :: hang_rig, rest_pose, torsion_mode, hang_period, maxima_drift, vertical_moment
-    public :: moment_direction
+    public :: moment_direction, loaded_hang, hang_points, fixture_in_body, plane_normal
 
 
     !> Newton's method on the rest pose: iterations, and the relative change that ends it.
@@ -194,6 +212,97 @@ contains
         rg%c_v = 0.0_dp
         rg%c_q = 0.0_dp
     end subroutine hang_rig
+
+    !> The attachment points C and D of a hang in the body frame, from the mass centre the
+    !! hang's cg_depth and cg_offset place (the origin): C = cg_depth up - (b'/2 +
+    !! cg_offset) along, D = C + b' along.
+    pure subroutine hang_points(h, c, d)
+        type(hang_t), intent(in) :: h           !! the hang
+        real(dp), intent(out) :: c(3), d(3)
+        c = h%cg_depth*h%up - (0.5_dp*h%b_prime + h%cg_offset)*h%along
+        d = c + h%b_prime*h%along
+    end subroutine hang_points
+
+    !> A fixture's mass centre (from the origin of hang_points) and inertia in the body
+    !! frame for the hang h; origin: the point of the body frame where the table's mass
+    !! centre lies (the fixture's cg is given from the body frame's own origin).
+    pure subroutine fixture_in_body(h, fix, origin, rf, jf)
+        type(hang_t), intent(in) :: h
+        type(fixture_t), intent(in) :: fix
+        real(dp), intent(in) :: origin(3)
+        real(dp), intent(out) :: rf(3), jf(3, 3)
+        real(dp) :: c(3), d(3), r(3, 3)
+        if (fix%hang_frame) then
+            call hang_points(h, c, d)
+            r(:, 1) = h%along
+            r(:, 2) = cross(h%up, h%along)
+            r(:, 3) = h%up
+            rf = 0.5_dp*(c + d) + matmul(r, fix%cg)
+            jf = matmul(r, matmul(fix%inertia, transpose(r)))
+        else
+            rf = fix%cg - origin
+            jf = fix%inertia
+        end if
+    end subroutine fixture_in_body
+
+    !> The unit normal of the plane through C, D and the mass centre g (body frame), along x
+    !! (g - C) normalised: the direction across the strings.
+    pure function plane_normal(h, g) result(n)
+        type(hang_t), intent(in) :: h
+        real(dp), intent(in) :: g(3)
+        real(dp) :: n(3), c(3), d(3)
+        call hang_points(h, c, d)
+        n = cross(h%along, g - c)
+        n = n/max(norm2(n), tiny(1.0_dp))
+    end function plane_normal
+
+    !> The hang of what hangs: the body (mass, tensor x about its own mass centre, which lies
+    !! dcg from where the table places it) and a fixture.  Their common mass centre G rests
+    !! in the vertical plane through C and D: the loaded hang's up is the normal to CD in
+    !! the plane of C, D and G (away from G), its cg_depth and cg_offset G's, its along and
+    !! rig the table's; mc the mass of both, xc their tensor about G (body frame).
+    subroutine loaded_hang(h, mass, x, fix, origin, dcg, hc, mc, xc, stat)
+        type(hang_t), intent(in) :: h           !! the hang as the table gives it
+        real(dp), intent(in) :: mass, x(6)      !! the body's mass and tensor
+        type(fixture_t), intent(in) :: fix      !! the fixture (mass 0: none)
+        real(dp), intent(in) :: origin(3)       !! see fixture_in_body
+        real(dp), intent(in) :: dcg(3)          !! the body's mass centre from the table's
+        type(hang_t), intent(out) :: hc
+        real(dp), intent(out) :: mc, xc(6)
+        type(status_t), intent(out) :: stat     !! ERR_DECK: G on the line CD
+        real(dp) :: c(3), d(3), rf(3), jf(3, 3), g(3), j(3, 3), s, p(3), depth
+        stat%code = STATUS_OK
+        hc = h
+        call hang_points(h, c, d)
+        call fixture_in_body(h, fix, origin, rf, jf)
+        mc = mass + fix%mass
+        g = (mass*dcg + fix%mass*rf)/mc
+        j = tensor_matrix(x) + mass*shift(dcg - g) + jf + fix%mass*shift(rf - g)
+        xc = tensor_entries(j)
+        s = dot_product(g - c, h%along)
+        p = (g - c) - s*h%along
+        depth = norm2(p)
+        if (.not. (depth > 1.0e-6_dp*h%b_prime)) then
+            call set_error(stat, ERR_DECK, 'the mass centre of the body and its fixture '// &
+                'lies on the line CD (depth '//sci(depth)//'); allowed: a mass centre that '// &
+                'hangs below CD')
+            return
+        end if
+        hc%up = -p/depth
+        hc%cg_depth = depth
+        hc%cg_offset = s - 0.5_dp*h%b_prime
+    contains
+        !> The parallel-axis term of a unit mass at r: |r|^2 1 - r r^T.
+        pure function shift(r) result(m)
+            real(dp), intent(in) :: r(3)
+            real(dp) :: m(3, 3)
+            integer :: k
+            m = -spread(r, 2, 3)*spread(r, 1, 3)
+            do k = 1, 3
+                m(k, k) = m(k, k) + dot_product(r, r)
+            end do
+        end function shift
+    end subroutine loaded_hang
 
     !> The rest pose of a rig as a chart state (rates 0): theta_1 = theta_4 = sigma_1 = 0,
     !! sigma_2 where the accelerations at rest vanish, theta_5 from the constraint (see the

@@ -460,15 +460,78 @@ contains
             itoa(self%monte_carlo), 'number of Monte Carlo samples out of range', &
             '0 (first order only) or 2 <= monte_carlo <= '//itoa(MAX_MONTE_CARLO))
         if (stat%code /= STATUS_OK) return
-        if (self%plan /= 0 .and. (self%plan < 6 .or. self%plan > 13)) &
+        if (self%plan /= 0 .and. (self%plan < 6 .or. self%plan > 26)) &
             call bad(stat, 'tensor', 'plan', itoa(self%plan), 'number of hangs to plan '// &
-                     'out of range', '0 (no plan) or 6 <= plan <= 13 (the 13 face, edge and '// &
-                     'corner axes of the body frame; a hang with up -u is the hang with up u)')
+                     'out of range', '0 (no plan) or 6 <= plan <= 26 (the 13 face, edge and '// &
+                     'corner axes of the body frame, a hang with up -u being the hang with up '// &
+                     'u; past 13 some are timed twice)')
+        if (stat%code /= STATUS_OK) return
+        if (self%plan_add /= 0 .and. (self%plan_add < 1 .or. self%plan_add > 20)) &
+            call bad(stat, 'tensor', 'plan_add', itoa(self%plan_add), 'number of hangs to '// &
+                     'add out of range', '0 (none) or 1 <= plan_add <= 20 (hangs added to '// &
+                     'the table of hangs)')
+        if (stat%code /= STATUS_OK) return
+        if (self%plan_add > 0 .and. (self%plan > 0 .or. len_trim(self%hangs) == 0)) &
+            call bad(stat, 'tensor', 'plan_add', itoa(self%plan_add), 'hangs to add need a '// &
+                     'table of hangs and no plan', 'plan_add with hangs = ''FILE'' (the hangs '// &
+                     'timed so far), or plan = N alone (a whole plan)')
+        if (stat%code /= STATUS_OK) return
+        call check_fixture()
+        if (stat%code /= STATUS_OK) return
+        if (trim(self%estimate) /= 'tensor' .and. trim(self%estimate) /= 'tensor cg') &
+            call bad(stat, 'tensor', 'estimate', quoted(trim(self%estimate)), 'not an '// &
+                     'estimate of tensor', '''tensor'' (the six entries) or ''tensor cg'' '// &
+                     '(and the mass centre in the body frame)')
+        call finite(stat, 'tensor', 'u_attitude', self%u_attitude)
+        if (stat%code /= STATUS_OK) return
+        if (.not. (self%u_attitude > 0.0_dp .and. self%u_attitude <= 30.0_dp)) &
+            call bad(stat, 'tensor', 'u_attitude', rshort(self%u_attitude), 'a standard '// &
+                     'uncertainty of a hang''s attitude out of range', '0 < u_attitude <= 30 '// &
+                     '(degrees)')
         if (stat%code /= STATUS_OK) return
         if (requested .and. len_trim(self%hangs) == 0 .and. &
             self%plan == 0) call bad(stat, 'tensor', 'hangs', '''''', 'no table of hangs', &
             'hangs = ''FILE'' (a table, relative to the deck''s folder), or plan = N to '// &
             'plan N hangs')
+    contains
+        !> The fixture: finite, its mass and u not negative, its inertia a symmetric matrix
+        !! with a diagonal not negative, its frame 'body' or 'hang'.
+        subroutine check_fixture()
+            integer :: j, k
+            call finite(stat, 'tensor', 'fixture_mass', self%fixture_mass)
+            call finite(stat, 'tensor', 'u_fixture_mass', self%u_fixture_mass)
+            do k = 1, 3
+                call finite(stat, 'tensor', 'fixture_cg', self%fixture_cg(k))
+                call finite(stat, 'tensor', 'u_fixture_cg', self%u_fixture_cg(k))
+                do j = 1, 3
+                    call finite(stat, 'tensor', 'fixture_inertia', self%fixture_inertia(j, k))
+                    call finite(stat, 'tensor', 'u_fixture_inertia', &
+                                self%u_fixture_inertia(j, k))
+                end do
+            end do
+            if (stat%code /= STATUS_OK) return
+            if (self%fixture_mass < 0.0_dp .or. self%fixture_mass > DIM_MAX) call bad(stat, &
+                'tensor', 'fixture_mass', rshort(self%fixture_mass), 'a mass out of range', &
+                '0 <= fixture_mass <= '//rshort(DIM_MAX)//' (deck units; 0: no fixture)')
+            if (self%u_fixture_mass < 0.0_dp .or. any(self%u_fixture_cg < 0.0_dp) .or. &
+                any(self%u_fixture_inertia < 0.0_dp)) call bad(stat, 'tensor', &
+                'u_fixture_*', rshort(min(self%u_fixture_mass, minval(self%u_fixture_cg), &
+                minval(self%u_fixture_inertia))), 'a negative standard uncertainty', &
+                'u_fixture_mass, u_fixture_cg, u_fixture_inertia >= 0')
+            if (stat%code /= STATUS_OK) return
+            if (maxval(abs(self%fixture_inertia - transpose(self%fixture_inertia))) > &
+                1.0e-9_dp*maxval(abs(self%fixture_inertia)) .or. &
+                any([(self%fixture_inertia(k, k), k=1, 3)] < 0.0_dp)) call bad(stat, &
+                'tensor', 'fixture_inertia', rlist_short(reshape(self%fixture_inertia, [9])), &
+                'not an inertia tensor', 'a symmetric 3 x 3 matrix (fixture_inertia(1,:) '// &
+                '= Jxx, Jxy, Jxz, ...; Jxy = -int x y dm) with its diagonal >= 0')
+            if (stat%code /= STATUS_OK) return
+            if (trim(self%fixture_frame) /= 'body' .and. trim(self%fixture_frame) /= 'hang') &
+                call bad(stat, 'tensor', 'fixture_frame', quoted(trim(self%fixture_frame)), &
+                         'not a frame of the fixture', '''body'' (it turns with the body: '// &
+                         'the body frame of the table) or ''hang'' (it stays with the hang: '// &
+                         'along CD, across, up from the midpoint of CD)')
+        end subroutine check_fixture
     end procedure check_tensor
 
 end submodule measure_checks

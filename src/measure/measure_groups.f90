@@ -120,7 +120,22 @@ module measure_groups
         real(dp) :: cg(3) = 0.0_dp                !! the mass centre in the body frame
         logical :: cg_given = .false.
         integer :: plan = 0                       !! hangs to plan (0: none)
+        integer :: plan_add = 0                   !! hangs to add to the table (0: none)
+        !> a fixture that hung with the body in every hang: its mass, mass centre and
+        !! inertia about its mass centre (a 3 x 3 matrix) in the frame fixture_frame
+        !! ('body': the table's body frame; 'hang': along CD, across, up from CD's midpoint)
+        real(dp) :: fixture_mass = 0.0_dp, fixture_cg(3) = 0.0_dp
+        real(dp) :: fixture_inertia(3, 3) = 0.0_dp
+        real(dp) :: u_fixture_mass = 0.0_dp, u_fixture_cg(3) = 0.0_dp
+        real(dp) :: u_fixture_inertia(3, 3) = 0.0_dp  !! of each entry
+        character(len=8) :: fixture_frame = 'body'
+        !> what the fit estimates: 'tensor' (the six entries) or 'tensor cg' (and the mass
+        !! centre, from the periods and the hangs' attitudes)
+        character(len=32) :: estimate = 'tensor'
+        real(dp) :: u_attitude = 0.1_dp           !! of a hang's measured attitude (deg)
     contains
+        procedure :: has_fixture => tensor_has_fixture
+        procedure :: estimates_cg => tensor_estimates_cg
         procedure, nopass :: name => tensor_name
         procedure, nopass :: spec => tensor_spec
         procedure :: read_text => read_tensor
@@ -491,7 +506,9 @@ contains
     function tensor_spec() result(s)
         character(len=:), allocatable :: s
         s = 'hangs:c1 u_mass:r1 u_l:r1 u_l_prime:r1 u_b:r1 u_b_prime:r1 u_g:r1 u_period:r1 '// &
-            'u_amplitude:r1 u_direction:r1 monte_carlo:i1 seed:i1 cg:r3 plan:i1'
+            'u_amplitude:r1 u_direction:r1 monte_carlo:i1 seed:i1 cg:r3 plan:i1 '// &
+            'plan_add:i1 fixture_mass:r1 fixture_cg:r3 fixture_inertia:r9 u_fixture_mass:r1 '// &
+            'u_fixture_cg:r3 u_fixture_inertia:r9 fixture_frame:c1 estimate:c1 u_attitude:r1'
     end function tensor_spec
 
     !> &tensor hangs, the standard uncertainties of the hangs' inputs, monte_carlo, seed, cg,
@@ -504,9 +521,24 @@ contains
         character(len=256) :: hangs
         real(dp) :: u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude
         real(dp) :: u_direction, cg(3)
-        integer :: monte_carlo, seed, plan
+        integer :: monte_carlo, seed, plan, plan_add
+        real(dp) :: fixture_mass, fixture_cg(3), fixture_inertia(3, 3), u_fixture_mass
+        real(dp) :: u_fixture_cg(3), u_fixture_inertia(3, 3), u_attitude
+        character(len=256) :: fixture_frame, estimate
         namelist /tensor/ hangs, u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, &
-            u_amplitude, u_direction, monte_carlo, seed, cg, plan
+            u_amplitude, u_direction, monte_carlo, seed, cg, plan, plan_add, fixture_mass, &
+            fixture_cg, fixture_inertia, u_fixture_mass, u_fixture_cg, u_fixture_inertia, &
+            fixture_frame, estimate, u_attitude
+        plan_add = self%plan_add
+        fixture_mass = self%fixture_mass
+        fixture_cg = self%fixture_cg
+        fixture_inertia = self%fixture_inertia
+        u_fixture_mass = self%u_fixture_mass
+        u_fixture_cg = NOT_GIVEN
+        u_fixture_inertia = NOT_GIVEN
+        fixture_frame = self%fixture_frame
+        estimate = self%estimate
+        u_attitude = self%u_attitude
         hangs = self%hangs
         u_mass = self%u(1)
         u_l = self%u(2)
@@ -530,7 +562,36 @@ contains
         self%plan = plan
         self%cg_given = any(cg /= NOT_GIVEN)
         if (self%cg_given) self%cg = merge(cg, 0.0_dp, cg /= NOT_GIVEN)
+        self%plan_add = plan_add
+        self%fixture_mass = fixture_mass
+        self%fixture_cg = fixture_cg
+        self%fixture_inertia = fixture_inertia
+        self%u_fixture_mass = u_fixture_mass
+        ! one u given for a vector or a matrix is the u of each of its entries
+        if (u_fixture_cg(1) /= NOT_GIVEN .and. all(u_fixture_cg(2:3) == NOT_GIVEN)) &
+            u_fixture_cg(2:3) = u_fixture_cg(1)
+        self%u_fixture_cg = merge(u_fixture_cg, 0.0_dp, u_fixture_cg /= NOT_GIVEN)
+        if (u_fixture_inertia(1, 1) /= NOT_GIVEN .and. count(u_fixture_inertia /= NOT_GIVEN) &
+            == 1) u_fixture_inertia = u_fixture_inertia(1, 1)
+        self%u_fixture_inertia = merge(u_fixture_inertia, 0.0_dp, u_fixture_inertia /= NOT_GIVEN)
+        self%fixture_frame = lower(adjustl(fixture_frame))
+        self%estimate = lower(adjustl(estimate))
+        self%u_attitude = u_attitude
     end subroutine read_tensor
+
+    !> A fixture hung with the body (any of its keys not 0).
+    pure logical function tensor_has_fixture(self)
+        class(tensor_group_t), intent(in) :: self
+        tensor_has_fixture = self%fixture_mass /= 0.0_dp .or. any(self%fixture_cg /= 0.0_dp) &
+            .or. any(self%fixture_inertia /= 0.0_dp) .or. self%u_fixture_mass /= 0.0_dp .or. &
+            any(self%u_fixture_cg /= 0.0_dp) .or. any(self%u_fixture_inertia /= 0.0_dp)
+    end function tensor_has_fixture
+
+    !> estimate = 'tensor cg': the mass centre is fitted with the tensor.
+    pure logical function tensor_estimates_cg(self)
+        class(tensor_group_t), intent(in) :: self
+        tensor_estimates_cg = index(' '//trim(self%estimate)//' ', ' cg ') > 0
+    end function tensor_estimates_cg
 
     function echo_tensor(self) result(line)
         class(tensor_group_t), intent(in) :: self
@@ -544,6 +605,15 @@ contains
             itoa(self%monte_carlo)//', seed = '//itoa(self%seed)
         if (self%cg_given) line = line//', cg = '//rlist_short(self%cg)
         if (self%plan > 0) line = line//', plan = '//itoa(self%plan)
+        if (self%plan_add > 0) line = line//', plan_add = '//itoa(self%plan_add)
+        if (self%has_fixture()) line = line//', fixture_mass = '//rshort(self%fixture_mass)// &
+            ', fixture_cg = '//rlist_short(self%fixture_cg)//', fixture_inertia = '// &
+            rlist_short(reshape(self%fixture_inertia, [9]))//', u_fixture_mass = '// &
+            rshort(self%u_fixture_mass)//', u_fixture_cg = '//rlist_short(self%u_fixture_cg)// &
+            ', u_fixture_inertia = '//rlist_short(reshape(self%u_fixture_inertia, [9]))// &
+            ', fixture_frame = '//quoted(trim(self%fixture_frame))
+        if (trim(self%estimate) /= 'tensor') line = line//', estimate = '// &
+            quoted(trim(self%estimate))//', u_attitude = '//rshort(self%u_attitude)
         line = line//' /'
     end function echo_tensor
 

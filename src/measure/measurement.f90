@@ -48,6 +48,10 @@ module measurement
         !> l, l_prime, b, b_prime given by this hang's own columns (independent inputs of
         !! the hang), else the deck's (inputs common to every hang)
         logical :: own(4) = .false.
+        !> the attitude at rest as measured (the table's gx, gy, gz or tilt): the direction
+        !! of gravity in the body frame, unit; attitude = .false. when not given
+        logical :: attitude = .false.
+        real(dp) :: gravity(3) = 0.0_dp
     end type hang_t
 
     !> One observation.

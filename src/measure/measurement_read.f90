@@ -36,14 +36,17 @@
 !!   theta4 at which it was timed, degrees (default 0: small amplitude); `u_period`: the
 !!   standard uncertainty of the period column's value (default &tensor u_period);
 !! * any of `l, l_prime, b, b_prime, cg_depth, cg_offset`: the hang's own rig (a column
-!!   absent takes the deck's value for every hang).
+!!   absent takes the deck's value for every hang);
+!! * with &tensor estimate = 'tensor cg', the hang's attitude at rest: `gx, gy, gz`, the
+!!   direction of gravity in the body frame, or `tilt`, the roll about CD in degrees
+!!   (gravity = -cos(tilt) up + sin(tilt) (up x along)).
 !! In the model's terms (Kane & Tseng's ntilde frame of the hang): ntilde_1 = -up points
 !! down at rest, ntilde_3 = -along points from D to C, ntilde_2 = ntilde_3 x ntilde_1.
 !!
 !! Failures are ERR_DECK statuses of one line naming the table (or the deck's key), its
 !! line and column, what is wrong and what is allowed.  No routine stops.
 module measurement_read
-    use kinds, only: dp, pi
+    use kinds, only: dp, pi, deg
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
     use text, only: itoa, rshort, rlist_short, quoted, lower, sci
     use deck_base, only: record_in_folder
@@ -53,6 +56,7 @@ module measurement_read
     use budget, only: input_t
     use inputs, only: set_input
     use column_table, only: column_table_t, read_column_table
+    use vectors, only: cross
     use measurement, only: measurement_t, release_t, observation_t, hang_t, OBS_TIMING, &
         OBS_RECORD, OBS_HANG, OBS_TARE, RIG_COLUMNS
     implicit none
@@ -70,7 +74,7 @@ module measurement_read
     !> The column names a table of hangs may use.
     character(len=*), parameter, public :: HANG_COLUMNS = 'hang up_x up_y up_z along_x '// &
         'along_y along_z period cycles amplitude u_period l l_prime b b_prime cg_depth '// &
-        'cg_offset c_x c_y c_z d_x d_y d_z'
+        'cg_offset c_x c_y c_z d_x d_y d_z gx gy gz tilt'
     !> Most rows of a table of hangs.
     integer, parameter, public :: MAX_HANG_ROWS = 10000
     !> Largest amplitude of a hang's row (degrees; the period's own limit is the analysis's).
@@ -500,8 +504,8 @@ contains
         type(column_table_t) :: ct
         type(hang_t) :: h0, h
         type(hang_t), allocatable :: hangs(:)
-        real(dp) :: up_v(3), al_v(3), c_v(3), d_v(3), per, u_tot, t_rig
-        logical :: have_cg, form_up, form_pts
+        real(dp) :: up_v(3), al_v(3), c_v(3), d_v(3), per, u_tot, t_rig, g_v(3), tl
+        logical :: have_cg, form_up, form_pts, have_g
         integer, allocatable :: ids(:)
         integer :: i, k, n, nh
         stat%code = STATUS_OK
@@ -550,6 +554,22 @@ contains
         if (stat%code /= STATUS_OK) return
         call ct%need(stat, 'period', 'a column ''period'' (the time of ''cycles'' cycles, s)')
         if (stat%code /= STATUS_OK) return
+        have_g = ct%has('gx') .or. ct%has('gy') .or. ct%has('gz')
+        if (have_g .and. ct%has('tilt')) then
+            call ct%fail(stat, 'both gx, gy, gz and tilt columns; allowed: the attitude at '// &
+                'rest either as the gravity direction in the body frame (gx, gy, gz) or as '// &
+                'the roll about CD (tilt), not both')
+            return
+        end if
+        if (have_g) call ct%need(stat, 'gx gy gz')
+        if (stat%code /= STATUS_OK) return
+        if ((have_g .or. ct%has('tilt')) .and. .not. ten%estimates_cg()) then
+            call ct%fail(stat, 'columns of the attitude at rest ('//trim(merge('gx, gy, gz', &
+                'tilt      ', have_g))//') with &tensor estimate = '''//trim(ten%estimate)// &
+                '''; allowed: &tensor estimate = ''tensor cg'' (the mass centre fitted from '// &
+                'them and the periods), or no attitude columns')
+            return
+        end if
         if (form_up .and. ten%cg_given) then
             call set_error(stat, ERR_DECK, '&tensor cg = '//rlist_short(ten%cg)// &
                 ': the mass centre in the body frame is used with hangs given by their '// &
@@ -609,6 +629,24 @@ contains
             if (stat%code /= STATUS_OK) return
             call check_rig(i, h)
             if (stat%code /= STATUS_OK) return
+            ! the attitude at rest: gravity in the body frame, or the roll about CD
+            if (have_g) then
+                g_v = [ct%v(i, 'gx', 0.0_dp), ct%v(i, 'gy', 0.0_dp), ct%v(i, 'gz', 0.0_dp)]
+                call ct%check_value(stat, i, 'gx', norm2(g_v), norm2(g_v) > 1.0e-300_dp .and. &
+                    dot_product(g_v, h%up) < 0.0_dp, 'gx, gy, gz the direction of gravity in '// &
+                    'the body frame at rest (any length but 0), within 90 deg of -up')
+                if (stat%code /= STATUS_OK) return
+                h%attitude = .true.
+                h%gravity = g_v/norm2(g_v)
+            else if (ct%has('tilt')) then
+                tl = ct%v(i, 'tilt', 0.0_dp)
+                call ct%check_value(stat, i, 'tilt', tl, abs(tl) < 45.0_dp, '|tilt| < 45 '// &
+                    '(degrees: the roll about CD at rest; gravity in the body frame is -cos '// &
+                    'tilt up + sin tilt (up x along))')
+                if (stat%code /= STATUS_OK) return
+                h%attitude = .true.
+                h%gravity = -cos(tl*deg)*h%up + sin(tl*deg)*cross(h%up, h%along)
+            end if
             ! the timing
             associate (o => m%obs(i))
                 o%kind = OBS_HANG
@@ -656,7 +694,7 @@ contains
             else if (.not. same_hang(hangs(k), h)) then
                 call ct%fail_row(stat, i, 'hang '//itoa(h%id)//' has another orientation or '// &
                     'rig than on line '//itoa(hangs(k)%line)//'; allowed: rows of one hang '// &
-                    'repeat its timing with the same up, along (or c, d) and rig columns')
+                    'repeat its timing with the same up, along (or c, d), rig and attitude columns')
                 return
             end if
             m%obs(i)%release = k
@@ -792,7 +830,8 @@ contains
         same_hang = all(abs(a%up - b%up) <= TOL) .and. all(abs(a%along - b%along) <= TOL) &
             .and. near(a%l, b%l) .and. near(a%l_prime, b%l_prime) .and. near(a%b, b%b) .and. &
             near(a%b_prime, b%b_prime) .and. abs(a%cg_depth - b%cg_depth) <= TOL*a%b_prime &
-            .and. abs(a%cg_offset - b%cg_offset) <= TOL*a%b_prime
+            .and. abs(a%cg_offset - b%cg_offset) <= TOL*a%b_prime .and. &
+            (a%attitude .eqv. b%attitude) .and. all(abs(a%gravity - b%gravity) <= TOL)
     contains
         pure logical function near(x, y)
             real(dp), intent(in) :: x, y

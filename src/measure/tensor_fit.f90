@@ -59,13 +59,21 @@
 !!   Type B uncertainty of the period's definition, u_def = drift T/3^(1/2) (the period
 !!   timed over any of those cycles lies within drift T of the first).  Each hang's limit is
 !!   found by doubling the amplitude from 1 degree and bisecting in log A.
-!! * The plan (plan_hangs): n hangs among the 26 face, edge and corner directions of the
-!!   body frame, at most one of u and -u (one axis, one moment about the vertical: n <= 13;
-!!   along: the first of them normal to up), each at small amplitude on the
-!!   deck's rig, that minimise the trace of C under the deck's uncertainties (the periods'
-!!   sensitivities of the linearised model at the given tensor): a well-conditioned start
+!! * A fixture (&tensor fixture_*) and the mass centre fitted (estimate = 'tensor cg'): the
+!!   model of every case is that of what hangs (hang_model's loaded_hang, problem_rig); the
+!!   fixture's mass, mass centre and inertia are common inputs of the budget (differences;
+!!   the inertia exactly through dT/dx), and the mass's sensitivity is by differences.  With
+!!   the mass centre the parameters are nine (x and its shift dcg) and each hang with an
+!!   attitude adds a residual, the sine of the angle between the measured gravity and the
+!!   plane of C, D and the mass centre (attitude_residual), in the hang's block of V with
+!!   u_attitude and the hang's rotations.
+!! * The plan (plan_hangs): n hangs among the 13 face, edge and corner directions of the
+!!   body frame (u and -u one; along: the first of the 26 normal to up), each at small
+!!   amplitude on the deck's rig, that minimise the trace of C under the deck's
+!!   uncertainties (the periods' sensitivities of the linearised model at the given
+!!   tensor), none planned twice before each is planned once: a well-conditioned start
 !!   (the three faces and three edges), greedy additions, then exchanges until none lowers
-!!   the trace.
+!!   the trace; or n hangs added to the table's (each with its own timing u).
 !! * Monte Carlo (GUM Supplement 1): sample k draws from stream k of the seed, in this
 !!   order, mass, g, l, l_prime, b, b_prime; per hang the three rotations and its four rig
 !!   inputs; per row its timing, amplitude (normal) and definition (uniform within
@@ -89,12 +97,14 @@ module tensor_fit
     use stats, only: chi2_sf, coverage_factor, welch_satterthwaite, NU_INFINITE
     use budget, only: ROW_INPUT, ROW_TIMING, ROW_AMPLITUDE, ROW_DEFINITION, ROW_DIRECTION
     use estimator, only: lsq_problem_t, lsq_options_t, lsq_result_t, estimate, DAMP_HALVING, &
-        STEP_LARGEST, FAIL_FLOOR, FAIL_ITERATIONS
+        STEP_LARGEST, STEP_SCALED, FAIL_FLOOR, FAIL_ITERATIONS
     use monte_carlo, only: mc_task_t
     use measurement, only: measurement_t, observation_t, hang_t, OBS_HANG, RIG_COLUMNS
     use hang_model, only: tensor_entries, principal_axes, hang_rig, hang_period, &
-        maxima_drift, vertical_moment, moment_direction, turned_hang
+        maxima_drift, vertical_moment, moment_direction, turned_hang, fixture_t, loaded_hang, &
+        plane_normal, fixture_in_body
     use unused_arg, only: unused
+    use vectors, only: cross
     implicit none
     private
 
@@ -105,6 +115,9 @@ module tensor_fit
         real(dp) :: rig(4) = 0.0_dp             !! l, l_prime, b, b_prime
         real(dp) :: amplitude = 0.0_dp          !! degrees
         real(dp) :: direction = 0.0_dp          !! rad, each of the three rotations
+        real(dp) :: fix_mass = 0.0_dp, fix_cg(3) = 0.0_dp   !! the fixture's
+        real(dp) :: fix_inertia(6) = 0.0_dp     !! of its entries (xx, yy, zz, xy, xz, yz)
+        real(dp) :: attitude = 0.0_dp           !! rad, of a hang's measured attitude
     end type tensor_u_t
 
     !> What the fit needs: the body's mass, gravity, the hangs and their timings, the runs'
@@ -119,6 +132,14 @@ module tensor_fit
         integer, allocatable :: row_case(:)     !! per row: its case (hang and amplitude)
         integer, allocatable :: case_hang(:)    !! per case: its hang
         real(dp), allocatable :: case_amp(:)    !! per case: its amplitude (degrees)
+        type(fixture_t) :: fix                  !! a fixture in every hang (mass 0: none)
+        real(dp) :: origin(3) = 0.0_dp          !! where the table's mass centre lies
+        real(dp) :: dcg(3) = 0.0_dp             !! the body's mass centre from the table's
+        !> the model composes each hang (loaded_hang): a fixture, or the mass centre fitted
+        logical :: loaded = .false.
+        logical :: est_cg = .false.             !! estimate = 'tensor cg'
+        integer :: np = 6                       !! parameters: 6, or 9 with the mass centre
+        integer, allocatable :: att_hang(:)     !! per attitude residual: its hang
     end type tensor_problem_t
 
     !> One line of the budget: an input (or the inputs of a hang) and what it adds to the
@@ -159,7 +180,22 @@ module tensor_fit
         type(tensor_budget_row_t), allocatable :: budget(:)
         real(dp), allocatable :: chord(:, :)    !! 6 x rows: the step -chord r (Monte Carlo)
         real(dp), allocatable :: u_row(:)       !! per row: the timing's u used (s)
+        !> with the mass centre fitted: the body's mass centre from the table's (body
+        !! frame), its u, the joint covariance of (x, dcg) and each attitude's residual
+        real(dp) :: dcg(3) = 0.0_dp, u_dcg(3) = 0.0_dp
+        real(dp), allocatable :: cov_all(:, :)
+        real(dp), allocatable :: att_resid(:)   !! normalised, per attitude
     end type tensor_fit_t
+
+    !> The sensitivities a fixture or a fitted mass centre adds: per case, the period over
+    !! the fixture's mass and mass centre (4); per attitude residual, over the three
+    !! rotations of its hang, the body's mass and the fixture's mass and mass centre.
+    type :: extra_sens_t
+        real(dp), allocatable :: fix(:, :)      !! (cases, 4)
+        real(dp), allocatable :: att_dir(:, :)  !! (attitudes, 3)
+        real(dp), allocatable :: att_mass(:)    !! (attitudes)
+        real(dp), allocatable :: att_fix(:, :)  !! (attitudes, 4)
+    end type extra_sens_t
 
     !> The covariance of the rows of one hang, as its Cholesky factor once factored.
     type :: block_t
@@ -173,7 +209,7 @@ module tensor_fit
         type(tensor_problem_t) :: tp            !! the problem
         type(block_t), allocatable :: blocks(:) !! the rows' covariance, factored
         real(dp), allocatable :: tc(:)          !! the model's periods of the cases at x_last
-        real(dp) :: x_last(6) = huge(1.0_dp)
+        real(dp) :: x_last(9) = huge(1.0_dp)
     contains
         procedure :: residual => tensor_residual
         procedure :: nres => tensor_nres
@@ -263,6 +299,22 @@ contains
         prob%u%g = ten%u(6)
         prob%u%amplitude = ten%u(8)
         prob%u%direction = ten%u_direction*deg
+        ! the fixture; its cg in the body frame is from the frame's origin, where the
+        ! attachment points' form puts the mass centre at &tensor cg (up/along: at 0)
+        prob%fix%mass = ten%fixture_mass
+        prob%fix%cg = ten%fixture_cg
+        prob%fix%inertia = ten%fixture_inertia
+        prob%fix%hang_frame = trim(ten%fixture_frame) == 'hang'
+        prob%u%fix_mass = ten%u_fixture_mass
+        prob%u%fix_cg = ten%u_fixture_cg
+        prob%u%fix_inertia = [ten%u_fixture_inertia(1, 1), ten%u_fixture_inertia(2, 2), &
+            ten%u_fixture_inertia(3, 3), ten%u_fixture_inertia(1, 2), &
+            ten%u_fixture_inertia(1, 3), ten%u_fixture_inertia(2, 3)]
+        prob%u%attitude = ten%u_attitude*deg
+        if (m%points) prob%origin = ten%cg
+        prob%est_cg = ten%estimates_cg()
+        prob%loaded = ten%has_fixture() .or. prob%est_cg
+        prob%np = merge(9, 6, prob%est_cg)
         call set_cases(prob)
     end subroutine problem_of
 
@@ -295,6 +347,7 @@ contains
         end do
         prob%case_hang = prob%case_hang(1:nc)
         prob%case_amp = prob%case_amp(1:nc)
+        prob%att_hang = pack([(i, i=1, size(prob%hangs))], prob%hangs%attitude .and. prob%est_cg)
     end subroutine set_cases
 
     !> 'hang ID (line L)' for messages.
@@ -491,7 +544,9 @@ contains
         real(dp), intent(out) :: x(6)
         type(status_t), intent(out) :: stat     !! ERR_NUMERIC from dgels
         real(dp), allocatable :: a(:, :), b(:)
-        integer :: i, n
+        real(dp) :: mc, xf(6)
+        type(hang_t) :: hc
+        integer :: i, n, k
         n = size(prob%rows)
         allocate (a(n, 6), b(n))
         do i = 1, n
@@ -499,6 +554,18 @@ contains
                 a(i, :) = moment_direction(h%up)
                 b(i) = prob%mass*prob%g*h%b*h%b_prime*prob%rows(i)%period**2/ &
                        (16.0_dp*pi**2*0.5_dp*(h%l + h%l_prime))
+                if (prob%loaded) then
+                    ! with a fixture: the whole's moment by the formula, less the fixture's
+                    ! share about the whole's vertical (the subtraction of the tool in use)
+                    call loaded_hang(h, prob%mass, [(0.0_dp, k=1, 6)], prob%fix, prob%origin, &
+                                     prob%dcg, hc, mc, xf, stat)
+                    if (stat%code == STATUS_OK) then
+                        a(i, :) = moment_direction(hc%up)
+                        b(i) = mc*prob%g*h%b*h%b_prime*prob%rows(i)%period**2/ &
+                               (16.0_dp*pi**2*0.5_dp*(h%l + h%l_prime)) - &
+                               vertical_moment(xf, hc%up)
+                    end if
+                end if
             end associate
         end do
         call la_lstsq(a, b, x, stat)
@@ -533,10 +600,43 @@ contains
         type(status_t), intent(out) :: stat
         type(rig_t) :: rg
         t = 0.0_dp
-        call hang_rig(mass, g, h, x, rg, stat)
+        call problem_rig(prob, h, mass, g, x, rg, stat)
         if (stat%code == STATUS_OK) call hang_period(rg, prob%acc, amp, t, stat)
         if (stat%code /= STATUS_OK) stat%msg = hang_label(h)//': '//stat%msg
     end subroutine case_period
+
+    !> The rig of hang h for the body's tensor x and mass: hang_rig, of the loaded hang
+    !! (hang_model's loaded_hang: the body with its fixture, its mass centre where the
+    !! problem puts it) when the problem has a fixture or fits the mass centre.
+    subroutine problem_rig(prob, h, mass, g, x, rg, stat)
+        type(tensor_problem_t), intent(in) :: prob
+        type(hang_t), intent(in) :: h
+        real(dp), intent(in) :: mass, g, x(6)
+        type(rig_t), intent(out) :: rg
+        type(status_t), intent(out) :: stat
+        type(hang_t) :: hc
+        real(dp) :: mc, xc(6)
+        if (.not. prob%loaded) then
+            call hang_rig(mass, g, h, x, rg, stat)
+            return
+        end if
+        call loaded_hang(h, mass, x, prob%fix, prob%origin, prob%dcg, hc, mc, xc, stat)
+        if (stat%code == STATUS_OK) call hang_rig(mc, g, hc, xc, rg, stat)
+    end subroutine problem_rig
+
+    !> The attitude residual of hang h: the sine of the angle between the measured gravity
+    !! and the plane through C, D and the mass centre of what hangs (at rest gravity lies
+    !! in that plane), rad.
+    function attitude_residual(prob, h, mass) result(r)
+        type(tensor_problem_t), intent(in) :: prob
+        type(hang_t), intent(in) :: h
+        real(dp), intent(in) :: mass
+        real(dp) :: r
+        real(dp) :: rf(3), jf(3, 3), g(3)
+        call fixture_in_body(h, prob%fix, prob%origin, rf, jf)
+        g = (mass*prob%dcg + prob%fix%mass*rf)/(mass + prob%fix%mass)
+        r = dot_product(h%gravity, plane_normal(h, g))
+    end function attitude_residual
 
     !> The step of the Jacobian's differences for the tensor x (relative to its size).
     pure real(dp) function x_step(prob, x)
@@ -569,22 +669,39 @@ contains
     !> The sensitivities of each case's period to its inputs at x (central differences;
     !! mass and g exactly): amplitude (per degree), the three rotations of the body (per
     !! rad), the hang's l, l_prime, b, b_prime, mass, g.
-    subroutine case_sensitivities(prob, x, tc, a, s_amp, s_dir, s_rig, s_mass, s_g, stat)
+    subroutine case_sensitivities(prob, x, tc, a, s_amp, s_dir, s_rig, s_mass, s_g, ex, stat)
         type(tensor_problem_t), intent(in) :: prob
         real(dp), intent(in) :: x(6), tc(:), a(:, :)
         real(dp), intent(out) :: s_amp(:), s_dir(:, :), s_rig(:, :), s_mass(:), s_g(:)
+        type(extra_sens_t), intent(out) :: ex   !! the fixture's and the attitudes'
         type(status_t), intent(out) :: stat
         type(hang_t) :: hp, hm
-        real(dp) :: tp, tm, hx, ha, eps(3), v
+        real(dp) :: tp, tm, hx, ha, eps(3), v, dmore, dless, hstep
         integer :: c, k
         logical :: sim
         stat%code = STATUS_OK
+        allocate (ex%fix(size(tc), 4))
+        ex%fix = 0.0_dp
         do c = 1, size(tc)
             associate (h => prob%hangs(prob%case_hang(c)), amp => prob%case_amp(c))
                 sim = amp > 0.0_dp
                 hx = merge(HX_SIM, HX_LIN, sim)
                 s_mass(c) = -dot_product(x, a(c, :))/prob%mass
                 s_g(c) = -0.5_dp*tc(c)/prob%g
+                ! with a fixture or a mass centre off the table's, the model does not see
+                ! J/m alone: the mass, and the fixture's mass and mass centre, by differences
+                if (prob%loaded) then
+                    call case_period(prob, h, amp, prob%mass*(1.0_dp + hx), prob%g, x, tp, stat)
+                    if (stat%code == STATUS_OK) call case_period(prob, h, amp, &
+                        prob%mass*(1.0_dp - hx), prob%g, x, tm, stat)
+                    if (stat%code /= STATUS_OK) return
+                    s_mass(c) = (tp - tm)/(2.0_dp*hx*prob%mass)
+                    do k = 1, 4
+                        call fixture_diff(k, hx, dmore, dless, hstep)
+                        if (stat%code /= STATUS_OK) return
+                        ex%fix(c, k) = (dmore - dless)/(2.0_dp*hstep)
+                    end do
+                end if
                 s_amp(c) = 0.0_dp
                 if (sim) then
                     ha = min(0.5_dp*amp, max(1.0e-3_dp, 1.0e-2_dp*amp))
@@ -619,7 +736,81 @@ contains
                 end do
             end associate
         end do
+        call attitude_sensitivities(prob, ex)
+    contains
+        !> The case's period with the fixture's input k (mass, cg x, y, z) moved by +- its
+        !! step.
+        subroutine fixture_diff(k, hx, tmore, tless, step)
+            integer, intent(in) :: k
+            real(dp), intent(in) :: hx
+            real(dp), intent(out) :: tmore, tless, step
+            type(tensor_problem_t) :: pq
+            pq = prob
+            if (k == 1) then
+                step = hx*max(prob%fix%mass, prob%mass)
+                pq%fix%mass = prob%fix%mass + step
+            else
+                step = hx*prob%hangs(prob%case_hang(c))%b_prime
+                pq%fix%cg(k - 1) = prob%fix%cg(k - 1) + step
+            end if
+            call case_period(pq, prob%hangs(prob%case_hang(c)), prob%case_amp(c), prob%mass, &
+                             prob%g, x, tmore, stat)
+            if (stat%code /= STATUS_OK) return
+            if (k == 1) then
+                pq%fix%mass = prob%fix%mass - step
+            else
+                pq%fix%cg(k - 1) = prob%fix%cg(k - 1) - step
+            end if
+            call case_period(pq, prob%hangs(prob%case_hang(c)), prob%case_amp(c), prob%mass, &
+                             prob%g, x, tless, stat)
+        end subroutine fixture_diff
     end subroutine case_sensitivities
+
+    !> The sensitivities of each attitude residual (central differences): the three
+    !! rotations of its hang (per rad), the body's mass, the fixture's mass and mass centre.
+    subroutine attitude_sensitivities(prob, ex)
+        type(tensor_problem_t), intent(in) :: prob
+        type(extra_sens_t), intent(inout) :: ex
+        type(tensor_problem_t) :: pq
+        real(dp) :: eps(3), hx, step
+        integer :: j, k, na
+        na = size(prob%att_hang)
+        allocate (ex%att_dir(na, 3), ex%att_mass(na), ex%att_fix(na, 4))
+        ex%att_dir = 0.0_dp
+        ex%att_mass = 0.0_dp
+        ex%att_fix = 0.0_dp
+        if (na == 0) return
+        hx = HX_LIN
+        pq = prob
+        do j = 1, na
+            associate (h => prob%hangs(prob%att_hang(j)))
+                do k = 1, 3
+                    eps = 0.0_dp
+                    eps(k) = hx
+                    ex%att_dir(j, k) = (attitude_residual(prob, turned_hang(h, eps), prob%mass) &
+                        - attitude_residual(prob, turned_hang(h, -eps), prob%mass))/(2.0_dp*hx)
+                end do
+                ex%att_mass(j) = (attitude_residual(prob, h, prob%mass*(1.0_dp + hx)) - &
+                    attitude_residual(prob, h, prob%mass*(1.0_dp - hx)))/(2.0_dp*hx*prob%mass)
+                step = hx*max(prob%fix%mass, prob%mass)
+                pq%fix%mass = prob%fix%mass + step
+                ex%att_fix(j, 1) = attitude_residual(pq, h, prob%mass)
+                pq%fix%mass = prob%fix%mass - step
+                ex%att_fix(j, 1) = (ex%att_fix(j, 1) - attitude_residual(pq, h, &
+                                                        prob%mass))/(2.0_dp*step)
+                pq%fix%mass = prob%fix%mass
+                step = hx*h%b_prime
+                do k = 1, 3
+                    pq%fix%cg(k) = prob%fix%cg(k) + step
+                    ex%att_fix(j, 1 + k) = attitude_residual(pq, h, prob%mass)
+                    pq%fix%cg(k) = prob%fix%cg(k) - step
+                    ex%att_fix(j, 1 + k) = (ex%att_fix(j, 1 + k) - attitude_residual(pq, h, &
+                                                                    prob%mass))/(2.0_dp*step)
+                    pq%fix%cg(k) = prob%fix%cg(k)
+                end do
+            end associate
+        end do
+    end subroutine attitude_sensitivities
 
     !> A hang's rig input k (l, l_prime, b, b_prime).
     pure real(dp) function rig_value(h, k) result(v)
@@ -661,40 +852,58 @@ contains
     !! (dT/dA u_A)^2) + sum over the three rotations and the hang's own rig of s s^T u^2;
     !! a row whose own diagonal part is zero adds U_FLOOR of its period.  none = .true. when no row has any
     !! stated uncertainty.
-    subroutine row_covariance(prob, u_t, tc, s_amp, s_dir, s_rig, blocks, none)
+    subroutine row_covariance(prob, u_t, tc, s_amp, s_dir, s_rig, ex, blocks, none)
         type(tensor_problem_t), intent(in) :: prob
         real(dp), intent(in) :: u_t(:)          !! per row: the timing's u (s)
         real(dp), intent(in) :: tc(:), s_amp(:), s_dir(:, :), s_rig(:, :)
+        type(extra_sens_t), intent(in) :: ex    !! the attitudes' sensitivities
         type(block_t), allocatable, intent(out) :: blocks(:)
         logical, intent(out) :: none
-        integer :: h, m, i, j, k, ci, cj
+        integer :: h, m, i, j, k, n, ja
         integer, allocatable :: idx(:)
         real(dp) :: own
+        real(dp), allocatable :: sd(:, :), sr(:, :), ov(:)
         allocate (blocks(size(prob%hangs)))
         none = .true.
+        n = size(prob%rows)
         do h = 1, size(prob%hangs)
-            idx = pack([(i, i=1, size(prob%rows))], prob%rows%release == h)
+            ! the hang's rows, then its attitude (a residual of its own, after the rows)
+            idx = pack([(i, i=1, n)], prob%rows%release == h)
+            ja = 0
+            if (size(prob%att_hang) > 0) ja = findloc(prob%att_hang, h, 1)
+            if (ja > 0) idx = [idx, n + ja]
             m = size(idx)
             blocks(h)%rows = idx
-            allocate (blocks(h)%l(m, m))
+            allocate (blocks(h)%l(m, m), sd(m, 3), sr(m, 4), ov(m))
             do j = 1, m
-                cj = prob%row_case(idx(j))
+                if (idx(j) > n) then
+                    sd(j, :) = ex%att_dir(ja, :)
+                    sr(j, :) = 0.0_dp
+                    ov(j) = prob%u%attitude**2
+                    cycle
+                end if
+                sd(j, :) = s_dir(prob%row_case(idx(j)), :)
+                sr(j, :) = s_rig(prob%row_case(idx(j)), :)
+                ov(j) = u_t(idx(j))**2 + prob%u_def(idx(j))**2 + &
+                    (s_amp(prob%row_case(idx(j)))*prob%u%amplitude)**2
+            end do
+            do j = 1, m
                 do i = 1, m
-                    ci = prob%row_case(idx(i))
-                    blocks(h)%l(i, j) = sum(s_dir(ci, :)*s_dir(cj, :))*prob%u%direction**2
+                    blocks(h)%l(i, j) = sum(sd(i, :)*sd(j, :))*prob%u%direction**2
                     do k = 1, 4
                         if (prob%hangs(h)%own(k)) blocks(h)%l(i, j) = blocks(h)%l(i, j) + &
-                            s_rig(ci, k)*s_rig(cj, k)*prob%u%rig(k)**2
+                            sr(i, k)*sr(j, k)*prob%u%rig(k)**2
                     end do
                 end do
-                own = u_t(idx(j))**2 + prob%u_def(idx(j))**2 + (s_amp(cj)*prob%u%amplitude)**2
+                own = ov(j)
                 blocks(h)%l(j, j) = blocks(h)%l(j, j) + own
                 if (blocks(h)%l(j, j) > 0.0_dp) none = .false.
                 ! a row without a scatter of its own (rows of one case share the rest, and
                 ! their block would be singular) counts U_FLOOR of its period
-                if (.not. (own > 0.0_dp)) &
-                    blocks(h)%l(j, j) = blocks(h)%l(j, j) + (U_FLOOR*tc(cj))**2
+                if (.not. (own > 0.0_dp) .and. idx(j) <= n) &
+                    blocks(h)%l(j, j) = blocks(h)%l(j, j) + (U_FLOOR*tc(prob%row_case(idx(j))))**2
             end do
+            deallocate (sd, sr, ov)
         end do
     end subroutine row_covariance
 
@@ -741,14 +950,14 @@ contains
     subroutine gauss_newton(prob, blocks, x, tc, s, iters, evals, stat)
         type(tensor_problem_t), intent(in) :: prob
         type(block_t), intent(in) :: blocks(:)
-        real(dp), intent(inout) :: x(6)
+        real(dp), intent(inout) :: x(:)         !! the entries (and the mass centre)
         real(dp), intent(out) :: tc(:), s
         integer, intent(inout) :: iters, evals
         type(status_t), intent(out) :: stat
         type(tensor_lsq_t) :: lsq
         type(lsq_options_t) :: opts
         type(lsq_result_t) :: res
-        real(dp) :: tol, rr(size(prob%rows))
+        real(dp) :: tol, rr(size(prob%rows) + size(prob%att_hang))
         s = huge(1.0_dp)
         tc = 0.0_dp
         tol = X_TOL
@@ -764,6 +973,7 @@ contains
         opts%gtol = 0.0_dp
         opts%xtol = tol
         opts%step_norm = STEP_LARGEST
+        if (prob%est_cg) opts%step_norm = STEP_SCALED
         opts%ftol = 1.0e-10_dp
         opts%small_gain = huge(1.0_dp)
         opts%floor_gain = 0.0_dp
@@ -776,7 +986,7 @@ contains
             x = res%p
             s = res%cost
             ! the model's periods at the solution (the last evaluation may be a step refused)
-            if (.not. all(lsq%x_last == x)) call lsq%residual(x, rr, stat)
+            if (.not. all(lsq%x_last(1:size(x)) == x)) call lsq%residual(x, rr, stat)
             tc = lsq%tc
             return
         end if
@@ -800,21 +1010,28 @@ contains
         real(dp), intent(out) :: r(:)
         type(status_t), intent(out) :: stat
         real(dp) :: rr(size(r), 1)
+        integer :: n, j
         r = 0.0_dp
         prob%x_last = huge(1.0_dp)
-        call model_periods(prob%tp, p, prob%tc, stat)
+        if (prob%tp%est_cg) prob%tp%dcg = p(7:9)
+        call model_periods(prob%tp, p(1:6), prob%tc, stat)
         if (stat%code /= STATUS_OK) return
-        rr(:, 1) = prob%tc(prob%tp%row_case) - prob%tp%rows%period
+        n = size(prob%tp%rows)
+        rr(1:n, 1) = prob%tc(prob%tp%row_case) - prob%tp%rows%period
+        do j = 1, size(prob%tp%att_hang)
+            rr(n + j, 1) = attitude_residual(prob%tp, prob%tp%hangs(prob%tp%att_hang(j)), &
+                                             prob%tp%mass)
+        end do
         call whiten(prob%blocks, rr, stat)
         if (stat%code /= STATUS_OK) return
         r = rr(:, 1)
-        prob%x_last = p
+        prob%x_last(1:size(p)) = p
     end subroutine tensor_residual
 
     !> The number of rows.
     pure integer function tensor_nres(prob) result(n)
         class(tensor_lsq_t), intent(in) :: prob
-        n = size(prob%tp%rows)
+        n = size(prob%tp%rows) + size(prob%tp%att_hang)
     end function tensor_nres
 
     !> The whitened Jacobian L^-1 dT/dx of the rows (case_jacobian: forward differences of
@@ -827,19 +1044,40 @@ contains
         real(dp), intent(out) :: jac(:, :)
         integer, intent(out) :: evaluations
         type(status_t), intent(out) :: stat
-        real(dp) :: a(size(prob%tc), 6), rr(size(r))
+        real(dp) :: a(size(prob%tc), 6), rr(size(r)), tp(size(prob%tc)), hc
+        type(tensor_problem_t) :: pq
+        integer :: n, j, k
         evaluations = 0
         jac = 0.0_dp
         call unused(h)
-        if (.not. all(prob%x_last == p)) then
+        if (.not. all(prob%x_last(1:size(p)) == p)) then
             call prob%residual(p, rr, stat)
             evaluations = 1
             if (stat%code /= STATUS_OK) return
         end if
-        call case_jacobian(prob%tp, p, prob%tc, a, stat)
+        call case_jacobian(prob%tp, p(1:6), prob%tc, a, stat)
         evaluations = evaluations + 6
         if (stat%code /= STATUS_OK) return
-        jac = a(prob%tp%row_case, :)
+        n = size(prob%tp%rows)
+        jac(1:n, 1:6) = a(prob%tp%row_case, :)
+        if (prob%tp%est_cg) then
+            ! the mass centre's columns: forward differences of the periods and attitudes
+            hc = merge(H_SIM, H_LIN, any(prob%tp%case_amp > 0.0_dp))*prob%tp%hangs(1)%b_prime
+            do k = 1, 3
+                pq = prob%tp
+                pq%dcg(k) = pq%dcg(k) + hc
+                call model_periods(pq, p(1:6), tp, stat)
+                if (stat%code /= STATUS_OK) return
+                evaluations = evaluations + 1
+                jac(1:n, 6 + k) = (tp(prob%tp%row_case) - prob%tc(prob%tp%row_case))/hc
+                do j = 1, size(pq%att_hang)
+                    associate (hh => pq%hangs(pq%att_hang(j)))
+                        jac(n + j, 6 + k) = (attitude_residual(pq, hh, pq%mass) - &
+                            attitude_residual(prob%tp, hh, pq%mass))/hc
+                    end associate
+                end do
+            end do
+        end if
         call whiten(prob%blocks, jac, stat)
     end subroutine tensor_jacobian
 
@@ -850,14 +1088,18 @@ contains
         real(dp), intent(in) :: x0(6)           !! start (the projection solution)
         type(tensor_fit_t), intent(out) :: fit
         type(status_t), intent(out) :: stat     !! ERR_NUMERIC, ERR_DECK
+        type(tensor_problem_t) :: pr
         type(block_t), allocatable :: blocks(:)
+        type(extra_sens_t) :: ex
         real(dp), allocatable :: tc(:), a(:, :), s_amp(:), s_dir(:, :), s_rig(:, :)
-        real(dp), allocatable :: s_mass(:), s_g(:), u_t(:), aw(:, :), r(:, :)
+        real(dp), allocatable :: s_mass(:), s_g(:), u_t(:), aw(:, :), r(:, :), pv(:)
         real(dp) :: x(6), s, w(3), v(3, 3)
-        integer :: n, nc, round
+        integer :: n, nc, na, round, j
         logical :: none
+        pr = prob
         n = size(prob%rows)
         nc = size(prob%case_hang)
+        na = size(prob%att_hang)
         allocate (tc(nc), a(nc, 6), s_amp(nc), s_dir(nc, 3), s_rig(nc, 4), s_mass(nc), &
                   s_g(nc), u_t(n))
         u_t = prob%rows%u_period
@@ -870,18 +1112,20 @@ contains
             w = max(w, 1.0e-3_dp*abs(w(3)), tiny(1.0_dp))
             x = tensor_entries(matmul(v, matmul(diag3(w), transpose(v))))
         end if
-        call model_periods(prob, x, tc, stat)
+        call model_periods(pr, x, tc, stat)
         if (stat%code /= STATUS_OK) then
             stat%msg = 'the model at the projection solution: '//stat%msg
             return
         end if
+        pv = [x, pr%dcg]
+        pv = pv(1:prob%np)
         do round = 1, 2
-            call case_jacobian(prob, x, tc, a, stat)
+            call case_jacobian(pr, x, tc, a, stat)
             if (stat%code /= STATUS_OK) return
-            call case_sensitivities(prob, x, tc, a, s_amp, s_dir, s_rig, s_mass, s_g, stat)
+            call case_sensitivities(pr, x, tc, a, s_amp, s_dir, s_rig, s_mass, s_g, ex, stat)
             if (stat%code /= STATUS_OK) return
             fit%evaluations = fit%evaluations + 6 + 2*nc*8
-            call row_covariance(prob, u_t, tc, s_amp, s_dir, s_rig, blocks, none)
+            call row_covariance(pr, u_t, tc, s_amp, s_dir, s_rig, ex, blocks, none)
             if (none .and. .not. fit%scatter) then
                 ! no stated uncertainty: equal weights, then the timing u from the scatter
                 fit%scatter = .true.
@@ -891,32 +1135,38 @@ contains
             end if
             call factor_blocks(blocks, stat)
             if (stat%code /= STATUS_OK) return
-            call gauss_newton(prob, blocks, x, tc, s, fit%iterations, fit%evaluations, stat)
+            call gauss_newton(pr, blocks, pv, tc, s, fit%iterations, fit%evaluations, stat)
             if (stat%code /= STATUS_OK) return
+            x = pv(1:6)
+            if (prob%est_cg) pr%dcg = pv(7:9)
         end do
         ! the final Jacobian and sensitivities at the solution
-        call case_jacobian(prob, x, tc, a, stat)
+        call case_jacobian(pr, x, tc, a, stat)
         if (stat%code /= STATUS_OK) return
-        call case_sensitivities(prob, x, tc, a, s_amp, s_dir, s_rig, s_mass, s_g, stat)
+        call case_sensitivities(pr, x, tc, a, s_amp, s_dir, s_rig, s_mass, s_g, ex, stat)
         if (stat%code /= STATUS_OK) return
         fit%evaluations = fit%evaluations + 6 + 2*nc*8
-        fit%dof = n - 6
+        fit%dof = n + na - prob%np
         if (fit%scatter) then
             fit%u_scatter = 0.0_dp
             if (fit%dof > 0) fit%u_scatter = sqrt(sum((tc(prob%row_case) - &
                                                        prob%rows%period)**2)/fit%dof)
             u_t = fit%u_scatter
         end if
-        call row_covariance(prob, u_t, tc, s_amp, s_dir, s_rig, blocks, none)
+        call row_covariance(pr, u_t, tc, s_amp, s_dir, s_rig, ex, blocks, none)
         if (fit%scatter .and. fit%u_scatter == 0.0_dp) blocks = unit_blocks(blocks)
         call factor_blocks(blocks, stat)
         if (stat%code /= STATUS_OK) return
         fit%x = x
+        fit%dcg = pr%dcg
         fit%model_period = tc(prob%row_case)
         fit%u_row = u_t
-        ! chi-square of the rows against the fit
-        allocate (r(n, 1), aw(n, 6))
-        r(:, 1) = tc(prob%row_case) - prob%rows%period
+        ! chi-square of the rows (and the attitudes) against the fit
+        allocate (r(n + na, 1), aw(n + na, prob%np))
+        r(1:n, 1) = tc(prob%row_case) - prob%rows%period
+        do j = 1, na
+            r(n + j, 1) = attitude_residual(pr, pr%hangs(pr%att_hang(j)), pr%mass)
+        end do
         call whiten(blocks, r, stat)
         if (stat%code /= STATUS_OK) return
         fit%chi2 = sum(r**2)
@@ -929,14 +1179,48 @@ contains
             fit%consistent = .false.
             fit%inflation = max(1.0_dp, fit%birge)
         end if
-        aw = a(prob%row_case, :)
+        aw = 0.0_dp
+        aw(1:n, 1:6) = a(prob%row_case, :)
+        if (prob%est_cg) call cg_columns(pr, x, tc, aw, stat)
+        if (stat%code /= STATUS_OK) return
         call whiten(blocks, aw, stat)
         if (stat%code /= STATUS_OK) return
-        call covariance_and_budget(prob, blocks, x, aw, u_t, s_amp, s_dir, s_rig, &
-                                   s_mass, s_g, fit, stat)
+        fit%att_resid = r(n + 1:n + na, 1)
+        call covariance_and_budget(pr, blocks, x, aw, u_t, s_amp, s_dir, s_rig, &
+                                   s_mass, s_g, ex, a, fit, stat)
         if (stat%code /= STATUS_OK) return
-        call per_hang(prob, blocks, x, tc, a, fit, stat)
+        call per_hang(pr, blocks, x, tc, a, fit, stat)
     end subroutine fit_tensor
+
+    !> The columns of the mass centre (7 to 9) of the rows' and attitudes' Jacobian, not
+    !! whitened: central differences of the periods and the attitude residuals.
+    subroutine cg_columns(prob, x, tc, aw, stat)
+        type(tensor_problem_t), intent(in) :: prob
+        real(dp), intent(in) :: x(6), tc(:)
+        real(dp), intent(inout) :: aw(:, :)
+        type(status_t), intent(out) :: stat
+        type(tensor_problem_t) :: pp, pm
+        real(dp) :: tp(size(tc)), tm(size(tc)), hc
+        integer :: k, j, n
+        n = size(prob%rows)
+        hc = merge(H_SIM, H_LIN, any(prob%case_amp > 0.0_dp))*prob%hangs(1)%b_prime
+        do k = 1, 3
+            pp = prob
+            pm = prob
+            pp%dcg(k) = prob%dcg(k) + hc
+            pm%dcg(k) = prob%dcg(k) - hc
+            call model_periods(pp, x, tp, stat)
+            if (stat%code == STATUS_OK) call model_periods(pm, x, tm, stat)
+            if (stat%code /= STATUS_OK) return
+            aw(1:n, 6 + k) = (tp(prob%row_case) - tm(prob%row_case))/(2.0_dp*hc)
+            do j = 1, size(prob%att_hang)
+                associate (hh => prob%hangs(prob%att_hang(j)))
+                    aw(n + j, 6 + k) = (attitude_residual(pp, hh, prob%mass) - &
+                        attitude_residual(pm, hh, prob%mass))/(2.0_dp*hc)
+                end associate
+            end do
+        end do
+    end subroutine cg_columns
 
     !> Blocks of the identity (equal weights) of the same shapes.
     pure function unit_blocks(b) result(u)
@@ -965,36 +1249,42 @@ contains
     !> The covariance of x (sum over the inputs of S_k S_k^T u_k^2), the budget, the
     !! principal moments and axes with their u, coverage factors, the chord for Monte Carlo.
     subroutine covariance_and_budget(prob, blocks, x, aw, u_t, s_amp, s_dir, s_rig, &
-                                     s_mass, s_g, fit, stat)
+                                     s_mass, s_g, ex, a, fit, stat)
         type(tensor_problem_t), intent(in) :: prob
         type(block_t), intent(in) :: blocks(:)
         real(dp), intent(in) :: x(6), aw(:, :), u_t(:)
         real(dp), intent(in) :: s_amp(:), s_dir(:, :), s_rig(:, :), s_mass(:), s_g(:)
+        type(extra_sens_t), intent(in) :: ex    !! the fixture's and the attitudes'
+        real(dp), intent(in) :: a(:, :)         !! dT/dx per case
         type(tensor_fit_t), intent(inout) :: fit
         type(status_t), intent(out) :: stat
-        real(dp) :: sv(6), vt(6, 6), ninv(6, 6), g(6)
+        real(dp) :: sv(prob%np), vt(prob%np, prob%np), ninv(prob%np, prob%np), g(6)
         real(dp), allocatable :: gmat(:, :), col(:, :), gt(:, :)
         real(dp), allocatable :: cmoment(:, :)       ! per budget row: contribution to moments
-        integer :: n, i, h, k, j
-        real(dp) :: cgrp(6, 6), fi
+        integer :: n, i, h, k, j, np, na, ja
+        real(dp) :: cgrp(prob%np, prob%np), fi
         integer :: n_common
         n = size(prob%rows)
+        np = prob%np
+        na = size(prob%att_hang)
         fi = fit%inflation                      ! the per-hang sources' (the self-check)
         call la_svd(aw, sv, vt, stat)
         if (stat%code /= STATUS_OK) return
-        if (.not. (sv(6) > 1.0e-14_dp*sv(1))) then
+        if (.not. (sv(np) > 1.0e-14_dp*sv(1))) then
             call set_error(stat, ERR_NUMERIC, 'the fit''s Jacobian is singular: the hangs do '// &
-                'not determine the tensor')
+                'not determine the tensor'//trim(merge(' and the mass centre', &
+                '                    ', prob%est_cg)))
             return
         end if
         ninv = 0.0_dp
-        do k = 1, 6
+        do k = 1, np
             ninv = ninv + outer(vt(k, :), vt(k, :))/sv(k)**2
         end do
         ! the chord: dx = -G L^-1 r, G = (A_w^T A_w)^-1 A_w^T; per block (G L^-1)^T =
         ! L^-T G^T
         gmat = matmul(ninv, transpose(aw))
-        allocate (fit%chord(6, n))
+        allocate (fit%chord(np, n + na), fit%cov_all(np, np))
+        fit%cov_all = 0.0_dp
         do h = 1, size(blocks)
             gt = transpose(gmat(:, blocks(h)%rows))
             call la_tri_solve(blocks(h)%l, gt, stat, transposed=.true.)
@@ -1007,9 +1297,9 @@ contains
         fit%cov = 0.0_dp
         call principal_axes(x, fit%moments, fit%axes, stat)
         if (stat%code /= STATUS_OK) return
-        allocate (col(n, 1))
+        allocate (col(n + na, 1))
         ! mass, g
-        call group('mass', prob%u%mass, [ (s_mass(prob%row_case(i)), i=1, n) ])
+        call group('mass', prob%u%mass, [ (s_mass(prob%row_case(i)), i=1, n), ex%att_mass ])
         call group('g', prob%u%g, [ (s_g(prob%row_case(i)), i=1, n) ])
         do k = 1, 4
             col(:, 1) = 0.0_dp
@@ -1020,6 +1310,29 @@ contains
             if (any(col(:, 1) /= 0.0_dp)) call group(trim(RIG_COLUMNS(k)), prob%u%rig(k), &
                                                      col(:, 1))
         end do
+        ! the fixture: its mass, its mass centre (3), its inertia (6 entries)
+        if (prob%u%fix_mass > 0.0_dp) call group('fixture_mass', prob%u%fix_mass, &
+            [ (ex%fix(prob%row_case(i), 1), i=1, n), ex%att_fix(:, 1) ])
+        if (any(prob%u%fix_cg > 0.0_dp)) then
+            cgrp = 0.0_dp
+            do k = 1, 3
+                call add_input([ (ex%fix(prob%row_case(i), 1 + k), i=1, n), &
+                               ex%att_fix(:, 1 + k) ], prob%u%fix_cg(k), cgrp)
+            end do
+            call push('fixture_cg', maxval(prob%u%fix_cg), cgrp, ROW_INPUT)
+        end if
+        if (any(prob%u%fix_inertia > 0.0_dp)) then
+            cgrp = 0.0_dp
+            do k = 1, 6
+                col(:, 1) = 0.0_dp
+                do i = 1, n
+                    col(i, 1) = dot_product(a(prob%row_case(i), :), &
+                        fixture_entry(prob%hangs(prob%rows(i)%release), k))
+                end do
+                call add_input(col(:, 1), prob%u%fix_inertia(k), cgrp)
+            end do
+            call push('fixture_inertia', maxval(prob%u%fix_inertia), cgrp, ROW_INPUT)
+        end if
         n_common = size(fit%budget)
         do h = 1, size(prob%hangs)
             ! the timings of its rows
@@ -1058,7 +1371,9 @@ contains
                           fi*maxval(prob%u_def(pack([(i, i=1, n)], prob%rows%release == h))), &
                           cgrp, ROW_DEFINITION)
             end if
-            ! the direction: three rotations shared by its rows
+            ! the direction: three rotations shared by its rows (and its attitude)
+            ja = 0
+            if (na > 0) ja = findloc(prob%att_hang, h, 1)
             if (prob%u%direction > 0.0_dp) then
                 cgrp = 0.0_dp
                 do k = 1, 3
@@ -1066,6 +1381,7 @@ contains
                     do i = 1, n
                         if (prob%rows(i)%release == h) col(i, 1) = s_dir(prob%row_case(i), k)
                     end do
+                    if (ja > 0) col(n + ja, 1) = ex%att_dir(ja, k)
                     call add_input(col(:, 1), fi*prob%u%direction, cgrp)
                 end do
                 call push('direction('//itoa(prob%hangs(h)%id)//')', fi*prob%u%direction/deg, &
@@ -1083,8 +1399,19 @@ contains
                 call push(trim(RIG_COLUMNS(k))//'('//itoa(prob%hangs(h)%id)//')', &
                           fi*prob%u%rig(k), cgrp, ROW_INPUT)
             end do
+            ! its attitude as measured
+            if (ja > 0) then
+                cgrp = 0.0_dp
+                col(:, 1) = 0.0_dp
+                col(n + ja, 1) = -1.0_dp
+                call add_input(col(:, 1), fi*prob%u%attitude, cgrp)
+                call push('attitude('//itoa(prob%hangs(h)%id)//')', fi*prob%u%attitude/deg, &
+                          cgrp, ROW_INPUT)
+            end if
         end do
+        fit%cov = fit%cov_all(1:6, 1:6)
         fit%u_x = sqrt(max(0.0_dp, [(fit%cov(k, k), k=1, 6)]))
+        if (prob%est_cg) fit%u_dcg = sqrt(max(0.0_dp, [(fit%cov_all(k, k), k=7, 9)]))
         ! the principal moments and axes
         do k = 1, 3
             g = moment_direction(fit%axes(:, k))
@@ -1123,25 +1450,43 @@ contains
         subroutine group(name, u, dr)
             character(len=*), intent(in) :: name
             real(dp), intent(in) :: u, dr(:)
-            real(dp) :: cg(6, 6)
+            real(dp) :: cg(np, np)
             cg = 0.0_dp
             call add_input(dr, u, cg)
             call push(name, u, cg, ROW_INPUT)
         end subroutine group
         !> S = -G L^-1 dr: its covariance S S^T u^2 added to cg and to fit%cov.
         subroutine add_input(dr, u, cg)
-            real(dp), intent(in) :: dr(:), u
-            real(dp), intent(inout) :: cg(6, 6)
-            real(dp) :: sk(6)
+            real(dp), intent(in) :: dr(:), u       !! over the rows (then the attitudes)
+            real(dp), intent(inout) :: cg(np, np)
+            real(dp) :: sk(np)
             if (.not. (u > 0.0_dp)) return
-            sk = -matmul(fit%chord, dr)
+            sk = -matmul(fit%chord(:, 1:size(dr)), dr)
             cg = cg + outer(sk, sk)*u**2
-            fit%cov = fit%cov + outer(sk, sk)*u**2
+            fit%cov_all = fit%cov_all + outer(sk, sk)*u**2
         end subroutine add_input
+        !> The change of the entries of what hangs in hang hh for a unit change of the
+        !! fixture's inertia entry k (xx, yy, zz, xy, xz, yz, in the fixture's frame).
+        function fixture_entry(hh, k) result(e)
+            type(hang_t), intent(in) :: hh
+            integer, intent(in) :: k
+            real(dp) :: e(6), m(3, 3), r(3, 3)
+            integer, parameter :: IK(6) = [1, 2, 3, 1, 1, 2], JK(6) = [1, 2, 3, 2, 3, 3]
+            m = 0.0_dp
+            m(IK(k), JK(k)) = 1.0_dp
+            m(JK(k), IK(k)) = 1.0_dp
+            if (prob%fix%hang_frame) then
+                r(:, 1) = hh%along
+                r(:, 2) = cross(hh%up, hh%along)
+                r(:, 3) = hh%up
+                m = matmul(r, matmul(m, transpose(r)))
+            end if
+            e = tensor_entries(m)
+        end function fixture_entry
         !> One budget line from a group's covariance.
         subroutine push(name, u, cg, kind)
             character(len=*), intent(in) :: name
-            real(dp), intent(in) :: u, cg(6, 6)
+            real(dp), intent(in) :: u, cg(np, np)
             integer, intent(in) :: kind         !! ROW_* of module budget
             type(tensor_budget_row_t) :: row
             real(dp) :: cm(3, 1), gg(6)
@@ -1153,7 +1498,7 @@ contains
             fit%budget = [fit%budget, row]
             do m = 1, 3
                 gg = moment_direction(fit%axes(:, m))
-                cm(m, 1) = sqrt(max(0.0_dp, dot_product(gg, matmul(cg, gg))))
+                cm(m, 1) = sqrt(max(0.0_dp, dot_product(gg, matmul(cg(1:6, 1:6), gg))))
             end do
             cmoment = reshape([cmoment, cm], [3, size(cmoment, 2) + 1])
         end subroutine push
@@ -1190,7 +1535,7 @@ contains
         type(status_t), intent(out) :: stat
         real(dp), allocatable :: q(:, :), r(:, :)
         real(dp) :: qq(6), aa, delta
-        integer :: h, nh, m
+        integer :: h, nh, m, j
         nh = size(prob%hangs)
         allocate (fit%iv_fit(nh), fit%iv(nh), fit%u_iv(nh), fit%resid(nh))
         stat%code = STATUS_OK
@@ -1200,8 +1545,16 @@ contains
                 ! dx for a unit change of u . J u alone: dJ = u u^T
                 qq = [u(1)**2, u(2)**2, u(3)**2, u(1)*u(2), u(1)*u(3), u(2)*u(3)]
                 allocate (q(m, 1), r(m, 1))
-                q(:, 1) = matmul(a(prob%row_case(idx), :), qq)
-                r(:, 1) = prob%rows(idx)%period - tc(prob%row_case(idx))
+                do j = 1, m
+                    if (idx(j) > size(prob%rows)) then
+                        ! the hang's attitude: no moment in it
+                        q(j, 1) = 0.0_dp
+                        r(j, 1) = -attitude_residual(prob, prob%hangs(h), prob%mass)
+                    else
+                        q(j, 1) = dot_product(a(prob%row_case(idx(j)), :), qq)
+                        r(j, 1) = prob%rows(idx(j))%period - tc(prob%row_case(idx(j)))
+                    end if
+                end do
                 call la_tri_solve(blocks(h)%l, q, stat)
                 if (stat%code == STATUS_OK) call la_tri_solve(blocks(h)%l, r, stat)
                 if (stat%code /= STATUS_OK) return
@@ -1290,7 +1643,7 @@ contains
             type(status_t), intent(out) :: st
             real(dp) :: ad
             dr = 0.0_dp
-            call hang_rig(prob%mass, prob%g, hh, x, rg, st)
+            call problem_rig(prob, hh, prob%mass, prob%g, x, rg, st)
             if (st%code == STATUS_OK) call maxima_drift(rg, prob%acc, amp, DRIFT_CYCLES, dr, &
                                                         ad, st)
             if (st%code /= STATUS_OK) st%msg = hang_label(hh)//': '//st%msg
@@ -1354,14 +1707,22 @@ contains
             srig(k) = (tp - tm)/(2.0_dp*HX_LIN*v)
         end do
         smass = -dot_product(x, a)/prob%mass
+        if (prob%loaded) then
+            ! a fixture or a mass centre off the table's: the model does not see J/m alone
+            call case_period(prob, h, 0.0_dp, prob%mass*(1.0_dp + HX_LIN), prob%g, x, tp, stat)
+            if (stat%code /= STATUS_OK) return
+            call case_period(prob, h, 0.0_dp, prob%mass*(1.0_dp - HX_LIN), prob%g, x, tm, stat)
+            if (stat%code /= STATUS_OK) return
+            smass = (tp - tm)/(2.0_dp*HX_LIN*prob%mass)
+        end if
         sg = -0.5_dp*t/prob%g
     end subroutine candidate_row
 
     !> The trace of the covariance of x for hangs with the given ups and alongs (body frame,
-    !! unit, along normal to up) on the rig h0, at small amplitude, each timed once with the
-    !! timing u u_t (s), under prob's other uncertainties; also the periods and u of each
-    !! entry.  Without any uncertainty of the period or the direction, each period counts
-    !! 1e-4 of itself.
+    !! unit, along normal to up) on the rig h0, at small amplitude, each with the timing u
+    !! u_t (s, of its period: u_period over cycles, over the root of its timings), under
+    !! prob's other uncertainties; also the periods and u of each entry.  Without any
+    !! uncertainty of the period or the direction, each period counts 1e-4 of itself.
     subroutine design_trace(prob, h0, u_t, x, ups, alongs, trace, stat, periods, u_x)
         type(tensor_problem_t), intent(in) :: prob  !! mass, g, accuracy, uncertainties
         type(hang_t), intent(in) :: h0          !! the rig of every hang
@@ -1385,16 +1746,18 @@ contains
                                sg(k), stat)
             if (stat%code /= STATUS_OK) return
         end do
-        call set_covariance(prob, u_t, t, a, sdir, srig, smass, sg, [(k, k=1, n)], cc)
+        call set_covariance(prob, spread(u_t, 1, n), t, a, sdir, srig, smass, sg, &
+                            [(k, k=1, n)], cc)
         trace = cc(1, 1) + cc(2, 2) + cc(3, 3) + cc(4, 4) + cc(5, 5) + cc(6, 6)
         if (present(periods)) periods = t
         if (present(u_x)) u_x = sqrt(max(0.0_dp, [(cc(k, k), k=1, 6)]))
     end subroutine design_trace
 
-    !> The covariance of x from the candidate rows `set` (see design_trace).
-    subroutine set_covariance(prob, u_t, t, a, sdir, srig, smass, sg, set, cc)
+    !> The covariance of x from the candidate rows `set` (see design_trace); u_r: each
+    !! candidate row's timing u (s).
+    subroutine set_covariance(prob, u_r, t, a, sdir, srig, smass, sg, set, cc)
         type(tensor_problem_t), intent(in) :: prob
-        real(dp), intent(in) :: u_t, t(:), a(:, :), sdir(:, :), srig(:, :), smass(:), sg(:)
+        real(dp), intent(in) :: u_r(:), t(:), a(:, :), sdir(:, :), srig(:, :), smass(:), sg(:)
         integer, intent(in) :: set(:)
         real(dp), intent(out) :: cc(6, 6)
         real(dp) :: nmat(6, 6), w(6), v(6, 6), ninv(6, 6), bk(6), sk(6), uc(6)
@@ -1432,33 +1795,46 @@ contains
     contains
         pure real(dp) function row_var(ii)
             integer, intent(in) :: ii
-            row_var = u_t**2 + sum(sdir(ii, :)**2)*prob%u%direction**2
+            row_var = u_r(ii)**2 + sum(sdir(ii, :)**2)*prob%u%direction**2
             if (.not. (row_var > 0.0_dp)) row_var = (1.0e-4_dp*t(ii))**2
         end function row_var
     end subroutine set_covariance
 
-    !> n hangs among the 26 face, edge and corner directions that minimise the trace of
-    !! the covariance of x (see the module header), on the rig h0 with timing u u_t; u and
-    !! -u are one axis (the same moment about the vertical), so at most one of each pair.
-    subroutine plan_hangs(prob, h0, u_t, x, n, plan, stat)
+    !> n hangs among the 13 face, edge and corner directions of the body frame (u and -u
+    !! one direction) that minimise the trace of the covariance of x (see the module
+    !! header), on the rig h0, each with the timing u u_t; no direction is planned a second
+    !! time before every one of the 13 is planned once (n > 13 takes all of them).  With `existing` (the table's hangs, each with its own timing u
+    !! u_existing), the n hangs are added to them: the trace is the table's and the
+    !! additions' together.
+    subroutine plan_hangs(prob, h0, u_t, x, n, plan, stat, existing, u_existing)
         type(tensor_problem_t), intent(in) :: prob  !! mass, g, accuracy, uncertainties
         type(hang_t), intent(in) :: h0          !! the rig of every hang
         real(dp), intent(in) :: u_t             !! timing u of each period (s)
         real(dp), intent(in) :: x(6)            !! the tensor
-        integer, intent(in) :: n                !! hangs, 6 .. 13 (the axes)
+        integer, intent(in) :: n                !! hangs, 1 .. 26
         type(tensor_plan_t), intent(out) :: plan
         type(status_t), intent(out) :: stat
-        real(dp) :: c(3, 26), t(26), a(26, 6), sdir(26, 3), srig(26, 4), smass(26), sg(26)
-        real(dp) :: cc(6, 6), best, tr
-        integer, allocatable :: set(:)
-        integer :: k, i, j, kb, it
-        logical :: in_set(26), improved
+        type(hang_t), intent(in), optional :: existing(:)   !! the table's hangs
+        real(dp), intent(in), optional :: u_existing(:)     !! their timing u (s)
+        integer, parameter :: NC = 13
+        real(dp) :: c26(3, 26), c(3, NC), cc(6, 6), best, tr
+        real(dp), allocatable :: t(:), a(:, :), sdir(:, :), srig(:, :), smass(:), sg(:), ur(:)
+        integer, allocatable :: set(:), base(:)
+        integer :: k, i, j, kb, it, ne
+        logical :: improved
         type(hang_t) :: h
-        c = candidate_directions()
-        do k = 1, 26
+        c26 = candidate_directions()
+        c = c26(:, 1:26:2)
+        ne = 0
+        if (present(existing)) ne = size(existing)
+        allocate (t(NC + ne), a(NC + ne, 6), sdir(NC + ne, 3), srig(NC + ne, 4), &
+                  smass(NC + ne), sg(NC + ne), ur(NC + ne))
+        do k = 1, NC + ne
             h = h0
-            h%up = c(:, k)
-            h%along = along_for(c(:, k))
+            h%up = c(:, min(k, NC))
+            h%along = along_for(c(:, min(k, NC)))
+            ur(k) = u_t
+            if (k > NC) call table_hang(k - NC)
             call candidate_row(prob, h, x, t(k), a(k, :), sdir(k, :), srig(k, :), smass(k), &
                                sg(k), stat)
             if (stat%code /= STATUS_OK) then
@@ -1466,16 +1842,20 @@ contains
                 return
             end if
         end do
-        ! start: the three faces and three edges (x, y, z, xy, xz, yz), then greedy
-        set = [1, 3, 5, first_of(1, 1, 0), first_of(1, 0, 1), first_of(0, 1, 1)]
-        set = set(1:min(n, 6))
-        in_set = .false.
-        in_set(set) = .true.
+        base = [(NC + k, k=1, ne)]
+        ! start: without a table the three faces and three edges (x, y, z, xy, xz, yz);
+        ! then greedy
+        if (ne == 0) then
+            set = [1, 2, 3, first_of(1, 1, 0), first_of(1, 0, 1), first_of(0, 1, 1)]
+            set = set(1:min(n, 6))
+        else
+            allocate (set(0))
+        end if
         do while (size(set) < n)
             kb = 0
             best = huge(1.0_dp)
-            do k = 1, 26
-                if (in_set(k) .or. in_set(opposite(k))) cycle
+            do k = 1, NC
+                if (.not. balanced([set, k])) cycle
                 tr = trace_of([set, k])
                 if (tr < best) then
                     best = tr
@@ -1483,24 +1863,23 @@ contains
                 end if
             end do
             set = [set, kb]
-            in_set(kb) = .true.
         end do
         ! exchanges until none lowers the trace
         best = trace_of(set)
         do it = 1, 100
             improved = .false.
             do i = 1, size(set)
-                do j = 1, 26
-                    if (in_set(j)) cycle
-                    ! u and -u are one axis: one hang
-                    if (in_set(opposite(j)) .and. set(i) /= opposite(j)) cycle
+                do j = 1, NC
+                    if (j == set(i)) cycle
                     k = set(i)
                     set(i) = j
+                    if (.not. balanced(set)) then
+                        set(i) = k
+                        cycle
+                    end if
                     tr = trace_of(set)
                     if (tr < best*(1.0_dp - 1.0e-12_dp)) then
                         best = tr
-                        in_set(k) = .false.
-                        in_set(j) = .true.
                         improved = .true.
                     else
                         set(i) = k
@@ -1516,22 +1895,31 @@ contains
             plan%along(:, i) = along_for(c(:, set(i)))
             plan%period(i) = t(set(i))
         end do
-        call set_covariance(prob, u_t, t, a, sdir, srig, smass, sg, set, cc)
+        call set_covariance(prob, ur, t, a, sdir, srig, smass, sg, [base, set], cc)
         plan%trace = best
         plan%u_x = sqrt(max(0.0_dp, [(cc(k, k), k=1, 6)]))
     contains
+        !> No direction planned twice before every one of the NC is planned once (and so
+        !! on): the counts differ by at most 1.
+        logical function balanced(s)
+            integer, intent(in) :: s(:)
+            integer :: cnt(NC), m
+            cnt = [(count(s == m), m=1, NC)]
+            balanced = maxval(cnt) - minval(cnt) <= 1
+        end function balanced
+        !> Candidate NC + e is the table's hang e.
+        subroutine table_hang(e)
+            integer, intent(in) :: e
+            h = existing(e)
+            ur(NC + e) = u_existing(e)
+        end subroutine table_hang
         real(dp) function trace_of(s)
             integer, intent(in) :: s(:)
             real(dp) :: cv(6, 6)
             integer :: m
-            call set_covariance(prob, u_t, t, a, sdir, srig, smass, sg, s, cv)
+            call set_covariance(prob, ur, t, a, sdir, srig, smass, sg, [base, s], cv)
             trace_of = sum([(cv(m, m), m=1, 6)])
         end function trace_of
-        !> The candidate of the opposite direction (candidate_directions lists v, -v).
-        pure integer function opposite(m)
-            integer, intent(in) :: m
-            opposite = merge(m + 1, m - 1, mod(m, 2) == 1)
-        end function opposite
         integer function first_of(i1, i2, i3)
             integer, intent(in) :: i1, i2, i3
             real(dp) :: v(3)
@@ -1539,7 +1927,7 @@ contains
             v = real([i1, i2, i3], dp)
             v = v/norm2(v)
             first_of = 1
-            do m = 1, 26
+            do m = 1, NC
                 if (all(abs(c(:, m) - v) < 1.0e-12_dp)) then
                     first_of = m
                     return
@@ -1755,6 +2143,7 @@ contains
         real(dp) :: eps(3), z(4), x(6), dx(6), w(3), v(3, 3), tol, a_new, ddm, ddg
         real(dp), allocatable :: tc(:), tmeas(:), t0(:), fixed(:), epsh(:, :), drig(:, :)
         integer :: h, i, j, it, m, c, nh, n
+        integer, parameter :: IK(6) = [1, 2, 3, 1, 1, 2], JK(6) = [1, 2, 3, 2, 3, 3]
         est = 0.0_dp
         g = rng_stream(task%seed, k)
         p = task%prob
@@ -1807,6 +2196,20 @@ contains
                     ddg*(p%g - task%prob%g)
             end associate
         end do
+        ! the fixture, drawn last (its mass, mass centre, the six entries of its inertia);
+        ! the torsion mode below sees it exactly, the amplitude parts keep the estimate's
+        if (p%loaded) then
+            p%fix%mass = max(0.0_dp, p%fix%mass + p%u%fix_mass*rng_normal(g))
+            do j = 1, 3
+                p%fix%cg(j) = p%fix%cg(j) + p%u%fix_cg(j)*rng_normal(g)
+            end do
+            do j = 1, 6
+                z(1) = p%u%fix_inertia(j)*rng_normal(g)
+                p%fix%inertia(IK(j), JK(j)) = p%fix%inertia(IK(j), JK(j)) + z(1)
+                if (IK(j) /= JK(j)) p%fix%inertia(JK(j), IK(j)) = &
+                    p%fix%inertia(JK(j), IK(j)) + z(1)
+            end do
+        end if
         x = task%x
         tol = X_TOL
         if (any(p%case_amp > 0.0_dp)) tol = max(X_TOL, 10.0_dp*p%acc%rtol)
