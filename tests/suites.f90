@@ -119,7 +119,7 @@ contains
                     'traps, tare, trifilar', run_measure_tests), &
             suite_t('calibrate', 'rig calibration with a reference body: a calibrated rig '// &
                     'measures a second body', run_calibrate_tests), &
-            suite_t('tare', 'a tare from its own output: the shared inputs correlated, its '// &
+            suite_t('tare', 'a tare from its own output: shared inputs correlated, its '// &
                     'dof kept, refusals', run_tare_tests), &
             suite_t('sensitivities', 'forward sensitivities: exact, against differences of '// &
                     'runs, fits, monodromies', run_sensitivities_tests), &
@@ -140,8 +140,8 @@ contains
                     'each right or refused', run_refusals_tests), &
             suite_t('certificate', 'the certificate page: SVG figures, escaping, balanced '// &
                     'elements, its fields', run_certificate_tests), &
-            suite_t('selfcheck', 'fits check themselves (records, tensors), amplitude '// &
-                    'scale, budgets vs whole fits', run_selfcheck_tests), &
+            suite_t('selfcheck', 'records and tensors check themselves; amplitude '// &
+                    'scale; budgets vs whole fits', run_selfcheck_tests), &
             suite_t('graph', 'the module graph (layers, analyses apart, at most 8 floors); '// &
                     'the status table', run_graph_tests), &
             suite_t('runner', 'this runner: --list, --help, a filter that selects '// &

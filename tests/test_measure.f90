@@ -812,8 +812,8 @@ contains
                      all([nint(kv('ses1', 'n_sessions')) == 3, kv('ses1', 'I1_session(3)') > 0, &
                           kv('ses1', 'u_I1_session(3)') > 0, kv('ses1', 'k') > 2.5_dp]))
         call t%check('sessions: the budget has the row u_I1_session', &
-                     file_has(SCR//'/ses1.identify', 'u_I1_session  ') .and. &
-                     kv('ses1', 'u_I1_session') > 0)
+                     all([file_has(SCR//'/ses1.identify', 'u_I1_session  '), &
+                          kv('ses1', 'u_I1_session') > 0]))
         call t%check('sessions: one level writes no n_sessions', &
                      kv('ses1_1', 'n_sessions') < -1.0_dp)
     end subroutine test_sessions

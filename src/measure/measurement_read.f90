@@ -225,6 +225,7 @@ contains
         integer, allocatable :: of_row(:)
         logical, allocatable :: has_periods(:), has_record(:)
         integer :: i, k, nt, it, no
+        rec = ''
         m%source = '&measurement trials = '//quoted(mea%trials)
         m%from_table = .true.
         call read_column_table(mea%trials_path, m%source//': ', RELEASE_COLUMNS, ct, stat, &
