@@ -324,6 +324,8 @@ contains
         integer :: vsize
 
         why = ''
+        val = ''
+        lhs = ''
         allocate (eqs(count([(text(k:k) == '=', k = 1, len(text))])))
         neq = 0
         q = ' '

@@ -197,8 +197,8 @@ contains
         if (i0 > n) return
         taus = t(i0:n) - t0
         if (.not. (taus(size(taus)) > 0.0_dp)) then
-            vals(i0:n) = vals(1)
-            if (i0 == 1) vals = merge(0.0_dp, st%amplitude*deg, rate)
+            ! (every sample at the release: the value at rest before it)
+            vals = merge(0.0_dp, st%amplitude*deg, rate)
             return
         end if
         call integrate_samples(pl, y0, taus, acc, rate, vals(i0:n), stat)
