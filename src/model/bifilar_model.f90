@@ -18,7 +18,7 @@
 !!
 !! Eq. (38) is solved in the four independent accelerations (the constraint eliminated by
 !! eq. (31)): their 4 x 4 generalized inertia, symmetric positive definite, is factored by
-!! lapack_wrap's written-out Cholesky (la_small_chol, la_small_chol_solve).  The
+!! a written-out Cholesky (chol4, chol4_solve: lapack_wrap's la_small_chol at n = 4).  The
 !! Jacobian Z of the chart right-hand side (eq. (51)) is exact: the derivatives of the
 !! kinematics (chart_kinematics_tangent) carried through Kane's equations and the constraint
 !! (eom_tangent), solved with the same factors (chart_jacobian); its ten columns in one
@@ -46,7 +46,6 @@ module bifilar_model
                           omega_partials_tangent, omega_conv_tangent
     use vectors, only: cross
     use gen_forces, only: generalized_inertia, inertia_torque, project
-    use lapack_wrap, only: la_small_chol, la_small_chol_solve
     use unused_arg, only: unused
     implicit none
     private
@@ -475,12 +474,12 @@ contains
         if (present(active)) torque = torque + active
         call project(4, jvi, wbi, force, torque, u)
         call generalized_inertia(4, jvi, wbi, inertia, eo%chol)
-        call la_small_chol(4, eo%chol, stat)
+        call chol4(eo%chol, stat)
         if (stat%code /= 0) then
             call set_error(stat, ERR_NUMERIC, 'eq. (38): '//stat%msg)
             return
         end if
-        call la_small_chol_solve(4, eo%chol, u)
+        call chol4_solve(eo%chol, u)
         eo%qdd(k) = t0
         do a = 1, 4
             ia = eo%ind(a)
@@ -504,7 +503,7 @@ contains
             ia = eo%ind(a)
             u(a) = (e(ia) + eo%gam(ia)*e(eo%k)) - t0*(eo%mk(ia) + eo%gam(ia)*eo%mk(eo%k))
         end do
-        call la_small_chol_solve(4, eo%chol, u)
+        call chol4_solve(eo%chol, u)
         x(eo%k) = t0
         do a = 1, 4
             ia = eo%ind(a)
@@ -1410,5 +1409,55 @@ contains
             t_ad = t_bc
         end if
     end subroutine cable_tensions
+
+    !> The 4 x 4 Cholesky factor of eq. (38)'s matrix: la_small_chol's algorithm and order
+    !! of operations at n = 4, written out here because the link-time optimiser keeps
+    !! la_small_chol out of line once the platform's models call it too (8 % more
+    !! instructions in a record fit); this one has a caller alone, and is inlined.
+    pure subroutine chol4(a, stat)
+        real(dp), intent(inout) :: a(4, 4)
+        type(status_t), intent(out) :: stat
+        real(dp) :: ajj
+        integer :: i, j, k
+        stat%code = 0
+        do j = 1, 4
+            ajj = a(j, j)
+            do k = 1, j - 1
+                ajj = ajj - a(j, k)*a(j, k)
+            end do
+            if (.not. (ajj > 0.0_dp)) then
+                call set_error(stat, ERR_NUMERIC, 'la_small_chol: matrix not positive '// &
+                               'definite (leading minor of order '//achar(iachar('0') + j)//')')
+                return
+            end if
+            ajj = sqrt(ajj)
+            a(j, j) = ajj
+            do i = j + 1, 4
+                do k = 1, j - 1
+                    a(i, j) = a(i, j) - a(i, k)*a(j, k)
+                end do
+                a(i, j) = a(i, j)/ajj
+            end do
+        end do
+    end subroutine chol4
+
+    !> Solve A x = b in place with chol4's factor (la_small_chol_solve's order at n = 4).
+    pure subroutine chol4_solve(l, b)
+        real(dp), intent(in) :: l(4, 4)
+        real(dp), intent(inout) :: b(4)
+        integer :: i, k
+        do i = 1, 4
+            do k = 1, i - 1
+                b(i) = b(i) - l(i, k)*b(k)
+            end do
+            b(i) = b(i)/l(i, i)
+        end do
+        do i = 4, 1, -1
+            do k = i + 1, 4
+                b(i) = b(i) - l(k, i)*b(k)
+            end do
+            b(i) = b(i)/l(i, i)
+        end do
+    end subroutine chol4_solve
 
 end module bifilar_model
