@@ -11,6 +11,7 @@ submodule (identify) identify_impl
     use fast_format, only: es_field
     use geometry, only: pendulum_t
     use bifilar_model, only: NSTATE
+    use platform_measure, only: offaxis_platform
     use rig, only: rig_t, start_t, accuracy_t, make_pendulum, start_state
     use deck_runs, only: rig_of, start_of, accuracy_of, deck_inputs, record_format_of, &
         record_file
@@ -1454,6 +1455,10 @@ contains
             res%period_model = 'record'
         else
             res%period_model = trim(merge('exact torsion', 'simulated    ', res%periods_exact))
+            ! a platform of three cables with the mass centre off its axis: its own model
+            if (.not. res%periods_exact .and. any([(offaxis_platform(m%releases(r)%rig), &
+                                                    r=1, size(m%releases))])) &
+                res%period_model = 'platform orbit'
         end if
         allocate (res%warnings(0))
         do r = 1, size(m%releases)

@@ -96,7 +96,9 @@ contains
             do h = 1, size(set%releases)
                 call hang_rig(d%body%mass, d%suspension%g, set%releases(h)%hang, &
                               deck_tensor(d), rg, stat)
-                if (stat%code == STATUS_OK) call torsion_mode(rg, md, stat)
+                ! (on a platform the body alone need not rest stably: the platform, a
+                ! fixture, holds it; the fit's model judges what hangs)
+                if (stat%code == STATUS_OK .and. rg%cables <= 2) call torsion_mode(rg, md, stat)
                 if (stat%code /= STATUS_OK) then
                     stat%msg = table_name(d%tensor)//': hang '//itoa(set%releases(h)%id)//' (line '// &
                         itoa(set%releases(h)%line)//'): '//stat%msg
@@ -121,7 +123,7 @@ contains
                 return
             end if
             call hang_rig(d%body%mass, d%suspension%g, h0, deck_tensor(d), rg, stat)
-            if (stat%code == STATUS_OK) call torsion_mode(rg, md, stat)
+            if (stat%code == STATUS_OK .and. rg%cables <= 2) call torsion_mode(rg, md, stat)
             if (stat%code /= STATUS_OK) then
                 stat%msg = '&tensor plan = '//itoa(d%tensor%plan)//': the deck''s rig: '// &
                     stat%msg

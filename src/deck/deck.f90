@@ -315,7 +315,7 @@ contains
                 'tare''s or a calibration''s output serves identify''s one axis, and the '// &
                 'tensor''s fit takes neither; allowed: both '''' in a deck with tensor (run '// &
                 'identify from a deck of its own)')
-        call check_platform_deck(scene, sus, d%body, sta, stat)
+        call check_platform_deck(scene, sus, d%body, sta, d%tensor, stat)
         if (scene%requested('calibrate')) call d%calibration%check(stat)
         call check_measuring(scene, sus, d%body, stat)
     end subroutine check_deck
@@ -327,18 +327,22 @@ contains
     !! (radius, radius_prime, l); design with the mass centre on its axis, identify too on
     !! four or more cables (the pure torsion of the equivalent pair b = 2 radius; on three
     !! cables identify runs the platform's model: module platform_measure).
-    subroutine check_platform_deck(scene, sus, bod, sta, stat)
+    subroutine check_platform_deck(scene, sus, bod, sta, ten, stat)
         type(scene_group_t), intent(in) :: scene        !! normalised
         type(suspension_group_t), intent(in) :: sus     !! normalised
         type(body_group_t), intent(in) :: bod
         type(start_group_t), intent(in) :: sta          !! normalised
+        type(tensor_group_t), intent(in) :: ten         !! normalised
         type(status_t), intent(inout) :: stat
         character(len=:), allocatable :: which
         character(len=*), parameter :: TORSION = 'floquet chart design'
         integer :: k
         if (stat%code /= STATUS_OK .or. sus%cables <= 2) return
+        if (scene%requested('tensor')) then
+            call check_platform_tensor(scene, sus, ten, stat)
+            if (stat%code /= STATUS_OK) return
+        end if
         which = ''
-        if (scene%requested('tensor')) which = 'tensor'
         if (scene%requested('work_precision')) which = 'work_precision'
         if (len(which) > 0) then
             call bad(stat, 'scene', 'analyses', ''''//trim(scene%analyses)//'''', &
@@ -409,6 +413,42 @@ contains
             w = s(i1:i2)
         end function word_of
     end subroutine check_platform_deck
+
+    !> analyses = 'tensor' on a platform: three cables of the regular polygon (radius,
+    !! radius_prime, l), the paper's inextensible model, the six entries alone, and the
+    !! platform's own mass and inertia a fixture that stays with the hang.
+    subroutine check_platform_tensor(scene, sus, ten, stat)
+        type(scene_group_t), intent(in) :: scene        !! normalised
+        type(suspension_group_t), intent(in) :: sus     !! normalised, cables >= 3
+        type(tensor_group_t), intent(in) :: ten         !! normalised
+        type(status_t), intent(inout) :: stat
+        if (sus%cables /= 3) then
+            call bad(stat, 'suspension', 'cables', itoa(sus%cables), 'tensor on a '// &
+                     'platform of '//itoa(sus%cables)//' cables (statically indeterminate '// &
+                     'with inextensible cables: no model of its torsion with the body '// &
+                     'anywhere on it)', 'cables = 3 (or 2: the bifilar) with analyses = '// &
+                     '''tensor''')
+        else if (sus%pointwise()) then
+            call bad(stat, 'suspension', 'support_points', 'given', 'tensor on a '// &
+                     'platform given point by point', 'the regular polygon (radius, '// &
+                     'radius_prime, l) with analyses = ''tensor''')
+        else if (trim(scene%model) /= 'kane') then
+            call bad(stat, 'scene', 'model', ''''//trim(scene%model)//'''', 'tensor on a '// &
+                     'platform fits the inextensible cables'' model', 'model = ''kane''')
+        else if (ten%estimates_cg()) then
+            call bad(stat, 'tensor', 'estimate', ''''//trim(ten%estimate)//'''', 'the mass '// &
+                     'centre fitted on a platform (its attitude is the platform''s, not the '// &
+                     'line CD''s)', 'estimate = ''tensor'' on a platform, the mass centre '// &
+                     'given by cg_depth, cg_offset, cg_offset_y')
+        else if (ten%fixture_mass > 0.0_dp .and. trim(ten%fixture_frame) /= 'hang') then
+            call bad(stat, 'tensor', 'fixture_frame', ''''//trim(ten%fixture_frame)//'''', &
+                     'a fixture that turns with the body on a platform (the platform, the '// &
+                     'fixture of every platform hang, does not turn with the body)', &
+                     'fixture_frame = ''hang'': fixture_cg from the centre of the '// &
+                     'platform''s attachment points along its x, y and up, fixture_inertia '// &
+                     'in those axes')
+        end if
+    end subroutine check_platform_tensor
 
     !> A deck that measures (identify, tensor, design) gives every physical input itself
     !! (the defaults are the paper's dimensionless scene).

@@ -60,6 +60,9 @@ module hang_model
     use theta4_maxima, only: maxima_sink_t
     use lapack_wrap, only: la_syev, la_eigv
     use measurement, only: hang_t
+    use platform_model, only: linearise, platform_modes_t
+    use platform_geometry, only: platform_t, QX, QY, QPSI
+    use platform_measure, only: measured_platform, platform_period_s
     implicit none
     private
 
@@ -88,6 +91,7 @@ module hang_model
     public :: tensor_matrix, tensor_entries, principal_axes, hang_frame, turned_hang
     public :: hang_rig, rest_pose, torsion_mode, hang_period, maxima_drift, vertical_moment
     public :: moment_direction, loaded_hang, hang_points, fixture_in_body, plane_normal
+    public :: hang_centre, platform_small_period
 
 
     !> Newton's method on the rest pose: iterations, and the relative change that ends it.
@@ -206,8 +210,18 @@ contains
         rg%r = sqrt((0.5_dp*h%b_prime + h%cg_offset)**2 + h%cg_depth**2)
         rg%lambda = atan2(h%cg_depth, 0.5_dp*h%b_prime + h%cg_offset)
         rg%inertia = w
-        ! btilde(i, j) = b_i . ntilde_j: row i is the axis v(:, i) in the hang's frame
-        rg%btilde = transpose(matmul(hang_frame(h), v))
+        if (h%cables > 2) then
+            ! the platform's body frame: z = up, x = along, y = up x along; its btilde row
+            ! i is the axis v(:, i) in (z, x, y) (platform_geometry's platform_inertia)
+            rg%cables = h%cables
+            rg%cg_offset_y = h%cg_offset_y
+            rg%btilde(:, 1) = matmul(h%up, v)
+            rg%btilde(:, 2) = matmul(h%along, v)
+            rg%btilde(:, 3) = matmul(cross(h%up, h%along), v)
+        else
+            ! btilde(i, j) = b_i . ntilde_j: row i is the axis v(:, i) in the hang's frame
+            rg%btilde = transpose(matmul(hang_frame(h), v))
+        end if
         rg%sway_depth = h%cg_depth
         rg%c_v = 0.0_dp
         rg%c_q = 0.0_dp
@@ -223,6 +237,21 @@ contains
         d = c + h%b_prime*h%along
     end subroutine hang_points
 
+    !> The origin of the hang's frame in the body frame, from the mass centre the hang's
+    !! cg_depth and cg_offset (and cg_offset_y) place: on two cables the midpoint of CD,
+    !! on a platform the centre of its attachment points.
+    pure function hang_centre(h) result(o)
+        type(hang_t), intent(in) :: h
+        real(dp) :: o(3)
+        real(dp) :: c(3), d(3)
+        if (h%cables > 2) then
+            o = h%cg_depth*h%up - h%cg_offset*h%along - h%cg_offset_y*cross(h%up, h%along)
+        else
+            call hang_points(h, c, d)
+            o = 0.5_dp*(c + d)
+        end if
+    end function hang_centre
+
     !> A fixture's mass centre (from the origin of hang_points) and inertia in the body
     !! frame for the hang h; origin: the point of the body frame where the table's mass
     !! centre lies (the fixture's cg is given from the body frame's own origin).
@@ -231,13 +260,12 @@ contains
         type(fixture_t), intent(in) :: fix
         real(dp), intent(in) :: origin(3)
         real(dp), intent(out) :: rf(3), jf(3, 3)
-        real(dp) :: c(3), d(3), r(3, 3)
+        real(dp) :: r(3, 3)
         if (fix%hang_frame) then
-            call hang_points(h, c, d)
             r(:, 1) = h%along
             r(:, 2) = cross(h%up, h%along)
             r(:, 3) = h%up
-            rf = 0.5_dp*(c + d) + matmul(r, fix%cg)
+            rf = hang_centre(h) + matmul(r, fix%cg)
             jf = matmul(r, matmul(fix%inertia, transpose(r)))
         else
             rf = fix%cg - origin
@@ -279,6 +307,15 @@ contains
         g = (mass*dcg + fix%mass*rf)/mc
         j = tensor_matrix(x) + mass*shift(dcg - g) + jf + fix%mass*shift(rf - g)
         xc = tensor_entries(j)
+        if (h%cables > 2) then
+            ! on a platform the body's up stays the platform's normal: the platform model
+            ! finds how it rests with G anywhere
+            p = g - hang_centre(h)
+            hc%cg_offset = dot_product(p, h%along)
+            hc%cg_offset_y = dot_product(p, cross(h%up, h%along))
+            hc%cg_depth = -dot_product(p, h%up)
+            return
+        end if
         s = dot_product(g - c, h%along)
         p = (g - c) - s*h%along
         depth = norm2(p)
@@ -453,6 +490,14 @@ contains
         type(torsion_mode_t) :: mode
         real(dp), allocatable :: tm(:), am(:)
         t = 0.0_dp
+        if (rg%cables > 2) then
+            if (amp <= 0.0_dp) then
+                call platform_small_period(rg, t, stat)
+            else
+                call platform_period_s(rg, acc, rg%inertia(1), amp, t, stat)
+            end if
+            return
+        end if
         call torsion_mode(rg, mode, stat)
         if (stat%code /= STATUS_OK) return
         if (amp <= 0.0_dp) then
@@ -463,6 +508,51 @@ contains
         if (stat%code /= STATUS_OK) return
         t = tm(1)*sqrt(rg%b_prime/rg%g)
     end subroutine hang_period
+
+    !> The period (s) of the torsion of a platform of three cables (rig rg, hang_rig) at
+    !! small amplitude: the platform's equations linearised at its rest pose (module
+    !! platform_model's linearise), the mode whose shape has the largest share of the yaw
+    !! (the yaw counted by the displacement it causes at radius_prime).
+    subroutine platform_small_period(rg, t, stat)
+        type(rig_t), intent(in) :: rg           !! the rig (cables = 3)
+        real(dp), intent(out) :: t              !! the period, s
+        type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_MODEL
+        type(platform_t) :: pl
+        type(platform_modes_t) :: md
+        real(dp) :: share, best, wsc(4)
+        integer :: j, k, kt
+        t = 0.0_dp
+        call measured_platform(rg, rg%inertia(1), pl, stat)
+        if (stat%code /= STATUS_OK) return
+        call linearise(pl, md, stat)
+        if (stat%code /= STATUS_OK) return
+        do k = 1, md%nf
+            wsc(k) = 1.0_dp
+            if (pl%free(k) == QPSI) wsc(k) = 0.5_dp*rg%b_prime
+            if (pl%free(k) /= QX .and. pl%free(k) /= QY .and. pl%free(k) /= QPSI) &
+                wsc(k) = 0.0_dp
+        end do
+        kt = 0
+        best = -1.0_dp
+        do j = 1, md%nf
+            share = 0.0_dp
+            do k = 1, md%nf
+                if (pl%free(k) == QPSI) share = (wsc(k)*md%shapes(k, j))**2
+            end do
+            share = share/max(sum((wsc(1:md%nf)*md%shapes(1:md%nf, j))**2), tiny(1.0_dp))
+            if (share > best) then
+                best = share
+                kt = j
+            end if
+        end do
+        if (.not. (md%omega2(kt) > 0.0_dp)) then
+            call set_error(stat, ERR_DECK, 'the body does not rest stably on the platform '// &
+                '(omega^2 = '//sci(md%omega2(kt))//' of its torsion); allowed: a mass '// &
+                'centre lower on the platform')
+            return
+        end if
+        t = 2.0_dp*pi/sqrt(md%omega2(kt))
+    end subroutine platform_small_period
 
     !> The drift of theta_4's maxima at peak amplitude amp (degrees) over the first `cycles`
     !! cycles after a release in the torsion mode's shape: max_k |(t_k - t_(k-1)) - t_1| / t_1
@@ -483,7 +573,8 @@ contains
         drift = 0.0_dp
         amp_drift = 0.0_dp
         stat%code = STATUS_OK
-        if (amp <= 0.0_dp) return
+        ! (a platform's period is its periodic torsion's, the same every cycle)
+        if (amp <= 0.0_dp .or. rg%cables > 2) return
         call torsion_mode(rg, mode, stat)
         if (stat%code /= STATUS_OK) return
         call run_maxima(rg, acc, mode, amp, cycles, tm, am, stat)

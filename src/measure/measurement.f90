@@ -45,6 +45,13 @@ module measurement
         real(dp) :: along(3) = [1.0_dp, 0.0_dp, 0.0_dp] !! unit, body frame, normal to up: C to D
         real(dp) :: l = 1.0_dp, l_prime = 1.0_dp, b = 1.0_dp, b_prime = 1.0_dp
         real(dp) :: cg_depth = 0.5_dp, cg_offset = 0.0_dp   !! the mass centre below CD, along CD
+        !> 2: a bifilar; 3: a platform of three cables (a regular polygon: b = 2 radius,
+        !! b_prime = 2 radius_prime, every cable l), the body resting on it with `up` normal
+        !! to the platform and `along` its x axis (from its centre toward body point 1);
+        !! cg_depth, cg_offset and cg_offset_y the mass centre below, along x and along
+        !! y = up x along from the centre of the platform's attachment points
+        integer :: cables = 2
+        real(dp) :: cg_offset_y = 0.0_dp
         !> l, l_prime, b, b_prime given by this hang's own columns (independent inputs of
         !! the hang), else the deck's (inputs common to every hang)
         logical :: own(4) = .false.

@@ -74,7 +74,7 @@ module measurement_read
     !> The column names a table of hangs may use.
     character(len=*), parameter, public :: HANG_COLUMNS = 'hang up_x up_y up_z along_x '// &
         'along_y along_z period cycles amplitude u_period l l_prime b b_prime cg_depth '// &
-        'cg_offset c_x c_y c_z d_x d_y d_z gx gy gz tilt'
+        'cg_offset cg_offset_y c_x c_y c_z d_x d_y d_z gx gy gz tilt'
     !> Most rows of a table of hangs.
     integer, parameter, public :: MAX_HANG_ROWS = 10000
     !> Largest amplitude of a hang's row (degrees; the period's own limit is the analysis's).
@@ -491,6 +491,8 @@ contains
                   (bod%gave('r') .and. bod%gave('lambda'))
         h%cg_depth = bod%r*sin(bod%lambda)
         h%cg_offset = bod%r*cos(bod%lambda) - 0.5_dp*sus%b_prime
+        h%cables = sus%cables
+        if (sus%cables > 2) h%cg_offset_y = bod%cg_offset_y
     end subroutine hang_defaults
 
     !> Read the deck's table of hangs (&tensor hangs_path) and check it: the columns, each
@@ -529,6 +531,15 @@ contains
             call ct%fail(stat, 'no column of the orientation; allowed: up_x, up_y, up_z, '// &
                 'along_x, along_y, along_z (the body-frame directions up and from C toward '// &
                 'D) or c_x, c_y, c_z, d_x, d_y, d_z (the attachment points)')
+            return
+        end if
+        if (sus%cables > 2) then
+            call platform_columns()
+            if (stat%code /= STATUS_OK) return
+        else if (ct%has('cg_offset_y')) then
+            call ct%fail(stat, 'column ''cg_offset_y'' on two cables; allowed: cg_offset_y '// &
+                'on a platform of three cables (&suspension cables = 3), cg_depth and '// &
+                'cg_offset on a bifilar')
             return
         end if
         if (form_up) then
@@ -611,8 +622,10 @@ contains
             h%b = ct%v(i, 'b', h%b)
             h%b_prime = ct%v(i, 'b_prime', h%b_prime)
             h%own = [ct%has('l'), ct%has('l_prime'), ct%has('b'), ct%has('b_prime')]
+            if (h%cables > 2) h%l_prime = h%l
             h%cg_depth = ct%v(i, 'cg_depth', h%cg_depth)
             h%cg_offset = ct%v(i, 'cg_offset', h%cg_offset)
+            h%cg_offset_y = ct%v(i, 'cg_offset_y', h%cg_offset_y)
             do k = 1, 3
                 if (form_up) then
                     up_v(k) = ct%v(i, trim(vec_name('up', k)), 0.0_dp)
@@ -786,6 +799,29 @@ contains
 
         !> A hang's rig in range: lengths > 0 over b_prime in RATIO_MIN .. RATIO_MAX, the
         !! mass centre below CD.
+        !> A platform's table: hangs by up/along (the body's direction normal to the
+        !! platform and its x axis), the platform's geometry the deck's except l.
+        subroutine platform_columns()
+            character(len=7), parameter :: NOT_PL(3) = ['l_prime', 'b      ', 'b_prime']
+            character(len=:), allocatable :: w
+            integer :: j
+            if (form_pts) then
+                call ct%fail(stat, 'the attachment points c_x ... d_z on a platform of '// &
+                    itoa(sus%cables)//' cables; allowed: up_x, up_y, up_z (the body''s '// &
+                    'direction normal to the platform) and along_x, along_y, along_z (the '// &
+                    'body''s direction along the platform''s x axis)')
+                return
+            end if
+            do j = 1, 3
+                w = trim(NOT_PL(j))
+                if (.not. ct%has(trim(w))) cycle
+                call ct%fail(stat, 'column '//quoted(trim(w))//' on a platform of '// &
+                    itoa(sus%cables)//' cables; allowed: the platform''s radius and '// &
+                    'radius_prime in &suspension, a column l (every cable''s length)')
+                return
+            end do
+        end subroutine platform_columns
+
         subroutine check_rig(i, hh)
             integer, intent(in) :: i
             type(hang_t), intent(in) :: hh
@@ -808,7 +844,18 @@ contains
                     return
                 end if
             end do
-            if (.not. (hh%cg_depth > 1.0e-6_dp*hh%b_prime .and. &
+            if (hh%cables > 2) then
+                ! on a platform the body may rest above the attachments (the platform
+                ! model judges whether it hangs stably)
+                if (.not. (abs(hh%cg_depth) <= RATIO_MAX*hh%b_prime .and. &
+                           abs(hh%cg_offset_y) <= RATIO_MAX*hh%b_prime)) then
+                    call ct%fail_row(stat, i, 'cg_depth, cg_offset_y = '// &
+                        rshort(hh%cg_depth)//', '//rshort(hh%cg_offset_y)//' out of range; '// &
+                        'allowed: |cg_depth|, |cg_offset_y| <= '//rshort(RATIO_MAX)// &
+                        ' b_prime (2 radius_prime)')
+                    return
+                end if
+            else if (.not. (hh%cg_depth > 1.0e-6_dp*hh%b_prime .and. &
                        hh%cg_depth <= RATIO_MAX*hh%b_prime)) then
                 call ct%fail_row(stat, i, 'cg_depth = '//rshort(hh%cg_depth)//': the mass '// &
                     'centre must hang below the line CD; allowed: 1e-6 b_prime < cg_depth '// &
@@ -832,6 +879,7 @@ contains
             .and. near(a%l, b%l) .and. near(a%l_prime, b%l_prime) .and. near(a%b, b%b) .and. &
             near(a%b_prime, b%b_prime) .and. abs(a%cg_depth - b%cg_depth) <= TOL*a%b_prime &
             .and. abs(a%cg_offset - b%cg_offset) <= TOL*a%b_prime .and. &
+            abs(a%cg_offset_y - b%cg_offset_y) <= TOL*a%b_prime .and. &
             (a%attitude .eqv. b%attitude) .and. all(abs(a%gravity - b%gravity) <= TOL)
     contains
         pure logical function near(x, y)
