@@ -39,6 +39,7 @@ module suites
     use test_refusals, only: run_refusals_tests
     use test_tensor_lab, only: run_tensor_lab_tests
     use test_platform, only: run_platform_tests
+    use test_platform_tensor, only: run_platform_tensor_tests
     use test_certificate, only: run_certificate_tests
     use test_calibrate, only: run_calibrate_tests
     use test_selfcheck, only: run_selfcheck_tests
@@ -136,6 +137,8 @@ contains
                     'the plan', run_tensor_lab_tests), &
             suite_t('platform', 'a body on n cables: the paper''s model, torsion, modes, '// &
                     'limits, test mass', run_platform_tests), &
+            suite_t('platform_tensor', 'the tensor on a trifilar: its model, fits, the '// &
+                    'fixture, refusals', run_platform_tensor_tests), &
             suite_t('refusals', 'measurement mistakes: wrong numbers, wrong causes; '// &
                     'each right or refused', run_refusals_tests), &
             suite_t('certificate', 'the certificate page: SVG figures, escaping, balanced '// &

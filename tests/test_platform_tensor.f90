@@ -1,0 +1,342 @@
+!> Suite platform_tensor: the inertia tensor measured on a platform of three cables
+!! (analysis tensor): each hang the platform's own model (module hang_model over
+!! platform_measure), the platform's mass and inertia a fixture in the hang's frame.
+!! * the model: a centred hang whose vertical is a principal axis has the closed-form period
+!!   of the trifilar's pure torsion; an off-axis hang's periodic torsion tends to the
+!!   linearised period as the amplitude falls;
+!! * exact periods made by the program from a known body (off the platform's axis in some
+!!   hangs) give the body's tensor back to 1e-9; the fit without the platform's fixture is
+!!   clearly wrong (a principal moment off by more than 5 %);
+!! * noisy periods over several seeds: the truth within U (k = 2 at 95 %);
+!! * the example deck input/tensor_platform.nml through the executable;
+!! * refusals: one line naming the variable, exit 2, no file.
+module test_platform_tensor
+    use kinds, only: dp, pi
+    use status, only: status_t, STATUS_OK
+    use testing, only: tester_t, write_text, file_has, count_lines, scratch_dir, empty_dir, &
+                       msg_of, exists, read_kv_text
+    use text, only: itoa, sci
+    use deck, only: deck_t, read_deck
+    use deck_runs, only: accuracy_of
+    use rig, only: rig_t, accuracy_t
+    use random, only: rng_t, rng_stream, rng_normal
+    use measurement, only: measurement_t, hang_t
+    use measurement_read, only: read_hangs
+    use hang_model, only: tensor_entries, hang_rig, hang_period
+    use tensor_fit, only: tensor_problem_t, tensor_fit_t, problem_of, projection, fit_tensor, &
+        model_periods
+    implicit none
+    private
+
+    public :: run_platform_tensor_tests
+
+    character(len=*), parameter :: SCR = 'build/test_platform_tensor'
+    character(len=*), parameter :: NL = new_line('a')
+    real(dp), parameter :: MASS = 4.2_dp, G0 = 9.80665_dp
+    real(dp), parameter :: MOMENTS(3) = [0.10_dp, 0.12_dp, 0.15_dp]
+    !> The trifilar and the platform (the fixture) of the test decks.
+    character(len=*), parameter :: RIG_LINES = &
+        '&suspension cables = 3, radius = 0.30, radius_prime = 0.25, l = 1.50, '// &
+        'g = 9.80665 /'//NL// &
+        '&body mass = 4.2, inertia = 0.10, 0.12, 0.15, cg_depth = -0.06, cg_offset = 0, 0 /'//NL
+    character(len=*), parameter :: FIXTURE = "fixture_frame = 'hang', fixture_mass = 1.5, "// &
+        'fixture_cg = 0, 0, -0.01, fixture_inertia = 0.024, 0, 0, 0, 0.024, 0, 0, 0, 0.047'
+    !> Nine hangs: faces, edges, corners; the body off the axis in five of them.
+    character(len=*), parameter :: TABLE = &
+        'hang up_x up_y up_z along_x along_y along_z cg_offset cg_offset_y cg_depth period'//NL// &
+        '1 1 0 0 0 1 0 0 0 -0.06 1.5'//NL// &
+        '2 0 1 0 0 0 1 0.03 0 -0.07 1.5'//NL// &
+        '3 0 0 1 1 0 0 0 0.02 -0.05 1.5'//NL// &
+        '4 1 1 0 0 0 1 0 0 -0.08 1.5'//NL// &
+        '5 1 0 1 0 1 0 -0.02 0.01 -0.08 1.5'//NL// &
+        '6 0 1 1 1 0 0 0 0 -0.08 1.5'//NL// &
+        '7 1 1 1 1 -1 0 0.015 0 -0.09 1.5'//NL// &
+        '8 1 -1 1 1 1 0 0 0 -0.09 1.5'//NL// &
+        '9 -1 1 1 1 1 0 0 -0.02 -0.09 1.5'//NL
+
+contains
+
+    subroutine run_platform_tensor_tests(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe     !! path of the bifilar executable
+        call scratch_dir(SCR)
+        if (t%want('platform_tensor: a centred hang''s period is the trifilar''s torsion')) &
+            call test_centred(t)
+        if (t%want('platform_tensor: an off-axis hang''s orbit tends to the linear period')) &
+            call test_small_limit(t)
+        if (t%want('platform_tensor: the tensor back from exact periods; no fixture is wrong')) &
+            call test_exact(t)
+        if (t%want('platform_tensor: the truth within U over noise seeds')) call test_noise(t)
+        if (t%want('platform_tensor: the example deck')) call test_example(t, exe)
+        if (t%want('platform_tensor: refusals are one line, exit 2 and no file')) &
+            call test_refusals(t, exe)
+    end subroutine run_platform_tensor_tests
+
+    !> The true tensor: principal moments MOMENTS about the rows of the rotation of the
+    !! quaternion (4, 2, 1, 2)/5 (input/truth/tensor_platform_truth.nml).
+    function true_tensor() result(x)
+        real(dp) :: x(6)
+        real(dp) :: b(3, 3), j(3, 3)
+        integer :: k
+        b = transpose(reshape([0.60_dp, -0.48_dp, 0.64_dp, 0.80_dp, 0.36_dp, -0.48_dp, &
+                               0.0_dp, 0.80_dp, 0.60_dp], [3, 3]))
+        j = 0.0_dp
+        do k = 1, 3
+            j = j + MOMENTS(k)*spread(b(k, :), 2, 3)*spread(b(k, :), 1, 3)
+        end do
+        x = tensor_entries(j)
+    end function true_tensor
+
+    function acc12() result(acc)
+        type(accuracy_t) :: acc
+        acc%rtol = 1.0e-12_dp
+        acc%atol = 1.0e-14_dp
+    end function acc12
+
+    !> A hang of the test platform: up, along, the body's mass centre from the centre.
+    function platform_hang(up, along, off, off_y, depth) result(h)
+        real(dp), intent(in) :: up(3), along(3), off, off_y, depth
+        type(hang_t) :: h
+        h%cables = 3
+        h%b = 0.6_dp
+        h%b_prime = 0.5_dp
+        h%l = 1.5_dp
+        h%l_prime = 1.5_dp
+        h%up = up/norm2(up)
+        h%along = along/norm2(along)
+        h%cg_offset = off
+        h%cg_offset_y = off_y
+        h%cg_depth = depth
+    end function platform_hang
+
+    !> Centred, the vertical a principal axis: the period of the platform's pure torsion,
+    !! 2 pi (I h/(m g R R'))^(1/2), h = (l^2 - (R - R')^2)^(1/2) the platform's drop.
+    subroutine test_centred(t)
+        type(tester_t), intent(inout) :: t
+        type(rig_t) :: rg
+        type(status_t) :: st
+        real(dp) :: x(6), per, want, hgt
+        x = [0.10_dp, 0.12_dp, 0.15_dp, 0.0_dp, 0.0_dp, 0.0_dp]
+        call hang_rig(MASS, G0, platform_hang([0.0_dp, 0.0_dp, 1.0_dp], [1.0_dp, 0.0_dp, &
+                      0.0_dp], 0.0_dp, 0.0_dp, -0.05_dp), x, rg, st)
+        if (st%code == STATUS_OK) call hang_period(rg, acc12(), 0.0_dp, per, st)
+        call t%check('centred: the period: '//msg_of(st), st%code == STATUS_OK)
+        hgt = sqrt(1.5_dp**2 - (0.30_dp - 0.25_dp)**2)
+        want = 2.0_dp*pi*sqrt(0.15_dp*hgt/(MASS*G0*0.30_dp*0.25_dp))
+        call t%check_close('centred: the trifilar''s closed form', per, want, rtol=1.0e-10_dp)
+    end subroutine test_centred
+
+    !> Off the axis, the vertical no principal axis: the periodic torsion's period at 0.2
+    !! degrees within 1e-5 of the linearised one (the difference is O(A^2)).
+    subroutine test_small_limit(t)
+        type(tester_t), intent(inout) :: t
+        type(rig_t) :: rg
+        type(status_t) :: st
+        real(dp) :: p0, pa
+        call hang_rig(MASS, G0, platform_hang([1.0_dp, 0.0_dp, 1.0_dp], [0.0_dp, 1.0_dp, &
+                      0.0_dp], -0.02_dp, 0.01_dp, -0.08_dp), true_tensor(), rg, st)
+        if (st%code == STATUS_OK) call hang_period(rg, acc12(), 0.0_dp, p0, st)
+        if (st%code == STATUS_OK) call hang_period(rg, acc12(), 0.2_dp, pa, st)
+        call t%check('small limit: the periods: '//msg_of(st), st%code == STATUS_OK)
+        if (st%code /= STATUS_OK) return
+        call t%check_close('small limit: orbit at 0.2 deg near the linear period', pa, p0, &
+                           rtol=1.0e-5_dp)
+    end subroutine test_small_limit
+
+    !> The problem of the test deck (extra: more &tensor keys) with the periods the
+    !! program's model gives the true tensor with the platform as fixture, plus noise(i).
+    subroutine make_problem(label, extra, prob, st, noise)
+        character(len=*), intent(in) :: label, extra
+        type(tensor_problem_t), intent(out) :: prob
+        type(status_t), intent(out) :: st
+        real(dp), intent(in), optional :: noise(:)
+        type(deck_t) :: d
+        type(measurement_t) :: set
+        real(dp), allocatable :: tc(:)
+        integer :: i
+        call write_text(SCR//'/'//label//'.txt', TABLE)
+        call write_text(SCR//'/'//label//'.nml', "&scene analyses = 'tensor' /"//NL// &
+            RIG_LINES//"&integration rtol = 1e-12, atol = 1e-14 /"//NL// &
+            "&tensor hangs = '"//label//".txt', "//FIXTURE//extra//' /'//NL)
+        call read_deck(SCR//'/'//label//'.nml', d, st)
+        if (st%code /= STATUS_OK) return
+        call read_hangs(d%tensor, d%suspension, d%body, set, st)
+        if (st%code /= STATUS_OK) return
+        call problem_of(d%tensor, d%suspension, d%body, accuracy_of(d), set, prob)
+        allocate (tc(size(prob%case_hang)))
+        call model_periods(prob, true_tensor(), tc, st)
+        if (st%code /= STATUS_OK) return
+        do i = 1, size(prob%rows)
+            prob%rows(i)%period = tc(prob%row_case(i))
+            if (present(noise)) prob%rows(i)%period = prob%rows(i)%period + noise(i)
+        end do
+    end subroutine make_problem
+
+    !> Exact periods: the six entries and the principal moments back to 1e-9; the fit
+    !! without the platform's fixture misses a principal moment by more than 5 %.
+    subroutine test_exact(t)
+        type(tester_t), intent(inout) :: t
+        type(tensor_problem_t) :: prob, bare
+        type(tensor_fit_t) :: fit
+        type(status_t) :: st
+        real(dp) :: xp(6), x(6)
+        integer :: k
+        x = true_tensor()
+        call make_problem('exact', '', prob, st)
+        call t%check('exact: the problem: '//msg_of(st), st%code == STATUS_OK)
+        if (st%code /= STATUS_OK) return
+        call t%check('exact: five hangs off the axis', count(abs(prob%hangs%cg_offset) + &
+                     abs(prob%hangs%cg_offset_y) > 0.0_dp) == 5)
+        call projection(prob, xp, st)
+        if (st%code == STATUS_OK) call fit_tensor(prob, xp, fit, st)
+        call t%check('exact: the fit: '//msg_of(st), st%code == STATUS_OK)
+        if (st%code /= STATUS_OK) return
+        do k = 1, 6
+            call t%check_close('exact: entry '//itoa(k), fit%x(k), x(k), rtol=0.0_dp, &
+                               atol=1.0e-9_dp*MOMENTS(3))
+        end do
+        do k = 1, 3
+            call t%check_close('exact: principal moment '//itoa(k), fit%moments(k), &
+                               MOMENTS(k), rtol=1.0e-9_dp)
+        end do
+        ! the same periods fitted as if the body hung alone (no platform): clearly wrong
+        bare = prob
+        bare%fix%mass = 0.0_dp
+        bare%fix%inertia = 0.0_dp
+        bare%loaded = .false.
+        call projection(bare, xp, st)
+        if (st%code == STATUS_OK) call fit_tensor(bare, xp, fit, st)
+        if (st%code == STATUS_OK) then
+            write (*, '(a,3(1x,es12.5))') '   principal moments without the platform:', &
+                fit%moments
+            call t%check('no fixture: a principal moment off by more than 5 % (50 times '// &
+                         'its u of exact periods)', maxval(abs(fit%moments/MOMENTS - 1.0_dp)) &
+                         > 0.05_dp)
+        else
+            call t%check('no fixture: refused ('//msg_of(st)//')', .true.)
+        end if
+    end subroutine test_exact
+
+    !> Timing noise of u_period = 2e-4 s per period (10 seeds): each principal moment
+    !! within U = k95 u of the truth in at least 9 of 10 seeds.
+    subroutine test_noise(t)
+        type(tester_t), intent(inout) :: t
+        type(tensor_problem_t) :: prob
+        type(tensor_fit_t) :: fit
+        type(status_t) :: st
+        type(rng_t) :: g
+        real(dp) :: xp(6), noise(9)
+        real(dp), parameter :: U_T = 2.0e-4_dp
+        integer :: seed, k, covered(3)
+        covered = 0
+        do seed = 1, 10
+            g = rng_stream(seed, 0)
+            do k = 1, 9
+                noise(k) = U_T*rng_normal(g)
+            end do
+            call make_problem('noise', ', u_period = 2e-4', prob, st, noise)
+            if (st%code == STATUS_OK) call projection(prob, xp, st)
+            if (st%code == STATUS_OK) call fit_tensor(prob, xp, fit, st)
+            if (st%code /= STATUS_OK) then
+                call t%check('noise seed '//itoa(seed)//': '//msg_of(st), .false.)
+                cycle
+            end if
+            do k = 1, 3
+                if (abs(fit%moments(k) - MOMENTS(k)) <= fit%k95(k)*fit%u_moments(k)) &
+                    covered(k) = covered(k) + 1
+            end do
+        end do
+        write (*, '(a,3(i0,1x),a)') '   95 % intervals covering the truth: ', covered, &
+            'of 10 (principal moments 1, 2, 3)'
+        do k = 1, 3
+            call t%check('noise: moment '//itoa(k)//' within U in '//itoa(covered(k))// &
+                         ' of 10 (>= 9)', covered(k) >= 9)
+        end do
+        call t%check('noise: u is not vacuous (u of moment 3 < 1 %)', &
+                     fit%u_moments(3) < 0.01_dp*MOMENTS(3))
+    end subroutine test_noise
+
+    !> input/tensor_platform.nml runs: exit 0, its files, the principal moments of the
+    !! truth deck to the 1e-9 s of its periods' digits.
+    subroutine test_example(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=*), parameter :: DIR = SCR//'/example'
+        character(len=512) :: v
+        real(dp) :: m(3)
+        integer :: ex, ios
+        call execute_command_line('rm -rf '//DIR//' && mkdir -p '//DIR//' && '//exe// &
+            ' input/tensor_platform.nml --out '//DIR//' > '//DIR//'.stdout 2> '//DIR// &
+            '.stderr', exitstat=ex)
+        call t%check('example: exit 0', ex == 0)
+        call t%check('example: its files', exists(DIR//'/tensor_platform.tensor') .and. &
+                     exists(DIR//'/tensor_platform.tensor.dat') .and. &
+                     exists(DIR//'/tensor_platform.certificate.html'))
+        call t%check('example: nothing on stderr', count_lines(DIR//'.stderr') == 0)
+        call read_kv_text(DIR//'/tensor_platform.tensor', 'I_principal', v)
+        read (v, *, iostat=ios) m
+        call t%check('example: I_principal read', ios == 0)
+        if (ios /= 0) return
+        call t%check('example: the truth''s principal moments to 1e-7 ('//sci(m(1))//', '// &
+                     sci(m(2))//', '//sci(m(3))//')', &
+                     maxval(abs(m/MOMENTS - 1.0_dp)) < 1.0e-7_dp)
+    end subroutine test_example
+
+    !> Bad platform decks: exit 2, one stderr line naming the deck and the variable, no file.
+    subroutine test_refusals(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=*), parameter :: HEAD = 'hang up_x up_y up_z along_x along_y along_z '// &
+            'period'//NL
+        character(len=*), parameter :: ROWS = '1 1 0 0 0 1 0 1.5'//NL//'2 0 1 0 0 0 1 1.5'// &
+            NL//'3 0 0 1 1 0 0 1.5'//NL//'4 1 1 0 0 0 1 1.5'//NL//'5 1 0 1 0 1 0 1.5'//NL// &
+            '6 0 1 1 1 0 0 1.5'//NL
+        character(len=*), parameter :: SUS4 = '&suspension cables = 4, radius = 0.30, '// &
+            'radius_prime = 0.25, l = 1.50, g = 9.80665 /'
+        call one('cables4', HEAD//ROWS, '&suspension cables', FIXTURE, SUS4)
+        call one('frame', HEAD//ROWS, '&tensor fixture_frame', &
+                 "fixture_frame = 'body', fixture_mass = 1.5")
+        call one('estimate', HEAD//ROWS, '&tensor estimate', FIXTURE//", estimate = 'tensor cg'")
+        call one('points', 'hang c_x c_y c_z d_x d_y d_z period'//NL// &
+                 '1 0 0 0 1 0 0 1.5'//NL, 'attachment points c_x', FIXTURE//', cg = 0, 0, 0')
+        call one('bprime', 'hang up_x up_y up_z along_x along_y along_z b_prime period'//NL// &
+                 '1 1 0 0 0 1 0 0.5 1.5'//NL, 'column ''b_prime''', FIXTURE)
+        call one('elastic', HEAD//ROWS, '&scene model', FIXTURE, &
+                 "&scene analyses = 'tensor', model = 'elastic' /")
+    contains
+        !> The deck of `table` with &tensor keys `keys` (and the deck line `line` in
+        !! place of the rig's) refused: exit 2, one stderr line naming the deck and
+        !! holding `word`, no file.
+        subroutine one(label, tab, word, keys, line)
+            character(len=*), intent(in) :: label, tab, word, keys
+            character(len=*), intent(in), optional :: line
+            character(len=:), allocatable :: dir, head
+            integer :: ex
+            logical :: l1, l2, l3
+            dir = SCR//'/ref_'//label
+            head = "&scene analyses = 'tensor' /"//NL//RIG_LINES
+            if (present(line)) then
+                if (line(1:6) == '&scene') then
+                    head = line//NL//RIG_LINES
+                else
+                    head = "&scene analyses = 'tensor' /"//NL//line//NL// &
+                        '&body mass = 4.2, inertia = 0.10, 0.12, 0.15, cg_depth = -0.06 /'//NL
+                end if
+            end if
+            call write_text(dir//'.txt', tab)
+            call write_text(dir//'.nml', head//"&tensor hangs = 'ref_"//label//".txt', "// &
+                            keys//' /'//NL)
+            call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//' && '//exe// &
+                ' '//dir//'.nml --out '//dir//' > '//dir//'.stdout 2> '//dir//'.stderr', &
+                exitstat=ex)
+            call t%check('refusal '//label//': exit 2', ex == 2)
+            l1 = count_lines(dir//'.stderr') == 1
+            l2 = file_has(dir//'.stderr', dir//'.nml')
+            l3 = file_has(dir//'.stderr', word)
+            call t%check('refusal '//label//': one stderr line naming the deck and '''// &
+                         word//'''', l1 .and. l2 .and. l3)
+            call t%check('refusal '//label//': no file', empty_dir(dir))
+        end subroutine one
+    end subroutine test_refusals
+
+end module test_platform_tensor
