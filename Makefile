@@ -249,6 +249,8 @@ records: $(BIN)/make_record
 	  11 0.05 0.002 3 2 10 10 0.8 1.2 1.6 2.0
 	@# the periods of the tensor example's hangs (input/tensor_example.nml)
 	$(BIN)/make_record hangs input/truth/tensor_example_truth.nml 0 1 input/tensor_example_hangs.csv
+	@# the periods of the tensor-on-a-platform example's hangs (input/tensor_platform.nml)
+	$(BIN)/make_record hangs input/truth/tensor_platform_truth.nml 0 1 input/tensor_platform_hangs.csv
 
 DECKS = $(wildcard input/*.nml)
 run: deps $(BIN)/bifilar
