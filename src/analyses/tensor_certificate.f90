@@ -60,8 +60,13 @@ contains
         integer :: j
         crc = '(none)'
         if (allocated(d%text)) crc = hex16(crc64_of(d%text))
-        c = cert_new('Inertia tensor of a body from bifilar hangs', trim(d%scene%title), &
-                     BIFILAR_VERSION, d%path, crc)
+        if (d%suspension%cables > 2) then
+            c = cert_new('Inertia tensor of a body from hangs on a trifilar platform', &
+                         trim(d%scene%title), BIFILAR_VERSION, d%path, crc)
+        else
+            c = cert_new('Inertia tensor of a body from bifilar hangs', trim(d%scene%title), &
+                         BIFILAR_VERSION, d%path, crc)
+        end if
         call result_part(c, res, fit, u_x_mc, u_moments_mc)
         call centre_part(c, d, prob)
         call rig_part(c, d, prob)
@@ -181,16 +186,31 @@ contains
         type(tensor_fit_t), intent(in) :: fit
         type(tensor_problem_t), intent(in) :: prob
         call cert_section(c, 'Method and model')
-        call cert_text(c, 'The body hung on the bifilar rig in '//itoa(size(prob%hangs))// &
-            ' orientations (table '//trim(d%tensor%hangs)//'), '//itoa(size(prob%rows))// &
-            ' timings.  Each hang''s period is that of the torsion mode of the model of T. R. '// &
-            'Kane and C. Tseng (1966) of that hang at its amplitude, so the coupling of '// &
-            'torsion with tilting and sway when the vertical is not a principal axis is in '// &
-            'the fit.  The six entries are fitted to every timing by weighted least squares '// &
-            '(each hang''s timings correlated through its own inputs), started at the '// &
-            'projection solution of the linear formula; first-order uncertainties from the '// &
-            'inputs'' u (GUM), '//itoa(fit%iterations)//' iterations; the timing''s u '// &
-            pick('stated', 'from the scatter', .not. fit%scatter)//'.')
+        if (d%suspension%cables > 2) then
+            call cert_text(c, 'The body lay on the platform of three cables in '// &
+                itoa(size(prob%hangs))//' orientations (table '//trim(d%tensor%hangs)//'), '// &
+                itoa(size(prob%rows))//' timings.  Each hang''s period is that of the '// &
+                'torsion of the platform''s own model (three inextensible cables; the '// &
+                'platform with its mass, mass centre and inertia a fixture of every hang, '// &
+                'the body''s mass centre where it sits, off the axis included) at its '// &
+                'amplitude, so the coupling of torsion with sway and tilt is in the fit.  '// &
+                'The six entries are fitted to every timing by weighted least squares, '// &
+                'started at the projection solution of the linear formula; first-order '// &
+                'uncertainties from the inputs'' u (GUM), '//itoa(fit%iterations)// &
+                ' iterations; the timing''s u '//pick('stated', 'from the scatter', &
+                .not. fit%scatter)//'.')
+        else
+            call cert_text(c, 'The body hung on the bifilar rig in '//itoa(size(prob%hangs))// &
+                ' orientations (table '//trim(d%tensor%hangs)//'), '//itoa(size(prob%rows))// &
+                ' timings.  Each hang''s period is that of the torsion mode of the model of T. R. '// &
+                'Kane and C. Tseng (1966) of that hang at its amplitude, so the coupling of '// &
+                'torsion with tilting and sway when the vertical is not a principal axis is in '// &
+                'the fit.  The six entries are fitted to every timing by weighted least squares '// &
+                '(each hang''s timings correlated through its own inputs), started at the '// &
+                'projection solution of the linear formula; first-order uncertainties from the '// &
+                'inputs'' u (GUM), '//itoa(fit%iterations)//' iterations; the timing''s u '// &
+                pick('stated', 'from the scatter', .not. fit%scatter)//'.')
+        end if
         if (res%mc_samples > 0) call cert_text(c, 'A Monte Carlo of '// &
             itoa(res%mc_samples)//' samples (seed '//itoa(d%tensor%seed)//') draws every '// &
             'input from its u and refits.')
