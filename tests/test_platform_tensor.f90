@@ -70,6 +70,8 @@ contains
         if (t%want('platform_tensor: the example deck')) call test_example(t, exe)
         if (t%want('platform_tensor: refusals are one line, exit 2 and no file')) &
             call test_refusals(t, exe)
+        if (t%want('platform_tensor: identify off the axis names the platform''s model')) &
+            call test_identify_model(t, exe)
     end subroutine run_platform_tensor_tests
 
     !> The true tensor: principal moments MOMENTS about the rows of the rotation of the
@@ -338,5 +340,25 @@ contains
             call t%check('refusal '//label//': no file', empty_dir(dir))
         end subroutine one
     end subroutine test_refusals
+
+    !> identify on a trifilar with the body off the axis: its summary line names the
+    !! period model 'platform orbit' (the platform's periodic torsion).
+    subroutine test_identify_model(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=*), parameter :: DIR = SCR//'/idoff'
+        integer :: ex
+        call write_text(DIR//'.nml', "&scene analyses = 'identify' /"//NL// &
+            '&suspension cables = 3, radius = 0.135, radius_prime = 0.135, l = 1.0, '// &
+            'g = 9.81 /'//NL//'&body mass = 2.0, inertia = 0.02, 0.014, 0.014, '// &
+            'cg_depth = -0.03, cg_offset = 0.02, 0.0 /'//NL// &
+            '&measurement periods = 14.9, 14.95, cycles = 10, amplitudes = 5, 5, '// &
+            'u_period = 0.02 /'//NL)
+        call execute_command_line('rm -rf '//DIR//' && mkdir -p '//DIR//' && '//exe//' '// &
+            DIR//'.nml --out '//DIR//' > '//DIR//'.stdout 2> '//DIR//'.stderr', exitstat=ex)
+        call t%check('identify off the axis: exit 0', ex == 0)
+        call t%check('identify off the axis: period model platform orbit', &
+                     file_has(DIR//'.stdout', 'period model platform orbit'))
+    end subroutine test_identify_model
 
 end module test_platform_tensor
