@@ -44,6 +44,15 @@
 !!   largest change of the interval between successive maxima over the first cycles, over
 !!   the first interval.  The analysis refuses amplitudes where it is too large (see
 !!   tensor_fit).
+!! * On a platform of three cables (hang_t%cables = 3): the body rests on the platform with
+!!   `up` its normal and `along` its x axis; the rig (hang_rig) is the platform's, btilde in
+!!   its (z, x, y) axes; the period is the platform's own model (module platform_model,
+!!   hang_platform): at A = 0 its equations linearised at the rest pose, the mode with the
+!!   largest share of the yaw (platform_small_period), at A > 0 its periodic torsion
+!!   (module platform_orbit), periodic by construction (no drift).  What hangs
+!!   (loaded_hang) keeps the hang's up: the platform model rests with G anywhere; a
+!!   fixture in the hang's frame has its origin at the centre of the platform's
+!!   attachment points (hang_centre).
 !!
 !! Units are the deck's; angles in degrees where the table gives them.  No routine stops.
 module hang_model
@@ -60,9 +69,9 @@ module hang_model
     use theta4_maxima, only: maxima_sink_t
     use lapack_wrap, only: la_syev, la_eigv
     use measurement, only: hang_t
-    use platform_model, only: linearise, platform_modes_t
-    use platform_geometry, only: platform_t, QX, QY, QPSI
-    use platform_measure, only: measured_platform, platform_period_s
+    use platform_model, only: linearise, platform_modes_t, check_platform
+    use platform_geometry, only: platform_t, regular_platform, platform_inertia, QX, QY, QPSI
+    use platform_orbit, only: platform_torsion_period
     implicit none
     private
 
@@ -488,13 +497,18 @@ contains
         real(dp), intent(out) :: t              !! the period, s
         type(status_t), intent(out) :: stat
         type(torsion_mode_t) :: mode
+        type(platform_t) :: pl
         real(dp), allocatable :: tm(:), am(:)
         t = 0.0_dp
         if (rg%cables > 2) then
             if (amp <= 0.0_dp) then
                 call platform_small_period(rg, t, stat)
             else
-                call platform_period_s(rg, acc, rg%inertia(1), amp, t, stat)
+                call hang_platform(rg, pl, stat)
+                if (stat%code == STATUS_OK) call platform_torsion_period(pl, amp*deg, &
+                    acc%rtol, acc%method, t, stat)
+                if (stat%code /= STATUS_OK) stat%msg = 'the period at '//fixed(amp, 3)// &
+                    ' deg (the platform''s periodic torsion): '//stat%msg
             end if
             return
         end if
@@ -509,6 +523,24 @@ contains
         t = tm(1)*sqrt(rg%b_prime/rg%g)
     end subroutine hang_period
 
+    !> The platform of three cables of a hang's rig (hang_rig: radius b/2, radius_prime
+    !! b_prime/2, every cable l; the mass centre at x = r cos(lambda) - b_prime/2, y =
+    !! cg_offset_y, depth r sin(lambda); the inertia of platform_inertia), no damping,
+    !! checked and at rest (check_platform: ERR_DECK for a rig the cables cannot hold,
+    !! ERR_MODEL naming the tipping height).  As platform_measure's platform_of_rig.
+    subroutine hang_platform(rg, pl, stat)
+        type(rig_t), intent(in) :: rg
+        type(platform_t), intent(out) :: pl
+        type(status_t), intent(out) :: stat
+        pl = regular_platform(rg%cables, 0.5_dp*rg%b, 0.5_dp*rg%b_prime, rg%l, rg%mass, &
+                              platform_inertia(rg%inertia, rg%btilde), &
+                              [rg%r*cos(rg%lambda) - 0.5_dp*rg%b_prime, rg%cg_offset_y], &
+                              rg%r*sin(rg%lambda), rg%g)
+        pl%c_v = 0.0_dp
+        pl%c_q = 0.0_dp
+        call check_platform(pl, stat)
+    end subroutine hang_platform
+
     !> The period (s) of the torsion of a platform of three cables (rig rg, hang_rig) at
     !! small amplitude: the platform's equations linearised at its rest pose (module
     !! platform_model's linearise), the mode whose shape has the largest share of the yaw
@@ -522,7 +554,7 @@ contains
         real(dp) :: share, best, wsc(4)
         integer :: j, k, kt
         t = 0.0_dp
-        call measured_platform(rg, rg%inertia(1), pl, stat)
+        call hang_platform(rg, pl, stat)
         if (stat%code /= STATUS_OK) return
         call linearise(pl, md, stat)
         if (stat%code /= STATUS_OK) return
