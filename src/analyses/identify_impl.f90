@@ -31,6 +31,7 @@ submodule (identify) identify_impl
     use stats, only: coverage_factor, welch_satterthwaite, NU_INFINITE, chi2_sf
     use model_follow, only: follows_record, not_following_message
     use tip_check, only: check_not_tipping
+    use platform_measure, only: offaxis_platform
     use record_fit, only: record_fit_t, record_mc_task_t, fit_problem, fit_record, carry_inputs, &
         input_sensitivities, record_mc_task, explain_fit_failure, estimated_names, &
         correlation_time, fresh_jacobian, check_record_kind, PARAM_NAMES, P_BIAS, &
@@ -1454,6 +1455,12 @@ contains
             res%period_model = 'record'
         else
             res%period_model = trim(merge('exact torsion', 'simulated    ', res%periods_exact))
+            ! a body off a platform's axis: the platform's orbit (3 cables) or elastic (4+)
+            if (size(kept) > 0) then
+                if (offaxis_platform(m%releases(kept(1))%rig)) res%period_model = &
+                    trim(merge('platform orbit  ', 'platform elastic', &
+                               m%releases(kept(1))%rig%cables == 3))
+            end if
         end if
         allocate (res%warnings(0))
         do r = 1, size(m%releases)
