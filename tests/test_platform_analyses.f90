@@ -46,6 +46,8 @@ contains
             call test_identify_depth(t, exe)
         if (t%want('platform identify: the mass centre off the axis, budget and Monte Carlo')) &
             call test_identify_offset(t, exe)
+        if (t%want('platform identify: four cables, the mass centre off the axis (elastic)')) &
+            call test_identify_quad(t, exe)
     end subroutine run_platform_analysis_tests
 
     !> The body of these tests: diag(Ixx, Iyy, Izz) in the body's frame.
@@ -391,16 +393,6 @@ contains
                      file_has(d//'/stderr', 'tips over'), &
                      file_has(d//'/stderr', 'above cg_depth = -3.48'), &
                      .not. exists(o//'/tip.identify')]))
-        ! off the axis of four cables
-        call write_text(d//'/quad.nml', "&scene analyses = 'identify' /"//NL// &
-            '&suspension cables = 4, radius = 0.135, radius_prime = 0.135, l = 1.0, '// &
-            'g = 9.81 /'//NL//'&body mass = 2.048, inertia = 0.022, 0.014, 0.014, '// &
-            'cg_depth = 0.05, cg_offset = 0.01, 0 /'//NL//'&measurement periods = 1.6, '// &
-            'amplitudes = 5 /'//NL)
-        ex = run(exe//' '//d//'/quad.nml --out '//o, d)
-        call t%check('platform identify: a body off the axis of four cables: exit 2, one '// &
-                     'line', all([ex == 2, message_lines(d//'/stderr') == 1, &
-                     file_has(d//'/stderr', 'cg_offset'), .not. exists(o//'/quad.identify')]))
     end subroutine test_identify_depth
 
     ! ---------------------------------------------------------------------------------------
@@ -489,6 +481,81 @@ contains
             'the axis: periods I1 ', ipx, ', u ', u1, ', Monte Carlo u ', umc, '; record I1 ', &
             irec, ', offset ignored +', 100*(inai/irec - 1.0_dp), ' %'
     end subroutine test_identify_offset
+
+    ! ---------------------------------------------------------------------------------------
+    !> Four cables with the body's mass centre 18 mm off the axis (elastic cables, &cables
+    !! stiffness by default 1e6): the period at 5 degrees is the small-amplitude torsion
+    !! about the mass centre 2 pi (I1 L/(M g (R^2 - e^2)))^(1/2) times 1 + theta^2/16 to
+    !! 5e-4; periods of I1 = 0.0243 give it back within 1e-6 and within U, labelled
+    !! 'platform elastic'; a mass centre 1e-6 m off the axis (the elastic model) gives the
+    !! centred body's I1 (pure torsion) to 1e-6; a body above its tipping height: exit 4.
+    subroutine test_identify_quad(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=*), parameter :: NL = new_line('a')
+        real(dp), parameter :: e = 0.018_dp, rr = 0.135_dp, i1 = 0.0243_dp, m = 2.048_dp
+        character(len=:), allocatable :: d, o, head
+        type(accuracy_t) :: acc
+        type(status_t) :: st
+        type(rig_t) :: rg
+        real(dp) :: t5, tc, tsmall, iq, uq, ic, ie
+        integer :: ex(3), ext
+        logical :: ok
+        d = SCR//'/iquad'
+        call fresh_dir(d)
+        o = d//'/out'
+        rg = identify_rig(e, 0.05_dp)
+        rg%cables = 4
+        call rig_period_s(rg, acc, i1, 5.0_dp, t5, st)
+        ok = st%code == 0
+        rg = identify_rig(0.0_dp, 0.05_dp)
+        rg%cables = 4
+        call rig_period_s(rg, acc, i1, 5.0_dp, tc, st)
+        ok = ok .and. st%code == 0
+        tsmall = 2.0_dp*acos(-1.0_dp)*sqrt(i1*1.0_dp/(m*GRAV*(rr**2 - e**2)))* &
+                 (1.0_dp + (5.0_dp*deg)**2/16.0_dp)
+        head = "&scene analyses = 'identify' /"//NL// &
+            '&suspension cables = 4, radius = 0.135, radius_prime = 0.135, l = 1.0, '// &
+            'g = 9.81 /'//NL//'&body mass = 2.048, inertia = 0.022, 0.014, 0.014, '// &
+            'cg_depth = 0.05, '
+        call write_text(d//'/q.nml', head//'cg_offset = 0.018, 0 /'//NL// &
+            '&measurement periods = '//sci(t5, 15)//', amplitudes = 5, u_period = 1e-4 /'//NL)
+        ex(1) = run(exe//' '//d//'/q.nml --out '//o, d)
+        iq = kv_real(o//'/q.identify', 'I1')
+        uq = kv_real(o//'/q.identify', 'U_I1')
+        call write_text(d//'/c.nml', head//'cg_offset = 0, 0 /'//NL// &
+            '&measurement periods = '//sci(tc, 15)//', amplitudes = 5, u_period = 1e-4 /'//NL)
+        ex(2) = run(exe//' '//d//'/c.nml --out '//o, d)
+        ic = kv_real(o//'/c.identify', 'I1')
+        call write_text(d//'/ce.nml', head//'cg_offset = 1e-6, 0 /'//NL// &
+            '&measurement periods = '//sci(tc, 15)//', amplitudes = 5, u_period = 1e-4 /'//NL)
+        ex(3) = run(exe//' '//d//'/ce.nml --out '//o, d)
+        ie = kv_real(o//'/ce.identify', 'I1')
+        call t%check('quadrifilar identify off the axis: periods made, exit 0', &
+                     ok .and. all(ex == 0))
+        call t%check_close('quadrifilar off the axis: the elastic period is the torsion '// &
+                           'about the mass centre', t5, tsmall, 5.0e-4_dp, 0.0_dp)
+        call t%check_close('quadrifilar identify off the axis: periods give the truth', iq, &
+                           i1, 1.0e-6_dp, 0.0_dp)
+        call t%check('quadrifilar identify off the axis: the truth within U', &
+                     abs(iq - i1) < uq .and. uq > 0.0_dp)
+        call t%check('quadrifilar identify off the axis: period model platform elastic', &
+                     file_has(o//'/q.identify', 'period_model = platform elastic'))
+        call t%check_close('quadrifilar identify: 1e-6 m off the axis (elastic) gives the '// &
+                           'centred body''s I1 (pure torsion)', ie, ic, 1.0e-6_dp, 0.0_dp)
+        write (*, '(a,es16.8,a,es10.3,a,es10.3)') '  quadrifilar identify off the axis: I1 ', &
+            iq, ', U ', uq, '; elastic 1e-6 off over pure torsion, less 1: ', ie/ic - 1.0_dp
+        ! above its tipping height, off the axis
+        call write_text(d//'/tip.nml', "&scene analyses = 'identify' /"//NL// &
+            '&suspension cables = 4, radius = 0.135, radius_prime = 0.05, l = 1.0, '// &
+            'g = 9.81 /'//NL//'&body mass = 2.048, inertia = 0.022, 0.014, 0.014, '// &
+            'cg_depth = -1, cg_offset = 0.001, 0 /'//NL//'&measurement periods = 1.6, '// &
+            'amplitudes = 5 /'//NL)
+        ext = run(exe//' '//d//'/tip.nml --out '//o, d)
+        call t%check('quadrifilar identify off the axis, above its tipping height: exit 4, '// &
+                     'one line', all([ext == 4, message_lines(d//'/stderr') == 1, &
+                     file_has(d//'/stderr', 'tips over'), .not. exists(o//'/tip.identify')]))
+    end subroutine test_identify_quad
 
     !> The sensitivity of the budget's row `name` in an identify file (-huge when absent).
     real(dp) function budget_sensitivity(path, name) result(s)

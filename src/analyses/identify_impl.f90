@@ -1455,10 +1455,12 @@ contains
             res%period_model = 'record'
         else
             res%period_model = trim(merge('exact torsion', 'simulated    ', res%periods_exact))
-            ! a platform of three cables with the mass centre off its axis: its own model
-            if (.not. res%periods_exact .and. any([(offaxis_platform(m%releases(r)%rig), &
-                                                    r=1, size(m%releases))])) &
-                res%period_model = 'platform orbit'
+            ! a body off a platform's axis: the platform's orbit (3 cables) or elastic (4+)
+            if (size(kept) > 0) then
+                if (offaxis_platform(m%releases(kept(1))%rig)) res%period_model = &
+                    trim(merge('platform orbit  ', 'platform elastic', &
+                               m%releases(kept(1))%rig%cables == 3))
+            end if
         end if
         allocate (res%warnings(0))
         do r = 1, size(m%releases)

@@ -321,12 +321,13 @@ contains
     end subroutine check_deck
 
     !> A platform (cables >= 3) with the analyses that model it: simulate, floquet, chart,
-    !! design and identify, not tensor or work_precision; it starts turned about the vertical
+    !! design, identify and (three cables) tensor, not work_precision; it starts turned about the vertical
     !! (&start mode = 'raised', no tilt).  floquet, chart and design analyse the torsion of
     !! inextensible cables: n = 3, model = 'kane'; design and identify the regular polygon
-    !! (radius, radius_prime, l); design with the mass centre on its axis, identify too on
-    !! four or more cables (the pure torsion of the equivalent pair b = 2 radius; on three
-    !! cables identify runs the platform's model: module platform_measure).
+    !! (radius, radius_prime, l); design with the mass centre on its axis.  identify with
+    !! the mass centre on the axis takes the pure torsion of the equivalent pair b = 2 radius;
+    !! off it the platform's model (three cables) or its elastic cables' (four or more):
+    !! module platform_measure.
     subroutine check_platform_deck(scene, sus, bod, sta, ten, stat)
         type(scene_group_t), intent(in) :: scene        !! normalised
         type(suspension_group_t), intent(in) :: sus     !! normalised
@@ -388,14 +389,11 @@ contains
                      'given point by point', 'the regular polygon (radius, radius_prime, l) '// &
                      'with analyses = '''//which//'''')
         else if ((bod%cg_offset /= 0.0_dp .or. bod%cg_offset_y /= 0.0_dp) .and. &
-                 (which == 'design' .or. sus%cables > 3)) then
+                 which == 'design') then
             call bad(stat, 'body', 'cg_offset', rshort(bod%cg_offset)//', '// &
                      rshort(bod%cg_offset_y), which//' on a platform of '//itoa(sus%cables)// &
                      ' cables with the mass centre off its axis', 'cg_offset = 0, 0 with '// &
-                     'analyses = '''//which//''' (the pure torsion of the centred body)'// &
-                     trim(merge('; identify with cg_offset on a platform of 3 cables', &
-                                '                                                   ', &
-                                which == 'identify')))
+                     'analyses = '''//which//''' (the pure torsion of the centred body)')
         end if
     contains
         !> The k-th blank-separated word of s.

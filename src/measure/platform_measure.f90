@@ -39,6 +39,7 @@ module platform_measure
     use platform_model, only: check_platform, platform_start, platform_evaluate, &
         platform_motion_t, platform_sys_t
     use platform_orbit, only: platform_torsion_period
+    use platform_elastic_orbit, only: elastic_torsion_period
     implicit none
     private
 
@@ -132,8 +133,9 @@ contains
     end subroutine platform_hold_check
 
     !> The period (s) of the periodic torsion of the off-axis platform rg with I1 = i1 at
-    !! peak amplitude amp_deg (platform_torsion_period), integrated with acc's rtol and
-    !! integrator.  ERR_DECK for a rig of other than three cables.
+    !! peak amplitude amp_deg: three cables platform_torsion_period, integrated with acc's
+    !! rtol and integrator; four or more the elastic cables' (module platform_elastic_orbit,
+    !! &cables stiffness, Radau IIA at acc's rtol and atol).
     subroutine platform_period_s(rg, acc, i1, amp_deg, t, stat)
         type(rig_t), intent(in) :: rg
         type(accuracy_t), intent(in) :: acc
@@ -143,15 +145,19 @@ contains
         type(platform_t) :: pl
         type(rig_t) :: rr
         t = 0.0_dp
-        if (rg%cables /= 3) then
-            call set_error(stat, ERR_DECK, '&body cg_offset: a mass centre off the axis of a '// &
-                'platform of more than 3 cables (the torsion of the off-axis body is that of '// &
-                'the elastic cables); allowed: cg_offset = 0, 0, or cables = 3')
-            return
-        end if
         rr = rg
         rr%c_v = 0.0_dp
         rr%c_q = 0.0_dp
+        if (rg%cables >= 4) then
+            ! statically indeterminate when inextensible: the elastic cables' torsion
+            rr%inertia(1) = i1
+            pl = platform_of_rig(rr)
+            call elastic_torsion_period(pl, rg%cable_stiffness, amp_deg*deg, acc%rtol, &
+                                        acc%atol, t, stat)
+            if (stat%code /= STATUS_OK) stat%msg = 'the period at '//fixed(amp_deg, 3)// &
+                ' deg (the elastic platform''s periodic torsion): '//stat%msg
+            return
+        end if
         call measured_platform(rr, i1, pl, stat)
         if (stat%code /= STATUS_OK) return
         call platform_torsion_period(pl, amp_deg*deg, acc%rtol, acc%method, t, stat)
