@@ -44,6 +44,8 @@ contains
             call test_sens(t)
         if (t%want('rates: a 3-axis gyro record gives I1, I2, I3 and cg_depth')) call test_goal(t)
         if (t%want('rates: a pure-torsion record cannot give I2')) call test_refusal(t, exe)
+        if (t%want('rates: t0 estimated, and a release turned the other way')) &
+            call test_t0_sign(t)
         if (t%want('rates: a phone''s gyro export through the program')) call test_export(t, exe)
     end subroutine run_rates_tests
 
@@ -309,6 +311,95 @@ contains
         print '(a,es10.3,a,es10.3,a)', '   correlation_max ', res%correlation_max, &
             ' ('//trim(res%correlation_pair)//'), condition ', res%condition, ''
     end subroutine test_goal
+
+    !> Two 3-axis records of the laboratory rig (no tilt, no sway), fitted for I1, t0 and
+    !! the biases: one held still 2 s before its release from 30 degrees (t0 estimated), one
+    !! held 1.5 s before its release from -20 degrees (turned the other way): the first's
+    !! I1 and t0 within U; the second refused (the 3-axis fit keeps the model's way of
+    !! turning, and says the model does not follow the record).
+    subroutine test_t0_sign(t)
+        type(tester_t), intent(inout) :: t
+        integer, parameter :: N = 1201
+        real(dp), parameter :: SIGMA = 0.003_dp, BIAS(3) = [0.004_dp, -0.006_dp, 0.003_dp]
+        real(dp), parameter :: T0S(2) = [2.0_dp, 1.5_dp], AMPS(2) = [30.0_dp, -20.0_dp]
+        character(len=*), parameter :: WHAT(2) = [character(len=16) :: 'held, t0', &
+                                                  'the other way']
+        type(rig_t) :: rg
+        type(start_t) :: st
+        type(accuracy_t) :: acc
+        type(deck_t) :: d
+        type(record_t) :: rec
+        type(identify_result_t) :: res
+        type(status_t) :: stat
+        type(rng_t) :: g
+        real(dp) :: vals(3*N), axes(3, 3)
+        integer :: i, k, c, j
+        logical :: ok
+        character(len=16) :: amp
+        call fresh_dir(DIR//'/t0')
+        call lab_rig(rg, st)
+        st%tilt = 0.0_dp
+        st%sway = 0.0_dp
+        acc%rtol = 1.0e-10_dp
+        acc%atol = 1.0e-12_dp
+        call parse_axes('aligned', axes, ok)
+        do c = 1, 2
+            st%amplitude = AMPS(c)
+            if (allocated(rec%t)) deallocate (rec%t, rec%v, rec%u, rec%vs)
+            allocate (rec%t(N), rec%v(N), rec%u(N), rec%vs(3*N))
+            do i = 1, N
+                rec%t(i) = 0.01_dp*(i - 1)
+            end do
+            call record_model(rg, st, acc, rec%t, T0S(c), .true., vals, stat, axes)
+            call t%check('rates: '//trim(WHAT(c))//': the record made'//msg_of(stat), &
+                         stat%code == 0)
+            if (stat%code /= 0) return
+            g = rng_stream(9, c)
+            do k = 1, 3
+                do i = 1, N
+                    rec%vs((k - 1)*N + i) = vals((k - 1)*N + i) + BIAS(k) + SIGMA*rng_normal(g)
+                end do
+            end do
+            rec%v = -rec%vs(1:N)
+            rec%u = 1.0_dp
+            rec%rate = .true.
+            rec%units = 'rad/s'
+            ! the deck gives the size of the turn; its way is the record's
+            write (amp, '(f6.1)') abs(AMPS(c))
+            call write_text(DIR//'/t0/t0.nml', &
+                '&scene title = ''3-axis gyro'', analyses = ''identify'' /'//new_line('a')// &
+                '&suspension b = 0.40, b_prime = 0.40, l = 1.20, l_prime = 1.18, g = 9.80665 /'// &
+                new_line('a')//'&body mass = 3.10, inertia = 0.049, 0.0630, 0.0304, '// &
+                'r = 0.25, lambda = 0.64, sway_depth = 0.30 /'//new_line('a')// &
+                '&start mode = ''raised'', amplitude = '//trim(adjustl(amp))//' /'// &
+                new_line('a')//'&integration rtol = 1e-10, atol = 1e-12 /'//new_line('a')// &
+                '&measurement record = ''t0.dat'', quantity = ''rates'', '// &
+                'estimate = ''I1 t0 bias'' /'//new_line('a'))
+            call read_deck(DIR//'/t0/t0.nml', d, stat)
+            call t%check('rates: '//trim(WHAT(c))//': the deck'//msg_of(stat), stat%code == 0)
+            if (stat%code /= 0) return
+            call identify_record(d, rec, res, stat)
+            if (c == 2) then
+                ! the 3-axis fit keeps the model's own way of turning: a release turned the
+                ! other way is refused as not followed, never fitted to a wrong I1
+                call t%check('rates: '//trim(WHAT(c))//': refused, not followed', &
+                             stat%code /= 0 .and. index(stat%msg, 'does not follow') > 0)
+                cycle
+            end if
+            call t%check('rates: '//trim(WHAT(c))//': the fit'//msg_of(stat), stat%code == 0)
+            if (stat%code /= 0) cycle
+            print '(a,3es14.6)', '   '//WHAT(c)//' I1, truth, U: ', res%i1, rg%inertia(1), &
+                res%k*res%u_i1
+            call t%check('rates: '//trim(WHAT(c))//': I1 within U', &
+                         abs(res%i1 - rg%inertia(1)) <= max(res%k, 1.96_dp)*res%u_i1)
+            j = findloc(res%names(1:res%np), 't0', 1)
+            call t%check('rates: '//trim(WHAT(c))//': t0 estimated', j > 0)
+            if (j == 0) cycle
+            print '(a,3es14.6)', '   '//WHAT(c)//' t0, truth, u: ', res%p(j), T0S(c), res%u_p(j)
+            call t%check('rates: '//trim(WHAT(c))//': t0 within U', &
+                         abs(res%p(j) - T0S(c)) <= max(res%k, 1.96_dp)*res%u_p(j))
+        end do
+    end subroutine test_t0_sign
 
     !> A record of pure torsion (no tilt, no sway, a symmetric rig) asked for I1 and I2:
     !! refused with exit 2, one line naming I2, no output.

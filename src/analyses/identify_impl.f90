@@ -20,7 +20,7 @@ submodule (identify) identify_impl
     use budget, only: input_u_t, ROW_INPUT, ROW_TIMING, ROW_AMPLITUDE, ROW_FIT, ROW_RELEASE, &
         ROW_TARE, ROW_ADDED, ROW_SESSION, ROW_AMPLITUDE_SCALE
     use records, only: read_record_file, record_format_t, mean_period, clean_mean_period, &
-        u_column_warning, chosen_axis_note
+        u_column_warning, chosen_axis_note, record_t, MIN_SAMPLES
     use progress, only: say_note
     use measure_groups, only: measurement_group_t
     use measurement, only: release_t, observation_t, OBS_RECORD, OBS_TIMING, RIG_COLUMNS
@@ -36,7 +36,7 @@ submodule (identify) identify_impl
         input_sensitivities, record_mc_task, explain_fit_failure, estimated_names, &
         correlation_time, fresh_jacobian, check_record_kind, PARAM_NAMES, P_BIAS, &
         determines_t, record_determines, stacked_weights, stacked_values, P_I2, P_I3, P_CG, &
-        P_TILT, P_SWAY
+        P_TILT, P_SWAY, find_release, record_start_t
     use period_inversion, only: period_fit_t, invert_periods, period_budget, &
                                 period_monte_carlo, linear_inertia, is_torsion_rig, &
                                 period_mc_task, period_mc_task_t, rig_period_s, &
@@ -47,6 +47,7 @@ submodule (identify) identify_impl
         work_note, reference_periods, record_swing_period, check_fitted_amplitude, &
         CAUSES_HIGH, CAUSES_LOW, TRIANGLE_MARGIN
     use unused_arg, only: unused
+    use record_split, only: release_spans, segment_of, span_text
     use tare_file, only: RIG_KEYS, tare_file_t, read_tare_file, check_same_rig, is_shared_input, &
         shared_sensitivity, tare_own_rows
     use analysis_base, only: ranks_note, resume_note
@@ -153,6 +154,10 @@ contains
                 'their Type A part), or periods or a record with monte_carlo')
             return
         end if
+        if (d%measurement%record_split) then
+            call check_split_deck(d, stat)
+            if (stat%code /= 0) return
+        end if
         call read_releases(d%measurement, rig_of(d), start_of(d), d%suspension%cables, &
                            deck_inputs(d, .true.), m, stat, d%start%gave('amplitude'))
         if (stat%code /= 0) return
@@ -185,6 +190,10 @@ contains
             ! every release failed: the first failure
             stat = first_failure
             return
+        end if
+        if (d%measurement%record_split) then
+            call split_measurement(d, m, stat)
+            if (stat%code /= 0) return
         end if
         if (size(m%releases) > 1) first_what = itoa(size(m%releases))//' releases, the '// &
             'first: '//first_what
@@ -338,6 +347,102 @@ contains
         end if
         end associate
     end subroutine ready_release
+
+    !> &measurement record_split = .true. asks for a record (not periods nor trials), t0
+    !! estimated (each segment's release is found in it) and no Monte Carlo (the releases'
+    !! scatter is their Type A part, as a table's).
+    subroutine check_split_deck(d, stat)
+        type(deck_t), intent(in) :: d
+        type(status_t), intent(out) :: stat
+        stat%code = 0
+        if (len_trim(d%measurement%record) == 0) then
+            call set_error(stat, ERR_DECK, '&measurement record_split = .true. without '// &
+                'record: it cuts one record at its releases; allowed: record = ''FILE'' '// &
+                'with record_split, or record_split = .false.')
+        else if (.not. d%measurement%estimated('t0')) then
+            call set_error(stat, ERR_DECK, '&measurement record_split = .true. with '// &
+                'estimate = '''//trim(d%measurement%estimate)//''': each segment''s '// &
+                'release is found in it; allowed: an estimate with t0 (''I1 t0'', '// &
+                '''I1 t0 bias'')')
+        else if (d%measurement%monte_carlo > 0) then
+            call set_error(stat, ERR_DECK, '&measurement monte_carlo = '// &
+                itoa(d%measurement%monte_carlo)//' with record_split: the Monte Carlo '// &
+                'draws one release; allowed: monte_carlo = 0 with record_split (the '// &
+                'segments'' scatter is their Type A part)')
+        end if
+    end subroutine check_split_deck
+
+    !> The deck's record cut at its releases (module record_split): each segment a release
+    !! of its own (labelled with its time span), pooled as a table's.  A record of one
+    !! release is left whole (the fit is the record's as without record_split).  A segment
+    !! whose swing lasts less than two periods after its release (record_fit's find_release)
+    !! is refused naming its time span, or with on_failure = 'skip' left out with that
+    !! failure (a warning of the output).
+    subroutine split_measurement(d, m, stat)
+        type(deck_t), intent(in) :: d
+        type(measurement_t), intent(inout) :: m
+        type(status_t), intent(out) :: stat
+        type(release_t), allocatable :: rels(:)
+        type(observation_t), allocatable :: obs(:)
+        type(record_start_t) :: rl
+        type(record_t) :: seg
+        integer, allocatable :: lo(:), hi(:)
+        real(dp) :: tp
+        integer :: k, j, nh, nseg
+        logical :: rate
+        character(len=:), allocatable :: span
+        stat%code = 0
+        k = m%record_of(1)
+        if (k == 0 .or. size(m%releases) /= 1) return
+        associate (rec => m%obs(k)%rec)
+            tp = record_swing_period(rec)
+            if (.not. (tp > 0.0_dp)) tp = mean_period(rec)
+            call release_spans(rec, tp, lo, hi, nh)
+            nseg = size(lo)
+            if (nseg == 1 .and. lo(1) == 1 .and. hi(1) == size(rec%v)) return
+            rate = rec%rate .or. trim(d%measurement%quantity) == 'rate'
+            allocate (rels(nseg), obs(nseg))
+            do j = 1, nseg
+                rels(j) = m%releases(1)
+                rels(j)%label = 'segment '//itoa(j)//', '//span_text(rec, lo(j), hi(j))
+                rels(j)%line = 0
+                obs(j) = m%obs(k)
+                obs(j)%release = j
+                obs(j)%rec = segment_of(rec, lo(j), hi(j))
+            end do
+        end associate
+        call move_alloc(rels, m%releases)
+        call move_alloc(obs, m%obs)
+        m%from_table = .true.
+        m%source = '&measurement record_split'
+        do j = 1, nseg
+            seg = m%obs(j)%rec
+            span = span_text(seg, 1, size(seg%v))
+            stat%code = 0
+            if (size(seg%v) < MIN_SAMPLES) then
+                call set_error(stat, ERR_DECK, '&measurement record_split: the segment '// &
+                    span//' has '//itoa(size(seg%v))//' samples, too few to fit; allowed: '// &
+                    'a segment of at least '//itoa(MIN_SAMPLES)//' samples and two periods '// &
+                    'of swing after its release, or on_failure = ''skip''')
+            else
+                call find_release(seg, rate, rl)
+                if (seg%t(size(seg%v)) - rl%t0 < 2.0_dp*tp) call set_error(stat, ERR_DECK, &
+                    '&measurement record_split: the segment '//span//' swings '// &
+                    trim(sci(seg%t(size(seg%v)) - rl%t0, 3))//' s after its release, too '// &
+                    'short to fit; allowed: at least two periods of swing ('// &
+                    trim(sci(2.0_dp*tp, 3))//' s) after each release, or on_failure = ''skip''')
+            end if
+            if (stat%code == 0) call check_record_kind(seg, d%measurement, &
+                trim(d%start%mode) == 'raised', '&measurement record_split, segment '//span, stat)
+            if (stat%code /= 0) then
+                if (trim(d%measurement%on_failure) /= 'skip') return
+                call skip_release(m, j, stat)
+            end if
+        end do
+        if (all(m%releases%skipped)) call set_error(stat, ERR_DECK, &
+            '&measurement record_split: no segment of the record is long enough to fit; '// &
+            'allowed: at least two periods of swing after each release')
+    end subroutine split_measurement
 
     !> Release i left out (&measurement on_failure = 'skip'): marked, with its failure
     !! (stat, which names the release and its row), and stat cleared.

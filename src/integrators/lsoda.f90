@@ -184,6 +184,7 @@ module lsoda
         procedure :: sens_init => lsoda_sens_init
         procedure :: sens_dense_at => lsoda_sens_dense_at
         procedure :: sens_dense_dot => lsoda_sens_dense_dot
+        procedure :: sens_dense_dots => lsoda_sens_dense_dots
         procedure :: start => lsoda_start
         procedure :: one_step => lsoda_one_step
         procedure :: solution => lsoda_solution
@@ -490,6 +491,59 @@ contains
             v(k) = acc
         end do
     end subroutine lsoda_sens_dense_dot
+
+    !> v(k, o) = g(:, o) . s_k(t) for several vectors g(:, o) at once (a rate instrument's
+    !! three axes): each row of the Nordsieck array that any of them needs is interpolated
+    !! once (Horner's scheme, as sens_dense_dot) and shared; each column's sum takes the
+    !! rows where its g is not 0 in increasing order, as sens_dense_dot's does, so that
+    !! v(:, o) is sens_dense_dot's for g(:, o) to the last bit.
+    !!
+    !! g    [in]  (n, m).
+    !! v    [out] (ns, m).
+    !! stat [out] as sens_dense_dot.
+    subroutine lsoda_sens_dense_dots(s, t, g, v, stat)
+        class(lsoda_t), intent(in) :: s
+        real(dp), intent(in) :: t
+        real(dp), intent(in) :: g(:, :)
+        real(dp), intent(out) :: v(:, :)
+        type(status_t), intent(out) :: stat
+        real(dp) :: sc, x, acc(size(g, 2))
+        integer :: nz(s%n), nnz, i, j, k, r, o, m
+        v = 0.0_dp
+        stat%code = STATUS_OK
+        m = size(g, 2)
+        if (.not. s%ready .or. s%ns == 0 .or. size(g, 1) /= s%n .or. size(v, 1) /= s%ns &
+            .or. size(v, 2) /= m) then
+            call set_error(stat, LSODA_ERR_ILLEGAL_INPUT, 'lsoda sens_dense_dots: no '// &
+                'sensitivities, or g is not of n rows or v not of ns x size(g, 2)')
+            return
+        end if
+        call s%check_in_step(t, 'sens_dense_dots', stat)
+        if (stat%code /= STATUS_OK) return
+        nnz = 0
+        do i = 1, s%n
+            if (any(g(i, :) /= 0.0_dp)) then
+                nnz = nnz + 1
+                nz(nnz) = i
+            end if
+        end do
+        sc = 0.0_dp
+        if (s%h /= 0.0_dp) sc = (t - s%t)/s%h
+        do k = 1, s%ns
+            acc = 0.0_dp
+            do i = 1, nnz
+                r = (k - 1)*s%n + nz(i)
+                x = s%zh(r, s%nq + 1)
+                do j = s%nq, 1, -1
+                    x = s%zh(r, j) + sc*x
+                end do
+                do o = 1, m
+                    if (g(nz(i), o) /= 0.0_dp) acc(o) = acc(o) + g(nz(i), o)*x
+                end do
+            end do
+            v(k, :) = acc
+        end do
+    end subroutine lsoda_sens_dense_dots
     ! ------------------------------------------------------------------------------------
     ! What integrate and step call (integrator_t's start, one_step, at_tcrit)
     ! ------------------------------------------------------------------------------------

@@ -180,6 +180,7 @@ module ode_system
         procedure(sens_init_i), deferred :: sens_init
         procedure :: sens_dense => integrator_sens_dense
         procedure :: sens_dense_dot => default_sens_dense_dot
+        procedure :: sens_dense_dots => default_sens_dense_dots
         ! what an integrator gives the procedures above
         procedure(identity_i), deferred :: identity
         procedure(start_i), deferred :: start
@@ -540,6 +541,27 @@ contains
             v(k) = dot_product(g, ds(:, k))
         end do
     end subroutine default_sens_dense_dot
+
+    !> v(k, o) = g(:, o) . s_k(t) for several vectors at once (default: sens_dense_dot on
+    !! each column; an integrator may share its interpolation between them).
+    !!
+    !! g    [in]  (n, m) the vectors.
+    !! v    [out] (ns, m) the projections.
+    !! stat [out] as sens_dense.
+    subroutine default_sens_dense_dots(s, t, g, v, stat)
+        class(integrator_t), intent(in) :: s
+        real(dp), intent(in) :: t
+        real(dp), intent(in) :: g(:, :)
+        real(dp), intent(out) :: v(:, :)
+        type(status_t), intent(out) :: stat
+        integer :: o
+        v = 0.0_dp
+        stat%code = STATUS_OK
+        do o = 1, size(g, 2)
+            call s%sens_dense_dot(t, g(:, o), v(:, o), stat)
+            if (stat%code /= STATUS_OK) return
+        end do
+    end subroutine default_sens_dense_dots
 
     !> What every integrator's init does besides its method: the checks of the arguments
     !! they all take (n >= 1; atol of size 1 or n, each >= 0 and finite; hmax > 0;

@@ -77,6 +77,9 @@ module measure_groups
         !> quantity 'rates': the instrument's axes in the body's principal axes: 'aligned'
         !! or three signed letters ('z -y x': the body axes along its x, y, z)
         character(len=256) :: record_axes = 'aligned'
+        !> the record holds several releases, each after the body was held still: cut at
+        !! its holds (module record_split), each segment a release, pooled as a table's
+        logical :: record_split = .false.
         character(len=256) :: loss = 'squares'    !! LOSSES_ALLOWED: the record fit's loss
         !> standard uncertainties of I2 and I3 (u_inertia(1) alone serves both: normalise),
         !! of the mass centre (as measured: cg_depth, cg_offset; or r (length) and lambda
@@ -191,7 +194,7 @@ contains
             'loss:c1 u_inertia:r2 u_cg_depth:r1 u_cg_offset:r1 u_r:r1 u_lambda:r1 tare_i1:r1 '// &
             'u_tare_i1:r1 tare_mass:r1 added_inertia:r1 u_added_inertia:r1 '// &
             'on_failure:c1 session:c1 record_frame_rate:r1 calibration:c1 tare:c1 '// &
-            'u_amplitude_scale:r1 record_axes:c1'
+            'u_amplitude_scale:r1 record_axes:c1 record_split:l1'
     end function measurement_spec
 
     !> &measurement; n_periods counts the leading periods given (check refuses gaps).
@@ -211,13 +214,14 @@ contains
         real(dp) :: tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia
         real(dp) :: record_frame_rate, u_amplitude_scale
         integer :: monte_carlo, seed, record_columns(4), ios_words
+        logical :: record_split
         character(len=256) :: words(4), msg_words
         namelist /measurement/ periods, amplitudes, cycles, record, quantity, estimate, u_mass, &
             u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude, monte_carlo, seed, &
             trials, record_columns, record_units, loss, u_inertia, u_cg_depth, u_cg_offset, &
             u_r, u_lambda, tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia, &
             on_failure, session, record_frame_rate, calibration, tare, u_amplitude_scale, &
-            record_axes
+            record_axes, record_split
         call defaults()
         words = ''
         read (rec, nml=measurement, iostat=ios, iomsg=msg)
@@ -267,6 +271,7 @@ contains
         end if
         self%record_frame_rate = record_frame_rate
         self%record_axes = record_axes
+        self%record_split = record_split
         self%record_units = record_units
         self%loss = loss
         if (u_inertia(1) /= PERIOD_UNSET) then
@@ -331,6 +336,7 @@ contains
             u_added_inertia = self%u_added_inertia
             record_frame_rate = self%record_frame_rate
             record_axes = self%record_axes
+            record_split = self%record_split
             on_failure = self%on_failure
             session = self%session
             calibration = self%calibration
@@ -346,7 +352,7 @@ contains
                 monte_carlo, seed, trials, record_columns, record_units, loss, u_inertia, &
                 u_cg_depth, u_cg_offset, u_r, u_lambda, tare_i1, u_tare_i1, tare_mass, &
                 added_inertia, u_added_inertia, on_failure, session, record_frame_rate, &
-                calibration, tare, u_amplitude_scale, record_axes
+                calibration, tare, u_amplitude_scale, record_axes, record_split
             record_columns = ''
             read (rec, nml=measurement, iostat=ios2, iomsg=msg2)
             words = record_columns
@@ -378,6 +384,7 @@ contains
         end if
         if (trim(self%quantity) == 'rates') line = line//' record_axes = '// &
             quoted(self%record_axes)//','
+        if (self%record_split) line = line//' record_split = .true.,'
         if (self%record_frame_rate > 0.0_dp) line = line//' record_frame_rate = '// &
             rshort(self%record_frame_rate)//','
         if (len_trim(self%record_units) > 0) line = line//' record_units = '// &

@@ -206,7 +206,9 @@ contains
         character(len=:), allocatable :: s
         s = ''
         if (.not. m%from_table) return
-        s = 'trial '//quoted(m%releases(i)%label)//' (line '//itoa(m%releases(i)%line)//')'
+        s = 'trial '//quoted(m%releases(i)%label)
+        ! a segment of a record (record_split) has no line of its own
+        if (m%releases(i)%line > 0) s = s//' (line '//itoa(m%releases(i)%line)//')'
     end function named
 
 end module measurement

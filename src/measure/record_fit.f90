@@ -663,7 +663,6 @@ contains
         real(dp), intent(in) :: y(:)            !! chart state there
         type(status_t), intent(out) :: stat
         real(dp) :: g(NSTATE, sink%nout), f(NSTATE), v(sink%nout)
-        integer :: o
         stat%code = 0
         if (sink%ns == 0 .and. .not. sink%shift) then
             if (sink%rates) then
@@ -677,10 +676,14 @@ contains
         sink%vals(:, k) = v
         select type (m)
         type is (kane_run_t)
-            do o = 1, sink%nout
-                if (stat%code == 0 .and. sink%ns > 0) &
-                    call m%sens_dot_at(t, g(:, o), sink%dvals(:, o, k), stat)
-            end do
+            if (sink%ns > 0) then
+                if (sink%nout == 1) then
+                    call m%sens_dot_at(t, g(:, 1), sink%dvals(:, 1, k), stat)
+                else
+                    ! the three axes share the dense output's interpolation
+                    call m%sens_dots_at(t, g, sink%dvals(:, :, k), stat)
+                end if
+            end if
             if (stat%code == 0 .and. sink%shift) then
                 call m%slope_at(t, f, stat)
                 sink%slope(:, k) = matmul(f, g)

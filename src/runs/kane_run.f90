@@ -34,6 +34,7 @@ module kane_run
         procedure :: dense => kane_dense
         procedure :: slope_at => kane_slope_at
         procedure :: sens_dot_at => kane_sens_dot_at
+        procedure :: sens_dots_at => kane_sens_dots_at
     end type kane_run_t
 
     public :: kane_run_start, model_checks, tighter_rtol, angle_difference, sway_of, global_rtol
@@ -125,6 +126,27 @@ contains
             call m%solver%sens_dense_dot(min(t, m%t_cur), g, v, stat)
         end if
     end subroutine kane_sens_dot_at
+
+    !> g(:, o) . s_k(t) for several vectors at once (v(k, o)), as kane_sens_dot_at on each
+    !! column to the last bit, the integrator's dense output shared between them.
+    subroutine kane_sens_dots_at(m, t, g, v, stat)
+        class(kane_run_t), intent(in) :: m
+        real(dp), intent(in) :: t
+        real(dp), intent(in) :: g(:, :)         !! (NSTATE, m)
+        real(dp), intent(out) :: v(:, :)        !! (ns, m)
+        type(status_t), intent(out) :: stat
+        integer :: k, o
+        stat%code = 0
+        if (m%nsteps == 0) then
+            do o = 1, size(g, 2)
+                do k = 1, size(v, 1)
+                    v(k, o) = dot_product(g(:, o), m%s0(:, k))
+                end do
+            end do
+        else
+            call m%solver%sens_dense_dots(min(t, m%t_cur), g, v, stat)
+        end if
+    end subroutine kane_sens_dots_at
 
     !> The state's derivative f(y) at t (the right-hand side at the start before any step,
     !! the derivative of the integrator's dense output within the last step).
