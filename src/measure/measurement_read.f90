@@ -328,8 +328,8 @@ contains
                         return
                     end if
                     has_record(it) = .true.
-                    o = observation_t(kind=OBS_RECORD, release=it, line=ct%line(i))
-                    o%file = record_in_folder(mea%trials_path, trim(rec))
+                    o = observation_t(kind=OBS_RECORD, release=it, line=ct%line(i), &
+                                      file=record_in_folder(mea%trials_path, trim(rec)))
                     ! one record is one release: listed twice it would count twice
                     do k = 1, no
                         if (obs(k)%kind /= OBS_RECORD) cycle
@@ -375,7 +375,7 @@ contains
                                     '0 <= u_period < period (s)')
                 if (stat%code /= STATUS_OK) return
                 has_periods(it) = .true.
-                o = observation_t(kind=OBS_TIMING, release=it, line=ct%line(i))
+                o = observation_t(kind=OBS_TIMING, release=it, line=ct%line(i), file='')
                 call set_timing(o, per, cyc, amp, up)
                 no = no + 1
                 obs(no) = o
