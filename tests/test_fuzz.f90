@@ -9,7 +9,8 @@ module test_fuzz
     use, intrinsic :: iso_fortran_env, only: compiler_options
     use kinds, only: dp
     use status, only: status_t
-    use testing, only: tester_t, write_text, file_has, count_lines, no_nan, upper, fresh_dir
+    use testing, only: tester_t, write_text, file_has, count_lines, no_nan, upper, fresh_dir, &
+        children_cpu_seconds
     use text, only: itoa
     use monte_carlo, only: MC_ANALYSIS
     use design, only: DESIGN_STAGES
@@ -31,9 +32,12 @@ module test_fuzz
     integer, parameter :: FUZZ_BATCH = 40
     integer, parameter :: FUZZ_BATCH_SECONDS = 120, FUZZ_DECK_SECONDS = 10
     !> The rule: a small deck ends within FUZZ_SMALL_SECONDS or has said on one line
-    !! ('bifilar: note:') what it does and how long it takes; a batch slower than that is
-    !! run again deck by deck under `timeout FUZZ_SMALL_SECONDS`.
-    !! (In the checking build, -fcheck=all and no optimisation, three times as long.)
+    !! ('bifilar: note:') what it does and how long it takes.  Seconds of CPU time, which
+    !! the load of the machine does not inflate: a batch that used more than that is run
+    !! again deck by deck on one thread under a CPU-time limit of FUZZ_SMALL_SECONDS
+    !! (`ulimit -S -t`; the program's note comes after 5 s of wall time, never later than
+    !! that CPU time), and a deck cut off there must have printed its note.  (In the
+    !! checking build, -fcheck=all and no optimisation, three times as long.)
     integer, parameter :: FUZZ_SMALL_SECONDS = 10
     !> Decks of analysis tensor (input/tensor_example.nml made small: &tensor and its
     !! table of hangs mutated), after the seeds' decks, FUZZ_TENSOR_BATCH at a time (a
@@ -116,7 +120,7 @@ contains
             'a file of a failed deck left', 'NaN, Inf or **** written', &
             'exit status not the worst of the decks''', 'a kind of error that is no exit status', &
             'a finished analysis''s file missing, empty or cut short', &
-            'past 10 s with no ''bifilar: note:'' line']
+            'past 10 s of CPU with no ''bifilar: note:'' line']
         call fresh_dir(dir)
         call load_bases(dir, bases, rec)
         call t%check('fuzz: shipped decks to mutate (at least 30)', size(bases) >= 30)
@@ -186,7 +190,7 @@ contains
             nmeasure_kind(3), ' platforms, ', nmeasure_kind(4), ' records by column name or '// &
             'frame rate)'
         write (*, '(a,i0,a,i0,a)') '   fuzz: ', nslow, ' decks ran past ', &
-            small_seconds, ' s alone (each must have said so on a note line)'
+            small_seconds, ' s of CPU alone (each must have said so on a note line)'
         write (*, '(a,i0,a,i0,a,6(i0,a))') '   fuzz: ', ndeck, ' decks from ', size(bases), &
             ' shipped decks; exit 0: ', counts(0), ', 2: ', counts(2), ', 3: ', counts(3), &
             ', 4: ', counts(4), ', 5: ', counts(5), ', other: ', counts(1), ''
@@ -223,7 +227,7 @@ contains
             integer :: i, st, w, wk, wt
             logical :: one_line
             character(len=:), allocatable :: kind
-            integer(8) :: c0, c1, rate
+            real(dp) :: cpu0, cpu1
             call fresh_dir(outdir)
             cmd = 'timeout '//itoa(FUZZ_BATCH_SECONDS)//' '//exe
             do i = 1, n
@@ -231,15 +235,15 @@ contains
             end do
             if (ckpt) cmd = cmd//' --checkpoint 0'
             ex = -1
-            call system_clock(c0, rate)
+            cpu0 = children_cpu_seconds()
             call execute_command_line(cmd//' --out '//outdir//' > '//dir//'/stdout 2> '// &
                                       dir//'/stderr', exitstat=ex)
-            call system_clock(c1)
+            cpu1 = children_cpu_seconds()
             if (abnormal(ex, dir//'/stderr')) then
                 call rerun_alone(n)
                 return
             end if
-            if (real(c1 - c0, dp)/real(rate, dp) > small_seconds) then
+            if (cpu1 - cpu0 > small_seconds) then
                 call slow_alone(n)
                 call fresh_dir(outdir)
                 call execute_command_line(cmd//' --out '//outdir//' > '//dir//'/stdout 2> '// &
@@ -311,18 +315,21 @@ contains
             culprit = abnormal(e, dir//'/stderr')
         end subroutine run_batch_alone_one
 
-        !> A batch slower than FUZZ_SMALL_SECONDS: each deck alone under timeout
-        !! FUZZ_SMALL_SECONDS; one cut off must have said what it does on a note line.
+        !> A batch that used more than FUZZ_SMALL_SECONDS of CPU time: each deck alone, on
+        !! one thread, under a CPU-time limit of FUZZ_SMALL_SECONDS (SIGXCPU, exit 152;
+        !! SIGKILL, 137, past a hard limit) and, for a deck that waits without computing,
+        !! the batch's timeout (124); one cut off must have said what it does on a note line.
         subroutine slow_alone(n)
             integer, intent(in) :: n
             integer :: i, e
             do i = 1, n
                 call fresh_dir(outdir)
                 e = -1
-                call execute_command_line('timeout '//itoa(small_seconds)//' '//exe// &
+                call execute_command_line('ulimit -c 0; ulimit -S -t '//itoa(small_seconds)// &
+                    '; OMP_NUM_THREADS=1 timeout '//itoa(FUZZ_BATCH_SECONDS)//' '//exe// &
                     ' '//trim(paths(i))//' --out '//outdir//' > '//dir//'/stdout 2> '//dir// &
                     '/stderr', exitstat=e)
-                if (e == 124) then
+                if (e == 124 .or. e == 137 .or. e == 152) then
                     nslow = nslow + 1
                     if (count_lines(dir//'/stderr', 'bifilar: note: '//trim(paths(i))//': ', &
                                     .true.) /= 1) call bad(8, trim(names(i)))

@@ -6,12 +6,13 @@ module testing
     use status, only: status_t
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use crc64, only: crc64_of, hex16
+    use, intrinsic :: iso_c_binding, only: c_int, c_long
     implicit none
     private
 
     public :: write_text, exists, file_has, count_lines, line_starts, first_line, read_kv_text
     public :: run, shell_count, scratch_dir, fresh_dir, empty_dir, abs_path, no_nan
-    public :: msg_of, upper, seal_records, message_lines
+    public :: msg_of, upper, seal_records, message_lines, children_cpu_seconds
 
     type, public :: tester_t
         integer :: passed = 0
@@ -25,7 +26,30 @@ module testing
         procedure :: summary
     end type tester_t
 
+    interface
+        !> C library getrusage(2); `usage` is struct rusage (18 longs on Linux, room left).
+        integer(c_int) function c_getrusage(who, usage) bind(C, name='getrusage')
+            import :: c_int, c_long
+            integer(c_int), value :: who
+            integer(c_long), intent(out) :: usage(*)
+        end function c_getrusage
+    end interface
+
 contains
+
+    !> CPU seconds (user and system) of every child process this process has waited for,
+    !! with their own waited-for children (getrusage RUSAGE_CHILDREN): a command's CPU time
+    !! is the difference across its execute_command_line, which the load of the machine
+    !! does not inflate as it does the wall time.
+    function children_cpu_seconds() result(s)
+        real(dp) :: s
+        integer(c_int), parameter :: RUSAGE_CHILDREN = -1_c_int
+        integer(c_long) :: ru(32)
+        ru = 0
+        s = 0.0_dp
+        if (c_getrusage(RUSAGE_CHILDREN, ru) /= 0) return
+        s = real(ru(1) + ru(3), dp) + 1.0e-6_dp*real(ru(2) + ru(4), dp)
+    end function children_cpu_seconds
 
     !> True when the part of a suite labelled `name` is to run (no filter, or the filter is
     !! part of the label); counts the parts that run.
