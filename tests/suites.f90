@@ -36,6 +36,7 @@ module suites
     use test_sensitivities, only: run_sensitivities_tests
     use test_rates, only: run_rates_tests
     use test_split, only: run_split_tests
+    use test_point, only: run_point_tests
     use test_tensor, only: run_tensor_tests
     use test_refusals, only: run_refusals_tests
     use test_tensor_lab, only: run_tensor_lab_tests
@@ -130,6 +131,8 @@ contains
                     run_rates_tests), &
             suite_t('split', 'a record of several releases cut at its holds, the segments '// &
                     'pooled as a table', run_split_tests), &
+            suite_t('point', 'records of a tracked point (video): model vs pose, '// &
+                    'sensitivities, sway, scale, refusals', run_point_tests), &
             suite_t('stats', 'Student''s t, chi-square tails, Welch-Satterthwaite, weighted '// &
                     'means', run_stats_tests), &
             suite_t('estimator', 'least squares: known answers, rank deficiency, Huber, '// &

@@ -1214,6 +1214,13 @@ contains
                 e = e - prob%axes(k, 1)*es((k - 1)*ms + 1:k*ms)
             end do
             r%determined = .true.
+        else if (prob%point) then
+            ! a tracked point's two coordinates: e and the model those of the one the
+            ! record's v holds (vcol)
+            es = fit%r/stacked_weights(prob)
+            r%residual_rms = sqrt(sum(es**2)/m)
+            e = es((prob%vcol - 1)*ms + 1:prob%vcol*ms)
+            r%determined = .true.
         else
             e = fit%r/(prob%w(i0:prob%nuse)*prob%hw(i0:prob%nuse))
             r%residual_rms = sqrt(sum(e**2)/m)

@@ -159,6 +159,8 @@ contains
                 return
             end if
         end block
+        call check_point()
+        if (stat%code /= STATUS_OK) return
         call check_word(stat, 'measurement', 'on_failure', self%on_failure, ON_FAILURE_ALLOWED)
         if (stat%code /= STATUS_OK) return
         if (len_trim(self%session) > 64) then
@@ -257,6 +259,44 @@ contains
                      'number of Monte Carlo samples out of range', '0 (first order only) '// &
                      'or 2 <= monte_carlo <= '//itoa(MAX_MONTE_CARLO))
     contains
+        !> quantity 'point': the tracked point given (record_point), the view a word of
+        !! VIEWS_ALLOWED, the record's scale > 0; estimate = 'scale' not with the amplitude of
+        !! a record of one value (the two only change the swing's size together).
+        subroutine check_point()
+            call check_word(stat, 'measurement', 'record_view', self%record_view, VIEWS_ALLOWED)
+            if (stat%code /= STATUS_OK) return
+            call positive(stat, 'measurement', 'record_scale', self%record_scale, &
+                          'the length of one unit of the record''s columns (m, e.g. m/px), '// &
+                          '> 0 (1: the columns are metres)')
+            if (stat%code /= STATUS_OK) return
+            if (trim(quantity) == 'point') then
+                if (any(self%record_point == PERIOD_UNSET)) then
+                    call bad(stat, 'measurement', 'record_point', 'not given', &
+                             'quantity = ''point'' tracks a point of the body', 'record_point '// &
+                             '= x, y, z: the point in the body''s principal axes from the mass '// &
+                             'centre (m), e.g. record_point = 0, 0.05, 0')
+                    return
+                end if
+                do i = 1, 3
+                    call finite(stat, 'measurement', 'record_point('//itoa(i)//')', &
+                                self%record_point(i))
+                end do
+                if (stat%code /= STATUS_OK) return
+                if (sus%cables > 2) then
+                    call bad(stat, 'measurement', 'quantity', '''point''', 'with a platform '// &
+                             'of '//itoa(sus%cables)//' cables', 'quantity = ''point'' with a '// &
+                             'bifilar (2 cables); a platform''s record as angle, rate or rates')
+                    return
+                end if
+            end if
+            if (self%estimated('scale') .and. self%estimated('amplitude') .and. &
+                trim(quantity) /= 'point' .and. trim(quantity) /= 'rates') then
+                call bad(stat, 'measurement', 'estimate', quoted(trim(self%estimate)), &
+                         'the record cannot separate scale and amplitude (a record of one '// &
+                         'value: both only change the swing''s size)', 'estimate one of them, '// &
+                         'or quantity = ''point'' or ''rates''')
+            end if
+        end subroutine check_point
         !> record_columns: numbers (1 .. 100) or names of the header's columns, the value's
         !! given, the time's too unless record_frame_rate gives the time from the row; no
         !! column twice; a name that starts as a number does but is none refused.

@@ -25,7 +25,7 @@ module measure_groups
     !> Words allowed in &measurement estimate: the parameters a record fit can estimate.
     !! amplitude_scale: the scale every timed period's amplitude is read on (periods only).
     character(len=*), parameter, public :: ESTIMATES_ALLOWED = 'I1 c_v c_q amplitude t0 bias '// &
-        'amplitude_scale I2 I3 cg_depth tilt sway'
+        'amplitude_scale I2 I3 cg_depth tilt sway scale'
     !> Words allowed in &measurement record_units (each implies the quantity).
     character(len=*), parameter, public :: RECORD_UNITS_ALLOWED = 'rad deg rad/s deg/s'
     !> Words allowed in &measurement loss.
@@ -33,7 +33,10 @@ module measure_groups
     !> Words allowed in &measurement on_failure: what a release that fails does to the run.
     character(len=*), parameter, public :: ON_FAILURE_ALLOWED = 'stop skip'
     !> Words allowed in &measurement quantity: column 2 of a record.
-    character(len=*), parameter, public :: QUANTITIES_ALLOWED = 'angle rate rates'
+    character(len=*), parameter, public :: QUANTITIES_ALLOWED = 'angle rate rates point'
+    !> Words allowed in &measurement record_view (quantity 'point'): the camera looks up the
+    !! vertical (below: the point's horizontal position) or along a horizontal (side).
+    character(len=*), parameter, public :: VIEWS_ALLOWED = 'below side'
     public :: check_estimate, parse_axes
     !> Most Monte Carlo samples of &measurement and &tensor monte_carlo.
     integer, parameter :: MAX_MONTE_CARLO = 1000000
@@ -80,6 +83,12 @@ module measure_groups
         !> the record holds several releases, each after the body was held still: cut at
         !! its holds (module record_split), each segment a release, pooled as a table's
         logical :: record_split = .false.
+        !> quantity 'point': the tracked point in the body's principal axes from the mass
+        !! centre (m; PERIOD_UNSET: not given), the camera's view (VIEWS_ALLOWED) and the
+        !! record's scale (m per unit of a column, e.g. m/px; 1: the columns are metres)
+        real(dp) :: record_point(3) = PERIOD_UNSET
+        character(len=256) :: record_view = 'below'
+        real(dp) :: record_scale = 1.0_dp
         character(len=256) :: loss = 'squares'    !! LOSSES_ALLOWED: the record fit's loss
         !> standard uncertainties of I2 and I3 (u_inertia(1) alone serves both: normalise),
         !! of the mass centre (as measured: cg_depth, cg_offset; or r (length) and lambda
@@ -194,7 +203,8 @@ contains
             'loss:c1 u_inertia:r2 u_cg_depth:r1 u_cg_offset:r1 u_r:r1 u_lambda:r1 tare_i1:r1 '// &
             'u_tare_i1:r1 tare_mass:r1 added_inertia:r1 u_added_inertia:r1 '// &
             'on_failure:c1 session:c1 record_frame_rate:r1 calibration:c1 tare:c1 '// &
-            'u_amplitude_scale:r1 record_axes:c1 record_split:l1'
+            'u_amplitude_scale:r1 record_axes:c1 record_split:l1 record_point:r3 '// &
+            'record_view:c1 record_scale:r1'
     end function measurement_spec
 
     !> &measurement; n_periods counts the leading periods given (check refuses gaps).
@@ -209,6 +219,8 @@ contains
         real(dp) :: periods(MAX_PERIODS), amplitudes(MAX_PERIODS), cycles(MAX_PERIODS)
         character(len=256) :: record, quantity, estimate, trials, record_units, loss
         character(len=256) :: on_failure, session, calibration, tare, record_axes
+        character(len=256) :: record_view
+        real(dp) :: record_point(3), record_scale
         real(dp) :: u_mass, u_l, u_l_prime, u_b, u_b_prime, u_g, u_period, u_amplitude
         real(dp) :: u_inertia(2), u_cg_depth, u_cg_offset, u_r, u_lambda
         real(dp) :: tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia
@@ -221,7 +233,7 @@ contains
             trials, record_columns, record_units, loss, u_inertia, u_cg_depth, u_cg_offset, &
             u_r, u_lambda, tare_i1, u_tare_i1, tare_mass, added_inertia, u_added_inertia, &
             on_failure, session, record_frame_rate, calibration, tare, u_amplitude_scale, &
-            record_axes, record_split
+            record_axes, record_split, record_point, record_view, record_scale
         call defaults()
         words = ''
         read (rec, nml=measurement, iostat=ios, iomsg=msg)
@@ -272,6 +284,9 @@ contains
         self%record_frame_rate = record_frame_rate
         self%record_axes = record_axes
         self%record_split = record_split
+        self%record_point = record_point
+        self%record_view = record_view
+        self%record_scale = record_scale
         self%record_units = record_units
         self%loss = loss
         if (u_inertia(1) /= PERIOD_UNSET) then
@@ -337,6 +352,9 @@ contains
             record_frame_rate = self%record_frame_rate
             record_axes = self%record_axes
             record_split = self%record_split
+            record_point = self%record_point
+            record_view = self%record_view
+            record_scale = self%record_scale
             on_failure = self%on_failure
             session = self%session
             calibration = self%calibration
@@ -352,7 +370,8 @@ contains
                 monte_carlo, seed, trials, record_columns, record_units, loss, u_inertia, &
                 u_cg_depth, u_cg_offset, u_r, u_lambda, tare_i1, u_tare_i1, tare_mass, &
                 added_inertia, u_added_inertia, on_failure, session, record_frame_rate, &
-                calibration, tare, u_amplitude_scale, record_axes, record_split
+                calibration, tare, u_amplitude_scale, record_axes, record_split, &
+                record_point, record_view, record_scale
             record_columns = ''
             read (rec, nml=measurement, iostat=ios2, iomsg=msg2)
             words = record_columns
@@ -385,6 +404,9 @@ contains
         if (trim(self%quantity) == 'rates') line = line//' record_axes = '// &
             quoted(self%record_axes)//','
         if (self%record_split) line = line//' record_split = .true.,'
+        if (trim(self%quantity) == 'point') line = line//' record_point = '// &
+            rlist_short(self%record_point)//', record_view = '//quoted(self%record_view)// &
+            ', record_scale = '//rshort(self%record_scale)//','
         if (self%record_frame_rate > 0.0_dp) line = line//' record_frame_rate = '// &
             rshort(self%record_frame_rate)//','
         if (len_trim(self%record_units) > 0) line = line//' record_units = '// &
@@ -482,9 +504,10 @@ contains
         if (nc == 1) self%cycles(2:max(1, self%n_periods)) = self%cycles(1)
         where (self%cycles == PERIOD_UNSET) self%cycles = 1.0_dp
         self%record_axes = lower(adjustl(self%record_axes))
+        self%record_view = lower(adjustl(self%record_view))
         if (len_trim(self%record_units) > 0) then
             self%record_units = lower(adjustl(self%record_units))
-            if (trim(self%quantity) /= 'rates') &
+            if (trim(self%quantity) /= 'rates' .and. trim(self%quantity) /= 'point') &
                 self%quantity = merge('rate ', 'angle', index(self%record_units, '/s') > 0)
         end if
         self%loss = lower(adjustl(self%loss))

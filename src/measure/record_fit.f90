@@ -81,10 +81,19 @@ module record_fit
     integer, parameter, public :: P_I1 = 1, P_CV = 2, P_CQ = 3, P_AMP = 4, P_T0 = 5, P_BIAS = 6
     integer, parameter, public :: P_I2 = 7, P_I3 = 8, P_CG = 9, P_TILT = 10, P_SWAY = 11, &
         P_BIAS_Y = 12, P_BIAS_Z = 13
-    integer, parameter, public :: NPARAM = 13
+    !> scale, scale_y, scale_z: the record's scale (record_scale, the quantity per unit of
+    !! a column: the model of a column is its value over the scale), one for quantity
+    !! 'point' (both columns), each axis's with quantity 'rates' (estimate = 'scale' asks
+    !! for all three), the one column's otherwise.
+    integer, parameter, public :: P_SCALE = 14, P_SCALE_Y = 15, P_SCALE_Z = 16
+    integer, parameter, public :: NPARAM = 16
     character(len=9), parameter, public :: PARAM_NAMES(NPARAM) = [character(len=9) :: 'I1', &
         'c_v', 'c_q', 'amplitude', 't0', 'bias', 'I2', 'I3', 'cg_depth', 'tilt', 'sway', &
-        'bias_y', 'bias_z']
+        'bias_y', 'bias_z', 'scale', 'scale_y', 'scale_z']
+    !> Quantity 'point': the camera's view, VIEW_BELOW (looking up the vertical: the point's
+    !! horizontal position, n_1 and n_2 components) or VIEW_SIDE (looking along n_1: the
+    !! horizontal n_2 component and the vertical n_3 one, up).
+    integer, parameter, public :: VIEW_BELOW = 1, VIEW_SIDE = 2
 
     !> What a run of the record model depends on: the rig, the start and the release.
     type, public :: run_point_t
@@ -112,6 +121,12 @@ module record_fit
         logical :: rates = .false.
         real(dp) :: axes(3, 3) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, &
                                           0.0_dp, 0.0_dp, 1.0_dp], [3, 3])
+        !> quantity 'point': the position (m) of the body's point q (m, in the principal
+        !! axes from the mass centre) the camera sees (view: VIEW_BELOW, VIEW_SIDE) less its
+        !! position at zero angles (point_position); a run's values two blocks of the samples
+        logical :: point = .false.
+        real(dp) :: q(3) = 0.0_dp
+        integer :: view = VIEW_BELOW
         !> The budget's inputs (set_carry) and the columns of those with u > 0, which a
         !! whole-record run near the minimum carries
         type(input_t), allocatable :: x(:)
@@ -163,7 +178,14 @@ module record_fit
         !> quantity 'rates': three values a sample (rec%vs), axes(k, :) the instrument's axis
         !! k in the body's principal axes; the residuals are three blocks of the samples
         logical :: rates = .false.
-        integer :: nout = 1                     !! values a sample: 1, or 3 ('rates')
+        !> quantity 'point': two values a sample (rec%vs), the position of the body's point q
+        !! (m) seen from view (record_runs_t); scale(k): the record's scale of value k
+        logical :: point = .false.
+        real(dp) :: q(3) = 0.0_dp
+        integer :: view = VIEW_BELOW
+        real(dp) :: scale(3) = 1.0_dp
+        integer :: vcol = 1                     !! 'point': the coordinate rec%v holds
+        integer :: nout = 1                     !! values a sample: 1, 2 ('point') or 3 ('rates')
         real(dp) :: axes(3, 3) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, &
                                           0.0_dp, 0.0_dp, 1.0_dp], [3, 3])
         integer :: ifirst = 1                   !! first sample fitted
@@ -204,6 +226,16 @@ module record_fit
         integer :: nout = 1                     !! values a sample
         real(dp) :: axes(3, 3) = 0.0_dp         !! the instrument's axes (rates)
         real(dp) :: btilde(3, 3) = 0.0_dp       !! the body's principal axes (rates)
+        !> quantity 'point': the body's point (m), the view, the pendulum and b' (m) of the
+        !! run, and of each column moved by +-hc(c) (the position's own change along the
+        !! column at a fixed state: point_partial)
+        logical :: point = .false.
+        real(dp) :: q(3) = 0.0_dp
+        integer :: view = VIEW_BELOW
+        type(pendulum_t) :: p
+        real(dp) :: bp = 1.0_dp
+        type(pendulum_t), allocatable :: pp(:), pm(:)
+        real(dp), allocatable :: bpp(:), bpm(:), hc(:)
         real(dp), allocatable :: vals(:, :)     !! (nout, 0:) theta4 (rad) or W, or the rates
                                                 !! (rad per unit tau)
         integer :: ns = 0                       !! forward sensitivities carried (0: none)
@@ -247,6 +279,7 @@ module record_fit
     public :: correlation_time, apply_parameters, fresh_jacobian, estimated_names
     public :: body_rates, body_rates_gradient, record_determines
     public :: stacked_values, stacked_weights, vertical_of_rates
+    public :: point_position, point_gradient, runs_nout
 
     real(dp), parameter, public :: H_REL = 1.0e-5_dp        !! relative difference step of the model
     real(dp), parameter :: DAMP_REF = 1.0e-3_dp     !! scale of c_v, c_q (model's units)
@@ -278,7 +311,7 @@ contains
     !! the body's principal axes, vals three blocks of n (body_rates).  A sample before
     !! t0 sees the start.  The model runs through the run loop (accuracy acc: rtol, atol,
     !! integrator), in memory.
-    subroutine record_model(rg, st, acc, t, t0, rate, vals, stat, axes)
+    subroutine record_model(rg, st, acc, t, t0, rate, vals, stat, axes, point, view)
         type(rig_t), intent(in) :: rg           !! the rig (I1, damping as fitted)
         type(start_t), intent(in) :: st         !! the start (amplitude as fitted)
         type(accuracy_t), intent(in) :: acc     !! rtol, atol, integrator
@@ -288,6 +321,10 @@ contains
         real(dp), intent(out) :: vals(:)        !! the model at t(1:size(vals)) (or 3 blocks)
         type(status_t), intent(out) :: stat     !! the start's or the run's failure
         real(dp), intent(in), optional :: axes(3, 3)    !! quantity 'rates': the instrument's
+        !> quantity 'point': the body's point (m, principal axes from the mass centre), and
+        !! the view (VIEW_BELOW, the default, or VIEW_SIDE): vals two blocks of n
+        real(dp), intent(in), optional :: point(3)
+        integer, intent(in), optional :: view
         type(record_runs_t) :: ev
         type(run_columns_t) :: none
         real(dp) :: dv(size(vals), 0)
@@ -298,6 +335,11 @@ contains
             ev%rate = .true.
             ev%axes = axes
         end if
+        if (present(point)) then
+            ev%point = .true.
+            ev%q = point
+            if (present(view)) ev%view = view
+        end if
         allocate (none%names(0), none%xs(0))
         call ev%run(run_point_t(rg, st, t0), t, none, vals, dv, stat)
     end subroutine record_model
@@ -306,7 +348,8 @@ contains
     !! (a fit parameter, 'I1', 'c_v', 'c_q', 'amplitude', 't0', or an input of module
     !! inputs), from the forward sensitivities of one run (see the module header); xs(c) the
     !! size of quantity c (its difference steps are 1e-5 xs(c)).
-    subroutine record_model_sens(rg, st, acc, t, t0, rate, names, xs, vals, dvals, stat, axes)
+    subroutine record_model_sens(rg, st, acc, t, t0, rate, names, xs, vals, dvals, stat, axes, &
+                                 point, view)
         type(rig_t), intent(in) :: rg           !! the rig
         type(start_t), intent(in) :: st         !! the start
         type(accuracy_t), intent(in) :: acc     !! rtol, atol, integrator
@@ -319,6 +362,10 @@ contains
         real(dp), intent(out) :: dvals(:, :)    !! (size(vals), size(names))
         type(status_t), intent(out) :: stat     !! the start's or the run's failure
         real(dp), intent(in), optional :: axes(3, 3)    !! quantity 'rates': the instrument's
+        !> quantity 'point': the body's point (m, principal axes from the mass centre), and
+        !! the view (VIEW_BELOW, the default, or VIEW_SIDE): vals two blocks of n
+        real(dp), intent(in), optional :: point(3)
+        integer, intent(in), optional :: view
         type(record_runs_t) :: ev
         type(run_columns_t) :: cols
         ev%acc = acc
@@ -327,6 +374,11 @@ contains
             ev%rates = .true.
             ev%rate = .true.
             ev%axes = axes
+        end if
+        if (present(point)) then
+            ev%point = .true.
+            ev%q = point
+            if (present(view)) ev%view = view
         end if
         allocate (cols%names(size(names)))
         cols%names = names
@@ -362,6 +414,7 @@ contains
         real(dp) :: y0(NSTATE), th0(5), s, yp(NSTATE), ym(NSTATE), th(5), h
         real(dp) :: sfac, dtau
         real(dp), allocatable :: taus(:), s0(:, :), scale(:), ds(:), dt0(:), v0(:), g0(:, :)
+        real(dp), allocatable :: pg0(:, :)
         type(rig_t) :: rg
         type(start_t) :: st
         type(accuracy_t) :: acc
@@ -374,10 +427,10 @@ contains
         st = pt%st
         t0 = pt%t0
         acc = self%acc
-        rate = self%rate .or. self%rates
+        rate = (self%rate .or. self%rates) .and. .not. self%point
         names = cols%names
         xs = cols%xs
-        nout = merge(3, 1, self%rates)
+        nout = runs_nout(self)
         n = size(vals)/nout
         nq = size(names)
         vals = 0.0_dp
@@ -451,6 +504,33 @@ contains
         end do
         shift = any(ds /= 0.0_dp) .or. any(dt0 /= 0.0_dp)
         ns = nq
+        if (self%point) then
+            ! the point's position depends on the rig at a fixed state too (b', L, B, r,
+            ! lambda): the pendulums of each column moved, for point_partial
+            sink%point = .true.
+            sink%q = self%q
+            sink%view = self%view
+            sink%p = p
+            sink%bp = rg%b_prime
+            allocate (sink%pp(nq), sink%pm(nq), sink%bpp(nq), sink%bpm(nq), sink%hc(nq))
+            do c = 1, nq
+                sink%pp(c) = p
+                sink%pm(c) = p
+                sink%bpp(c) = rg%b_prime
+                sink%bpm(c) = rg%b_prime
+                sink%hc(c) = 1.0_dp
+                if (trim(names(c)) == 't0') cycle
+                h = FD_REL*xs(c)
+                call moved(names(c), h, rp, sp)
+                call moved(names(c), -h, rm, sm)
+                call make_pendulum(rp, sink%pp(c), stat)
+                if (stat%code == 0) call make_pendulum(rm, sink%pm(c), stat)
+                if (stat%code /= 0) return
+                sink%bpp(c) = rp%b_prime
+                sink%bpm(c) = rm%b_prime
+                sink%hc(c) = h
+            end do
+        end if
         sink%rate = rate
         sink%rates = self%rates
         sink%nout = nout
@@ -479,6 +559,15 @@ contains
                 if (rate) dvals(k + 1:k + i0 - 1, c) = dvals(k + 1:k + i0 - 1, c) + v0(o)*ds(c)
             end do
         end do
+        if (self%point .and. i0 > 1) then
+            pg0 = point_partial(sink, y0)
+            do o = 1, nout
+                k = (o - 1)*n
+                do c = 1, nq
+                    dvals(k + 1:k + i0 - 1, c) = dvals(k + 1:k + i0 - 1, c) + pg0(o, c)
+                end do
+            end do
+        end if
         if (i0 > n) return
         allocate (taus(0:n - i0), sink%vals(nout, 0:n - i0), sink%dvals(ns, nout, 0:n - i0), &
                   sink%slope(nout, 0:n - i0))
@@ -536,6 +625,108 @@ contains
             end select
         end subroutine moved
     end subroutine run
+
+    !> The values a sample of the evaluator's runs has: 1, 2 (quantity 'point') or 3
+    !! ('rates').
+    pure integer function runs_nout(self) result(nout)
+        class(record_runs_t), intent(in) :: self
+        nout = 1
+        if (self%rates) nout = 3
+        if (self%point) nout = 2
+    end function runs_nout
+
+    !> The position (m) of the body's point q at a chart state, as the camera sees it: the
+    !! point P = R* + q_i b_i (q in the principal axes b_i from the mass centre R*, eqs.
+    !! (11), (21)-(22)), R* = C + r (s_lam ntilde_1 - c_lam ntilde_3), C = B + L e (the
+    !! cable's direction e from the state's sigma), A the origin; view VIEW_BELOW: its n_1
+    !! and n_2 components; VIEW_SIDE: its n_2 and n_3 ones.  p the scaled pendulum, bp = b'
+    !! (m): P = b' (C + a_k ntilde_k), a = r (s_lam, 0, -c_lam) + btilde^T q / b'.
+    pure function point_position(p, bp, q, view, y) result(x)
+        type(pendulum_t), intent(in) :: p       !! the scaled pendulum
+        real(dp), intent(in) :: bp              !! b' (m)
+        real(dp), intent(in) :: q(3)            !! the point in the principal axes (m)
+        integer, intent(in) :: view             !! VIEW_BELOW or VIEW_SIDE
+        real(dp), intent(in) :: y(NSTATE)       !! chart state
+        real(dp) :: x(2)
+        real(dp) :: n(3, 3), a(3), e(3), pos(3)
+        call frame(body_pose(y(1), y(4), y(5), 0.0_dp), n)
+        e = [y(2), y(3), -sqrt(max(0.0_dp, 1.0_dp - y(2)**2 - y(3)**2))]
+        a = p%r*[sin(p%lambda), 0.0_dp, -cos(p%lambda)] + matmul(transpose(p%btilde), q)/bp
+        pos = bp*([p%big_l*e(1), -p%big_b + p%big_l*e(2), p%big_l*e(3)] + matmul(a, n))
+        x = seen(pos, view)
+    end function point_position
+
+    !> The gradient of point_position with respect to the chart state, g(:, k) for value
+    !! k: the cable's sigma moves C by L (1, 0, sigma_1/zeta) and L (0, 1, sigma_2/zeta); an
+    !! angle moves a_k ntilde_k by a_k dntilde_k (the derivatives of eq. (8) of
+    !! body_rates_and_gradient); the rates do not move it.
+    pure function point_gradient(p, bp, q, view, y) result(g)
+        type(pendulum_t), intent(in) :: p       !! the scaled pendulum
+        real(dp), intent(in) :: bp              !! b' (m)
+        real(dp), intent(in) :: q(3)            !! the point in the principal axes (m)
+        integer, intent(in) :: view             !! VIEW_BELOW or VIEW_SIDE
+        real(dp), intent(in) :: y(NSTATE)       !! chart state
+        real(dp) :: g(NSTATE, 2)
+        real(dp) :: n(3, 3), dn(3, 3), a(3), zeta, s1, c1, s4, c4, s5, c5
+        s1 = sin(y(1))
+        c1 = cos(y(1))
+        s4 = sin(y(4))
+        c4 = cos(y(4))
+        s5 = sin(y(5))
+        c5 = cos(y(5))
+        call frame(body_pose(y(1), y(4), y(5), 0.0_dp), n)
+        zeta = sqrt(max(tiny(1.0_dp), 1.0_dp - y(2)**2 - y(3)**2))
+        a = p%r*[sin(p%lambda), 0.0_dp, -cos(p%lambda)] + matmul(transpose(p%btilde), q)/bp
+        g = 0.0_dp
+        g(2, :) = seen(bp*p%big_l*[1.0_dp, 0.0_dp, y(2)/zeta], view)
+        g(3, :) = seen(bp*p%big_l*[0.0_dp, 1.0_dp, y(3)/zeta], view)
+        ! theta1 turns the rows: ntilde_1' = ntilde_2, ntilde_2' = -ntilde_1
+        dn = 0.0_dp
+        dn(1, :) = n(2, :)
+        dn(2, :) = -n(1, :)
+        g(1, :) = seen(bp*matmul(a, dn), view)
+        ! theta4 the columns: n(:, 1)' = n(:, 2), n(:, 2)' = -n(:, 1)
+        dn(:, 1) = n(:, 2)
+        dn(:, 2) = -n(:, 1)
+        dn(:, 3) = 0.0_dp
+        g(4, :) = seen(bp*matmul(a, dn), view)
+        ! theta5 each entry's own
+        dn(1, :) = [c1*s4*c5, c1*c4*c5, c1*s5]
+        dn(2, :) = [-s1*s4*c5, -s1*c4*c5, -s1*s5]
+        dn(3, :) = [s4*s5, c4*s5, -c5]
+        g(5, :) = seen(bp*matmul(a, dn), view)
+    end function point_gradient
+
+    !> The two components of a position the camera of view sees.
+    pure function seen(pos, view) result(x)
+        real(dp), intent(in) :: pos(3)
+        integer, intent(in) :: view
+        real(dp) :: x(2)
+        if (view == VIEW_SIDE) then
+            x = pos(2:3)
+        else
+            x = pos(1:2)
+        end if
+    end function seen
+
+    !> The change of the point's position (less its position at zero angles) along each
+    !! column of a run at the fixed state y (the rig's own part: b', L, B, r, lambda,
+    !! btilde), central differences of the pendulums moved (record_sink_t): d(2, ns).
+    pure function point_partial(sink, y) result(d)
+        type(record_sink_t), intent(in) :: sink
+        real(dp), intent(in) :: y(NSTATE)
+        real(dp) :: d(2, sink%ns)
+        real(dp) :: z(NSTATE)
+        integer :: c
+        z = 0.0_dp
+        do c = 1, sink%ns
+            d(:, c) = ((point_position(sink%pp(c), sink%bpp(c), sink%q, sink%view, y) - &
+                        point_position(sink%pp(c), sink%bpp(c), sink%q, sink%view, z)) - &
+                       (point_position(sink%pm(c), sink%bpm(c), sink%q, sink%view, y) - &
+                        point_position(sink%pm(c), sink%bpm(c), sink%q, sink%view, z)))/ &
+                      (2.0_dp*sink%hc(c))
+        end do
+    end function point_partial
 
     !> theta4 (rad) or W = omega . n3 (rad per unit tau) of a chart state.
     pure real(dp) function output_value(rate, y) result(v)
@@ -646,7 +837,11 @@ contains
         type(record_sink_t), intent(in) :: sink
         real(dp), intent(in) :: y(NSTATE)
         real(dp), intent(out) :: v(:), g(:, :)
-        if (sink%rates) then
+        if (sink%point) then
+            v = point_position(sink%p, sink%bp, sink%q, sink%view, y) - &
+                point_position(sink%p, sink%bp, sink%q, sink%view, spread(0.0_dp, 1, NSTATE))
+            g = point_gradient(sink%p, sink%bp, sink%q, sink%view, y)
+        else if (sink%rates) then
             call body_rates_and_gradient(sink%btilde, sink%axes, y, v, g)
         else
             v(1) = output_value(sink%rate, y)
@@ -665,7 +860,11 @@ contains
         real(dp) :: g(NSTATE, sink%nout), f(NSTATE), v(sink%nout)
         stat%code = 0
         if (sink%ns == 0 .and. .not. sink%shift) then
-            if (sink%rates) then
+            if (sink%point) then
+                sink%vals(:, k) = point_position(sink%p, sink%bp, sink%q, sink%view, &
+                                                 y(1:NSTATE)) - point_position(sink%p, &
+                                  sink%bp, sink%q, sink%view, spread(0.0_dp, 1, NSTATE))
+            else if (sink%rates) then
                 sink%vals(:, k) = body_rates(sink%btilde, sink%axes, y(1:NSTATE))
             else
                 sink%vals(1, k) = output_value(sink%rate, y(1:NSTATE))
@@ -684,6 +883,9 @@ contains
                     call m%sens_dots_at(t, g, sink%dvals(:, :, k), stat)
                 end if
             end if
+            if (stat%code == 0 .and. sink%point .and. sink%ns > 0) &
+                sink%dvals(:, :, k) = sink%dvals(:, :, k) + &
+                                      transpose(point_partial(sink, y(1:NSTATE)))
             if (stat%code == 0 .and. sink%shift) then
                 call m%slope_at(t, f, stat)
                 sink%slope(:, k) = matmul(f, g)
@@ -716,7 +918,7 @@ contains
         stat%code = 0
         if (present(fresh)) fresh = .true.
         m = size(t)
-        mv = merge(3, 1, self%rates)*m          ! the values: nout blocks of the samples
+        mv = runs_nout(self)*m                  ! the values: nout blocks of the samples
         nfit = size(fit%names)
         derivs = nfit > 0
         if (derivs) then
@@ -727,7 +929,7 @@ contains
             self%last_whole = .false.
         end if
         if (self%valid .and. self%n >= m .and. (self%nfit == nfit .or. .not. derivs) .and. &
-            (.not. self%rates .or. self%n == m)) then
+            (.not. (self%rates .or. self%point) .or. self%n == m)) then
             if (same_point(self%key, pt)) then
                 vals = self%v(1:mv)
                 dv = self%dv(1:mv, 1:nfit)
@@ -811,7 +1013,7 @@ contains
         integer :: k
         ok = .false.
         if (.not. self%valid .or. self%n < m .or. self%nx /= ncols) return
-        if (self%rates .and. self%n /= m) return
+        if ((self%rates .or. self%point) .and. self%n /= m) return
         if (.not. allocated(self%x)) return
         if (size(self%x) /= size(x)) return
         do k = 1, size(x)
@@ -819,7 +1021,7 @@ contains
                 (self%x(k)%u > 0.0_dp .neqv. x(k)%u > 0.0_dp)) return
         end do
         ok = same_point(self%key, pt)
-        if (ok) dv = self%dv(1:merge(3, 1, self%rates)*m, self%nfit + 1:)
+        if (ok) dv = self%dv(1:runs_nout(self)*m, self%nfit + 1:)
     end subroutine carried
 
     !> The kept run and the derivatives to take again dropped, the gain set to 0: the next
@@ -851,12 +1053,13 @@ contains
 
     !> The rig and start with the parameters p of the fit set (I1, c_v, c_q, amplitude, I2,
     !! I3, cg_depth, tilt, sway), t0 and the bias of each value of a sample.
-    subroutine apply_parameters(prob, p, rg, st, t0, bias)
+    subroutine apply_parameters(prob, p, rg, st, t0, bias, scale)
         type(record_fit_t), intent(in) :: prob
         real(dp), intent(in) :: p(:)
         type(rig_t), intent(out) :: rg
         type(start_t), intent(out) :: st
         real(dp), intent(out) :: t0, bias(3)
+        real(dp), intent(out), optional :: scale(3)     !! the record's scale of each value
         integer :: j
         rg = prob%rg
         st = prob%st
@@ -888,11 +1091,47 @@ contains
                 bias(2) = p(j)
             case (P_BIAS_Z)
                 bias(3) = p(j)
+            case (P_SCALE, P_SCALE_Y, P_SCALE_Z)
+                continue
             case default
                 bias(1) = p(j)
             end select
         end do
+        if (present(scale)) then
+            scale = prob%scale
+            do j = 1, prob%np
+                select case (prob%which(j))
+                case (P_SCALE)
+                    scale(1) = p(j)
+                    if (prob%point) scale(2) = p(j)
+                case (P_SCALE_Y)
+                    scale(2) = p(j)
+                case (P_SCALE_Z)
+                    scale(3) = p(j)
+                end select
+            end do
+        end if
     end subroutine apply_parameters
+
+    !> A scale parameter (of the record's values or of an instrument axis).
+    elemental logical function is_scale(which)
+        integer, intent(in) :: which
+        is_scale = which == P_SCALE .or. which == P_SCALE_Y .or. which == P_SCALE_Z
+    end function is_scale
+
+    !> The model's values (and derivatives) over the record's scale of each value: block k
+    !! of vals (and the rows of dv) divided by scale(k).
+    pure subroutine apply_scale(prob, scale, vals, dv)
+        type(record_fit_t), intent(in) :: prob
+        real(dp), intent(in) :: scale(3)
+        real(dp), intent(inout) :: vals(:), dv(:, :)
+        integer :: m, k
+        m = size(vals)/prob%nout
+        do k = 1, prob%nout
+            vals((k - 1)*m + 1:k*m) = vals((k - 1)*m + 1:k*m)/scale(k)
+            dv((k - 1)*m + 1:k*m, :) = dv((k - 1)*m + 1:k*m, :)/scale(k)
+        end do
+    end subroutine apply_scale
 
     !> The names of the estimated parameters (for the estimator's messages).
     pure function estimated_names(prob) result(names)
@@ -901,7 +1140,8 @@ contains
         integer :: j
         do j = 1, prob%np
             names(j) = PARAM_NAMES(prob%which(j))
-            if (prob%which(j) == P_BIAS .and. prob%rates) names(j) = 'bias_x'
+            if (prob%which(j) == P_BIAS .and. (prob%rates .or. prob%point)) names(j) = 'bias_x'
+            if (prob%which(j) == P_SCALE .and. prob%rates) names(j) = 'scale_x'
         end do
     end function estimated_names
 
@@ -923,6 +1163,9 @@ contains
         if (prob%rates) then
             n = size(prob%rec%t)
             v = [prob%rec%vs(i0:i1), prob%rec%vs(n + i0:n + i1), prob%rec%vs(2*n + i0:2*n + i1)]
+        else if (prob%point) then
+            n = size(prob%rec%t)
+            v = [prob%rec%vs(i0:i1), prob%rec%vs(n + i0:n + i1)]
         else
             v = prob%rec%v(i0:i1)
         end if
@@ -937,6 +1180,7 @@ contains
         i1 = prob%nuse
         w = prob%w(i0:i1)*prob%hw(i0:i1)
         if (prob%nout == 3) w = [w, w, w]
+        if (prob%nout == 2) w = [w, w]
     end function stacked_weights
 
     !> The bias of each residual, stacked (bias(k) over block k).
@@ -984,8 +1228,10 @@ contains
         real(dp), intent(in) :: p(:)
         real(dp), intent(out) :: r(:), jac(:, :)
         type(status_t), intent(out) :: stat
-        real(dp) :: bias(3)
+        real(dp) :: bias(3), scale(3), t0
         real(dp), allocatable :: vals(:), dv(:, :), w(:)
+        type(rig_t) :: rg
+        type(start_t) :: st
         integer :: j, c, m, k
         r = 0.0_dp
         jac = 0.0_dp
@@ -995,10 +1241,18 @@ contains
         m = prob%nuse - prob%ifirst + 1
         r = (prob%sign*vals + stacked_bias(prob, bias) - stacked_values(prob))*w
         c = 0
+        if (any(is_scale(prob%which(1:prob%np)))) call apply_parameters(prob, p, rg, st, t0, &
+                                                                      bias, scale)
         do j = 1, prob%np
             if (is_bias(prob%which(j))) then
                 k = bias_axis(prob%which(j))
                 jac((k - 1)*m + 1:k*m, j) = w((k - 1)*m + 1:k*m)
+            else if (is_scale(prob%which(j))) then
+                ! the model over the scale: its change -model/scale, over each value it scales
+                do k = 1, prob%nout
+                    if (scale_of(prob, prob%which(j), k)) jac((k - 1)*m + 1:k*m, j) = &
+                        -prob%sign*vals((k - 1)*m + 1:k*m)/scale(k)*w((k - 1)*m + 1:k*m)
+                end do
             else
                 c = c + 1
                 jac(:, j) = prob%sign*dv(:, c)*w
@@ -1009,6 +1263,20 @@ contains
             return
         end if
     end subroutine record_residual_jacobian
+
+    !> Whether the scale parameter which scales value k of a sample.
+    pure logical function scale_of(prob, which, k)
+        type(record_fit_t), intent(in) :: prob
+        integer, intent(in) :: which, k
+        select case (which)
+        case (P_SCALE)
+            scale_of = k == 1 .or. (prob%point .and. k == 2)
+        case (P_SCALE_Y)
+            scale_of = k == 2
+        case default
+            scale_of = k == 3
+        end select
+    end function scale_of
 
     !> A bias parameter (of the value or of an instrument axis).
     pure logical function is_bias(which)
@@ -1078,10 +1346,11 @@ contains
         logical, intent(out), optional :: fresh     !! dv computed at p (not taken again)
         type(run_point_t) :: pt
         type(run_columns_t) :: fit
+        real(dp) :: scale(3)
         integer :: i0, i1, j, m
         stat%code = 0
         if (present(fresh)) fresh = .true.
-        call apply_parameters(prob, p, pt%rg, pt%st, pt%t0, bias)
+        call apply_parameters(prob, p, pt%rg, pt%st, pt%t0, bias, scale)
         i0 = prob%ifirst
         i1 = prob%nuse
         m = i1 - i0 + 1
@@ -1096,7 +1365,7 @@ contains
         allocate (fit%names(0), fit%xs(0))
         if (derivs) then
             do j = 1, prob%np
-                if (is_bias(prob%which(j))) cycle
+                if (is_bias(prob%which(j)) .or. is_scale(prob%which(j))) cycle
                 fit%names = [character(len=16) :: fit%names, PARAM_NAMES(prob%which(j))]
                 fit%xs = [fit%xs, prob%xs(j)]
             end do
@@ -1106,8 +1375,14 @@ contains
         prob%runs%rate = prob%rate
         prob%runs%rates = prob%rates
         prob%runs%axes = prob%axes
+        prob%runs%point = prob%point
+        prob%runs%q = prob%q
+        prob%runs%view = prob%view
         call prob%runs%values(pt, prob%rec%t(i0:i1), i1 == size(prob%rec%t), fit, vals, dv, &
                               stat, fresh)
+        ! the record's scale: the model of a value is the quantity over it
+        if (stat%code == 0 .and. (prob%point .or. any(scale /= 1.0_dp))) &
+            call apply_scale(prob, scale, vals, dv)
     end subroutine model_values
     !> The names and sizes of the budget's inputs with u > 0 (x), appended to names and xs.
     pure subroutine budget_columns(prob, x, names, xs)
@@ -1258,6 +1533,15 @@ contains
         logical :: rate
         character(len=:), allocatable :: where
         stat%code = STATUS_OK
+        ! a tracked point needs its two coordinates, which the record file's reader does not
+        ! give: refused rather than fitted as an angle
+        if (trim(mea%quantity) == 'point' .and. .not. allocated(rec%vs)) then
+            call set_error(stat, ERR_DECK, name//': quantity = ''point'' with a record '// &
+                'file: the program does not read a track''s file; allowed: quantity = '// &
+                '''angle'', ''rate'' or ''rates'' for a record file (a track through the '// &
+                'library''s identify_record)')
+            return
+        end if
         n = size(rec%v)
         if (.not. raised .or. n < 3) return
         rate = trim(mea%quantity) == 'rate' .or. rec%rate
@@ -1357,6 +1641,23 @@ contains
             ! the rate about the vertical the instrument's axes give: W = -omega . b_1 at rest
             call vertical_of_rates(prob%rec, prob%axes)
         end if
+        prob%point = trim(mea%quantity) == 'point' .and. allocated(rec%vs)
+        if (prob%point) then
+            ! a tracked point: its two coordinates (rec%vs), the one with the larger swing as
+            ! the record's value (its release and period)
+            prob%rate = .false.
+            prob%nout = 2
+            prob%q = mea%record_point
+            prob%view = merge(VIEW_SIDE, VIEW_BELOW, trim(mea%record_view) == 'side')
+            prob%scale = mea%record_scale
+            prob%rec%v = rec%vs(1:n)
+            prob%vcol = 1
+            if (maxval(rec%vs(n + 1:2*n)) - minval(rec%vs(n + 1:2*n)) > &
+                maxval(rec%vs(1:n)) - minval(rec%vs(1:n))) then
+                prob%rec%v = rec%vs(n + 1:2*n)
+                prob%vcol = 2
+            end if
+        end if
         prob%t0 = 0.0_dp
         prob%bias = 0.0_dp
         prob%sign = 1.0_dp
@@ -1368,7 +1669,10 @@ contains
         prob%np = 0
         do k = 1, NPARAM
             if (mea%estimated(PARAM_NAMES(k)) .or. (prob%rates .and. mea%estimated('bias') &
-                                                    .and. (k == P_BIAS_Y .or. k == P_BIAS_Z))) then
+                                                    .and. (k == P_BIAS_Y .or. k == P_BIAS_Z)) &
+                .or. (prob%point .and. mea%estimated('bias') .and. k == P_BIAS_Y) .or. &
+                (prob%rates .and. mea%estimated('scale') .and. (k == P_SCALE_Y .or. &
+                                                                 k == P_SCALE_Z))) then
                 prob%np = prob%np + 1
                 prob%which(prob%np) = k
             end if
@@ -1379,7 +1683,7 @@ contains
             prob%ifirst = rel%ifirst
             ! the instrument's rates: the model's own sign (a release turned the other way
             ! is no mirror image of the horizontal rates)
-            if (prob%rates) prob%sign = 1.0_dp
+            if (prob%rates .or. prob%point) prob%sign = 1.0_dp
         end if
         if (present(rl)) rl = rel
         allocate (p0(prob%np), h(prob%np))
@@ -1420,13 +1724,21 @@ contains
                 h(j) = H_REL*max(abs(p0(j)), SMALL_ANGLE)
             case (P_BIAS_Y, P_BIAS_Z)
                 p0(j) = 0.0_dp
+                ! a point's second coordinate: the camera's origin from the track's mean
+                if (prob%point) p0(j) = sum(rec%vs(n + 1:2*n))/n
                 h(j) = H_REL*vscale
+                if (prob%point) h(j) = H_REL*max(maxval(abs(rec%vs)), tiny(1.0_dp))
+            case (P_SCALE, P_SCALE_Y, P_SCALE_Z)
+                p0(j) = prob%scale(prob%which(j) - P_SCALE + 1)
+                h(j) = H_REL*abs(p0(j))
             case default
                 p0(j) = 0.0_dp
                 if (mea%estimated('t0')) p0(j) = rel%level
                 if (prob%rate .and. mea%estimated('t0') .and. .not. rel%held) p0(j) = 0.0_dp
                 if (prob%rates) p0(j) = 0.0_dp
+                if (prob%point) p0(j) = sum(rec%vs(1:n))/n
                 h(j) = H_REL*vscale
+                if (prob%point) h(j) = H_REL*max(maxval(abs(rec%vs)), tiny(1.0_dp))
             end select
             prob%xs(j) = h(j)/H_REL
         end do

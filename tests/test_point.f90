@@ -1,0 +1,442 @@
+!> Tests of records of a tracked point (&measurement quantity = 'point', a video's track):
+!! the point's position the model predicts against an independent computation from the
+!! model's pose (the mass centre of geometry's mass_centre plus the point turned by the
+!! body's axes), its gradient against central differences of the position in the chart
+!! state and its velocity along the motion against differences in time; its sensitivities
+!! against differences of whole runs; a video track (made here: the model in pixels, a
+!! camera origin, noise) of a point 5 cm off the axis of a release that sways at 10 % of
+!! the torsion's amplitude, fitted for I1, sway, the camera's origin and the scale: I1
+!! within 0.05 %, the scale within its interval, and the bias of the same track read the
+!! old way (the point's angle about the axis, fitted as theta4 of one axis) reported
+!! beside it; misuses of the keys refused with one line.
+module test_point
+    use kinds, only: dp, deg
+    use status, only: status_t
+    use text, only: sci
+    use testing, only: tester_t, msg_of, write_text, run_cmd => run, fresh_dir, file_has, &
+        exists
+    use deck, only: deck_t, read_deck
+    use rig, only: rig_t, start_t, accuracy_t, make_pendulum, start_state
+    use geometry, only: pendulum_t, frame, body_pose, mass_centre, body_axes, cable_direction
+    use bifilar_model, only: NSTATE
+    use kane_run, only: kane_run_t, kane_run_start
+    use run_loop, only: drive
+    use keep_sink, only: keep_t
+    use record_fit, only: record_model, record_model_sens, point_position, point_gradient, &
+        VIEW_BELOW, VIEW_SIDE
+    use inputs, only: set_input, input_value
+    use records, only: record_t
+    use identify, only: identify_result_t, identify_record
+    use random, only: rng_t, rng_stream, rng_normal
+    implicit none
+    private
+
+    public :: run_point_tests
+
+    character(len=*), parameter :: DIR = 'build/test_point'
+    !> The tracked point in the body's principal axes from the mass centre (m)
+    real(dp), parameter :: QPT(3) = [0.03_dp, 0.05_dp, -0.02_dp]
+
+contains
+
+    subroutine run_point_tests(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe     !! path of the bifilar executable
+        if (t%want('point: the model''s point against its pose, gradient and velocity')) &
+            call test_pose(t)
+        if (t%want('point: sensitivities against differences of whole runs')) call test_sens(t)
+        if (t%want('point: a video track with sway gives I1 without the sway''s bias')) &
+            call test_goal(t)
+        if (t%want('point: misuses of the keys refused with one line')) call test_refusal(t, exe)
+    end subroutine run_point_tests
+
+    !> The laboratory rig of the rates' tests (unequal cables, mass centre off the midpoint
+    !! of CD), principal axes turned by 0.3 rad about ntilde_2, released from 30 degrees
+    !! with a tilt of 2 degrees and a sway of 1 cm.
+    subroutine lab_rig(rg, st)
+        type(rig_t), intent(out) :: rg
+        type(start_t), intent(out) :: st
+        real(dp) :: c, s
+        rg%b = 0.40_dp
+        rg%b_prime = 0.40_dp
+        rg%l = 1.20_dp
+        rg%l_prime = 1.18_dp
+        rg%g = 9.80665_dp
+        rg%mass = 3.10_dp
+        rg%inertia = [0.0512_dp, 0.0630_dp, 0.0304_dp]
+        rg%r = 0.25_dp
+        rg%lambda = 0.64_dp
+        rg%sway_depth = 0.30_dp
+        c = cos(0.3_dp)
+        s = sin(0.3_dp)
+        rg%btilde = reshape([c, 0.0_dp, -s, 0.0_dp, 1.0_dp, 0.0_dp, s, 0.0_dp, c], [3, 3])
+        st%mode = 'raised'
+        st%amplitude = 30.0_dp
+        st%tilt = 2.0_dp*deg
+        st%sway = 0.01_dp/rg%l
+    end subroutine lab_rig
+
+    !> The model's point (record_model with point, both views) at 25 times against the
+    !! point computed here from the states of a run: P = b' R*(C, n) + q_i b_i, C = B + L e
+    !! from the cable's direction, R* by mass_centre, b = body_axes, less P at zero angles
+    !! (within 1e-9 of the largest excursion: the runs are the same); point_gradient
+    !! against central differences of point_position in each component of the state; the
+    !! point's velocity, the gradient times the state's rate, against central differences in
+    !! time of the model's points (h = 1e-4 s).
+    subroutine test_pose(t)
+        type(tester_t), intent(inout) :: t
+        integer, parameter :: NT = 25
+        real(dp), parameter :: H = 1.0e-4_dp
+        type(rig_t) :: rg
+        type(start_t) :: st
+        type(accuracy_t) :: acc
+        type(pendulum_t) :: p
+        type(kane_run_t) :: m
+        type(keep_t) :: sink
+        type(status_t) :: stat
+        real(dp) :: ts(NT), taus(0:NT - 1), vb(2*NT), vs(2*NT), vp(2*NT), vm(2*NT)
+        real(dp) :: y0(NSTATE), th0(5), s, pos(3), pos0(3), worst, big, wg, wv, gbig
+        real(dp) :: g(NSTATE, 2), gfd(NSTATE, 2), y(NSTATE), e(NSTATE), vel(2), tp(NT), tm(NT)
+        integer :: i, k
+        call lab_rig(rg, st)
+        acc%rtol = 1.0e-12_dp
+        acc%atol = 1.0e-14_dp
+        s = sqrt(rg%g/rg%b_prime)
+        do i = 1, NT
+            ts(i) = 0.37_dp*i
+            taus(i - 1) = ts(i)*s
+        end do
+        call record_model(rg, st, acc, ts, 0.0_dp, .false., vb, stat, point=QPT)
+        if (stat%code == 0) call record_model(rg, st, acc, ts, 0.0_dp, .false., vs, stat, &
+                                              point=QPT, view=VIEW_SIDE)
+        call t%check('point: the model''s point'//msg_of(stat), stat%code == 0)
+        if (stat%code /= 0) return
+        call make_pendulum(rg, p, stat)
+        if (stat%code == 0) call start_state(st, p, y0, th0, stat)
+        if (stat%code == 0) call kane_run_start(m, p, y0, th0(3), acc%rtol, acc%atol, &
+                                                acc%method, taus(NT - 1), 'rtol', stat)
+        allocate (sink%ys(NSTATE, 0:NT - 1))
+        if (stat%code == 0) call drive(m, taus, sink, stat)
+        call t%check('point: the run of the pose'//msg_of(stat), stat%code == 0)
+        if (stat%code /= 0) return
+        pos0 = absolute(spread(0.0_dp, 1, NSTATE))
+        worst = 0.0_dp
+        big = 0.0_dp
+        do i = 1, NT
+            pos = absolute(sink%ys(:, i - 1)) - pos0
+            worst = max(worst, abs(vb(i) - pos(1)), abs(vb(NT + i) - pos(2)), &
+                        abs(vs(i) - pos(2)), abs(vs(NT + i) - pos(3)))
+            big = max(big, maxval(abs(pos)))
+        end do
+        call t%check_close('point: the point against the pose''s own (both views), worst '// &
+                           'error over the largest excursion', worst/big, 0.0_dp, 0.0_dp, &
+                           1.0e-9_dp)
+        call t%check('point: the release sways: the point leaves the torsion''s circle', &
+                     maxval(abs(vs(NT + 1:2*NT))) > 1.0e-4_dp)
+        ! the gradient against differences of the position in the state
+        wg = 0.0_dp
+        gbig = 0.0_dp
+        do i = 1, NT
+            y = sink%ys(:, i - 1)
+            g = point_gradient(p, rg%b_prime, QPT, VIEW_BELOW, y)
+            do k = 1, 5
+                e = 0.0_dp
+                e(k) = 1.0e-6_dp
+                gfd(k, :) = (point_position(p, rg%b_prime, QPT, VIEW_BELOW, y + e) - &
+                             point_position(p, rg%b_prime, QPT, VIEW_BELOW, y - e))/2.0e-6_dp
+            end do
+            gfd(6:, :) = 0.0_dp
+            wg = max(wg, maxval(abs(g - gfd)))
+            gbig = max(gbig, maxval(abs(g)))
+        end do
+        call t%check_close('point: the gradient against differences of the position '// &
+                           '(worst over the largest)', wg/gbig, 0.0_dp, 0.0_dp, 1.0e-8_dp)
+        ! the velocity along the motion: the gradient times the state's rate (per tau, times
+        ! s per second) against differences in time of the model's points
+        tp = ts + H
+        tm = ts - H
+        call record_model(rg, st, acc, tp, 0.0_dp, .false., vp, stat, point=QPT)
+        if (stat%code == 0) call record_model(rg, st, acc, tm, 0.0_dp, .false., vm, stat, &
+                                              point=QPT)
+        call t%check('point: the runs in time'//msg_of(stat), stat%code == 0)
+        if (stat%code /= 0) return
+        wv = 0.0_dp
+        big = 0.0_dp
+        do i = 1, NT
+            y = sink%ys(:, i - 1)
+            g = point_gradient(p, rg%b_prime, QPT, VIEW_BELOW, y)
+            vel = [dot_product(g(1:5, 1), y(6:10)), dot_product(g(1:5, 2), y(6:10))]*s
+            wv = max(wv, abs(vel(1) - (vp(i) - vm(i))/(2.0_dp*H)), &
+                     abs(vel(2) - (vp(NT + i) - vm(NT + i))/(2.0_dp*H)))
+            big = max(big, maxval(abs(vel)))
+        end do
+        call t%check_close('point: the velocity against differences in time (worst over '// &
+                           'the largest)', wv/big, 0.0_dp, 0.0_dp, 1.0e-6_dp)
+    contains
+        !> The point from the pose, independently: R* = C + r (s_lam ntilde_1 - c_lam
+        !! ntilde_3) in b' units (geometry's mass_centre), plus q_i b_i (m).
+        function absolute(yy) result(x)
+            real(dp), intent(in) :: yy(NSTATE)
+            real(dp) :: x(3), n(3, 3), b(3, 3), c(3), ev(3)
+            call frame(body_pose(yy(1), yy(4), yy(5), 0.0_dp), n)
+            ev = cable_direction(yy(2:3))
+            c = [p%big_l*ev(1), -p%big_b + p%big_l*ev(2), p%big_l*ev(3)]
+            b = body_axes(p, n)
+            x = rg%b_prime*mass_centre(p, c, n) + QPT(1)*b(1, :) + QPT(2)*b(2, :) + &
+                QPT(3)*b(3, :)
+        end function absolute
+    end subroutine test_pose
+
+    !> The derivatives of the point's two coordinates (record_model_sens with point:
+    !! forward sensitivities plus the position's own change with the rig) along I1, I2,
+    !! cg_depth, tilt, sway, l, b_prime and the amplitude against central differences of
+    !! whole runs, extrapolated (error h^4), at 41 samples over 8 s: within 1e-5 of the
+    !! largest excursion for a change of each quantity by its size.
+    subroutine test_sens(t)
+        type(tester_t), intent(inout) :: t
+        integer, parameter :: NT = 41, NQ = 8
+        character(len=16), parameter :: NAMES(NQ) = [character(len=16) :: 'I1', 'I2', &
+            'cg_depth', 'tilt', 'sway', 'l', 'b_prime', 'amplitude']
+        type(rig_t) :: rg, r2
+        type(start_t) :: st, s2
+        type(accuracy_t) :: acc
+        type(status_t) :: stat
+        real(dp) :: ts(NT), xs(NQ), vals(2*NT), dv(2*NT, NQ), vp(2*NT), vm(2*NT), fd(2*NT)
+        real(dp) :: h, big
+        integer :: c, i
+        call lab_rig(rg, st)
+        acc%rtol = 1.0e-11_dp
+        acc%atol = 1.0e-13_dp
+        do i = 1, NT
+            ts(i) = 0.2_dp*(i - 1)
+        end do
+        xs = [rg%inertia(1:2), input_value(rg, st, 'cg_depth'), st%tilt, st%sway, rg%l, &
+              rg%b_prime, st%amplitude]
+        call record_model_sens(rg, st, acc, ts, 0.0_dp, .false., NAMES, xs, vals, dv, stat, &
+                               point=QPT)
+        call t%check('point: the sensitivities'' run'//msg_of(stat), stat%code == 0)
+        if (stat%code /= 0) return
+        big = maxval(abs(vals))
+        do c = 1, NQ
+            h = 2.0e-3_dp*xs(c)
+            call moved(NAMES(c), h, vp)
+            call moved(NAMES(c), -h, vm)
+            fd = -(vp - vm)/(2.0_dp*h)/3.0_dp
+            call moved(NAMES(c), 0.5_dp*h, vp)
+            call moved(NAMES(c), -0.5_dp*h, vm)
+            fd = fd + 4.0_dp/3.0_dp*(vp - vm)/h
+            call t%check_close('point: d point/d '//trim(NAMES(c))//' against differences '// &
+                               '(worst, times its size, over the largest excursion)', &
+                               maxval(abs(dv(:, c) - fd))*xs(c)/big, 0.0_dp, 0.0_dp, 1.0e-5_dp)
+            call t%check('point: '//trim(NAMES(c))//' moves the point', &
+                         maxval(abs(fd))*xs(c) > 1.0e-6_dp*big)
+        end do
+    contains
+        subroutine moved(name, dx, v)
+            character(len=*), intent(in) :: name
+            real(dp), intent(in) :: dx
+            real(dp), intent(out) :: v(:)
+            type(status_t) :: s
+            r2 = rg
+            s2 = st
+            select case (trim(name))
+            case ('I1')
+                r2%inertia(1) = rg%inertia(1) + dx
+            case ('tilt')
+                s2%tilt = st%tilt + dx
+            case ('sway')
+                s2%sway = st%sway + dx
+            case ('amplitude')
+                s2%amplitude = st%amplitude + dx
+            case default
+                call set_input(r2, s2, name, input_value(rg, st, name) + dx)
+            end select
+            call record_model(r2, s2, acc, ts, 0.0_dp, .false., v, s, point=QPT)
+        end subroutine moved
+    end subroutine test_sens
+
+    !> A video track seen from below (60 frames a second, 20 s; 0.5 mm a pixel, the camera's
+    !! origin at (640, 360) px, noise 0.3 px) of a point 5 cm off the axis (record_point =
+    !! 0, 0.05, 0) of a symmetric rig released from 20 degrees with a sway (l sway) of 10 %
+    !! of the point's excursion in the torsion (0.05 m sin 20 degrees), fitted from I1 2 % off, no sway and a
+    !! scale 1 % off for I1, sway, the two offsets and the scale: I1 within 0.05 %, the
+    !! scale's truth within its 95 % interval.  The same track the old way: the point's
+    !! angle about the axis (origin and scale known) as theta4 of one axis, fitted for I1,
+    !! the amplitude, t0 and the offset; both relative errors of I1 printed (the old way's carries the sway).
+    subroutine test_goal(t)
+        type(tester_t), intent(inout) :: t
+        integer, parameter :: N = 1201
+        real(dp), parameter :: SCALE = 5.0e-4_dp, ORIGIN(2) = [640.0_dp, 360.0_dp]
+        real(dp), parameter :: NOISE = 0.3_dp, QV(3) = [0.0_dp, 0.05_dp, 0.0_dp]
+        real(dp), parameter :: AMP = 20.0_dp
+        type(deck_t) :: d
+        type(rig_t) :: rg
+        type(start_t) :: st
+        type(accuracy_t) :: acc
+        type(record_t) :: rec, ang
+        type(identify_result_t) :: res, old
+        type(status_t) :: stat
+        type(rng_t) :: g
+        type(pendulum_t) :: p
+        real(dp) :: vals(2*N), u(2), w(2), e_new, e_old, sc
+        integer :: i, k
+        character(len=:), allocatable :: common
+        call fresh_dir(DIR)
+        rg%b = 0.40_dp
+        rg%b_prime = 0.40_dp
+        rg%l = 1.20_dp
+        rg%l_prime = 1.20_dp
+        rg%g = 9.80665_dp
+        rg%mass = 3.10_dp
+        rg%inertia = [0.0512_dp, 0.0630_dp, 0.0304_dp]
+        rg%r = 0.20_dp
+        rg%lambda = 0.0_dp
+        rg%sway_depth = 0.30_dp
+        st%mode = 'raised'
+        st%amplitude = AMP
+        ! the body's sway (l sway) 10 % of the point's excursion in the torsion
+        st%sway = 0.1_dp*QV(2)*sin(AMP*deg)/rg%l
+        acc%rtol = 1.0e-10_dp
+        acc%atol = 1.0e-12_dp
+        allocate (rec%t(N), rec%v(N), rec%u(N), rec%vs(2*N))
+        do i = 1, N
+            rec%t(i) = (i - 1)/60.0_dp
+        end do
+        call record_model(rg, st, acc, rec%t, 0.0_dp, .false., vals, stat, point=QV)
+        call t%check('point: the video track made'//msg_of(stat), stat%code == 0)
+        if (stat%code /= 0) return
+        g = rng_stream(13, 0)
+        do k = 1, 2
+            do i = 1, N
+                rec%vs((k - 1)*N + i) = vals((k - 1)*N + i)/SCALE + ORIGIN(k) + &
+                                        NOISE*rng_normal(g)
+            end do
+        end do
+        rec%v = rec%vs(1:N)
+        rec%u = 1.0_dp
+        rec%units = 'px'
+        common = '&suspension b = 0.40, b_prime = 0.40, l = 1.20, l_prime = 1.20, '// &
+            'g = 9.80665 /'//new_line('a')//'&body mass = 3.10, inertia = 0.0522, 0.0630, '// &
+            '0.0304, r = 0.20, lambda = 0.0, sway_depth = 0.30 /'//new_line('a')// &
+            '&integration rtol = 1e-10, atol = 1e-12 /'//new_line('a')
+        call write_text(DIR//'/goal.nml', '&scene title = ''video'', analyses = '// &
+            '''identify'' /'//new_line('a')//common//'&start mode = ''raised'', '// &
+            'amplitude = 20.0 /'//new_line('a')//'&measurement record = ''goal.dat'', '// &
+            'quantity = ''point'', record_point = 0, 0.05, 0, record_scale = 5.05e-4, '// &
+            'estimate = ''I1 sway bias scale'' /'//new_line('a'))
+        call read_deck(DIR//'/goal.nml', d, stat)
+        call t%check('point: the goal deck'//msg_of(stat), stat%code == 0)
+        if (stat%code /= 0) return
+        call identify_record(d, rec, res, stat)
+        call t%check('point: the video track''s fit'//msg_of(stat), stat%code == 0)
+        if (stat%code /= 0) return
+        call t%check('point: five parameters estimated', res%np == 5)
+        e_new = res%i1/rg%inertia(1) - 1.0_dp
+        call t%check_close('point: I1 from the track within 0.05 %', res%i1, rg%inertia(1), &
+                           5.0e-4_dp, 0.0_dp)
+        k = findloc(res%names(1:res%np), 'scale', 1)
+        call t%check('point: the scale estimated', k > 0)
+        if (k > 0) then
+            sc = res%p(k)
+            print '(a,3es14.6)', '   scale estimate, truth, u (m/px): ', sc, SCALE, res%u_p(k)
+            call t%check('point: the scale''s truth within its 95 % interval', &
+                         abs(sc - SCALE) <= max(res%k, 1.96_dp)*res%u_p(k))
+        end if
+        k = findloc(res%names(1:res%np), 'sway', 1)
+        if (k > 0) print '(a,3es14.6)', '   sway estimate, truth, u (rad): ', res%p(k), &
+            st%sway, res%u_p(k)
+        ! the old way: the point's angle about the axis, as theta4 of one axis
+        call make_pendulum(rg, p, stat)
+        u = point_position(p, rg%b_prime, QV, VIEW_BELOW, spread(0.0_dp, 1, NSTATE)) - &
+            point_position(p, rg%b_prime, [0.0_dp, 0.0_dp, 0.0_dp], VIEW_BELOW, &
+                           spread(0.0_dp, 1, NSTATE))
+        allocate (ang%t(N), ang%v(N), ang%u(N))
+        ang%t = rec%t
+        do i = 1, N
+            w = u + [rec%vs(i) - ORIGIN(1), rec%vs(N + i) - ORIGIN(2)]*SCALE
+            ang%v(i) = atan2(u(1)*w(2) - u(2)*w(1), dot_product(u, w))
+        end do
+        if (ang%v(1) < 0.0_dp) ang%v = -ang%v
+        ang%u = 1.0_dp
+        call write_text(DIR//'/old.nml', '&scene title = ''video, old way'', analyses = '// &
+            '''identify'' /'//new_line('a')//common//'&start mode = ''raised'', '// &
+            'amplitude = 20.0 /'//new_line('a')//'&measurement record = ''old.dat'', '// &
+            'quantity = ''angle'', estimate = ''I1 amplitude t0 bias'' /'//new_line('a'))
+        call read_deck(DIR//'/old.nml', d, stat)
+        call t%check('point: the old way''s deck'//msg_of(stat), stat%code == 0)
+        if (stat%code /= 0) return
+        print '(a,es11.3)', '   I1 relative error: point fit ', e_new
+        call identify_record(d, ang, old, stat)
+        if (stat%code /= 0) then
+            ! the angle of one axis read from a swaying track: the old fit may not follow it
+            print '(a)', '   one-axis angle fit (old way) failed: '//trim(stat%msg)
+            return
+        end if
+        e_old = old%i1/rg%inertia(1) - 1.0_dp
+        print '(a,es11.3,a,es11.3)', '   I1 relative error: point fit ', e_new, &
+            ', one-axis angle fit (old way) ', e_old
+        call t%check('point: the point''s fit is closer than the old way''s', &
+                     abs(e_new) < abs(e_old))
+    end subroutine test_goal
+
+    !> Misuses of the keys through the program, each exit 2 with one line naming the key
+    !! and no output: quantity 'point' without record_point, record_scale <= 0, record_view
+    !! not a view, and scale with amplitude on a record of one angle.
+    subroutine test_refusal(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        integer, parameter :: NC = 4
+        character(len=80), parameter :: KEYS(NC) = [character(len=80) :: &
+            'quantity = ''point''', &
+            'quantity = ''point'', record_point = 0, 0.05, 0, record_scale = -1e-3', &
+            'quantity = ''point'', record_point = 0, 0.05, 0, record_view = ''above''', &
+            'quantity = ''angle'', estimate = ''I1 scale amplitude''']
+        character(len=24), parameter :: NAMED(NC) = [character(len=24) :: 'record_point', &
+            'record_scale', 'record_view', 'scale and amplitude']
+        character(len=:), allocatable :: text
+        character(len=64) :: line
+        integer :: i, ex, nl
+        call fresh_dir(DIR//'/refuse')
+        text = '# t x y'//new_line('a')
+        do i = 1, 200
+            write (line, '(f8.3,2f10.3)') 0.01_dp*(i - 1), 640.0_dp + 30.0_dp*sin(0.05_dp*i), &
+                360.0_dp + 2.0_dp*cos(0.05_dp*i)
+            text = text//trim(line)//new_line('a')
+        end do
+        call write_text(DIR//'/refuse/track.dat', text)
+        do i = 1, NC
+            call write_text(DIR//'/refuse/bad.nml', '&scene title = ''misuse'', analyses = '// &
+                '''identify'' /'//new_line('a')//'&suspension b = 0.40, b_prime = 0.40, '// &
+                'l = 1.20, l_prime = 1.20, g = 9.80665 /'//new_line('a')//'&body mass = '// &
+                '3.10, inertia = 0.0512, 0.0630, 0.0304 /'//new_line('a')//'&start mode = '// &
+                '''raised'', amplitude = 20.0 /'//new_line('a')//'&measurement record = '// &
+                '''track.dat'', '//trim(KEYS(i))//' /'//new_line('a'))
+            call fresh_dir(DIR//'/refuse/out')
+            ex = run_cmd(exe//' '//DIR//'/refuse/bad.nml --out '//DIR//'/refuse/out', &
+                         DIR//'/refuse')
+            call t%check('point: '//trim(NAMED(i))//' misuse: exit 2', ex == 2)
+            call t%check('point: '//trim(NAMED(i))//' misuse: the line names it', &
+                         file_has(DIR//'/refuse/stderr', trim(NAMED(i))))
+            nl = count_lines(DIR//'/refuse/stderr')
+            call t%check('point: '//trim(NAMED(i))//' misuse: one line', nl == 1)
+            call t%check('point: '//trim(NAMED(i))//' misuse: no output', &
+                         .not. exists(DIR//'/refuse/out/bad.identify'))
+        end do
+    contains
+        integer function count_lines(path) result(k)
+            character(len=*), intent(in) :: path
+            integer :: u, ios
+            character(len=1024) :: buf
+            k = 0
+            open (newunit=u, file=path, status='old', action='read', iostat=ios)
+            if (ios /= 0) return
+            do
+                read (u, '(a)', iostat=ios) buf
+                if (ios /= 0) exit
+                if (len_trim(buf) > 0) k = k + 1
+            end do
+            close (u)
+        end function count_lines
+    end subroutine test_refusal
+
+end module test_point
