@@ -56,6 +56,8 @@ contains
         if (t%want('tensor_lab: the plan''s u with the deck''s cycles and timings')) &
             call test_plan_u(t, exe)
         if (t%want('tensor_lab: hangs added to a table')) call test_plan_add(t, exe)
+        if (t%want('tensor_lab: the plan for the tensor and the mass centre')) &
+            call test_plan_cg(t)
         if (t%want('tensor_lab: the new keys refused out of range')) call test_keys(t, exe)
     end subroutine run_tensor_lab_tests
 
@@ -712,6 +714,118 @@ contains
             h%cg_offset = 0.0_dp
         end function prob_hang
     end subroutine test_plan_u
+
+    !> The plan with the mass centre fitted (estimate = 'tensor cg'), 8 hangs for the
+    !! CubeSat (its mass centre 2 to 3 mm from the table's): on a table made from the
+    !! planned hangs (periods with 0.2 ms noise, attitudes with 0.05 deg, the only inputs
+    !! with a u), the fit's u of the mass centre and of the entries are the plan's
+    !! predicted ones to 10 % (the plan is linearised where the table puts the mass
+    !! centre, the fit 3 mm away, at noisy data).  The plan
+    !! for the six entries alone is fitted the same way: the criterion the cg plan
+    !! minimises (the entries' variances plus (m b')^2 the mass centre's), from the fits'
+    !! own covariances, is lower for the cg plan when the two plans differ, and equal when
+    !! they are the same.
+    subroutine test_plan_cg(t)
+        type(tester_t), intent(inout) :: t
+        type(body_t) :: bd
+        type(deck_t) :: d
+        type(tensor_problem_t) :: prob
+        type(tensor_plan_t) :: pc, pt
+        type(tensor_fit_t) :: fc, ft
+        type(status_t) :: st
+        type(hang_t) :: h0
+        real(dp) :: crit_c, crit_t, wcg
+        real(dp), parameter :: DCG(3) = [2.0e-3_dp, -2.5e-3_dp, 1.5e-3_dp]
+        real(dp), parameter :: UT = 2.0e-4_dp, UA = 0.05_dp
+        integer, parameter :: N = 8
+        logical :: same
+        integer :: i, j
+        bd%mass = 4.0_dp
+        bd%x = cubesat_tensor()
+        bd%b = 0.12_dp
+        bd%b_prime = 0.12_dp
+        bd%l = 0.8_dp
+        bd%depth = 0.17_dp
+        d = lab_deck(bd, UT, 0.0_dp)
+        d%tensor%u(1:6) = 0.0_dp
+        d%tensor%estimate = 'tensor cg'
+        d%tensor%u_attitude = UA
+        call lab_problem(d, bd, reshape([0.0_dp, 0.0_dp, 1.0_dp], [3, 1]), &
+                         reshape([1.0_dp, 0.0_dp, 0.0_dp], [3, 1]), [1.0_dp], prob)
+        h0 = prob%hangs(1)
+        wcg = (bd%mass*bd%b_prime)**2
+        call plan_hangs(prob, h0, UT, bd%x, N, pc, st)
+        call t%check('plan cg: planned: '//msg_of(st), st%code == STATUS_OK .and. pc%n == N)
+        if (st%code /= STATUS_OK) return
+        d%tensor%estimate = 'tensor'
+        call lab_problem(d, bd, reshape([0.0_dp, 0.0_dp, 1.0_dp], [3, 1]), &
+                         reshape([1.0_dp, 0.0_dp, 0.0_dp], [3, 1]), [1.0_dp], prob)
+        call plan_hangs(prob, h0, UT, bd%x, N, pt, st)
+        call t%check('plan cg: the tensor''s plan: '//msg_of(st), st%code == STATUS_OK)
+        if (st%code /= STATUS_OK) return
+        d%tensor%estimate = 'tensor cg'
+        call fit_plan(pc, 11, fc)
+        if (st%code /= STATUS_OK) return
+        write (*, '(a,3es10.2)') '   predicted u(cg) ', pc%u_cg
+        write (*, '(a,3es10.2)') '   fit''s u(cg)     ', fc%u_dcg
+        write (*, '(a,6f7.3)') '   u(J) fit / plan ', fc%u_x/pc%u_x
+        call t%check('plan cg: the predicted u of the mass centre is the fit''s to 10 %', &
+                     all(pc%u_cg > 0.0_dp) .and. maxval(abs(fc%u_dcg/pc%u_cg - 1.0_dp)) < 0.10_dp)
+        call t%check('plan cg: the predicted u of the entries are the fit''s to 10 %', &
+                     maxval(abs(fc%u_x/pc%u_x - 1.0_dp)) < 0.10_dp)
+        call t%check('plan cg: the fit of the planned hangs has the truth within 3 u', &
+                     all(abs(fc%dcg - DCG) <= 3.0_dp*fc%u_dcg) .and. &
+                     all(abs(fc%x - bd%x) <= 3.0_dp*fc%u_x))
+        ! the tensor's plan, fitted with the mass centre
+        call fit_plan(pt, 11, ft)
+        if (st%code /= STATUS_OK) return
+        same = .true.
+        do i = 1, N
+            same = same .and. any([(abs(dot_product(pc%up(:, i), pt%up(:, j))) > &
+                                    1.0_dp - 1.0e-9_dp, j=1, N)])
+        end do
+        crit_c = sum(fc%u_x**2) + wcg*sum(fc%u_dcg**2)
+        crit_t = sum(ft%u_x**2) + wcg*sum(ft%u_dcg**2)
+        write (*, '(a,l1,a,2es11.3,a,3es10.2)') '   same directions: ', same, &
+            ', criterion cg plan, tensor plan ', crit_c, crit_t, '; tensor plan u(cg) ', &
+            ft%u_dcg
+        if (same) then
+            call t%check('plan cg: the same directions: the same criterion to 1 %', &
+                         abs(crit_c/crit_t - 1.0_dp) < 0.01_dp)
+        else
+            call t%check('plan cg: other directions than the tensor''s plan: a lower '// &
+                         'criterion', crit_c < crit_t)
+        end if
+    contains
+        !> The fit with the mass centre of the plan's hangs, made with the truth (DCG) and
+        !! noise (stream seed).
+        subroutine fit_plan(pl, seed, fit)
+            type(tensor_plan_t), intent(in) :: pl
+            integer, intent(in) :: seed
+            type(tensor_fit_t), intent(out) :: fit
+            type(tensor_problem_t) :: pr
+            type(rng_t) :: g
+            real(dp) :: per(N), gd(3, N), jz(3, 3)
+            integer :: k, m
+            jz = 0.0_dp
+            g = rng_stream(seed, 0)
+            do k = 1, N
+                call made_period(bd, DCG, 0.0_dp, [0.0_dp, 0.0_dp, 0.0_dp], jz, pl%up(:, k), &
+                                 pl%along(:, k), per(k), gd(:, k), st)
+                if (st%code /= STATUS_OK) exit
+                per(k) = per(k) + UT*rng_normal(g)
+                do m = 1, 3
+                    gd(m, k) = gd(m, k) + UA*deg*rng_normal(g)
+                end do
+            end do
+            if (st%code == STATUS_OK) then
+                call lab_problem(d, bd, pl%up, pl%along, per, pr, gd)
+                call fit_of(pr, fit, st)
+            end if
+            call t%check('plan cg: a table of the plan''s hangs fitted: '//msg_of(st), &
+                         st%code == STATUS_OK)
+        end subroutine fit_plan
+    end subroutine test_plan_cg
 
     !> plan_add = 3 on a table of six hangs (faces and edges): three directions not in the
     !! table, and a trace of table and additions below the table's alone and below that of

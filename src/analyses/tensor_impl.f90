@@ -67,10 +67,11 @@ contains
                 '(the first-order joint covariance), or estimate = ''tensor''')
             return
         end if
-        if (d%tensor%estimates_cg() .and. len_trim(d%tensor%hangs) == 0) then
+        if (d%tensor%estimates_cg() .and. len_trim(d%tensor%hangs) == 0 .and. &
+            d%tensor%plan == 0) then
             call set_error(stat, ERR_DECK, '&tensor estimate = ''tensor cg'': no table of '// &
                 'hangs; allowed: hangs = ''FILE'' (the mass centre is fitted to its periods '// &
-                'and attitudes)')
+                'and attitudes), or plan = N (hangs planned for it)')
             return
         end if
         if (trim(d%scene%model) /= 'kane') then
@@ -540,6 +541,7 @@ contains
             call write_kv(u, 'plan_file', res%plan_file, ios)
             call write_kv(u, 'plan_trace', plan%trace, ios)
             call write_kv(u, 'plan_u', reals_text(plan%u_x), ios)
+            if (prob%est_cg) call write_kv(u, 'plan_u_cg', reals_text(plan%u_cg), ios)
         end if
         call write_kv(u, 'cpu_seconds', res%cpu_seconds, ios)
         if (res%fitted) then
@@ -631,6 +633,12 @@ contains
         type(status_t), intent(out) :: stat
         integer :: u, ios, k, m
         real(dp) :: up(3), al(3)
+        character(len=:), allocatable :: crit
+        crit = 'trace of the covariance of the tensor, '//sci(plan%trace, 3)//' (deck units '// &
+            'squared)'
+        if (d%tensor%estimates_cg()) crit = 'trace of the covariance of the tensor and of '// &
+            'the mass centre ((m b'')^2 times the latter''s), '//sci(plan%trace, 3)// &
+            ' (deck units squared), each hang with its attitude measured'
         call files%open(path, u, stat)
         if (stat%code /= STATUS_OK) return
         ios = 0
@@ -638,8 +646,7 @@ contains
         if (ios == 0) write (u, '(a)', iostat=ios) '# '//itoa(plan%n)//' hangs '// &
             trim(merge('added to the table ', '                   ', d%tensor%plan_add > 0))// &
             'among the face, edge and corner directions of the body frame that minimise the '// &
-            'trace of the covariance of the tensor, '//sci(plan%trace, 3)//' (deck units '// &
-            'squared), under the deck''s uncertainties, each timed '//itoa(timings)// &
+            crit//', under the deck''s uncertainties, each timed '//itoa(timings)// &
             ' time'//trim(merge('s', ' ', timings /= 1))//' over '//rshort(cycles)//' cycle'// &
             trim(merge('s', ' ', cycles /= 1.0_dp))
         if (ios == 0) write (u, '(a)', iostat=ios) '# period: the period the tensor '// &

@@ -223,7 +223,18 @@ module tensor_fit
         real(dp), allocatable :: period(:)      !! predicted at small amplitude (s)
         real(dp) :: trace = 0.0_dp              !! of the covariance of x
         real(dp) :: u_x(6) = 0.0_dp             !! predicted standard uncertainties
+        !> with the mass centre fitted (estimate = 'tensor cg'): its predicted u (body frame)
+        real(dp) :: u_cg(3) = 0.0_dp
     end type tensor_plan_t
+
+    !> The sensitivities of a candidate hang that fitting the mass centre adds (plan): the
+    !! period over the mass centre's shift, and the attitude residual over the shift, the
+    !! hang's three rotations and the body's mass.
+    type :: cg_sens_t
+        real(dp), allocatable :: t_cg(:, :)     !! (candidates, 3)
+        logical, allocatable :: att(:)          !! the candidate's attitude is measured
+        real(dp), allocatable :: r_cg(:, :), r_dir(:, :), r_mass(:)  !! (candidates, 3 | 1)
+    end type cg_sens_t
 
     !> The samples of the Monte Carlo of a tensor fit as a sweep (built by tensor_mc_task).
     type, extends(mc_task_t), public :: tensor_mc_task_t
@@ -1800,12 +1811,156 @@ contains
         end function row_var
     end subroutine set_covariance
 
+    !> The attitude a planned hang would be measured with: -up turned into the plane of C,
+    !! D and the mass centre of what hangs (where gravity lies at rest), unit.
+    function planned_gravity(prob, h) result(gv)
+        type(tensor_problem_t), intent(in) :: prob
+        type(hang_t), intent(in) :: h
+        real(dp) :: gv(3)
+        real(dp) :: rf(3), jf(3, 3), gc(3), nrm(3)
+        call fixture_in_body(h, prob%fix, prob%origin, rf, jf)
+        gc = (prob%mass*prob%dcg + prob%fix%mass*rf)/(prob%mass + prob%fix%mass)
+        nrm = plane_normal(h, gc)
+        gv = -h%up - dot_product(-h%up, nrm)*nrm
+        gv = gv/norm2(gv)
+    end function planned_gravity
+
+    !> The sensitivities that fitting the mass centre adds to candidate k (hang h, at small
+    !! amplitude, the tensor x): dT/d(dcg) and, when its attitude is measured (att), the
+    !! attitude residual's over dcg, the three rotations and the mass (central differences,
+    !! the steps of cg_columns and attitude_sensitivities).
+    subroutine cg_candidate(prob, h, x, att, k, cs, stat)
+        type(tensor_problem_t), intent(in) :: prob
+        type(hang_t), intent(in) :: h           !! its gravity set when att
+        real(dp), intent(in) :: x(6)
+        logical, intent(in) :: att
+        integer, intent(in) :: k
+        type(cg_sens_t), intent(inout) :: cs
+        type(status_t), intent(out) :: stat
+        type(tensor_problem_t) :: pp, pm
+        real(dp) :: hc, tp, tm, eps(3)
+        integer :: j
+        hc = HX_LIN*h%b_prime
+        cs%att(k) = att
+        cs%r_cg(k, :) = 0.0_dp
+        cs%r_dir(k, :) = 0.0_dp
+        cs%r_mass(k) = 0.0_dp
+        do j = 1, 3
+            pp = prob
+            pm = prob
+            pp%dcg(j) = prob%dcg(j) + hc
+            pm%dcg(j) = prob%dcg(j) - hc
+            call case_period(pp, h, 0.0_dp, prob%mass, prob%g, x, tp, stat)
+            if (stat%code == STATUS_OK) call case_period(pm, h, 0.0_dp, prob%mass, prob%g, &
+                                                         x, tm, stat)
+            if (stat%code /= STATUS_OK) return
+            cs%t_cg(k, j) = (tp - tm)/(2.0_dp*hc)
+            if (att) cs%r_cg(k, j) = (attitude_residual(pp, h, prob%mass) - &
+                                      attitude_residual(pm, h, prob%mass))/(2.0_dp*hc)
+        end do
+        if (.not. att) return
+        do j = 1, 3
+            eps = 0.0_dp
+            eps(j) = HX_LIN
+            cs%r_dir(k, j) = (attitude_residual(prob, turned_hang(h, eps), prob%mass) - &
+                attitude_residual(prob, turned_hang(h, -eps), prob%mass))/(2.0_dp*HX_LIN)
+        end do
+        cs%r_mass(k) = (attitude_residual(prob, h, prob%mass*(1.0_dp + HX_LIN)) - &
+            attitude_residual(prob, h, prob%mass*(1.0_dp - HX_LIN)))/(2.0_dp*HX_LIN*prob%mass)
+    end subroutine cg_candidate
+
+    !> The joint covariance of (x, dcg) from the candidate rows `set` (the plan with the
+    !! mass centre fitted): per hang its period row and, when its attitude is measured, its
+    !! attitude row (u_attitude), the two sharing the hang's three rotations (u_direction);
+    !! then the common inputs mass, g, l, l_prime, b, b_prime.  The normal matrix is
+    !! inverted scaled by its diagonal (entries and lengths differ in units).
+    subroutine joint_covariance(prob, u_r, t, a, sdir, srig, smass, sg, cs, set, cc)
+        type(tensor_problem_t), intent(in) :: prob
+        real(dp), intent(in) :: u_r(:), t(:), a(:, :), sdir(:, :), srig(:, :), smass(:), sg(:)
+        type(cg_sens_t), intent(in) :: cs
+        integer, intent(in) :: set(:)
+        real(dp), intent(out) :: cc(9, 9)
+        real(dp) :: nmat(9, 9), w(9), v(9, 9), ninv(9, 9), bk(9), sk(9), uc(6), sc(9)
+        real(dp) :: jr(2, 9), vr(2, 2), wi(2, 2), sd(2, 3), det, sr(2)
+        integer :: i, j, k, m
+        type(status_t) :: st
+        nmat = 0.0_dp
+        do j = 1, size(set)
+            i = set(j)
+            call row_block(i)
+            nmat = nmat + matmul(transpose(jr(1:m, :)), matmul(wi(1:m, 1:m), jr(1:m, :)))
+        end do
+        cc = huge(1.0_dp)/1.0e10_dp
+        sc = [(sqrt(max(nmat(k, k), tiny(1.0_dp))), k=1, 9)]
+        do k = 1, 9
+            nmat(:, k) = nmat(:, k)/(sc*sc(k))
+        end do
+        call la_syev(nmat, w, v, st)
+        if (st%code /= STATUS_OK) return
+        if (.not. (w(1) > 1.0e-12_dp*w(9))) return
+        ninv = 0.0_dp
+        do k = 1, 9
+            ninv = ninv + outer(v(:, k), v(:, k))/w(k)
+        end do
+        do k = 1, 9
+            ninv(:, k) = ninv(:, k)/(sc*sc(k))
+        end do
+        cc = ninv
+        uc = [prob%u%mass, prob%u%g, prob%u%rig]
+        do k = 1, 6
+            bk = 0.0_dp
+            do j = 1, size(set)
+                i = set(j)
+                call row_block(i)
+                select case (k)
+                case (1)
+                    sr = [smass(i), cs%r_mass(i)]
+                case (2)
+                    sr = [sg(i), 0.0_dp]
+                case default
+                    sr = [srig(i, k - 2), 0.0_dp]
+                end select
+                bk = bk + matmul(transpose(jr(1:m, :)), matmul(wi(1:m, 1:m), sr(1:m)))
+            end do
+            sk = -matmul(ninv, bk)
+            cc = cc + outer(sk, sk)*uc(k)**2
+        end do
+    contains
+        !> Candidate ii's rows: their Jacobian jr, covariance's inverse wi (m rows).
+        subroutine row_block(ii)
+            integer, intent(in) :: ii
+            m = merge(2, 1, cs%att(ii))
+            jr = 0.0_dp
+            jr(1, 1:6) = a(ii, :)
+            jr(1, 7:9) = cs%t_cg(ii, :)
+            jr(2, 7:9) = cs%r_cg(ii, :)
+            sd(1, :) = sdir(ii, :)
+            sd(2, :) = cs%r_dir(ii, :)
+            vr = matmul(sd, transpose(sd))*prob%u%direction**2
+            vr(1, 1) = vr(1, 1) + u_r(ii)**2
+            if (.not. (vr(1, 1) > 0.0_dp)) vr(1, 1) = (1.0e-4_dp*t(ii))**2
+            vr(2, 2) = vr(2, 2) + prob%u%attitude**2
+            if (.not. (vr(2, 2) > 0.0_dp)) m = 1
+            if (m == 1) then
+                wi(1, 1) = 1.0_dp/vr(1, 1)
+            else
+                det = vr(1, 1)*vr(2, 2) - vr(1, 2)*vr(2, 1)
+                wi = reshape([vr(2, 2), -vr(2, 1), -vr(1, 2), vr(1, 1)], [2, 2])/det
+            end if
+        end subroutine row_block
+    end subroutine joint_covariance
+
     !> n hangs among the 13 face, edge and corner directions of the body frame (u and -u
     !! one direction) that minimise the trace of the covariance of x (see the module
     !! header), on the rig h0, each with the timing u u_t; no direction is planned a second
-    !! time before every one of the 13 is planned once (n > 13 takes all of them).  With `existing` (the table's hangs, each with its own timing u
-    !! u_existing), the n hangs are added to them: the trace is the table's and the
-    !! additions' together.
+    !! time before every one of the 13 is planned once (n > 13 takes all of them).  With
+    !! `existing` (the table's hangs, each with its own timing u u_existing), the n hangs
+    !! are added to them: the trace is the table's and the additions' together.  With the
+    !! mass centre fitted (prob%est_cg) the problem is the fit's nine parameters, each
+    !! planned hang with its attitude measured (u_attitude; a table's hang with it when
+    !! the table gives it), and the trace minimised is the tensor's plus (m b')^2 times the
+    !! mass centre's (m the mass, b' the rig's h0%b_prime: a shift d of the mass centre
+    !! moves a moment about an axis b' away by about m b' d); plan%u_cg its u.
     subroutine plan_hangs(prob, h0, u_t, x, n, plan, stat, existing, u_existing)
         type(tensor_problem_t), intent(in) :: prob  !! mass, g, accuracy, uncertainties
         type(hang_t), intent(in) :: h0          !! the rig of every hang
@@ -1817,18 +1972,22 @@ contains
         type(hang_t), intent(in), optional :: existing(:)   !! the table's hangs
         real(dp), intent(in), optional :: u_existing(:)     !! their timing u (s)
         integer, parameter :: NC = 13
-        real(dp) :: c26(3, 26), c(3, NC), cc(6, 6), best, tr
+        real(dp) :: c26(3, 26), c(3, NC), cc(6, 6), best, tr, c9(9, 9), wcg
         real(dp), allocatable :: t(:), a(:, :), sdir(:, :), srig(:, :), smass(:), sg(:), ur(:)
         integer, allocatable :: set(:), base(:)
         integer :: k, i, j, kb, it, ne
         logical :: improved
         type(hang_t) :: h
+        type(cg_sens_t) :: cs
         c26 = candidate_directions()
         c = c26(:, 1:26:2)
         ne = 0
         if (present(existing)) ne = size(existing)
         allocate (t(NC + ne), a(NC + ne, 6), sdir(NC + ne, 3), srig(NC + ne, 4), &
                   smass(NC + ne), sg(NC + ne), ur(NC + ne))
+        if (prob%est_cg) allocate (cs%t_cg(NC + ne, 3), cs%att(NC + ne), &
+                                   cs%r_cg(NC + ne, 3), cs%r_dir(NC + ne, 3), cs%r_mass(NC + ne))
+        wcg = (prob%mass*h0%b_prime)**2
         do k = 1, NC + ne
             h = h0
             h%up = c(:, min(k, NC))
@@ -1837,6 +1996,13 @@ contains
             if (k > NC) call table_hang(k - NC)
             call candidate_row(prob, h, x, t(k), a(k, :), sdir(k, :), srig(k, :), smass(k), &
                                sg(k), stat)
+            if (stat%code == STATUS_OK .and. prob%est_cg) then
+                if (k <= NC) then
+                    h%attitude = .true.
+                    h%gravity = planned_gravity(prob, h)
+                end if
+                call cg_candidate(prob, h, x, h%attitude, k, cs, stat)
+            end if
             if (stat%code /= STATUS_OK) then
                 stat%msg = 'the plan: '//stat%msg
                 return
@@ -1895,9 +2061,15 @@ contains
             plan%along(:, i) = along_for(c(:, set(i)))
             plan%period(i) = t(set(i))
         end do
-        call set_covariance(prob, ur, t, a, sdir, srig, smass, sg, [base, set], cc)
         plan%trace = best
-        plan%u_x = sqrt(max(0.0_dp, [(cc(k, k), k=1, 6)]))
+        if (prob%est_cg) then
+            call joint_covariance(prob, ur, t, a, sdir, srig, smass, sg, cs, [base, set], c9)
+            plan%u_x = sqrt(max(0.0_dp, [(c9(k, k), k=1, 6)]))
+            plan%u_cg = sqrt(max(0.0_dp, [(c9(k, k), k=7, 9)]))
+        else
+            call set_covariance(prob, ur, t, a, sdir, srig, smass, sg, [base, set], cc)
+            plan%u_x = sqrt(max(0.0_dp, [(cc(k, k), k=1, 6)]))
+        end if
     contains
         !> No direction planned twice before every one of the NC is planned once (and so
         !! on): the counts differ by at most 1.
@@ -1915,8 +2087,13 @@ contains
         end subroutine table_hang
         real(dp) function trace_of(s)
             integer, intent(in) :: s(:)
-            real(dp) :: cv(6, 6)
+            real(dp) :: cv(6, 6), cw(9, 9)
             integer :: m
+            if (prob%est_cg) then
+                call joint_covariance(prob, ur, t, a, sdir, srig, smass, sg, cs, [base, s], cw)
+                trace_of = sum([(cw(m, m), m=1, 6)]) + wcg*sum([(cw(m, m), m=7, 9)])
+                return
+            end if
             call set_covariance(prob, ur, t, a, sdir, srig, smass, sg, [base, s], cv)
             trace_of = sum([(cv(m, m), m=1, 6)])
         end function trace_of
