@@ -131,8 +131,8 @@ contains
                     run_rates_tests), &
             suite_t('split', 'a record of several releases cut at its holds, the segments '// &
                     'pooled as a table', run_split_tests), &
-            suite_t('point', 'records of a tracked point (video): model vs pose, '// &
-                    'sensitivities, sway, scale, refusals', run_point_tests), &
+            suite_t('point', 'a tracked point (video): model vs pose, sensitivities, '// &
+                    'sway, scale, refusals', run_point_tests), &
             suite_t('stats', 'Student''s t, chi-square tails, Welch-Satterthwaite, weighted '// &
                     'means', run_stats_tests), &
             suite_t('estimator', 'least squares: known answers, rank deficiency, Huber, '// &
