@@ -266,6 +266,7 @@ contains
         type(status_t) :: stat
         real(dp) :: t_rel(3)
         integer :: ex
+        logical :: ok
         character(len=256) :: val
         call fresh_dir(DIR//'/short')
         call joined([20.0_dp, -15.0_dp, 25.0_dp], [12.0_dp, 12.0_dp, 1.5_dp], lines, rec, &

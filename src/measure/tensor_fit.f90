@@ -1918,7 +1918,7 @@ contains
                 case (2)
                     sr = [sg(i), 0.0_dp]
                 case default
-                    sr = [srig(i, k - 2), 0.0_dp]
+                    sr = [srig(i, max(k - 2, 1)), 0.0_dp]
                 end select
                 bk = bk + matmul(transpose(jr(1:m, :)), matmul(wi(1:m, 1:m), sr(1:m)))
             end do
