@@ -39,7 +39,6 @@ module platform_measure
     use platform_model, only: check_platform, platform_start, platform_evaluate, &
         platform_motion_t, platform_sys_t
     use platform_orbit, only: platform_torsion_period
-    use platform_elastic_orbit, only: elastic_torsion_period
     implicit none
     private
 
@@ -53,6 +52,19 @@ module platform_measure
     !> The most integrator steps of a record's run.
     integer, parameter :: RECORD_MAX_STEPS = 2000000
 
+
+    interface
+        !> The period (s) of the elastic platform rg (four or more cables, I1 in rg) at peak
+        !! amplitude amp_deg (submodule platform_measure_elastic: the elastic orbit sits a
+        !! floor above this module's other runs, and only this procedure needs it).
+        module subroutine elastic_period_s(rg, acc, amp_deg, t, stat)
+            type(rig_t), intent(in) :: rg
+            type(accuracy_t), intent(in) :: acc
+            real(dp), intent(in) :: amp_deg
+            real(dp), intent(out) :: t
+            type(status_t), intent(out) :: stat
+        end subroutine elastic_period_s
+    end interface
 contains
 
     !> The regular platform of a rig_t of cables > 2 (radius b/2, radius_prime b_prime/2,
@@ -151,11 +163,7 @@ contains
         if (rg%cables >= 4) then
             ! statically indeterminate when inextensible: the elastic cables' torsion
             rr%inertia(1) = i1
-            pl = platform_of_rig(rr)
-            call elastic_torsion_period(pl, rg%cable_stiffness, amp_deg*deg, acc%rtol, &
-                                        acc%atol, t, stat)
-            if (stat%code /= STATUS_OK) stat%msg = 'the period at '//fixed(amp_deg, 3)// &
-                ' deg (the elastic platform''s periodic torsion): '//stat%msg
+            call elastic_period_s(rr, acc, amp_deg, t, stat)
             return
         end if
         call measured_platform(rr, i1, pl, stat)
