@@ -15,10 +15,11 @@
 !! The model of a sample: sign (model(t; I1, damping, amplitude, t0)) + bias, where sign is
 !! -1 for a body released the other way (found from the record's first swing) and the
 !! model before t0 is the held start.  The instrument's three rates ('rates') are no mirror
-!! image of the model when the turn reverses (the tilt and sway rates keep their way): there
-!! sign is 1 and the model is released the record's way instead (turn: the start amplitude,
-!! the deck's or the fitted size, taken negative), and a record that starts at its release
-!! has the release at its first sample (rates_from_rest).  A record that starts mid-swing is fitted from its
+!! image of the model when the turn reverses (the tilt and sway rates keep their way), nor
+!! is a tracked point's position ('point', point_way): there sign is 1 and the model is
+!! released the record's way instead (turn: the start amplitude, the deck's or the fitted
+!! size, taken negative); a rates record that starts at its release has the release at its
+!! first sample (rates_from_rest).  A record that starts mid-swing is fitted from its
 !! first turning point on (ifirst): a turning point is a moment at rest, from which the
 !! model is a release.
 !!
@@ -1714,7 +1715,10 @@ contains
                 prob%sign = 1.0_dp
                 prob%turn = rel%sign
             end if
-            if (prob%point) prob%sign = 1.0_dp
+            if (prob%point) then
+                prob%sign = 1.0_dp
+                prob%turn = rel%sign*point_way(prob, rel%period)
+            end if
         end if
         if (present(rl)) rl = rel
         allocate (p0(prob%np), h(prob%np))
@@ -1774,6 +1778,26 @@ contains
             prob%xs(j) = h(j)/H_REL
         end do
     end subroutine fit_problem
+
+    !> The way the model's tracked point moves first (quantity 'point'): +1 when the
+    !! record's coordinate (vcol) falls from a release at +amplitude, as theta4 does, else
+    !! -1 (the model over a quarter of the record's period tp, s); +1 when it cannot tell.
+    !! The release's way is then find_release's sign times this.
+    real(dp) function point_way(prob, tp) result(way)
+        type(record_fit_t), intent(in) :: prob
+        real(dp), intent(in) :: tp
+        type(start_t) :: st
+        type(status_t) :: stat
+        real(dp) :: v(4)
+        way = 1.0_dp
+        if (.not. (tp > 0.0_dp)) return
+        st = prob%st
+        st%amplitude = abs(st%amplitude)
+        call record_model(prob%rg, st, prob%acc, [0.0_dp, 0.25_dp*tp], 0.0_dp, .false., v, &
+                          stat, point=prob%q, view=prob%view)
+        if (stat%code /= 0) return
+        if (v(2*prob%vcol) > v(2*prob%vcol - 1)) way = -1.0_dp
+    end function point_way
 
     !> A record of the instrument's rates that starts at its release (find_release saw no
     !! held stretch): when the vertical rate's first sample is within a tenth of the largest
