@@ -14,7 +14,12 @@
 !!
 !! The model of a sample: sign (model(t; I1, damping, amplitude, t0)) + bias, where sign is
 !! -1 for a body released the other way (found from the record's first swing) and the
-!! model before t0 is the held start.  A record that starts mid-swing is fitted from its
+!! model before t0 is the held start.  The instrument's three rates ('rates') are no mirror
+!! image of the model when the turn reverses (the tilt and sway rates keep their way), nor
+!! is a tracked point's position ('point', point_way): there sign is 1 and the model is
+!! released the record's way instead (turn: the start amplitude, the deck's or the fitted
+!! size, taken negative); a rates record that starts at its release has the release at its
+!! first sample (rates_from_rest).  A record that starts mid-swing is fitted from its
 !! first turning point on (ifirst): a turning point is a moment at rest, from which the
 !! model is a release.
 !!
@@ -174,6 +179,10 @@ module record_fit
         real(dp) :: t0 = 0.0_dp                 !! release time (s), when held
         real(dp) :: bias(3) = 0.0_dp            !! the record's offset (each axis), when held
         real(dp) :: sign = 1.0_dp               !! -1: the body was released the other way
+        !> quantity 'rates' or 'point': the release's way (-1: turned the other way); the
+        !! model's start amplitude is turn times the amplitude's size (the deck's or the
+        !! fitted one), the outputs keep their sign (tilt and sway do not mirror)
+        real(dp) :: turn = 1.0_dp
         logical :: rate = .false.               !! quantity = 'rate' (or 'rates')
         !> quantity 'rates': three values a sample (rec%vs), axes(k, :) the instrument's axis
         !! k in the body's principal axes; the residuals are three blocks of the samples
@@ -1097,6 +1106,8 @@ contains
                 bias(1) = p(j)
             end select
         end do
+        ! the release's way ('rates', 'point'): the amplitude of the deck or the fit is a size
+        if (prob%turn /= 1.0_dp) st%amplitude = prob%turn*st%amplitude
         if (present(scale)) then
             scale = prob%scale
             do j = 1, prob%np
@@ -1112,6 +1123,18 @@ contains
             end do
         end if
     end subroutine apply_parameters
+
+    !> The derivatives dv (a column each of names) along the model's start amplitude as
+    !! derivatives along its size: the column 'amplitude' times the release's turn.
+    pure subroutine turn_columns(prob, names, dv)
+        type(record_fit_t), intent(in) :: prob
+        character(len=*), intent(in) :: names(:)
+        real(dp), intent(inout) :: dv(:, :)
+        integer :: c
+        do c = 1, min(size(names), size(dv, 2))
+            if (trim(names(c)) == 'amplitude') dv(:, c) = prob%turn*dv(:, c)
+        end do
+    end subroutine turn_columns
 
     !> A scale parameter (of the record's values or of an instrument axis).
     elemental logical function is_scale(which)
@@ -1354,8 +1377,8 @@ contains
         i0 = prob%ifirst
         i1 = prob%nuse
         m = i1 - i0 + 1
-        if (.not. (pt%rg%inertia(1) > 0.0_dp) .or. .not. (pt%st%amplitude > 0.0_dp .and. &
-            pt%st%amplitude < 180.0_dp) .or. .not. all(pt%rg%inertia > 0.0_dp) .or. &
+        if (.not. (pt%rg%inertia(1) > 0.0_dp) .or. .not. (prob%turn*pt%st%amplitude > &
+            0.0_dp .and. prob%turn*pt%st%amplitude < 180.0_dp) .or. .not. all(pt%rg%inertia > 0.0_dp) .or. &
             .not. (abs(pt%st%tilt) < 0.5_dp*pi .and. abs(pt%st%sway) < 0.5_dp*pi)) then
             allocate (vals(prob%nout*m), dv(prob%nout*m, 0))
             vals = 0.0_dp
@@ -1380,6 +1403,9 @@ contains
         prob%runs%view = prob%view
         call prob%runs%values(pt, prob%rec%t(i0:i1), i1 == size(prob%rec%t), fit, vals, dv, &
                               stat, fresh)
+        ! the runs' derivative along the model's amplitude: along its size, times the turn
+        if (stat%code == 0 .and. derivs .and. prob%turn /= 1.0_dp) &
+            call turn_columns(prob, fit%names, dv)
         ! the record's scale: the model of a value is the quantity over it
         if (stat%code == 0 .and. (prob%point .or. any(scale /= 1.0_dp))) &
             call apply_scale(prob, scale, vals, dv)
@@ -1661,6 +1687,7 @@ contains
         prob%t0 = 0.0_dp
         prob%bias = 0.0_dp
         prob%sign = 1.0_dp
+        prob%turn = 1.0_dp
         prob%ifirst = 1
         prob%nuse = n
         prob%w = 1.0_dp/rec%u
@@ -1681,9 +1708,17 @@ contains
             call find_release(prob%rec, prob%rate, rel)
             prob%sign = rel%sign
             prob%ifirst = rel%ifirst
-            ! the instrument's rates: the model's own sign (a release turned the other way
-            ! is no mirror image of the horizontal rates)
-            if (prob%rates .or. prob%point) prob%sign = 1.0_dp
+            ! the instrument's rates: no mirror image of the model (tilt and sway keep their
+            ! way when the turn reverses): the model released the record's way instead
+            if (prob%rates) then
+                if (.not. rel%held) call rates_from_rest(prob%rec, rel)
+                prob%sign = 1.0_dp
+                prob%turn = rel%sign
+            end if
+            if (prob%point) then
+                prob%sign = 1.0_dp
+                prob%turn = rel%sign*point_way(prob, rel%period)
+            end if
         end if
         if (present(rl)) rl = rel
         allocate (p0(prob%np), h(prob%np))
@@ -1743,6 +1778,56 @@ contains
             prob%xs(j) = h(j)/H_REL
         end do
     end subroutine fit_problem
+
+    !> The way the model's tracked point moves first (quantity 'point'): +1 when the
+    !! record's coordinate (vcol) falls from a release at +amplitude, as theta4 does, else
+    !! -1 (the model over a quarter of the record's period tp, s); +1 when it cannot tell.
+    !! The release's way is then find_release's sign times this.
+    real(dp) function point_way(prob, tp) result(way)
+        type(record_fit_t), intent(in) :: prob
+        real(dp), intent(in) :: tp
+        type(start_t) :: st
+        type(status_t) :: stat
+        real(dp) :: v(4)
+        way = 1.0_dp
+        if (.not. (tp > 0.0_dp)) return
+        st = prob%st
+        st%amplitude = abs(st%amplitude)
+        call record_model(prob%rg, st, prob%acc, [0.0_dp, 0.25_dp*tp], 0.0_dp, .false., v, &
+                          stat, point=prob%q, view=prob%view)
+        if (stat%code /= 0) return
+        if (v(2*prob%vcol) > v(2*prob%vcol - 1)) way = -1.0_dp
+    end function point_way
+
+    !> A record of the instrument's rates that starts at its release (find_release saw no
+    !! held stretch): when the vertical rate's first sample is within a tenth of the largest
+    !! excursion of its mean, the record's start is the first turning point (W = 0 there),
+    !! not the next crossing half a period on: the release's time, its way (the first
+    !! swing's: +1 when W rises first, theta4 falling from +A) and the amplitude (the first
+    !! half period's peak over 2 pi / T) from there.
+    subroutine rates_from_rest(rec, rl)
+        type(record_t), intent(in) :: rec       !! its values: the vertical rate
+        type(record_start_t), intent(inout) :: rl
+        real(dp) :: centre, band, tp
+        integer :: n, i, ispan
+        n = size(rec%v)
+        if (n < 3) return
+        centre = sum(rec%v)/n
+        band = 0.1_dp*maxval(abs(rec%v - centre))
+        if (.not. (abs(rec%v(1) - centre) <= band) .or. .not. (band > 0.0_dp)) return
+        do i = 2, n
+            if (abs(rec%v(i) - centre) > band) exit
+        end do
+        if (i > n) return
+        rl%ifirst = 1
+        rl%t0 = rec%t(1)
+        rl%sign = merge(1.0_dp, -1.0_dp, rec%v(i) > centre)
+        tp = rl%period
+        ispan = 3
+        if (tp > 0.0_dp) ispan = max(3, nint(0.5_dp*tp/((rec%t(n) - rec%t(1))/(n - 1))))
+        if (tp > 0.0_dp) rl%amplitude = max(1.0e-3_dp, min(179.0_dp, &
+            maxval(abs(rec%v(1:min(n, ispan)) - centre))*tp/(2.0_dp*pi)/deg))
+    end subroutine rates_from_rest
 
     !> Fit the record by the estimator (Levenberg-Marquardt) on growing windows, each from
     !! the last estimate and with its last damping lambda (a window in the basin of the last
@@ -2198,6 +2283,7 @@ contains
                 return
             end if
         end if
+        if (prob%turn /= 1.0_dp) call turn_columns(prob, names, dv)
         w = stacked_weights(prob)
         do c = 1, size(names)
             call la_lstsq(jac, prob%sign*dv(:, c)*w, dpdx(:, idx(c)), stat)
