@@ -2204,7 +2204,8 @@ contains
     !! timed periods: release, amplitude (deg), period per cycle (s), its u, the model's
     !! period at I1_total.  Then one block per rig: amplitude, the model's period at
     !! I1_total, the classical formula's (independent of amplitude), 41 amplitudes from 0 to
-    !! 1.1 times the largest timed (at most 179 deg).  Computed whole before the file opens.
+    !! 1.1 times the largest timed (at most 179 deg; 11 on an elastic platform off its
+    !! axis).  Computed whole before the file opens.
     subroutine write_periods(d, outdir, rels, res, files, stat, fig)
         type(deck_t), intent(in) :: d
         character(len=*), intent(in) :: outdir
@@ -2214,8 +2215,8 @@ contains
         type(status_t), intent(out) :: stat
         !> the certificate's: every timed period, the curve of the first release's rig
         type(cert_figure_data_t), intent(inout) :: fig
-        integer, parameter :: NA = 41
-        integer :: u, ios, i, r, q, k
+        integer, parameter :: NA = 41, NA_ELASTIC = 11
+        integer :: u, ios, i, r, q, k, na_of(size(rels))
         character(len=104) :: row
         real(dp) :: amax, tcl(size(rels)), curve(NA, 2, size(rels))
         logical :: first(size(rels))
@@ -2243,8 +2244,11 @@ contains
                 tcl(r) = 4.0_dp*pi*sqrt(res%i1_total*0.5_dp*(g%l + g%l_prime)/ &
                                         (g%mass*g%g*g%b*g%b_prime))
             end associate
-            do k = 1, NA
-                curve(k, 1, r) = max(0.25_dp, amax*(k - 1)/real(NA - 1, dp))
+            ! four or more cables off the axis: each period a whole elastic simulation
+            na_of(r) = merge(NA_ELASTIC, NA, offaxis_platform(rels(r)%rg) .and. &
+                             rels(r)%rg%cables >= 4)
+            do k = 1, na_of(r)
+                curve(k, 1, r) = max(0.25_dp, amax*(k - 1)/real(na_of(r) - 1, dp))
                 call rig_period_s(rels(r)%rg, accuracy_of(d), res%i1_total, curve(k, 1, r), &
                                   curve(k, 2, r), stat)
                 if (stat%code /= 0) exit
@@ -2276,7 +2280,7 @@ contains
         do r = 1, size(rels)
             if (.not. first(r)) cycle
             if (ios == 0) write (u, '(/)', iostat=ios)
-            do k = 1, NA
+            do k = 1, na_of(r)
                 call es_field(curve(k, 1, r), 15, row(1:24))
                 call es_field(curve(k, 2, r), 15, row(25:48))
                 call es_field(tcl(r), 15, row(49:72))
@@ -2291,8 +2295,8 @@ contains
             fig%per = [fig%per, rels(r)%per]
             fig%u_per = [fig%u_per, rels(r)%u_each]
         end do
-        fig%curve_amp = curve(:, 1, 1)
-        fig%curve_per = curve(:, 2, 1)
+        fig%curve_amp = curve(1:na_of(1), 1, 1)
+        fig%curve_per = curve(1:na_of(1), 2, 1)
         fig%classical = tcl(1)
     contains
         pure logical function same_rig(a1, a2)
