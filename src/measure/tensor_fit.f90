@@ -79,7 +79,10 @@
 !!   inputs; per row its timing, amplitude (normal) and definition (uniform within
 !!   +-3^(1/2) u_def); then refits by Gauss-Newton with the estimate's Jacobian (each step
 !!   one model period per case) until each step is below 1e-3 of the entry's first-order u,
-!!   and gives x, the principal moments and the turns of the axes toward the others.  The
+!!   and gives x, the principal moments and the turns of the axes toward the others.  With
+!!   the mass centre fitted the fixture is drawn next, then each measured attitude's reading
+!!   (its residual off by u_attitude); the refit takes the nine parameters with the
+!!   9 x (rows + attitudes) chord and gives dcg too.  The
 !!   samples are a sweep (module monte_carlo); the task is built from the deck and the
 !!   payload (tensor_mc_payload, tensor_mc_task).
 !!
