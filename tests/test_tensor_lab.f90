@@ -52,6 +52,8 @@ contains
             call test_six_attitudes(t)
         if (t%want('tensor_lab: the mass centre through the executable')) &
             call test_cg_exe(t, exe)
+        if (t%want('tensor_lab: the CubeSat''s mass centre by Monte Carlo')) &
+            call test_cubesat_cg_mc(t, exe)
         if (t%want('tensor_lab: the plan takes faces, edges and corners')) call test_plan_dirs(t)
         if (t%want('tensor_lab: the plan''s u with the deck''s cycles and timings')) &
             call test_plan_u(t, exe)
@@ -511,8 +513,8 @@ contains
     end subroutine test_six_attitudes
 
     !> Through the executable: a table with gx, gy, gz (and one with tilt) and estimate =
-    !! 'tensor cg' writes cg, u_cg and the joint correlation; attitude columns without it,
-    !! and a Monte Carlo with it, are refused with one line.
+    !! 'tensor cg' writes cg, u_cg and the joint correlation, and with a Monte Carlo its
+    !! mean and u of cg too; attitude columns without it are refused with one line.
     subroutine test_cg_exe(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
@@ -544,7 +546,8 @@ contains
         call one('cg_g', tab, ", estimate = 'tensor cg', u_attitude = 0.05", 0, 'cg')
         call one('cg_tilt', tabt, ", estimate = 'tensor cg', u_attitude = 0.05", 0, 'cg')
         call one('cg_noest', tab, '', 2, 'estimate = ''tensor cg''')
-        call one('cg_mc', tab, ", estimate = 'tensor cg', monte_carlo = 10", 2, 'monte_carlo')
+        call one('cg_mc', tab, ", estimate = 'tensor cg', u_attitude = 0.05, monte_carlo = 10", &
+                 0, 'cg')
     contains
         subroutine one(label, table, extra, code, word)
             character(len=*), intent(in) :: label, table, extra, word
@@ -571,6 +574,10 @@ contains
             l1 = file_has(dir//'/'//label//'.tensor', 'u_cg = ')
             l2 = file_has(dir//'/'//label//'.tensor', 'correlation_tensor_cg(9,:) = ')
             ok = ex == 0 .and. l1 .and. l2
+            if (index(extra, 'monte_carlo') > 0) ok = ok .and. &
+                all(abs(kv3(dir//'/'//label//'.tensor', 'u_cg_monte_carlo')) < 1.0_dp) .and. &
+                all(abs(kv3(dir//'/'//label//'.tensor', 'cg_monte_carlo_mean')) < 1.0_dp) .and. &
+                .not. file_has(dir//'/'//label//'.tensor', 'NaN')
             c = kv3(dir//'/'//label//'.tensor', 'cg')
             write (*, '(a,3es12.4)') '   '//label//': cg = ', c
             call t%check('cg exe '//label//': exit 0 (got '//itoa(ex)//'), cg, u_cg and the '// &
@@ -578,6 +585,73 @@ contains
                          maxval(abs(c - DCG)) < 1.0e-6_dp)
         end subroutine one
     end subroutine test_cg_exe
+
+    !> The noisy CubeSat of test_cubesat_cg through the executable with a Monte Carlo of
+    !! 400 samples: it exits 0 and writes no NaN, the Monte Carlo u of each coordinate of
+    !! the mass centre agrees with the first-order u within 20 %, and the true mass centre
+    !! lies within cg +- 1.96 u of the Monte Carlo.
+    subroutine test_cubesat_cg_mc(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        type(body_t) :: bd
+        type(status_t) :: st
+        type(rng_t) :: g
+        real(dp) :: ups(3, 9), als(3, 9), per, gd(3), gn(3), jz(3, 3), c(3), u1(3), umc(3)
+        real(dp), parameter :: DCG(3) = [2.0e-3_dp, -2.5e-3_dp, 1.5e-3_dp]
+        real(dp), parameter :: UT = 2.0e-4_dp, UA = 0.05_dp
+        character(len=:), allocatable :: tab, dir, out
+        integer :: k, j, ex
+        logical :: ok
+        bd%mass = 4.0_dp
+        bd%x = cubesat_tensor()
+        bd%b = 0.12_dp
+        bd%b_prime = 0.12_dp
+        bd%l = 0.8_dp
+        bd%depth = 0.17_dp
+        jz = 0.0_dp
+        call nine_hangs(ups, als)
+        g = rng_stream(31, 0)
+        tab = 'hang up_x up_y up_z along_x along_y along_z period gx gy gz'//NL
+        do k = 1, 9
+            call made_period(bd, DCG, 0.0_dp, [0.0_dp, 0.0_dp, 0.0_dp], jz, ups(:, k), &
+                             als(:, k), per, gd, st)
+            if (st%code /= STATUS_OK) exit
+            per = per + UT*rng_normal(g)
+            do j = 1, 3
+                gn(j) = gd(j) + UA*deg*rng_normal(g)
+            end do
+            tab = tab//itoa(k)//' '//num3(ups(:, k))//' '//num3(als(:, k))//' '//num(per)// &
+                ' '//num3(gn/norm2(gn))//NL
+        end do
+        call t%check('cubesat cg mc: periods made: '//msg_of(st), st%code == STATUS_OK)
+        if (st%code /= STATUS_OK) return
+        dir = SCR//'/cubesat_mc'
+        call write_text(dir//'.txt', tab)
+        call write_text(dir//'.nml', "&scene analyses = 'tensor' /"//NL// &
+            '&suspension b = 0.12, b_prime = 0.12, l = 0.8, l_prime = 0.8, g = 9.80665 /'//NL// &
+            '&body mass = 4.0, inertia = 0.0418, 0.0425, 0.0072, cg_depth = 0.17, '// &
+            'cg_offset = 0 /'//NL//'&integration rtol = 1e-12, atol = 1e-14 /'//NL// &
+            "&tensor hangs = 'cubesat_mc.txt', u_mass = 1e-3, u_l = 1e-3, u_l_prime = 1e-3, "// &
+            'u_b = 5e-4, u_b_prime = 5e-4, u_period = 2e-4, u_direction = 0.05, '// &
+            "estimate = 'tensor cg', u_attitude = 0.05, monte_carlo = 400, seed = 7 /"//NL)
+        call execute_command_line('rm -rf '//dir//' && mkdir -p '//dir//' && '//exe//' '// &
+            dir//'.nml --out '//dir//' > '//dir//'.stdout 2> '//dir//'.stderr', exitstat=ex)
+        out = dir//'/cubesat_mc.tensor'
+        c = kv3(out, 'cg')
+        u1 = kv3(out, 'u_cg')
+        umc = kv3(out, 'u_cg_monte_carlo')
+        ok = ex == 0 .and. all(abs(c) < 1.0_dp) .and. all(u1 > 0.0_dp .and. u1 < 1.0_dp) .and. &
+            all(umc > 0.0_dp .and. umc < 1.0_dp)
+        call t%check('cubesat cg mc: exit 0 (got '//itoa(ex)//'), cg, u_cg and '// &
+                     'u_cg_monte_carlo written, no NaN', ok .and. .not. file_has(out, 'NaN'))
+        if (.not. ok) return
+        write (*, '(a,3f7.3,a,3f7.2)') '   Monte Carlo u / first-order u of cg ', umc/u1, &
+            ', error / u_mc ', (c - DCG)/umc
+        call t%check('cubesat cg mc: the Monte Carlo u of cg within 20 % of the first-order u', &
+                     all(abs(umc/u1 - 1.0_dp) <= 0.2_dp))
+        call t%check('cubesat cg mc: the true mass centre within cg +- 1.96 u_cg_monte_carlo', &
+                     all(abs(c - DCG) <= 1.96_dp*umc))
+    end subroutine test_cubesat_cg_mc
 
     ! ------------------------------------------------------------------ the plan
 

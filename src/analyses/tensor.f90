@@ -45,6 +45,8 @@ module tensor
         integer :: hangs = 0, rows = 0
         integer :: mc_samples = 0               !! Monte Carlo samples (0: none)
         real(dp) :: u_moments_mc(3) = 0.0_dp
+        !> with the mass centre fitted: the Monte Carlo's mean of cg and its u (body frame)
+        real(dp) :: cg_mc(3) = 0.0_dp, u_cg_mc(3) = 0.0_dp
         integer :: plan = 0                     !! hangs planned (0: none)
         character(len=:), allocatable :: plan_file
         !> one line for standard error when the hangs disagree with the fit ('' when not)

@@ -60,13 +60,6 @@ contains
                 'each hang''s model')
             return
         end if
-        if (d%tensor%estimates_cg() .and. d%tensor%monte_carlo > 0) then
-            call set_error(stat, ERR_DECK, '&tensor estimate = ''tensor cg'' with '// &
-                'monte_carlo = '//itoa(d%tensor%monte_carlo)//': the Monte Carlo refits the '// &
-                'six entries alone; allowed: monte_carlo = 0 with estimate = ''tensor cg'' '// &
-                '(the first-order joint covariance), or estimate = ''tensor''')
-            return
-        end if
         if (d%tensor%estimates_cg() .and. len_trim(d%tensor%hangs) == 0 .and. &
             d%tensor%plan == 0) then
             call set_error(stat, ERR_DECK, '&tensor estimate = ''tensor cg'': no table of '// &
@@ -264,6 +257,10 @@ contains
                 u_moments_mc = sdev(7:9)
                 u_axes_mc = [norm2(sdev(10:11)), norm2(sdev(12:13)), norm2(sdev(14:15))]/deg
                 res%u_moments_mc = u_moments_mc
+                if (prob%est_cg) then
+                    res%cg_mc = prob%origin + mean(16:18)
+                    res%u_cg_mc = sdev(16:18)
+                end if
             end if
             if (fit%dof > 0 .and. fit%p_value < 0.05_dp .and. .not. fit%scatter) then
                 h = maxloc(abs(fit%resid), 1)
@@ -534,6 +531,10 @@ contains
                 end do
                 call write_kv(u, 'u_I_principal_monte_carlo', reals_text(u_moments_mc), ios)
                 call write_kv(u, 'u_axis_deg_monte_carlo', reals_text(u_axes_mc), ios)
+                if (prob%est_cg) then
+                    call write_kv(u, 'cg_monte_carlo_mean', reals_text(res%cg_mc), ios)
+                    call write_kv(u, 'u_cg_monte_carlo', reals_text(res%u_cg_mc), ios)
+                end if
             end if
         end if
         if (res%plan > 0) then

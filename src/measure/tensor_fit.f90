@@ -79,7 +79,10 @@
 !!   inputs; per row its timing, amplitude (normal) and definition (uniform within
 !!   +-3^(1/2) u_def); then refits by Gauss-Newton with the estimate's Jacobian (each step
 !!   one model period per case) until each step is below 1e-3 of the entry's first-order u,
-!!   and gives x, the principal moments and the turns of the axes toward the others.  The
+!!   and gives x, the principal moments and the turns of the axes toward the others.  With
+!!   the mass centre fitted the fixture is drawn next, then each measured attitude's reading
+!!   (its residual off by u_attitude); the refit takes the nine parameters with the
+!!   9 x (rows + attitudes) chord and gives dcg too.  The
 !!   samples are a sweep (module monte_carlo); the task is built from the deck and the
 !!   payload (tensor_mc_payload, tensor_mc_task).
 !!
@@ -241,9 +244,12 @@ module tensor_fit
         type(tensor_problem_t) :: prob
         real(dp) :: x(6) = 0.0_dp               !! the estimate
         real(dp) :: axes(3, 3) = 0.0_dp         !! its principal axes
-        real(dp), allocatable :: chord(:, :)    !! 6 x rows
+        !> 6 x rows; with the mass centre fitted 9 x (rows + attitudes)
+        real(dp), allocatable :: chord(:, :)
         real(dp), allocatable :: u_row(:)       !! per row: timing u (s)
         real(dp) :: u_x(6) = 0.0_dp             !! the estimate's first-order u
+        !> with the mass centre fitted: its estimated shift and that shift's first-order u
+        real(dp) :: dcg(3) = 0.0_dp, u_dcg(3) = 0.0_dp
         !> per case: the amplitude part of its period and its derivatives (amplitude_parts)
         real(dp), allocatable :: parts(:, :)
         integer :: seed = 1
@@ -263,8 +269,8 @@ module tensor_fit
     real(dp), parameter, public :: DRIFT_MAX = 1.0e-3_dp
     integer, parameter, public :: DRIFT_CYCLES = 10
     !> Estimates of a Monte Carlo sample: x (6), principal moments (3), the turns of axis k
-    !! toward the two others (6).
-    integer, parameter, public :: MC_ESTIMATES = 15
+    !! toward the two others (6); with the mass centre fitted also its shift dcg (3).
+    integer, parameter, public :: MC_ESTIMATES = 18
     !> Values per case of amplitude_parts: D, dD/dx (6), dD/deps (3), dD/drig (4), dD/dA.
     integer, parameter, public :: MC_PARTS = 15
     !> Two unit directions count as one when |u . v| exceeds 1 - PARALLEL_TOL.
@@ -2192,7 +2198,10 @@ contains
     !> What a tensor Monte Carlo needs beyond the deck, as reals (the sweep's payload): the
     !! seed, the counts, per hang its id, up, along, rig and mass centre and which rig
     !! inputs are its own, per row its hang, period, cycles, amplitude, timing u and u_def,
-    !! the estimate, its axes, its first-order u, the chord matrix.
+    !! the estimate, its axes, its first-order u, the chord matrix (its first six rows and
+    !! the rows' columns), the cases' amplitude parts; with the mass centre fitted a tail:
+    !! the origin, dcg, its u, per hang its measured gravity and whether it has one, and the
+    !! whole chord, 9 x (rows + attitudes).
     function tensor_mc_payload(prob, fit, seed, parts) result(p)
         type(tensor_problem_t), intent(in) :: prob
         type(tensor_fit_t), intent(in) :: fit
@@ -2217,8 +2226,16 @@ contains
                      fit%u_row(i), prob%u_def(i)]
             end associate
         end do
-        p = [p, fit%x, reshape(fit%axes, [9]), fit%u_x, reshape(fit%chord, [size(fit%chord)])]
+        p = [p, fit%x, reshape(fit%axes, [9]), fit%u_x, &
+             reshape(fit%chord(1:6, 1:size(prob%rows)), [6*size(prob%rows)])]
         p = [p, real(size(parts, 2), dp), reshape(parts, [size(parts)])]
+        if (prob%est_cg) then
+            p = [p, prob%origin, fit%dcg, fit%u_dcg]
+            do h = 1, size(prob%hangs)
+                p = [p, prob%hangs(h)%gravity, merge(1.0_dp, 0.0_dp, prob%hangs(h)%attitude)]
+            end do
+            p = [p, reshape(fit%chord, [size(fit%chord)])]
+        end if
     end function tensor_mc_payload
 
     !> The Monte Carlo task of a deck from its payload (tensor_mc_payload): the task rank 0
@@ -2232,7 +2249,8 @@ contains
         type(tensor_mc_task_t), intent(out) :: task
         type(status_t), intent(out) :: stat
         type(measurement_t) :: set
-        integer :: nh, n, h, i, j, k, own, nb, nc
+        integer :: nh, n, h, i, j, k, own, nb, nc, nt, na
+        logical :: cg
         stat%code = STATUS_OK
         if (size(payload) < 3) then
             call set_error(stat, ERR_DECK, 'tensor Monte Carlo: a payload too short')
@@ -2244,7 +2262,14 @@ contains
         nb = 3 + 15*nh + 7*n + 21 + 6*n
         nc = -1
         if (size(payload) > nb .and. nb > 3) nc = nint(payload(min(size(payload), nb + 1)))
-        if (nh < 1 .or. n < 1 .or. nc < 1 .or. size(payload) /= nb + 1 + MC_PARTS*nc) then
+        ! the mass centre's tail (estimate = 'tensor cg'): after the amplitude parts
+        cg = ten%estimates_cg()
+        nt = nb + 1 + MC_PARTS*max(nc, 0)
+        na = 0
+        if (cg .and. nh >= 1 .and. size(payload) >= nt + 9 + 4*nh) &
+            na = count(payload(nt + 13:nt + 9 + 4*nh:4) /= 0.0_dp)
+        if (nh < 1 .or. n < 1 .or. nc < 1 .or. size(payload) /= nt + merge(9 + 4*nh + &
+            9*(n + na), 0, cg)) then
             call set_error(stat, ERR_DECK, 'tensor Monte Carlo: the payload does not match '// &
                 'its counts')
             return
@@ -2267,6 +2292,10 @@ contains
                 do k = 1, 4
                     hh%own(k) = btest(own, k - 1)
                 end do
+                if (cg) then
+                    hh%gravity = payload(nt + 10 + 4*(h - 1):nt + 12 + 4*(h - 1))
+                    hh%attitude = payload(nt + 13 + 4*(h - 1)) /= 0.0_dp
+                end if
             end associate
             j = j + 15
         end do
@@ -2295,7 +2324,15 @@ contains
                 'match its rows')
             return
         end if
-        task%nest = MC_ESTIMATES
+        task%nest = MC_ESTIMATES - 3
+        if (cg) then
+            task%prob%origin = payload(nt + 1:nt + 3)
+            task%dcg = payload(nt + 4:nt + 6)
+            task%u_dcg = payload(nt + 7:nt + 9)
+            task%prob%dcg = task%dcg
+            task%chord = reshape(payload(nt + 10 + 4*nh:), [9, n + na])
+            task%nest = MC_ESTIMATES
+        end if
     end subroutine tensor_mc_task
 
     !> Sample k of a tensor Monte Carlo (tensor_mc_sample).
@@ -2317,16 +2354,20 @@ contains
         type(status_t), intent(out) :: stat
         type(tensor_problem_t) :: p
         type(rng_t) :: g
-        real(dp) :: eps(3), z(4), x(6), dx(6), w(3), v(3, 3), tol, a_new, ddm, ddg
+        real(dp) :: eps(3), z(4), x(6), w(3), v(3, 3), tol, a_new, ddm, ddg, u_all(9)
         real(dp), allocatable :: tc(:), tmeas(:), t0(:), fixed(:), epsh(:, :), drig(:, :)
-        integer :: h, i, j, it, m, c, nh, n
+        real(dp), allocatable :: aobs(:), res(:), dx(:)
+        integer :: h, i, j, it, m, c, nh, n, na, np
         integer, parameter :: IK(6) = [1, 2, 3, 1, 1, 2], JK(6) = [1, 2, 3, 2, 3, 3]
         est = 0.0_dp
         g = rng_stream(task%seed, k)
         p = task%prob
         nh = size(p%hangs)
         n = size(p%rows)
-        allocate (epsh(3, nh), drig(4, nh), tmeas(n), fixed(n), t0(nh), tc(n))
+        na = size(p%att_hang)
+        np = size(task%chord, 1)
+        allocate (epsh(3, nh), drig(4, nh), tmeas(n), fixed(n), t0(nh), tc(n), aobs(na), &
+                  res(n + na), dx(np))
         drig = 0.0_dp
         p%mass = task%prob%mass + p%u%mass*rng_normal(g)
         p%g = task%prob%g + p%u%g*rng_normal(g)
@@ -2387,7 +2428,14 @@ contains
                     p%fix%inertia(JK(j), IK(j)) + z(1)
             end do
         end if
+        ! with the mass centre fitted, each measured attitude last: its residual's reading
+        ! (0 as measured) off by u_attitude
+        do j = 1, na
+            aobs(j) = p%u%attitude*rng_normal(g)
+        end do
         x = task%x
+        p%dcg = task%dcg
+        u_all = [task%u_x, task%u_dcg]
         tol = X_TOL
         if (any(p%case_amp > 0.0_dp)) tol = max(X_TOL, 10.0_dp*p%acc%rtol)
         do it = 1, MAX_ITER
@@ -2400,11 +2448,20 @@ contains
                 tc(i) = t0(p%rows(i)%release) + fixed(i) + &
                     dot_product(task%parts(2:7, task%prob%row_case(i)), x - task%x)
             end do
-            dx = -matmul(task%chord, tc - tmeas)
-            x = x + dx
-            ! converged: at the model's resolution, or each step below 1e-3 of its u
-            if (maxval(abs(dx)) <= 10.0_dp*tol*maxval(x(1:3))) exit
-            if (all(task%u_x > 0.0_dp) .and. all(abs(dx) <= MC_STEP*task%u_x)) exit
+            res(1:n) = tc - tmeas
+            do j = 1, na
+                res(n + j) = attitude_residual(p, p%hangs(p%att_hang(j)), p%mass) - aobs(j)
+            end do
+            dx = -matmul(task%chord, res)
+            x = x + dx(1:6)
+            if (np > 6) p%dcg = p%dcg + dx(7:9)
+            ! converged: at the model's resolution (the mass centre's step against the
+            ! hangs' b_prime), or each step below 1e-3 of its u
+            if (maxval(abs(dx(1:6))) <= 10.0_dp*tol*maxval(x(1:3))) then
+                if (np == 6) exit
+                if (maxval(abs(dx(7:9))) <= 10.0_dp*tol*p%hangs(1)%b_prime) exit
+            end if
+            if (all(u_all(1:np) > 0.0_dp) .and. all(abs(dx) <= MC_STEP*u_all(1:np))) exit
         end do
         if (stat%code == STATUS_OK .and. it > MAX_ITER) call set_error(stat, ERR_NUMERIC, &
             'the refit did not converge in '//itoa(MAX_ITER)//' steps')
@@ -2432,6 +2489,7 @@ contains
                 est(m) = dot_product(v(:, i), task%axes(:, j))
             end do
         end do
+        if (np > 6) est(16:18) = p%dcg
     end subroutine tensor_mc_sample
 
 end module tensor_fit
