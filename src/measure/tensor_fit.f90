@@ -2196,9 +2196,10 @@ contains
 
 
     !> What a tensor Monte Carlo needs beyond the deck, as reals (the sweep's payload): the
-    !! seed, the counts, per hang its id, up, along, rig and mass centre and which rig
-    !! inputs are its own, per row its hang, period, cycles, amplitude, timing u and u_def,
-    !! the estimate, its axes, its first-order u, the chord matrix (its first six rows and
+    !! seed, the counts, per hang its id, up, along, rig and mass centre, which rig inputs
+    !! are its own, its cables (a platform: 3) and mass centre across, per row its hang,
+    !! period, cycles, amplitude, timing u and u_def, the table's mass-centre origin, the
+    !! estimate, its axes, its first-order u, the chord matrix (its first six rows and
     !! the rows' columns), the cases' amplitude parts; with the mass centre fitted a tail:
     !! the origin, dcg, its u, per hang its measured gravity and whether it has one, and the
     !! whole chord, 9 x (rows + attitudes).
@@ -2217,7 +2218,8 @@ contains
                     if (hh%own(k)) own = own + 2**(k - 1)
                 end do
                 p = [p, real(hh%id, dp), real(hh%line, dp), hh%up, hh%along, hh%l, &
-                     hh%l_prime, hh%b, hh%b_prime, hh%cg_depth, hh%cg_offset, real(own, dp)]
+                     hh%l_prime, hh%b, hh%b_prime, hh%cg_depth, hh%cg_offset, real(own, dp), &
+                     real(hh%cables, dp), hh%cg_offset_y]
             end associate
         end do
         do i = 1, size(prob%rows)
@@ -2226,7 +2228,7 @@ contains
                      fit%u_row(i), prob%u_def(i)]
             end associate
         end do
-        p = [p, fit%x, reshape(fit%axes, [9]), fit%u_x, &
+        p = [p, prob%origin, fit%x, reshape(fit%axes, [9]), fit%u_x, &
              reshape(fit%chord(1:6, 1:size(prob%rows)), [6*size(prob%rows)])]
         p = [p, real(size(parts, 2), dp), reshape(parts, [size(parts)])]
         if (prob%est_cg) then
@@ -2259,7 +2261,7 @@ contains
         task%seed = nint(payload(1))
         nh = nint(payload(2))
         n = nint(payload(3))
-        nb = 3 + 15*nh + 7*n + 21 + 6*n
+        nb = 3 + 17*nh + 7*n + 24 + 6*n
         nc = -1
         if (size(payload) > nb .and. nb > 3) nc = nint(payload(min(size(payload), nb + 1)))
         ! the mass centre's tail (estimate = 'tensor cg'): after the amplitude parts
@@ -2277,7 +2279,7 @@ contains
         allocate (set%releases(nh), set%obs(n))
         j = 3
         do h = 1, nh
-            associate (hh => set%releases(h)%hang, q => payload(j + 1:j + 15))
+            associate (hh => set%releases(h)%hang, q => payload(j + 1:j + 17))
                 hh%id = nint(q(1))
                 hh%line = nint(q(2))
                 hh%up = q(3:5)
@@ -2292,12 +2294,14 @@ contains
                 do k = 1, 4
                     hh%own(k) = btest(own, k - 1)
                 end do
+                hh%cables = nint(q(16))
+                hh%cg_offset_y = q(17)
                 if (cg) then
                     hh%gravity = payload(nt + 10 + 4*(h - 1):nt + 12 + 4*(h - 1))
                     hh%attitude = payload(nt + 13 + 4*(h - 1)) /= 0.0_dp
                 end if
             end associate
-            j = j + 15
+            j = j + 17
         end do
         allocate (task%u_row(n))
         do i = 1, n
@@ -2313,11 +2317,12 @@ contains
             j = j + 7
         end do
         call problem_of(ten, sus, bod, acc, set, task%prob)
-        task%prob%u_def = payload(3 + 15*nh + 7:3 + 15*nh + 7*n:7)
-        task%x = payload(j + 1:j + 6)
-        task%axes = reshape(payload(j + 7:j + 15), [3, 3])
-        task%u_x = payload(j + 16:j + 21)
-        task%chord = reshape(payload(j + 22:j + 21 + 6*n), [6, n])
+        task%prob%u_def = payload(3 + 17*nh + 7:3 + 17*nh + 7*n:7)
+        task%prob%origin = payload(j + 1:j + 3)
+        task%x = payload(j + 4:j + 9)
+        task%axes = reshape(payload(j + 10:j + 18), [3, 3])
+        task%u_x = payload(j + 19:j + 24)
+        task%chord = reshape(payload(j + 25:j + 24 + 6*n), [6, n])
         task%parts = reshape(payload(nb + 2:nb + 1 + MC_PARTS*nc), [MC_PARTS, nc])
         if (nc /= size(task%prob%case_hang)) then
             call set_error(stat, ERR_DECK, 'tensor Monte Carlo: the payload''s cases do not '// &
