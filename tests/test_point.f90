@@ -6,15 +6,16 @@
 !! against differences of whole runs; a video track (made here: the model in pixels, a
 !! camera origin, noise) of a point 5 cm off the axis of a release that sways at 10 % of
 !! the torsion's amplitude, fitted for I1, sway, the camera's origin and the scale: I1
-!! within 0.05 %, the scale within its interval, and the bias of the same track read the
-!! old way (the point's angle about the axis, fitted as theta4 of one axis) reported
-!! beside it; misuses of the keys refused with one line.
+!! within 0.05 %, the scale within its interval, also as a track's file through the
+!! program (seconds or frame numbers), and the bias of the same track read the old way
+!! (the point's angle about the axis, fitted as theta4 of one axis) larger; misuses of
+!! the keys refused with one line.
 module test_point
-    use kinds, only: dp, deg
+    use kinds, only: dp, deg, pi
     use status, only: status_t
     use text, only: sci
     use testing, only: tester_t, msg_of, write_text, run_cmd => run, fresh_dir, file_has, &
-        exists
+        exists, read_kv_text
     use deck, only: deck_t, read_deck
     use rig, only: rig_t, start_t, accuracy_t, make_pendulum, start_state
     use geometry, only: pendulum_t, frame, body_pose, mass_centre, body_axes, cable_direction
@@ -46,7 +47,7 @@ contains
             call test_pose(t)
         if (t%want('point: sensitivities against differences of whole runs')) call test_sens(t)
         if (t%want('point: a video track with sway gives I1 without the sway''s bias')) &
-            call test_goal(t)
+            call test_goal(t, exe)
         if (t%want('point: misuses of the keys refused with one line')) call test_refusal(t, exe)
     end subroutine run_point_tests
 
@@ -258,13 +259,20 @@ contains
     !> A video track seen from below (60 frames a second, 20 s; 0.5 mm a pixel, the camera's
     !! origin at (640, 360) px, noise 0.3 px) of a point 5 cm off the axis (record_point =
     !! 0, 0.05, 0) of a symmetric rig released from 20 degrees with a sway (l sway) of 10 %
-    !! of the point's excursion in the torsion (0.05 m sin 20 degrees), fitted from I1 2 % off, no sway and a
-    !! scale 1 % off for I1, sway, the two offsets and the scale: I1 within 0.05 %, the
-    !! scale's truth within its 95 % interval.  The same track the old way: the point's
-    !! angle about the axis (origin and scale known) as theta4 of one axis, fitted for I1,
-    !! the amplitude, t0 and the offset; both relative errors of I1 printed (the old way's carries the sway).
-    subroutine test_goal(t)
+    !! of the point's excursion in the torsion (0.05 m sin 20 degrees), a sway that grows
+    !! from the torsion's energy to several cm by the record's end, fitted from I1 2 % off,
+    !! no sway and a scale 1 % off for I1, sway, the two offsets and the scale: I1 within
+    !! 0.05 %, the scale's truth within its 95 % interval.  The same track as a file (t,
+    !! x, y in px) through the program: exit 0, I1 within 0.05 % and within its U; in
+    !! frame numbers with record_frame_rate and the columns by name: the same I1; a track
+    !! of one coordinate, and record_columns naming one, refused with one line naming
+    !! record_columns.  The same track the old way: the point's angle about the axis
+    !! (origin and scale known; atan2 unwrapped) while the point stays on its circle, as
+    !! theta4 of one axis fitted for I1, the amplitude, t0 and the offset: it converges,
+    !! and its I1 error (the sway's bias) is larger than the point fit's; both printed.
+    subroutine test_goal(t, exe)
         type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe     !! path of the bifilar executable
         integer, parameter :: N = 1201
         real(dp), parameter :: SCALE = 5.0e-4_dp, ORIGIN(2) = [640.0_dp, 360.0_dp]
         real(dp), parameter :: NOISE = 0.3_dp, QV(3) = [0.0_dp, 0.05_dp, 0.0_dp]
@@ -279,8 +287,10 @@ contains
         type(rng_t) :: g
         type(pendulum_t) :: p
         real(dp) :: vals(2*N), u(2), w(2), e_new, e_old, sc
-        integer :: i, k
-        character(len=:), allocatable :: common
+        integer :: i, k, ex, m
+        real(dp) :: i1_time, i1_frames, u_i1
+        character(len=:), allocatable :: common, goal
+        character(len=256) :: val
         call fresh_dir(DIR)
         rg%b = 0.40_dp
         rg%b_prime = 0.40_dp
@@ -319,11 +329,12 @@ contains
             'g = 9.80665 /'//new_line('a')//'&body mass = 3.10, inertia = 0.0522, 0.0630, '// &
             '0.0304, r = 0.20, lambda = 0.0, sway_depth = 0.30 /'//new_line('a')// &
             '&integration rtol = 1e-10, atol = 1e-12 /'//new_line('a')
-        call write_text(DIR//'/goal.nml', '&scene title = ''video'', analyses = '// &
+        goal = '&scene title = ''video'', analyses = '// &
             '''identify'' /'//new_line('a')//common//'&start mode = ''raised'', '// &
             'amplitude = 20.0 /'//new_line('a')//'&measurement record = ''goal.dat'', '// &
             'quantity = ''point'', record_point = 0, 0.05, 0, record_scale = 5.05e-4, '// &
-            'estimate = ''I1 sway bias scale'' /'//new_line('a'))
+            'estimate = ''I1 sway bias scale'' /'//new_line('a')
+        call write_text(DIR//'/goal.nml', goal)
         call read_deck(DIR//'/goal.nml', d, stat)
         call t%check('point: the goal deck'//msg_of(stat), stat%code == 0)
         if (stat%code /= 0) return
@@ -345,19 +356,73 @@ contains
         k = findloc(res%names(1:res%np), 'sway', 1)
         if (k > 0) print '(a,3es14.6)', '   sway estimate, truth, u (rad): ', res%p(k), &
             st%sway, res%u_p(k)
+        ! the same track through the program: a file of t, x, y (px) that the deck names
+        call write_track('goal.dat', 't (s), x (px), y (px)', .false., .true.)
+        ex = run_cmd(exe//' '//DIR//'/goal.nml --out '//DIR//'/out', DIR)
+        call t%check('point: the track''s file through the program: exit 0', ex == 0)
+        i1_time = -1.0_dp
+        if (ex == 0) then
+            call read_kv_text(DIR//'/out/goal.identify', 'I1', val)
+            i1_time = real_of(val)
+            call read_kv_text(DIR//'/out/goal.identify', 'U_I1', val)
+            u_i1 = real_of(val)
+            print '(a,3es14.6)', '   program, track file: I1, truth, U_I1 (kg m^2): ', &
+                i1_time, rg%inertia(1), u_i1
+            call t%check_close('point: the program''s I1 from the track''s file within '// &
+                               '0.05 %', i1_time, rg%inertia(1), 5.0e-4_dp, 0.0_dp)
+            call t%check('point: the program''s I1 within its U', &
+                         abs(i1_time - rg%inertia(1)) <= u_i1)
+        end if
+        ! frame numbers (record_frame_rate), the columns by their names: the same I1
+        call write_track('frames.dat', 'frame, x (px), y (px)', .true., .true.)
+        call write_text(DIR//'/frames.nml', goal(1:index(goal, 'goal.dat') - 1)// &
+            'frames.dat'', record_frame_rate = 60, record_columns = ''frame'', '// &
+            '''x (px)'', ''y (px)'''//goal(index(goal, 'goal.dat') + 9:))
+        ex = run_cmd(exe//' '//DIR//'/frames.nml --out '//DIR//'/out', DIR)
+        call t%check('point: a track in frame numbers through the program: exit 0', ex == 0)
+        if (ex == 0) then
+            call read_kv_text(DIR//'/out/frames.identify', 'I1', val)
+            i1_frames = real_of(val)
+            call t%check_close('point: a track in frame numbers gives the same I1', &
+                               i1_frames, i1_time, 1.0e-6_dp, 0.0_dp)
+        end if
+        ! a track of one coordinate, and record_columns naming one: refused with one line
+        call write_track('one.dat', 't (s), x (px)', .false., .false.)
+        call write_text(DIR//'/one.nml', goal(1:index(goal, 'goal.dat') - 1)//'one.dat'// &
+                        goal(index(goal, 'goal.dat') + 8:))
+        call write_text(DIR//'/onecol.nml', goal(1:index(goal, 'goal.dat') - 1)// &
+            'goal.dat'', record_columns = 1, 2'//goal(index(goal, 'goal.dat') + 9:))
+        call refused('one')
+        call refused('onecol')
         ! the old way: the point's angle about the axis, as theta4 of one axis
         call make_pendulum(rg, p, stat)
         u = point_position(p, rg%b_prime, QV, VIEW_BELOW, spread(0.0_dp, 1, NSTATE)) - &
             point_position(p, rg%b_prime, [0.0_dp, 0.0_dp, 0.0_dp], VIEW_BELOW, &
                            spread(0.0_dp, 1, NSTATE))
-        allocate (ang%t(N), ang%v(N), ang%u(N))
-        ang%t = rec%t
+        ! the angle of the point about the axis (atan2, unwrapped: continuous through
+        ! +-pi) as long as the point stays on its circle (its distance from the axis within
+        ! 10 % of |u|); beyond, the body's sway carries the point around the axis and its
+        ! angle there is no torsion (this rig's sway grows from the torsion's energy)
+        m = N
         do i = 1, N
             w = u + [rec%vs(i) - ORIGIN(1), rec%vs(N + i) - ORIGIN(2)]*SCALE
+            if (abs(norm2(w) - norm2(u)) > 0.1_dp*norm2(u)) then
+                m = i - 1
+                exit
+            end if
+        end do
+        allocate (ang%t(m), ang%v(m), ang%u(m))
+        ang%t = rec%t(1:m)
+        do i = 1, m
+            w = u + [rec%vs(i) - ORIGIN(1), rec%vs(N + i) - ORIGIN(2)]*SCALE
             ang%v(i) = atan2(u(1)*w(2) - u(2)*w(1), dot_product(u, w))
+            if (i > 1) ang%v(i) = ang%v(i) - 2.0_dp*pi*anint((ang%v(i) - ang%v(i - 1))/ &
+                                                             (2.0_dp*pi))
         end do
         if (ang%v(1) < 0.0_dp) ang%v = -ang%v
         ang%u = 1.0_dp
+        print '(a,f7.2,a,f7.2,a)', '   one-axis angle record: the first ', ang%t(m), &
+            ' s of ', rec%t(N), ' s (the point on its circle)'
         call write_text(DIR//'/old.nml', '&scene title = ''video, old way'', analyses = '// &
             '''identify'' /'//new_line('a')//common//'&start mode = ''raised'', '// &
             'amplitude = 20.0 /'//new_line('a')//'&measurement record = ''old.dat'', '// &
@@ -365,19 +430,73 @@ contains
         call read_deck(DIR//'/old.nml', d, stat)
         call t%check('point: the old way''s deck'//msg_of(stat), stat%code == 0)
         if (stat%code /= 0) return
-        print '(a,es11.3)', '   I1 relative error: point fit ', e_new
         call identify_record(d, ang, old, stat)
-        if (stat%code /= 0) then
-            ! the angle of one axis read from a swaying track: the old fit may not follow it
-            print '(a)', '   one-axis angle fit (old way) failed: '//trim(stat%msg)
-            return
-        end if
+        call t%check('point: the one-axis angle fit (old way) converges'//msg_of(stat), &
+                     stat%code == 0)
+        if (stat%code /= 0) return
         e_old = old%i1/rg%inertia(1) - 1.0_dp
-        print '(a,es11.3,a,es11.3)', '   I1 relative error: point fit ', e_new, &
-            ', one-axis angle fit (old way) ', e_old
+        print '(a,es11.3,a,es11.3,a,es11.3,a)', '   I1 relative error: point fit ', e_new, &
+            ', one-axis angle fit (old way) ', e_old, ' (its U_I1/I1 ', old%u_i1_expanded/old%i1, ')'
         call t%check('point: the point''s fit is closer than the old way''s', &
                      abs(e_new) < abs(e_old))
+    contains
+        !> The track (rec) as a file in DIR: a header, the time (s, or frame numbers) and
+        !! x, y (px, or x alone).
+        subroutine write_track(name, head, frames, both)
+            character(len=*), intent(in) :: name, head
+            logical, intent(in) :: frames, both
+            character(len=:), allocatable :: text
+            character(len=80) :: line
+            integer :: j
+            text = head//new_line('a')
+            do j = 1, N
+                if (frames) then
+                    write (line, '(i0,2(", ",f0.5))') j - 1, rec%vs(j), rec%vs(N + j)
+                else
+                    write (line, '(es23.15,2(", ",f0.5))') rec%t(j), rec%vs(j), rec%vs(N + j)
+                end if
+                if (.not. both) line = line(1:index(line, ',', back=.true.) - 1)
+                text = text//trim(line)//new_line('a')
+            end do
+            call write_text(DIR//'/'//name, text)
+        end subroutine write_track
+        !> The deck DIR/name.nml refused: exit 2, one line naming record_columns, no output.
+        subroutine refused(name)
+            character(len=*), intent(in) :: name
+            integer :: e
+            call fresh_dir(DIR//'/out_'//name)
+            e = run_cmd(exe//' '//DIR//'/'//name//'.nml --out '//DIR//'/out_'//name, DIR)
+            call t%check('point: '//name//': a track of one coordinate refused (exit 2)', &
+                         e == 2)
+            call t%check('point: '//name//': the line names record_columns', &
+                         file_has(DIR//'/stderr', 'record_columns'))
+            call t%check('point: '//name//': one line', message_count(DIR//'/stderr') == 1)
+            call t%check('point: '//name//': no output', &
+                         .not. exists(DIR//'/out_'//name//'/'//name//'.identify'))
+        end subroutine refused
+        real(dp) function real_of(str)
+            character(len=*), intent(in) :: str
+            integer :: ios
+            read (str, *, iostat=ios) real_of
+            if (ios /= 0) real_of = -1.0_dp
+        end function real_of
     end subroutine test_goal
+
+    !> The lines of a file that are not blank.
+    integer function message_count(path) result(k)
+        character(len=*), intent(in) :: path
+        integer :: u, ios
+        character(len=1024) :: buf
+        k = 0
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) buf
+            if (ios /= 0) exit
+            if (len_trim(buf) > 0) k = k + 1
+        end do
+        close (u)
+    end function message_count
 
     !> Misuses of the keys through the program, each exit 2 with one line naming the key
     !! and no output: quantity 'point' without record_point, record_scale <= 0, record_view

@@ -1533,15 +1533,8 @@ contains
         logical :: rate
         character(len=:), allocatable :: where
         stat%code = STATUS_OK
-        ! a tracked point needs its two coordinates, which the record file's reader does not
-        ! give: refused rather than fitted as an angle
-        if (trim(mea%quantity) == 'point' .and. .not. allocated(rec%vs)) then
-            call set_error(stat, ERR_DECK, name//': quantity = ''point'' with a record '// &
-                'file: the program does not read a track''s file; allowed: quantity = '// &
-                '''angle'', ''rate'' or ''rates'' for a record file (a track through the '// &
-                'library''s identify_record)')
-            return
-        end if
+        ! a tracked point: no angle to mistake for a rate (its coordinates in px or m)
+        if (trim(mea%quantity) == 'point') return
         n = size(rec%v)
         if (.not. raised .or. n < 3) return
         rate = trim(mea%quantity) == 'rate' .or. rec%rate
