@@ -357,7 +357,7 @@ contains
         if (k > 0) print '(a,3es14.6)', '   sway estimate, truth, u (rad): ', res%p(k), &
             st%sway, res%u_p(k)
         ! the same track through the program: a file of t, x, y (px) that the deck names
-        call write_track('goal.dat', 't (s), x (px), y (px)', .false., .true.)
+        call write_track('goal.dat', 't (s), x (px), y (px)', .false., .true., 1.0_dp)
         ex = run_cmd(exe//' '//DIR//'/goal.nml --out '//DIR//'/out', DIR)
         call t%check('point: the track''s file through the program: exit 0', ex == 0)
         i1_time = -1.0_dp
@@ -374,7 +374,7 @@ contains
                          abs(i1_time - rg%inertia(1)) <= u_i1)
         end if
         ! frame numbers (record_frame_rate), the columns by their names: the same I1
-        call write_track('frames.dat', 'frame, x (px), y (px)', .true., .true.)
+        call write_track('frames.dat', 'frame, x (px), y (px)', .true., .true., 1.0_dp)
         call write_text(DIR//'/frames.nml', goal(1:index(goal, 'goal.dat') - 1)// &
             'frames.dat'', record_frame_rate = 60, record_columns = ''frame'', '// &
             '''x (px)'', ''y (px)'''//goal(index(goal, 'goal.dat') + 9:))
@@ -387,13 +387,30 @@ contains
                                i1_frames, i1_time, 1.0e-6_dp, 0.0_dp)
         end if
         ! a track of one coordinate, and record_columns naming one: refused with one line
-        call write_track('one.dat', 't (s), x (px)', .false., .false.)
+        call write_track('one.dat', 't (s), x (px)', .false., .false., 1.0_dp)
         call write_text(DIR//'/one.nml', goal(1:index(goal, 'goal.dat') - 1)//'one.dat'// &
                         goal(index(goal, 'goal.dat') + 8:))
         call write_text(DIR//'/onecol.nml', goal(1:index(goal, 'goal.dat') - 1)// &
             'goal.dat'', record_columns = 1, 2'//goal(index(goal, 'goal.dat') + 9:))
-        call refused('one')
-        call refused('onecol')
+        call refused('one', 'record_columns')
+        call refused('onecol', 'record_columns')
+        ! a track in mm (its columns' names say so), record_scale left out: the same I1; in
+        ! mm with record_scale, and x in mm with y in px: refused with one line
+        call write_track('mm.dat', 't (s), x (mm), y (mm)', .false., .true., 1.0e3_dp*SCALE)
+        call write_text(DIR//'/mm.nml', replaced(replaced(goal, 'goal.dat', 'mm.dat'), &
+                                                 ' record_scale = 5.05e-4,', ''))
+        ex = run_cmd(exe//' '//DIR//'/mm.nml --out '//DIR//'/out', DIR)
+        call t%check('point: a track in mm through the program: exit 0', ex == 0)
+        if (ex == 0) then
+            call read_kv_text(DIR//'/out/mm.identify', 'I1', val)
+            call t%check_close('point: a track in mm gives the same I1', real_of(val), &
+                               i1_time, 1.0e-5_dp, 0.0_dp)
+        end if
+        call write_text(DIR//'/mmscale.nml', replaced(goal, 'goal.dat', 'mm.dat'))
+        call refused('mmscale', 'record_scale')
+        call write_track('mixed.dat', 't (s), x (mm), y (px)', .false., .true., 1.0_dp)
+        call write_text(DIR//'/mixed.nml', replaced(goal, 'goal.dat', 'mixed.dat'))
+        call refused('mixed', 'different units')
         ! the old way: the point's angle about the axis, as theta4 of one axis
         call make_pendulum(rg, p, stat)
         u = point_position(p, rg%b_prime, QV, VIEW_BELOW, spread(0.0_dp, 1, NSTATE)) - &
@@ -442,38 +459,48 @@ contains
     contains
         !> The track (rec) as a file in DIR: a header, the time (s, or frame numbers) and
         !! x, y (px, or x alone).
-        subroutine write_track(name, head, frames, both)
+        subroutine write_track(name, head, frames, both, unit)
             character(len=*), intent(in) :: name, head
             logical, intent(in) :: frames, both
+            real(dp), intent(in) :: unit        !! one px in the file's unit
             character(len=:), allocatable :: text
             character(len=80) :: line
             integer :: j
             text = head//new_line('a')
             do j = 1, N
                 if (frames) then
-                    write (line, '(i0,2(", ",f0.5))') j - 1, rec%vs(j), rec%vs(N + j)
+                    write (line, '(i0,2(", ",f0.5))') j - 1, rec%vs(j)*unit, rec%vs(N + j)*unit
                 else
-                    write (line, '(es23.15,2(", ",f0.5))') rec%t(j), rec%vs(j), rec%vs(N + j)
+                    write (line, '(es23.15,2(", ",f0.6))') rec%t(j), rec%vs(j)*unit, &
+                        rec%vs(N + j)*unit
                 end if
                 if (.not. both) line = line(1:index(line, ',', back=.true.) - 1)
                 text = text//trim(line)//new_line('a')
             end do
             call write_text(DIR//'/'//name, text)
         end subroutine write_track
-        !> The deck DIR/name.nml refused: exit 2, one line naming record_columns, no output.
-        subroutine refused(name)
-            character(len=*), intent(in) :: name
+        !> The deck DIR/name.nml refused: exit 2, one line saying word, no output.
+        subroutine refused(name, word)
+            character(len=*), intent(in) :: name, word
             integer :: e
             call fresh_dir(DIR//'/out_'//name)
             e = run_cmd(exe//' '//DIR//'/'//name//'.nml --out '//DIR//'/out_'//name, DIR)
-            call t%check('point: '//name//': a track of one coordinate refused (exit 2)', &
-                         e == 2)
-            call t%check('point: '//name//': the line names record_columns', &
-                         file_has(DIR//'/stderr', 'record_columns'))
+            call t%check('point: '//name//': refused (exit 2)', e == 2)
+            call t%check('point: '//name//': the line says '//word, &
+                         file_has(DIR//'/stderr', word))
             call t%check('point: '//name//': one line', message_count(DIR//'/stderr') == 1)
             call t%check('point: '//name//': no output', &
                          .not. exists(DIR//'/out_'//name//'/'//name//'.identify'))
         end subroutine refused
+        !> text with its first old replaced by new.
+        function replaced(text, old, new) result(r)
+            character(len=*), intent(in) :: text, old, new
+            character(len=:), allocatable :: r
+            integer :: j
+            j = index(text, old)
+            r = text
+            if (j > 0) r = text(1:j - 1)//new//text(j + len(old):)
+        end function replaced
         real(dp) function real_of(str)
             character(len=*), intent(in) :: str
             integer :: ios
