@@ -1520,7 +1520,8 @@ contains
     !! within a twentieth of its period after t = 0 (t0 not estimated), or when the body was
     !! held still before it (find_release, t0 estimated).  A rate that stands there more
     !! than 0.6 of its largest swing from its centre, or an angle less than 0.2, is refused
-    !! (ERR_DECK naming quantity and record_units).  name: the record, for messages.
+    !! (ERR_DECK naming quantity and record_units).  A tracked point (quantity 'point',
+    !! lengths) is no angle or rate: not checked.  name: the record, for messages.
     subroutine check_record_kind(rec, mea, raised, name, stat)
         type(record_t), intent(in) :: rec
         type(measurement_group_t), intent(in) :: mea    !! (quantity, estimate)
