@@ -6,15 +6,16 @@
 !! against differences of whole runs; a video track (made here: the model in pixels, a
 !! camera origin, noise) of a point 5 cm off the axis of a release that sways at 10 % of
 !! the torsion's amplitude, fitted for I1, sway, the camera's origin and the scale: I1
-!! within 0.05 %, the scale within its interval, and the bias of the same track read the
-!! old way (the point's angle about the axis, fitted as theta4 of one axis) reported
-!! beside it; misuses of the keys refused with one line.
+!! within 0.05 %, the scale within its interval, also as a track's file through the
+!! program (seconds or frame numbers), and the bias of the same track read the old way
+!! (the point's angle about the axis, fitted as theta4 of one axis) larger; misuses of
+!! the keys refused with one line.
 module test_point
-    use kinds, only: dp, deg
+    use kinds, only: dp, deg, pi
     use status, only: status_t
     use text, only: sci
     use testing, only: tester_t, msg_of, write_text, run_cmd => run, fresh_dir, file_has, &
-        exists
+        exists, read_kv_text
     use deck, only: deck_t, read_deck
     use rig, only: rig_t, start_t, accuracy_t, make_pendulum, start_state
     use geometry, only: pendulum_t, frame, body_pose, mass_centre, body_axes, cable_direction
@@ -26,6 +27,7 @@ module test_point
         VIEW_BELOW, VIEW_SIDE
     use inputs, only: set_input, input_value
     use records, only: record_t
+    use measure_groups, only: parse_axes
     use identify, only: identify_result_t, identify_record
     use random, only: rng_t, rng_stream, rng_normal
     implicit none
@@ -46,8 +48,10 @@ contains
             call test_pose(t)
         if (t%want('point: sensitivities against differences of whole runs')) call test_sens(t)
         if (t%want('point: a video track with sway gives I1 without the sway''s bias')) &
-            call test_goal(t)
+            call test_goal(t, exe)
         if (t%want('point: misuses of the keys refused with one line')) call test_refusal(t, exe)
+        if (t%want('point: estimate = ''scale'' with quantity ''rates'': three scales')) &
+            call test_rates_scale(t)
     end subroutine run_point_tests
 
     !> The laboratory rig of the rates' tests (unequal cables, mass centre off the midpoint
@@ -258,13 +262,20 @@ contains
     !> A video track seen from below (60 frames a second, 20 s; 0.5 mm a pixel, the camera's
     !! origin at (640, 360) px, noise 0.3 px) of a point 5 cm off the axis (record_point =
     !! 0, 0.05, 0) of a symmetric rig released from 20 degrees with a sway (l sway) of 10 %
-    !! of the point's excursion in the torsion (0.05 m sin 20 degrees), fitted from I1 2 % off, no sway and a
-    !! scale 1 % off for I1, sway, the two offsets and the scale: I1 within 0.05 %, the
-    !! scale's truth within its 95 % interval.  The same track the old way: the point's
-    !! angle about the axis (origin and scale known) as theta4 of one axis, fitted for I1,
-    !! the amplitude, t0 and the offset; both relative errors of I1 printed (the old way's carries the sway).
-    subroutine test_goal(t)
+    !! of the point's excursion in the torsion (0.05 m sin 20 degrees), a sway that grows
+    !! from the torsion's energy to several cm by the record's end, fitted from I1 2 % off,
+    !! no sway and a scale 1 % off for I1, sway, the two offsets and the scale: I1 within
+    !! 0.05 %, the scale's truth within its 95 % interval.  The same track as a file (t,
+    !! x, y in px) through the program: exit 0, I1 within 0.05 % and within its U; in
+    !! frame numbers with record_frame_rate and the columns by name: the same I1; a track
+    !! of one coordinate, and record_columns naming one, refused with one line naming
+    !! record_columns.  The same track the old way: the point's angle about the axis
+    !! (origin and scale known; atan2 unwrapped) while the point stays on its circle, as
+    !! theta4 of one axis fitted for I1, the amplitude, t0 and the offset: it converges,
+    !! and its I1 error (the sway's bias) is larger than the point fit's; both printed.
+    subroutine test_goal(t, exe)
         type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe     !! path of the bifilar executable
         integer, parameter :: N = 1201
         real(dp), parameter :: SCALE = 5.0e-4_dp, ORIGIN(2) = [640.0_dp, 360.0_dp]
         real(dp), parameter :: NOISE = 0.3_dp, QV(3) = [0.0_dp, 0.05_dp, 0.0_dp]
@@ -279,8 +290,10 @@ contains
         type(rng_t) :: g
         type(pendulum_t) :: p
         real(dp) :: vals(2*N), u(2), w(2), e_new, e_old, sc
-        integer :: i, k
-        character(len=:), allocatable :: common
+        integer :: i, k, ex, m
+        real(dp) :: i1_time, i1_frames, u_i1
+        character(len=:), allocatable :: common, goal
+        character(len=256) :: val
         call fresh_dir(DIR)
         rg%b = 0.40_dp
         rg%b_prime = 0.40_dp
@@ -319,11 +332,12 @@ contains
             'g = 9.80665 /'//new_line('a')//'&body mass = 3.10, inertia = 0.0522, 0.0630, '// &
             '0.0304, r = 0.20, lambda = 0.0, sway_depth = 0.30 /'//new_line('a')// &
             '&integration rtol = 1e-10, atol = 1e-12 /'//new_line('a')
-        call write_text(DIR//'/goal.nml', '&scene title = ''video'', analyses = '// &
+        goal = '&scene title = ''video'', analyses = '// &
             '''identify'' /'//new_line('a')//common//'&start mode = ''raised'', '// &
             'amplitude = 20.0 /'//new_line('a')//'&measurement record = ''goal.dat'', '// &
             'quantity = ''point'', record_point = 0, 0.05, 0, record_scale = 5.05e-4, '// &
-            'estimate = ''I1 sway bias scale'' /'//new_line('a'))
+            'estimate = ''I1 sway bias scale'' /'//new_line('a')
+        call write_text(DIR//'/goal.nml', goal)
         call read_deck(DIR//'/goal.nml', d, stat)
         call t%check('point: the goal deck'//msg_of(stat), stat%code == 0)
         if (stat%code /= 0) return
@@ -345,19 +359,90 @@ contains
         k = findloc(res%names(1:res%np), 'sway', 1)
         if (k > 0) print '(a,3es14.6)', '   sway estimate, truth, u (rad): ', res%p(k), &
             st%sway, res%u_p(k)
+        ! the same track through the program: a file of t, x, y (px) that the deck names
+        call write_track('goal.dat', 't (s), x (px), y (px)', .false., .true., 1.0_dp)
+        ex = run_cmd(exe//' '//DIR//'/goal.nml --out '//DIR//'/out', DIR)
+        call t%check('point: the track''s file through the program: exit 0', ex == 0)
+        i1_time = -1.0_dp
+        if (ex == 0) then
+            call read_kv_text(DIR//'/out/goal.identify', 'I1', val)
+            i1_time = real_of(val)
+            call read_kv_text(DIR//'/out/goal.identify', 'U_I1', val)
+            u_i1 = real_of(val)
+            print '(a,3es14.6)', '   program, track file: I1, truth, U_I1 (kg m^2): ', &
+                i1_time, rg%inertia(1), u_i1
+            call t%check_close('point: the program''s I1 from the track''s file within '// &
+                               '0.05 %', i1_time, rg%inertia(1), 5.0e-4_dp, 0.0_dp)
+            call t%check('point: the program''s I1 within its U', &
+                         abs(i1_time - rg%inertia(1)) <= u_i1)
+        end if
+        ! frame numbers (record_frame_rate), the columns by their names: the same I1
+        call write_track('frames.dat', 'frame, x (px), y (px)', .true., .true., 1.0_dp)
+        call write_text(DIR//'/frames.nml', goal(1:index(goal, 'goal.dat') - 1)// &
+            'frames.dat'', record_frame_rate = 60, record_columns = ''frame'', '// &
+            '''x (px)'', ''y (px)'''//goal(index(goal, 'goal.dat') + 9:))
+        ex = run_cmd(exe//' '//DIR//'/frames.nml --out '//DIR//'/out', DIR)
+        call t%check('point: a track in frame numbers through the program: exit 0', ex == 0)
+        if (ex == 0) then
+            call read_kv_text(DIR//'/out/frames.identify', 'I1', val)
+            i1_frames = real_of(val)
+            call t%check_close('point: a track in frame numbers gives the same I1', &
+                               i1_frames, i1_time, 1.0e-6_dp, 0.0_dp)
+        end if
+        ! a track of one coordinate, and record_columns naming one: refused with one line
+        call write_track('one.dat', 't (s), x (px)', .false., .false., 1.0_dp)
+        call write_text(DIR//'/one.nml', goal(1:index(goal, 'goal.dat') - 1)//'one.dat'// &
+                        goal(index(goal, 'goal.dat') + 8:))
+        call write_text(DIR//'/onecol.nml', goal(1:index(goal, 'goal.dat') - 1)// &
+            'goal.dat'', record_columns = 1, 2'//goal(index(goal, 'goal.dat') + 9:))
+        call refused('one', 'record_columns')
+        call refused('onecol', 'record_columns')
+        ! a track in mm (its columns' names say so), record_scale left out: the same I1; in
+        ! mm with record_scale, and x in mm with y in px: refused with one line
+        call write_track('mm.dat', 't (s), x (mm), y (mm)', .false., .true., 1.0e3_dp*SCALE)
+        call write_text(DIR//'/mm.nml', replaced(replaced(goal, 'goal.dat', 'mm.dat'), &
+                                                 ' record_scale = 5.05e-4,', ''))
+        ex = run_cmd(exe//' '//DIR//'/mm.nml --out '//DIR//'/out', DIR)
+        call t%check('point: a track in mm through the program: exit 0', ex == 0)
+        if (ex == 0) then
+            call read_kv_text(DIR//'/out/mm.identify', 'I1', val)
+            call t%check_close('point: a track in mm gives the same I1', real_of(val), &
+                               i1_time, 1.0e-5_dp, 0.0_dp)
+        end if
+        call write_text(DIR//'/mmscale.nml', replaced(goal, 'goal.dat', 'mm.dat'))
+        call refused('mmscale', 'record_scale')
+        call write_track('mixed.dat', 't (s), x (mm), y (px)', .false., .true., 1.0_dp)
+        call write_text(DIR//'/mixed.nml', replaced(goal, 'goal.dat', 'mixed.dat'))
+        call refused('mixed', 'different units')
         ! the old way: the point's angle about the axis, as theta4 of one axis
         call make_pendulum(rg, p, stat)
         u = point_position(p, rg%b_prime, QV, VIEW_BELOW, spread(0.0_dp, 1, NSTATE)) - &
             point_position(p, rg%b_prime, [0.0_dp, 0.0_dp, 0.0_dp], VIEW_BELOW, &
                            spread(0.0_dp, 1, NSTATE))
-        allocate (ang%t(N), ang%v(N), ang%u(N))
-        ang%t = rec%t
+        ! the angle of the point about the axis (atan2, unwrapped: continuous through
+        ! +-pi) as long as the point stays on its circle (its distance from the axis within
+        ! 10 % of |u|); beyond, the body's sway carries the point around the axis and its
+        ! angle there is no torsion (this rig's sway grows from the torsion's energy)
+        m = N
         do i = 1, N
             w = u + [rec%vs(i) - ORIGIN(1), rec%vs(N + i) - ORIGIN(2)]*SCALE
+            if (abs(norm2(w) - norm2(u)) > 0.1_dp*norm2(u)) then
+                m = i - 1
+                exit
+            end if
+        end do
+        allocate (ang%t(m), ang%v(m), ang%u(m))
+        ang%t = rec%t(1:m)
+        do i = 1, m
+            w = u + [rec%vs(i) - ORIGIN(1), rec%vs(N + i) - ORIGIN(2)]*SCALE
             ang%v(i) = atan2(u(1)*w(2) - u(2)*w(1), dot_product(u, w))
+            if (i > 1) ang%v(i) = ang%v(i) - 2.0_dp*pi*anint((ang%v(i) - ang%v(i - 1))/ &
+                                                             (2.0_dp*pi))
         end do
         if (ang%v(1) < 0.0_dp) ang%v = -ang%v
         ang%u = 1.0_dp
+        print '(a,f7.2,a,f7.2,a)', '   one-axis angle record: the first ', ang%t(m), &
+            ' s of ', rec%t(N), ' s (the point on its circle)'
         call write_text(DIR//'/old.nml', '&scene title = ''video, old way'', analyses = '// &
             '''identify'' /'//new_line('a')//common//'&start mode = ''raised'', '// &
             'amplitude = 20.0 /'//new_line('a')//'&measurement record = ''old.dat'', '// &
@@ -365,19 +450,165 @@ contains
         call read_deck(DIR//'/old.nml', d, stat)
         call t%check('point: the old way''s deck'//msg_of(stat), stat%code == 0)
         if (stat%code /= 0) return
-        print '(a,es11.3)', '   I1 relative error: point fit ', e_new
         call identify_record(d, ang, old, stat)
-        if (stat%code /= 0) then
-            ! the angle of one axis read from a swaying track: the old fit may not follow it
-            print '(a)', '   one-axis angle fit (old way) failed: '//trim(stat%msg)
-            return
-        end if
+        call t%check('point: the one-axis angle fit (old way) converges'//msg_of(stat), &
+                     stat%code == 0)
+        if (stat%code /= 0) return
         e_old = old%i1/rg%inertia(1) - 1.0_dp
-        print '(a,es11.3,a,es11.3)', '   I1 relative error: point fit ', e_new, &
-            ', one-axis angle fit (old way) ', e_old
+        print '(a,es11.3,a,es11.3,a,es11.3,a)', '   I1 relative error: point fit ', e_new, &
+            ', one-axis angle fit (old way) ', e_old, ' (its U_I1/I1 ', old%u_i1_expanded/old%i1, ')'
         call t%check('point: the point''s fit is closer than the old way''s', &
                      abs(e_new) < abs(e_old))
+    contains
+        !> The track (rec) as a file in DIR: a header, the time (s, or frame numbers) and
+        !! x, y (px, or x alone).
+        subroutine write_track(name, head, frames, both, unit)
+            character(len=*), intent(in) :: name, head
+            logical, intent(in) :: frames, both
+            real(dp), intent(in) :: unit        !! one px in the file's unit
+            character(len=:), allocatable :: text
+            character(len=80) :: line
+            integer :: j
+            text = head//new_line('a')
+            do j = 1, N
+                if (frames) then
+                    write (line, '(i0,2(", ",f0.5))') j - 1, rec%vs(j)*unit, rec%vs(N + j)*unit
+                else
+                    write (line, '(es23.15,2(", ",f0.6))') rec%t(j), rec%vs(j)*unit, &
+                        rec%vs(N + j)*unit
+                end if
+                if (.not. both) line = line(1:index(line, ',', back=.true.) - 1)
+                text = text//trim(line)//new_line('a')
+            end do
+            call write_text(DIR//'/'//name, text)
+        end subroutine write_track
+        !> The deck DIR/name.nml refused: exit 2, one line saying word, no output.
+        subroutine refused(name, word)
+            character(len=*), intent(in) :: name, word
+            integer :: e
+            call fresh_dir(DIR//'/out_'//name)
+            e = run_cmd(exe//' '//DIR//'/'//name//'.nml --out '//DIR//'/out_'//name, DIR)
+            call t%check('point: '//name//': refused (exit 2)', e == 2)
+            call t%check('point: '//name//': the line says '//word, &
+                         file_has(DIR//'/stderr', word))
+            call t%check('point: '//name//': one line', message_count(DIR//'/stderr') == 1)
+            call t%check('point: '//name//': no output', &
+                         .not. exists(DIR//'/out_'//name//'/'//name//'.identify'))
+        end subroutine refused
+        !> text with its first old replaced by new.
+        function replaced(text, old, new) result(r)
+            character(len=*), intent(in) :: text, old, new
+            character(len=:), allocatable :: r
+            integer :: j
+            j = index(text, old)
+            r = text
+            if (j > 0) r = text(1:j - 1)//new//text(j + len(old):)
+        end function replaced
+        real(dp) function real_of(str)
+            character(len=*), intent(in) :: str
+            integer :: ios
+            read (str, *, iostat=ios) real_of
+            if (ios /= 0) real_of = -1.0_dp
+        end function real_of
     end subroutine test_goal
+
+    !> The lines of a file that are not blank.
+    integer function message_count(path) result(k)
+        character(len=*), intent(in) :: path
+        integer :: u, ios
+        character(len=1024) :: buf
+        k = 0
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) buf
+            if (ios /= 0) exit
+            if (len_trim(buf) > 0) k = k + 1
+        end do
+        close (u)
+    end function message_count
+
+    !> A 3-axis gyro record (100 Hz, 20 s, noise 0.003 rad/s, a bias on each axis) of the
+    !! laboratory rig (principal axes along the hang's), each axis read with its own scale, 1.02, 0.99 and 1.0 (the record's
+    !! value the rate over the scale), fitted from I1 2 % off and scales 1 for I1, the
+    !! three biases and the three scales (estimate = 'I1 bias scale'): each scale's truth
+    !! within its 95 % interval, I1 within 0.1 %.
+    subroutine test_rates_scale(t)
+        type(tester_t), intent(inout) :: t
+        integer, parameter :: N = 2001
+        real(dp), parameter :: SIGMA = 0.003_dp, BIAS(3) = [0.004_dp, -0.006_dp, 0.003_dp]
+        real(dp), parameter :: SCALES(3) = [1.02_dp, 0.99_dp, 1.0_dp]
+        character(len=*), parameter :: NAMES(3) = ['scale_x', 'scale_y', 'scale_z']
+        type(rig_t) :: rg
+        type(start_t) :: st
+        type(accuracy_t) :: acc
+        type(deck_t) :: d
+        type(record_t) :: rec
+        type(identify_result_t) :: res
+        type(status_t) :: stat
+        type(rng_t) :: g
+        real(dp) :: vals(3*N), axes(3, 3)
+        integer :: i, k, j
+        logical :: ok
+        call fresh_dir(DIR//'/scales')
+        call lab_rig(rg, st)
+        rg%btilde = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+                             1.0_dp], [3, 3])
+        acc%rtol = 1.0e-10_dp
+        acc%atol = 1.0e-12_dp
+        call parse_axes('aligned', axes, ok)
+        allocate (rec%t(N), rec%v(N), rec%u(N), rec%vs(3*N))
+        do i = 1, N
+            rec%t(i) = 0.01_dp*(i - 1)
+        end do
+        call record_model(rg, st, acc, rec%t, 0.0_dp, .true., vals, stat, axes)
+        call t%check('point: the scaled rates made'//msg_of(stat), stat%code == 0)
+        if (stat%code /= 0) return
+        g = rng_stream(17, 0)
+        do k = 1, 3
+            do i = 1, N
+                rec%vs((k - 1)*N + i) = vals((k - 1)*N + i)/SCALES(k) + BIAS(k) + &
+                                        SIGMA*rng_normal(g)
+            end do
+        end do
+        rec%v = -rec%vs(1:N)
+        rec%u = 1.0_dp
+        rec%rate = .true.
+        rec%units = 'rad/s'
+        call write_text(DIR//'/scales/scales.nml', &
+            '&scene title = ''3-axis gyro, scales'', analyses = ''identify'' /'//new_line('a')// &
+            '&suspension b = 0.40, b_prime = 0.40, l = 1.20, l_prime = 1.18, g = 9.80665 /'// &
+            new_line('a')//'&body mass = 3.10, inertia = 0.0522, 0.0630, 0.0304, r = 0.25, '// &
+            'lambda = 0.64, sway_depth = 0.30 /'//new_line('a')//'&start mode = '// &
+            '''raised'', amplitude = 30.0, tilt = '//sci(st%tilt, 12)//', '// &
+            'sway = '//sci(st%sway, 12)//' /'//new_line('a')// &
+            '&integration rtol = 1e-10, atol = 1e-12 /'//new_line('a')// &
+            '&measurement record = ''scales.dat'', quantity = ''rates'', '// &
+            'estimate = ''I1 bias scale'' /'//new_line('a'))
+        call read_deck(DIR//'/scales/scales.nml', d, stat)
+        call t%check('point: the scales'' deck'//msg_of(stat), stat%code == 0)
+        if (stat%code /= 0) return
+        call identify_record(d, rec, res, stat)
+        call t%check('point: the scales'' fit'//msg_of(stat), stat%code == 0)
+        if (stat%code /= 0) return
+        call t%check('point: seven parameters estimated (I1, three biases, three scales)', &
+                     res%np == 7)
+        do j = 1, 3
+            k = findloc(res%names(1:res%np), NAMES(j), 1)
+            ! (the first axis's scale is the parameter 'scale')
+            if (j == 1 .and. k == 0) k = findloc(res%names(1:res%np), 'scale', 1)
+            call t%check('point: '//NAMES(j)//' estimated', k > 0)
+            if (k == 0) cycle
+            print '(a,3es14.6)', '   '//NAMES(j)//' estimate, truth, u: ', res%p(k), &
+                SCALES(j), res%u_p(k)
+            call t%check('point: '//NAMES(j)//'''s truth within its 95 % interval', &
+                         abs(res%p(k) - SCALES(j)) <= max(res%k, 1.96_dp)*res%u_p(k))
+        end do
+        print '(a,es11.3)', '   I1 relative error with three scales: ', &
+            res%i1/rg%inertia(1) - 1.0_dp
+        call t%check_close('point: I1 with three scales within 0.1 %', res%i1, &
+                           rg%inertia(1), 1.0e-3_dp, 0.0_dp)
+    end subroutine test_rates_scale
 
     !> Misuses of the keys through the program, each exit 2 with one line naming the key
     !! and no output: quantity 'point' without record_point, record_scale <= 0, record_view

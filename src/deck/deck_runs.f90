@@ -105,6 +105,7 @@ contains
                           d%measurement%gave('quantity'))
         call parse_axes(d%measurement%record_axes, axes, ok)
         f%down = axes(:, 1)
+        f%scale = d%measurement%record_scale
     end function record_format_of
 
     !> The record file of a deck: &measurement record relative to the deck's folder

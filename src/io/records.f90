@@ -19,7 +19,11 @@
 !! a record_t is always in rad or rad/s.  Times need not count from the release (the fit
 !! finds it when t0 is estimated).  Quantity 'rates': record_columns T, X, Y, Z (or a gyro
 !! export's three axes, or columns 1 .. 4), the instrument's three rates into vs and the
-!! rate about the vertical they give into v (record_format_t's down).
+!! rate about the vertical they give into v (record_format_t's down).  Quantity 'point' (a
+!! video's track of a point of the body): record_columns T, X, Y (or columns 1 .. 3, or a
+!! header's two axes 'pos x', 'pos y'), the two coordinates into vs and the first into v,
+!! in the track's units (px, record_scale m/px), or in m, cm or mm when the columns' names
+!! say so (turned into m here; record_scale then 1); the two columns' units must agree.
 module records
     use kinds, only: dp, deg
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
@@ -63,6 +67,11 @@ module records
         !> quantity 'rates': the body's axis b_1 (down at rest) in the instrument's axes; the
         !! record's v is the rate about the vertical they give, W = -(down . rates)
         real(dp) :: down(3) = [1.0_dp, 0.0_dp, 0.0_dp]
+        !> quantity 'point': two value columns, the point's coordinates X, Y (columns 2, 3,
+        !! or a header's two axes), read into record_t%vs in the track's units
+        logical :: point = .false.
+        !> quantity 'point': record_scale, the length of one unit of the track (m)
+        real(dp) :: scale = 1.0_dp
         real(dp) :: frame_rate = 0.0_dp         !! frames a second (0: the time is in s)
         logical :: rate = .false.               !! a rate (W), else an angle (theta4)
         real(dp) :: to_rad = 1.0_dp             !! the value's unit in rad (deg: pi/180)
@@ -81,6 +90,8 @@ module records
     !! standard uncertainty from U_MIN to VALUE_MAX in the same units (a smaller one makes
     !! weights 1/u that overflow the fit's sum of squares).
     real(dp), parameter, public :: VALUE_MAX = 1.0e3_dp, U_MIN = 1.0e-12_dp
+    !> Largest coordinate of a track (quantity 'point'), in its units (px or m)
+    real(dp), parameter, public :: TRACK_MAX = 1.0e9_dp
     !> A sample further from the fitted model than this many robust scales of the
     !! residuals is no part of the swing (a dropout, a spike; Huber's weight below 0.27).
     real(dp), parameter, public :: OUTLIER_SCALES = 5.0_dp
@@ -106,6 +117,7 @@ contains
         if (present(frame_rate)) f%frame_rate = frame_rate
         if (present(quantity_given)) f%quantity_given = quantity_given
         f%rates = trim(quantity) == 'rates'
+        f%point = trim(quantity) == 'point'
         f%rate = trim(quantity) == 'rate' .or. f%rates
         f%units = trim(merge('rad/s', 'rad  ', f%rate))
         f%to_rad = 1.0_dp
@@ -134,7 +146,7 @@ contains
         type(table_t) :: tab
         type(column_name_t), allocatable :: head(:)
         real(dp) :: vmax, x, tscale, to_rad
-        integer :: n, i, kt, kv, ku, k, np, kr(3), o
+        integer :: n, i, kt, kv, ku, k, np, kr(3), o, nval
         integer, allocatable :: at(:), axes(:)
         character(len=256), allocatable :: nm(:)
         character(len=:), allocatable :: per_tau, text, tname, vname, tunit, vunit, units
@@ -153,22 +165,24 @@ contains
         kv = 0
         ku = 0
         allocate (at(0), nm(0))
-        if (f%rates) then
-            ! time and the instrument's x, y, z: record_columns, or a gyro export's axes
-            if (size(axes) == 3) then
+        nval = merge(2, 3, f%point)
+        if (f%rates .or. f%point) then
+            ! time and the instrument's x, y, z (a track's x, y): record_columns, or a gyro
+            ! export's (a track's header's) axes
+            if (size(axes) == nval) then
                 kt = add(time_column(head, axes), '')
-                do k = 1, 3
+                do k = 1, nval
                     kr(k) = add(axes(k), '')
                 end do
             else if (f%columns(3) == -1) then
                 kt = add(1, '')
-                do k = 1, 3
+                do k = 1, nval
                     kr(k) = add(k + 1, '')
                 end do
             else
                 if (f%columns(1) > 0 .or. len_trim(f%names(1)) > 0) kt = add(f%columns(1), &
                                                                               f%names(1))
-                do k = 1, 3
+                do k = 1, nval
                     kr(k) = add(f%columns(k + 1), f%names(k + 1))
                 end do
             end if
@@ -197,8 +211,11 @@ contains
             if (index(stat%msg, 'more than') == 1) stat%msg = stat%msg(1:index(stat%msg, &
                 ' rows;') - 1)//' samples; allowed: at most '//itoa(MAX_SAMPLES)
             if (index(stat%msg, 'asks for column') > 0) stat%msg = stat%msg(1:index(stat%msg, &
-                '; allowed') - 1)//'; allowed: record_columns = T, V or T, V, U naming '// &
-                'columns of the file'
+                '; allowed') - 1)//'; allowed: record_columns = '//trim(merge('T, X, Y        ', &
+                'T, V or T, V, U', f%point))//' naming columns of the file'
+            if (index(stat%msg, 'asks for column') > 0 .and. f%point) stat%msg = &
+                trim(stat%msg)//' (quantity = ''point'': the time and the point''s two '// &
+                'coordinates)'
             return
         end if
         n = tab%nrow
@@ -222,7 +239,8 @@ contains
         tname = column_name(kt)
         vname = column_name(kv)
         rec%value_name = vname
-        if (f%columns(3) == -1 .and. size(axes) == 0 .and. tab%ncol == 3) rec%note = &
+        if (f%columns(3) == -1 .and. size(axes) == 0 .and. tab%ncol == 3 .and. .not. &
+            f%point) rec%note = &
             'its column 3 is not used (record_columns = 1, 2, 3 takes it as each sample''s '// &
             'standard uncertainty)'
         ! the time: s, or ms by its name, or frames
@@ -252,6 +270,10 @@ contains
                     'frame/F), or a column of times in s')
                 return
             end if
+        end if
+        if (f%point) then
+            call read_track()
+            return
         end if
         ! the value's unit: record_units, or its column's name, or quantity
         rate = f%rate
@@ -364,6 +386,88 @@ contains
             end if
         end do
     contains
+        !> quantity 'point': the track's two coordinates into rec%vs (rec%v the first), in
+        !! px (or the units the columns' names state, the same for both: m, cm or mm, turned
+        !! into m, with record_scale 1), each within TRACK_MAX; the time strictly increasing.
+        subroutine read_track()
+            character(len=:), allocatable :: ux, uy
+            real(dp) :: to_m
+            if (f%units_given) then
+                call set_error(stat, ERR_DECK, 'record_units = '//quoted(trim(f%units))// &
+                    ' with quantity = ''point''; allowed: record_units left out (a track''s '// &
+                    'columns are in px, by record_scale in m, or in m, cm or mm as their '// &
+                    'names say)')
+                return
+            end if
+            do o = 1, 2
+                ux = column_unit(column_name(kr(o)))
+                if (len(ux) > 0) then
+                    call set_error(stat, ERR_DECK, 'the coordinate column '//col_id(kr(o))// &
+                        ' is in '//ux//', not a length; allowed: record_columns = T, X, Y '// &
+                        'naming the time and the point''s two coordinates (px, m, cm or mm)')
+                    return
+                end if
+            end do
+            ux = length_unit(column_name(kr(1)))
+            uy = length_unit(column_name(kr(2)))
+            if (ux /= uy) then
+                call set_error(stat, ERR_DECK, 'the coordinate columns '//col_id(kr(1))// &
+                    ' and '//col_id(kr(2))//' state different units ('//quoted(ux)//', '// &
+                    quoted(uy)//'); allowed: two columns of one unit (px, m, cm or mm)')
+                return
+            end if
+            to_m = 1.0_dp
+            if (ux == 'cm') to_m = 1.0e-2_dp
+            if (ux == 'mm') to_m = 1.0e-3_dp
+            if (len(ux) > 0 .and. ux /= 'px' .and. f%scale /= 1.0_dp) then
+                call set_error(stat, ERR_DECK, 'the coordinate columns '//col_id(kr(1))// &
+                    ' and '//col_id(kr(2))//' are in '//ux//', a length, and record_scale = '// &
+                    sci(f%scale, 4)//' m a unit; allowed: record_scale left out (or 1) for '// &
+                    'columns in m, cm or mm, or columns in px with record_scale in m/px')
+                return
+            end if
+            rec%rate = .false.
+            rec%to_rad = 1.0_dp
+            rec%units = 'px'
+            if (len(ux) > 0 .and. ux /= 'px') rec%units = 'm'
+            rec%units_stated = len(ux) > 0
+            rec%value_name = column_name(kr(1))
+            if (kt > 0) then
+                rec%t = tab%v(:, kt)*tscale
+            else
+                rec%t = [(real(i - 1, dp)/f%frame_rate, i=1, n)]
+            end if
+            allocate (rec%vs(2*n))
+            rec%vs(1:n) = tab%v(:, kr(1))*to_m
+            rec%vs(n + 1:2*n) = tab%v(:, kr(2))*to_m
+            rec%v = rec%vs(1:n)
+            allocate (rec%u(n))
+            rec%u = 1.0_dp
+            rec%has_u = .false.
+            do i = 1, n
+                if (i > 1) then
+                    if (.not. (rec%t(i) > rec%t(i - 1))) then
+                        call set_error(stat, ERR_DECK, 'line '//itoa(tab%line(i))//': time '// &
+                            sci(rec%t(i), 6)//' s is not after the previous sample''s '// &
+                            sci(rec%t(i - 1), 6)//' s; allowed: time strictly increasing (s)')
+                        return
+                    end if
+                end if
+                x = max(abs(rec%vs(i)), abs(rec%vs(n + i)))/to_m
+                if (.not. (x <= TRACK_MAX)) then
+                    call set_error(stat, ERR_DECK, 'line '//itoa(tab%line(i))//': a '// &
+                        'coordinate of '//sci(x)//' '//unit_word()// &
+                        ' is too large; allowed: |coordinate| <= '//sci(TRACK_MAX))
+                    return
+                end if
+            end do
+        end subroutine read_track
+        !> The track's unit as its columns state it (px when they do not).
+        function unit_word() result(w)
+            character(len=:), allocatable :: w
+            w = length_unit(column_name(kr(1)))
+            if (len(w) == 0) w = 'px'
+        end function unit_word
         !> One more column asked for: its number, or its name; its place among those asked.
         integer function add(col, name)
             integer, intent(in) :: col
@@ -412,6 +516,16 @@ contains
             u = ''
         end if
     end function column_unit
+
+    !> The length a column's name states: 'px' (also 'pixel', 'pixels'), 'm', 'cm', 'mm';
+    !! '' for none or another.
+    pure function length_unit(name) result(u)
+        character(len=*), intent(in) :: name
+        character(len=:), allocatable :: u
+        u = name_unit(name)
+        if (u == 'pixel' .or. u == 'pixels' .or. u == 'pix') u = 'px'
+        if (u /= 'px' .and. u /= 'm' .and. u /= 'cm' .and. u /= 'mm') u = ''
+    end function length_unit
 
     !> The columns of a gyro export's axes: the header's names that differ only in a last
     !! x, y or z after a blank, '.', '_' or '-' ('Gyroscope x (rad/s)', 'gyro.y'), with the

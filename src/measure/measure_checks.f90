@@ -308,6 +308,25 @@ contains
                 named = rc == 0 .and. len_trim(nm) > 0
                 used = rc > 0 .or. named
                 given = column_list()
+                if (lower(adjustl(self%quantity)) == 'point') then
+                    ! time (or record_frame_rate) and the track's x, y, distinct, no fourth
+                    do k = 1, 3
+                        if (rc(k) > 100 .or. (named(k) .and. scan(nm(k)(1:1), &
+                                                                  '0123456789+-.') > 0)) &
+                            used(k) = .false.
+                        do j = k + 1, 3
+                            if ((rc(k) > 0 .and. rc(k) == rc(j)) .or. (named(k) .and. &
+                                named(j) .and. nm(k) == nm(j))) used(j) = .false.
+                        end do
+                    end do
+                    if (.not. all(used(2:3)) .or. used(4) .or. (.not. used(1) .and. .not. &
+                        self%record_frame_rate > 0.0_dp)) call bad(stat, 'measurement', &
+                        'record_columns', given, 'not three distinct columns with quantity '// &
+                        '= ''point''', 'record_columns = T, X, Y: the time (s) and the '// &
+                        'point''s two coordinates (px), numbers 1 .. 100 or names of the '// &
+                        'header''s columns (the time may be 0 with record_frame_rate)')
+                    return
+                end if
                 if (lower(adjustl(self%quantity)) == 'rates') then
                     ! time (or record_frame_rate) and the instrument's x, y, z, distinct
                     do k = 1, 4

@@ -1546,7 +1546,8 @@ contains
     !! within a twentieth of its period after t = 0 (t0 not estimated), or when the body was
     !! held still before it (find_release, t0 estimated).  A rate that stands there more
     !! than 0.6 of its largest swing from its centre, or an angle less than 0.2, is refused
-    !! (ERR_DECK naming quantity and record_units).  name: the record, for messages.
+    !! (ERR_DECK naming quantity and record_units).  A tracked point (quantity 'point',
+    !! lengths) is no angle or rate: not checked.  name: the record, for messages.
     subroutine check_record_kind(rec, mea, raised, name, stat)
         type(record_t), intent(in) :: rec
         type(measurement_group_t), intent(in) :: mea    !! (quantity, estimate)
@@ -1559,15 +1560,8 @@ contains
         logical :: rate
         character(len=:), allocatable :: where
         stat%code = STATUS_OK
-        ! a tracked point needs its two coordinates, which the record file's reader does not
-        ! give: refused rather than fitted as an angle
-        if (trim(mea%quantity) == 'point' .and. .not. allocated(rec%vs)) then
-            call set_error(stat, ERR_DECK, name//': quantity = ''point'' with a record '// &
-                'file: the program does not read a track''s file; allowed: quantity = '// &
-                '''angle'', ''rate'' or ''rates'' for a record file (a track through the '// &
-                'library''s identify_record)')
-            return
-        end if
+        ! a tracked point: no angle to mistake for a rate (its coordinates in px or m)
+        if (trim(mea%quantity) == 'point') return
         n = size(rec%v)
         if (.not. raised .or. n < 3) return
         rate = trim(mea%quantity) == 'rate' .or. rec%rate

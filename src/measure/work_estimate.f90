@@ -229,8 +229,9 @@ contains
                 't = 0), or t0 in &measurement estimate (the release found in the record)')
             return
         end if
-        ! degrees read as radians: values 57 times what the start gives
-        if (trim(sta%mode) /= 'raised') return
+        ! degrees read as radians: values 57 times what the start gives (a tracked point's
+        ! coordinates are lengths)
+        if (trim(sta%mode) /= 'raised' .or. trim(mea%quantity) == 'point') return
         ! (the start's amplitude, also when it is a start value of the fit)
         a = sta%amplitude*deg
         if (.not. (a > 0.0_dp)) return
