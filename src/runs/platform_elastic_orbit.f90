@@ -210,7 +210,7 @@ contains
             orb%residual = rn
             orb%shooting_iterations = it
             if (rn <= tol) return
-            if (it == SHOOT_MAX .or. .not. (rn < 10.0_dp*rprev)) exit
+            if (it == SHOOT_MAX .or. .not. (0.1_dp*rn < rprev)) exit
             rprev = rn
             do j = 1, 2
                 dsw = 0.0_dp
