@@ -294,7 +294,7 @@ module ode_system
         end function at_tcrit_i
     end interface
 
-    public :: too_much_accuracy, default_sens_point, common_stats
+    public :: too_much_accuracy, default_sens_point, common_stats, dense_zero
 
 contains
 
@@ -491,6 +491,44 @@ contains
         end if
         call s%dense_at(t, k, dky, stat)
     end subroutine integrator_dense
+
+    !> The zero th of dir*y(iy) in [ta, tb] within the last step (fa = dir*y(iy) at ta > 0
+    !! >= fb at tb): Illinois' regula falsi on the dense output, to roundoff in t.
+    subroutine dense_zero(s, iy, dir, ta, tb, fa, fb, th, stat)
+        class(integrator_t), intent(in) :: s
+        integer, intent(in) :: iy
+        real(dp), intent(in) :: dir
+        real(dp), intent(inout) :: ta, tb, fa, fb
+        real(dp), intent(out) :: th
+        type(status_t), intent(out) :: stat
+        real(dp) :: y(s%n), tc, fc
+        integer :: k
+        th = 0.5_dp*(ta + tb)
+        stat%code = STATUS_OK
+        do k = 1, 100
+            tc = tb - fb*(tb - ta)/(fb - fa)
+            if (.not. (tc > min(ta, tb) .and. tc < max(ta, tb))) tc = 0.5_dp*(ta + tb)
+            call s%dense(tc, 0, y, stat)
+            if (stat%code /= STATUS_OK) return
+            fc = dir*y(iy)
+            if (fc == 0.0_dp) then
+                ta = tc
+                tb = tc
+                exit
+            end if
+            if (fc > 0.0_dp) then
+                ta = tc
+                fa = fc
+                fb = 0.5_dp*fb
+            else
+                tb = tc
+                fb = fc
+                fa = 0.5_dp*fa
+            end if
+            if (abs(tb - ta) <= 4.0_dp*epsilon(1.0_dp)*abs(tb)) exit
+        end do
+        th = 0.5_dp*(ta + tb)
+    end subroutine dense_zero
 
     !> The sensitivities (k = 0) or their k-th derivative at t within the last step: the
     !! integrator's (sens_dense_at) once there are sensitivities and ds fits them.

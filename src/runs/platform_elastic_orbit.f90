@@ -22,7 +22,7 @@ module platform_elastic_orbit
     use kinds, only: dp, pi, deg
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_MODEL
     use text, only: sci, itoa
-    use ode_system, only: integrator_t, integrator_stats_t
+    use ode_system, only: integrator_t, integrator_stats_t, dense_zero
     use integrators, only: new_integrator, SOLVER_RADAU
     use platform_geometry, only: platform_t, QPSI
     use platform_elastic, only: platform_elastic_t, pe_rest_pose, pe_start, pe_switch, &
@@ -93,7 +93,7 @@ contains
         type(status_t), intent(out) :: stat
         class(integrator_t), allocatable :: s
         type(integrator_stats_t) :: st
-        real(dp) :: y0(NS), ydot(NS), y(NS), g(el%pl%n), dir, ta, tb, fa, fb, tc, fc, tmax
+        real(dp) :: y0(NS), ydot(NS), y(NS), g(el%pl%n), dir, ta, tb, fa, fb, tmax
         integer :: k, side, iy
         th = 0.0_dp
         yh = 0.0_dp
@@ -151,29 +151,8 @@ contains
             return
         end if
         ! the zero of yaw' in [ta, tb]: Illinois' regula falsi on the dense output
-        do k = 1, 100
-            tc = tb - fb*(tb - ta)/(fb - fa)
-            if (.not. (tc > min(ta, tb) .and. tc < max(ta, tb))) tc = 0.5_dp*(ta + tb)
-            call s%dense(tc, 0, y, stat)
-            if (stat%code /= STATUS_OK) return
-            fc = dir*y(iy)
-            if (fc == 0.0_dp) then
-                ta = tc
-                tb = tc
-                exit
-            end if
-            if (fc > 0.0_dp) then
-                ta = tc
-                fa = fc
-                fb = 0.5_dp*fb
-            else
-                tb = tc
-                fb = fc
-                fa = 0.5_dp*fa
-            end if
-            if (abs(tb - ta) <= 4.0_dp*epsilon(1.0_dp)*abs(tb)) exit
-        end do
-        th = 0.5_dp*(ta + tb)
+        call dense_zero(s, iy, dir, ta, tb, fa, fb, th, stat)
+        if (stat%code /= STATUS_OK) return
         call s%dense(th, 0, yh, stat)
     end subroutine half_orbit
 

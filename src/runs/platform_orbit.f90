@@ -21,7 +21,7 @@ module platform_orbit
     use kinds, only: dp, pi, deg
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_MODEL
     use text, only: sci, itoa
-    use ode_system, only: integrator_t, integrator_stats_t
+    use ode_system, only: integrator_t, integrator_stats_t, dense_zero
     use integrators, only: new_integrator
     use platform_geometry, only: platform_t
     use platform_model, only: platform_sys_t, platform_start, rest_pose
@@ -122,7 +122,7 @@ contains
         type(orbit_sys_t) :: sys
         class(integrator_t), allocatable :: s
         type(integrator_stats_t) :: st
-        real(dp) :: sc(NS), eye(NS, NS), ydot(NS), dir, ta, tb, fa, fb, tc, fc, y(NS), tmax
+        real(dp) :: sc(NS), eye(NS, NS), ydot(NS), dir, ta, tb, fa, fb, y(NS), tmax
         integer :: j, k, side
         sys%pl = pl
         sc = state_scales(pl)
@@ -178,29 +178,8 @@ contains
         end if
         ! the zero of yaw' in [ta, tb] (fa > 0 >= fb): Illinois' regula falsi on the dense
         ! output, to roundoff in t
-        do k = 1, 100
-            tc = tb - fb*(tb - ta)/(fb - fa)
-            if (.not. (tc > min(ta, tb) .and. tc < max(ta, tb))) tc = 0.5_dp*(ta + tb)
-            call s%dense(tc, 0, y, stat)
-            if (stat%code /= STATUS_OK) return
-            fc = dir*y(6)
-            if (fc == 0.0_dp) then
-                ta = tc
-                tb = tc
-                exit
-            end if
-            if (fc > 0.0_dp) then
-                ta = tc
-                fa = fc
-                fb = 0.5_dp*fb
-            else
-                tb = tc
-                fb = fc
-                fa = 0.5_dp*fa
-            end if
-            if (abs(tb - ta) <= 4.0_dp*epsilon(1.0_dp)*abs(tb)) exit
-        end do
-        th = 0.5_dp*(ta + tb)
+        call dense_zero(s, 6, dir, ta, tb, fa, fb, th, stat)
+        if (stat%code /= STATUS_OK) return
         call s%dense(th, 0, yh, stat)
         if (stat%code /= STATUS_OK) return
         call s%sens_dense(th, 0, n, stat)
