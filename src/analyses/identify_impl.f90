@@ -2069,7 +2069,10 @@ contains
             if (res%n_trials == 1 .and. size(res%record_crc) == 1) &
                 call write_kv(u, 'record_crc64', hex16(res%record_crc(1)), ios)
             ! the record's: the deck's quantity, or the unit its column's name says
-            if (allocated(rels(1)%rec%vs)) then
+            if (allocated(rels(1)%rec%vs) .and. trim(d%measurement%quantity) == 'point') then
+                call write_kv(u, 'quantity', 'point', ios)
+                call write_kv(u, 'record_view', trim(d%measurement%record_view), ios)
+            else if (allocated(rels(1)%rec%vs)) then
                 call write_kv(u, 'quantity', 'rates', ios)
                 call write_kv(u, 'record_axes', trim(d%measurement%record_axes), ios)
             else

@@ -21,9 +21,10 @@
 !! export's three axes, or columns 1 .. 4), the instrument's three rates into vs and the
 !! rate about the vertical they give into v (record_format_t's down).  Quantity 'point' (a
 !! video's track of a point of the body): record_columns T, X, Y (or columns 1 .. 3, or a
-!! header's two axes 'pos x', 'pos y'), the two coordinates into vs and the first into v,
-!! in the track's units (px, record_scale m/px), or in m, cm or mm when the columns' names
-!! say so (turned into m here; record_scale then 1); the two columns' units must agree.
+!! header's two axes 'pos x', 'pos y'), the two coordinates into vs and the one with the
+!! larger swing into v, in the track's units (px, record_scale m/px), or in m, cm or mm
+!! when the columns' names say so (turned into m here; record_scale then 1); the two
+!! columns' units must agree.
 module records
     use kinds, only: dp, deg
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK
@@ -386,7 +387,8 @@ contains
             end if
         end do
     contains
-        !> quantity 'point': the track's two coordinates into rec%vs (rec%v the first), in
+        !> quantity 'point': the track's two coordinates into rec%vs (rec%v the one with the
+        !! larger swing), in
         !! px (or the units the columns' names state, the same for both: m, cm or mm, turned
         !! into m, with record_scale 1), each within TRACK_MAX; the time strictly increasing.
         subroutine read_track()
@@ -440,7 +442,14 @@ contains
             allocate (rec%vs(2*n))
             rec%vs(1:n) = tab%v(:, kr(1))*to_m
             rec%vs(n + 1:2*n) = tab%v(:, kr(2))*to_m
+            ! the record's value: the coordinate with the larger swing (as the fit takes it,
+            ! record_fit), whose holds and period cut a record of several releases
             rec%v = rec%vs(1:n)
+            if (maxval(rec%vs(n + 1:2*n)) - minval(rec%vs(n + 1:2*n)) > &
+                maxval(rec%vs(1:n)) - minval(rec%vs(1:n))) then
+                rec%v = rec%vs(n + 1:2*n)
+                rec%value_name = column_name(kr(2))
+            end if
             allocate (rec%u(n))
             rec%u = 1.0_dp
             rec%has_u = .false.

@@ -1734,6 +1734,8 @@ contains
             case (P_AMP)
                 p0(j) = st%amplitude
                 if (mea%estimated('t0')) p0(j) = rel%amplitude
+                ! a track's excursion is in its units, no angle: the deck's amplitude
+                if (prob%point) p0(j) = abs(st%amplitude)
                 h(j) = H_REL*max(p0(j), 1.0_dp)
             case (P_T0)
                 p0(j) = rel%t0

@@ -140,12 +140,13 @@ contains
         end function lowest_decile
     end subroutine release_spans
 
-    !> The samples lo .. hi of a record as a record of their own (times as in the file).
+    !> The samples lo .. hi of a record as a record of their own (times as in the file), each
+    !! block of its vs too (the three rates, or a track's two coordinates).
     pure function segment_of(rec, lo, hi) result(seg)
         type(record_t), intent(in) :: rec
         integer, intent(in) :: lo, hi
         type(record_t) :: seg
-        integer :: n, m, k
+        integer :: n, m, k, nc
         n = size(rec%v)
         m = hi - lo + 1
         seg = rec
@@ -154,11 +155,13 @@ contains
         if (allocated(rec%u)) then
             if (size(rec%u) == n) seg%u = rec%u(lo:hi)
         end if
-        if (allocated(rec%vs)) then
-            if (size(rec%vs) == 3*n) then
+        if (allocated(rec%vs) .and. n > 0) then
+            ! blocks of n samples: three rates, or a track's two coordinates
+            nc = size(rec%vs)/n
+            if (nc*n == size(rec%vs)) then
                 deallocate (seg%vs)
-                allocate (seg%vs(3*m))
-                do k = 1, 3
+                allocate (seg%vs(nc*m))
+                do k = 1, nc
                     seg%vs((k - 1)*m + 1:k*m) = rec%vs((k - 1)*n + lo:(k - 1)*n + hi)
                 end do
             end if
