@@ -11,18 +11,16 @@ module test_rates
     use status, only: status_t
     use text, only: sci
     use testing, only: tester_t, msg_of, write_text, run_cmd => run, fresh_dir, file_has, &
-        exists, read_kv_text
+        exists, kv_real, rig_deck
+    use testing_records, only: lab_rig, turned_rig, video_rig, make_gyro, make_track, &
+        pose_states, check_sens, check_release_fit
     use deck, only: deck_t, read_deck
-    use deck_runs, only: rig_of, start_of, accuracy_of
-    use rig, only: rig_t, start_t, accuracy_t, make_pendulum, start_state
+    use rig, only: rig_t, start_t, accuracy_t
     use geometry, only: pendulum_t, frame, body_pose
     use bifilar_model, only: NSTATE
-    use kane_run, only: kane_run_t, kane_run_start
-    use run_loop, only: drive
-    use keep_sink, only: keep_t
-    use record_fit, only: record_model, record_model_sens
+    use record_fit, only: record_model
     use measure_groups, only: parse_axes
-    use inputs, only: set_input, input_value
+    use inputs, only: input_value
     use records, only: record_t
     use identify, only: identify_result_t, identify_record
     use random, only: rng_t, rng_stream, rng_normal
@@ -51,30 +49,6 @@ contains
         if (t%want('rates: a phone''s gyro export through the program')) call test_export(t, exe)
     end subroutine run_rates_tests
 
-    !> The laboratory rig of input/identify_record.nml (unequal cables, mass centre off the
-    !! midpoint of CD) at its true moments, released from 30 degrees with a tilt of 2
-    !! degrees and a sway of 1 cm (l sway).
-    subroutine lab_rig(rg, st)
-        type(rig_t), intent(out) :: rg
-        type(start_t), intent(out) :: st
-        rg%b = 0.40_dp
-        rg%b_prime = 0.40_dp
-        rg%l = 1.20_dp
-        rg%l_prime = 1.18_dp
-        rg%g = 9.80665_dp
-        rg%mass = 3.10_dp
-        rg%inertia = [0.0512_dp, 0.0630_dp, 0.0304_dp]
-        rg%r = 0.25_dp
-        rg%lambda = 0.64_dp
-        rg%sway_depth = 0.30_dp
-        rg%c_v = 0.0_dp
-        rg%c_q = 0.0_dp
-        st%mode = 'raised'
-        st%amplitude = 30.0_dp
-        st%tilt = 2.0_dp*deg
-        st%sway = 0.01_dp/rg%l
-    end subroutine lab_rig
-
     !> The model's rates (record_model with axes) at 25 times against the rates of the
     !! model's own pose: the body's principal axes b_i (b = btilde n, eq. (11)) from the
     !! states of a run at t +- h, omega . b_1 = b_2' . b_3 and cyclically, by central
@@ -88,19 +62,13 @@ contains
         type(start_t) :: st
         type(accuracy_t) :: acc
         type(pendulum_t) :: p
-        type(kane_run_t) :: m
-        type(keep_t) :: sink
         type(status_t) :: stat
-        real(dp) :: axes(3, 3), ts(NT), taus(0:3*NT - 1), vals(3*NT), y0(NSTATE), th0(5)
+        real(dp), allocatable :: ys(:, :)
+        real(dp) :: axes(3, 3), ts(NT), taus(0:3*NT - 1), vals(3*NT)
         real(dp) :: s, bp(3, 3), bm(3, 3), b0(3, 3), db(3, 3), om(3), want(3), worst, big
-        real(dp) :: c, sn
         integer :: i, k
         logical :: ok
-        call lab_rig(rg, st)
-        ! principal axes turned by 0.3 rad about ntilde_2 (rows of btilde: b_i in ntilde)
-        c = cos(0.3_dp)
-        sn = sin(0.3_dp)
-        rg%btilde = reshape([c, 0.0_dp, -sn, 0.0_dp, 1.0_dp, 0.0_dp, sn, 0.0_dp, c], [3, 3])
+        call turned_rig(rg, st, acc)
         acc%rtol = 1.0e-12_dp
         acc%atol = 1.0e-14_dp
         call parse_axes('z -x y', axes, ok)
@@ -115,20 +83,15 @@ contains
         call record_model(rg, st, acc, ts, 0.0_dp, .true., vals, stat, axes)
         call t%check('rates: the model''s rates'//msg_of(stat), stat%code == 0)
         if (stat%code /= 0) return
-        call make_pendulum(rg, p, stat)
-        if (stat%code == 0) call start_state(st, p, y0, th0, stat)
-        if (stat%code == 0) call kane_run_start(m, p, y0, th0(3), acc%rtol, acc%atol, &
-                                                acc%method, taus(3*NT - 1), 'rtol', stat)
-        allocate (sink%ys(NSTATE, 0:3*NT - 1))
-        if (stat%code == 0) call drive(m, taus, sink, stat)
+        call pose_states(rg, st, acc, taus, p, ys, stat)
         call t%check('rates: the run of the pose'//msg_of(stat), stat%code == 0)
         if (stat%code /= 0) return
         worst = 0.0_dp
         big = 0.0_dp
         do i = 1, NT
-            bm = axes_at(sink%ys(:, 3*(i - 1)))
-            b0 = axes_at(sink%ys(:, 3*(i - 1) + 1))
-            bp = axes_at(sink%ys(:, 3*(i - 1) + 2))
+            bm = axes_at(ys(:, 3*(i - 1)))
+            b0 = axes_at(ys(:, 3*(i - 1) + 1))
+            bp = axes_at(ys(:, 3*(i - 1) + 2))
             db = (bp - bm)/(2.0_dp*H)
             ! rows: b_i in n; omega . b_1 = b_2' . b_3, omega . b_2 = b_3' . b_1, ...
             om = [dot_product(db(2, :), b0(3, :)), dot_product(db(3, :), b0(1, :)), &
@@ -169,15 +132,13 @@ contains
         integer, parameter :: NT = 41, NQ = 6
         character(len=16), parameter :: NAMES(NQ) = [character(len=16) :: 'I1', 'I2', 'I3', &
             'cg_depth', 'tilt', 'sway']
-        type(rig_t) :: rg, r2
-        type(start_t) :: st, s2
+        type(rig_t) :: rg
+        type(start_t) :: st
         type(accuracy_t) :: acc
-        type(status_t) :: stat
-        real(dp) :: ts(NT), xs(NQ), vals(3*NT), dv(3*NT, NQ), vp(3*NT), vm(3*NT), fd(3*NT)
-        real(dp) :: axes(3, 3), h, big
-        integer :: c, i
+        real(dp) :: ts(NT), xs(NQ), axes(3, 3)
+        integer :: i
         logical :: ok
-        call lab_rig(rg, st)
+        call lab_rig(rg, st, acc)
         acc%rtol = 1.0e-11_dp
         acc%atol = 1.0e-13_dp
         call parse_axes('aligned', axes, ok)
@@ -185,45 +146,7 @@ contains
             ts(i) = 0.2_dp*(i - 1)
         end do
         xs = [rg%inertia, input_value(rg, st, 'cg_depth'), st%tilt, st%sway]
-        call record_model_sens(rg, st, acc, ts, 0.0_dp, .true., NAMES, xs, vals, dv, stat, &
-                               axes)
-        call t%check('rates: the sensitivities'' run'//msg_of(stat), stat%code == 0)
-        if (stat%code /= 0) return
-        big = maxval(abs(vals))
-        do c = 1, NQ
-            h = 2.0e-3_dp*xs(c)
-            call moved(NAMES(c), h, vp)
-            call moved(NAMES(c), -h, vm)
-            fd = -(vp - vm)/(2.0_dp*h)/3.0_dp
-            call moved(NAMES(c), 0.5_dp*h, vp)
-            call moved(NAMES(c), -0.5_dp*h, vm)
-            fd = fd + 4.0_dp/3.0_dp*(vp - vm)/h
-            call t%check_close('rates: d rates/d '//trim(NAMES(c))//' against differences '// &
-                               '(worst, times its size, over the largest rate)', &
-                               maxval(abs(dv(:, c) - fd))*xs(c)/big, 0.0_dp, 0.0_dp, 1.0e-5_dp)
-            call t%check('rates: '//trim(NAMES(c))//' moves the rates', &
-                         maxval(abs(fd))*xs(c) > 1.0e-6_dp*big)
-        end do
-    contains
-        subroutine moved(name, dx, v)
-            character(len=*), intent(in) :: name
-            real(dp), intent(in) :: dx
-            real(dp), intent(out) :: v(:)
-            type(status_t) :: s
-            r2 = rg
-            s2 = st
-            select case (trim(name))
-            case ('I1')
-                r2%inertia(1) = rg%inertia(1) + dx
-            case ('tilt')
-                s2%tilt = st%tilt + dx
-            case ('sway')
-                s2%sway = st%sway + dx
-            case default
-                call set_input(r2, s2, name, input_value(rg, st, name) + dx)
-            end select
-            call record_model(r2, s2, acc, ts, 0.0_dp, .true., v, s, axes)
-        end subroutine moved
+        call check_sens(t, 'rates', 'rate', rg, st, acc, ts, NAMES, xs, axes=axes)
     end subroutine test_sens
 
     !> A 3-axis gyro record (100 Hz, 30 s; noise 0.003 rad/s, biases of a few mrad/s on each
@@ -242,43 +165,23 @@ contains
         type(record_t) :: rec
         type(identify_result_t) :: res
         type(status_t) :: stat
-        type(rng_t) :: g
-        real(dp) :: vals(3*N), axes(3, 3), truth(9), cg, cg_off
+        real(dp) :: axes(3, 3), truth(9), cg, cg_off
         character(len=9) :: names(9) = [character(len=9) :: 'I1', 'I2', 'I3', 'cg_depth', &
             'tilt', 'sway', 'bias', 'bias_y', 'bias_z']
         integer :: i, k, j
         logical :: ok
         call fresh_dir(DIR)
-        call lab_rig(rg, st)
-        acc%rtol = 1.0e-10_dp
-        acc%atol = 1.0e-12_dp
+        call lab_rig(rg, st, acc)
         call parse_axes('aligned', axes, ok)
-        allocate (rec%t(N), rec%v(N), rec%u(N), rec%vs(3*N))
-        do i = 1, N
-            rec%t(i) = 0.01_dp*(i - 1)
-        end do
-        call record_model(rg, st, acc, rec%t, 0.0_dp, .true., vals, stat, axes)
+        call make_gyro(rg, st, acc, [(0.01_dp*(i - 1), i=1, N)], 0.0_dp, axes, BIAS, &
+                       [1.0_dp, 1.0_dp, 1.0_dp], SIGMA, 7, 0, rec, stat)
         call t%check('rates: the record made'//msg_of(stat), stat%code == 0)
         if (stat%code /= 0) return
-        g = rng_stream(7, 0)
-        do k = 1, 3
-            do i = 1, N
-                rec%vs((k - 1)*N + i) = vals((k - 1)*N + i) + BIAS(k) + SIGMA*rng_normal(g)
-            end do
-        end do
-        rec%v = -rec%vs(1:N)
-        rec%u = 1.0_dp
-        rec%rate = .true.
-        rec%units = 'rad/s'
         cg = input_value(rg, st, 'cg_depth')
         cg_off = input_value(rg, st, 'cg_offset')
-        call write_text(DIR//'/goal.nml', &
-            '&scene title = ''3-axis gyro'', analyses = ''identify'' /'//new_line('a')// &
-            '&suspension b = 0.40, b_prime = 0.40, l = 1.20, l_prime = 1.18, g = 9.80665 /'// &
-            new_line('a')//'&body mass = 3.10, inertia = 0.0502, 0.0670, 0.0284, '// &
-            'cg_depth = 0.14, cg_offset = '//sci(cg_off, 6)//', sway_depth = 0.30 /'//new_line('a')// &
-            '&start mode = ''raised'', amplitude = 30.0 /'//new_line('a')// &
-            '&integration rtol = 1e-10, atol = 1e-12 /'//new_line('a')// &
+        call write_text(DIR//'/goal.nml', rig_deck('3-axis gyro', '1.18', 'inertia = 0.0502, '// &
+            '0.0670, 0.0284, cg_depth = 0.14, cg_offset = '//sci(cg_off, 6)//', '// &
+            'sway_depth = 0.30')//'&start mode = ''raised'', amplitude = 30.0 /'//new_line('a')// &
             '&measurement record = ''goal.dat'', quantity = ''rates'', '// &
             'estimate = ''I1 I2 I3 cg_depth tilt sway bias'', u_inertia = 0.005, 0.005, '// &
             'u_cg_depth = 0.02 /'//new_line('a'))
@@ -336,71 +239,33 @@ contains
         type(rig_t) :: rg
         type(start_t) :: st
         type(accuracy_t) :: acc
-        type(deck_t) :: d
         type(record_t) :: rec
-        type(identify_result_t) :: res
         type(status_t) :: stat
-        type(rng_t) :: g
-        real(dp) :: vals(3*N), axes(3, 3)
-        integer :: i, k, c, j
+        real(dp) :: axes(3, 3)
+        integer :: i, c
         logical :: ok
         character(len=16) :: amp
         call fresh_dir(DIR//'/t0')
-        call lab_rig(rg, st)
+        call lab_rig(rg, st, acc)
         st%tilt = 0.0_dp
         st%sway = 0.0_dp
-        acc%rtol = 1.0e-10_dp
-        acc%atol = 1.0e-12_dp
         call parse_axes('aligned', axes, ok)
         do c = 1, NC
             st%amplitude = AMPS(c)
-            if (allocated(rec%t)) deallocate (rec%t, rec%v, rec%u, rec%vs)
-            allocate (rec%t(N), rec%v(N), rec%u(N), rec%vs(3*N))
-            do i = 1, N
-                rec%t(i) = 0.01_dp*(i - 1)
-            end do
-            call record_model(rg, st, acc, rec%t, T0S(c), .true., vals, stat, axes)
+            call make_gyro(rg, st, acc, [(0.01_dp*(i - 1), i=1, N)], T0S(c), axes, &
+                           BIASED(c)*BIAS, [1.0_dp, 1.0_dp, 1.0_dp], SIGMA, 9, c, rec, stat)
             call t%check('rates: '//trim(WHAT(c))//': the record made'//msg_of(stat), &
                          stat%code == 0)
             if (stat%code /= 0) return
-            g = rng_stream(9, c)
-            do k = 1, 3
-                do i = 1, N
-                    rec%vs((k - 1)*N + i) = vals((k - 1)*N + i) + BIASED(c)*BIAS(k) + &
-                                            SIGMA*rng_normal(g)
-                end do
-            end do
-            rec%v = -rec%vs(1:N)
-            rec%u = 1.0_dp
-            rec%rate = .true.
-            rec%units = 'rad/s'
             ! the deck gives the size of the turn; its way is the record's
             write (amp, '(f6.1)') abs(AMPS(c))
-            call write_text(DIR//'/t0/t0.nml', &
-                '&scene title = ''3-axis gyro'', analyses = ''identify'' /'//new_line('a')// &
-                '&suspension b = 0.40, b_prime = 0.40, l = 1.20, l_prime = 1.18, g = 9.80665 /'// &
-                new_line('a')//'&body mass = 3.10, inertia = 0.049, 0.0630, 0.0304, '// &
-                'r = 0.25, lambda = 0.64, sway_depth = 0.30 /'//new_line('a')// &
+            call write_text(DIR//'/t0/t0.nml', rig_deck('3-axis gyro', '1.18', 'inertia = '// &
+                '0.049, 0.0630, 0.0304, r = 0.25, lambda = 0.64, sway_depth = 0.30')// &
                 '&start mode = ''raised'', amplitude = '//trim(adjustl(amp))//' /'// &
-                new_line('a')//'&integration rtol = 1e-10, atol = 1e-12 /'//new_line('a')// &
-                '&measurement record = ''t0.dat'', quantity = ''rates'', '// &
+                new_line('a')//'&measurement record = ''t0.dat'', quantity = ''rates'', '// &
                 'estimate = '''//trim(EST(c))//''' /'//new_line('a'))
-            call read_deck(DIR//'/t0/t0.nml', d, stat)
-            call t%check('rates: '//trim(WHAT(c))//': the deck'//msg_of(stat), stat%code == 0)
-            if (stat%code /= 0) return
-            call identify_record(d, rec, res, stat)
-            call t%check('rates: '//trim(WHAT(c))//': the fit'//msg_of(stat), stat%code == 0)
-            if (stat%code /= 0) cycle
-            print '(a,3es14.6)', '   '//WHAT(c)//' I1, truth, U: ', res%i1, rg%inertia(1), &
-                res%k*res%u_i1
-            call t%check('rates: '//trim(WHAT(c))//': I1 within U', &
-                         abs(res%i1 - rg%inertia(1)) <= max(res%k, 1.96_dp)*res%u_i1)
-            j = findloc(res%names(1:res%np), 't0', 1)
-            call t%check('rates: '//trim(WHAT(c))//': t0 estimated', j > 0)
-            if (j == 0) cycle
-            print '(a,3es14.6)', '   '//WHAT(c)//' t0, truth, u: ', res%p(j), T0S(c), res%u_p(j)
-            call t%check('rates: '//trim(WHAT(c))//': t0 within U', &
-                         abs(res%p(j) - T0S(c)) <= max(res%k, 1.96_dp)*res%u_p(j))
+            call check_release_fit(t, WHAT(c), DIR//'/t0/t0.nml', rec, rg%inertia(1), T0S(c), ok)
+            if (.not. ok) return
         end do
     end subroutine test_t0_sign
 
@@ -412,83 +277,35 @@ contains
     subroutine test_point_sign(t)
         type(tester_t), intent(inout) :: t
         integer, parameter :: N = 901
-        real(dp), parameter :: SCALE = 5.0e-4_dp, ORIGIN(2) = [640.0_dp, 360.0_dp]
-        real(dp), parameter :: NOISE = 0.3_dp, QV(3) = [0.0_dp, 0.05_dp, 0.0_dp], T0 = 1.0_dp
+        real(dp), parameter :: QV(3) = [0.0_dp, 0.05_dp, 0.0_dp], T0 = 1.0_dp
         real(dp), parameter :: AMPS(2) = [20.0_dp, -20.0_dp]
         character(len=*), parameter :: WHAT(2) = [character(len=16) :: 'point, held', &
                                                   'point, other way']
-        type(deck_t) :: d
         type(rig_t) :: rg
         type(start_t) :: st
         type(accuracy_t) :: acc
         type(record_t) :: rec
-        type(identify_result_t) :: res
         type(status_t) :: stat
-        type(rng_t) :: g
-        real(dp) :: vals(2*N)
-        integer :: i, k, c, j
+        integer :: i, c
+        logical :: ok
         call fresh_dir(DIR//'/pt')
-        rg%b = 0.40_dp
-        rg%b_prime = 0.40_dp
-        rg%l = 1.20_dp
-        rg%l_prime = 1.20_dp
-        rg%g = 9.80665_dp
-        rg%mass = 3.10_dp
-        rg%inertia = [0.0512_dp, 0.0630_dp, 0.0304_dp]
-        rg%r = 0.20_dp
-        rg%lambda = 0.0_dp
-        rg%sway_depth = 0.30_dp
-        st%mode = 'raised'
-        acc%rtol = 1.0e-10_dp
-        acc%atol = 1.0e-12_dp
-        allocate (rec%t(N), rec%v(N), rec%u(N), rec%vs(2*N))
-        do i = 1, N
-            rec%t(i) = (i - 1)/60.0_dp
-        end do
+        call video_rig(rg, st, acc)
         do c = 1, 2
             st%amplitude = AMPS(c)
-            call record_model(rg, st, acc, rec%t, T0, .false., vals, stat, point=QV)
+            call make_track(rg, st, acc, [((i - 1)/60.0_dp, i=1, N)], T0, QV, 17, c, rec, stat)
             call t%check('rates: '//trim(WHAT(c))//': the track made'//msg_of(stat), &
                          stat%code == 0)
             if (stat%code /= 0) return
-            g = rng_stream(17, c)
-            do k = 1, 2
-                do i = 1, N
-                    rec%vs((k - 1)*N + i) = vals((k - 1)*N + i)/SCALE + ORIGIN(k) + &
-                                            NOISE*rng_normal(g)
-                end do
-            end do
             ! the record's value: the coordinate with the larger swing (the odd one)
-            rec%v = rec%vs(1:N)
             if (maxval(rec%vs(N + 1:)) - minval(rec%vs(N + 1:)) > maxval(rec%v) - &
                 minval(rec%v)) rec%v = rec%vs(N + 1:)
-            rec%u = 1.0_dp
-            rec%units = 'px'
-            call write_text(DIR//'/pt/pt.nml', '&scene title = ''video'', analyses = '// &
-                '''identify'' /'//new_line('a')//'&suspension b = 0.40, b_prime = 0.40, '// &
-                'l = 1.20, l_prime = 1.20, g = 9.80665 /'//new_line('a')//'&body mass = '// &
-                '3.10, inertia = 0.0522, 0.0630, 0.0304, r = 0.20, lambda = 0.0, '// &
-                'sway_depth = 0.30 /'//new_line('a')//'&integration rtol = 1e-10, '// &
-                'atol = 1e-12 /'//new_line('a')//'&start mode = ''raised'', '// &
-                'amplitude = 20.0 /'//new_line('a')//'&measurement record = ''pt.dat'', '// &
-                'quantity = ''point'', record_point = 0, 0.05, 0, record_scale = 5.0e-4, '// &
-                'estimate = ''I1 t0 bias'' /'//new_line('a'))
-            call read_deck(DIR//'/pt/pt.nml', d, stat)
-            call t%check('rates: '//trim(WHAT(c))//': the deck'//msg_of(stat), stat%code == 0)
-            if (stat%code /= 0) return
-            call identify_record(d, rec, res, stat)
-            call t%check('rates: '//trim(WHAT(c))//': the fit'//msg_of(stat), stat%code == 0)
-            if (stat%code /= 0) cycle
-            print '(a,3es14.6)', '   '//WHAT(c)//' I1, truth, U: ', res%i1, rg%inertia(1), &
-                res%k*res%u_i1
-            call t%check('rates: '//trim(WHAT(c))//': I1 within U', &
-                         abs(res%i1 - rg%inertia(1)) <= max(res%k, 1.96_dp)*res%u_i1)
-            j = findloc(res%names(1:res%np), 't0', 1)
-            call t%check('rates: '//trim(WHAT(c))//': t0 estimated', j > 0)
-            if (j == 0) cycle
-            print '(a,3es14.6)', '   '//WHAT(c)//' t0, truth, u: ', res%p(j), T0, res%u_p(j)
-            call t%check('rates: '//trim(WHAT(c))//': t0 within U', &
-                         abs(res%p(j) - T0) <= max(res%k, 1.96_dp)*res%u_p(j))
+            call write_text(DIR//'/pt/pt.nml', rig_deck('video', '1.20', 'inertia = 0.0522, '// &
+                '0.0630, 0.0304, r = 0.20, lambda = 0.0, sway_depth = 0.30')// &
+                '&start mode = ''raised'', amplitude = 20.0 /'//new_line('a')// &
+                '&measurement record = ''pt.dat'', quantity = ''point'', record_point = 0, '// &
+                '0.05, 0, record_scale = 5.0e-4, estimate = ''I1 t0 bias'' /'//new_line('a'))
+            call check_release_fit(t, WHAT(c), DIR//'/pt/pt.nml', rec, rg%inertia(1), T0, ok)
+            if (.not. ok) return
         end do
     end subroutine test_point_sign
 
@@ -509,7 +326,7 @@ contains
         logical :: ok
         character(len=5), parameter :: QS(2) = ['rate ', 'rates']
         call fresh_dir(DIR//'/refuse')
-        call lab_rig(rg, st)
+        call lab_rig(rg, st, acc)
         rg%l_prime = rg%l
         rg%lambda = atan2(0.15_dp, 0.2_dp)
         rg%r = sqrt(0.15_dp**2 + 0.2_dp**2)
@@ -531,11 +348,9 @@ contains
         end do
         call write_text(DIR//'/refuse/torsion.dat', text)
         do iq = 1, 2
-            deck = '&scene title = ''pure torsion'', analyses = ''identify'' /'// &
-                new_line('a')//'&suspension b = 0.40, b_prime = 0.40, l = 1.20, '// &
-                'l_prime = 1.20, g = 9.80665 /'//new_line('a')//'&body mass = 3.10, '// &
-                'inertia = 0.050, 0.063, 0.0304, r = 0.25, lambda = 0.6435 /'// &
-                new_line('a')//'&start mode = ''raised'', amplitude = 30.0 /'// &
+            deck = rig_deck('pure torsion', '1.20', 'inertia = 0.050, 0.063, 0.0304, '// &
+                'r = 0.25, lambda = 0.6435', .false.)//'&start mode = ''raised'', '// &
+                'amplitude = 30.0 /'// &
                 new_line('a')//'&measurement record = ''torsion.dat'', quantity = '''// &
                 trim(QS(iq))//''', estimate = ''I1 I2'''
             if (iq == 1) deck = deck//', record_columns = 1, 2'
@@ -583,11 +398,10 @@ contains
         real(dp) :: vals(3*N), tt(N), axes(3, 3), w(3), cg
         character(len=:), allocatable :: text, deck
         character(len=120) :: line
-        character(len=64) :: val
         integer :: i, k, ex
         logical :: ok
         call fresh_dir(DIR//'/export')
-        call lab_rig(rg, st)
+        call lab_rig(rg, st, acc)
         acc%rtol = 1.0e-10_dp
         acc%atol = 1.0e-12_dp
         call parse_axes(AX, axes, ok)
@@ -609,12 +423,8 @@ contains
         end do
         call write_text(DIR//'/export/phone.csv', text)
         cg = input_value(rg, st, 'cg_depth')
-        deck = '&scene title = ''phone gyro'', analyses = ''identify'' /'//new_line('a')// &
-            '&suspension b = 0.40, b_prime = 0.40, l = 1.20, l_prime = 1.18, g = 9.80665 /'// &
-            new_line('a')//'&body mass = 3.10, inertia = 0.0505, 0.066, 0.029, '// &
-            'r = 0.25, lambda = 0.64 /'//new_line('a')// &
-            '&start mode = ''raised'', amplitude = 30.0 /'//new_line('a')// &
-            '&integration rtol = 1e-10, atol = 1e-12 /'//new_line('a')// &
+        deck = rig_deck('phone gyro', '1.18', 'inertia = 0.0505, 0.066, 0.029, r = 0.25, '// &
+            'lambda = 0.64')//'&start mode = ''raised'', amplitude = 30.0 /'//new_line('a')// &
             '&measurement record = ''phone.csv'', quantity = ''rates'', record_axes = '// &
             ''''//AX//''', estimate = ''I1 I2 I3 cg_depth tilt sway bias'', u_mass = 0.001 /'// &
             new_line('a')
@@ -630,11 +440,11 @@ contains
                      file_has(DIR//'/export/out/phone.identify', 'correlation_max = '))
         call t%check('rates: the output says the condition', &
                      file_has(DIR//'/export/out/phone.identify', 'condition = '))
-        call read_kv_text(DIR//'/export/out/phone.identify', 'I2', val)
-        call t%check_close('rates: the export''s I2 within 3 %', real_of(val), rg%inertia(2), &
+        call t%check_close('rates: the export''s I2 within 3 %', &
+                           kv_real(DIR//'/export/out/phone.identify', 'I2'), rg%inertia(2), &
                            3.0e-2_dp, 0.0_dp)
-        call read_kv_text(DIR//'/export/out/phone.identify', 'cg_depth', val)
-        call t%check_close('rates: the export''s cg_depth within 2 mm', real_of(val), cg, &
+        call t%check_close('rates: the export''s cg_depth within 2 mm', &
+                           kv_real(DIR//'/export/out/phone.identify', 'cg_depth'), cg, &
                            0.0_dp, 2.0e-3_dp)
         ! a unit conflict between the columns' names and record_units: one line, no output
         call write_text(DIR//'/export/conflict.nml', deck(1:index(deck, ', u_mass') - 1)// &
@@ -645,13 +455,6 @@ contains
         call t%check('rates: a unit conflict refused (exit 2)', ex == 2)
         call t%check('rates: a unit conflict leaves no output', &
                      .not. exists(DIR//'/export/out2/conflict.identify'))
-    contains
-        real(dp) function real_of(s)
-            character(len=*), intent(in) :: s
-            integer :: ios
-            real_of = -1.0_dp
-            read (s, *, iostat=ios) real_of
-        end function real_of
     end subroutine test_export
 
 end module test_rates

@@ -13,6 +13,7 @@ module testing
     public :: write_text, exists, file_has, count_lines, line_starts, first_line, read_kv_text
     public :: run, shell_count, scratch_dir, fresh_dir, empty_dir, abs_path, no_nan
     public :: msg_of, upper, seal_records, message_lines, children_cpu_seconds
+    public :: kv_real, replaced, rig_deck
 
     type, public :: tester_t
         integer :: passed = 0
@@ -360,5 +361,47 @@ contains
             if (s(i:i) >= 'a' .and. s(i:i) <= 'z') r(i:i) = achar(iachar(s(i:i)) - 32)
         end do
     end function upper
+
+    ! ---------------------------------------------------------------------------------------
+    ! decks and outputs of records (suites rates, point, split)
+
+    !> The number after 'key = ' in a key = value file (-huge when absent or no number).
+    real(dp) function kv_real(path, key) result(x)
+        character(len=*), intent(in) :: path, key
+        character(len=256) :: val
+        integer :: ios
+        call read_kv_text(path, key, val)
+        x = -huge(1.0_dp)
+        read (val, *, iostat=ios) x
+        if (ios /= 0) x = -huge(1.0_dp)
+    end function kv_real
+
+    !> text with its first old replaced by new (text itself when old is not in it).
+    function replaced(text, old, new) result(r)
+        character(len=*), intent(in) :: text, old, new
+        character(len=:), allocatable :: r
+        integer :: j
+        j = index(text, old)
+        r = text
+        if (j > 0) r = text(1:j - 1)//new//text(j + len(old):)
+    end function replaced
+
+    !> The head of an identify deck on the records' laboratory rigs: &scene (title), a
+    !! &suspension of b = b' = 0.40 m, l = 1.20 m, l_prime, g = 9.80665, &body mass = 3.10
+    !! and then body (the rest of the group, from its inertia: 'inertia = 0.049, ...'), and
+    !! unless tight is .false. &integration rtol = 1e-10, atol = 1e-12; each line ended.
+    function rig_deck(title, l_prime, body, tight) result(s)
+        character(len=*), intent(in) :: title, l_prime, body
+        logical, intent(in), optional :: tight
+        character(len=:), allocatable :: s
+        character(len=*), parameter :: NL = new_line('a')
+        s = '&scene title = '''//title//''', analyses = ''identify'' /'//NL// &
+            '&suspension b = 0.40, b_prime = 0.40, l = 1.20, l_prime = '//l_prime// &
+            ', g = 9.80665 /'//NL//'&body mass = 3.10, '//body//' /'//NL
+        if (present(tight)) then
+            if (.not. tight) return
+        end if
+        s = s//'&integration rtol = 1e-10, atol = 1e-12 /'//NL
+    end function rig_deck
 
 end module testing
