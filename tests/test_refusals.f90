@@ -14,6 +14,8 @@ module test_refusals
     use deck_runs, only: rig_of, accuracy_of
     use period_inversion, only: input_u_t, period_fit_t, torsion_period_s, invert_periods, &
                                 period_budget
+    use rig, only: rig_t, start_t, accuracy_t
+    use record_fit, only: record_model
     implicit none
     private
 
@@ -35,6 +37,8 @@ contains
             call test_asymmetric_cycles(t, exe)
         if (t%want('refusals: messages that name the cause')) call test_messages(t, exe)
         if (t%want('refusals: no result that its own u swallows')) call test_undetermined(t, exe)
+        if (t%want('refusals: a track''s record_scale in mm/px: exit 3 naming record_scale')) &
+            call test_track_scale(t, exe)
     end subroutine run_refusals_tests
 
     !> The rig of input/identify_periods.nml (its true I1 0.0512).
@@ -478,5 +482,79 @@ contains
             end if
         end subroutine light
     end subroutine test_undetermined
+
+    !> A video track (made here: the model's point 5 cm off the axis seen from below, 0.505
+    !! mm a px, the camera's origin at (640, 360) px, no noise) fitted for I1 and the
+    !! origin: with record_scale = 5.05e-4 (m/px) it gives I1 back to 1e-4 (exit 0); with
+    !! record_scale = 0.505 (the scale in mm/px) the fit fails (exit 3) with one line that
+    !! names record_scale = 0.505, gives the residual in m (and px) and no file.
+    subroutine test_track_scale(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        integer, parameter :: N = 601
+        real(dp), parameter :: SCALE = 5.05e-4_dp, ORIGIN(2) = [640.0_dp, 360.0_dp]
+        real(dp), parameter :: QV(3) = [0.0_dp, 0.05_dp, 0.0_dp]
+        type(rig_t) :: rg
+        type(start_t) :: st
+        type(accuracy_t) :: acc
+        type(status_t) :: stat
+        real(dp) :: tt(N), vals(2*N), i1
+        character(len=:), allocatable :: d, x, text, deck
+        character(len=80) :: line
+        integer :: i, e
+        logical :: found
+        d = SCR//'/track'
+        x = abs_path(exe)
+        call fresh_dir(d)
+        rg%b = 0.40_dp
+        rg%b_prime = 0.40_dp
+        rg%l = 1.20_dp
+        rg%l_prime = 1.20_dp
+        rg%g = 9.80665_dp
+        rg%mass = 3.10_dp
+        rg%inertia = [0.0512_dp, 0.0630_dp, 0.0304_dp]
+        rg%r = 0.20_dp
+        rg%lambda = 0.0_dp
+        st%mode = 'raised'
+        st%amplitude = 20.0_dp
+        acc%rtol = 1.0e-10_dp
+        acc%atol = 1.0e-12_dp
+        do i = 1, N
+            tt(i) = (i - 1)/60.0_dp
+        end do
+        call record_model(rg, st, acc, tt, 0.0_dp, .false., vals, stat, point=QV)
+        call t%check('track: the track made', stat%code == 0)
+        if (stat%code /= 0) return
+        text = 't (s), x (px), y (px)'//new_line('a')
+        do i = 1, N
+            write (line, '(es23.15,2(", ",f0.6))') tt(i), vals(i)/SCALE + ORIGIN(1), &
+                vals(N + i)/SCALE + ORIGIN(2)
+            text = text//trim(line)//new_line('a')
+        end do
+        call write_text(d//'/track.dat', text)
+        deck = "&scene title = 'track', analyses = 'identify' /"//new_line('a')// &
+            '&suspension b = 0.40, b_prime = 0.40, l = 1.20, l_prime = 1.20, g = 9.80665 /'// &
+            new_line('a')//'&body mass = 3.10, inertia = 0.0502, 0.0630, 0.0304, r = 0.20, '// &
+            'lambda = 0.0 /'//new_line('a')//'&integration rtol = 1e-10, atol = 1e-12 /'// &
+            new_line('a')//"&start mode = 'raised', amplitude = 20.0 /"//new_line('a')// &
+            "&measurement record = 'track.dat', quantity = 'point', record_point = 0, 0.05, "// &
+            "0, estimate = 'I1 bias', record_scale = "
+        call write_text(d//'/right.nml', deck//'5.05e-4 /'//new_line('a'))
+        call write_text(d//'/mm.nml', deck//'0.505 /'//new_line('a'))
+        e = run('cd '//d//' && timeout 300 '//x//' right.nml --out o', d)
+        call read_kv(d//'/o/right.identify', 'I1', i1, found)
+        call t%check('track: record_scale in m/px: exit 0 (got '//itoa(e)//')', &
+                     e == 0 .and. found)
+        call t%check_close('track: record_scale in m/px: I1 back to 1e-4', i1, 0.0512_dp, &
+                           rtol=1.0e-4_dp)
+        call fresh_dir(d//'/o')
+        e = run('cd '//d//' && timeout 300 '//x//' mm.nml --out o', d)
+        call t%check('track: record_scale in mm/px: exit '//itoa(e)//' (want 3), one line '// &
+                     'naming record_scale = 0.505, the residual in m and px, no file', &
+                     all([e == 3, count_lines(d//'/stderr') == 1, &
+                          file_has(d//'/stderr', 'record_scale = 0.505 m'), &
+                          file_has(d//'/stderr', ' m, '), file_has(d//'/stderr', ' px)'), &
+                          .not. file_has(d//'/stderr', ' rad'), empty_dir(d//'/o')]))
+    end subroutine test_track_scale
 
 end module test_refusals

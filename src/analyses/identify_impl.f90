@@ -1285,13 +1285,14 @@ contains
                     'damping; add bias to &measurement estimate')
         end if
         ! a column U that is no u of these samples
-        umsg = u_column_warning(rec, i0, e)
+        umsg = u_column_warning(prob%rec, i0, e)
         ! (its scatter against U is the self-check's warning above when that fired)
         if (.not. r%fit_consistent .and. index(umsg, 'not small against its swing') == 0) &
             umsg = ''
         if (len(umsg) > 0) call add_warning(r%warnings, umsg)
-        ! the classical value from the samples the fit takes as the swing (no dropouts)
-        r%period_linear = clean_mean_period(rec, i0, e, nout)
+        ! the classical value from the samples the fit takes as the swing (no dropouts; the
+        ! column the fit took as the record's value: a track's larger swing, the vertical rate)
+        r%period_linear = clean_mean_period(prob%rec, i0, e, nout)
         if (r%period_linear > 0.0_dp) r%i1_linear = linear_inertia(rg, r%period_linear)
         if (.not. (r%period_linear > 0.0_dp) .and. nout > 0) call say_note(d%path, &
             'identify: the classical value is left out: fewer than two crossings of the '// &

@@ -55,7 +55,7 @@ module record_fit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use kinds, only: dp, pi, deg
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_NUMERIC
-    use text, only: itoa, sci
+    use text, only: itoa, sci, rshort
     use measure_groups, only: measurement_group_t, parse_axes
     use output_io, only: out_files_t, all_finite
     use geometry, only: pendulum_t, body_pose, frame, body_axes
@@ -2168,26 +2168,41 @@ contains
         end do
     end function correlation_time
 
-    !> A fit that gave no estimate (ERR_NUMERIC, exit 3): the message gets the residual
-    !! and what to check.
+    !> A fit that gave no estimate (ERR_NUMERIC, exit 3): the message gets the residual in
+    !! the record's unit (rad, rad/s; a track's in m, and in px by record_scale) and what to
+    !! check; for a track first record_scale, with the swing in m that it gives.
     subroutine explain_fit_failure(stat, prob, fit)
         type(status_t), intent(inout) :: stat
         type(record_fit_t), intent(in) :: prob
         type(lsq_result_t), intent(in) :: fit
-        character(len=:), allocatable :: what
-        real(dp) :: rms
+        character(len=:), allocatable :: what, units
+        real(dp) :: rms, sc
         integer :: i0, i1
         what = stat%msg
         if (index(what, 'identify: ') == 1) what = what(11:)
         rms = 0.0_dp
         i0 = prob%ifirst
-        i1 = min(prob%nuse, prob%ifirst + size(fit%r) - 1)
-        if (allocated(fit%r) .and. i1 >= i0) rms = sqrt(sum((fit%r(1:i1 - i0 + 1)/ &
+        i1 = i0 - 1
+        if (allocated(fit%r)) i1 = min(prob%nuse, prob%ifirst + size(fit%r) - 1)
+        if (i1 >= i0) rms = sqrt(sum((fit%r(1:i1 - i0 + 1)/ &
             (prob%w(i0:i1)*prob%hw(i0:i1)))**2)/max(1, i1 - i0 + 1))
+        units = trim(merge(' rad  ', ' rad/s', .not. prob%rate))//'); check the record''s'// &
+            ' units (t in s; record_units)'
+        if (prob%point) then
+            ! a track: the residual in its unit times record_scale (m a unit), the swing in m
+            sc = prob%scale(1)
+            units = ' m'
+            if (sc /= 1.0_dp) units = units//', '//sci(rms)//' px'
+            units = units//'); check record_scale = '//rshort(sc)//' m a unit of the track, '// &
+                'which makes its swing '//sci(sc*(maxval(prob%rec%v) - minval(prob%rec%v)), 3)// &
+                ' m (allowed: record_scale in m/px, '//rshort(sc)//' mm/px is '// &
+                rshort(1.0e-3_dp*sc)//', or the columns named in m, cm or mm and record_scale '// &
+                'left out; record_units is not used for a track), t in s'
+            rms = sc*rms
+        end if
         stat%code = ERR_NUMERIC
-        stat%msg = 'identify: '//what//' (residual rms '//sci(rms)// &
-            trim(merge(' rad  ', ' rad/s', .not. prob%rate))//'); check the record''s'// &
-            ' units (t in s; record_units), the start (&start amplitude; add t0 to '// &
+        stat%msg = 'identify: '//what//' (residual rms '//sci(rms)//units// &
+            ', the start (&start amplitude; add t0 to '// &
             'estimate to find the release), the rig''s lengths and the start value of I1 '// &
             '(&body inertia(1)), or estimate fewer parameters'
     end subroutine explain_fit_failure
