@@ -23,13 +23,14 @@
 module platform_rig
     use kinds, only: dp, deg
     use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_MODEL
-    use text, only: sci
+    use text, only: sci, itoa, rshort
     use rig_groups, only: suspension_group_t, body_group_t, damping_group_t, cables_group_t
     use platform_geometry, only: platform_t, regular_platform, general_platform, &
                                  platform_prepare, platform_inertia
-    use platform_model, only: check_platform, platform_start
+    use platform_model, only: check_platform, platform_start, rest_pose, platform_evaluate, &
+                              platform_motion_t
     use platform_elastic, only: platform_elastic_t, pe_rest_pose, pe_linearise, pe_start, &
-                                pe_from_inextensible, PE_NSTATE
+                                pe_from_inextensible, pe_evaluate, pe_motion_t, PE_NSTATE
     implicit none
     private
 
@@ -91,7 +92,9 @@ contains
     !! checks of the inextensible rig, whose lengths the elastic cables take loaded; for
     !! n >= 4 the elastic rest pose (pe_rest_pose; ERR_DECK when a cable is slack at rest)
     !! and its stability (pe_linearise; ERR_MODEL naming the cg_depth at which it tips,
-    !! found by bisection).
+    !! found by bisection).  A cable slack at rest of a body the centred one would not
+    !! slacken: ERR_DECK naming cg_offset and the offset at which that cable goes slack
+    !! (offset_limit), for any n.
     subroutine platform_case(pl, elastic, stiffness, damping, pc, stat)
         type(platform_t), intent(in) :: pl      !! the deck's platform (platform_of)
         logical, intent(in) :: elastic          !! elastic cables (uses_elastic)
@@ -105,6 +108,7 @@ contains
         pc%elastic = elastic
         if (pl%n <= 3) then
             call check_platform(pc%pl, stat)
+            if (stat%code == ERR_DECK) call offset_limit(pl, stiffness, damping, stat)
             if (stat%code /= STATUS_OK) return
         end if
         if (.not. elastic) return
@@ -115,6 +119,7 @@ contains
         call platform_prepare(pc%el%pl, stat)
         if (stat%code /= STATUS_OK) return
         call pe_rest_pose(pc%el, pc%q_rest, stat)
+        if (stat%code == ERR_DECK) call offset_limit(pl, stiffness, damping, stat)
         if (stat%code /= STATUS_OK) return
         call pe_linearise(pc%el, pc%q_rest, w2, stat)
         if (stat%code /= STATUS_OK) return
@@ -132,6 +137,101 @@ contains
             call set_error(stat, ERR_MODEL, 'platform: the rest pose is unstable')
         end if
     end subroutine platform_case
+
+    !> A rig refused at rest (stat ERR_DECK) whose body hangs off the attachments' centre c
+    !! (the mean of the body points in x, y): when the centred body (mass centre at c) hangs
+    !! with every cable taut, the mass centre's offset is the cause, and stat says so with
+    !! the limit: the offset s (cg - c) at which a cable first goes slack, s in (0, 1) by
+    !! bisection to 1e-9 on the rest pose with every cable taut (the inextensible model's
+    !! for n <= 3, the elastic one's for n >= 4), the cable the one of least tension there.
+    !! Otherwise stat is left as it is.
+    subroutine offset_limit(pl, stiffness, damping, stat)
+        type(platform_t), intent(in) :: pl      !! the deck's platform (platform_of)
+        real(dp), intent(in) :: stiffness       !! &cables stiffness: EA/(m g)
+        real(dp), intent(in) :: damping         !! &cables damping ratio
+        type(status_t), intent(inout) :: stat
+        real(dp) :: c(2), off(2), lo, hi, sm, lim(2)
+        integer :: i, k, kk
+        c = sum(pl%body(1:2, 1:pl%n), dim=2)/pl%n
+        off = pl%cg(1:2) - c
+        if (.not. (norm2(off) > 0.0_dp)) return
+        if (.not. taut_at(0.0_dp, k)) return
+        if (taut_at(1.0_dp, kk)) return
+        lo = 0.0_dp
+        hi = 1.0_dp
+        do i = 1, 60
+            if (hi - lo <= 1.0e-9_dp) exit
+            sm = 0.5_dp*(lo + hi)
+            if (taut_at(sm, kk)) then
+                lo = sm
+                k = kk
+            else
+                hi = sm
+            end if
+        end do
+        lim = c + lo*off
+        call set_error(stat, ERR_DECK, 'platform cg_offset = '//rshort(pl%cg(1))//', '// &
+            rshort(pl%cg(2))//': cable '//itoa(k)//' is slack at rest: the cables hold the '// &
+            'mass centre up to '//sci(lo*norm2(off), 4)//' from the attachments'' centre ('// &
+            pair(c)//') in this direction, and it is '//sci(norm2(off), 4)//' (cable '// &
+            itoa(k)//' slack beyond cg_offset = '//pair(lim)//'); allowed: cg_offset '// &
+            'nearer the centre than that')
+    contains
+        !> Every cable taut at rest with the mass centre at c + s off; k the cable of least
+        !! tension there.
+        logical function taut_at(s, k)
+            real(dp), intent(in) :: s
+            integer, intent(out) :: k
+            type(platform_t) :: p
+            type(platform_elastic_t) :: e
+            type(platform_motion_t) :: mo
+            type(pe_motion_t) :: me
+            type(status_t) :: st
+            real(dp) :: y(PE_NSTATE), q(6)
+            integer :: nf
+            taut_at = .false.
+            k = 1
+            p = pl
+            p%cg(1:2) = c + s*off
+            if (p%n <= 3) then
+                call platform_prepare(p, st)
+                if (st%code == STATUS_OK) call rest_pose(p, st)
+                if (st%code /= STATUS_OK) return
+                nf = p%nf
+                y = 0.0_dp
+                y(1:nf) = p%q_ref(p%free(1:nf))
+                call platform_evaluate(p, y(1:2*nf), mo, st)
+                if (st%code /= STATUS_OK) return
+                k = p%master(minloc(mo%tension(1:p%nd), 1))
+                taut_at = mo%tension(minloc(mo%tension(1:p%nd), 1)) > 0.0_dp
+            else
+                e%pl = p
+                e%stiffness = stiffness
+                e%damping = damping
+                call platform_prepare(e%pl, st)
+                if (st%code == STATUS_OK) call pe_rest_pose(e, q, st)
+                if (st%code /= STATUS_OK) return
+                y = 0.0_dp
+                y(1:6) = q
+                call pe_evaluate(e, y, me, st)
+                if (st%code /= STATUS_OK) return
+                k = minloc(me%tension(1:p%n), 1)
+                taut_at = me%tension(k) > 0.0_dp
+            end if
+        end function taut_at
+        !> x, y (4 digits; 0 within roundoff of the rig's size)
+        function pair(v) result(txt)
+            real(dp), intent(in) :: v(2)
+            character(len=:), allocatable :: txt
+            txt = one(v(1))//', '//one(v(2))
+        end function pair
+        function one(x) result(txt)
+            real(dp), intent(in) :: x
+            character(len=:), allocatable :: txt
+            txt = '0'
+            if (abs(x) > 1.0e-12_dp*maxval(abs(pl%body(1:2, 1:pl%n)))) txt = sci(x, 4)
+        end function one
+    end subroutine offset_limit
 
     !> The cg_depth at which the elastic platform's rest pose turns unstable (the smallest
     !! eigenvalue of its linearised model through 0), by bisection between the depth given
