@@ -13,7 +13,7 @@
 !! with delta_l = 0.
 submodule (calibrate) calibrate_impl
     use status, only: set_error, ERR_DECK, ERR_NUMERIC
-    use text, only: itoa, sci, fixed, quoted
+    use text, only: itoa, sci, fixed, quoted, rshort
     use output_io, only: write_kv, all_finite
     use deck, only: deck_echo
     use deck_runs, only: rig_of, start_of, accuracy_of, deck_inputs
@@ -21,7 +21,7 @@ submodule (calibrate) calibrate_impl
     use estimator, only: lsq_problem_t, lsq_options_t, lsq_result_t, estimate
     use measurement, only: OBS_RECORD
     use measurement_read, only: read_releases
-    use period_inversion, only: rig_period_s
+    use period_inversion, only: rig_period_s, is_torsion_rig, CYCLES_SIM_MAX
     use rig_calibration, only: calibrated_rig
     use crc64, only: crc64_of, hex16
     use version, only: BIFILAR_VERSION
@@ -40,6 +40,9 @@ submodule (calibrate) calibrate_impl
     type, extends(lsq_problem_t) :: calib_problem_t
         type(rig_t), allocatable :: rigs(:)     !! each period's release rig (taped)
         real(dp), allocatable :: per(:), amp(:), u(:), r2(:)    !! r2: test radius^2
+        !> the cycles each period's time spans: on a rig whose periods are simulated, the
+        !! model's mean period over as many cycles from the release (not its first one)
+        real(dp), allocatable :: cyc(:)
         real(dp) :: q0(4) = 0.0_dp              !! the full parameters (held ones used)
         real(dp) :: stated(4) = 0.0_dp, u_stated(4) = 0.0_dp
         logical :: prior(4) = .false.           !! a residual for the stated value
@@ -78,7 +81,7 @@ contains
         n = size(prob%per)
         do k = 1, n
             call rig_period_s(calibrated_rig(cal, prob%rigs(k)), prob%acc, &
-                              q(Q_I0) + q(Q_MT)*prob%r2(k), prob%amp(k), t, stat)
+                              q(Q_I0) + q(Q_MT)*prob%r2(k), prob%amp(k), t, stat, prob%cyc(k))
             if (stat%code /= 0) return
             r(k) = (t - prob%per(k))/prob%u(k)
         end do
@@ -143,13 +146,24 @@ contains
         associate (m => self%m, c => d%calibration, res => self%res)
             ! the periods of every release, with their rigs and radii
             n = 0
-            allocate (prob%rigs(0), prob%per(0), prob%amp(0), prob%u(0), prob%r2(0))
+            allocate (prob%rigs(0), prob%per(0), prob%amp(0), prob%u(0), prob%r2(0), &
+                      prob%cyc(0))
             do i = 1, size(m%releases)
                 ks = m%of_release(i)
                 prob%rigs = [prob%rigs, (m%releases(i)%rig, k=1, size(ks))]
                 prob%per = [prob%per, m%periods_of(i)]
                 prob%amp = [prob%amp, m%amplitudes_of(i)]
                 prob%u = [prob%u, m%u_periods_of(i)]
+                prob%cyc = [prob%cyc, m%cycles_of(i)]
+                if (.not. is_torsion_rig(m%releases(i)%rig) .and. &
+                    any(m%cycles_of(i) > CYCLES_SIM_MAX + 0.5_dp)) then
+                    call set_error(stat, ERR_DECK, '&measurement cycles: release '//itoa(i)// &
+                        ' is timed over '//rshort(maxval(m%cycles_of(i)))//' cycles on a '// &
+                        'rig that is not symmetric (its periods are simulated from the '// &
+                        'release, cycle by cycle, as they were timed); allowed: totals of '// &
+                        'at most '//itoa(CYCLES_SIM_MAX)//' cycles on such a rig')
+                    return
+                end if
                 if (c%by_test_mass()) then
                     prob%r2 = [prob%r2, (c%test_radii(i)**2, k=1, size(ks))]
                 else
