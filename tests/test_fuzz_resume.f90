@@ -589,6 +589,7 @@ contains
         nfail = 0
         n0 = 0
         n5 = 0
+        before = ''
         do k = 1, NCASES
             name = 'deck'
             if (mod(k, 8) == 0) then
