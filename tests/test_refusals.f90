@@ -10,11 +10,10 @@ module test_refusals
     use testing, only: tester_t, write_text, exists, file_has, count_lines, run, scratch_dir, &
                        fresh_dir, empty_dir, abs_path
     use text, only: itoa
-    use deck, only: deck_t
-    use deck_runs, only: rig_of, accuracy_of
+    use deck, only: deck_t, read_deck
+    use deck_runs, only: rig_of, accuracy_of, start_of
     use period_inversion, only: input_u_t, period_fit_t, torsion_period_s, invert_periods, &
                                 period_budget
-    use rig, only: rig_t, start_t, accuracy_t
     use record_fit, only: record_model
     implicit none
     private
@@ -35,10 +34,14 @@ contains
             call test_many_timings(t, exe)
         if (t%want('refusals: an asymmetric rig timed over ten cycles')) &
             call test_asymmetric_cycles(t, exe)
+        if (t%want('refusals: calibrate on an asymmetric rig timed over ten cycles')) &
+            call test_calibrate_cycles(t, exe)
         if (t%want('refusals: messages that name the cause')) call test_messages(t, exe)
         if (t%want('refusals: no result that its own u swallows')) call test_undetermined(t, exe)
         if (t%want('refusals: a track''s record_scale in mm/px: exit 3 naming record_scale')) &
             call test_track_scale(t, exe)
+        if (t%want('refusals: a body off the axis slackens a cable: the offset''s limit')) &
+            call test_offset_limit(t, exe)
     end subroutine run_refusals_tests
 
     !> The rig of input/identify_periods.nml (its true I1 0.0512).
@@ -281,6 +284,51 @@ contains
                      file_has(d//'/stderr', 'cannot be counted'), empty_dir(d//'/o2')]))
     end subroutine test_asymmetric_cycles
 
+    !> Calibrate on the rig of test_asymmetric_cycles (l = 1.2, l' = 1.0, cg_offset =
+    !! 0.02), a reference of known I1 = 0.0512 timed over ten cycles from releases at 8 and
+    !! 10 degrees (the totals read off the program's own simulations of the true rig, the
+    !! tenth maximum): the scale of b b' is the truth 1 within 3e-4 (the calibration fitted
+    !! the model's first period ten times: the scale 2.6 % off, exit 0).
+    subroutine test_calibrate_cycles(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=*), parameter :: RIG = '&suspension b = 0.40, b_prime = 0.40, '// &
+            'l = 1.20, l_prime = 1.00, g = 9.80665 /'//new_line('a')//'&body mass = 3.10, '// &
+            'inertia = 0.0512, 0.0630, 0.0304, cg_depth = 0.15, cg_offset = 0.02 /'// &
+            new_line('a')
+        character(len=:), allocatable :: d, x
+        character(len=32) :: buf(2)
+        real(dp), parameter :: AMPS(2) = [8.0_dp, 10.0_dp]
+        real(dp) :: total, scale
+        integer :: e, nmax, k
+        logical :: found
+        d = SCR//'/calasym'
+        x = abs_path(exe)
+        call fresh_dir(d)
+        do k = 1, 2
+            write (buf(k), '(f0.1)') AMPS(k)
+            call write_text(d//'/truth.nml', "&scene title = 'truth', analyses = "// &
+                "'simulate' /"//new_line('a')//RIG//"&start mode = 'raised', amplitude = "// &
+                trim(buf(k))//' /'//new_line('a')//'&integration tau_end = 90.0, '// &
+                'dtau_out = 0.002, rtol = 1e-12, atol = 1e-14 /'//new_line('a'))
+            e = run('cd '//d//' && '//x//' truth.nml --out o', d)
+            call tenth_maximum(d//'/o/truth.dat', sqrt(0.4_dp/9.80665_dp), total, nmax)
+            call t%check('calibrate cycles: the simulation at '//trim(buf(k))//' deg shows '// &
+                         'ten maxima (exit '//itoa(e)//')', e == 0 .and. nmax >= 10)
+            if (nmax < 10) return
+            write (buf(k), '(f0.7)') total
+        end do
+        call write_text(d//'/cal.nml', "&scene title = 'cal', analyses = 'calibrate' /"// &
+            new_line('a')//RIG//'&measurement periods = '//trim(buf(1))//', '// &
+            trim(buf(2))//', cycles = 10, amplitudes = 8, 10, u_period = 1e-3 /'// &
+            new_line('a')//'&calibration reference_I1 = 0.0512 /'//new_line('a'))
+        e = run('cd '//d//' && timeout 300 '//x//' cal.nml --out o', d)
+        call read_kv(d//'/o/cal.calibration', 'scale', scale, found)
+        call t%check('calibrate cycles: exit 0 (got '//itoa(e)//')', e == 0 .and. found)
+        call t%check_close('calibrate cycles: the scale of b b'' is 1 within 3e-4', scale, &
+                           1.0_dp, rtol=3.0e-4_dp)
+    end subroutine test_calibrate_cycles
+
     !> The time (s) of the tenth maximum of theta4 in a simulate .dat (columns tau, theta1
     !! .. theta5, their rates): each maximum a zero of theta4' from + to - after theta4 has
     !! been below 0, interpolated linearly between the rows; nmax the maxima found.
@@ -494,51 +542,42 @@ contains
         integer, parameter :: N = 601
         real(dp), parameter :: SCALE = 5.05e-4_dp, ORIGIN(2) = [640.0_dp, 360.0_dp]
         real(dp), parameter :: QV(3) = [0.0_dp, 0.05_dp, 0.0_dp]
-        type(rig_t) :: rg
-        type(start_t) :: st
-        type(accuracy_t) :: acc
+        type(deck_t) :: truth
         type(status_t) :: stat
         real(dp) :: tt(N), vals(2*N), i1
-        character(len=:), allocatable :: d, x, text, deck
+        character(len=:), allocatable :: d, x, text, head, deck
         character(len=80) :: line
         integer :: i, e
         logical :: found
         d = SCR//'/track'
         x = abs_path(exe)
         call fresh_dir(d)
-        rg%b = 0.40_dp
-        rg%b_prime = 0.40_dp
-        rg%l = 1.20_dp
-        rg%l_prime = 1.20_dp
-        rg%g = 9.80665_dp
-        rg%mass = 3.10_dp
-        rg%inertia = [0.0512_dp, 0.0630_dp, 0.0304_dp]
-        rg%r = 0.20_dp
-        rg%lambda = 0.0_dp
-        st%mode = 'raised'
-        st%amplitude = 20.0_dp
-        acc%rtol = 1.0e-10_dp
-        acc%atol = 1.0e-12_dp
-        do i = 1, N
-            tt(i) = (i - 1)/60.0_dp
-        end do
-        call record_model(rg, st, acc, tt, 0.0_dp, .false., vals, stat, point=QV)
+        head = "&scene title = 'track', analyses = 'identify' /"//new_line('a')// &
+            '&suspension b = 0.40, b_prime = 0.40, l = 1.20, l_prime = 1.20, g = 9.80665 /'// &
+            new_line('a')//'&body mass = 3.10, inertia = '
+        deck = ', 0.0630, 0.0304, r = 0.20, lambda = 0.0 /'//new_line('a')//'&integration '// &
+            'rtol = 1e-10, atol = 1e-12 /'//new_line('a')//"&start mode = 'raised', "// &
+            'amplitude = 20.0 /'//new_line('a')
+        ! the track of the true rig (I1 = 0.0512) in px
+        call write_text(d//'/truth.nml', head//'0.0512'//deck)
+        call read_deck(d//'/truth.nml', truth, stat)
+        if (stat%code == 0) call record_model(rig_of(truth), start_of(truth), &
+            accuracy_of(truth), [((i - 1)/60.0_dp, i=1, N)], 0.0_dp, .false., vals, stat, &
+            point=QV)
         call t%check('track: the track made', stat%code == 0)
         if (stat%code /= 0) return
         text = 't (s), x (px), y (px)'//new_line('a')
         do i = 1, N
+            tt(i) = (i - 1)/60.0_dp
             write (line, '(es23.15,2(", ",f0.6))') tt(i), vals(i)/SCALE + ORIGIN(1), &
                 vals(N + i)/SCALE + ORIGIN(2)
             text = text//trim(line)//new_line('a')
         end do
         call write_text(d//'/track.dat', text)
-        deck = "&scene title = 'track', analyses = 'identify' /"//new_line('a')// &
-            '&suspension b = 0.40, b_prime = 0.40, l = 1.20, l_prime = 1.20, g = 9.80665 /'// &
-            new_line('a')//'&body mass = 3.10, inertia = 0.0502, 0.0630, 0.0304, r = 0.20, '// &
-            'lambda = 0.0 /'//new_line('a')//'&integration rtol = 1e-10, atol = 1e-12 /'// &
-            new_line('a')//"&start mode = 'raised', amplitude = 20.0 /"//new_line('a')// &
-            "&measurement record = 'track.dat', quantity = 'point', record_point = 0, 0.05, "// &
-            "0, estimate = 'I1 bias', record_scale = "
+        ! the fit from I1 2 % off
+        deck = head//'0.0502'//deck//"&measurement "// &
+            "record = 'track.dat', quantity = 'point', record_point = 0, 0.05, 0, "// &
+            "estimate = 'I1 bias', record_scale = "
         call write_text(d//'/right.nml', deck//'5.05e-4 /'//new_line('a'))
         call write_text(d//'/mm.nml', deck//'0.505 /'//new_line('a'))
         e = run('cd '//d//' && timeout 300 '//x//' right.nml --out o', d)
@@ -556,5 +595,85 @@ contains
                           file_has(d//'/stderr', ' m, '), file_has(d//'/stderr', ' px)'), &
                           .not. file_has(d//'/stderr', ' rad'), empty_dir(d//'/o')]))
     end subroutine test_track_scale
+
+    !> A body off the axis of a regular platform of n cables (R = R' = 0.135 m, vertical
+    !! cables) beyond where a cable goes slack at rest: exit 2, one line naming cg_offset as
+    !! given and the offset at which the cable goes slack, against the statics: n = 3
+    !! (inextensible, determinate) the cables hold the mass centre up to the vertex it
+    !! moves to, R; n >= 4 (stiff elastic cables, the level body's stretches a plane) the
+    !! tensions T_i = (m g/n)(1 + 2 r.p_i/R^2), so along x the limit is R/(2 max(-cos a_i)),
+    !! R/2 for n = 4 (cable 3, at 180 degrees), R/(2 cos 36 degrees) for n = 5 (cables 3
+    !! and 4).  Within 1e-3 (the elastic body tilts by its stretches).  Within the limit
+    !! (0.05) the run goes (exit 0).
+    subroutine test_offset_limit(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        real(dp), parameter :: R = 0.135_dp, PI_ = 3.14159265358979324_dp
+        character(len=:), allocatable :: d, x
+        d = SCR//'/offset'
+        x = abs_path(exe)
+        call fresh_dir(d)
+        call slack(3, '0.14', R, 2, 3)
+        call slack(4, '0.1', 0.5_dp*R, 3, 3)
+        call slack(5, '0.1', 0.5_dp*R/cos(PI_/5.0_dp), 3, 4)
+        call slack(4, '0.05', -1.0_dp, 0, 0)
+    contains
+        !> n cables, cg_offset = off, 0: refused naming lim (> 0) and cable c1 or c2 (that
+        !! go slack together), or run (lim < 0).
+        subroutine slack(n, off, lim, c1, c2)
+            integer, intent(in) :: n, c1, c2
+            character(len=*), intent(in) :: off
+            real(dp), intent(in) :: lim
+            character(len=:), allocatable :: nm
+            real(dp) :: got
+            integer :: e
+            nm = 'n'//itoa(n)//'_'//off
+            call write_text(d//'/'//nm//'.nml', "&scene analyses = 'simulate' /"// &
+                new_line('a')//'&suspension cables = '//itoa(n)//', radius = 0.135, '// &
+                'radius_prime = 0.135, l = 1.0, g = 9.81 /'//new_line('a')//'&body mass = '// &
+                '0.869, inertia = 0.0093, 0.0050, 0.0050, cg_offset = '//off//', 0 /'// &
+                new_line('a')//'&integration tau_end = 0.1, dtau_out = 0.02 /'//new_line('a'))
+            call fresh_dir(d//'/o')
+            e = run('cd '//d//' && timeout 120 '//x//' '//nm//'.nml --out o', d)
+            if (lim < 0.0_dp) then
+                call t%check('offset: '//itoa(n)//' cables, cg_offset = '//off//': exit 0 '// &
+                             '(got '//itoa(e)//')', e == 0)
+                return
+            end if
+            got = number_after(d//'/stderr', 'slack beyond cg_offset = ')
+            call t%check('offset: '//itoa(n)//' cables, cg_offset = '//off//': exit '// &
+                         itoa(e)//' (want 2), one line naming cg_offset and cable '//itoa(c1)// &
+                         ', no file', all([e == 2, count_lines(d//'/stderr') == 1, &
+                         file_has(d//'/stderr', 'cg_offset = '//off//', 0:'), &
+                         any([file_has(d//'/stderr', 'cable '//itoa(c1)//' is slack'), &
+                              file_has(d//'/stderr', 'cable '//itoa(c2)//' is slack')]), &
+                         empty_dir(d//'/o')]))
+            call t%check_close('offset: '//itoa(n)//' cables: the limit against the statics', &
+                               got, lim, rtol=1.0e-3_dp)
+        end subroutine slack
+    end subroutine test_offset_limit
+
+    !> The number that follows key on the first line of path holding it (-1 when none).
+    real(dp) function number_after(path, key) result(v)
+        character(len=*), intent(in) :: path, key
+        character(len=4096) :: line
+        integer :: u, ios, j, k
+        v = -1.0_dp
+        open (newunit=u, file=path, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            j = index(line, key)
+            if (j == 0) cycle
+            j = j + len(key)
+            k = scan(line(j:), ', ;)')
+            if (k == 0) k = len_trim(line(j:)) + 1
+            read (line(j:j + k - 2), *, iostat=ios) v
+            if (ios /= 0) v = -1.0_dp
+            exit
+        end do
+        close (u)
+    end function number_after
 
 end module test_refusals
