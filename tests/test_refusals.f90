@@ -288,7 +288,8 @@ contains
     !! 0.02), a reference of known I1 = 0.0512 timed over ten cycles from releases at 8 and
     !! 10 degrees (the totals read off the program's own simulations of the true rig, the
     !! tenth maximum): the scale of b b' is the truth 1 within 3e-4 (the calibration fitted
-    !! the model's first period ten times: the scale 2.6 % off, exit 0).
+    !! the model's first period ten times: the scale 2.6 % off, exit 0).  A total over 300
+    !! cycles (more than the model counts on such a rig) is refused with one line.
     subroutine test_calibrate_cycles(t, exe)
         type(tester_t), intent(inout) :: t
         character(len=*), intent(in) :: exe
@@ -327,6 +328,17 @@ contains
         call t%check('calibrate cycles: exit 0 (got '//itoa(e)//')', e == 0 .and. found)
         call t%check_close('calibrate cycles: the scale of b b'' is 1 within 3e-4', scale, &
                            1.0_dp, rtol=3.0e-4_dp)
+        ! more cycles than the model counts on such a rig: refused, not counted as 200
+        call write_text(d//'/many.nml', "&scene title = 'many', analyses = 'calibrate' /"// &
+            new_line('a')//RIG//'&measurement periods = 420.0, 421.0, cycles = 300, '// &
+            'amplitudes = 8, 10, u_period = 1e-3 /'//new_line('a')//'&calibration '// &
+            'reference_I1 = 0.0512 /'//new_line('a'))
+        call fresh_dir(d//'/o')
+        e = run('cd '//d//' && timeout 300 '//x//' many.nml --out o', d)
+        call t%check('calibrate cycles: 300 cycles on an asymmetric rig: exit '//itoa(e)// &
+                     ' (want 2), one line naming cycles, no file', all([e == 2, &
+                     count_lines(d//'/stderr') == 1, file_has(d//'/stderr', 'cycles'), &
+                     empty_dir(d//'/o')]))
     end subroutine test_calibrate_cycles
 
     !> The time (s) of the tenth maximum of theta4 in a simulate .dat (columns tau, theta1
