@@ -11,6 +11,7 @@
 module certificate
     use status, only: status_t
     use output_io, only: out_files_t
+    use svg_plot, only: html_escaped => xml_escaped   ! &, <, > and " escaped
     implicit none
     private
 
@@ -211,28 +212,6 @@ contains
             if (index('0123456789+-.Ee %', t(i:i)) == 0) numeric = .false.
         end do
     end function numeric
-
-    !> Text with &, <, > and " escaped for HTML.
-    pure function html_escaped(t) result(s)
-        character(len=*), intent(in) :: t
-        character(len=:), allocatable :: s
-        integer :: i
-        s = ''
-        do i = 1, len(t)
-            select case (t(i:i))
-            case ('&')
-                s = s//'&amp;'
-            case ('<')
-                s = s//'&lt;'
-            case ('>')
-                s = s//'&gt;'
-            case ('"')
-                s = s//'&quot;'
-            case default
-                s = s//t(i:i)
-            end select
-        end do
-    end function html_escaped
 
     pure function itoa_local(n) result(s)
         integer, intent(in) :: n

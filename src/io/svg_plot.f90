@@ -31,7 +31,7 @@ module svg_plot
         type(svg_series_t), allocatable :: series(:)
     end type svg_plot_t
 
-    public :: svg_new, svg_add, svg_render, nice_ticks, tick_text
+    public :: svg_new, svg_add, svg_render, nice_ticks, tick_text, xml_escaped
 
     !> Most points drawn of one series (more are thinned, see the header).
     integer, parameter :: MAX_POINTS = 2000
@@ -127,11 +127,11 @@ contains
                 '" text-anchor="end">'//tick_text(yt(k), yt)//'</text>'
         end do
         s = s//'<text x="'//px(ML + pw/2)//'" y="'//itoa(p%height - 8)// &
-            '" text-anchor="middle">'//escaped(p%xlabel)//'</text>'
+            '" text-anchor="middle">'//xml_escaped(p%xlabel)//'</text>'
         s = s//'<text x="14" y="'//px(MT + ph/2)//'" text-anchor="middle" transform='// &
-            '"rotate(-90 14 '//px(MT + ph/2)//')">'//escaped(p%ylabel)//'</text>'
+            '"rotate(-90 14 '//px(MT + ph/2)//')">'//xml_escaped(p%ylabel)//'</text>'
         s = s//'<text x="'//px(ML + pw/2)//'" y="18" text-anchor="middle" font-size="13" '// &
-            'font-weight="bold">'//escaped(p%title)//'</text>'
+            'font-weight="bold">'//xml_escaped(p%title)//'</text>'
         ! the series
         ly = MT + 14
         do k = 1, size(p%series)
@@ -170,7 +170,7 @@ contains
                     '" x2="'//itoa(p%width - MR - 132)//'" y2="'//itoa(ly - 4)// &
                     '" stroke="'//trim(p%series(k)%color)//'" stroke-width="2"/>'
                 s = s//'<text x="'//itoa(p%width - MR - 128)//'" y="'//itoa(ly)//'">'// &
-                    escaped(p%series(k)%label)//'</text>'
+                    xml_escaped(p%series(k)%label)//'</text>'
                 ly = ly + 14
             end if
         end do
@@ -359,8 +359,9 @@ contains
         s = trim(adjustl(buf))
     end function px
 
-    !> Text with &, < and > escaped for XML.
-    pure function escaped(t) result(s)
+    !> Text with &, <, > and " escaped for XML (an SVG's text, an HTML page's: the
+    !! certificate's html_escaped).
+    pure function xml_escaped(t) result(s)
         character(len=*), intent(in) :: t
         character(len=:), allocatable :: s
         integer :: i
@@ -373,10 +374,12 @@ contains
                 s = s//'&lt;'
             case ('>')
                 s = s//'&gt;'
+            case ('"')
+                s = s//'&quot;'
             case default
                 s = s//t(i:i)
             end select
         end do
-    end function escaped
+    end function xml_escaped
 
 end module svg_plot
