@@ -84,7 +84,7 @@ contains
         character(len=*), intent(in), optional :: text_columns(:)
         !> the file's bytes, as read
         character(len=:), allocatable, intent(out), optional :: bytes
-        character(len=:), allocatable :: line, text
+        character(len=:), allocatable :: text, why
         type(column_name_t), allocatable :: f(:), header(:)
         real(dp), allocatable :: v(:, :), x(:)
         integer, allocatable :: ln(:)
@@ -106,19 +106,12 @@ contains
         pos = 1
         call traps_off(halting)
         do
-            call next_line(text, pos, line, ios)
+            call next_fields(text, pos, nline, n == 0, tab, f, ios)
             if (ios < 0) exit
-            nline = nline + 1
-            if (len(line) > LINE_MAX) then
-                call fail('line '//itoa(nline)//' is longer than '//itoa(LINE_MAX)// &
-                          ' characters; allowed: lines of at most '//itoa(LINE_MAX))
+            if (ios > 0) then
+                call fail(too_long(nline))
                 return
             end if
-            if (nline == 1) call drop_bom(line)
-            call drop_comment(line)
-            if (len_trim(line) == 0) cycle
-            if (n == 0) call choose_separator(line, tab)
-            call split_fields(line, tab%separator, f)
             if (with_text) then
                 if (size(header) == 0) then
                     ! the header: it names the columns, and which hold text
@@ -173,22 +166,11 @@ contains
                           'number of fields on every line')
                 return
             end if
-            if (.not. all(ieee_is_finite(x))) then
-                call fail('line '//itoa(nline)//': a value is not a finite number (NaN, '// &
-                          'Inf, or beyond 1.8e308); allowed: finite numbers')
+            call keep_row(x, nline, nmax, v, ln, n, why)
+            if (len(why) > 0) then
+                call fail(why)
                 return
             end if
-            if (nmax > 0 .and. n == nmax) then
-                call fail('more than '//itoa(nmax)//' rows; allowed: at most '//itoa(nmax))
-                return
-            end if
-            if (n == size(v, 2)) then
-                v = reshape(v, [tab%ncol, 2*n], pad=[0.0_dp])
-                ln = [ln, ln]
-            end if
-            n = n + 1
-            v(:, n) = x
-            ln(n) = nline
         end do
         call traps_restore(halting)
         if (present(bytes)) call move_alloc(text, bytes)
@@ -201,11 +183,7 @@ contains
         tab%v = transpose(v(:, 1:n))
         tab%line = ln(1:n)
         if (with_text) tab%text = transpose(txt(:, 1:n))
-        allocate (tab%names(tab%ncol))
-        do k = 1, tab%ncol
-            tab%names(k)%s = ''
-            if (size(header) == tab%ncol) tab%names(k)%s = lower(trim(adjustl(header(k)%s)))
-        end do
+        call set_names(tab, header)
     contains
         subroutine fail(what)
             character(len=*), intent(in) :: what
@@ -272,11 +250,11 @@ contains
         integer, intent(in) :: pick_at(:)           !! columns (1-based; 0: by name)
         character(len=*), intent(in) :: pick_names(:)   !! names (lower case) where pick_at = 0
         character(len=*), intent(in) :: who         !! e.g. 'record_columns'
-        character(len=:), allocatable :: line
+        character(len=:), allocatable :: why
         type(column_name_t), allocatable :: f(:), header(:), first_text(:)
         real(dp), allocatable :: v(:, :), x(:), xa(:)
         integer, allocatable :: ln(:), idx(:)
-        integer :: ios, nline, n, np, k, hline
+        integer :: ios, nline, n, np, hline
         integer(int64) :: pos
         logical :: halting(NTRAPS), resolved, numeric, all_numeric
         stat%code = STATUS_OK
@@ -290,19 +268,12 @@ contains
         pos = 1
         call traps_off(halting)
         do
-            call next_line(text, pos, line, ios)
+            call next_fields(text, pos, nline, n == 0, tab, f, ios)
             if (ios < 0) exit
-            nline = nline + 1
-            if (len(line) > LINE_MAX) then
-                call fail('line '//itoa(nline)//' is longer than '//itoa(LINE_MAX)// &
-                          ' characters; allowed: lines of at most '//itoa(LINE_MAX))
+            if (ios > 0) then
+                call fail(too_long(nline))
                 return
             end if
-            if (nline == 1) call drop_bom(line)
-            call drop_comment(line)
-            if (len_trim(line) == 0) cycle
-            if (n == 0) call choose_separator(line, tab)
-            call split_fields(line, tab%separator, f)
             if (.not. resolved) then
                 ! the header that names the columns asked by name, before any data
                 call to_numbers(f, tab%decimal_comma, xa, all_numeric)
@@ -361,23 +332,11 @@ contains
                           'numbers in the columns '//who//' asks for')
                 return
             end if
-            if (.not. all(ieee_is_finite(x))) then
-                call fail('line '//itoa(nline)//': a value is not a finite number (NaN, '// &
-                          'Inf, or beyond 1.8e308); allowed: finite numbers')
+            call keep_row(x, nline, max_rows, v, ln, n, why)
+            if (len(why) > 0) then
+                call fail(why)
                 return
             end if
-            if (max_rows > 0 .and. n == max_rows) then
-                call fail('more than '//itoa(max_rows)//' rows; allowed: at most '// &
-                          itoa(max_rows))
-                return
-            end if
-            if (n == size(v, 2)) then
-                v = reshape(v, [size(v, 1), 2*n], pad=[0.0_dp])
-                ln = [ln, ln]
-            end if
-            n = n + 1
-            v(1:np, n) = x
-            ln(n) = nline
         end do
         call traps_restore(halting)
         if (.not. resolved) then
@@ -397,11 +356,7 @@ contains
         tab%v = transpose(v(1:np, 1:n))
         tab%line = ln(1:n)
         tab%pick = idx
-        allocate (tab%names(tab%ncol))
-        do k = 1, tab%ncol
-            tab%names(k)%s = ''
-            if (size(header) == tab%ncol) tab%names(k)%s = lower(trim(adjustl(header(k)%s)))
-        end do
+        call set_names(tab, header)
         if (size(header) == tab%ncol) tab%header_line = hline
     contains
         subroutine fail(what)
@@ -527,35 +482,105 @@ contains
         type(column_name_t), allocatable, intent(out) :: f(:)
         logical, intent(out) :: named
         type(table_t) :: tab
-        character(len=:), allocatable :: line
         real(dp), allocatable :: x(:)
         integer(int64) :: pos
         integer :: ios, nline, k
         logical :: halting(NTRAPS)
-        allocate (f(0))
         named = .false.
         pos = 1
         nline = 0
         call traps_off(halting)
-        do
-            call next_line(text, pos, line, ios)
-            if (ios < 0) exit
-            nline = nline + 1
-            if (len(line) > LINE_MAX) exit
-            if (nline == 1) call drop_bom(line)
-            call drop_comment(line)
-            if (len_trim(line) == 0) cycle
-            call choose_separator(line, tab)
-            call split_fields(line, tab%separator, f)
+        call next_fields(text, pos, nline, .true., tab, f, ios)
+        if (ios == 0) then
             call to_numbers(f, tab%decimal_comma, x, named)
             named = .not. named
             do k = 1, size(f)
                 f(k)%s = lower(trim(adjustl(f(k)%s)))
             end do
-            exit
-        end do
+        else
+            allocate (f(0))
+        end if
         call traps_restore(halting)
     end subroutine header_fields
+
+    !> The fields of the next line of text from pos that holds anything ('#' comments and
+    !! blank lines skipped, a byte order mark dropped from line 1; nline counts the lines),
+    !! the separator chosen on that line when choose.  state: 0 fields read, -1 the text's
+    !! end, 1 line nline is longer than LINE_MAX (too_long).
+    subroutine next_fields(text, pos, nline, choose, tab, f, state)
+        character(len=*), intent(in) :: text
+        integer(int64), intent(inout) :: pos
+        integer, intent(inout) :: nline
+        logical, intent(in) :: choose
+        type(table_t), intent(inout) :: tab
+        type(column_name_t), allocatable, intent(out) :: f(:)
+        integer, intent(out) :: state
+        character(len=:), allocatable :: line
+        integer :: ios
+        do
+            call next_line(text, pos, line, ios)
+            state = -1
+            if (ios < 0) return
+            nline = nline + 1
+            state = 1
+            if (len(line) > LINE_MAX) return
+            if (nline == 1) call drop_bom(line)
+            call drop_comment(line)
+            if (len_trim(line) == 0) cycle
+            if (choose) call choose_separator(line, tab)
+            call split_fields(line, tab%separator, f)
+            state = 0
+            return
+        end do
+    end subroutine next_fields
+
+    !> The message of a line longer than LINE_MAX.
+    pure function too_long(nline) result(why)
+        integer, intent(in) :: nline
+        character(len=:), allocatable :: why
+        why = 'line '//itoa(nline)//' is longer than '//itoa(LINE_MAX)//' characters; '// &
+              'allowed: lines of at most '//itoa(LINE_MAX)
+    end function too_long
+
+    !> Row x of line nline kept as column n + 1 of v (v and its lines ln doubled when
+    !! full): why '' then, else what is wrong (a value not finite; more than nmax rows,
+    !! when nmax > 0).
+    subroutine keep_row(x, nline, nmax, v, ln, n, why)
+        real(dp), intent(in) :: x(:)
+        integer, intent(in) :: nline, nmax
+        real(dp), allocatable, intent(inout) :: v(:, :)
+        integer, allocatable, intent(inout) :: ln(:)
+        integer, intent(inout) :: n
+        character(len=:), allocatable, intent(out) :: why
+        why = ''
+        if (.not. all(ieee_is_finite(x))) then
+            why = 'line '//itoa(nline)//': a value is not a finite number (NaN, Inf, or '// &
+                  'beyond 1.8e308); allowed: finite numbers'
+        else if (nmax > 0 .and. n == nmax) then
+            why = 'more than '//itoa(nmax)//' rows; allowed: at most '//itoa(nmax)
+        else
+            if (n == size(v, 2)) then
+                v = reshape(v, [size(v, 1), 2*n], pad=[0.0_dp])
+                ln = [ln, ln]
+            end if
+            n = n + 1
+            v(1:size(x), n) = x
+            ln(n) = nline
+        end if
+    end subroutine keep_row
+
+    !> tab%names: the header's fields, lower case and trimmed ('' each when the header
+    !! has not tab%ncol of them).
+    subroutine set_names(tab, header)
+        type(table_t), intent(inout) :: tab
+        type(column_name_t), intent(in) :: header(:)
+        integer :: k
+        allocate (tab%names(tab%ncol))
+        do k = 1, tab%ncol
+            tab%names(k)%s = ''
+            if (size(header) == tab%ncol) tab%names(k)%s = lower(trim(adjustl(header(k)%s)))
+        end do
+    end subroutine set_names
 
     !> A column name's unit: the text inside its last parentheses or brackets, lower case,
     !! blanks dropped ('Gyroscope z (rad/s)': 'rad/s'); '' when it has none.
