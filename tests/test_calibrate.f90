@@ -7,12 +7,8 @@
 !! naming the deck and the variable, exit 2, no file.
 module test_calibrate
     use kinds, only: dp
-    use status, only: status_t
-    use testing, only: tester_t, write_text, run, fresh_dir, exists, file_has, message_lines
-    use deck, only: deck_t, read_deck
-    use deck_runs, only: rig_of
-    use period_inversion, only: torsion_period_s
-    use random, only: rng_t, rng_stream, rng_normal
+    use testing, only: tester_t, write_text, run, fresh_dir, exists, file_has, message_lines, &
+        noisy, true_periods, periods_text
     use output_io, only: read_kv
     use text, only: rshort, itoa
     implicit none
@@ -42,7 +38,7 @@ contains
         real(dp) :: tdisc(3)
         logical :: ok
         call execute_command_line('mkdir -p '//DIR)
-        call true_periods('disc', 2.5_dp, I_DISC, tdisc, ok)
+        call true_periods(DIR, 'disc', 2.5_dp, I_DISC, AMPS, tdisc, ok)
         call t%check('calibrate: true periods of the disc made', ok)
         if (.not. ok) return
         call check_summary(t, exe, tdisc)
@@ -56,14 +52,14 @@ contains
         integer :: seed, covered, ex
         logical :: ok, found
         call fresh_dir(DIR)
-        call true_periods('disc', 2.5_dp, I_DISC, tdisc, ok)
-        call true_periods('body', 3.2_dp, I_BODY, tbody, ok)
+        call true_periods(DIR, 'disc', 2.5_dp, I_DISC, AMPS, tdisc, ok)
+        call true_periods(DIR, 'body', 3.2_dp, I_BODY, AMPS, tbody, ok)
         call t%check('calibrate: true periods made', ok)
         if (.not. ok) return
         covered = 0
         do seed = 1, 20
             call write_text(DIR//'/cal.nml', head('cal', 'calibrate', 2.5_dp, I_DISC)// &
-                periods_text(noisy(tdisc, seed, 1))//' /'//new_line('a')// &
+                periods_text(noisy(tdisc, U_T, seed, 1))//' /'//new_line('a')// &
                 '&calibration reference_I1 = 0.05, u_reference_I1 = 0.00005 /'//new_line('a'))
             ex = run(exe//' '//DIR//'/cal.nml --out '//DIR, DIR)
             if (ex /= 0) then
@@ -72,7 +68,7 @@ contains
             end if
             call read_kv(DIR//'/cal.calibration', 'scale', scale, found)
             call write_text(DIR//'/body.nml', head('body', 'identify', 3.2_dp, 0.07_dp)// &
-                periods_text(noisy(tbody, seed, 2))//', calibration = ''cal.calibration'' /'// &
+                periods_text(noisy(tbody, U_T, seed, 2))//', calibration = ''cal.calibration'' /'// &
                 new_line('a'))
             ex = run(exe//' '//DIR//'/body.nml --out '//DIR, DIR)
             call read_kv(DIR//'/body.identify', 'I1', i1, found)
@@ -90,7 +86,7 @@ contains
                 call t%check('calibrate: a second body within U of its truth (seed 1)', &
                     abs(i1 - I_BODY) <= big_u)
                 call write_text(DIR//'/raw.nml', head('raw', 'identify', 3.2_dp, 0.07_dp)// &
-                    periods_text(noisy(tbody, seed, 2))//' /'//new_line('a'))
+                    periods_text(noisy(tbody, U_T, seed, 2))//' /'//new_line('a'))
                 ex = run(exe//' '//DIR//'/raw.nml --out '//DIR, DIR)
                 call read_kv(DIR//'/raw.identify', 'I1', i1_no, found)
                 call read_kv(DIR//'/raw.identify', 'U_I1', u_no, found)
@@ -191,45 +187,7 @@ contains
             'u_b_prime = 0.0005, u_period = '//rshort(U_T)//', amplitudes = 10, 20, 30,'
     end function head
 
-    function periods_text(p) result(s)
-        real(dp), intent(in) :: p(:)
-        character(len=:), allocatable :: s
-        s = ' periods = '//rshort(p(1))//', '//rshort(p(2))//', '//rshort(p(3))
-    end function periods_text
 
-    function noisy(p, seed, k) result(q)
-        real(dp), intent(in) :: p(:)
-        integer, intent(in) :: seed, k
-        real(dp) :: q(size(p))
-        type(rng_t) :: g
-        integer :: j
-        g = rng_stream(seed, k)
-        do j = 1, size(p)
-            q(j) = p(j) + U_T*rng_normal(g)
-        end do
-    end function noisy
-
-    !> The exact torsion periods of the true rig (b = b' = 0.40) at AMPS.
-    subroutine true_periods(name, mass, i1, per, ok)
-        character(len=*), intent(in) :: name
-        real(dp), intent(in) :: mass, i1
-        real(dp), intent(out) :: per(3)
-        logical, intent(out) :: ok
-        type(deck_t) :: d
-        type(status_t) :: st
-        integer :: j
-        call write_text(DIR//'/'//name//'_truth.nml', '&scene analyses = ''simulate'' /'// &
-            new_line('a')//'&suspension b = 0.4, b_prime = 0.4, l = 1.2, l_prime = 1.2, '// &
-            'g = 9.80665 /'//new_line('a')//'&body mass = '//rshort(mass)//', inertia = '// &
-            rshort(i1)//', 0.05, 0.04, cg_depth = 0.02, cg_offset = 0.0 /'//new_line('a'))
-        call read_deck(DIR//'/'//name//'_truth.nml', d, st)
-        ok = st%code == 0
-        if (.not. ok) return
-        do j = 1, 3
-            call torsion_period_s(rig_of(d), i1, AMPS(j), per(j), st)
-            ok = ok .and. st%code == 0
-        end do
-    end subroutine true_periods
 
     logical function has_row(path)
         character(len=*), intent(in) :: path

@@ -9,11 +9,8 @@
 !! and a tare given twice are refused with one line, exit 2 and no output.
 module test_tare
     use kinds, only: dp
-    use status, only: status_t
-    use testing, only: tester_t, write_text, run, fresh_dir, exists, message_lines
-    use deck, only: deck_t, read_deck
-    use deck_runs, only: rig_of
-    use period_inversion, only: torsion_period_s
+    use testing, only: tester_t, write_text, run, fresh_dir, exists, message_lines, &
+        noisy, true_periods, periods_text
     use random, only: rng_t, rng_stream, rng_normal
     use output_io, only: read_kv
     use text, only: rshort, itoa
@@ -43,8 +40,8 @@ contains
         if (.not. t%want('tare: a tare from its own output, with the shared inputs correlated')) &
             return
         call fresh_dir(DIR)
-        call true_periods('fix', M_FIX, I_FIX_TRUE, tfix, ok)
-        call true_periods('all', M_ALL, I_ALL_TRUE, tall, ok)
+        call true_periods(DIR, 'fix', M_FIX, I_FIX_TRUE, AMPS, tfix, ok)
+        call true_periods(DIR, 'all', M_ALL, I_ALL_TRUE, AMPS, tall, ok)
         call t%check('tare: true periods made', ok)
         if (.not. ok) return
         ! seed 1, the taped rig exact: the three ways against each other
@@ -53,7 +50,7 @@ contains
         call t%check('tare: the tare''s deck and the loaded deck with tare = ''FILE'' run', ok)
         if (.not. ok) return
         call write_text(DIR//'/all.nml', head('all', M_ALL, tape)// &
-                        periods_text(noisy(tall, 1, 2))//' /'//new_line('a'))
+                        periods_text(noisy(tall, U_T, 1, 2))//' /'//new_line('a'))
         ex = run(exe//' '//DIR//'/all.nml --out '//DIR, DIR)
         call read_kv(DIR//'/all.identify', 'I1', i_all, f1)
         call read_kv(DIR//'/tare.identify', 'I1', i_tare, f2)
@@ -70,7 +67,7 @@ contains
         call t%check_close('tare: u_I1_total is that of all that hung alone (its own '// &
                            'sensitivities)', u_total, u_all, rtol=1.0e-9_dp)
         call write_text(DIR//'/typed.nml', head('typed', M_ALL, tape)// &
-                        periods_text(noisy(tall, 1, 2))//', tare_I1 = '//full(i_tare)// &
+                        periods_text(noisy(tall, U_T, 1, 2))//', tare_I1 = '//full(i_tare)// &
                         ', u_tare_I1 = '//full(u_tare)//' /'//new_line('a'))
         ex = run(exe//' '//DIR//'/typed.nml --out '//DIR, DIR)
         call read_kv(DIR//'/typed.identify', 'I1', i_typed, f1)
@@ -107,7 +104,7 @@ contains
         call t%check('tare: the tare''s deck with u from the scatter runs, dof_own = 3', &
                      ex == 0 .and. f1 .and. f2 .and. abs(dof_own - 3.0_dp) < 1.0e-9_dp)
         call write_text(DIR//'/loaded.nml', head('loaded', M_ALL, tape)// &
-                        periods_text(noisy(tall, 1, 2))//', tare = ''tare.identify'' /'// &
+                        periods_text(noisy(tall, U_T, 1, 2))//', tare = ''tare.identify'' /'// &
                         new_line('a'))
         ex = run(exe//' '//DIR//'/loaded.nml --out '//DIR, DIR)
         call read_kv(DIR//'/loaded.identify', 'dof_eff', dof, f1)
@@ -253,11 +250,11 @@ contains
         real(dp), intent(in) :: tape(4), tfix(3), tall(3)
         integer :: ex
         call write_text(DIR//'/tare.nml', head('tare', M_FIX, tape)// &
-                        periods_text(noisy(tfix, seed, 1))//' /'//new_line('a'))
+                        periods_text(noisy(tfix, U_T, seed, 1))//' /'//new_line('a'))
         ex = run(exe//' '//DIR//'/tare.nml --out '//DIR, DIR)
         ok = ex == 0
         call write_text(DIR//'/loaded.nml', head('loaded', M_ALL, tape)// &
-                        periods_text(noisy(tall, seed, 2))//', tare = ''tare.identify'' /'// &
+                        periods_text(noisy(tall, U_T, seed, 2))//', tare = ''tare.identify'' /'// &
                         new_line('a'))
         ex = run(exe//' '//DIR//'/loaded.nml --out '//DIR, DIR)
         ok = ok .and. ex == 0
@@ -308,49 +305,7 @@ contains
         s = trim(adjustl(b))
     end function full
 
-    function periods_text(p) result(s)
-        real(dp), intent(in) :: p(:)
-        character(len=:), allocatable :: s
-        integer :: j
-        s = ' periods = '//rshort(p(1))
-        do j = 2, size(p)
-            s = s//', '//rshort(p(j))
-        end do
-    end function periods_text
 
-    function noisy(p, seed, k) result(q)
-        real(dp), intent(in) :: p(:)
-        integer, intent(in) :: seed, k
-        real(dp) :: q(size(p))
-        type(rng_t) :: g
-        integer :: j
-        g = rng_stream(seed, k)
-        do j = 1, size(p)
-            q(j) = p(j) + U_T*rng_normal(g)
-        end do
-    end function noisy
-
-    !> The exact torsion periods of the true rig (l = 1.2, b = b' = 0.40) at AMPS.
-    subroutine true_periods(name, mass, i1, per, ok)
-        character(len=*), intent(in) :: name
-        real(dp), intent(in) :: mass, i1
-        real(dp), intent(out) :: per(3)
-        logical, intent(out) :: ok
-        type(deck_t) :: d
-        type(status_t) :: st
-        integer :: j
-        call write_text(DIR//'/'//name//'_truth.nml', '&scene analyses = ''simulate'' /'// &
-            new_line('a')//'&suspension b = 0.4, b_prime = 0.4, l = 1.2, l_prime = 1.2, '// &
-            'g = 9.80665 /'//new_line('a')//'&body mass = '//rshort(mass)//', inertia = '// &
-            rshort(i1)//', 0.05, 0.04, cg_depth = 0.02, cg_offset = 0.0 /'//new_line('a'))
-        call read_deck(DIR//'/'//name//'_truth.nml', d, st)
-        ok = st%code == 0
-        if (.not. ok) return
-        do j = 1, 3
-            call torsion_period_s(rig_of(d), i1, AMPS(j), per(j), st)
-            ok = ok .and. st%code == 0
-        end do
-    end subroutine true_periods
 
     !> The budget row `name` of an identify output: its u and sensitivity.
     subroutine budget_row(path, name, u_x, c, found)

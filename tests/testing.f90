@@ -7,6 +7,11 @@ module testing
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use crc64, only: crc64_of, hex16
     use, intrinsic :: iso_c_binding, only: c_int, c_long
+    use random, only: rng_t, rng_stream, rng_normal
+    use text, only: rshort
+    use deck, only: deck_t, read_deck
+    use deck_runs, only: rig_of
+    use period_inversion, only: torsion_period_s
     implicit none
     private
 
@@ -14,6 +19,7 @@ module testing
     public :: run, shell_count, scratch_dir, fresh_dir, empty_dir, abs_path, no_nan
     public :: msg_of, upper, seal_records, message_lines, children_cpu_seconds
     public :: kv_real, replaced, rig_deck
+    public :: noisy, true_periods, periods_text
 
     type, public :: tester_t
         integer :: passed = 0
@@ -403,5 +409,58 @@ contains
         end if
         s = s//'&integration rtol = 1e-10, atol = 1e-12 /'//NL
     end function rig_deck
+
+    ! ---------------------------------------------------------------------------------------
+    ! timed periods (suites tare, calibrate)
+
+    !> The periods p timed with normal noise of standard deviation u (s): stream (seed, k)
+    !! of module random.
+    function noisy(p, u, seed, k) result(q)
+        real(dp), intent(in) :: p(:), u
+        integer, intent(in) :: seed, k
+        real(dp) :: q(size(p))
+        type(rng_t) :: g
+        integer :: j
+        g = rng_stream(seed, k)
+        do j = 1, size(p)
+            q(j) = p(j) + u*rng_normal(g)
+        end do
+    end function noisy
+
+    !> The exact torsion periods at amps (degrees) of the laboratory rig (b = b' = 0.40,
+    !! l = l' = 1.2, g = 9.80665) with a body of this mass and I1 (I2, I3 = 0.05, 0.04,
+    !! cg_depth = 0.02), its deck written as dir/name_truth.nml.
+    subroutine true_periods(dir, name, mass, i1, amps, per, ok)
+        character(len=*), intent(in) :: dir, name
+        real(dp), intent(in) :: mass, i1, amps(:)
+        real(dp), intent(out) :: per(size(amps))
+        logical, intent(out) :: ok
+        type(deck_t) :: d
+        type(status_t) :: st
+        integer :: j
+        per = 0.0_dp
+        call write_text(dir//'/'//name//'_truth.nml', '&scene analyses = ''simulate'' /'// &
+            new_line('a')//'&suspension b = 0.4, b_prime = 0.4, l = 1.2, l_prime = 1.2, '// &
+            'g = 9.80665 /'//new_line('a')//'&body mass = '//rshort(mass)//', inertia = '// &
+            rshort(i1)//', 0.05, 0.04, cg_depth = 0.02, cg_offset = 0.0 /'//new_line('a'))
+        call read_deck(dir//'/'//name//'_truth.nml', d, st)
+        ok = st%code == 0
+        if (.not. ok) return
+        do j = 1, size(amps)
+            call torsion_period_s(rig_of(d), i1, amps(j), per(j), st)
+            ok = ok .and. st%code == 0
+        end do
+    end subroutine true_periods
+
+    !> ' periods = p(1), p(2), ...' for a deck's &measurement.
+    function periods_text(p) result(s)
+        real(dp), intent(in) :: p(:)
+        character(len=:), allocatable :: s
+        integer :: j
+        s = ' periods = '//rshort(p(1))
+        do j = 2, size(p)
+            s = s//', '//rshort(p(j))
+        end do
+    end function periods_text
 
 end module testing
