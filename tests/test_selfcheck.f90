@@ -10,7 +10,7 @@ module test_selfcheck
     use kinds, only: dp
     use status, only: status_t
     use testing, only: tester_t, write_text, file_has, run, fresh_dir, exists, &
-        message_lines, read_kv_text
+        message_lines, read_kv_text, num => full_text
     use deck, only: deck_t, read_deck_text
     use deck_runs, only: rig_of, start_of, accuracy_of
     use driver, only: run_deck
@@ -73,15 +73,6 @@ contains
     end subroutine run_selfcheck_tests
 
     ! ------------------------------------------------------------------ helpers
-
-    !> A number as deck text (full precision).
-    function num(x) result(s)
-        real(dp), intent(in) :: x
-        character(len=:), allocatable :: s
-        character(len=32) :: b
-        write (b, '(es24.16)') x
-        s = trim(adjustl(b))
-    end function num
 
     !> The exact torsion period (s) of the SUSP/BODY rig with I1 = i1 at amplitude a (deg).
     real(dp) function period_of(i1, a) result(tp)

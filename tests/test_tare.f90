@@ -10,7 +10,7 @@
 module test_tare
     use kinds, only: dp
     use testing, only: tester_t, write_text, run, fresh_dir, exists, message_lines, &
-        noisy, true_periods, periods_text
+        noisy, true_periods, periods_text, full => full_text
     use random, only: rng_t, rng_stream, rng_normal
     use output_io, only: read_kv
     use text, only: rshort, itoa
@@ -295,17 +295,6 @@ contains
             s = s//','
         end if
     end function head
-
-    !> x with every digit (a typed tare as the tare's output holds it).
-    function full(x) result(s)
-        real(dp), intent(in) :: x
-        character(len=:), allocatable :: s
-        character(len=32) :: b
-        write (b, '(es24.16)') x
-        s = trim(adjustl(b))
-    end function full
-
-
 
     !> The budget row `name` of an identify output: its u and sensitivity.
     subroutine budget_row(path, name, u_x, c, found)

@@ -19,7 +19,7 @@ module testing
     public :: run, shell_count, scratch_dir, fresh_dir, empty_dir, abs_path, no_nan
     public :: msg_of, upper, seal_records, message_lines, children_cpu_seconds
     public :: kv_real, replaced, rig_deck
-    public :: noisy, true_periods, periods_text
+    public :: noisy, true_periods, periods_text, full_text
 
     type, public :: tester_t
         integer :: passed = 0
@@ -462,5 +462,14 @@ contains
             s = s//', '//rshort(p(j))
         end do
     end function periods_text
+
+    !> x with every digit (es24.16, trimmed): a number as deck text that reads back the same.
+    function full_text(x) result(s)
+        real(dp), intent(in) :: x
+        character(len=:), allocatable :: s
+        character(len=32) :: b
+        write (b, '(es24.16)') x
+        s = trim(adjustl(b))
+    end function full_text
 
 end module testing
