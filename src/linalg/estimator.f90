@@ -16,8 +16,11 @@
 !!   Two dampings (options%damping):
 !!   - DAMP_MARQUARDT: D_j the largest column norm of J seen so far (J. J. Moré, Lecture
 !!     Notes in Math. 630, 1978: the method is then invariant to the parameters' units), the
-!!     step from LAPACK DGELS on the stacked matrix [J; sqrt(lambda) D] (a QR
-!!     factorisation, J^T J never formed), accepted when the gain ratio
+!!     step the least-squares solution of the stacked matrix [J; sqrt(lambda) D] (J^T J
+!!     never formed): J = Q R by Householder reflections once at each point with a
+!!     Jacobian (the Gauss-Newton step's too; a Jacobian taken again keeps its factors),
+!!     each damped step from the 2n x n problem [R; sqrt(lambda) D] d = [-Q^T r; 0] (the
+!!     same minimum: Q^T is orthogonal), accepted when the gain ratio
 !!     rho = (S(p) - S(p + d)) / (S(p) - ||J d + r||^2) of the actual to the predicted
 !!     reduction is positive; lambda then times max(1/3, 1 - (2 rho - 1)^3), nu = 2, and on
 !!     a rejection times nu, nu doubled (H. B. Nielsen, IMM-REP-1999-05, DTU; K. Madsen,
