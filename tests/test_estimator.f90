@@ -109,7 +109,7 @@ contains
         type(lsq_result_t) :: res
         type(status_t) :: st
         type(rng_t) :: g
-        real(dp) :: w(25), s, sx, sy, sxx, sxy, dd, a, b, smin, r0(25), j0(25, 2)
+        real(dp) :: w(25), s, sx, sy, sxx, sxy, dd, a, b, smin, r0(25), j0(25, 2), gj(2)
         integer :: i, k
         character(len=10) :: how(2) = ['Marquardt ', 'halving   ']
         g = rng_stream(7, 1)
@@ -172,6 +172,20 @@ contains
         call t%check_close('line: the Gauss-Newton gain at the start', &
                            gauss_newton_gain(r0, j0), (sum(r0**2) - smin)*23.0_dp/sum(r0**2), &
                            rtol=1.0e-10_dp)
+        ! one damped step (Marquardt, lambda 1, D_j the column norms of J) against
+        ! d = -(J^T J + lambda D^2)^-1 J^T r written out for the line's 2 x 2 normal matrix
+        opts = lsq_options_t()
+        opts%lambda0 = 1.0_dp
+        opts%max_jacobians = 1
+        call estimate(ln, [-5.0_dp, 10.0_dp], opts, res, st)
+        gj = matmul(r0, j0)
+        dd = (2.0_dp*s)*(2.0_dp*sxx) - sx**2
+        call t%check('line: one damped step taken, then the Jacobians'' limit', &
+                     st%code == ERR_NUMERIC .and. res%iterations == 1)
+        call t%check_close('line: the damped step in a', res%p(1) + 5.0_dp, &
+                           -((2.0_dp*sxx)*gj(1) - sx*gj(2))/dd, rtol=1.0e-12_dp)
+        call t%check_close('line: the damped step in b', res%p(2) - 10.0_dp, &
+                           -((2.0_dp*s)*gj(2) - sx*gj(1))/dd, rtol=1.0e-12_dp)
     end subroutine test_line
 
     !> Rosenbrock's valley from (-1.2, 1) to (1, 1) with either damping, and Powell's

@@ -16,8 +16,11 @@
 !!   Two dampings (options%damping):
 !!   - DAMP_MARQUARDT: D_j the largest column norm of J seen so far (J. J. Moré, Lecture
 !!     Notes in Math. 630, 1978: the method is then invariant to the parameters' units), the
-!!     step from LAPACK DGELS on the stacked matrix [J; sqrt(lambda) D] (a QR
-!!     factorisation, J^T J never formed), accepted when the gain ratio
+!!     step the least-squares solution of the stacked matrix [J; sqrt(lambda) D] (J^T J
+!!     never formed): J = Q R by Householder reflections once at each point with a
+!!     Jacobian (the Gauss-Newton step's too; a Jacobian taken again keeps its factors),
+!!     each damped step from the 2n x n problem [R; sqrt(lambda) D] d = [-Q^T r; 0] (the
+!!     same minimum: Q^T is orthogonal), accepted when the gain ratio
 !!     rho = (S(p) - S(p + d)) / (S(p) - ||J d + r||^2) of the actual to the predicted
 !!     reduction is positive; lambda then times max(1/3, 1 - (2 rho - 1)^3), nu = 2, and on
 !!     a rejection times nu, nu doubled (H. B. Nielsen, IMM-REP-1999-05, DTU; K. Madsen,
@@ -85,7 +88,7 @@
 module estimator
     use kinds, only: dp
     use status, only: status_t, set_error, ERR_NUMERIC
-    use lapack_wrap, only: la_lstsq, la_svd
+    use lapack_wrap, only: la_svd
     use text, only: itoa, sci
     use stats, only: chi2_sf
     use unused_arg, only: unused
@@ -115,6 +118,14 @@ module estimator
         procedure :: jacobian => difference_jacobian
         procedure :: note_gain => ignore_gain
     end type lsq_problem_t
+
+    !> A Householder QR factorisation J = Q R of an m x n matrix (m >= n), and Q^T b of a
+    !! right-hand side: the reflectors' vectors below the diagonal of a (their first element
+    !! 1, not stored), R on and above it, the reflectors' factors tau (H_k = I - tau_k v_k
+    !! v_k^T); qtb the first n elements of Q^T b.
+    type :: qr_t
+        real(dp), allocatable :: a(:, :), tau(:), qtb(:)
+    end type qr_t
 
     abstract interface
         !> r(p); stat /= 0 when p cannot be evaluated (a step there is rejected).
@@ -307,10 +318,12 @@ contains
         type(lsq_options_t), intent(in) :: opts
         type(lsq_result_t), intent(out) :: res
         type(status_t), intent(out) :: stat
-        real(dp), allocatable :: a(:, :), b(:), ru(:), rt(:), rtu(:), jt(:, :), jd(:), h(:)
+        real(dp), allocatable :: ru(:), rt(:), rtu(:), jt(:, :), jd(:), h(:)
+        type(qr_t) :: f, ft     ! the factors of res%jac and jt, with their residuals' -Q^T r
         real(dp) :: dvec(size(p0)), dstep(size(p0)), dgn(size(p0)), dgn_t(size(p0))
         real(dp) :: pt(size(p0)), lambda, nu, st, pred, rho, cost0, red, red_t, gain_t
         logical :: analytic, weighted, small, last_small, inside, accepted, halving, deficient
+        logical :: same
         type(status_t) :: s2
         integer :: n, m, j, ne
         n = size(p0)
@@ -321,8 +334,6 @@ contains
         halving = opts%damping == DAMP_HALVING
         weighted = any(hw /= 1.0_dp)
         allocate (res%p(n), res%r(m), res%jac(m, n), ru(m), rt(m), rtu(m), jd(m))
-        ! the stacked least-squares problem of a damped step (DAMP_MARQUARDT)
-        allocate (a(merge(m + n, 0, .not. halving), n), b(merge(m + n, 0, .not. halving)))
         if (allocated(opts%h)) then
             h = opts%h
         else
@@ -341,7 +352,7 @@ contains
                 return
             end if
             call weigh(ru, res%r, res%jac)
-            call linearise(res%r, res%jac, dgn, red, res%gain)
+            call linearise_qr(res%r, res%jac, f, .true., dgn, red, res%gain)
             call prob%note_gain(res%gain)
         else
             call prob%residual(res%p, ru, stat)
@@ -388,15 +399,9 @@ contains
                 end if
                 dstep = dgn*(1.0_dp/(1.0_dp + lambda))
             else
-                ! min ||J d + r||^2 + lambda ||D d||^2 as one least-squares problem
-                a(1:m, :) = res%jac
-                a(m + 1:, :) = 0.0_dp
-                do j = 1, n
-                    a(m + j, j) = sqrt(lambda)*dvec(j)
-                end do
-                b(1:m) = -res%r
-                b(m + 1:) = 0.0_dp
-                call la_lstsq(a, b, dstep, stat)
+                ! min ||J d + r||^2 + lambda ||D d||^2 as one least-squares problem, through
+                ! J = Q R: min ||R d - (-Q^T r)_1..n||^2 + lambda ||D d||^2 (2n rows)
+                call damped_step(f, sqrt(lambda)*dvec, dstep, stat)
                 if (stat%code /= 0) then
                     stat%msg = 'the step: '//stat%msg
                     res%ended = FAIL_STEP
@@ -427,7 +432,11 @@ contains
                 if (s2%code == 0) then
                     if (analytic) then
                         call weigh(rtu, rt, jt)
-                        call linearise(rt, jt, dgn_t, red_t, gain_t)
+                        ! the same Jacobian again (a problem's Jacobian taken again from an
+                        ! earlier point): its factors too
+                        same = all(jt == res%jac)
+                        if (same) ft = f
+                        call linearise_qr(rt, jt, ft, .not. same, dgn_t, red_t, gain_t)
                         call prob%note_gain(gain_t)
                     else
                         call weigh(rtu, rt)
@@ -466,6 +475,9 @@ contains
                 res%jacobians = res%jacobians + 1
                 if (analytic) then
                     res%jac = jt
+                    call move_alloc(ft%a, f%a)
+                    call move_alloc(ft%tau, f%tau)
+                    call move_alloc(ft%qtb, f%qtb)
                     dgn = dgn_t
                     red = red_t
                     res%gain = gain_t
@@ -530,7 +542,7 @@ contains
                     res%jac(:, j) = res%jac(:, j)*hw
                 end do
             end if
-            call linearise(res%r, res%jac, dgn, red, res%gain)
+            call linearise_qr(res%r, res%jac, f, .true., dgn, red, res%gain)
             call prob%note_gain(res%gain)
         end subroutine new_jacobian
         !> Moré's scaling: D_j = the largest column norm of J seen so far (never 0); the
@@ -606,23 +618,44 @@ contains
     subroutine linearise(r, jac, dgn, red, gain)
         real(dp), intent(in) :: r(:), jac(:, :)
         real(dp), intent(out) :: dgn(:), red, gain
+        type(qr_t) :: f
+        call linearise_qr(r, jac, f, .true., dgn, red, gain)
+    end subroutine linearise
+
+    !> linearise, with the factors of jac (f, with -Q^T r): computed when `factor`, else
+    !! f already holds jac's (the same matrix) and only -Q^T r is formed.  The damped steps
+    !! at this point solve with f (damped_step).
+    subroutine linearise_qr(r, jac, f, factor, dgn, red, gain)
+        real(dp), intent(in) :: r(:), jac(:, :)
+        type(qr_t), intent(inout) :: f
+        logical, intent(in) :: factor
+        real(dp), intent(out) :: dgn(:), red, gain
         real(dp) :: cost, jj
-        type(status_t) :: st
+        real(dp), allocatable :: qr(:)
+        integer :: n, k
         gain = huge(1.0_dp)
         red = 0.0_dp
         dgn = 0.0_dp
         cost = sum(r**2)
-        if (size(jac, 2) == 1) then
+        n = size(jac, 2)
+        if (factor) then
+            f%a = jac
+            if (allocated(f%tau)) deallocate (f%tau)
+            allocate (f%tau(n))
+            call householder(f%a, f%tau)
+        end if
+        qr = -r
+        call apply_qt(f%a, f%tau, qr)
+        f%qtb = qr(1:n)
+        if (n == 1) then
             jj = sum(jac(:, 1)**2)
             if (.not. (jj > 0.0_dp)) return
             dgn(1) = -sum(jac(:, 1)*r)/jj
             red = sum(jac(:, 1)*r)**2/jj
         else
-            call la_lstsq(jac, -r, dgn, st)
-            if (st%code /= 0) then
-                dgn = 0.0_dp
-                return
-            end if
+            if (any([(f%a(k, k) == 0.0_dp, k=1, n)])) return
+            dgn = f%qtb
+            call back_substitute(f%a, dgn)
             red = cost - sum((r + matmul(jac, dgn))**2)
             if (.not. (red >= -1.0e-8_dp*cost) .or. .not. all(abs(dgn) < huge(1.0_dp))) then
                 ! a reduction below 0 beyond roundoff: the step of a rank-deficient J
@@ -636,7 +669,98 @@ contains
         else
             gain = 0.0_dp
         end if
-    end subroutine linearise
+    end subroutine linearise_qr
+
+    !> The damped step: min ||J d + r||^2 + ||diag(dl) d||^2 from J = Q R (f, with -Q^T r
+    !! of these residuals): the 2n x n problem [R; diag(dl)] d = [-Q^T r; 0] by its own QR.
+    !! ERR_NUMERIC when that is rank deficient.
+    subroutine damped_step(f, dl, d, stat)
+        type(qr_t), intent(in) :: f
+        real(dp), intent(in) :: dl(:)
+        real(dp), intent(out) :: d(:)
+        type(status_t), intent(out) :: stat
+        real(dp) :: a(2*size(dl), size(dl)), b(2*size(dl)), tau(size(dl))
+        integer :: n, j
+        n = size(dl)
+        d = 0.0_dp
+        a = 0.0_dp
+        do j = 1, n
+            a(1:j, j) = f%a(1:j, j)
+            a(n + j, j) = dl(j)
+        end do
+        b(1:n) = f%qtb
+        b(n + 1:) = 0.0_dp
+        call householder(a, tau)
+        if (any([(a(j, j) == 0.0_dp, j=1, n)])) then
+            call set_error(stat, ERR_NUMERIC, 'the damped least-squares matrix is not of '// &
+                           'full rank')
+            return
+        end if
+        call apply_qt(a, tau, b)
+        d = b(1:n)
+        call back_substitute(a, d)
+    end subroutine damped_step
+
+    !> Householder's QR of a (m x n, m >= n) in place: R on and above the diagonal, the
+    !! reflectors' vectors below it (first element 1), their factors tau (0: no reflection).
+    pure subroutine householder(a, tau)
+        real(dp), intent(inout) :: a(:, :)
+        real(dp), intent(out) :: tau(:)
+        real(dp) :: alpha, xn2, xn, beta, w
+        integer :: m, n, k, j
+        m = size(a, 1)
+        n = size(a, 2)
+        do k = 1, n
+            alpha = a(k, k)
+            xn2 = sum(a(k + 1:m, k)**2)
+            ! the sum of squares where it neither underflows nor overflows, else norm2's
+            ! scaled sum
+            if (xn2 >= tiny(1.0_dp)/epsilon(1.0_dp) .and. xn2 < huge(1.0_dp)) then
+                xn = sqrt(xn2)
+            else
+                xn = norm2(a(k + 1:m, k))
+            end if
+            if (xn == 0.0_dp) then
+                tau(k) = 0.0_dp
+                cycle
+            end if
+            beta = -sign(hypot(alpha, xn), alpha)
+            tau(k) = (beta - alpha)/beta
+            a(k + 1:m, k) = a(k + 1:m, k)*(1.0_dp/(alpha - beta))
+            a(k, k) = beta
+            do j = k + 1, n
+                w = tau(k)*(a(k, j) + dot_product(a(k + 1:m, k), a(k + 1:m, j)))
+                a(k, j) = a(k, j) - w
+                a(k + 1:m, j) = a(k + 1:m, j) - w*a(k + 1:m, k)
+            end do
+        end do
+    end subroutine householder
+
+    !> b := Q^T b with Q the product of householder's reflectors in a, tau.
+    pure subroutine apply_qt(a, tau, b)
+        real(dp), intent(in) :: a(:, :), tau(:)
+        real(dp), intent(inout) :: b(:)
+        real(dp) :: w
+        integer :: m, k
+        m = size(a, 1)
+        do k = 1, size(a, 2)
+            if (tau(k) == 0.0_dp) cycle
+            w = tau(k)*(b(k) + dot_product(a(k + 1:m, k), b(k + 1:m)))
+            b(k) = b(k) - w
+            b(k + 1:m) = b(k + 1:m) - w*a(k + 1:m, k)
+        end do
+    end subroutine apply_qt
+
+    !> d := R^-1 d, R the upper triangle of a (n x n of it; its diagonal without zeros).
+    pure subroutine back_substitute(a, d)
+        real(dp), intent(in) :: a(:, :)
+        real(dp), intent(inout) :: d(:)
+        integer :: n, k
+        n = size(d)
+        do k = n, 1, -1
+            d(k) = (d(k) - dot_product(a(k, k + 1:n), d(k + 1:n)))/a(k, k)
+        end do
+    end subroutine back_substitute
 
     !> What the Gauss-Newton step of the Jacobian jac could still lower S = ||r||^2 by, over
     !! S / (m - n) (at least one degree of freedom): the square of that step in standard

@@ -18,6 +18,9 @@
 !!                                  with 2 degrees of tilt and 1 cm of sway, noise and bias)
 !!                                  with six parameters, I1 I2 I3 cg_depth tilt sway, and the
 !!                                  three axes' biases, and its first-order budget
+!!   bench_identify rates_p N       mode rates, and after the fits each parameter's name,
+!!                                  estimate and first-order u (es24.16), a line each (to
+!!                                  compare two builds' results digit by digit)
 !!   bench_identify mc N            N Monte Carlo samples from the periods of
 !!                                  input/identify_periods.nml (one unit = one sample; OpenMP
 !!                                  threads as set, OMP_NUM_THREADS)
@@ -95,7 +98,7 @@ program bench_identify
             sumck = sumck + res%i1
         end do
         call cpu_time(t1)
-    case ('rates')
+    case ('rates', 'rates_p')
         call rates_record()
         call read_deck('build/bench_rates.nml', d, st)
         call need(st, 'bench_identify')
@@ -106,9 +109,14 @@ program bench_identify
             sumck = sumck + res%i1
         end do
         call cpu_time(t1)
+        if (trim(mode) == 'rates_p' .and. n > 0) then
+            do k = 1, res%np
+                write (*, '(a,2es24.16)') res%names(k), res%p(k), res%u_p(k)
+            end do
+        end if
     case default
         write (*, '(a)') 'usage: bench_identify periods|periods_asym|record|record_differences|'// &
-            'rates|mc N'
+            'rates|rates_p|mc N'
         stop 1
     end select
     write (*, '(a,1x,i0,es14.5,es24.15)') trim(mode), units, (t1 - t0)/max(1, units), sumck
