@@ -280,6 +280,7 @@ contains
         call t%check('example: its certificate', &
                      exists(DIR//'/tensor_platform.certificate.html'))
         call t%check('example: nothing on stderr', count_lines(DIR//'.stderr') == 0)
+        call certificate_words(t, DIR//'/tensor_platform.certificate.html')
         call read_kv_text(DIR//'/tensor_platform.tensor', 'I_principal', v)
         read (v, *, iostat=ios) m
         call t%check('example: I_principal read', ios == 0)
@@ -288,6 +289,28 @@ contains
                      sci(m(2))//', '//sci(m(3))//')', &
                      maxval(abs(m/MOMENTS - 1.0_dp)) < 1.0e-7_dp)
     end subroutine test_example
+
+    !> A platform's certificate says what the platform is (cables, R, R', l) and where the
+    !! mass centre is measured from (the platform's centre, the attachment plane, x and y),
+    !! not a bifilar's b, b' and strings' midpoint.
+    subroutine certificate_words(t, file)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: file
+        character(len=*), parameter :: HAS(6) = [character(len=30) :: 'cables', &
+            'R (radius, at the support)', 'l (every cable)', 'cg_offset_y (y)', &
+            'attachment plane', 'along (the platform']
+        character(len=*), parameter :: NOT(3) = [character(len=30) :: 'b (at the support)', &
+            'midpoint of the strings', 'along (C to D)']
+        integer :: k
+        do k = 1, size(HAS)
+            call t%check('certificate: says '''//trim(HAS(k))//'''', file_has(file, &
+                         trim(HAS(k))))
+        end do
+        do k = 1, size(NOT)
+            call t%check('certificate: no bifilar''s '''//trim(NOT(k))//'''', &
+                         .not. file_has(file, trim(NOT(k))))
+        end do
+    end subroutine certificate_words
 
     !> The example deck with monte_carlo = 300: the samples' u of each principal moment within
     !! 15 % of the first-order u (a sample that ran the bifilar's model instead of the
