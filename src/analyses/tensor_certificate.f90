@@ -177,7 +177,9 @@ contains
         else
             call cert_text(c, 'The mass centre as each hang gives it, measured from the '// &
                 'platform''s centre (the centroid of the cables'' lower ends): cg_offset along '// &
-                'the platform''s x axis (toward the first cable), cg_offset_y along its y axis '// &
+                'the platform''s x axis '//pick('(that of its points, body_points)', &
+                '(toward the first cable)', d%suspension%pointwise())//', cg_offset_y along '// &
+                'its y axis '// &
                 '(up x along), cg_depth below the attachment plane (the plane of the cables'' '// &
                 'lower ends; negative: above it, a body resting on the platform).')
         end if

@@ -105,7 +105,7 @@ module tensor_fit
     use measurement, only: measurement_t, observation_t, hang_t, OBS_HANG, RIG_COLUMNS
     use hang_model, only: tensor_entries, principal_axes, hang_rig, hang_period, &
         maxima_drift, vertical_moment, moment_direction, turned_hang, fixture_t, loaded_hang, &
-        plane_normal, fixture_in_body
+        plane_normal, fixture_in_body, platform_points_t
     use unused_arg, only: unused
     use vectors, only: cross
     implicit none
@@ -143,6 +143,8 @@ module tensor_fit
         logical :: est_cg = .false.             !! estimate = 'tensor cg'
         integer :: np = 6                       !! parameters: 6, or 9 with the mass centre
         integer, allocatable :: att_hang(:)     !! per attitude residual: its hang
+        !> a platform given point by point (the deck's &suspension; else not given)
+        type(platform_points_t) :: pts
     end type tensor_problem_t
 
     !> One line of the budget: an input (or the inputs of a hang) and what it adds to the
@@ -301,7 +303,7 @@ contains
     !! from the deck (&tensor), the cases (hang, amplitude) of the rows.
     subroutine problem_of(ten, sus, bod, acc, m, prob)
         type(tensor_group_t), intent(in) :: ten         !! the deck's &tensor
-        type(suspension_group_t), intent(in) :: sus     !! (g)
+        type(suspension_group_t), intent(in) :: sus     !! (g; a platform's points)
         type(body_group_t), intent(in) :: bod           !! (mass)
         type(accuracy_t), intent(in) :: acc             !! the deck's accuracy
         type(measurement_t), intent(in) :: m    !! its hangs (releases) and their timings
@@ -332,6 +334,15 @@ contains
         prob%est_cg = ten%estimates_cg()
         prob%loaded = ten%has_fixture() .or. prob%est_cg
         prob%np = merge(9, 6, prob%est_cg)
+        if (sus%cables == 3 .and. sus%pointwise()) then
+            prob%pts%given = .true.
+            prob%pts%support = sus%support_points(:, 1:3)
+            prob%pts%body = sus%body_points(:, 1:3)
+            prob%pts%lengths = sus%lengths(1:3)
+            prob%pts%b = sus%b
+            prob%pts%b_prime = sus%b_prime
+            prob%pts%l = sus%l
+        end if
         call set_cases(prob)
     end subroutine problem_of
 
@@ -618,7 +629,7 @@ contains
         type(rig_t) :: rg
         t = 0.0_dp
         call problem_rig(prob, h, mass, g, x, rg, stat)
-        if (stat%code == STATUS_OK) call hang_period(rg, prob%acc, amp, t, stat)
+        if (stat%code == STATUS_OK) call hang_period(rg, prob%acc, amp, t, stat, prob%pts)
         if (stat%code /= STATUS_OK) stat%msg = hang_label(h)//': '//stat%msg
     end subroutine case_period
 
