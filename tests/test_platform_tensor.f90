@@ -26,7 +26,7 @@ module test_platform_tensor
     use measurement_read, only: read_hangs
     use hang_model, only: tensor_entries, hang_rig, hang_period
     use tensor_fit, only: tensor_problem_t, tensor_fit_t, problem_of, projection, fit_tensor, &
-        model_periods
+        model_periods, tensor_mc_payload, tensor_mc_task, tensor_mc_task_t, MC_PARTS
     implicit none
     private
 
@@ -316,6 +316,7 @@ contains
             call t%check_close('asymmetric points: entry '//itoa(k), fit%x(k), x(k), &
                                rtol=0.0_dp, atol=1.0e-9_dp*MOMENTS(3))
         end do
+        call payload_round_trip(t, prob, fit)
         ! the same scales as a regular polygon: other periods
         reg = prob
         reg%pts%given = .false.
@@ -331,6 +332,51 @@ contains
                      'the regular polygon''s by more than 1e-4)', &
                      maxval(abs(tp/tr - 1.0_dp)) > 1.0e-4_dp)
     end subroutine test_points_asymmetric
+
+    !> The Monte Carlo's payload of a fit of the asymmetric point rig read back (as another
+    !! rank reads it, with the deck): the hangs, the rows, the estimate, its chord and the
+    !! points; the payload one entry short is refused.
+    subroutine payload_round_trip(t, prob, fit)
+        type(tester_t), intent(inout) :: t
+        type(tensor_problem_t), intent(in) :: prob
+        type(tensor_fit_t), intent(in) :: fit
+        type(deck_t) :: d
+        type(tensor_mc_task_t) :: task
+        type(status_t) :: st
+        real(dp), allocatable :: p(:), parts(:, :)
+        integer :: h
+        logical :: same
+        allocate (parts(MC_PARTS, size(prob%case_hang)))
+        parts = reshape([(0.001_dp*h, h=1, size(parts))], shape(parts))
+        p = tensor_mc_payload(prob, fit, 7, parts)
+        call read_deck(SCR//'/asym_points.nml', d, st)
+        if (st%code == STATUS_OK) call tensor_mc_task(d%tensor, d%suspension, d%body, &
+            accuracy_of(d), p, task, st)
+        call t%check('payload: read back: '//msg_of(st), st%code == STATUS_OK)
+        if (st%code /= STATUS_OK) return
+        same = task%seed == 7 .and. size(task%prob%hangs) == size(prob%hangs) .and. &
+            size(task%prob%rows) == size(prob%rows)
+        call t%check('payload: the seed and the counts', same)
+        if (.not. same) return
+        do h = 1, size(prob%hangs)
+            same = same .and. all(task%prob%hangs(h)%up == prob%hangs(h)%up) .and. &
+                all(task%prob%hangs(h)%along == prob%hangs(h)%along) .and. &
+                task%prob%hangs(h)%cg_offset_y == prob%hangs(h)%cg_offset_y .and. &
+                task%prob%hangs(h)%cables == 3
+        end do
+        call t%check('payload: every hang', same)
+        call t%check('payload: the rows'' periods and u_def', &
+                     all(task%prob%rows%period == prob%rows%period) .and. &
+                     all(task%prob%u_def == prob%u_def))
+        call t%check('payload: the estimate, its u and its chord', all(task%x == fit%x) .and. &
+                     all(task%u_x == fit%u_x) .and. all(task%chord == fit%chord(1:6, :)))
+        call t%check('payload: the amplitude parts', all(task%parts == parts))
+        call t%check('payload: the points reach the task', task%prob%pts%given .and. &
+                     all(task%prob%pts%support == prob%pts%support))
+        call tensor_mc_task(d%tensor, d%suspension, d%body, accuracy_of(d), &
+                            p(1:size(p) - 1), task, st)
+        call t%check('payload: one entry short refused', st%code /= STATUS_OK)
+    end subroutine payload_round_trip
 
     !> Timing noise of u_period = 2e-4 s per period (10 seeds): each principal moment
     !! within U = k95 u of the truth in at least 9 of 10 seeds.
