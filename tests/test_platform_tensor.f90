@@ -26,7 +26,7 @@ module test_platform_tensor
     use measurement_read, only: read_hangs
     use hang_model, only: tensor_entries, hang_rig, hang_period
     use tensor_fit, only: tensor_problem_t, tensor_fit_t, problem_of, projection, fit_tensor, &
-        model_periods
+        model_periods, tensor_mc_payload, tensor_mc_task, tensor_mc_task_t, MC_PARTS
     implicit none
     private
 
@@ -69,7 +69,13 @@ contains
         if (t%want('platform_tensor: the tensor back from exact periods; no fixture is wrong')) &
             call test_exact(t)
         if (t%want('platform_tensor: the truth within U over noise seeds')) call test_noise(t)
+        if (t%want('platform_tensor: points of the regular rig give the radius form''s')) &
+            call test_points_regular(t)
+        if (t%want('platform_tensor: an asymmetric point rig gives the truth back')) &
+            call test_points_asymmetric(t)
         if (t%want('platform_tensor: the example deck')) call test_example(t, exe)
+        if (t%want('platform_tensor: the example point by point, with a Monte Carlo')) &
+            call test_points_deck(t, exe)
         if (t%want('platform_tensor: the Monte Carlo runs the platform''s model')) &
             call test_monte_carlo(t, exe)
         if (t%want('platform_tensor: refusals are one line, exit 2 and no file')) &
@@ -151,18 +157,25 @@ contains
 
     !> The problem of the test deck (extra: more &tensor keys) with the periods the
     !! program's model gives the true tensor with the platform as fixture, plus noise(i).
-    subroutine make_problem(label, extra, prob, st, noise)
+    !! rig: the deck's &suspension line in place of the trifilar's; periods: the problem
+    !! whose model gives the periods (default: this one).
+    subroutine make_problem(label, extra, prob, st, noise, rig, periods)
         character(len=*), intent(in) :: label, extra
         type(tensor_problem_t), intent(out) :: prob
         type(status_t), intent(out) :: st
         real(dp), intent(in), optional :: noise(:)
+        character(len=*), intent(in), optional :: rig
+        type(tensor_problem_t), intent(in), optional :: periods
         type(deck_t) :: d
         type(measurement_t) :: set
         real(dp), allocatable :: tc(:)
+        character(len=:), allocatable :: lines
         integer :: i
+        lines = RIG_LINES
+        if (present(rig)) lines = rig//NL//RIG_LINES(index(RIG_LINES, NL) + 1:)
         call write_text(SCR//'/'//label//'.txt', TABLE)
         call write_text(SCR//'/'//label//'.nml', "&scene analyses = 'tensor' /"//NL// &
-            RIG_LINES//"&integration rtol = 1e-12, atol = 1e-14 /"//NL// &
+            lines//"&integration rtol = 1e-12, atol = 1e-14 /"//NL// &
             "&tensor hangs = '"//label//".txt', "//FIXTURE//extra//' /'//NL)
         call read_deck(SCR//'/'//label//'.nml', d, st)
         if (st%code /= STATUS_OK) return
@@ -170,7 +183,11 @@ contains
         if (st%code /= STATUS_OK) return
         call problem_of(d%tensor, d%suspension, d%body, accuracy_of(d), set, prob)
         allocate (tc(size(prob%case_hang)))
-        call model_periods(prob, true_tensor(), tc, st)
+        if (present(periods)) then
+            call model_periods(periods, true_tensor(), tc, st)
+        else
+            call model_periods(prob, true_tensor(), tc, st)
+        end if
         if (st%code /= STATUS_OK) return
         do i = 1, size(prob%rows)
             prob%rows(i)%period = tc(prob%row_case(i))
@@ -222,6 +239,144 @@ contains
             call t%check('no fixture: refused ('//msg_of(st)//')', .true.)
         end if
     end subroutine test_exact
+
+    !> The trifilar given point by point (its three points at the radii, every length l):
+    !! the same periods give the radius form's entries to 1e-10 of I_max, and their u (a
+    !! stated u of the timings, 2e-4 s) to 1e-6.
+    subroutine test_points_regular(t)
+        type(tester_t), intent(inout) :: t
+        type(tensor_problem_t) :: pr, pp
+        type(tensor_fit_t) :: fr, fp
+        type(status_t) :: st
+        real(dp) :: xp(6)
+        integer :: k
+        call make_problem('radius', ', u_period = 2e-4', pr, st)
+        if (st%code == STATUS_OK) call make_problem('regular_points', ', u_period = 2e-4', &
+            pp, st, rig=regular_points(), periods=pr)
+        call t%check('regular points: the problems: '//msg_of(st), st%code == STATUS_OK)
+        if (st%code /= STATUS_OK) return
+        call t%check('regular points: the problem holds the points', pp%pts%given .and. &
+                     .not. pr%pts%given)
+        call projection(pr, xp, st)
+        if (st%code == STATUS_OK) call fit_tensor(pr, xp, fr, st)
+        if (st%code == STATUS_OK) call projection(pp, xp, st)
+        if (st%code == STATUS_OK) call fit_tensor(pp, xp, fp, st)
+        call t%check('regular points: the fits: '//msg_of(st), st%code == STATUS_OK)
+        if (st%code /= STATUS_OK) return
+        do k = 1, 6
+            call t%check_close('regular points: entry '//itoa(k), fp%x(k), fr%x(k), &
+                               rtol=0.0_dp, atol=1.0e-10_dp*MOMENTS(3))
+            call t%check_close('regular points: u of entry '//itoa(k), fp%u_x(k), fr%u_x(k), &
+                               rtol=1.0e-6_dp)
+        end do
+    contains
+        !> &suspension of the test trifilar point by point: cable i at angle 2 pi (i-1)/3.
+        function regular_points() result(line)
+            character(len=:), allocatable :: line
+            character(len=:), allocatable :: sp, bp
+            real(dp) :: a
+            integer :: i
+            sp = ''
+            bp = ''
+            do i = 1, 3
+                a = 2.0_dp*pi*(i - 1)/3.0_dp
+                sp = sp//sci(0.30_dp*cos(a), 17)//', '//sci(0.30_dp*sin(a), 17)//', 0, '
+                bp = bp//sci(0.25_dp*cos(a), 17)//', '//sci(0.25_dp*sin(a), 17)//', 0, '
+            end do
+            line = '&suspension cables = 3, support_points = '//sp//'body_points = '//bp// &
+                'lengths = 1.5, 1.5, 1.5, g = 9.80665 /'
+        end function regular_points
+    end subroutine test_points_regular
+
+    !> A platform of three cables at no regular polygon (unequal lengths, the points off
+    !! their circles and heights): exact periods of its own model give the truth back to
+    !! 1e-9 of I_max; its periods are not the regular rig's of the same scales (the points
+    !! reach the model).
+    subroutine test_points_asymmetric(t)
+        type(tester_t), intent(inout) :: t
+        type(tensor_problem_t) :: prob, reg
+        type(tensor_fit_t) :: fit
+        type(status_t) :: st
+        real(dp) :: xp(6), x(6)
+        real(dp), allocatable :: tp(:), tr(:)
+        character(len=*), parameter :: ASYM = '&suspension cables = 3, support_points = '// &
+            '0.31, 0.01, 0,  -0.14, 0.27, 0.005,  -0.16, -0.25, -0.004, body_points = '// &
+            '0.26, 0, 0,  -0.12, 0.22, 0.003,  -0.13, -0.21, 0, lengths = 1.50, 1.49, 1.52, '// &
+            'g = 9.80665 /'
+        integer :: k
+        x = true_tensor()
+        call make_problem('asym_points', '', prob, st, rig=ASYM)
+        call t%check('asymmetric points: the problem: '//msg_of(st), st%code == STATUS_OK)
+        if (st%code /= STATUS_OK) return
+        call projection(prob, xp, st)
+        if (st%code == STATUS_OK) call fit_tensor(prob, xp, fit, st)
+        call t%check('asymmetric points: the fit: '//msg_of(st), st%code == STATUS_OK)
+        if (st%code /= STATUS_OK) return
+        do k = 1, 6
+            call t%check_close('asymmetric points: entry '//itoa(k), fit%x(k), x(k), &
+                               rtol=0.0_dp, atol=1.0e-9_dp*MOMENTS(3))
+        end do
+        call payload_round_trip(t, prob, fit)
+        ! the same scales as a regular polygon: other periods
+        reg = prob
+        reg%pts%given = .false.
+        allocate (tp(size(prob%case_hang)), tr(size(prob%case_hang)))
+        call model_periods(prob, x, tp, st)
+        if (st%code == STATUS_OK) call model_periods(reg, x, tr, st)
+        call t%check('asymmetric points: the regular polygon of its scales: '//msg_of(st), &
+                     st%code == STATUS_OK)
+        if (st%code /= STATUS_OK) return
+        write (*, '(a,es10.3)') '   asymmetric points: largest relative period change '// &
+            'from the regular polygon of their scales:', maxval(abs(tp/tr - 1.0_dp))
+        call t%check('asymmetric points: the points reach the model (periods differ from '// &
+                     'the regular polygon''s by more than 1e-4)', &
+                     maxval(abs(tp/tr - 1.0_dp)) > 1.0e-4_dp)
+    end subroutine test_points_asymmetric
+
+    !> The Monte Carlo's payload of a fit of the asymmetric point rig read back (as another
+    !! rank reads it, with the deck): the hangs, the rows, the estimate, its chord and the
+    !! points; the payload one entry short is refused.
+    subroutine payload_round_trip(t, prob, fit)
+        type(tester_t), intent(inout) :: t
+        type(tensor_problem_t), intent(in) :: prob
+        type(tensor_fit_t), intent(in) :: fit
+        type(deck_t) :: d
+        type(tensor_mc_task_t) :: task
+        type(status_t) :: st
+        real(dp), allocatable :: p(:), parts(:, :)
+        integer :: h
+        logical :: same
+        allocate (parts(MC_PARTS, size(prob%case_hang)))
+        parts = reshape([(0.001_dp*h, h=1, size(parts))], shape(parts))
+        p = tensor_mc_payload(prob, fit, 7, parts)
+        call read_deck(SCR//'/asym_points.nml', d, st)
+        if (st%code == STATUS_OK) call tensor_mc_task(d%tensor, d%suspension, d%body, &
+            accuracy_of(d), p, task, st)
+        call t%check('payload: read back: '//msg_of(st), st%code == STATUS_OK)
+        if (st%code /= STATUS_OK) return
+        same = task%seed == 7 .and. size(task%prob%hangs) == size(prob%hangs) .and. &
+            size(task%prob%rows) == size(prob%rows)
+        call t%check('payload: the seed and the counts', same)
+        if (.not. same) return
+        do h = 1, size(prob%hangs)
+            same = same .and. all(task%prob%hangs(h)%up == prob%hangs(h)%up) .and. &
+                all(task%prob%hangs(h)%along == prob%hangs(h)%along) .and. &
+                task%prob%hangs(h)%cg_offset_y == prob%hangs(h)%cg_offset_y .and. &
+                task%prob%hangs(h)%cables == 3
+        end do
+        call t%check('payload: every hang', same)
+        call t%check('payload: the rows'' periods and u_def', &
+                     all(task%prob%rows%period == prob%rows%period) .and. &
+                     all(task%prob%u_def == prob%u_def))
+        call t%check('payload: the estimate, its u and its chord', all(task%x == fit%x) .and. &
+                     all(task%u_x == fit%u_x) .and. all(task%chord == fit%chord(1:6, :)))
+        call t%check('payload: the amplitude parts', all(task%parts == parts))
+        call t%check('payload: the points reach the task', task%prob%pts%given .and. &
+                     all(task%prob%pts%support == prob%pts%support))
+        call tensor_mc_task(d%tensor, d%suspension, d%body, accuracy_of(d), &
+                            p(1:size(p) - 1), task, st)
+        call t%check('payload: one entry short refused', st%code /= STATUS_OK)
+    end subroutine payload_round_trip
 
     !> Timing noise of u_period = 2e-4 s per period (10 seeds): each principal moment
     !! within U = k95 u of the truth in at least 9 of 10 seeds.
@@ -280,6 +435,7 @@ contains
         call t%check('example: its certificate', &
                      exists(DIR//'/tensor_platform.certificate.html'))
         call t%check('example: nothing on stderr', count_lines(DIR//'.stderr') == 0)
+        call certificate_words(t, DIR//'/tensor_platform.certificate.html')
         call read_kv_text(DIR//'/tensor_platform.tensor', 'I_principal', v)
         read (v, *, iostat=ios) m
         call t%check('example: I_principal read', ios == 0)
@@ -288,6 +444,72 @@ contains
                      sci(m(2))//', '//sci(m(3))//')', &
                      maxval(abs(m/MOMENTS - 1.0_dp)) < 1.0e-7_dp)
     end subroutine test_example
+
+    !> A platform's certificate says what the platform is (cables, R, R', l) and where the
+    !! mass centre is measured from (the platform's centre, the attachment plane, x and y),
+    !! not a bifilar's b, b' and strings' midpoint.
+    subroutine certificate_words(t, file)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: file
+        character(len=*), parameter :: HAS(6) = [character(len=30) :: 'cables', &
+            'R (radius, at the support)', 'l (every cable)', 'cg_offset_y (y)', &
+            'attachment plane', 'along (the platform']
+        character(len=*), parameter :: NOT(3) = [character(len=30) :: 'b (at the support)', &
+            'midpoint of the strings', 'along (C to D)']
+        integer :: k
+        do k = 1, size(HAS)
+            call t%check('certificate: says '''//trim(HAS(k))//'''', file_has(file, &
+                         trim(HAS(k))))
+        end do
+        do k = 1, size(NOT)
+            call t%check('certificate: no bifilar''s '''//trim(NOT(k))//'''', &
+                         .not. file_has(file, trim(NOT(k))))
+        end do
+    end subroutine certificate_words
+
+    !> input/tensor_platform.nml with its trifilar given point by point and monte_carlo =
+    !! 200: exit 0, the truth's principal moments to 1e-7, the Monte Carlo's u within 15 %
+    !! of the first-order u (its samples run the points' model), the certificate names the
+    !! points.
+    subroutine test_points_deck(t, exe)
+        type(tester_t), intent(inout) :: t
+        character(len=*), intent(in) :: exe
+        character(len=*), parameter :: DIR = SCR//'/ptsdeck'
+        character(len=*), parameter :: SUS = '\&suspension cables = 3, support_points = '// &
+            '0.3, 0, 0, -0.15, 0.25980762113533160, 0, -0.15, -0.25980762113533160, 0, '// &
+            'body_points = 0.25, 0, 0, -0.125, 0.21650635094610965, 0, -0.125, '// &
+            '-0.21650635094610965, 0, lengths = 1.5, 1.5, 1.5, g = 9.80665 /'
+        character(len=512) :: v
+        real(dp) :: m(3), u1(3), umc(3)
+        integer :: ex, ios
+        call execute_command_line('rm -rf '//DIR//' && mkdir -p '//DIR//' && sed -e '// &
+            '"s/monte_carlo = 0 /monte_carlo = 200 /" -e "s|^&suspension.*|'//SUS//'|" '// &
+            'input/tensor_platform.nml > '//DIR//'/pts.nml && cp input/tensor_platform_hangs.csv '// &
+            DIR//'/ && '//exe//' '//DIR//'/pts.nml --out '//DIR//'/out > '//DIR// &
+            '.stdout 2> '//DIR//'.stderr', exitstat=ex)
+        call t%check('points deck: exit 0', ex == 0)
+        call t%check('points deck: the deck is point by point', &
+                     file_has(DIR//'/pts.nml', 'support_points'))
+        call read_kv_text(DIR//'/out/pts.tensor', 'I_principal', v)
+        read (v, *, iostat=ios) m
+        if (ios == 0) then
+            call read_kv_text(DIR//'/out/pts.tensor', 'u_I_principal', v)
+            read (v, *, iostat=ios) u1
+        end if
+        if (ios == 0) then
+            call read_kv_text(DIR//'/out/pts.tensor', 'u_I_principal_monte_carlo', v)
+            read (v, *, iostat=ios) umc
+        end if
+        call t%check('points deck: its results read', ios == 0)
+        if (ios /= 0) return
+        call t%check('points deck: the truth''s principal moments to 1e-7', &
+                     maxval(abs(m/MOMENTS - 1.0_dp)) < 1.0e-7_dp)
+        write (*, '(a,3f8.4)') '  points deck: Monte Carlo u over first-order u:', umc/u1
+        call t%check('points deck: the Monte Carlo''s u within 15 % of the first-order u', &
+                     all(abs(umc/u1 - 1.0_dp) < 0.15_dp))
+        call t%check('points deck: the certificate names the points', &
+                     file_has(DIR//'/out/pts.certificate.html', 'given point by point'))
+    end subroutine test_points_deck
 
     !> The example deck with monte_carlo = 300: the samples' u of each principal moment within
     !! 15 % of the first-order u (a sample that ran the bifilar's model instead of the
@@ -328,6 +550,9 @@ contains
             '6 0 1 1 1 0 0 1.5'//NL
         character(len=*), parameter :: SUS4 = '&suspension cables = 4, radius = 0.30, '// &
             'radius_prime = 0.25, l = 1.50, g = 9.80665 /'
+        character(len=*), parameter :: PTS = '&suspension cables = 3, support_points = '// &
+            '0.3, 0, 0, -0.15, 0.26, 0, -0.15, -0.26, 0, body_points = 0.25, 0, 0, '// &
+            '-0.125, 0.2165, 0, -0.125, -0.2165, 0, g = 9.80665'
         call one('cables4', HEAD//ROWS, '&suspension cables', FIXTURE, SUS4)
         call one('frame', HEAD//ROWS, '&tensor fixture_frame', &
                  "fixture_frame = 'body', fixture_mass = 1.5")
@@ -336,6 +561,15 @@ contains
                  '1 0 0 0 1 0 0 1.5'//NL, 'attachment points c_x', FIXTURE//', cg = 0, 0, 0')
         call one('bprime', 'hang up_x up_y up_z along_x along_y along_z b_prime period'//NL// &
                  '1 1 0 0 0 1 0 0.5 1.5'//NL, 'column ''b_prime''', FIXTURE)
+        ! a platform point by point: lengths missing, the platform's points collinear,
+        ! both forms at once
+        call one('nolengths', HEAD//ROWS, '&suspension lengths', FIXTURE, PTS//' /')
+        call one('collinear', HEAD//ROWS, '&suspension body_points', FIXTURE, &
+                 '&suspension cables = 3, support_points = 0.3, 0, 0, -0.15, 0.26, 0, '// &
+                 '-0.15, -0.26, 0, body_points = 0.25, 0, 0, 0, 0, 0, -0.25, 0, 0, '// &
+                 'lengths = 1.5, 1.5, 1.5, g = 9.80665 /')
+        call one('bothforms', HEAD//ROWS, '&suspension radius', FIXTURE, &
+                 PTS//', radius = 0.3, lengths = 1.5, 1.5, 1.5 /')
         call one('elastic', HEAD//ROWS, '&scene model', FIXTURE, &
                  "&scene analyses = 'tensor', model = 'elastic' /")
     contains

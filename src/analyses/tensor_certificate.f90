@@ -131,6 +131,10 @@ contains
         type(deck_t), intent(in) :: d
         type(tensor_problem_t), intent(in) :: prob
         integer :: h
+        if (d%suspension%cables > 2) then
+            call platform_centre_part(c, d, prob)
+            return
+        end if
         call cert_section(c, 'Mass centre')
         if (d%tensor%cg_given) then
             call cert_text(c, 'The mass centre in the body frame, as the deck gives it '// &
@@ -153,6 +157,43 @@ contains
         end do
     end subroutine centre_part
 
+    !> The mass centre the hangs on a platform assumed: from the platform's centre (the
+    !! centroid of the cables' lower ends), along its x and y, and its depth below the
+    !! plane of those ends.
+    subroutine platform_centre_part(c, d, prob)
+        type(certificate_t), intent(inout) :: c
+        type(deck_t), intent(in) :: d
+        type(tensor_problem_t), intent(in) :: prob
+        integer :: h
+        call cert_section(c, 'Mass centre')
+        if (d%tensor%cg_given) then
+            call cert_text(c, 'The mass centre in the body frame, as the deck gives it '// &
+                '(&tensor cg); each hang''s offsets from the platform''s centre and depth '// &
+                'below its attachment plane follow from it, the hang''s up and along.')
+            call cert_table(c, 'coordinate'//CELL//'value')
+            do h = 1, 3
+                call cert_row(c, achar(iachar('x') + h - 1)//CELL//trim(sci(d%tensor%cg(h), 5)))
+            end do
+        else
+            call cert_text(c, 'The mass centre as each hang gives it, measured from the '// &
+                'platform''s centre (the centroid of the cables'' lower ends): cg_offset along '// &
+                'the platform''s x axis '//pick('(that of its points, body_points)', &
+                '(toward the first cable)', d%suspension%pointwise())//', cg_offset_y along '// &
+                'its y axis '// &
+                '(up x along), cg_depth below the attachment plane (the plane of the cables'' '// &
+                'lower ends; negative: above it, a body resting on the platform).')
+        end if
+        call cert_table(c, 'hang'//CELL//'cg_offset (x)'//CELL//'cg_offset_y (y)'//CELL// &
+                        'cg_depth')
+        do h = 1, size(prob%hangs)
+            call cert_row(c, itoa(prob%hangs(h)%id)//CELL// &
+                          trim(sci(clean(prob%hangs(h)%cg_offset, prob%hangs(h)%b_prime), 4))// &
+                          CELL//trim(sci(clean(prob%hangs(h)%cg_offset_y, &
+                          prob%hangs(h)%b_prime), 4))//CELL// &
+                          trim(sci(prob%hangs(h)%cg_depth, 4)))
+        end do
+    end subroutine platform_centre_part
+
     !> The body and the rig as measured, with every input's u.
     subroutine rig_part(c, d, prob)
         type(certificate_t), intent(inout) :: c
@@ -162,6 +203,10 @@ contains
         character(len=24), parameter :: WHAT(6) = [character(len=24) :: 'mass', &
             'l', 'l''', 'b (at the support)', 'b'' (at the body)', 'g']
         integer :: k
+        if (d%suspension%cables > 2) then
+            call platform_rig_part(c, d, prob)
+            return
+        end if
         call cert_section(c, 'Body and rig as measured')
         v = [prob%mass, d%suspension%l, d%suspension%l_prime, d%suspension%b, &
              d%suspension%b_prime, prob%g]
@@ -177,6 +222,66 @@ contains
         if (any(prob%hangs(1)%own)) call cert_text(c, 'Some hangs give their own l, l'', b or '// &
             'b'' in the table: those are in the table of hangs below.')
     end subroutine rig_part
+
+    !> The body and the platform as measured, with every input's u: its cables, radii R
+    !! (support) and R' (platform) and length l, or its points as the deck gives them.
+    subroutine platform_rig_part(c, d, prob)
+        type(certificate_t), intent(inout) :: c
+        type(deck_t), intent(in) :: d
+        type(tensor_problem_t), intent(in) :: prob
+        integer :: i, n
+        call cert_section(c, 'Body and rig as measured')
+        n = d%suspension%cables
+        if (d%suspension%pointwise()) then
+            call cert_text(c, 'A platform of '//itoa(n)//' cables given point by point '// &
+                '(&suspension support_points, body_points, lengths): each cable''s point on '// &
+                'the support (support''s frame), on the platform (platform''s frame) and its '// &
+                'length.  The u of R and R'' apply to the scale of the support''s and the '// &
+                'platform''s points about their centroids.')
+            call cert_table(c, 'cable'//CELL//'support point'//CELL//'platform point'//CELL// &
+                            'length')
+            do i = 1, n
+                call cert_row(c, itoa(i)//CELL//point_text(d%suspension%support_points(:, i))// &
+                              CELL//point_text(d%suspension%body_points(:, i))//CELL// &
+                              trim(sci(d%suspension%lengths(i), 6)))
+            end do
+        else
+            call cert_text(c, 'A platform of '//itoa(n)//' cables of length l at the corners '// &
+                'of regular polygons: radius R on the support, R'' on the platform (from each '// &
+                'polygon''s centre to a cable''s end).')
+        end if
+        call cert_table(c, 'quantity'//CELL//'value'//CELL//'standard u')
+        call cert_row(c, 'cables'//CELL//itoa(n)//CELL//'-')
+        call cert_row(c, 'mass (the body)'//CELL//trim(sci(prob%mass, 6))//CELL// &
+                      trim(sci(d%tensor%u(1), 2)))
+        call cert_row(c, pick('l (mean of the lengths)', 'l (every cable)', &
+                      d%suspension%pointwise())//CELL//trim(sci(d%suspension%l, 6))//CELL// &
+                      trim(sci(d%tensor%u(2), 2)))
+        call cert_row(c, pick('R (mean, at the support)', 'R (radius, at the support)', &
+                      d%suspension%pointwise())//CELL//trim(sci(0.5_dp*d%suspension%b, 6))// &
+                      CELL//trim(sci(0.5_dp*d%tensor%u(4), 2)))
+        call cert_row(c, pick('R'' (mean, at the platform)', 'R'' (radius_prime, at the '// &
+                      'platform)', d%suspension%pointwise())//CELL// &
+                      trim(sci(0.5_dp*d%suspension%b_prime, 6))//CELL// &
+                      trim(sci(0.5_dp*d%tensor%u(5), 2)))
+        call cert_row(c, 'g'//CELL//trim(sci(prob%g, 6))//CELL//trim(sci(d%tensor%u(6), 2)))
+        call cert_row(c, 'u of a timing (s)'//CELL//'-'//CELL//trim(sci(d%tensor%u(7), 2)))
+        call cert_row(c, 'u of an amplitude (deg)'//CELL//'-'//CELL//trim(sci(d%tensor%u(8), 2)))
+        call cert_row(c, 'u of a direction (deg, each rotation)'//CELL//'-'//CELL// &
+                      trim(sci(d%tensor%u_direction, 2)))
+        if (d%tensor%fixture_mass > 0.0_dp) call cert_text(c, 'The platform itself (mass '// &
+            trim(sci(d%tensor%fixture_mass, 4))//', its mass centre and inertia in the '// &
+            'platform''s axes) is the fixture of every hang (&tensor fixture_*).')
+        if (any(prob%hangs(1)%own)) call cert_text(c, 'Some hangs give their own l in the '// &
+            'table: those are in the table of hangs below.')
+    end subroutine platform_rig_part
+
+    !> A point as 'x, y, z'.
+    function point_text(p) result(s)
+        real(dp), intent(in) :: p(3)
+        character(len=:), allocatable :: s
+        s = trim(sci(p(1), 4))//', '//trim(sci(p(2), 4))//', '//trim(sci(p(3), 4))
+    end function point_text
 
     !> The method and the model.
     subroutine method_part(c, d, res, fit, prob)
@@ -336,7 +441,9 @@ contains
         type(tensor_problem_t), intent(in) :: prob
         integer :: h, i
         call cert_section(c, 'Hangs')
-        call cert_table(c, 'hang'//CELL//'up (body frame)'//CELL//'along (C to D)'//CELL// &
+        call cert_table(c, 'hang'//CELL//'up (body frame)'//CELL// &
+                        pick('along (the platform''s x)', 'along (C to D)', &
+                        prob%hangs(1)%cables > 2)//CELL// &
                         'vertical moment measured'//CELL//'its u'//CELL//'fitted'//CELL// &
                         'normalised residual')
         do h = 1, size(prob%hangs)

@@ -412,9 +412,10 @@ contains
         end function word_of
     end subroutine check_platform_deck
 
-    !> analyses = 'tensor' on a platform: three cables of the regular polygon (radius,
-    !! radius_prime, l), the paper's inextensible model, the six entries alone, and the
-    !! platform's own mass and inertia a fixture that stays with the hang.
+    !> analyses = 'tensor' on a platform: three cables (the regular polygon: radius,
+    !! radius_prime, l; or point by point), the paper's inextensible model, the six
+    !! entries alone, and the platform's own mass and inertia a fixture that stays with
+    !! the hang.
     subroutine check_platform_tensor(scene, sus, ten, stat)
         type(scene_group_t), intent(in) :: scene        !! normalised
         type(suspension_group_t), intent(in) :: sus     !! normalised, cables >= 3
@@ -426,10 +427,6 @@ contains
                      'with inextensible cables: no model of its torsion with the body '// &
                      'anywhere on it)', 'cables = 3 (or 2: the bifilar) with analyses = '// &
                      '''tensor''')
-        else if (sus%pointwise()) then
-            call bad(stat, 'suspension', 'support_points', 'given', 'tensor on a '// &
-                     'platform given point by point', 'the regular polygon (radius, '// &
-                     'radius_prime, l) with analyses = ''tensor''')
         else if (trim(scene%model) /= 'kane') then
             call bad(stat, 'scene', 'model', ''''//trim(scene%model)//'''', 'tensor on a '// &
                      'platform fits the inextensible cables'' model', 'model = ''kane''')
@@ -466,7 +463,7 @@ contains
         missing = ''
         call need('&suspension g', sus%gave('g'))
         call need('&body mass', bod%gave('mass'))
-        call need('&suspension l', sus%gave('l'))
+        if (sus%cables == 2 .or. .not. sus%pointwise()) call need('&suspension l', sus%gave('l'))
         if (sus%cables == 2) then
             call need('&suspension l_prime', sus%gave('l_prime'))
             call need('&suspension b', sus%gave('b'))
@@ -475,6 +472,10 @@ contains
             if (what /= 'tensor') &
                 call need('&body the mass centre (cg_depth and cg_offset, or r and lambda)', &
                           bod%gave('cg_depth') .or. (bod%gave('r') .and. bod%gave('lambda')))
+        else if (sus%pointwise()) then
+            call need('&suspension support_points', sus%gave('support_points'))
+            call need('&suspension body_points', sus%gave('body_points'))
+            call need('&suspension lengths', sus%gave('lengths'))
         else
             call need('&suspension radius', sus%gave('radius'))
             call need('&suspension radius_prime', sus%gave('radius_prime'))

@@ -70,7 +70,8 @@ module hang_model
     use lapack_wrap, only: la_syev, la_eigv
     use measurement, only: hang_t
     use platform_model, only: linearise, platform_modes_t, check_platform
-    use platform_geometry, only: platform_t, regular_platform, platform_inertia, QX, QY, QPSI
+    use platform_geometry, only: platform_t, regular_platform, general_platform, platform_inertia, &
+        QX, QY, QPSI
     use platform_orbit, only: platform_torsion_period
     implicit none
     private
@@ -96,6 +97,22 @@ module hang_model
         real(dp) :: inertia(3, 3) = 0.0_dp
         logical :: hang_frame = .false.
     end type fixture_t
+
+    !> A platform of three cables given point by point (&suspension support_points,
+    !! body_points, lengths): the points as the deck gives them and the scales the deck's
+    !! normalise derives from them (b, b_prime: twice the mean distance of the support's
+    !! and the platform's points from their centroids; l: the mean length).  A hang's rig
+    !! with other b, b_prime or l (a perturbed input, a Monte Carlo draw) scales the
+    !! support's points about their centroid by b/this%b, the platform's by
+    !! b_prime/this%b_prime and every length by l/this%l.  given = .false.: the regular
+    !! polygon of the rig's b, b_prime, l.
+    type, public :: platform_points_t
+        logical :: given = .false.
+        real(dp) :: support(3, 3) = 0.0_dp      !! column i: cable i's support point
+        real(dp) :: body(3, 3) = 0.0_dp         !! column i: its point on the platform
+        real(dp) :: lengths(3) = 0.0_dp
+        real(dp) :: b = 1.0_dp, b_prime = 1.0_dp, l = 1.0_dp
+    end type platform_points_t
 
     public :: tensor_matrix, tensor_entries, principal_axes, hang_frame, turned_hang
     public :: hang_rig, rest_pose, torsion_mode, hang_period, maxima_drift, vertical_moment
@@ -490,21 +507,23 @@ contains
     !> The period (s) of a hang's rig at peak amplitude amp (degrees of theta_4): the torsion
     !! mode's at amp = 0, else the full model's from a release in the mode's shape (see the
     !! module header), integrated with acc.
-    subroutine hang_period(rg, acc, amp, t, stat)
+    subroutine hang_period(rg, acc, amp, t, stat, pts)
         type(rig_t), intent(in) :: rg           !! the rig (no damping)
         type(accuracy_t), intent(in) :: acc     !! rtol, atol, integrator
         real(dp), intent(in) :: amp             !! degrees, >= 0
         real(dp), intent(out) :: t              !! the period, s
         type(status_t), intent(out) :: stat
+        !> a platform given point by point (absent or not given: the regular polygon)
+        type(platform_points_t), intent(in), optional :: pts
         type(torsion_mode_t) :: mode
         type(platform_t) :: pl
         real(dp), allocatable :: tm(:), am(:)
         t = 0.0_dp
         if (rg%cables > 2) then
             if (amp <= 0.0_dp) then
-                call platform_small_period(rg, t, stat)
+                call platform_small_period(rg, t, stat, pts)
             else
-                call hang_platform(rg, pl, stat)
+                call hang_platform(rg, pl, stat, pts)
                 if (stat%code == STATUS_OK) call platform_torsion_period(pl, amp*deg, &
                     acc%rtol, acc%method, t, stat)
                 if (stat%code /= STATUS_OK) stat%msg = 'the period at '//fixed(amp, 3)// &
@@ -528,13 +547,36 @@ contains
     !! cg_offset_y, depth r sin(lambda); the inertia of platform_inertia), no damping,
     !! checked and at rest (check_platform: ERR_DECK for a rig the cables cannot hold,
     !! ERR_MODEL naming the tipping height).  As platform_measure's platform_of_rig.
-    subroutine hang_platform(rg, pl, stat)
+    !! Given point by point (pts): the points scaled to the rig's b, b_prime and l
+    !! (platform_points_t), the mass centre's x and y from the centroid of the platform's
+    !! points, its depth below their mean height.
+    subroutine hang_platform(rg, pl, stat, pts)
         type(rig_t), intent(in) :: rg
         type(platform_t), intent(out) :: pl
         type(status_t), intent(out) :: stat
+        type(platform_points_t), intent(in), optional :: pts
+        real(dp) :: cs(3), cb(3), sup(3, 3), bod(3, 3), off(2)
+        integer :: i
+        off = [rg%r*cos(rg%lambda) - 0.5_dp*rg%b_prime, rg%cg_offset_y]
+        if (present(pts)) then
+            if (pts%given) then
+                cs = sum(pts%support, dim=2)/3.0_dp
+                cb = sum(pts%body, dim=2)/3.0_dp
+                do i = 1, 3
+                    sup(:, i) = cs + (rg%b/pts%b)*(pts%support(:, i) - cs)
+                    bod(:, i) = cb + (rg%b_prime/pts%b_prime)*(pts%body(:, i) - cb)
+                end do
+                pl = general_platform(3, sup, bod, (rg%l/pts%l)*pts%lengths, rg%mass, &
+                                      platform_inertia(rg%inertia, rg%btilde), &
+                                      cb(1:2) + off, rg%r*sin(rg%lambda), rg%g)
+                pl%c_v = 0.0_dp
+                pl%c_q = 0.0_dp
+                call check_platform(pl, stat)
+                return
+            end if
+        end if
         pl = regular_platform(rg%cables, 0.5_dp*rg%b, 0.5_dp*rg%b_prime, rg%l, rg%mass, &
-                              platform_inertia(rg%inertia, rg%btilde), &
-                              [rg%r*cos(rg%lambda) - 0.5_dp*rg%b_prime, rg%cg_offset_y], &
+                              platform_inertia(rg%inertia, rg%btilde), off, &
                               rg%r*sin(rg%lambda), rg%g)
         pl%c_v = 0.0_dp
         pl%c_q = 0.0_dp
@@ -545,16 +587,18 @@ contains
     !! small amplitude: the platform's equations linearised at its rest pose (module
     !! platform_model's linearise), the mode whose shape has the largest share of the yaw
     !! (the yaw counted by the displacement it causes at radius_prime).
-    subroutine platform_small_period(rg, t, stat)
+    subroutine platform_small_period(rg, t, stat, pts)
         type(rig_t), intent(in) :: rg           !! the rig (cables = 3)
         real(dp), intent(out) :: t              !! the period, s
         type(status_t), intent(out) :: stat     !! ERR_DECK, ERR_MODEL
+        !> a platform given point by point (absent or not given: the regular polygon)
+        type(platform_points_t), intent(in), optional :: pts
         type(platform_t) :: pl
         type(platform_modes_t) :: md
         real(dp) :: share, best, wsc(4)
         integer :: j, k, kt
         t = 0.0_dp
-        call hang_platform(rg, pl, stat)
+        call hang_platform(rg, pl, stat, pts)
         if (stat%code /= STATUS_OK) return
         call linearise(pl, md, stat)
         if (stat%code /= STATUS_OK) return

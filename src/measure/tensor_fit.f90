@@ -105,7 +105,7 @@ module tensor_fit
     use measurement, only: measurement_t, observation_t, hang_t, OBS_HANG, RIG_COLUMNS
     use hang_model, only: tensor_entries, principal_axes, hang_rig, hang_period, &
         maxima_drift, vertical_moment, moment_direction, turned_hang, fixture_t, loaded_hang, &
-        plane_normal, fixture_in_body
+        plane_normal, fixture_in_body, platform_points_t
     use unused_arg, only: unused
     use vectors, only: cross
     implicit none
@@ -143,6 +143,8 @@ module tensor_fit
         logical :: est_cg = .false.             !! estimate = 'tensor cg'
         integer :: np = 6                       !! parameters: 6, or 9 with the mass centre
         integer, allocatable :: att_hang(:)     !! per attitude residual: its hang
+        !> a platform given point by point (the deck's &suspension; else not given)
+        type(platform_points_t) :: pts
     end type tensor_problem_t
 
     !> One line of the budget: an input (or the inputs of a hang) and what it adds to the
@@ -273,6 +275,22 @@ module tensor_fit
     integer, parameter, public :: MC_ESTIMATES = 18
     !> Values per case of amplitude_parts: D, dD/dx (6), dD/deps (3), dD/drig (4), dD/dA.
     integer, parameter, public :: MC_PARTS = 15
+
+    !> The tensor Monte Carlo payload's sections (tensor_mc_payload), by their lengths: a
+    !! head (seed, hangs, rows), MC_HANG_LEN per hang, MC_ROW_LEN per row, the fit
+    !! (MC_FIT_LEN: origin, x, axes, u_x), its chord's first six rows (6 per row), the
+    !! cases' amplitude parts (their count, then MC_PARTS per case); with the mass centre
+    !! fitted a tail: MC_CG_LEN (origin, dcg, u_dcg), MC_GRAV_LEN per hang (gravity,
+    !! measured), the whole chord (9 per row and attitude).
+    integer, parameter :: MC_HEAD_LEN = 3, MC_HANG_LEN = 17, MC_ROW_LEN = 7, &
+        MC_FIT_LEN = 24, MC_CG_LEN = 9, MC_GRAV_LEN = 4
+
+    !> Where each section of a payload starts (the index before its first entry) and
+    !! the payload's length, for nh hangs, n rows, nc cases and na measured attitudes.
+    type :: mc_layout_t
+        integer :: hangs = 0, rows = 0, fit = 0, chord = 0, parts = 0
+        integer :: cg = 0, grav = 0, cg_chord = 0, total = 0
+    end type mc_layout_t
     !> Two unit directions count as one when |u . v| exceeds 1 - PARALLEL_TOL.
     real(dp), parameter :: PARALLEL_TOL = 1.0e-9_dp
     !> A period without any stated uncertainty counts this much of itself.
@@ -301,7 +319,7 @@ contains
     !! from the deck (&tensor), the cases (hang, amplitude) of the rows.
     subroutine problem_of(ten, sus, bod, acc, m, prob)
         type(tensor_group_t), intent(in) :: ten         !! the deck's &tensor
-        type(suspension_group_t), intent(in) :: sus     !! (g)
+        type(suspension_group_t), intent(in) :: sus     !! (g; a platform's points)
         type(body_group_t), intent(in) :: bod           !! (mass)
         type(accuracy_t), intent(in) :: acc             !! the deck's accuracy
         type(measurement_t), intent(in) :: m    !! its hangs (releases) and their timings
@@ -332,6 +350,15 @@ contains
         prob%est_cg = ten%estimates_cg()
         prob%loaded = ten%has_fixture() .or. prob%est_cg
         prob%np = merge(9, 6, prob%est_cg)
+        if (sus%cables == 3 .and. sus%pointwise()) then
+            prob%pts%given = .true.
+            prob%pts%support = sus%support_points(:, 1:3)
+            prob%pts%body = sus%body_points(:, 1:3)
+            prob%pts%lengths = sus%lengths(1:3)
+            prob%pts%b = sus%b
+            prob%pts%b_prime = sus%b_prime
+            prob%pts%l = sus%l
+        end if
         call set_cases(prob)
     end subroutine problem_of
 
@@ -618,7 +645,7 @@ contains
         type(rig_t) :: rg
         t = 0.0_dp
         call problem_rig(prob, h, mass, g, x, rg, stat)
-        if (stat%code == STATUS_OK) call hang_period(rg, prob%acc, amp, t, stat)
+        if (stat%code == STATUS_OK) call hang_period(rg, prob%acc, amp, t, stat, prob%pts)
         if (stat%code /= STATUS_OK) stat%msg = hang_label(h)//': '//stat%msg
     end subroutine case_period
 
@@ -2194,6 +2221,22 @@ contains
         end subroutine part_d
     end subroutine amplitude_parts
 
+    !> The sections of a payload (mc_layout_t); with_cg: the mass centre's tail.
+    pure function mc_layout(nh, n, nc, na, with_cg) result(lo)
+        integer, intent(in) :: nh, n, nc, na
+        logical, intent(in) :: with_cg
+        type(mc_layout_t) :: lo
+        lo%hangs = MC_HEAD_LEN
+        lo%rows = lo%hangs + MC_HANG_LEN*nh
+        lo%fit = lo%rows + MC_ROW_LEN*n
+        lo%chord = lo%fit + MC_FIT_LEN
+        lo%parts = lo%chord + 6*n
+        lo%cg = lo%parts + 1 + MC_PARTS*nc
+        lo%grav = lo%cg + MC_CG_LEN
+        lo%cg_chord = lo%grav + MC_GRAV_LEN*nh
+        lo%total = lo%cg
+        if (with_cg) lo%total = lo%cg_chord + 9*(n + na)
+    end function mc_layout
 
     !> What a tensor Monte Carlo needs beyond the deck, as reals (the sweep's payload): the
     !! seed, the counts, per hang its id, up, along, rig and mass centre, which rig inputs
@@ -2210,6 +2253,7 @@ contains
         real(dp), intent(in) :: parts(:, :)     !! (MC_PARTS, cases): amplitude_parts
         real(dp), allocatable :: p(:)
         integer :: h, i, k, own
+        ! the sections in the order and of the lengths mc_layout_t names (MC_*_LEN)
         p = [real(seed, dp), real(size(prob%hangs), dp), real(size(prob%rows), dp)]
         do h = 1, size(prob%hangs)
             associate (hh => prob%hangs(h))
@@ -2251,7 +2295,8 @@ contains
         type(tensor_mc_task_t), intent(out) :: task
         type(status_t), intent(out) :: stat
         type(measurement_t) :: set
-        integer :: nh, n, h, i, j, k, own, nb, nc, nt, na
+        type(mc_layout_t) :: lo
+        integer :: nh, n, h, i, j, k, own, nc, na
         logical :: cg
         stat%code = STATUS_OK
         if (size(payload) < 3) then
@@ -2261,25 +2306,27 @@ contains
         task%seed = nint(payload(1))
         nh = nint(payload(2))
         n = nint(payload(3))
-        nb = 3 + 17*nh + 7*n + 24 + 6*n
-        nc = -1
-        if (size(payload) > nb .and. nb > 3) nc = nint(payload(min(size(payload), nb + 1)))
-        ! the mass centre's tail (estimate = 'tensor cg'): after the amplitude parts
         cg = ten%estimates_cg()
-        nt = nb + 1 + MC_PARTS*max(nc, 0)
+        ! the count of cases, after the chord's six rows; then the measured attitudes
+        lo = mc_layout(max(nh, 0), max(n, 0), 0, 0, .false.)
+        nc = -1
+        if (nh >= 1 .and. n >= 1 .and. size(payload) > lo%parts) nc = nint(payload(lo%parts + 1))
         na = 0
-        if (cg .and. nh >= 1 .and. size(payload) >= nt + 9 + 4*nh) &
-            na = count(payload(nt + 13:nt + 9 + 4*nh:4) /= 0.0_dp)
-        if (nh < 1 .or. n < 1 .or. nc < 1 .or. size(payload) /= nt + merge(9 + 4*nh + &
-            9*(n + na), 0, cg)) then
+        if (nc >= 1) then
+            lo = mc_layout(nh, n, nc, 0, cg)
+            if (cg .and. size(payload) >= lo%cg_chord) na = count(payload(lo%grav + &
+                MC_GRAV_LEN:lo%cg_chord:MC_GRAV_LEN) /= 0.0_dp)
+            lo = mc_layout(nh, n, nc, na, cg)
+        end if
+        if (nh < 1 .or. n < 1 .or. nc < 1 .or. size(payload) /= lo%total) then
             call set_error(stat, ERR_DECK, 'tensor Monte Carlo: the payload does not match '// &
                 'its counts')
             return
         end if
         allocate (set%releases(nh), set%obs(n))
-        j = 3
         do h = 1, nh
-            associate (hh => set%releases(h)%hang, q => payload(j + 1:j + 17))
+            j = lo%hangs + MC_HANG_LEN*(h - 1)
+            associate (hh => set%releases(h)%hang, q => payload(j + 1:j + MC_HANG_LEN))
                 hh%id = nint(q(1))
                 hh%line = nint(q(2))
                 hh%up = q(3:5)
@@ -2297,15 +2344,16 @@ contains
                 hh%cables = nint(q(16))
                 hh%cg_offset_y = q(17)
                 if (cg) then
-                    hh%gravity = payload(nt + 10 + 4*(h - 1):nt + 12 + 4*(h - 1))
-                    hh%attitude = payload(nt + 13 + 4*(h - 1)) /= 0.0_dp
+                    j = lo%grav + MC_GRAV_LEN*(h - 1)
+                    hh%gravity = payload(j + 1:j + 3)
+                    hh%attitude = payload(j + 4) /= 0.0_dp
                 end if
             end associate
-            j = j + 17
         end do
         allocate (task%u_row(n))
         do i = 1, n
-            associate (r => set%obs(i), q => payload(j + 1:j + 7))
+            j = lo%rows + MC_ROW_LEN*(i - 1)
+            associate (r => set%obs(i), q => payload(j + 1:j + MC_ROW_LEN))
                 r%kind = OBS_HANG
                 r%release = nint(q(1))
                 r%line = nint(q(2))
@@ -2314,16 +2362,16 @@ contains
                 r%amplitude = q(5)
                 task%u_row(i) = q(6)
             end associate
-            j = j + 7
         end do
         call problem_of(ten, sus, bod, acc, set, task%prob)
-        task%prob%u_def = payload(3 + 17*nh + 7:3 + 17*nh + 7*n:7)
+        task%prob%u_def = payload(lo%rows + MC_ROW_LEN:lo%fit:MC_ROW_LEN)
+        j = lo%fit
         task%prob%origin = payload(j + 1:j + 3)
         task%x = payload(j + 4:j + 9)
         task%axes = reshape(payload(j + 10:j + 18), [3, 3])
         task%u_x = payload(j + 19:j + 24)
-        task%chord = reshape(payload(j + 25:j + 24 + 6*n), [6, n])
-        task%parts = reshape(payload(nb + 2:nb + 1 + MC_PARTS*nc), [MC_PARTS, nc])
+        task%chord = reshape(payload(lo%chord + 1:lo%parts), [6, n])
+        task%parts = reshape(payload(lo%parts + 2:lo%cg), [MC_PARTS, nc])
         if (nc /= size(task%prob%case_hang)) then
             call set_error(stat, ERR_DECK, 'tensor Monte Carlo: the payload''s cases do not '// &
                 'match its rows')
@@ -2331,11 +2379,11 @@ contains
         end if
         task%nest = MC_ESTIMATES - 3
         if (cg) then
-            task%prob%origin = payload(nt + 1:nt + 3)
-            task%dcg = payload(nt + 4:nt + 6)
-            task%u_dcg = payload(nt + 7:nt + 9)
+            task%prob%origin = payload(lo%cg + 1:lo%cg + 3)
+            task%dcg = payload(lo%cg + 4:lo%cg + 6)
+            task%u_dcg = payload(lo%cg + 7:lo%cg + 9)
             task%prob%dcg = task%dcg
-            task%chord = reshape(payload(nt + 10 + 4*nh:), [9, n + na])
+            task%chord = reshape(payload(lo%cg_chord + 1:lo%total), [9, n + na])
             task%nest = MC_ESTIMATES
         end if
     end subroutine tensor_mc_task
