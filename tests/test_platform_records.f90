@@ -4,7 +4,8 @@
 !! noise-free (at rtol 1e-11: the fit of a noise-free record needs runs tighter than its
 !! own) I1 within 1e-6, with noise within U; a body 1e-6 m off the axis (the elastic model)
 !! gives the centred body's I1 (the bifilar's pure torsion) from the same record; the
-!! cables' stiffness 1e7 against the default 1e6; a body above its tipping height exits 4.
+!! cables' stiffness 1e7 against the default 1e6; a body above its tipping height exits 4;
+!! quantity 'rates' on a platform exits 2.
 module test_platform_records
     use kinds, only: dp
     use status, only: status_t
@@ -159,6 +160,15 @@ contains
         call t%check('platform record: four cables off the axis, above the tipping height: '// &
                      'exit 4, one line', all([ex(6) == 4, message_lines(d//'/stderr') == 1, &
                      file_has(d//'/stderr', 'tips over'), .not. exists(o//'/tip.identify')]))
+        ! quantity 'rates': the platform's models give no tilt or sway rates
+        call write_text(d//'/rates.nml', head//'cg_offset = 0.018, 0 /'//NL// &
+            "&start mode = 'raised', amplitude = 10 /"//NL//"&measurement quantity = "// &
+            "'rates', estimate = 'I1 amplitude', record = 'noisy.dat' /"//NL)
+        ex(6) = run(exe//' '//d//'/rates.nml --out '//o, d)
+        call t%check('platform record: quantity rates on a platform: exit 2, one line', &
+                     all([ex(6) == 2, message_lines(d//'/stderr') == 1, &
+                     file_has(d//'/stderr', 'quantity = ''rates'''), &
+                     .not. exists(o//'/rates.identify')]))
     end subroutine test_quad_record
 
 end module test_platform_records
