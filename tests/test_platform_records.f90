@@ -1,8 +1,8 @@
 !> Records of a body off the axis of a quadrifilar (suite platform): the record of the
 !! elastic cables' model (module platform_measure's platform_record, four cables), made by
 !! the program's own model at the truth I1 = 0.0243, fitted by identify through the program:
-!! noise-free (at rtol 1e-11: the fit of a noise-free record needs runs tighter than its
-!! own) I1 within 1e-6, with noise within U; a body 1e-6 m off the axis (the elastic model)
+!! nearly noise-free (1e-7 rad/s: a record without noise leaves the fit's chi^2 at the runs'
+!! own noise, where its last steps may fail) I1 within 1e-6, with noise within U; a body 1e-6 m off the axis (the elastic model)
 !! gives the centred body's I1 (the bifilar's pure torsion) from the same record; the
 !! cables' stiffness 1e7 against the default 1e6; a body above its tipping height exits 4;
 !! quantity 'rates' on a platform exits 2.
@@ -103,14 +103,14 @@ contains
         d = SCR//'/quad'
         call fresh_dir(d)
         o = d//'/out'
-        call write_record(quad_rig(0.018_dp), 0.0_dp, d//'/clean.dat', ok0)
+        call write_record(quad_rig(0.018_dp), 1.0e-7_dp, d//'/clean.dat', ok0)
         call write_record(quad_rig(0.018_dp), 0.002_dp, d//'/noisy.dat', ok1)
         head = "&scene analyses = 'identify' /"//NL// &
             '&suspension cables = 4, radius = 0.135, radius_prime = 0.135, l = 1.0, '// &
             'g = 9.81 /'//NL//'&body mass = 2.048, inertia = 0.022, 0.014, 0.014, '// &
             'cg_depth = 0.05, '
-        call write_text(d//'/clean.nml', head//'cg_offset = 0.018, 0 /'//NL// &
-            '&integration rtol = 1e-11, atol = 1e-12 /'//NL//MEAS//"'clean.dat' /"//NL)
+        call write_text(d//'/clean.nml', head//'cg_offset = 0.018, 0 /'//NL//MEAS// &
+            "'clean.dat' /"//NL)
         ex(1) = run(exe//' '//d//'/clean.nml --out '//o, d)
         iq0 = kv_real(o//'/clean.identify', 'I1')
         call write_text(d//'/noisy.nml', head//'cg_offset = 0.018, 0 /'//NL// &
@@ -122,7 +122,7 @@ contains
                      ok0 .and. ok1)
         call t%check('platform record: four cables off the axis fit (exit 0)', &
                      all(ex(1:2) == 0))
-        call t%check_close('platform record: four cables off the axis, noise-free, I1 to '// &
+        call t%check_close('platform record: four cables off the axis, noise 1e-7, I1 to '// &
                            '1e-6', iq0, I1_TRUE, 1.0e-6_dp, 0.0_dp)
         call t%check('platform record: four cables off the axis, with noise, I1 within U', &
                      abs(iq - I1_TRUE) < uq .and. uq > 0.0_dp)
@@ -147,10 +147,11 @@ contains
         call t%check('platform record: stiffness 1e7 fits (exit 0)', ex(5) == 0)
         call t%check_close('platform record: stiffness 1e7 against 1e6 changes I1 by less '// &
                            'than 1e-6', i7, iq, 1.0e-6_dp, 0.0_dp)
+        ! (differences, not ratios: a failed fit leaves -huge)
         write (*, '(a,es10.2,a,es16.8,a,es10.3,a,es10.2,a,es10.2)') '  platform record, '// &
-            'four cables off the axis: noise-free I1/truth - 1 ', iq0/I1_TRUE - 1.0_dp, &
-            ', noisy I1 ', iq, ', U ', uq, '; 1e-6 off over centred - 1 ', ie/ic - 1.0_dp, &
-            '; k 1e7 over 1e6 - 1 ', i7/iq - 1.0_dp
+            'four cables off the axis: noise 1e-7 I1 - truth ', iq0 - I1_TRUE, &
+            ', noisy I1 ', iq, ', U ', uq, '; 1e-6 off less centred ', ie - ic, &
+            '; k 1e7 less 1e6 ', i7 - iq
         ! above its tipping height
         call write_text(d//'/tip.nml', "&scene analyses = 'identify' /"//NL// &
             '&suspension cables = 4, radius = 0.135, radius_prime = 0.05, l = 1.0, '// &
