@@ -39,6 +39,7 @@ module test_platform
     use budget, only: input_u_t
     use period_inversion, only: invert_periods, period_fit_t
     use test_platform_analyses, only: run_platform_analysis_tests
+    use test_platform_records, only: run_platform_record_tests
     implicit none
     private
 
@@ -79,6 +80,7 @@ contains
         if (t%want('platform: slack ends the inextensible model, not the elastic one')) &
             call test_slack(t)
         call run_platform_analysis_tests(t, exe)
+        call run_platform_record_tests(t, exe)
     end subroutine run_platform_tests
 
     ! ---------------------------------------------------------------------------------------

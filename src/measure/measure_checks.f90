@@ -285,9 +285,16 @@ contains
                 if (sus%cables > 2) then
                     call bad(stat, 'measurement', 'quantity', '''point''', 'with a platform '// &
                              'of '//itoa(sus%cables)//' cables', 'quantity = ''point'' with a '// &
-                             'bifilar (2 cables); a platform''s record as angle, rate or rates')
+                             'bifilar (2 cables); a platform''s record as angle or rate')
                     return
                 end if
+            end if
+            if (trim(quantity) == 'rates' .and. sus%cables > 2) then
+                ! the platform's models give the yaw and the rate about the vertical only
+                call bad(stat, 'measurement', 'quantity', '''rates''', 'with a platform of '// &
+                         itoa(sus%cables)//' cables', 'quantity = ''rates'' with a bifilar '// &
+                         '(2 cables); a platform''s record as angle or rate')
+                return
             end if
             if (self%estimated('scale') .and. self%estimated('amplitude') .and. &
                 trim(quantity) /= 'point' .and. trim(quantity) /= 'rates') then

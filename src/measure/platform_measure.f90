@@ -1,6 +1,7 @@
-!> Measurements on a platform of three cables with the body anywhere on it: the model of a
-!! period and of a record is the platform's own (module platform_model), not the bifilar
-!! equivalent with b = 2 radius that pure torsion allows.
+!> Measurements on a platform with the body anywhere on it: the model of a period and of a
+!! record is the platform's own (module platform_model for three cables, the elastic
+!! cables' for four or more off the axis), not the bifilar equivalent with b = 2 radius
+!! that pure torsion allows.
 !!
 !! A measurement's rig (rig_t) of cables > 2 is a regular platform (platform_of_rig: radius
 !! b/2, radius_prime b_prime/2, every cable of length l, the mass centre at
@@ -15,22 +16,25 @@
 !!   CD, and its pure torsion can be unstable where the platform's is not), which must not
 !!   enter the fit.  Four or more cables (no inextensible model) keep the bifilar's pure
 !!   torsion, the mass centre's depth taken positive (torsion_equivalent).
-!! * Off the axis (offaxis_platform, n = 3): a period is that of the platform's periodic
+!! * Off the axis (offaxis_platform), three cables: a period is that of the platform's periodic
 !!   torsion at the amplitude (module platform_orbit: the brake orbit from rest at
 !!   yaw = rest + amplitude, found by shooting).
-!! * Records of three cables (platform_records): the platform's motion released
-!!   at rest turned by the amplitude about the vertical through its mass centre (module
-!!   platform_model's platform_start), sampled as the yaw from rest (rad) or the rate
-!!   about the downward vertical (rad/s), as the bifilar's theta4 and W = omega . n3 (n3
-!!   down) are.  The model turns about the mass centre with its sway: no
-!!   parallel-axis correction is applied after.  I1 is the body's moment about the vertical
-!!   through its mass centre, as everywhere.
+!!   Four or more cables: the elastic cables' periodic torsion (module
+!!   platform_elastic_orbit, &cables stiffness; submodule platform_measure_elastic).
+!! * Records of three cables, and of four or more off the axis (platform_records): the
+!!   platform's motion released at rest turned by the amplitude about the vertical through
+!!   its mass centre (module platform_model's platform_start; four or more cables the
+!!   elastic cables' motion, platform_elastic's pe_start, Radau IIA), sampled as the yaw
+!!   from rest (rad) or the rate about the downward vertical (rad/s), as the bifilar's
+!!   theta4 and W = omega . n3 (n3 down) are.  The model turns about the mass centre with
+!!   its sway: no parallel-axis correction is applied after.  I1 is the body's moment about
+!!   the vertical through its mass centre, as everywhere.
 !! * The rig must hold the body (platform_hold_check): the chart, a rest pose with every
 !!   cable taut, and a stable one; a mass centre too high is refused naming the cg_depth at
 !!   which the body tips (check_platform).
 module platform_measure
     use kinds, only: dp, deg
-    use status, only: status_t, set_error, STATUS_OK, ERR_DECK, ERR_MODEL, ERR_NUMERIC
+    use status, only: status_t, set_error, STATUS_OK, ERR_MODEL, ERR_NUMERIC
     use text, only: fixed, sci, itoa
     use rig, only: rig_t, start_t, accuracy_t
     use ode_system, only: integrator_t, integrator_stats_t
@@ -64,6 +68,22 @@ module platform_measure
             real(dp), intent(out) :: t
             type(status_t), intent(out) :: stat
         end subroutine elastic_period_s
+
+        !> The record of the elastic platform rg (four or more cables, I1 and damping in rg)
+        !! at the times taus (s after the release, increasing; those <= 0 see the start):
+        !! released at rest turned by st%amplitude (degrees) about the vertical through the
+        !! mass centre (platform_elastic's pe_start), the yaw from rest (rad) or omega . n3
+        !! (rad/s) when rate; Radau IIA at acc's rtol and atol (submodule
+        !! platform_measure_elastic).
+        module subroutine elastic_record(rg, st, acc, taus, rate, vals, stat)
+            type(rig_t), intent(in) :: rg
+            type(start_t), intent(in) :: st
+            type(accuracy_t), intent(in) :: acc
+            real(dp), intent(in) :: taus(:)
+            logical, intent(in) :: rate
+            real(dp), intent(out) :: vals(:)
+            type(status_t), intent(out) :: stat
+        end subroutine elastic_record
     end interface
 contains
 
@@ -99,7 +119,7 @@ contains
     end function offaxis_platform
 
     !> True for a platform whose records are the platform model's (platform_record): three
-    !! cables, or a mass centre off the axis (refused there for four or more).
+    !! cables, or a mass centre off the axis (four or more: the elastic cables' model).
     pure logical function platform_records(rg)
         type(rig_t), intent(in) :: rg
         platform_records = rg%cables == 3 .or. offaxis_platform(rg)
@@ -173,10 +193,12 @@ contains
             ' deg (the platform''s periodic torsion): '//stat%msg
     end subroutine platform_period_s
 
-    !> The platform's record (three cables) at the sample times t(1:size(vals)) (s) with release
-    !! at t0 (s): released at rest turned by st%amplitude (degrees) about the vertical
-    !! through the mass centre; the yaw from rest (rad), or omega . n3 (rad/s) when rate.  A
-    !! sample before t0 sees the start.  Integrated with acc (rtol, atol, integrator).
+    !> The platform's record at the sample times t(1:size(vals)) (s) with release at t0 (s):
+    !! released at rest turned by st%amplitude (degrees) about the vertical through the mass
+    !! centre; the yaw from rest (rad), or omega . n3 (rad/s) when rate.  A sample before t0
+    !! sees the start.  Three cables: the inextensible platform integrated with acc (rtol,
+    !! atol, integrator); four or more: the elastic cables' (elastic_record, &cables
+    !! stiffness, Radau IIA at acc's rtol and atol).
     subroutine platform_record(rg, st, acc, t, t0, rate, vals, stat)
         type(rig_t), intent(in) :: rg
         type(start_t), intent(in) :: st
@@ -187,11 +209,15 @@ contains
         type(status_t), intent(out) :: stat
         type(platform_t) :: pl
         real(dp), allocatable :: y0(:), taus(:)
-        integer :: n, i0, i
+        integer :: n, i0
         vals = 0.0_dp
-        if (rg%cables /= 3) then
-            call set_error(stat, ERR_DECK, '&body cg_offset: a record of a body off the axis '// &
-                'of a platform of more than 3 cables; allowed: cg_offset = 0, 0, or cables = 3')
+        n = size(vals)
+        if (rg%cables >= 4) then
+            ! statically indeterminate when inextensible: the elastic cables' motion
+            i0 = first_after(t(1:n), t0)
+            vals(1:i0 - 1) = merge(0.0_dp, st%amplitude*deg, rate)
+            call elastic_record(rg, st, acc, t(i0:n) - t0, rate, vals(i0:n), stat)
+            if (stat%code /= STATUS_OK) stat%msg = 'the elastic platform''s record: '//stat%msg
             return
         end if
         call measured_platform(rg, rg%inertia(1), pl, stat)
@@ -199,14 +225,7 @@ contains
         allocate (y0(2*pl%nf))
         call platform_start(pl, st%amplitude*deg, y0, stat)
         if (stat%code /= STATUS_OK) return
-        n = size(vals)
-        i0 = n + 1
-        do i = 1, n
-            if (t(i) >= t0) then
-                i0 = i
-                exit
-            end if
-        end do
+        i0 = first_after(t(1:n), t0)
         vals(1:i0 - 1) = merge(0.0_dp, st%amplitude*deg, rate)
         if (i0 > n) return
         taus = t(i0:n) - t0
@@ -218,6 +237,19 @@ contains
         call integrate_samples(pl, y0, taus, acc, rate, vals(i0:n), stat)
         if (stat%code /= STATUS_OK) stat%msg = 'the platform''s record: '//stat%msg
     end subroutine platform_record
+
+    !> The first of the increasing times t at or after t0 (size(t) + 1 when none).
+    pure integer function first_after(t, t0) result(i0)
+        real(dp), intent(in) :: t(:), t0
+        integer :: i
+        i0 = size(t) + 1
+        do i = 1, size(t)
+            if (t(i) >= t0) then
+                i0 = i
+                return
+            end if
+        end do
+    end function first_after
 
     !> The run of pl from y0 (at rest, t = 0) sampled at the times taus (increasing, >= 0):
     !! the yaw from rest or the rate about the downward vertical, each sample checked finite

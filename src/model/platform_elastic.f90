@@ -70,9 +70,27 @@ module platform_elastic
 
     public :: pe_natural_lengths, pe_from_inextensible, pe_evaluate, pe_energy
     public :: pe_switch, pe_rest_pose, pe_start, pe_linearise, pe_cable_constants
-    public :: pe_pose
+    public :: pe_pose, pe_atol
 
 contains
+
+    !> The absolute tolerances of the state for the tolerance atol of a coordinate (m, rad):
+    !! the coordinates and stretches atol, the free coordinates' rates atol (g/l)^(1/2), the
+    !! stretches' rates atol (k g/l)^(1/2) (l the rig's size lscale).  With atol on every
+    !! rate the stage iteration of an implicit method cannot meet its test: a cable that is
+    !! not a master has its stretch from its length, l - L0, whose roundoff (eps l) pulls
+    !! with k m g eps, and that noise in the accelerations moves the rates by more than
+    !! atol over a step (Radau's Newton failing step after step).
+    pure function pe_atol(el, atol) result(a)
+        type(platform_elastic_t), intent(in) :: el
+        real(dp), intent(in) :: atol
+        real(dp) :: a(PE_NSTATE)
+        integer :: nf
+        nf = el%pl%nf
+        a = atol
+        a(7:6 + nf) = atol*sqrt(el%pl%gravity/el%pl%lscale)
+        a(7 + nf:12) = atol*sqrt(max(1.0_dp, el%stiffness)*el%pl%gravity/el%pl%lscale)
+    end function pe_atol
 
     !> Natural lengths L0_i (pl%length where l0 is not set).
     pure function pe_natural_lengths(el) result(l0)

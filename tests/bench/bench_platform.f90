@@ -13,6 +13,10 @@
 !!                                   input/cylinder_l180.nml from its start
 !!   bench_platform elastic_step N   one Radau step (rtol 1e-10) of the quadrifilar with
 !!                                   elastic cables (k = 1e6, zeta = 0.05) released at 30 deg
+!!   bench_platform bifilar_elastic_step N  one Radau step (rtol 1e-10, atol 1e-12) of the
+!!                                   paper's bifilar with elastic cables (k = 1e6, zeta =
+!!                                   0.05) in the generalized coordinates of module
+!!                                   elastic_gen, input/cylinder_l180.nml from its start
 !!
 !! Prints one line: `MODE units cpu_seconds_per_unit checksum`.
 program bench_platform
@@ -28,6 +32,8 @@ program bench_platform
     use platform_geometry, only: platform_t, regular_platform, platform_prepare
     use platform_model, only: platform_sys_t, check_platform, platform_start
     use platform_elastic, only: platform_elastic_t, pe_rest_pose, pe_start
+    use elastic_model, only: elastic_t, elastic_start, ELASTIC_NSTATE
+    use elastic_gen, only: elastic_gen_t, maximal_to_gen, GEN_NSTATE
     implicit none
     character(len=64) :: mode
     type(status_t) :: st
@@ -35,6 +41,9 @@ program bench_platform
     type(platform_sys_t) :: sys
     type(platform_elastic_t) :: el
     type(bifilar_t) :: bsys
+    type(elastic_t) :: eb
+    type(elastic_gen_t) :: gen
+    real(dp) :: ym(ELASTIC_NSTATE), yg(GEN_NSTATE)
     type(deck_t) :: d
     type(integrator_stats_t) :: ss
     class(integrator_t), allocatable :: it
@@ -123,8 +132,34 @@ program bench_platform
         call cpu_time(t1)
         ss = it%stats()
         sumck = ss%t_current
+    case ('bifilar_elastic_step')
+        call read_deck('input/cylinder_l180.nml', d, st)
+        call need(st, 'bench_platform')
+        call make_pendulum(rig_of(d), eb%p, st)
+        call need(st, 'bench_platform')
+        call start_state(start_of(d), eb%p, yb0, th0, st)
+        call need(st, 'bench_platform')
+        eb%stiffness = 1.0e6_dp
+        eb%damping = 0.05_dp
+        call elastic_start(eb, yb0, ym, st)
+        call need(st, 'bench_platform')
+        call maximal_to_gen(eb, ym, yg, st)
+        call need(st, 'bench_platform')
+        gen%el = eb
+        call new_integrator(SOLVER_RADAU, it)
+        call it%init(gen, 0.0_dp, yg, 1.0e-10_dp, [1.0e-12_dp], st, tcrit=1.0e6_dp)
+        call need(st, 'bench_platform')
+        call cpu_time(t0)
+        do k = 1, n
+            call it%step(gen, st, tout=1.0e6_dp)
+            call need(st, 'bench_platform')
+        end do
+        call cpu_time(t1)
+        ss = it%stats()
+        sumck = ss%t_current
     case default
-        write (*, '(a)') 'usage: bench_platform rhs|step|bifilar_step|elastic_step N'
+        write (*, '(a)') 'usage: bench_platform rhs|step|bifilar_step|elastic_step|'// &
+            'bifilar_elastic_step N'
         stop 1
     end select
     write (*, '(a,1x,i0,es14.5,es24.15)') trim(mode), n, (t1 - t0)/max(1, n), sumck
